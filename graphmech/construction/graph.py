@@ -1,0 +1,209 @@
+"""The step graph of a construction, pruned once, evaluated per position or for many at once.
+
+A :class:`Construction` is what a draftsman does, written down: named steps, each making a
+point, line, circle, vector or measured scalar from earlier ones ("through b draw ⟂ BC",
+"c = intersection"). It is built once per scene (structure), then :meth:`Construction.prune`
+keeps only the steps that the requested outputs depend on and compiles them into a
+:class:`Plan`; the plan is evaluated at one position (Python floats — the fast path) or at
+many positions at once (numpy arrays). Parameters that change with the position (the crank
+angle) are named inputs of the evaluation.
+
+>>> from graphmech.geometry import kernels as K
+>>> g = Construction()
+>>> _ = g.param("t")
+>>> _ = g.add("P", "point", lambda ops, t: (t, 0.0), ("t",), text="P on the x axis")
+>>> _ = g.add("Q", "point", lambda ops, p: (p[0], 2.0), ("P",), text="Q above P")
+>>> _ = g.add("R", "point", lambda ops: (9.0, 9.0), (), text="R (not needed)")
+>>> plan = g.prune(["Q"])
+>>> [s.name for s in plan.steps]
+['t', 'P', 'Q']
+>>> plan.evaluate({"t": 3.0})["Q"]
+(3.0, 2.0)
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable, Iterable, Literal, Mapping
+
+import numpy as np
+
+from graphmech.geometry.kernels import ArrayOps, ScalarOps
+
+Kind = Literal["point", "line", "circle", "vector", "scalar", "param"]
+Role = Literal["given", "construction", "result", "label", "hidden"]
+
+
+@dataclass(frozen=True)
+class Step:
+    """One named step of a construction.
+
+    Attributes
+    ----------
+    name : str
+        Slot name, unique in the construction (``"c"``, ``"⟂BC through b"``).
+    kind : str
+        What it makes: point, line, circle, vector (drawn from its first to its second
+        input; no computation), scalar (a measurement) or param.
+    kernel : callable or None
+        ``kernel(ops, *input_values) -> value``; None for vectors and params.
+    inputs : tuple of str
+        Names of the steps it reads.
+    role : str
+        given, construction, result, label, or hidden (computed, never drawn).
+    text : str
+        The draftsman's words; used in messages ("c = ⟂BC through b ∩ ⟂DC through p").
+    panel : str or None
+        Which figure it belongs to (mechanism, velocity, acceleration).
+    label : str or None
+        The letter written at a point ("b", "c′").
+    """
+
+    name: str
+    kind: Kind
+    kernel: Callable[..., Any] | None
+    inputs: tuple[str, ...]
+    role: Role = "construction"
+    text: str = ""
+    panel: str | None = None
+    label: str | None = None
+
+
+class Construction:
+    """A growing graph of steps (structure only: no numbers until evaluated)."""
+
+    def __init__(self) -> None:
+        self.steps: dict[str, Step] = {}
+        #: line step → the point steps it must be drawn through (its visible extent)
+        self.extent: dict[str, list[str]] = {}
+
+    def param(self, name: str) -> str:
+        self.steps[name] = Step(name, "param", None, (), role="hidden")
+        return name
+
+    def add(
+        self,
+        name: str,
+        kind: Kind,
+        kernel: Callable[..., Any] | None,
+        inputs: Iterable[str],
+        *,
+        role: Role = "construction",
+        text: str = "",
+        panel: str | None = None,
+        label: str | None = None,
+    ) -> str:
+        inputs = tuple(inputs)
+        if name in self.steps:
+            raise KeyError(f"step {name!r} is defined twice")
+        for i in inputs:
+            if i not in self.steps:
+                raise KeyError(f"step {name!r} reads {i!r}, which is not defined before it")
+        self.steps[name] = Step(name, kind, kernel, inputs, role, text or name, panel, label)
+        if kind == "line":
+            self.extent[name] = [inputs[0]] if inputs else []
+        return name
+
+    def extend_line(self, line: str, *points: str) -> None:
+        """Make the drawn piece of ``line`` reach these points too (e.g. its intersection)."""
+        self.extent[line].extend(points)
+
+    def has(self, name: str) -> bool:
+        return name in self.steps
+
+    def dependencies(self, targets: Iterable[str]) -> set[str]:
+        """Every step the targets depend on, themselves included."""
+        need: set[str] = set()
+        stack = list(targets)
+        while stack:
+            n = stack.pop()
+            if n in need:
+                continue
+            if n not in self.steps:
+                raise KeyError(f"no step named {n!r}")
+            need.add(n)
+            stack.extend(self.steps[n].inputs)
+        return need
+
+    def prune(self, targets: Iterable[str]) -> "Plan":
+        """Compile the steps the targets depend on, in construction order."""
+        targets = list(targets)
+        need = self.dependencies(targets)
+        kept = tuple(s for s in self.steps.values() if s.name in need)
+        return Plan(kept, {k: [p for p in v if p in need] for k, v in self.extent.items() if k in need})
+
+
+@dataclass
+class Solution:
+    """Values of a plan's steps at one position, with the condition number of each intersection."""
+
+    values: dict[str, Any]
+    conds: dict[str, float]
+
+    def __getitem__(self, name: str) -> Any:
+        return self.values[name]
+
+
+@dataclass
+class BatchSolution:
+    """Values at N positions (arrays), which positions failed, and why (step → mask, reason)."""
+
+    values: dict[str, Any]
+    conds: dict[str, np.ndarray]
+    valid: np.ndarray
+    failures: dict[str, tuple[np.ndarray, str]] = field(default_factory=dict)
+
+    def __getitem__(self, name: str) -> Any:
+        return self.values[name]
+
+    def at(self, i: int) -> Solution:
+        """The solution at position i, as plain floats."""
+
+        def pick(v: Any) -> Any:
+            if isinstance(v, tuple):
+                return tuple(pick(x) for x in v)
+            if isinstance(v, np.ndarray):
+                return float(v[i]) if v.ndim else float(v)
+            return v
+
+        return Solution({k: pick(v) for k, v in self.values.items()},
+                        {k: float(c[i]) for k, c in self.conds.items()})
+
+
+class Plan:
+    """The pruned, ordered steps of a construction, ready to evaluate."""
+
+    def __init__(self, steps: tuple[Step, ...], extent: Mapping[str, list[str]]) -> None:
+        self.steps = steps
+        self.extent = dict(extent)
+        self.by_name = {s.name: s for s in steps}
+        # Compiled once: (name, text, kernel, inputs) for the computing steps only.
+        self._program = tuple(
+            (s.name, s.text, s.kernel, s.inputs) for s in steps if s.kernel is not None
+        )
+
+    def __contains__(self, name: str) -> bool:
+        return name in self.by_name
+
+    def evaluate(self, params: Mapping[str, Any], position: str | None = None) -> dict[str, Any]:
+        """Evaluate at one position (floats); a degenerate step raises, naming itself."""
+        return self.solve(params, position).values
+
+    def solve(self, params: Mapping[str, Any], position: str | None = None) -> Solution:
+        ops = ScalarOps()
+        ops.position = position
+        vals = dict(params)
+        for name, text, kernel, inputs in self._program:
+            ops.step = text
+            vals[name] = kernel(ops, *[vals[i] for i in inputs])
+        return Solution(vals, ops.conds)
+
+    def evaluate_batch(self, params: Mapping[str, Any]) -> BatchSolution:
+        """Evaluate at many positions at once; failing positions are marked, never NaN."""
+        arrays = {k: np.asarray(v, dtype=float) for k, v in params.items()}
+        n = max((a.size for a in arrays.values() if a.ndim), default=1)
+        ops = ArrayOps(n)
+        vals: dict[str, Any] = {k: (np.broadcast_to(a, (n,)) if a.ndim else a) for k, a in arrays.items()}
+        for name, text, kernel, inputs in self._program:
+            ops.step = text
+            vals[name] = kernel(ops, *[vals[i] for i in inputs])
+        return BatchSolution(vals, ops.conds, ~ops.bad, ops.failures)

@@ -1,0 +1,58 @@
+"""One root error and the domain errors.
+
+Each error is mixed into the matching built-in so callers can catch either,
+and carries *where* it happened: a scene's key path or a construction step.
+"""
+from __future__ import annotations
+
+
+class GraphmechError(Exception):
+    """Root of every error graphmech raises on purpose."""
+
+
+class SceneError(GraphmechError, ValueError):
+    """A scene file (or scene data) is invalid.
+
+    Parameters
+    ----------
+    problems : list of (key_path, reason)
+        Every problem found; validation collects them all, then raises once.
+    source : str
+        The file name, used in the one-line message.
+    """
+
+    def __init__(self, problems: list[tuple[str, str]], source: str = "scene") -> None:
+        self.problems = list(problems)
+        self.source = source
+        super().__init__(self.one_line())
+
+    def one_line(self) -> str:
+        key, reason = self.problems[0]
+        more = f" (and {len(self.problems) - 1} more)" if len(self.problems) > 1 else ""
+        where = f"{self.source}: {key}: " if key else f"{self.source}: "
+        return f"{where}{reason}{more}"
+
+
+class DegenerateConstruction(GraphmechError, ArithmeticError):
+    """A construction step has no (unique) result: parallel lines, circles that do not meet.
+
+    Parameters
+    ----------
+    step : str
+        The step's name, as the draftsman says it ("c = ⟂BC through b ∩ ⟂DC through p").
+    reason : str
+        Why it fails, in the textbook's words.
+    position : str, optional
+        Which position (e.g. "φ1 = 170°") when known.
+    """
+
+    def __init__(self, step: str, reason: str, position: str | None = None) -> None:
+        self.step = step
+        self.reason = reason
+        self.position = position
+        at = f" at {position}" if position else ""
+        super().__init__(f"{step}: {reason}{at}")
+
+
+class AssemblyError(DegenerateConstruction):
+    """The linkage cannot be assembled at a position (a dyad's joints cannot meet)."""

@@ -1,0 +1,251 @@
+"""Pure construction kernels on plain components.
+
+Every kernel takes an *ops* object first (:class:`ScalarOps` for one position with Python
+floats, :class:`ArrayOps` for many positions with numpy arrays) and the values of its inputs:
+
+* a point is ``(x, y)``;
+* a line is ``(px, py, dx, dy)``: a point on it and its unit direction;
+* a circle is ``(cx, cy, r)``.
+
+The same arithmetic serves both paths. A degenerate case (parallel lines, circles that do not
+meet, a direction from two coincident points) goes through ``ops.guard``: the scalar path
+raises :class:`~graphmech.errors.DegenerateConstruction` naming the step, the batch path marks
+the positions and substitutes a harmless finite value so no NaN is ever produced. Each
+intersection reports its *condition number* (≈ 1/sin of the angle at which the two loci meet)
+through ``ops.cond`` so callers can warn where the result is ill-conditioned.
+
+>>> ops = ScalarOps()
+>>> intersect_lines(ops, (0.0, 0.0, 1.0, 0.0), (2.0, -1.0, 0.0, 1.0))
+(2.0, 0.0)
+>>> ops.conds["?"]
+1.0
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Callable
+
+import numpy as np
+
+from graphmech.errors import AssemblyError, DegenerateConstruction
+from graphmech.tolerances import PARALLEL_SIN, TANGENT_REL
+
+Reason = str | Callable[[], str]
+
+#: Condition numbers are capped here so that "infinite" stays a finite, printable number.
+COND_CAP = 1e300
+
+
+def _text(reason: Reason) -> str:
+    return reason() if callable(reason) else reason
+
+
+class ScalarOps:
+    """Ops for one position: Python floats and ``math``; degeneracy raises."""
+
+    sqrt = staticmethod(math.sqrt)
+    cos = staticmethod(math.cos)
+    sin = staticmethod(math.sin)
+    hypot = staticmethod(math.hypot)
+    batch = False
+
+    def __init__(self) -> None:
+        self.step = "?"
+        self.position: str | None = None
+        self.conds: dict[str, Any] = {}
+
+    def guard(self, bad: Any, reason: Reason, assembly: bool = False) -> bool:
+        if bad:
+            cls = AssemblyError if assembly else DegenerateConstruction
+            raise cls(self.step, _text(reason), self.position)
+        return False
+
+    @staticmethod
+    def where(bad: Any, fallback: Any, value: Any) -> Any:
+        return value
+
+    @staticmethod
+    def maximum(a: Any, b: Any) -> Any:
+        return a if a > b else b
+
+    @staticmethod
+    def absolute(a: Any) -> Any:
+        return abs(a)
+
+    def cond(self, c: Any) -> None:
+        self.conds[self.step] = c if c < COND_CAP else COND_CAP
+
+
+class ArrayOps:
+    """Ops for many positions at once: numpy arrays; degeneracy marks positions."""
+
+    sqrt = staticmethod(np.sqrt)
+    cos = staticmethod(np.cos)
+    sin = staticmethod(np.sin)
+    hypot = staticmethod(np.hypot)
+    where = staticmethod(np.where)
+    maximum = staticmethod(np.maximum)
+    absolute = staticmethod(np.abs)
+    batch = True
+
+    def __init__(self, n: int) -> None:
+        self.n = n
+        self.step = "?"
+        self.conds: dict[str, Any] = {}
+        self.bad = np.zeros(n, dtype=bool)
+        self.failures: dict[str, tuple[np.ndarray, str]] = {}
+
+    def guard(self, bad: Any, reason: Reason, assembly: bool = False) -> Any:
+        bad = np.broadcast_to(np.asarray(bad, dtype=bool), (self.n,))
+        if bad.any():
+            # Only the first step that fails at a position is that position's reason.
+            new = bad & ~self.bad
+            if new.any():
+                self.failures[self.step] = (new.copy(), _text(reason))
+            self.bad = self.bad | bad
+        return bad
+
+    def cond(self, c: Any) -> None:
+        self.conds[self.step] = np.minimum(np.broadcast_to(c, (self.n,)), COND_CAP)
+
+
+Ops = ScalarOps | ArrayOps
+
+# --------------------------------------------------------------------------- directions
+
+
+def direction(ops: Ops, ax: Any, ay: Any, bx: Any, by: Any, what: str) -> tuple[Any, Any]:
+    """Unit vector a→b; ``what`` names the pair for the message when a and b coincide."""
+    dx = bx - ax
+    dy = by - ay
+    n = ops.hypot(dx, dy)
+    bad = ops.guard(n == 0.0, f"{what} has zero length: no direction")
+    n = ops.where(bad, 1.0, n)
+    return dx / n, dy / n
+
+
+def line_perpendicular(ops: Ops, through: tuple, a: tuple, b: tuple, what: str = "segment") -> tuple:
+    """The line through ``through`` perpendicular to a→b ("through b draw ⟂ BC")."""
+    ux, uy = direction(ops, a[0], a[1], b[0], b[1], what)
+    return (through[0], through[1], -uy, ux)
+
+
+def line_parallel(ops: Ops, through: tuple, a: tuple, b: tuple, what: str = "segment") -> tuple:
+    """The line through ``through`` parallel to a→b ("through k′ draw ∥ BC")."""
+    ux, uy = direction(ops, a[0], a[1], b[0], b[1], what)
+    return (through[0], through[1], ux, uy)
+
+
+def line_fixed(ops: Ops, through: tuple, dx: float, dy: float) -> tuple:
+    """The line through ``through`` along the fixed unit direction (dx, dy) ("∥ the guide")."""
+    return (through[0], through[1], dx + 0.0 * through[0], dy + 0.0 * through[0])
+
+
+# --------------------------------------------------------------------------- intersections
+
+
+def intersect_lines(ops: Ops, l1: tuple, l2: tuple) -> tuple:
+    """Intersection of two lines; condition number 1/|sin θ| (θ the angle between them).
+
+    Notes
+    -----
+    With unit directions d, e and ``det = d × e = sin θ``, the point is ``P + t·d`` where
+    ``t = ((Q − P) × e) / det``. A perturbation δ of either line moves the point by about
+    δ/|sin θ|, hence the condition number.
+    """
+    px, py, dx, dy = l1
+    qx, qy, ex, ey = l2
+    det = dx * ey - dy * ex
+    bad = ops.guard(ops.absolute(det) < PARALLEL_SIN, "the two lines are parallel: no intersection")
+    det = ops.where(bad, 1.0, det)
+    ops.cond(1.0 / ops.absolute(det))
+    t = ((qx - px) * ey - (qy - py) * ex) / det
+    return (px + t * dx, py + t * dy)
+
+
+def intersect_circles(
+    ops: Ops, c1: tuple, r1: Any, c2: tuple, r2: Any, side: float, explain: Callable[[Any, Any], str]
+) -> tuple:
+    """Intersection of circles (c1, r1) and (c2, r2) on the given side of c1→c2 (+1 left, −1 right).
+
+    Two circles that just touch (within a relative ``TANGENT_REL``) meet at their tangent
+    point, with an infinite condition number; circles further apart fail with the message
+    ``explain(d, r1 + r2)`` (the caller words it in the mechanism's terms).
+
+    Notes
+    -----
+    With d = |c1c2|, the foot of the common chord lies a = (r1² − r2² + d²)/(2d) from c1 and
+    the half chord is h = √(r1² − a²). The angle γ between the two radii at the point has
+    sin γ = d·h/(r1·r2); its reciprocal is the condition number.
+    """
+    x1, y1 = c1
+    x2, y2 = c2
+    dx = x2 - x1
+    dy = y2 - y1
+    d = ops.hypot(dx, dy)
+    bad_d = ops.guard(d == 0.0, "the two centres coincide", assembly=True)
+    d = ops.where(bad_d, 1.0, d)
+    a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d)
+    h2 = r1 * r1 - a * a
+    slack = TANGENT_REL * r1 * r1
+    bad = ops.guard(h2 < -slack, lambda: explain(d, r1 + r2), assembly=True)
+    h2 = ops.maximum(ops.where(bad, 0.0, h2), 0.0)
+    h = ops.sqrt(h2)
+    ops.cond(r1 * r2 / ops.maximum(d * h, 1e-300 * r1 * r2))
+    ux = dx / d
+    uy = dy / d
+    return (x1 + a * ux - side * h * uy, y1 + a * uy + side * h * ux)
+
+
+def intersect_circle_line(
+    ops: Ops, c: tuple, r: Any, line: tuple, side: float, explain: Callable[[Any], str]
+) -> tuple:
+    """Intersection of circle (c, r) and a line, ahead (+1) or behind (−1) the foot of c.
+
+    Notes
+    -----
+    The foot F of the perpendicular from c has offset e = (c − P) × d from the line; the
+    point is F ± √(r² − e²)·d. The circle's radius meets the line at angle γ with
+    sin γ = √(r² − e²)/r, whose reciprocal is the condition number.
+    """
+    px, py, dx, dy = line
+    cx, cy = c
+    t = (cx - px) * dx + (cy - py) * dy
+    e = (cx - px) * dy - (cy - py) * dx
+    h2 = r * r - e * e
+    bad = ops.guard(h2 < -TANGENT_REL * r * r, lambda: explain(ops.absolute(e)), assembly=True)
+    h = ops.sqrt(ops.maximum(ops.where(bad, 0.0, h2), 0.0))
+    ops.cond(r / ops.maximum(h, 1e-300 * r))
+    s = t + side * h
+    return (px + s * dx, py + s * dy)
+
+
+# --------------------------------------------------------------------------- laying off
+
+
+def similar_point(ops: Ops, U: tuple, V: tuple, E: tuple, u: tuple, v: tuple) -> tuple:
+    """Image e of E such that triangle u v e is similar to U V E, same letter order.
+
+    Notes
+    -----
+    In complex numbers e = u + (v − u)·(E − U)/(V − U): the image figure is the original
+    turned and scaled by the ratio (v − u)/(V − U) — the velocity (acceleration) image.
+    """
+    Dx = V[0] - U[0]
+    Dy = V[1] - U[1]
+    n2 = Dx * Dx + Dy * Dy
+    bad = ops.guard(n2 == 0.0, "the two base points coincide")
+    n2 = ops.where(bad, 1.0, n2)
+    Ex = E[0] - U[0]
+    Ey = E[1] - U[1]
+    # ratio (E − U)/(V − U) as a complex number
+    rx = (Ex * Dx + Ey * Dy) / n2
+    ry = (Ey * Dx - Ex * Dy) / n2
+    wx = v[0] - u[0]
+    wy = v[1] - u[1]
+    return (u[0] + wx * rx - wy * ry, u[1] + wx * ry + wy * rx)
+
+
+def cross(ax: Any, ay: Any, bx: Any, by: Any) -> Any:
+    """z-component of a × b."""
+    return ax * by - ay * bx

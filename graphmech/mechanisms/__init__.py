@@ -1,0 +1,1 @@
+"""What is analysed: the mechanisms themselves (no drawing, no checking)."""

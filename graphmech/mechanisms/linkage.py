@@ -1,0 +1,236 @@
+"""A planar linkage: frame, a driver, Assur dyads attached in order, extra points on links.
+
+Everything here is SI (m, rad, rad/s, rad/s²) and immutable. A linkage is *structure*: it
+says which points exist, which link carries them and how the dyads join them. The numbers
+that change from position to position (crank angle, or a slider's displacement) are given
+apart, as the driver's ``positions``.
+
+Conventions
+-----------
+Angles are measured from +x, counter-clockwise positive; x to the right, y up.
+A point's name is its capital letter ("B", "C"); a link's id is the book's number ("2").
+
+Dyads (Assur groups of class II)
+--------------------------------
+``RRR``  P–C–Q: links ``(i, j)``; i carries P and C, j carries Q and C.
+``RRP``  P–C on a frame guide: link i (coupler) carries P and C; j is the slider at C.
+``RPR``  P and Q pivots; i is pivoted at P, j at Q, and they slide on each other along PQ.
+         ``bar`` tells which of the two is the guide bar (its line passes through the
+         other's pivot); the other is the block. The sliding point X is the block's pivot;
+         the coincident points are X<bar> (unknown) and X<block>: v_X<bar> = v_X<block> + v_rel.
+``RPP``  P revolute on link i (a block); i slides in a straight slot of link j (slot angle
+         fixed, j translates), j slides along a frame guide; C is j's point on the guide.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Literal, Union
+
+Branch = Literal["left", "right"]
+
+
+@dataclass(frozen=True)
+class Guide:
+    """A straight guide fixed on the frame.
+
+    Parameters
+    ----------
+    through : (float, float)
+        A point of the guide line, m.
+    angle : float
+        Direction of the guide, rad from +x CCW; displacements and slider velocities are
+        positive along it.
+    """
+
+    through: tuple[float, float]
+    angle: float
+
+    @property
+    def direction(self) -> tuple[float, float]:
+        return (math.cos(self.angle), math.sin(self.angle))
+
+
+@dataclass(frozen=True)
+class Crank:
+    """A crank turning about a frame pivot: ``tip = pivot + length·(cos φ, sin φ)``."""
+
+    link: str
+    pivot: str
+    tip: str
+    length: float
+    omega: float  # rad/s, + CCW
+    epsilon: float = 0.0  # rad/s², + CCW
+    kind: Literal["crank"] = "crank"
+
+
+@dataclass(frozen=True)
+class SliderInput:
+    """A slider driven along a frame guide: ``point = guide.through + s·guide.direction``."""
+
+    link: str
+    point: str
+    guide: Guide
+    velocity: float  # m/s along the guide
+    acceleration: float = 0.0  # m/s² along the guide
+    kind: Literal["slider"] = "slider"
+
+
+Driver = Union[Crank, SliderInput]
+
+
+@dataclass(frozen=True)
+class RRR:
+    """Dyad P–C–Q with three revolutes; C to the ``branch`` side of the directed line P→Q."""
+
+    p: str
+    c: str
+    q: str
+    links: tuple[str, str]
+    lengths: tuple[float, float]  # l_PC, l_QC  (m)
+    branch: Branch = "left"
+    kind: Literal["RRR"] = "RRR"
+
+
+@dataclass(frozen=True)
+class RRP:
+    """Dyad P–C with slider C on a frame guide (slider-crank's coupler and slider).
+
+    ``branch``: C lies ahead ("forward") of or behind ("backward") the foot of the
+    perpendicular from P to the guide, along the guide's direction.
+    """
+
+    p: str
+    c: str
+    links: tuple[str, str]  # (coupler, slider)
+    length: float  # l_PC (m)
+    guide: Guide
+    branch: Literal["forward", "backward"] = "forward"
+    kind: Literal["RRP"] = "RRP"
+
+
+@dataclass(frozen=True)
+class RPR:
+    """Guide-bar / rocking-block dyad: i pivoted at P, j pivoted at Q, sliding along PQ."""
+
+    p: str
+    q: str
+    links: tuple[str, str]
+    bar: Literal["first", "second"] = "first"
+    kind: Literal["RPR"] = "RPR"
+
+    @property
+    def bar_link(self) -> str:
+        return self.links[0] if self.bar == "first" else self.links[1]
+
+    @property
+    def block_link(self) -> str:
+        return self.links[1] if self.bar == "first" else self.links[0]
+
+    @property
+    def bar_pivot(self) -> str:
+        return self.p if self.bar == "first" else self.q
+
+    @property
+    def block_pivot(self) -> str:
+        """The sliding point X: the block's pivot, which the bar's line passes through."""
+        return self.q if self.bar == "first" else self.p
+
+    @property
+    def coincident(self) -> tuple[str, str]:
+        """Names of the coincident points (on the bar, on the block), e.g. ("C2", "C3")."""
+        x = self.block_pivot
+        return (x + self.bar_link, x + self.block_link)
+
+
+@dataclass(frozen=True)
+class RPP:
+    """Block i pivoted at P slides in a slot of j (absolute slot angle); j slides on a frame guide.
+
+    ``c`` is j's reference point: where the slot line through P meets the guide.
+    """
+
+    p: str
+    c: str
+    links: tuple[str, str]  # (block, slotted slider)
+    slot_angle: float  # rad, direction of the slot line (j translates, so it is fixed)
+    guide: Guide
+    kind: Literal["RPP"] = "RPP"
+
+    @property
+    def coincident(self) -> tuple[str, str]:
+        """(P on the block, P on the slotted link), e.g. ("B2", "B3")."""
+        return (self.p + self.links[0], self.p + self.links[1])
+
+
+Dyad = Union[RRR, RRP, RPR, RPP]
+
+
+@dataclass(frozen=True)
+class LinkPoint:
+    """An extra point fixed on a link, placed relative to two points of that link.
+
+    ``position = U + along·û + left·n̂`` where û is the unit vector U→V and n̂ is û turned
+    90° CCW. For a translating link with one known point, give ``base=(U,)`` and then
+    ``along``/``left`` are the x/y offsets (m).
+    """
+
+    name: str
+    link: str
+    base: tuple[str, ...]
+    along: float
+    left: float
+
+
+@dataclass(frozen=True)
+class Linkage:
+    """A class-II linkage: frame points, a driver, dyads in assembly order, extra points."""
+
+    frame_points: dict[str, tuple[float, float]]
+    driver: Driver
+    dyads: tuple[Dyad, ...] = ()
+    points: tuple[LinkPoint, ...] = ()
+    frame_link: str = "4"
+
+    def __hash__(self) -> int:  # frame_points is a dict; hash by identity is enough
+        return id(self)
+
+    def links(self) -> dict[str, list[str]]:
+        """Link id → the names of the points it carries, in the order they appear."""
+        out: dict[str, list[str]] = {}
+
+        def add(link: str, *names: str) -> None:
+            lst = out.setdefault(link, [])
+            for n in names:
+                if n not in lst:
+                    lst.append(n)
+
+        d = self.driver
+        if isinstance(d, Crank):
+            add(d.link, d.pivot, d.tip)
+        else:
+            add(d.link, d.point)
+        for y in self.dyads:
+            if isinstance(y, RRR):
+                add(y.links[0], y.p, y.c)
+                add(y.links[1], y.q, y.c)
+            elif isinstance(y, RRP):
+                add(y.links[0], y.p, y.c)
+                add(y.links[1], y.c)
+            elif isinstance(y, RPR):
+                add(y.bar_link, y.bar_pivot, y.coincident[0])
+                add(y.block_link, y.block_pivot)
+            elif isinstance(y, RPP):
+                add(y.links[0], y.p)
+                add(y.links[1], y.c)
+        for pt in self.points:
+            add(pt.link, pt.name)
+        return out
+
+
+@dataclass(frozen=True)
+class Positions:
+    """The driver's positions: crank angles (rad) or slider displacements (m)."""
+
+    values: tuple[float, ...]
+    labels: tuple[str, ...] = field(default=())  # e.g. ("50", "220") for name suffixes

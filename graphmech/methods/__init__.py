@@ -1,0 +1,1 @@
+"""The textbook methods: each builds a construction (never draws, never reads files)."""

@@ -1,0 +1,230 @@
+"""The acceleration polygon (加速度多边形, план ускорений) at μa, pole p′.
+
+Normal components are laid off from the ω read off the velocity polygon; the tangential
+component's direction is known, its size is not, so it is a line; two such lines meet at the
+new image. For an RRR dyad B–C–D
+
+    a_C = a_B + a^n_CB (C→B, ω2²·l_BC) + a^t_CB (⟂ BC) = a_D + a^n_CD + a^t_CD,
+
+and for coincident points on a sliding pair the Coriolis component a^k = 2ω×v_rel is laid off
+(v_rel turned 90° in the sense of ω) and the relative acceleration runs ∥ the bar.
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from graphmech.geometry import kernels as K
+from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.methods import measure
+from graphmech.methods.quantities import Quantity
+
+if TYPE_CHECKING:
+    from graphmech.methods.polygons import LinkageConstruction
+
+PANEL = "acceleration"
+POLE = "a:p'"
+
+
+def label(point: str) -> str:
+    """The image letter of a point: B → b', C2 → c2'."""
+    return point.lower() + "'"
+
+
+def add_pole(b: "LinkageConstruction") -> None:
+    b.g.add(POLE, "point", lambda ops: (0.0, 0.0), (), role="result", text="pole p′", panel=PANEL,
+            label="p'")
+    for name in b.linkage.frame_points:
+        b.acc[name] = POLE
+
+
+def add(b: "LinkageConstruction", part: Any) -> None:
+    {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp, RPR: _rpr, RPP: _rpp,
+     LinkPoint: _point}[type(part)](b, part)
+
+
+def _lbl(b: "LinkageConstruction", slot: str) -> str:
+    return b.g.steps[slot].label or ""
+
+
+def _image(b: "LinkageConstruction", point: str, kernel: Any, inputs: tuple, text: str) -> str:
+    b.acc[point] = b.g.add(f"a:{label(point)}", "point", kernel, inputs, role="result", text=text,
+                           panel=PANEL, label=label(point))
+    return b.acc[point]
+
+
+def _vector(b: "LinkageConstruction", start: str, end: str, role: str = "result") -> None:
+    name = f"a:{start}->{end}"
+    if start != end and not b.g.has(name):
+        b.g.add(name, "vector", None, (start, end), role=role, text=f"vector {start}{end}", panel=PANEL)
+
+
+def _line(b: "LinkageConstruction", name: str, kernel: Any, inputs: tuple, text: str) -> str:
+    return b.g.add(f"a:{name}", "line", kernel, inputs, role="construction", text=text, panel=PANEL)
+
+
+def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
+    """Lay off a^n_XY = ω²·l_XY (from X towards Y) from Y's image: the point n′ of ``link``.
+
+    X moves relative to Y on ``link``; the component points from X to Y.
+    """
+    k = b.mu_l / b.scales["a"]
+    tag = f"n{link}'"
+    while b.g.has(f"a:{tag}"):
+        tag += "'"
+
+    def kern(ops: Any, start: tuple, x: tuple, y: tuple, om: tuple) -> tuple:
+        w2 = (om[0] * om[1]) ** 2
+        return (start[0] + w2 * k * (y[0] - x[0]), start[1] + w2 * k * (y[1] - x[1]))
+
+    n = b.g.add(f"a:{tag}", "point", kern, (b.acc[Y], b.mech[X], b.mech[Y], b.omega[link]),
+                role="construction", panel=PANEL, label=tag,
+                text=f"lay off {_lbl(b, b.acc[Y])}{tag} = ω{link}²·l_{X}{Y}/μa ∥ {X}{Y}")
+    _vector(b, b.acc[Y], n, "construction")
+    measure.component(b, f"a_{X}{Y}_n", b.acc[Y], n, ("normal", X, Y, link))
+    return n
+
+
+def _tangential_line(b: "LinkageConstruction", n: str, X: str, Y: str) -> str:
+    return _line(b, f"⟂{Y}{X}@{_lbl(b, n)}",
+                 lambda ops, t, u, v: K.line_perpendicular(ops, t, u, v, Y + X),
+                 (n, b.mech[Y], b.mech[X]), f"through {_lbl(b, n)} draw ⟂ {Y}{X} (a^t_{X}{Y})")
+
+
+def _close(b: "LinkageConstruction", link: str, X: str, Y: str, n: str, img: str) -> None:
+    """Draw and measure the tangential component n→img and read α of the link from it."""
+    _vector(b, n, img, "construction")
+    measure.component(b, f"a_{X}{Y}_t", n, img, ("tangential", X, Y, link))
+    measure.alpha(b, link, Y, X, n, img)
+
+
+def _crank(b: "LinkageConstruction", d: Crank) -> None:
+    k = b.mu_l / b.scales["a"]
+    A, B = d.pivot, d.tip
+    w2, eps = d.omega ** 2, d.epsilon
+
+    def tip(ops: Any, p: tuple, a: tuple, t: tuple) -> tuple:
+        # a_B = ω²·(A − B) + ε·(B − A) turned 90° CCW
+        rx, ry = t[0] - a[0], t[1] - a[1]
+        return (p[0] + k * (-w2 * rx - eps * ry), p[1] + k * (-w2 * ry + eps * rx))
+
+    img = _image(b, B, tip, (POLE, b.mech[A], b.mech[B]),
+                 f"p′{label(B)} = a_{B}: ω{d.link}²·l_{A}{B}/μa ∥ {B}{A} + ε{d.link}·l_{A}{B}/μa ⟂ {A}{B}")
+    _vector(b, POLE, img)
+    if eps != 0.0:
+        n = _normal(b, d.link, B, A)
+        _close(b, d.link, B, A, n, img)
+    else:
+        measure.component(b, f"a_{B}{A}_n", POLE, img, ("normal", B, A, d.link))
+        measure.component(b, f"a_{B}{A}_t", img, img, ("tangential", B, A, d.link))
+        measure.alpha(b, d.link, A, B, img, img)
+    for c in ("n", "t"):  # the book also writes a^n_B, a^t_B for a crank's tip
+        q = b.quantities[f"a_{B}{A}_{c}"]
+        b.quantity(Quantity(f"a_{B}_{c}", q.unit, q.slot, q.exact, q.panel, q.segment))
+
+
+def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
+    gx, gy = d.guide.direction
+    k = d.acceleration / b.scales["a"]
+    img = _image(b, d.point, lambda ops, p: (p[0] + k * gx, p[1] + k * gy), (POLE,),
+                 f"p′{label(d.point)} ∥ guide, = a/μa")
+    _vector(b, POLE, img)
+
+
+def _rrr(b: "LinkageConstruction", y: RRR) -> None:
+    P, C, Q = y.p, y.c, y.q
+    i, j = y.links
+    ni = _normal(b, i, C, P)
+    nj = _normal(b, j, C, Q)
+    li = _tangential_line(b, ni, C, P)
+    lj = _tangential_line(b, nj, C, Q)
+    img = _image(b, C, K.intersect_lines, (li, lj),
+                 f"{label(C)} = (⟂{P}{C} through {_lbl(b, ni)}) ∩ (⟂{Q}{C} through {_lbl(b, nj)})")
+    b.g.extend_line(li, img)
+    b.g.extend_line(lj, img)
+    _vector(b, POLE, img)
+    _close(b, i, C, P, ni, img)
+    _close(b, j, C, Q, nj, img)
+
+
+def _rrp(b: "LinkageConstruction", y: RRP) -> None:
+    P, C = y.p, y.c
+    gx, gy = y.guide.direction
+    n = _normal(b, y.links[0], C, P)
+    lt = _tangential_line(b, n, C, P)
+    lg = _line(b, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
+               f"through p′ draw ∥ the guide of {C}")
+    img = _image(b, C, K.intersect_lines, (lt, lg),
+                 f"{label(C)} = (⟂{P}{C} through {_lbl(b, n)}) ∩ (∥ guide through p′)")
+    b.g.extend_line(lt, img)
+    b.g.extend_line(lg, img)
+    _vector(b, POLE, img)
+    _close(b, y.links[0], C, P, n, img)
+
+
+def _rpr(b: "LinkageConstruction", y: RPR) -> None:
+    # a_X(bar) = a_pivot + a^n + a^t (⟂ bar) = a_X(block) + a^k + a^r (∥ bar)
+    Bp, X = y.bar_pivot, y.block_pivot
+    xbar, xblock = y.coincident
+    bar = y.bar_link
+    b.acc[xblock] = b.acc[X]
+    kk = 2.0 * b.scales["v"] / b.scales["a"]
+    n = _normal(b, bar, xbar, Bp)
+    lt = _tangential_line(b, n, xbar, Bp)
+
+    def coriolis(ops: Any, start: tuple, vbar: tuple, vblock: tuple, om: tuple) -> tuple:
+        w = om[0] * om[1]
+        rx, ry = vbar[0] - vblock[0], vbar[1] - vblock[1]
+        return (start[0] - kk * w * ry, start[1] + kk * w * rx)
+
+    ktag = f"k{xbar}'".lower()
+    k = b.g.add(f"a:{ktag}", "point", coriolis, (b.acc[X], b.vel[xbar], b.vel[xblock], b.omega[bar]),
+                role="construction", panel=PANEL, label=ktag,
+                text=f"lay off {_lbl(b, b.acc[X])}{ktag} = 2ω{bar}·v_{xbar}{xblock}/μa (Coriolis)")
+    _vector(b, b.acc[X], k, "construction")
+    lr = _line(b, f"∥{Bp}{X}@{ktag}", lambda ops, t, u, v: K.line_parallel(ops, t, u, v, Bp + X),
+               (k, b.mech[Bp], b.mech[X]), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})")
+    img = _image(b, xbar, K.intersect_lines, (lt, lr),
+                 f"{label(xbar)} = (⟂{Bp}{X} through {_lbl(b, n)}) ∩ (∥{Bp}{X} through {ktag})")
+    b.g.extend_line(lt, img)
+    b.g.extend_line(lr, img)
+    _vector(b, POLE, img)
+    _vector(b, k, img, "construction")
+    _close(b, bar, xbar, Bp, n, img)
+    b.alpha[y.block_link] = b.alpha[bar]
+    q = b.quantities[f"alpha_{bar}"]
+    b.quantity(Quantity(f"alpha_{y.block_link}", q.unit, q.slot, ("alpha", y.block_link), q.panel, q.segment))
+    measure.component(b, f"a_k_{xbar}{xblock}", b.acc[X], k, ("coriolis", xbar, xblock, bar))
+    measure.component(b, f"a_r_{xbar}{xblock}", k, img, ("rel_slide_a", xbar, xblock, bar))
+
+
+def _rpp(b: "LinkageConstruction", y: RPP) -> None:
+    P, C = y.p, y.c
+    gx, gy = y.guide.direction
+    sx, sy = math.cos(y.slot_angle), math.sin(y.slot_angle)
+    lg = _line(b, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
+               f"through p′ draw ∥ the guide of {C}")
+    ls = _line(b, f"∥slot@{_lbl(b, b.acc[P])}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.acc[P],),
+               f"through {_lbl(b, b.acc[P])} draw ∥ the slot")
+    img = _image(b, C, K.intersect_lines, (lg, ls),
+                 f"{label(C)} = (∥ guide through p′) ∩ (∥ slot through {_lbl(b, b.acc[P])})")
+    b.g.extend_line(lg, img)
+    b.g.extend_line(ls, img)
+    pblock, pslot = y.coincident
+    b.acc[pblock] = b.acc[P]
+    b.acc[pslot] = img
+    _vector(b, POLE, img)
+    _vector(b, img, b.acc[P], "construction")
+
+
+def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
+    if len(pt.base) == 1:
+        b.acc[pt.name] = b.acc[pt.base[0]]
+        return
+    U, V = pt.base
+    img = _image(b, pt.name, K.similar_point,
+                 (b.mech[U], b.mech[V], b.mech[pt.name], b.acc[U], b.acc[V]),
+                 f"{label(pt.name)}: △{label(U)}{label(V)}{label(pt.name)} ∼ △{U}{V}{pt.name} (acceleration image)")
+    _vector(b, POLE, img)
+    _vector(b, b.acc[U], img, "construction")
+    _vector(b, b.acc[V], img, "construction")

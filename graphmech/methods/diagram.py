@@ -1,0 +1,151 @@
+"""The kinematic diagram (机构运动简图) at μl: where every point of the linkage is.
+
+Each dyad's middle joint is found the draftsman's way: as the intersection of two loci
+(two circles for RRR, circle and guide for RRP, two lines for RPP).
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from graphmech.geometry import kernels as K
+from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+
+if TYPE_CHECKING:
+    from graphmech.methods.polygons import LinkageConstruction
+
+PANEL = "mechanism"
+
+
+def add_frame(b: "LinkageConstruction") -> None:
+    mu = b.mu_l
+    for name, (x, y) in b.linkage.frame_points.items():
+        xy = (x / mu, y / mu)
+        b.mech[name] = b.g.add(name, "point", lambda ops, xy=xy: xy, (), role="given",
+                               text=f"frame point {name}", panel=PANEL, label=name)
+
+
+def add(b: "LinkageConstruction", part: Any) -> None:
+    {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp, RPR: _rpr, RPP: _rpp,
+     LinkPoint: _point}[type(part)](b, part)
+
+
+def _crank(b: "LinkageConstruction", d: Crank) -> None:
+    r = d.length / b.mu_l
+
+    def tip(ops: Any, phi: Any, a: tuple) -> tuple:
+        return (a[0] + r * ops.cos(phi), a[1] + r * ops.sin(phi))
+
+    b.mech[d.tip] = b.g.add(d.tip, "point", tip, (b.param, b.mech[d.pivot]), role="given",
+                            text=f"{d.tip} on the crank circle about {d.pivot} at φ", panel=PANEL,
+                            label=d.tip)
+
+
+def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
+    mu = b.mu_l
+    gx, gy = d.guide.direction
+    ox, oy = d.guide.through[0] / mu, d.guide.through[1] / mu
+    b.slider_dir[d.point] = (gx, gy)
+    b.translating.add(d.link)
+
+    def point(ops: Any, s: Any) -> tuple:
+        return (ox + s / mu * gx, oy + s / mu * gy)
+
+    b.mech[d.point] = b.g.add(d.point, "point", point, (b.param,), role="given",
+                              text=f"{d.point} at s along its guide", panel=PANEL, label=d.point)
+
+
+def _rrr(b: "LinkageConstruction", y: RRR) -> None:
+    mu = b.mu_l
+    r1, r2 = y.lengths[0] / mu, y.lengths[1] / mu
+    side = 1.0 if y.branch == "left" else -1.0
+    i, j = y.links
+    P, C, Q = y.p, y.c, y.q
+
+    def explain(d: Any) -> str:
+        s = f"l{i} + l{j} = {(r1 + r2) * mu:.4g} m"
+        dd = f"|{P}{Q}| = {d * mu:.4g} m" if not hasattr(d, "shape") else f"|{P}{Q}|"
+        if not hasattr(d, "shape") and d < abs(r1 - r2):
+            return f"cannot be assembled: {dd} < |l{i} − l{j}| = {abs(r1 - r2) * mu:.4g} m"
+        return f"cannot be assembled: {dd} > {s}" if not hasattr(d, "shape") else \
+            f"cannot be assembled: {dd} is not between |l{i} − l{j}| and {s}"
+
+    def joint(ops: Any, p: tuple, q: tuple) -> tuple:
+        return K.intersect_circles(ops, p, r1, q, r2, side, explain)
+
+    b.mech[C] = b.g.add(C, "point", joint, (b.mech[P], b.mech[Q]), role="given",
+                        text=f"{C} = circle({P}, l{i}) ∩ circle({Q}, l{j}), {y.branch} of {P}→{Q}",
+                        panel=PANEL, label=C)
+
+
+def _guide_line(b: "LinkageConstruction", guide: Any) -> tuple:
+    mu = b.mu_l
+    gx, gy = guide.direction
+    return (guide.through[0] / mu, guide.through[1] / mu, gx, gy)
+
+
+def _rrp(b: "LinkageConstruction", y: RRP) -> None:
+    mu = b.mu_l
+    r = y.length / mu
+    side = 1.0 if y.branch == "forward" else -1.0
+    line = _guide_line(b, y.guide)
+    P, C = y.p, y.c
+    b.slider_dir[C] = y.guide.direction
+    b.translating.add(y.links[1])
+
+    def explain(e: Any) -> str:
+        if hasattr(e, "shape"):
+            return f"cannot be assembled: {P} is farther than l{y.links[0]} from the guide"
+        return (f"cannot be assembled: {P} is {e * mu:.4g} m from the guide > "
+                f"l{y.links[0]} = {y.length:.4g} m")
+
+    def joint(ops: Any, p: tuple) -> tuple:
+        return K.intersect_circle_line(ops, p, r, line, side, explain)
+
+    b.mech[C] = b.g.add(C, "point", joint, (b.mech[P],), role="given",
+                        text=f"{C} = circle({P}, l{y.links[0]}) ∩ guide, {y.branch}", panel=PANEL,
+                        label=C)
+
+
+def _rpr(b: "LinkageConstruction", y: RPR) -> None:
+    # The bar's line runs from its pivot through the block's pivot: no new point, but the
+    # coincident points X<bar>, X<block> sit where the block's pivot is.
+    x = y.block_pivot
+    for name in y.coincident:
+        b.mech[name] = b.mech[x]
+
+
+def _rpp(b: "LinkageConstruction", y: RPP) -> None:
+    sx, sy = math.cos(y.slot_angle), math.sin(y.slot_angle)
+    line = _guide_line(b, y.guide)
+    P, C = y.p, y.c
+    b.slider_dir[C] = y.guide.direction
+    b.translating.update(y.links)
+
+    def joint(ops: Any, p: tuple) -> tuple:
+        return K.intersect_lines(ops, K.line_fixed(ops, p, sx, sy), line)
+
+    b.mech[C] = b.g.add(C, "point", joint, (b.mech[P],), role="given",
+                        text=f"{C} = slot through {P} ∩ guide", panel=PANEL, label=C)
+    b.mech[y.coincident[0]] = b.mech[P]
+    b.mech[y.coincident[1]] = b.mech[P]
+
+
+def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
+    mu = b.mu_l
+    along, left = pt.along / mu, pt.left / mu
+    if len(pt.base) == 1:
+        def fixed(ops: Any, u: tuple) -> tuple:
+            return (u[0] + along, u[1] + left)
+
+        b.mech[pt.name] = b.g.add(pt.name, "point", fixed, (b.mech[pt.base[0]],), role="given",
+                                  text=f"{pt.name} on link {pt.link}", panel=PANEL, label=pt.name)
+        return
+    U, V = pt.base
+
+    def placed(ops: Any, u: tuple, v: tuple) -> tuple:
+        ux, uy = K.direction(ops, u[0], u[1], v[0], v[1], f"{U}{V}")
+        return (u[0] + along * ux - left * uy, u[1] + along * uy + left * ux)
+
+    b.mech[pt.name] = b.g.add(pt.name, "point", placed, (b.mech[U], b.mech[V]), role="given",
+                              text=f"{pt.name} on link {pt.link}", panel=PANEL, label=pt.name)

@@ -1,0 +1,149 @@
+"""Measuring the drawing: each quantity is a step returning ``(drawn_mm, scale)``.
+
+The length is taken from the exact construction (floats, not rounded SVG coordinates) and
+signed where the quantity has a sense: ω and α counter-clockwise positive (the sense in which
+the relative vector turns about its base point), a slider's velocity along its guide.
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from graphmech.geometry.kernels import cross
+from graphmech.methods.quantities import Quantity
+
+if TYPE_CHECKING:
+    from graphmech.methods.polygons import LinkageConstruction
+
+
+def _add(b: "LinkageConstruction", name: str, unit: str, kernel: Any, inputs: tuple, exact: tuple,
+         panel: str, segment: tuple = ()) -> str:
+    slot = f"m:{name}"
+    if not b.g.has(slot):
+        b.g.add(slot, "scalar", kernel, inputs, role="hidden", text=f"measure {name}", panel=panel)
+        b.quantity(Quantity(name, unit, slot, exact, panel, segment))
+    return slot
+
+
+def _label(b: "LinkageConstruction", slot: str) -> str:
+    return b.g.steps[slot].label or ""
+
+
+def _segment(start: str, end: str, scale: float, name: str, b: "LinkageConstruction",
+             unit: str, exact: tuple, panel: str) -> str:
+    """A plain drawn length |start end| × scale."""
+
+    def kern(ops: Any, s: tuple, e: tuple) -> tuple:
+        return (ops.hypot(e[0] - s[0], e[1] - s[1]), scale)
+
+    return _add(b, name, unit, kern, (start, end), exact, panel, (_label(b, start), _label(b, end)))
+
+
+# ----------------------------------------------------------------------- angular rates
+
+
+def omega(b: "LinkageConstruction", link: str, U: str, V: str) -> None:
+    """ω of a link read off the polygon: ω = (UV × uv)/|UV|² · μv/μl (sense: uv turned about u)."""
+    mv, ml = b.scales["v"], b.mu_l
+
+    def kern(ops: Any, mu: tuple, mv_: tuple, iu: tuple, iv: tuple) -> tuple:
+        dx, dy = mv_[0] - mu[0], mv_[1] - mu[1]
+        n = ops.hypot(dx, dy)
+        return (cross(dx, dy, iv[0] - iu[0], iv[1] - iu[1]) / n, mv / (n * ml))
+
+    b.omega[link] = _add(b, f"omega_{link}", "rad/s", kern, (b.mech[U], b.mech[V], b.vel[U], b.vel[V]),
+                         ("omega", link), "velocity", (_label(b, b.vel[U]), _label(b, b.vel[V])))
+
+
+def alpha(b: "LinkageConstruction", link: str, U: str, V: str, n: str, end: str) -> None:
+    """α of a link from its tangential component n→end: α = (UV × a^t)/|UV|² · μa/μl."""
+    ma, ml = b.scales["a"], b.mu_l
+
+    def kern(ops: Any, mu: tuple, mv_: tuple, s: tuple, e: tuple) -> tuple:
+        dx, dy = mv_[0] - mu[0], mv_[1] - mu[1]
+        d = ops.hypot(dx, dy)
+        return (cross(dx, dy, e[0] - s[0], e[1] - s[1]) / d, ma / (d * ml))
+
+    b.alpha[link] = _add(b, f"alpha_{link}", "rad/s²", kern, (b.mech[U], b.mech[V], n, end),
+                         ("alpha", link), "acceleration", (_label(b, n), _label(b, end)))
+
+
+def zero_rate(b: "LinkageConstruction", link: str) -> None:
+    """A translating link: ω = α = 0 exactly."""
+    zero = lambda ops: (0.0, 1.0)  # noqa: E731
+    b.omega[link] = _add(b, f"omega_{link}", "rad/s", zero, (), ("omega", link), "velocity")
+    b.alpha[link] = _add(b, f"alpha_{link}", "rad/s²", zero, (), ("alpha", link), "acceleration")
+
+
+def same_rate(b: "LinkageConstruction", link: str, other: str) -> None:
+    """A block sliding on a bar turns with it."""
+    b.omega[link] = b.omega[other]
+    q = b.quantities[f"omega_{other}"]
+    b.quantity(Quantity(f"omega_{link}", q.unit, q.slot, ("omega", link), q.panel, q.segment))
+
+
+# ----------------------------------------------------------------------- point quantities
+
+
+def _speed(b: "LinkageConstruction", x: str, img: str, pole: str, scale: float, prefix: str,
+           unit: str, panel: str) -> None:
+    g = b.slider_dir.get(x)
+    if g is None:
+        _segment(pole, img, scale, f"{prefix}_{x}", b, unit, ("speed" if prefix == "v" else "acc", x), panel)
+        return
+    gx, gy = g
+
+    def kern(ops: Any, p: tuple, e: tuple) -> tuple:
+        return ((e[0] - p[0]) * gx + (e[1] - p[1]) * gy, scale)
+
+    kind = "slide_v" if prefix == "v" else "slide_a"
+    _add(b, f"{prefix}_{x}", unit, kern, (pole, img), (kind, x, gx, gy), panel,
+         (_label(b, pole), _label(b, img)))
+
+
+def point_speed(b: "LinkageConstruction", x: str) -> None:
+    from graphmech.methods.velocity import POLE
+
+    _speed(b, x, b.vel[x], POLE, b.scales["v"], "v", "m/s", "velocity")
+
+
+def point_acceleration(b: "LinkageConstruction", x: str) -> None:
+    from graphmech.methods.acceleration import POLE
+
+    _speed(b, x, b.acc[x], POLE, b.scales["a"], "a", "m/s²", "acceleration")
+
+
+def relative(b: "LinkageConstruction", x: str, y: str) -> None:
+    """v_XY = |yx|·μv and a_XY = |y′x′|·μa (velocity/acceleration of X relative to Y)."""
+    if x in b.vel and y in b.vel:
+        _segment(b.vel[y], b.vel[x], b.scales["v"], f"v_{x}{y}", b, "m/s", ("rel_v", x, y), "velocity")
+    if x in b.acc and y in b.acc:
+        _segment(b.acc[y], b.acc[x], b.scales["a"], f"a_{x}{y}", b, "m/s²", ("rel_a", x, y),
+                 "acceleration")
+
+
+def length(b: "LinkageConstruction", x: str, y: str) -> None:
+    """l_XY measured on the kinematic diagram."""
+    _segment(b.mech[x], b.mech[y], b.mu_l, f"l_{x}{y}", b, "m", ("length", x, y), "mechanism")
+
+
+def link_angle(b: "LinkageConstruction", link: str) -> None:
+    """θ of a rotating link: direction of its first two points, degrees in [0, 360)."""
+    pts = b.link_points.get(link, [])
+    if link in b.translating or len(pts) < 2:
+        return
+    U, V = pts[0], pts[1]
+
+    def kern(ops: Any, u: tuple, v: tuple) -> tuple:
+        if ops.batch:
+            import numpy as np
+
+            return (np.degrees(np.arctan2(v[1] - u[1], v[0] - u[0])) % 360.0, 1.0)
+        return (math.degrees(math.atan2(v[1] - u[1], v[0] - u[0])) % 360.0, 1.0)
+
+    _add(b, f"theta_{link}", "deg", kern, (b.mech[U], b.mech[V]), ("angle", link), "mechanism")
+
+
+def component(b: "LinkageConstruction", name: str, start: str, end: str, exact: tuple) -> None:
+    """A laid-off or found component (normal, tangential, Coriolis, relative) in the acceleration polygon."""
+    _segment(start, end, b.scales["a"], name, b, "m/s²", exact, "acceleration")

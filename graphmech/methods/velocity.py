@@ -1,0 +1,177 @@
+"""The velocity polygon (速度多边形, план скоростей) at μv, pole p.
+
+For each dyad the new image is the intersection of two lines through known images, each
+line carrying one unknown of a vector equation, e.g. for an RRR dyad B–C–D
+
+    v_C = v_B + v_CB (⟂ BC) = v_D + v_CD (⟂ DC):  c = (⟂BC through b) ∩ (⟂DC through d).
+
+Points fixed on a link get their image by similarity (the velocity image, 速度影像).
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from graphmech.geometry import kernels as K
+from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.methods import measure
+
+if TYPE_CHECKING:
+    from graphmech.methods.polygons import LinkageConstruction
+
+PANEL = "velocity"
+POLE = "v:p"
+
+
+def label(point: str) -> str:
+    """The image letter of a point: B → b, C2 → c2."""
+    return point.lower()
+
+
+def add_pole(b: "LinkageConstruction") -> None:
+    b.g.add(POLE, "point", lambda ops: (0.0, 0.0), (), role="result", text="pole p", panel=PANEL,
+            label="p")
+    for name in b.linkage.frame_points:
+        b.vel[name] = POLE  # fixed points have zero velocity: their image is the pole
+
+
+def add(b: "LinkageConstruction", part: Any) -> None:
+    {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp, RPR: _rpr, RPP: _rpp,
+     LinkPoint: _point}[type(part)](b, part)
+
+
+def _img_label(b: "LinkageConstruction", point: str) -> str:
+    return b.g.steps[b.vel[point]].label or "p"
+
+
+def _image(b: "LinkageConstruction", point: str, kernel: Any, inputs: tuple, text: str) -> str:
+    b.vel[point] = b.g.add(f"v:{label(point)}", "point", kernel, inputs, role="result", text=text,
+                           panel=PANEL, label=label(point))
+    return b.vel[point]
+
+
+def _vector(b: "LinkageConstruction", start: str, end: str, role: str = "result") -> None:
+    name = f"v:{start}->{end}"
+    if start != end and not b.g.has(name):
+        b.g.add(name, "vector", None, (start, end), role=role, text=f"vector {start}{end}",
+                panel=PANEL)
+
+
+def _line(b: "LinkageConstruction", name: str, kernel: Any, inputs: tuple, text: str) -> str:
+    return b.g.add(f"v:{name}", "line", kernel, inputs, role="construction", text=text, panel=PANEL)
+
+
+def _crank(b: "LinkageConstruction", d: Crank) -> None:
+    k = d.omega * b.mu_l / b.scales["v"]  # drawing mm of pb per drawing mm of AB
+
+    def tip(ops: Any, p: tuple, a: tuple, t: tuple) -> tuple:
+        return (p[0] - k * (t[1] - a[1]), p[1] + k * (t[0] - a[0]))
+
+    img = _image(b, d.tip, tip, (POLE, b.mech[d.pivot], b.mech[d.tip]),
+                 f"p{label(d.tip)} ⟂ {d.pivot}{d.tip}, p{label(d.tip)} = ω{d.link}·l_{d.pivot}{d.tip}/μv")
+    _vector(b, POLE, img)
+    measure.omega(b, d.link, d.pivot, d.tip)
+
+
+def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
+    gx, gy = d.guide.direction
+    k = d.velocity / b.scales["v"]
+    img = _image(b, d.point, lambda ops, p: (p[0] + k * gx, p[1] + k * gy), (POLE,),
+                 f"p{label(d.point)} ∥ guide, p{label(d.point)} = v/μv")
+    _vector(b, POLE, img)
+    measure.zero_rate(b, d.link)
+
+
+def _rrr(b: "LinkageConstruction", y: RRR) -> None:
+    P, C, Q = y.p, y.c, y.q
+    lp, lq, lc = _img_label(b, P), _img_label(b, Q), label(C)
+    li = _line(b, f"⟂{P}{C}@{lp}", lambda ops, t, u, v: K.line_perpendicular(ops, t, u, v, P + C),
+               (b.vel[P], b.mech[P], b.mech[C]), f"through {lp} draw ⟂ {P}{C}")
+    lj = _line(b, f"⟂{Q}{C}@{lq}", lambda ops, t, u, v: K.line_perpendicular(ops, t, u, v, Q + C),
+               (b.vel[Q], b.mech[Q], b.mech[C]), f"through {lq} draw ⟂ {Q}{C}")
+    img = _image(b, C, K.intersect_lines, (li, lj),
+                 f"{lc} = (⟂{P}{C} through {lp}) ∩ (⟂{Q}{C} through {lq})")
+    b.g.extend_line(li, img)
+    b.g.extend_line(lj, img)
+    _vector(b, POLE, img)
+    _vector(b, b.vel[P], img)
+    _vector(b, b.vel[Q], img)
+    measure.omega(b, y.links[0], P, C)
+    measure.omega(b, y.links[1], Q, C)
+
+
+def _rrp(b: "LinkageConstruction", y: RRP) -> None:
+    P, C = y.p, y.c
+    gx, gy = y.guide.direction
+    lp, lc = _img_label(b, P), label(C)
+    li = _line(b, f"⟂{P}{C}@{lp}", lambda ops, t, u, v: K.line_perpendicular(ops, t, u, v, P + C),
+               (b.vel[P], b.mech[P], b.mech[C]), f"through {lp} draw ⟂ {P}{C}")
+    lg = _line(b, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
+               f"through p draw ∥ the guide of {C}")
+    img = _image(b, C, K.intersect_lines, (li, lg),
+                 f"{lc} = (⟂{P}{C} through {lp}) ∩ (∥ guide through p)")
+    b.g.extend_line(li, img)
+    b.g.extend_line(lg, img)
+    _vector(b, POLE, img)
+    _vector(b, b.vel[P], img)
+    measure.omega(b, y.links[0], P, C)
+    measure.zero_rate(b, y.links[1])
+
+
+def _rpr(b: "LinkageConstruction", y: RPR) -> None:
+    # v_X(bar) = v_(bar pivot) + v_X(bar),pivot (⟂ bar) = v_X(block) + v_rel (∥ bar)
+    Bp, X = y.bar_pivot, y.block_pivot
+    xbar, xblock = y.coincident
+    b.vel[xblock] = b.vel[X]
+    lp, lx, lc = _img_label(b, Bp), _img_label(b, X), label(xbar)
+    lt = _line(b, f"⟂{Bp}{X}@{lp}", lambda ops, t, u, v: K.line_perpendicular(ops, t, u, v, Bp + X),
+               (b.vel[Bp], b.mech[Bp], b.mech[X]), f"through {lp} draw ⟂ {Bp}{X}")
+    lr = _line(b, f"∥{Bp}{X}@{lx}", lambda ops, t, u, v: K.line_parallel(ops, t, u, v, Bp + X),
+               (b.vel[X], b.mech[Bp], b.mech[X]), f"through {lx} draw ∥ {Bp}{X}")
+    img = _image(b, xbar, K.intersect_lines, (lt, lr),
+                 f"{lc} = (⟂{Bp}{X} through {lp}) ∩ (∥{Bp}{X} through {lx})")
+    b.g.extend_line(lt, img)
+    b.g.extend_line(lr, img)
+    _vector(b, POLE, img)
+    _vector(b, b.vel[Bp], img)
+    _vector(b, b.vel[X], img)
+    measure.omega(b, y.bar_link, Bp, xbar)
+    measure.same_rate(b, y.block_link, y.bar_link)
+    b.coincident.append((xbar, xblock))
+
+
+def _rpp(b: "LinkageConstruction", y: RPP) -> None:
+    # v_P = v_P(slotted) + v_rel (∥ slot), v_P(slotted) = v_C (∥ guide): j translates.
+    P, C = y.p, y.c
+    gx, gy = y.guide.direction
+    sx, sy = math.cos(y.slot_angle), math.sin(y.slot_angle)
+    lp, lc = _img_label(b, P), label(C)
+    lg = _line(b, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
+               f"through p draw ∥ the guide of {C}")
+    ls = _line(b, f"∥slot@{lp}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.vel[P],),
+               f"through {lp} draw ∥ the slot")
+    img = _image(b, C, K.intersect_lines, (lg, ls),
+                 f"{lc} = (∥ guide through p) ∩ (∥ slot through {lp})")
+    b.g.extend_line(lg, img)
+    b.g.extend_line(ls, img)
+    pblock, pslot = y.coincident
+    b.vel[pblock] = b.vel[P]
+    b.vel[pslot] = img
+    _vector(b, POLE, img)
+    _vector(b, img, b.vel[P])
+    measure.zero_rate(b, y.links[0])
+    measure.zero_rate(b, y.links[1])
+    b.coincident.append((pblock, pslot))
+
+
+def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
+    if len(pt.base) == 1:  # a translating link: every point has the same velocity
+        b.vel[pt.name] = b.vel[pt.base[0]]
+        return
+    U, V = pt.base
+    img = _image(b, pt.name, K.similar_point,
+                 (b.mech[U], b.mech[V], b.mech[pt.name], b.vel[U], b.vel[V]),
+                 f"{label(pt.name)}: △{label(U)}{label(V)}{label(pt.name)} ∼ △{U}{V}{pt.name} (velocity image)")
+    _vector(b, POLE, img)
+    _vector(b, b.vel[U], img, "construction")
+    _vector(b, b.vel[V], img, "construction")

@@ -1,0 +1,116 @@
+"""Backend-neutral draw primitives.
+
+A method's construction is turned into these by ``graphmech.render.frontend``; a backend (SVG,
+recording) turns them into output. Coordinates are **drawing millimetres, y up**, in the
+coordinate frame of the panel that holds them (a panel is one figure on the sheet: the
+mechanism at μl, the velocity polygon at μv, …). Flipping y for SVG is the backend's business.
+
+Roles
+-----
+``given``         data of the problem (the mechanism's links, frame, known vectors)
+``construction``  thin construction lines (perpendiculars, laid-off components)
+``result``        what the construction finds (bold)
+``label``         letters and notes
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal, Union
+
+Role = Literal["given", "construction", "result", "label"]
+XY = tuple[float, float]
+
+
+@dataclass(frozen=True)
+class Segment:
+    p0: XY
+    p1: XY
+    role: Role = "given"
+    dashed: bool = False
+
+
+@dataclass(frozen=True)
+class Arrow:
+    """A vector p0 → p1 with a filled arrowhead (a small polygon, never an SVG marker) at p1."""
+
+    p0: XY
+    p1: XY
+    role: Role = "result"
+
+
+@dataclass(frozen=True)
+class Circle:
+    center: XY
+    r: float
+    role: Role = "construction"
+
+
+@dataclass(frozen=True)
+class Hinge:
+    """A revolute joint: small open circle of fixed paper size (radius in mm)."""
+
+    center: XY
+    r: float = 1.2
+
+
+@dataclass(frozen=True)
+class FixedPivot:
+    """A frame pivot: hinge on a small triangle standing on a hatched ground line."""
+
+    center: XY
+
+
+@dataclass(frozen=True)
+class Slider:
+    """A slider block (rectangle) centred on ``center``, its long side along ``angle`` (rad)."""
+
+    center: XY
+    angle: float
+    length: float = 8.0
+    width: float = 5.0
+
+
+@dataclass(frozen=True)
+class GuideLine:
+    """A fixed guide from p0 to p1 with ground hatching on its right side (seen p0→p1)."""
+
+    p0: XY
+    p1: XY
+
+
+@dataclass(frozen=True)
+class Label:
+    """A letter or short note at ``anchor``; the backend places it so labels do not overlap.
+
+    ``avoid`` lists directions (unit vectors) along which lines leave the anchor, so the
+    label prefers the widest free sector.
+    """
+
+    text: str
+    anchor: XY
+    avoid: tuple[XY, ...] = ()
+    size: float = 3.5  # font size, mm
+    italic: bool = True
+
+
+Primitive = Union[Segment, Arrow, Circle, Hinge, FixedPivot, Slider, GuideLine, Label]
+
+
+@dataclass(frozen=True)
+class Panel:
+    """One figure of the sheet, with its own scale; ``notes`` are printed under its title."""
+
+    name: str
+    title: str
+    items: tuple[Primitive, ...]
+    notes: tuple[str, ...] = ()  # e.g. ("μl = 0.002 m/mm",)
+
+
+@dataclass(frozen=True)
+class Sheet:
+    """A whole drawing: a title and panels laid out side by side on a page (size in mm)."""
+
+    title: str
+    panels: tuple[Panel, ...]
+    page: tuple[float, float] = (297.0, 210.0)
+    footer: tuple[str, ...] = field(default=())

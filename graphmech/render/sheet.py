@@ -1,0 +1,300 @@
+"""The frontend: a :class:`~graphmech.render.primitives.Sheet` → calls on a backend.
+
+What the frontend decides, so that every backend draws the same figure:
+
+* **Placement** (:mod:`graphmech.render.layout`): each panel is translated and flipped onto the
+  page, never scaled — the drawing's μ stays true on paper.
+* **Symbols**, expanded into lines, polygons and circles, all of paper size:
+  an arrow is its shaft plus a small filled triangle (never an SVG marker) whose tip is the
+  vector's end; a frame pivot is a hinge on a triangle standing on a ground line with short 45°
+  hatch strokes; a guide is a line with hatching on its right side; a slider is a white
+  rotated rectangle; a hinge is a small white-filled circle.
+* **Order** (back to front): ground and guides with their hatching, slider blocks,
+  construction lines, given lines, result lines, hinges (so they cover the line ends), labels.
+  Items of the same layer keep the panel's order.
+* **Labels** (:mod:`graphmech.render.labels`), placed around their anchors clear of each other
+  and of the panel's strokes; drawn last.
+* **Lettering**: sheet title at the top, each panel's title and notes centred under it, footer
+  lines at the bottom left.
+
+Examples
+--------
+>>> from graphmech.render.primitives import Arrow, Panel, Sheet
+>>> from graphmech.render.recording import RecordingBackend
+>>> sheet = Sheet("", (Panel("v", "", (Arrow((0.0, 0.0), (20.0, 0.0)),)),))
+>>> calls = draw_sheet(sheet, RecordingBackend())
+>>> [c[0] for c in calls if c[0] in ("line", "polyline")]
+['line', 'polyline']
+"""
+from __future__ import annotations
+
+import math
+import re
+import warnings
+from dataclasses import dataclass
+from typing import Callable, Sequence, TypeVar, Union
+
+from graphmech.render.backend import Backend
+from graphmech.render.labels import PlacedLabel, place_labels
+from graphmech.render.layout import PanelPlacement, layout_sheet, slider_corners
+from graphmech.render.primitives import (
+    XY,
+    Arrow,
+    Circle,
+    FixedPivot,
+    GuideLine,
+    Hinge,
+    Label,
+    Panel,
+    Primitive,
+    Segment,
+    Sheet,
+    Slider,
+)
+from graphmech.render.style import DEFAULT, Style
+
+R = TypeVar("R")
+
+#: Draw layers, back to front.
+LAYER_GROUND, LAYER_SLIDER, LAYER_CONSTRUCTION, LAYER_GIVEN, LAYER_RESULT, LAYER_HINGE = range(6)
+_ROLE_LAYER = {
+    "construction": LAYER_CONSTRUCTION,
+    "given": LAYER_GIVEN,
+    "label": LAYER_GIVEN,
+    "result": LAYER_RESULT,
+}
+
+#: Label baseline below the centre of its estimated box, as a fraction of the font size.
+BASELINE_DROP = 0.35
+
+
+class LayoutWarning(UserWarning):
+    """A sheet does not fit its page at the panels' scales (μ is kept, never changed)."""
+
+
+# ----------------------------------------------------------------------------- shapes
+@dataclass(frozen=True)
+class LineShape:
+    p0: XY
+    p1: XY
+    key: str
+    dashed: bool = False
+
+
+@dataclass(frozen=True)
+class PolyShape:
+    points: tuple[XY, ...]
+    key: str
+    closed: bool = False
+    filled: bool = False
+
+
+@dataclass(frozen=True)
+class CircleShape:
+    c: XY
+    r: float
+    key: str
+    filled: bool = False
+
+
+Shape = Union[LineShape, PolyShape, CircleShape]
+
+
+def hatch(p0: XY, p1: XY, style: Style = DEFAULT) -> list[LineShape]:
+    """Ground hatching on the right of the line p0→p1 (panel frame, y up): strokes of
+    ``hatch_length`` at 45° to the line, leaning back towards p0, every ``hatch_spacing``.
+
+    >>> [tuple(round(v, 3) for v in s.p1) for s in hatch((0.0, 0.0), (4.0, 0.0))][:2]
+    [(0.0, -1.273), (1.4, -1.273)]
+    """
+    (x0, y0), (x1, y1) = p0, p1
+    length = math.hypot(x1 - x0, y1 - y0)
+    if length == 0.0:
+        return []
+    tx, ty = (x1 - x0) / length, (y1 - y0) / length
+    nx, ny = ty, -tx  # right-hand side seen p0 → p1
+    k = style.hatch_length / math.sqrt(2.0)
+    sx, sy = k * (nx - tx), k * (ny - ty)
+    out = []
+    s = k
+    while s <= length + 1e-9:
+        a = (x0 + s * tx, y0 + s * ty)
+        out.append(LineShape(a, (a[0] + sx, a[1] + sy), "hatch"))
+        s += style.hatch_spacing
+    return out
+
+
+def arrow_shapes(a: Arrow, style: Style = DEFAULT) -> list[Shape]:
+    """Shaft (from the tail to the middle of the head's base) and the filled head.
+
+    The head is ``arrow_length`` long and ``2·arrow_half_width`` wide, its tip at ``a.p1``;
+    an arrow shorter than its head gets a head shrunk to its length (and no shaft).
+
+    Raises
+    ------
+    ValueError
+        For a zero-length arrow (it has no direction).
+    """
+    (x0, y0), (x1, y1) = a.p0, a.p1
+    length = math.hypot(x1 - x0, y1 - y0)
+    if not length > 0.0:
+        raise ValueError(f"an arrow needs two distinct points, got {a.p0!r} → {a.p1!r}")
+    ux, uy = (x1 - x0) / length, (y1 - y0) / length
+    head = min(style.arrow_length, length)
+    hw = style.arrow_half_width * head / style.arrow_length
+    bx, by = x1 - head * ux, y1 - head * uy
+    shapes: list[Shape] = []
+    if length > head:
+        shapes.append(LineShape(a.p0, (bx, by), a.role))
+    tri = ((x1, y1), (bx - hw * uy, by + hw * ux), (bx + hw * uy, by - hw * ux))
+    shapes.append(PolyShape(tri, a.role, closed=True, filled=True))
+    return shapes
+
+
+def pivot_shapes(p: FixedPivot, style: Style = DEFAULT) -> list[tuple[int, Shape]]:
+    """A frame pivot: legs and ground line, hatching below it, and the hinge on top."""
+    cx, cy = p.center
+    gy = cy - style.pivot_height
+    left, right = (cx - style.pivot_ground_half, gy), (cx + style.pivot_ground_half, gy)
+    out: list[tuple[int, Shape]] = [
+        (LAYER_GROUND, LineShape(p.center, (cx - style.pivot_half_base, gy), "frame")),
+        (LAYER_GROUND, LineShape(p.center, (cx + style.pivot_half_base, gy), "frame")),
+        (LAYER_GROUND, LineShape(left, right, "frame")),
+    ]
+    out += [(LAYER_GROUND, s) for s in hatch(left, right, style)]
+    out.append((LAYER_HINGE, CircleShape(p.center, style.hinge_r, "hinge", filled=True)))
+    return out
+
+
+def item_shapes(item: Primitive, style: Style = DEFAULT) -> list[tuple[int, Shape]]:
+    """One primitive as (layer, shape) pairs in its panel's frame; labels give none."""
+    if isinstance(item, Segment):
+        return [(_ROLE_LAYER[item.role], LineShape(item.p0, item.p1, item.role, item.dashed))]
+    if isinstance(item, Arrow):
+        return [(_ROLE_LAYER[item.role], s) for s in arrow_shapes(item, style)]
+    if isinstance(item, Circle):
+        return [(_ROLE_LAYER[item.role], CircleShape(item.center, item.r, item.role))]
+    if isinstance(item, Hinge):
+        return [(LAYER_HINGE, CircleShape(item.center, item.r, "hinge", filled=True))]
+    if isinstance(item, FixedPivot):
+        return pivot_shapes(item, style)
+    if isinstance(item, Slider):
+        block = PolyShape(slider_corners(item), "slider", closed=True, filled=True)
+        return [(LAYER_SLIDER, block)]
+    if isinstance(item, GuideLine):
+        out: list[tuple[int, Shape]] = [(LAYER_GROUND, LineShape(item.p0, item.p1, "frame"))]
+        return out + [(LAYER_GROUND, s) for s in hatch(item.p0, item.p1, style)]
+    if isinstance(item, Label):
+        return []
+    raise TypeError(f"not a draw primitive: {item!r}")
+
+
+def panel_shapes(panel: Panel, style: Style = DEFAULT) -> list[Shape]:
+    """All shapes of a panel in drawing order (layer, then the panel's order)."""
+    tagged = []
+    for i, item in enumerate(panel.items):
+        for j, (layer, shape) in enumerate(item_shapes(item, style)):
+            tagged.append((layer, i, j, shape))
+    tagged.sort(key=lambda t: t[:3])
+    return [t[3] for t in tagged]
+
+
+def _obstacles(shapes: Sequence[Shape]) -> tuple[list[tuple[XY, XY]], list[tuple[XY, float]]]:
+    """Strokes and round symbols a label should keep clear of (panel frame)."""
+    segs: list[tuple[XY, XY]] = []
+    discs: list[tuple[XY, float]] = []
+    for s in shapes:
+        if isinstance(s, LineShape):
+            segs.append((s.p0, s.p1))
+        elif isinstance(s, PolyShape):
+            pts = list(s.points) + ([s.points[0]] if s.closed else [])
+            segs += list(zip(pts[:-1], pts[1:]))
+        elif s.filled:  # a hinge
+            discs.append((s.c, s.r + 0.2))
+        else:  # a construction circle, as a 48-gon
+            n = 48
+            ring = [
+                (s.c[0] + s.r * math.cos(2 * math.pi * k / n),
+                 s.c[1] + s.r * math.sin(2 * math.pi * k / n))
+                for k in range(n + 1)
+            ]
+            segs += list(zip(ring[:-1], ring[1:]))
+    return segs, discs
+
+
+def panel_labels(panel: Panel, shapes: Sequence[Shape], style: Style = DEFAULT) -> tuple[PlacedLabel, ...]:
+    """The panel's labels placed clear of each other and of its shapes (panel frame)."""
+    segs, discs = _obstacles(shapes)
+    labels = [it for it in panel.items if isinstance(it, Label)]
+    return place_labels(labels, segs, discs, style)
+
+
+# ----------------------------------------------------------------------------- drawing
+def _group_name(prefix: str, name: str) -> str:
+    clean = re.sub(r"[^A-Za-z0-9_-]+", "-", name).strip("-")
+    return f"{prefix}-{clean}" if clean else prefix
+
+
+def _emit(shape: Shape, pl: PanelPlacement, backend: Backend[object]) -> None:
+    if isinstance(shape, LineShape):
+        backend.line(pl.to_page(shape.p0), pl.to_page(shape.p1), shape.key, shape.dashed)
+    elif isinstance(shape, PolyShape):
+        pts = [pl.to_page(p) for p in shape.points]
+        backend.polyline(pts, shape.key, shape.closed, shape.filled)
+    else:
+        backend.circle(pl.to_page(shape.c), shape.r, shape.key, shape.filled)
+
+
+def draw_sheet(
+    sheet: Sheet,
+    backend: Backend[R],
+    style: Style = DEFAULT,
+    on_warning: Callable[[str], None] | None = None,
+) -> R:
+    """Draw a whole sheet on ``backend`` and return what its ``finish`` returns.
+
+    Parameters
+    ----------
+    sheet : Sheet
+        Title, panels (each in its own drawing millimetres, y up), page size, footer.
+    backend : Backend
+        Receives page coordinates (mm, y down, origin top-left).
+    style : Style
+        Pens, arrowheads, symbol sizes, fonts, gaps.
+    on_warning : callable, optional
+        Gets each layout warning (a panel that does not fit the page at its μ); by default
+        they are issued as :class:`LayoutWarning` with :func:`warnings.warn`.
+    """
+    shapes = [panel_shapes(p, style) for p in sheet.panels]
+    placed = [panel_labels(p, s, style) for p, s in zip(sheet.panels, shapes)]
+    layout = layout_sheet(sheet, style, [[pl.box for pl in labels] for labels in placed])
+    for w in layout.warnings:
+        if on_warning is None:
+            warnings.warn(w, LayoutWarning, stacklevel=2)
+        else:
+            on_warning(w)
+
+    backend.begin(sheet.page[0], sheet.page[1], sheet.title)
+    if sheet.title:
+        backend.begin_group("title")
+        backend.text(sheet.title, layout.title_at, style.title_size, "middle", False, "text")
+        backend.end_group()
+    for i, (panel, pl, panel_shape, labels) in enumerate(
+        zip(sheet.panels, layout.panels, shapes, placed)
+    ):
+        backend.begin_group(_group_name(f"panel{i + 1}", panel.name))
+        for shape in panel_shape:
+            _emit(shape, pl, backend)
+        for lab in labels:
+            cx, cy = pl.to_page(lab.center)
+            at = (cx, cy + BASELINE_DROP * lab.label.size)
+            backend.text(lab.label.text, at, lab.label.size, "middle", lab.label.italic, "label")
+        for line in pl.caption:
+            backend.text(line.text, line.at, line.size, "middle", False, "text")
+        backend.end_group()
+    if sheet.footer:
+        backend.begin_group("footer")
+        for text, at in zip(sheet.footer, layout.footer_at):
+            backend.text(text, at, style.note_size, "start", False, "text")
+        backend.end_group()
+    return backend.finish()

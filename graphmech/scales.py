@@ -1,0 +1,48 @@
+"""Scale factors μ: real quantity per millimetre of drawing; round-number choice; paper sizes.
+
+>>> round_scale(0.0031)
+0.005
+>>> round_scale(0.0021)
+0.0025
+>>> round_scale(2.0)
+2.0
+"""
+from __future__ import annotations
+
+import math
+
+#: Paper sizes in mm (width, height), landscape unless named "-portrait".
+PAPER = {
+    "A4": (297.0, 210.0),
+    "A4-portrait": (210.0, 297.0),
+    "A3": (420.0, 297.0),
+    "A3-portrait": (297.0, 420.0),
+}
+
+#: The mantissas textbooks use for scales: 1, 2, 2.5, 5 × 10^k.
+ROUND_MANTISSAS = (1.0, 2.0, 2.5, 5.0, 10.0)
+
+#: Symbols and units of the scales used by the kinematics methods.
+SCALE_INFO = {
+    "l": ("μl", "m/mm"),
+    "v": ("μv", "(m/s)/mm"),
+    "a": ("μa", "(m/s²)/mm"),
+}
+
+
+def round_scale(minimum: float) -> float:
+    """The smallest round scale (1, 2, 2.5, 5 × 10^k) that is ≥ ``minimum`` (> 0)."""
+    if not (minimum > 0.0 and math.isfinite(minimum)):
+        raise ValueError(f"a scale must be positive and finite, not {minimum!r}")
+    k = math.floor(math.log10(minimum))
+    for m in ROUND_MANTISSAS:
+        value = float(f"{m}e{k}")  # exact decimal, no 0.30000000000000004
+        if value >= minimum * (1 - 1e-12):
+            return value
+    return float(f"1e{k + 1}")
+
+
+def format_scale(symbol: str, value: float) -> str:
+    """The note written on a drawing, e.g. ``μv = 0.005 (m/s)/mm``."""
+    sym, unit = SCALE_INFO[symbol]
+    return f"{sym} = {value:.6g} {unit}"

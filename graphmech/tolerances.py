@@ -1,0 +1,24 @@
+"""The shared tolerances, in one place."""
+
+#: Relative agreement required between graphical and exact values in regular positions.
+REL_AGREEMENT = 1e-9
+
+#: |sin| of the angle between two lines below which they count as parallel (no intersection).
+PARALLEL_SIN = 1e-13
+
+#: Condition number of an intersection above which its result is reported as ill-conditioned.
+#: cond · machine-epsilon ≈ 2e-16 · 1e6 keeps the estimated error near 1e-10 ≪ REL_AGREEMENT.
+COND_WARN = 1e6
+
+#: Angle (degrees) between two construction lines below which a *hand* construction is unreliable
+#: (a 0.5 mm pencil error grows by 1/sin of this angle, ≥ 14×).
+SHALLOW_DEG = 4.0
+
+#: Relative slack with which two circles that "just touch" still count as meeting (tangent).
+TANGENT_REL = 1e-9
+
+#: Default drawing precision for judging a hand construction, in drawing millimetres.
+DRAWING_PRECISION_MM = 0.5
+
+#: Machine epsilon used in error estimates.
+EPS = 2.220446049250313e-16
