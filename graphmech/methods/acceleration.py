@@ -177,7 +177,9 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
         rx, ry = vbar[0] - vblock[0], vbar[1] - vblock[1]
         return (start[0] - kk * w * ry, start[1] + kk * w * rx)
 
-    ktag = f"k{xbar}'".lower()
+    ktag = "k'"
+    while b.g.has(f"a:{ktag}"):
+        ktag += "'"
     k = b.g.add(f"a:{ktag}", "point", coriolis, (b.acc[X], b.vel[xbar], b.vel[xblock], b.omega[bar]),
                 role="construction", panel=PANEL, label=ktag,
                 text=f"lay off {_lbl(b, b.acc[X])}{ktag} = 2ω{bar}·v_{xbar}{xblock}/μa (Coriolis)")

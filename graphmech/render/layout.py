@@ -18,8 +18,8 @@ Examples
 >>> lay = layout_sheet(Sheet("t", (p, p)))
 >>> lay.warnings
 ()
->>> [round(pl.frame[0], 3) for pl in lay.panels]       # two 42 mm boxes, 12 mm apart, centred
-[100.5, 154.5]
+>>> [round(pl.frame[0], 3) for pl in lay.panels]  # 42.7 mm boxes (stroke, padding), 12 mm apart
+[99.8, 154.5]
 """
 from __future__ import annotations
 

@@ -113,7 +113,7 @@ class Style:
     note_size: float = 3.0
     line_gap: float = 1.35
 
-    label_gaps: tuple[float, ...] = (1.6, 4.0)
+    label_gaps: tuple[float, ...] = (2.0, 4.5)
     label_clearance: float = 0.6
 
     page_margin: float = 10.0

@@ -1,0 +1,5 @@
+import sys
+
+from graphmech.cli import main
+
+sys.exit(main())

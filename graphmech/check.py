@@ -1,0 +1,452 @@
+"""From a scene to checked values: choose μ, build and prune the construction, evaluate it at
+every position, measure, compare with the independent exact solution, judge hand measurements.
+
+This is one of the three modules (with ``scene`` and ``cli``) that know about users: it turns
+problems into :class:`~graphmech.errors.SceneError` with key paths, and conditioning into
+warnings.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from graphmech import tolerances as T
+from graphmech.errors import DegenerateConstruction, SceneError
+from graphmech.exact.linkage import Kinematics, solve as solve_exact
+from graphmech.mechanisms.linkage import Crank, Linkage
+from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
+from graphmech.scales import PAPER, round_scale
+
+SCALE_KEYS = {"mechanism": "l", "velocity": "v", "acceleration": "a"}
+
+
+# ---------------------------------------------------------------------------- results
+
+
+@dataclass(frozen=True)
+class Row:
+    """One line of the check table."""
+
+    name: str
+    unit: str
+    drawn_mm: float | None
+    scale: float
+    graphical: float
+    exact: float
+    rel_error: float
+    ill_conditioned: bool = False
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"name": self.name, "unit": self.unit, "drawn_mm": self.drawn_mm, "scale": self.scale,
+                "graphical": self.graphical, "exact": self.exact, "rel_error": self.rel_error,
+                "ill_conditioned": self.ill_conditioned}
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """A hand measurement judged against the exact value, within the drawing precision."""
+
+    name: str
+    measured: float
+    expected: float
+    tolerance: float
+    ok: bool
+    unit: str
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"name": self.name, "measured": self.measured, "expected": self.expected,
+                "tolerance": self.tolerance, "ok": self.ok, "unit": self.unit}
+
+
+@dataclass
+class Analysis:
+    """Everything one scene produced: the construction, its solutions, the exact solution."""
+
+    scene: Any
+    build: LinkageConstruction
+    plan: Any
+    scales: dict[str, float]
+    stated: set[str]  # which μ the scene stated (the others were chosen)
+    positions: np.ndarray
+    labels: tuple[str, ...]
+    solutions: list[Any]  # per position: a Solution, or None where it failed
+    failures: list[str]  # per position: "" or the reason
+    exact: Kinematics
+    warnings: list[str] = field(default_factory=list)
+    rows: list[Row] = field(default_factory=list)
+    extra_measured: tuple[tuple[str, float], ...] = ()
+
+
+# ---------------------------------------------------------------------------- names
+
+
+def _position_text(build: LinkageConstruction, label: str) -> str:
+    driver = build.linkage.driver
+    return f"φ{driver.link} = {label}°" if isinstance(driver, Crank) else f"s = {label}"
+
+
+def split_name(name: str) -> tuple[str, str | None]:
+    """``"v_C@50"`` → ``("v_C", "50")``."""
+    base, _, at = name.partition("@")
+    return base, (at or None)
+
+
+def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) -> list[tuple[str, str, int]]:
+    """(display name, quantity name, position index) for every ``find`` entry; bad names → SceneError."""
+    problems = []
+    out = []
+    multi = len(labels) > 1
+    for k, raw in enumerate(scene.find):
+        base, at = split_name(raw)
+        if base not in build.quantities:
+            close = _close_names(base, build.quantities)
+            problems.append((f"find[{k}]", f"unknown quantity {base!r}{close}"))
+            continue
+        if at is None:
+            idx = range(len(labels))
+        elif at in labels:
+            idx = [labels.index(at)]
+        else:
+            problems.append((f"find[{k}]", f"no position {at!r} (positions: {', '.join(labels)})"))
+            continue
+        for i in idx:
+            out.append((f"{base}@{labels[i]}" if multi else base, base, i))
+    if problems:
+        raise SceneError(problems, scene.source)
+    return out
+
+
+def _close_names(name: str, known: Any) -> str:
+    import difflib
+
+    m = difflib.get_close_matches(name, sorted(known), n=3)
+    return f"; did you mean {', '.join(m)}?" if m else ""
+
+
+# ---------------------------------------------------------------------------- scales
+
+
+def _page_size(scene: Any) -> tuple[float, float]:
+    size = getattr(scene.page, "size", (297.0, 210.0))
+    return PAPER[size] if isinstance(size, str) else (float(size[0]), float(size[1]))
+
+
+def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[dict[str, float], set[str]]:
+    """μ from the scene where stated; otherwise the round value that fits the panel on the page.
+
+    The construction is linear in 1/μ, so one provisional evaluation at μ = 1 gives every
+    panel's extent in real units; each μ is then the smallest round number that fits that
+    extent into the room one panel has (the panels stand side by side, one row per position).
+    """
+    stated = {k for k in ("l", "v", "a") if k in scene.scales}
+    scales = {k: float(scene.scales[k]) for k in stated}
+    if len(stated) == 3:
+        return scales, stated
+    provisional = {k: scales.get(k, 1.0) for k in ("l", "v", "a")}
+    b = build_polygons(linkage, provisional)
+    steps = [s for s in b.g.steps.values() if s.kind == "point"]
+    plan = b.g.prune([s.name for s in steps])
+    sol = plan.evaluate_batch({b.param: positions})
+    w, h = _page_size(scene)
+    shown = [p for p in PANELS if p in scene.show] or ["mechanism"]
+    rows = max(1, len(positions)) if len(positions) <= 4 else 1
+    room_w = (w - 30.0 - 14.0 * (len(shown) - 1)) / len(shown) - 16.0
+    room_h = (h - 45.0) / rows - 16.0
+    for panel, key in SCALE_KEYS.items():
+        if key in stated:
+            continue
+        xs, ys = [], []
+        for s in steps:
+            if s.panel != panel:
+                continue
+            x, y = sol.values[s.name]
+            xs.append(np.broadcast_to(x, sol.valid.shape)[sol.valid])
+            ys.append(np.broadcast_to(y, sol.valid.shape)[sol.valid])
+        if not xs or not any(a.size for a in xs):
+            scales[key] = 1.0
+            continue
+        xa, ya = np.concatenate(xs), np.concatenate(ys)
+        ext_x = (xa.max() - xa.min()) * provisional[key]
+        ext_y = (ya.max() - ya.min()) * provisional[key]
+        need = max(ext_x / room_w, ext_y / room_h)
+        scales[key] = round_scale(need) if need > 0 else 1.0
+    return scales, stated
+
+
+# ---------------------------------------------------------------------------- analysis
+
+
+def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> Analysis:
+    """Build, prune, evaluate and check one scene (``extra_measured``: values from the command line)."""
+    linkage: Linkage = scene.linkage
+    positions = np.asarray(scene.positions.values, dtype=float)
+    labels = tuple(scene.positions.labels) or tuple(f"{v:g}" for v in positions)
+    scales, stated = choose_scales(scene, linkage, positions)
+    build = build_polygons(linkage, scales)
+    wanted = _requested(scene, build, labels)
+    measured_q = _measured_quantities(_measured_entries(scene, extra_measured), build, labels)
+    targets = [build.quantities[q].slot for _, q, _ in wanted] + [build.quantities[q].slot for q in measured_q]
+    for panel in PANELS:
+        if panel in scene.show:
+            targets += build.steps_of_panel(panel)
+    plan = build.g.prune(targets)
+
+    solutions: list[Any] = []
+    failures: list[str] = []
+    if len(positions) == 1:
+        try:
+            solutions.append(plan.solve({build.param: float(positions[0])}, _position_text(build, labels[0])))
+            failures.append("")
+        except DegenerateConstruction as e:
+            raise  # one position asked for and it cannot be built: the caller reports it
+    else:
+        batch = plan.evaluate_batch({build.param: positions})
+        reason = [""] * len(positions)
+        for step, (mask, why) in batch.failures.items():
+            for i in np.flatnonzero(mask):
+                reason[i] = f"{step}: {why}"
+        for i in range(len(positions)):
+            solutions.append(batch.at(i) if batch.valid[i] else None)
+            failures.append(reason[i])
+
+    exact = solve_exact(linkage, positions)
+    an = Analysis(scene, build, plan, scales, stated, positions, labels, solutions, failures, exact)
+    an.extra_measured = tuple(extra_measured)
+    for i, why in enumerate(failures):
+        if why:
+            an.warnings.append(f"{_position_text(build, labels[i])}: construction impossible — {why}")
+    an.rows = [_row(an, display, q, i) for display, q, i in wanted if solutions[i] is not None]
+    an.warnings.extend(_conditioning_warnings(an, [q for _, q, _ in wanted] + measured_q))
+    return an
+
+
+def characteristic(linkage: Linkage, unit: str) -> float:
+    """The size of a quantity of this unit in this linkage (ω1·l_AB for velocities, …).
+
+    The relative error divides by max(|exact|, this), so a zero exact value does not blow it up.
+    """
+    lengths = [abs(v) for y in linkage.dyads for v in (getattr(y, "lengths", None) or (getattr(y, "length", 0.0),))]
+    d = linkage.driver
+    if isinstance(d, Crank):
+        L = d.length
+        w = abs(d.omega) + math.sqrt(abs(d.epsilon))
+        v = w * L
+        a = (d.omega ** 2 + abs(d.epsilon)) * L
+    else:
+        L = max(lengths + [1e-300])
+        v = abs(d.velocity) + math.sqrt(abs(d.acceleration) * L)
+        a = abs(d.acceleration) + d.velocity ** 2 / L
+        w = v / L
+    span = max(lengths + [L]) or 1.0
+    chars = {"m/s": v, "m/s²": a, "rad/s": w, "rad/s²": a / L if L else a, "m": span, "deg": 360.0}
+    return max(chars.get(unit, 1.0), 1e-300)
+
+
+def _row(an: Analysis, display: str, qname: str, i: int) -> Row:
+    q = an.build.quantities[qname]
+    drawn, scale = an.solutions[i][q.slot]
+    drawn, scale = float(drawn), float(scale)
+    g = drawn * scale
+    e = exact_value(an.exact, q.exact, i, an.build)
+    if q.unit == "deg":
+        err = abs((g - e + 180.0) % 360.0 - 180.0) / 360.0
+        drawn_mm = None
+    else:
+        err = abs(g - e) / max(abs(e), characteristic(an.build.linkage, q.unit))
+        drawn_mm = drawn
+    return Row(display, q.unit, drawn_mm, scale, g, e, err, _ill(an, q.slot, i))
+
+
+# ---------------------------------------------------------------------------- exact values
+
+
+def exact_value(kin: Kinematics, spec: tuple, i: int, build: LinkageConstruction) -> float:
+    """The exact value that a quantity's ``exact`` description names, at position i."""
+    kind = spec[0]
+    P, V, A = kin.point, kin.vel, kin.acc
+    if kind == "speed":
+        return float(np.hypot(*V[spec[1]][i]))
+    if kind == "acc":
+        return float(np.hypot(*A[spec[1]][i]))
+    if kind in ("slide_v", "slide_a"):
+        vec = (V if kind == "slide_v" else A)[spec[1]][i]
+        return float(vec[0] * spec[2] + vec[1] * spec[3])
+    if kind == "rel_v":
+        return float(np.hypot(*(V[spec[1]][i] - V[spec[2]][i])))
+    if kind == "rel_a":
+        return float(np.hypot(*(A[spec[1]][i] - A[spec[2]][i])))
+    if kind == "length":
+        return float(np.hypot(*(P[spec[1]][i] - P[spec[2]][i])))
+    if kind == "normal":
+        _, x, y, link = spec
+        return float(kin.omega[link][i] ** 2 * np.hypot(*(P[x][i] - P[y][i])))
+    if kind == "tangential":
+        _, x, y, link = spec
+        return float(abs(kin.alpha[link][i]) * np.hypot(*(P[x][i] - P[y][i])))
+    if kind == "omega":
+        return float(kin.omega[spec[1]][i])
+    if kind == "alpha":
+        return float(kin.alpha[spec[1]][i])
+    if kind == "angle":
+        return float(np.degrees(kin.angle[spec[1]][i]) % 360.0)
+    if kind in ("coriolis", "rel_slide_a"):
+        _, x, y, link = spec
+        vr = V[x][i] - V[y][i]
+        k = 2.0 * kin.omega[link][i] * np.array([-vr[1], vr[0]])
+        if kind == "coriolis":
+            return float(np.hypot(*k))
+        return float(np.hypot(*(A[x][i] - A[y][i] - k)))
+    raise ValueError(f"unknown exact quantity {spec!r}")
+
+
+# ---------------------------------------------------------------------------- conditioning
+
+
+def _intersections(an: Analysis, slot: str) -> list[str]:
+    steps = an.plan.by_name
+    deps = [n for n in _deps(an, slot)]
+    return [steps[n].text for n in deps if n in steps and steps[n].kind == "point" and steps[n].kernel is not None]
+
+
+def _deps(an: Analysis, slot: str) -> set[str]:
+    cache = an.__dict__.setdefault("_dep_cache", {})
+    if slot not in cache:
+        cache[slot] = an.build.g.dependencies([slot])
+    return cache[slot]
+
+
+def _ill(an: Analysis, slot: str, i: int) -> bool:
+    sol = an.solutions[i]
+    texts = {an.plan.by_name[n].text for n in _deps(an, slot) if n in an.plan.by_name}
+    return any(c > T.COND_WARN for t, c in sol.conds.items() if t in texts)
+
+
+def _conditioning_warnings(an: Analysis, quantities: list[str]) -> list[str]:
+    """Name every intersection that is ill-conditioned (numerically) or shallow (for drafting)."""
+    out = []
+    shallow = 1.0 / math.sin(math.radians(T.SHALLOW_DEG))
+    relevant: dict[str, list[str]] = {}
+    for q in dict.fromkeys(quantities):
+        slot = an.build.quantities[q].slot
+        for n in _deps(an, slot):
+            if n in an.plan.by_name:
+                relevant.setdefault(an.plan.by_name[n].text, []).append(q)
+    for s in an.plan.steps:
+        if s.kind == "point" and s.panel in an.scene.show:
+            relevant.setdefault(s.text, [])
+    for i, sol in enumerate(an.solutions):
+        if sol is None:
+            continue
+        where = _position_text(an.build, an.labels[i])
+        for text, c in sol.conds.items():
+            if text not in relevant:
+                continue
+            qs = ", ".join(relevant[text])
+            angle = math.degrees(math.asin(min(1.0, 1.0 / c))) if c > 0 else 90.0
+            if c > T.COND_WARN:
+                est = c * T.EPS
+                out.append(f"{where}: ill-conditioned intersection '{text}': the loci meet at {angle:.3g}° "
+                           f"(condition number {c:.3g}); {qs or 'the drawing'} may be wrong by about "
+                           f"{est:.1g} relative or more")
+            elif c > shallow:
+                out.append(f"{where}: shallow intersection '{text}' at {angle:.3g}°: a hand construction "
+                           f"is unreliable here (a 0.5 mm error becomes about {0.5 * c:.2g} mm)")
+    return out
+
+
+# ---------------------------------------------------------------------------- hand measurements
+
+SEGMENT = re.compile(r"[a-z]\d*['′]*")
+
+
+def is_segment(name: str) -> bool:
+    """``pc``, ``p'c'``, ``n2'c'``: a drawn segment named by its end labels."""
+    tokens = SEGMENT.findall(name)
+    return "_" not in name and len(tokens) == 2 and "".join(tokens) == name
+
+
+def _measured_quantities(entries: list[tuple[str, str, float]], build: LinkageConstruction,
+                         labels: tuple[str, ...]) -> list[str]:
+    out = []
+    for key, name, _ in entries:
+        try:
+            q, _, _ = _resolve(name, build, labels)
+        except ValueError:
+            continue  # reported by judge()
+        out.append(q)
+    return out
+
+
+def _measured_entries(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[tuple[str, str, float]]:
+    """(key path for messages, name, value) of the scene's [measured] table and the command line's."""
+    return [(f"measured.{n}", n, v) for n, v in scene.measured] + [(f"--measured {n}", n, v) for n, v in extra]
+
+
+def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> tuple[str, int | None, bool]:
+    """A measured name → (quantity name, position index, is a drawn segment)."""
+    base, at = split_name(name)
+    if at is not None and at not in labels:
+        raise ValueError(f"no position {at!r} (positions: {', '.join(labels)})")
+    idx = labels.index(at) if at is not None else (0 if len(labels) == 1 else None)
+    if idx is None:
+        raise ValueError(f"the scene has {len(labels)} positions: name one, e.g. {base}@{labels[0]}")
+    if base in build.quantities:
+        return base, idx, False
+    if not is_segment(base):
+        raise ValueError(f"unknown quantity or segment {base!r}{_close_names(base, build.quantities)}")
+    t0, t1 = [t.replace("′", "'") for t in SEGMENT.findall(base)]
+
+    def matches(token: str, lab: str) -> bool:
+        if token == lab:
+            return True
+        # "n'" stands for any n₂′, n₃′ … when only one of them fits the other end
+        return len(token.rstrip("'")) == 1 and lab[:1] == token[:1] and lab.rstrip("'")[1:].isdigit() \
+            and lab.count("'") == token.count("'")
+
+    found = [q.name for q in build.quantities.values() if len(q.segment) == 2 and (
+        (matches(t0, q.segment[0]) and matches(t1, q.segment[1])) or
+        (matches(t0, q.segment[1]) and matches(t1, q.segment[0])))]
+    # Prefer plain lengths (v_X, a_X, components) over ω/α, which share the segment.
+    found = sorted(found, key=lambda n: (n.startswith(("omega", "alpha")), n))
+    if not found:
+        raise ValueError(f"no drawn segment {base!r} in this construction")
+    return found[0], idx, True
+
+
+def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
+    """Verdicts for the scene's ``[measured]`` values (and any given on the command line)."""
+    scene = an.scene
+    prec = precision_mm if precision_mm is not None else scene.precision_mm
+    problems = []
+    out = []
+    for key, name, value in _measured_entries(scene, an.extra_measured):
+        try:
+            qname, i, segment = _resolve(name, an.build, an.labels)
+        except ValueError as e:
+            problems.append((key, str(e)))
+            continue
+        q = an.build.quantities[qname]
+        sol = an.solutions[i]
+        if sol is None:
+            problems.append((key, f"position {an.labels[i]} could not be constructed"))
+            continue
+        drawn, scale = sol[q.slot]
+        e = exact_value(an.exact, q.exact, i, an.build)
+        panel_key = SCALE_KEYS[q.panel]
+        if segment:
+            if panel_key not in an.stated:
+                problems.append((key, f"the scene does not state μ{panel_key}, so a drawn length cannot be judged: "
+                                      f"state it in [scales] or give the value ({qname}) instead"))
+                continue
+            expected = abs(e) / float(scale)
+            out.append(Verdict(name, value, expected, prec, abs(abs(value) - expected) <= prec, "mm"))
+        else:
+            tol = prec if q.unit == "deg" else prec * abs(float(scale))
+            out.append(Verdict(name, value, e, tol, abs(value - e) <= tol + 1e-12 * abs(e), q.unit))
+    if problems:
+        raise SceneError(problems, scene.source)
+    return out

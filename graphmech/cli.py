@@ -1,0 +1,220 @@
+"""The ``graphmech`` command: render, check, bench.
+
+Exit status: 0 success; 1 a measured value is out of tolerance; 2 bad input (one line naming
+the file, the key path and what is wrong — never a traceback). Output files are written to a
+temporary file and renamed, so a failure leaves nothing half-written and an existing file
+untouched.
+"""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import math
+import os
+import sys
+import tempfile
+from pathlib import Path
+from typing import Any, Sequence
+
+from graphmech.errors import DegenerateConstruction, GraphmechError, SceneError
+
+EXIT_OK, EXIT_OUT_OF_TOLERANCE, EXIT_BAD_INPUT = 0, 1, 2
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> None:  # one line, exit 2 (argparse's own convention too)
+        self.exit(EXIT_BAD_INPUT, f"graphmech: {message}\n")
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="graphmech", description="Textbook graphical methods as exact, checked constructions.")
+    sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
+    r = sub.add_parser("render", help="draw a scene to SVG")
+    r.add_argument("scenes", nargs="+", metavar="SCENE")
+    r.add_argument("-o", "--output", help="output SVG (one scene only)")
+    r.add_argument("-d", "--directory", help="write <scene name>.svg into this folder")
+    c = sub.add_parser("check", help="the check table: graphical vs exact, and verdicts on measured values")
+    c.add_argument("scene", metavar="SCENE")
+    c.add_argument("--json", action="store_true", help="machine-readable output")
+    c.add_argument("--measured", action="append", default=[], metavar="NAME=VALUE",
+                   help="a value you measured: v_C=0.26 (SI) or pc=52 (drawn mm); repeatable, or comma-separated")
+    c.add_argument("--precision", type=float, metavar="MM", help="drawing precision, mm (default: the scene's, else 0.5)")
+    b = sub.add_parser("bench", help="run time and error of the graphical methods against the exact ones")
+    b.add_argument("--json", action="store_true")
+    b.add_argument("-o", "--output", metavar="DIR", help="also write bench.json into DIR")
+    b.add_argument("--quick", action="store_true", help="fewer repetitions")
+    return p
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        if args.command == "render":
+            return _render(args)
+        if args.command == "check":
+            return _check(args)
+        return _bench(args)
+    except SceneError as e:
+        print(e.one_line(), file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except DegenerateConstruction as e:
+        print(f"{getattr(args, 'scene', None) or args.scenes[0]}: {e}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except GraphmechError as e:
+        print(f"graphmech: {e}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except KeyboardInterrupt:
+        return 130
+
+
+# ---------------------------------------------------------------------------- render
+
+
+def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
+    """The SVG text of a scene and its warnings."""
+    from graphmech.check import _position_text, analyse, _page_size
+    from graphmech.render.drawing import linkage_sheet
+    from graphmech.render.svg import render_svg
+    from graphmech.scene import load_scene
+
+    scene = load_scene(path)
+    an = analyse(scene)
+    b = an.build
+    texts = [_position_text(b, lab) for lab in an.labels]
+    import graphmech
+
+    footer = (f"graphmech {graphmech.__version__}",)
+    sheet = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
+                          [p for p in ("mechanism", "velocity", "acceleration") if p in scene.show],
+                          _page_size(scene), footer)
+    raw = Path(path).read_bytes()
+    prefix = "g" + hashlib.sha256(raw).hexdigest()[:8]
+    return render_svg(sheet, prefix), an.warnings
+
+
+def write_atomic(path: str | os.PathLike[str], text: str) -> None:
+    """Write via a temporary file in the same folder, then rename: never a half-written file."""
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent or ".")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as f:
+            f.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def _render(args: argparse.Namespace) -> int:
+    if args.output and len(args.scenes) > 1:
+        print("graphmech: -o takes one scene; use -d DIR for several", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    outputs = []
+    for s in args.scenes:  # render everything first: one bad scene writes nothing
+        svg, warnings = render_scene(s)
+        for w in warnings:
+            print(f"{s}: warning: {w}", file=sys.stderr)
+        if args.output:
+            out = Path(args.output)
+        else:
+            out = Path(args.directory or ".") / (Path(s).stem + ".svg")
+        outputs.append((out, svg))
+    for out, svg in outputs:
+        if not out.parent.is_dir():
+            print(f"graphmech: {out}: folder does not exist", file=sys.stderr)
+            return EXIT_BAD_INPUT
+    for out, svg in outputs:
+        write_atomic(out, svg)
+        print(out)
+    return EXIT_OK
+
+
+# ---------------------------------------------------------------------------- check
+
+
+def _parse_measured(items: Sequence[str]) -> list[tuple[str, float]]:
+    out = []
+    for item in items:
+        for part in item.split(","):
+            name, sep, value = part.partition("=")
+            try:
+                v = float(value)
+            except ValueError:
+                v = math.nan
+            if not sep or not name.strip() or not math.isfinite(v):
+                raise SceneError([(f"--measured {part.strip()}", "expected NAME=VALUE with a finite number")],
+                                 "command line")
+            out.append((name.strip(), v))
+    return out
+
+
+def _check(args: argparse.Namespace) -> int:
+    from graphmech.check import analyse, judge
+    from graphmech.scene import load_scene
+
+    if args.precision is not None and not (args.precision > 0 and math.isfinite(args.precision)):
+        print("graphmech: --precision must be a positive number of mm", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    extra = _parse_measured(args.measured)
+    scene = load_scene(args.scene)
+    an = analyse(scene, tuple(extra))
+    verdicts = judge(an, args.precision)
+    bad = any(not v.ok for v in verdicts)
+    if args.json:
+        doc = {"quantities": [r.as_dict() for r in an.rows], "measured": [v.as_dict() for v in verdicts],
+               "warnings": list(an.warnings), "scales": an.scales}
+        print(json.dumps(doc, indent=1, ensure_ascii=False, allow_nan=False))
+    else:
+        print(_table(an, verdicts))
+        for w in an.warnings:
+            print(f"warning: {w}", file=sys.stderr)
+    return EXIT_OUT_OF_TOLERANCE if bad else EXIT_OK
+
+
+def _table(an: Any, verdicts: Sequence[Any]) -> str:
+    from graphmech.scales import SCALE_INFO
+
+    lines = [f"{an.scene.title}", "  ".join(f"{SCALE_INFO[k][0]} = {v:.6g} {SCALE_INFO[k][1]}" +
+                                            ("" if k in an.stated else " (chosen)") for k, v in an.scales.items())]
+    if an.rows:
+        lines.append(f"{'quantity':<16}{'drawn mm':>12}{'μ':>12}{'graphical':>15}{'exact':>15}{'rel.error':>11}  unit")
+        for r in an.rows:
+            drawn = "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}"
+            flag = "  ILL-CONDITIONED" if r.ill_conditioned else ""
+            lines.append(f"{r.name:<16}{drawn:>12}{r.scale:>12.5g}{r.graphical:>15.9g}{r.exact:>15.9g}"
+                         f"{r.rel_error:>11.1e}  {r.unit}{flag}")
+    if verdicts:
+        lines.append(f"{'measured':<16}{'value':>12}{'expected':>14}{'± tol':>10}  verdict")
+        for v in verdicts:
+            lines.append(f"{v.name:<16}{v.measured:>12.6g}{v.expected:>14.6g}{v.tolerance:>10.3g}  "
+                         f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
+    return "\n".join(lines)
+
+
+# ---------------------------------------------------------------------------- bench
+
+
+def _bench(args: argparse.Namespace) -> int:
+    from graphmech.bench import run_bench
+
+    doc = run_bench(quick=args.quick)
+    text = json.dumps(doc, indent=1, allow_nan=False)
+    if args.output:
+        out = Path(args.output)
+        out.mkdir(parents=True, exist_ok=True)
+        write_atomic(out / "bench.json", text + "\n")
+    if args.json:
+        print(text)
+    else:
+        for r in doc["records"]:
+            print(f"{r['method']:<12}{r['case']:<34}n={r['n']:<6}{r['seconds'] * 1e6:>12.1f} µs"
+                  f"   max rel error {r['max_rel_error']:.1e}")
+        for note in doc.get("notes", []):
+            print(note)
+    return EXIT_OK
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

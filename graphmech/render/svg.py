@@ -1,0 +1,236 @@
+"""The SVG backend — the only module of graphmech that imports svgwrite.
+
+Output is byte-stable: numbers are formatted here with three decimals (never ``-0.000``), every
+id is explicit and starts with the caller's ``id_prefix`` (a short hash of the scene, so two
+figures inline on one HTML page do not clash), and nothing depends on time or chance.
+
+Scene text (titles, labels, notes) goes only into text nodes — and the document's ``<title>``
+— with the characters XML 1.0 forbids removed; svgwrite escapes ``&``, ``<`` and ``>``. No
+``<style>``, ``<script>`` or event attribute is ever written; presentation is given by fixed
+attributes taken from the :class:`~graphmech.render.style.Style`.
+
+Examples
+--------
+>>> b = SvgBackend("gm1")
+>>> b.begin(297.0, 210.0, "A & B")
+>>> b.line((0.0, 0.0), (10.0, -0.0001), "given")
+>>> svg = b.finish()
+>>> '<line stroke="black" stroke-linecap="round" stroke-width="0.700" x1="0.000" x2="10.000" y1="0.000" y2="0.000" />' in svg
+True
+>>> '<title>A &amp; B</title>' in svg
+True
+"""
+from __future__ import annotations
+
+import hashlib
+import math
+import re
+from typing import Any, Callable, Sequence
+
+import svgwrite
+
+from graphmech.render.backend import Anchor, PagePoint
+from graphmech.render.primitives import Sheet
+from graphmech.render.sheet import draw_sheet
+from graphmech.render.style import DEFAULT, Style
+
+_FORBIDDEN = re.compile("[^\t\n\r\u0020-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+_PREFIX = re.compile(r"^[A-Za-z_][A-Za-z0-9_.-]*$")
+
+
+def fmt(x: float) -> str:
+    """A number with three decimals, ``-0.000`` written ``0.000``.
+
+    >>> fmt(-0.0004), fmt(2.5), fmt(-1.23456)
+    ('0.000', '2.500', '-1.235')
+    """
+    if not math.isfinite(x):
+        raise ValueError(f"cannot write a non-finite number to SVG: {x!r}")
+    s = f"{x:.3f}"
+    return "0.000" if s == "-0.000" else s
+
+
+def _short(x: float) -> str:
+    """A page dimension without trailing zeros: 297.0 → '297', 297.5 → '297.5'."""
+    return fmt(x).rstrip("0").rstrip(".")
+
+
+def clean_text(s: str) -> str:
+    """``s`` without the characters XML 1.0 forbids (control characters other than tab, LF
+    and CR; U+FFFE, U+FFFF; lone surrogates).
+
+    >>> clean_text("a\\x00b\\x1bc\\td\\ufffe")
+    'abc\\td'
+    """
+    return _FORBIDDEN.sub("", s)
+
+
+def sheet_id_prefix(sheet: Sheet) -> str:
+    """A short id prefix derived from the sheet's content: ``"gm"`` + 8 hex digits."""
+    return "gm" + hashlib.sha256(repr(sheet).encode("utf-8")).hexdigest()[:8]
+
+
+class SvgBackend:
+    """Draws into an SVG document; :meth:`finish` returns it as a ``str``.
+
+    Parameters
+    ----------
+    id_prefix : str
+        Start of every id in the document; an XML name (a letter or ``_`` first, then
+        letters, digits, ``_ . -``). A hex hash should be given a letter first (``"gm3fa2…"``).
+    style : Style
+        Pens and fonts by style key.
+
+    Notes
+    -----
+    A *filled* shape whose pen fills with its stroke colour (an arrowhead) is drawn without a
+    stroke, so its tip stays exactly where it is put (a stroked acute tip would overshoot by
+    a miter). A shape whose fill differs (a white hinge, a slider block) keeps its stroke.
+    """
+
+    def __init__(self, id_prefix: str, style: Style = DEFAULT) -> None:
+        if not _PREFIX.match(id_prefix):
+            raise ValueError(
+                f"id_prefix must be an XML name (letter or '_' first, then letters, digits, "
+                f"'_', '.', '-'), got {id_prefix!r}"
+            )
+        self.id_prefix = id_prefix
+        self.style = style
+        self._dwg: Any = None
+        self._stack: list[Any] = []
+        self._ids: set[str] = set()
+
+    # --------------------------------------------------------------- helpers
+    def _id(self, name: str) -> str:
+        clean = re.sub(r"[^A-Za-z0-9_-]+", "-", name).strip("-")
+        base = f"{self.id_prefix}-{clean}" if clean else f"{self.id_prefix}-g"
+        ident, k = base, 1
+        while ident in self._ids:
+            k += 1
+            ident = f"{base}-{k}"
+        self._ids.add(ident)
+        return ident
+
+    def _add(self, element: Any) -> None:
+        if not self._stack:
+            raise RuntimeError("SvgBackend: begin() must come first")
+        self._stack[-1].add(element)
+
+    def _stroke(self, element: Any, key: str, dashed: bool = False) -> Any:
+        pen = self.style.pen(key)
+        element["stroke"] = pen.colour
+        element["stroke-width"] = fmt(pen.width)
+        element["stroke-linecap"] = "round"
+        if dashed:
+            element["stroke-dasharray"] = " ".join(fmt(d) for d in pen.dash)
+        return element
+
+    @staticmethod
+    def _pt(p: PagePoint) -> tuple[str, str]:
+        return (fmt(p[0]), fmt(p[1]))
+
+    # --------------------------------------------------------------- Backend
+    def begin(self, page_w: float, page_h: float, title: str = "") -> None:
+        if self._dwg is not None:
+            raise RuntimeError("SvgBackend: begin() called twice")
+        w, h = _short(page_w), _short(page_h)
+        dwg = svgwrite.Drawing(
+            size=(f"{w}mm", f"{h}mm"), profile="full", debug=False, viewBox=f"0 0 {w} {h}"
+        )
+        dwg["id"] = self._id("svg")
+        dwg.set_desc(title=clean_text(title))
+        self._dwg = dwg
+        self._stack = [dwg]
+
+    def begin_group(self, name: str) -> None:
+        g = self._dwg.g() if self._dwg is not None else None
+        if g is None:
+            raise RuntimeError("SvgBackend: begin() must come first")
+        g["id"] = self._id(name)
+        self._add(g)
+        self._stack.append(g)
+
+    def end_group(self) -> None:
+        if len(self._stack) < 2:
+            raise RuntimeError("SvgBackend: end_group() without an open group")
+        self._stack.pop()
+
+    def line(self, p0: PagePoint, p1: PagePoint, style_key: str, dashed: bool = False) -> None:
+        if self._dwg is None:
+            raise RuntimeError("SvgBackend: begin() must come first")
+        el = self._dwg.line(start=self._pt(p0), end=self._pt(p1))
+        self._add(self._stroke(el, style_key, dashed))
+
+    def polyline(
+        self,
+        points: Sequence[PagePoint],
+        style_key: str,
+        closed: bool = False,
+        filled: bool = False,
+    ) -> None:
+        if self._dwg is None:
+            raise RuntimeError("SvgBackend: begin() must come first")
+        pts = [self._pt(p) for p in points]
+        el = self._dwg.polygon(points=pts) if closed else self._dwg.polyline(points=pts)
+        pen = self.style.pen(style_key)
+        if filled and pen.fill == pen.colour:
+            el["fill"] = pen.fill
+            el["stroke"] = "none"
+        else:
+            el["fill"] = pen.fill if filled else "none"
+            self._stroke(el, style_key)
+            el["stroke-linejoin"] = "round"
+        self._add(el)
+
+    def circle(self, c: PagePoint, r: float, style_key: str, filled: bool = False) -> None:
+        if self._dwg is None:
+            raise RuntimeError("SvgBackend: begin() must come first")
+        el = self._dwg.circle(center=self._pt(c), r=fmt(r))
+        pen = self.style.pen(style_key)
+        el["fill"] = pen.fill if filled else "none"
+        self._add(self._stroke(el, style_key))
+
+    def text(
+        self,
+        s: str,
+        at: PagePoint,
+        size: float,
+        anchor: Anchor = "start",
+        italic: bool = False,
+        style_key: str = "text",
+    ) -> None:
+        if self._dwg is None:
+            raise RuntimeError("SvgBackend: begin() must come first")
+        if anchor not in ("start", "middle", "end"):
+            raise ValueError(f"text anchor must be start, middle or end, got {anchor!r}")
+        el = self._dwg.text(clean_text(s), insert=self._pt(at))
+        el["font-family"] = self.style.font_family
+        el["font-size"] = fmt(size)
+        el["fill"] = self.style.pen(style_key).colour
+        if anchor != "start":
+            el["text-anchor"] = anchor
+        if italic:
+            el["font-style"] = "italic"
+        self._add(el)
+
+    def finish(self) -> str:
+        if self._dwg is None:
+            raise RuntimeError("SvgBackend: begin() must come first")
+        if len(self._stack) != 1:
+            raise RuntimeError(f"SvgBackend: {len(self._stack) - 1} group(s) left open")
+        out: str = self._dwg.tostring()
+        self._stack = []
+        return out
+
+
+def render_svg(
+    sheet: Sheet,
+    id_prefix: str,
+    style: Style = DEFAULT,
+    on_warning: Callable[[str], None] | None = None,
+) -> str:
+    """The sheet as an SVG document (a ``str``, byte-identical for the same input).
+
+    ``on_warning`` receives layout warnings (see :func:`graphmech.render.sheet.draw_sheet`).
+    """
+    return draw_sheet(sheet, SvgBackend(id_prefix, style), style, on_warning)

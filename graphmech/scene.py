@@ -1,0 +1,1255 @@
+"""Read a scene file: the TOML that says what to construct, draw and check.
+
+A scene describes a linkage (frame points, a driver, Assur dyads in assembly order, extra
+points on links), the driver's positions, the drawing scales, what to show and find, and the
+values a draughtsman measured on paper. Every number is converted to SI on load.
+
+Validation collects *every* problem and raises one :class:`~graphmech.errors.SceneError`;
+its key paths read the way the user wrote the file (``dyad[0].lengths[1]``,
+``driver.angle_deg[2]``, ``frame.D``), and its message is the first problem in file order.
+Whether a linkage can be *assembled* at a position is not decided here: the construction
+does that, position by position.
+
+The format, with an example of every feature, is ``docs/scene-format.md``.
+"""
+from __future__ import annotations
+
+import difflib
+import math
+import os
+import re
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Iterable, Mapping
+
+from graphmech.errors import SceneError
+from graphmech.mechanisms.linkage import (
+    RPP,
+    RPR,
+    RRP,
+    RRR,
+    Crank,
+    Driver,
+    Dyad,
+    Guide,
+    LinkPoint,
+    Linkage,
+    Positions,
+    SliderInput,
+)
+from graphmech.tolerances import DRAWING_PRECISION_MM, PARALLEL_SIN
+
+#: A scene file larger than this (bytes) is refused before it is parsed.
+MAX_BYTES = 1 << 20
+#: The most driver positions one scene may ask for.
+MAX_POSITIONS = 3600
+#: The longest title, in characters.
+MAX_TITLE = 200
+#: What a scene may show, in the order a textbook draws them.
+SHOW_CHOICES = ("mechanism", "velocity", "acceleration")
+#: Named paper sizes, (width, height) in mm.
+PAPER_SIZES: dict[str, tuple[float, float]] = {
+    "A4": (297.0, 210.0),
+    "A4-portrait": (210.0, 297.0),
+    "A3": (420.0, 297.0),
+    "A3-portrait": (297.0, 420.0),
+}
+
+
+@dataclass(frozen=True)
+class Page:
+    """The drawing sheet.
+
+    Parameters
+    ----------
+    size : (float, float)
+        Width and height, mm; A4 landscape by default (see :data:`PAPER_SIZES`).
+    """
+
+    size: tuple[float, float] = (297.0, 210.0)
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A validated scene, all in SI units.
+
+    Parameters
+    ----------
+    source : str
+        The file name used in messages.
+    title : str
+        Free text (the renderer escapes it).
+    show : tuple of str
+        A subset of :data:`SHOW_CHOICES` in the user's order, no duplicates.
+    find : tuple of str
+        Quantity names as written (``"v_C"``, ``"omega_3"``); ``check`` validates them
+        against the construction.
+    scales : dict
+        Only the scales given: ``"l"`` m/mm, ``"v"`` (m/s)/mm, ``"a"`` (m/s²)/mm.
+    linkage : Linkage
+        The mechanism, in m and rad.
+    positions : Positions
+        Driver values in SI (rad or m) and their labels as written in the scene's unit
+        (``"50"``), used as name suffixes such as ``v_C@50``.
+    measured : tuple of (str, float)
+        The ``[measured]`` table in file order, raw: quantity values in SI or drawn
+        segment lengths in mm (``("p'c'", 40.5)``); ``check`` interprets them.
+    precision_mm : float
+        Drawing precision for judging measured values, mm.
+    page : Page
+        The sheet.
+    """
+
+    source: str
+    title: str
+    show: tuple[str, ...]
+    find: tuple[str, ...]
+    scales: dict[str, float] = field(hash=False)
+    linkage: Linkage
+    positions: Positions
+    measured: tuple[tuple[str, float], ...]
+    precision_mm: float = DRAWING_PRECISION_MM
+    page: Page = Page()
+
+
+# --------------------------------------------------------------------------------------------
+# Units: each kind of quantity, the units a [units] table may name, and the key suffixes.
+# A conversion is (numerator, denominator): SI value = written value · num / den, so that
+# 60 mm becomes exactly 0.06 m.
+# --------------------------------------------------------------------------------------------
+
+_UNITS: dict[str, dict[str, tuple[float, float]]] = {
+    "length": {"mm": (1.0, 1000.0), "cm": (1.0, 100.0), "m": (1.0, 1.0)},
+    "angle": {"deg": (math.pi, 180.0), "rad": (1.0, 1.0)},
+    "omega": {"rad/s": (1.0, 1.0), "rpm": (math.pi, 30.0), "deg/s": (math.pi, 180.0)},
+    "epsilon": {
+        "rad/s2": (1.0, 1.0), "rad/s²": (1.0, 1.0), "rad/s^2": (1.0, 1.0),
+        "deg/s2": (math.pi, 180.0), "deg/s²": (math.pi, 180.0), "deg/s^2": (math.pi, 180.0),
+    },
+    "velocity": {"m/s": (1.0, 1.0), "mm/s": (1.0, 1000.0)},
+    "acceleration": {
+        "m/s2": (1.0, 1.0), "m/s²": (1.0, 1.0), "m/s^2": (1.0, 1.0),
+        "mm/s2": (1.0, 1000.0), "mm/s²": (1.0, 1000.0), "mm/s^2": (1.0, 1000.0),
+    },
+}
+
+#: Key suffix (after ``base_``) → unit, per kind; the first is the one messages suggest.
+_SUFFIXES: dict[str, dict[str, str]] = {
+    "length": {"mm": "mm", "cm": "cm", "m": "m"},
+    "angle": {"deg": "deg", "rad": "rad"},
+    "omega": {"rad_s": "rad/s", "rpm": "rpm", "deg_s": "deg/s"},
+    "epsilon": {"rad_s2": "rad/s2", "deg_s2": "deg/s2"},
+    "velocity": {"m_s": "m/s", "mm_s": "mm/s"},
+    "acceleration": {"m_s2": "m/s2", "mm_s2": "mm/s2"},
+}
+
+_KIND_WORDS = {
+    "length": "a length",
+    "angle": "an angle",
+    "omega": "an angular velocity",
+    "epsilon": "an angular acceleration",
+    "velocity": "a velocity",
+    "acceleration": "an acceleration",
+}
+
+_PER_MM = "_per_mm"
+_ALL_SUFFIXES = {s for table in _SUFFIXES.values() for s in table} | {
+    s + _PER_MM for table in _SUFFIXES.values() for s in table
+}
+
+# Names. fullmatch() everywhere: "$" would let a trailing newline through.
+_POINT_NAME = re.compile(r"[A-Z]+[0-9]*['′]*")
+_LINK_ID = re.compile(r"[0-9A-Za-z]{1,8}")
+_LABEL = r"(?:@[0-9A-Za-z.+\-]{1,24})?"
+_QUANTITY_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*" + _LABEL)
+_SEGMENT_NAME = re.compile(r"(?:[a-zπ][0-9]*['′]*){2,8}" + _LABEL)
+
+_TOP_KEYS = (
+    "title", "show", "find", "scales", "units", "frame", "driver", "dyad", "point",
+    "measured", "check", "page",
+)
+
+_MISSING: Any = object()
+
+
+def _say(value: Any, limit: int = 40) -> str:
+    """A user-written string made safe for a one-line message (quoted, escaped, cut short)."""
+    text = str(value)
+    if len(text) > limit:
+        text = text[: limit - 1] + "…"
+    return repr(text)
+
+
+def _key_text(key: str) -> str:
+    """A key as it appears in a key path: plain when harmless, else quoted and escaped."""
+    return key if re.fullmatch(r"[A-Za-z0-9_'′@.+\-π]{1,60}", key) else _say(key, 60)
+
+
+def _type_name(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true/false"
+    if isinstance(value, (int, float)):
+        return "a number"
+    if isinstance(value, str):
+        return "a string"
+    if isinstance(value, list):
+        return "a list"
+    if isinstance(value, dict):
+        return "a table"
+    return "a date/time" if hasattr(value, "isoformat") else type(value).__name__
+
+
+def _label(value: float) -> str:
+    """Compact text of a number as the user wrote it: 50.0 → "50", 12.5 → "12.5"."""
+    text = f"{value:.12g}"
+    return "0" if text == "-0" else text
+
+
+def _choices(words: Iterable[str]) -> str:
+    words = [str(w) for w in words]
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " or " + words[-1]
+
+
+def _did_you_mean(word: str, candidates: Iterable[str]) -> str:
+    """``"; did you mean X?"`` for the nearest candidate, or ``""``."""
+    close = difflib.get_close_matches(word, sorted(set(candidates)), n=1, cutoff=0.6)
+    return f"; did you mean {close[0]}?" if close else ""
+
+
+def _maybe(word: str, candidates: Iterable[str]) -> str:
+    """``" (did you mean X?)"`` for the nearest candidate, or ``""``."""
+    tip = _did_you_mean(word, candidates)
+    return f" ({tip[2:]})" if tip else ""
+
+
+# --------------------------------------------------------------------------------------------
+# The reader: one TOML table, its key path, the keys it has read; problems go to one list.
+# --------------------------------------------------------------------------------------------
+
+
+@dataclass
+class _Given:
+    """A quantity as found in a table: the key as written, the raw value, its conversion."""
+
+    key: str
+    value: Any
+    num: float
+    den: float
+
+    def si(self, x: float) -> float:
+        return x * self.num / self.den
+
+
+class _Reader:
+    """A view of one table that tracks its key path and collects problems.
+
+    Every ``read``-like method marks the key as used and remembers it as a known key, so
+    that :meth:`finish` can report the rest as unknown, with a suggestion.
+    """
+
+    def __init__(
+        self,
+        table: Mapping[str, Any],
+        path: str,
+        problems: list[tuple[str, str]],
+        units: Mapping[str, str | None],
+    ) -> None:
+        self.table = table
+        self.path = path
+        self.problems = problems
+        self.units = units
+        self.used: set[str] = set()
+        self.known: set[str] = set()
+
+    # -- paths and problems ------------------------------------------------------------------
+    def at(self, key: str | int) -> str:
+        if isinstance(key, int):
+            return f"{self.path}[{key}]"
+        key = _key_text(key)
+        return f"{self.path}.{key}" if self.path else key
+
+    def problem(self, path: str, reason: str) -> None:
+        self.problems.append((path, reason))
+
+    def sub(self, table: Mapping[str, Any], path: str) -> _Reader:
+        return _Reader(table, path, self.problems, self.units)
+
+    # -- raw access ----------------------------------------------------------------------------
+    def has(self, key: str) -> bool:
+        return key in self.table
+
+    def raw(self, key: str, *, required: bool = False, hint: str = "") -> Any:
+        """The value under ``key`` (marked used), or ``_MISSING``."""
+        self.known.add(key)
+        if key not in self.table:
+            if required:
+                self.problem(self.at(key), "missing" + (f": {hint}" if hint else ""))
+            return _MISSING
+        self.used.add(key)
+        return self.table[key]
+
+    def finish(self, hint: str = "") -> None:
+        """Report every key that was not read, suggesting the nearest known key."""
+        for key in self.table:
+            if key not in self.used:
+                tip = _did_you_mean(key, self.known) or (f"; {hint}" if hint else "")
+                self.problem(self.at(key), "unknown key" + tip)
+
+    # -- typed values ------------------------------------------------------------------------
+    def number(self, value: Any, path: str, *, positive: bool = False) -> float | None:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            self.problem(path, f"must be a number, not {_type_name(value)}")
+            return None
+        try:
+            x = float(value)
+        except OverflowError:
+            self.problem(path, "number too large")
+            return None
+        if not math.isfinite(x):
+            self.problem(path, f"must be a finite number, not {value!r}")
+            return None
+        if positive and x <= 0:
+            self.problem(path, "must be > 0")
+            return None
+        return x
+
+    def numbers(
+        self, value: Any, path: str, count: int, *, positive: bool = False
+    ) -> list[float] | None:
+        """A list of exactly ``count`` numbers."""
+        if not isinstance(value, list) or len(value) != count:
+            shape = "[x, y]: a list of 2 numbers" if count == 2 else f"a list of {count} numbers"
+            got = f"a list of {len(value)}" if isinstance(value, list) else _type_name(value)
+            self.problem(path, f"must be {shape}, not {got}")
+            return None
+        out = [self.number(v, f"{path}[{i}]", positive=positive) for i, v in enumerate(value)]
+        return None if any(x is None for x in out) else out  # type: ignore[return-value]
+
+    def string(
+        self,
+        key: str,
+        *,
+        choices: Iterable[str] | None = None,
+        required: bool = False,
+        default: str | None = None,
+    ) -> str | None:
+        options = tuple(choices) if choices is not None else None
+        hint = f"write {key} = {_choices(repr(c) for c in options)}" if options else ""
+        value = self.raw(key, required=required, hint=hint.replace("'", '"'))
+        if value is _MISSING:
+            return default
+        if not isinstance(value, str):
+            self.problem(self.at(key), f"must be a string, not {_type_name(value)}")
+            return None
+        if options is not None and value not in options:
+            self.problem(
+                self.at(key),
+                f"unknown value {_say(value)}: use {_choices(options)}"
+                + _maybe(value, options),
+            )
+            return None
+        return value
+
+    def point_name(self, value: Any, path: str) -> str | None:
+        if not isinstance(value, str):
+            self.problem(path, f"must be a point name (a string such as \"B\"), not {_type_name(value)}")
+            return None
+        if not _POINT_NAME.fullmatch(value) or len(value) > 8:
+            self.problem(
+                path,
+                f"{_say(value)} is not a point name: capital letters, then digits or primes "
+                "(B, C2, E')",
+            )
+            return None
+        return value
+
+    def link_id(self, value: Any, path: str) -> str | None:
+        if isinstance(value, int) and not isinstance(value, bool) and 0 <= value < 10**8:
+            return str(value)
+        if isinstance(value, str) and _LINK_ID.fullmatch(value):
+            return value
+        self.problem(path, f"must be a link number such as \"2\", not {_say(value) if isinstance(value, str) else _type_name(value)}")
+        return None
+
+    def name_list(self, key: str, count: int, check: Any) -> list[tuple[str | None, str]]:
+        """``count`` names under ``key``, each checked by ``check``; (name or None, path)."""
+        value = self.raw(key, required=True, hint=f"a list of {count}")
+        path = self.at(key)
+        if value is _MISSING:
+            return [(None, f"{path}[{i}]") for i in range(count)]
+        if not isinstance(value, list) or len(value) != count:
+            got = f"a list of {len(value)}" if isinstance(value, list) else _type_name(value)
+            self.problem(path, f"must be a list of {count}, not {got}")
+            return [(None, f"{path}[{i}]") for i in range(count)]
+        return [(check(v, f"{path}[{i}]"), f"{path}[{i}]") for i, v in enumerate(value)]
+
+    def table_at(self, key: str, *, required: bool = False, hint: str = "") -> _Reader | None:
+        value = self.raw(key, required=required, hint=hint)
+        if value is _MISSING:
+            return None
+        if not isinstance(value, dict):
+            self.problem(self.at(key), f"must be a table, not {_type_name(value)}")
+            return None
+        return self.sub(value, self.at(key))
+
+    def tables_at(self, key: str) -> list[_Reader]:
+        """An array of tables (``[[key]]``), each with its path ``key[i]``."""
+        value = self.raw(key)
+        if value is _MISSING:
+            return []
+        if not isinstance(value, list):
+            self.problem(self.at(key), f"must be an array of tables: write [[{key}]]")
+            return []
+        out = []
+        for i, item in enumerate(value):
+            if isinstance(item, dict):
+                out.append(self.sub(item, f"{self.at(key)}[{i}]"))
+            else:
+                self.problem(f"{self.at(key)}[{i}]", f"must be a table, not {_type_name(item)}")
+        return out
+
+    # -- quantities with units -----------------------------------------------------------------
+    def quantity(
+        self, base: str, kind: str, *, required: bool = True, per_mm: bool = False
+    ) -> _Given | None:
+        """Find ``base`` written with a unit suffix (``base_mm``) or plain under ``[units]``.
+
+        Returns None (after reporting, if there is something to report) when the quantity is
+        absent, given twice, or its unit is wrong or not stated.
+        """
+        tail = _PER_MM if per_mm else ""
+        suffixes = {s + tail: u for s, u in _SUFFIXES[kind].items()}
+        preferred = base + "_" + next(iter(suffixes))
+        self.known.update([base, *(f"{base}_{s}" for s in suffixes)])
+        found: list[tuple[str, str | None]] = []
+        wrong_unit = False
+        for key in self.table:
+            if key == base:
+                found.append((key, None))
+            elif key.startswith(base + "_"):
+                rest = key[len(base) + 1:]
+                if rest in suffixes:
+                    found.append((key, suffixes[rest]))
+                elif rest in _ALL_SUFFIXES:
+                    self.used.add(key)
+                    wrong_unit = True
+                    fits = _choices(f"{base}_{s}" for s in suffixes)
+                    self.problem(
+                        self.at(key), f"{rest} is not a unit of {_KIND_WORDS[kind]}; write {fits}"
+                    )
+        for key, _ in found:
+            self.used.add(key)
+        if len(found) > 1:
+            self.problem(self.at(found[1][0]), f"given twice (also as {found[0][0]})")
+            return None
+        if not found:
+            if required and not wrong_unit:
+                self.problem(
+                    self.at(base), f"missing: write {preferred} (or {base} with [units] {kind})"
+                )
+            return None
+        key, unit = found[0]
+        if unit is None:
+            if kind not in self.units:
+                self.problem(
+                    self.at(key), f"unit not stated: write {preferred} or set [units] {kind}"
+                )
+                return None
+            unit = self.units[kind]
+            if unit is None:  # the [units] entry itself is wrong and already reported
+                return None
+        num, den = _UNITS[kind][unit]
+        return _Given(key, self.table[key], num, den)
+
+    def scalar(
+        self,
+        base: str,
+        kind: str,
+        *,
+        required: bool = True,
+        default: float | None = None,
+        positive: bool = False,
+    ) -> float | None:
+        """A single number with a unit, in SI; ``default`` (SI) when absent and not required."""
+        if not required and not self._present(base, kind):
+            self.quantity(base, kind, required=False)  # registers the known keys
+            return default
+        given = self.quantity(base, kind, required=required)
+        if given is None:
+            return None
+        x = self.number(given.value, self.at(given.key), positive=positive)
+        return None if x is None else given.si(x)
+
+    def _present(self, base: str, kind: str) -> bool:
+        return any(k == base or k.startswith(base + "_") for k in self.table)
+
+    def pair(self, base: str, *, required: bool = True) -> tuple[float, float] | None:
+        """A point [x, y] with a length unit, in m."""
+        given = self.quantity(base, "length", required=required)
+        if given is None:
+            return None
+        xy = self.numbers(given.value, self.at(given.key), 2)
+        return None if xy is None else (given.si(xy[0]), given.si(xy[1]))
+
+    def positions(self, base: str, kind: str) -> Positions | None:
+        """Driver positions: one number, a list, or a range table {start, stop, step}."""
+        given = self.quantity(base, kind)
+        if given is None:
+            return None
+        path, value = self.at(given.key), given.value
+        if isinstance(value, dict):
+            written = self._range(value, path)
+        elif isinstance(value, list):
+            if not value:
+                self.problem(path, "no positions: give at least one")
+                return None
+            if len(value) > MAX_POSITIONS:
+                self.problem(path, f"absurd position count ({len(value)} > {MAX_POSITIONS})")
+                return None
+            items = [self.number(v, f"{path}[{i}]") for i, v in enumerate(value)]
+            written = None if any(x is None for x in items) else items
+        else:
+            x = self.number(value, path)
+            written = None if x is None else [x]
+        if written is None:
+            return None
+        labels = [_label(x) for x in written]
+        seen: dict[str, int] = {}
+        for i, lab in enumerate(labels):
+            if lab in seen:
+                where = f"{path}[{i}]" if isinstance(value, list) else path
+                self.problem(where, f"position {lab} is given twice")
+                return None
+            seen[lab] = i
+        return Positions(tuple(given.si(x) for x in written), tuple(labels))
+
+    def _range(self, table: dict[str, Any], path: str) -> list[float] | None:
+        r = self.sub(table, path)
+        ends = {}
+        for key in ("start", "stop", "step"):
+            v = r.raw(key, required=True, hint="a range is {start = 0, stop = 360, step = 30}")
+            ends[key] = None if v is _MISSING else r.number(v, r.at(key))
+        r.finish()
+        start, stop, step = ends["start"], ends["stop"], ends["step"]
+        if start is None or stop is None or step is None:
+            return None
+        if step == 0:
+            self.problem(r.at("step"), "must not be 0")
+            return None
+        steps = (stop - start) / step
+        if not math.isfinite(steps) or steps > MAX_POSITIONS:
+            self.problem(path, f"absurd position count (more than {MAX_POSITIONS})")
+            return None
+        count = math.ceil(steps - 1e-9)  # stop is exclusive, with a little slack for rounding
+        if count < 1:
+            self.problem(path, "the range is empty: stop must lie beyond start, in the sense of step")
+            return None
+        return [start + i * step for i in range(count)]
+
+
+# --------------------------------------------------------------------------------------------
+# What each driver, dyad or point adds to the structure, for the cross-checks.
+# --------------------------------------------------------------------------------------------
+
+
+@dataclass
+class _Part:
+    """One element's names and links, with the key paths to blame."""
+
+    where: str  # "driver", "dyad[1]", "point[0]"
+    needs: list[tuple[str, str]] = field(default_factory=list)  # (name, path) used, must exist
+    defines: list[tuple[str, str]] = field(default_factory=list)  # (name, path) new points
+    links: list[tuple[str, str]] = field(default_factory=list)  # (link, path) new moving links
+    carries: list[tuple[str, list[str]]] = field(default_factory=list)  # link → its points
+    translating: list[str] = field(default_factory=list)  # links that only translate
+    model: Any = None  # the model object, when its own values were valid
+
+
+def _valid(*values: Any) -> bool:
+    return all(v is not None for v in values)
+
+
+# --------------------------------------------------------------------------------------------
+# One function per table.
+# --------------------------------------------------------------------------------------------
+
+
+def _read_units(top: _Reader) -> dict[str, str | None]:
+    """[units]: kind → unit name (None when the entry is wrong: no cascade of 'not stated')."""
+    r = top.table_at("units")
+    units: dict[str, str | None] = {}
+    if r is None:
+        return units
+    for kind, table in _UNITS.items():
+        value = r.raw(kind)
+        if value is _MISSING:
+            continue
+        if isinstance(value, str) and value in table:
+            units[kind] = value
+            continue
+        units[kind] = None
+        options = [u for u in table if "²" not in u and "^" not in u]
+        if isinstance(value, str):
+            r.problem(
+                r.at(kind),
+                f"unknown unit {_say(value)}: use {_choices(options)}"
+                + _maybe(value, table),
+            )
+        else:
+            r.problem(r.at(kind), f"must be a unit name such as \"{options[0]}\", not {_type_name(value)}")
+    r.finish()
+    return units
+
+
+def _read_header(top: _Reader) -> tuple[str, tuple[str, ...], tuple[str, ...]]:
+    """title, show, find."""
+    title = top.string("title", default="") or ""
+    if len(title) > MAX_TITLE:
+        top.problem("title", f"too long ({len(title)} characters; at most {MAX_TITLE})")
+
+    show: list[str] = []
+    value = top.raw("show")
+    if value is _MISSING:
+        show = list(SHOW_CHOICES)
+    elif not isinstance(value, list) or not value:
+        top.problem("show", f"must be a non-empty list from {_choices(SHOW_CHOICES)}")
+    else:
+        for i, item in enumerate(value):
+            if not isinstance(item, str) or item not in SHOW_CHOICES:
+                top.problem(
+                    f"show[{i}]",
+                    f"unknown value {_say(item)}: use {_choices(SHOW_CHOICES)}"
+                    + (_did_you_mean(item, SHOW_CHOICES) if isinstance(item, str) else ""),
+                )
+            elif item in show:
+                top.problem(f"show[{i}]", f"{item} is listed twice")
+            else:
+                show.append(item)
+
+    find: list[str] = []
+    value = top.raw("find")
+    if value is not _MISSING:
+        if not isinstance(value, list):
+            top.problem("find", f"must be a list of quantity names, not {_type_name(value)}")
+        else:
+            for i, item in enumerate(value):
+                if not isinstance(item, str) or not item.strip():
+                    top.problem(f"find[{i}]", "must be a non-empty string (a quantity name)")
+                elif item in find:
+                    top.problem(f"find[{i}]", f"{_say(item)} is listed twice")
+                else:
+                    find.append(item)
+    return title, tuple(show), tuple(find)
+
+
+def _read_scales(top: _Reader) -> dict[str, float]:
+    """[scales]: l, v, a per drawing mm, converted to SI per mm."""
+    r = top.table_at("scales")
+    scales: dict[str, float] = {}
+    if r is None:
+        return scales
+    for name, kind in (("l", "length"), ("v", "velocity"), ("a", "acceleration")):
+        given = r.quantity(name, kind, required=False, per_mm=True)
+        if given is not None:
+            x = r.number(given.value, r.at(given.key), positive=True)
+            if x is not None:
+                scales[name] = given.si(x)
+    r.finish()
+    return scales
+
+
+def _read_frame(top: _Reader) -> tuple[dict[str, tuple[float, float]], str | None]:
+    """[frame]: point coordinates (m) and the optional frame link number."""
+    r = top.table_at("frame")
+    points: dict[str, tuple[float, float]] = {}
+    if r is None:
+        return points, None
+    link = None
+    value = r.raw("link")
+    if value is not _MISSING:
+        link = r.link_id(value, r.at("link"))
+    for key in list(r.table):
+        if key in r.used or key == "link":
+            continue
+        name = key.split("_", 1)[0]
+        if not _POINT_NAME.fullmatch(name) or len(name) > 8:
+            continue  # finish() reports it
+        xy = r.pair(name)
+        if xy is not None:
+            points[name] = xy
+    r.finish("a frame point is named in capitals with its coordinates, e.g. A_mm = [0, 0]")
+    return points, link
+
+
+def _read_guide(parent: _Reader, key: str, frame: Mapping[str, tuple[float, float]]) -> Guide | None:
+    """A frame guide {through = [x, y] or a frame point's name, angle (default 0)}."""
+    r = parent.table_at(key, required=True, hint=f"write {key} = {{through_mm = [0, 0], angle_deg = 0}}")
+    if r is None:
+        return None
+    through: tuple[float, float] | None
+    if isinstance(r.table.get("through"), str):
+        name = r.raw("through")
+        through = frame.get(name)
+        if through is None:
+            r.problem(r.at("through"), f"{_say(name)} is not a frame point")
+    else:
+        through = r.pair("through")
+    angle = r.scalar("angle", "angle", required=False, default=0.0)
+    r.finish()
+    return Guide(through, angle) if _valid(through, angle) else None  # type: ignore[arg-type]
+
+
+def _read_driver(top: _Reader, frame: Mapping[str, tuple[float, float]]) -> tuple[_Part, Positions | None]:
+    """[driver]: a crank or a slider, and the positions it is drawn at."""
+    part = _Part("driver")
+    r = top.table_at("driver", required=True, hint="add a [driver] table (type = \"crank\" or \"slider\")")
+    if r is None:
+        return part, None
+    kind = r.string("type", choices=("crank", "slider"), required=True)
+    if kind is None:  # keep the points it names, so later dyads do not cascade
+        for key in ("tip", "point"):
+            value = r.table.get(key)
+            if isinstance(value, str) and _POINT_NAME.fullmatch(value):
+                part.defines.append((value, r.at(key)))
+        return part, None
+    link_value = r.raw("link", required=True, hint="the driver's link number, e.g. link = \"1\"")
+    link = None if link_value is _MISSING else r.link_id(link_value, r.at("link"))
+    if link is not None:
+        part.links.append((link, r.at("link")))
+
+    def name(key: str) -> str | None:
+        value = r.raw(key, required=True, hint="a point name such as \"B\"")
+        return None if value is _MISSING else r.point_name(value, r.at(key))
+
+    model: Driver | None = None
+    if kind == "crank":
+        pivot, tip = name("pivot"), name("tip")
+        length = r.scalar("length", "length", positive=True)
+        positions = r.positions("angle", "angle")
+        omega = r.scalar("omega", "omega")
+        epsilon = r.scalar("epsilon", "epsilon", required=False, default=0.0)
+        direction = r.string("direction", choices=("ccw", "cw"), default="ccw")
+        if direction == "cw" and omega is not None and epsilon is not None:
+            if omega < 0:
+                r.problem(r.at("direction"), "with direction = \"cw\" give omega as a magnitude (≥ 0)")
+                omega = None
+            else:  # both read positive clockwise; stored CCW-positive
+                omega, epsilon = -omega + 0.0, -epsilon + 0.0
+        if pivot is not None:
+            if pivot not in frame:
+                known = ", ".join(frame) or "none"
+                r.problem(r.at("pivot"), f"{pivot} is not a frame point (frame points: {known})")
+            else:
+                part.needs.append((pivot, r.at("pivot")))
+        if tip is not None:
+            part.defines.append((tip, r.at("tip")))
+        if link is not None:
+            part.carries.append((link, [n for n in (pivot, tip) if n]))
+        if _valid(link, pivot, tip, length, omega, epsilon, direction):
+            model = Crank(link, pivot, tip, length, omega, epsilon)  # type: ignore[arg-type]
+    else:
+        point = name("point")
+        guide = _read_guide(r, "guide", frame)
+        positions = r.positions("position", "length")
+        velocity = r.scalar("velocity", "velocity")
+        acceleration = r.scalar("acceleration", "acceleration", required=False, default=0.0)
+        if point is not None:
+            part.defines.append((point, r.at("point")))
+        if link is not None:
+            part.carries.append((link, [point] if point else []))
+            part.translating.append(link)
+        if _valid(link, point, guide, velocity, acceleration):
+            model = SliderInput(link, point, guide, velocity, acceleration)  # type: ignore[arg-type]
+    r.finish()
+    part.model = model
+    return part, positions
+
+
+_DYAD_TYPES = ("RRR", "RRP", "RPR", "RPP")
+
+
+def _read_dyad(r: _Reader, index: int, frame: Mapping[str, tuple[float, float]]) -> _Part:
+    """One [[dyad]]: its joints, links and dimensions, by type."""
+    where = f"dyad[{index}]"
+    part = _Part(where)
+    kind = r.string("type", choices=_DYAD_TYPES, required=True)
+    if kind is None:
+        return part
+    count = 3 if kind == "RRR" else 2
+    joints = r.name_list("joints", count, r.point_name)
+    links = r.name_list("links", 2, r.link_id)
+    (i, i_path), (j, j_path) = links
+    part.links = [(x, p) for x, p in links if x is not None]
+    if i is not None and i == j:
+        r.problem(j_path, "a dyad's two links must differ")
+    names = [n for n, _ in joints]
+
+    def carry(link: str | None, *points: str | None) -> None:
+        if link is not None:
+            part.carries.append((link, [p for p in points if p]))
+
+    def new(k: int, name: str | None = None) -> None:
+        n = joints[k][0] if name is None else name
+        if n is not None:
+            part.defines.append((n, joints[k][1]))
+
+    def need(*ks: int) -> None:
+        part.needs.extend((joints[k][0], joints[k][1]) for k in ks if joints[k][0] is not None)
+
+    if kind == "RRR":
+        p, c, q = names
+        lengths_given = r.quantity("lengths", "length")
+        lengths = None
+        if lengths_given is not None:
+            raw = r.numbers(lengths_given.value, r.at(lengths_given.key), 2, positive=True)
+            lengths = None if raw is None else tuple(lengths_given.si(x) for x in raw)
+        branch = r.string("branch", choices=("left", "right"), required=True)
+        need(0, 2)
+        new(1)
+        carry(i, p, c)
+        carry(j, q, c)
+        if _valid(p, c, q, i, j, lengths, branch):
+            part.model = RRR(p, c, q, (i, j), lengths, branch)  # type: ignore[arg-type]
+        if p is not None and p == q:
+            r.problem(joints[2][1], f"the two outer joints must differ ({p} twice)")
+    elif kind == "RRP":
+        p, c = names
+        length = r.scalar("length", "length", positive=True)
+        guide = _read_guide(r, "guide", frame)
+        branch = r.string("branch", choices=("forward", "backward"), required=True)
+        need(0)
+        new(1)
+        carry(i, p, c)
+        carry(j, c)
+        if j is not None:
+            part.translating.append(j)
+        if _valid(p, c, i, j, length, guide, branch):
+            part.model = RRP(p, c, (i, j), length, guide, branch)  # type: ignore[arg-type]
+    elif kind == "RPR":
+        p, q = names
+        bar = r.string("bar", choices=("first", "second"), required=True)
+        need(0, 1)
+        if p is not None and p == q:
+            r.problem(joints[1][1], f"the two pivots must differ ({p} twice)")
+        if _valid(p, q, i, j, bar):
+            model = RPR(p, q, (i, j), bar)  # type: ignore[arg-type]
+            part.model = model
+            on_bar, on_block = model.coincident
+            k = 1 if bar == "first" else 0  # the sliding point is the block's pivot
+            new(k, on_bar)
+            new(k, on_block)
+            carry(model.bar_link, model.bar_pivot, on_bar)
+            carry(model.block_link, model.block_pivot, on_block)
+        else:
+            carry(i, p)
+            carry(j, q)
+    else:  # RPP
+        p, c = names
+        slot = r.scalar("slot_angle", "angle")
+        guide = _read_guide(r, "guide", frame)
+        need(0)
+        new(1)
+        if p is not None and i is not None and j is not None:
+            new(0, p + i)
+            new(0, p + j)
+        carry(i, p, p + i if p and i else None)
+        carry(j, c, p + j if p and j else None)
+        part.translating.extend(x for x in (i, j) if x is not None)
+        if slot is not None and guide is not None and abs(math.sin(slot - guide.angle)) < PARALLEL_SIN:
+            r.problem(r.at("slot_angle"), "the slot is parallel to the guide: the dyad cannot move")
+        elif _valid(p, c, i, j, slot, guide):
+            part.model = RPP(p, c, (i, j), slot, guide)  # type: ignore[arg-type]
+    r.finish()
+    return part
+
+
+def _read_point(r: _Reader, index: int) -> tuple[_Part, tuple[str | None, str, list[tuple[str, str]], str]]:
+    """One [[point]]: a point fixed on a link, placed from one or two points of that link.
+
+    Returns the part and (link, link path, bases with paths, name path) for the cross-check.
+    """
+    part = _Part(f"point[{index}]")
+    value = r.raw("name", required=True, hint="a point name such as \"E\"")
+    name = None if value is _MISSING else r.point_name(value, r.at("name"))
+    value = r.raw("link", required=True, hint="the number of the link that carries the point")
+    link = None if value is _MISSING else r.link_id(value, r.at("link"))
+    bases: list[tuple[str, str]] = []
+    value = r.raw("base", required=True, hint="base = [\"B\", \"C\"] (or one point with offset)")
+    ok = value is not _MISSING
+    if ok and (not isinstance(value, list) or len(value) not in (1, 2)):
+        r.problem(r.at("base"), "must be a list of 1 or 2 point names")
+        ok = False
+    elif ok:
+        for k, b in enumerate(value):
+            b_name = r.point_name(b, f"{r.at('base')}[{k}]")
+            ok = ok and b_name is not None
+            if b_name is not None:
+                bases.append((b_name, f"{r.at('base')}[{k}]"))
+        if len(bases) == 2 and bases[0][0] == bases[1][0]:
+            r.problem(bases[1][1], f"the two base points must differ ({bases[0][0]} twice)")
+            ok = False
+    along = left = None
+    if ok and len(bases) == 1:
+        offset = r.pair("offset", required=False)
+        if offset is None and not r._present("offset", "length"):
+            r.problem(r.at("offset"), "missing: with one base point give offset_mm = [dx, dy]")
+        for extra in ("along", "left"):
+            if r._present(extra, "length"):
+                key = next(k for k in r.table if k == extra or k.startswith(extra + "_"))
+                r.used.add(key)
+                r.problem(r.at(key), "with one base point give offset = [dx, dy] instead")
+        if offset is not None:
+            along, left = offset
+    elif ok:
+        along = r.scalar("along", "length")
+        left = r.scalar("left", "length", required=False, default=0.0)
+        if r._present("offset", "length"):
+            key = next(k for k in r.table if k == "offset" or k.startswith("offset_"))
+            r.used.add(key)
+            r.problem(r.at(key), "offset needs a single base point; with two give along/left")
+    else:  # base is broken: still read the rest so that it is not reported as unknown
+        for extra in ("along", "left", "offset"):
+            r.quantity(extra, "length", required=False)
+    r.finish()
+    if name is not None:
+        part.defines.append((name, r.at("name")))
+    if _valid(name, link, along, left) and ok:
+        part.model = LinkPoint(name, link, tuple(b for b, _ in bases), along, left)  # type: ignore[arg-type]
+    return part, (link, r.at("link"), bases, r.at("name"))
+
+
+def _read_measured(top: _Reader, labels: tuple[str, ...] | None) -> tuple[tuple[str, float], ...]:
+    """[measured]: quantity values (SI) or drawn segments (mm), kept raw and in order."""
+    r = top.table_at("measured")
+    if r is None:
+        return ()
+    out: list[tuple[str, float]] = []
+    for key, value in r.table.items():
+        r.used.add(key)
+        path = r.at(key)
+        if not (_QUANTITY_NAME.fullmatch(key) or _SEGMENT_NAME.fullmatch(key)):
+            r.problem(
+                path,
+                "not a measured name: a quantity (v_C, omega_2, a_k_C2C3, v_C@50) "
+                "or a drawn segment (pc, \"p'c'\", \"n'c'\")",
+            )
+            continue
+        x = r.number(value, path)
+        if x is None:
+            continue
+        if "@" in key and labels is not None:
+            label = key.split("@", 1)[1]
+            if label not in labels:
+                r.problem(path, f"no position is labelled {label} (positions: {', '.join(labels)})")
+                continue
+        out.append((key, x))
+    return tuple(out)
+
+
+def _read_check(top: _Reader) -> float:
+    """[check]: precision_mm > 0."""
+    r = top.table_at("check")
+    if r is None:
+        return DRAWING_PRECISION_MM
+    value = r.raw("precision_mm")
+    precision = DRAWING_PRECISION_MM
+    if value is not _MISSING:
+        x = r.number(value, r.at("precision_mm"), positive=True)
+        precision = precision if x is None else x
+    r.finish()
+    return precision
+
+
+def _read_page(top: _Reader) -> Page:
+    """[page]: size = "A4" (or another name in PAPER_SIZES) or [w, h] in mm."""
+    r = top.table_at("page")
+    if r is None:
+        return Page()
+    value = r.raw("size")
+    size = Page().size
+    if isinstance(value, str):
+        if value in PAPER_SIZES:
+            size = PAPER_SIZES[value]
+        else:
+            r.problem(
+                r.at("size"),
+                f"unknown paper {_say(value)}: use {_choices(PAPER_SIZES)} or [width, height] in mm"
+                + _maybe(value, PAPER_SIZES),
+            )
+    elif value is not _MISSING:
+        wh = r.numbers(value, r.at("size"), 2, positive=True)
+        if wh is not None:
+            size = (wh[0], wh[1])
+    r.finish()
+    return Page(size)
+
+
+# --------------------------------------------------------------------------------------------
+# Cross-checks: names defined once and before use, links new and existing.
+# --------------------------------------------------------------------------------------------
+
+
+def _check_structure(
+    problems: list[tuple[str, str]],
+    frame: Mapping[str, tuple[float, float]],
+    frame_link: tuple[str | None, bool],
+    driver: _Part,
+    dyads: list[_Part],
+    points: list[tuple[_Part, tuple[str | None, str, list[tuple[str, str]], str]]],
+) -> str | None:
+    """Check names and links across the scene; return the frame link (None if unknown)."""
+    origin: dict[str, str] = {n: "frame" for n in frame}  # name → who defines it
+    stage: dict[str, int] = {n: 0 for n in frame}  # name → first dyad index that may use it
+    owner: dict[str, str] = {}  # link → who introduced it
+    carried: dict[str, list[str]] = {}
+    translating: set[str] = set()
+
+    def define(part: _Part, level: int) -> None:
+        for name, path in part.defines:
+            if name in origin:
+                who = "a frame point" if origin[name] == "frame" else f"by {origin[name]}"
+                problems.append((path, f"{name} is already defined ({who})"))
+            else:
+                origin[name], stage[name] = part.where, level
+
+    def carry(part: _Part) -> None:
+        for link, names in part.carries:
+            lst = carried.setdefault(link, [])
+            lst.extend(n for n in names if n not in lst)
+        translating.update(part.translating)
+
+    # Driver and dyads: new links, new points, in assembly order.
+    for level, part in enumerate([driver, *dyads]):
+        for link, path in part.links:
+            if link in owner and owner[link] != part.where:
+                problems.append(
+                    (path, f"link {link} is already used by {owner[link]}; each dyad adds two new links")
+                )
+            owner.setdefault(link, part.where)
+        define(part, level)
+        carry(part)
+
+    # Points, in file order: on an existing moving link, placed from that link's points.
+    for part, (link, link_path, bases, _name_path) in points:
+        level = 0
+        for base, path in bases:
+            if link is None or link not in carried:
+                continue
+            if base not in origin:
+                later = next(
+                    (
+                        p.where
+                        for p, _ in points
+                        if p is not part and any(n == base for n, _ in p.defines)
+                    ),
+                    None,
+                )
+                tip = f" ({later} defines it: list that point first)" if later else ""
+                problems.append((path, f"{base} is not defined before {part.where}{tip}"))
+            elif base not in carried[link]:
+                problems.append(
+                    (path, f"{base} is not a point of link {link} (it carries {', '.join(carried[link])})")
+                )
+            else:
+                level = max(level, stage[base])
+        if link is not None and link not in carried:
+            if link == frame_link[0]:
+                problems.append((link_path, "a point on the frame belongs in [frame]"))
+            else:
+                problems.append(
+                    (link_path, f"link {link} does not exist (links: {', '.join(carried) or 'none'})")
+                )
+        elif link is not None and len(bases) == 1 and link not in translating:
+            problems.append(
+                (
+                    link_path,
+                    f"link {link} turns: an offset from one base point needs a translating "
+                    "link (a slider); give base = [U, V] with along/left",
+                )
+            )
+        define(part, level)
+        if link is not None and link in carried:
+            carry(_Part(part.where, carries=[(link, [n for n, _ in part.defines])]))
+
+    # Dyads' outer joints: defined by the frame, the driver or an earlier dyad (or a point
+    # placed from those).
+    for k, part in enumerate(dyads):
+        for name, path in part.needs:
+            if name in stage and stage[name] <= k:
+                continue
+            if name in origin:
+                tip = f" ({origin[name]} defines it: put that first)"
+            else:
+                tip = ""
+            problems.append((path, f"{name} is not defined before {part.where}{tip}"))
+
+    # The frame link.
+    link, explicit = frame_link
+    if explicit:
+        if link is not None and link in owner:
+            problems.append(("frame.link", f"link {link} is a moving link ({owner[link]})"))
+        return link
+    numeric = [int(x) for x in owner if x.isdigit()]
+    return str(max(numeric) + 1) if numeric else "0"
+
+
+def _rank(problem: tuple[str, str], order: Mapping[str, int]) -> tuple[int, int, int]:
+    """Sort key putting problems in file order: top-level table, then array index.
+
+    Within one table an unknown key comes first: a misspelt key is usually why another
+    one is "missing".
+    """
+    path, reason = problem
+    m = re.match(r"([^.\[]+)(?:\[(\d+)\])?", path)
+    typo = 0 if reason.startswith("unknown key") else 1
+    if not m:
+        return (-1, 0, typo)
+    return (order.get(m.group(1), len(order)), int(m.group(2) or 0), typo)
+
+
+# --------------------------------------------------------------------------------------------
+# Public API
+# --------------------------------------------------------------------------------------------
+
+
+def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
+    """Validate parsed TOML data and build the :class:`Scene`, in SI units.
+
+    Parameters
+    ----------
+    data : dict
+        The TOML document as ``tomllib`` returns it.
+    source : str
+        The name used in messages.
+
+    Returns
+    -------
+    Scene
+
+    Raises
+    ------
+    SceneError
+        With every problem found (``.problems``); the message is the first, in file order.
+
+    Examples
+    --------
+    >>> scene = parse_scene({
+    ...     "title": "A crank alone",
+    ...     "units": {"length": "mm", "angle": "deg"},
+    ...     "frame": {"A": [0, 0]},
+    ...     "driver": {"type": "crank", "link": "1", "pivot": "A", "tip": "B",
+    ...                "length": 50, "angle": [0, 90], "omega_rpm": 60},
+    ... }, "crank.toml")
+    >>> scene.linkage.driver.length, scene.positions.labels, scene.linkage.frame_link
+    (0.05, ('0', '90'), '2')
+    >>> round(scene.linkage.driver.omega, 6)
+    6.283185
+    >>> parse_scene({
+    ...     "frame": {"A_mm": [0, 0]},
+    ...     "driver": {"type": "crank", "link": 1, "pivot": "A", "tip": "B",
+    ...                "lenght_mm": 50, "angle_deg": 30, "omega_rad_s": 10},
+    ... }, "bad.toml")
+    Traceback (most recent call last):
+    ...
+    graphmech.errors.SceneError: bad.toml: driver.lenght_mm: unknown key; did you mean length_mm? (and 1 more)
+    """
+    problems: list[tuple[str, str]] = []
+    if not isinstance(data, dict):
+        raise SceneError([("", "a scene must be a TOML table")], source)
+    order = {k: n for n, k in enumerate(data)}
+    top = _Reader(data, "", problems, {})
+    units = _read_units(top)
+    top.units = units
+    title, show, find = _read_header(top)
+    scales = _read_scales(top)
+    frame, link_value = _read_frame(top)
+    frame_link_given = "frame" in data and isinstance(data["frame"], dict) and "link" in data["frame"]
+    driver, positions = _read_driver(top, frame)
+    dyads = [_read_dyad(r, k, frame) for k, r in enumerate(top.tables_at("dyad"))]
+    points = [_read_point(r, k) for k, r in enumerate(top.tables_at("point"))]
+    measured = _read_measured(top, positions.labels if positions else None)
+    precision = _read_check(top)
+    page = _read_page(top)
+    top.known.update(_TOP_KEYS)
+    top.finish()
+    frame_link = _check_structure(
+        problems, frame, (link_value, frame_link_given), driver, dyads, points
+    )
+    if problems:
+        problems.sort(key=lambda p: _rank(p, order))
+        raise SceneError(problems, source)
+    linkage = Linkage(
+        frame_points=dict(frame),
+        driver=driver.model,
+        dyads=tuple(d.model for d in dyads),
+        points=tuple(p.model for p, _ in points),
+        frame_link=frame_link or "0",
+    )
+    return Scene(
+        source=source,
+        title=title,
+        show=show,
+        find=find,
+        scales=scales,
+        linkage=linkage,
+        positions=positions,  # type: ignore[arg-type]
+        measured=measured,
+        precision_mm=precision,
+        page=page,
+    )
+
+
+def load_scene(path: str | os.PathLike[str]) -> Scene:
+    """Read a scene file and validate it.
+
+    Parameters
+    ----------
+    path : str or path-like
+        A UTF-8 TOML file of at most :data:`MAX_BYTES` bytes.
+
+    Returns
+    -------
+    Scene
+
+    Raises
+    ------
+    SceneError
+        For an unreadable, oversized, non-UTF-8 or malformed file, and for every problem
+        :func:`parse_scene` finds; messages start with the file name.
+    """
+    source = Path(path).name
+    try:
+        with open(path, "rb") as fh:
+            raw = fh.read(MAX_BYTES + 1)
+    except OSError as exc:
+        raise SceneError([("", f"cannot read the file ({exc.strerror or exc})")], source) from None
+    if len(raw) > MAX_BYTES:
+        raise SceneError(
+            [("", "file is larger than 1 MiB; a scene is a few kilobytes, refusing to read it")],
+            source,
+        )
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = raw[: exc.start].count(b"\n") + 1
+        raise SceneError(
+            [(f"line {line}", f"not UTF-8 text (byte 0x{raw[exc.start]:02x}); save the file as UTF-8")],
+            source,
+        ) from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        message = str(exc)
+        m = re.search(r"\(at line (\d+), column (\d+)\)", message)
+        what = re.sub(r"\s*\(at [^)]*\)\s*$", "", message)
+        what = what[:1].lower() + what[1:]
+        if m:
+            raise SceneError(
+                [(f"line {m.group(1)}", f"invalid TOML: {what} (column {m.group(2)})")], source
+            ) from None
+        line = text.count("\n") + 1
+        raise SceneError([(f"line {line}", f"invalid TOML: {what} (at the end of the file)")], source) from None
+    except RecursionError:
+        raise SceneError([("", "invalid TOML: nested too deeply")], source) from None
+    return parse_scene(data, source)

@@ -1,0 +1,363 @@
+"""The exact (vector-loop) linkage solution: reference problems, finite differences, failures."""
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from graphmech.errors import SceneError
+from graphmech.exact import Kinematics, solve
+from graphmech.mechanisms.linkage import (
+    RPP,
+    RPR,
+    RRP,
+    RRR,
+    Crank,
+    Guide,
+    Linkage,
+    LinkPoint,
+    SliderInput,
+)
+
+PROBLEMS = Path(__file__).resolve().parents[2].parent / "shared" / "problems.toml"
+
+
+def problem(pid: str) -> dict:
+    with PROBLEMS.open("rb") as f:
+        (p,) = [p for p in tomllib.load(f)["problem"] if p["id"] == pid]
+    return p
+
+
+def speed(v: np.ndarray) -> float:
+    return float(np.hypot(*v[0]))
+
+
+# --------------------------------------------------------------------------------------------
+# Linkages used below
+
+FOUR_FRAME = {"A": (0.0, 0.0), "D": (0.12, 0.0)}
+FOUR_DRIVER = Crank("1", "A", "B", 0.06, 10.0, 3.0)
+FOUR_DYAD = RRR("B", "C", "D", ("2", "3"), (0.12, 0.09), "left")
+FOURBAR = Linkage(FOUR_FRAME, FOUR_DRIVER, (FOUR_DYAD,),
+                  (LinkPoint("S3", "3", ("D", "C"), 0.04, -0.01),))
+COUPLER_E = LinkPoint("E", "2", ("B", "C"), 0.06, 0.03)
+
+SIXBAR_RRR = Linkage(
+    {**FOUR_FRAME, "G": (0.2, 0.2)}, FOUR_DRIVER,
+    (FOUR_DYAD, RRR("E", "F", "G", ("5", "6"), (0.15, 0.15), "right")),
+    (LinkPoint("H", "5", ("E", "F"), 0.1, 0.02), COUPLER_E),  # H waits for the dyad E-F-G
+)
+SIXBAR_RRP = Linkage(
+    FOUR_FRAME, FOUR_DRIVER,
+    (FOUR_DYAD, RRP("E", "F", ("5", "6"), 0.3, Guide((0.0, 0.25), math.radians(10.0)))),
+    (COUPLER_E, LinkPoint("K", "6", ("F",), 0.02, -0.03)),  # x/y offsets on the slider
+)
+# Slider-driven slider-crank: C driven along the x axis, crank AB (0.1) and coupler CB (0.3).
+SLIDER_DRIVEN = Linkage(
+    {"A": (0.0, 0.0)}, SliderInput("3", "C", Guide((0.0, 0.0), 0.0), -1.5, 4.0),
+    (RRR("C", "B", "A", ("2", "1"), (0.3, 0.1), "left"),),
+)
+# Guide bar: crank AB, block 2 pivoted at B slides on bar 3 pivoted at the frame point C.
+GUIDE_BAR = Linkage(
+    {"A": (0.0, 0.0), "C": (0.0, -0.1)}, Crank("1", "A", "B", 0.05, 10.0, -4.0),
+    (RPR("B", "C", ("2", "3"), bar="second"),),
+    (LinkPoint("F", "3", ("C", "B3"), 0.2, 0.01),),
+)
+RPP_LINKAGE = Linkage(
+    {"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.04, 100.0, 50.0),
+    (RPP("B", "C", ("2", "3"), math.radians(120.0), Guide((0.0, -0.02), math.radians(5.0))),),
+    (LinkPoint("M", "3", ("C",), 0.03, 0.01),),
+)
+
+
+# --------------------------------------------------------------------------------------------
+# 1–3. Reference problems
+
+
+def test_offset_slider_crank_matches_reference() -> None:
+    p = problem("linkage.slider_crank_offset")
+    inp, ex = p["inputs"], p["exact"]
+    mm = 1e-3
+    sc = Linkage(
+        {"A": (0.0, 0.0)}, Crank("1", "A", "B", inp["lAB_mm"] * mm, inp["omega1_rad_s"]),
+        (RRP("B", "C", ("2", "3"), inp["lBC_mm"] * mm, Guide((0.0, inp["e_mm"] * mm), 0.0),
+             branch="forward"),),
+    )
+    kin = solve(sc, np.radians(inp["theta1_deg"]))
+    assert kin.valid.tolist() == [True, True]
+    rel = 1e-9
+    assert np.degrees(kin.angle["2"]) == pytest.approx(ex["theta2_deg"], rel=rel)
+    assert kin.omega["2"] == pytest.approx(ex["omega2_rad_s"], rel=rel)
+    assert kin.alpha["2"] == pytest.approx(ex["alpha2_rad_s2"], rel=rel)
+    assert kin.vel["C"][:, 0] == pytest.approx(ex["v3_m_s"], rel=rel)
+    assert kin.acc["C"][:, 0] == pytest.approx(ex["a3_m_s2"], rel=rel)
+    assert np.all(kin.vel["C"][:, 1] == 0.0) and np.all(kin.point["C"][:, 1] == 0.03)
+    assert kin.omega["3"].tolist() == [0.0, 0.0] and kin.angle["3"].tolist() == [0.0, 0.0]
+
+
+def oscillating_block(left: float) -> Linkage:
+    # angle BAC = 135°: C on the -x axis, the crank at 45° from +x (the extension of CA)
+    return Linkage(
+        {"A": (0.0, 0.0), "C": (-0.1, 0.0)}, Crank("1", "A", "B", 0.03, 10.0),
+        (RPR("B", "C", ("2", "3"), bar="first"),),
+        (LinkPoint("D", "2", ("B", "C2"), 0.05, 0.0), LinkPoint("E", "2", ("B", "C2"), 0.05, left)),
+    )
+
+
+# The rates of kin.oscillating_block recomputed by 40-digit numerical differentiation of the
+# positions (mpmath): problems.toml's rates differ from them by 0.7–2e-7 relative (its lBC
+# agrees to 1e-16), so they are asserted to 1e-9 here and to 5e-7 against the file.
+OSC_40_DIGITS = {
+    "omega2": 1.995240068087763688, "alpha2": 8.418687998719072799,
+    "vD": 0.2257527358346506934, "aD": 2.605398135765218351,
+    "vE": 0.1726775466718565284, "aE": 2.833979214216825844,
+}
+
+
+def test_oscillating_block_matches_reference() -> None:
+    ex = problem("kin.oscillating_block")["exact"]
+    kin = solve(oscillating_block(+0.04), [math.radians(45.0)])  # E to the left of B→C
+    other = solve(oscillating_block(-0.04), [math.radians(45.0)])
+    assert kin.valid[0] and kin.reason == ("",)
+    lbc = float(np.hypot(*(kin.point["C"][0] - kin.point["B"][0])))
+    got = {
+        "omega2": abs(kin.omega["2"][0]), "alpha2": abs(kin.alpha["2"][0]),
+        "vD": speed(kin.vel["D"]), "aD": speed(kin.acc["D"]),
+        "vE": speed(kin.vel["E"]), "aE": speed(kin.acc["E"]),
+    }
+    assert lbc == pytest.approx(ex["lBC_m"], rel=1e-9)
+    for key, value in OSC_40_DIGITS.items():
+        assert got[key] == pytest.approx(value, rel=1e-9), key
+    toml_key = {"omega2": "omega2_rad_s", "alpha2": "alpha2_rad_s2", "vD": "vD_m_s",
+                "aD": "aD_m_s2", "vE": "vE_m_s", "aE": "aE_m_s2"}
+    for key, name in toml_key.items():
+        assert got[key] == pytest.approx(ex[name], rel=5e-7), key
+    assert speed(other.vel["E"]) == pytest.approx(ex["vE_other_side_m_s"], rel=5e-7)
+    assert speed(other.acc["E"]) == pytest.approx(ex["aE_other_side_m_s2"], rel=5e-7)
+    # the link turns CW, decelerating; block 3 turns with the bar; C3 is the frame pivot C
+    assert kin.omega["2"][0] > 0 > kin.alpha["2"][0]
+    assert kin.omega["3"][0] == kin.omega["2"][0] and kin.angle["3"][0] == kin.angle["2"][0]
+    assert np.all(kin.vel["C3"] == 0.0) and np.all(kin.point["C2"] == kin.point["C"])
+    # C2, the bar's point at C, slides along BC: v_C2 ∥ BC
+    bc = kin.point["C"][0] - kin.point["B"][0]
+    v_c2 = kin.vel["C2"][0]
+    assert abs(bc[0] * v_c2[1] - bc[1] * v_c2[0]) <= 1e-12 * np.hypot(*bc) * np.hypot(*v_c2)
+
+
+def test_slider_fixed_angle_guide_matches_reference() -> None:
+    p = problem("linkage.slider_fixed_angle_guide")
+    inp, ex = p["inputs"], p["exact"]
+    linkage = Linkage(
+        {"A": (0.0, 0.0)},
+        Crank("1", "A", "B", inp["lAB_mm"] * 1e-3, inp["omega1_rad_s"]),
+        (RPP("B", "C", ("2", "3"), math.radians(120.0), Guide((0.0, 0.0), 0.0)),),
+    )
+    kin = solve(linkage, [math.radians(inp["phi1_deg"])])
+    assert kin.vel["C"][0, 0] == pytest.approx(-1.195433962877246, rel=1e-9)
+    assert kin.vel["C"][0, 0] == pytest.approx(ex["vC_mm_s"] * 1e-3, rel=1e-9)
+    assert kin.vel["C"][0, 1] == 0.0
+    assert kin.omega["2"][0] == ex["omega2_rad_s"] == 0.0 and kin.alpha["2"][0] == 0.0
+    assert np.degrees(kin.angle["2"][0]) == pytest.approx(120.0, rel=1e-12)
+    assert kin.angle["3"][0] == 0.0
+    # B2 moves with the crank pin, B3 with the slotted link, and B2 − B3 slides along the slot
+    np.testing.assert_array_equal(kin.vel["B2"], kin.vel["B"])
+    np.testing.assert_array_equal(kin.vel["B3"], kin.vel["C"])
+    rel_v = kin.vel["B2"][0] - kin.vel["B3"][0]
+    assert math.atan2(rel_v[1], rel_v[0]) == pytest.approx(math.radians(120.0), rel=1e-12)
+
+
+# --------------------------------------------------------------------------------------------
+# 4. Finite differences in time reproduce vel and acc
+
+H = 1e-4  # s; with a five-point stencil the error is ~1e-12 (v) and ~1e-8 (a), relative
+
+
+def driver_rates(linkage: Linkage) -> tuple[float, float]:
+    d = linkage.driver
+    return (d.omega, d.epsilon) if isinstance(d, Crank) else (d.velocity, d.acceleration)
+
+
+def material(linkage: Linkage, kin: Kinematics, q0: np.ndarray) -> dict[str, np.ndarray]:
+    """Positions (5, N, 2) at t = -2H..2H of the material points named in ``kin``."""
+    rate, accel = driver_rates(linkage)
+    t = np.arange(-2, 3)[:, None] * H
+    q = (q0[None, :] + rate * t + 0.5 * accel * t * t).ravel()
+    k = solve(linkage, q)
+    assert k.valid.all()
+    n = q0.size
+    out = {name: z.reshape(5, n, 2) for name, z in k.point.items()}
+    out["__angles"] = {lid: a.reshape(5, n) for lid, a in k.angle.items()}
+    for y in linkage.dyads:  # coincident points that are not the named point's path
+        if isinstance(y, RPR):  # the bar's material point at X: fixed distance r0 from the pivot
+            on_bar = y.coincident[0]
+            pivot = out[y.bar_pivot]
+            r0 = np.hypot(*(kin.point[y.block_pivot] - kin.point[y.bar_pivot]).T)
+            th = out["__angles"][y.bar_link]
+            out[on_bar] = pivot + r0[None, :, None] * np.stack((np.cos(th), np.sin(th)), -1)
+        elif isinstance(y, RPP):  # the slotted link translates with C
+            out[y.coincident[1]] = kin.point[y.p][None] + out[y.c] - kin.point[y.c][None]
+    return out
+
+
+def d1(x: np.ndarray) -> np.ndarray:
+    return (x[0] - 8 * x[1] + 8 * x[3] - x[4]) / (12 * H)
+
+
+def d2(x: np.ndarray) -> np.ndarray:
+    return (-x[0] + 16 * x[1] - 30 * x[2] + 16 * x[3] - x[4]) / (12 * H * H)
+
+
+def assert_close(got: np.ndarray, want: np.ndarray, what: str, floor: float) -> None:
+    """Agreement to 1e-6 of the largest |want| (at least ``floor``: a frame point's 0 is fine)."""
+    scale = max(float(np.max(np.abs(want))), floor)
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-6 * scale, err_msg=what)
+
+
+FD_CASES = {
+    "four-bar": (FOURBAR, np.radians(np.arange(0.0, 360.0, 5.0))),
+    "six-bar RRR": (SIXBAR_RRR, np.radians(np.arange(0.0, 360.0, 5.0))),
+    "six-bar RRP": (SIXBAR_RRP, np.radians(np.arange(0.0, 360.0, 5.0))),
+    "slider-driven slider-crank": (SLIDER_DRIVEN, np.linspace(0.205, 0.395, 39)),
+    "guide bar (bar second)": (GUIDE_BAR, np.radians(np.arange(0.0, 360.0, 5.0))),
+    "RPP": (RPP_LINKAGE, np.radians(np.arange(0.0, 360.0, 5.0))),
+}
+
+
+@pytest.mark.parametrize("case", list(FD_CASES))
+def test_rates_match_finite_differences(case: str) -> None:
+    linkage, q0 = FD_CASES[case]
+    kin = solve(linkage, q0)
+    assert kin.valid.all() and set(kin.reason) == {""}
+    path = material(linkage, kin, q0)
+    angles = path.pop("__angles")
+    assert set(path) == set(kin.point)
+    v_floor = 1e-3 * max(float(np.max(np.abs(v))) for v in kin.vel.values())
+    a_floor = 1e-3 * max(float(np.max(np.abs(a))) for a in kin.acc.values())
+    for name, z in path.items():
+        np.testing.assert_allclose(z[2], kin.point[name], rtol=0, atol=1e-15, err_msg=name)
+        assert_close(kin.vel[name], d1(z), f"v_{name}", v_floor)
+        assert_close(kin.acc[name], d2(z), f"a_{name}", a_floor)
+    assert set(angles) == {k for k in linkage.links() if k != linkage.frame_link}
+    for lid, th in angles.items():
+        th = np.unwrap(th, axis=0)
+        assert np.all((kin.angle[lid] >= 0) & (kin.angle[lid] < 2 * np.pi))
+        scale = max(float(np.max(np.abs(kin.omega[lid]))), 1.0)
+        np.testing.assert_allclose(kin.omega[lid], d1(th), rtol=0, atol=1e-6 * scale)
+        scale = max(float(np.max(np.abs(kin.alpha[lid]))), 1.0)
+        np.testing.assert_allclose(kin.alpha[lid], d2(th), rtol=0, atol=1e-6 * scale)
+
+
+def test_link_angles_follow_the_links_first_two_points() -> None:
+    kin = solve(SIXBAR_RRR, np.radians([30.0, 200.0]))
+    for lid, names in SIXBAR_RRR.links().items():
+        if lid == SIXBAR_RRR.frame_link:
+            continue
+        u, v = kin.point[names[0]], kin.point[names[1]]
+        want = np.mod(np.arctan2(v[:, 1] - u[:, 1], v[:, 0] - u[:, 0]), 2 * np.pi)
+        np.testing.assert_allclose(kin.angle[lid], want, rtol=0, atol=1e-12, err_msg=lid)
+
+
+def test_branches_put_the_joint_on_the_asked_side() -> None:
+    phi = np.radians(np.arange(0.0, 360.0, 15.0))
+    for branch, sign in (("left", 1.0), ("right", -1.0)):
+        four = dataclasses.replace(FOURBAR, dyads=(dataclasses.replace(FOUR_DYAD, branch=branch),))
+        kin = solve(four, phi)
+        b, c, d = kin.point["B"], kin.point["C"], kin.point["D"]
+        side = (d[:, 0] - b[:, 0]) * (c[:, 1] - b[:, 1]) - (d[:, 1] - b[:, 1]) * (c[:, 0] - b[:, 0])
+        assert np.all(sign * side > 0)
+    for branch, sign in (("forward", 1.0), ("backward", -1.0)):
+        sc = Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.1, 1.0),
+                     (RRP("B", "C", ("2", "3"), 0.3, Guide((0.0, 0.03), math.radians(30.0)),
+                          branch=branch),))
+        kin = solve(sc, phi)
+        u = np.array([math.cos(math.radians(30.0)), math.sin(math.radians(30.0))])
+        assert np.all(sign * ((kin.point["C"] - kin.point["B"]) @ u) > 0)
+
+
+def test_fourbar_360_positions_is_fast() -> None:
+    phi = np.radians(np.arange(360.0))
+    solve(FOURBAR, phi)
+    best = min(_timed(lambda: solve(FOURBAR, phi)) for _ in range(20))
+    assert best < 1e-3, f"{best * 1e6:.0f} µs for 360 positions"  # ~200 µs on a laptop
+
+
+def _timed(f) -> float:
+    t = time.perf_counter()
+    f()
+    return time.perf_counter() - t
+
+
+# --------------------------------------------------------------------------------------------
+# 5. Positions that cannot be assembled, dead centres, tangent assembly
+
+
+def all_finite(kin: Kinematics) -> bool:
+    arrays = [*kin.point.values(), *kin.vel.values(), *kin.acc.values(),
+              *kin.angle.values(), *kin.omega.values(), *kin.alpha.values()]
+    return all(np.isfinite(a).all() for a in arrays)
+
+
+def test_unreachable_positions_are_invalid_and_zero() -> None:
+    # non-Grashof: at φ = 180° |BD| = 0.22 m > l_BC + l_CD = 0.1 m
+    four = Linkage(FOUR_FRAME, Crank("1", "A", "B", 0.1, 10.0),
+                   (RRR("B", "C", "D", ("2", "3"), (0.05, 0.05)),),
+                   (LinkPoint("E", "2", ("B", "C"), 0.02, 0.01),))
+    kin = solve(four, np.radians([180.0, 0.0]))
+    assert kin.valid.tolist() == [False, True]
+    assert "cannot be assembled" in kin.reason[0] and kin.reason[1] == ""
+    assert all_finite(kin)
+    for d in (kin.vel, kin.acc):
+        assert all(np.all(v[0] == 0.0) for v in d.values())
+    assert np.all(kin.point["C"][0] == 0.0) and np.all(kin.point["E"][0] == 0.0)
+    assert kin.angle["2"][0] == 0.0 and kin.omega["3"][0] == 0.0
+    np.testing.assert_allclose(kin.point["B"][1], [0.1, 0.0])  # the valid position is intact
+    assert np.hypot(*(kin.point["C"][1] - kin.point["B"][1])) == pytest.approx(0.05, rel=1e-12)
+
+
+def test_slider_driven_dead_centre_and_tangent_assembly() -> None:
+    # |AC| = l_AB + l_BC = 0.4 m: crank and coupler in line. 0.4(1 + 1e-11) is past the tangent
+    # by rounding-size amounts (discriminant ≈ -7e-12, relative): still assembled (clamped).
+    s = np.array([0.4, 0.4 * (1 + 1e-11), 0.4 * (1 - 1e-6), 0.4 * (1 + 1e-6), 0.3])
+    kin = solve(SLIDER_DRIVEN, s)
+    assert kin.valid.tolist() == [False, False, True, False, True]
+    assert all_finite(kin)
+    for i in (0, 1):  # tangent: the configuration exists, the crank's rate does not
+        assert "dead centre" in kin.reason[i]
+        np.testing.assert_allclose(kin.point["B"][i], [0.1, 0.0], rtol=0, atol=1e-10)
+        assert math.cos(kin.angle["1"][i]) == pytest.approx(1.0, abs=1e-12)
+        assert kin.omega["1"][i] == 0.0 and np.all(kin.vel["B"][i] == 0.0)
+    assert "cannot be assembled" in kin.reason[3] and np.all(kin.point["B"][3] == 0.0)
+    # just inside the tangent the rates are large but finite: ω1 = v·sin(θ2)/(l_AB·sin(θ1 − θ2))
+    assert 1e3 < abs(kin.omega["1"][2]) < 1e5
+    # a regular position: C's given motion, and the loop closes
+    assert kin.vel["C"][4].tolist() == [-1.5, 0.0] and kin.acc["C"][4].tolist() == [4.0, 0.0]
+    assert np.hypot(*kin.point["B"][4]) == pytest.approx(0.1, rel=1e-12)
+
+
+def test_structure_errors_are_collected() -> None:
+    bad = Linkage(
+        {"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.1, 1.0),
+        (RRR("B", "C", "Z", ("2", "3"), (0.1, 0.1)),
+         RPP("C", "P", ("4", "5"), 0.3, Guide((0.0, 0.0), 0.3))),
+        (LinkPoint("Q", "2", ("C",), 0.0, 0.0),),
+    )
+    with pytest.raises(SceneError) as err:
+        solve(bad, [0.0])
+    keys = [k for k, _ in err.value.problems]
+    assert keys == ["dyads[0]", "dyads[1].slot_angle", "dyads[1].links", "points[0].base"]
+    assert isinstance(err.value, ValueError)
+
+
+def test_result_is_frozen() -> None:
+    kin = solve(FOURBAR, [0.3])
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        kin.valid = np.array([False])  # type: ignore[misc]
+    with pytest.raises(ValueError):
+        kin.point["C"][0, 0] = 1.0
+    with pytest.raises(ValueError):
+        kin.omega["2"][0] = 1.0

@@ -1,0 +1,278 @@
+"""The frontend's draw stream, asserted on a recording backend (no pixels)."""
+from __future__ import annotations
+
+import dataclasses
+import math
+import warnings
+
+import pytest
+
+from graphmech.render.layout import layout_sheet
+from graphmech.render.primitives import (
+    Arrow,
+    Circle,
+    FixedPivot,
+    GuideLine,
+    Hinge,
+    Label,
+    Panel,
+    Segment,
+    Sheet,
+    Slider,
+)
+from graphmech.render.recording import RecordingBackend
+from graphmech.render.sheet import LayoutWarning, draw_sheet, panel_labels, panel_shapes
+from graphmech.render.style import DEFAULT, Style
+
+
+def record(sheet: Sheet, **kw: object) -> RecordingBackend:
+    rec = RecordingBackend()
+    draw_sheet(sheet, rec, **kw)  # type: ignore[arg-type]
+    return rec
+
+
+def one_panel(*items: object, title: str = "", notes: tuple[str, ...] = ()) -> Sheet:
+    return Sheet("", (Panel("p", title, tuple(items), notes),))  # type: ignore[arg-type]
+
+
+def placement(sheet: Sheet, i: int = 0):  # labels-free sheets: no label boxes
+    return layout_sheet(sheet, DEFAULT, [[] for _ in sheet.panels]).panels[i]
+
+
+def test_style_is_frozen() -> None:
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        DEFAULT.arrow_length = 3.0  # type: ignore[misc]
+    with pytest.raises(KeyError):
+        DEFAULT.pen("bold")
+
+
+# ------------------------------------------------------------------------- arrows
+def test_arrow_is_one_shaft_and_one_filled_head_tip_at_end() -> None:
+    arrow = Arrow((3.0, 4.0), (33.0, 24.0))
+    sheet = one_panel(arrow)
+    rec = record(sheet)
+    lines, polys = rec.of("line"), rec.of("polyline")
+    assert len(lines) == 1 and len(polys) == 1
+    _, pts, key, closed, filled = polys[0]
+    assert (key, closed, filled) == ("result", True, True)
+    assert len(pts) == 3
+
+    pl = placement(sheet)
+    tip = pl.to_page(arrow.p1)
+    assert pts[0] == pytest.approx(tip, abs=1e-9)
+    # direction in page coordinates: y flipped
+    L = math.hypot(30.0, 20.0)
+    u = (30.0 / L, -20.0 / L)
+    base = ((pts[1][0] + pts[2][0]) / 2, (pts[1][1] + pts[2][1]) / 2)
+    assert base == pytest.approx((tip[0] - 2.8 * u[0], tip[1] - 2.8 * u[1]), abs=1e-9)
+    # the head is 2 × 0.8 mm wide, symmetric and square to the arrow
+    half = ((pts[1][0] - pts[2][0]) / 2, (pts[1][1] - pts[2][1]) / 2)
+    assert math.hypot(*half) == pytest.approx(0.8, abs=1e-12)
+    assert half[0] * u[0] + half[1] * u[1] == pytest.approx(0.0, abs=1e-12)
+    # the shaft runs from the tail to the middle of the head's base
+    _, p0, p1, skey, dashed = lines[0]
+    assert p0 == pytest.approx(pl.to_page(arrow.p0), abs=1e-9)
+    assert p1 == pytest.approx(base, abs=1e-9)
+    assert (skey, dashed) == ("result", False)
+
+
+def test_arrowhead_follows_the_style() -> None:
+    style = Style(arrow_length=4.0, arrow_half_width=1.0)
+    sheet = one_panel(Arrow((0.0, 0.0), (0.0, 20.0), role="construction"))
+    rec = record(sheet, style=style)
+    (_, pts, key, _, _), = rec.of("polyline")
+    assert key == "construction"
+    # pointing up on paper: page y decreases towards the tip
+    assert pts[1][1] - pts[0][1] == pytest.approx(4.0, abs=1e-9)
+    assert abs(pts[1][0] - pts[2][0]) == pytest.approx(2.0, abs=1e-9)
+
+
+def test_arrow_shorter_than_its_head_gets_a_shrunk_head_and_no_shaft() -> None:
+    rec = record(one_panel(Arrow((0.0, 0.0), (1.4, 0.0))))
+    assert rec.of("line") == []
+    (_, pts, _, _, _), = rec.of("polyline")
+    assert pts[0][0] - pts[1][0] == pytest.approx(1.4, abs=1e-9)
+    assert abs(pts[1][1] - pts[2][1]) == pytest.approx(0.8, abs=1e-9)
+
+
+def test_zero_length_arrow_is_refused() -> None:
+    with pytest.raises(ValueError, match="two distinct points"):
+        record(one_panel(Arrow((1.0, 1.0), (1.0, 1.0))))
+
+
+# ------------------------------------------------------------------------- symbols
+def test_fixed_pivot_hinge_triangle_ground_and_45_degree_hatching() -> None:
+    sheet = one_panel(FixedPivot((10.0, 10.0)))
+    rec = record(sheet)
+    pl = placement(sheet)
+    c = pl.to_page((10.0, 10.0))
+    hatch = [x for x in rec.of("line") if x[3] == "hatch"]
+    frame = [x for x in rec.of("line") if x[3] == "frame"]
+    k = DEFAULT.hatch_length / math.sqrt(2)
+    expected = int((2 * DEFAULT.pivot_ground_half - k) / DEFAULT.hatch_spacing + 1e-9) + 1
+    assert len(hatch) == expected >= 5
+    ground_y = c[1] + DEFAULT.pivot_height  # below the hinge on the page
+    for _, p0, p1, _, _ in hatch:
+        dx, dy = p1[0] - p0[0], p1[1] - p0[1]
+        assert abs(dx) == pytest.approx(abs(dy), abs=1e-12)  # 45°
+        assert math.hypot(dx, dy) == pytest.approx(DEFAULT.hatch_length, abs=1e-12)
+        assert p0[1] == pytest.approx(ground_y, abs=1e-12)  # starts on the ground line
+        assert dy > 0  # hatching is under the ground (page y down)
+    # two legs from the hinge centre and the ground line
+    assert len(frame) == 3
+    assert sum(1 for x in frame if x[1] == pytest.approx(c)) == 2
+    ground = [x for x in frame if x[1][1] == pytest.approx(ground_y) and x[2][1] == pytest.approx(ground_y)]
+    assert len(ground) == 1
+    assert abs(ground[0][2][0] - ground[0][1][0]) == pytest.approx(2 * DEFAULT.pivot_ground_half)
+    # the hinge: white-filled circle drawn after every line
+    (_, cc, r, key, filled), = rec.of("circle")
+    assert cc == pytest.approx(c) and r == DEFAULT.hinge_r and key == "hinge" and filled
+    calls = rec.calls
+    assert calls.index(rec.of("circle")[0]) > max(calls.index(x) for x in rec.of("line"))
+
+
+def test_hinges_are_drawn_after_lines_whatever_the_item_order() -> None:
+    rec = record(one_panel(Hinge((0.0, 0.0)), Segment((0.0, 0.0), (20.0, 0.0)), Hinge((20.0, 0.0))))
+    names = [c[0] for c in rec.calls if c[0] in ("line", "circle")]
+    assert names == ["line", "circle", "circle"]
+    assert all(c[3] == "hinge" and c[4] for c in rec.of("circle"))
+
+
+def test_layers_back_to_front() -> None:
+    rec = record(
+        one_panel(
+            Segment((0.0, 0.0), (10.0, 0.0), role="result"),
+            Segment((0.0, 1.0), (10.0, 1.0), role="given"),
+            Segment((0.0, 2.0), (10.0, 2.0), role="construction", dashed=True),
+            GuideLine((0.0, -5.0), (10.0, -5.0)),
+        )
+    )
+    keys = [c[3] for c in rec.of("line") if c[3] != "hatch"]
+    assert keys == ["frame", "construction", "given", "result"]
+    assert [c[4] for c in rec.of("line") if c[3] == "construction"] == [True]
+
+
+def test_guide_hatching_on_the_right_side_seen_p0_to_p1() -> None:
+    sheet = one_panel(GuideLine((0.0, 0.0), (0.0, 20.0)))  # going up: right side is +x
+    rec = record(sheet)
+    pl = placement(sheet)
+    x_line = pl.to_page((0.0, 0.0))[0]
+    hatch = [c for c in rec.of("line") if c[3] == "hatch"]
+    assert len(hatch) >= 10
+    for _, p0, p1, _, _ in hatch:
+        assert p0[0] == pytest.approx(x_line)
+        assert p1[0] - p0[0] == pytest.approx(DEFAULT.hatch_length / math.sqrt(2))
+
+
+def test_slider_is_a_rotated_white_rectangle() -> None:
+    s = Slider((0.0, 0.0), math.radians(30.0), 8.0, 5.0)
+    sheet = one_panel(s)
+    rec = record(sheet)
+    (_, pts, key, closed, filled), = rec.of("polyline")
+    assert (key, closed, filled) == ("slider", True, True)
+    sides = [math.dist(pts[i], pts[(i + 1) % 4]) for i in range(4)]
+    assert sides == pytest.approx([8.0, 5.0, 8.0, 5.0], abs=1e-9)
+    # long side along 30° on paper: page y flipped
+    dx, dy = pts[1][0] - pts[0][0], pts[1][1] - pts[0][1]
+    assert math.degrees(math.atan2(-dy, dx)) == pytest.approx(30.0, abs=1e-9)
+    centre = (sum(p[0] for p in pts) / 4, sum(p[1] for p in pts) / 4)
+    assert centre == pytest.approx(placement(sheet).to_page((0.0, 0.0)), abs=1e-9)
+
+
+# ------------------------------------------------------------------------- placement
+def test_panel_items_are_translated_and_flipped_never_scaled() -> None:
+    pts = [(0.0, 0.0), (40.0, 10.0), (13.0, -25.0), (-7.5, 31.25)]
+    items = [Segment(pts[i], pts[i + 1]) for i in range(3)]
+    rec = record(Sheet("", (Panel("a", "", (Segment((0.0, 0.0), (5.0, 0.0)),)), Panel("b", "", tuple(items)))))
+    lines = [c for c in rec.of("line")][1:]
+    page = [lines[0][1]] + [c[2] for c in lines]
+    for i in range(4):
+        for j in range(i + 1, 4):
+            assert math.dist(page[i], page[j]) == pytest.approx(math.dist(pts[i], pts[j]), abs=1e-9)
+    # a flip: page minus panel is a constant (dx, dy) with page y = dy - y
+    dxs = {round(page[i][0] - pts[i][0], 9) for i in range(4)}
+    dys = {round(page[i][1] + pts[i][1], 9) for i in range(4)}
+    assert len(dxs) == 1 and len(dys) == 1
+
+
+def test_everything_drawn_lies_in_its_panel_frame() -> None:
+    items = (
+        Segment((0.0, 0.0), (30.0, 12.0)),
+        Arrow((30.0, 12.0), (50.0, -10.0)),
+        Circle((10.0, 5.0), 8.0),
+        FixedPivot((0.0, 0.0)),
+        Hinge((30.0, 12.0)),
+        Slider((50.0, -10.0), 0.3),
+        GuideLine((35.0, -14.0), (65.0, -14.0)),
+        Label("B", (30.0, 12.0)),
+        Label("O1", (0.0, 0.0)),
+    )
+    sheet = Sheet("t", (Panel("m", "Mechanism", items, ("μl = 0.002 m/mm",)),))
+    rec = record(sheet)
+    drawn = []
+    for c in rec.calls:
+        if c[0] == "line":
+            drawn += [c[1], c[2]]
+        elif c[0] == "polyline":
+            drawn += list(c[1])
+        elif c[0] == "circle":
+            drawn += [(c[1][0] - c[2], c[1][1] - c[2]), (c[1][0] + c[2], c[1][1] + c[2])]
+    # the layout used for drawing: with the placed labels' boxes
+    shapes = panel_shapes(sheet.panels[0])
+    boxes = [p.box for p in panel_labels(sheet.panels[0], shapes)]
+    pl = layout_sheet(sheet, DEFAULT, [boxes]).panels[0]
+    x0, y0, x1, y1 = pl.drawing_on_page
+    for x, y in drawn:
+        assert x0 <= x <= x1 and y0 <= y <= y1
+    labels = [c for c in rec.of("text") if c[6] == "label"]
+    assert [c[1] for c in labels] == ["B", "O1"]
+    for c in labels:
+        assert x0 <= c[2][0] <= x1 and y0 <= c[2][1] <= y1
+
+
+def test_labels_are_drawn_last_in_their_panel_then_the_caption() -> None:
+    sheet = one_panel(
+        Segment((0.0, 0.0), (20.0, 0.0)),
+        Hinge((0.0, 0.0)),
+        Label("A", (0.0, 0.0)),
+        title="Mechanism",
+        notes=("μl = 0.002 m/mm",),
+    )
+    rec = record(sheet)
+    kinds = [c[0] for c in rec.calls]
+    first_text = kinds.index("text")
+    assert set(kinds[first_text:]) == {"text", "end_group", "finish"}
+    texts = rec.of("text")
+    assert [t[1] for t in texts] == ["A", "Mechanism", "μl = 0.002 m/mm"]
+    assert texts[0][5] is True and texts[0][6] == "label"  # italic letter
+    assert texts[1][2][1] < texts[2][2][1]  # notes under the title
+    assert all(t[4] == "middle" for t in texts)
+
+
+def test_groups_and_sheet_lettering() -> None:
+    sheet = Sheet(
+        "Velocity analysis",
+        (Panel("mech", "", (Segment((0.0, 0.0), (20.0, 0.0)),)),),
+        footer=("line 1", "line 2"),
+    )
+    rec = record(sheet)
+    assert rec.calls[0] == ("begin", 297.0, 210.0, "Velocity analysis")
+    assert [c[1] for c in rec.of("begin_group")] == ["title", "panel1-mech", "footer"]
+    assert len(rec.of("end_group")) == 3
+    title, f1, f2 = rec.of("text")
+    assert title[1] == "Velocity analysis" and title[2] == (148.5, pytest.approx(15.0))
+    assert f1[4] == "start" and f1[2][0] == DEFAULT.page_margin
+    assert f1[2][1] < f2[2][1] == pytest.approx(210.0 - DEFAULT.page_margin)
+    assert rec.calls[-1] == ("finish",)
+
+
+def test_layout_warnings_are_reported() -> None:
+    wide = Sheet("", (Panel("big", "", (Segment((0.0, 0.0), (400.0, 0.0)),)),))
+    got: list[str] = []
+    record(wide, on_warning=got.append)
+    assert len(got) == 1 and "'big'" in got[0]
+    with pytest.warns(LayoutWarning, match="runs off the page"):
+        record(wide)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        record(one_panel(Segment((0.0, 0.0), (40.0, 0.0))))
