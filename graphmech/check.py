@@ -143,7 +143,7 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
     extent into the room one panel has (the panels stand side by side, one row per position).
     """
     stated = {k for k in ("l", "v", "a") if k in scene.scales}
-    scales = {k: float(scene.scales[k]) for k in stated}
+    scales = {k: float(scene.scales[k]) for k in ("l", "v", "a") if k in stated}
     if len(stated) == 3:
         return scales, stated
     provisional = {k: scales.get(k, 1.0) for k in ("l", "v", "a")}
@@ -174,7 +174,7 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
         ext_y = (ya.max() - ya.min()) * provisional[key]
         need = max(ext_x / room_w, ext_y / room_h)
         scales[key] = round_scale(need) if need > 0 else 1.0
-    return scales, stated
+    return {k: scales[k] for k in ("l", "v", "a")}, stated
 
 
 # ---------------------------------------------------------------------------- analysis
@@ -219,7 +219,12 @@ def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> A
     for i, why in enumerate(failures):
         if why:
             an.warnings.append(f"{_position_text(build, labels[i])}: construction impossible — {why}")
-    an.rows = [_row(an, display, q, i) for display, q, i in wanted if solutions[i] is not None]
+    for i, ok in enumerate(exact.valid):
+        if not ok and solutions[i] is not None:
+            an.warnings.append(f"{_position_text(build, labels[i])}: the exact solution is undefined here "
+                               f"({exact.reason[i]}); its values are not checked")
+    an.rows = [_row(an, display, q, i) for display, q, i in wanted
+               if solutions[i] is not None and exact.valid[i]]
     an.warnings.extend(_conditioning_warnings(an, [q for _, q, _ in wanted] + measured_q))
     return an
 

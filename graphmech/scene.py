@@ -172,6 +172,9 @@ _TOP_KEYS = (
 
 _MISSING: Any = object()
 
+#: Frame point name → coordinates in m (None when they were invalid: the name still counts).
+_Frame = Mapping[str, "tuple[float, float] | None"]
+
 
 def _say(value: Any, limit: int = 40) -> str:
     """A user-written string made safe for a one-line message (quoted, escaped, cut short)."""
@@ -213,7 +216,9 @@ def _choices(words: Iterable[str]) -> str:
 
 def _did_you_mean(word: str, candidates: Iterable[str]) -> str:
     """``"; did you mean X?"`` for the nearest candidate, or ``""``."""
-    close = difflib.get_close_matches(word, sorted(set(candidates)), n=1, cutoff=0.6)
+    pool = sorted(set(candidates))
+    same_letters = [c for c in pool if c.casefold() == word.casefold()]
+    close = same_letters or difflib.get_close_matches(word, pool, n=1, cutoff=0.6)
     return f"; did you mean {close[0]}?" if close else ""
 
 
@@ -538,10 +543,11 @@ class _Reader:
             self.problem(r.at("step"), "must not be 0")
             return None
         steps = (stop - start) / step
-        if not math.isfinite(steps) or steps > MAX_POSITIONS:
-            self.problem(path, f"absurd position count (more than {MAX_POSITIONS})")
+        count = math.ceil(steps - 1e-9) if math.isfinite(steps) else 0  # stop is exclusive
+        if not math.isfinite(steps) or count > MAX_POSITIONS:
+            how_many = f"{count} > {MAX_POSITIONS}" if math.isfinite(steps) else "endless"
+            self.problem(path, f"absurd position count ({how_many})")
             return None
-        count = math.ceil(steps - 1e-9)  # stop is exclusive, with a little slack for rounding
         if count < 1:
             self.problem(path, "the range is empty: stop must lie beyond start, in the sense of step")
             return None
@@ -659,10 +665,10 @@ def _read_scales(top: _Reader) -> dict[str, float]:
     return scales
 
 
-def _read_frame(top: _Reader) -> tuple[dict[str, tuple[float, float]], str | None]:
-    """[frame]: point coordinates (m) and the optional frame link number."""
+def _read_frame(top: _Reader) -> tuple[dict[str, tuple[float, float] | None], str | None]:
+    """[frame]: point coordinates (m; None when invalid) and the optional frame link number."""
     r = top.table_at("frame")
-    points: dict[str, tuple[float, float]] = {}
+    points: dict[str, tuple[float, float] | None] = {}
     if r is None:
         return points, None
     link = None
@@ -675,14 +681,12 @@ def _read_frame(top: _Reader) -> tuple[dict[str, tuple[float, float]], str | Non
         name = key.split("_", 1)[0]
         if not _POINT_NAME.fullmatch(name) or len(name) > 8:
             continue  # finish() reports it
-        xy = r.pair(name)
-        if xy is not None:
-            points[name] = xy
+        points[name] = r.pair(name)  # the name counts even if its coordinates are wrong
     r.finish("a frame point is named in capitals with its coordinates, e.g. A_mm = [0, 0]")
     return points, link
 
 
-def _read_guide(parent: _Reader, key: str, frame: Mapping[str, tuple[float, float]]) -> Guide | None:
+def _read_guide(parent: _Reader, key: str, frame: _Frame) -> Guide | None:
     """A frame guide {through = [x, y] or a frame point's name, angle (default 0)}."""
     r = parent.table_at(key, required=True, hint=f"write {key} = {{through_mm = [0, 0], angle_deg = 0}}")
     if r is None:
@@ -691,7 +695,7 @@ def _read_guide(parent: _Reader, key: str, frame: Mapping[str, tuple[float, floa
     if isinstance(r.table.get("through"), str):
         name = r.raw("through")
         through = frame.get(name)
-        if through is None:
+        if name not in frame:
             r.problem(r.at("through"), f"{_say(name)} is not a frame point")
     else:
         through = r.pair("through")
@@ -700,7 +704,7 @@ def _read_guide(parent: _Reader, key: str, frame: Mapping[str, tuple[float, floa
     return Guide(through, angle) if _valid(through, angle) else None  # type: ignore[arg-type]
 
 
-def _read_driver(top: _Reader, frame: Mapping[str, tuple[float, float]]) -> tuple[_Part, Positions | None]:
+def _read_driver(top: _Reader, frame: _Frame) -> tuple[_Part, Positions | None]:
     """[driver]: a crank or a slider, and the positions it is drawn at."""
     part = _Part("driver")
     r = top.table_at("driver", required=True, hint="add a [driver] table (type = \"crank\" or \"slider\")")
@@ -738,8 +742,8 @@ def _read_driver(top: _Reader, frame: Mapping[str, tuple[float, float]]) -> tupl
                 omega, epsilon = -omega + 0.0, -epsilon + 0.0
         if pivot is not None:
             if pivot not in frame:
-                known = ", ".join(frame) or "none"
-                r.problem(r.at("pivot"), f"{pivot} is not a frame point (frame points: {known})")
+                known = f"frame points: {', '.join(frame)}" if frame else "add it to [frame]"
+                r.problem(r.at("pivot"), f"{pivot} is not a frame point ({known})")
             else:
                 part.needs.append((pivot, r.at("pivot")))
         if tip is not None:
@@ -769,7 +773,7 @@ def _read_driver(top: _Reader, frame: Mapping[str, tuple[float, float]]) -> tupl
 _DYAD_TYPES = ("RRR", "RRP", "RPR", "RPP")
 
 
-def _read_dyad(r: _Reader, index: int, frame: Mapping[str, tuple[float, float]]) -> _Part:
+def _read_dyad(r: _Reader, index: int, frame: _Frame) -> _Part:
     """One [[dyad]]: its joints, links and dimensions, by type."""
     where = f"dyad[{index}]"
     part = _Part(where)
@@ -992,7 +996,7 @@ def _read_page(top: _Reader) -> Page:
 
 def _check_structure(
     problems: list[tuple[str, str]],
-    frame: Mapping[str, tuple[float, float]],
+    frame: _Frame,
     frame_link: tuple[str | None, bool],
     driver: _Part,
     dyads: list[_Part],
@@ -1180,7 +1184,7 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         problems.sort(key=lambda p: _rank(p, order))
         raise SceneError(problems, source)
     linkage = Linkage(
-        frame_points=dict(frame),
+        frame_points={name: xy for name, xy in frame.items() if xy is not None},
         driver=driver.model,
         dyads=tuple(d.model for d in dyads),
         points=tuple(p.model for p, _ in points),

@@ -176,9 +176,17 @@ class Plan:
         self.steps = steps
         self.extent = dict(extent)
         self.by_name = {s.name: s for s in steps}
-        # Compiled once: (name, text, kernel, inputs) for the computing steps only.
+        # Steps with no inputs (frame points, poles) are the same at every position:
+        # evaluated once here. The rest is compiled to (name, text, kernel, inputs).
+        self._constants: dict[str, Any] = {}
+        for s in steps:
+            if s.kernel is not None and not s.inputs:
+                ops = ScalarOps()
+                ops.step = s.text
+                self._constants[s.name] = s.kernel(ops)
         self._program = tuple(
-            (s.name, s.text, s.kernel, s.inputs) for s in steps if s.kernel is not None
+            (s.name, s.text, s.kernel, s.inputs) for s in steps
+            if s.kernel is not None and s.name not in self._constants
         )
 
     def __contains__(self, name: str) -> bool:
@@ -191,7 +199,7 @@ class Plan:
     def solve(self, params: Mapping[str, Any], position: str | None = None) -> Solution:
         ops = ScalarOps()
         ops.position = position
-        vals = dict(params)
+        vals = {**self._constants, **params}
         for name, text, kernel, inputs in self._program:
             ops.step = text
             vals[name] = kernel(ops, *[vals[i] for i in inputs])
@@ -202,8 +210,9 @@ class Plan:
         arrays = {k: np.asarray(v, dtype=float) for k, v in params.items()}
         n = max((a.size for a in arrays.values() if a.ndim), default=1)
         ops = ArrayOps(n)
-        vals: dict[str, Any] = {k: (np.broadcast_to(a, (n,)) if a.ndim else a) for k, a in arrays.items()}
+        vals: dict[str, Any] = dict(self._constants)
+        vals.update({k: (np.broadcast_to(a, (n,)) if a.ndim else a) for k, a in arrays.items()})
         for name, text, kernel, inputs in self._program:
             ops.step = text
             vals[name] = kernel(ops, *[vals[i] for i in inputs])
-        return BatchSolution(vals, ops.conds, ~ops.bad, ops.failures)
+        return BatchSolution(vals, ops.capped_conds(), ~ops.bad, ops.failures)

@@ -64,6 +64,12 @@ class ScalarOps:
     def where(bad: Any, fallback: Any, value: Any) -> Any:
         return value
 
+    def fix(self, bad: Any, value: Any, fallback: Any, reason: Reason, assembly: bool = False) -> Any:
+        """``value``, or raise where ``bad`` (the batch twin substitutes ``fallback`` and marks)."""
+        if bad:
+            self.guard(True, reason, assembly)
+        return value
+
     @staticmethod
     def maximum(a: Any, b: Any) -> Any:
         return a if a > b else b
@@ -96,6 +102,8 @@ class ArrayOps:
         self.failures: dict[str, tuple[np.ndarray, str]] = {}
 
     def guard(self, bad: Any, reason: Reason, assembly: bool = False) -> Any:
+        if not np.any(bad):  # the usual case, kept cheap
+            return bad
         bad = np.broadcast_to(np.asarray(bad, dtype=bool), (self.n,))
         if bad.any():
             # Only the first step that fails at a position is that position's reason.
@@ -105,8 +113,16 @@ class ArrayOps:
             self.bad = self.bad | bad
         return bad
 
+    def fix(self, bad: Any, value: Any, fallback: Any, reason: Reason, assembly: bool = False) -> Any:
+        if not np.any(bad):
+            return value
+        return np.where(self.guard(bad, reason, assembly), fallback, value)
+
     def cond(self, c: Any) -> None:
-        self.conds[self.step] = np.minimum(np.broadcast_to(c, (self.n,)), COND_CAP)
+        self.conds[self.step] = c  # capped (and broadcast) when read: see capped_conds
+
+    def capped_conds(self) -> dict[str, np.ndarray]:
+        return {k: np.minimum(np.broadcast_to(c, (self.n,)), COND_CAP) for k, c in self.conds.items()}
 
 
 Ops = ScalarOps | ArrayOps
@@ -124,16 +140,22 @@ def direction(ops: Ops, ax: Any, ay: Any, bx: Any, by: Any, what: str) -> tuple[
     return dx / n, dy / n
 
 
-def line_perpendicular(ops: Ops, through: tuple, a: tuple, b: tuple, what: str = "segment") -> tuple:
+def line_perpendicular(ops: Ops, through: tuple, a: tuple, b: tuple) -> tuple:
     """The line through ``through`` perpendicular to a→b ("through b draw ⟂ BC")."""
-    ux, uy = direction(ops, a[0], a[1], b[0], b[1], what)
-    return (through[0], through[1], -uy, ux)
+    dx = b[0] - a[0]
+    dy = b[1] - a[1]
+    n = ops.hypot(dx, dy)
+    n = ops.fix(n == 0.0, n, 1.0, "the segment has zero length: no direction")
+    return (through[0], through[1], -dy / n, dx / n)
 
 
-def line_parallel(ops: Ops, through: tuple, a: tuple, b: tuple, what: str = "segment") -> tuple:
+def line_parallel(ops: Ops, through: tuple, a: tuple, b: tuple) -> tuple:
     """The line through ``through`` parallel to a→b ("through k′ draw ∥ BC")."""
-    ux, uy = direction(ops, a[0], a[1], b[0], b[1], what)
-    return (through[0], through[1], ux, uy)
+    dx = b[0] - a[0]
+    dy = b[1] - a[1]
+    n = ops.hypot(dx, dy)
+    n = ops.fix(n == 0.0, n, 1.0, "the segment has zero length: no direction")
+    return (through[0], through[1], dx / n, dy / n)
 
 
 def line_fixed(ops: Ops, through: tuple, dx: float, dy: float) -> tuple:
@@ -156,9 +178,11 @@ def intersect_lines(ops: Ops, l1: tuple, l2: tuple) -> tuple:
     px, py, dx, dy = l1
     qx, qy, ex, ey = l2
     det = dx * ey - dy * ex
-    bad = ops.guard(ops.absolute(det) < PARALLEL_SIN, "the two lines are parallel: no intersection")
-    det = ops.where(bad, 1.0, det)
-    ops.cond(1.0 / ops.absolute(det))
+    adet = ops.absolute(det)
+    bad = adet < PARALLEL_SIN
+    det = ops.fix(bad, det, 1.0, "the two lines are parallel: no intersection")
+    adet = ops.fix(bad, adet, 1.0, "the two lines are parallel: no intersection")
+    ops.cond(1.0 / adet)
     t = ((qx - px) * ey - (qy - py) * ex) / det
     return (px + t * dx, py + t * dy)
 

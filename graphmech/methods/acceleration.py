@@ -87,7 +87,7 @@ def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
 
 def _tangential_line(b: "LinkageConstruction", n: str, X: str, Y: str) -> str:
     return _line(b, f"⟂{Y}{X}@{_lbl(b, n)}",
-                 lambda ops, t, u, v: K.line_perpendicular(ops, t, u, v, Y + X),
+                 K.line_perpendicular,
                  (n, b.mech[Y], b.mech[X]), f"through {_lbl(b, n)} draw ⟂ {Y}{X} (a^t_{X}{Y})")
 
 
@@ -184,7 +184,7 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
                 role="construction", panel=PANEL, label=ktag,
                 text=f"lay off {_lbl(b, b.acc[X])}{ktag} = 2ω{bar}·v_{xbar}{xblock}/μa (Coriolis)")
     _vector(b, b.acc[X], k, "construction")
-    lr = _line(b, f"∥{Bp}{X}@{ktag}", lambda ops, t, u, v: K.line_parallel(ops, t, u, v, Bp + X),
+    lr = _line(b, f"∥{Bp}{X}@{ktag}", K.line_parallel,
                (k, b.mech[Bp], b.mech[X]), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})")
     img = _image(b, xbar, K.intersect_lines, (lt, lr),
                  f"{label(xbar)} = (⟂{Bp}{X} through {_lbl(b, n)}) ∩ (∥{Bp}{X} through {ktag})")

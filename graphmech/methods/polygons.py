@@ -117,6 +117,10 @@ def add_point_quantities(b: LinkageConstruction) -> None:
         measure.link_angle(b, link)
     for x, y in b.coincident:
         measure.relative(b, x, y)
+    for y in b.linkage.dyads:
+        if isinstance(y, RPR):  # the bar's length between the pivots, l_BC, as the book reads it
+            measure.length(b, y.bar_pivot, y.block_pivot)
+            measure.length(b, y.block_pivot, y.bar_pivot)
 
 
 def kind_of(part: Any) -> str:

@@ -85,9 +85,9 @@ def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
 def _rrr(b: "LinkageConstruction", y: RRR) -> None:
     P, C, Q = y.p, y.c, y.q
     lp, lq, lc = _img_label(b, P), _img_label(b, Q), label(C)
-    li = _line(b, f"⟂{P}{C}@{lp}", lambda ops, t, u, v: K.line_perpendicular(ops, t, u, v, P + C),
+    li = _line(b, f"⟂{P}{C}@{lp}", K.line_perpendicular,
                (b.vel[P], b.mech[P], b.mech[C]), f"through {lp} draw ⟂ {P}{C}")
-    lj = _line(b, f"⟂{Q}{C}@{lq}", lambda ops, t, u, v: K.line_perpendicular(ops, t, u, v, Q + C),
+    lj = _line(b, f"⟂{Q}{C}@{lq}", K.line_perpendicular,
                (b.vel[Q], b.mech[Q], b.mech[C]), f"through {lq} draw ⟂ {Q}{C}")
     img = _image(b, C, K.intersect_lines, (li, lj),
                  f"{lc} = (⟂{P}{C} through {lp}) ∩ (⟂{Q}{C} through {lq})")
@@ -104,7 +104,7 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     P, C = y.p, y.c
     gx, gy = y.guide.direction
     lp, lc = _img_label(b, P), label(C)
-    li = _line(b, f"⟂{P}{C}@{lp}", lambda ops, t, u, v: K.line_perpendicular(ops, t, u, v, P + C),
+    li = _line(b, f"⟂{P}{C}@{lp}", K.line_perpendicular,
                (b.vel[P], b.mech[P], b.mech[C]), f"through {lp} draw ⟂ {P}{C}")
     lg = _line(b, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p draw ∥ the guide of {C}")
@@ -124,9 +124,9 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     xbar, xblock = y.coincident
     b.vel[xblock] = b.vel[X]
     lp, lx, lc = _img_label(b, Bp), _img_label(b, X), label(xbar)
-    lt = _line(b, f"⟂{Bp}{X}@{lp}", lambda ops, t, u, v: K.line_perpendicular(ops, t, u, v, Bp + X),
+    lt = _line(b, f"⟂{Bp}{X}@{lp}", K.line_perpendicular,
                (b.vel[Bp], b.mech[Bp], b.mech[X]), f"through {lp} draw ⟂ {Bp}{X}")
-    lr = _line(b, f"∥{Bp}{X}@{lx}", lambda ops, t, u, v: K.line_parallel(ops, t, u, v, Bp + X),
+    lr = _line(b, f"∥{Bp}{X}@{lx}", K.line_parallel,
                (b.vel[X], b.mech[Bp], b.mech[X]), f"through {lx} draw ∥ {Bp}{X}")
     img = _image(b, xbar, K.intersect_lines, (lt, lr),
                  f"{lc} = (⟂{Bp}{X} through {lp}) ∩ (∥{Bp}{X} through {lx})")

@@ -222,7 +222,7 @@ FD_CASES = {
     "four-bar": (FOURBAR, np.radians(np.arange(0.0, 360.0, 5.0))),
     "six-bar RRR": (SIXBAR_RRR, np.radians(np.arange(0.0, 360.0, 5.0))),
     "six-bar RRP": (SIXBAR_RRP, np.radians(np.arange(0.0, 360.0, 5.0))),
-    "slider-driven slider-crank": (SLIDER_DRIVEN, np.linspace(0.205, 0.395, 39)),
+    "slider-driven slider-crank": (SLIDER_DRIVEN, np.linspace(0.22, 0.38, 33)),
     "guide bar (bar second)": (GUIDE_BAR, np.radians(np.arange(0.0, 360.0, 5.0))),
     "RPP": (RPP_LINKAGE, np.radians(np.arange(0.0, 360.0, 5.0))),
 }
