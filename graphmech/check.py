@@ -353,7 +353,7 @@ def _conditioning_warnings(an: Analysis, quantities: list[str]) -> list[str]:
             qs = ", ".join(relevant[text])
             angle = math.degrees(math.asin(min(1.0, 1.0 / c))) if c > 0 else 90.0
             if c > T.COND_WARN:
-                est = c * T.EPS
+                est = c * c * T.EPS
                 out.append(f"{where}: ill-conditioned intersection '{text}': the loci meet at {angle:.3g}° "
                            f"(condition number {c:.3g}); {qs or 'the drawing'} may be wrong by about "
                            f"{est:.1g} relative or more")

@@ -218,7 +218,9 @@ def _did_you_mean(word: str, candidates: Iterable[str]) -> str:
     """``"; did you mean X?"`` for the nearest candidate, or ``""``."""
     pool = sorted(set(candidates))
     same_letters = [c for c in pool if c.casefold() == word.casefold()]
-    close = same_letters or difflib.get_close_matches(word, pool, n=1, cutoff=0.6)
+    close = same_letters or difflib.get_close_matches(word, pool, n=3, cutoff=0.6)
+    swapped = [c for c in close if sorted(c) == sorted(word)]  # "stpe" is "step", not "stop"
+    close = swapped or close
     return f"; did you mean {close[0]}?" if close else ""
 
 
@@ -570,6 +572,25 @@ class _Part:
     carries: list[tuple[str, list[str]]] = field(default_factory=list)  # link → its points
     translating: list[str] = field(default_factory=list)  # links that only translate
     model: Any = None  # the model object, when its own values were valid
+    opaque: bool = False  # its type is unknown: names and links kept, nothing checked
+
+
+def _opaque(r: _Reader, where: str, name_keys: tuple[str, ...], link_keys: tuple[str, ...]) -> _Part:
+    """A driver or dyad of unknown type: keep whatever names and links it gives, silently,
+    so that the one wrong ``type`` does not bring a cascade of "not defined" after it."""
+    def valid(values: Any, pattern: re.Pattern[str]) -> list[str]:
+        items = values if isinstance(values, list) else [values]
+        return [str(v) for v in items if isinstance(v, (str, int)) and pattern.fullmatch(str(v))]
+
+    names = [n for key in name_keys for n in valid(r.table.get(key), _POINT_NAME)]
+    links = [x for key in link_keys for x in valid(r.table.get(key), _LINK_ID)]
+    return _Part(
+        where,
+        defines=[(n, where) for n in names],
+        links=[(x, where) for x in links],
+        carries=[(x, names) for x in links],
+        opaque=True,
+    )
 
 
 def _valid(*values: Any) -> bool:
@@ -711,12 +732,8 @@ def _read_driver(top: _Reader, frame: _Frame) -> tuple[_Part, Positions | None]:
     if r is None:
         return part, None
     kind = r.string("type", choices=("crank", "slider"), required=True)
-    if kind is None:  # keep the points it names, so later dyads do not cascade
-        for key in ("tip", "point"):
-            value = r.table.get(key)
-            if isinstance(value, str) and _POINT_NAME.fullmatch(value):
-                part.defines.append((value, r.at(key)))
-        return part, None
+    if kind is None:
+        return _opaque(r, "driver", ("pivot", "tip", "point"), ("link",)), None
     link_value = r.raw("link", required=True, hint="the driver's link number, e.g. link = \"1\"")
     link = None if link_value is _MISSING else r.link_id(link_value, r.at("link"))
     if link is not None:
@@ -779,7 +796,7 @@ def _read_dyad(r: _Reader, index: int, frame: _Frame) -> _Part:
     part = _Part(where)
     kind = r.string("type", choices=_DYAD_TYPES, required=True)
     if kind is None:
-        return part
+        return _opaque(r, where, ("joints",), ("links",))
     count = 3 if kind == "RRR" else 2
     joints = r.name_list("joints", count, r.point_name)
     links = r.name_list("links", 2, r.link_id)
@@ -1011,6 +1028,8 @@ def _check_structure(
 
     def define(part: _Part, level: int) -> None:
         for name, path in part.defines:
+            if part.opaque and name in origin:
+                continue
             if name in origin:
                 who = "a frame point" if origin[name] == "frame" else f"by {origin[name]}"
                 problems.append((path, f"{name} is already defined ({who})"))
@@ -1026,7 +1045,7 @@ def _check_structure(
     # Driver and dyads: new links, new points, in assembly order.
     for level, part in enumerate([driver, *dyads]):
         for link, path in part.links:
-            if link in owner and owner[link] != part.where:
+            if link in owner and owner[link] != part.where and not part.opaque:
                 problems.append(
                     (path, f"link {link} is already used by {owner[link]}; each dyad adds two new links")
                 )

@@ -222,7 +222,9 @@ def _obstacles(shapes: Sequence[Shape]) -> tuple[list[tuple[XY, XY]], list[tuple
     return segs, discs
 
 
-def panel_labels(panel: Panel, shapes: Sequence[Shape], style: Style = DEFAULT) -> tuple[PlacedLabel, ...]:
+def panel_labels(
+    panel: Panel, shapes: Sequence[Shape], style: Style = DEFAULT
+) -> tuple[PlacedLabel, ...]:
     """The panel's labels placed clear of each other and of its shapes (panel frame)."""
     segs, discs = _obstacles(shapes)
     labels = [it for it in panel.items if isinstance(it, Label)]

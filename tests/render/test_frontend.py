@@ -39,6 +39,14 @@ def placement(sheet: Sheet, i: int = 0):  # labels-free sheets: no label boxes
     return layout_sheet(sheet, DEFAULT, [[] for _ in sheet.panels]).panels[i]
 
 
+def test_backends_satisfy_the_protocol() -> None:
+    from graphmech.render.backend import Backend
+    from graphmech.render.svg import SvgBackend
+
+    assert isinstance(RecordingBackend(), Backend)
+    assert isinstance(SvgBackend("gm1"), Backend)
+
+
 def test_style_is_frozen() -> None:
     with pytest.raises(dataclasses.FrozenInstanceError):
         DEFAULT.arrow_length = 3.0  # type: ignore[misc]
@@ -121,7 +129,8 @@ def test_fixed_pivot_hinge_triangle_ground_and_45_degree_hatching() -> None:
     # two legs from the hinge centre and the ground line
     assert len(frame) == 3
     assert sum(1 for x in frame if x[1] == pytest.approx(c)) == 2
-    ground = [x for x in frame if x[1][1] == pytest.approx(ground_y) and x[2][1] == pytest.approx(ground_y)]
+    on_ground = pytest.approx(ground_y)
+    ground = [x for x in frame if x[1][1] == on_ground and x[2][1] == on_ground]
     assert len(ground) == 1
     assert abs(ground[0][2][0] - ground[0][1][0]) == pytest.approx(2 * DEFAULT.pivot_ground_half)
     # the hinge: white-filled circle drawn after every line
@@ -183,7 +192,8 @@ def test_slider_is_a_rotated_white_rectangle() -> None:
 def test_panel_items_are_translated_and_flipped_never_scaled() -> None:
     pts = [(0.0, 0.0), (40.0, 10.0), (13.0, -25.0), (-7.5, 31.25)]
     items = [Segment(pts[i], pts[i + 1]) for i in range(3)]
-    rec = record(Sheet("", (Panel("a", "", (Segment((0.0, 0.0), (5.0, 0.0)),)), Panel("b", "", tuple(items)))))
+    first = Panel("a", "", (Segment((0.0, 0.0), (5.0, 0.0)),))
+    rec = record(Sheet("", (first, Panel("b", "", tuple(items)))))
     lines = [c for c in rec.of("line")][1:]
     page = [lines[0][1]] + [c[2] for c in lines]
     for i in range(4):

@@ -23,7 +23,10 @@ def box_hits_segment(box, p0, p1, n: int = 400) -> bool:
 
 
 def test_same_input_same_positions() -> None:
-    labels = [Label(t, (10.0 * (i % 4), 7.0 * (i // 4)), avoid=((1.0, 0.2),)) for i, t in enumerate("abcdefghij")]
+    labels = [
+        Label(t, (10.0 * (i % 4), 7.0 * (i // 4)), avoid=((1.0, 0.2),))
+        for i, t in enumerate("abcdefghij")
+    ]
     segs = [((0.0, 0.0), (30.0, 14.0)), ((5.0, 20.0), (25.0, -3.0))]
     discs = [((10.0, 7.0), 1.4)]
     first = place_labels(labels, segs, discs)
@@ -48,7 +51,9 @@ def test_box_has_the_estimated_size_and_clears_the_anchor() -> None:
 
 
 def test_avoid_covering_the_right_side_puts_the_label_on_the_left() -> None:
-    right = tuple((math.cos(math.radians(a)), math.sin(math.radians(a))) for a in range(-80, 81, 20))
+    right = tuple(
+        (math.cos(math.radians(a)), math.sin(math.radians(a))) for a in range(-80, 81, 20)
+    )
     (p,) = place_labels([Label("B", (0.0, 0.0), avoid=right)])
     assert p.box[2] < 0.0  # the whole box left of the anchor
 

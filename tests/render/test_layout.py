@@ -17,7 +17,8 @@ def overlap(a, b) -> bool:
 
 
 def inside(box, page, margin: float) -> bool:
-    return margin <= box[0] and box[2] <= page[0] - margin and margin <= box[1] and box[3] <= page[1] - margin
+    x0, y0, x1, y1 = box
+    return margin <= x0 and x1 <= page[0] - margin and margin <= y0 and y1 <= page[1] - margin
 
 
 def test_two_panels_side_by_side_in_order_within_the_page() -> None:
@@ -94,7 +95,8 @@ def test_bounding_box_includes_symbols() -> None:
     lab = Label("AB", (0.0, 0.0))
     bb = panel_bbox(Panel("p", "", (Segment((0.0, 0.0), (1.0, 0.0)), lab)))
     assert bb[0] < -4.0 and bb[3] > 4.0  # a conservative margin for the label
-    tight = panel_bbox(Panel("p", "", (Segment((0.0, 0.0), (1.0, 0.0)), lab)), label_boxes=[(1.0, 1.0, 5.0, 4.5)])
+    panel = Panel("p", "", (Segment((0.0, 0.0), (1.0, 0.0)), lab))
+    tight = panel_bbox(panel, label_boxes=[(1.0, 1.0, 5.0, 4.5)])
     assert tight == pytest.approx((-1.0 - 0.35, -1.0 - 0.35, 6.0, 5.5))
 
 

@@ -1,0 +1,222 @@
+"""Stiff and extreme cases: dead centres, near-collinear links, extreme sizes and speeds.
+
+Each case either stays accurate (rel. error ≤ 1e-9) or says clearly that it cannot — a row
+flagged ill-conditioned with a warning, or a one-line error naming the step — never a silent
+wrong value.
+"""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from tests.conftest import check_json, run_cli, values
+
+FOURBAR_NON_GRASHOF = """
+title = "non-Grashof four-bar AB 60, BC 30, CD 40, AD 80"
+show = ["mechanism", "velocity", "acceleration"]
+find = ["v_C", "omega_2", "omega_3", "a_C", "alpha_2", "alpha_3"]
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+[scales]
+l_m_per_mm = 0.001
+[frame]
+A = [0, 0]
+D = [80, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = 60
+angle = {angle}
+omega = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths = [30, 40]
+branch = "left"
+"""
+
+# B, C, D collinear (|BD| = BC + CD = 70 mm): cos φ = (60² + 80² − 70²)/(2·60·80)
+PHI_TOGGLE = math.degrees(math.acos((60 ** 2 + 80 ** 2 - 70 ** 2) / (2 * 60 * 80)))
+
+
+def write(tmp_path, text: str, name: str = "scene.toml"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def test_four_bar_exactly_at_the_toggle_is_refused_naming_the_step(tmp_path):
+    p = write(tmp_path, FOURBAR_NON_GRASHOF.replace("{angle}", repr(PHI_TOGGLE)))
+    code, out, err = run_cli("check", str(p))
+    assert code == 2
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert "scene.toml" in err and "parallel" in err and "⟂" in err  # names the velocity step
+
+
+@pytest.mark.parametrize("offset_deg", [1e-2, 1e-4, 1e-6])
+def test_four_bar_next_to_the_toggle_is_accurate_or_warns(tmp_path, offset_deg):
+    p = write(tmp_path, FOURBAR_NON_GRASHOF.replace("{angle}", repr(PHI_TOGGLE - offset_deg)))
+    doc = check_json(p)
+    assert doc["warnings"], "an intersection this shallow must be reported"
+    assert any("intersection" in w for w in doc["warnings"])
+    for row in doc["quantities"]:
+        assert math.isfinite(row["graphical"]) and math.isfinite(row["exact"])
+        assert row["rel_error"] <= 1e-9 or row["ill_conditioned"], row
+    rows = values(doc)
+    # the rocker's angular velocity grows like 1/√δφ as the toggle nears: a real, large value
+    assert abs(rows["omega_3"]["exact"]) > 10.0
+
+
+SLIDER_DRIVEN = """
+title = "slider-crank driven by its slider"
+show = ["mechanism", "velocity", "acceleration"]
+find = ["omega_1", "omega_2", "v_B"]
+[units]
+length = "mm"
+[frame]
+A = [0, 0]
+[driver]
+type = "slider"
+link = "3"
+point = "C"
+guide = {{ through = [0, 0], angle_deg = 0 }}
+position = {s}
+velocity_m_s = 1.0
+acceleration_m_s2 = 0.0
+[[dyad]]
+type = "RRR"
+joints = ["C", "B", "A"]
+links = ["2", "1"]
+lengths = [100, 40]
+branch = "left"
+"""
+
+
+@pytest.mark.parametrize("s", [140.0, 60.0])  # outer and inner dead centre: l2 ± l1
+def test_slider_driven_slider_crank_at_a_dead_centre_cannot_be_constructed(tmp_path, s):
+    p = write(tmp_path, SLIDER_DRIVEN.format(s=s))
+    code, out, err = run_cli("check", str(p))
+    assert code == 2, err
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert "parallel" in err or "assembled" in err
+
+
+def test_slider_driven_dead_centres_in_a_batch_are_marked_and_the_rest_checked(tmp_path):
+    p = write(tmp_path, SLIDER_DRIVEN.format(s="[60.0, 80.0, 100.0, 120.0, 140.0]"))
+    doc = check_json(p)
+    names = {q["name"].split("@")[1] for q in doc["quantities"]}
+    assert names == {"80", "100", "120"}
+    assert sum("construction impossible" in w for w in doc["warnings"]) == 2
+    for row in doc["quantities"]:
+        assert row["rel_error"] <= 1e-9 or row["ill_conditioned"]
+
+
+def test_slider_driven_near_dead_centre_warns(tmp_path):
+    p = write(tmp_path, SLIDER_DRIVEN.format(s=140.0 - 1e-7))
+    doc = check_json(p)
+    assert any("ill-conditioned" in w or "shallow" in w for w in doc["warnings"])
+    for row in doc["quantities"]:
+        assert row["rel_error"] <= 1e-9 or row["ill_conditioned"], row
+
+
+CRANK_SLIDER = """
+title = "centred slider-crank"
+show = ["mechanism", "velocity", "acceleration"]
+find = ["v_C", "omega_2", "a_C", "alpha_2"]
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+[frame]
+A = [0, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = 40
+angle = [0, 180]
+omega = 10
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["2", "3"]
+length = 100
+guide = { through = [0, 0], angle = 0 }
+branch = "forward"
+"""
+
+
+def test_crank_driven_slider_crank_dead_centres_are_normal_results(tmp_path):
+    doc = check_json(write(tmp_path, CRANK_SLIDER))
+    rows = values(doc)
+    for at in ("0", "180"):
+        assert abs(rows[f"v_C@{at}"]["graphical"]) < 1e-15  # v_C = 0 is a result, not an error
+        assert rows[f"omega_2@{at}"]["graphical"] == pytest.approx(
+            (-1 if at == "0" else 1) * 10 * 40 / 100, rel=1e-12)
+        assert rows[f"alpha_2@{at}"]["graphical"] == pytest.approx(0.0, abs=1e-12)
+        # a_C = ω1²·l1·(1 ± l1/l2) at the dead centres
+        ac = 100 * 0.04 * (1 + 0.4) if at == "0" else 100 * 0.04 * (1 - 0.4)
+        assert abs(rows[f"a_C@{at}"]["graphical"]) == pytest.approx(ac, rel=1e-12)
+    assert all(r["rel_error"] <= 1e-12 for r in doc["quantities"])
+    assert not any("ill-conditioned" in w for w in doc["warnings"])
+
+
+FOURBAR = """
+title = "four-bar"
+show = ["mechanism", "velocity", "acceleration"]
+find = ["v_C", "v_CB", "omega_2", "omega_3", "a_C", "a_CB_n", "a_CB_t", "alpha_2", "alpha_3"]
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+[frame]
+A = [0, 0]
+D = [{d}, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = {a}
+angle = [30, 100, 165, 250]
+omega = {w}
+epsilon_rad_s2 = {e}
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths = [{b}, {c}]
+branch = "left"
+"""
+
+
+@pytest.mark.parametrize("w", [1e-6, 1.0, 1e6, -1e6])
+def test_angular_velocity_from_1e_minus_6_to_1e6(tmp_path, w):
+    doc = check_json(write(tmp_path, FOURBAR.format(a=60, b=120, c=90, d=120, w=w, e=0)))
+    assert len(doc["quantities"]) == 36
+    for row in doc["quantities"]:
+        assert row["rel_error"] <= 1e-9, row
+    rows = values(doc)
+    assert rows["omega_2@165"]["graphical"] == pytest.approx(w * 0.25384873231226734, rel=1e-9)
+
+
+def test_link_lengths_differing_by_a_million(tmp_path):
+    # a 1 µm crank driving 1 m links: a crank-rocker whose rocker barely moves
+    doc = check_json(write(tmp_path, FOURBAR.format(a=0.001, b=1000, c=1000, d=1000, w=10, e=5)))
+    for row in doc["quantities"]:
+        assert row["rel_error"] <= 1e-9, row
+    rows = values(doc)
+    assert abs(rows["omega_3@100"]["exact"]) < 1e-5 * 10
+
+
+def test_angular_acceleration_of_the_crank_is_drawn(tmp_path):
+    doc = check_json(write(tmp_path, FOURBAR.format(a=60, b=120, c=90, d=120, w=10, e=-40)))
+    for row in doc["quantities"]:
+        assert row["rel_error"] <= 1e-12, row
