@@ -90,7 +90,9 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
                           _page_size(scene), footer)
     raw = Path(path).read_bytes()
     prefix = "g" + hashlib.sha256(raw).hexdigest()[:8]
-    return render_svg(sheet, prefix), an.warnings
+    warnings = list(an.warnings)
+    svg = render_svg(sheet, prefix, on_warning=warnings.append)
+    return svg, warnings
 
 
 def write_atomic(path: str | os.PathLike[str], text: str) -> None:

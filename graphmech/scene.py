@@ -283,9 +283,6 @@ class _Reader:
         return _Reader(table, path, self.problems, self.units)
 
     # -- raw access ----------------------------------------------------------------------------
-    def has(self, key: str) -> bool:
-        return key in self.table
-
     def raw(self, key: str, *, required: bool = False, hint: str = "") -> Any:
         """The value under ``key`` (marked used), or ``_MISSING``."""
         self.known.add(key)
@@ -322,11 +319,11 @@ class _Reader:
         return x
 
     def numbers(
-        self, value: Any, path: str, count: int, *, positive: bool = False
+        self, value: Any, path: str, count: int, *, positive: bool = False, shape: str = "[x, y]"
     ) -> list[float] | None:
-        """A list of exactly ``count`` numbers."""
+        """A list of exactly ``count`` numbers; ``shape`` shows the user what is meant."""
         if not isinstance(value, list) or len(value) != count:
-            shape = "[x, y]: a list of 2 numbers" if count == 2 else f"a list of {count} numbers"
+            shape = f"{shape}: a list of {count} numbers"
             got = f"a list of {len(value)}" if isinstance(value, list) else _type_name(value)
             self.problem(path, f"must be {shape}, not {got}")
             return None
@@ -405,6 +402,9 @@ class _Reader:
         value = self.raw(key)
         if value is _MISSING:
             return []
+        if isinstance(value, dict):  # [dyad] for [[dyad]]: say so, then read it anyway
+            self.problem(self.at(key), f"must be an array of tables: write [[{key}]]")
+            value = [value]
         if not isinstance(value, list):
             self.problem(self.at(key), f"must be an array of tables: write [[{key}]]")
             return []
@@ -479,7 +479,7 @@ class _Reader:
         positive: bool = False,
     ) -> float | None:
         """A single number with a unit, in SI; ``default`` (SI) when absent and not required."""
-        if not required and not self._present(base, kind):
+        if not required and self.present(base) is None:
             self.quantity(base, kind, required=False)  # registers the known keys
             return default
         given = self.quantity(base, kind, required=required)
@@ -488,8 +488,9 @@ class _Reader:
         x = self.number(given.value, self.at(given.key), positive=positive)
         return None if x is None else given.si(x)
 
-    def _present(self, base: str, kind: str) -> bool:
-        return any(k == base or k.startswith(base + "_") for k in self.table)
+    def present(self, base: str) -> str | None:
+        """The key under which ``base`` is written (plain or with any suffix), if any."""
+        return next((k for k in self.table if k == base or k.startswith(base + "_")), None)
 
     def pair(self, base: str, *, required: bool = True) -> tuple[float, float] | None:
         """A point [x, y] with a length unit, in m."""
@@ -571,6 +572,7 @@ class _Part:
     links: list[tuple[str, str]] = field(default_factory=list)  # (link, path) new moving links
     carries: list[tuple[str, list[str]]] = field(default_factory=list)  # link → its points
     translating: list[str] = field(default_factory=list)  # links that only translate
+    on: tuple[str | None, str] | None = None  # a [[point]]'s link (None if invalid), its path
     model: Any = None  # the model object, when its own values were valid
     opaque: bool = False  # its type is unknown: names and links kept, nothing checked
 
@@ -823,7 +825,13 @@ def _read_dyad(r: _Reader, index: int, frame: _Frame) -> _Part:
         lengths_given = r.quantity("lengths", "length")
         lengths = None
         if lengths_given is not None:
-            raw = r.numbers(lengths_given.value, r.at(lengths_given.key), 2, positive=True)
+            raw = r.numbers(
+                lengths_given.value,
+                r.at(lengths_given.key),
+                2,
+                positive=True,
+                shape=f"[l_{p or 'P'}{c or 'C'}, l_{q or 'Q'}{c or 'C'}]",
+            )
             lengths = None if raw is None else tuple(lengths_given.si(x) for x in raw)
         branch = r.string("branch", choices=("left", "right"), required=True)
         need(0, 2)
@@ -885,11 +893,8 @@ def _read_dyad(r: _Reader, index: int, frame: _Frame) -> _Part:
     return part
 
 
-def _read_point(r: _Reader, index: int) -> tuple[_Part, tuple[str | None, str, list[tuple[str, str]], str]]:
-    """One [[point]]: a point fixed on a link, placed from one or two points of that link.
-
-    Returns the part and (link, link path, bases with paths, name path) for the cross-check.
-    """
+def _read_point(r: _Reader, index: int) -> _Part:
+    """One [[point]]: a point fixed on a link, placed from one or two points of that link."""
     part = _Part(f"point[{index}]")
     value = r.raw("name", required=True, hint="a point name such as \"E\"")
     name = None if value is _MISSING else r.point_name(value, r.at("name"))
@@ -911,22 +916,20 @@ def _read_point(r: _Reader, index: int) -> tuple[_Part, tuple[str | None, str, l
             r.problem(bases[1][1], f"the two base points must differ ({bases[0][0]} twice)")
             ok = False
     along = left = None
-    if ok and len(bases) == 1:
+    if ok and len(bases) == 1:  # a translating link: offset [dx, dy] from the one point
         offset = r.pair("offset", required=False)
-        if offset is None and not r._present("offset", "length"):
+        if offset is None and r.present("offset") is None:
             r.problem(r.at("offset"), "missing: with one base point give offset_mm = [dx, dy]")
-        for extra in ("along", "left"):
-            if r._present(extra, "length"):
-                key = next(k for k in r.table if k == extra or k.startswith(extra + "_"))
-                r.used.add(key)
-                r.problem(r.at(key), "with one base point give offset = [dx, dy] instead")
+        for key in filter(None, (r.present("along"), r.present("left"))):
+            r.used.add(key)
+            r.problem(r.at(key), "with one base point give offset = [dx, dy] instead")
         if offset is not None:
             along, left = offset
-    elif ok:
+    elif ok:  # U + along·û + left·n̂
         along = r.scalar("along", "length")
         left = r.scalar("left", "length", required=False, default=0.0)
-        if r._present("offset", "length"):
-            key = next(k for k in r.table if k == "offset" or k.startswith("offset_"))
+        key = r.present("offset")
+        if key is not None:
             r.used.add(key)
             r.problem(r.at(key), "offset needs a single base point; with two give along/left")
     else:  # base is broken: still read the rest so that it is not reported as unknown
@@ -935,9 +938,10 @@ def _read_point(r: _Reader, index: int) -> tuple[_Part, tuple[str | None, str, l
     r.finish()
     if name is not None:
         part.defines.append((name, r.at("name")))
+    part.needs, part.on = bases, (link, r.at("link"))
     if _valid(name, link, along, left) and ok:
         part.model = LinkPoint(name, link, tuple(b for b, _ in bases), along, left)  # type: ignore[arg-type]
-    return part, (link, r.at("link"), bases, r.at("name"))
+    return part
 
 
 def _read_measured(top: _Reader, labels: tuple[str, ...] | None) -> tuple[tuple[str, float], ...]:
@@ -999,7 +1003,7 @@ def _read_page(top: _Reader) -> Page:
                 + _maybe(value, PAPER_SIZES),
             )
     elif value is not _MISSING:
-        wh = r.numbers(value, r.at("size"), 2, positive=True)
+        wh = r.numbers(value, r.at("size"), 2, positive=True, shape="[width, height]")
         if wh is not None:
             size = (wh[0], wh[1])
     r.finish()
@@ -1017,7 +1021,7 @@ def _check_structure(
     frame_link: tuple[str | None, bool],
     driver: _Part,
     dyads: list[_Part],
-    points: list[tuple[_Part, tuple[str | None, str, list[tuple[str, str]], str]]],
+    points: list[_Part],
 ) -> str | None:
     """Check names and links across the scene; return the frame link (None if unknown)."""
     origin: dict[str, str] = {n: "frame" for n in frame}  # name → who defines it
@@ -1054,7 +1058,8 @@ def _check_structure(
         carry(part)
 
     # Points, in file order: on an existing moving link, placed from that link's points.
-    for part, (link, link_path, bases, _name_path) in points:
+    for part in points:
+        (link, link_path), bases = part.on or (None, ""), part.needs
         level = 0
         for base, path in bases:
             if link is None or link not in carried:
@@ -1063,7 +1068,7 @@ def _check_structure(
                 later = next(
                     (
                         p.where
-                        for p, _ in points
+                        for p in points
                         if p is not part and any(n == base for n, _ in p.defines)
                     ),
                     None,
@@ -1206,7 +1211,7 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         frame_points={name: xy for name, xy in frame.items() if xy is not None},
         driver=driver.model,
         dyads=tuple(d.model for d in dyads),
-        points=tuple(p.model for p, _ in points),
+        points=tuple(p.model for p in points),
         frame_link=frame_link or "0",
     )
     return Scene(

@@ -188,13 +188,13 @@ def intersect_lines(ops: Ops, l1: tuple, l2: tuple) -> tuple:
 
 
 def intersect_circles(
-    ops: Ops, c1: tuple, r1: Any, c2: tuple, r2: Any, side: float, explain: Callable[[Any, Any], str]
+    ops: Ops, c1: tuple, r1: Any, c2: tuple, r2: Any, side: float, explain: Callable[[Any], str]
 ) -> tuple:
     """Intersection of circles (c1, r1) and (c2, r2) on the given side of c1→c2 (+1 left, −1 right).
 
     Two circles that just touch (within a relative ``TANGENT_REL``) meet at their tangent
     point, with an infinite condition number; circles further apart fail with the message
-    ``explain(d, r1 + r2)`` (the caller words it in the mechanism's terms).
+    ``explain(d)`` (the caller words it in the mechanism's terms).
 
     Notes
     -----
@@ -212,7 +212,7 @@ def intersect_circles(
     a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d)
     h2 = r1 * r1 - a * a
     slack = TANGENT_REL * r1 * r1
-    bad = ops.guard(h2 < -slack, lambda: explain(d, r1 + r2), assembly=True)
+    bad = ops.guard(h2 < -slack, lambda: explain(d), assembly=True)
     h2 = ops.maximum(ops.where(bad, 0.0, h2), 0.0)
     h = ops.sqrt(h2)
     ops.cond(r1 * r2 / ops.maximum(d * h, 1e-300 * r1 * r2))

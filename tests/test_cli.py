@@ -1,0 +1,173 @@
+"""The command line: exit codes, one-line errors, atomic output, determinism, lazy imports."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from tests.conftest import ROOT, SCENES, check_json, run_cli, values
+
+FOURBAR = """
+title = "Four-bar"
+show = ["mechanism", "velocity", "acceleration"]
+find = ["v_C", "omega_2"]
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+{scales}
+[frame]
+A = [0, 0]
+D = [120, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = 60
+angle = 165
+omega = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths = [{l2}, 90]
+branch = "left"
+"""
+STATED = "[scales]\nl_m_per_mm = 0.002\nv_m_s_per_mm = 0.01\na_m_s2_per_mm = 0.1"
+
+
+def scene(tmp_path, scales: str = STATED, l2: float = 120, name: str = "s.toml"):
+    p = tmp_path / name
+    p.write_text(FOURBAR.format(scales=scales, l2=l2), encoding="utf-8")
+    return p
+
+
+def test_render_is_byte_identical_and_parses(tmp_path):
+    p = scene(tmp_path)
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    assert run_cli("render", str(p), "-o", str(a))[0] == 0
+    assert run_cli("render", str(p), "-o", str(b))[0] == 0
+    assert a.read_bytes() == b.read_bytes()
+    root = ET.fromstring(a.read_text(encoding="utf-8"))
+    text = " ".join(t.text or "" for t in root.iter() if t.tag.endswith("text"))
+    assert "μl = 0.002 m/mm" in text and "μv = 0.01 (m/s)/mm" in text and "μa = 0.1 (m/s²)/mm" in text
+
+
+def test_measured_values_and_segments(tmp_path):
+    p = scene(tmp_path)
+    # v_C = 0.40098 m/s; pc = 40.098 mm at μv = 0.01
+    code, out, err = run_cli("check", str(p), "--json", "--measured", "v_C=0.401,pc=40.3")
+    doc = json.loads(out)
+    assert code == 0
+    assert [m["ok"] for m in doc["measured"]] == [True, True]
+    code, out, _ = run_cli("check", str(p), "--json", "--measured", "pc=41")
+    assert code == 1 and json.loads(out)["measured"][0]["ok"] is False
+    assert json.loads(out)["measured"][0]["expected"] == pytest.approx(40.0984583710757, rel=1e-9)
+    # a tighter precision turns a pass into a fail
+    assert run_cli("check", str(p), "--measured", "pc=40.3", "--precision", "0.1")[0] == 1
+
+
+def test_drawn_length_refused_when_the_scene_left_mu_to_graphmech(tmp_path):
+    p = scene(tmp_path, scales="")
+    code, out, err = run_cli("check", str(p), "--measured", "pc=40")
+    assert code == 2 and err.count("\n") == 1
+    assert "μv" in err and "pc" in err
+    # but a value is fine
+    assert run_cli("check", str(p), "--measured", "v_C=0.4")[0] == 0
+
+
+def test_chosen_scales_are_round_and_written(tmp_path):
+    doc = check_json(scene(tmp_path, scales=""))
+    for k, mu in doc["scales"].items():
+        mant = mu / 10 ** __import__("math").floor(__import__("math").log10(mu))
+        assert round(mant, 9) in (1.0, 2.0, 2.5, 5.0), (k, mu)
+
+
+def test_cannot_be_assembled_is_one_line_and_writes_nothing(tmp_path):
+    p = scene(tmp_path, l2=10)
+    out = tmp_path / "out.svg"
+    out.write_text("keep me")
+    code, o, err = run_cli("render", str(p), "-o", str(out))
+    assert code == 2
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert "s.toml" in err and "cannot be assembled" in err and "φ1 = 165°" in err
+    assert out.read_text() == "keep me"
+    assert [x.name for x in tmp_path.iterdir() if x.name.startswith(".")] == []
+
+
+@pytest.mark.parametrize("bad, where", [
+    ('lengths = [-120, 90]', "dyad[0].lengths[0]"),
+    ('lengths = [120, inf]', "dyad[0].lengths[1]"),
+    ('lengths = [120, 90]\nbogus = 1', "dyad[0].bogus"),
+])
+def test_bad_input_names_file_and_key(tmp_path, bad, where):
+    p = tmp_path / "bad.toml"
+    p.write_text(FOURBAR.format(scales=STATED, l2=120).replace("lengths = [120, 90]", bad), encoding="utf-8")
+    code, out, err = run_cli("check", str(p))
+    assert code == 2 and out == ""
+    assert err.startswith(f"bad.toml: {where}:") and err.count("\n") == 1
+
+
+def test_unknown_find_name_suggests(tmp_path):
+    p = tmp_path / "f.toml"
+    p.write_text(FOURBAR.format(scales=STATED, l2=120).replace('"omega_2"]', '"omega2"]'), encoding="utf-8")
+    code, _, err = run_cli("check", str(p))
+    assert code == 2 and "find[1]" in err and "omega_2" in err
+
+
+def test_markup_in_the_title_is_escaped(tmp_path):
+    p = tmp_path / "x.toml"
+    p.write_text(FOURBAR.format(scales=STATED, l2=120).replace(
+        'title = "Four-bar"', 'title = "</text><script>alert(1)</script>&\\u0001"'), encoding="utf-8")
+    out = tmp_path / "x.svg"
+    assert run_cli("render", str(p), "-o", str(out))[0] == 0
+    svg = out.read_text(encoding="utf-8")
+    root = ET.fromstring(svg)
+    assert not [e for e in root.iter() if e.tag.endswith("script")]
+    assert "<script>" not in svg and "&lt;script&gt;" in svg and "\x01" not in svg
+
+
+def test_only_what_is_asked_is_built(tmp_path):
+    p = tmp_path / "v.toml"
+    p.write_text(FOURBAR.format(scales=STATED, l2=120).replace(
+        'show = ["mechanism", "velocity", "acceleration"]', 'show = ["mechanism"]'), encoding="utf-8")
+    from graphmech.check import analyse
+    from graphmech.scene import load_scene
+
+    an = analyse(load_scene(p))
+    panels = {s.panel for s in an.plan.steps}
+    assert "acceleration" not in panels  # v_C and ω2 need no acceleration polygon
+    assert not any(s.name.startswith("m:a_") for s in an.plan.steps)
+    out = tmp_path / "v.svg"
+    run_cli("render", str(p), "-o", str(out))
+    svg = out.read_text(encoding="utf-8")
+    assert "Velocity polygon" not in svg and "Kinematic diagram" in svg
+
+
+def test_check_without_plots_does_not_import_matplotlib():
+    code = ("import sys; from graphmech.cli import main; "
+            f"rc = main(['check', r'{SCENES / 'linkage.slider_crank_offset.toml'}', '--json']); "
+            f"main(['render', r'{SCENES / 'kin.oscillating_block.toml'}', '-o', '/dev/null']); "
+            "assert 'matplotlib' not in sys.modules, 'matplotlib imported'; sys.exit(rc)")
+    r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+
+
+def test_python_dash_m_runs():
+    r = subprocess.run([sys.executable, "-m", "graphmech", "check", str(SCENES / "linkage.slider_fixed_angle_guide.toml"),
+                        "--json"], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0
+    assert values(json.loads(r.stdout))["v_C"]["graphical"] == pytest.approx(-1.195433962877246, rel=1e-9)
+
+
+def test_figures_are_current():
+    """figures/*.svg are exactly what their scenes render now."""
+    from graphmech.cli import render_scene
+
+    for s in sorted(SCENES.glob("*.toml")):
+        svg, _ = render_scene(s)
+        assert (ROOT / "figures" / f"{s.stem}.svg").read_text(encoding="utf-8") == svg, s.stem
