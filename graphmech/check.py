@@ -86,7 +86,8 @@ class Analysis:
 
 def _position_text(build: LinkageConstruction, label: str) -> str:
     driver = build.linkage.driver
-    return f"φ{driver.link} = {label}°" if isinstance(driver, Crank) else f"s = {label}"
+    sub = driver.link.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+    return f"φ{sub} = {label}°" if isinstance(driver, Crank) else f"s{sub} = {label}"
 
 
 def split_name(name: str) -> tuple[str, str | None]:

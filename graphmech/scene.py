@@ -12,6 +12,7 @@ does that, position by position.
 
 The format, with an example of every feature, is ``docs/scene-format.md``.
 """
+
 from __future__ import annotations
 
 import difflib
@@ -31,10 +32,9 @@ from graphmech.mechanisms.linkage import (
     RRR,
     Crank,
     Driver,
-    Dyad,
     Guide,
-    LinkPoint,
     Linkage,
+    LinkPoint,
     Positions,
     SliderInput,
 )
@@ -124,13 +124,21 @@ _UNITS: dict[str, dict[str, tuple[float, float]]] = {
     "angle": {"deg": (math.pi, 180.0), "rad": (1.0, 1.0)},
     "omega": {"rad/s": (1.0, 1.0), "rpm": (math.pi, 30.0), "deg/s": (math.pi, 180.0)},
     "epsilon": {
-        "rad/s2": (1.0, 1.0), "rad/s²": (1.0, 1.0), "rad/s^2": (1.0, 1.0),
-        "deg/s2": (math.pi, 180.0), "deg/s²": (math.pi, 180.0), "deg/s^2": (math.pi, 180.0),
+        "rad/s2": (1.0, 1.0),
+        "rad/s²": (1.0, 1.0),
+        "rad/s^2": (1.0, 1.0),
+        "deg/s2": (math.pi, 180.0),
+        "deg/s²": (math.pi, 180.0),
+        "deg/s^2": (math.pi, 180.0),
     },
     "velocity": {"m/s": (1.0, 1.0), "mm/s": (1.0, 1000.0)},
     "acceleration": {
-        "m/s2": (1.0, 1.0), "m/s²": (1.0, 1.0), "m/s^2": (1.0, 1.0),
-        "mm/s2": (1.0, 1000.0), "mm/s²": (1.0, 1000.0), "mm/s^2": (1.0, 1000.0),
+        "m/s2": (1.0, 1.0),
+        "m/s²": (1.0, 1.0),
+        "m/s^2": (1.0, 1.0),
+        "mm/s2": (1.0, 1000.0),
+        "mm/s²": (1.0, 1000.0),
+        "mm/s^2": (1.0, 1000.0),
     },
 }
 
@@ -166,8 +174,18 @@ _QUANTITY_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*" + _LABEL)
 _SEGMENT_NAME = re.compile(r"(?:[a-zπ][0-9]*['′]*){2,8}" + _LABEL)
 
 _TOP_KEYS = (
-    "title", "show", "find", "scales", "units", "frame", "driver", "dyad", "point",
-    "measured", "check", "page",
+    "title",
+    "show",
+    "find",
+    "scales",
+    "units",
+    "frame",
+    "driver",
+    "dyad",
+    "point",
+    "measured",
+    "check",
+    "page",
 )
 
 _MISSING: Any = object()
@@ -349,15 +367,16 @@ class _Reader:
         if options is not None and value not in options:
             self.problem(
                 self.at(key),
-                f"unknown value {_say(value)}: use {_choices(options)}"
-                + _maybe(value, options),
+                f"unknown value {_say(value)}: use {_choices(options)}" + _maybe(value, options),
             )
             return None
         return value
 
     def point_name(self, value: Any, path: str) -> str | None:
         if not isinstance(value, str):
-            self.problem(path, f"must be a point name (a string such as \"B\"), not {_type_name(value)}")
+            self.problem(
+                path, f'must be a point name (a string such as "B"), not {_type_name(value)}'
+            )
             return None
         if not _POINT_NAME.fullmatch(value) or len(value) > 8:
             self.problem(
@@ -373,7 +392,10 @@ class _Reader:
             return str(value)
         if isinstance(value, str) and _LINK_ID.fullmatch(value):
             return value
-        self.problem(path, f"must be a link number such as \"2\", not {_say(value) if isinstance(value, str) else _type_name(value)}")
+        self.problem(
+            path,
+            f'must be a link number such as "2", not {_say(value) if isinstance(value, str) else _type_name(value)}',
+        )
         return None
 
     def name_list(self, key: str, count: int, check: Any) -> list[tuple[str | None, str]]:
@@ -435,7 +457,7 @@ class _Reader:
             if key == base:
                 found.append((key, None))
             elif key.startswith(base + "_"):
-                rest = key[len(base) + 1:]
+                rest = key[len(base) + 1 :]
                 if rest in suffixes:
                     found.append((key, suffixes[rest]))
                 elif rest in _ALL_SUFFIXES:
@@ -552,7 +574,9 @@ class _Reader:
             self.problem(path, f"absurd position count ({how_many})")
             return None
         if count < 1:
-            self.problem(path, "the range is empty: stop must lie beyond start, in the sense of step")
+            self.problem(
+                path, "the range is empty: stop must lie beyond start, in the sense of step"
+            )
             return None
         return [start + i * step for i in range(count)]
 
@@ -577,9 +601,12 @@ class _Part:
     opaque: bool = False  # its type is unknown: names and links kept, nothing checked
 
 
-def _opaque(r: _Reader, where: str, name_keys: tuple[str, ...], link_keys: tuple[str, ...]) -> _Part:
+def _opaque(
+    r: _Reader, where: str, name_keys: tuple[str, ...], link_keys: tuple[str, ...]
+) -> _Part:
     """A driver or dyad of unknown type: keep whatever names and links it gives, silently,
     so that the one wrong ``type`` does not bring a cascade of "not defined" after it."""
+
     def valid(values: Any, pattern: re.Pattern[str]) -> list[str]:
         items = values if isinstance(values, list) else [values]
         return [str(v) for v in items if isinstance(v, (str, int)) and pattern.fullmatch(str(v))]
@@ -622,11 +649,12 @@ def _read_units(top: _Reader) -> dict[str, str | None]:
         if isinstance(value, str):
             r.problem(
                 r.at(kind),
-                f"unknown unit {_say(value)}: use {_choices(options)}"
-                + _maybe(value, table),
+                f"unknown unit {_say(value)}: use {_choices(options)}" + _maybe(value, table),
             )
         else:
-            r.problem(r.at(kind), f"must be a unit name such as \"{options[0]}\", not {_type_name(value)}")
+            r.problem(
+                r.at(kind), f'must be a unit name such as "{options[0]}", not {_type_name(value)}'
+            )
     r.finish()
     return units
 
@@ -711,7 +739,9 @@ def _read_frame(top: _Reader) -> tuple[dict[str, tuple[float, float] | None], st
 
 def _read_guide(parent: _Reader, key: str, frame: _Frame) -> Guide | None:
     """A frame guide {through = [x, y] or a frame point's name, angle (default 0)}."""
-    r = parent.table_at(key, required=True, hint=f"write {key} = {{through_mm = [0, 0], angle_deg = 0}}")
+    r = parent.table_at(
+        key, required=True, hint=f"write {key} = {{through_mm = [0, 0], angle_deg = 0}}"
+    )
     if r is None:
         return None
     through: tuple[float, float] | None
@@ -730,19 +760,21 @@ def _read_guide(parent: _Reader, key: str, frame: _Frame) -> Guide | None:
 def _read_driver(top: _Reader, frame: _Frame) -> tuple[_Part, Positions | None]:
     """[driver]: a crank or a slider, and the positions it is drawn at."""
     part = _Part("driver")
-    r = top.table_at("driver", required=True, hint="add a [driver] table (type = \"crank\" or \"slider\")")
+    r = top.table_at(
+        "driver", required=True, hint='add a [driver] table (type = "crank" or "slider")'
+    )
     if r is None:
         return part, None
     kind = r.string("type", choices=("crank", "slider"), required=True)
     if kind is None:
         return _opaque(r, "driver", ("pivot", "tip", "point"), ("link",)), None
-    link_value = r.raw("link", required=True, hint="the driver's link number, e.g. link = \"1\"")
+    link_value = r.raw("link", required=True, hint='the driver\'s link number, e.g. link = "1"')
     link = None if link_value is _MISSING else r.link_id(link_value, r.at("link"))
     if link is not None:
         part.links.append((link, r.at("link")))
 
     def name(key: str) -> str | None:
-        value = r.raw(key, required=True, hint="a point name such as \"B\"")
+        value = r.raw(key, required=True, hint='a point name such as "B"')
         return None if value is _MISSING else r.point_name(value, r.at(key))
 
     model: Driver | None = None
@@ -755,7 +787,9 @@ def _read_driver(top: _Reader, frame: _Frame) -> tuple[_Part, Positions | None]:
         direction = r.string("direction", choices=("ccw", "cw"), default="ccw")
         if direction == "cw" and omega is not None and epsilon is not None:
             if omega < 0:
-                r.problem(r.at("direction"), "with direction = \"cw\" give omega as a magnitude (≥ 0)")
+                r.problem(
+                    r.at("direction"), 'with direction = "cw" give omega as a magnitude (≥ 0)'
+                )
                 omega = None
             else:  # both read positive clockwise; stored CCW-positive
                 omega, epsilon = -omega + 0.0, -epsilon + 0.0
@@ -885,7 +919,11 @@ def _read_dyad(r: _Reader, index: int, frame: _Frame) -> _Part:
         carry(i, p, p + i if p and i else None)
         carry(j, c, p + j if p and j else None)
         part.translating.extend(x for x in (i, j) if x is not None)
-        if slot is not None and guide is not None and abs(math.sin(slot - guide.angle)) < PARALLEL_SIN:
+        if (
+            slot is not None
+            and guide is not None
+            and abs(math.sin(slot - guide.angle)) < PARALLEL_SIN
+        ):
             r.problem(r.at("slot_angle"), "the slot is parallel to the guide: the dyad cannot move")
         elif _valid(p, c, i, j, slot, guide):
             part.model = RPP(p, c, (i, j), slot, guide)  # type: ignore[arg-type]
@@ -896,12 +934,12 @@ def _read_dyad(r: _Reader, index: int, frame: _Frame) -> _Part:
 def _read_point(r: _Reader, index: int) -> _Part:
     """One [[point]]: a point fixed on a link, placed from one or two points of that link."""
     part = _Part(f"point[{index}]")
-    value = r.raw("name", required=True, hint="a point name such as \"E\"")
+    value = r.raw("name", required=True, hint='a point name such as "E"')
     name = None if value is _MISSING else r.point_name(value, r.at("name"))
     value = r.raw("link", required=True, hint="the number of the link that carries the point")
     link = None if value is _MISSING else r.link_id(value, r.at("link"))
     bases: list[tuple[str, str]] = []
-    value = r.raw("base", required=True, hint="base = [\"B\", \"C\"] (or one point with offset)")
+    value = r.raw("base", required=True, hint='base = ["B", "C"] (or one point with offset)')
     ok = value is not _MISSING
     if ok and (not isinstance(value, list) or len(value) not in (1, 2)):
         r.problem(r.at("base"), "must be a list of 1 or 2 point names")
@@ -1051,7 +1089,10 @@ def _check_structure(
         for link, path in part.links:
             if link in owner and owner[link] != part.where and not part.opaque:
                 problems.append(
-                    (path, f"link {link} is already used by {owner[link]}; each dyad adds two new links")
+                    (
+                        path,
+                        f"link {link} is already used by {owner[link]}; each dyad adds two new links",
+                    )
                 )
             owner.setdefault(link, part.where)
         define(part, level)
@@ -1077,7 +1118,10 @@ def _check_structure(
                 problems.append((path, f"{base} is not defined before {part.where}{tip}"))
             elif base not in carried[link]:
                 problems.append(
-                    (path, f"{base} is not a point of link {link} (it carries {', '.join(carried[link])})")
+                    (
+                        path,
+                        f"{base} is not a point of link {link} (it carries {', '.join(carried[link])})",
+                    )
                 )
             else:
                 level = max(level, stage[base])
@@ -1086,7 +1130,10 @@ def _check_structure(
                 problems.append((link_path, "a point on the frame belongs in [frame]"))
             else:
                 problems.append(
-                    (link_path, f"link {link} does not exist (links: {', '.join(carried) or 'none'})")
+                    (
+                        link_path,
+                        f"link {link} does not exist (links: {', '.join(carried) or 'none'})",
+                    )
                 )
         elif link is not None and len(bases) == 1 and link not in translating:
             problems.append(
@@ -1192,7 +1239,9 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     title, show, find = _read_header(top)
     scales = _read_scales(top)
     frame, link_value = _read_frame(top)
-    frame_link_given = "frame" in data and isinstance(data["frame"], dict) and "link" in data["frame"]
+    frame_link_given = (
+        "frame" in data and isinstance(data["frame"], dict) and "link" in data["frame"]
+    )
     driver, positions = _read_driver(top, frame)
     dyads = [_read_dyad(r, k, frame) for k, r in enumerate(top.tables_at("dyad"))]
     points = [_read_point(r, k) for k, r in enumerate(top.tables_at("point"))]
@@ -1262,7 +1311,12 @@ def load_scene(path: str | os.PathLike[str]) -> Scene:
     except UnicodeDecodeError as exc:
         line = raw[: exc.start].count(b"\n") + 1
         raise SceneError(
-            [(f"line {line}", f"not UTF-8 text (byte 0x{raw[exc.start]:02x}); save the file as UTF-8")],
+            [
+                (
+                    f"line {line}",
+                    f"not UTF-8 text (byte 0x{raw[exc.start]:02x}); save the file as UTF-8",
+                )
+            ],
             source,
         ) from None
     try:
@@ -1277,7 +1331,9 @@ def load_scene(path: str | os.PathLike[str]) -> Scene:
                 [(f"line {m.group(1)}", f"invalid TOML: {what} (column {m.group(2)})")], source
             ) from None
         line = text.count("\n") + 1
-        raise SceneError([(f"line {line}", f"invalid TOML: {what} (at the end of the file)")], source) from None
+        raise SceneError(
+            [(f"line {line}", f"invalid TOML: {what} (at the end of the file)")], source
+        ) from None
     except RecursionError:
         raise SceneError([("", "invalid TOML: nested too deeply")], source) from None
     return parse_scene(data, source)

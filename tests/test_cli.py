@@ -94,7 +94,7 @@ def test_cannot_be_assembled_is_one_line_and_writes_nothing(tmp_path):
     code, o, err = run_cli("render", str(p), "-o", str(out))
     assert code == 2
     assert err.count("\n") == 1 and "Traceback" not in err
-    assert "s.toml" in err and "cannot be assembled" in err and "φ1 = 165°" in err
+    assert "s.toml" in err and "cannot be assembled" in err and "φ₁ = 165°" in err
     assert out.read_text() == "keep me"
     assert [x.name for x in tmp_path.iterdir() if x.name.startswith(".")] == []
 

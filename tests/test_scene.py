@@ -1,4 +1,5 @@
 """Scene files: TOML in, SI out; every problem reported with the key path the user wrote."""
+
 from __future__ import annotations
 
 import copy
@@ -113,7 +114,9 @@ def test_fourbar_round_trip_in_si(tmp_path: Path) -> None:
     assert crank.omega == pytest.approx(100 * 2 * math.pi / 60)
     assert crank.epsilon == 4.0
     (dyad,) = link.dyads
-    assert dyad == RRR("B", "C", "D", ("3", "4"), (pytest.approx(0.12), pytest.approx(0.09)), "left")
+    assert dyad == RRR(
+        "B", "C", "D", ("3", "4"), (pytest.approx(0.12), pytest.approx(0.09)), "left"
+    )
     (point,) = link.points
     assert point == LinkPoint("E", "3", ("B", "C"), pytest.approx(0.1888), pytest.approx(-0.005))
     assert link.links() == {"2": ["A", "B"], "3": ["B", "C", "E"], "4": ["D", "C"]}
@@ -243,14 +246,20 @@ def test_slider_driver_and_each_dyad_type() -> None:
         )
     )
     link = scene.linkage
-    assert link.driver == SliderInput("1", "B", Guide((0.0, 0.0), pytest.approx(math.pi / 2)), 0.5, 0.0)
+    assert link.driver == SliderInput(
+        "1", "B", Guide((0.0, 0.0), pytest.approx(math.pi / 2)), 0.5, 0.0
+    )
     assert scene.positions.values == (pytest.approx(0.04), pytest.approx(0.06))
     rrr, rrp, rpr, rpp = link.dyads
     assert isinstance(rrr, RRR) and rrr.branch == "right"
-    assert rrp == RRP("C", "F", ("4", "5"), pytest.approx(0.07), Guide((0.0, 0.12), 0.0), "backward")
+    assert rrp == RRP(
+        "C", "F", ("4", "5"), pytest.approx(0.07), Guide((0.0, 0.12), 0.0), "backward"
+    )
     assert rpr == RPR("F", "D", ("6", "7"), "second")
     assert rpr.coincident == ("F7", "F6")
-    assert rpp == RPP("C", "G", ("8", "9"), pytest.approx(math.radians(60)), Guide((0.0, -0.05), 0.0))
+    assert rpp == RPP(
+        "C", "G", ("8", "9"), pytest.approx(math.radians(60)), Guide((0.0, -0.05), 0.0)
+    )
     assert link.points == (LinkPoint("K", "9", ("G",), pytest.approx(0.005), pytest.approx(0.01)),)
     assert link.frame_link == "10"
 
@@ -348,7 +357,9 @@ def test_non_finite_numbers_are_refused(value: str) -> None:
 
 
 def test_undefined_joint() -> None:
-    text = GOOD + """
+    text = (
+        GOOD
+        + """
 [[dyad]]
 type = "RRR"
 joints = ["G", "H", "D"]
@@ -356,11 +367,14 @@ links = ["5", "6"]
 lengths = [50, 50]
 branch = "right"
 """
+    )
     assert message_of(text) == "scene.toml: dyad[1].joints[0]: G is not defined before dyad[1]"
 
 
 def test_joint_defined_by_a_later_dyad_is_named() -> None:
-    text = GOOD + """
+    text = (
+        GOOD
+        + """
 [[dyad]]
 type = "RRR"
 joints = ["F", "H", "D"]
@@ -376,6 +390,7 @@ length = 30
 guide = { through = [0, 0] }
 branch = "forward"
 """
+    )
     assert message_of(text) == (
         "scene.toml: dyad[1].joints[0]: F is not defined before dyad[1] "
         "(dyad[2] defines it: put that first)"
@@ -401,7 +416,9 @@ def test_point_base_must_be_on_its_link() -> None:
 
 
 def test_offset_needs_a_translating_link() -> None:
-    text = GOOD.replace('base = ["B", "C"]\nalong = 188.8\nleft = -5', 'base = ["B"]\noffset = [1, 2]')
+    text = GOOD.replace(
+        'base = ["B", "C"]\nalong = 188.8\nleft = -5', 'base = ["B"]\noffset = [1, 2]'
+    )
     assert "link 3 turns" in message_of(text)
 
 
@@ -428,11 +445,13 @@ def test_too_many_positions() -> None:
     assert message_of(GOOD.replace("angle = 30", f"angle = [{many}]")) == (
         "scene.toml: driver.angle: absurd position count (3601 > 3600)"
     )
-    assert message_of(GOOD.replace("angle = 30", "angle = {start = 0, stop = 360, step = 0.01}")) == (
-        "scene.toml: driver.angle: absurd position count (36000 > 3600)"
-    )
+    assert message_of(
+        GOOD.replace("angle = 30", "angle = {start = 0, stop = 360, step = 0.01}")
+    ) == ("scene.toml: driver.angle: absurd position count (36000 > 3600)")
     # exactly 3600 is fine
-    scene = parse_scene(tomllib.loads(GOOD.replace("angle = 30", "angle = {start = 0, stop = 360, step = 0.1}")))
+    scene = parse_scene(
+        tomllib.loads(GOOD.replace("angle = 30", "angle = {start = 0, stop = 360, step = 0.1}"))
+    )
     assert len(scene.positions.values) == 3600
 
 
@@ -459,7 +478,9 @@ def test_not_utf8(tmp_path: Path) -> None:
     raw = GOOD.replace("φ = 30°", "phi = 30\xb0").encode("latin-1")
     with pytest.raises(SceneError) as info:
         load_scene(write(tmp_path, raw))
-    assert str(info.value) == "scene.toml: line 1: not UTF-8 text (byte 0xb0); save the file as UTF-8"
+    assert (
+        str(info.value) == "scene.toml: line 1: not UTF-8 text (byte 0xb0); save the file as UTF-8"
+    )
 
 
 def test_utf8_with_bom_is_read(tmp_path: Path) -> None:
@@ -478,10 +499,15 @@ def test_missing_unit(tmp_path: Path) -> None:
         "scene.toml: scales.v: unit not stated: write v_m_s_per_mm or set [units] velocity"
     )
     err = problems_of(GOOD.replace('length = "mm"\n', ""))
-    assert ("driver.length", "unit not stated: write length_mm or set [units] length") in err.problems
+    assert (
+        "driver.length",
+        "unit not stated: write length_mm or set [units] length",
+    ) in err.problems
     assert ("frame.D", "unit not stated: write D_mm or set [units] length") in err.problems
     # no cascade: the frame points still count as defined
-    assert not any("not defined" in reason or "not a frame point" in reason for _, reason in err.problems)
+    assert not any(
+        "not defined" in reason or "not a frame point" in reason for _, reason in err.problems
+    )
 
 
 def test_unit_that_does_not_fit() -> None:
@@ -516,7 +542,9 @@ def test_all_problems_are_collected() -> None:
 def test_header_problems() -> None:
     text = GOOD.replace(
         'title = "Four-bar, φ = 30°"\nshow = ["mechanism", "velocity"]\nfind = ["v_C", "omega_3"]',
-        'title = "' + "x" * 201 + '"\nshow = ["velocity", "velocity", "speed"]\nfind = ["v_C", "", "v_C"]',
+        'title = "'
+        + "x" * 201
+        + '"\nshow = ["velocity", "velocity", "speed"]\nfind = ["v_C", "", "v_C"]',
     )
     assert problems_of(text).problems == [
         ("title", "too long (201 characters; at most 200)"),
@@ -539,7 +567,9 @@ def test_wrong_types() -> None:
 
 
 def test_rpp_slot_parallel_to_guide() -> None:
-    text = GOOD + """
+    text = (
+        GOOD
+        + """
 [[dyad]]
 type = "RPP"
 joints = ["C", "G"]
@@ -547,6 +577,7 @@ links = ["5", "6"]
 slot_angle = 180
 guide = { through = [0, 0], angle = 0 }
 """
+    )
     assert message_of(text) == (
         "scene.toml: dyad[1].slot_angle: the slot is parallel to the guide: the dyad cannot move"
     )
@@ -564,14 +595,20 @@ def test_dyad_branch_is_required() -> None:
 
 
 def test_ranges_expand_with_stop_excluded() -> None:
-    scene = parse_scene(tomllib.loads(GOOD.replace("angle = 30", "angle = {start = 0, stop = 360, step = 30}")))
+    scene = parse_scene(
+        tomllib.loads(GOOD.replace("angle = 30", "angle = {start = 0, stop = 360, step = 30}"))
+    )
     assert scene.positions.labels == tuple(str(a) for a in range(0, 360, 30))
     assert scene.positions.values == pytest.approx([math.radians(a) for a in range(0, 360, 30)])
 
-    down = parse_scene(tomllib.loads(GOOD.replace("angle = 30", "angle = {start = 90, stop = -1, step = -45}")))
+    down = parse_scene(
+        tomllib.loads(GOOD.replace("angle = 30", "angle = {start = 90, stop = -1, step = -45}"))
+    )
     assert down.positions.labels == ("90", "45", "0")
 
-    tenths = parse_scene(tomllib.loads(GOOD.replace("angle = 30", "angle = {start = 0.1, stop = 0.4, step = 0.1}")))
+    tenths = parse_scene(
+        tomllib.loads(GOOD.replace("angle = 30", "angle = {start = 0.1, stop = 0.4, step = 0.1}"))
+    )
     assert tenths.positions.labels == ("0.1", "0.2", "0.3")  # 0.30000000000000004 is written 0.3
 
 
@@ -588,7 +625,9 @@ def test_range_problems() -> None:
 
 
 def test_position_labels_are_compact_and_unique() -> None:
-    scene = parse_scene(tomllib.loads(GOOD.replace("angle = 30", "angle = [50, 12.5, 220.0, -0.0]")))
+    scene = parse_scene(
+        tomllib.loads(GOOD.replace("angle = 30", "angle = [50, 12.5, 220.0, -0.0]"))
+    )
     assert scene.positions.labels == ("50", "12.5", "220", "0")
     assert message_of(GOOD.replace("angle = 30", "angle = [50, 220, 50.0]")) == (
         "scene.toml: driver.angle[2]: position 50 is given twice"
@@ -602,8 +641,10 @@ def test_frame_link_default_and_explicit() -> None:
     assert parse_scene(tomllib.loads(GOOD)).linkage.frame_link == "5"
     explicit = GOOD.replace("[frame]", '[frame]\nlink = "1"')
     assert parse_scene(tomllib.loads(explicit)).linkage.frame_link == "1"
-    lettered = GOOD.replace('link = "2"', 'link = "a"').replace('["3", "4"]', '["b", "c"]').replace(
-        'link = "3"', 'link = "b"'
+    lettered = (
+        GOOD.replace('link = "2"', 'link = "a"')
+        .replace('["3", "4"]', '["b", "c"]')
+        .replace('link = "3"', 'link = "b"')
     )
     assert parse_scene(tomllib.loads(lettered)).linkage.frame_link == "0"
     clash = GOOD.replace("[frame]", '[frame]\nlink = "3"')
@@ -611,7 +652,9 @@ def test_frame_link_default_and_explicit() -> None:
 
 
 def test_measured_table_is_kept_raw_and_in_order() -> None:
-    text = GOOD.replace("angle = 30", "angle = [30, 60]") + """
+    text = (
+        GOOD.replace("angle = 30", "angle = [30, 60]")
+        + """
 [measured]
 pc = 52
 "v_C@30" = 0.26
@@ -624,6 +667,7 @@ a_k_C2C3 = 1.25
 [check]
 precision_mm = 0.25
 """
+    )
     scene = parse_scene(tomllib.loads(text))
     assert scene.measured == (
         ("pc", 52.0),
@@ -638,7 +682,9 @@ precision_mm = 0.25
 
 
 def test_measured_problems() -> None:
-    text = GOOD + """
+    text = (
+        GOOD
+        + """
 [measured]
 "v_C@50" = 1
 "<b>" = 2
@@ -648,6 +694,7 @@ pc = "52"
 [check]
 precision_mm = 0
 """
+    )
     err = problems_of(text)
     assert err.problems == [
         ("measured.v_C@50", "no position is labelled 50 (positions: 30)"),
@@ -681,11 +728,15 @@ def test_bad_page() -> None:
         "scene.toml: page.size: unknown paper 'a3': use A4, A4-portrait, A3 or A3-portrait "
         "or [width, height] in mm (did you mean A3?)"
     )
-    assert message_of(GOOD + "\n[page]\nsize = [0, 100]\n") == "scene.toml: page.size[0]: must be > 0"
+    assert (
+        message_of(GOOD + "\n[page]\nsize = [0, 100]\n") == "scene.toml: page.size[0]: must be > 0"
+    )
 
 
 def test_problems_come_in_file_order() -> None:
-    text = GOOD.replace("[units]", "[page]\nsize = 3\n\n[units]").replace("length = 60", "length = 0")
+    text = GOOD.replace("[units]", "[page]\nsize = 3\n\n[units]").replace(
+        "length = 60", "length = 0"
+    )
     err = problems_of(text)
     assert [p for p, _ in err.problems] == ["page.size", "driver.length"]
 
@@ -705,9 +756,14 @@ def test_docs_have_an_example_of_every_feature() -> None:
     dyad_types = {type(d) for s in scenes for d in s.linkage.dyads}
     assert dyad_types == {RRR, RRP, RPR, RPP}
     assert {type(s.linkage.driver) for s in scenes} == {Crank, SliderInput}
-    assert {d.bar for s in scenes for d in s.linkage.dyads if isinstance(d, RPR)} == {"first", "second"}
+    assert {d.bar for s in scenes for d in s.linkage.dyads if isinstance(d, RPR)} == {
+        "first",
+        "second",
+    }
     assert any(len(s.positions.values) == 12 for s in scenes)  # a range
-    assert any(len(s.positions.values) > 1 for s in scenes if isinstance(s.linkage.driver, SliderInput))
+    assert any(
+        len(s.positions.values) > 1 for s in scenes if isinstance(s.linkage.driver, SliderInput)
+    )
     assert any(s.measured for s in scenes)
     assert any(s.linkage.points for s in scenes)
     assert any(len(p.base) == 1 for s in scenes for p in s.linkage.points)  # an offset point
@@ -779,7 +835,9 @@ toml_values = st.recursive(
     | st.floats(allow_nan=True, allow_infinity=True)
     | st.text(max_size=8)
     | st.sampled_from(["A", "B", "C", "D", "2", "mm", "deg", "RRR", "left", "crank", "slider"]),
-    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=6), inner, max_size=4),
+    lambda inner: (
+        st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=6), inner, max_size=4)
+    ),
     max_leaves=12,
 )
 
