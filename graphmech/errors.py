@@ -55,4 +55,12 @@ class DegenerateConstruction(GraphmechError, ArithmeticError):
 
 
 class AssemblyError(DegenerateConstruction):
-    """The linkage cannot be assembled at a position (a dyad's joints cannot meet)."""
+    """The linkage cannot be assembled at a position (a dyad's joints cannot meet).
+
+    The message reads ``step: cannot be assembled at φ₁ = 170°: |BD| = 0.21 m > l2 + l3 = 0.2 m``.
+    """
+
+    def __init__(self, step: str, reason: str, position: str | None = None) -> None:
+        super().__init__(step, reason, position)
+        at = f" at {position}" if position else ""
+        self.args = (f"{step}: cannot be assembled{at}: {reason}",)

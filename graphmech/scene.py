@@ -394,7 +394,8 @@ class _Reader:
             return value
         self.problem(
             path,
-            f'must be a link number such as "2", not {_say(value) if isinstance(value, str) else _type_name(value)}',
+            'must be a link number such as "2", not '
+            + (_say(value) if isinstance(value, str) else _type_name(value)),
         )
         return None
 
@@ -538,7 +539,9 @@ class _Reader:
                 self.problem(path, f"absurd position count ({len(value)} > {MAX_POSITIONS})")
                 return None
             items = [self.number(v, f"{path}[{i}]") for i, v in enumerate(value)]
-            written = None if any(x is None for x in items) else items
+            written = [x for x in items if x is not None]
+            if len(written) < len(items):
+                return None
         else:
             x = self.number(value, path)
             written = None if x is None else [x]
@@ -852,7 +855,10 @@ def _read_dyad(r: _Reader, index: int, frame: _Frame) -> _Part:
             part.defines.append((n, joints[k][1]))
 
     def need(*ks: int) -> None:
-        part.needs.extend((joints[k][0], joints[k][1]) for k in ks if joints[k][0] is not None)
+        for k in ks:
+            n, path = joints[k]
+            if n is not None:
+                part.needs.append((n, path))
 
     if kind == "RRR":
         p, c, q = names
@@ -966,10 +972,12 @@ def _read_point(r: _Reader, index: int) -> _Part:
     elif ok:  # U + along·û + left·n̂
         along = r.scalar("along", "length")
         left = r.scalar("left", "length", required=False, default=0.0)
-        key = r.present("offset")
-        if key is not None:
-            r.used.add(key)
-            r.problem(r.at(key), "offset needs a single base point; with two give along/left")
+        offset_key = r.present("offset")
+        if offset_key is not None:
+            r.used.add(offset_key)
+            r.problem(
+                r.at(offset_key), "offset needs a single base point; with two give along/left"
+            )
     else:  # base is broken: still read the rest so that it is not reported as unknown
         for extra in ("along", "left", "offset"):
             r.quantity(extra, "length", required=False)
@@ -1091,7 +1099,8 @@ def _check_structure(
                 problems.append(
                     (
                         path,
-                        f"link {link} is already used by {owner[link]}; each dyad adds two new links",
+                        f"link {link} is already used by {owner[link]}; "
+                        "each dyad adds two new links",
                     )
                 )
             owner.setdefault(link, part.where)
@@ -1100,10 +1109,10 @@ def _check_structure(
 
     # Points, in file order: on an existing moving link, placed from that link's points.
     for part in points:
-        (link, link_path), bases = part.on or (None, ""), part.needs
+        (on, on_path), bases = part.on or (None, ""), part.needs
         level = 0
         for base, path in bases:
-            if link is None or link not in carried:
+            if on is None or on not in carried:
                 continue
             if base not in origin:
                 later = next(
@@ -1116,36 +1125,36 @@ def _check_structure(
                 )
                 tip = f" ({later} defines it: list that point first)" if later else ""
                 problems.append((path, f"{base} is not defined before {part.where}{tip}"))
-            elif base not in carried[link]:
+            elif base not in carried[on]:
                 problems.append(
                     (
                         path,
-                        f"{base} is not a point of link {link} (it carries {', '.join(carried[link])})",
+                        f"{base} is not a point of link {on} (it carries {', '.join(carried[on])})",
                     )
                 )
             else:
                 level = max(level, stage[base])
-        if link is not None and link not in carried:
-            if link == frame_link[0]:
-                problems.append((link_path, "a point on the frame belongs in [frame]"))
+        if on is not None and on not in carried:
+            if on == frame_link[0]:
+                problems.append((on_path, "a point on the frame belongs in [frame]"))
             else:
                 problems.append(
                     (
-                        link_path,
-                        f"link {link} does not exist (links: {', '.join(carried) or 'none'})",
+                        on_path,
+                        f"link {on} does not exist (links: {', '.join(carried) or 'none'})",
                     )
                 )
-        elif link is not None and len(bases) == 1 and link not in translating:
+        elif on is not None and len(bases) == 1 and on not in translating:
             problems.append(
                 (
-                    link_path,
-                    f"link {link} turns: an offset from one base point needs a translating "
+                    on_path,
+                    f"link {on} turns: an offset from one base point needs a translating "
                     "link (a slider); give base = [U, V] with along/left",
                 )
             )
         define(part, level)
-        if link is not None and link in carried:
-            carry(_Part(part.where, carries=[(link, [n for n, _ in part.defines])]))
+        if on is not None and on in carried:
+            carry(_Part(part.where, carries=[(on, [n for n, _ in part.defines])]))
 
     # Dyads' outer joints: defined by the frame, the driver or an earlier dyad (or a point
     # placed from those).
@@ -1160,11 +1169,11 @@ def _check_structure(
             problems.append((path, f"{name} is not defined before {part.where}{tip}"))
 
     # The frame link.
-    link, explicit = frame_link
+    fixed, explicit = frame_link
     if explicit:
-        if link is not None and link in owner:
-            problems.append(("frame.link", f"link {link} is a moving link ({owner[link]})"))
-        return link
+        if fixed is not None and fixed in owner:
+            problems.append(("frame.link", f"link {fixed} is a moving link ({owner[fixed]})"))
+        return fixed
     numeric = [int(x) for x in owner if x.isdigit()]
     return str(max(numeric) + 1) if numeric else "0"
 
@@ -1220,14 +1229,18 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     (0.05, ('0', '90'), '2')
     >>> round(scene.linkage.driver.omega, 6)
     6.283185
-    >>> parse_scene({
-    ...     "frame": {"A_mm": [0, 0]},
-    ...     "driver": {"type": "crank", "link": 1, "pivot": "A", "tip": "B",
-    ...                "lenght_mm": 50, "angle_deg": 30, "omega_rad_s": 10},
-    ... }, "bad.toml")
-    Traceback (most recent call last):
-    ...
-    graphmech.errors.SceneError: bad.toml: driver.lenght_mm: unknown key; did you mean length_mm? (and 1 more)
+    >>> from graphmech.errors import SceneError
+    >>> try:
+    ...     parse_scene({
+    ...         "frame": {"A_mm": [0, 0]},
+    ...         "driver": {"type": "crank", "link": 1, "pivot": "A", "tip": "B",
+    ...                    "lenght_mm": 50, "angle_deg": 30, "omega_rad_s": 10},
+    ...     }, "bad.toml")
+    ... except SceneError as err:
+    ...     print(err)
+    ...     print(err.problems[1])
+    bad.toml: driver.lenght_mm: unknown key; did you mean length_mm? (and 1 more)
+    ('driver.length', 'missing: write length_mm (or length with [units] length)')
     """
     problems: list[tuple[str, str]] = []
     if not isinstance(data, dict):

@@ -109,7 +109,8 @@ class ArrayOps:
             # Only the first step that fails at a position is that position's reason.
             new = bad & ~self.bad
             if new.any():
-                self.failures[self.step] = (new.copy(), _text(reason))
+                text = _text(reason)
+                self.failures[self.step] = (new.copy(), f"cannot be assembled: {text}" if assembly else text)
             self.bad = self.bad | bad
         return bad
 

@@ -66,9 +66,8 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
         s = f"l{i} + l{j} = {(r1 + r2) * mu:.4g} m"
         dd = f"|{P}{Q}| = {d * mu:.4g} m" if not hasattr(d, "shape") else f"|{P}{Q}|"
         if not hasattr(d, "shape") and d < abs(r1 - r2):
-            return f"cannot be assembled: {dd} < |l{i} − l{j}| = {abs(r1 - r2) * mu:.4g} m"
-        return f"cannot be assembled: {dd} > {s}" if not hasattr(d, "shape") else \
-            f"cannot be assembled: {dd} is not between |l{i} − l{j}| and {s}"
+            return f"{dd} < |l{i} − l{j}| = {abs(r1 - r2) * mu:.4g} m"
+        return f"{dd} > {s}" if not hasattr(d, "shape") else f"{dd} is not between |l{i} − l{j}| and {s}"
 
     def joint(ops: Any, p: tuple, q: tuple) -> tuple:
         return K.intersect_circles(ops, p, r1, q, r2, side, explain)
@@ -95,9 +94,8 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
 
     def explain(e: Any) -> str:
         if hasattr(e, "shape"):
-            return f"cannot be assembled: {P} is farther than l{y.links[0]} from the guide"
-        return (f"cannot be assembled: {P} is {e * mu:.4g} m from the guide > "
-                f"l{y.links[0]} = {y.length:.4g} m")
+            return f"{P} is farther than l{y.links[0]} from the guide"
+        return f"{P} is {e * mu:.4g} m from the guide > l{y.links[0]} = {y.length:.4g} m"
 
     def joint(ops: Any, p: tuple) -> tuple:
         return K.intersect_circle_line(ops, p, r, line, side, explain)
