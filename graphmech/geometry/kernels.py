@@ -180,9 +180,9 @@ def intersect_lines(ops: Ops, l1: tuple, l2: tuple) -> tuple:
     qx, qy, ex, ey = l2
     det = dx * ey - dy * ex
     adet = ops.absolute(det)
-    bad = adet < PARALLEL_SIN
-    det = ops.fix(bad, det, 1.0, "the two lines are parallel: no intersection")
-    adet = ops.fix(bad, adet, 1.0, "the two lines are parallel: no intersection")
+    if ops.batch or adet < PARALLEL_SIN:
+        det = ops.fix(adet < PARALLEL_SIN, det, 1.0, "the two lines are parallel: no intersection")
+        adet = ops.absolute(det)
     ops.cond(1.0 / adet)
     t = ((qx - px) * ey - (qy - py) * ex) / det
     return (px + t * dx, py + t * dy)

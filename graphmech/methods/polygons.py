@@ -15,7 +15,7 @@ step; :meth:`Construction.prune` later keeps only what is asked for.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from graphmech.construction import Construction
@@ -90,11 +90,22 @@ def build_polygons(linkage: Linkage, scales: dict[str, float]) -> LinkageConstru
     diagram.add_frame(b)
     velocity.add_pole(b)
     acceleration.add_pole(b)
-    # The driver, then each dyad in order, then the extra points — each through all three figures.
-    for part in (linkage.driver, *linkage.dyads, *linkage.points):
+    # The driver, then each dyad in order — each through all three figures. An extra point is
+    # placed as soon as its base points are, so a later dyad may hang on it (six-bars).
+    pending = list(linkage.points)
+
+    def place(part: Any) -> None:
         diagram.add(b, part)
         velocity.add(b, part)
         acceleration.add(b, part)
+
+    for part in (linkage.driver, *linkage.dyads):
+        place(part)
+        while (ready := next((p for p in pending if all(u in b.mech for u in p.base)), None)):
+            pending.remove(ready)
+            place(ready)
+    for pt in pending:  # base points never placed: let the step graph name what is missing
+        place(pt)
     add_point_quantities(b)
     return b
 
@@ -117,6 +128,9 @@ def add_point_quantities(b: LinkageConstruction) -> None:
         measure.link_angle(b, link)
     for x, y in b.coincident:
         measure.relative(b, x, y)
+    for name, q in list(b.quantities.items()):  # many books write ε for angular acceleration
+        if name.startswith("alpha_"):
+            b.quantity(replace(q, name="epsilon_" + name[len("alpha_"):]))
     for y in b.linkage.dyads:
         if isinstance(y, RPR):  # the bar's length between the pivots, l_BC, as the book reads it
             measure.length(b, y.bar_pivot, y.block_pivot)
