@@ -25,6 +25,7 @@ from pathlib import Path
 from typing import Any, Iterable, Mapping
 
 from graphmech.errors import SceneError
+from graphmech.scales import PAPER
 from graphmech.mechanisms.linkage import (
     RPP,
     RPR,
@@ -48,13 +49,8 @@ MAX_POSITIONS = 3600
 MAX_TITLE = 200
 #: What a scene may show, in the order a textbook draws them.
 SHOW_CHOICES = ("mechanism", "velocity", "acceleration")
-#: Named paper sizes, (width, height) in mm.
-PAPER_SIZES: dict[str, tuple[float, float]] = {
-    "A4": (297.0, 210.0),
-    "A4-portrait": (210.0, 297.0),
-    "A3": (420.0, 297.0),
-    "A3-portrait": (297.0, 420.0),
-}
+#: Named paper sizes, (width, height) in mm: one table for the whole package.
+PAPER_SIZES = PAPER
 
 
 @dataclass(frozen=True)

@@ -29,6 +29,7 @@ from typing import Union
 import numpy as np
 
 from graphmech.errors import SceneError
+from graphmech.tolerances import PARALLEL_SIN, TANGENT_REL
 from graphmech.mechanisms.linkage import (
     RPP,
     RPR,
@@ -42,13 +43,10 @@ from graphmech.mechanisms.linkage import (
 
 __all__ = ["Kinematics", "solve"]
 
-#: Relative discriminant (``sin²`` of the dyad's angle at its outer joint) down to which two
-#: circles, or a circle and a guide, still count as touching. Equal to
-#: ``graphmech.tolerances.TANGENT_REL`` on purpose, but written here so the check stays independent.
-TANGENT_REL = 1e-9
-
-#: |sin| of the slot–guide angle of an RPP dyad below which the two lines count as parallel.
-PARALLEL_SIN = 1e-13
+# Tolerances are shared (one place for all of them); the *computation* here shares nothing with
+# the construction. TANGENT_REL: relative discriminant (sin² of the dyad's angle at its outer
+# joint) down to which two circles, or a circle and a guide, still count as touching.
+# PARALLEL_SIN: |sin| of an RPP's slot–guide angle below which the lines count as parallel.
 
 #: Relative size below which two pivots count as coincident.
 _COINCIDENT_REL = 1e-12
