@@ -29,7 +29,7 @@ import numpy as np
 
 from graphmech.geometry.kernels import ArrayOps, ScalarOps
 
-Kind = Literal["point", "line", "circle", "vector", "scalar", "param"]
+Kind = Literal["point", "line", "circle", "vector", "segment", "scalar", "param"]
 Role = Literal["given", "construction", "result", "label", "hidden"]
 
 
@@ -42,8 +42,9 @@ class Step:
     name : str
         Slot name, unique in the construction (``"c"``, ``"⟂BC through b"``).
     kind : str
-        What it makes: point, line, circle, vector (drawn from its first to its second
-        input; no computation), scalar (a measurement) or param.
+        What it makes: point, line, circle, vector (drawn as an arrow from its first to its
+        second input; no computation), segment (the same without an arrowhead), scalar (a
+        measurement) or param.
     kernel : callable or None
         ``kernel(ops, *input_values) -> value``; None for vectors and params.
     inputs : tuple of str

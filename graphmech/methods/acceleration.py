@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.methods import elements as E
 from graphmech.methods import measure
 from graphmech.methods.quantities import Quantity
 
@@ -53,14 +54,8 @@ def _image(b: "LinkageConstruction", point: str, kernel: Any, inputs: tuple, tex
     return b.acc[point]
 
 
-def _vector(b: "LinkageConstruction", start: str, end: str, role: str = "result") -> None:
-    name = f"a:{start}->{end}"
-    if start != end and not b.g.has(name):
-        b.g.add(name, "vector", None, (start, end), role=role, text=f"vector {start}{end}", panel=PANEL)
 
 
-def _line(b: "LinkageConstruction", name: str, kernel: Any, inputs: tuple, text: str) -> str:
-    return b.g.add(f"a:{name}", "line", kernel, inputs, role="construction", text=text, panel=PANEL)
 
 
 def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
@@ -80,20 +75,20 @@ def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
     n = b.g.add(f"a:{tag}", "point", kern, (b.acc[Y], b.mech[X], b.mech[Y], b.omega[link]),
                 role="construction", panel=PANEL, label=tag,
                 text=f"lay off {_lbl(b, b.acc[Y])}{tag} = ω{link}²·l_{X}{Y}/μa ∥ {X}{Y}")
-    _vector(b, b.acc[Y], n, "construction")
+    E.vector(b, PANEL, b.acc[Y], n, "construction")
     measure.component(b, f"a_{X}{Y}_n", b.acc[Y], n, ("normal", X, Y, link))
     return n
 
 
 def _tangential_line(b: "LinkageConstruction", n: str, X: str, Y: str) -> str:
-    return _line(b, f"⟂{Y}{X}@{_lbl(b, n)}",
+    return E.line(b, PANEL, f"⟂{Y}{X}@{_lbl(b, n)}",
                  K.line_perpendicular,
                  (n, b.mech[Y], b.mech[X]), f"through {_lbl(b, n)} draw ⟂ {Y}{X} (a^t_{X}{Y})")
 
 
 def _close(b: "LinkageConstruction", link: str, X: str, Y: str, n: str, img: str) -> None:
     """Draw and measure the tangential component n→img and read α of the link from it."""
-    _vector(b, n, img, "construction")
+    E.vector(b, PANEL, n, img, "construction")
     measure.component(b, f"a_{X}{Y}_t", n, img, ("tangential", X, Y, link))
     measure.alpha(b, link, Y, X, n, img)
 
@@ -110,7 +105,7 @@ def _crank(b: "LinkageConstruction", d: Crank) -> None:
 
     img = _image(b, B, tip, (POLE, b.mech[A], b.mech[B]),
                  f"p′{label(B)} = a_{B}: ω{d.link}²·l_{A}{B}/μa ∥ {B}{A} + ε{d.link}·l_{A}{B}/μa ⟂ {A}{B}")
-    _vector(b, POLE, img)
+    E.vector(b, PANEL, POLE, img)
     if eps != 0.0:
         n = _normal(b, d.link, B, A)
         _close(b, d.link, B, A, n, img)
@@ -128,7 +123,7 @@ def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
     k = d.acceleration / b.scales["a"]
     img = _image(b, d.point, lambda ops, p: (p[0] + k * gx, p[1] + k * gy), (POLE,),
                  f"p′{label(d.point)} ∥ guide, = a/μa")
-    _vector(b, POLE, img)
+    E.vector(b, PANEL, POLE, img)
 
 
 def _rrr(b: "LinkageConstruction", y: RRR) -> None:
@@ -142,7 +137,7 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
                  f"{label(C)} = (⟂{P}{C} through {_lbl(b, ni)}) ∩ (⟂{Q}{C} through {_lbl(b, nj)})")
     b.g.extend_line(li, img)
     b.g.extend_line(lj, img)
-    _vector(b, POLE, img)
+    E.vector(b, PANEL, POLE, img)
     _close(b, i, C, P, ni, img)
     _close(b, j, C, Q, nj, img)
 
@@ -152,13 +147,13 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     gx, gy = y.guide.direction
     n = _normal(b, y.links[0], C, P)
     lt = _tangential_line(b, n, C, P)
-    lg = _line(b, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
+    lg = E.line(b, PANEL, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p′ draw ∥ the guide of {C}")
     img = _image(b, C, K.intersect_lines, (lt, lg),
                  f"{label(C)} = (⟂{P}{C} through {_lbl(b, n)}) ∩ (∥ guide through p′)")
     b.g.extend_line(lt, img)
     b.g.extend_line(lg, img)
-    _vector(b, POLE, img)
+    E.vector(b, PANEL, POLE, img)
     _close(b, y.links[0], C, P, n, img)
 
 
@@ -183,15 +178,15 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     k = b.g.add(f"a:{ktag}", "point", coriolis, (b.acc[X], b.vel[xbar], b.vel[xblock], b.omega[bar]),
                 role="construction", panel=PANEL, label=ktag,
                 text=f"lay off {_lbl(b, b.acc[X])}{ktag} = 2ω{bar}·v_{xbar}{xblock}/μa (Coriolis)")
-    _vector(b, b.acc[X], k, "construction")
-    lr = _line(b, f"∥{Bp}{X}@{ktag}", K.line_parallel,
+    E.vector(b, PANEL, b.acc[X], k, "construction")
+    lr = E.line(b, PANEL, f"∥{Bp}{X}@{ktag}", K.line_parallel,
                (k, b.mech[Bp], b.mech[X]), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})")
     img = _image(b, xbar, K.intersect_lines, (lt, lr),
                  f"{label(xbar)} = (⟂{Bp}{X} through {_lbl(b, n)}) ∩ (∥{Bp}{X} through {ktag})")
     b.g.extend_line(lt, img)
     b.g.extend_line(lr, img)
-    _vector(b, POLE, img)
-    _vector(b, k, img, "construction")
+    E.vector(b, PANEL, POLE, img)
+    E.vector(b, PANEL, k, img, "construction")
     _close(b, bar, xbar, Bp, n, img)
     b.alpha[y.block_link] = b.alpha[bar]
     q = b.quantities[f"alpha_{bar}"]
@@ -204,9 +199,9 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     P, C = y.p, y.c
     gx, gy = y.guide.direction
     sx, sy = math.cos(y.slot_angle), math.sin(y.slot_angle)
-    lg = _line(b, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
+    lg = E.line(b, PANEL, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p′ draw ∥ the guide of {C}")
-    ls = _line(b, f"∥slot@{_lbl(b, b.acc[P])}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.acc[P],),
+    ls = E.line(b, PANEL, f"∥slot@{_lbl(b, b.acc[P])}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.acc[P],),
                f"through {_lbl(b, b.acc[P])} draw ∥ the slot")
     img = _image(b, C, K.intersect_lines, (lg, ls),
                  f"{label(C)} = (∥ guide through p′) ∩ (∥ slot through {_lbl(b, b.acc[P])})")
@@ -215,8 +210,8 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     pblock, pslot = y.coincident
     b.acc[pblock] = b.acc[P]
     b.acc[pslot] = img
-    _vector(b, POLE, img)
-    _vector(b, img, b.acc[P], "construction")
+    E.vector(b, PANEL, POLE, img)
+    E.vector(b, PANEL, img, b.acc[P], "construction")
 
 
 def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
@@ -227,6 +222,6 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
     img = _image(b, pt.name, K.similar_point,
                  (b.mech[U], b.mech[V], b.mech[pt.name], b.acc[U], b.acc[V]),
                  f"{label(pt.name)}: △{label(U)}{label(V)}{label(pt.name)} ∼ △{U}{V}{pt.name} (acceleration image)")
-    _vector(b, POLE, img)
-    _vector(b, b.acc[U], img, "construction")
-    _vector(b, b.acc[V], img, "construction")
+    E.vector(b, PANEL, POLE, img)
+    E.vector(b, PANEL, b.acc[U], img, "construction", kind="segment")
+    E.vector(b, PANEL, b.acc[V], img, "construction", kind="segment")

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.methods import elements as E
 from graphmech.methods import measure
 
 if TYPE_CHECKING:
@@ -50,15 +51,8 @@ def _image(b: "LinkageConstruction", point: str, kernel: Any, inputs: tuple, tex
     return b.vel[point]
 
 
-def _vector(b: "LinkageConstruction", start: str, end: str, role: str = "result") -> None:
-    name = f"v:{start}->{end}"
-    if start != end and not b.g.has(name):
-        b.g.add(name, "vector", None, (start, end), role=role, text=f"vector {start}{end}",
-                panel=PANEL)
 
 
-def _line(b: "LinkageConstruction", name: str, kernel: Any, inputs: tuple, text: str) -> str:
-    return b.g.add(f"v:{name}", "line", kernel, inputs, role="construction", text=text, panel=PANEL)
 
 
 def _crank(b: "LinkageConstruction", d: Crank) -> None:
@@ -69,7 +63,7 @@ def _crank(b: "LinkageConstruction", d: Crank) -> None:
 
     img = _image(b, d.tip, tip, (POLE, b.mech[d.pivot], b.mech[d.tip]),
                  f"p{label(d.tip)} ⟂ {d.pivot}{d.tip}, p{label(d.tip)} = ω{d.link}·l_{d.pivot}{d.tip}/μv")
-    _vector(b, POLE, img)
+    E.vector(b, PANEL, POLE, img)
     measure.omega(b, d.link, d.pivot, d.tip)
 
 
@@ -78,24 +72,24 @@ def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
     k = d.velocity / b.scales["v"]
     img = _image(b, d.point, lambda ops, p: (p[0] + k * gx, p[1] + k * gy), (POLE,),
                  f"p{label(d.point)} ∥ guide, p{label(d.point)} = v/μv")
-    _vector(b, POLE, img)
+    E.vector(b, PANEL, POLE, img)
     measure.zero_rate(b, d.link)
 
 
 def _rrr(b: "LinkageConstruction", y: RRR) -> None:
     P, C, Q = y.p, y.c, y.q
     lp, lq, lc = _img_label(b, P), _img_label(b, Q), label(C)
-    li = _line(b, f"⟂{P}{C}@{lp}", K.line_perpendicular,
+    li = E.line(b, PANEL, f"⟂{P}{C}@{lp}", K.line_perpendicular,
                (b.vel[P], b.mech[P], b.mech[C]), f"through {lp} draw ⟂ {P}{C}")
-    lj = _line(b, f"⟂{Q}{C}@{lq}", K.line_perpendicular,
+    lj = E.line(b, PANEL, f"⟂{Q}{C}@{lq}", K.line_perpendicular,
                (b.vel[Q], b.mech[Q], b.mech[C]), f"through {lq} draw ⟂ {Q}{C}")
     img = _image(b, C, K.intersect_lines, (li, lj),
                  f"{lc} = (⟂{P}{C} through {lp}) ∩ (⟂{Q}{C} through {lq})")
     b.g.extend_line(li, img)
     b.g.extend_line(lj, img)
-    _vector(b, POLE, img)
-    _vector(b, b.vel[P], img)
-    _vector(b, b.vel[Q], img)
+    E.vector(b, PANEL, POLE, img)
+    E.vector(b, PANEL, b.vel[P], img)
+    E.vector(b, PANEL, b.vel[Q], img)
     measure.omega(b, y.links[0], P, C)
     measure.omega(b, y.links[1], Q, C)
 
@@ -104,16 +98,16 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     P, C = y.p, y.c
     gx, gy = y.guide.direction
     lp, lc = _img_label(b, P), label(C)
-    li = _line(b, f"⟂{P}{C}@{lp}", K.line_perpendicular,
+    li = E.line(b, PANEL, f"⟂{P}{C}@{lp}", K.line_perpendicular,
                (b.vel[P], b.mech[P], b.mech[C]), f"through {lp} draw ⟂ {P}{C}")
-    lg = _line(b, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
+    lg = E.line(b, PANEL, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p draw ∥ the guide of {C}")
     img = _image(b, C, K.intersect_lines, (li, lg),
                  f"{lc} = (⟂{P}{C} through {lp}) ∩ (∥ guide through p)")
     b.g.extend_line(li, img)
     b.g.extend_line(lg, img)
-    _vector(b, POLE, img)
-    _vector(b, b.vel[P], img)
+    E.vector(b, PANEL, POLE, img)
+    E.vector(b, PANEL, b.vel[P], img)
     measure.omega(b, y.links[0], P, C)
     measure.zero_rate(b, y.links[1])
 
@@ -124,17 +118,17 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     xbar, xblock = y.coincident
     b.vel[xblock] = b.vel[X]
     lp, lx, lc = _img_label(b, Bp), _img_label(b, X), label(xbar)
-    lt = _line(b, f"⟂{Bp}{X}@{lp}", K.line_perpendicular,
+    lt = E.line(b, PANEL, f"⟂{Bp}{X}@{lp}", K.line_perpendicular,
                (b.vel[Bp], b.mech[Bp], b.mech[X]), f"through {lp} draw ⟂ {Bp}{X}")
-    lr = _line(b, f"∥{Bp}{X}@{lx}", K.line_parallel,
+    lr = E.line(b, PANEL, f"∥{Bp}{X}@{lx}", K.line_parallel,
                (b.vel[X], b.mech[Bp], b.mech[X]), f"through {lx} draw ∥ {Bp}{X}")
     img = _image(b, xbar, K.intersect_lines, (lt, lr),
                  f"{lc} = (⟂{Bp}{X} through {lp}) ∩ (∥{Bp}{X} through {lx})")
     b.g.extend_line(lt, img)
     b.g.extend_line(lr, img)
-    _vector(b, POLE, img)
-    _vector(b, b.vel[Bp], img)
-    _vector(b, b.vel[X], img)
+    E.vector(b, PANEL, POLE, img)
+    E.vector(b, PANEL, b.vel[Bp], img)
+    E.vector(b, PANEL, b.vel[X], img)
     measure.omega(b, y.bar_link, Bp, xbar)
     measure.same_rate(b, y.block_link, y.bar_link)
     b.coincident.append((xbar, xblock))
@@ -146,9 +140,9 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     gx, gy = y.guide.direction
     sx, sy = math.cos(y.slot_angle), math.sin(y.slot_angle)
     lp, lc = _img_label(b, P), label(C)
-    lg = _line(b, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
+    lg = E.line(b, PANEL, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p draw ∥ the guide of {C}")
-    ls = _line(b, f"∥slot@{lp}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.vel[P],),
+    ls = E.line(b, PANEL, f"∥slot@{lp}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.vel[P],),
                f"through {lp} draw ∥ the slot")
     img = _image(b, C, K.intersect_lines, (lg, ls),
                  f"{lc} = (∥ guide through p) ∩ (∥ slot through {lp})")
@@ -157,8 +151,8 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     pblock, pslot = y.coincident
     b.vel[pblock] = b.vel[P]
     b.vel[pslot] = img
-    _vector(b, POLE, img)
-    _vector(b, img, b.vel[P])
+    E.vector(b, PANEL, POLE, img)
+    E.vector(b, PANEL, img, b.vel[P])
     measure.zero_rate(b, y.links[0])
     measure.zero_rate(b, y.links[1])
     b.coincident.append((pblock, pslot))
@@ -172,6 +166,6 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
     img = _image(b, pt.name, K.similar_point,
                  (b.mech[U], b.mech[V], b.mech[pt.name], b.vel[U], b.vel[V]),
                  f"{label(pt.name)}: △{label(U)}{label(V)}{label(pt.name)} ∼ △{U}{V}{pt.name} (velocity image)")
-    _vector(b, POLE, img)
-    _vector(b, b.vel[U], img, "construction")
-    _vector(b, b.vel[V], img, "construction")
+    E.vector(b, PANEL, POLE, img)
+    E.vector(b, PANEL, b.vel[U], img, "construction", kind="segment")
+    E.vector(b, PANEL, b.vel[V], img, "construction", kind="segment")

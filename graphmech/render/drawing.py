@@ -46,11 +46,20 @@ def mechanism_items(linkage: Linkage, pos: dict[str, tuple[float, float]], mu_l:
     hinges: list[str] = []
     fixed: list[str] = []
 
-    def link(a: str, b: str) -> None:
+    numbers: list[Label] = []
+
+    def number(lid: str | None, at: tuple[float, float], along: tuple[float, float] = (1.0, 0.0)) -> None:
+        """The link's number, upright, as the book writes it beside the link (once per link)."""
+        if lid is not None and lid not in {n.text for n in numbers}:
+            numbers.append(Label(lid, at, (along, (-along[0], -along[1])), 3.2, italic=False))
+
+    def link(a: str, b: str, lid: str | None = None) -> None:
         if a in pos and b in pos and pos[a] != pos[b]:
             items.append(Segment(pos[a], pos[b], "given"))
-            lines.setdefault(a, []).append(_unit(pos[a], pos[b]))
+            u = _unit(pos[a], pos[b])
+            lines.setdefault(a, []).append(u)
             lines.setdefault(b, []).append(_unit(pos[b], pos[a]))
+            number(lid, ((pos[a][0] + pos[b][0]) / 2, (pos[a][1] + pos[b][1]) / 2), u)
 
     def guide(key: int, g: Any, at: str) -> None:
         gx, gy = g.direction
@@ -65,22 +74,24 @@ def mechanism_items(linkage: Linkage, pos: dict[str, tuple[float, float]], mu_l:
 
     d = linkage.driver
     if isinstance(d, Crank):
-        link(d.pivot, d.tip)
+        link(d.pivot, d.tip, d.link)
         fixed.append(d.pivot)
         hinges.append(d.tip)
     else:
         guide(-1, d.guide, d.point)
         items.append(Slider(pos[d.point], d.guide.angle))
+        number(d.link, pos[d.point], d.guide.direction)
     for k, y in enumerate(linkage.dyads):
         if isinstance(y, RRR):
-            link(y.p, y.c)
-            link(y.q, y.c)
+            link(y.p, y.c, y.links[0])
+            link(y.q, y.c, y.links[1])
             hinges += [y.p, y.c, y.q]
         elif isinstance(y, RRP):
-            link(y.p, y.c)
+            link(y.p, y.c, y.links[0])
             hinges += [y.p, y.c]
             guide(k, y.guide, y.c)
             items.append(Slider(pos[y.c], y.guide.angle))
+            number(y.links[1], pos[y.c], y.guide.direction)
         elif isinstance(y, RPR):
             bp, x = pos[y.bar_pivot], pos[y.block_pivot]
             u = _unit(bp, x)
@@ -94,6 +105,8 @@ def mechanism_items(linkage: Linkage, pos: dict[str, tuple[float, float]], mu_l:
             lines.setdefault(y.block_pivot, []).extend([u, (-u[0], -u[1])])
             items.append(Slider(x, math.atan2(u[1], u[0])))
             hinges += [y.p, y.q]
+            number(y.bar_link, ((bp[0] + x[0]) / 2, (bp[1] + x[1]) / 2), u)
+            number(y.block_link, x, u)
         elif isinstance(y, RPP):
             sx, sy = math.cos(y.slot_angle), math.sin(y.slot_angle)
             c, p = pos[y.c], pos[y.p]
@@ -103,6 +116,8 @@ def mechanism_items(linkage: Linkage, pos: dict[str, tuple[float, float]], mu_l:
             guide(k, y.guide, y.c)
             items.append(Slider(c, y.guide.angle))
             items.append(Slider(p, y.slot_angle, 6.0, 4.0))
+            number(y.links[0], p, (sx, sy))
+            number(y.links[1], c, y.guide.direction)
             lines.setdefault(y.p, []).extend([(sx, sy), (-sx, -sy)])
             hinges.append(y.p)
     for pt in linkage.points:
@@ -124,7 +139,7 @@ def mechanism_items(linkage: Linkage, pos: dict[str, tuple[float, float]], mu_l:
     for name in dict.fromkeys(list(linkage.frame_points) + [n for n in pos if n[:1].isupper()]):
         if name in pos and not any(ch.isdigit() for ch in name):
             items.append(Label(name, pos[name], tuple(lines.get(name, ()))))
-    return items
+    return items + numbers
 
 
 def polygon_items(plan: Any, values: dict[str, Any], panel: str) -> list[Primitive]:
@@ -141,10 +156,10 @@ def polygon_items(plan: Any, values: dict[str, Any], panel: str) -> list[Primiti
                   for p in plan.extent.get(s.name, []) if p in values]
             lo, hi = (min(ts + [0.0]) - LINE_OVERRUN, max(ts + [0.0]) + LINE_OVERRUN)
             items.append(Segment((px + lo * dx, py + lo * dy), (px + hi * dx, py + hi * dy), "construction"))
-        elif s.kind == "vector":
+        elif s.kind in ("vector", "segment"):
             a, b = _pt(values[s.inputs[0]]), _pt(values[s.inputs[1]])
             if math.dist(a, b) > 1e-9:
-                items.append(Arrow(a, b, s.role))
+                items.append(Arrow(a, b, s.role) if s.kind == "vector" else Segment(a, b, s.role))
                 leaving.setdefault(s.inputs[0], []).append(_unit(a, b))
                 leaving.setdefault(s.inputs[1], []).append(_unit(b, a))
     for s in plan.steps:

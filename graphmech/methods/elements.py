@@ -1,0 +1,25 @@
+"""Drawn elements shared by the polygons: vectors, plain segments and construction lines.
+
+Step names carry the figure's initial (``v:`` velocity, ``a:`` acceleration) so one
+construction holds both polygons without clashes.
+"""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from graphmech.methods.polygons import LinkageConstruction
+
+
+def vector(b: "LinkageConstruction", panel: str, start: str, end: str, role: str = "result",
+           kind: str = "vector") -> None:
+    """A vector start→end drawn with an arrowhead (``kind="segment"``: a plain thin segment,
+    e.g. the sides of an image triangle)."""
+    name = f"{panel[0]}:{start}->{end}"
+    if start != end and not b.g.has(name):
+        b.g.add(name, kind, None, (start, end), role=role, text=f"{kind} {start}{end}", panel=panel)
+
+
+def line(b: "LinkageConstruction", panel: str, name: str, kernel: Any, inputs: tuple, text: str) -> str:
+    """A construction line ("through b draw ⟂ BC"), drawn thin through the points it carries."""
+    return b.g.add(f"{panel[0]}:{name}", "line", kernel, inputs, role="construction", text=text, panel=panel)

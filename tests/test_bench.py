@@ -1,0 +1,22 @@
+"""The benchmark's records: their shape and their accuracy (speed is measured there, not here)."""
+from __future__ import annotations
+
+import json
+
+from tests.conftest import run_cli
+
+
+def test_bench_records_and_agreement(tmp_path):
+    code, out, err = run_cli("bench", "--json", "--quick", "-o", str(tmp_path))
+    assert code == 0, err
+    doc = json.loads(out)
+    saved = json.loads((tmp_path / "bench.json").read_text())
+    assert [r["n"] for r in saved["records"]] == [r["n"] for r in doc["records"]]
+    recs = {(r["method"], r["case"], r["n"]): r for r in doc["records"]}
+    for n in (1, 360):
+        r = recs[("polygons", "fourbar-120-60-120-90", n)]
+        assert set(r) == {"method", "case", "n", "seconds", "max_rel_error"}
+        assert 0 < r["seconds"] < 1.0
+        assert r["max_rel_error"] <= 1e-12
+    # the yardstick solves the same linkage to the same answers
+    assert recs[("closed-form-numpy", "fourbar-120-60-120-90", 360)]["max_rel_error"] <= 1e-12
