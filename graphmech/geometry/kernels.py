@@ -120,10 +120,7 @@ class ArrayOps:
         return np.where(self.guard(bad, reason, assembly), fallback, value)
 
     def cond(self, c: Any) -> None:
-        self.conds[self.step] = c  # capped (and broadcast) when read: see capped_conds
-
-    def capped_conds(self) -> dict[str, np.ndarray]:
-        return {k: np.minimum(np.broadcast_to(c, (self.n,)), COND_CAP) for k, c in self.conds.items()}
+        self.conds[self.step] = c  # capped (and broadcast) when read: BatchSolution.conds
 
 
 Ops = ScalarOps | ArrayOps
