@@ -19,7 +19,7 @@ from typing import Any, Sequence
 
 from graphmech.errors import DegenerateConstruction, GraphmechError, SceneError
 
-EXIT_OK, EXIT_OUT_OF_TOLERANCE, EXIT_BAD_INPUT = 0, 1, 2
+EXIT_OK, EXIT_OUT_OF_TOLERANCE, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
 
 
 class _Parser(argparse.ArgumentParser):
@@ -64,8 +64,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     except GraphmechError as e:
         print(f"graphmech: {e}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    except OSError as e:
+        print(f"graphmech: {e.filename or ''}{': ' if e.filename else ''}{e.strerror or e}", file=sys.stderr)
+        return EXIT_BAD_INPUT
     except KeyboardInterrupt:
         return 130
+    except Exception as e:  # a bug of ours: still one line, never a traceback
+        print(f"graphmech: internal error ({type(e).__name__}: {e}); please report it with the scene",
+              file=sys.stderr)
+        return EXIT_INTERNAL
 
 
 # ---------------------------------------------------------------------------- render
@@ -96,12 +103,26 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
 
 
 def write_atomic(path: str | os.PathLike[str], text: str) -> None:
-    """Write via a temporary file in the same folder, then rename: never a half-written file."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent or ".")
+    """Write via a temporary file in the same folder, then rename: never a half-written file.
+
+    A symlink is followed (the link stays, its target is replaced); a target that is not a
+    regular file (a device, a FIFO) is written directly, since renaming over it would replace it.
+    The new file gets the usual permissions (0666 less the umask), not mkstemp's 0600.
+    """
+    path = Path(os.path.realpath(path))
+    if path.is_dir():
+        raise OSError(f"{path}: is a folder")
+    if path.exists() and not path.is_file():
+        with open(path, "w", encoding="utf-8", newline="\n") as f:
+            f.write(text)
+        return
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as f:
             f.write(text)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):
@@ -124,8 +145,11 @@ def _render(args: argparse.Namespace) -> int:
             out = Path(args.directory or ".") / (Path(s).stem + ".svg")
         outputs.append((out, svg))
     for out, svg in outputs:
-        if not out.parent.is_dir():
+        if not Path(os.path.realpath(out)).parent.is_dir():
             print(f"graphmech: {out}: folder does not exist", file=sys.stderr)
+            return EXIT_BAD_INPUT
+        if out.is_dir():
+            print(f"graphmech: {out}: is a folder; give a file name", file=sys.stderr)
             return EXIT_BAD_INPUT
     for out, svg in outputs:
         write_atomic(out, svg)

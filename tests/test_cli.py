@@ -148,10 +148,10 @@ def test_only_what_is_asked_is_built(tmp_path):
     assert "Velocity polygon" not in svg and "Kinematic diagram" in svg
 
 
-def test_check_without_plots_does_not_import_matplotlib():
+def test_check_without_plots_does_not_import_matplotlib(tmp_path):
     code = ("import sys; from graphmech.cli import main; "
             f"rc = main(['check', r'{SCENES / 'linkage.slider_crank_offset.toml'}', '--json']); "
-            f"main(['render', r'{SCENES / 'kin.oscillating_block.toml'}', '-o', '/dev/null']); "
+            f"main(['render', r'{SCENES / 'kin.oscillating_block.toml'}', '-o', r'{tmp_path / 'o.svg'}']); "
             "assert 'matplotlib' not in sys.modules, 'matplotlib imported'; sys.exit(rc)")
     r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
@@ -195,3 +195,28 @@ def test_figures_match_their_scenes_within_tolerance():
         assert shape_a == shape_b, s.stem
         assert len(nums_a) == len(nums_b)
         assert max((abs(a - b) for a, b in zip(nums_a, nums_b)), default=0.0) <= 1.5e-3, s.stem
+
+
+def test_output_through_a_symlink_keeps_the_link_and_normal_permissions(tmp_path):
+    import os
+
+    target = tmp_path / "target.svg"
+    target.write_text("old")
+    link = tmp_path / "link.svg"
+    link.symlink_to(target)
+    assert run_cli("render", str(SCENES / "kin.oscillating_block.toml"), "-o", str(link))[0] == 0
+    assert link.is_symlink() and target.read_text().startswith("<svg")
+    fresh = tmp_path / "fresh.svg"
+    old = os.umask(0o022)
+    try:
+        assert run_cli("render", str(SCENES / "kin.oscillating_block.toml"), "-o", str(fresh))[0] == 0
+    finally:
+        os.umask(old)
+    assert fresh.stat().st_mode & 0o777 == 0o644
+
+
+def test_output_that_cannot_be_written_is_one_line(tmp_path):
+    code, out, err = run_cli("render", str(SCENES / "kin.oscillating_block.toml"), "-o", str(tmp_path))
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    code, out, err = run_cli("render", str(SCENES / "kin.oscillating_block.toml"), "-o", str(tmp_path / "no" / "x.svg"))
+    assert code == 2 and "does not exist" in err
