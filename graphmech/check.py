@@ -23,6 +23,14 @@ from graphmech.scales import PAPER, round_scale
 
 SCALE_KEYS = {"mechanism": "l", "velocity": "v", "acceleration": "a"}
 
+#: The smallest drawing a panel may get, mm; a sheet whose positions leave less is refused.
+MIN_PANEL_MM = 25.0
+
+
+def rows_that_fit(page: tuple[float, float]) -> int:
+    """How many positions (one row of panels each) one sheet of this size can hold."""
+    return max(1, int((page[1] - 38.0) // (MIN_PANEL_MM + 35.0)))
+
 
 # ---------------------------------------------------------------------------- results
 
@@ -79,12 +87,13 @@ class Analysis:
     warnings: list[str] = field(default_factory=list)
     rows: list[Row] = field(default_factory=list)
     extra_measured: tuple[tuple[str, float], ...] = ()
+    size: float = 1.0  # the mechanism's typical length, m
 
 
 # ---------------------------------------------------------------------------- names
 
 
-def _position_text(build: LinkageConstruction, label: str) -> str:
+def position_text(build: LinkageConstruction, label: str) -> str:
     driver = build.linkage.driver
     sub = driver.link.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
     return f"φ{sub} = {label}°" if isinstance(driver, Crank) else f"s{sub} = {label}"
@@ -131,7 +140,7 @@ def _close_names(name: str, known: Any) -> str:
 # ---------------------------------------------------------------------------- scales
 
 
-def _page_size(scene: Any) -> tuple[float, float]:
+def page_size(scene: Any) -> tuple[float, float]:
     size = getattr(scene.page, "size", (297.0, 210.0))
     return PAPER[size] if isinstance(size, str) else (float(size[0]), float(size[1]))
 
@@ -152,11 +161,13 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
     steps = [s for s in b.g.steps.values() if s.kind == "point"]
     plan = b.g.prune([s.name for s in steps])
     sol = plan.evaluate_batch({b.param: positions})
-    w, h = _page_size(scene)
+    w, h = page_size(scene)
     shown = [p for p in PANELS if p in scene.show] or ["mechanism"]
-    rows = max(1, len(positions)) if len(positions) <= 4 else 1
-    room_w = (w - 30.0 - 14.0 * (len(shown) - 1)) / len(shown) - 16.0
-    room_h = (h - 45.0) / rows - 16.0
+    # Room for one panel's drawing: the page less margins (10), title (12) and footer (6); one
+    # row of panels per position, each row less its gap (12), caption (11) and labels (2 × 6).
+    rows = max(1, len(positions))
+    room_w = (w - 20.0 - 12.0 * (len(shown) - 1)) / len(shown) - 12.0
+    room_h = max((h - 38.0) / rows - 35.0, MIN_PANEL_MM)
     for panel, key in SCALE_KEYS.items():
         if key in stated:
             continue
@@ -198,31 +209,39 @@ def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> A
 
     solutions: list[Any] = []
     failures: list[str] = []
-    if len(positions) == 1:
-        try:
-            solutions.append(plan.solve({build.param: float(positions[0])}, _position_text(build, labels[0])))
+    with np.errstate(all="ignore"):
+        if len(positions) == 1:
+            where = position_text(build, labels[0])
+            try:  # one position asked for: if it cannot be built, the caller reports why
+                sol = plan.solve({build.param: float(positions[0])}, where)
+            except (OverflowError, ZeroDivisionError) as e:
+                raise DegenerateConstruction("the construction", f"numbers out of range ({e})", where) from None
+            if not _finite(sol.values):
+                raise DegenerateConstruction("the construction", OUT_OF_RANGE, where)
+            solutions.append(sol)
             failures.append("")
-        except DegenerateConstruction as e:
-            raise  # one position asked for and it cannot be built: the caller reports it
-    else:
-        batch = plan.evaluate_batch({build.param: positions})
-        reason = [""] * len(positions)
-        for step, (mask, why) in batch.failures.items():
-            for i in np.flatnonzero(mask):
-                reason[i] = f"{step}: {why}"
-        for i in range(len(positions)):
-            solutions.append(batch.at(i) if batch.valid[i] else None)
-            failures.append(reason[i])
-
-    exact = solve_exact(linkage, positions)
+        else:
+            batch = plan.evaluate_batch({build.param: positions})
+            reason = [""] * len(positions)
+            for step, (mask, why) in batch.failures.items():
+                for i in np.flatnonzero(mask):
+                    reason[i] = f"{step}: {why}"
+            for i in range(len(positions)):
+                sol = batch.at(i) if batch.valid[i] else None
+                if sol is not None and not _finite(sol.values):
+                    sol, reason[i] = None, OUT_OF_RANGE
+                solutions.append(sol)
+                failures.append(reason[i])
+        exact = solve_exact(linkage, positions)
     an = Analysis(scene, build, plan, scales, stated, positions, labels, solutions, failures, exact)
     an.extra_measured = tuple(extra_measured)
+    an.size = mechanism_size(linkage, exact)
     for i, why in enumerate(failures):
         if why:
-            an.warnings.append(f"{_position_text(build, labels[i])}: construction impossible — {why}")
+            an.warnings.append(f"{position_text(build, labels[i])}: construction impossible — {why}")
     for i, ok in enumerate(exact.valid):
         if not ok and solutions[i] is not None:
-            an.warnings.append(f"{_position_text(build, labels[i])}: the exact solution is undefined here "
+            an.warnings.append(f"{position_text(build, labels[i])}: the exact solution is undefined here "
                                f"({exact.reason[i]}); its values are not checked")
     an.rows = [_row(an, display, q, i) for display, q, i in wanted
                if solutions[i] is not None and exact.valid[i]]
@@ -230,25 +249,53 @@ def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> A
     return an
 
 
-def characteristic(linkage: Linkage, unit: str) -> float:
+def mechanism_size(linkage: Linkage, kin: Kinematics | None = None) -> float:
+    """A length typical of the mechanism: the diagonal of the box its points sweep (m).
+
+    Falls back on the links' and frame's own sizes where no solution is at hand.
+    """
+    if kin is not None and kin.valid.any():
+        pts = np.concatenate([p[kin.valid] for p in kin.point.values()])
+        size = float(np.hypot(*(pts.max(axis=0) - pts.min(axis=0))))
+        if size > 0.0:
+            return size
+    sizes = [abs(v) for y in linkage.dyads for v in (getattr(y, "lengths", None) or (getattr(y, "length", 0.0),))]
+    frame = list(linkage.frame_points.values())
+    sizes += [math.dist(a, b) for a in frame for b in frame]
+    if isinstance(linkage.driver, Crank):
+        sizes.append(linkage.driver.length)
+    return max(sizes + [0.0]) or 1.0
+
+
+OUT_OF_RANGE = "numbers out of the range of double precision (the scene's sizes or speeds are too extreme)"
+
+
+def _finite(values: Any) -> bool:
+    """Whether every number in a solution's values is finite."""
+    for v in values.values():
+        for x in (v if isinstance(v, tuple) else (v,)):
+            if isinstance(x, float) and not math.isfinite(x):
+                return False
+    return True
+
+
+def characteristic(linkage: Linkage, unit: str, size: float | None = None) -> float:
     """The size of a quantity of this unit in this linkage (ω1·l_AB for velocities, …).
 
-    The relative error divides by max(|exact|, this), so a zero exact value does not blow it up.
+    The relative error divides by max(|exact|, this), so a zero exact value does not blow it
+    up. ``size`` is the mechanism's typical length (:func:`mechanism_size`).
     """
-    lengths = [abs(v) for y in linkage.dyads for v in (getattr(y, "lengths", None) or (getattr(y, "length", 0.0),))]
+    L = size if size is not None else mechanism_size(linkage)
     d = linkage.driver
     if isinstance(d, Crank):
-        L = d.length
         w = abs(d.omega) + math.sqrt(abs(d.epsilon))
-        v = w * L
-        a = (d.omega ** 2 + abs(d.epsilon)) * L
+        alpha = d.omega ** 2 + abs(d.epsilon)
+        v, a = w * d.length, alpha * d.length
     else:
-        L = max(lengths + [1e-300])
         v = abs(d.velocity) + math.sqrt(abs(d.acceleration) * L)
         a = abs(d.acceleration) + d.velocity ** 2 / L
-        w = v / L
-    span = max(lengths + [L]) or 1.0
-    chars = {"m/s": v, "m/s²": a, "rad/s": w, "rad/s²": a / L if L else a, "m": span, "deg": 360.0}
+        w, alpha = v / L, a / L
+    chars = {"m/s": v, "m/s²": a, "rad/s": w, "rad/s²": alpha, "m": L, "deg": 360.0}
     return max(chars.get(unit, 1.0), 1e-300)
 
 
@@ -258,11 +305,13 @@ def _row(an: Analysis, display: str, qname: str, i: int) -> Row:
     drawn, scale = float(drawn), float(scale)
     g = drawn * scale
     e = exact_value(an.exact, q.exact, i, an.build)
+    if not (math.isfinite(g) and math.isfinite(e)):
+        raise DegenerateConstruction(f"measure {qname}", OUT_OF_RANGE, position_text(an.build, an.labels[i]))
     if q.unit == "deg":
         err = abs((g - e + 180.0) % 360.0 - 180.0) / 360.0
         drawn_mm = None
     else:
-        err = abs(g - e) / max(abs(e), characteristic(an.build.linkage, q.unit))
+        err = abs(g - e) / max(abs(e), characteristic(an.build.linkage, q.unit, an.size))
         drawn_mm = drawn
     return Row(display, q.unit, drawn_mm, scale, g, e, err, _ill(an, q.slot, i))
 
@@ -347,14 +396,14 @@ def _conditioning_warnings(an: Analysis, quantities: list[str]) -> list[str]:
     for i, sol in enumerate(an.solutions):
         if sol is None:
             continue
-        where = _position_text(an.build, an.labels[i])
+        where = position_text(an.build, an.labels[i])
         for text, c in sol.conds.items():
             if text not in relevant:
                 continue
             qs = ", ".join(relevant[text])
             angle = math.degrees(math.asin(min(1.0, 1.0 / c))) if c > 0 else 90.0
             if c > T.COND_WARN:
-                est = c * c * T.EPS
+                est = T.COND_SAFETY * c * c * T.EPS
                 out.append(f"{where}: ill-conditioned intersection '{text}': the loci meet at {angle:.3g}° "
                            f"(condition number {c:.3g}); {qs or 'the drawing'} may be wrong by about "
                            f"{est:.1g} relative or more")
@@ -405,6 +454,8 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
     if not is_segment(base):
         raise ValueError(f"unknown quantity or segment {base!r}{_close_names(base, build.quantities)}")
     t0, t1 = [t.replace("′", "'") for t in SEGMENT.findall(base)]
+    if t0 == t1:
+        raise ValueError(f"a drawn segment needs two different ends, not {base!r}")
 
     def matches(token: str, lab: str) -> bool:
         if token == lab:
@@ -420,7 +471,18 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
     found = sorted(found, key=lambda n: (n.startswith(("omega", "alpha")), n))
     if not found:
         raise ValueError(f"no drawn segment {base!r} in this construction")
+    ends = {frozenset(build.quantities[n].segment): "".join(build.quantities[n].segment) for n in found}
+    segments = sorted(ends.values())  # one per pair of ends, whichever way round it was named
+    if len(segments) > 1:
+        raise ValueError(f"{base!r} could be any of {', '.join(segments)}: name the segment exactly")
     return found[0], idx, True
+
+
+def _angle_tolerance(an: Analysis, q: Any, sol: Any, precision_mm: float) -> float:
+    """A link's direction read with a protractor along the drawn link: ±precision/length, in degrees."""
+    u, v = an.build.link_points[q.exact[1]][:2]
+    a, b = sol[an.build.mech[u]], sol[an.build.mech[v]]
+    return math.degrees(precision_mm / max(math.dist(a, b), precision_mm))
 
 
 def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
@@ -440,6 +502,10 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
         if sol is None:
             problems.append((key, f"position {an.labels[i]} could not be constructed"))
             continue
+        if not an.exact.valid[i]:
+            problems.append((key, f"the exact value is undefined at {position_text(an.build, an.labels[i])} "
+                                  f"({an.exact.reason[i]}), so it cannot be judged"))
+            continue
         drawn, scale = sol[q.slot]
         e = exact_value(an.exact, q.exact, i, an.build)
         panel_key = SCALE_KEYS[q.panel]
@@ -451,7 +517,7 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
             expected = abs(e) / float(scale)
             out.append(Verdict(name, value, expected, prec, abs(abs(value) - expected) <= prec, "mm"))
         else:
-            tol = prec if q.unit == "deg" else prec * abs(float(scale))
+            tol = _angle_tolerance(an, q, sol, prec) if q.unit == "deg" else prec * abs(float(scale))
             out.append(Verdict(name, value, e, tol, abs(value - e) <= tol + 1e-12 * abs(e), q.unit))
     if problems:
         raise SceneError(problems, scene.source)

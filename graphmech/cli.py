@@ -80,21 +80,27 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
     """The SVG text of a scene and its warnings."""
-    from graphmech.check import _position_text, analyse, _page_size
-    from graphmech.render.drawing import linkage_sheet
+    from graphmech.check import analyse, page_size, position_text, rows_that_fit
+    from graphmech.methods.figures import linkage_sheet
     from graphmech.render.svg import render_svg
     from graphmech.scene import load_scene
 
     scene = load_scene(path)
+    fit = rows_that_fit(page_size(scene))
+    if len(scene.positions.values) > fit:
+        raise SceneError([("driver", f"{len(scene.positions.values)} positions do not fit one sheet of "
+                                     f"{page_size(scene)[0]:g} × {page_size(scene)[1]:g} mm (at most {fit}, one row "
+                                     "of panels each): split the scene or choose a larger [page] size; "
+                                     "`graphmech check` takes up to 3600")], str(path))
     an = analyse(scene)
     b = an.build
-    texts = [_position_text(b, lab) for lab in an.labels]
+    texts = [position_text(b, lab) for lab in an.labels]
     import graphmech
 
     footer = (f"graphmech {graphmech.__version__}",)
     sheet = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
-                          [p for p in ("mechanism", "velocity", "acceleration") if p in scene.show],
-                          _page_size(scene), footer)
+                          list(scene.show),
+                          page_size(scene), footer)
     raw = Path(path).read_bytes()
     prefix = "g" + hashlib.sha256(raw).hexdigest()[:8]
     warnings = list(an.warnings)

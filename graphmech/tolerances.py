@@ -12,12 +12,18 @@ EPS = 2.220446049250313e-16
 #: Condition number of an intersection above which results depending on it are reported as
 #: ill-conditioned. Near a toggle the same shallow angle recurs in the position, velocity and
 #: acceleration constructions, each feeding the next, and the error observed grows like
-#: EPS·cond² (measured: cond 1e4 → 4e-9); flag where that estimate passes REL_AGREEMENT.
-COND_WARN = (REL_AGREEMENT / EPS) ** 0.5
+#: COND_SAFETY·EPS·cond²; against a 50-digit reference near a four-bar's toggle the factor
+#: reached ≈ 19, so flag where 20·EPS·cond² passes REL_AGREEMENT (cond ≈ 475, about 0.12°).
+COND_SAFETY = 20.0
+COND_WARN = (REL_AGREEMENT / (COND_SAFETY * EPS)) ** 0.5
 
 #: Angle (degrees) between two construction lines below which a *hand* construction is unreliable
 #: (a 0.5 mm pencil error grows by 1/sin of this angle, ≥ 14×).
 SHALLOW_DEG = 4.0
+
+#: Two points closer than this, relative to the size of their coordinates, are one point
+#: (rounding, not a direction).
+COINCIDENT_REL = 1e-12
 
 #: Relative slack with which two circles that "just touch" still count as meeting (tangent).
 TANGENT_REL = 1e-9

@@ -220,3 +220,38 @@ def test_output_that_cannot_be_written_is_one_line(tmp_path):
     assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
     code, out, err = run_cli("render", str(SCENES / "kin.oscillating_block.toml"), "-o", str(tmp_path / "no" / "x.svg"))
     assert code == 2 and "does not exist" in err
+
+
+def test_ambiguous_or_degenerate_segment_names_are_refused(tmp_path):
+    p = scene(tmp_path)
+    code, _, err = run_cli("check", str(p), "--measured", "n'c'=30")
+    assert code == 2 and "n2'c'" in err and "n3'c'" in err  # two normal components end at c′
+    code, _, err = run_cli("check", str(p), "--measured", "pp=0")
+    assert code == 2 and "two different ends" in err
+    code, out, _ = run_cli("check", str(p), "--json", "--measured", "n2'c'=35.7")
+    assert json.loads(out)["measured"][0]["expected"] == pytest.approx(35.699499, rel=1e-6)
+
+
+def test_render_refuses_more_positions_than_fit_but_check_takes_them(tmp_path):
+    p = tmp_path / "many.toml"
+    p.write_text(FOURBAR.format(scales=STATED, l2=120).replace("angle = 165", "angle = {start = 0, stop = 360, step = 30}"),
+                 encoding="utf-8")
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "many.svg"))
+    assert code == 2 and "12 positions do not fit" in err and err.count("\n") == 1
+    assert not (tmp_path / "many.svg").exists()
+    doc = check_json(p)
+    assert len(doc["quantities"]) == 24 and all(q["rel_error"] < 1e-12 for q in doc["quantities"])
+
+
+def test_two_positions_stand_in_two_rows(tmp_path):
+    from graphmech.cli import render_scene
+
+    svg, warnings = render_scene(SCENES / "linkage.slider_crank_offset.toml")
+    assert not [w for w in warnings if "page" in w]
+    root = ET.fromstring(svg)
+    captions = [(float(t.get("y")), t.text) for t in root.iter() if t.tag.endswith("text")
+                and t.text and t.text.startswith(("Kinematic", "Velocity", "Acceleration"))]
+    ys = {round(y, 3) for y, _ in captions}
+    assert len(captions) == 6 and len(ys) == 2  # three panels a row, one row per position
+    assert {t for y, t in captions if round(y, 3) == min(ys)} == {
+        "Kinematic diagram, φ₁ = 50°", "Velocity polygon, φ₁ = 50°", "Acceleration polygon, φ₁ = 50°"}

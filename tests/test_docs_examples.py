@@ -5,7 +5,7 @@ import re
 
 import pytest
 
-from graphmech.check import analyse
+from graphmech.check import analyse, judge
 from graphmech.scene import parse_scene
 from tests.conftest import ROOT
 
@@ -21,3 +21,5 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
     assert any(s is not None for s in an.solutions)
     for row in an.rows:
         assert row.rel_error <= 1e-9 or row.ill_conditioned, row
+    for verdict in judge(an):  # what the documented student measured is right
+        assert verdict.ok, verdict

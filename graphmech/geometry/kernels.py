@@ -28,7 +28,7 @@ from typing import Any, Callable
 import numpy as np
 
 from graphmech.errors import AssemblyError, DegenerateConstruction
-from graphmech.tolerances import PARALLEL_SIN, TANGENT_REL
+from graphmech.tolerances import COINCIDENT_REL, PARALLEL_SIN, TANGENT_REL
 
 Reason = str | Callable[[], str]
 
@@ -128,13 +128,22 @@ Ops = ScalarOps | ArrayOps
 # --------------------------------------------------------------------------- directions
 
 
+def coincident(ops: Ops, n: Any, ax: Any, ay: Any, bx: Any, by: Any) -> Any:
+    """Whether two points a distance n apart are the same point, to rounding.
+
+    Relative to the points' own coordinates: 1e-14 mm apart at 100 mm from the origin is
+    rounding, not a direction, and a line drawn through such a pair points anywhere.
+    """
+    size = ops.absolute(ax) + ops.absolute(ay) + ops.absolute(bx) + ops.absolute(by)
+    return n <= COINCIDENT_REL * size
+
+
 def direction(ops: Ops, ax: Any, ay: Any, bx: Any, by: Any, what: str) -> tuple[Any, Any]:
     """Unit vector a→b; ``what`` names the pair for the message when a and b coincide."""
     dx = bx - ax
     dy = by - ay
     n = ops.hypot(dx, dy)
-    bad = ops.guard(n == 0.0, f"{what} has zero length: no direction")
-    n = ops.where(bad, 1.0, n)
+    n = ops.fix(coincident(ops, n, ax, ay, bx, by), n, 1.0, f"{what} has zero length: no direction")
     return dx / n, dy / n
 
 
@@ -143,7 +152,8 @@ def line_perpendicular(ops: Ops, through: tuple, a: tuple, b: tuple) -> tuple:
     dx = b[0] - a[0]
     dy = b[1] - a[1]
     n = ops.hypot(dx, dy)
-    n = ops.fix(n == 0.0, n, 1.0, "the segment has zero length: no direction")
+    n = ops.fix(coincident(ops, n, a[0], a[1], b[0], b[1]), n, 1.0,
+                "the two points coincide: the line has no direction")
     return (through[0], through[1], -dy / n, dx / n)
 
 
@@ -152,7 +162,8 @@ def line_parallel(ops: Ops, through: tuple, a: tuple, b: tuple) -> tuple:
     dx = b[0] - a[0]
     dy = b[1] - a[1]
     n = ops.hypot(dx, dy)
-    n = ops.fix(n == 0.0, n, 1.0, "the segment has zero length: no direction")
+    n = ops.fix(coincident(ops, n, a[0], a[1], b[0], b[1]), n, 1.0,
+                "the two points coincide: the line has no direction")
     return (through[0], through[1], dx / n, dy / n)
 
 
@@ -205,7 +216,7 @@ def intersect_circles(
     dx = x2 - x1
     dy = y2 - y1
     d = ops.hypot(dx, dy)
-    bad_d = ops.guard(d == 0.0, "the two centres coincide", assembly=True)
+    bad_d = ops.guard(coincident(ops, d, x1, y1, x2, y2), "the two centres coincide", assembly=True)
     d = ops.where(bad_d, 1.0, d)
     a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d)
     h2 = r1 * r1 - a * a
@@ -256,7 +267,7 @@ def similar_point(ops: Ops, U: tuple, V: tuple, E: tuple, u: tuple, v: tuple) ->
     Dx = V[0] - U[0]
     Dy = V[1] - U[1]
     n2 = Dx * Dx + Dy * Dy
-    bad = ops.guard(n2 == 0.0, "the two base points coincide")
+    bad = ops.guard(coincident(ops, ops.sqrt(n2), U[0], U[1], V[0], V[1]), "the two base points coincide")
     n2 = ops.where(bad, 1.0, n2)
     Ex = E[0] - U[0]
     Ey = E[1] - U[1]

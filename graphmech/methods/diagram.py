@@ -18,9 +18,11 @@ PANEL = "mechanism"
 
 
 def add_frame(b: "LinkageConstruction") -> None:
-    mu = b.mu_l
-    for name, (x, y) in b.linkage.frame_points.items():
-        xy = (x / mu, y / mu)
+    frame = b.linkage.frame_points
+    driver = b.linkage.driver
+    b.origin = next(iter(frame.values())) if frame else getattr(driver, "guide").through
+    for name, xy0 in frame.items():
+        xy = b.to_drawing(xy0)
         b.mech[name] = b.g.add(name, "point", lambda ops, xy=xy: xy, (), role="given",
                                text=f"frame point {name}", panel=PANEL, label=name)
 
@@ -44,7 +46,7 @@ def _crank(b: "LinkageConstruction", d: Crank) -> None:
 def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
     mu = b.mu_l
     gx, gy = d.guide.direction
-    ox, oy = d.guide.through[0] / mu, d.guide.through[1] / mu
+    ox, oy = b.to_drawing(d.guide.through)
     b.slider_dir[d.point] = (gx, gy)
     b.translating.add(d.link)
 
@@ -78,9 +80,8 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
 
 
 def _guide_line(b: "LinkageConstruction", guide: Any) -> tuple:
-    mu = b.mu_l
     gx, gy = guide.direction
-    return (guide.through[0] / mu, guide.through[1] / mu, gx, gy)
+    return (*b.to_drawing(guide.through), gx, gy)
 
 
 def _rrp(b: "LinkageConstruction", y: RRP) -> None:

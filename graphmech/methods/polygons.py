@@ -58,10 +58,20 @@ class LinkageConstruction:
     translating: set[str] = field(default_factory=set)
     coincident: list[tuple[str, str]] = field(default_factory=list)  # (moving, reference) pairs
 
+    origin: tuple[float, float] = (0.0, 0.0)  # m: the mechanism point drawn at (0, 0) mm
+
     # ------------------------------------------------------------------ helpers
     @property
     def mu_l(self) -> float:
         return self.scales["l"]
+
+    def to_drawing(self, xy: tuple[float, float]) -> tuple[float, float]:
+        """A point of the mechanism (m) on the kinematic diagram (mm at μl).
+
+        The drawing's origin is the first frame point: coordinates stay of the size of the
+        mechanism, so a linkage placed far from the scene's origin loses no digits.
+        """
+        return ((xy[0] - self.origin[0]) / self.mu_l, (xy[1] - self.origin[1]) / self.mu_l)
 
     def quantity(self, q: Quantity) -> None:
         self.quantities.setdefault(q.name, q)

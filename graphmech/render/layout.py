@@ -266,10 +266,18 @@ def layout_sheet(
                 "between its margins; its scale μ is kept, so it runs off the page"
             )
 
-    # greedy rows, left to right in the given order
+    # rows as the panels ask (e.g. one row per mechanism position), else greedy, left to right
     rows: list[list[int]] = []
     width = 0.0
+    explicit: dict[int, list[int]] = {}
+    for i, panel in enumerate(sheet.panels):
+        if panel.row is not None:
+            explicit.setdefault(panel.row, []).append(i)
     for i, (_, _, fw, _) in enumerate(sizes):
+        if sheet.panels[i].row is not None:
+            if i == explicit[sheet.panels[i].row][0]:
+                rows.append(explicit[sheet.panels[i].row])
+            continue
         if rows and width + style.panel_gap + fw <= avail_w + 1e-9:
             rows[-1].append(i)
             width += style.panel_gap + fw
@@ -277,6 +285,10 @@ def layout_sheet(
             rows.append([i])
             width = fw
     row_w = [sum(sizes[i][2] for i in r) + style.panel_gap * (len(r) - 1) for r in rows]
+    for r, w in zip(rows, row_w):
+        if len(r) > 1 and w > avail_w + 1e-9:
+            warnings.append(f"a row of {len(r)} panels is {w:.1f} mm wide but the page leaves "
+                            f"{avail_w:.1f} mm; their scales μ are kept, so it runs off the page")
     row_h = [max(sizes[i][3] for i in r) for r in rows]
     total_h = sum(row_h) + style.panel_gap * (len(rows) - 1) if rows else 0.0
     if total_h > avail_h + 1e-9:

@@ -104,6 +104,7 @@ class Panel:
     title: str
     items: tuple[Primitive, ...]
     notes: tuple[str, ...] = ()  # e.g. ("μl = 0.002 m/mm",)
+    row: int | None = None  # panels with the same row stand in one line; None: fill rows greedily
 
 
 @dataclass(frozen=True)

@@ -1,5 +1,7 @@
-"""A linkage construction's solution → draw primitives on panels (the mechanism and its polygons).
+"""The figures of the kinematics methods: a construction's solution → draw primitives on panels.
 
+Methods produce primitives with roles; a renderer turns them into SVG and knows nothing of
+linkages. 
 The kinematic diagram is drawn in the textbook's symbols from the linkage's structure
 (frame pivots hatched, hinges, slider blocks on hatched guides, links as lines); the polygons
 are drawn from the construction's own steps: points with their image letters, vectors as
@@ -38,9 +40,16 @@ def _unit(a: tuple, b: tuple) -> tuple[float, float]:
     return (dx / n, dy / n) if n > 0 else (0.0, 0.0)
 
 
-def mechanism_items(linkage: Linkage, pos: dict[str, tuple[float, float]], mu_l: float,
+def _dirs(ds: Any) -> tuple[tuple[float, float], ...]:
+    """Directions for a label to avoid; a zero-length line has none."""
+    return tuple(d for d in ds if d != (0.0, 0.0))
+
+
+def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
                     guide_span: dict[int, tuple[float, float]] | None = None) -> list[Primitive]:
     """The kinematic diagram at one position; ``pos`` maps point names to drawing mm."""
+    linkage: Linkage = build.linkage
+    mu_l = build.mu_l
     items: list[Primitive] = []
     lines: dict[str, list[tuple[float, float]]] = {}  # point → directions of lines leaving it
     hinges: list[str] = []
@@ -51,7 +60,7 @@ def mechanism_items(linkage: Linkage, pos: dict[str, tuple[float, float]], mu_l:
     def number(lid: str | None, at: tuple[float, float], along: tuple[float, float] = (1.0, 0.0)) -> None:
         """The link's number, upright, as the book writes it beside the link (once per link)."""
         if lid is not None and lid not in {n.text for n in numbers}:
-            numbers.append(Label(lid, at, (along, (-along[0], -along[1])), 3.2, italic=False))
+            numbers.append(Label(lid, at, _dirs((along, (-along[0], -along[1]))), 3.2, italic=False))
 
     def link(a: str, b: str, lid: str | None = None) -> None:
         if a in pos and b in pos and pos[a] != pos[b]:
@@ -63,7 +72,7 @@ def mechanism_items(linkage: Linkage, pos: dict[str, tuple[float, float]], mu_l:
 
     def guide(key: int, g: Any, at: str) -> None:
         gx, gy = g.direction
-        ox, oy = g.through[0] / mu_l, g.through[1] / mu_l
+        ox, oy = build.to_drawing(g.through)
         lo, hi = (guide_span or {}).get(key, (0.0, 0.0))
         s = (pos[at][0] - ox) * gx + (pos[at][1] - oy) * gy
         lo, hi = min(lo, s) - 12.0, max(hi, s) + 12.0
@@ -138,7 +147,7 @@ def mechanism_items(linkage: Linkage, pos: dict[str, tuple[float, float]], mu_l:
             items.append(Hinge(pos[name]))
     for name in dict.fromkeys(list(linkage.frame_points) + [n for n in pos if n[:1].isupper()]):
         if name in pos and not any(ch.isdigit() for ch in name):
-            items.append(Label(name, pos[name], tuple(lines.get(name, ()))))
+            items.append(Label(name, pos[name], _dirs(lines.get(name, ()))))
     return items + numbers
 
 
@@ -170,7 +179,7 @@ def polygon_items(plan: Any, values: dict[str, Any], panel: str) -> list[Primiti
                 old = labels[key]
                 labels[key] = Label(old.text + "," + display(s.label), at, old.avoid)
             else:
-                labels[key] = Label(display(s.label), at, tuple(leaving.get(s.name, ())))
+                labels[key] = Label(display(s.label), at, _dirs(leaving.get(s.name, ())))
     return items + list(labels.values())
 
 
@@ -179,7 +188,7 @@ def linkage_sheet(title: str, linkage: Linkage, build: Any, plan: Any, solutions
                   show: Sequence[str], page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
     """The whole sheet: for each position, the panels the scene shows, side by side."""
     panels: list[Panel] = []
-    spans = _guide_spans(linkage, build, solutions, scales["l"])
+    spans = _guide_spans(linkage, build, solutions)
     for i, sol in enumerate(solutions):
         if sol is None:
             continue
@@ -187,23 +196,23 @@ def linkage_sheet(title: str, linkage: Linkage, build: Any, plan: Any, solutions
             note = (format_scale(SCALE_OF[panel], scales[SCALE_OF[panel]]),)
             if panel == "mechanism":
                 pos = {name: _pt(sol.values[slot]) for name, slot in build.mech.items() if slot in sol.values}
-                items = mechanism_items(linkage, pos, scales["l"], spans)
+                items = mechanism_items(build, pos, spans)
                 head = f"{TITLES[panel]}, {position_text[i]}"
             else:
                 items = polygon_items(plan, sol.values, panel)
                 head = TITLES[panel] + (f", {position_text[i]}" if len(solutions) > 1 else "")
-            panels.append(Panel(f"{panel}-{labels[i]}", head, tuple(items), note))
+            panels.append(Panel(f"{panel}-{labels[i]}", head, tuple(items), note, row=i))
     return Sheet(title, tuple(panels), page, footer)
 
 
-def _guide_spans(linkage: Linkage, build: Any, solutions: Sequence[Any], mu_l: float) -> dict[int, tuple[float, float]]:
+def _guide_spans(linkage: Linkage, build: Any, solutions: Sequence[Any]) -> dict[int, tuple[float, float]]:
     """The stretch of each guide its slider covers over the drawn positions (mm along the guide)."""
     spans: dict[int, tuple[float, float]] = {}
     guides = [(-1, linkage.driver.guide, linkage.driver.point)] if isinstance(linkage.driver, SliderInput) else []
     guides += [(k, y.guide, y.c) for k, y in enumerate(linkage.dyads) if isinstance(y, (RRP, RPP))]
     for k, g, point in guides:
         gx, gy = g.direction
-        ox, oy = g.through[0] / mu_l, g.through[1] / mu_l
+        ox, oy = build.to_drawing(g.through)
         ss = [(float(sol.values[build.mech[point]][0]) - ox) * gx + (float(sol.values[build.mech[point]][1]) - oy) * gy
               for sol in solutions if sol is not None and build.mech.get(point) in sol.values]
         if ss:
