@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -193,7 +193,19 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
 
 
 def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> Analysis:
-    """Build, prune, evaluate and check one scene (``extra_measured``: values from the command line)."""
+    """Build, prune, evaluate and check one scene (``extra_measured``: values from the command line).
+
+    Numbers beyond double precision (an ω of 1e155 rad/s squared) are a one-line
+    :class:`DegenerateConstruction`, never a traceback, an inf or a NaN.
+    """
+    try:
+        with np.errstate(all="ignore"):
+            return _analyse(scene, extra_measured)
+    except (OverflowError, ZeroDivisionError, FloatingPointError) as e:
+        raise DegenerateConstruction("the construction", f"{OUT_OF_RANGE} ({e})") from None
+
+
+def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
     linkage: Linkage = scene.linkage
     positions = np.asarray(scene.positions.values, dtype=float)
     labels = tuple(scene.positions.labels) or tuple(f"{v:g}" for v in positions)
@@ -236,6 +248,9 @@ def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> A
     an = Analysis(scene, build, plan, scales, stated, positions, labels, solutions, failures, exact)
     an.extra_measured = tuple(extra_measured)
     an.size = mechanism_size(linkage, exact)
+    far = _offset_warning(linkage, an.size)
+    if far:
+        an.warnings.append(far)
     for i, why in enumerate(failures):
         if why:
             an.warnings.append(f"{position_text(build, labels[i])}: construction impossible — {why}")
@@ -245,6 +260,8 @@ def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> A
                                f"({exact.reason[i]}); its values are not checked")
     an.rows = [_row(an, display, q, i) for display, q, i in wanted
                if solutions[i] is not None and exact.valid[i]]
+    if far:
+        an.rows = [replace(r, ill_conditioned=True) for r in an.rows]
     an.warnings.extend(_conditioning_warnings(an, [q for _, q, _ in wanted] + measured_q))
     return an
 
@@ -268,6 +285,20 @@ def mechanism_size(linkage: Linkage, kin: Kinematics | None = None) -> float:
 
 
 OUT_OF_RANGE = "numbers out of the range of double precision (the scene's sizes or speeds are too extreme)"
+
+
+def _offset_warning(linkage: Linkage, size: float) -> str:
+    """Coordinates far from the origin, compared with the mechanism's size, carry few digits of it."""
+    coords = [abs(c) for p in linkage.frame_points.values() for c in p]
+    d = linkage.driver
+    coords += [abs(c) for g in [getattr(d, "guide", None)] + [getattr(y, "guide", None) for y in linkage.dyads]
+               if g is not None for c in g.through]
+    ratio = max(coords + [0.0]) / size
+    if T.COND_SAFETY * T.EPS * ratio <= T.REL_AGREEMENT:
+        return ""
+    return (f"the mechanism lies {ratio:.2g} times its own size from the origin: its coordinates keep "
+            f"only about {max(0.0, -math.log10(T.EPS * ratio)):.0f} significant digits of its geometry, "
+            "so no value can be checked to 1e-9; move the origin to a frame pivot")
 
 
 def _finite(values: Any) -> bool:

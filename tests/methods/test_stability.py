@@ -220,3 +220,46 @@ def test_angular_acceleration_of_the_crank_is_drawn(tmp_path):
     doc = check_json(write(tmp_path, FOURBAR.format(a=60, b=120, c=90, d=120, w=10, e=-40)))
     for row in doc["quantities"]:
         assert row["rel_error"] <= 1e-12, row
+
+
+def test_speeds_beyond_double_precision_are_one_line_errors(tmp_path):
+    code, out, err = run_cli("check", str(write(tmp_path, FOURBAR.format(a=60, b=120, c=90, d=120, w=1e155, e=0))))
+    assert code == 2 and err.count("\n") == 1 and "out of the range of double precision" in err
+
+
+def test_a_mechanism_far_from_the_origin_is_flagged_not_trusted(tmp_path):
+    text = FOURBAR.format(a=60, b=120, c=90, d=120, w=10, e=0).replace(
+        "A = [0, 0]\nD = [120, 0]", "A = [1e11, 0]\nD = [100000000120, 0]")
+    doc = check_json(write(tmp_path, text))
+    assert any("from the origin" in w for w in doc["warnings"])
+    assert doc["quantities"] and all(r["ill_conditioned"] for r in doc["quantities"])
+
+
+def test_a_guide_bar_through_its_own_crank_pin_is_refused_not_drawn(tmp_path):
+    text = """
+title = "guide bar whose pivot C lies on the crank circle"
+show = ["mechanism", "velocity", "acceleration"]
+find = ["omega_3", "v_B3B2"]
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+[frame]
+A = [0, 0]
+C = [0, -100]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = 100
+angle = 270
+omega = 10
+[[dyad]]
+type = "RPR"
+joints = ["B", "C"]
+links = ["2", "3"]
+bar = "second"
+"""
+    code, out, err = run_cli("check", str(write(tmp_path, text)))
+    assert code == 2 and "coincide" in err and err.count("\n") == 1
