@@ -147,6 +147,27 @@ def direction(ops: Ops, ax: Any, ay: Any, bx: Any, by: Any, what: str) -> tuple[
     return dx / n, dy / n
 
 
+def unit(ops: Ops, a: tuple, b: tuple) -> tuple:
+    """The direction a→b as ``(ux, uy, length)`` — a set square laid along AB, used by every
+    line drawn ⟂ or ∥ to it and by every reading of ω or α along it."""
+    dx = b[0] - a[0]
+    dy = b[1] - a[1]
+    n = ops.hypot(dx, dy)
+    n = ops.fix(coincident(ops, n, a[0], a[1], b[0], b[1]), n, 1.0,
+                "the two points coincide: the line has no direction")
+    return (dx / n, dy / n, n)
+
+
+def line_perpendicular_to(ops: Ops, through: tuple, u: tuple) -> tuple:
+    """The line through ``through`` perpendicular to the direction ``u`` (from :func:`unit`)."""
+    return (through[0], through[1], -u[1], u[0])
+
+
+def line_parallel_to(ops: Ops, through: tuple, u: tuple) -> tuple:
+    """The line through ``through`` parallel to the direction ``u`` (from :func:`unit`)."""
+    return (through[0], through[1], u[0], u[1])
+
+
 def line_perpendicular(ops: Ops, through: tuple, a: tuple, b: tuple) -> tuple:
     """The line through ``through`` perpendicular to a→b ("through b draw ⟂ BC")."""
     dx = b[0] - a[0]

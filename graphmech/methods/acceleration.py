@@ -82,8 +82,7 @@ def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
 
 def _tangential_line(b: "LinkageConstruction", n: str, X: str, Y: str) -> str:
     return E.line(b, PANEL, f"⟂{Y}{X}@{_lbl(b, n)}",
-                 K.line_perpendicular,
-                 (n, b.mech[Y], b.mech[X]), f"through {_lbl(b, n)} draw ⟂ {Y}{X} (a^t_{X}{Y})")
+                 K.line_perpendicular_to, (n, E.direction(b, Y, X)), f"through {_lbl(b, n)} draw ⟂ {Y}{X} (a^t_{X}{Y})")
 
 
 def _close(b: "LinkageConstruction", link: str, X: str, Y: str, n: str, img: str) -> None:
@@ -179,8 +178,7 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
                 role="construction", panel=PANEL, label=ktag,
                 text=f"lay off {_lbl(b, b.acc[X])}{ktag} = 2ω{bar}·v_{xbar}{xblock}/μa (Coriolis)")
     E.vector(b, PANEL, b.acc[X], k, "construction")
-    lr = E.line(b, PANEL, f"∥{Bp}{X}@{ktag}", K.line_parallel,
-               (k, b.mech[Bp], b.mech[X]), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})")
+    lr = E.line(b, PANEL, f"∥{Bp}{X}@{ktag}", K.line_parallel_to, (k, E.direction(b, Bp, X)), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})")
     img = _image(b, xbar, K.intersect_lines, (lt, lr),
                  f"{label(xbar)} = (⟂{Bp}{X} through {_lbl(b, n)}) ∩ (∥{Bp}{X} through {ktag})")
     b.g.extend_line(lt, img)

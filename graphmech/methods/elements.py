@@ -23,3 +23,14 @@ def vector(b: "LinkageConstruction", panel: str, start: str, end: str, role: str
 def line(b: "LinkageConstruction", panel: str, name: str, kernel: Any, inputs: tuple, text: str) -> str:
     """A construction line ("through b draw ⟂ BC"), drawn thin through the points it carries."""
     return b.g.add(f"{panel[0]}:{name}", "line", kernel, inputs, role="construction", text=text, panel=panel)
+
+
+def direction(b: "LinkageConstruction", x: str, y: str) -> str:
+    """The direction X→Y on the kinematic diagram, as one shared step (unit vector and length)."""
+    from graphmech.geometry.kernels import unit
+
+    a, c = b.mech[x], b.mech[y]
+    name = f"dir:{a}->{c}"
+    if not b.g.has(name):
+        b.g.add(name, "scalar", unit, (a, c), role="hidden", text=f"direction {x}{y}", panel="mechanism")
+    return name

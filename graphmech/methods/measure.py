@@ -44,27 +44,27 @@ def _segment(start: str, end: str, scale: float, name: str, b: "LinkageConstruct
 
 def omega(b: "LinkageConstruction", link: str, U: str, V: str) -> None:
     """ω of a link read off the polygon: ω = (UV × uv)/|UV|² · μv/μl (sense: uv turned about u)."""
+    from graphmech.methods.elements import direction
+
     mv, ml = b.scales["v"], b.mu_l
 
-    def kern(ops: Any, mu: tuple, mv_: tuple, iu: tuple, iv: tuple) -> tuple:
-        dx, dy = mv_[0] - mu[0], mv_[1] - mu[1]
-        n = ops.hypot(dx, dy)
-        return (cross(dx, dy, iv[0] - iu[0], iv[1] - iu[1]) / n, mv / (n * ml))
+    def kern(ops: Any, d: tuple, iu: tuple, iv: tuple) -> tuple:
+        return (cross(d[0], d[1], iv[0] - iu[0], iv[1] - iu[1]), mv / (d[2] * ml))
 
-    b.omega[link] = _add(b, f"omega_{link}", "rad/s", kern, (b.mech[U], b.mech[V], b.vel[U], b.vel[V]),
+    b.omega[link] = _add(b, f"omega_{link}", "rad/s", kern, (direction(b, U, V), b.vel[U], b.vel[V]),
                          ("omega", link), "velocity", (_label(b, b.vel[U]), _label(b, b.vel[V])))
 
 
 def alpha(b: "LinkageConstruction", link: str, U: str, V: str, n: str, end: str) -> None:
     """α of a link from its tangential component n→end: α = (UV × a^t)/|UV|² · μa/μl."""
+    from graphmech.methods.elements import direction
+
     ma, ml = b.scales["a"], b.mu_l
 
-    def kern(ops: Any, mu: tuple, mv_: tuple, s: tuple, e: tuple) -> tuple:
-        dx, dy = mv_[0] - mu[0], mv_[1] - mu[1]
-        d = ops.hypot(dx, dy)
-        return (cross(dx, dy, e[0] - s[0], e[1] - s[1]) / d, ma / (d * ml))
+    def kern(ops: Any, d: tuple, s: tuple, e: tuple) -> tuple:
+        return (cross(d[0], d[1], e[0] - s[0], e[1] - s[1]), ma / (d[2] * ml))
 
-    b.alpha[link] = _add(b, f"alpha_{link}", "rad/s²", kern, (b.mech[U], b.mech[V], n, end),
+    b.alpha[link] = _add(b, f"alpha_{link}", "rad/s²", kern, (direction(b, U, V), n, end),
                          ("alpha", link), "acceleration", (_label(b, n), _label(b, end)))
 
 

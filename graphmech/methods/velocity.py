@@ -79,10 +79,8 @@ def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
 def _rrr(b: "LinkageConstruction", y: RRR) -> None:
     P, C, Q = y.p, y.c, y.q
     lp, lq, lc = _img_label(b, P), _img_label(b, Q), label(C)
-    li = E.line(b, PANEL, f"⟂{P}{C}@{lp}", K.line_perpendicular,
-               (b.vel[P], b.mech[P], b.mech[C]), f"through {lp} draw ⟂ {P}{C}")
-    lj = E.line(b, PANEL, f"⟂{Q}{C}@{lq}", K.line_perpendicular,
-               (b.vel[Q], b.mech[Q], b.mech[C]), f"through {lq} draw ⟂ {Q}{C}")
+    li = E.line(b, PANEL, f"⟂{P}{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}")
+    lj = E.line(b, PANEL, f"⟂{Q}{C}@{lq}", K.line_perpendicular_to, (b.vel[Q], E.direction(b, Q, C)), f"through {lq} draw ⟂ {Q}{C}")
     img = _image(b, C, K.intersect_lines, (li, lj),
                  f"{lc} = (⟂{P}{C} through {lp}) ∩ (⟂{Q}{C} through {lq})")
     b.g.extend_line(li, img)
@@ -98,8 +96,7 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     P, C = y.p, y.c
     gx, gy = y.guide.direction
     lp, lc = _img_label(b, P), label(C)
-    li = E.line(b, PANEL, f"⟂{P}{C}@{lp}", K.line_perpendicular,
-               (b.vel[P], b.mech[P], b.mech[C]), f"through {lp} draw ⟂ {P}{C}")
+    li = E.line(b, PANEL, f"⟂{P}{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}")
     lg = E.line(b, PANEL, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p draw ∥ the guide of {C}")
     img = _image(b, C, K.intersect_lines, (li, lg),
@@ -118,10 +115,8 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     xbar, xblock = y.coincident
     b.vel[xblock] = b.vel[X]
     lp, lx, lc = _img_label(b, Bp), _img_label(b, X), label(xbar)
-    lt = E.line(b, PANEL, f"⟂{Bp}{X}@{lp}", K.line_perpendicular,
-               (b.vel[Bp], b.mech[Bp], b.mech[X]), f"through {lp} draw ⟂ {Bp}{X}")
-    lr = E.line(b, PANEL, f"∥{Bp}{X}@{lx}", K.line_parallel,
-               (b.vel[X], b.mech[Bp], b.mech[X]), f"through {lx} draw ∥ {Bp}{X}")
+    lt = E.line(b, PANEL, f"⟂{Bp}{X}@{lp}", K.line_perpendicular_to, (b.vel[Bp], E.direction(b, Bp, X)), f"through {lp} draw ⟂ {Bp}{X}")
+    lr = E.line(b, PANEL, f"∥{Bp}{X}@{lx}", K.line_parallel_to, (b.vel[X], E.direction(b, Bp, X)), f"through {lx} draw ∥ {Bp}{X}")
     img = _image(b, xbar, K.intersect_lines, (lt, lr),
                  f"{lc} = (⟂{Bp}{X} through {lp}) ∩ (∥{Bp}{X} through {lx})")
     b.g.extend_line(lt, img)

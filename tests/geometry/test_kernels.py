@@ -34,7 +34,7 @@ def test_line_intersection_lies_on_both_lines(px, py, a, qx, qy, b):
 @given(coord, coord, st.floats(1, 500), coord, coord, st.floats(1, 500), st.sampled_from([1.0, -1.0]))
 def test_circle_intersection_is_on_both_circles_and_on_the_stated_side(x1, y1, r1, x2, y2, r2, side):
     d = math.hypot(x2 - x1, y2 - y1)
-    if not (abs(r1 - r2) * 1.001 < d < (r1 + r2) * 0.999):
+    if not (max(abs(r1 - r2) * 1.001, 1e-6 * (r1 + r2)) < d < (r1 + r2) * 0.999):
         return
     x, y = K.intersect_circles(K.ScalarOps(), (x1, y1), r1, (x2, y2), r2, side, str)
     assert math.hypot(x - x1, y - y1) == pytest.approx(r1, rel=1e-7, abs=1e-9)
