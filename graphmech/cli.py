@@ -211,16 +211,16 @@ def _table(an: Any, verdicts: Sequence[Any]) -> str:
     lines = [f"{an.scene.title}", "  ".join(f"{SCALE_INFO[k][0]} = {v:.6g} {SCALE_INFO[k][1]}" +
                                             ("" if k in an.stated else " (chosen)") for k, v in an.scales.items())]
     if an.rows:
-        lines.append(f"{'quantity':<16}{'drawn mm':>12}{'μ':>12}{'graphical':>15}{'exact':>15}{'rel.error':>11}  unit")
+        lines.append(f"{'quantity':<16} {'drawn mm':>11} {'μ':>11} {'graphical':>16} {'exact':>16} {'rel.error':>9}  unit")
         for r in an.rows:
             drawn = "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}"
             flag = "  ILL-CONDITIONED" if r.ill_conditioned else ""
-            lines.append(f"{r.name:<16}{drawn:>12}{r.scale:>12.5g}{r.graphical:>15.9g}{r.exact:>15.9g}"
-                         f"{r.rel_error:>11.1e}  {r.unit}{flag}")
+            lines.append(f"{r.name:<16} {drawn:>11} {r.scale:>11.5g} {r.graphical:>16.9g} {r.exact:>16.9g}"
+                         f" {r.rel_error:>9.1e}  {r.unit}{flag}")
     if verdicts:
-        lines.append(f"{'measured':<16}{'value':>12}{'expected':>14}{'± tol':>10}  verdict")
+        lines.append(f"{'measured':<16} {'value':>11} {'expected':>13} {'± tol':>9}  verdict")
         for v in verdicts:
-            lines.append(f"{v.name:<16}{v.measured:>12.6g}{v.expected:>14.6g}{v.tolerance:>10.3g}  "
+            lines.append(f"{v.name:<16} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
                          f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
     return "\n".join(lines)
 
@@ -241,7 +241,7 @@ def _bench(args: argparse.Namespace) -> int:
         print(text)
     else:
         for r in doc["records"]:
-            print(f"{r['method']:<12}{r['case']:<34}n={r['n']:<6}{r['seconds'] * 1e6:>12.1f} µs"
+            print(f"{r['method']:<18} {r['case']:<24} n={r['n']:<6}{r['seconds'] * 1e6:>12.1f} µs"
                   f"   max rel error {r['max_rel_error']:.1e}")
         for note in doc.get("notes", []):
             print(note)

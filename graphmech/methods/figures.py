@@ -13,7 +13,7 @@ import math
 from typing import Any, Sequence
 
 from graphmech.mechanisms.linkage import Crank, Linkage, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
-from graphmech.render.primitives import (Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Primitive,
+from graphmech.render.primitives import (ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Primitive,
                                          Segment, Sheet, Slider)
 from graphmech.scales import format_scale
 
@@ -56,6 +56,7 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
     fixed: list[str] = []
 
     numbers: list[Label] = []
+    coincident = {n for y in linkage.dyads if isinstance(y, (RPR, RPP)) for n in y.coincident}
 
     def number(lid: str | None, at: tuple[float, float], along: tuple[float, float] = (1.0, 0.0)) -> None:
         """The link's number, upright, as the book writes it beside the link (once per link)."""
@@ -84,6 +85,24 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
     d = linkage.driver
     if isinstance(d, Crank):
         link(d.pivot, d.tip, d.link)
+        if d.omega != 0.0:  # the driver's sense: a curved arrow about its pivot, as books draw ω₁
+            a, t = pos[d.pivot], pos[d.tip]
+            phi = math.atan2(t[1] - a[1], t[0] - a[0])
+            sweep = math.copysign(math.radians(75.0), d.omega)
+            r = min(7.0, 0.45 * math.dist(a, t)) if a != t else 7.0
+            # centre the arc where it clears the crank and the ground hatching below the pivot
+            def clear(mid: float) -> bool:
+                def gap(x: float, y: float) -> float:
+                    return abs((x - y + math.pi) % math.tau - math.pi)
+
+                return gap(mid, phi) >= math.radians(75.0) and gap(mid, -math.pi / 2) >= math.radians(85.0)
+
+            mids = [phi + math.radians(k * 15.0) for k in range(5, 20)]
+            mid_angle = next((m for m in mids if clear(m)), phi + math.pi / 2)
+            arc = ArcArrow(a, r, mid_angle - sweep / 2, sweep, "given")
+            items.append(arc)
+            mid = arc.points(2)[1]
+            numbers.append(Label("ω" + d.link.translate(SUBSCRIPT), mid, (), 3.2))
         fixed.append(d.pivot)
         hinges.append(d.tip)
     else:
@@ -146,7 +165,7 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
         if name not in linkage.frame_points and name in pos:
             items.append(Hinge(pos[name]))
     for name in dict.fromkeys(list(linkage.frame_points) + [n for n in pos if n[:1].isupper()]):
-        if name in pos and not any(ch.isdigit() for ch in name):
+        if name in pos and name not in coincident:  # C2, C3 stand where C is: one letter
             items.append(Label(name, pos[name], _dirs(lines.get(name, ()))))
     return items + numbers
 

@@ -30,6 +30,7 @@ from typing import Sequence
 from graphmech.render.labels import Box, text_box_size
 from graphmech.render.primitives import (
     XY,
+    ArcArrow,
     Arrow,
     Circle,
     FixedPivot,
@@ -96,6 +97,8 @@ def item_box(item: Primitive, style: Style = DEFAULT) -> Box:
     if isinstance(item, Arrow):
         grow = max(style.arrow_half_width, style.pen(item.role).width / 2.0)
         return _box_of([item.p0, item.p1], grow)
+    if isinstance(item, ArcArrow):
+        return _box_of(list(item.points()), style.arrow_length)
     if isinstance(item, Circle):
         return _box_of([item.center], item.r + style.pen(item.role).width / 2.0)
     if isinstance(item, Hinge):

@@ -39,6 +39,27 @@ class Arrow:
 
 
 @dataclass(frozen=True)
+class ArcArrow:
+    """A curved arrow: the sense of an angular velocity or acceleration (ω₁ at a crank's pivot).
+
+    The arc runs from angle ``start`` (rad, CCW from +x) through ``sweep`` (rad; negative
+    for clockwise) about ``center`` at radius ``r``, with its head at the end.
+    """
+
+    center: XY
+    r: float
+    start: float
+    sweep: float
+    role: Role = "given"
+
+    def points(self, n: int = 16) -> tuple[XY, ...]:
+        import math
+
+        return tuple((self.center[0] + self.r * math.cos(self.start + self.sweep * k / n),
+                      self.center[1] + self.r * math.sin(self.start + self.sweep * k / n)) for k in range(n + 1))
+
+
+@dataclass(frozen=True)
 class Circle:
     center: XY
     r: float
@@ -93,7 +114,7 @@ class Label:
     italic: bool = True
 
 
-Primitive = Union[Segment, Arrow, Circle, Hinge, FixedPivot, Slider, GuideLine, Label]
+Primitive = Union[Segment, Arrow, ArcArrow, Circle, Hinge, FixedPivot, Slider, GuideLine, Label]
 
 
 @dataclass(frozen=True)

@@ -39,6 +39,7 @@ from graphmech.render.labels import PlacedLabel, place_labels
 from graphmech.render.layout import PanelPlacement, layout_sheet, slider_corners
 from graphmech.render.primitives import (
     XY,
+    ArcArrow,
     Arrow,
     Circle,
     FixedPivot,
@@ -172,6 +173,19 @@ def item_shapes(item: Primitive, style: Style = DEFAULT) -> list[tuple[int, Shap
         return [(_ROLE_LAYER[item.role], LineShape(item.p0, item.p1, item.role, item.dashed))]
     if isinstance(item, Arrow):
         return [(_ROLE_LAYER[item.role], s) for s in arrow_shapes(item, style)]
+    if isinstance(item, ArcArrow):
+        pts = item.points()
+        # the head's tip at the arc's end, pointing along its tangent
+        th = item.start + item.sweep
+        sgn = 1.0 if item.sweep >= 0 else -1.0
+        tx, ty = -math.sin(th) * sgn, math.cos(th) * sgn
+        tip = pts[-1]
+        base = (tip[0] - style.arrow_length * tx, tip[1] - style.arrow_length * ty)
+        hw = style.arrow_half_width
+        head = PolyShape((tip, (base[0] - hw * ty, base[1] + hw * tx), (base[0] + hw * ty, base[1] - hw * tx)),
+                         item.role, closed=True, filled=True)
+        return [(_ROLE_LAYER[item.role], PolyShape(pts, item.role, closed=False, filled=False)),
+                (_ROLE_LAYER[item.role], head)]
     if isinstance(item, Circle):
         return [(_ROLE_LAYER[item.role], CircleShape(item.center, item.r, item.role))]
     if isinstance(item, Hinge):

@@ -57,12 +57,16 @@ def _short(x: float) -> str:
 
 def clean_text(s: str) -> str:
     """``s`` without the characters XML 1.0 forbids (control characters other than tab, LF
-    and CR; U+FFFE, U+FFFF; lone surrogates).
+    and CR; U+FFFE, U+FFFF; lone surrogates), nor the bidirectional overrides that would make
+    a title read differently from what it says (U+202A–202E, U+2066–2069).
 
-    >>> clean_text("a\\x00b\\x1bc\\td\\ufffe")
+    >>> clean_text("a\\x00b\\x1bc\\td\\ufffe\\u202e")
     'abc\\td'
     """
-    return _FORBIDDEN.sub("", s)
+    return _BIDI.sub("", _FORBIDDEN.sub("", s))
+
+
+_BIDI = re.compile("[\u202a-\u202e\u2066-\u2069]")
 
 
 def sheet_id_prefix(sheet: Sheet) -> str:

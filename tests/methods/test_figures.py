@@ -1,0 +1,74 @@
+"""The kinematics figures in textbook conventions, asserted on the stream of draw calls."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from graphmech.check import analyse, page_size, position_text
+from graphmech.methods.figures import display, linkage_sheet
+from graphmech.render.primitives import ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Segment, Slider
+from graphmech.render.recording import RecordingBackend
+from graphmech.render.sheet import draw_sheet
+from graphmech.scene import load_scene
+from tests.conftest import SCENES
+
+
+def sheet_of(name: str):
+    an = analyse(load_scene(SCENES / f"{name}.toml"))
+    b = an.build
+    texts = [position_text(b, lab) for lab in an.labels]
+    return an, linkage_sheet(an.scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
+                             list(an.scene.show), page_size(an.scene))
+
+
+def panel(sheet, prefix):
+    return next(p for p in sheet.panels if p.name.startswith(prefix))
+
+
+def test_display_letters_as_the_book_prints_them():
+    assert display("c2'") == "c₂′" and display("p'") == "p′" and display("n3'") == "n₃′"
+
+
+def test_slider_crank_diagram_symbols():
+    an, sheet = sheet_of("linkage.slider_crank_offset")
+    mech = panel(sheet, "mechanism-50")
+    kinds = [type(i) for i in mech.items]
+    assert kinds.count(FixedPivot) == 1  # A, hatched
+    assert kinds.count(Slider) == 1 and kinds.count(GuideLine) == 1  # block 3 on its guide
+    assert kinds.count(Hinge) == 2  # B and C
+    assert {i.text for i in mech.items if isinstance(i, Label)} >= {"A", "B", "C", "1", "2", "3", "ω₁"}
+    arc = next(i for i in mech.items if isinstance(i, ArcArrow))
+    assert arc.sweep > 0  # ω1 counter-clockwise
+    # links are drawn at μl: |AB| on paper is l_AB/μl = 100 mm / 5 = 20 mm
+    seg = next(i for i in mech.items if isinstance(i, Segment))
+    assert math.dist(seg.p0, seg.p1) == pytest.approx(0.1 / an.scales["l"])
+
+
+def test_velocity_polygon_draws_vectors_from_the_pole_and_thin_construction_lines():
+    an, sheet = sheet_of("linkage.slider_crank_offset")
+    vel = panel(sheet, "velocity-50")
+    arrows = [i for i in vel.items if isinstance(i, Arrow)]
+    lines = [i for i in vel.items if isinstance(i, Segment)]
+    assert {a.role for a in arrows} == {"result"} and len(arrows) == 3  # pb, pc, bc
+    assert lines and {s.role for s in lines} == {"construction"}
+    # pc is v_C/μv long and lies along the guide (x)
+    pc = next(a for a in arrows if a.p0 == (0.0, 0.0) and abs(a.p1[1]) < 1e-9)
+    assert abs(pc.p1[0]) * an.scales["v"] == pytest.approx(0.8671274775157003, rel=1e-12)
+    assert {i.text for i in vel.items if isinstance(i, Label)} == {"p", "b", "c"}
+
+
+def test_acceleration_polygon_lays_off_the_normal_component_with_its_point_n():
+    an, sheet = sheet_of("kin.oscillating_block")
+    acc = panel(sheet, "acceleration")
+    texts = {i.text for i in acc.items if isinstance(i, Label)}
+    assert {"p′", "b′", "n₂′", "k′", "c₂′", "d′", "e′"} <= texts
+    rec = draw_sheet(sheet, RecordingBackend())
+    heads = [c for c in rec if c[0] == "polyline" and c[3] is True and c[4] is True]
+    assert len(heads) >= 8  # every vector has an arrowhead drawn as a filled polygon
+
+
+def test_scale_notes_are_written_under_each_panel():
+    an, sheet = sheet_of("kin.oscillating_block")
+    notes = [n for p in sheet.panels for n in p.notes]
+    assert notes == ["μl = 0.002 m/mm", "μv = 0.005 (m/s)/mm", "μa = 0.05 (m/s²)/mm"]
