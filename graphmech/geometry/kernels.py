@@ -138,15 +138,6 @@ def coincident(ops: Ops, n: Any, ax: Any, ay: Any, bx: Any, by: Any) -> Any:
     return n <= COINCIDENT_REL * size
 
 
-def direction(ops: Ops, ax: Any, ay: Any, bx: Any, by: Any, what: str) -> tuple[Any, Any]:
-    """Unit vector a→b; ``what`` names the pair for the message when a and b coincide."""
-    dx = bx - ax
-    dy = by - ay
-    n = ops.hypot(dx, dy)
-    n = ops.fix(coincident(ops, n, ax, ay, bx, by), n, 1.0, f"{what} has zero length: no direction")
-    return dx / n, dy / n
-
-
 def unit(ops: Ops, a: tuple, b: tuple) -> tuple:
     """The direction a→b as ``(ux, uy, length)`` — a set square laid along AB, used by every
     line drawn ⟂ or ∥ to it and by every reading of ω or α along it."""
@@ -170,22 +161,12 @@ def line_parallel_to(ops: Ops, through: tuple, u: tuple) -> tuple:
 
 def line_perpendicular(ops: Ops, through: tuple, a: tuple, b: tuple) -> tuple:
     """The line through ``through`` perpendicular to a→b ("through b draw ⟂ BC")."""
-    dx = b[0] - a[0]
-    dy = b[1] - a[1]
-    n = ops.hypot(dx, dy)
-    n = ops.fix(coincident(ops, n, a[0], a[1], b[0], b[1]), n, 1.0,
-                "the two points coincide: the line has no direction")
-    return (through[0], through[1], -dy / n, dx / n)
+    return line_perpendicular_to(ops, through, unit(ops, a, b))
 
 
 def line_parallel(ops: Ops, through: tuple, a: tuple, b: tuple) -> tuple:
     """The line through ``through`` parallel to a→b ("through k′ draw ∥ BC")."""
-    dx = b[0] - a[0]
-    dy = b[1] - a[1]
-    n = ops.hypot(dx, dy)
-    n = ops.fix(coincident(ops, n, a[0], a[1], b[0], b[1]), n, 1.0,
-                "the two points coincide: the line has no direction")
-    return (through[0], through[1], dx / n, dy / n)
+    return line_parallel_to(ops, through, unit(ops, a, b))
 
 
 def line_fixed(ops: Ops, through: tuple, dx: float, dy: float) -> tuple:

@@ -143,7 +143,7 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
     U, V = pt.base
 
     def placed(ops: Any, u: tuple, v: tuple) -> tuple:
-        ux, uy = K.direction(ops, u[0], u[1], v[0], v[1], f"{U}{V}")
+        ux, uy, _ = K.unit(ops, u, v)
         return (u[0] + along * ux - left * uy, u[1] + along * uy + left * ux)
 
     b.mech[pt.name] = b.g.add(pt.name, "point", placed, (b.mech[U], b.mech[V]), role="given",
