@@ -85,7 +85,19 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
     from graphmech.render.svg import render_svg
     from graphmech.scene import load_scene
 
+    import graphmech
+
     scene = load_scene(path)
+    footer = (f"graphmech {graphmech.__version__}",)
+    if getattr(scene, "cam", None) is not None:
+        from graphmech.cam_check import analyse_cam
+        from graphmech.methods.cam_figures import cam_sheet
+
+        can = analyse_cam(scene)
+        sheet = cam_sheet(scene.title, can.cam, can.drawn, can.scales, list(scene.show), page_size(scene),
+                          roller_circles=scene.cam.roller_circles, marks=can.marks, footer=footer)
+        warnings = list(can.warnings)
+        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
     fit = rows_that_fit(page_size(scene))
     if len(scene.positions.values) > fit:
         raise SceneError([("driver", f"{len(scene.positions.values)} positions do not fit one sheet of "
@@ -95,17 +107,17 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
     an = analyse(scene)
     b = an.build
     texts = [position_text(b, lab) for lab in an.labels]
-    import graphmech
-
-    footer = (f"graphmech {graphmech.__version__}",)
     sheet = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
                           list(scene.show),
                           page_size(scene), footer)
-    raw = Path(path).read_bytes()
-    prefix = "g" + hashlib.sha256(raw).hexdigest()[:8]
     warnings = list(an.warnings)
-    svg = render_svg(sheet, prefix, on_warning=warnings.append)
+    svg = render_svg(sheet, _id_prefix(path), on_warning=warnings.append)
     return svg, warnings
+
+
+def _id_prefix(path: str | os.PathLike[str]) -> str:
+    """Element ids start with a hash of the scene, so two figures inline on one page don't clash."""
+    return "g" + hashlib.sha256(Path(path).read_bytes()).hexdigest()[:8]
 
 
 def write_atomic(path: str | os.PathLike[str], text: str) -> None:
@@ -191,12 +203,20 @@ def _check(args: argparse.Namespace) -> int:
         return EXIT_BAD_INPUT
     extra = _parse_measured(args.measured)
     scene = load_scene(args.scene)
-    an = analyse(scene, tuple(extra))
-    verdicts = judge(an, args.precision)
+    extra_doc: dict[str, Any] = {}
+    if getattr(scene, "cam", None) is not None:
+        from graphmech.cam_check import analyse_cam, judge_cam
+
+        an = analyse_cam(scene)
+        verdicts = judge_cam(an, args.precision, tuple(extra))
+        extra_doc["impacts"] = an.impacts
+    else:
+        an = analyse(scene, tuple(extra))
+        verdicts = judge(an, args.precision)
     bad = any(not v.ok for v in verdicts)
     if args.json:
         doc = {"quantities": [r.as_dict() for r in an.rows], "measured": [v.as_dict() for v in verdicts],
-               "warnings": list(an.warnings), "scales": an.scales}
+               "warnings": list(an.warnings), "scales": an.scales, **extra_doc}
         print(json.dumps(doc, indent=1, ensure_ascii=False, allow_nan=False))
     else:
         print(_table(an, verdicts))
@@ -208,8 +228,11 @@ def _check(args: argparse.Namespace) -> int:
 def _table(an: Any, verdicts: Sequence[Any]) -> str:
     from graphmech.scales import SCALE_INFO
 
-    lines = [f"{an.scene.title}", "  ".join(f"{SCALE_INFO[k][0]} = {v:.6g} {SCALE_INFO[k][1]}" +
-                                            ("" if k in an.stated else " (chosen)") for k, v in an.scales.items())]
+    from graphmech.scales import format_scale
+
+    notes = an.scale_notes() if hasattr(an, "scale_notes") else [
+        format_scale(k, v) + ("" if k in an.stated else " (chosen)") for k, v in an.scales.items() if k in SCALE_INFO]
+    lines = [f"{an.scene.title}", "  ".join(notes)]
     if an.rows:
         lines.append(f"{'quantity':<16} {'drawn mm':>11} {'μ':>11} {'graphical':>16} {'exact':>16} {'rel.error':>9}  unit")
         for r in an.rows:
@@ -237,6 +260,7 @@ def _bench(args: argparse.Namespace) -> int:
         out = Path(args.output)
         out.mkdir(parents=True, exist_ok=True)
         write_atomic(out / "bench.json", text + "\n")
+        from graphmech.render.plots import error_time_plots; error_time_plots(doc["records"], out)  # noqa: E702
     if args.json:
         print(text)
     else:

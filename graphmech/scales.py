@@ -27,6 +27,8 @@ SCALE_INFO = {
     "l": ("μl", "m/mm"),
     "v": ("μv", "(m/s)/mm"),
     "a": ("μa", "(m/s²)/mm"),
+    "s": ("μs", "m/mm"),
+    "phi": ("μφ", "°/mm"),  # kept in rad/mm, written in degrees per mm as books do
 }
 
 
@@ -43,6 +45,12 @@ def round_scale(minimum: float) -> float:
 
 
 def format_scale(symbol: str, value: float) -> str:
-    """The note written on a drawing, e.g. ``μv = 0.005 (m/s)/mm``."""
+    """The note written on a drawing, e.g. ``μv = 0.005 (m/s)/mm``.
+
+    >>> format_scale("phi", math.radians(2.0))
+    'μφ = 2 °/mm'
+    """
     sym, unit = SCALE_INFO[symbol]
+    if symbol == "phi":
+        value = math.degrees(value)
     return f"{sym} = {value:.6g} {unit}"

@@ -1,12 +1,14 @@
 """Read a scene file: the TOML that says what to construct, draw and check.
 
-A scene describes a linkage (frame points, a driver, Assur dyads in assembly order, extra
-points on links), the driver's positions, the drawing scales, what to show and find, and the
-values a draughtsman measured on paper. Every number is converted to SI on load.
+A scene describes either a linkage (frame points, a driver, Assur dyads in assembly order,
+extra points on links, and the driver's positions) or a disc cam (its base circle, follower
+and motion program, table ``[cam]``), together with the drawing scales, what to show and
+find, and the values a draughtsman measured on paper. Every number is converted to SI on load.
 
 Validation collects *every* problem and raises one :class:`~graphmech.errors.SceneError`;
 its key paths read the way the user wrote the file (``dyad[0].lengths[1]``,
-``driver.angle_deg[2]``, ``frame.D``), and its message is the first problem in file order.
+``driver.angle_deg[2]``, ``frame.D``, ``cam.segment[2].angle``), and its message is the first
+problem in file order.
 Whether a linkage can be *assembled* at a position is not decided here: the construction
 does that, position by position.
 
@@ -26,6 +28,14 @@ from typing import Any, Iterable, Mapping
 
 from graphmech.errors import SceneError
 from graphmech.scales import PAPER
+from graphmech.mechanisms.cam import (
+    DiscCam,
+    Follower,
+    MotionProgram,
+    OscillatingFollower,
+    Segment,
+    TranslatingFollower,
+)
 from graphmech.mechanisms.linkage import (
     RPP,
     RPR,
@@ -49,6 +59,20 @@ MAX_POSITIONS = 3600
 MAX_TITLE = 200
 #: What a scene may show, in the order a textbook draws them.
 SHOW_CHOICES = ("mechanism", "velocity", "acceleration")
+#: What a cam scene may show: the profile by inversion and the s–δ, v–δ, a–δ diagrams.
+CAM_SHOW_CHOICES = ("profile", "displacement", "velocity", "acceleration")
+#: What a cam scene shows when it does not say.
+CAM_SHOW_DEFAULT = ("profile",)
+#: The inversion's division step when a cam scene does not give one, rad (15°).
+CAM_STEP_DEFAULT = math.radians(15.0)
+#: The finest division step, rad (0.1°: at most 3600 divisions).
+CAM_STEP_MIN = math.radians(0.1)
+#: The coarsest division step, rad (90°).
+CAM_STEP_MAX = math.radians(90.0)
+#: The most segments a cam's motion program may have.
+MAX_SEGMENTS = 100
+#: The most points a ``table`` law may have.
+MAX_TABLE_POINTS = 1000
 #: Named paper sizes, (width, height) in mm: one table for the whole package.
 PAPER_SIZES = PAPER
 
@@ -67,8 +91,31 @@ class Page:
 
 
 @dataclass(frozen=True)
+class CamScene:
+    """The cam of a cam scene.
+
+    Parameters
+    ----------
+    cam : DiscCam
+        The cam, its follower and motion program, in SI (m, rad, rad/s).
+    step : float
+        The division step of the inversion, rad (default 15°); the inversion also divides
+        at the joints of the motion program's segments.
+    roller_circles : bool
+        Draw the roller circles of the inversion (always False without a roller).
+    """
+
+    cam: DiscCam
+    step: float
+    roller_circles: bool = True
+
+
+@dataclass(frozen=True)
 class Scene:
     """A validated scene, all in SI units.
+
+    A scene is either a linkage scene (``linkage`` and ``positions`` set, ``cam`` None) or a
+    cam scene (``cam`` set, ``linkage`` and ``positions`` None).
 
     Parameters
     ----------
@@ -77,17 +124,20 @@ class Scene:
     title : str
         Free text (the renderer escapes it).
     show : tuple of str
-        A subset of :data:`SHOW_CHOICES` in the user's order, no duplicates.
+        A subset of :data:`SHOW_CHOICES` (a cam scene: :data:`CAM_SHOW_CHOICES`) in the
+        user's order, no duplicates.
     find : tuple of str
-        Quantity names as written (``"v_C"``, ``"omega_3"``); ``check`` validates them
-        against the construction.
+        Quantity names as written (``"v_C"``, ``"omega_3"``, ``"alpha_max"``); ``check``
+        validates them against the construction.
     scales : dict
-        Only the scales given: ``"l"`` m/mm, ``"v"`` (m/s)/mm, ``"a"`` (m/s²)/mm.
-    linkage : Linkage
-        The mechanism, in m and rad.
-    positions : Positions
+        Only the scales given: ``"l"`` m/mm, ``"v"`` (m/s)/mm, ``"a"`` (m/s²)/mm; a cam scene
+        also ``"s"`` m/mm and ``"phi"`` rad/mm, and for an oscillating follower ``"s"`` is
+        rad/mm, ``"v"`` (rad/s)/mm, ``"a"`` (rad/s²)/mm.
+    linkage : Linkage or None
+        The mechanism, in m and rad (None in a cam scene).
+    positions : Positions or None
         Driver values in SI (rad or m) and their labels as written in the scene's unit
-        (``"50"``), used as name suffixes such as ``v_C@50``.
+        (``"50"``), used as name suffixes such as ``v_C@50`` (None in a cam scene).
     measured : tuple of (str, float)
         The ``[measured]`` table in file order, raw: quantity values in SI or drawn
         segment lengths in mm (``("p'c'", 40.5)``); ``check`` interprets them.
@@ -95,6 +145,8 @@ class Scene:
         Drawing precision for judging measured values, mm.
     page : Page
         The sheet.
+    cam : CamScene or None
+        The cam of a cam scene (None in a linkage scene).
     """
 
     source: str
@@ -102,11 +154,12 @@ class Scene:
     show: tuple[str, ...]
     find: tuple[str, ...]
     scales: dict[str, float] = field(hash=False)
-    linkage: Linkage
-    positions: Positions
-    measured: tuple[tuple[str, float], ...]
+    linkage: Linkage | None = None
+    positions: Positions | None = None
+    measured: tuple[tuple[str, float], ...] = ()
     precision_mm: float = DRAWING_PRECISION_MM
     page: Page = Page()
+    cam: CamScene | None = None
 
 
 # --------------------------------------------------------------------------------------------
@@ -182,7 +235,11 @@ _TOP_KEYS = (
     "measured",
     "check",
     "page",
+    "cam",
 )
+
+#: The tables only a linkage scene has.
+_LINKAGE_KEYS = ("frame", "driver", "dyad", "point")
 
 _MISSING: Any = object()
 
@@ -260,6 +317,24 @@ class _Given:
 
     def si(self, x: float) -> float:
         return x * self.num / self.den
+
+
+@dataclass
+class _Value:
+    """A quantity read and converted: SI value, and how to say a length or an angle in the
+    unit the user wrote it in (for messages)."""
+
+    si: float
+    unit: str
+    path: str
+    num: float
+    den: float
+
+    def text(self, si: float | None = None) -> str:
+        """``si`` (default: this value) in the user's unit: ``"35 mm"``, ``"25°"``."""
+        x = (self.si if si is None else si) * self.den / self.num
+        label = _label(float(f"{x:.6g}"))
+        return f"{label}°" if self.unit == "deg" else f"{label} {self.unit}"
 
 
 class _Reader:
@@ -422,10 +497,10 @@ class _Reader:
         if value is _MISSING:
             return []
         if isinstance(value, dict):  # [dyad] for [[dyad]]: say so, then read it anyway
-            self.problem(self.at(key), f"must be an array of tables: write [[{key}]]")
+            self.problem(self.at(key), f"must be an array of tables: write [[{self.at(key)}]]")
             value = [value]
         if not isinstance(value, list):
-            self.problem(self.at(key), f"must be an array of tables: write [[{key}]]")
+            self.problem(self.at(key), f"must be an array of tables: write [[{self.at(key)}]]")
             return []
         out = []
         for i, item in enumerate(value):
@@ -506,6 +581,33 @@ class _Reader:
             return None
         x = self.number(given.value, self.at(given.key), positive=positive)
         return None if x is None else given.si(x)
+
+    def value(
+        self, base: str, kind: str, *, required: bool = True, positive: bool = False
+    ) -> _Value | None:
+        """Like :meth:`scalar`, keeping the unit and key path for messages; None when absent."""
+        if not required and self.present(base) is None:
+            self.quantity(base, kind, required=False)  # registers the known keys
+            return None
+        given = self.quantity(base, kind, required=required)
+        if given is None:
+            return None
+        path = self.at(given.key)
+        x = self.number(given.value, path, positive=positive)
+        if x is None:
+            return None
+        if given.key == base:
+            unit = self.units[kind] or ""
+        else:
+            unit = _SUFFIXES[kind][given.key[len(base) + 1 :]]
+        return _Value(given.si(x), unit, path, given.num, given.den)
+
+    def ignore(self, *bases: str) -> None:
+        """Mark ``base`` and ``base_<anything>`` as read, silently (their context is broken)."""
+        for key in self.table:
+            if any(key == b or key.startswith(b + "_") for b in bases):
+                self.used.add(key)
+        self.known.update(bases)
 
     def present(self, base: str) -> str | None:
         """The key under which ``base`` is written (plain or with any suffix), if any."""
@@ -658,8 +760,12 @@ def _read_units(top: _Reader) -> dict[str, str | None]:
     return units
 
 
-def _read_header(top: _Reader) -> tuple[str, tuple[str, ...], tuple[str, ...]]:
-    """title, show, find."""
+def _read_header(
+    top: _Reader,
+    choices: tuple[str, ...] = SHOW_CHOICES,
+    default: tuple[str, ...] = SHOW_CHOICES,
+) -> tuple[str, tuple[str, ...], tuple[str, ...]]:
+    """title, show (from ``choices``, ``default`` when absent), find."""
     title = top.string("title", default="") or ""
     if len(title) > MAX_TITLE:
         top.problem("title", f"too long ({len(title)} characters; at most {MAX_TITLE})")
@@ -667,16 +773,16 @@ def _read_header(top: _Reader) -> tuple[str, tuple[str, ...], tuple[str, ...]]:
     show: list[str] = []
     value = top.raw("show")
     if value is _MISSING:
-        show = list(SHOW_CHOICES)
+        show = list(default)
     elif not isinstance(value, list) or not value:
-        top.problem("show", f"must be a non-empty list from {_choices(SHOW_CHOICES)}")
+        top.problem("show", f"must be a non-empty list from {_choices(choices)}")
     else:
         for i, item in enumerate(value):
-            if not isinstance(item, str) or item not in SHOW_CHOICES:
+            if not isinstance(item, str) or item not in choices:
                 top.problem(
                     f"show[{i}]",
-                    f"unknown value {_say(item)}: use {_choices(SHOW_CHOICES)}"
-                    + (_did_you_mean(item, SHOW_CHOICES) if isinstance(item, str) else ""),
+                    f"unknown value {_say(item)}: use {_choices(choices)}"
+                    + (_did_you_mean(item, choices) if isinstance(item, str) else ""),
                 )
             elif item in show:
                 top.problem(f"show[{i}]", f"{item} is listed twice")
@@ -699,13 +805,40 @@ def _read_header(top: _Reader) -> tuple[str, tuple[str, ...], tuple[str, ...]]:
     return title, tuple(show), tuple(find)
 
 
-def _read_scales(top: _Reader) -> dict[str, float]:
-    """[scales]: l, v, a per drawing mm, converted to SI per mm."""
+#: A cam scene's scales: name → kind of quantity, for a translating and an oscillating follower.
+_CAM_SCALES = (
+    ("l", "length", "length"),
+    ("s", "length", "angle"),
+    ("phi", "angle", "angle"),
+    ("v", "velocity", "omega"),
+    ("a", "acceleration", "epsilon"),
+)
+
+
+def _read_scales(top: _Reader, cam: bool = False, follower: str | None = None) -> dict[str, float]:
+    """[scales]: l, v, a per drawing mm, converted to SI per mm.
+
+    A cam scene also has s and phi, and the kind of s, v and a depends on the follower
+    (``follower`` None: unknown, those scales are skipped silently).
+    """
     r = top.table_at("scales")
     scales: dict[str, float] = {}
     if r is None:
         return scales
-    for name, kind in (("l", "length"), ("v", "velocity"), ("a", "acceleration")):
+    entries: list[tuple[str, str | None]]
+    if cam:
+        entries = [
+            (name, None if follower is None else (lin if follower == "translating" else ang))
+            for name, lin, ang in _CAM_SCALES
+        ]
+        entries[0] = ("l", "length")
+        entries[2] = ("phi", "angle")
+    else:
+        entries = [("l", "length"), ("v", "velocity"), ("a", "acceleration")]
+    for name, kind in entries:
+        if kind is None:
+            r.ignore(name)
+            continue
         given = r.quantity(name, kind, required=False, per_mm=True)
         if given is not None:
             x = r.number(given.value, r.at(given.key), positive=True)
@@ -986,8 +1119,13 @@ def _read_point(r: _Reader, index: int) -> _Part:
     return part
 
 
-def _read_measured(top: _Reader, labels: tuple[str, ...] | None) -> tuple[tuple[str, float], ...]:
-    """[measured]: quantity values (SI) or drawn segments (mm), kept raw and in order."""
+def _read_measured(
+    top: _Reader, labels: tuple[str, ...] | None, cam: bool = False
+) -> tuple[tuple[str, float], ...]:
+    """[measured]: quantity values (SI) or drawn segments (mm), kept raw and in order.
+
+    A cam scene has no driver positions, so its names take no ``@label``.
+    """
     r = top.table_at("measured")
     if r is None:
         return ()
@@ -1004,6 +1142,13 @@ def _read_measured(top: _Reader, labels: tuple[str, ...] | None) -> tuple[tuple[
             continue
         x = r.number(value, path)
         if x is None:
+            continue
+        if "@" in key and cam:
+            r.problem(
+                path,
+                "a cam scene has no driver positions: write the name without "
+                f"@{_say(key.split('@', 1)[1])[1:-1]}",
+            )
             continue
         if "@" in key and labels is not None:
             label = key.split("@", 1)[1]
@@ -1050,6 +1195,321 @@ def _read_page(top: _Reader) -> Page:
             size = (wh[0], wh[1])
     r.finish()
     return Page(size)
+
+
+# --------------------------------------------------------------------------------------------
+# A cam scene: [cam], [cam.follower], [cam.program], [[cam.segment]].
+# --------------------------------------------------------------------------------------------
+
+_FOLLOWER_TYPES = ("translating", "oscillating")
+_CONTACTS = ("knife", "roller", "flat")
+_SEGMENT_KINDS = ("rise", "return", "dwell")
+#: The keys only one type of follower has.
+_TRANSLATING_ONLY = ("offset",)
+_OSCILLATING_ONLY = ("pivot_distance", "arm", "sense")
+
+
+def _peek_follower(data: Mapping[str, Any]) -> str | None:
+    """The follower's type if the scene states a valid one (to choose the scales' units)."""
+    cam = data.get("cam")
+    follower = cam.get("follower") if isinstance(cam, dict) else None
+    kind = follower.get("type") if isinstance(follower, dict) else None
+    return kind if kind in _FOLLOWER_TYPES else None
+
+
+def _not_for(r: _Reader, bases: Iterable[str], reason: str) -> None:
+    """Refuse every key of ``bases`` (plain or with a suffix) present in the table."""
+    for base in bases:
+        r.known.add(base)
+        for key in list(r.table):
+            if key == base or key.startswith(base + "_"):
+                r.used.add(key)
+                r.problem(r.at(key), reason)
+
+
+def _read_follower(
+    cam: _Reader, r0: _Value | None
+) -> tuple[Follower | None, str | None, str | None, bool]:
+    """[cam.follower]: the follower, its type and contact (None when invalid), and whether
+    anything in it was wrong."""
+    r = cam.table_at(
+        "follower",
+        required=True,
+        hint='add a [cam.follower] table (type = "translating" or "oscillating")',
+    )
+    if r is None:
+        return None, None, None, True
+    before = len(r.problems)
+    kind = r.string("type", choices=_FOLLOWER_TYPES, required=True)
+    contact = r.string("contact", choices=_CONTACTS, required=True)
+    if kind is None:  # the keys belong to one type or the other: nothing to judge them by
+        r.ignore("roller_radius", *_TRANSLATING_ONLY, *_OSCILLATING_ONLY)
+        r.finish()
+        return None, None, contact, True
+
+    roller: _Value | None = None
+    if contact == "roller":
+        roller = r.value("roller_radius", "length", positive=True)
+        if roller is not None and r0 is not None and roller.si >= r0.si:
+            r.problem(
+                roller.path,
+                f"r_r = {roller.text()} is not smaller than the base radius r0 = {r0.text()}: "
+                "the working profile's base circle (r0 − r_r) would vanish",
+            )
+            roller = None
+    elif contact is None:
+        r.ignore("roller_radius")
+    else:
+        _not_for(r, ["roller_radius"], f'only for contact = "roller" (this follower is {contact})')
+
+    model: Follower | None = None
+    # a value can be None without a problem here (a wrong [units] entry is reported there)
+    complete = contact is not None and (contact != "roller" or roller is not None)
+    if kind == "translating":
+        offset = r.value("offset", "length", required=False)
+        _not_for(r, _OSCILLATING_ONLY, f"only for an oscillating follower (this one is {kind})")
+        if offset is not None and r0 is not None and abs(offset.si) >= r0.si:
+            r.problem(
+                offset.path,
+                f"|e| = {offset.text(abs(offset.si))} is not smaller than the base radius "
+                f"r0 = {r0.text()}: the follower's axis misses the base circle",
+            )
+        e = 0.0 if offset is None else offset.si + 0.0
+        complete = complete and (offset is not None or r.present("offset") is None)
+        if complete and len(r.problems) == before:
+            model = TranslatingFollower(e, contact, roller.si if roller else 0.0)  # type: ignore[arg-type]
+    else:
+        a = r.value("pivot_distance", "length", positive=True)
+        arm = r.value("arm", "length", positive=True)
+        sense = r.string("sense", choices=("opposite", "same"), required=True)
+        _not_for(r, _TRANSLATING_ONLY, f"only for a translating follower (this one is {kind})")
+        if contact == "flat":
+            r.problem(
+                r.at("contact"),
+                'a flat-face oscillating follower is not supported yet: use contact = "knife" '
+                'or "roller"',
+            )
+        if a is not None and arm is not None and r0 is not None:
+            near, far = abs(a.si - arm.si), a.si + arm.si
+            if not near < r0.si < far:
+                r.problem(
+                    arm.path,
+                    f"the arm cannot reach the base circle: r0 = {r0.text()} must lie between "
+                    f"|a − l| = {r0.text(near)} and a + l = {r0.text(far)} "
+                    f"(pivot_distance a = {a.text()}, arm l = {arm.text()})",
+                )
+        if complete and _valid(a, arm, sense) and len(r.problems) == before:
+            model = OscillatingFollower(
+                a.si, arm.si, contact, roller.si if roller else 0.0, sense  # type: ignore[arg-type, union-attr]
+            )
+    r.finish()
+    return model, kind, contact, len(r.problems) != before
+
+
+def _motion_path(
+    path: str, segments: list[tuple[str, str]], stroke_path: str
+) -> str:
+    """A key path of :func:`graphmech.mechanisms.motion.validate` as the scene writes it."""
+    if path == "program.stroke":
+        return stroke_path
+    m = re.fullmatch(r"program\.segments(?:\[(\d+)\](.*))?", path)
+    if m is None:
+        return "cam." + path
+    if m.group(1) is None:
+        return "cam.segment"
+    i = int(m.group(1))
+    if i >= len(segments):
+        return "cam.segment"
+    where, angle_path = segments[i]
+    return angle_path if m.group(2) == ".angle" else where + m.group(2)
+
+
+def _read_program(cam: _Reader, follower: str | None) -> tuple[MotionProgram | None, bool]:
+    """[cam.program] (the stroke) and [[cam.segment]]: the motion program; whether it had
+    problems."""
+    from graphmech.mechanisms.motion import LAWS, validate
+
+    before = len(cam.problems)
+    stroke: _Value | None = None
+    stroke_path = "cam.program.stroke"
+    p = cam.table_at(
+        "program",
+        required=True,
+        hint="add a [cam.program] table with the stroke (stroke_mm = 16, or an oscillating "
+        "follower's stroke_deg = 25)",
+    )
+    if p is not None:
+        if follower is None:
+            p.ignore("stroke")
+        else:
+            kind = "length" if follower == "translating" else "angle"
+            stroke = p.value("stroke", kind, positive=True)
+            if stroke is not None:
+                stroke_path = stroke.path
+                if kind == "angle" and stroke.si >= math.pi:
+                    p.problem(
+                        stroke.path,
+                        f"an oscillating follower's stroke (its swing) must be below 180°, "
+                        f"not {stroke.text()}",
+                    )
+                    stroke = None
+        p.finish("the segments are [[cam.segment]] tables, beside [cam.program]")
+
+    if cam.raw("segment") is _MISSING:
+        cam.problem(
+            cam.at("segment"),
+            "missing: add [[cam.segment]] tables (kind = \"rise\", \"dwell\", \"return\" …) "
+            "whose angles add up to 360°",
+        )
+        return None, True
+    readers = cam.tables_at("segment")
+    if len(readers) > MAX_SEGMENTS:
+        cam.problem(cam.at("segment"), f"too many segments ({len(readers)} > {MAX_SEGMENTS})")
+        return None, True
+    intact = isinstance(cam.table["segment"], list) and len(readers) == len(cam.table["segment"])
+    if not readers:
+        if isinstance(cam.table["segment"], list) and not cam.table["segment"]:
+            cam.problem(cam.at("segment"), "no segments: a program needs at least a rise and a return")
+        return None, True
+
+    segments: list[Segment] = []
+    where: list[tuple[str, str]] = []  # each segment's path and its angle's path
+    angles: list[_Value | None] = []
+    kinds_ok = True
+    for s in readers:
+        kind = s.string("kind", choices=_SEGMENT_KINDS, required=True)
+        kinds_ok = kinds_ok and kind is not None
+        angle = s.value("angle", "angle")
+        if angle is not None and angle.si <= 0:
+            if kind == "dwell" and angle.si == 0:
+                s.problem(angle.path, "a dwell of 0° is no dwell: leave this segment out")
+            else:
+                s.problem(angle.path, "must be > 0")
+            angle = None
+        angles.append(angle)
+        law: str | None = None
+        table: tuple[tuple[float, float], ...] = ()
+        if kind in ("rise", "return"):
+            law = s.string("law", choices=LAWS, required=True)
+        elif kind == "dwell":
+            _not_for(s, ["law"], "a dwell has no motion law: leave law out")
+        else:
+            s.ignore("law")
+        if law == "table":
+            table_value = s.raw(
+                "table", required=True, hint="table = [[0, 0], [0.5, 0.3], [1, 1]] (fractions)"
+            )
+            parsed = _read_table(s, table_value) if table_value is not _MISSING else None
+            if parsed is None:
+                law = None  # reported: do not let validate() repeat it
+            else:
+                table = parsed
+        elif law is not None or kind == "dwell":
+            _not_for(s, ["table"], 'only with law = "table"')
+        else:
+            s.ignore("table")
+        s.finish()
+        segments.append(
+            Segment(
+                kind or "dwell",  # type: ignore[arg-type]
+                angle.si if angle is not None else 1.0,
+                (law or "uniform") if kind in ("rise", "return") else None,  # type: ignore[arg-type]
+                table,
+            )
+        )
+        where.append((s.path, angle.path if angle is not None else s.at("angle")))
+
+    # The motion program's own rules (alternation, laws, tables), on the scene's paths.
+    # Angles and the stroke are judged here, in the scene's units; a placeholder stands in
+    # for whatever was already reported.
+    program = MotionProgram(stroke.si if stroke is not None else 1.0, tuple(segments))
+    if intact:
+        for path, reason in validate(program):
+            if path == "program.stroke" or path.endswith(".angle"):
+                continue
+            if reason.startswith("the angles add up"):
+                continue
+            if not kinds_ok and (path.endswith(".kind") or path == "program.segments"):
+                continue
+            cam.problem(_motion_path(path, where, stroke_path), reason)
+
+    if intact and all(a is not None for a in angles):
+        total = sum(a.si for a in angles)  # type: ignore[union-attr]
+        if abs(total - 2.0 * math.pi) > 1e-9:
+            in_rad = any(a.unit == "rad" for a in angles)  # type: ignore[union-attr]
+            rad = f" ({total:.9g} rad, not 2π = {2.0 * math.pi:.9g})" if in_rad else ""
+            cam.problem(
+                cam.at("segment"),
+                f"the segment angles add up to {_label(float(f'{math.degrees(total):.9g}'))}°, "
+                f"not 360°{rad}: together they are one turn of the cam",
+            )
+    ok = len(cam.problems) == before and stroke is not None
+    return (program if ok else None), not ok
+
+
+def _read_table(s: _Reader, value: Any) -> tuple[tuple[float, float], ...] | None:
+    """A ``table`` law's points [[x, y], …], fractions of the segment's angle and the stroke."""
+    path = s.at("table")
+    if not isinstance(value, list):
+        s.problem(path, f"must be a list of [x, y] points, not {_type_name(value)}")
+        return None
+    if len(value) > MAX_TABLE_POINTS:
+        s.problem(path, f"too many points ({len(value)} > {MAX_TABLE_POINTS})")
+        return None
+    points = [s.numbers(v, f"{path}[{j}]", 2, shape="[x, y]") for j, v in enumerate(value)]
+    if any(pt is None for pt in points):
+        return None
+    return tuple((pt[0], pt[1]) for pt in points)  # type: ignore[index]
+
+
+def _read_cam(top: _Reader) -> CamScene | None:
+    """[cam]: the disc cam, its follower and motion program, and how to divide the inversion."""
+    r = top.table_at("cam", required=True)
+    if r is None:
+        return None
+    before = len(r.problems)
+    r0 = r.value("base_radius", "length", positive=True)
+    # a crank's word for it: say so (below) instead of "rotation: missing"
+    rotation = r.string("rotation", choices=("ccw", "cw"), required="direction" not in r.table)
+    omega = r.value("omega", "omega", positive=True)
+    step = r.value("step", "angle", required=False, positive=True)
+    if step is not None and not CAM_STEP_MIN <= step.si <= CAM_STEP_MAX:
+        r.problem(
+            step.path,
+            f"must lie between 0.1° and 90°, not {step.text()}: "
+            + ("too coarse to draw a profile" if step.si > CAM_STEP_MAX else "too many divisions"),
+        )
+    alpha = r.value("alpha_permissible", "angle", required=False, positive=True)
+    if alpha is not None and not alpha.si < math.pi / 2:
+        r.problem(alpha.path, f"must be below 90°, not {alpha.text()}")
+    circles = r.raw("roller_circles")
+    if circles is not _MISSING and not isinstance(circles, bool):
+        r.problem(r.at("roller_circles"), f"must be true or false, not {_type_name(circles)}")
+    if "direction" in r.table and "direction" not in r.used:  # the crank's word for it
+        r.used.add("direction")
+        r.problem(r.at("direction"), 'a cam\'s sense is written rotation = "ccw" or "cw"')
+    follower, kind, contact, follower_bad = _read_follower(r, r0)
+    if isinstance(circles, bool) and contact is not None and contact != "roller":
+        r.problem(r.at("roller_circles"), f'only for contact = "roller" (this follower is {contact})')
+    program, program_bad = _read_program(r, kind)
+    r.finish()
+    if len(r.problems) != before or follower_bad or program_bad:
+        return None
+    if r0 is None or rotation is None or omega is None or follower is None or program is None:
+        return None  # pragma: no cover - each of these was reported
+    disc = DiscCam(
+        base_radius=r0.si,
+        follower=follower,
+        program=program,
+        rotation=1 if rotation == "ccw" else -1,
+        omega=omega.si,
+        alpha_permissible=None if alpha is None else alpha.si,
+    )
+    return CamScene(
+        cam=disc,
+        step=CAM_STEP_DEFAULT if step is None else step.si,
+        roller_circles=contact == "roller" and circles is not False,
+    )
 
 
 # --------------------------------------------------------------------------------------------
@@ -1174,8 +1634,13 @@ def _check_structure(
     return str(max(numeric) + 1) if numeric else "0"
 
 
-def _rank(problem: tuple[str, str], order: Mapping[str, int]) -> tuple[int, int, int]:
-    """Sort key putting problems in file order: top-level table, then array index.
+def _rank(
+    problem: tuple[str, str],
+    order: Mapping[str, int],
+    cam_order: Mapping[str, int] | None = None,
+) -> tuple[int, int, int, int, int]:
+    """Sort key putting problems in file order: top-level table, then array index; within
+    [cam], its own keys and tables in file order too (``cam_order``).
 
     Within one table an unknown key comes first: a misspelt key is usually why another
     one is "missing".
@@ -1184,8 +1649,15 @@ def _rank(problem: tuple[str, str], order: Mapping[str, int]) -> tuple[int, int,
     m = re.match(r"([^.\[]+)(?:\[(\d+)\])?", path)
     typo = 0 if reason.startswith("unknown key") else 1
     if not m:
-        return (-1, 0, typo)
-    return (order.get(m.group(1), len(order)), int(m.group(2) or 0), typo)
+        return (-1, 0, 0, 0, typo)
+    sub = sub_index = 0
+    if cam_order is not None and m.group(1) == "cam":
+        n = re.match(r"cam\.([^.\[]+)(?:\[(\d+)\])?", path)
+        if n:  # a whole array ("cam.segment": the angles' sum) after its items
+            whole = n.group(0) == path and n.group(2) is None
+            sub = cam_order.get(n.group(1), len(cam_order))
+            sub_index = MAX_SEGMENTS + 1 if whole else int(n.group(2) or 0)
+    return (order.get(m.group(1), len(order)), int(m.group(2) or 0), sub, sub_index, typo)
 
 
 # --------------------------------------------------------------------------------------------
@@ -1237,6 +1709,20 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     ...     print(err.problems[1])
     bad.toml: driver.lenght_mm: unknown key; did you mean length_mm? (and 1 more)
     ('driver.length', 'missing: write length_mm (or length with [units] length)')
+
+    A cam scene has a [cam] table instead of [driver]:
+
+    >>> cam = parse_scene({
+    ...     "units": {"length": "mm", "angle": "deg"},
+    ...     "cam": {"base_radius": 30, "rotation": "ccw", "omega_rad_s": 10,
+    ...             "follower": {"type": "translating", "contact": "knife", "offset": 35},
+    ...             "program": {"stroke": 16},
+    ...             "segment": [{"kind": "rise", "angle": 180, "law": "sine"},
+    ...                         {"kind": "return", "angle": 170, "law": "sine"}]},
+    ... }, "cam.toml")
+    Traceback (most recent call last):
+    ...
+    graphmech.errors.SceneError: cam.toml: cam.follower.offset: |e| = 35 mm is not smaller than the base radius r0 = 30 mm: the follower's axis misses the base circle (and 1 more)
     """
     problems: list[tuple[str, str]] = []
     if not isinstance(data, dict):
@@ -1245,6 +1731,31 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     top = _Reader(data, "", problems, {})
     units = _read_units(top)
     top.units = units
+    has_cam, has_driver = "cam" in data, "driver" in data
+    if has_cam and has_driver:  # one problem: which of the two to read is anyone's guess
+        top.problem(
+            "cam",
+            "a scene is a linkage ([driver]) or a disc cam ([cam]), not both: "
+            "put the cam in a scene of its own",
+        )
+        raise SceneError(problems, source)
+    if has_cam:
+        return _parse_cam_scene(data, source, top, order)
+    elif not any(k in data for k in _LINKAGE_KEYS):
+        top.problem(
+            "",
+            "nothing to draw: add a [driver] table (a linkage scene) or a [cam] table "
+            "(a disc cam scene)",
+        )
+        _read_header(top)
+        _read_scales(top)
+        _read_measured(top, None)
+        _read_check(top)
+        _read_page(top)
+        top.known.update(_TOP_KEYS)
+        top.finish()
+        problems.sort(key=lambda p: _rank(p, order))
+        raise SceneError(problems, source)
     title, show, find = _read_header(top)
     scales = _read_scales(top)
     frame, link_value = _read_frame(top)
@@ -1283,6 +1794,42 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         measured=measured,
         precision_mm=precision,
         page=page,
+    )
+
+
+def _parse_cam_scene(
+    data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]
+) -> Scene:
+    """The rest of :func:`parse_scene` for a scene with a [cam] table."""
+    problems = top.problems
+    title, show, find = _read_header(top, CAM_SHOW_CHOICES, CAM_SHOW_DEFAULT)
+    scales = _read_scales(top, cam=True, follower=_peek_follower(data))
+    for key in _LINKAGE_KEYS:
+        if key in data:
+            top.used.add(key)
+            what = f"[[{key}]]" if key in ("dyad", "point") else f"[{key}]"
+            top.problem(key, f"{what} belongs to a linkage scene; this is a cam scene ([cam])")
+    cam = _read_cam(top)
+    measured = _read_measured(top, None, cam=True)
+    precision = _read_check(top)
+    page = _read_page(top)
+    top.known.update(_TOP_KEYS)
+    top.finish()
+    if problems or cam is None:
+        cam_table = data.get("cam")
+        cam_order = {k: n for n, k in enumerate(cam_table)} if isinstance(cam_table, dict) else {}
+        problems.sort(key=lambda p: _rank(p, order, cam_order))
+        raise SceneError(problems or [("cam", "invalid")], source)
+    return Scene(
+        source=source,
+        title=title,
+        show=show,
+        find=find,
+        scales=scales,
+        measured=measured,
+        precision_mm=precision,
+        page=page,
+        cam=cam,
     )
 
 

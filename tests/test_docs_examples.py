@@ -1,6 +1,7 @@
 """Every scene in docs/scene-format.md is not only valid but constructs and checks."""
 from __future__ import annotations
 
+import math
 import re
 
 import pytest
@@ -17,6 +18,15 @@ BLOCKS = re.findall(r"```toml\n(.*?)```", (ROOT / "docs" / "scene-format.md").re
 @pytest.mark.parametrize("text", BLOCKS, ids=[f"example{i}" for i in range(len(BLOCKS))])
 def test_documented_scene_constructs_and_agrees_with_exact(text):
     scene = parse_scene(tomllib.loads(text), "doc.toml")
+    if scene.cam is not None:
+        from graphmech.cam_check import analyse_cam, judge_cam
+
+        can = analyse_cam(scene)
+        for row in can.rows:  # a discretising method: finite, and within a few % at the scene's step
+            assert math.isfinite(row.graphical) and math.isfinite(row.exact), row
+        for verdict in judge_cam(can):
+            assert verdict.ok, verdict
+        return
     an = analyse(scene)
     assert any(s is not None for s in an.solutions)
     for row in an.rows:

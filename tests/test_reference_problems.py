@@ -68,7 +68,8 @@ def test_oscillating_block(problems):
     assert abs(q["v_E"]["graphical"] - p["exact"]["vE_other_side_m_s"]) > 0.05
 
 
-@pytest.mark.parametrize("scene", sorted(SCENES.glob("*.toml")), ids=lambda s: s.stem)
+@pytest.mark.parametrize("scene", sorted(s for s in SCENES.glob("*.toml") if not s.stem.startswith("cam.")),
+                         ids=lambda s: s.stem)
 def test_reference_scenes_agree_with_exact(scene):
     doc = check_json(scene)
     assert doc["quantities"], "a reference scene must ask for values"

@@ -753,6 +753,7 @@ def doc_blocks() -> list[str]:
 def test_docs_have_an_example_of_every_feature() -> None:
     blocks = doc_blocks()
     scenes = [parse_scene(tomllib.loads(b), "scene-format.md") for b in blocks]
+    scenes = [s for s in scenes if s.cam is None]  # the cam scenes: tests/test_scene_cam.py
     dyad_types = {type(d) for s in scenes for d in s.linkage.dyads}
     assert dyad_types == {RRR, RRP, RPR, RPP}
     assert {type(s.linkage.driver) for s in scenes} == {Crank, SliderInput}
@@ -776,6 +777,9 @@ def test_docs_have_an_example_of_every_feature() -> None:
 def test_each_doc_example_parses(index: int, tmp_path: Path) -> None:
     scene = load_scene(write(tmp_path, doc_blocks()[index], "example.toml"))
     assert scene.source == "example.toml"
+    if scene.cam is not None:  # a cam scene
+        assert scene.linkage is None and scene.positions is None
+        return
     assert scene.linkage.frame_link not in scene.linkage.links()
 
 
@@ -868,6 +872,13 @@ def test_any_mutation_gives_a_scene_or_a_scene_error(data: st.DataObject) -> Non
     except SceneError as err:
         assert err.problems
         assert "\n" not in str(err)
+        return
+    if scene.cam is not None:
+        cam = scene.cam.cam
+        assert scene.linkage is None and scene.positions is None
+        assert cam.base_radius > 0 and cam.omega > 0 and cam.rotation in (1, -1)
+        assert 0 < scene.cam.step <= math.pi / 2
+        assert math.isclose(sum(seg.angle for seg in cam.program.segments), 2 * math.pi)
         return
     assert all(math.isfinite(v) for v in scene.positions.values)
     assert 1 <= len(scene.positions.values) <= 3600

@@ -38,6 +38,7 @@ from graphmech.render.primitives import (
     Hinge,
     Label,
     Panel,
+    Polyline,
     Primitive,
     Segment,
     Sheet,
@@ -99,6 +100,8 @@ def item_box(item: Primitive, style: Style = DEFAULT) -> Box:
         return _box_of([item.p0, item.p1], grow)
     if isinstance(item, ArcArrow):
         return _box_of(list(item.points()), style.arrow_length)
+    if isinstance(item, Polyline):
+        return _box_of(list(item.points), style.pen(item.role).width / 2.0)
     if isinstance(item, Circle):
         return _box_of([item.center], item.r + style.pen(item.role).width / 2.0)
     if isinstance(item, Hinge):

@@ -60,6 +60,34 @@ class ArcArrow:
 
 
 @dataclass(frozen=True)
+class Polyline:
+    """A stroke through ``points`` (a cam's pitch curve and working profile, a diagram's curve
+    drawn from dense evaluation); ``closed`` joins the last point to the first. Never filled.
+
+    The points are kept as a tuple of float pairs (an ``(n, 2)`` array may be passed); at least
+    two, all finite.
+
+    >>> Polyline(((0, 0), (10, 0), (10, 5))).points[-1]
+    (10.0, 5.0)
+    """
+
+    points: tuple[XY, ...]
+    role: Role = "result"
+    closed: bool = False
+    dashed: bool = False
+
+    def __post_init__(self) -> None:
+        import math
+
+        pts = tuple((float(p[0]), float(p[1])) for p in self.points)
+        if len(pts) < 2:
+            raise ValueError(f"a polyline needs at least two points, got {len(pts)}")
+        if not all(math.isfinite(v) for p in pts for v in p):
+            raise ValueError("a polyline's points must be finite")
+        object.__setattr__(self, "points", pts)
+
+
+@dataclass(frozen=True)
 class Circle:
     center: XY
     r: float
@@ -114,7 +142,7 @@ class Label:
     italic: bool = True
 
 
-Primitive = Union[Segment, Arrow, ArcArrow, Circle, Hinge, FixedPivot, Slider, GuideLine, Label]
+Primitive = Union[Segment, Arrow, ArcArrow, Polyline, Circle, Hinge, FixedPivot, Slider, GuideLine, Label]
 
 
 @dataclass(frozen=True)

@@ -8,7 +8,9 @@ What the frontend decides, so that every backend draws the same figure:
   an arrow is its shaft plus a small filled triangle (never an SVG marker) whose tip is the
   vector's end; a frame pivot is a hinge on a triangle standing on a ground line with short 45°
   hatch strokes; a guide is a line with hatching on its right side; a slider is a white
-  rotated rectangle; a hinge is a small white-filled circle.
+  rotated rectangle; a hinge is a small white-filled circle; a polyline is one open or closed
+  stroke, never filled — a dashed one is cut into its dashes here (the backend's polyline has no
+  dash pattern), each dash a short polyline following the curve, with the pen's pattern.
 * **Order** (back to front): ground and guides with their hatching, slider blocks,
   construction lines, given lines, result lines, hinges (so they cover the line ends), labels.
   Items of the same layer keep the panel's order.
@@ -47,6 +49,7 @@ from graphmech.render.primitives import (
     Hinge,
     Label,
     Panel,
+    Polyline,
     Primitive,
     Segment,
     Sheet,
@@ -152,6 +155,44 @@ def arrow_shapes(a: Arrow, style: Style = DEFAULT) -> list[Shape]:
     return shapes
 
 
+def dash_pieces(points: Sequence[XY], closed: bool, pattern: Sequence[float]) -> list[tuple[XY, ...]]:
+    """The dashes of a dashed polyline: pieces of the path (corners kept) laid along its length
+    by ``pattern`` (on, off, on, off … mm, repeated), starting with a dash at the first point.
+
+    >>> [tuple(p[0] for p in d) for d in dash_pieces([(0.0, 0.0), (10.0, 0.0)], False, (3.0, 1.0))]
+    [(0.0, 3.0), (4.0, 7.0), (8.0, 10.0)]
+    """
+    pts = list(points) + ([points[0]] if closed and len(points) > 1 else [])
+    pattern = [float(v) for v in pattern if v > 0.0] or [1.0]
+    if len(pattern) % 2:
+        pattern = pattern * 2
+    out: list[tuple[XY, ...]] = []
+    k, left, on = 0, pattern[0], True  # current pattern entry, length left of it, drawing?
+    piece: list[XY] = [pts[0]] if pts else []
+    for a, b in zip(pts[:-1], pts[1:]):
+        length = math.hypot(b[0] - a[0], b[1] - a[1])
+        t = 0.0
+        while length - t > left:
+            t += left
+            f = t / length
+            p = (a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]))
+            if on:
+                piece.append(p)
+                out.append(tuple(piece))
+                piece = []
+            else:
+                piece = [p]
+            on = not on
+            k = (k + 1) % len(pattern)
+            left = pattern[k]
+        left -= length - t
+        if on:
+            piece.append(b)
+    if on and len(piece) > 1:
+        out.append(tuple(piece))
+    return [d for d in out if any(q != d[0] for q in d[1:])]
+
+
 def pivot_shapes(p: FixedPivot, style: Style = DEFAULT) -> list[tuple[int, Shape]]:
     """A frame pivot: legs and ground line, hatching below it, and the hinge on top."""
     cx, cy = p.center
@@ -186,6 +227,12 @@ def item_shapes(item: Primitive, style: Style = DEFAULT) -> list[tuple[int, Shap
                          item.role, closed=True, filled=True)
         return [(_ROLE_LAYER[item.role], PolyShape(pts, item.role, closed=False, filled=False)),
                 (_ROLE_LAYER[item.role], head)]
+    if isinstance(item, Polyline):
+        layer = _ROLE_LAYER[item.role]
+        if not item.dashed:
+            return [(layer, PolyShape(item.points, item.role, closed=item.closed, filled=False))]
+        pieces = dash_pieces(item.points, item.closed, style.pen(item.role).dash)
+        return [(layer, PolyShape(d, item.role, closed=False, filled=False)) for d in pieces]
     if isinstance(item, Circle):
         return [(_ROLE_LAYER[item.role], CircleShape(item.center, item.r, item.role))]
     if isinstance(item, Hinge):

@@ -1,0 +1,295 @@
+"""Checking a cam scene: carry out the inversion, read the drawing off, compare with the exact cam.
+
+The counterpart of :mod:`graphmech.check` for disc cams. The inversion is a discretising
+method — the profile is drawn through N division points — so its readings (largest pressure
+angle, smallest radius of curvature, the profile itself) converge to the exact values as the
+divisions get finer; the check table states by how much they differ at the scene's step, and
+``graphmech bench`` reports the error against the number of divisions and the time taken.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from graphmech.check import Row, Verdict, page_size
+from graphmech.errors import SceneError
+from graphmech.exact import cam as exact_cam
+from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
+from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxima
+from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile
+from graphmech.scales import round_scale
+
+#: What a cam scene can ask for, with the unit each is reported in.
+CAM_QUANTITIES = {
+    "alpha_max": "deg", "alpha_max_at": "deg", "rho_min_pitch": "m", "rho_min_pitch_at": "deg",
+    "profile_deviation": "m", "v_max": "m/s", "v_max_at": "deg", "a_max": "m/s²", "a_max_at": "deg",
+    "j_max": "m/s³", "j_max_at": "deg", "r0_min": "m", "h": "m",
+}
+#: Dense exact points used to measure how far the drawn profile is from the exact one.
+EXACT_SAMPLES = 8192
+
+
+#: Quantities read off the profile (the others come from the motion diagrams alone).
+PROFILE_QUANTITIES = {"alpha_max", "alpha_max_at", "rho_min_pitch", "rho_min_pitch_at", "profile_deviation", "r0_min"}
+
+
+@dataclass
+class CamAnalysis:
+    scene: Any
+    cam: DiscCam
+    delta: np.ndarray
+    s: np.ndarray
+    drawn: DrawnProfile | None  # None when the scene asks for nothing on the profile
+    scales: dict[str, float]
+    stated: set[str]
+    rows: list[Row] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    impacts: list[dict[str, Any]] = field(default_factory=list)
+    marks: dict[str, Any] = field(default_factory=dict)
+
+    def scale_notes(self) -> list[str]:
+        """μ as written on the drawing; an oscillating follower's μs is an angle per mm."""
+        from graphmech.scales import format_scale
+
+        out = []
+        for k, v in self.scales.items():
+            if k == "s" and _angular(self.cam):
+                out.append(f"μψ = {math.degrees(v):.6g} °/mm")
+            elif k in ("v", "a") and _angular(self.cam):
+                out.append(f"μ{'ω' if k == 'v' else 'ε'} = {v:.6g} (rad/s{'' if k == 'v' else '²'})/mm")
+            else:
+                out.append(format_scale(k, v))
+        return [n + ("" if k in self.stated else " (chosen)") for n, k in zip(out, self.scales)]
+
+
+def _angular(cam: DiscCam) -> bool:
+    return isinstance(cam.follower, OscillatingFollower)
+
+
+def _kinks(cam: DiscCam) -> np.ndarray:
+    """Cam angles where the pitch curve has a corner (s′ jumps): rigid impacts."""
+    return np.array([i.angle for i in impacts(cam.program) if i.kind == "rigid"])
+
+
+def _near(delta: np.ndarray, angles: np.ndarray, tol: float) -> np.ndarray:
+    if angles.size == 0:
+        return np.zeros(delta.shape, dtype=bool)
+    d = np.abs((delta[:, None] - angles[None, :] + math.pi) % math.tau - math.pi)
+    return (d < tol).any(axis=1)
+
+
+def profile_deviation(cam: DiscCam, actual: np.ndarray, samples: int = EXACT_SAMPLES) -> float:
+    """The largest distance (m) from the exact working profile to the drawn one (a closed polyline)."""
+    import shapely
+
+    grid = np.linspace(0.0, math.tau, samples, endpoint=False)
+    grid = np.union1d(grid, breakpoints(cam.program))
+    exact = exact_cam.profile(cam, grid).actual
+    ring = shapely.LinearRing(actual)
+    return float(np.max(shapely.distance(shapely.points(exact), ring)))
+
+
+def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> tuple[dict[str, float], set[str]]:
+    """μ from the scene where stated; otherwise round values that fit one row of panels."""
+    stated = {k for k in ("l", "s", "phi", "v", "a") if k in scene.scales}
+    scales = {k: float(scene.scales[k]) for k in stated}
+    w, h = page_size(scene)
+    n = max(1, len(scene.show))
+    room_w = (w - 20.0 - 12.0 * (n - 1)) / n - 12.0
+    room_h = h - 38.0 - 35.0
+    f = cam.follower
+    pitch_r = float(np.max(np.hypot(*drawn.pitch.T))) if drawn is not None else \
+        cam.base_radius + (0.0 if _angular(cam) else cam.program.stroke)
+    reach = pitch_r + getattr(f, "roller_radius", 0.0)
+    if _angular(cam):
+        reach = max(reach, f.pivot_distance + getattr(f, "roller_radius", 0.0))
+    if "l" not in scales:
+        scales["l"] = round_scale(2.0 * reach / min(room_w, room_h))
+    if "phi" not in scales:  # books choose degrees per mm
+        scales["phi"] = math.radians(round_scale(360.0 / room_w))
+    ext = maxima(cam.program, cam.omega)
+    if "s" not in scales:
+        scales["s"] = round_scale(cam.program.stroke / (0.6 * room_h))
+    for key, q in (("v", "v"), ("a", "a")):
+        if key not in scales:
+            peak = ext[q].value
+            scales[key] = round_scale(2.0 * peak / (0.6 * room_h)) if peak > 0 else 1.0
+    return scales, stated
+
+
+def analyse_cam(scene: Any) -> CamAnalysis:
+    """The inversion at the scene's divisions, its readings, and the check table."""
+    cs = scene.cam
+    cam: DiscCam = cs.cam
+    names = _requested(scene)
+    delta = divisions(cam, cs.step, breakpoints(cam.program))
+    s = displacement(cam.program, delta)
+    # Only what the scene asks for: no profile for a scene that wants the diagrams alone.
+    wants_profile = "profile" in scene.show or any(n in PROFILE_QUANTITIES for n in names)
+    drawn = draw_profile(cam, delta, s) if wants_profile else None
+    scales, stated = choose_cam_scales(scene, cam, drawn)
+    an = CamAnalysis(scene, cam, delta, s, drawn, scales, stated)
+    an.impacts = [{"angle_deg": math.degrees(i.angle), "kind": i.kind, "jump": i.jump}
+                  for i in impacts(cam.program)]
+    for i in impacts(cam.program):
+        what = ("rigid impact: the velocity jumps, the acceleration is infinite (an impulse)" if i.kind == "rigid"
+                else "soft impact: the acceleration jumps by a finite amount")
+        an.warnings.append(f"δ = {math.degrees(i.angle):.6g}°: {what}")
+    if drawn is None:
+        an.rows = [_row(an, name) for name in names]
+        return an
+    an.warnings += exact_cam.undercut(cam)
+    corners = _near(delta, _kinks(cam), 1e-9)
+    rho = drawn.rho_pitch
+    convex = (rho > 0) & ~corners
+    if getattr(cam.follower, "roller_radius", 0.0) > 0 and convex.any() \
+            and cam.follower.roller_radius >= rho[convex].min():
+        k = int(np.flatnonzero(convex)[np.argmin(rho[convex])])
+        an.warnings.append(f"the drawing undercuts: the roller (r_r = {cam.follower.roller_radius * 1e3:.4g} mm) is no "
+                           f"smaller than the pitch curve's radius {rho[k] * 1e3:.4g} mm at δ = {math.degrees(delta[k]):.4g}°")
+        an.marks["undercut_at"] = [float(delta[k])]
+    k = int(np.argmax(drawn.pressure_angle))
+    an.marks["alpha_max_at"] = float(delta[k])
+    an.marks["alpha_max"] = float(drawn.pressure_angle[k])
+    an.rows = [_row(an, name) for name in names]
+    return an
+
+
+def _requested(scene: Any) -> list[str]:
+    problems = []
+    names = []
+    for k, name in enumerate(scene.find):
+        if name.startswith("s@"):
+            try:
+                float(name[2:])
+                names.append(name)
+            except ValueError:
+                problems.append((f"find[{k}]", f"{name!r}: write s@<cam angle in degrees>, e.g. s@45"))
+            continue
+        if name not in CAM_QUANTITIES:
+            import difflib
+
+            m = difflib.get_close_matches(name, sorted(CAM_QUANTITIES), n=3)
+            problems.append((f"find[{k}]", f"unknown cam quantity {name!r}" + (f"; did you mean {', '.join(m)}?" if m else "")))
+        elif name == "r0_min" and scene.cam.cam.alpha_permissible is None:
+            problems.append((f"find[{k}]", "r0_min needs the permissible pressure angle: set [cam] alpha_permissible"))
+        else:
+            names.append(name)
+    if problems:
+        raise SceneError(problems, scene.source)
+    return names
+
+
+def _graphical_r0_min(cam: DiscCam, alpha: float, step: float) -> float:
+    """The smallest base radius found the draftsman's way: redraw at a trial r0 and read the
+    largest pressure angle off the drawing, bisecting on r0 (to 1e-9 relative)."""
+    from dataclasses import replace
+
+    def worst(r0: float) -> float:
+        c = replace(cam, base_radius=r0)
+        d = divisions(c, step, breakpoints(c.program))
+        return float(np.max(draw_profile(c, d, displacement(c.program, d)).pressure_angle))
+
+    f = cam.follower
+    lo = abs(getattr(f, "offset", 0.0)) * (1 + 1e-9) + 1e-12
+    if _angular(cam):
+        lo = abs(f.pivot_distance - f.arm) * (1 + 1e-9) + 1e-12
+    hi = max(cam.base_radius, lo * 2, 1e-6)
+    while worst(hi) > alpha and hi < 1e3:
+        hi *= 2.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if worst(mid) > alpha:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo <= 1e-12 * hi:
+            break
+    return hi
+
+
+def _row(an: CamAnalysis, name: str) -> Row:
+    cam, drawn, delta = an.cam, an.drawn, an.delta
+    deg = math.degrees
+    ang = _angular(cam)
+    if name.startswith("s@"):  # an ordinate of the displacement diagram at a division
+        at = math.radians(float(name[2:])) % math.tau
+        k = int(np.argmin(np.abs((delta - at + math.pi) % math.tau - math.pi)))
+        if abs((delta[k] - at + math.pi) % math.tau - math.pi) > 1e-9:
+            raise SceneError([("find", f"{name}: {float(name[2:]):g}° is not a division of this drawing "
+                                       f"(every {deg(an.scene.cam.step):g}° and at the laws' joints)")], an.scene.source)
+        e = float(displacement(cam.program, delta[k]))
+        if ang:  # an angular displacement is reported in degrees
+            return Row(name, "deg", an.s[k] / an.scales["s"], deg(an.scales["s"]), deg(an.s[k]), deg(e),
+                       abs(an.s[k] - e) / cam.program.stroke)
+        return _plain(name, "m", an.s[k] / an.scales["s"], an.scales["s"], e, cam.program.stroke)
+    unit = CAM_QUANTITIES[name]
+    size = float(np.max(np.hypot(*drawn.pitch.T))) if drawn is not None else cam.base_radius
+    if name in ("alpha_max", "alpha_max_at"):
+        k = int(np.argmax(drawn.pressure_angle))
+        a, at = exact_cam.max_pressure_angle(cam)
+        g, e = (deg(drawn.pressure_angle[k]), deg(a)) if name == "alpha_max" else (deg(delta[k]), deg(at))
+        return _angle_row(name, g, e, 90.0 if name == "alpha_max" else 360.0)
+    if name in ("rho_min_pitch", "rho_min_pitch_at"):
+        rho = drawn.rho_pitch
+        ok = (rho > 0) & ~_near(delta, _kinks(cam), 1e-9)
+        k = int(np.flatnonzero(ok)[np.argmin(rho[ok])])
+        r, at = exact_cam.min_convex_rho_pitch(cam)
+        if name == "rho_min_pitch":
+            return _plain(name, unit, rho[k] / an.scales["l"], an.scales["l"], r, size)
+        return _angle_row(name, deg(delta[k]), deg(at), 360.0)
+    if name == "profile_deviation":
+        dev = profile_deviation(cam, drawn.actual)
+        return Row(name, unit, dev / an.scales["l"], an.scales["l"], dev, 0.0, dev / size)
+    if name == "h":
+        return _plain(name, "rad" if ang else "m", float(np.max(an.s)) / an.scales["s"], an.scales["s"],
+                      cam.program.stroke, cam.program.stroke)
+    if name == "r0_min":
+        e = exact_cam.min_base_radius(cam, cam.alpha_permissible)
+        g = _graphical_r0_min(cam, cam.alpha_permissible, an.scene.cam.step)
+        return _plain(name, unit, g / an.scales["l"], an.scales["l"], e, size)
+    # v_max, a_max, j_max and where: read off the diagrams at the divisions vs the exact law
+    q = name.split("_")[0]
+    order = {"v": 1, "a": 2, "j": 3}[q]
+    ext = maxima(cam.program, cam.omega)[q]
+    vals = np.abs(displacement(cam.program, delta, order)) * cam.omega ** order
+    k = int(np.flatnonzero(vals >= vals.max() * (1 - 1e-9))[0])  # the first division where it is reached
+    if name.endswith("_at"):
+        return _angle_row(name, deg(delta[k]), deg(ext.at), 360.0)
+    scale = an.scales.get(q, 1.0)
+    unit = {"v": "rad/s", "a": "rad/s²", "j": "rad/s³"}[q] if ang else unit
+    return _plain(name, unit, vals[k] / scale, scale, ext.value, ext.value)
+
+
+def _plain(name: str, unit: str, drawn_mm: float, scale: float, exact: float, size: float) -> Row:
+    g = drawn_mm * scale
+    return Row(name, unit, float(drawn_mm), float(scale), float(g), float(exact),
+               abs(g - exact) / max(abs(exact), abs(size), 1e-300))
+
+
+def _angle_row(name: str, g: float, e: float, span: float) -> Row:
+    err = abs((g - e + 180.0) % 360.0 - 180.0) / span
+    return Row(name, "deg", None, 1.0, float(g), float(e), err)
+
+
+def judge_cam(an: CamAnalysis, precision_mm: float | None = None, extra: tuple = ()) -> list[Verdict]:
+    """Hand readings of a cam drawing (``alpha_max = 34``, ``rho_min_pitch = 0.029``) against the exact values."""
+    prec = precision_mm if precision_mm is not None else an.scene.precision_mm
+    out, problems = [], []
+    for key, name, value in [(f"measured.{n}", n, v) for n, v in an.scene.measured] + \
+                            [(f"--measured {n}", n, v) for n, v in extra]:
+        if name not in CAM_QUANTITIES:
+            problems.append((key, f"unknown cam quantity {name!r}"))
+            continue
+        row = _row(an, name)
+        if row.unit == "deg":
+            tol = math.degrees(prec / max(an.cam.base_radius / an.scales["l"], prec))
+        else:
+            tol = prec * row.scale
+        out.append(Verdict(name, value, row.exact, tol, abs(value - row.exact) <= tol, row.unit))
+    if problems:
+        raise SceneError(problems, an.scene.source)
+    return out
