@@ -453,8 +453,9 @@ def _cam_notes(records: list[dict[str, Any]]) -> list[str]:
             f"{last['max_rel_error_smooth']:.1e} at n = {big}")
     notes.append("cam inversion: where a roller profile's error stops falling it is the drawing's resolution, not "
                  "the method's: shapely's buffer draws the roller's arc round a concave corner of the pitch curve "
-                 "with 32 segments per quarter circle (a chord error of r_r·(1 − cos(π/128)) at most) and keeps "
-                 "no two offset vertices closer than about 1 % of r_r (see profile_vertices)")
+                 "with 32 segments per quarter circle (a chord error of about r_r·(1 − cos(π/128))) and GEOS "
+                 "simplifies the buffer's input at 1 % of r_r, thinning the offset's vertices to a spacing of about "
+                 "1 % of r_r (see profile_vertices)")
     return notes
 
 

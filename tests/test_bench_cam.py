@@ -23,7 +23,7 @@ CASES = ("offset-roller-e+10", "oscillating-roller", "flat-face-translating")
 #: largest profile radius. offset-roller: shapely draws the roller's arc round the pitch curve's
 #: concave corner at 0° with 32 segments per quarter circle — a chord error of at most about
 #: r_r·(1 − cos 1.5°) = 3.4 µm for r_r = 10 mm, /35.4 mm ≈ 9.7e-5; oscillating-roller: shapely's
-#: buffer keeps no two offset vertices closer than about 1 % of r_r. The flat face has no floor.
+#: buffer thins the offset's vertices to a spacing of about 1 % of r_r. The flat face has no floor.
 FLOOR = {"offset-roller-e+10": 1.0e-4, "oscillating-roller": 3.0e-6, "flat-face-translating": 0.0}
 #: Smallest radius of curvature read off the drawing at 3600 divisions, relative error (measured
 #: 3.5e-4, 1.9e-3, 5.7e-6).

@@ -85,6 +85,11 @@ def _unit(v: Any) -> tuple[float, float]:
     return (float(v[0]) / n, float(v[1]) / n) if n > 0 else (0.0, 0.0)
 
 
+def _dirs(*ds: tuple[float, float]) -> tuple[tuple[float, float], ...]:
+    """Directions for a label to avoid; a zero vector (a degenerate line) has none."""
+    return tuple(d for d in ds if d != (0.0, 0.0))
+
+
 def _add(p: Any, q: Any, k: float = 1.0) -> tuple[float, float]:
     return (float(p[0]) + k * float(q[0]), float(p[1]) + k * float(q[1]))
 
@@ -337,11 +342,11 @@ def profile_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, *, roller_circ
                 items.append(Segment(foot, b, "construction"))
             radial = _unit(foot)
             out = radial if radial != (0.0, 0.0) else (1.0, 0.0)
-            avoid = ((-out[0], -out[1]), (out[1], -out[0]), (-out[1], out[0]))
+            avoid = _dirs((-out[0], -out[1]), (out[1], -out[0]), (-out[1], out[0]))
         else:
             if math.dist(foot, end) > 1e-9:
                 items.append(Segment(foot, end, "construction"))
-            avoid = ((-d[0], -d[1]), (d[1], -d[0]), (-d[1], d[0]))
+            avoid = _dirs((-d[0], -d[1]), (d[1], -d[0]), (-d[1], d[0]))
         if f.contact == "flat":
             n = (d[1], -d[0])
             items.append(Segment(_add(b, n, float(faces[k, 0])), _add(b, n, float(faces[k, 1])), "construction"))
@@ -487,7 +492,7 @@ def diagram_items(cam: DiscCam, panel: str, mu: float, mu_phi: float, delta: np.
                                         NUMBER_SIZE, italic=False))
         h = cam.program.stroke / mu
         items.append(Segment((-1.0, h), (0.0, h), "label"))
-        labels.append(Label("h", (0.0, h), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), 3.0))
+        labels.append(Label("ψₘₐₓ" if angular else "h", (0.0, h), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), 3.0))
         for j in joints:  # the segments named under the numbers, parted at the joints
             items.append(Segment((j / mu_phi, -NAMES_ROW[0]), (j / mu_phi, -NAMES_ROW[1]), "label"))
         for seg, a, b in zip(cam.program.segments, joints[:-1], joints[1:]):

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from graphmech.mechanisms.cam import DiscCam, MotionProgram, OscillatingFollower, Segment, TranslatingFollower
+from graphmech.mechanisms.cam import Contact, DiscCam, MotionProgram, OscillatingFollower, Segment, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement
 from graphmech.methods.cam_figures import cam_sheet, numbered_every
 from graphmech.methods.cam_inversion import divisions, draw_profile
@@ -24,7 +24,7 @@ A3 = (420.0, 297.0)
 ALL = ["profile", "displacement", "velocity", "acceleration"]
 
 
-def reference_cam(contact: str = "roller", roller: float = 0.010, offset: float = 0.010) -> DiscCam:
+def reference_cam(contact: Contact = "roller", roller: float = 0.010, offset: float = 0.010) -> DiscCam:
     """cam.offset_roller_translating: e = +10, r0 = 30, r_r = 10, h = 16 mm; uniform rise 150°,
     dwell 30°, parabolic return 120°, dwell 60°; cam CCW."""
     program = MotionProgram(0.016, (Segment("rise", math.radians(150), "uniform"),

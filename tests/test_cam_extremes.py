@@ -1,0 +1,127 @@
+"""Extreme cam cases: undercut, a roller exactly at the limit, bad offsets, tiny rises, 3600 divisions,
+and only what the scene asks for being built."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from tests.conftest import check_json, run_cli, values
+
+CAM = """
+title = "cam"
+show = {show}
+find = {find}
+[units]
+length = "mm"
+angle = "deg"
+[cam]
+base_radius = {r0}
+rotation = "ccw"
+omega_rad_s = 10
+step = {step}
+[cam.follower]
+type = "translating"
+contact = "{contact}"
+offset = {e}
+{roller}
+[cam.program]
+stroke = {h}
+[[cam.segment]]
+kind = "rise"
+angle = {rise}
+law = "{law}"
+[[cam.segment]]
+kind = "dwell"
+angle = {dwell}
+[[cam.segment]]
+kind = "return"
+angle = 150
+law = "{law}"
+[[cam.segment]]
+kind = "dwell"
+angle = 30
+"""
+
+
+def scene(tmp_path, *, show='["profile"]', find='["alpha_max", "rho_min_pitch"]', r0=40, step=15, contact="roller",
+          e=0, rr=10, h=20, rise=150, law="sine", name="c.toml"):
+    roller = f"roller_radius = {rr}" if contact == "roller" else ""
+    text = CAM.format(show=show, find=find, r0=r0, step=step, contact=contact, e=e, roller=roller, h=h, rise=rise,
+                      dwell=180 - rise, law=law)
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def test_a_base_circle_so_small_that_the_roller_undercuts(tmp_path):
+    doc = check_json(scene(tmp_path, r0=12, rr=10, h=30, rise=60))
+    assert any("undercut" in w for w in doc["warnings"])
+
+
+def test_a_roller_equal_to_the_smallest_radius_of_curvature_is_reported(tmp_path):
+    from graphmech.cam_check import analyse_cam
+    from graphmech.exact.cam import min_convex_rho_pitch
+    from graphmech.scene import load_scene
+
+    steep = dict(r0=30, h=30, rise=60)  # a steep rise: the pitch curve is sharpest near its top
+    rho, _ = min_convex_rho_pitch(load_scene(scene(tmp_path, rr=5, **steep)).cam.cam)
+    assert rho < 0.030
+    at_limit = analyse_cam(load_scene(scene(tmp_path, rr=rho * 1000, name="eq.toml", **steep)))
+    assert any("roller undercuts" in w for w in at_limit.warnings)
+    below = analyse_cam(load_scene(scene(tmp_path, rr=rho * 1000 * 0.9, name="below.toml", **steep)))
+    assert not any("roller undercuts" in w for w in below.warnings)
+
+
+def test_an_offset_larger_than_the_base_radius_is_bad_input(tmp_path):
+    code, out, err = run_cli("check", str(scene(tmp_path, e=45, r0=40)))
+    assert code == 2 and err.count("\n") == 1 and "cam.follower.offset" in err
+
+
+def test_a_zero_dwell_is_refused_with_advice(tmp_path):
+    code, _, err = run_cli("check", str(scene(tmp_path, rise=180)))
+    assert code == 2 and "cam.segment[1].angle" in err
+
+
+def test_a_rise_over_one_degree(tmp_path):
+    doc = check_json(scene(tmp_path, rise=1, h=1, step=0.25, find='["v_max", "a_max", "alpha_max"]'))
+    q = values(doc)
+    # sine law: v_max = 2hω/δ0, a_max = 2πhω²/δ0²
+    d0 = math.radians(1)
+    assert q["v_max"]["exact"] == pytest.approx(2 * 0.001 * 10 / d0, rel=1e-12)
+    assert q["a_max"]["exact"] == pytest.approx(2 * math.pi * 0.001 * 100 / d0 ** 2, rel=1e-12)
+    assert all(math.isfinite(r["graphical"]) for r in doc["quantities"])
+
+
+def test_3600_divisions_converge(tmp_path):
+    coarse = values(check_json(scene(tmp_path, step=15, find='["alpha_max", "profile_deviation"]')))
+    fine = values(check_json(scene(tmp_path, step=0.1, find='["alpha_max", "profile_deviation"]', name="f.toml")))
+    assert fine["alpha_max"]["rel_error"] < coarse["alpha_max"]["rel_error"] / 100
+    assert fine["profile_deviation"]["graphical"] < coarse["profile_deviation"]["graphical"] / 1000
+    assert fine["profile_deviation"]["graphical"] < 2e-7  # m: 0.2 µm on a 60 mm cam
+
+
+def test_a_scene_that_wants_the_diagrams_alone_builds_no_profile(tmp_path):
+    from graphmech.cam_check import analyse_cam
+    from graphmech.scene import load_scene
+
+    an = analyse_cam(load_scene(scene(tmp_path, show='["displacement"]', find='["v_max"]')))
+    assert an.drawn is None
+    code, _, _ = run_cli("render", str(scene(tmp_path, show='["displacement"]', find='["v_max"]', name="d.toml")),
+                         "-o", str(tmp_path / "d.svg"))
+    assert code == 0 and "Cam profile" not in (tmp_path / "d.svg").read_text(encoding="utf-8")
+
+
+def test_a_knife_edge_draws_no_roller_circles(tmp_path):
+    from graphmech.cam_check import analyse_cam
+    from graphmech.methods.cam_figures import cam_sheet
+    from graphmech.render.primitives import Circle
+    from graphmech.scene import load_scene
+
+    sc = load_scene(scene(tmp_path, contact="knife"))
+    an = analyse_cam(sc)
+    sheet = cam_sheet(sc.title, an.cam, an.drawn, an.scales, list(sc.show), (297.0, 210.0),
+                      roller_circles=sc.cam.roller_circles, marks=an.marks)
+    circles = [i for p in sheet.panels for i in p.items if isinstance(i, Circle)]
+    assert all(abs(c.r - 40 / (an.scales["l"] * 1000)) < 1e-9 or c.role != "construction" or c.r > 10 for c in circles)
+    assert not [c for c in circles if abs(c.r * an.scales["l"] - 0.010) < 1e-12]
