@@ -19,7 +19,7 @@ from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.cam import DiscCam, MotionProgram, OscillatingFollower, Segment, TranslatingFollower
 from graphmech.mechanisms.linkage import Crank, Linkage, RRR
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
-from graphmech.methods.cam_inversion import DrawnProfile, _three_point_radius, divisions, draw_profile
+from graphmech.methods.cam_inversion import CamReading, near, read_cam, rigid_corners as _rigid_corners
 from graphmech.methods.polygons import build_polygons
 
 FOURBAR_QUANTITIES = ("v_B", "v_C", "v_CB", "omega_2", "omega_3", "a_C", "a_CB", "a_CB_n", "a_CB_t",
@@ -122,7 +122,6 @@ CAM_DIVISIONS = (24, 48, 96, 180, 360, 720, 1440, 3600)
 #: Exact points on the working profile against which a drawn profile is measured.
 CAM_EXACT_SAMPLES = 20_000
 #: How far below a joint its left-hand limit is taken, rad (beyond the motion law's snapping).
-_LEFT = 32.0 * float(np.spacing(math.tau))
 _DEG = math.pi / 180.0
 
 
@@ -151,65 +150,6 @@ def cam_cases() -> dict[str, DiscCam]:
 
 
 @dataclass(frozen=True)
-class CamReading:
-    """The inversion at N divisions and what is read off the drawing (all that ``seconds`` times)."""
-
-    delta: np.ndarray
-    drawn: DrawnProfile
-    alpha_max: float  # rad, largest pressure angle read off the drawing
-    alpha_max_at: float  # rad, the division where it is
-    rho_min: float  # m: smallest convex ρ of the pitch curve (roller, knife) or of the profile (flat face)
-    rho_min_at: float  # rad
-    undercut: bool  # roller: r_r ≥ that ρ; flat face: the profile's ρ ≤ 0 somewhere
-
-
-def _near(delta: np.ndarray, angles: np.ndarray, tol: float) -> np.ndarray:
-    """Which of the cam angles ``delta`` lie within ``tol`` (rad) of one of ``angles``, round the turn."""
-    if angles.size == 0:
-        return np.zeros(delta.shape, dtype=bool)
-    d = np.abs((delta[:, None] - angles[None, :] + math.pi) % math.tau - math.pi)
-    return (d <= tol).any(axis=1)
-
-
-def _rigid_corners(cam: DiscCam) -> np.ndarray:
-    """Cam angles where the follower's velocity jumps: the pitch curve's corners (rad)."""
-    return np.array(sorted({i.angle % math.tau for i in impacts(cam.program) if i.kind == "rigid"}))
-
-
-def read_cam(cam: DiscCam, n: int) -> CamReading:
-    """Draw the profile at ``n`` divisions and read off it what the textbook asks.
-
-    The displacements at the divisions, the inversion (pitch points and the working profile), the
-    largest pressure angle and where, the smallest convex radius of curvature of the pitch curve
-    (three-point circles, the pitch curve's corners left out) and the undercut test r_r against
-    it. A flat face ⟂ its axis has pressure angle 0 by construction (its normal is the axis); for
-    it the radius of curvature is read off the drawn profile (three consecutive envelope points)
-    and the undercut test is that radius ≤ 0.
-    """
-    delta = divisions(cam, math.tau / n, breakpoints(cam.program))
-    s = displacement(cam.program, delta)
-    drawn = draw_profile(cam, delta, s)
-    if not drawn.valid.all():
-        raise ArithmeticError(f"the inversion is not drawable at {int(np.sum(~drawn.valid))} divisions")
-    f = cam.follower
-    if f.contact == "flat":
-        act = drawn.actual
-        rho = _three_point_radius(np.roll(act, 1, axis=0), act, np.roll(act, -1, axis=0), cam.rotation)
-        k = int(np.argmin(rho))
-        # envelope point k is where the faces at divisions k and k + 1 meet
-        ahead = delta[k + 1] if k + 1 < len(delta) else delta[0] + math.tau
-        return CamReading(delta, drawn, 0.0, float(delta[0]), float(rho[k]),
-                          float(0.5 * (delta[k] + ahead) % math.tau), bool(rho[k] <= 0.0))
-    k = int(np.argmax(drawn.pressure_angle))
-    rho = drawn.rho_pitch
-    ok = (rho > 0.0) & ~_near(delta, _rigid_corners(cam), 1e-9)
-    j = int(np.flatnonzero(ok)[np.argmin(rho[ok])])
-    r_r = f.roller_radius if f.contact == "roller" else 0.0
-    return CamReading(delta, drawn, float(drawn.pressure_angle[k]), float(delta[k]), float(rho[j]),
-                      float(delta[j]), bool(r_r > 0.0 and r_r >= rho[j]))
-
-
-@dataclass(frozen=True)
 class CamReference:
     """The exact cam (graphmech.exact.cam): its working profile as a dense closed polyline, and
     the exact values of what ``read_cam`` reads off the drawing."""
@@ -223,94 +163,6 @@ class CamReference:
     rho_min: float
     rho_min_at: float
     undercut: bool
-
-
-def _actual(cam: DiscCam, delta: Any) -> np.ndarray:
-    return exact_cam.profile(cam, np.atleast_1d(np.asarray(delta, dtype=float)) % math.tau).actual
-
-
-def _convex_vertex(cam: DiscCam, c: float, w: float) -> tuple[float, float]:
-    """Where the inner offsets of the two sides of a convex corner at ``c`` cross: (δ1 < c, δ2 ≥ c)
-    with actual(δ1⁻ side) = actual(δ2⁺ side), to machine precision."""
-    import shapely
-    from scipy.optimize import root
-
-    dl = c - np.linspace(_LEFT, w, 4001)
-    dr = c + np.linspace(0.0, w, 4001)
-    al, ar = _actual(cam, dl), _actual(cam, dr)
-    x = shapely.LineString(al).intersection(shapely.LineString(ar))
-    if x.geom_type != "Point":
-        raise ArithmeticError(f"the roller's offsets at the corner δ = {math.degrees(c):.6g}° do not cross once")
-    q = np.asarray(x.coords[0])
-    guess = [dl[np.argmin(np.hypot(*(al - q).T))], dr[np.argmin(np.hypot(*(ar - q).T))]]
-    sol = root(lambda t: _actual(cam, [min(t[0], c - _LEFT)])[0] - _actual(cam, [max(t[1], c)])[0], guess,
-               method="hybr", tol=1e-15)
-    d1, d2 = float(sol.x[0]), float(sol.x[1])
-    gap = float(np.hypot(*(_actual(cam, [d1])[0] - _actual(cam, [d2])[0])))
-    if not (c - w < d1 < c <= d2 < c + w) or gap > 1e-12 * cam.base_radius:
-        raise ArithmeticError(f"the profile's vertex at δ = {math.degrees(c):.6g}° was not found")
-    return d1, d2
-
-
-def exact_working_profile(cam: DiscCam, samples: int = CAM_EXACT_SAMPLES) -> tuple[np.ndarray, np.ndarray]:
-    """The exact working profile as ``samples``-odd points in order round the cam, and their cam angles.
-
-    Knife edge and flat face: ``exact.cam.profile`` at evenly spaced angles (a flat face cannot
-    follow a velocity jump, so its program must have none). Roller: the inner envelope between
-    the pitch curve's corners; at a concave corner (the velocity rises) the roller rests on the
-    corner and the profile is the arc of radius r_r round it, between the two sides' normals; at
-    a convex corner (the velocity drops) the two sides' offsets cross at the profile's vertex and
-    are cut there (found by solving actual(δ1) = actual(δ2) to machine precision) — their
-    stretches beyond it are not part of the cam. Raises if the result crosses itself (an undercut
-    profile folds over itself, and this is not its boundary).
-    """
-    f = cam.follower
-    corners = _rigid_corners(cam)
-    if f.contact == "flat" and corners.size:
-        raise ValueError("a flat face cannot follow a velocity jump: no working profile to compare with")
-    if f.contact != "roller" or corners.size == 0:
-        d = np.union1d(np.linspace(0.0, math.tau, samples, endpoint=False), corners)
-        pts, ang = _actual(cam, d), d
-    else:
-        rot, r_r = float(cam.rotation), f.roller_radius
-        cs = [float(c) for c in corners]
-        m = len(cs)
-        gaps = [((cs[(i + 1) % m] - cs[i]) % math.tau) or math.tau for i in range(m)]
-        cut: dict[int, tuple[float, float]] = {}
-        arcs: dict[int, np.ndarray] = {}
-        for i, c in enumerate(cs):
-            both = exact_cam.profile(cam, np.array([(c - _LEFT) % math.tau, c]))  # left, right limits
-            nl, nr = (both.actual - both.pitch) / r_r
-            tl = rot * np.array([-nl[1], nl[0]])  # the direction of travel on the left (n = −rot·J·t)
-            if float(np.dot(nr - nl, tl)) >= 0.0:  # concave: the normals open, the roller turns on the corner
-                a0 = math.atan2(nl[1], nl[0])
-                da = (math.atan2(nr[1], nr[0]) - a0 + math.pi) % math.tau - math.pi
-                k = max(8, math.ceil(abs(da) / math.tau * samples))
-                t = a0 + da * np.linspace(0.0, 1.0, k + 1)[1:-1]
-                arcs[i] = both.pitch[1] + r_r * np.column_stack([np.cos(t), np.sin(t)])
-            else:  # convex: the offsets cross
-                w = min(30 * _DEG, 0.45 * gaps[i - 1], 0.45 * gaps[i])
-                cut[i] = _convex_vertex(cam, c, w)
-        parts, angs = [], []
-        for i, c in enumerate(cs):
-            j = (i + 1) % m
-            lo = cut[i][1] if i in cut else c
-            hi = (cut[j][0] if j in cut else cs[j] - _LEFT) + (math.tau if j == 0 else 0.0)
-            k = max(16, math.ceil((hi - lo) / math.tau * samples))
-            d = np.linspace(lo, hi, k + 1)
-            if j in cut:
-                d = d[:-1]  # the vertex is the next stretch's first point
-            parts.append(_actual(cam, d))
-            angs.append(d % math.tau)
-            if j in arcs:
-                parts.append(arcs[j])
-                angs.append(np.full(len(arcs[j]), cs[j]))
-        pts, ang = np.concatenate(parts), np.concatenate(angs)
-    import shapely
-
-    if not shapely.LinearRing(pts).is_simple:  # an offset beyond a vertex, or an undercut's loop
-        raise ArithmeticError("the exact working profile crosses itself: the envelope folds over (undercut)")
-    return pts, ang
 
 
 def _flat_min_rho(cam: DiscCam, samples: int) -> tuple[float, float]:
@@ -332,7 +184,7 @@ def cam_reference(cam: DiscCam, samples: int = CAM_EXACT_SAMPLES) -> CamReferenc
     """The exact solution the drawing is measured against (never timed)."""
     from graphmech.tolerances import TANGENT_REL
 
-    pts, ang = exact_working_profile(cam, samples)
+    pts, ang = exact_cam.working_profile(cam, samples)
     alpha, alpha_at = exact_cam.max_pressure_angle(cam)
     f = cam.follower
     if f.contact == "flat":
@@ -382,7 +234,7 @@ def cam_record(case: str, n: int, seconds: float, reading: CamReading, ref: CamR
     worst = max(float(fwd.max()), float(rev.max()))
     at = ref.angles[int(np.argmax(fwd))] if fwd.max() >= rev.max() else rev_at[int(np.argmax(rev))]
     far = math.tau / n * 2.0
-    f_ok, r_ok = ~_near(ref.angles, ref.corners, far), ~_near(rev_at, ref.corners, far)
+    f_ok, r_ok = ~near(ref.angles, ref.corners, far), ~near(rev_at, ref.corners, far)
     smooth = max(float(np.max(fwd[f_ok], initial=0.0)), float(np.max(rev[r_ok], initial=0.0)))
     vertices = len(act) - (1 if len(act) > 1 and np.array_equal(act[0], act[-1]) else 0)
     return {

@@ -19,7 +19,7 @@ from graphmech.errors import SceneError
 from graphmech.exact import cam as exact_cam
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxima
-from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile
+from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile, read_drawing
 from graphmech.scales import round_scale
 
 #: What a cam scene can ask for, with the unit each is reported in.
@@ -49,6 +49,7 @@ class CamAnalysis:
     warnings: list[str] = field(default_factory=list)
     impacts: list[dict[str, Any]] = field(default_factory=list)
     marks: dict[str, Any] = field(default_factory=dict)
+    reading: Any = None  # what is read off the drawn profile (methods.cam_inversion.CamReading)
 
     def scale_notes(self) -> list[str]:
         """μ as written on the drawing; an oscillating follower's μs is an angle per mm."""
@@ -69,27 +70,13 @@ def _angular(cam: DiscCam) -> bool:
     return isinstance(cam.follower, OscillatingFollower)
 
 
-def _kinks(cam: DiscCam) -> np.ndarray:
-    """Cam angles where the pitch curve has a corner (s′ jumps): rigid impacts."""
-    return np.array([i.angle for i in impacts(cam.program) if i.kind == "rigid"])
-
-
-def _near(delta: np.ndarray, angles: np.ndarray, tol: float) -> np.ndarray:
-    if angles.size == 0:
-        return np.zeros(delta.shape, dtype=bool)
-    d = np.abs((delta[:, None] - angles[None, :] + math.pi) % math.tau - math.pi)
-    return (d < tol).any(axis=1)
-
-
 def profile_deviation(cam: DiscCam, actual: np.ndarray, samples: int = EXACT_SAMPLES) -> float:
-    """The largest distance (m) from the exact working profile to the drawn one (a closed polyline)."""
+    """The largest distance (m) from the exact working profile (corners resolved: the roller's arc
+    round a concave corner, the offsets cut at a convex one) to the drawn one, a closed polyline."""
     import shapely
 
-    grid = np.linspace(0.0, math.tau, samples, endpoint=False)
-    grid = np.union1d(grid, breakpoints(cam.program))
-    exact = exact_cam.profile(cam, grid).actual
-    ring = shapely.LinearRing(actual)
-    return float(np.max(shapely.distance(shapely.points(exact), ring)))
+    exact, _ = exact_cam.working_profile(cam, samples)
+    return float(np.max(shapely.distance(shapely.points(exact), shapely.LinearRing(actual))))
 
 
 def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> tuple[dict[str, float], set[str]]:
@@ -142,18 +129,16 @@ def analyse_cam(scene: Any) -> CamAnalysis:
         an.rows = [_row(an, name) for name in names]
         return an
     an.warnings += exact_cam.undercut(cam)
-    corners = _near(delta, _kinks(cam), 1e-9)
-    rho = drawn.rho_pitch
-    convex = (rho > 0) & ~corners
-    if getattr(cam.follower, "roller_radius", 0.0) > 0 and convex.any() \
-            and cam.follower.roller_radius >= rho[convex].min():
-        k = int(np.flatnonzero(convex)[np.argmin(rho[convex])])
-        an.warnings.append(f"the drawing undercuts: the roller (r_r = {cam.follower.roller_radius * 1e3:.4g} mm) is no "
-                           f"smaller than the pitch curve's radius {rho[k] * 1e3:.4g} mm at δ = {math.degrees(delta[k]):.4g}°")
-        an.marks["undercut_at"] = [float(delta[k])]
-    k = int(np.argmax(drawn.pressure_angle))
-    an.marks["alpha_max_at"] = float(delta[k])
-    an.marks["alpha_max"] = float(drawn.pressure_angle[k])
+    reading = read_drawing(cam, drawn)
+    an.reading = reading
+    if reading.undercut:
+        what = (f"the roller (r_r = {cam.follower.roller_radius * 1e3:.4g} mm) is no smaller than the pitch curve's "
+                f"radius {reading.rho_min * 1e3:.4g} mm" if cam.follower.contact == "roller"
+                else f"the profile's radius of curvature reads {reading.rho_min * 1e3:.4g} mm")
+        an.warnings.append(f"the drawing undercuts: {what} at δ = {math.degrees(reading.rho_min_at):.4g}°")
+        an.marks["undercut_at"] = [reading.rho_min_at]
+    an.marks["alpha_max_at"] = reading.alpha_max_at
+    an.marks["alpha_max"] = reading.alpha_max
     an.rows = [_row(an, name) for name in names]
     return an
 
@@ -191,7 +176,7 @@ def _graphical_r0_min(cam: DiscCam, alpha: float, step: float) -> float:
     def worst(r0: float) -> float:
         c = replace(cam, base_radius=r0)
         d = divisions(c, step, breakpoints(c.program))
-        return float(np.max(draw_profile(c, d, displacement(c.program, d)).pressure_angle))
+        return read_drawing(c, draw_profile(c, d, displacement(c.program, d))).alpha_max
 
     f = cam.follower
     lo = abs(getattr(f, "offset", 0.0)) * (1 + 1e-9) + 1e-12
@@ -228,19 +213,16 @@ def _row(an: CamAnalysis, name: str) -> Row:
         return _plain(name, "m", an.s[k] / an.scales["s"], an.scales["s"], e, cam.program.stroke)
     unit = CAM_QUANTITIES[name]
     size = float(np.max(np.hypot(*drawn.pitch.T))) if drawn is not None else cam.base_radius
+    rd = an.reading
     if name in ("alpha_max", "alpha_max_at"):
-        k = int(np.argmax(drawn.pressure_angle))
         a, at = exact_cam.max_pressure_angle(cam)
-        g, e = (deg(drawn.pressure_angle[k]), deg(a)) if name == "alpha_max" else (deg(delta[k]), deg(at))
+        g, e = (deg(rd.alpha_max), deg(a)) if name == "alpha_max" else (deg(rd.alpha_max_at), deg(at))
         return _angle_row(name, g, e, 90.0 if name == "alpha_max" else 360.0)
     if name in ("rho_min_pitch", "rho_min_pitch_at"):
-        rho = drawn.rho_pitch
-        ok = (rho > 0) & ~_near(delta, _kinks(cam), 1e-9)
-        k = int(np.flatnonzero(ok)[np.argmin(rho[ok])])
         r, at = exact_cam.min_convex_rho_pitch(cam)
         if name == "rho_min_pitch":
-            return _plain(name, unit, rho[k] / an.scales["l"], an.scales["l"], r, size)
-        return _angle_row(name, deg(delta[k]), deg(at), 360.0)
+            return _plain(name, unit, rd.rho_min / an.scales["l"], an.scales["l"], r, size)
+        return _angle_row(name, deg(rd.rho_min_at), deg(at), 360.0)
     if name == "profile_deviation":
         dev = profile_deviation(cam, drawn.actual)
         return Row(name, unit, dev / an.scales["l"], an.scales["l"], dev, 0.0, dev / size)

@@ -13,7 +13,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from graphmech.bench import CAM_DIVISIONS, cam_cases, convergence_order, exact_working_profile
+from graphmech.bench import CAM_DIVISIONS, cam_cases, convergence_order
+from graphmech.exact.cam import working_profile as exact_working_profile
 from tests.conftest import ROOT, SCENES, run_cli
 
 REQUIRED = {"method", "case", "n", "seconds", "max_rel_error"}
@@ -24,12 +25,13 @@ CASES = ("offset-roller-e+10", "oscillating-roller", "flat-face-translating")
 #: concave corner at 0° with 32 segments per quarter circle — a chord error of at most about
 #: r_r·(1 − cos 1.5°) = 3.4 µm for r_r = 10 mm, /35.4 mm ≈ 9.7e-5; oscillating-roller: shapely's
 #: buffer thins the offset's vertices to a spacing of about 1 % of r_r. The flat face has no floor.
-FLOOR = {"offset-roller-e+10": 1.0e-4, "oscillating-roller": 3.0e-6, "flat-face-translating": 0.0}
+FLOOR = {"offset-roller-e+10": 6.0e-6, "oscillating-roller": 3.0e-6, "flat-face-translating": 0.0}
 #: Smallest radius of curvature read off the drawing at 3600 divisions, relative error (measured
 #: 3.5e-4, 1.9e-3, 5.7e-6).
 RHO_3600 = {"offset-roller-e+10": 5e-4, "oscillating-roller": 2.5e-3, "flat-face-translating": 1e-5}
-#: Measured at 3600 divisions: 9.0e-5, 2.2e-6, 4.5e-7.
-BOUND_3600 = {"offset-roller-e+10": 1.0e-4, "oscillating-roller": 3.0e-6, "flat-face-translating": 1.0e-6}
+#: Measured at 3600 divisions: 4.8e-6, 2.2e-6, 4.5e-7 (the rollers' floor: shapely's buffer thins
+#: the offset's vertices to about 1 % of r_r).
+BOUND_3600 = {"offset-roller-e+10": 6.0e-6, "oscillating-roller": 3.0e-6, "flat-face-translating": 1.0e-6}
 
 
 @pytest.fixture(scope="module")
@@ -81,10 +83,11 @@ def test_profile_error_falls_as_n_squared_down_to_the_drawing_floor(bench, case)
     assert rs[-1]["max_rel_error_smooth"] <= 6e-6
 
 
-def test_the_offset_roller_floor_is_the_arc_round_the_concave_corner(bench):
+def test_the_roller_arc_round_a_concave_corner_is_drawn_as_finely_as_the_divisions(bench):
+    # quad_segs grows with n: the corner at 0° no longer puts a 9e-5 floor under the profile
     last = _cam(bench[0], "offset-roller-e+10")[-1]
-    assert last["worst_at_deg"] == 0.0
-    assert last["max_rel_error_smooth"] < last["max_rel_error"] / 10
+    assert last["max_rel_error"] < 1e-5
+    assert last["max_rel_error_smooth"] <= last["max_rel_error"]
 
 
 def test_flat_face_is_second_order_throughout(bench):

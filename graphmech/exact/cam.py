@@ -727,3 +727,97 @@ def min_base_radius(cam: DiscCam, alpha_permissible: float) -> float:
         f"no base radius up to {limit} keeps the pressure angle ≤ [α] = "
         f"{math.degrees(alpha_permissible):g}° (it is still "
         f"{math.degrees(excess(hi) + alpha_permissible):.3f}° there)")
+
+
+# ------------------------------------------------------------------ the working profile as one closed curve
+
+#: A hair to the left of a corner, for its left-hand limit.
+_LEFT = 32.0 * float(np.spacing(math.tau))
+
+
+def _actual(cam: DiscCam, delta: Any) -> np.ndarray:
+    return profile(cam, np.atleast_1d(np.asarray(delta, dtype=float)) % math.tau).actual
+
+
+def _convex_vertex(cam: DiscCam, c: float, w: float) -> tuple[float, float]:
+    """Where the inner offsets of the two sides of a convex corner at ``c`` cross: (δ1 < c, δ2 ≥ c)
+    with actual(δ1⁻ side) = actual(δ2⁺ side), to machine precision."""
+    import shapely
+    from scipy.optimize import root
+
+    dl = c - np.linspace(_LEFT, w, 4001)
+    dr = c + np.linspace(0.0, w, 4001)
+    al, ar = _actual(cam, dl), _actual(cam, dr)
+    x = shapely.LineString(al).intersection(shapely.LineString(ar))
+    if x.geom_type != "Point":
+        raise ArithmeticError(f"the roller's offsets at the corner δ = {math.degrees(c):.6g}° do not cross once")
+    q = np.asarray(x.coords[0])
+    guess = [dl[np.argmin(np.hypot(*(al - q).T))], dr[np.argmin(np.hypot(*(ar - q).T))]]
+    sol = root(lambda t: _actual(cam, [min(t[0], c - _LEFT)])[0] - _actual(cam, [max(t[1], c)])[0], guess,
+               method="hybr", tol=1e-15)
+    d1, d2 = float(sol.x[0]), float(sol.x[1])
+    gap = float(np.hypot(*(_actual(cam, [d1])[0] - _actual(cam, [d2])[0])))
+    if not (c - w < d1 < c <= d2 < c + w) or gap > 1e-12 * cam.base_radius:
+        raise ArithmeticError(f"the profile's vertex at δ = {math.degrees(c):.6g}° was not found")
+    return d1, d2
+
+
+def working_profile(cam: DiscCam, samples: int = 20_000) -> tuple[np.ndarray, np.ndarray]:
+    """The exact working profile as ``samples``-odd points in order round the cam, and their cam angles.
+
+    Knife edge and flat face: ``exact.cam.profile`` at evenly spaced angles (a flat face cannot
+    follow a velocity jump, so its program must have none). Roller: the inner envelope between
+    the pitch curve's corners; at a concave corner (the velocity rises) the roller rests on the
+    corner and the profile is the arc of radius r_r round it, between the two sides' normals; at
+    a convex corner (the velocity drops) the two sides' offsets cross at the profile's vertex and
+    are cut there (found by solving actual(δ1) = actual(δ2) to machine precision) — their
+    stretches beyond it are not part of the cam. Raises if the result crosses itself (an undercut
+    profile folds over itself, and this is not its boundary).
+    """
+    f = cam.follower
+    corners = np.array(sorted({i.angle % math.tau for i in impacts(cam.program) if i.kind == "rigid"}))
+    if f.contact == "flat" and corners.size:
+        raise ValueError("a flat face cannot follow a velocity jump: no working profile to compare with")
+    if f.contact != "roller" or corners.size == 0:
+        d = np.union1d(np.linspace(0.0, math.tau, samples, endpoint=False), corners)
+        pts, ang = _actual(cam, d), d
+    else:
+        rot, r_r = float(cam.rotation), f.roller_radius
+        cs = [float(c) for c in corners]
+        m = len(cs)
+        gaps = [((cs[(i + 1) % m] - cs[i]) % math.tau) or math.tau for i in range(m)]
+        cut: dict[int, tuple[float, float]] = {}
+        arcs: dict[int, np.ndarray] = {}
+        for i, c in enumerate(cs):
+            both = profile(cam, np.array([(c - _LEFT) % math.tau, c]))  # left, right limits
+            nl, nr = (both.actual - both.pitch) / r_r
+            tl = rot * np.array([-nl[1], nl[0]])  # the direction of travel on the left (n = −rot·J·t)
+            if float(np.dot(nr - nl, tl)) >= 0.0:  # concave: the normals open, the roller turns on the corner
+                a0 = math.atan2(nl[1], nl[0])
+                da = (math.atan2(nr[1], nr[0]) - a0 + math.pi) % math.tau - math.pi
+                k = max(8, math.ceil(abs(da) / math.tau * samples))
+                t = a0 + da * np.linspace(0.0, 1.0, k + 1)[1:-1]
+                arcs[i] = both.pitch[1] + r_r * np.column_stack([np.cos(t), np.sin(t)])
+            else:  # convex: the offsets cross
+                w = min(math.radians(30.0), 0.45 * gaps[i - 1], 0.45 * gaps[i])
+                cut[i] = _convex_vertex(cam, c, w)
+        parts, angs = [], []
+        for i, c in enumerate(cs):
+            j = (i + 1) % m
+            lo = cut[i][1] if i in cut else c
+            hi = (cut[j][0] if j in cut else cs[j] - _LEFT) + (math.tau if j == 0 else 0.0)
+            k = max(16, math.ceil((hi - lo) / math.tau * samples))
+            d = np.linspace(lo, hi, k + 1)
+            if j in cut:
+                d = d[:-1]  # the vertex is the next stretch's first point
+            parts.append(_actual(cam, d))
+            angs.append(d % math.tau)
+            if j in arcs:
+                parts.append(arcs[j])
+                angs.append(np.full(len(arcs[j]), cs[j]))
+        pts, ang = np.concatenate(parts), np.concatenate(angs)
+    import shapely
+
+    if not shapely.LinearRing(pts).is_simple:  # an offset beyond a vertex, or an undercut's loop
+        raise ArithmeticError("the exact working profile crosses itself: the envelope folds over (undercut)")
+    return pts, ang

@@ -31,6 +31,7 @@ import numpy as np
 from graphmech.construction import Construction
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
+from graphmech.mechanisms.motion import breakpoints, displacement, impacts
 
 PANEL = "profile"
 
@@ -157,7 +158,9 @@ def _working_profile(cam: DiscCam, pitch: np.ndarray, axis_dir: np.ndarray) -> n
     if f.contact == "roller":
         import shapely
 
-        eroded = shapely.Polygon(pitch).buffer(-f.roller_radius, quad_segs=32)
+        # the roller's arc round a corner is drawn as finely as the divisions (its chord error
+        # would otherwise put a floor under the profile's convergence)
+        eroded = shapely.Polygon(pitch).buffer(-f.roller_radius, quad_segs=max(32, math.ceil(len(pitch) / 4)))
         if eroded.is_empty:
             return np.zeros((0, 2))
         if eroded.geom_type == "MultiPolygon":
@@ -175,3 +178,68 @@ def _working_profile(cam: DiscCam, pitch: np.ndarray, axis_dir: np.ndarray) -> n
     pts = np.column_stack([x, y])
     ok = np.isfinite(pts).all(axis=1)
     return pts[ok]
+
+
+# ------------------------------------------------------------------ reading the drawing
+
+@dataclass(frozen=True)
+class CamReading:
+    """The inversion at N divisions and what is read off the drawing (all that ``seconds`` times)."""
+
+    delta: np.ndarray
+    drawn: DrawnProfile
+    alpha_max: float  # rad, largest pressure angle read off the drawing
+    alpha_max_at: float  # rad, the division where it is
+    rho_min: float  # m: smallest convex ρ of the pitch curve (roller, knife) or of the profile (flat face)
+    rho_min_at: float  # rad
+    undercut: bool  # roller: r_r ≥ that ρ; flat face: the profile's ρ ≤ 0 somewhere
+
+
+def near(delta: np.ndarray, angles: np.ndarray, tol: float) -> np.ndarray:
+    """Which of the cam angles ``delta`` lie within ``tol`` (rad) of one of ``angles``, round the turn."""
+    if angles.size == 0:
+        return np.zeros(delta.shape, dtype=bool)
+    d = np.abs((delta[:, None] - angles[None, :] + math.pi) % math.tau - math.pi)
+    return (d <= tol).any(axis=1)
+
+
+def rigid_corners(cam: DiscCam) -> np.ndarray:
+    """Cam angles where the follower's velocity jumps: the pitch curve's corners (rad)."""
+    return np.array(sorted({i.angle % math.tau for i in impacts(cam.program) if i.kind == "rigid"}))
+
+
+def read_cam(cam: DiscCam, n: int) -> CamReading:
+    """Draw the profile at ``n`` divisions and read off it what the textbook asks.
+
+    The displacements at the divisions, the inversion (pitch points and the working profile), the
+    largest pressure angle and where, the smallest convex radius of curvature of the pitch curve
+    (three-point circles, the pitch curve's corners left out) and the undercut test r_r against
+    it. A flat face ⟂ its axis has pressure angle 0 by construction (its normal is the axis); for
+    it the radius of curvature is read off the drawn profile (three consecutive envelope points)
+    and the undercut test is that radius ≤ 0.
+    """
+    delta = divisions(cam, math.tau / n, breakpoints(cam.program))
+    return read_drawing(cam, draw_profile(cam, delta, displacement(cam.program, delta)))
+
+
+def read_drawing(cam: DiscCam, drawn: DrawnProfile) -> CamReading:
+    """What the textbook reads off a drawn profile (see :func:`read_cam`)."""
+    delta = drawn.delta
+    if not drawn.valid.all():
+        raise ArithmeticError(f"the inversion is not drawable at {int(np.sum(~drawn.valid))} divisions")
+    f = cam.follower
+    if f.contact == "flat":
+        act = drawn.actual
+        rho = _three_point_radius(np.roll(act, 1, axis=0), act, np.roll(act, -1, axis=0), cam.rotation)
+        k = int(np.argmin(rho))
+        # envelope point k is where the faces at divisions k and k + 1 meet
+        ahead = delta[k + 1] if k + 1 < len(delta) else delta[0] + math.tau
+        return CamReading(delta, drawn, 0.0, float(delta[0]), float(rho[k]),
+                          float(0.5 * (delta[k] + ahead) % math.tau), bool(rho[k] <= 0.0))
+    k = int(np.argmax(drawn.pressure_angle))
+    rho = drawn.rho_pitch
+    ok = (rho > 0.0) & ~near(delta, rigid_corners(cam), 1e-9)
+    j = int(np.flatnonzero(ok)[np.argmin(rho[ok])])
+    r_r = f.roller_radius if f.contact == "roller" else 0.0
+    return CamReading(delta, drawn, float(drawn.pressure_angle[k]), float(delta[k]), float(rho[j]),
+                      float(delta[j]), bool(r_r > 0.0 and r_r >= rho[j]))
