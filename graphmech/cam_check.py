@@ -26,14 +26,15 @@ from graphmech.scales import round_scale
 CAM_QUANTITIES = {
     "alpha_max": "deg", "alpha_max_at": "deg", "rho_min_pitch": "m", "rho_min_pitch_at": "deg",
     "profile_deviation": "m", "v_max": "m/s", "v_max_at": "deg", "a_max": "m/s²", "a_max_at": "deg",
-    "j_max": "m/s³", "j_max_at": "deg", "r0_min": "m", "h": "m",
+    "j_max": "m/s³", "j_max_at": "deg", "r0_min": "m", "h": "m", "rho_min_actual": "m",
 }
 #: Dense exact points used to measure how far the drawn profile is from the exact one.
 EXACT_SAMPLES = 8192
 
 
 #: Quantities read off the profile (the others come from the motion diagrams alone).
-PROFILE_QUANTITIES = {"alpha_max", "alpha_max_at", "rho_min_pitch", "rho_min_pitch_at", "profile_deviation", "r0_min"}
+PROFILE_QUANTITIES = {"alpha_max", "alpha_max_at", "rho_min_pitch", "rho_min_pitch_at", "profile_deviation", "r0_min",
+                      "rho_min_actual"}
 
 
 @dataclass
@@ -115,7 +116,7 @@ def analyse_cam(scene: Any) -> CamAnalysis:
     delta = divisions(cam, cs.step, breakpoints(cam.program))
     s = displacement(cam.program, delta)
     # Only what the scene asks for: no profile for a scene that wants the diagrams alone.
-    wants_profile = "profile" in scene.show or any(n in PROFILE_QUANTITIES for n in names)
+    wants_profile = "profile" in scene.show or any(n in PROFILE_QUANTITIES or n.startswith("alpha@") for n in names)
     drawn = draw_profile(cam, delta, s) if wants_profile else None
     scales, stated = choose_cam_scales(scene, cam, drawn)
     an = CamAnalysis(scene, cam, delta, s, drawn, scales, stated)
@@ -144,15 +145,18 @@ def analyse_cam(scene: Any) -> CamAnalysis:
 
 
 def _requested(scene: Any) -> list[str]:
-    problems = []
-    names = []
+    problems: list[tuple[str, str]] = []
+    names: list[str] = []
+    profile_wanted: list[str] = []
     for k, name in enumerate(scene.find):
-        if name.startswith("s@"):
+        if name.startswith(("s@", "alpha@")):
+            if name.startswith("alpha@"):
+                profile_wanted.append(name)
             try:
-                float(name[2:])
+                float(name.split("@")[1])
                 names.append(name)
             except ValueError:
-                problems.append((f"find[{k}]", f"{name!r}: write s@<cam angle in degrees>, e.g. s@45"))
+                problems.append((f"find[{k}]", f"{name!r}: write s@<cam angle in degrees>, e.g. s@45 (or alpha@45)"))
             continue
         if name not in CAM_QUANTITIES:
             import difflib
@@ -200,12 +204,16 @@ def _row(an: CamAnalysis, name: str) -> Row:
     cam, drawn, delta = an.cam, an.drawn, an.delta
     deg = math.degrees
     ang = _angular(cam)
-    if name.startswith("s@"):  # an ordinate of the displacement diagram at a division
-        at = math.radians(float(name[2:])) % math.tau
+    if "@" in name:  # a reading at one division: s@45 (the diagram's ordinate), alpha@45 (pressure angle)
+        at_deg = float(name.split("@")[1])
+        at = math.radians(at_deg) % math.tau
         k = int(np.argmin(np.abs((delta - at + math.pi) % math.tau - math.pi)))
         if abs((delta[k] - at + math.pi) % math.tau - math.pi) > 1e-9:
-            raise SceneError([("find", f"{name}: {float(name[2:]):g}° is not a division of this drawing "
+            raise SceneError([("find", f"{name}: {at_deg:g}° is not a division of this drawing "
                                        f"(every {deg(an.scene.cam.step):g}° and at the laws' joints)")], an.scene.source)
+        if name.startswith("alpha@"):
+            e = float(exact_cam.profile(cam, np.array([delta[k]])).pressure_angle[0])
+            return _angle_row(name, deg(drawn.pressure_angle[k]), deg(e), 90.0)
         e = float(displacement(cam.program, delta[k]))
         if ang:  # an angular displacement is reported in degrees
             return Row(name, "deg", an.s[k] / an.scales["s"], deg(an.scales["s"]), deg(an.s[k]), deg(e),
@@ -223,6 +231,16 @@ def _row(an: CamAnalysis, name: str) -> Row:
         if name == "rho_min_pitch":
             return _plain(name, unit, rd.rho_min / an.scales["l"], an.scales["l"], r, size)
         return _angle_row(name, deg(rd.rho_min_at), deg(at), 360.0)
+    if name == "rho_min_actual":  # the working profile's sharpest convex bend: ρ_pitch − r_r, or read off a flat face
+        f = cam.follower
+        g = rd.rho_min - (f.roller_radius if f.contact == "roller" else 0.0)
+        grid = np.union1d(np.linspace(0.0, math.tau, EXACT_SAMPLES, endpoint=False), breakpoints(cam.program))
+        ra = exact_cam.profile(cam, grid).rho_actual
+        e = float(ra[ra > 0].min()) if f.contact != "flat" else float(ra.min())
+        if f.contact != "flat":
+            r, _ = exact_cam.min_convex_rho_pitch(cam)
+            e = r - (f.roller_radius if f.contact == "roller" else 0.0)
+        return _plain(name, unit, g / an.scales["l"], an.scales["l"], e, size)
     if name == "profile_deviation":
         dev = profile_deviation(cam, drawn.actual)
         return Row(name, unit, dev / an.scales["l"], an.scales["l"], dev, 0.0, dev / size)

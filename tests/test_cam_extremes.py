@@ -125,3 +125,16 @@ def test_a_knife_edge_draws_no_roller_circles(tmp_path):
     circles = [i for p in sheet.panels for i in p.items if isinstance(i, Circle)]
     assert all(abs(c.r - 40 / (an.scales["l"] * 1000)) < 1e-9 or c.role != "construction" or c.r > 10 for c in circles)
     assert not [c for c in circles if abs(c.r * an.scales["l"] - 0.010) < 1e-12]
+
+
+def test_pressure_angle_at_a_division_and_the_working_profile_radius(tmp_path):
+    find = '["alpha@45", "alpha@100", "rho_min_actual", "rho_min_pitch"]'
+    coarse = values(check_json(scene(tmp_path, step=5, find=find)))
+    fine = values(check_json(scene(tmp_path, step=0.5, find=find, name="f.toml")))
+    for name in ("alpha@45", "alpha@100"):
+        assert fine[name]["exact"] == pytest.approx(coarse[name]["exact"], rel=1e-12)  # same exact point
+        coarse_err = abs(coarse[name]["graphical"] - coarse[name]["exact"])
+        assert abs(fine[name]["graphical"] - fine[name]["exact"]) <= max(coarse_err / 50, 1e-9)
+    # a roller's working profile is the pitch curve offset inwards by r_r: ρ_actual = ρ_pitch − r_r
+    assert fine["rho_min_actual"]["exact"] == pytest.approx(fine["rho_min_pitch"]["exact"] - 0.010, rel=1e-12)
+    assert fine["rho_min_actual"]["rel_error"] <= max(coarse["rho_min_actual"]["rel_error"], 1e-9)
