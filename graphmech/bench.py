@@ -303,11 +303,10 @@ def _cam_notes(records: list[dict[str, Any]]) -> list[str]:
             f"{o['asymptotic']:.2f} over n = {o['n_from']}…{o['n_to']}, {o['overall']:.2f} fitted over all n; "
             f"away from the pitch curve's corners {sm['asymptotic']:.2f} over n = {sm['n_from']}…{sm['n_to']}, "
             f"{last['max_rel_error_smooth']:.1e} at n = {big}")
-    notes.append("cam inversion: where a roller profile's error stops falling it is the drawing's resolution, not "
-                 "the method's: shapely's buffer draws the roller's arc round a concave corner of the pitch curve "
-                 "with 32 segments per quarter circle (a chord error of about r_r·(1 − cos(π/128))) and GEOS "
-                 "simplifies the buffer's input at 1 % of r_r, thinning the offset's vertices to a spacing of about "
-                 "1 % of r_r (see profile_vertices)")
+    notes.append("cam inversion: where a roller profile's error stops falling (≈ 2–5e-6 near n = 3600) it is the "
+                 "drawing's resolution, not the method's: GEOS simplifies the buffer's input at 1 % of r_r, thinning "
+                 "the offset's vertices to a spacing of about 1 % of r_r (see profile_vertices); the roller's arc "
+                 "round a concave corner is drawn with ⌈n/4⌉ segments per quarter circle, so it is no floor")
     return notes
 
 
