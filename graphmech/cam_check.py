@@ -76,7 +76,10 @@ def profile_deviation(cam: DiscCam, actual: np.ndarray, samples: int = EXACT_SAM
     round a concave corner, the offsets cut at a convex one) to the drawn one, a closed polyline."""
     import shapely
 
-    exact, _ = exact_cam.working_profile(cam, samples)
+    try:
+        exact, _ = exact_cam.working_profile(cam, samples)
+    except ValueError as e:  # a flat face cannot follow a velocity jump
+        raise ArithmeticError(str(e)) from None
     return float(np.max(shapely.distance(shapely.points(exact), shapely.LinearRing(actual))))
 
 
@@ -120,7 +123,11 @@ def analyse_cam(scene: Any) -> CamAnalysis:
     drawn = draw_profile(cam, delta, s) if wants_profile else None
     scales, stated = choose_cam_scales(scene, cam, drawn)
     an = CamAnalysis(scene, cam, delta, s, drawn, scales, stated)
-    an.impacts = [{"angle_deg": math.degrees(i.angle), "kind": i.kind, "jump": i.jump}
+    lin = "rad" if _angular(cam) else "m"
+    an.impacts = [{"angle_deg": math.degrees(i.angle), "kind": i.kind,
+                   # the jump of v (rigid) or of a (soft), in SI with the cam's ω
+                   "jump": i.jump * cam.omega ** (1 if i.kind == "rigid" else 2),
+                   "jump_unit": f"{lin}/s" if i.kind == "rigid" else f"{lin}/s²"}
                   for i in impacts(cam.program)]
     for i in impacts(cam.program):
         what = ("rigid impact: the velocity jumps, the acceleration is infinite (an impulse)" if i.kind == "rigid"
@@ -140,7 +147,17 @@ def analyse_cam(scene: Any) -> CamAnalysis:
         an.marks["undercut_at"] = [reading.rho_min_at]
     an.marks["alpha_max_at"] = reading.alpha_max_at
     an.marks["alpha_max"] = reading.alpha_max
-    an.rows = [_row(an, name) for name in names]
+    an.rows = []
+    for name in names:
+        try:
+            an.rows.append(_row(an, name))
+        except ArithmeticError as e:  # e.g. the exact working profile folds over itself (undercut)
+            an.warnings.append(f"{name}: not measured — {e}")
+        except SceneError:
+            raise
+        except ValueError as e:  # e.g. no base radius keeps the pressure angle within [α]
+            raise SceneError([("cam.alpha_permissible" if name == "r0_min" else "find", f"{name}: {e}")],
+                             scene.source) from None
     return an
 
 
@@ -153,7 +170,8 @@ def _requested(scene: Any) -> list[str]:
             if name.startswith("alpha@"):
                 profile_wanted.append(name)
             try:
-                float(name.split("@")[1])
+                if not math.isfinite(float(name.split("@")[1])):
+                    raise ValueError
                 names.append(name)
             except ValueError:
                 problems.append((f"find[{k}]", f"{name!r}: write s@<cam angle in degrees>, e.g. s@45 (or alpha@45)"))
@@ -163,6 +181,9 @@ def _requested(scene: Any) -> list[str]:
 
             m = difflib.get_close_matches(name, sorted(CAM_QUANTITIES), n=3)
             problems.append((f"find[{k}]", f"unknown cam quantity {name!r}" + (f"; did you mean {', '.join(m)}?" if m else "")))
+        elif scene.cam.cam.follower.contact == "flat" and name in ("r0_min", "rho_min_pitch", "rho_min_pitch_at"):
+            problems.append((f"find[{k}]", f"{name} has no meaning for a flat face (its pressure angle is 0 at any "
+                                           "r0; its curvature is the working profile's: ask for rho_min_actual)"))
         elif name == "r0_min" and scene.cam.cam.alpha_permissible is None:
             problems.append((f"find[{k}]", "r0_min needs the permissible pressure angle: set [cam] alpha_permissible"))
         else:
@@ -209,11 +230,13 @@ def _row(an: CamAnalysis, name: str) -> Row:
         at = math.radians(at_deg) % math.tau
         k = int(np.argmin(np.abs((delta - at + math.pi) % math.tau - math.pi)))
         if abs((delta[k] - at + math.pi) % math.tau - math.pi) > 1e-9:
-            raise SceneError([("find", f"{name}: {at_deg:g}° is not a division of this drawing "
-                                       f"(every {deg(an.scene.cam.step):g}° and at the laws' joints)")], an.scene.source)
+            key = f"find[{list(an.scene.find).index(name)}]" if name in an.scene.find else "find"
+            raise SceneError([(key, f"{name}: {at_deg:g}° is not a division of this drawing "
+                                    f"(every {deg(an.scene.cam.step):g}° and at the laws' joints)")], an.scene.source)
         if name.startswith("alpha@"):
             e = float(exact_cam.profile(cam, np.array([delta[k]])).pressure_angle[0])
-            return _angle_row(name, deg(drawn.pressure_angle[k]), deg(e), 90.0)
+            g = 0.0 if cam.follower.contact == "flat" else deg(drawn.pressure_angle[k])  # the face's normal is the axis
+            return _angle_row(name, g, deg(e), 90.0)
         e = float(displacement(cam.program, delta[k]))
         if ang:  # an angular displacement is reported in degrees
             return Row(name, "deg", an.s[k] / an.scales["s"], deg(an.scales["s"]), deg(an.s[k]), deg(e),

@@ -1284,12 +1284,15 @@ def _read_follower(
         sense = r.string("sense", choices=("opposite", "same"), required=True)
         _not_for(r, _TRANSLATING_ONLY, f"only for a translating follower (this one is {kind})")
         if contact == "flat":
-            r.problem(
-                r.at("contact"),
-                'a flat-face oscillating follower is not supported yet: use contact = "knife" '
-                'or "roller"',
-            )
-        if a is not None and arm is not None and r0 is not None:
+            # the face is the line through the pivot A along the rocker, tangent to the base
+            # circle at the start (ψ0 = asin(r0/a)); the arm length is not used
+            if a is not None and r0 is not None and not r0.si < a.si:
+                r.problem(
+                    a.path,
+                    f"a flat face through the pivot cannot touch the base circle: the base radius "
+                    f"r0 = {r0.text()} must be smaller than pivot_distance a = {a.text()}",
+                )
+        elif a is not None and arm is not None and r0 is not None:
             near, far = abs(a.si - arm.si), a.si + arm.si
             if not near < r0.si < far:
                 r.problem(

@@ -138,3 +138,49 @@ def test_pressure_angle_at_a_division_and_the_working_profile_radius(tmp_path):
     # a roller's working profile is the pitch curve offset inwards by r_r: ρ_actual = ρ_pitch − r_r
     assert fine["rho_min_actual"]["exact"] == pytest.approx(fine["rho_min_pitch"]["exact"] - 0.010, rel=1e-12)
     assert fine["rho_min_actual"]["rel_error"] <= max(coarse["rho_min_actual"]["rel_error"], 1e-9)
+
+
+def test_an_undercut_profile_is_warned_not_crashed(tmp_path):
+    p = scene(tmp_path, rise=1, h=1, step=15, find='["profile_deviation", "alpha_max"]')
+    code, out, err = run_cli("check", str(p), "--json")
+    assert code == 0, err
+    import json
+
+    doc = json.loads(out)
+    assert any("undercut" in w for w in doc["warnings"])
+    assert any(w.startswith("profile_deviation: not measured") for w in doc["warnings"])
+    assert run_cli("render", str(p), "-o", str(tmp_path / "u.svg"))[0] == 0
+
+
+def test_questions_a_cam_cannot_answer_are_bad_input(tmp_path):
+    code, _, err = run_cli("check", str(scene(tmp_path, contact="flat", find='["r0_min"]')))
+    assert code == 2 and "find[0]" in err and "flat face" in err
+    code, _, err = run_cli("check", str(scene(tmp_path, find='["s@nan"]', name="n.toml")))
+    assert code == 2 and "find[0]" in err
+
+
+def test_a_flat_face_has_no_pressure_angle(tmp_path):
+    q = values(check_json(scene(tmp_path, contact="flat", e=12, find='["alpha@45", "alpha@210", "alpha_max"]')))
+    assert all(q[n]["graphical"] == 0.0 and q[n]["exact"] == 0.0 for n in ("alpha@45", "alpha@210", "alpha_max"))
+
+
+def test_impact_jumps_carry_units_and_omega(tmp_path):
+    doc = check_json(scene(tmp_path, law="uniform", find='["v_max"]'))
+    rigid = [i for i in doc["impacts"] if i["kind"] == "rigid"]
+    # uniform rise of 20 mm over 150° at ω = 10: v jumps by hω/δ0
+    assert rigid[0]["jump"] == pytest.approx(0.020 * 10 / math.radians(150), rel=1e-12)
+    assert rigid[0]["jump_unit"] == "m/s"
+
+
+def test_the_exact_largest_pressure_angle_is_found_past_a_steep_flank():
+    from graphmech.exact.cam import max_pressure_angle, profile
+    from graphmech.mechanisms.cam import DiscCam, MotionProgram, Segment, TranslatingFollower
+
+    import numpy as np
+
+    program = MotionProgram(0.030, (Segment("rise", math.radians(20), "sine"), Segment("dwell", math.radians(160)),
+                                    Segment("return", math.radians(150), "sine"), Segment("dwell", math.radians(30))))
+    cam = DiscCam(0.02, TranslatingFollower(0.0, "knife"), program)
+    a, at = max_pressure_angle(cam)
+    dense = profile(cam, np.linspace(0, math.tau, 200_001)[:-1]).pressure_angle
+    assert a >= dense.max() - 1e-12

@@ -489,11 +489,15 @@ def test_oscillating_arm_must_reach_the_base_circle() -> None:
     assert "r0 = 25 mm must lie between |a − l| = 0 mm and a + l = 20 mm" in short[1]
 
 
-def test_flat_face_oscillating_is_not_supported_yet() -> None:
+def test_flat_face_oscillating_needs_the_base_circle_inside_the_pivot_distance() -> None:
     text = replace(OSCILLATING, 'contact = "roller"', 'contact = "flat"').replace("roller_radius = 8\n", "")
-    path, reason = only(text)
-    assert path == "cam.follower.contact"
-    assert "not supported yet" in reason
+    follower = parse(text).cam.cam.follower
+    assert (follower.kind, follower.contact, follower.pivot_distance) == ("oscillating", "flat", 0.055)
+    assert only(replace(text, "base_radius = 25", "base_radius = 60")) == (
+        "cam.follower.pivot_distance",
+        "a flat face through the pivot cannot touch the base circle: the base radius r0 = 60 mm must "
+        "be smaller than pivot_distance a = 55 mm",
+    )
 
 
 def test_keys_of_the_other_follower_type() -> None:
@@ -753,7 +757,8 @@ def test_documented_error_messages_are_real() -> None:
         replace(GOOD, "offset = 10", "offset = 35"),
         osc,
         replace(GOOD, 'contact = "roller"', 'contact = "knife"').replace("roller_circles = true\n", ""),
-        replace(OSCILLATING, 'contact = "roller"', 'contact = "flat"').replace("roller_radius = 8\n", ""),
+        replace(OSCILLATING, 'contact = "roller"', 'contact = "flat"').replace("roller_radius = 8\n", "")
+        .replace("base_radius = 25", "base_radius = 60"),
         GOOD + '\n[[cam.segment]]\nkind = "dwell"\nangle = 0\n',
         replace(GOOD, "angle = 60", "angle = 50"),
         replace(GOOD, 'kind = "return"', 'kind = "rise"'),

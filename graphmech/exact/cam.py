@@ -70,6 +70,26 @@ n′ = −rot·J·n, which in the follower frame is the point (rot·s′, r0 + s
 s′ along the face from the foot of the perpendicular from O. Differentiating once more gives
 P′ = R·(rot·(r0 + s + s″), 0) while the normal turns at unit rate, so ρ = r0 + s + s″.
 
+**Oscillating flat face.** The face is the straight line through the pivot A along the rocker,
+direction u(ψ) as for the arm above (the arm length is not used). It starts tangent to the base
+circle, so its distance a·sin ψ0 from O is r0: ψ0 = asin(r0/a), r0 < a, on the side ``sense``
+gives (as for the roller's B), and it turns by φ(δ) in the same sense as the roller's arm would.
+Its reference ("pitch") point B is the foot of the perpendicular from O on the face,
+B = A + a·cos ψ·u = (a/2)·(1 − cos 2ψ, σ·sin 2ψ), on the circle with diameter OA. In the cam
+frame the faces are X = A(δ) + t·u(δ); their envelope touches face δ where (A′ + t·u′) ∥ u,
+
+    t = (A′ × u)/(u × u′) = a·cos ψ / q,    q = 1 + k·φ′,  k = rot·σ = +1 "opposite", −1 "same"
+
+(A′ × u = −rot·a·cos ψ and u × u′ = −rot − σ·φ′, the rotation R dropping out of the crosses):
+the contact lies a·cos ψ·(1/q − 1) along the face from the foot B. The face line has normal
+angle θ with θ′ = −rot·q and support p = a·sin ψ (its distance from O), so the envelope's
+signed radius of curvature (> 0 convex; the support-function form of the parametric
+−rot·|C′|³/(C′ × C″)) is ρ = p + d²p/dθ² = p + (p″·q − k·p′·φ″)/q³, with p′ = a·cos ψ·φ′,
+p″ = a·(cos ψ·φ″ − sin ψ·φ′²). ρ ≤ 0 is a cusp of the profile (``undercut``); where q → 0 the
+contact runs off along the face, which (like the face's finite length) is not modelled. The
+pressure angle is 0: the point of the face in contact moves about A, ⟂ the face, i.e. along
+the contact normal.
+
 **Joints.** A motion law is smooth only between its joints: the segment boundaries
 (``breakpoints``) and the laws' own knots where s′ or s″ jumps (``impacts``, e.g. the parabolic
 law's middle); at a joint ``displacement`` returns the right-hand limit. Every search below works
@@ -150,7 +170,8 @@ class CamProfile:
         Cam angles, rad.
     pitch : (N, 2) ndarray
         Pitch curve: roller centre, knife tip, or for a flat face the face's reference point on
-        the follower's axis; m, cam frame.
+        the follower's axis (oscillating: the foot of the perpendicular from O on the face); m,
+        cam frame.
     actual : (N, 2) ndarray
         Working profile: the pitch curve for a knife edge; for a roller the inner envelope,
         pitch + r_r·(inward unit normal); for a flat face the envelope of the face lines (the
@@ -163,7 +184,8 @@ class CamProfile:
         the cam), < 0 concave, ±inf at an inflection.
     rho_actual : (N,) ndarray
         The same for the working profile: ρ_pitch for a knife edge, ρ_pitch − r_r for a roller,
-        r0 + s + s″ for a flat face.
+        r0 + s + s″ for a translating flat face, p + (p″·q − k·p′·φ″)/q³ for an oscillating one
+        (module Notes).
 
     At a joint of the motion law every quantity is the right-hand limit (δ → joint⁺). Where the
     follower's velocity jumps the pitch curve has a corner. At a concave one (velocity rises) a
@@ -245,7 +267,9 @@ def initial_rocker_angle(cam: DiscCam) -> float:
 
     Notes
     -----
-    Triangle OAB with |OA| = a, |AB| = l, |OB| = r0: cos ψ0 = (a² + l² − r0²)/(2al).
+    Triangle OAB with |OA| = a, |AB| = l, |OB| = r0: cos ψ0 = (a² + l² − r0²)/(2al). A flat face
+    is the line through A along the rocker, tangent to the base circle at the start: its distance
+    a·sin ψ0 from O is r0, so ψ0 = asin(r0/a) (needs r0 < a; the arm length is not used).
 
     Examples
     --------
@@ -259,6 +283,15 @@ def initial_rocker_angle(cam: DiscCam) -> float:
     f = cam.follower
     if not isinstance(f, OscillatingFollower):
         raise TypeError("the rocker angle belongs to an oscillating follower")
+    if f.contact == "flat":
+        a, r0 = f.pivot_distance, cam.base_radius
+        if not a > 0.0:
+            raise ValueError(f"the pivot distance must be > 0, not {a!r} m")
+        if not 0.0 < r0 < a:
+            raise ValueError(
+                f"a flat face through the pivot can touch the base circle only if r0 < a "
+                f"(r0 = {r0 * 1e3:g} mm, a = {a * 1e3:g} mm)")
+        return math.asin(r0 / a)
     a, l, r0 = f.pivot_distance, f.arm, cam.base_radius
     if not (a > 0.0 and l > 0.0):
         raise ValueError(f"pivot distance and arm must be > 0 (a = {a!r} m, l = {l!r} m)")
@@ -290,20 +323,27 @@ def _path(cam: DiscCam, delta: np.ndarray) -> _Path:
         B1, B2, B3 = _vec(zero, s1), _vec(zero, s2), _vec(zero, s3)
         m, m1 = _vec(zero, 1.0), _vec(zero, zero)
     elif isinstance(f, OscillatingFollower):
-        if f.contact == "flat":
-            raise ValueError(
-                "an oscillating flat-faced follower is not modelled: the model gives no offset of "
-                "the face from the pivot")
         psi0 = initial_rocker_angle(cam)
         sigma = rot * (1.0 if f.sense == "opposite" else -1.0)
         psi = psi0 + s0
         u = _vec(-np.cos(psi), sigma * np.sin(psi))
         up = _vec(np.sin(psi), sigma * np.cos(psi))  # du/dψ, ⟂ the arm
-        l = f.arm
-        B = _vec(f.pivot_distance, 0.0) + l * u
-        B1 = l * up * s1[..., None]
-        B2 = l * (up * s2[..., None] - u * (s1 * s1)[..., None])
-        B3 = l * (up * (s3 - s1**3)[..., None] - u * (3.0 * s1 * s2)[..., None])
+        a = f.pivot_distance
+        if f.contact == "flat":
+            # the foot of the perpendicular from O on the face: B = A + a·cos ψ·u
+            # = (a/2)·(1 − cos 2ψ, σ·sin 2ψ), on the circle with diameter OA
+            v = _vec(np.sin(2.0 * psi), sigma * np.cos(2.0 * psi))  # dB/dψ = a·v
+            w = _vec(np.cos(2.0 * psi), -sigma * np.sin(2.0 * psi))  # dv/dψ = 2·w, dw/dψ = −2·v
+            B = 0.5 * a * _vec(1.0 - np.cos(2.0 * psi), sigma * np.sin(2.0 * psi))
+            B1 = a * v * s1[..., None]
+            B2 = a * (v * s2[..., None] + 2.0 * w * (s1 * s1)[..., None])
+            B3 = a * (v * (s3 - 4.0 * s1**3)[..., None] + 6.0 * w * (s1 * s2)[..., None])
+        else:
+            l = f.arm
+            B = _vec(a, 0.0) + l * u
+            B1 = l * up * s1[..., None]
+            B2 = l * (up * s2[..., None] - u * (s1 * s1)[..., None])
+            B3 = l * (up * (s3 - s1**3)[..., None] - u * (3.0 * s1 * s2)[..., None])
         m, m1 = up, -u * s1[..., None]
     else:  # pragma: no cover - the model has only these two
         raise TypeError(f"unknown follower {f!r}")
@@ -318,6 +358,34 @@ def _path(cam: DiscCam, delta: np.ndarray) -> _Path:
 
 def _flat(cam: DiscCam) -> bool:
     return cam.follower.contact == "flat"
+
+
+def _rocker_face(cam: DiscCam, p: _Path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """An oscillating flat face: (contact point in the follower frame, ρ of the envelope, dρ/dδ).
+
+    See the module Notes (*Oscillating flat face*): t = a·cos ψ/q, q = 1 + k·φ′,
+    ρ = p + (p″·q − k·p′·φ″)/q³ with p = a·sin ψ.
+    """
+    f = cam.follower
+    a = f.pivot_distance
+    k = 1.0 if f.sense == "opposite" else -1.0
+    sigma = float(cam.rotation) * k
+    s0, s1, s2, s3 = p.s
+    psi = initial_rocker_angle(cam) + s0
+    c, sn = np.cos(psi), np.sin(psi)
+    q = 1.0 + k * s1
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = a * c / q
+        contact = _vec(a - t * c, sigma * t * sn)
+        p0 = a * sn
+        p1 = a * c * s1
+        p2 = a * (c * s2 - sn * s1 * s1)
+        p3 = a * (c * (s3 - s1**3) - 3.0 * sn * s1 * s2)
+        num = p2 * q - k * p1 * s2
+        rho = p0 + num / q**3
+        num1 = p3 * q - k * p1 * s3
+        rho1 = p1 + (num1 * q - 3.0 * k * num * s2) / q**4
+    return contact, rho, rho1
 
 
 def _alpha(cam: DiscCam, p: _Path) -> tuple[np.ndarray, np.ndarray]:
@@ -364,7 +432,7 @@ def profile(cam: DiscCam, delta: ArrayLike) -> CamProfile:
     ------
     ValueError
         An offset not smaller than r0, an arm that cannot reach the base circle, an oscillating
-        flat face (not modelled), a rotation other than ±1.
+        flat face with r0 ≥ a, a rotation other than ±1.
     SceneError
         An invalid motion program (from ``graphmech.mechanisms.motion``; also a ValueError).
 
@@ -372,7 +440,8 @@ def profile(cam: DiscCam, delta: ArrayLike) -> CamProfile:
     -----
     P = R(−rot·δ)·B(δ) (inversion); the roller's working profile P + r_r·n with the inward unit
     normal n = −rot·J·P′/|P′|; the flat face's contact point (rot·s′, r0 + s) turned by −rot·δ;
-    α = atan2(|T·m|, |T × m|); ρ = −rot·|T|³/(T × Q). The derivations are in the module Notes.
+    α = atan2(|T·m|, |T × m|); ρ = −rot·|T|³/(T × Q); an oscillating flat face's contact at
+    t = a·cos ψ/(1 + k·φ′) along the face from A. The derivations are in the module Notes.
 
     Examples
     --------
@@ -404,6 +473,9 @@ def profile(cam: DiscCam, delta: ArrayLike) -> CamProfile:
         inward = -rot * _quarter(t)
         actual = pitch + f.roller_radius * _turn(inward, turn)
         rho_actual = rho - f.roller_radius
+    elif f.contact == "flat" and isinstance(f, OscillatingFollower):
+        contact, rho_actual, _ = _rocker_face(cam, p)
+        actual = _turn(contact, turn)
     elif f.contact == "flat":
         s, s1, s2, _ = p.s
         actual = _turn(_vec(rot * s1, cam.base_radius + s), turn)
@@ -533,7 +605,24 @@ def max_pressure_angle(cam: DiscCam, where: Where = "all") -> tuple[float, float
     pieces = _pieces(cam, where)
     if _flat(cam):
         return 0.0, pieces[0][0] % _TWO_PI
-    return _maximise(pieces, lambda d: _alpha(cam, _path(cam, d)))
+    best, at = _maximise(pieces, lambda d: _alpha(cam, _path(cam, d)))
+    # Where α passes 90° the signed α_s jumps from +90° to −90° and no sign change of its
+    # derivative marks the peak: a dense look at |α| itself catches it, then a bounded search.
+    from scipy.optimize import minimize_scalar
+
+    for lo, hi in pieces:
+        d = np.linspace(lo, hi, 4097)[:-1]  # the piece's own values: its end belongs to the next one
+        a = profile(cam, d % _TWO_PI).pressure_angle
+        k = int(np.argmax(a))
+        if a[k] > best + 1e-12:
+            h = (hi - lo) / 4096
+            r = minimize_scalar(lambda t: -float(profile(cam, np.array([t % _TWO_PI])).pressure_angle[0]),
+                                bounds=(max(lo, d[k] - h), min(hi, d[k] + h)), method="bounded",
+                                options={"xatol": 1e-12})
+            cand, cand_at = (-float(r.fun), float(r.x)) if -r.fun > a[k] else (float(a[k]), float(d[k]))
+            if cand > best:
+                best, at = cand, cand_at % _TWO_PI
+    return best, at
 
 
 def min_convex_rho_pitch(cam: DiscCam) -> tuple[float, float]:
@@ -595,7 +684,9 @@ def undercut(cam: DiscCam) -> list[str]:
         the pitch curve (the inner envelope folds over itself, 根切), and convex corners of the
         pitch curve (a velocity drop of the law), where a roller of any radius leaves the profile
         for a moment. Flat face: r0 + s + s″ ≤ 0 somewhere (the face lines' envelope folds), and
-        velocity drops at joints (s″ → −∞). A knife edge has no finding.
+        velocity drops at joints (s″ → −∞); an oscillating flat face: the envelope's radius of
+        curvature ≤ 0 (a cusp; the contact leaving a finite face is not modelled). A knife edge
+        has no finding.
 
     Notes
     -----
@@ -630,6 +721,21 @@ def undercut(cam: DiscCam) -> list[str]:
                 f"the pitch curve has a convex corner at δ = {_deg(at)} (the follower's velocity drops "
                 f"there; the tangent turns {_deg(turn)}): the roller loses contact with the profile's "
                 f"vertex for a moment")
+    elif f.contact == "flat" and isinstance(f, OscillatingFollower):
+        def negative_rho(d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+            _, rho, rho1 = _rocker_face(cam, _path(cam, d))
+            return -rho, -rho1
+
+        worst, at = _maximise(_pieces(cam, "all"), negative_rho)
+        if -worst <= cam.base_radius * TANGENT_REL:
+            found.append(
+                f"the flat face's profile has a cusp: the envelope of the face lines has radius of "
+                f"curvature ρ = {-worst * 1e3:.3f} mm ≤ 0 at δ = {_deg(at)}; use a larger base circle "
+                f"or a gentler motion law")
+        for at, _ in _corners(cam):
+            found.append(
+                f"the follower's angular velocity drops at δ = {_deg(at)} (φ″ → −∞): the flat face "
+                f"cannot follow there")
     elif f.contact == "flat":
         r0 = cam.base_radius
 

@@ -76,7 +76,12 @@ def build_inversion(cam: DiscCam) -> Construction:
               ("B0", "axis", "s"), role="result", text="lay off B0_kB_k = s_k along the axis", panel=PANEL, label="B")
     else:
         a, l = f.pivot_distance, f.arm
-        psi0 = math.acos((a * a + l * l - r0 * r0) / (2.0 * a * l))
+        if f.contact == "flat":
+            # the face is the line through A along the rocker, tangent to the base circle at the
+            # start: its distance a·sin ψ0 from O is r0 (the arm length is not used)
+            psi0 = math.asin(r0 / a)
+        else:
+            psi0 = math.acos((a * a + l * l - r0 * r0) / (2.0 * a * l))
         # "opposite": during the rise the rocker turns against the cam — for a CCW cam the arm
         # starts turned ψ0 clockwise from A→O (B above OA) and turns further clockwise.
         turn = -rot if f.sense == "opposite" else rot
@@ -84,15 +89,31 @@ def build_inversion(cam: DiscCam) -> Construction:
         def pivot(ops: Any, delta: Any) -> tuple:
             return (a * ops.cos(delta), -rot * a * ops.sin(delta))
 
-        def arm(ops: Any, ap: tuple, s: Any) -> tuple:
+        def rocker(ops: Any, ap: tuple, s: Any) -> tuple:
             ux, uy = -ap[0] / a, -ap[1] / a  # A_k → O
             psi = turn * (psi0 + s)
             c, sn = ops.cos(psi), ops.sin(psi)
-            return (ap[0] + l * (c * ux - sn * uy), ap[1] + l * (sn * ux + c * uy))
+            return (c * ux - sn * uy, sn * ux + c * uy)  # A_k → O turned by ±(ψ0 + φ_k)
 
         g.add("A", "point", pivot, ("delta",), text="A_k on the pivot circle at −δ_k", panel=PANEL, label="A")
-        g.add("B", "point", arm, ("A", "s"), role="result",
-              text="lay off ∠OA_kB_k = ψ0 ± φ_k, A_kB_k = l", panel=PANEL, label="B")
+        if f.contact == "flat":
+            g.add("face", "line", lambda ops, ap, s: (ap[0], ap[1], *rocker(ops, ap, s)), ("A", "s"),
+                  text="the face: the line through A_k at ∠OA_k(face) = ψ0 ± φ_k, ψ0 = asin(r0/a)",
+                  panel=PANEL)
+
+            def foot(ops: Any, line: tuple) -> tuple:
+                t = -(line[0] * line[2] + line[1] * line[3])  # (O − A_k)·u
+                return (line[0] + t * line[2], line[1] + t * line[3])
+
+            g.add("B", "point", foot, ("face",), role="result",
+                  text="B_k: the foot of the perpendicular from O on the face", panel=PANEL, label="B")
+        else:
+            def arm(ops: Any, ap: tuple, s: Any) -> tuple:
+                ux, uy = rocker(ops, ap, s)
+                return (ap[0] + l * ux, ap[1] + l * uy)
+
+            g.add("B", "point", arm, ("A", "s"), role="result",
+                  text="lay off ∠OA_kB_k = ψ0 ± φ_k, A_kB_k = l", panel=PANEL, label="B")
     return g
 
 
@@ -111,15 +132,22 @@ class DrawnProfile:
 
 def draw_profile(cam: DiscCam, delta: np.ndarray, s: np.ndarray, plan: Any | None = None) -> DrawnProfile:
     """Carry out the inversion at the divisions ``delta`` with displacements ``s`` and read it off."""
+    f = cam.follower
     if plan is None:
-        plan = build_inversion(cam).prune(["B"] + (["axis"] if isinstance(cam.follower, TranslatingFollower) else ["A"]))
+        keep = ["axis"] if isinstance(f, TranslatingFollower) else ["A"] + (["face"] if f.contact == "flat" else [])
+        plan = build_inversion(cam).prune(["B"] + keep)
     sol = plan.evaluate_batch({"delta": delta, "s": s})
     bx, by = sol["B"]
     pitch = np.column_stack([np.broadcast_to(bx, delta.shape), np.broadcast_to(by, delta.shape)])
-    f = cam.follower
     if isinstance(f, TranslatingFollower):
         line = sol["axis"]
         axis_dir = np.column_stack([np.broadcast_to(line[2], delta.shape), np.broadcast_to(line[3], delta.shape)])
+    elif f.contact == "flat":
+        # the face's own direction u turned a quarter: the normal, the way the face moves
+        line = sol["face"]
+        turn = -cam.rotation if f.sense == "opposite" else cam.rotation
+        axis_dir = turn * np.column_stack([-np.broadcast_to(line[3], delta.shape),
+                                           np.broadcast_to(line[2], delta.shape)])
     else:
         ax, ay = sol["A"]
         arm = pitch - np.column_stack([ax, ay])
@@ -166,7 +194,9 @@ def _working_profile(cam: DiscCam, pitch: np.ndarray, axis_dir: np.ndarray) -> n
         if eroded.geom_type == "MultiPolygon":
             eroded = max(eroded.geoms, key=lambda g: g.area)
         return np.asarray(eroded.exterior.coords)
-    # flat face ⟂ the follower's motion: the envelope of the face lines through B_k
+    # flat face ⟂ the follower's motion (translating), or along the rocker through A_k (oscillating:
+    # B_k is the foot of the perpendicular from O, axis_dir the face's normal): the envelope of the
+    # face lines through B_k
     nxt_p, nxt_d = np.roll(pitch, -1, axis=0), np.roll(axis_dir, -1, axis=0)
     # face k: points X with (X − B_k)·d_k = 0; intersect faces k and k+1
     det = axis_dir[:, 0] * nxt_d[:, 1] - axis_dir[:, 1] * nxt_d[:, 0]

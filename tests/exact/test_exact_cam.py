@@ -546,8 +546,8 @@ def test_invalid_cams_are_refused():
         profile(DiscCam(10 * MM, TranslatingFollower(10 * MM, "roller", 5 * MM), OFFSET_PROGRAM), np.zeros(1))
     with pytest.raises(ValueError, match="arm cannot reach the base circle"):
         profile(rocker_cam(r0=110 * MM), np.zeros(1))
-    with pytest.raises(ValueError, match="oscillating flat-faced follower is not modelled"):
-        profile(DiscCam(25 * MM, OscillatingFollower(55 * MM, 50 * MM, "flat"), ROCKER_PROGRAM), np.zeros(1))
+    with pytest.raises(ValueError, match="r0 < a"):
+        profile(DiscCam(60 * MM, OscillatingFollower(55 * MM, 50 * MM, "flat"), ROCKER_PROGRAM), np.zeros(1))
     with pytest.raises(ValueError, match="rotation must be"):
         profile(dataclasses.replace(offset_cam("pos"), rotation=2), np.zeros(1))
     with pytest.raises(ValueError, match='where must be "rise", "return" or "all"'):
