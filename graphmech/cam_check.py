@@ -87,10 +87,18 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
     """μ from the scene where stated; otherwise round values that fit one row of panels."""
     stated = {k for k in ("l", "s", "phi", "v", "a") if k in scene.scales}
     scales = {k: float(scene.scales[k]) for k in stated}
+    from graphmech.methods.cam_figures import panel_rows
+
     w, h = page_size(scene)
-    n = max(1, len(scene.show))
-    room_w = (w - 20.0 - 12.0 * (n - 1)) / n - 12.0
-    room_h = h - 38.0 - 35.0
+    rows = panel_rows(scene.show)
+    n_rows = max(rows.values(), default=0) + 1
+    n = max([list(rows.values()).count(r) for r in range(n_rows)] + [1])  # panels in the fullest row
+    # In a row the profile gets twice a diagram's width.
+    weights = [2.0 if p == "profile" else 1.0 for p, r in rows.items() if r == 0] or [1.0]
+    free = w - 20.0 - 12.0 * (n - 1) - 12.0 * n
+    room_profile = max(free * 2.0 / sum(weights), 40.0) if "profile" in scene.show else free
+    room_w = max(free / max(sum(weights), n), 40.0)
+    room_h = (h - 38.0) / n_rows - 35.0
     f = cam.follower
     pitch_r = float(np.max(np.hypot(*drawn.pitch.T))) if drawn is not None else \
         cam.base_radius + (0.0 if _angular(cam) else cam.program.stroke)
@@ -98,7 +106,7 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
     if _angular(cam):
         reach = max(reach, f.pivot_distance + getattr(f, "roller_radius", 0.0))
     if "l" not in scales:
-        scales["l"] = round_scale(2.0 * reach / min(room_w, room_h))
+        scales["l"] = round_scale(2.0 * reach / min(room_profile, room_h))
     if "phi" not in scales:  # books choose degrees per mm
         scales["phi"] = math.radians(round_scale(360.0 / room_w))
     ext = maxima(cam.program, cam.omega)

@@ -506,6 +506,14 @@ def diagram_items(cam: DiscCam, panel: str, mu: float, mu_phi: float, delta: np.
 
 
 # ----------------------------------------------------------------------------- the sheet
+def panel_rows(show: Sequence[str]) -> dict[str, int]:
+    """Which row each panel stands in: up to two panels in one row; with three or four, the first
+    two (the profile and the s–δ diagram) above and the rest below — a row of four does not fit a
+    sheet with readable captions."""
+    shown = [p for p in PANELS if p in show]
+    return {p: (0 if len(shown) <= 2 or k < 2 else 1) for k, p in enumerate(shown)}
+
+
 def cam_sheet(title: str, cam: DiscCam, drawn: DrawnProfile | None, scales: dict[str, float], show: Sequence[str],
               page: tuple[float, float], *, roller_circles: bool = True, marks: dict[str, Any] | None = None,
               footer: tuple[str, ...] = (), number_every: int | None = None) -> Sheet:
@@ -590,7 +598,7 @@ def cam_sheet(title: str, cam: DiscCam, drawn: DrawnProfile | None, scales: dict
             items = diagram_items(cam, p, scales[key], scales["phi"], delta, number_every)
             notes = (scale_note(key, scales[key], angular), phi_note(scales["phi"]))
             head = f"{TITLES[p]} {SYMBOLS[p][int(angular)]}–δ"
-        panels.append(Panel(p, head, tuple(items), notes, row=0))
+        panels.append(Panel(p, head, tuple(items), notes, row=panel_rows(show)[p]))
     return Sheet(title, tuple(panels), page, footer)
 
 

@@ -289,10 +289,12 @@ def test_dense_numbering_writes_every_second_number():
 
 
 # ----------------------------------------------------------------------------- the sheet
-def test_panels_stand_in_one_row_in_the_books_order_and_bad_requests_are_refused():
+def test_panels_stand_in_the_books_order_two_a_row_and_bad_requests_are_refused():
     cam, drawn, sheet = make(show=["acceleration", "profile", "displacement"])
     assert [p.name for p in sheet.panels] == ["profile", "displacement", "acceleration"]
-    assert {p.row for p in sheet.panels} == {0}
+    assert [p.row for p in sheet.panels] == [0, 0, 1]  # three panels: profile and s–δ above
+    _, _, two = make(show=["displacement", "profile"])
+    assert [p.row for p in two.panels] == [0, 0]
     with pytest.raises(ValueError, match="jerk"):
         cam_sheet("", cam, drawn, SCALES, ["jerk"], A3)
     with pytest.raises(ValueError, match="phi"):
