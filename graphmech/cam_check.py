@@ -51,6 +51,7 @@ class CamAnalysis:
     impacts: list[dict[str, Any]] = field(default_factory=list)
     marks: dict[str, Any] = field(default_factory=dict)
     reading: Any = None  # what is read off the drawn profile (methods.cam_inversion.CamReading)
+    divisions: list[dict[str, Any]] = field(default_factory=list)  # the book's table, one row a division
 
     def scale_notes(self) -> list[str]:
         """μ as written on the drawing; an oscillating follower's μs is an angle per mm."""
@@ -147,6 +148,7 @@ def analyse_cam(scene: Any) -> CamAnalysis:
     an.warnings += exact_cam.undercut(cam)
     reading = read_drawing(cam, drawn)
     an.reading = reading
+    an.divisions = division_table(an)
     if reading.undercut:
         what = (f"the roller (r_r = {cam.follower.roller_radius * 1e3:.4g} mm) is no smaller than the pitch curve's "
                 f"radius {reading.rho_min * 1e3:.4g} mm" if cam.follower.contact == "roller"
@@ -167,6 +169,25 @@ def analyse_cam(scene: Any) -> CamAnalysis:
             raise SceneError([("cam.alpha_permissible" if name == "r0_min" else "find", f"{name}: {e}")],
                              scene.source) from None
     return an
+
+
+def division_table(an: CamAnalysis) -> list[dict[str, Any]]:
+    """The table books print beside the inversion: per division its number, cam angle, displacement,
+    and the pressure angle and pitch-curve radius read off the drawing, with their exact values."""
+    cam, drawn = an.cam, an.drawn
+    ex = exact_cam.profile(cam, an.delta)
+    ang = _angular(cam)
+    out = []
+    for k, d in enumerate(an.delta):
+        out.append({
+            "division": k, "delta_deg": math.degrees(float(d)),
+            "s": math.degrees(float(an.s[k])) if ang else float(an.s[k]), "s_unit": "deg" if ang else "m",
+            "alpha_deg": 0.0 if cam.follower.contact == "flat" else math.degrees(float(drawn.pressure_angle[k])),
+            "alpha_exact_deg": math.degrees(float(ex.pressure_angle[k])),
+            "rho_pitch": float(drawn.rho_pitch[k]) if abs(drawn.rho_pitch[k]) < 1e299 else None,
+            "rho_pitch_exact": float(ex.rho_pitch[k]) if np.isfinite(ex.rho_pitch[k]) and abs(ex.rho_pitch[k]) < 1e299 else None,
+        })
+    return out
 
 
 def _requested(scene: Any) -> list[str]:

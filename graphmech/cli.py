@@ -210,6 +210,8 @@ def _check(args: argparse.Namespace) -> int:
         an = analyse_cam(scene)
         verdicts = judge_cam(an, args.precision, tuple(extra))
         extra_doc["impacts"] = an.impacts
+        if an.divisions:
+            extra_doc["divisions"] = an.divisions
     else:
         an = analyse(scene, tuple(extra))
         verdicts = judge(an, args.precision)

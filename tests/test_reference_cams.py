@@ -70,3 +70,14 @@ def test_oscillating_roller(problems):
         assert row["graphical"] == pytest.approx(phi_book, abs=0.01)
     assert q["alpha_max"]["exact"] == pytest.approx(p["exact"]["alpha_max_deg_opposite_sense"], abs=1e-3)
     assert q["alpha_max_at"]["exact"] == pytest.approx(p["exact"]["alpha_max_at_deg_opposite_sense"], abs=0.01)
+
+
+def test_the_division_table_lists_every_division_with_what_is_read_off_it(problems):
+    p = problems["cam.offset_roller_translating"]
+    doc = check_json(SCENES / "cam.offset_roller_translating-pos.toml")
+    table = doc["divisions"]
+    assert [round(r["delta_deg"], 6) for r in table] == p["inputs"]["profile_angles_deg"]
+    assert [r["s"] * 1000 for r in table] == pytest.approx(p["exact"]["s_table_mm"][:24], abs=1e-9)
+    # away from the joints the drawn pressure angle is within a degree of the exact one at 15° steps
+    far = [r for r in table if min(abs(r["delta_deg"] - j) for j in (0, 150, 180, 240, 300, 360)) > 20]
+    assert far and all(abs(r["alpha_deg"] - r["alpha_exact_deg"]) < 1.0 for r in far)
