@@ -13,11 +13,11 @@ import json
 import math
 import os
 import sys
-import tempfile
 from pathlib import Path
 from typing import Any, Sequence
 
 from graphmech.errors import DegenerateConstruction, GraphmechError, SceneError
+from graphmech.files import write_atomic
 
 EXIT_OK, EXIT_OUT_OF_TOLERANCE, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
 
@@ -118,34 +118,6 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
 def _id_prefix(path: str | os.PathLike[str]) -> str:
     """Element ids start with a hash of the scene, so two figures inline on one page don't clash."""
     return "g" + hashlib.sha256(Path(path).read_bytes()).hexdigest()[:8]
-
-
-def write_atomic(path: str | os.PathLike[str], text: str) -> None:
-    """Write via a temporary file in the same folder, then rename: never a half-written file.
-
-    A symlink is followed (the link stays, its target is replaced); a target that is not a
-    regular file (a device, a FIFO) is written directly, since renaming over it would replace it.
-    The new file gets the usual permissions (0666 less the umask), not mkstemp's 0600.
-    """
-    path = Path(os.path.realpath(path))
-    if path.is_dir():
-        raise OSError(f"{path}: is a folder")
-    if path.exists() and not path.is_file():
-        with open(path, "w", encoding="utf-8", newline="\n") as f:
-            f.write(text)
-        return
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as f:
-            f.write(text)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
 
 
 def _render(args: argparse.Namespace) -> int:

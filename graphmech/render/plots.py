@@ -6,33 +6,17 @@ hash salt for its ids, no date in its metadata, text drawn as paths.
 """
 from __future__ import annotations
 
-import os
 import re
-import tempfile
 from pathlib import Path
 from typing import Any
+
+from graphmech.files import write_atomic
 
 _MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*")
 
 
 def _file_name(method: str) -> str:
     return re.sub(r"[^A-Za-z0-9._-]+", "_", method).strip("._") or "method"
-
-
-def _write(path: Path, data: bytes) -> None:
-    """Write via a temporary file in the same folder, then rename: never a half-written file."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
 
 
 def error_time_plots(records: list[dict[str, Any]], out_dir: Path) -> list[Path]:
@@ -102,6 +86,6 @@ def error_time_plots(records: list[dict[str, Any]], out_dir: Path) -> list[Path]
             while out_dir / f"{name}.svg" in written:  # two methods spelt alike after cleaning
                 name += "_"
             path = out_dir / f"{name}.svg"
-            _write(path, buf.getvalue())
+            write_atomic(path, buf.getvalue())
             written.append(path)
     return written

@@ -1,0 +1,35 @@
+"""Writing output files safely: the one place graphmech writes files."""
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+
+def write_atomic(path: str | os.PathLike[str], text: str | bytes) -> None:
+    """Write via a temporary file in the same folder, then rename: never a half-written file.
+
+    A symlink is followed (the link stays, its target is replaced); a target that is not a
+    regular file (a device, a FIFO) is written directly, since renaming over it would replace it.
+    The new file gets the usual permissions (0666 less the umask), not mkstemp's 0600.
+    """
+    data = text.encode("utf-8") if isinstance(text, str) else text
+    path = Path(os.path.realpath(path))
+    if path.is_dir():
+        raise OSError(f"{path}: is a folder")
+    if path.exists() and not path.is_file():
+        with open(path, "wb") as f:
+            f.write(data)
+        return
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
