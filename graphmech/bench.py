@@ -18,7 +18,6 @@ from graphmech.exact import cam as exact_cam
 from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.cam import DiscCam, MotionProgram, OscillatingFollower, Segment, TranslatingFollower
 from graphmech.mechanisms.linkage import Crank, Linkage, RRR
-from graphmech.mechanisms.motion import breakpoints, displacement, impacts
 from graphmech.methods.cam_inversion import CamReading, near, read_cam, rigid_corners as _rigid_corners
 from graphmech.methods.polygons import build_polygons
 

@@ -392,12 +392,6 @@ def exact_value(kin: Kinematics, spec: tuple, i: int, build: LinkageConstruction
 # ---------------------------------------------------------------------------- conditioning
 
 
-def _intersections(an: Analysis, slot: str) -> list[str]:
-    steps = an.plan.by_name
-    deps = [n for n in _deps(an, slot)]
-    return [steps[n].text for n in deps if n in steps and steps[n].kind == "point" and steps[n].kernel is not None]
-
-
 def _deps(an: Analysis, slot: str) -> set[str]:
     cache = an.__dict__.setdefault("_dep_cache", {})
     if slot not in cache:

@@ -159,16 +159,6 @@ def line_parallel_to(ops: Ops, through: tuple, u: tuple) -> tuple:
     return (through[0], through[1], u[0], u[1])
 
 
-def line_perpendicular(ops: Ops, through: tuple, a: tuple, b: tuple) -> tuple:
-    """The line through ``through`` perpendicular to a→b ("through b draw ⟂ BC")."""
-    return line_perpendicular_to(ops, through, unit(ops, a, b))
-
-
-def line_parallel(ops: Ops, through: tuple, a: tuple, b: tuple) -> tuple:
-    """The line through ``through`` parallel to a→b ("through k′ draw ∥ BC")."""
-    return line_parallel_to(ops, through, unit(ops, a, b))
-
-
 def line_fixed(ops: Ops, through: tuple, dx: float, dy: float) -> tuple:
     """The line through ``through`` along the fixed unit direction (dx, dy) ("∥ the guide")."""
     return (through[0], through[1], dx + 0.0 * through[0], dy + 0.0 * through[0])

@@ -30,7 +30,7 @@ import numpy as np
 
 from graphmech.construction import Construction
 from graphmech.geometry import kernels as K
-from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
+from graphmech.mechanisms.cam import DiscCam, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
 
 PANEL = "profile"
@@ -70,7 +70,7 @@ def build_inversion(cam: DiscCam) -> Construction:
         g.add("axis", "line", axis, ("K", "delta"), text="the follower's axis: tangent to the offset circle at K_k",
               panel=PANEL)
         g.add("B0", "point",
-              lambda ops, o, line: K.intersect_circle_line(ops, o, r0, line, 1.0, lambda e_: "the axis misses the base circle"),
+              lambda ops, o, line: K.intersect_circle_line(ops, o, r0, line, 1.0, lambda _: "the axis misses the base circle"),
               ("O", "axis"), text="B0_k = axis ∩ base circle", panel=PANEL, label="B0")
         g.add("B", "point", lambda ops, b0, line, s: (b0[0] + s * line[2], b0[1] + s * line[3]),
               ("B0", "axis", "s"), role="result", text="lay off B0_kB_k = s_k along the axis", panel=PANEL, label="B")

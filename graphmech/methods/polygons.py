@@ -19,7 +19,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 from graphmech.construction import Construction
-from graphmech.mechanisms.linkage import Crank, Linkage, LinkPoint, RPP, RPR, RRP, RRR
+from graphmech.mechanisms.linkage import Crank, Linkage, RPP, RPR, RRP, RRR
 from graphmech.methods.quantities import Quantity
 
 PANELS = ("mechanism", "velocity", "acceleration")
@@ -145,12 +145,6 @@ def add_point_quantities(b: LinkageConstruction) -> None:
         if isinstance(y, RPR):  # the bar's length between the pivots, l_BC, as the book reads it
             measure.length(b, y.bar_pivot, y.block_pivot)
             measure.length(b, y.block_pivot, y.bar_pivot)
-
-
-def kind_of(part: Any) -> str:
-    if isinstance(part, LinkPoint):
-        return "point"
-    return part.kind  # crank, slider, RRR, RRP, RPR, RPP
 
 
 __all__ = ["LinkageConstruction", "build_polygons", "PANELS", "RRR", "RRP", "RPR", "RPP"]
