@@ -1383,11 +1383,13 @@ def _read_program(cam: _Reader, follower: str | None) -> tuple[MotionProgram | N
         kind = s.string("kind", choices=_SEGMENT_KINDS, required=True)
         kinds_ok = kinds_ok and kind is not None
         angle = s.value("angle", "angle")
+        if kind == "dwell" and angle is not None and angle.si == 0:
+            # a 0° dwell is no dwell: the rise runs straight into the return (or the next rise)
+            _not_for(s, ["law"], "a dwell has no motion law: leave law out")
+            s.finish()
+            continue
         if angle is not None and angle.si <= 0:
-            if kind == "dwell" and angle.si == 0:
-                s.problem(angle.path, "a dwell of 0° is no dwell: leave this segment out")
-            else:
-                s.problem(angle.path, "must be > 0")
+            s.problem(angle.path, "must be > 0")
             angle = None
         angles.append(angle)
         law: str | None = None

@@ -78,9 +78,15 @@ def test_an_offset_larger_than_the_base_radius_is_bad_input(tmp_path):
     assert code == 2 and err.count("\n") == 1 and "cam.follower.offset" in err
 
 
-def test_a_zero_dwell_is_refused_with_advice(tmp_path):
-    code, _, err = run_cli("check", str(scene(tmp_path, rise=180)))
-    assert code == 2 and "cam.segment[1].angle" in err
+def test_a_zero_dwell_is_no_dwell(tmp_path):
+    from graphmech.scene import load_scene
+
+    p = scene(tmp_path, rise=180, find='["v_max", "a_max", "alpha_max"]')  # rise 180°, dwell 0°, return 150°
+    assert [seg.kind for seg in load_scene(p).cam.cam.program.segments] == ["rise", "return", "dwell"]
+    doc = check_json(p)
+    assert all(math.isfinite(r["graphical"]) for r in doc["quantities"])
+    # sine into sine at the top: no impact there
+    assert not [i for i in doc["impacts"] if abs(i["angle_deg"] - 180.0) < 1e-9]
 
 
 def test_a_rise_over_one_degree(tmp_path):
