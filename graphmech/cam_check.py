@@ -276,13 +276,16 @@ def _row(an: CamAnalysis, name: str) -> Row:
     rd = an.reading
     if name in ("alpha_max", "alpha_max_at"):
         a, at = exact_cam.max_pressure_angle(cam)
-        g, e = (deg(rd.alpha_max), deg(a)) if name == "alpha_max" else (deg(rd.alpha_max_at), deg(at))
-        return _angle_row(name, g, e, 90.0 if name == "alpha_max" else 360.0)
+        if name == "alpha_max":
+            return _angle_row(name, deg(rd.alpha_max), deg(a), 90.0)
+        there = float(exact_cam.profile(cam, np.array([rd.alpha_max_at])).pressure_angle[0])
+        return _angle_row(name, deg(rd.alpha_max_at), deg(_tied(rd.alpha_max_at, at, there, a)), 360.0)
     if name in ("rho_min_pitch", "rho_min_pitch_at"):
         r, at = exact_cam.min_convex_rho_pitch(cam)
         if name == "rho_min_pitch":
             return _plain(name, unit, rd.rho_min / an.scales["l"], an.scales["l"], r, size)
-        return _angle_row(name, deg(rd.rho_min_at), deg(at), 360.0)
+        there = float(exact_cam.profile(cam, np.array([rd.rho_min_at])).rho_pitch[0])
+        return _angle_row(name, deg(rd.rho_min_at), deg(_tied(rd.rho_min_at, at, there, r)), 360.0)
     if name == "rho_min_actual":  # the working profile's sharpest convex bend: ρ_pitch − r_r, or read off a flat face
         f = cam.follower
         g = rd.rho_min - (f.roller_radius if f.contact == "roller" else 0.0)
@@ -314,6 +317,13 @@ def _row(an: CamAnalysis, name: str) -> Row:
     scale = an.scales.get(q, 1.0)
     unit = {"v": "rad/s", "a": "rad/s²", "j": "rad/s³"}[q] if ang else unit
     return _plain(name, unit, vals[k] / scale, scale, ext.value, ext.value)
+
+
+def _tied(drawn_at: float, exact_at: float, exact_there: float, extreme: float) -> float:
+    """Where the exact extreme is, as compared with the drawing's reading: where the extreme is
+    reached on a whole stretch (a dwell on the base circle) or at several places (equal peaks),
+    the drawn place is one of them and is right — not an error of 60°."""
+    return drawn_at if abs(exact_there - extreme) <= 1e-9 * abs(extreme) else exact_at
 
 
 def _plain(name: str, unit: str, drawn_mm: float, scale: float, exact: float, size: float) -> Row:

@@ -190,3 +190,12 @@ def test_the_exact_largest_pressure_angle_is_found_past_a_steep_flank():
     a, at = max_pressure_angle(cam)
     dense = profile(cam, np.linspace(0, math.tau, 200_001)[:-1]).pressure_angle
     assert a >= dense.max() - 1e-12
+
+
+def test_an_extreme_reached_at_several_places_is_no_error_of_its_place():
+    from graphmech.cam_check import _tied
+
+    # the drawing's place is another place where the exact extreme is reached: it is right
+    assert _tied(5.0, 0.0, exact_there=0.040, extreme=0.040) == 5.0
+    # … and where the exact value there is not the extreme, the exact place stands
+    assert _tied(5.0, 0.0, exact_there=0.041, extreme=0.040) == 0.0
