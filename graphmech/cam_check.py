@@ -14,11 +14,12 @@ from typing import Any
 
 import numpy as np
 
-from graphmech.check import Row, Verdict, page_size
+from graphmech.check import Row, Verdict, close_names, measured_entries, page_size
 from graphmech.errors import SceneError
 from graphmech.exact import cam as exact_cam
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxima
+from graphmech.methods.cam_figures import panel_rows, scale_note
 from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile, read_drawing
 from graphmech.scales import round_scale
 
@@ -52,20 +53,12 @@ class CamAnalysis:
     marks: dict[str, Any] = field(default_factory=dict)
     reading: Any = None  # what is read off the drawn profile (methods.cam_inversion.CamReading)
     divisions: list[dict[str, Any]] = field(default_factory=list)  # the book's table, one row a division
+    extra_measured: tuple[tuple[str, float], ...] = ()
 
     def scale_notes(self) -> list[str]:
-        """μ as written on the drawing; an oscillating follower's μs is an angle per mm."""
-        from graphmech.scales import format_scale
-
-        out = []
-        for k, v in self.scales.items():
-            if k == "s" and _angular(self.cam):
-                out.append(f"μψ = {math.degrees(v):.6g} °/mm")
-            elif k in ("v", "a") and _angular(self.cam):
-                out.append(f"μ{'ω' if k == 'v' else 'ε'} = {v:.6g} (rad/s{'' if k == 'v' else '²'})/mm")
-            else:
-                out.append(format_scale(k, v))
-        return [n + ("" if k in self.stated else " (chosen)") for n, k in zip(out, self.scales)]
+        """μ as written on the drawing (an oscillating follower's μs is an angle per mm)."""
+        return [scale_note(k, v, _angular(self.cam)) + ("" if k in self.stated else " (chosen)")
+                for k, v in self.scales.items()]
 
 
 def _angular(cam: DiscCam) -> bool:
@@ -88,8 +81,6 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
     """μ from the scene where stated; otherwise round values that fit one row of panels."""
     stated = {k for k in ("l", "s", "phi", "v", "a") if k in scene.scales}
     scales = {k: float(scene.scales[k]) for k in stated}
-    from graphmech.methods.cam_figures import panel_rows
-
     w, h = page_size(scene)
     rows = panel_rows(scene.show)
     n_rows = max(rows.values(), default=0) + 1
@@ -113,25 +104,27 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
     ext = maxima(cam.program, cam.omega)
     if "s" not in scales:
         scales["s"] = round_scale(cam.program.stroke / (0.6 * room_h))
-    for key, q in (("v", "v"), ("a", "a")):
+    for key in ("v", "a"):
         if key not in scales:
-            peak = ext[q].value
+            peak = ext[key].value
             scales[key] = round_scale(2.0 * peak / (0.6 * room_h)) if peak > 0 else 1.0
     return scales, stated
 
 
-def analyse_cam(scene: Any) -> CamAnalysis:
-    """The inversion at the scene's divisions, its readings, and the check table."""
+def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> CamAnalysis:
+    """The inversion at the scene's divisions, its readings, and the check table
+    (``extra_measured``: hand readings from the command line, which may need the profile)."""
     cs = scene.cam
     cam: DiscCam = cs.cam
     names = _requested(scene)
+    asked = names + [n for _, n, _ in measured_entries(scene, extra_measured)]
     delta = divisions(cam, cs.step, breakpoints(cam.program))
     s = displacement(cam.program, delta)
     # Only what the scene asks for: no profile for a scene that wants the diagrams alone.
-    wants_profile = "profile" in scene.show or any(n in PROFILE_QUANTITIES or n.startswith("alpha@") for n in names)
+    wants_profile = "profile" in scene.show or any(n in PROFILE_QUANTITIES or n.startswith("alpha@") for n in asked)
     drawn = draw_profile(cam, delta, s) if wants_profile else None
     scales, stated = choose_cam_scales(scene, cam, drawn)
-    an = CamAnalysis(scene, cam, delta, s, drawn, scales, stated)
+    an = CamAnalysis(scene, cam, delta, s, drawn, scales, stated, extra_measured=tuple(extra_measured))
     lin = "rad" if _angular(cam) else "m"
     an.impacts = [{"angle_deg": math.degrees(i.angle), "kind": i.kind,
                    # the jump of v (rigid) or of a (soft), in SI with the cam's ω
@@ -193,11 +186,8 @@ def division_table(an: CamAnalysis) -> list[dict[str, Any]]:
 def _requested(scene: Any) -> list[str]:
     problems: list[tuple[str, str]] = []
     names: list[str] = []
-    profile_wanted: list[str] = []
     for k, name in enumerate(scene.find):
         if name.startswith(("s@", "alpha@")):
-            if name.startswith("alpha@"):
-                profile_wanted.append(name)
             try:
                 if not math.isfinite(float(name.split("@")[1])):
                     raise ValueError
@@ -206,10 +196,7 @@ def _requested(scene: Any) -> list[str]:
                 problems.append((f"find[{k}]", f"{name!r}: write s@<cam angle in degrees>, e.g. s@45 (or alpha@45)"))
             continue
         if name not in CAM_QUANTITIES:
-            import difflib
-
-            m = difflib.get_close_matches(name, sorted(CAM_QUANTITIES), n=3)
-            problems.append((f"find[{k}]", f"unknown cam quantity {name!r}" + (f"; did you mean {', '.join(m)}?" if m else "")))
+            problems.append((f"find[{k}]", f"unknown cam quantity {name!r}{close_names(name, CAM_QUANTITIES)}"))
         elif scene.cam.cam.follower.contact == "flat" and name in ("r0_min", "rho_min_pitch", "rho_min_pitch_at"):
             problems.append((f"find[{k}]", f"{name} has no meaning for a flat face (its pressure angle is 0 at any "
                                            "r0; its curvature is the working profile's: ask for rho_min_actual)"))
@@ -288,14 +275,13 @@ def _row(an: CamAnalysis, name: str) -> Row:
         return _angle_row(name, deg(rd.rho_min_at), deg(_tied(rd.rho_min_at, at, there, r)), 360.0)
     if name == "rho_min_actual":  # the working profile's sharpest convex bend: ρ_pitch − r_r, or read off a flat face
         f = cam.follower
-        g = rd.rho_min - (f.roller_radius if f.contact == "roller" else 0.0)
-        grid = np.union1d(np.linspace(0.0, math.tau, EXACT_SAMPLES, endpoint=False), breakpoints(cam.program))
-        ra = exact_cam.profile(cam, grid).rho_actual
-        e = float(ra[ra > 0].min()) if f.contact != "flat" else float(ra.min())
-        if f.contact != "flat":
-            r, _ = exact_cam.min_convex_rho_pitch(cam)
-            e = r - (f.roller_radius if f.contact == "roller" else 0.0)
-        return _plain(name, unit, g / an.scales["l"], an.scales["l"], e, size)
+        r_r = f.roller_radius if f.contact == "roller" else 0.0
+        if f.contact == "flat":  # the profile's own curvature (r0 + s + s″ for a translating face)
+            grid = np.union1d(np.linspace(0.0, math.tau, EXACT_SAMPLES, endpoint=False), breakpoints(cam.program))
+            e = float(exact_cam.profile(cam, grid).rho_actual.min())
+        else:
+            e = exact_cam.min_convex_rho_pitch(cam)[0] - r_r
+        return _plain(name, unit, (rd.rho_min - r_r) / an.scales["l"], an.scales["l"], e, size)
     if name == "profile_deviation":
         dev = profile_deviation(cam, drawn.actual)
         return Row(name, unit, dev / an.scales["l"], an.scales["l"], dev, 0.0, dev / size)
@@ -337,12 +323,11 @@ def _angle_row(name: str, g: float, e: float, span: float) -> Row:
     return Row(name, "deg", None, 1.0, float(g), float(e), err)
 
 
-def judge_cam(an: CamAnalysis, precision_mm: float | None = None, extra: tuple = ()) -> list[Verdict]:
+def judge_cam(an: CamAnalysis, precision_mm: float | None = None) -> list[Verdict]:
     """Hand readings of a cam drawing (``alpha_max = 34``, ``rho_min_pitch = 0.029``) against the exact values."""
     prec = precision_mm if precision_mm is not None else an.scene.precision_mm
     out, problems = [], []
-    for key, name, value in [(f"measured.{n}", n, v) for n, v in an.scene.measured] + \
-                            [(f"--measured {n}", n, v) for n, v in extra]:
+    for key, name, value in measured_entries(an.scene, an.extra_measured):
         if name not in CAM_QUANTITIES:
             problems.append((key, f"unknown cam quantity {name!r}"))
             continue

@@ -88,6 +88,7 @@ class Analysis:
     rows: list[Row] = field(default_factory=list)
     extra_measured: tuple[tuple[str, float], ...] = ()
     size: float = 1.0  # the mechanism's typical length, m
+    dependencies: dict[str, set[str]] = field(default_factory=dict)  # step → the steps it needs (cache)
 
 
 # ---------------------------------------------------------------------------- names
@@ -113,7 +114,7 @@ def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) 
     for k, raw in enumerate(scene.find):
         base, at = split_name(raw)
         if base not in build.quantities:
-            close = _close_names(base, build.quantities)
+            close = close_names(base, build.quantities)
             problems.append((f"find[{k}]", f"unknown quantity {base!r}{close}"))
             continue
         if at is None:
@@ -130,7 +131,7 @@ def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) 
     return out
 
 
-def _close_names(name: str, known: Any) -> str:
+def close_names(name: str, known: Any) -> str:
     import difflib
 
     m = difflib.get_close_matches(name, sorted(known), n=3)
@@ -212,7 +213,7 @@ def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analy
     scales, stated = choose_scales(scene, linkage, positions)
     build = build_polygons(linkage, scales)
     wanted = _requested(scene, build, labels)
-    measured_q = _measured_quantities(_measured_entries(scene, extra_measured), build, labels)
+    measured_q = _measured_quantities(measured_entries(scene, extra_measured), build, labels)
     targets = [build.quantities[q].slot for _, q, _ in wanted] + [build.quantities[q].slot for q in measured_q]
     for panel in PANELS:
         if panel in scene.show:
@@ -221,30 +222,29 @@ def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analy
 
     solutions: list[Any] = []
     failures: list[str] = []
-    with np.errstate(all="ignore"):
-        if len(positions) == 1:
-            where = position_text(build, labels[0])
-            try:  # one position asked for: if it cannot be built, the caller reports why
-                sol = plan.solve({build.param: float(positions[0])}, where)
-            except (OverflowError, ZeroDivisionError) as e:
-                raise DegenerateConstruction("the construction", f"numbers out of range ({e})", where) from None
-            if not _finite(sol.values):
-                raise DegenerateConstruction("the construction", OUT_OF_RANGE, where)
+    if len(positions) == 1:
+        where = position_text(build, labels[0])
+        try:  # one position asked for: if it cannot be built, the caller reports why
+            sol = plan.solve({build.param: float(positions[0])}, where)
+        except (OverflowError, ZeroDivisionError) as e:
+            raise DegenerateConstruction("the construction", f"numbers out of range ({e})", where) from None
+        if not _finite(sol.values):
+            raise DegenerateConstruction("the construction", OUT_OF_RANGE, where)
+        solutions.append(sol)
+        failures.append("")
+    else:
+        batch = plan.evaluate_batch({build.param: positions})
+        reason = [""] * len(positions)
+        for step, (mask, why) in batch.failures.items():
+            for i in np.flatnonzero(mask):
+                reason[i] = f"{step}: {why}"
+        for i in range(len(positions)):
+            sol = batch.at(i) if batch.valid[i] else None
+            if sol is not None and not _finite(sol.values):
+                sol, reason[i] = None, OUT_OF_RANGE
             solutions.append(sol)
-            failures.append("")
-        else:
-            batch = plan.evaluate_batch({build.param: positions})
-            reason = [""] * len(positions)
-            for step, (mask, why) in batch.failures.items():
-                for i in np.flatnonzero(mask):
-                    reason[i] = f"{step}: {why}"
-            for i in range(len(positions)):
-                sol = batch.at(i) if batch.valid[i] else None
-                if sol is not None and not _finite(sol.values):
-                    sol, reason[i] = None, OUT_OF_RANGE
-                solutions.append(sol)
-                failures.append(reason[i])
-        exact = solve_exact(linkage, positions)
+            failures.append(reason[i])
+    exact = solve_exact(linkage, positions)
     an = Analysis(scene, build, plan, scales, stated, positions, labels, solutions, failures, exact)
     an.extra_measured = tuple(extra_measured)
     an.size = mechanism_size(linkage, exact)
@@ -335,7 +335,7 @@ def _row(an: Analysis, display: str, qname: str, i: int) -> Row:
     drawn, scale = an.solutions[i][q.slot]
     drawn, scale = float(drawn), float(scale)
     g = drawn * scale
-    e = exact_value(an.exact, q.exact, i, an.build)
+    e = exact_value(an.exact, q.exact, i)
     if not (math.isfinite(g) and math.isfinite(e)):
         raise DegenerateConstruction(f"measure {qname}", OUT_OF_RANGE, position_text(an.build, an.labels[i]))
     if q.unit == "deg":
@@ -350,7 +350,7 @@ def _row(an: Analysis, display: str, qname: str, i: int) -> Row:
 # ---------------------------------------------------------------------------- exact values
 
 
-def exact_value(kin: Kinematics, spec: tuple, i: int, build: LinkageConstruction) -> float:
+def exact_value(kin: Kinematics, spec: tuple, i: int) -> float:
     """The exact value that a quantity's ``exact`` description names, at position i."""
     kind = spec[0]
     P, V, A = kin.point, kin.vel, kin.acc
@@ -393,10 +393,9 @@ def exact_value(kin: Kinematics, spec: tuple, i: int, build: LinkageConstruction
 
 
 def _deps(an: Analysis, slot: str) -> set[str]:
-    cache = an.__dict__.setdefault("_dep_cache", {})
-    if slot not in cache:
-        cache[slot] = an.build.g.dependencies([slot])
-    return cache[slot]
+    if slot not in an.dependencies:
+        an.dependencies[slot] = an.build.g.dependencies([slot])
+    return an.dependencies[slot]
 
 
 def _ill(an: Analysis, slot: str, i: int) -> bool:
@@ -461,7 +460,7 @@ def _measured_quantities(entries: list[tuple[str, str, float]], build: LinkageCo
     return out
 
 
-def _measured_entries(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[tuple[str, str, float]]:
+def measured_entries(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[tuple[str, str, float]]:
     """(key path for messages, name, value) of the scene's [measured] table and the command line's."""
     return [(f"measured.{n}", n, v) for n, v in scene.measured] + [(f"--measured {n}", n, v) for n, v in extra]
 
@@ -477,7 +476,7 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
     if base in build.quantities:
         return base, idx, False
     if not is_segment(base):
-        raise ValueError(f"unknown quantity or segment {base!r}{_close_names(base, build.quantities)}")
+        raise ValueError(f"unknown quantity or segment {base!r}{close_names(base, build.quantities)}")
     t0, t1 = [t.replace("′", "'") for t in SEGMENT.findall(base)]
     if t0 == t1:
         raise ValueError(f"a drawn segment needs two different ends, not {base!r}")
@@ -516,7 +515,7 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
     prec = precision_mm if precision_mm is not None else scene.precision_mm
     problems = []
     out = []
-    for key, name, value in _measured_entries(scene, an.extra_measured):
+    for key, name, value in measured_entries(scene, an.extra_measured):
         try:
             qname, i, segment = _resolve(name, an.build, an.labels)
         except ValueError as e:
@@ -532,7 +531,7 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
                                   f"({an.exact.reason[i]}), so it cannot be judged"))
             continue
         drawn, scale = sol[q.slot]
-        e = exact_value(an.exact, q.exact, i, an.build)
+        e = exact_value(an.exact, q.exact, i)
         panel_key = SCALE_KEYS[q.panel]
         if segment:
             if panel_key not in an.stated:

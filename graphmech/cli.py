@@ -179,8 +179,8 @@ def _check(args: argparse.Namespace) -> int:
     if getattr(scene, "cam", None) is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 
-        an = analyse_cam(scene)
-        verdicts = judge_cam(an, args.precision, tuple(extra))
+        an = analyse_cam(scene, tuple(extra))
+        verdicts = judge_cam(an, args.precision)
         extra_doc["impacts"] = an.impacts
         if an.divisions:
             extra_doc["divisions"] = an.divisions

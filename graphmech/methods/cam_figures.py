@@ -106,23 +106,14 @@ def _circle_points(r: float, n: int = 120) -> tuple[tuple[float, float], ...]:
     return tuple((r * math.cos(math.tau * k / n), r * math.sin(math.tau * k / n)) for k in range(n))
 
 
-def phi_note(mu_phi: float) -> str:
-    """The cam-angle axis's scale as the book writes it, in degrees per mm.
+def scale_note(key: str, value: float, angular: bool = False) -> str:
+    """The note of a scale as the drawing states it: ``μs = 0.0005 m/mm``, ``μφ = 2.5 °/mm``; for
+    an oscillating follower the angle's, ``μψ = 0.005 rad/mm`` (and μω, με).
 
-    >>> phi_note(math.radians(2.5))
-    'μφ = 2.5 °/mm'
+    >>> scale_note("s", 0.0005), scale_note("a", 0.5, True), scale_note("phi", math.radians(2.5))
+    ('μs = 0.0005 m/mm', 'με = 0.5 (rad/s²)/mm', 'μφ = 2.5 °/mm')
     """
-    return f"μφ = {math.degrees(mu_phi):.6g} °/mm"
-
-
-def scale_note(key: str, value: float, angular: bool) -> str:
-    """The note of a diagram's scale: ``μs = 0.0005 m/mm``; for an oscillating follower the
-    angle's, ``μψ = 0.005 rad/mm`` (and μω, με).
-
-    >>> scale_note("s", 0.0005, False), scale_note("a", 0.5, True)
-    ('μs = 0.0005 m/mm', 'με = 0.5 (rad/s²)/mm')
-    """
-    if not angular and key in ("v", "a"):
+    if not angular or key not in ("s", "v", "a"):
         return format_scale(key, value)
     symbol = {"s": ("s", "ψ"), "v": ("v", "ω"), "a": ("a", "ε")}[key][int(angular)]
     return f"μ{symbol} = {value:.6g} {UNITS[key][int(angular)]}"
@@ -596,10 +587,10 @@ def cam_sheet(title: str, cam: DiscCam, drawn: DrawnProfile | None, scales: dict
         else:
             key = SCALE_KEY[p]
             items = diagram_items(cam, p, scales[key], scales["phi"], delta, number_every)
-            notes = (scale_note(key, scales[key], angular), phi_note(scales["phi"]))
+            notes = (scale_note(key, scales[key], angular), scale_note("phi", scales["phi"]))
             head = f"{TITLES[p]} {SYMBOLS[p][int(angular)]}–δ"
         panels.append(Panel(p, head, tuple(items), notes, row=panel_rows(show)[p]))
     return Sheet(title, tuple(panels), page, footer)
 
 
-__all__ = ["PANELS", "cam_sheet", "diagram_items", "numbered_every", "phi_note", "profile_items", "scale_note"]
+__all__ = ["PANELS", "cam_sheet", "diagram_items", "numbered_every", "profile_items", "scale_note"]
