@@ -102,10 +102,9 @@ def polygon_records(repeat: int = 7) -> list[dict[str, Any]]:
     secs = _best(lambda: closed_form_fourbar(phis), repeat, 50)
     ref = closed_form_fourbar(phis)
     kin = solve_exact(lk, phis)
-    b0 = build_polygons(lk, {"l": 0.002, "v": 0.01, "a": 0.1})
     err = 0.0
     for q in FOURBAR_QUANTITIES:
-        qq = b0.quantities[q]
+        qq = b.quantities[q]
         exact = np.array([exact_value(kin, qq.exact, i) for i in range(len(phis))])
         err = max(err, float(np.max(np.abs(ref[q] - exact))) / max(float(np.max(np.abs(exact))),
                                                                   characteristic(lk, qq.unit)))
@@ -164,21 +163,6 @@ class CamReference:
     undercut: bool
 
 
-def _flat_min_rho(cam: DiscCam, samples: int) -> tuple[float, float]:
-    """The smallest radius of curvature r0 + s + s″ of a flat face's profile, and where (rad)."""
-    from scipy.optimize import minimize_scalar
-
-    d = np.linspace(0.0, math.tau, samples, endpoint=False)
-    rho = exact_cam.profile(cam, d).rho_actual
-    k = int(np.argmin(rho))
-    h = math.tau / samples
-    best = minimize_scalar(lambda t: float(exact_cam.profile(cam, [t % math.tau]).rho_actual[0]),
-                           bounds=(d[k] - h, d[k] + h), method="bounded", options={"xatol": 1e-13})
-    if best.fun < rho[k]:
-        return float(best.fun), float(best.x % math.tau)
-    return float(rho[k]), float(d[k])
-
-
 def cam_reference(cam: DiscCam, samples: int = CAM_EXACT_SAMPLES) -> CamReference:
     """The exact solution the drawing is measured against (never timed)."""
     from graphmech.tolerances import TANGENT_REL
@@ -187,7 +171,7 @@ def cam_reference(cam: DiscCam, samples: int = CAM_EXACT_SAMPLES) -> CamReferenc
     alpha, alpha_at = exact_cam.max_pressure_angle(cam)
     f = cam.follower
     if f.contact == "flat":
-        rho, rho_at = _flat_min_rho(cam, samples)
+        rho, rho_at = exact_cam.min_rho_actual(cam, samples)
         under = rho <= cam.base_radius * TANGENT_REL
     else:
         rho, rho_at = exact_cam.min_convex_rho_pitch(cam)

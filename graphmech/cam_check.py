@@ -277,8 +277,7 @@ def _row(an: CamAnalysis, name: str) -> Row:
         f = cam.follower
         r_r = f.roller_radius if f.contact == "roller" else 0.0
         if f.contact == "flat":  # the profile's own curvature (r0 + s + s″ for a translating face)
-            grid = np.union1d(np.linspace(0.0, math.tau, EXACT_SAMPLES, endpoint=False), breakpoints(cam.program))
-            e = float(exact_cam.profile(cam, grid).rho_actual.min())
+            e = exact_cam.min_rho_actual(cam, EXACT_SAMPLES)[0]
         else:
             e = exact_cam.min_convex_rho_pitch(cam)[0] - r_r
         return _plain(name, unit, (rd.rho_min - r_r) / an.scales["l"], an.scales["l"], e, size)

@@ -19,7 +19,7 @@ from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
-from graphmech.scales import PAPER, round_scale
+from graphmech.scales import PAPER, format_scale, round_scale
 
 SCALE_KEYS = {"mechanism": "l", "velocity": "v", "acceleration": "a"}
 
@@ -89,6 +89,10 @@ class Analysis:
     extra_measured: tuple[tuple[str, float], ...] = ()
     size: float = 1.0  # the mechanism's typical length, m
     dependencies: dict[str, set[str]] = field(default_factory=dict)  # step → the steps it needs (cache)
+
+    def scale_notes(self) -> list[str]:
+        """μ as written on the drawing, marked where graphmech chose it."""
+        return [format_scale(k, v) + ("" if k in self.stated else " (chosen)") for k, v in self.scales.items()]
 
 
 # ---------------------------------------------------------------------------- names

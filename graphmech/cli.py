@@ -59,7 +59,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(e.one_line(), file=sys.stderr)
         return EXIT_BAD_INPUT
     except DegenerateConstruction as e:
-        print(f"{getattr(args, 'scene', None) or args.scenes[0]}: {e}", file=sys.stderr)
+        print(f"{getattr(args, 'scene', None) or args.current}: {e}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except GraphmechError as e:
         print(f"graphmech: {e}", file=sys.stderr)
@@ -80,16 +80,15 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
     """The SVG text of a scene and its warnings."""
+    import graphmech
     from graphmech.check import analyse, page_size, position_text, rows_that_fit
     from graphmech.methods.figures import linkage_sheet
     from graphmech.render.svg import render_svg
     from graphmech.scene import load_scene
 
-    import graphmech
-
     scene = load_scene(path)
     footer = (f"graphmech {graphmech.__version__}",)
-    if getattr(scene, "cam", None) is not None:
+    if scene.cam is not None:
         from graphmech.cam_check import analyse_cam
         from graphmech.methods.cam_figures import cam_sheet
 
@@ -126,6 +125,7 @@ def _render(args: argparse.Namespace) -> int:
         return EXIT_BAD_INPUT
     outputs = []
     for s in args.scenes:  # render everything first: one bad scene writes nothing
+        args.current = s  # for the message if it cannot be constructed
         svg, warnings = render_scene(s)
         for w in warnings:
             print(f"{s}: warning: {w}", file=sys.stderr)
@@ -176,7 +176,7 @@ def _check(args: argparse.Namespace) -> int:
     extra = _parse_measured(args.measured)
     scene = load_scene(args.scene)
     extra_doc: dict[str, Any] = {}
-    if getattr(scene, "cam", None) is not None:
+    if scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 
         an = analyse_cam(scene, tuple(extra))
@@ -200,13 +200,7 @@ def _check(args: argparse.Namespace) -> int:
 
 
 def _table(an: Any, verdicts: Sequence[Any]) -> str:
-    from graphmech.scales import SCALE_INFO
-
-    from graphmech.scales import format_scale
-
-    notes = an.scale_notes() if hasattr(an, "scale_notes") else [
-        format_scale(k, v) + ("" if k in an.stated else " (chosen)") for k, v in an.scales.items() if k in SCALE_INFO]
-    lines = [f"{an.scene.title}", "  ".join(notes)]
+    lines = [f"{an.scene.title}", "  ".join(an.scale_notes())]
     if an.rows:
         lines.append(f"{'quantity':<16} {'drawn mm':>11} {'μ':>11} {'graphical':>16} {'exact':>16} {'rel.error':>9}  unit")
         for r in an.rows:

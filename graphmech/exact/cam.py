@@ -927,3 +927,19 @@ def working_profile(cam: DiscCam, samples: int = 20_000) -> tuple[np.ndarray, np
     if not shapely.LinearRing(pts).is_simple:  # an offset beyond a vertex, or an undercut's loop
         raise ArithmeticError("the exact working profile crosses itself: the envelope folds over (undercut)")
     return pts, ang
+
+
+def min_rho_actual(cam: DiscCam, samples: int = 20_000) -> tuple[float, float]:
+    """The smallest radius of curvature of the working profile (for a flat face r0 + s + s″), m,
+    and where, rad: a dense look, then a bounded search round the smallest sample."""
+    from scipy.optimize import minimize_scalar
+
+    d = np.linspace(0.0, math.tau, samples, endpoint=False)
+    rho = profile(cam, d).rho_actual
+    k = int(np.argmin(rho))
+    h = math.tau / samples
+    best = minimize_scalar(lambda t: float(profile(cam, [t % math.tau]).rho_actual[0]),
+                           bounds=(d[k] - h, d[k] + h), method="bounded", options={"xatol": 1e-13})
+    if best.fun < rho[k]:
+        return float(best.fun), float(best.x % math.tau)
+    return float(rho[k]), float(d[k])
