@@ -48,16 +48,6 @@ def _lbl(b: "LinkageConstruction", slot: str) -> str:
     return b.g.steps[slot].label or ""
 
 
-def _image(b: "LinkageConstruction", point: str, kernel: Any, inputs: tuple, text: str) -> str:
-    b.acc[point] = b.g.add(f"a:{label(point)}", "point", kernel, inputs, role="result", text=text,
-                           panel=PANEL, label=label(point))
-    return b.acc[point]
-
-
-
-
-
-
 def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
     """Lay off a^n_XY = ω²·l_XY (from X towards Y) from Y's image: the point n′ of ``link``.
 
@@ -102,7 +92,7 @@ def _crank(b: "LinkageConstruction", d: Crank) -> None:
         rx, ry = t[0] - a[0], t[1] - a[1]
         return (p[0] + k * (-w2 * rx - eps * ry), p[1] + k * (-w2 * ry + eps * rx))
 
-    img = _image(b, B, tip, (POLE, b.mech[A], b.mech[B]),
+    img = E.image(b, PANEL, b.acc, B, label(B), tip, (POLE, b.mech[A], b.mech[B]),
                  f"p′{label(B)} = a_{B}: ω{d.link}²·l_{A}{B}/μa ∥ {B}{A} + ε{d.link}·l_{A}{B}/μa ⟂ {A}{B}")
     E.vector(b, PANEL, POLE, img)
     if eps != 0.0:
@@ -120,7 +110,7 @@ def _crank(b: "LinkageConstruction", d: Crank) -> None:
 def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
     gx, gy = d.guide.direction
     k = d.acceleration / b.scales["a"]
-    img = _image(b, d.point, lambda ops, p: (p[0] + k * gx, p[1] + k * gy), (POLE,),
+    img = E.image(b, PANEL, b.acc, d.point, label(d.point), lambda ops, p: (p[0] + k * gx, p[1] + k * gy), (POLE,),
                  f"p′{label(d.point)} ∥ guide, = a/μa")
     E.vector(b, PANEL, POLE, img)
 
@@ -132,7 +122,7 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
     nj = _normal(b, j, C, Q)
     li = _tangential_line(b, ni, C, P)
     lj = _tangential_line(b, nj, C, Q)
-    img = _image(b, C, K.intersect_lines, (li, lj),
+    img = E.image(b, PANEL, b.acc, C, label(C), K.intersect_lines, (li, lj),
                  f"{label(C)} = (⟂{P}{C} through {_lbl(b, ni)}) ∩ (⟂{Q}{C} through {_lbl(b, nj)})")
     b.g.extend_line(li, img)
     b.g.extend_line(lj, img)
@@ -148,7 +138,7 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     lt = _tangential_line(b, n, C, P)
     lg = E.line(b, PANEL, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p′ draw ∥ the guide of {C}")
-    img = _image(b, C, K.intersect_lines, (lt, lg),
+    img = E.image(b, PANEL, b.acc, C, label(C), K.intersect_lines, (lt, lg),
                  f"{label(C)} = (⟂{P}{C} through {_lbl(b, n)}) ∩ (∥ guide through p′)")
     b.g.extend_line(lt, img)
     b.g.extend_line(lg, img)
@@ -179,7 +169,7 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
                 text=f"lay off {_lbl(b, b.acc[X])}{ktag} = 2ω{bar}·v_{xbar}{xblock}/μa (Coriolis)")
     E.vector(b, PANEL, b.acc[X], k, "construction")
     lr = E.line(b, PANEL, f"∥{Bp}{X}@{ktag}", K.line_parallel_to, (k, E.direction(b, Bp, X)), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})")
-    img = _image(b, xbar, K.intersect_lines, (lt, lr),
+    img = E.image(b, PANEL, b.acc, xbar, label(xbar), K.intersect_lines, (lt, lr),
                  f"{label(xbar)} = (⟂{Bp}{X} through {_lbl(b, n)}) ∩ (∥{Bp}{X} through {ktag})")
     b.g.extend_line(lt, img)
     b.g.extend_line(lr, img)
@@ -201,7 +191,7 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
                f"through p′ draw ∥ the guide of {C}")
     ls = E.line(b, PANEL, f"∥slot@{_lbl(b, b.acc[P])}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.acc[P],),
                f"through {_lbl(b, b.acc[P])} draw ∥ the slot")
-    img = _image(b, C, K.intersect_lines, (lg, ls),
+    img = E.image(b, PANEL, b.acc, C, label(C), K.intersect_lines, (lg, ls),
                  f"{label(C)} = (∥ guide through p′) ∩ (∥ slot through {_lbl(b, b.acc[P])})")
     b.g.extend_line(lg, img)
     b.g.extend_line(ls, img)
@@ -217,7 +207,7 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
         b.acc[pt.name] = b.acc[pt.base[0]]
         return
     U, V = pt.base
-    img = _image(b, pt.name, K.similar_point,
+    img = E.image(b, PANEL, b.acc, pt.name, label(pt.name), K.similar_point,
                  (b.mech[U], b.mech[V], b.mech[pt.name], b.acc[U], b.acc[V]),
                  f"{label(pt.name)}: △{label(U)}{label(V)}{label(pt.name)} ∼ △{U}{V}{pt.name} (acceleration image)")
     E.vector(b, PANEL, POLE, img)

@@ -197,17 +197,12 @@ def _working_profile(cam: DiscCam, pitch: np.ndarray, axis_dir: np.ndarray) -> n
     # flat face ⟂ the follower's motion (translating), or along the rocker through A_k (oscillating:
     # B_k is the foot of the perpendicular from O, axis_dir the face's normal): the envelope of the
     # face lines through B_k
-    nxt_p, nxt_d = np.roll(pitch, -1, axis=0), np.roll(axis_dir, -1, axis=0)
-    # face k: points X with (X − B_k)·d_k = 0; intersect faces k and k+1
-    det = axis_dir[:, 0] * nxt_d[:, 1] - axis_dir[:, 1] * nxt_d[:, 0]
-    rhs1 = (pitch * axis_dir).sum(axis=1)
-    rhs2 = (nxt_p * nxt_d).sum(axis=1)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        x = (rhs1 * nxt_d[:, 1] - axis_dir[:, 1] * rhs2) / det
-        y = (axis_dir[:, 0] * rhs2 - rhs1 * nxt_d[:, 0]) / det
-    pts = np.column_stack([x, y])
-    ok = np.isfinite(pts).all(axis=1)
-    return pts[ok]
+    # face k: the line through B_k ⟂ d_k; the envelope's corners are faces k and k+1 intersected
+    faces = (pitch[:, 0], pitch[:, 1], -axis_dir[:, 1], axis_dir[:, 0])
+    ops = K.ArrayOps(len(pitch))
+    ops.step = "face k ∩ face k+1"
+    x, y = K.intersect_lines(ops, faces, tuple(np.roll(c, -1) for c in faces))
+    return np.column_stack([x, y])[~ops.bad]  # parallel neighbours have no corner
 
 
 # ------------------------------------------------------------------ reading the drawing

@@ -20,6 +20,14 @@ def vector(b: "LinkageConstruction", panel: str, start: str, end: str, role: str
         b.g.add(name, kind, None, (start, end), role=role, text=f"{kind} {start}{end}", panel=panel)
 
 
+def image(b: "LinkageConstruction", panel: str, images: dict[str, str], point: str, lab: str, kernel: Any,
+          inputs: tuple, text: str) -> str:
+    """The image of a point in a polygon (its letter ``lab``: b, c′ …), found by ``kernel``."""
+    images[point] = b.g.add(f"{panel[0]}:{lab}", "point", kernel, inputs, role="result", text=text,
+                            panel=panel, label=lab)
+    return images[point]
+
+
 def line(b: "LinkageConstruction", panel: str, name: str, kernel: Any, inputs: tuple, text: str) -> str:
     """A construction line ("through b draw ⟂ BC"), drawn thin through the points it carries."""
     return b.g.add(f"{panel[0]}:{name}", "line", kernel, inputs, role="construction", text=text, panel=panel)

@@ -45,23 +45,13 @@ def _img_label(b: "LinkageConstruction", point: str) -> str:
     return b.g.steps[b.vel[point]].label or "p"
 
 
-def _image(b: "LinkageConstruction", point: str, kernel: Any, inputs: tuple, text: str) -> str:
-    b.vel[point] = b.g.add(f"v:{label(point)}", "point", kernel, inputs, role="result", text=text,
-                           panel=PANEL, label=label(point))
-    return b.vel[point]
-
-
-
-
-
-
 def _crank(b: "LinkageConstruction", d: Crank) -> None:
     k = d.omega * b.mu_l / b.scales["v"]  # drawing mm of pb per drawing mm of AB
 
     def tip(ops: Any, p: tuple, a: tuple, t: tuple) -> tuple:
         return (p[0] - k * (t[1] - a[1]), p[1] + k * (t[0] - a[0]))
 
-    img = _image(b, d.tip, tip, (POLE, b.mech[d.pivot], b.mech[d.tip]),
+    img = E.image(b, PANEL, b.vel, d.tip, label(d.tip), tip, (POLE, b.mech[d.pivot], b.mech[d.tip]),
                  f"p{label(d.tip)} ⟂ {d.pivot}{d.tip}, p{label(d.tip)} = ω{d.link}·l_{d.pivot}{d.tip}/μv")
     E.vector(b, PANEL, POLE, img)
     measure.omega(b, d.link, d.pivot, d.tip)
@@ -70,7 +60,7 @@ def _crank(b: "LinkageConstruction", d: Crank) -> None:
 def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
     gx, gy = d.guide.direction
     k = d.velocity / b.scales["v"]
-    img = _image(b, d.point, lambda ops, p: (p[0] + k * gx, p[1] + k * gy), (POLE,),
+    img = E.image(b, PANEL, b.vel, d.point, label(d.point), lambda ops, p: (p[0] + k * gx, p[1] + k * gy), (POLE,),
                  f"p{label(d.point)} ∥ guide, p{label(d.point)} = v/μv")
     E.vector(b, PANEL, POLE, img)
     measure.zero_rate(b, d.link)
@@ -81,7 +71,7 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
     lp, lq, lc = _img_label(b, P), _img_label(b, Q), label(C)
     li = E.line(b, PANEL, f"⟂{P}{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}")
     lj = E.line(b, PANEL, f"⟂{Q}{C}@{lq}", K.line_perpendicular_to, (b.vel[Q], E.direction(b, Q, C)), f"through {lq} draw ⟂ {Q}{C}")
-    img = _image(b, C, K.intersect_lines, (li, lj),
+    img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, (li, lj),
                  f"{lc} = (⟂{P}{C} through {lp}) ∩ (⟂{Q}{C} through {lq})")
     b.g.extend_line(li, img)
     b.g.extend_line(lj, img)
@@ -99,7 +89,7 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     li = E.line(b, PANEL, f"⟂{P}{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}")
     lg = E.line(b, PANEL, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p draw ∥ the guide of {C}")
-    img = _image(b, C, K.intersect_lines, (li, lg),
+    img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, (li, lg),
                  f"{lc} = (⟂{P}{C} through {lp}) ∩ (∥ guide through p)")
     b.g.extend_line(li, img)
     b.g.extend_line(lg, img)
@@ -117,7 +107,7 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     lp, lx, lc = _img_label(b, Bp), _img_label(b, X), label(xbar)
     lt = E.line(b, PANEL, f"⟂{Bp}{X}@{lp}", K.line_perpendicular_to, (b.vel[Bp], E.direction(b, Bp, X)), f"through {lp} draw ⟂ {Bp}{X}")
     lr = E.line(b, PANEL, f"∥{Bp}{X}@{lx}", K.line_parallel_to, (b.vel[X], E.direction(b, Bp, X)), f"through {lx} draw ∥ {Bp}{X}")
-    img = _image(b, xbar, K.intersect_lines, (lt, lr),
+    img = E.image(b, PANEL, b.vel, xbar, label(xbar), K.intersect_lines, (lt, lr),
                  f"{lc} = (⟂{Bp}{X} through {lp}) ∩ (∥{Bp}{X} through {lx})")
     b.g.extend_line(lt, img)
     b.g.extend_line(lr, img)
@@ -139,7 +129,7 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
                f"through p draw ∥ the guide of {C}")
     ls = E.line(b, PANEL, f"∥slot@{lp}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.vel[P],),
                f"through {lp} draw ∥ the slot")
-    img = _image(b, C, K.intersect_lines, (lg, ls),
+    img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, (lg, ls),
                  f"{lc} = (∥ guide through p) ∩ (∥ slot through {lp})")
     b.g.extend_line(lg, img)
     b.g.extend_line(ls, img)
@@ -158,7 +148,7 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
         b.vel[pt.name] = b.vel[pt.base[0]]
         return
     U, V = pt.base
-    img = _image(b, pt.name, K.similar_point,
+    img = E.image(b, PANEL, b.vel, pt.name, label(pt.name), K.similar_point,
                  (b.mech[U], b.mech[V], b.mech[pt.name], b.vel[U], b.vel[V]),
                  f"{label(pt.name)}: △{label(U)}{label(V)}{label(pt.name)} ∼ △{U}{V}{pt.name} (velocity image)")
     E.vector(b, PANEL, POLE, img)
