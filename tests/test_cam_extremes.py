@@ -118,21 +118,6 @@ def test_a_scene_that_wants_the_diagrams_alone_builds_no_profile(tmp_path):
     assert code == 0 and "Cam profile" not in (tmp_path / "d.svg").read_text(encoding="utf-8")
 
 
-def test_a_knife_edge_draws_no_roller_circles(tmp_path):
-    from graphmech.cam_check import analyse_cam
-    from graphmech.methods.cam_figures import cam_sheet
-    from graphmech.render.primitives import Circle
-    from graphmech.scene import load_scene
-
-    sc = load_scene(scene(tmp_path, contact="knife"))
-    an = analyse_cam(sc)
-    sheet = cam_sheet(sc.title, an.cam, an.drawn, an.scales, list(sc.show), (297.0, 210.0),
-                      roller_circles=sc.cam.roller_circles, marks=an.marks)
-    circles = [i for p in sheet.panels for i in p.items if isinstance(i, Circle)]
-    assert all(abs(c.r - 40 / (an.scales["l"] * 1000)) < 1e-9 or c.role != "construction" or c.r > 10 for c in circles)
-    assert not [c for c in circles if abs(c.r * an.scales["l"] - 0.010) < 1e-12]
-
-
 def test_pressure_angle_at_a_division_and_the_working_profile_radius(tmp_path):
     find = '["alpha@45", "alpha@100", "rho_min_actual", "rho_min_pitch"]'
     coarse = values(check_json(scene(tmp_path, step=5, find=find)))

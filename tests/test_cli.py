@@ -8,41 +8,14 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from tests.conftest import ROOT, SCENES, check_json, run_cli, values
+from tests.conftest import ROOT, SCENES, check_json, fourbar_scene, run_cli, values
 
-FOURBAR = """
-title = "Four-bar"
-show = ["mechanism", "velocity", "acceleration"]
-find = ["v_C", "omega_2"]
-[units]
-length = "mm"
-angle = "deg"
-omega = "rad/s"
-{scales}
-[frame]
-A = [0, 0]
-D = [120, 0]
-[driver]
-type = "crank"
-link = "1"
-pivot = "A"
-tip = "B"
-length = 60
-angle = 165
-omega = 10
-[[dyad]]
-type = "RRR"
-joints = ["B", "C", "D"]
-links = ["2", "3"]
-lengths = [{l2}, 90]
-branch = "left"
-"""
 STATED = "[scales]\nl_m_per_mm = 0.002\nv_m_s_per_mm = 0.01\na_m_s2_per_mm = 0.1"
 
 
 def scene(tmp_path, scales: str = STATED, l2: float = 120, name: str = "s.toml"):
     p = tmp_path / name
-    p.write_text(FOURBAR.format(scales=scales, l2=l2), encoding="utf-8")
+    p.write_text(fourbar_scene(scales=scales, b=l2, title="Four-bar"), encoding="utf-8")
     return p
 
 
@@ -106,7 +79,7 @@ def test_cannot_be_assembled_is_one_line_and_writes_nothing(tmp_path):
 ])
 def test_bad_input_names_file_and_key(tmp_path, bad, where):
     p = tmp_path / "bad.toml"
-    p.write_text(FOURBAR.format(scales=STATED, l2=120).replace("lengths = [120, 90]", bad), encoding="utf-8")
+    p.write_text(fourbar_scene(scales=STATED, title="Four-bar").replace("lengths = [120, 90]", bad), encoding="utf-8")
     code, out, err = run_cli("check", str(p))
     assert code == 2 and out == ""
     assert err.startswith(f"bad.toml: {where}:") and err.count("\n") == 1
@@ -114,14 +87,14 @@ def test_bad_input_names_file_and_key(tmp_path, bad, where):
 
 def test_unknown_find_name_suggests(tmp_path):
     p = tmp_path / "f.toml"
-    p.write_text(FOURBAR.format(scales=STATED, l2=120).replace('"omega_2"]', '"omega2"]'), encoding="utf-8")
+    p.write_text(fourbar_scene(scales=STATED, title="Four-bar").replace('"omega_2"]', '"omega2"]'), encoding="utf-8")
     code, _, err = run_cli("check", str(p))
     assert code == 2 and "find[1]" in err and "omega_2" in err
 
 
 def test_markup_in_the_title_is_escaped(tmp_path):
     p = tmp_path / "x.toml"
-    p.write_text(FOURBAR.format(scales=STATED, l2=120).replace(
+    p.write_text(fourbar_scene(scales=STATED, title="Four-bar").replace(
         'title = "Four-bar"', 'title = "</text><script>alert(1)</script>&\\u0001"'), encoding="utf-8")
     out = tmp_path / "x.svg"
     assert run_cli("render", str(p), "-o", str(out))[0] == 0
@@ -133,7 +106,7 @@ def test_markup_in_the_title_is_escaped(tmp_path):
 
 def test_only_what_is_asked_is_built(tmp_path):
     p = tmp_path / "v.toml"
-    p.write_text(FOURBAR.format(scales=STATED, l2=120).replace(
+    p.write_text(fourbar_scene(scales=STATED, title="Four-bar").replace(
         'show = ["mechanism", "velocity", "acceleration"]', 'show = ["mechanism"]'), encoding="utf-8")
     from graphmech.check import analyse
     from graphmech.scene import load_scene
@@ -234,7 +207,7 @@ def test_ambiguous_or_degenerate_segment_names_are_refused(tmp_path):
 
 def test_render_refuses_more_positions_than_fit_but_check_takes_them(tmp_path):
     p = tmp_path / "many.toml"
-    p.write_text(FOURBAR.format(scales=STATED, l2=120).replace("angle = 165", "angle = {start = 0, stop = 360, step = 30}"),
+    p.write_text(fourbar_scene(scales=STATED, title="Four-bar").replace("angle = 165", "angle = {start = 0, stop = 360, step = 30}"),
                  encoding="utf-8")
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "many.svg"))
     assert code == 2 and "12 positions do not fit" in err and err.count("\n") == 1

@@ -10,36 +10,12 @@ import math
 
 import pytest
 
-from tests.conftest import check_json, run_cli, values
+from tests.conftest import check_json, fourbar_scene, run_cli, values
 
-FOURBAR_NON_GRASHOF = """
-title = "non-Grashof four-bar AB 60, BC 30, CD 40, AD 80"
-show = ["mechanism", "velocity", "acceleration"]
-find = ["v_C", "omega_2", "omega_3", "a_C", "alpha_2", "alpha_3"]
-[units]
-length = "mm"
-angle = "deg"
-omega = "rad/s"
-[scales]
-l_m_per_mm = 0.001
-[frame]
-A = [0, 0]
-D = [80, 0]
-[driver]
-type = "crank"
-link = "1"
-pivot = "A"
-tip = "B"
-length = 60
-angle = {angle}
-omega = 10
-[[dyad]]
-type = "RRR"
-joints = ["B", "C", "D"]
-links = ["2", "3"]
-lengths = [30, 40]
-branch = "left"
-"""
+def non_grashof(angle: float) -> str:
+    """AB 60, BC 30, CD 40, AD 80: a double rocker whose crank stops where C lies on BD."""
+    return fourbar_scene(a=60, b=30, c=40, d=80, angle=repr(angle), scales="[scales]\nl_m_per_mm = 0.001",
+                         find='["v_C", "omega_2", "omega_3", "a_C", "alpha_2", "alpha_3"]')
 
 # B, C, D collinear (|BD| = BC + CD = 70 mm): cos φ = (60² + 80² − 70²)/(2·60·80)
 PHI_TOGGLE = math.degrees(math.acos((60 ** 2 + 80 ** 2 - 70 ** 2) / (2 * 60 * 80)))
@@ -52,7 +28,7 @@ def write(tmp_path, text: str, name: str = "scene.toml"):
 
 
 def test_four_bar_exactly_at_the_toggle_is_refused_naming_the_step(tmp_path):
-    p = write(tmp_path, FOURBAR_NON_GRASHOF.replace("{angle}", repr(PHI_TOGGLE)))
+    p = write(tmp_path, non_grashof(PHI_TOGGLE))
     code, out, err = run_cli("check", str(p))
     assert code == 2
     assert err.count("\n") == 1 and "Traceback" not in err
@@ -61,7 +37,7 @@ def test_four_bar_exactly_at_the_toggle_is_refused_naming_the_step(tmp_path):
 
 @pytest.mark.parametrize("offset_deg", [1e-2, 1e-4, 1e-6])
 def test_four_bar_next_to_the_toggle_is_accurate_or_warns(tmp_path, offset_deg):
-    p = write(tmp_path, FOURBAR_NON_GRASHOF.replace("{angle}", repr(PHI_TOGGLE - offset_deg)))
+    p = write(tmp_path, non_grashof(PHI_TOGGLE - offset_deg))
     doc = check_json(p)
     assert doc["warnings"], "an intersection this shallow must be reported"
     assert any("intersection" in w for w in doc["warnings"])
@@ -168,38 +144,16 @@ def test_crank_driven_slider_crank_dead_centres_are_normal_results(tmp_path):
     assert not any("ill-conditioned" in w for w in doc["warnings"])
 
 
-FOURBAR = """
-title = "four-bar"
-show = ["mechanism", "velocity", "acceleration"]
-find = ["v_C", "v_CB", "omega_2", "omega_3", "a_C", "a_CB_n", "a_CB_t", "alpha_2", "alpha_3"]
-[units]
-length = "mm"
-angle = "deg"
-omega = "rad/s"
-[frame]
-A = [0, 0]
-D = [{d}, 0]
-[driver]
-type = "crank"
-link = "1"
-pivot = "A"
-tip = "B"
-length = {a}
-angle = [30, 100, 165, 250]
-omega = {w}
-epsilon_rad_s2 = {e}
-[[dyad]]
-type = "RRR"
-joints = ["B", "C", "D"]
-links = ["2", "3"]
-lengths = [{b}, {c}]
-branch = "left"
-"""
+FIND9 = '["v_C", "v_CB", "omega_2", "omega_3", "a_C", "a_CB_n", "a_CB_t", "alpha_2", "alpha_3"]'
+
+
+def fourbar(a: float, b: float, c: float, d: float, w: float, e: float) -> str:
+    return fourbar_scene(a=a, b=b, c=c, d=d, omega=w, epsilon=e, angle="[30, 100, 165, 250]", find=FIND9)
 
 
 @pytest.mark.parametrize("w", [1e-6, 1.0, 1e6, -1e6])
 def test_angular_velocity_from_1e_minus_6_to_1e6(tmp_path, w):
-    doc = check_json(write(tmp_path, FOURBAR.format(a=60, b=120, c=90, d=120, w=w, e=0)))
+    doc = check_json(write(tmp_path, fourbar(60, 120, 90, 120, w, 0)))
     assert len(doc["quantities"]) == 36
     for row in doc["quantities"]:
         assert row["rel_error"] <= 1e-9, row
@@ -209,7 +163,7 @@ def test_angular_velocity_from_1e_minus_6_to_1e6(tmp_path, w):
 
 def test_link_lengths_differing_by_a_million(tmp_path):
     # a 1 µm crank driving 1 m links: a crank-rocker whose rocker barely moves
-    doc = check_json(write(tmp_path, FOURBAR.format(a=0.001, b=1000, c=1000, d=1000, w=10, e=5)))
+    doc = check_json(write(tmp_path, fourbar(0.001, 1000, 1000, 1000, 10, 5)))
     for row in doc["quantities"]:
         assert row["rel_error"] <= 1e-9, row
     rows = values(doc)
@@ -217,18 +171,18 @@ def test_link_lengths_differing_by_a_million(tmp_path):
 
 
 def test_angular_acceleration_of_the_crank_is_drawn(tmp_path):
-    doc = check_json(write(tmp_path, FOURBAR.format(a=60, b=120, c=90, d=120, w=10, e=-40)))
+    doc = check_json(write(tmp_path, fourbar(60, 120, 90, 120, 10, -40)))
     for row in doc["quantities"]:
         assert row["rel_error"] <= 1e-12, row
 
 
 def test_speeds_beyond_double_precision_are_one_line_errors(tmp_path):
-    code, out, err = run_cli("check", str(write(tmp_path, FOURBAR.format(a=60, b=120, c=90, d=120, w=1e155, e=0))))
+    code, out, err = run_cli("check", str(write(tmp_path, fourbar(60, 120, 90, 120, 1e155, 0))))
     assert code == 2 and err.count("\n") == 1 and "out of the range of double precision" in err
 
 
 def test_a_mechanism_far_from_the_origin_is_flagged_not_trusted(tmp_path):
-    text = FOURBAR.format(a=60, b=120, c=90, d=120, w=10, e=0).replace(
+    text = fourbar(60, 120, 90, 120, 10, 0).replace(
         "A = [0, 0]\nD = [120, 0]", "A = [1e11, 0]\nD = [100000000120, 0]")
     doc = check_json(write(tmp_path, text))
     assert any("from the origin" in w for w in doc["warnings"])
