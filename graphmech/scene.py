@@ -576,11 +576,8 @@ class _Reader:
         if not required and self.present(base) is None:
             self.quantity(base, kind, required=False)  # registers the known keys
             return default
-        given = self.quantity(base, kind, required=required)
-        if given is None:
-            return None
-        x = self.number(given.value, self.at(given.key), positive=positive)
-        return None if x is None else given.si(x)
+        v = self.value(base, kind, required=required, positive=positive)
+        return None if v is None else v.si
 
     def value(
         self, base: str, kind: str, *, required: bool = True, positive: bool = False
