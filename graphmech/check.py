@@ -19,6 +19,7 @@ from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
+from graphmech.render.style import subscript
 from graphmech.scales import PAPER, format_scale, round_scale
 
 SCALE_KEYS = {"mechanism": "l", "velocity": "v", "acceleration": "a"}
@@ -100,7 +101,7 @@ class Analysis:
 
 def position_text(build: LinkageConstruction, label: str) -> str:
     driver = build.linkage.driver
-    sub = driver.link.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+    sub = subscript(driver.link)
     return f"φ{sub} = {label}°" if isinstance(driver, Crank) else f"s{sub} = {label}"
 
 

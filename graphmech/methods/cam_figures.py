@@ -77,7 +77,6 @@ CROSS, LEADER = 1.8, 8.0
 #: A value evaluated this close before a joint is its left-hand limit, rad.
 LEFT_LIMIT = 1e-9
 
-SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
 def _unit(v: Any) -> tuple[float, float]:

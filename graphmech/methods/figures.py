@@ -15,11 +15,11 @@ from typing import Any, Sequence
 from graphmech.mechanisms.linkage import Crank, Linkage, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
 from graphmech.render.primitives import (ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Primitive,
                                          Segment, Sheet, Slider)
+from graphmech.render.style import subscript
 from graphmech.scales import format_scale
 
 TITLES = {"mechanism": "Kinematic diagram", "velocity": "Velocity polygon", "acceleration": "Acceleration polygon"}
 SCALE_OF = {"mechanism": "l", "velocity": "v", "acceleration": "a"}
-SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 #: How far a construction line runs past the outermost point it carries, mm.
 LINE_OVERRUN = 6.0
@@ -27,7 +27,7 @@ LINE_OVERRUN = 6.0
 
 def display(label: str) -> str:
     """Image letters as the book prints them: c2' → c₂′, p' → p′."""
-    return label.translate(SUBSCRIPT).replace("'", "′")
+    return subscript(label).replace("'", "′")
 
 
 def _pt(v: Any) -> tuple[float, float]:
@@ -102,7 +102,7 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
             arc = ArcArrow(a, r, mid_angle - sweep / 2, sweep, "given")
             items.append(arc)
             mid = arc.points(2)[1]
-            numbers.append(Label("ω" + d.link.translate(SUBSCRIPT), mid, (), 3.2))
+            numbers.append(Label("ω" + subscript(d.link), mid, (), 3.2))
         fixed.append(d.pivot)
         hinges.append(d.tip)
     else:
