@@ -1,0 +1,205 @@
+"""A machine for the flywheel problem: a linkage (or none) with masses, loads and a driver.
+
+Everything is SI (m, kg, kg·m², N, N·m, rad, rad/s) and immutable.
+
+Conventions
+-----------
+The reduced (equivalent) link is the crank. Its angle φ is measured from *position 1* in the
+sense the crank turns (``φ = 0`` at position 1, whatever the crank's absolute angle there):
+positions ``k = 1 … N`` lie at ``φ = (k − 1)·Φ/N`` where Φ is the machine's cycle (2π for a
+one-revolution cycle, π for an engine whose torque repeats every half turn).
+
+Moments reduced to the crank are signed by the *power* they deliver: positive drives the crank
+(acts in its sense of rotation), negative resists it. So ``Mп = Σ P/ω1`` with ``ω1 = |ω1|``,
+and a CW crank needs no change of sign in any table.
+
+A slider load (an indicator diagram) acts along its slider's guide. Its displacement ``s`` is
+measured along the guide's direction from the slider's backward extreme (``s = 0`` at the dead
+centre nearest the guide's tail, ``s = H`` at the other), so ``s/H`` runs 0 … 1 on every stroke.
+``during`` says on which stroke the load acts (the slider moving forward = along the guide's
+direction, backward, or both); ``sense`` the direction of the force along the guide (+1 along
+the guide's direction, −1 against it).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Literal, Union
+
+from graphmech.mechanisms.linkage import Linkage
+
+TWO_PI = 2.0 * math.pi
+
+
+@dataclass(frozen=True)
+class Table:
+    """A piecewise-linear function y(x) through the points (x_i, y_i).
+
+    ``x`` is non-decreasing; a repeated x is a step (the value jumps there). Outside the table
+    the end values hold. Periodic use (a moment over the cycle) is the caller's business: it
+    passes ``x mod Φ``.
+    """
+
+    x: tuple[float, ...]
+    y: tuple[float, ...]
+
+    def breaks(self) -> tuple[float, ...]:
+        """The x where the function has a kink or a step (interior points), sorted, unique."""
+        return tuple(sorted(set(self.x[1:-1])))
+
+
+@dataclass(frozen=True)
+class Mass:
+    """The inertia of one moving link.
+
+    Parameters
+    ----------
+    link : str
+        The link's id ("2").
+    point : str
+        Its centre of mass S, a named point of the linkage (for a crank balanced about its
+        pivot, the pivot itself: then only ``inertia`` counts).
+    mass : float
+        m, kg (≥ 0).
+    inertia : float
+        J_S about S, kg·m² (≥ 0).
+    """
+
+    link: str
+    point: str
+    mass: float
+    inertia: float = 0.0
+
+
+@dataclass(frozen=True)
+class SliderLoad:
+    """A force on a slider along its guide, given as an indicator diagram F(s/H).
+
+    Parameters
+    ----------
+    point : str
+        The slider's point (its path is the guide line).
+    axis : float
+        The guide's direction, rad from +x CCW; ``s`` grows along it.
+    sense : int
+        +1: the force acts along ``axis``; −1: against it.
+    during : "forward", "backward" or "both"
+        The stroke on which the force acts (slider moving along ``axis``, against it, either).
+    table : Table
+        Force magnitude (N, ≥ 0) against s/H (0 … 1).
+    """
+
+    point: str
+    axis: float
+    sense: int
+    during: Literal["forward", "backward", "both"]
+    table: Table
+    kind: Literal["slider"] = "slider"
+
+
+@dataclass(frozen=True)
+class LinkMoment:
+    """A moment on a moving link, against the crank angle: M(φ) from a table, N·m, CCW positive.
+
+    ``table.x`` is φ (rad from position 1, 0 … Φ); the moment's power is M·ω_link.
+    """
+
+    link: str
+    table: Table
+    kind: Literal["moment"] = "moment"
+
+
+@dataclass(frozen=True)
+class CrankMoment:
+    """A moment applied to the crank itself, given reduced: M(φ) from a table, N·m.
+
+    Signed by power (positive drives). ``table.x`` is φ (rad from position 1, 0 … Φ). An
+    engine's torque curve, or a resisting moment with a step.
+    """
+
+    table: Table
+    kind: Literal["crank"] = "crank"
+
+
+Load = Union[SliderLoad, LinkMoment, CrankMoment]
+
+
+@dataclass(frozen=True)
+class Motor:
+    """The driving moment of a motor whose working characteristic is a straight line:
+    ``M(ω) = M0·(ω_s − ω)/(ω_s − ω_m)``, M0 being the balancing constant moment, so that the
+    motor delivers M0 at the mean speed ω_m and nothing at its synchronous speed ω_s.
+
+    Give either ``synchronous`` (ω_s, rad/s, > ω_m) or ``stiffness`` — the ratio
+    ``[M0/(ω_s − ω_m)]/(J_F + max Jп)`` divided by ω_m, a measure of how stiff the equation of
+    motion is (1e5: the motor's own time constant is 1e-5 of a radian of crank travel).
+    """
+
+    synchronous: float | None = None
+    stiffness: float | None = None
+
+
+@dataclass(frozen=True)
+class Machine:
+    """What the flywheel problem needs to know about a machine.
+
+    Parameters
+    ----------
+    linkage : Linkage or None
+        The mechanism whose crank is the reduced link (None: a machine given by its reduced
+        inertia and moments only, such as an engine's torque curve).
+    start : float
+        The crank's absolute angle at position 1, rad (ignored without a linkage).
+    cycle : float
+        Φ, the crank angle of one cycle, rad (2π; π for a torque that repeats every half turn).
+    omega_m : float
+        The mean angular velocity of the crank, rad/s (> 0).
+    delta : float
+        The allowed coefficient of speed fluctuation δ = (ω_max − ω_min)/ω_m (0 < δ < 2).
+    masses : tuple of Mass
+        The moving links' inertias.
+    loads : tuple of Load
+        Forces and moments acting on the machine (the balancing constant moment is not one).
+    inertia : float
+        Constant reduced inertia of what turns rigidly with the crank and is not a Mass
+        (rotor, gears …), kg·m²; with no linkage, the machine's whole Jп.
+    balance : "driving" or "resisting"
+        Which moment is constant and found from the balance of work over a cycle: a constant
+        driving moment (a motor: compressor, shaper) or a constant resistance (an engine driving
+        a pump).
+    motor : Motor or None
+        For the true motion only: the driving moment depends on speed (``balance`` must be
+        "driving"); None: the constant balancing moment.
+    """
+
+    linkage: Linkage | None
+    start: float
+    cycle: float
+    omega_m: float
+    delta: float
+    masses: tuple[Mass, ...] = ()
+    loads: tuple[Load, ...] = ()
+    inertia: float = 0.0
+    balance: Literal["driving", "resisting"] = "driving"
+    motor: Motor | None = None
+
+    def __hash__(self) -> int:  # holds a Linkage (a dict inside): identity is enough
+        return id(self)
+
+    @property
+    def sense(self) -> int:
+        """+1 if the crank turns CCW, −1 if CW (+1 without a linkage)."""
+        if self.linkage is None:
+            return 1
+        return 1 if self.linkage.driver.omega >= 0 else -1
+
+    def crank_angle(self, phi: float) -> float:
+        """The crank's absolute angle (rad) at φ from position 1."""
+        return self.start + self.sense * phi
+
+    def positions(self, n: int) -> tuple[float, ...]:
+        """φ of positions 1 … n, equally spaced over one cycle (rad from position 1)."""
+        return tuple(self.cycle * k / n for k in range(n))
+
+
+__all__ = ["Table", "Mass", "SliderLoad", "LinkMoment", "CrankMoment", "Load", "Motor", "Machine", "TWO_PI"]
