@@ -1,0 +1,399 @@
+"""Checking a flywheel scene: reduce, integrate, draw the Wittenbauer diagram, prove it by motion.
+
+The counterpart of :mod:`graphmech.check` for the flywheel problem. The course project's steps
+are carried out as graphical constructions at the scene's N positions (Jп and Mп from the
+velocity polygons, Aп by graphical integration, the balancing moment by graphical
+differentiation, ΔT, the Wittenbauer diagram and its tangents, or the energy indicator) and
+each result is set against its exact value: Jп and Mп agree to rounding; the integrals and
+the flywheel differ by the discretisation error of N positions, which the table states and
+``graphmech bench`` reports against N and run time. When the scene asks for it, the machine's
+equation of motion is integrated with the flywheel just designed, and the achieved speed
+fluctuation is compared with the energy equation's and with the required δ.
+
+Only what the scene asks for is computed: a scene that wants J_F by the energy indicator does
+not draw the Wittenbauer diagram, and none integrates the motion unless asked.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from graphmech.check import Row, Verdict, close_names, measured_entries
+from graphmech.errors import DegenerateConstruction, SceneError
+from graphmech.mechanisms.machine import Machine
+from graphmech.tolerances import EPS
+
+#: Quantities a flywheel scene can ask for: name → (unit, what it needs).
+#: "design": the graphical construction; "wittenbauer"/"indicator": that method's diagram;
+#: "motion": the equation of motion; "braking": the run-down.
+QUANTITIES: dict[str, tuple[str, str]] = {
+    "Jp": ("kg·m²", "reduction"), "Mp": ("N·m", "reduction"), "DeltaT": ("J", "design"),
+    "A_p": ("J", "design"),
+    "M_b": ("N·m", "design"), "Md": ("N·m", "design"), "Mr": ("N·m", "design"),
+    "DeltaT_max": ("J", "design"), "DeltaT_min": ("J", "design"),
+    "phi_DeltaT_max": ("deg", "design"), "phi_DeltaT_min": ("deg", "design"),
+    "k": ("J", "wittenbauer"), "l": ("J", "wittenbauer"),
+    "psi_max": ("deg", "wittenbauer"), "psi_min": ("deg", "wittenbauer"),
+    "J_F": ("kg·m²", "flywheel"),
+    "J_F_wittenbauer": ("kg·m²", "wittenbauer"), "J_F_indicator": ("kg·m²", "indicator"),
+    "DeltaW_max": ("J", "indicator"), "J_mean": ("kg·m²", "indicator"),
+    "omega_max": ("rad/s", "design"), "omega_min": ("rad/s", "design"),
+    "n_max": ("rpm", "design"), "n_min": ("rpm", "design"),
+    "omega_max_true": ("rad/s", "motion"), "omega_min_true": ("rad/s", "motion"),
+    "phi_omega_max": ("deg", "motion"), "phi_omega_min": ("deg", "motion"),
+    "delta_achieved": ("", "motion"), "omega_mean_time": ("rad/s", "motion"),
+    "omega_s": ("rad/s", "motion"),
+    "t_stop": ("s", "braking"),
+}
+#: Per-position quantities (named ``Jp@3``).
+PER_POSITION = ("Jp", "Mp", "DeltaT", "A_p")
+DEFAULT_FIND = ("M_b", "DeltaW_max", "J_F")
+#: Angle between the two tangents below which a drawn pair cannot be told apart, degrees.
+TANGENTS_APART_DEG = 0.1
+
+
+@dataclass
+class FlywheelAnalysis:
+    scene: Any
+    machine: Machine
+    phi: np.ndarray
+    labels: tuple[str, ...]
+    reduction: Any = None
+    design: Any = None
+    exact: Any = None
+    motion: Any = None  # TrueMotion (solve_ivp)
+    motion_ref: Any = None  # the energy equation's motion with the same flywheel (or a tight reference)
+    rows: list[Row] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    scales: dict[str, float] = field(default_factory=dict)
+    stated: set[str] = field(default_factory=set)
+    extra_measured: tuple[tuple[str, float], ...] = ()
+    braking: Any = None
+
+    def scale_notes(self) -> list[str]:
+        from graphmech.scales import format_scale
+
+        out = []
+        for k, v in self.scales.items():
+            try:
+                out.append(format_scale(k, v) + ("" if k in self.stated else " (chosen)"))
+            except KeyError:
+                out.append(f"μ{k} = {v:g}")
+        return out
+
+
+def split(name: str) -> tuple[str, str | None]:
+    base, sep, at = name.partition("@")
+    return base, (at if sep else None)
+
+
+def _needs(scene: Any, names: list[str]) -> set[str]:
+    fw = scene.flywheel
+    needs: set[str] = set()
+    for n in names:
+        base, _ = split(n)
+        what = QUANTITIES[base][1]
+        needs.add("flywheel:" + fw.method if what == "flywheel" else what)
+    for panel in scene.show:
+        if panel in ("wittenbauer", "indicator"):
+            needs.add(panel)
+        elif panel in ("moment", "work", "energy", "inertia"):
+            needs.add("design")
+    if fw.true_motion is not None:
+        needs.add("motion")
+    if "flywheel:wittenbauer" in needs:
+        needs.add("wittenbauer")
+    if "flywheel:indicator" in needs:
+        needs.add("indicator")
+    if "motion" in needs:
+        needs.add(fw.method)
+    if needs & {"wittenbauer", "indicator", "motion"}:
+        needs.add("design")
+    if "design" in needs:
+        needs.add("reduction")
+    return needs
+
+
+def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
+    """The quantity names the scene asks for, validated (problems raised as one SceneError)."""
+    fw = scene.flywheel
+    names = list(scene.find) or ([] if fw.braking is not None and not fw.machine.loads else list(DEFAULT_FIND))
+    if fw.braking is not None and "t_stop" not in names:
+        names.append("t_stop")
+    problems = []
+    n = fw.positions
+    for key, name in [(f"find[{i}]", x) for i, x in enumerate(scene.find)] + \
+            [(k, x) for k, x, _ in measured_entries(scene, extra) if x != "kl"]:
+        base, at = split(name)
+        if base not in QUANTITIES:
+            problems.append((key, f"unknown flywheel quantity {base!r}{close_names(base, QUANTITIES)}"))
+        elif base in PER_POSITION and (at is None or not at.isdigit() or not 1 <= int(at) <= n):
+            problems.append((key, f"{base} is per position: write {base}@1 … {base}@{n}"))
+        elif base not in PER_POSITION and at is not None:
+            problems.append((key, f"{base} is one value for the cycle: write it without @{at}"))
+        elif QUANTITIES[base][1] == "braking" and fw.braking is None:
+            problems.append((key, "t_stop needs a [flywheel.braking] table"))
+        elif QUANTITIES[base][1] == "motion" and fw.machine.loads == ():
+            problems.append((key, f"{base} needs loads to move the machine"))
+    if problems:
+        raise SceneError(problems, scene.source)
+    return names
+
+
+def analyse_flywheel(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> FlywheelAnalysis:
+    """Carry out what the flywheel scene asks for and build its check table."""
+    try:
+        with np.errstate(all="ignore"):
+            return _analyse(scene, extra_measured)
+    except (OverflowError, ZeroDivisionError, FloatingPointError) as e:
+        raise DegenerateConstruction("the flywheel construction", f"numbers out of range ({e})") from None
+
+
+def _analyse(scene: Any, extra: tuple[tuple[str, float], ...]) -> FlywheelAnalysis:
+    fw = scene.flywheel
+    machine: Machine = fw.machine
+    names = requested(scene, extra)
+    asked = names + [x for _, x, _ in measured_entries(scene, extra)]
+    needs = _needs(scene, asked)
+    if any(x == "kl" for x in asked):
+        needs |= {"wittenbauer", "design", "reduction"}
+    phi = np.asarray(machine.positions(fw.positions), dtype=float)
+    an = FlywheelAnalysis(scene, machine, phi, tuple(str(k + 1) for k in range(fw.positions)))
+    an.extra_measured = tuple(extra)
+    if fw.braking is not None:
+        _braking(an)
+    if "reduction" in needs:
+        _reduce(an)
+    if "design" in needs:
+        _design(an, needs)
+    if "motion" in needs:
+        _motion(an)
+    for name in names:
+        an.rows.append(_row(an, name))
+    return an
+
+
+# ---------------------------------------------------------------------------- the steps
+
+
+def _exact(an: FlywheelAnalysis) -> Any:
+    if an.exact is None:
+        from graphmech.exact.flywheel import ExactMachine
+
+        try:
+            an.exact = ExactMachine(an.machine)
+        except ValueError as e:
+            raise SceneError([("flywheel", str(e))], an.scene.source) from None
+    return an.exact
+
+
+def _reduce(an: FlywheelAnalysis) -> None:
+    from graphmech.methods.reduction import reduce_to_crank
+
+    scene, machine = an.scene, an.machine
+    scales = {}
+    if machine.linkage is not None:
+        from graphmech.check import choose_scales
+
+        pos = np.array([machine.crank_angle(float(f)) for f in an.phi[:1]])
+        lin, stated = choose_scales(_with_show(scene), machine.linkage, pos)
+        scales = {"l": lin["l"], "v": lin["v"]}
+        an.stated |= {k for k in ("l", "v") if k in stated}
+    an.reduction = reduce_to_crank(machine, an.phi, scales)
+    bad = np.flatnonzero(~an.reduction.valid)
+    if bad.size:
+        k = int(bad[0])
+        raise DegenerateConstruction("the velocity polygon", an.reduction.reasons[k] or "impossible",
+                                     f"position {k + 1} (φ = {math.degrees(an.phi[k]):.6g}°)")
+
+
+def _with_show(scene: Any) -> Any:
+    """The linkage scales are chosen as for a sheet showing the mechanism and its velocity polygon."""
+    import dataclasses
+
+    return dataclasses.replace(scene, show=("mechanism", "velocity"))
+
+
+def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
+    from graphmech.methods.flywheel import design_flywheel
+
+    fw, machine = an.scene.flywheel, an.machine
+    scales = {k: float(v) for k, v in an.scene.scales.items() if k in ("phi", "M", "J", "T")}
+    an.stated |= set(scales)
+    want = tuple(x for x in ("wittenbauer", "indicator") if x in needs)
+    r = an.reduction
+    an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
+                                delta=machine.delta, balance=machine.balance, form=fw.tangents,
+                                H_mm=fw.pole_distance, scales=scales, need=want)
+    an.scales.update(getattr(an.design, "scales", {}))
+    if r is not None and machine.linkage is not None:
+        pass
+    if "wittenbauer" in want:
+        apart = float(getattr(an.design.wittenbauer, "angle_between_deg", 90.0))
+        if apart < TANGENTS_APART_DEG:
+            an.warnings.append(
+                f"the tangents ψmax and ψmin differ by {apart:.2g}° (δ = {machine.delta:g}): a drawn pair cannot "
+                "be told apart, and their intersection is ill-conditioned; k and l were found analytically "
+                "(the extremes of ΔT − ω²·Jп/2 over the positions), not by intersecting drawn lines")
+
+
+def _design_J_F(an: FlywheelAnalysis) -> float:
+    d = an.design
+    if an.scene.flywheel.method == "wittenbauer":
+        return float(d.J_F)
+    return float(d.J_F_indicator)
+
+
+def _motion(an: FlywheelAnalysis) -> None:
+    from graphmech.exact.true_motion import true_motion
+
+    spec = an.scene.flywheel.true_motion
+    solver = spec.solver if spec is not None else "Radau"
+    rtol = spec.rtol if spec is not None else 1e-10
+    ex = _exact(an)
+    J_F = _design_J_F(an)
+    try:
+        an.motion = true_motion(an.machine, ex, J_F, solver=solver, rtol=rtol)
+        if an.machine.motor is None:
+            an.motion_ref = ex.energy_motion(J_F)
+        else:  # no closed form: a tighter run with another stiff solver is the reference
+            other = "BDF" if solver == "Radau" else "Radau"
+            an.motion_ref = true_motion(an.machine, ex, J_F, solver=other, rtol=max(rtol * 1e-2, 1e-13))
+    except ValueError as e:
+        raise DegenerateConstruction("the true motion", str(e)) from None
+    d = an.machine.delta
+    got = an.motion.delta
+    if got > d * (1 + 1e-3):
+        an.warnings.append(
+            f"the flywheel designed from {an.scene.flywheel.positions} positions (J_F = {J_F:.6g} kg·m²) gives "
+            f"δ = {got:.6g} in the true motion, above the required {d:g} ({(got / d - 1) * 100:+.2f} %): "
+            "use more positions")
+
+
+def _braking(an: FlywheelAnalysis) -> None:
+    from graphmech.exact.true_motion import braking_time
+
+    fw = an.scene.flywheel
+    an.braking = braking_time(an.machine.inertia, an.machine.omega_m, fw.braking.moment)
+
+
+# ---------------------------------------------------------------------------- rows
+
+
+def _rel(g: float, e: float, scale: float) -> float:
+    return abs(g - e) / max(abs(e), abs(scale) * 1e-3, 1e-300)
+
+
+def _row(an: FlywheelAnalysis, name: str) -> Row:
+    base, at = split(name)
+    unit = QUANTITIES[base][0]
+    g, e, drawn, scale, ill = _values(an, base, None if at is None else int(at) - 1)
+    return Row(name, unit, drawn, scale, g, e, _rel(g, e, scale), ill)
+
+
+def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, float, float | None, float, bool]:
+    """(graphical, exact, drawn mm or None, μ, ill-conditioned) of one quantity."""
+    d, m = an.design, an.machine
+    wm, delta = m.omega_m, m.delta
+    if base == "t_stop":
+        b = an.braking
+        return b.numeric, b.exact, None, 1.0, False
+    if base in ("Jp", "Mp"):
+        ex = _exact(an)
+        phi = an.phi[i : i + 1]
+        if base == "Jp":
+            return float(an.reduction.J[i]), float(ex.inertia(phi)[0]), None, an.scales.get("v", 1.0), False
+        return float(an.reduction.M[i]), float(ex.load_moment(phi)[0]), None, an.scales.get("v", 1.0), False
+    ex = _exact(an)
+    mu_T = float(d.scales["T"]) if d is not None else 1.0
+    if base in ("DeltaT", "A_p"):
+        g = float(d.energy_mm[i] if base == "DeltaT" else d.work_mm[i]) * mu_T
+        e = float(ex.energy(an.phi[i : i + 1])[0])
+        if base == "A_p":
+            e -= ex.balancing_moment() * float(an.phi[i])
+        return g, e, g / mu_T, mu_T, False
+    if base in ("M_b", "Md", "Mr"):
+        mu_M = float(d.scales["M"])
+        return float(d.balancing_moment), float(ex.balancing_moment()), float(d.balancing_moment) / mu_M, mu_M, False
+    if base in ("DeltaT_max", "DeltaT_min", "phi_DeltaT_max", "phi_DeltaT_min"):
+        x = ex.extremes()
+        top = base.endswith("max")
+        kk = int(d.energy_max_index if top else d.energy_min_index)
+        if base.startswith("phi"):
+            return math.degrees(float(an.phi[kk])), math.degrees(x.phi_max if top else x.phi_min), None, 1.0, False
+        g = float(d.energy_mm[kk]) * mu_T
+        return g, float(x.max if top else x.min), g / mu_T, mu_T, False
+    if base in ("k", "l", "psi_max", "psi_min", "J_F_wittenbauer") or (base == "J_F" and an.scene.flywheel.method == "wittenbauer"):
+        w = d.wittenbauer
+        t = ex.wittenbauer(an.scene.flywheel.tangents)
+        ill = float(getattr(w, "angle_between_deg", 90.0)) < TANGENTS_APART_DEG
+        if base in ("k", "l"):
+            mm = float(w.k_mm if base == "k" else w.l_mm)
+            return mm * mu_T, float(t.k if base == "k" else t.l), mm, mu_T, ill
+        if base in ("psi_max", "psi_min"):
+            tg = float(w.tan_psi_max if base == "psi_max" else w.tan_psi_min)
+            return math.degrees(math.atan(tg)), math.degrees(float(t.psi_max if base == "psi_max" else t.psi_min)), \
+                None, 1.0, False
+        return float(d.J_F), float(t.J_F), float(w.kl_mm), mu_T / (wm * wm * delta), False
+    if base in ("J_F", "J_F_indicator", "DeltaW_max", "J_mean"):
+        ind = ex.indicator()
+        if base == "J_mean":
+            return float(d.J_mean), float(ind.J_mean), None, 1.0, False
+        if base == "DeltaW_max":
+            return float(d.DeltaW_max), float(ind.DeltaW_max), float(d.DeltaW_max) / mu_T, mu_T, False
+        return float(d.J_F_indicator), float(ind.J_F), None, mu_T / (wm * wm * delta), False
+    if base in ("omega_max", "omega_min", "n_max", "n_min"):
+        hi = base.endswith("max")
+        if an.scene.flywheel.tangents == "book":
+            w = wm * math.sqrt(1 + delta if hi else 1 - delta)
+        else:
+            w = wm * (1 + delta / 2 if hi else 1 - delta / 2)
+        if base.startswith("n"):
+            w *= 30.0 / math.pi
+        return w, w, None, 1.0, False
+    mo, ref = an.motion, an.motion_ref
+    if base in ("omega_max_true", "omega_min_true"):
+        hi = base == "omega_max_true"
+        return float(mo.omega_max if hi else mo.omega_min), float(ref.omega_max if hi else ref.omega_min), None, 1.0, False
+    if base in ("phi_omega_max", "phi_omega_min"):
+        hi = base == "phi_omega_max"
+        return math.degrees(mo.phi_max if hi else mo.phi_min), math.degrees(ref.phi_max if hi else ref.phi_min), \
+            None, 1.0, False
+    if base == "delta_achieved":
+        return float(mo.delta), float(ref.delta), None, 1.0, False
+    if base == "omega_mean_time":
+        return float(mo.omega_time_mean), float(getattr(ref, "omega_time_mean", mo.omega_time_mean)), None, 1.0, False
+    if base == "omega_s":
+        return float(mo.omega_s), float(getattr(ref, "omega_s", mo.omega_s)), None, 1.0, False
+    raise KeyError(base)  # requested() let through a name with no row: a bug of ours
+
+
+# ---------------------------------------------------------------------------- verdicts
+
+
+def judge_flywheel(an: FlywheelAnalysis, precision_mm: float | None = None) -> list[Verdict]:
+    """Hand values against what a perfect construction at the scene's N positions gives.
+
+    A student's J_F drawn from 12 positions is judged against graphmech's J_F from the same 12
+    positions (not the continuous value, which no 12-point drawing reaches); the tolerance is
+    the drawing precision times that quantity's μ. ``kl`` is the drawn segment in mm.
+    """
+    prec = precision_mm if precision_mm is not None else an.scene.precision_mm
+    out = []
+    for _key, name, value in measured_entries(an.scene, an.extra_measured):
+        if name == "kl":
+            kl = float(an.design.wittenbauer.kl_mm)
+            out.append(Verdict(name, value, kl, prec, abs(value - kl) <= prec, "mm"))
+            continue
+        base, at = split(name)
+        g, _e, drawn, scale, _ = _values(an, base, None if at is None else int(at) - 1)
+        unit = QUANTITIES[base][0]
+        tol = prec * abs(scale) if drawn is not None else max(abs(g) * 1e-3, EPS)
+        out.append(Verdict(name, value, g, tol, abs(value - g) <= tol + 1e-12 * abs(g), unit))
+    return out
+
+
+__all__ = ["FlywheelAnalysis", "analyse_flywheel", "judge_flywheel", "QUANTITIES", "requested"]
