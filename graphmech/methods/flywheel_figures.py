@@ -18,8 +18,8 @@ energy — ΔT(φ) = Aп + A_b (at μT)
 inertia — Jп(φ), drawn as the Russian book does: Jп horizontal, φ downwards
     at μJ and its own μφ′ (the φ axis about 40 mm long).
 wittenbauer — the Wittenbauer diagram ΔT(Jп) (at μJ, μT)
-    the numbered points and the closed curve through them, the two tangents at ψmax and ψmin
-    (bold) with their angles marked by arcs, k and l on the ΔT axis and the segment kl
+    the numbered points (dots) and the closed curve through them (thin), the two tangents at ψmax
+    and ψmin (bold) with their angles marked by arcs, k and l on the ΔT axis and the segment kl
     dimensioned. Shown together with ``energy`` and/or ``inertia``, these are drawn in the same
     panel on the continuations of its axes — ΔT(φ) to the left (its φ axis continued is the Jп
     axis), Jп(φ) below (its φ axis continued is the ΔT axis) — and the points are carried across
@@ -43,8 +43,8 @@ import numpy as np
 
 from graphmech.methods.flywheel import FlywheelDesign
 from graphmech.render.labels import text_box_size
-from graphmech.render.primitives import (XY, ArcArrow, Arrow, Circle, Label, Panel, Polyline, Primitive, Segment,
-                                         Sheet)
+from graphmech.render.primitives import (XY, ArcArrow, Arrow, Circle, Label, Panel, Polyline, Primitive, Role,
+                                         Segment, Sheet)
 from graphmech.render.style import DEFAULT
 from graphmech.scales import PAPER, format_scale, round_scale
 
@@ -190,7 +190,7 @@ def _ordinate_positions(n: int, every: int) -> range:
     return range(0, n + 1) if n <= MOST_ORDINATES else range(0, n + 1, every)
 
 
-def _diagram(x: np.ndarray, y: np.ndarray, every: int, name: str, *, curve_role: str = "result",
+def _diagram(x: np.ndarray, y: np.ndarray, every: int, name: str, *, curve_role: Role = "result",
              ordinates: bool = True) -> tuple[list[Primitive], list[Label]]:
     """Axes φ →, ``name`` ↑ through the origin, the ordinates and the curve through (x, y)."""
     lo, hi = min(0.0, float(y.min())), max(0.0, float(y.max()))
@@ -234,7 +234,7 @@ def moment_items(design: FlywheelDesign, every: int | None = None) -> list[Primi
     step = np.empty((2 * n, 2))
     step[0::2, 0], step[1::2, 0] = x[:-1], x[1:]
     step[0::2, 1] = step[1::2, 1] = mean
-    construction: list[Primitive] = [Polyline(tuple(map(tuple, step.tolist())), "construction")]
+    construction: list[Primitive] = [Polyline(_pts(step[:, 0], step[:, 1]), "construction")]
     for i in range(0, n, count_every(n, MOST_RAYS)):
         m = float(mean[i])
         construction += [Segment((float(x[i]), m), (0.0, m), "construction", dashed=True),
@@ -281,7 +281,7 @@ def energy_items(design: FlywheelDesign, every: int | None = None) -> list[Primi
     for i, text in ((design.energy_max_index, "ΔTₘₐₓ"), (design.energy_min_index, "ΔTₘᵢₙ")):
         p = (float(x[i]), float(t[i]))
         marks.append(Circle(p, 2 * DOT, "result"))
-        labels.insert(3, Label(text, p, ((0.0, -1.0) if text.endswith("ₓ") else (0.0, 1.0),), 3.0, italic=False))
+        labels.append(Label(text, p, ((0.0, -1.0) if text.endswith("ₓ") else (0.0, 1.0),), 3.0, italic=False))
     return items + marks + labels
 
 
@@ -362,7 +362,7 @@ def wittenbauer_items(design: FlywheelDesign) -> list[Primitive]:
     # the points and the closed curve through them in the order of the positions
     if n <= MOST_DOTS:
         items += [Circle(p, DOT, "result") for p in _pts(x, y)]
-    items.append(Polyline(_pts(x, y), "given", closed=True))
+    items.append(Polyline(_pts(x, y), "label", closed=True))  # thinner than the tangents
     # the tangents at ψmax (from above) and ψmin (from below), k and l on the ΔT axis
     for c, t, tag, sub in ((w.k_mm, w.tan_psi_max, "k", "ₘₐₓ"), (w.l_mm, w.tan_psi_min, "l", "ₘᵢₙ")):
         p0, p1 = _tangent(c, t, box[:4])

@@ -43,7 +43,7 @@ TangentForm = Literal["exact", "book"]
 
 
 def _frozen(a: ArrayLike, dtype: type = float) -> np.ndarray:
-    out = np.array(a, dtype=dtype)
+    out: np.ndarray = np.array(a, dtype=dtype)
     out.setflags(write=False)
     return out
 
