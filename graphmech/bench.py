@@ -293,6 +293,59 @@ def _cam_notes(records: list[dict[str, Any]]) -> list[str]:
     return notes
 
 
+#: Positions of the Wittenbauer benchmark (the course project's 12, then finer).
+WITTENBAUER_N = (12, 24, 36, 72, 360, 3600)
+
+
+def wittenbauer_records(repeat: int = 5, ns: tuple[int, ...] = WITTENBAUER_N) -> list[dict[str, Any]]:
+    """J_F of the compressor by the whole graphical pipeline at N positions against the exact J_F.
+
+    One run = the velocity polygons at N positions (Jп, Mп), graphical integration, the balancing
+    moment, ΔT, the Wittenbauer diagram and its tangents (or the energy indicator). The exact J_F
+    takes the tangents to the continuous curve (:class:`graphmech.exact.flywheel.ExactMachine`).
+    """
+    from graphmech.bench_flywheel import compressor_machine
+    from graphmech.exact.flywheel import ExactMachine
+    from graphmech.methods.flywheel import design_flywheel
+    from graphmech.methods.reduction import reduce_to_crank
+
+    m = compressor_machine()
+    ex = ExactMachine(m)
+    refs = {"exact": ex.wittenbauer("exact").J_F, "book": ex.wittenbauer("book").J_F, "indicator": ex.indicator().J_F}
+    dw_ref = ex.indicator().DeltaW_max
+    records = []
+    for case, ref in refs.items():
+        need = ("indicator",) if case == "indicator" else ("wittenbauer",)
+        form = "book" if case == "book" else "exact"
+        for n in ns:
+            phi = np.asarray(m.positions(n))
+
+            def run() -> Any:
+                r = reduce_to_crank(m, phi, {"l": 0.002, "v": 0.05})
+                return design_flywheel(r.phi, r.J, r.M, cycle=m.cycle, omega_m=m.omega_m, delta=m.delta,
+                                       balance=m.balance, form=form, H_mm=40.0, need=need)
+
+            secs = _best(run, repeat, 1)
+            d = run()
+            got = d.J_F_indicator if case == "indicator" else d.J_F
+            records.append({"method": "wittenbauer" if case != "indicator" else "energy-indicator",
+                            "case": f"compressor-{case}", "n": n, "seconds": secs,
+                            "max_rel_error": abs(got - ref) / abs(ref), "J_F": got, "J_F_exact": ref,
+                            "DeltaW_max_rel_error": abs(d.dT_max - d.dT_min - dw_ref) / dw_ref})
+    return records
+
+
+def _flywheel_notes(records: list[dict[str, Any]]) -> list[str]:
+    out = []
+    for case in dict.fromkeys(r["case"] for r in records if r["method"] in ("wittenbauer", "energy-indicator")):
+        rs = [r for r in records if r["case"] == case]
+        o = convergence_order(rs)
+        big = max(rs, key=lambda r: r["n"])
+        out.append(f"{rs[0]['method']} {case}: J_F error " + ", ".join(f"{r['max_rel_error']:.1e} (N={r['n']})" for r in rs)
+                   + f"; order {o['overall']:.2f}; N = {big['n']} in {big['seconds'] * 1e3:.1f} ms (target < 200 ms)")
+    return out
+
+
 def run_bench(quick: bool = False) -> dict[str, Any]:
     """All benchmark records, plus notes comparing them with the targets."""
     records = polygon_records(repeat=3 if quick else 7)
@@ -305,4 +358,9 @@ def run_bench(quick: bool = False) -> dict[str, Any]:
         f"the plain closed-form numpy solution ({base['seconds'] * 1e6:.0f} µs; target ≤ 3×)",
         f"agreement: {max(one['max_rel_error'], cyc['max_rel_error']):.1e} (target ≤ 1e-12)",
     ] + _cam_notes(cams)
-    return {"records": records + cams, "notes": notes}
+    from graphmech.bench_flywheel import true_motion_records
+
+    fly = wittenbauer_records(repeat=2 if quick else 5)
+    motion = true_motion_records(quick=quick)
+    notes += _flywheel_notes(fly)
+    return {"records": records + cams + fly + motion, "notes": notes}

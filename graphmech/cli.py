@@ -88,6 +88,17 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
 
     scene = load_scene(path)
     footer = (f"graphmech {graphmech.__version__}",)
+    if scene.flywheel is not None:
+        from graphmech.flywheel_check import analyse_flywheel
+        from graphmech.methods.flywheel_figures import flywheel_sheet
+
+        fan = analyse_flywheel(scene)
+        if fan.design is None:
+            raise SceneError([("show", "nothing to draw: this flywheel scene asks for no diagram "
+                                       "(a braking check has none); use graphmech check")], scene.source)
+        sheet = flywheel_sheet(scene.title, fan.design, list(scene.show), page_size(scene), footer)
+        warnings = list(fan.warnings)
+        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
     if scene.cam is not None:
         from graphmech.cam_check import analyse_cam
         from graphmech.methods.cam_figures import cam_sheet
@@ -176,7 +187,16 @@ def _check(args: argparse.Namespace) -> int:
     extra = _parse_measured(args.measured)
     scene = load_scene(args.scene)
     extra_doc: dict[str, Any] = {}
-    if scene.cam is not None:
+    if scene.flywheel is not None:
+        from graphmech.flywheel_check import analyse_flywheel, judge_flywheel
+
+        an = analyse_flywheel(scene, tuple(extra))
+        verdicts = judge_flywheel(an, args.precision)
+        if an.motion is not None:
+            extra_doc["true_motion"] = an.motion_summary()
+        if an.braking is not None:
+            extra_doc["braking"] = an.braking_summary()
+    elif scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 
         an = analyse_cam(scene, tuple(extra))
@@ -194,6 +214,11 @@ def _check(args: argparse.Namespace) -> int:
         print(json.dumps(doc, indent=1, ensure_ascii=False, allow_nan=False))
     else:
         print(_table(an, verdicts))
+        if extra_doc.get("braking"):
+            br = extra_doc["braking"]
+            verdict = "" if br["ok"] is None else (f" ≤ {br['time_limit']:g} s: meets the requirement" if br["ok"]
+                                                     else f" > {br['time_limit']:g} s: DOES NOT meet the requirement")
+            print(f"stopping time {br['t_stop']:.6g} s{verdict}")
         for w in an.warnings:
             print(f"warning: {w}", file=sys.stderr)
     return EXIT_OUT_OF_TOLERANCE if bad else EXIT_OK

@@ -85,6 +85,21 @@ class FlywheelAnalysis:
         return out
 
 
+    def motion_summary(self) -> dict[str, Any]:
+        """How the true motion was found: solver, tolerance, work done (for ``check --json``)."""
+        mo = self.motion
+        return {"solver": mo.solver, "rtol": mo.rtol, "atol": mo.atol, "J_F": mo.J_F, "cycles": mo.cycles,
+                "steps_per_cycle": mo.steps, "nfev": mo.nfev, "njev": mo.njev, "period_s": mo.period,
+                "omega_s": mo.omega_s, "delta_required": self.machine.delta}
+
+
+    def braking_summary(self) -> dict[str, Any]:
+        """The run-down: stopping time against the required one (``ok`` None when none is required)."""
+        limit = self.scene.flywheel.braking.time_limit
+        t = float(self.braking.t)
+        return {"t_stop": t, "time_limit": limit, "ok": None if limit is None else bool(t <= limit)}
+
+
 def split(name: str) -> tuple[str, str | None]:
     base, sep, at = name.partition("@")
     return base, (at if sep else None)
@@ -300,7 +315,7 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
     wm, delta = m.omega_m, m.delta
     if base == "t_stop":
         b = an.braking
-        return b.numeric, b.exact, None, 1.0, False
+        return b.t_numeric, b.t, None, 1.0, False
     if base in ("Jp", "Mp"):
         ex = _exact(an)
         phi = an.phi[i : i + 1]
@@ -325,7 +340,7 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
         if base.startswith("phi"):
             return math.degrees(float(an.phi[kk])), math.degrees(x.phi_max if top else x.phi_min), None, 1.0, False
         g = float(d.energy_mm[kk]) * mu_T
-        return g, float(x.max if top else x.min), g / mu_T, mu_T, False
+        return g, float(x.maximum if top else x.minimum), g / mu_T, mu_T, False
     if base in ("k", "l", "psi_max", "psi_min", "J_F_wittenbauer") or (base == "J_F" and an.scene.flywheel.method == "wittenbauer"):
         w = d.wittenbauer
         t = ex.wittenbauer(an.scene.flywheel.tangents)
@@ -335,15 +350,16 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
             return mm * mu_T, float(t.k if base == "k" else t.l), mm, mu_T, ill
         if base in ("psi_max", "psi_min"):
             tg = float(w.tan_psi_max if base == "psi_max" else w.tan_psi_min)
-            return math.degrees(math.atan(tg)), math.degrees(float(t.psi_max if base == "psi_max" else t.psi_min)), \
-                None, 1.0, False
+            # the exact slope from ω_max, ω_min of the tangents (the same formula: no discretisation)
+            c = (t.omega_max if base == "psi_max" else t.omega_min) ** 2 / 2.0 * float(d.scales["J"]) / mu_T
+            return math.degrees(math.atan(tg)), math.degrees(math.atan(c)), None, 1.0, False
         return float(d.J_F), float(t.J_F), float(w.kl_mm), mu_T / (wm * wm * delta), False
     if base in ("J_F", "J_F_indicator", "DeltaW_max", "J_mean"):
         ind = ex.indicator()
         if base == "J_mean":
             return float(d.J_mean), float(ind.J_mean), None, 1.0, False
         if base == "DeltaW_max":
-            return float(d.DeltaW_max), float(ind.DeltaW_max), float(d.DeltaW_max) / mu_T, mu_T, False
+            return float(d.DeltaW_max), float(ind.delta_W), float(d.DeltaW_max) / mu_T, mu_T, False
         return float(d.J_F_indicator), float(ind.J_F), None, mu_T / (wm * wm * delta), False
     if base in ("omega_max", "omega_min", "n_max", "n_min"):
         hi = base.endswith("max")
@@ -360,7 +376,8 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
         return float(mo.omega_max if hi else mo.omega_min), float(ref.omega_max if hi else ref.omega_min), None, 1.0, False
     if base in ("phi_omega_max", "phi_omega_min"):
         hi = base == "phi_omega_max"
-        return math.degrees(mo.phi_max if hi else mo.phi_min), math.degrees(ref.phi_max if hi else ref.phi_min), \
+        return math.degrees(mo.phi_omega_max if hi else mo.phi_omega_min), \
+            math.degrees(ref.phi_omega_max if hi else ref.phi_omega_min), \
             None, 1.0, False
     if base == "delta_achieved":
         return float(mo.delta), float(ref.delta), None, 1.0, False
