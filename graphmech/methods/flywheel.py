@@ -45,7 +45,7 @@ Balance = Literal["driving", "resisting"]
 CYCLE_MM, HEIGHT_MM, J_MM = 150.0, 60.0, 60.0
 #: The pole distance taken when neither H nor μT is given, mm; if the work diagram would then be
 #: higher than HEIGHT_MM, H is raised to the next multiple of H_STEP that fits.
-DEFAULT_H_MM, H_STEP = 40.0, 10.0
+H_STEP = 5.0
 #: What ``need`` may ask for.
 NEEDS = ("wittenbauer", "indicator")
 #: Relative slack for a balancing moment of the wrong sign (rounding of a zero net work).
@@ -217,8 +217,9 @@ def _choose_scales(phi_c: np.ndarray, J: np.ndarray, M_c: np.ndarray, omega_m: f
         sources["H"] = "μT/(μM·μφ)"
     else:
         need = max(_span(work, balance), _span(work + balance)) / (per_H * HEIGHT_MM)
-        H = max(DEFAULT_H_MM, H_STEP * math.ceil(need / H_STEP - 1e-12))
-        sources["H"] = "default" if H == DEFAULT_H_MM else "chosen"
+        # the smallest round H that keeps A(φ) within the panel: the ΔT diagram as tall as it can be
+        H = max(H_STEP, H_STEP * math.ceil(need / H_STEP - 1e-12))
+        sources["H"] = "chosen"
     if "T" not in scales:
         scales["T"] = per_H * H
         sources["T"] = "μM·μφ·H"
