@@ -270,6 +270,11 @@ def _motion(an: FlywheelAnalysis) -> None:
     rtol = spec.rtol if spec is not None else 1e-10
     ex = _exact(an)
     J_F = _design_J_F(an)
+    if J_F <= 0.0:  # a flywheel of negative inertia cannot be fitted: run the machine as it is
+        an.warnings.append(
+            f"J_F = {J_F:.6g} kg·m² ≤ 0: the machine's own inertia already keeps δ within {an.machine.delta:g}, "
+            "no flywheel is needed; the true motion is that of the machine without one")
+        J_F = 0.0
     try:
         an.motion = true_motion(an.machine, ex, J_F, solver=solver, rtol=rtol)
         if an.machine.motor is None:

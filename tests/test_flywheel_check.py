@@ -1,0 +1,150 @@
+"""The flywheel check: only what the scene asks for, and the extreme cases of the issue."""
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+
+import pytest
+
+from tests.conftest import SCENES, check_json, run_cli, values
+
+ENGINE = """\
+title = "Engine"
+show = {show}
+find = {find}
+
+[flywheel]
+positions = {n}
+cycle_deg = 180
+speed_rpm = 620
+delta = {delta}
+balance = "resisting"
+method = "{method}"
+inertia_kgm2 = {J}
+
+[[flywheel.load]]
+type = "crank"
+phi_deg = [0, 20, 50, 180]
+moment_Nm = [0, 200, 200, 0]
+"""
+
+
+def engine(tmp_path, *, show='["energy"]', find='["J_F"]', n=36, delta=0.01, method="indicator", J=0.0,
+           extra=""):
+    p = tmp_path / "e.toml"
+    p.write_text(ENGINE.format(show=show, find=find, n=n, delta=delta, method=method, J=J) + extra,
+                 encoding="utf-8")
+    return p
+
+
+def test_an_indicator_scene_draws_no_wittenbauer_and_integrates_no_motion(tmp_path):
+    from graphmech.flywheel_check import analyse_flywheel
+    from graphmech.scene import load_scene
+
+    an = analyse_flywheel(load_scene(engine(tmp_path)))
+    assert an.design.wittenbauer is None and an.design.indicator is not None
+    assert an.motion is None
+    an = analyse_flywheel(load_scene(engine(tmp_path, method="wittenbauer", J=0.5)))
+    assert an.design.indicator is None and an.design.wittenbauer is not None and an.motion is None
+
+
+def test_a_flywheel_check_imports_neither_matplotlib_nor_svgwrite():
+    code = ("import sys; from graphmech.cli import main; "
+            f"rc = main(['check', r'{SCENES / 'fly.compressor_course_project.toml'}', '--json']); "
+            "assert rc == 0; print('matplotlib' in sys.modules, 'svgwrite' in sys.modules)")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert r.stdout.split()[-2:] == ["False", "False"]
+
+
+def test_constant_inertia_wittenbauer_equals_the_energy_indicator(tmp_path):
+    """With Jп constant the Wittenbauer diagram is a vertical line of points: its tangents give
+    exactly ΔW_max/(ω_m²δ) − J_e, the energy-indicator result."""
+    find = '["J_F_wittenbauer", "J_F_indicator", "J_F"]'
+    q = values(check_json(engine(tmp_path, method="wittenbauer", J=0.4, find=find)))
+    assert q["J_F_wittenbauer"]["graphical"] == pytest.approx(q["J_F_indicator"]["graphical"], rel=1e-12)
+    assert q["J_F_wittenbauer"]["exact"] == pytest.approx(q["J_F_indicator"]["exact"], rel=1e-10)
+
+
+def test_tiny_delta_warns_that_the_tangents_cannot_be_drawn_apart(tmp_path):
+    doc = check_json(engine(tmp_path, method="wittenbauer", J=0.5, delta=1e-4, find='["k", "l", "J_F"]'))
+    q = values(doc)
+    assert any("cannot be told apart" in w for w in doc["warnings"])
+    assert q["k"]["ill_conditioned"] and q["l"]["ill_conditioned"]
+    # found analytically, J_F itself is as accurate as at any δ (36 positions: the discretisation)
+    assert q["J_F"]["rel_error"] < 5e-3
+    assert not q["J_F"]["ill_conditioned"]
+
+
+@pytest.mark.parametrize("delta", [0.5, 0.04, 1e-4])
+def test_true_motion_reaches_the_designed_delta_with_the_exact_form(tmp_path, delta):
+    """The exact tangent form (1 ± δ/2)² designs a flywheel whose true motion has δ as designed
+    (up to the positions' discretisation; 360 positions here); the book form (1 ± δ) does not at δ = 0.5."""
+    extra = '\n[flywheel.true_motion]\nsolver = "Radau"\nrtol = 1e-10\n'
+    q = values(check_json(engine(tmp_path, method="wittenbauer", J=0.01, delta=delta, n=360,
+                                 find='["delta_achieved"]', extra=extra)))
+    assert q["delta_achieved"]["rel_error"] <= 1e-7  # ODE against the energy equation, same J_F
+    assert q["delta_achieved"]["graphical"] == pytest.approx(delta, rel=1e-3)
+
+
+def test_book_form_misses_a_large_delta(tmp_path):
+    """With Jп varying, the book's (1 ± δ) moves the tangents' touching points: at δ = 0.25 the
+    compressor's flywheel so designed lets the speed swing 0.9 % more than required; the exact
+    form (1 ± δ/2)² meets δ to the discretisation of 720 positions."""
+    text = (SCENES / "fly.compressor_course_project.toml").read_text(encoding="utf-8")
+    got = {}
+    for form in ("exact", "book"):
+        t = text.replace('delta = "1/25"', "delta = 0.25").replace("positions = 12", "positions = 720")
+        t = t.replace('tangents = "exact"', f'tangents = "{form}"')
+        t = re.sub(r"find = \[.*?\]\n", 'find = ["delta_achieved"]\n', t, count=1, flags=re.S)
+        p = tmp_path / f"{form}.toml"
+        p.write_text(t, encoding="utf-8")
+        got[form] = values(check_json(p))["delta_achieved"]["graphical"]
+    assert got["exact"] == pytest.approx(0.25, rel=1e-4)
+    assert 0.005 < got["book"] / 0.25 - 1 < 0.015
+
+
+def test_no_flywheel_needed_when_the_design_comes_out_negative(tmp_path):
+    extra = '\n[flywheel.true_motion]\nsolver = "Radau"\nrtol = 1e-10\n'
+    doc = check_json(engine(tmp_path, method="wittenbauer", J=0.5, delta=0.5, find='["J_F", "delta_achieved"]',
+                            extra=extra))
+    q = values(doc)
+    assert q["J_F"]["graphical"] < 0
+    assert any("no flywheel is needed" in w for w in doc["warnings"])
+    assert doc["true_motion"]["J_F"] == 0.0
+    assert q["delta_achieved"]["graphical"] < 0.5
+
+
+def test_a_load_with_a_step(tmp_path):
+    """A resisting moment that steps from 0 to 300 N·m half-way: ΔT has a kink, the integrator
+    restarts at the step, and the ODE agrees with the energy equation."""
+    text = ENGINE.format(show='["energy"]', find='["J_F", "delta_achieved", "M_b"]', n=360, delta=0.05,
+                         method="wittenbauer", J=0.3)
+    text = text.replace('balance = "resisting"', 'balance = "driving"').replace(
+        "phi_deg = [0, 20, 50, 180]\nmoment_Nm = [0, 200, 200, 0]",
+        "phi_deg = [0, 90, 90, 180]\nmoment_Nm = [0, 0, -300, -300]")
+    text += '\n[flywheel.true_motion]\nsolver = "BDF"\nrtol = 1e-10\n'
+    p = tmp_path / "step.toml"
+    p.write_text(text, encoding="utf-8")
+    q = values(check_json(p))
+    assert q["M_b"]["exact"] == pytest.approx(150.0, rel=1e-12)
+    assert q["M_b"]["graphical"] == pytest.approx(150.0, rel=1e-12)  # the step falls on a position
+    assert q["delta_achieved"]["rel_error"] <= 1e-7
+
+
+def test_a_braking_scene_renders_nothing_but_says_so(tmp_path):
+    code, out, err = run_cli("render", str(SCENES / "fly.brake_time.toml"), "-o", str(tmp_path / "b.svg"))
+    assert code == 2 and "nothing to draw" in err and err.count("\n") == 1
+    assert not (tmp_path / "b.svg").exists()
+
+
+def test_measured_flywheel_values_are_judged_against_the_same_positions(tmp_path):
+    p = engine(tmp_path, method="indicator", find='["J_F", "DeltaW_max"]')
+    doc = check_json(p, "--measured", "DeltaW_max=88.8", "--measured", "J_F=3.0")
+    verdicts = {v["name"]: v for v in doc["measured"]}
+    assert verdicts["DeltaW_max"]["ok"] and not verdicts["J_F"]["ok"]
+
+
+def test_unknown_flywheel_quantity_is_one_line(tmp_path):
+    code, out, err = run_cli("check", str(engine(tmp_path, find='["J_FF"]')))
+    assert code == 2 and "find[0]" in err and "did you mean" in err and err.count("\n") == 1
