@@ -21,16 +21,24 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable, Literal
+from itertools import pairwise
+from typing import Literal
 
 import numpy as np
 from scipy.optimize import brentq
 
 from graphmech.errors import SceneError
 from graphmech.exact.linkage import Kinematics, solve
-from graphmech.mechanisms.linkage import Crank
-from graphmech.mechanisms.machine import CrankMoment, LinkMoment, Machine, SliderLoad, Table
+from graphmech.mechanisms.linkage import Crank, Linkage
+from graphmech.mechanisms.machine import (
+    CrankMoment,
+    LinkMoment,
+    Machine,
+    SliderLoad,
+    Table,
+)
 
 __all__ = ["ExactMachine", "Extremes", "Indicator", "Motion", "Stroke", "Tangents", "table_line",
            "table_value"]
@@ -332,21 +340,19 @@ class ExactMachine:
         self.cycle = float(machine.cycle)
         self._validate()
         lk = machine.linkage
-        if lk is not None:
-            drv = lk.driver
+        self._linkage: Linkage | None = None
+        self._w1 = 1.0
+        if lk is not None and isinstance(lk.driver, Crank):  # (checked above)
             # ε = 0: the reduced quantities are those of a uniformly turning crank.
-            self._linkage = dataclasses.replace(lk, driver=dataclasses.replace(drv, epsilon=0.0))
-            self._w1 = abs(float(drv.omega))
-        else:
-            self._linkage = None
-            self._w1 = 1.0
+            self._linkage = dataclasses.replace(lk, driver=dataclasses.replace(lk.driver, epsilon=0.0))
+            self._w1 = abs(float(lk.driver.omega))
         self.strokes = self._find_strokes()
         self._breaks = self._find_breaks()
 
         # Quadrature cells: the breaks, then no cell longer than _CELL.
         edges = [0.0, *[b for b in self._breaks if b > 0.0], self.cycle]
         cells = []
-        for a, b in zip(edges[:-1], edges[1:]):
+        for a, b in pairwise(edges):
             n = max(1, math.ceil((b - a) / _CELL - 1e-9))
             cells.append(np.linspace(a, b, n + 1)[:-1])
         self._edges = np.append(np.concatenate(cells), self.cycle)
@@ -387,8 +393,8 @@ class ExactMachine:
         lk = mc.linkage
         if lk is None:
             if mc.masses:
-                problems.append(("masses", "masses need a linkage (without one, give the constant "
-                                           "inertia)"))
+                problems.append(("masses", ("masses need a linkage (without one, give the "
+                                            "constant inertia)")))
             for k, ld in enumerate(mc.loads):
                 if not isinstance(ld, CrankMoment):
                     problems.append((f"loads[{k}]", f"a {type(ld).__name__} needs a linkage"))
@@ -399,8 +405,8 @@ class ExactMachine:
                 problems.append(("linkage.driver.omega", "the crank's ω must not be 0"))
             turns = mc.cycle / _TWO_PI
             if abs(turns - round(turns)) > 1e-9 or round(turns) < 1:
-                problems.append(("cycle", f"with a linkage Φ must be a whole number of crank turns "
-                                          f"(Φ = {math.degrees(mc.cycle):.6g}°)"))
+                problems.append(("cycle", (f"with a linkage Φ must be a whole number of crank "
+                                           f"turns (Φ = {math.degrees(mc.cycle):.6g}°)")))
             if not problems:
                 kin = solve(lk, np.array([mc.start]))
                 points, moving = set(kin.point), set(kin.omega)
@@ -438,11 +444,12 @@ class ExactMachine:
         kin = solve(self._linkage, mc.start + mc.sense * phi.ravel())
         if not kin.valid.all():
             i = int(np.flatnonzero(~kin.valid)[0])
-            raise SceneError([("linkage", f"cannot be solved at φ = {math.degrees(phi.ravel()[i]):.9g}° "
-                                          f"from position 1: {kin.reason[i]}")], source="machine")
+            why = (f"cannot be solved at φ = {math.degrees(phi.ravel()[i]):.9g}° from position 1: "
+                   f"{kin.reason[i]}")
+            raise SceneError([("linkage", why)], source="machine")
         return kin
 
-    def _evaluate(self, phi: np.ndarray, kin: Kinematics | None = None
+    def _evaluate(self, phi: np.ndarray | float, kin: Kinematics | None = None
                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(Jп, dJп/dφ, Mп) at φ (one linkage solve)."""
         phi = np.asarray(phi, dtype=float)
@@ -566,8 +573,8 @@ class ExactMachine:
                 continue
             dcs = self._dead_centres(ld)
             if len(dcs) < 2:
-                raise SceneError([(f"loads[{k}]", f"slider {ld.point} does not move along its "
-                                                  "guide: no stroke")], source="machine")
+                why = f"slider {ld.point} does not move along its guide: no stroke"
+                raise SceneError([(f"loads[{k}]", why)], source="machine")
             proj, _ = self._axis_motion(ld, np.array(dcs))
             i_b, i_f = int(np.argmin(proj)), int(np.argmax(proj))
             out.append(Stroke(H=float(proj[i_f] - proj[i_b]), phi_back=dcs[i_b],
@@ -582,7 +589,7 @@ class ExactMachine:
         out = list(dcs)
         nodes = sorted({x for x in ld.table.x if 0.0 < x < 1.0})
         ends = [*dcs, dcs[0] + _TWO_PI]
-        for a, b in zip(ends[:-1], ends[1:]):
+        for a, b in pairwise(ends):
             _, vmid = self._axis_motion(ld, np.array([0.5 * (a + b)]))
             if not self._active(ld, vmid)[0]:
                 continue
@@ -628,18 +635,19 @@ class ExactMachine:
             have to resist).
         """
         if self._abs_work == 0.0:
-            raise SceneError([("loads", "the loads do no work (Mп ≡ 0): the balancing moment is 0 "
-                                        "and ΔT ≡ 0, so J_F is undefined")], source="machine")
+            why = ("the loads do no work (Mп ≡ 0): the balancing moment is 0 and ΔT ≡ 0, so J_F "
+                   "is undefined")
+            raise SceneError([("loads", why)], source="machine")
         mb = -self._work / self.cycle
         slack = 1e-12 * self._abs_work / self.cycle
         want = self.machine.balance
         if (want == "driving" and mb < -slack) or (want == "resisting" and mb > slack):
-            raise SceneError([("balance", f"the loads' net work over a cycle is {self._work:.6g} J, "
-                                          f"so the balancing moment {mb:.6g} N·m cannot be "
-                                          f"{want}")], source="machine")
+            why = (f"the loads' net work over a cycle is {self._work:.6g} J, so the balancing "
+                   f"moment {mb:.6g} N·m cannot be {want}")
+            raise SceneError([("balance", why)], source="machine")
         return mb
 
-    def _energy_and_state(self, phi: np.ndarray
+    def _energy_and_state(self, phi: np.ndarray | float
                           ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """(ΔT, Jп, dJп/dφ, Mп) at φ with one linkage solve (φ and the partial cells' nodes)."""
         mb = self.balancing_moment()

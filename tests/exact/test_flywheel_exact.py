@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import math
 
 import numpy as np
@@ -10,8 +11,15 @@ from scipy.integrate import quad
 
 from graphmech.bench_flywheel import compressor_machine
 from graphmech.exact.flywheel import ExactMachine, Extremes, table_line, table_value
-from graphmech.mechanisms.linkage import RRR, Crank, Guide, Linkage, LinkPoint, RRP
-from graphmech.mechanisms.machine import CrankMoment, LinkMoment, Machine, Mass, SliderLoad, Table
+from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage, LinkPoint
+from graphmech.mechanisms.machine import (
+    CrankMoment,
+    LinkMoment,
+    Machine,
+    Mass,
+    SliderLoad,
+    Table,
+)
 
 DEG = math.pi / 180.0
 REL = 1e-9
@@ -195,7 +203,7 @@ def test_slope_and_energy_are_derivatives(comp):
 def test_cycle_work_by_adaptive_quadrature(comp):
     brk = list(comp.breaks()) + [2 * math.pi]
     work = sum(quad(lambda x: float(comp.load_moment(np.array([x]))[0]), a, b, epsabs=1e-12, epsrel=1e-13)[0]
-               for a, b in zip(brk[:-1], brk[1:]))
+               for a, b in itertools.pairwise(brk))
     assert close(-work / (2 * math.pi), comp.balancing_moment(), 1e-11)
 
 
