@@ -29,6 +29,9 @@ SCALE_INFO = {
     "a": ("μa", "(m/s²)/mm"),
     "s": ("μs", "m/mm"),
     "phi": ("μφ", "°/mm"),  # kept in rad/mm, written in degrees per mm as books do
+    "M": ("μM", "(N·m)/mm"),
+    "J": ("μJ", "(kg·m²)/mm"),
+    "T": ("μT", "J/mm"),
 }
 
 

@@ -1,9 +1,11 @@
 """Read a scene file: the TOML that says what to construct, draw and check.
 
 A scene describes either a linkage (frame points, a driver, Assur dyads in assembly order,
-extra points on links, and the driver's positions) or a disc cam (its base circle, follower
-and motion program, table ``[cam]``), together with the drawing scales, what to show and
-find, and the values a draughtsman measured on paper. Every number is converted to SI on load.
+extra points on links, and the driver's positions), a disc cam (its base circle, follower
+and motion program, table ``[cam]``) or a flywheel problem (a machine — a linkage or none —
+with its masses and loads, table ``[flywheel]``, read by :mod:`graphmech.scene_flywheel`),
+together with the drawing scales, what to show and find, and the values a draughtsman
+measured on paper. Every number is converted to SI on load.
 
 Validation collects *every* problem and raises one :class:`~graphmech.errors.SceneError`;
 its key paths read the way the user wrote the file (``dyad[0].lengths[1]``,
@@ -36,6 +38,7 @@ from graphmech.mechanisms.cam import (
     Segment,
     TranslatingFollower,
 )
+from graphmech.mechanisms.machine import Machine
 from graphmech.mechanisms.linkage import (
     RPP,
     RPR,
@@ -111,11 +114,81 @@ class CamScene:
 
 
 @dataclass(frozen=True)
+class TrueMotionSpec:
+    """How to integrate the machine's equation of motion with the designed flywheel.
+
+    Parameters
+    ----------
+    solver : str
+        A ``scipy.integrate.solve_ivp`` method: "Radau", "BDF", "LSODA", "RK45" or "DOP853".
+    rtol : float
+        Its relative tolerance, 1e-14 … 1e-2.
+    """
+
+    solver: str = "Radau"
+    rtol: float = 1e-10
+
+
+@dataclass(frozen=True)
+class Braking:
+    """The run-down problem: the machine stopped by a brake on its main shaft.
+
+    Parameters
+    ----------
+    moment : float
+        The brake's moment, N·m (> 0).
+    time_limit : float or None
+        The required stopping time, s (> 0); None: the time is only reported.
+    """
+
+    moment: float
+    time_limit: float | None = None
+
+
+@dataclass(frozen=True)
+class FlywheelScene:
+    """The flywheel problem of a flywheel scene.
+
+    Parameters
+    ----------
+    machine : Machine
+        The machine in SI (:mod:`graphmech.mechanisms.machine`): its linkage or None, the
+        crank's angle at position 1, the cycle Φ, ω_m, δ, masses, loads, constant inertia,
+        which moment balances the work, and the motor for the true motion. A braking-only
+        scene that gives no δ has ``delta`` NaN: there is nothing to smooth.
+    positions : int
+        N, the positions the cycle is divided into (4 … 3600), labelled 1 … N.
+    method : str
+        Which method designs J_F: "wittenbauer" (the energy–mass diagram) or "indicator"
+        (the increment of kinetic energy with the inertia of the links reduced at the mean
+        speed).
+    tangents : str
+        How the Wittenbauer diagram's tangents are inclined: "exact", ω² ∝ (1 ± δ/2)², or
+        "book", (1 ± δ).
+    pole_distance : float or None
+        H, drawing mm (None: chosen by the method).
+    true_motion : TrueMotionSpec or None
+        Present: integrate the equation of motion with the designed J_F.
+    braking : Braking or None
+        Present: the run-down problem.
+    """
+
+    machine: Machine
+    positions: int = 12
+    method: str = "wittenbauer"
+    tangents: str = "exact"
+    pole_distance: float | None = None
+    true_motion: TrueMotionSpec | None = None
+    braking: Braking | None = None
+
+
+@dataclass(frozen=True)
 class Scene:
     """A validated scene, all in SI units.
 
-    A scene is either a linkage scene (``linkage`` and ``positions`` set, ``cam`` None) or a
-    cam scene (``cam`` set, ``linkage`` and ``positions`` None).
+    A scene is a linkage scene (``linkage`` and ``positions`` set, ``cam`` and ``flywheel``
+    None), a cam scene (``cam`` set, ``linkage`` and ``positions`` None) or a flywheel scene
+    (``flywheel`` set; ``linkage`` and ``positions`` set when it has a linkage, else None).
 
     Parameters
     ----------
@@ -124,20 +197,24 @@ class Scene:
     title : str
         Free text (the renderer escapes it).
     show : tuple of str
-        A subset of :data:`SHOW_CHOICES` (a cam scene: :data:`CAM_SHOW_CHOICES`) in the
-        user's order, no duplicates.
+        A subset of :data:`SHOW_CHOICES` (a cam scene: :data:`CAM_SHOW_CHOICES`; a flywheel
+        scene: :data:`graphmech.scene_flywheel.FLYWHEEL_SHOW_CHOICES`, with a linkage also
+        "mechanism") in the user's order, no duplicates.
     find : tuple of str
-        Quantity names as written (``"v_C"``, ``"omega_3"``, ``"alpha_max"``); ``check``
-        validates them against the construction.
+        Quantity names as written (``"v_C"``, ``"omega_3"``, ``"alpha_max"``, ``"J_F"``);
+        ``check`` validates them against the construction.
     scales : dict
         Only the scales given: ``"l"`` m/mm, ``"v"`` (m/s)/mm, ``"a"`` (m/s²)/mm; a cam scene
         also ``"s"`` m/mm and ``"phi"`` rad/mm, and for an oscillating follower ``"s"`` is
-        rad/mm, ``"v"`` (rad/s)/mm, ``"a"`` (rad/s²)/mm.
+        rad/mm, ``"v"`` (rad/s)/mm, ``"a"`` (rad/s²)/mm; a flywheel scene ``"phi"`` rad/mm,
+        ``"M"`` (N·m)/mm, ``"J"`` (kg·m²)/mm, ``"T"`` J/mm, and with a linkage ``"l"``, ``"v"``.
     linkage : Linkage or None
-        The mechanism, in m and rad (None in a cam scene).
+        The mechanism, in m and rad (None in a cam scene and a flywheel scene without one).
     positions : Positions or None
         Driver values in SI (rad or m) and their labels as written in the scene's unit
-        (``"50"``), used as name suffixes such as ``v_C@50`` (None in a cam scene).
+        (``"50"``), used as name suffixes such as ``v_C@50`` (None in a cam scene). In a
+        flywheel scene with a linkage, the crank's absolute angles at its N positions,
+        labelled ``"1"`` … ``"N"``.
     measured : tuple of (str, float)
         The ``[measured]`` table in file order, raw: quantity values in SI or drawn
         segment lengths in mm (``("p'c'", 40.5)``); ``check`` interprets them.
@@ -146,7 +223,9 @@ class Scene:
     page : Page
         The sheet.
     cam : CamScene or None
-        The cam of a cam scene (None in a linkage scene).
+        The cam of a cam scene (None otherwise).
+    flywheel : FlywheelScene or None
+        The machine and the flywheel problem of a flywheel scene (None otherwise).
     """
 
     source: str
@@ -160,6 +239,7 @@ class Scene:
     precision_mm: float = DRAWING_PRECISION_MM
     page: Page = Page()
     cam: CamScene | None = None
+    flywheel: FlywheelScene | None = None
 
 
 # --------------------------------------------------------------------------------------------
@@ -189,6 +269,26 @@ _UNITS: dict[str, dict[str, tuple[float, float]]] = {
         "mm/s²": (1.0, 1000.0),
         "mm/s^2": (1.0, 1000.0),
     },
+    "mass": {"kg": (1.0, 1.0)},
+    "inertia": {"kgm2": (1.0, 1.0), "kg·m2": (1.0, 1.0), "kg·m²": (1.0, 1.0)},
+    "moment": {"Nm": (1.0, 1.0), "N·m": (1.0, 1.0), "kNm": (1000.0, 1.0), "kN·m": (1000.0, 1.0)},
+    "energy": {"J": (1.0, 1.0), "kJ": (1000.0, 1.0)},
+    "force": {"N": (1.0, 1.0), "kN": (1000.0, 1.0)},
+    "pressure": {
+        "MPa": (1e6, 1.0),
+        "kPa": (1000.0, 1.0),
+        "Pa": (1.0, 1.0),
+        "bar": (1e5, 1.0),
+    },
+    "time": {"s": (1.0, 1.0), "ms": (1.0, 1000.0)},
+    "area": {
+        "mm2": (1.0, 1e6),
+        "mm²": (1.0, 1e6),
+        "cm2": (1.0, 1e4),
+        "cm²": (1.0, 1e4),
+        "m2": (1.0, 1.0),
+        "m²": (1.0, 1.0),
+    },
 }
 
 #: Key suffix (after ``base_``) → unit, per kind; the first is the one messages suggest.
@@ -199,6 +299,14 @@ _SUFFIXES: dict[str, dict[str, str]] = {
     "epsilon": {"rad_s2": "rad/s2", "deg_s2": "deg/s2"},
     "velocity": {"m_s": "m/s", "mm_s": "mm/s"},
     "acceleration": {"m_s2": "m/s2", "mm_s2": "mm/s2"},
+    "mass": {"kg": "kg"},
+    "inertia": {"kgm2": "kgm2"},
+    "moment": {"Nm": "Nm", "kNm": "kNm"},
+    "energy": {"J": "J", "kJ": "kJ"},
+    "force": {"N": "N", "kN": "kN"},
+    "pressure": {"MPa": "MPa", "kPa": "kPa", "Pa": "Pa", "bar": "bar"},
+    "time": {"s": "s", "ms": "ms"},
+    "area": {"mm2": "mm2", "cm2": "cm2", "m2": "m2"},
 }
 
 _KIND_WORDS = {
@@ -208,6 +316,14 @@ _KIND_WORDS = {
     "epsilon": "an angular acceleration",
     "velocity": "a velocity",
     "acceleration": "an acceleration",
+    "mass": "a mass",
+    "inertia": "a moment of inertia",
+    "moment": "a moment",
+    "energy": "an energy",
+    "force": "a force",
+    "pressure": "a pressure",
+    "time": "a time",
+    "area": "an area",
 }
 
 _PER_MM = "_per_mm"
@@ -236,6 +352,7 @@ _TOP_KEYS = (
     "check",
     "page",
     "cam",
+    "flywheel",
 )
 
 #: The tables only a linkage scene has.
@@ -812,27 +929,38 @@ _CAM_SCALES = (
 )
 
 
-def _read_scales(top: _Reader, cam: bool = False, follower: str | None = None) -> dict[str, float]:
+def _read_scales(
+    top: _Reader,
+    cam: bool = False,
+    follower: str | None = None,
+    entries: Iterable[tuple[str, str | None]] | None = None,
+    refuse: Iterable[tuple[str, str]] = (),
+) -> dict[str, float]:
     """[scales]: l, v, a per drawing mm, converted to SI per mm.
 
     A cam scene also has s and phi, and the kind of s, v and a depends on the follower
-    (``follower`` None: unknown, those scales are skipped silently).
+    (``follower`` None: unknown, those scales are skipped silently). Other scenes give their
+    own ``entries`` (scale name, kind) and the scales they ``refuse`` (name, reason).
     """
     r = top.table_at("scales")
     scales: dict[str, float] = {}
     if r is None:
         return scales
-    entries: list[tuple[str, str | None]]
-    if cam:
-        entries = [
+    for name, reason in refuse:
+        _not_for(r, [name], reason)
+    kinds: list[tuple[str, str | None]]
+    if entries is not None:
+        kinds = list(entries)
+    elif cam:
+        kinds = [
             (name, None if follower is None else (lin if follower == "translating" else ang))
             for name, lin, ang in _CAM_SCALES
         ]
-        entries[0] = ("l", "length")
-        entries[2] = ("phi", "angle")
+        kinds[0] = ("l", "length")
+        kinds[2] = ("phi", "angle")
     else:
-        entries = [("l", "length"), ("v", "velocity"), ("a", "acceleration")]
-    for name, kind in entries:
+        kinds = [("l", "length"), ("v", "velocity"), ("a", "acceleration")]
+    for name, kind in kinds:
         if kind is None:
             r.ignore(name)
             continue
@@ -886,8 +1014,13 @@ def _read_guide(parent: _Reader, key: str, frame: _Frame) -> Guide | None:
     return Guide(through, angle) if _valid(through, angle) else None  # type: ignore[arg-type]
 
 
-def _read_driver(top: _Reader, frame: _Frame) -> tuple[_Part, Positions | None]:
-    """[driver]: a crank or a slider, and the positions it is drawn at."""
+def _read_driver(
+    top: _Reader, frame: _Frame, crank_only: str = ""
+) -> tuple[_Part, Positions | None]:
+    """[driver]: a crank or a slider, and the positions it is drawn at.
+
+    ``crank_only``: the reason a slider is refused (a scene whose driver must be a crank).
+    """
     part = _Part("driver")
     r = top.table_at(
         "driver", required=True, hint='add a [driver] table (type = "crank" or "slider")'
@@ -895,6 +1028,9 @@ def _read_driver(top: _Reader, frame: _Frame) -> tuple[_Part, Positions | None]:
     if r is None:
         return part, None
     kind = r.string("type", choices=("crank", "slider"), required=True)
+    if kind == "slider" and crank_only:
+        r.problem(r.at("type"), crank_only)
+        kind = None
     if kind is None:
         return _opaque(r, "driver", ("pivot", "tip", "point"), ("link",)), None
     link_value = r.raw("link", required=True, hint='the driver\'s link number, e.g. link = "1"')
@@ -1519,6 +1655,38 @@ def _read_cam(top: _Reader) -> CamScene | None:
 # --------------------------------------------------------------------------------------------
 
 
+def _read_linkage(
+    top: _Reader, crank_only: str = ""
+) -> tuple[Linkage | None, Positions | None, _Part]:
+    """[frame], [driver], [[dyad]] and [[point]], cross-checked.
+
+    Returns the linkage (None when anything in those tables was wrong), the driver's
+    positions and the driver as read. ``crank_only``: see :func:`_read_driver`.
+    """
+    data = top.table
+    before = len(top.problems)
+    frame, link_value = _read_frame(top)
+    frame_link_given = (
+        "frame" in data and isinstance(data["frame"], dict) and "link" in data["frame"]
+    )
+    driver, positions = _read_driver(top, frame, crank_only)
+    dyads = [_read_dyad(r, k, frame) for k, r in enumerate(top.tables_at("dyad"))]
+    points = [_read_point(r, k) for k, r in enumerate(top.tables_at("point"))]
+    frame_link = _check_structure(
+        top.problems, frame, (link_value, frame_link_given), driver, dyads, points
+    )
+    if len(top.problems) != before or any(p.model is None for p in (driver, *dyads, *points)):
+        return None, positions, driver
+    linkage = Linkage(
+        frame_points={name: xy for name, xy in frame.items() if xy is not None},
+        driver=driver.model,
+        dyads=tuple(d.model for d in dyads),
+        points=tuple(p.model for p in points),
+        frame_link=frame_link or "0",
+    )
+    return linkage, positions, driver
+
+
 def _check_structure(
     problems: list[tuple[str, str]],
     frame: _Frame,
@@ -1639,10 +1807,11 @@ def _check_structure(
 def _rank(
     problem: tuple[str, str],
     order: Mapping[str, int],
-    cam_order: Mapping[str, int] | None = None,
+    sub_order: Mapping[str, int] | None = None,
+    table: str = "cam",
 ) -> tuple[int, int, int, int, int]:
     """Sort key putting problems in file order: top-level table, then array index; within
-    [cam], its own keys and tables in file order too (``cam_order``).
+    ``table`` ([cam], [flywheel]), its own keys and tables in file order too (``sub_order``).
 
     Within one table an unknown key comes first: a misspelt key is usually why another
     one is "missing".
@@ -1653,12 +1822,12 @@ def _rank(
     if not m:
         return (-1, 0, 0, 0, typo)
     sub = sub_index = 0
-    if cam_order is not None and m.group(1) == "cam":
-        n = re.match(r"cam\.([^.\[]+)(?:\[(\d+)\])?", path)
+    if sub_order is not None and m.group(1) == table:
+        n = re.match(re.escape(table) + r"\.([^.\[]+)(?:\[(\d+)\])?", path)
         if n:  # a whole array ("cam.segment": the angles' sum) after its items
             whole = n.group(0) == path and n.group(2) is None
-            sub = cam_order.get(n.group(1), len(cam_order))
-            sub_index = MAX_SEGMENTS + 1 if whole else int(n.group(2) or 0)
+            sub = sub_order.get(n.group(1), len(sub_order))
+            sub_index = 1 << 30 if whole else int(n.group(2) or 0)
     return (order.get(m.group(1), len(order)), int(m.group(2) or 0), sub, sub_index, typo)
 
 
@@ -1734,6 +1903,13 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     units = _read_units(top)
     top.units = units
     has_cam, has_driver = "cam" in data, "driver" in data
+    if has_cam and "flywheel" in data:  # one problem, as below
+        top.problem(
+            "flywheel",
+            "a scene is a disc cam ([cam]) or a flywheel problem ([flywheel]), not both: "
+            "put each in a scene of its own",
+        )
+        raise SceneError(problems, source)
     if has_cam and has_driver:  # one problem: which of the two to read is anyone's guess
         top.problem(
             "cam",
@@ -1743,6 +1919,10 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         raise SceneError(problems, source)
     if has_cam:
         return _parse_cam_scene(data, source, top, order)
+    if "flywheel" in data:
+        from graphmech.scene_flywheel import parse_flywheel_scene
+
+        return parse_flywheel_scene(data, source, top, order)
     elif not any(k in data for k in _LINKAGE_KEYS):
         top.problem(
             "",
@@ -1760,31 +1940,15 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         raise SceneError(problems, source)
     title, show, find = _read_header(top)
     scales = _read_scales(top)
-    frame, link_value = _read_frame(top)
-    frame_link_given = (
-        "frame" in data and isinstance(data["frame"], dict) and "link" in data["frame"]
-    )
-    driver, positions = _read_driver(top, frame)
-    dyads = [_read_dyad(r, k, frame) for k, r in enumerate(top.tables_at("dyad"))]
-    points = [_read_point(r, k) for k, r in enumerate(top.tables_at("point"))]
+    linkage, positions, _ = _read_linkage(top)
     measured = _read_measured(top, positions.labels if positions else None)
     precision = _read_check(top)
     page = _read_page(top)
     top.known.update(_TOP_KEYS)
     top.finish()
-    frame_link = _check_structure(
-        problems, frame, (link_value, frame_link_given), driver, dyads, points
-    )
-    if problems:
+    if problems or linkage is None:
         problems.sort(key=lambda p: _rank(p, order))
-        raise SceneError(problems, source)
-    linkage = Linkage(
-        frame_points={name: xy for name, xy in frame.items() if xy is not None},
-        driver=driver.model,
-        dyads=tuple(d.model for d in dyads),
-        points=tuple(p.model for p in points),
-        frame_link=frame_link or "0",
-    )
+        raise SceneError(problems or [("driver", "invalid")], source)
     return Scene(
         source=source,
         title=title,

@@ -18,6 +18,9 @@ BLOCKS = re.findall(r"```toml\n(.*?)```", (ROOT / "docs" / "scene-format.md").re
 @pytest.mark.parametrize("text", BLOCKS, ids=[f"example{i}" for i in range(len(BLOCKS))])
 def test_documented_scene_constructs_and_agrees_with_exact(text):
     scene = parse_scene(tomllib.loads(text), "doc.toml")
+    if scene.flywheel is not None:  # its analysis is graphmech.flywheel_check's; here it is parsed
+        pytest.importorskip("graphmech.flywheel_check")
+        return
     if scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 

@@ -753,7 +753,8 @@ def doc_blocks() -> list[str]:
 def test_docs_have_an_example_of_every_feature() -> None:
     blocks = doc_blocks()
     scenes = [parse_scene(tomllib.loads(b), "scene-format.md") for b in blocks]
-    scenes = [s for s in scenes if s.cam is None]  # the cam scenes: tests/test_scene_cam.py
+    # the cam and flywheel scenes: tests/test_scene_cam.py, tests/test_scene_flywheel.py
+    scenes = [s for s in scenes if s.cam is None and s.flywheel is None]
     dyad_types = {type(d) for s in scenes for d in s.linkage.dyads}
     assert dyad_types == {RRR, RRP, RPR, RPP}
     assert {type(s.linkage.driver) for s in scenes} == {Crank, SliderInput}
@@ -779,6 +780,9 @@ def test_each_doc_example_parses(index: int, tmp_path: Path) -> None:
     assert scene.source == "example.toml"
     if scene.cam is not None:  # a cam scene
         assert scene.linkage is None and scene.positions is None
+        return
+    if scene.flywheel is not None and scene.linkage is None:  # a machine without a linkage
+        assert scene.positions is None
         return
     assert scene.linkage.frame_link not in scene.linkage.links()
 
@@ -879,6 +883,9 @@ def test_any_mutation_gives_a_scene_or_a_scene_error(data: st.DataObject) -> Non
         assert cam.base_radius > 0 and cam.omega > 0 and cam.rotation in (1, -1)
         assert 0 < scene.cam.step <= math.pi / 2
         assert math.isclose(sum(seg.angle for seg in cam.program.segments), 2 * math.pi)
+        return
+    if scene.flywheel is not None and scene.linkage is None:
+        assert scene.positions is None
         return
     assert all(math.isfinite(v) for v in scene.positions.values)
     assert 1 <= len(scene.positions.values) <= 3600

@@ -1,0 +1,942 @@
+"""Read a flywheel scene: a machine with its masses and loads, and what the flywheel problem asks.
+
+A flywheel scene is a scene with a ``[flywheel]`` table. It may have a linkage (``[frame]``,
+``[driver]``, ``[[dyad]]``, ``[[point]]`` as in a linkage scene, driven by a crank) or none: a
+machine given only by its reduced inertia and moments, such as an engine's torque curve.
+:func:`parse_flywheel_scene` is the rest of :func:`graphmech.scene.parse_scene` for such a
+scene, with the same reader, key paths and messages: every problem is collected, then raised
+once as a :class:`~graphmech.errors.SceneError`. Everything is converted to SI into a
+:class:`~graphmech.mechanisms.machine.Machine`, whose conventions the file follows: φ is
+measured from position 1 in the crank's sense of rotation, and a moment on the crank is
+signed by its power (positive drives).
+
+The format, with examples, is the "Flywheel scenes" section of ``docs/scene-format.md``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from graphmech.errors import SceneError
+from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, Positions
+from graphmech.mechanisms.machine import (
+    TWO_PI,
+    CrankMoment,
+    LinkMoment,
+    Load,
+    Machine,
+    Mass,
+    Motor,
+    SliderLoad,
+    Table,
+)
+from graphmech.scene import (
+    _LINKAGE_KEYS,
+    _MISSING,
+    _QUANTITY_NAME,
+    _SUFFIXES,
+    _TOP_KEYS,
+    MAX_POSITIONS,
+    MAX_TABLE_POINTS,
+    Braking,
+    FlywheelScene,
+    Scene,
+    TrueMotionSpec,
+    _key_text,
+    _label,
+    _not_for,
+    _rank,
+    _read_check,
+    _read_header,
+    _read_linkage,
+    _read_measured,
+    _read_page,
+    _read_scales,
+    _Reader,
+    _say,
+    _type_name,
+    _Value,
+)
+
+#: What a flywheel scene may show: the reduced moments, their work, the increment of kinetic
+#: energy, the reduced inertia, the Wittenbauer (energy–mass) diagram, the indicator diagram;
+#: with a linkage also the mechanism, first.
+FLYWHEEL_SHOW_CHOICES = ("moment", "work", "energy", "inertia", "wittenbauer", "indicator")
+#: What a flywheel scene shows when it does not say (a braking-only scene: nothing).
+FLYWHEEL_SHOW_DEFAULT = ("energy", "wittenbauer")
+#: What needs a cycle of loads to draw: refused in a braking-only scene.
+_CYCLE_PANELS = ("moment", "work", "energy", "wittenbauer", "indicator")
+#: The fewest and the default number of positions N the cycle is divided into.
+MIN_FLYWHEEL_POSITIONS = 4
+DEFAULT_FLYWHEEL_POSITIONS = 12
+#: The methods that design J_F, and how the Wittenbauer diagram's tangents are inclined.
+FLYWHEEL_METHODS = ("wittenbauer", "indicator")
+FLYWHEEL_TANGENTS = ("exact", "book")
+#: Which moment is constant, found from the balance of work over a cycle.
+BALANCES = ("driving", "resisting")
+#: The ``solve_ivp`` methods the true motion may use, and the range of its rtol.
+SOLVERS = ("Radau", "BDF", "LSODA", "RK45", "DOP853")
+RTOL_MIN, RTOL_MAX = 1e-14, 1e-2
+#: The most masses, and the most loads, one machine may have.
+MAX_MACHINE_ITEMS = 100
+#: The types of [[flywheel.load]].
+LOAD_TYPES = ("slider", "moment", "crank")
+
+#: A flywheel scene's own scales: name → kind (drawing mm each), and a linkage's.
+_FLYWHEEL_SCALES = (("phi", "angle"), ("M", "moment"), ("J", "inertia"), ("T", "energy"))
+_LINKAGE_SCALES = (("l", "length"), ("v", "velocity"))
+#: The keys only a slider load has, and only a moment or crank load has.
+_SLIDER_KEYS = ("point", "during", "sense", "s_over_H", "pressure", "force", "piston_diameter", "area")
+_MOMENT_KEYS = ("link", "phi", "moment")
+_CRANK_ONLY = (
+    'a flywheel scene\'s driver is a crank (type = "crank"): the machine is reduced to its crank'
+)
+_NEEDS_LINKAGE = "needs a linkage ([frame], [driver], [[dyad]] …)"
+#: A fraction a/b, as δ may be written ("1/25").
+_FRACTION = re.compile(r"\s*([0-9]+(?:\.[0-9]*)?)\s*/\s*([0-9]+(?:\.[0-9]*)?)\s*")
+
+
+@dataclass
+class _Series:
+    """A list of numbers read from one key: SI values, values as written, key path, unit."""
+
+    si: list[float]
+    path: str
+    unit: str = ""
+    num: float = 1.0
+    den: float = 1.0
+
+    def text(self, si: float) -> str:
+        """An SI value of this series in the user's unit: ``"180°"``, ``"0.5 MPa"``."""
+        x = _label(float(f"{si * self.den / self.num:.6g}"))
+        return f"{x}°" if self.unit == "deg" else f"{x} {self.unit}".rstrip()
+
+
+@dataclass
+class _Machine:
+    """What the rest of the scene tells the [flywheel] table: the linkage (None when there is
+    none, or it is wrong), whether the scene has one at all, and the driver's speed."""
+
+    has_linkage: bool
+    linkage: Linkage | None
+    omega: float | None = None  # |ω| of the driver, rad/s
+    omega_path: str = "driver.omega"
+    omega_given: bool = False  # the driver's omega was read (so ω_m is known or reported)
+
+
+def _count_text(value: Any) -> str:
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return _label(float(value)) if math.isfinite(value) else repr(value)
+    return _type_name(value)
+
+
+# --------------------------------------------------------------------------------------------
+# Lists and tables
+# --------------------------------------------------------------------------------------------
+
+
+def _series(r: _Reader, base: str, kind: str) -> _Series | None:
+    """A list of at least two numbers with a unit (``phi_deg = [0, 180, 360]``), in SI."""
+    given = r.quantity(base, kind)
+    if given is None:
+        return None
+    path = r.at(given.key)
+    written = _number_list(r, given.value, path)
+    if written is None:
+        return None
+    if given.key == base:
+        unit = r.units.get(kind) or ""
+    else:
+        unit = _SUFFIXES[kind][given.key[len(base) + 1 :]]
+    return _Series([given.si(x) for x in written], path, unit, given.num, given.den)
+
+
+def _number_list(r: _Reader, value: Any, path: str) -> list[float] | None:
+    if not isinstance(value, list):
+        r.problem(path, f"must be a list of numbers, not {_type_name(value)}")
+        return None
+    if len(value) < 2:
+        r.problem(path, f"must have at least 2 points, not {len(value)}")
+        return None
+    if len(value) > MAX_TABLE_POINTS:
+        r.problem(path, f"too many points ({len(value)} > {MAX_TABLE_POINTS})")
+        return None
+    items = [r.number(v, f"{path}[{i}]") for i, v in enumerate(value)]
+    return None if any(x is None for x in items) else items  # type: ignore[return-value]
+
+
+def _non_decreasing(r: _Reader, s: _Series, what: str) -> bool:
+    for i in range(1, len(s.si)):
+        if s.si[i] < s.si[i - 1]:
+            r.problem(
+                f"{s.path}[{i}]",
+                f"{s.text(s.si[i])} comes after {s.text(s.si[i - 1])}: the {what} must not "
+                "decrease (a repeated value is a step)",
+            )
+            return False
+    return True
+
+
+def _same_length(r: _Reader, x: _Series, y: _Series, x_key: str, what: str) -> bool:
+    """``y`` has one value for each of ``x`` (the key ``x_key``)."""
+    if len(x.si) == len(y.si):
+        return True
+    r.problem(y.path, f"has {len(y.si)} values, {x_key} has {len(x.si)}: one {what} for each")
+    return False
+
+
+def _phi_table(r: _Reader, cycle: float | None) -> Table | None:
+    """``phi`` (non-decreasing, within [0, Φ]) and ``moment``: a moment against φ."""
+    phi = _series(r, "phi", "angle")
+    moment = _series(r, "moment", "moment")
+    ok = phi is not None and _non_decreasing(r, phi, "angles")
+    if phi is not None and ok and cycle is not None:
+        for i, x in enumerate(phi.si):
+            if x < 0 or x > cycle * (1 + 1e-12):
+                r.problem(
+                    f"{phi.path}[{i}]",
+                    f"{phi.text(x)} is outside the cycle: φ runs from 0 at position 1 to "
+                    f"Φ = {phi.text(cycle)}",
+                )
+                ok = False
+                break
+    if phi is None or moment is None or not ok:
+        return None
+    if not _same_length(r, phi, moment, phi.path.rsplit(".", 1)[-1], "moment"):
+        return None
+    angles = tuple(min(v, cycle) if cycle is not None else v for v in phi.si)
+    return Table(angles, tuple(v + 0.0 for v in moment.si))
+
+
+def _fractions(r: _Reader) -> _Series | None:
+    """``s_over_H``: the slider's displacement over its stroke, 0 first, 1 last, rising."""
+    value = r.raw(
+        "s_over_H",
+        required=True,
+        hint="the indicator diagram's abscissae s/H, from 0 to 1, e.g. s_over_H = [0, 0.5, 1]",
+    )
+    if value is _MISSING:
+        return None
+    path = r.at("s_over_H")
+    written = _number_list(r, value, path)
+    if written is None:
+        return None
+    s = _Series(list(written), path)
+    for i, x in enumerate(written):
+        if not 0 <= x <= 1:
+            r.problem(
+                f"{path}[{i}]",
+                f"must lie between 0 and 1, not {_label(x)}: s/H is the slider's displacement "
+                "over its stroke",
+            )
+            return None
+    if not _non_decreasing(r, s, "values"):
+        return None
+    if written[0] != 0:
+        r.problem(f"{path}[0]", f"must be 0, not {_label(written[0])}: s/H runs from 0 to 1")
+        return None
+    if written[-1] != 1:
+        r.problem(
+            f"{path}[{len(written) - 1}]",
+            f"must be 1, not {_label(written[-1])}: s/H runs from 0 to 1",
+        )
+        return None
+    return s
+
+
+def _non_negative(r: _Reader, s: _Series | None, why: str) -> _Series | None:
+    if s is None:
+        return None
+    for i, x in enumerate(s.si):
+        if x < 0:
+            r.problem(f"{s.path}[{i}]", f"must be ≥ 0, not {s.text(x)}: {why}")
+            return None
+    return s
+
+
+def _at_least_zero(r: _Reader, v: _Value | None) -> _Value | None:
+    if v is not None and v.si < 0:
+        r.problem(v.path, f"must be ≥ 0, not {v.text()}")
+        return None
+    return v
+
+
+# --------------------------------------------------------------------------------------------
+# [flywheel] and its tables
+# --------------------------------------------------------------------------------------------
+
+
+def _read_count(fw: _Reader) -> int | None:
+    """``positions``: N, a whole number 4 … 3600 (12 when absent)."""
+    value = fw.raw("positions")
+    if value is _MISSING:
+        return DEFAULT_FLYWHEEL_POSITIONS
+    bounds = f"{MIN_FLYWHEEL_POSITIONS} … {MAX_POSITIONS}"
+    if isinstance(value, bool) or not isinstance(value, int):
+        fw.problem(
+            fw.at("positions"),
+            f"must be a whole number of positions ({bounds}), not {_count_text(value)}",
+        )
+        return None
+    if not MIN_FLYWHEEL_POSITIONS <= value <= MAX_POSITIONS:
+        why = "too few to draw the diagrams" if value < MIN_FLYWHEEL_POSITIONS else "absurd"
+        fw.problem(
+            fw.at("positions"),
+            f"must lie between {MIN_FLYWHEEL_POSITIONS} and {MAX_POSITIONS}, not {value}: {why}",
+        )
+        return None
+    return value
+
+
+def _read_delta(fw: _Reader, required: bool) -> float | None:
+    """``delta``: δ, a number or a fraction "1/25", 0 < δ < 2."""
+    value = fw.raw(
+        "delta",
+        required=required,
+        hint='the coefficient of speed fluctuation δ = (ω_max − ω_min)/ω_m, e.g. delta = 0.04 '
+        'or "1/25"',
+    )
+    if value is _MISSING:
+        return None
+    path = fw.at("delta")
+    if isinstance(value, str):
+        m = _FRACTION.fullmatch(value)
+        if m is None or float(m.group(2)) == 0:
+            fw.problem(
+                path, f'{_say(value)} is not a fraction: write a number (0.04) or "1/25"'
+            )
+            return None
+        delta, text = float(m.group(1)) / float(m.group(2)), _say(value)
+    else:
+        x = fw.number(value, path)
+        if x is None:
+            return None
+        delta, text = x, _label(x)
+    if not 0 < delta < 2:
+        fw.problem(
+            path,
+            f"must lie between 0 and 2, not {text}: δ = (ω_max − ω_min)/ω_m, and ω_min > 0",
+        )
+        return None
+    return delta
+
+
+def _read_cycle(fw: _Reader) -> float | None:
+    """``cycle``: Φ, dividing one turn a whole number of times (360° when absent)."""
+    v = fw.value("cycle", "angle", required=False, positive=True)
+    if v is None:
+        return TWO_PI if fw.present("cycle") is None else None
+    k = TWO_PI / v.si
+    if not (math.isfinite(k) and 0.5 <= k <= MAX_POSITIONS) or abs(k - round(k)) > 1e-9 * k:
+        fw.problem(
+            v.path,
+            f"must divide one turn a whole number of times (360°, 180°, 120° …), not {v.text()}",
+        )
+        return None
+    return TWO_PI / round(k)
+
+
+def _read_pole_distance(fw: _Reader) -> float | None:
+    """``pole_distance_mm``: H, drawing mm (> 0), always in millimetres of drawing."""
+    fw.known.add("pole_distance_mm")
+    for key in list(fw.table):
+        if key == "pole_distance" or (key.startswith("pole_distance_") and key != "pole_distance_mm"):
+            fw.used.add(key)
+            fw.problem(fw.at(key), "H is a distance on the drawing: write pole_distance_mm")
+    value = fw.raw("pole_distance_mm")
+    if value is _MISSING:
+        return None
+    return fw.number(value, fw.at("pole_distance_mm"), positive=True)
+
+
+def _read_masses(fw: _Reader, machine: _Machine) -> tuple[list[Mass], bool]:
+    """[[flywheel.mass]]: the moving links' inertias; whether any was given."""
+    if "mass" in fw.table and not machine.has_linkage:
+        fw.used.add("mass")
+        fw.known.add("mass")
+        fw.problem(
+            fw.at("mass"),
+            f"[[flywheel.mass]] {_NEEDS_LINKAGE}: without one give the machine's whole "
+            "reduced inertia as flywheel.inertia_kgm2",
+        )
+        return [], True
+    readers = fw.tables_at("mass")
+    if len(readers) > MAX_MACHINE_ITEMS:
+        fw.problem(fw.at("mass"), f"too many masses ({len(readers)} > {MAX_MACHINE_ITEMS})")
+        return [], True
+    links = machine.linkage.links() if machine.linkage is not None else None
+    masses: list[Mass] = []
+    seen: dict[str, str] = {}
+    for r in readers:
+        value = r.raw("link", required=True, hint='the number of the link, e.g. link = "2"')
+        link = None if value is _MISSING else r.link_id(value, r.at("link"))
+        value = r.raw("point", required=True, hint='its centre of mass S, a point of that link')
+        point = None if value is _MISSING else r.point_name(value, r.at("point"))
+        mass = _at_least_zero(r, r.value("mass", "mass"))
+        inertia = _at_least_zero(r, r.value("inertia", "inertia", required=False))
+        r.finish()
+        if link is not None and links is not None:
+            if link in seen:
+                r.problem(r.at("link"), f"link {link} already has its mass ({seen[link]})")
+                link = None
+            elif link == machine.linkage.frame_link:  # type: ignore[union-attr]
+                r.problem(r.at("link"), f"link {link} is the frame: it does not move")
+                link = None
+            elif link not in links:
+                r.problem(
+                    r.at("link"),
+                    f"link {link} is not a moving link (links: {', '.join(links)})",
+                )
+                link = None
+            else:
+                seen[link] = r.path
+                if point is not None and point not in links[link]:
+                    r.problem(
+                        r.at("point"),
+                        f"{point} is not a point of link {link} (it carries "
+                        f"{', '.join(links[link])})",
+                    )
+                    point = None
+        if link is not None and point is not None and mass is not None and (
+            inertia is not None or r.present("inertia") is None
+        ):
+            masses.append(Mass(link, point, mass.si, inertia.si if inertia else 0.0))
+    return masses, bool(readers)
+
+
+def _read_load(r: _Reader, machine: _Machine, cycle: float | None) -> Load | None:
+    """One [[flywheel.load]]: a slider's indicator diagram, a moment on a link, or on the crank."""
+    kind = r.string("type", choices=LOAD_TYPES, required=True)
+    if kind is None:  # nothing to judge the other keys by
+        r.ignore(*_SLIDER_KEYS, *_MOMENT_KEYS)
+        r.finish()
+        return None
+    if kind != "crank" and not machine.has_linkage:
+        r.problem(
+            r.at("type"),
+            f'a "{kind}" load {_NEEDS_LINKAGE}: without one give the moments reduced to the '
+            'crank, type = "crank"',
+        )
+        r.ignore(*_SLIDER_KEYS, *_MOMENT_KEYS)
+        r.finish()
+        return None
+    if kind == "slider":
+        return _read_slider_load(r, machine)
+    _not_for(r, _SLIDER_KEYS, f'only for type = "slider" (this load is {kind})')
+    link: str | None = None
+    if kind == "moment":
+        value = r.raw("link", required=True, hint='the number of the link it acts on, e.g. link = "3"')
+        link = None if value is _MISSING else r.link_id(value, r.at("link"))
+    else:
+        _not_for(
+            r,
+            ["link"],
+            'a "crank" load acts on the crank itself: leave link out (or write type = "moment")',
+        )
+    table = _phi_table(r, cycle)
+    r.finish()
+    if kind == "crank":
+        return None if table is None else CrankMoment(table)
+    linkage = machine.linkage
+    if link is not None and linkage is not None:
+        links = linkage.links()
+        if link == linkage.frame_link:
+            r.problem(r.at("link"), f"link {link} is the frame: a moment on it does no work")
+            return None
+        if link not in links:
+            r.problem(r.at("link"), f"link {link} is not a moving link (links: {', '.join(links)})")
+            return None
+    return None if link is None or table is None else LinkMoment(link, table)
+
+
+def _read_slider_load(r: _Reader, machine: _Machine) -> SliderLoad | None:
+    """A force on a slider along its guide, from its indicator diagram F(s/H) or p(s/H)·A."""
+    _not_for(r, _MOMENT_KEYS, 'only for type = "moment" or "crank" (this load is slider)')
+    value = r.raw("point", required=True, hint='the slider\'s point, e.g. point = "C"')
+    point = None if value is _MISSING else r.point_name(value, r.at("point"))
+    during = r.string("during", choices=("forward", "backward", "both"), required=True)
+    sense = r.string("sense", choices=("forward", "backward"), required=True)
+    s = _fractions(r)
+    has_force, has_pressure = r.present("force") is not None, r.present("pressure") is not None
+    magnitude = "the diagram gives the force's magnitude; sense gives its direction"
+    force = pressure = None
+    if has_force:
+        force = _non_negative(r, _series(r, "force", "force"), magnitude)
+    if has_pressure:
+        pressure = _non_negative(r, _series(r, "pressure", "pressure"), magnitude)
+    area: float | None = None
+    if has_pressure and has_force:
+        r.problem(
+            r.at(r.present("force") or "force"),
+            "give force or pressure (with the piston's area), not both",
+        )
+        r.ignore("piston_diameter", "area")
+    elif has_pressure:
+        diameter = r.value("piston_diameter", "length", required=False, positive=True)
+        given = r.value("area", "area", required=False, positive=True)
+        if r.present("piston_diameter") is not None and r.present("area") is not None:
+            r.problem(
+                r.at(r.present("area") or "area"),
+                "give piston_diameter or area, not both",
+            )
+        elif r.present("piston_diameter") is None and r.present("area") is None:
+            r.problem(
+                r.at("piston_diameter"),
+                "missing: with pressure give piston_diameter_mm (the area is π d²/4) or area_mm2",
+            )
+        elif diameter is not None:
+            area = math.pi * diameter.si**2 / 4
+        elif given is not None:
+            area = given.si
+    elif has_force:
+        _not_for(r, ["piston_diameter", "area"], "only with pressure (force is already a force)")
+    else:
+        r.value("piston_diameter", "length", required=False, positive=True)
+        r.value("area", "area", required=False, positive=True)
+        r.problem(
+            r.at("force"),
+            "missing: give force_N = [...] (one per s_over_H), or pressure_MPa = [...] with "
+            "piston_diameter_mm",
+        )
+    r.finish()
+    y = force if has_force else pressure
+    if s is None or y is None or not _same_length(r, s, y, "s_over_H", "value"):
+        return None
+    if (has_force and has_pressure) or (has_pressure and area is None):
+        return None
+    forces = tuple(y.si) if has_force else tuple(p * area for p in y.si)  # type: ignore[operator]
+    linkage = machine.linkage
+    if point is None or during is None or sense is None or linkage is None:
+        return None
+    sliders = {d.c: d.guide.angle for d in linkage.dyads if isinstance(d, (RRP, RPP))}
+    if point not in sliders:
+        which = f"this linkage's: {', '.join(sliders)}" if sliders else "this linkage has none"
+        r.problem(
+            r.at("point"),
+            f"{point} is not a slider: a slider load acts on the slider point of an RRP or RPP "
+            f"dyad ({which})",
+        )
+        return None
+    return SliderLoad(
+        point,
+        sliders[point],
+        1 if sense == "forward" else -1,
+        during,  # type: ignore[arg-type]
+        Table(tuple(s.si), forces),
+    )
+
+
+def _read_motor(
+    fw: _Reader, balance: str | None, omega: float | None, braking_only: bool
+) -> tuple[Motor | None, bool]:
+    """[flywheel.motor]: stiffness or synchronous speed; whether it was valid (or absent)."""
+    m = fw.table_at("motor")
+    if m is None:
+        return None, "motor" not in fw.table
+    before = len(m.problems)
+    if braking_only:
+        fw.problem(
+            fw.at("motor"),
+            "only with [[flywheel.load]]: a motor drives the machine through its cycle, and a "
+            "braking-only scene has none",
+        )
+    elif balance == "resisting":
+        fw.problem(
+            fw.at("motor"),
+            'only with balance = "driving": a motor\'s characteristic gives the driving moment, '
+            "and here the constant moment is the resistance",
+        )
+    value = m.raw("stiffness")
+    stiffness = None if value is _MISSING else m.number(value, m.at("stiffness"), positive=True)
+    synchronous = m.value("synchronous", "omega", required=False, positive=True)
+    syn_key = m.present("synchronous")
+    if value is not _MISSING and syn_key is not None:
+        m.problem(m.at(syn_key), "give stiffness or synchronous, not both")
+    elif value is _MISSING and syn_key is None:
+        m.problem(
+            m.path,
+            "give stiffness (e.g. stiffness = 1e5) or the synchronous speed (synchronous_rpm, "
+            "above the mean speed)",
+        )
+    elif synchronous is not None and omega is not None and not synchronous.si > omega:
+        m.problem(
+            synchronous.path,
+            f"must exceed the mean speed ω_m = {synchronous.text(omega)}: a motor gives no "
+            "moment at its synchronous speed",
+        )
+    m.finish()
+    if len(m.problems) != before:
+        return None, False
+    if stiffness is not None:
+        return Motor(stiffness=stiffness), True
+    if synchronous is not None:
+        return Motor(synchronous=synchronous.si), True
+    return None, False
+
+
+def _read_true_motion(fw: _Reader, braking_only: bool) -> tuple[TrueMotionSpec | None, bool]:
+    """[flywheel.true_motion]: the solver and its rtol; whether it was valid (or absent)."""
+    t = fw.table_at("true_motion")
+    if t is None:
+        return None, "true_motion" not in fw.table
+    before = len(t.problems)
+    if braking_only:
+        fw.problem(
+            fw.at("true_motion"),
+            "only with [[flywheel.load]]: the true motion is run with the designed J_F, and a "
+            "braking-only scene designs none",
+        )
+    solver = t.string("solver", choices=SOLVERS, default="Radau")
+    value = t.raw("rtol")
+    rtol = 1e-10
+    if value is not _MISSING:
+        x = t.number(value, t.at("rtol"), positive=True)
+        if x is not None and not RTOL_MIN <= x <= RTOL_MAX:
+            t.problem(t.at("rtol"), f"must lie between {RTOL_MIN:g} and {RTOL_MAX:g}, not {x:g}")
+        elif x is not None:
+            rtol = x
+    t.finish()
+    if len(t.problems) != before or solver is None:
+        return None, False
+    return TrueMotionSpec(solver, rtol), True
+
+
+def _read_braking(fw: _Reader) -> tuple[Braking | None, bool]:
+    """[flywheel.braking]: the brake's moment (> 0) and the time limit (> 0, optional)."""
+    b = fw.table_at("braking")
+    if b is None:
+        return None, "braking" not in fw.table
+    moment = b.value("moment", "moment", positive=True)
+    limit = b.value("time_limit", "time", required=False, positive=True)
+    b.finish()
+    if moment is None or (limit is None and b.present("time_limit") is not None):
+        return None, False
+    return Braking(moment.si, None if limit is None else limit.si), True
+
+
+def _read_flywheel(
+    fw: _Reader, machine: _Machine, start: float | None
+) -> tuple[FlywheelScene | None, int | None]:
+    """[flywheel]: the flywheel problem and N (None when invalid)."""
+    problems = fw.problems
+    before = len(problems)
+    loads_value = fw.table.get("load", _MISSING)
+    no_loads = loads_value is _MISSING or loads_value == []
+    braking_only = _braking_only(fw.table)
+
+    count = _read_count(fw)
+    delta = _read_delta(fw, required=not braking_only)
+    omega: float | None
+    if machine.has_linkage:
+        _not_for(
+            fw,
+            ["speed"],
+            f"given twice: with a linkage the mean speed ω_m is the driver's omega "
+            f"({machine.omega_path})",
+        )
+        omega = machine.omega
+    else:
+        speed = fw.value("speed", "omega", positive=True)
+        omega = None if speed is None else speed.si
+    cycle = _read_cycle(fw)
+    balance = fw.string("balance", choices=BALANCES, required=not no_loads, default="driving")
+    method = fw.string("method", choices=FLYWHEEL_METHODS, default="wittenbauer")
+    tangents = fw.string("tangents", choices=FLYWHEEL_TANGENTS, default="exact")
+    pole = _read_pole_distance(fw)
+    inertia = _at_least_zero(fw, fw.value("inertia", "inertia", required=False))
+    inertia_ok = inertia is not None or fw.present("inertia") is None
+    masses, masses_given = _read_masses(fw, machine)
+
+    fw.known.add("load")
+    readers = fw.tables_at("load")
+    loads: list[Load | None] = []
+    if len(readers) > MAX_MACHINE_ITEMS:
+        fw.problem(fw.at("load"), f"too many loads ({len(readers)} > {MAX_MACHINE_ITEMS})")
+    else:
+        loads = [_read_load(r, machine, cycle) for r in readers]
+
+    motor, motor_ok = _read_motor(fw, balance, omega, braking_only)
+    true_motion, true_ok = _read_true_motion(fw, braking_only)
+    braking, braking_ok = _read_braking(fw)
+    if no_loads and "braking" not in fw.table:
+        fw.problem(fw.at("load"), "no [[flywheel.load]]: nothing for the flywheel to smooth")
+    no_inertia = inertia_ok and not masses_given and (inertia is None or inertia.si == 0)
+    if braking_only and braking is not None and no_inertia:
+        fw.problem(
+            fw.at("braking"),
+            "nothing to stop: a braking-only scene designs no flywheel, so give the "
+            "machine's reduced inertia (inertia_kgm2) or its [[flywheel.mass]]",
+        )
+    fw.finish()
+
+    complete = (
+        len(problems) == before
+        and all(x is not None for x in (count, omega, cycle, balance, method, tangents))
+        and (delta is not None or braking_only)
+        and (pole is not None or "pole_distance_mm" not in fw.table)
+        and inertia_ok
+        and motor_ok
+        and true_ok
+        and braking_ok
+        and all(load is not None for load in loads)
+        and (machine.linkage is not None or not machine.has_linkage)
+        and (start is not None or not machine.has_linkage)
+    )
+    if not complete:
+        return None, count
+    model = Machine(
+        linkage=machine.linkage,
+        start=start if start is not None else 0.0,
+        cycle=cycle,  # type: ignore[arg-type]
+        omega_m=omega,  # type: ignore[arg-type]
+        delta=delta if delta is not None else math.nan,
+        masses=tuple(masses),
+        loads=tuple(loads),  # type: ignore[arg-type]
+        inertia=inertia.si if inertia is not None else 0.0,
+        balance=balance,  # type: ignore[arg-type]
+        motor=motor,
+    )
+    scene = FlywheelScene(
+        machine=model,
+        positions=count,  # type: ignore[arg-type]
+        method=method,  # type: ignore[arg-type]
+        tangents=tangents,  # type: ignore[arg-type]
+        pole_distance=pole,
+        true_motion=true_motion,
+        braking=braking,
+    )
+    return scene, count
+
+
+# --------------------------------------------------------------------------------------------
+# The driver of a flywheel scene's linkage, and position labels 1 … N
+# --------------------------------------------------------------------------------------------
+
+
+def _driver_rules(top: _Reader) -> None:
+    """A flywheel scene's driver is a crank, at one angle (position 1), with no epsilon."""
+    driver = top.table.get("driver")
+    if not isinstance(driver, dict) or driver.get("type") != "crank":
+        return
+    for key, value in driver.items():
+        if (key == "angle" or key.startswith("angle_")) and isinstance(value, (list, dict)):
+            top.problem(
+                f"driver.{_key_text(key)}",
+                "one number in a flywheel scene: the crank's angle at position 1 (the "
+                "[flywheel] positions divide the cycle from there)",
+            )
+        if key == "epsilon" or key.startswith("epsilon_"):
+            top.problem(
+                f"driver.{_key_text(key)}",
+                "not in a flywheel scene: the crank turns at the mean speed ω_m on average, "
+                "and how far it strays is what the flywheel limits; leave epsilon out",
+            )
+
+
+def _braking_only(table: Any) -> bool:
+    """A [flywheel] with [flywheel.braking] and no [[flywheel.load]]: the run-down alone."""
+    if not isinstance(table, dict):
+        return False
+    loads = table.get("load", _MISSING)
+    return (loads is _MISSING or loads == []) and "braking" in table
+
+
+def _check_energy_scale(top: _Reader, scales: Mapping[str, float], pole: float | None) -> None:
+    """Graphical integration ties the scales: μT = μM·μφ·H. All four given must agree."""
+    if pole is None or not all(k in scales for k in ("T", "M", "phi")):
+        return
+    tied = scales["M"] * scales["phi"] * pole
+    if abs(scales["T"] - tied) <= 1e-9 * scales["T"]:
+        return
+    table = top.table.get("scales")
+    key = next((k for k in table if k == "T" or k.startswith("T_")), "T") if isinstance(table, dict) else "T"
+    top.problem(
+        f"scales.{_key_text(key)}",
+        f"μT = {scales['T']:.6g} J/mm contradicts μM·μφ·H = {tied:.6g} J/mm (H = pole_distance_mm "
+        f"= {_label(pole)}): graphical integration ties the four; give three of them",
+    )
+
+
+def _label_problem(key: str, count: int) -> str | None:
+    """Why ``key``'s ``@label`` is not a position 1 … N, or None."""
+    if "@" not in key:
+        return None
+    label = key.split("@", 1)[1]
+    if label.isdigit() and str(int(label)) == label and 1 <= int(label) <= count:
+        return None
+    return f"no position {label}: the positions are numbered 1 … {count}"
+
+
+def _check_find(top: _Reader, count: int | None) -> None:
+    """``find``: quantity names, with ``@k`` for a position 1 … N."""
+    value = top.table.get("find")
+    if not isinstance(value, list):
+        return
+    for i, item in enumerate(value):
+        if not isinstance(item, str) or not item.strip():
+            continue  # reported by _read_header
+        if not _QUANTITY_NAME.fullmatch(item):
+            top.problem(
+                f"find[{i}]",
+                f"{_say(item)} is not a quantity name: letters, digits and underscores, then "
+                "@position if it is one position's (J_F, M_b, Jp@1)",
+            )
+        elif count is not None:
+            reason = _label_problem(item, count)
+            if reason:
+                top.problem(f"find[{i}]", reason)
+
+
+# --------------------------------------------------------------------------------------------
+# Public
+# --------------------------------------------------------------------------------------------
+
+
+def parse_flywheel_scene(
+    data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]
+) -> Scene:
+    """The rest of :func:`graphmech.scene.parse_scene` for a scene with a [flywheel] table.
+
+    Parameters
+    ----------
+    data : dict
+        The TOML document.
+    source : str
+        The name used in messages.
+    top : _Reader
+        The top-level reader, with [units] already read (its problems are kept).
+    order : mapping
+        Top-level key → its place in the file, to put problems in file order.
+
+    Returns
+    -------
+    Scene
+        With ``flywheel`` set; ``linkage`` and ``positions`` (the crank's angles at positions
+        1 … N, labelled "1" … "N") when the scene has a linkage, else None.
+
+    Raises
+    ------
+    SceneError
+        With every problem found, the first in file order in the message.
+
+    Examples
+    --------
+    >>> from graphmech.scene import parse_scene
+    >>> scene = parse_scene({
+    ...     "flywheel": {"speed_rpm": 620, "delta": "1/80", "cycle_deg": 180,
+    ...                  "balance": "resisting", "inertia_kgm2": 0.02,
+    ...                  "load": [{"type": "crank", "phi_deg": [0, 30, 60, 180],
+    ...                            "moment_Nm": [0, 150, 150, 0]}]},
+    ... }, "engine.toml")
+    >>> machine = scene.flywheel.machine
+    >>> machine.linkage is None, machine.delta, round(machine.cycle, 6), scene.flywheel.positions
+    (True, 0.0125, 3.141593, 12)
+    >>> machine.loads[0].table.y
+    (0.0, 150.0, 150.0, 0.0)
+    >>> parse_scene({"flywheel": {"speed_rpm": 620, "delta": 0.04, "balance": "driving"}}, "x.toml")
+    Traceback (most recent call last):
+    ...
+    graphmech.errors.SceneError: x.toml: flywheel.load: no [[flywheel.load]]: nothing for the flywheel to smooth
+    """
+    problems = top.problems
+    has_linkage = any(k in data for k in _LINKAGE_KEYS)
+    braking_only = _braking_only(data.get("flywheel"))
+    choices = (("mechanism",) if has_linkage else ()) + FLYWHEEL_SHOW_CHOICES
+    title, show, find = _read_header(top, choices, () if braking_only else FLYWHEEL_SHOW_DEFAULT)
+    if braking_only and isinstance(data.get("show"), list):
+        for i, item in enumerate(data["show"]):
+            if isinstance(item, str) and item in _CYCLE_PANELS and item in show:
+                top.problem(
+                    f"show[{i}]",
+                    f"{item} needs [[flywheel.load]]: a braking-only scene has no cycle to draw "
+                    "(show mechanism or inertia, or leave show out)",
+                )
+    refuse = () if has_linkage else tuple(
+        (name, "only with a linkage: a flywheel scene without one has no mechanism to draw")
+        for name, _ in _LINKAGE_SCALES
+    )
+    scales = _read_scales(
+        top,
+        entries=_FLYWHEEL_SCALES + (_LINKAGE_SCALES if has_linkage else ()),
+        refuse=refuse,
+    )
+
+    machine = _Machine(has_linkage, None)
+    start: float | None = None
+    if has_linkage:
+        linkage, positions, driver = _read_linkage(top, _CRANK_ONLY)
+        _driver_rules(top)
+        machine.linkage = linkage
+        raw = top.table.get("driver")
+        if isinstance(raw, dict):
+            key = next((k for k in raw if k == "omega" or k.startswith("omega_")), "omega")
+            machine.omega_path = f"driver.{_key_text(key)}"
+        if isinstance(driver.model, Crank):
+            if driver.model.omega == 0:
+                top.problem(
+                    machine.omega_path,
+                    "must not be 0: it is the crank's mean speed ω_m, and its sign the sense "
+                    "of rotation",
+                )
+            else:
+                machine.omega = abs(driver.model.omega)
+        if positions is not None and len(positions.values) == 1:
+            start = positions.values[0]
+
+    fw = top.table_at("flywheel")
+    flywheel, count = (None, None) if fw is None else _read_flywheel(fw, machine, start)
+    if flywheel is not None:
+        _check_energy_scale(top, scales, flywheel.pole_distance)
+    _check_find(top, count)
+    measured = _read_measured(top, None)
+    if count is not None:
+        for key, _ in measured:
+            reason = _label_problem(key, count)
+            if reason:
+                top.problem(f"measured.{_key_text(key)}", reason)
+    precision = _read_check(top)
+    page = _read_page(top)
+    top.known.update(_TOP_KEYS)
+    top.finish()
+    if problems or flywheel is None:
+        table = data.get("flywheel")
+        sub_order = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
+        problems.sort(key=lambda p: _rank(p, order, sub_order, "flywheel"))
+        raise SceneError(problems or [("flywheel", "invalid")], source)
+    model = flywheel.machine
+    positions_out = None
+    if model.linkage is not None:
+        positions_out = Positions(
+            tuple(model.crank_angle(phi) for phi in model.positions(flywheel.positions)),
+            tuple(str(k) for k in range(1, flywheel.positions + 1)),
+        )
+    return Scene(
+        source=source,
+        title=title,
+        show=show,
+        find=find,
+        scales=scales,
+        linkage=model.linkage,
+        positions=positions_out,
+        measured=measured,
+        precision_mm=precision,
+        page=page,
+        flywheel=flywheel,
+    )
+
+
+__all__ = [
+    "BALANCES",
+    "DEFAULT_FLYWHEEL_POSITIONS",
+    "FLYWHEEL_METHODS",
+    "FLYWHEEL_SHOW_CHOICES",
+    "FLYWHEEL_SHOW_DEFAULT",
+    "FLYWHEEL_TANGENTS",
+    "MIN_FLYWHEEL_POSITIONS",
+    "SOLVERS",
+    "parse_flywheel_scene",
+]
