@@ -312,7 +312,7 @@ def wittenbauer_records(repeat: int = 5, ns: tuple[int, ...] = WITTENBAUER_N) ->
     m = compressor_machine()
     ex = ExactMachine(m)
     refs = {"exact": ex.wittenbauer("exact").J_F, "book": ex.wittenbauer("book").J_F, "indicator": ex.indicator().J_F}
-    dw_ref = ex.indicator().DeltaW_max
+    dw_ref = ex.indicator().delta_W
     records = []
     for case, ref in refs.items():
         need = ("indicator",) if case == "indicator" else ("wittenbauer",)

@@ -260,8 +260,9 @@ def _bench(args: argparse.Namespace) -> int:
         print(text)
     else:
         for r in doc["records"]:
-            print(f"{r['method']:<18} {r['case']:<24} n={r['n']:<6}{r['seconds'] * 1e6:>12.1f} µs"
-                  f"   max rel error {r['max_rel_error']:.1e}")
+            err = r["max_rel_error"]
+            tail = f"max rel error {err:.1e}" if err is not None else r.get("note", "")
+            print(f"{r['method']:<18} {r['case']:<24} n={r['n']:<6}{r['seconds'] * 1e6:>12.1f} µs   {tail}")
         for note in doc.get("notes", []):
             print(note)
     return EXIT_OK

@@ -37,8 +37,9 @@ def error_time_plots(records: list[dict[str, Any]], out_dir: Path) -> list[Path]
 
     Notes
     -----
-    One line per case. An error of exactly 0 (or a time ≤ 0) cannot be shown on a log axis: such
-    points are left out and counted in the panel. The same records give byte-identical files.
+    One line per case. An error of exactly 0 or None (a record that measures steps, not accuracy),
+    or a time ≤ 0, cannot be shown on a log axis: such points are left out and counted in the panel.
+    The same records give byte-identical files.
     """
     import io
 
@@ -60,7 +61,7 @@ def error_time_plots(records: list[dict[str, Any]], out_dir: Path) -> list[Path]
                 rs = sorted((r for r in rows if r["case"] == case), key=lambda r: r["n"])
                 style = {"marker": _MARKERS[i % len(_MARKERS)], "markersize": 4.0, "linewidth": 1.2, "label": case}
                 for ax, key, scale in ((ax_e, "max_rel_error", 1.0), (ax_t, "seconds", 1e3)):
-                    pts = [(r["n"], r[key] * scale) for r in rs if r[key] > 0]
+                    pts = [(r["n"], r[key] * scale) for r in rs if r[key] is not None and r[key] > 0]
                     left_out[key] += len(rs) - len(pts)
                     if pts:
                         ax.plot([p[0] for p in pts], [p[1] for p in pts], **style)
@@ -74,7 +75,7 @@ def error_time_plots(records: list[dict[str, Any]], out_dir: Path) -> list[Path]
                 ax.set_xlabel("n (positions or divisions per run, count)")
                 ax.grid(True, which="major", linewidth=0.5, alpha=0.5)
                 if left_out[key]:
-                    what = "zero error" if key == "max_rel_error" else "no time"
+                    what = "zero or no error" if key == "max_rel_error" else "no time"
                     ax.text(0.02, 0.02, f"{left_out[key]} point(s) with {what} not shown (log axis)",
                             transform=ax.transAxes, fontsize=7.0)
                 if ax.lines:
