@@ -91,12 +91,24 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
     if scene.flywheel is not None:
         from graphmech.flywheel_check import analyse_flywheel
         from graphmech.methods.flywheel_figures import flywheel_sheet
+        from graphmech.render.primitives import Sheet
 
         fan = analyse_flywheel(scene)
-        if fan.design is None:
-            raise SceneError([("show", "nothing to draw: this flywheel scene asks for no diagram "
-                                       "(a braking check has none); use graphmech check")], scene.source)
-        sheet = flywheel_sheet(scene.title, fan.design, list(scene.show), page_size(scene), footer)
+        cycle_panels = [p for p in scene.show if p not in ("mechanism", "rundown")]
+        if fan.design is None and not any(p in scene.show for p in ("mechanism", "rundown")):
+            raise SceneError([("show", "nothing to draw: this flywheel scene asks for no diagram; "
+                                       "use graphmech check")], scene.source)
+        panels: list[Any] = []
+        if "mechanism" in scene.show and scene.linkage is not None:
+            panels += _mechanism_panels(scene, footer)
+        if cycle_panels and fan.design is not None:
+            panels += flywheel_sheet(scene.title, fan.design, cycle_panels, page_size(scene), footer).panels
+        if "rundown" in scene.show:
+            from graphmech.methods.braking_figures import rundown_panel
+
+            b = scene.flywheel.braking
+            panels.append(rundown_panel(fan.braking_inertia, scene.flywheel.machine.omega_m, b.moment, b.time_limit))
+        sheet = Sheet(scene.title, tuple(panels), page_size(scene), footer)
         warnings = list(fan.warnings)
         return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
     if scene.cam is not None:
@@ -123,6 +135,23 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
     warnings = list(an.warnings)
     svg = render_svg(sheet, _id_prefix(path), on_warning=warnings.append)
     return svg, warnings
+
+
+def _mechanism_panels(scene: Any, footer: tuple[str, ...]) -> list[Any]:
+    """A flywheel scene's mechanism, drawn at position 1 (where φ = 0) as a linkage scene would."""
+    import dataclasses
+
+    from graphmech.check import analyse, page_size, position_text
+    from graphmech.methods.figures import linkage_sheet
+    from graphmech.mechanisms.linkage import Positions
+
+    first = Positions(scene.positions.values[:1], scene.positions.labels[:1])
+    lscene = dataclasses.replace(scene, show=("mechanism",), find=(), measured=(), flywheel=None, positions=first)
+    an = analyse(lscene)
+    texts = [f"position 1 (φ = 0), {position_text(an.build, lab)}" for lab in an.labels]
+    sheet = linkage_sheet(scene.title, an.build.linkage, an.build, an.plan, an.solutions, an.labels, texts,
+                          an.scales, ["mechanism"], page_size(scene), footer)
+    return [dataclasses.replace(p, row=0) for p in sheet.panels]
 
 
 def _id_prefix(path: str | os.PathLike[str]) -> str:

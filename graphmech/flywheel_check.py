@@ -72,6 +72,7 @@ class FlywheelAnalysis:
     stated: set[str] = field(default_factory=set)
     extra_measured: tuple[tuple[str, float], ...] = ()
     braking: Any = None
+    rundown: Any = None  # the run-down diagram ω(t) as drawn (methods.braking_figures.Rundown)
 
     def scale_notes(self) -> list[str]:
         from graphmech.scales import format_scale
@@ -92,6 +93,16 @@ class FlywheelAnalysis:
                 "steps_per_cycle": mo.steps, "nfev": mo.nfev, "njev": mo.njev, "period_s": mo.period,
                 "omega_s": mo.omega_s, "delta_required": self.machine.delta}
 
+
+    @property
+    def braking_inertia(self) -> float:
+        """The inertia the brake stops, kg·m²: the constant one, plus the masses' reduced inertia
+        averaged over a turn (a run-down lasts many turns, so the swing of Jп averages out)."""
+        J = float(self.machine.inertia)
+        if self.machine.masses:
+            phi = np.linspace(0.0, self.machine.cycle, 720, endpoint=False)
+            J = float(np.mean(_exact(self).inertia(phi)))
+        return J
 
     def braking_summary(self) -> dict[str, Any]:
         """The run-down: stopping time against the required one (``ok`` None when none is required)."""
@@ -297,7 +308,12 @@ def _braking(an: FlywheelAnalysis) -> None:
     from graphmech.exact.true_motion import braking_time
 
     fw = an.scene.flywheel
-    an.braking = braking_time(an.machine.inertia, an.machine.omega_m, fw.braking.moment)
+    from graphmech.methods.braking_figures import draw_rundown
+
+    J = an.braking_inertia
+    an.braking = braking_time(J, an.machine.omega_m, fw.braking.moment)
+    an.rundown = r = draw_rundown(J, an.machine.omega_m, fw.braking.moment, fw.braking.time_limit)
+    an.scales.update({"t": r.mu_t, "omega": r.mu_omega})
 
 
 # ---------------------------------------------------------------------------- rows
@@ -318,9 +334,9 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
     """(graphical, exact, drawn mm or None, μ, ill-conditioned) of one quantity."""
     d, m = an.design, an.machine
     wm, delta = m.omega_m, m.delta
-    if base == "t_stop":
-        b = an.braking
-        return b.t_numeric, b.t, None, 1.0, False
+    if base == "t_stop":  # read off the run-down diagram ω(t): its intercept on the t axis × μt
+        r = an.rundown
+        return r.t_stop, an.braking.t, r.t_stop_mm, r.mu_t, False
     if base in ("Jp", "Mp"):
         ex = _exact(an)
         phi = an.phi[i : i + 1]

@@ -32,6 +32,8 @@ SCALE_INFO = {
     "M": ("μM", "(N·m)/mm"),
     "J": ("μJ", "(kg·m²)/mm"),
     "T": ("μT", "J/mm"),
+    "t": ("μt", "s/mm"),
+    "omega": ("μω", "(rad/s)/mm"),
 }
 
 

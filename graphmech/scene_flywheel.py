@@ -64,12 +64,11 @@ from graphmech.scene import (
 
 #: What a flywheel scene may show: the reduced moments, their work, the increment of kinetic
 #: energy, the reduced inertia, the Wittenbauer (energy–mass) diagram, the indicator diagram;
-#: with a linkage also the mechanism, first.
-FLYWHEEL_SHOW_CHOICES = ("moment", "work", "energy", "inertia", "wittenbauer", "indicator")
-#: What a flywheel scene shows when it does not say (a braking-only scene: nothing).
+#: with a linkage also the mechanism, first; with [flywheel.braking] the run-down ω(t).
+FLYWHEEL_SHOW_CHOICES = ("moment", "work", "energy", "inertia", "wittenbauer", "indicator", "rundown")
+#: What a flywheel scene shows when it does not say (a braking-only scene: its run-down).
 FLYWHEEL_SHOW_DEFAULT = ("energy", "wittenbauer")
-#: What needs a cycle of loads to draw: refused in a braking-only scene.
-_CYCLE_PANELS = ("moment", "work", "energy", "wittenbauer", "indicator")
+BRAKING_SHOW_DEFAULT = ("rundown",)
 #: The fewest and the default number of positions N the cycle is divided into.
 MIN_FLYWHEEL_POSITIONS = 4
 DEFAULT_FLYWHEEL_POSITIONS = 12
@@ -846,15 +845,21 @@ def parse_flywheel_scene(
     has_linkage = any(k in data for k in _LINKAGE_KEYS)
     braking_only = _braking_only(data.get("flywheel"))
     choices = (("mechanism",) if has_linkage else ()) + FLYWHEEL_SHOW_CHOICES
-    title, show, find = _read_header(top, choices, () if braking_only else FLYWHEEL_SHOW_DEFAULT)
-    if braking_only and isinstance(data.get("show"), list):
+    title, show, find = _read_header(top, choices, BRAKING_SHOW_DEFAULT if braking_only else FLYWHEEL_SHOW_DEFAULT)
+    fw_table = data.get("flywheel")
+    has_braking = isinstance(fw_table, dict) and "braking" in fw_table
+    if isinstance(data.get("show"), list):
         for i, item in enumerate(data["show"]):
-            if isinstance(item, str) and item in _CYCLE_PANELS and item in show:
+            if not isinstance(item, str) or item not in show:
+                continue
+            if braking_only and item not in ("rundown", "mechanism"):
                 top.problem(
                     f"show[{i}]",
                     f"{item} needs [[flywheel.load]]: a braking-only scene has no cycle to draw "
-                    "(show mechanism or inertia, or leave show out)",
+                    "(show rundown or mechanism, or leave show out)",
                 )
+            elif item == "rundown" and not has_braking:
+                top.problem(f"show[{i}]", "rundown needs a [flywheel.braking] table: the run-down under a brake")
     refuse = () if has_linkage else tuple(
         (name, "only with a linkage: a flywheel scene without one has no mechanism to draw")
         for name, _ in _LINKAGE_SCALES

@@ -161,8 +161,6 @@ def test_figures_match_their_scenes_within_tolerance():
     from graphmech.cli import render_scene
 
     for s in sorted(SCENES.glob("*.toml")):
-        if s.stem == "fly.brake_time":  # a braking check has no figure (test_flywheel_check)
-            continue
         svg, _ = render_scene(s)
         committed = (ROOT / "figures" / f"{s.stem}.svg").read_text(encoding="utf-8")
         shape_a, nums_a = _shape_and_numbers(svg)

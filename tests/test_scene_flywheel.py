@@ -281,7 +281,7 @@ def test_braking_only_needs_no_delta_nor_loads() -> None:
     assert m.loads == () and m.inertia == 0.5 and m.omega_m == 100.0
     assert math.isnan(m.delta)  # nothing to smooth
     assert fly.positions == 12 and m.cycle == 2 * math.pi
-    assert scene.show == ()  # no cycle to draw
+    assert scene.show == ("rundown",)  # no cycle to draw: the run-down ω(t)
     # a time limit is optional; a δ, when given, is kept
     scene = parse(BRAKING.replace("time_limit_s = 3\n", "").replace("[flywheel]\n", "[flywheel]\ndelta = 0.05\n"))
     assert scene.flywheel.braking == Braking(20.0, None)
@@ -429,12 +429,14 @@ def test_scales_are_tied_by_the_pole_distance() -> None:
 
 
 def test_a_braking_only_scene_shows_no_cycle() -> None:
-    assert parse('show = ["inertia"]\n' + BRAKING).show == ("inertia",)
+    assert parse(BRAKING).show == ("rundown",)
     assert only('show = ["wittenbauer"]\n' + BRAKING) == (
         "show[0]",
-        "wittenbauer needs [[flywheel.load]]: a braking-only scene has no cycle to draw (show mechanism or "
-        "inertia, or leave show out)",
+        "wittenbauer needs [[flywheel.load]]: a braking-only scene has no cycle to draw (show rundown or "
+        "mechanism, or leave show out)",
     )
+    assert only('show = ["energy", "rundown"]\n' + ENGINE.replace('show = ["moment", "energy"]\n', "")) == (
+        "show[1]", "rundown needs a [flywheel.braking] table: the run-down under a brake")
     assert parse(ENGINE.replace('show = ["moment", "energy"]\n', "")).show == FLYWHEEL_SHOW_DEFAULT
 
 
@@ -651,7 +653,7 @@ MOMENT_LOAD = 'phi_deg = [0, 180, 180, 360]'
          'a flywheel scene\'s driver is a crank (type = "crank"): the machine is reduced to its crank'),
         # the header and the other tables
         (replace(C, '"indicator"]', '"indicator", "velocity"]'), "show[6]",
-         "unknown value 'velocity': use mechanism, moment, work, energy, inertia, wittenbauer or indicator"),
+         "unknown value 'velocity': use mechanism, moment, work, energy, inertia, wittenbauer, indicator or rundown"),
         (C + '\n[measured]\n"Jp@13" = 0.06\n', "measured.Jp@13", "no position 13: the positions are numbered 1 … 12"),
         (C + "\n[scales]\nM_J_per_mm = 10\n", "scales.M_J_per_mm",
          "J_per_mm is not a unit of a moment; write M_Nm_per_mm or M_kNm_per_mm"),
@@ -704,7 +706,7 @@ def test_without_a_linkage() -> None:
     )
     assert only(ENGINE.replace('show = ["moment", "energy"]', 'show = ["mechanism"]')) == (
         "show[0]",
-        "unknown value 'mechanism': use moment, work, energy, inertia, wittenbauer or indicator",
+        "unknown value 'mechanism': use moment, work, energy, inertia, wittenbauer, indicator or rundown",
     )
     assert only(ENGINE.replace('find = ["Mr", "DeltaW_max", "J_F"]', 'find = ["J_F@13"]')) == (
         "find[0]",
@@ -736,7 +738,7 @@ def test_braking_only_scenes() -> None:
     assert only(BRAKING.replace("[flywheel]\n", "[flywheel]\ndelta = 3\n"))[0] == "flywheel.delta"
     # a linkage with its masses may stand in for the inertia
     linkage = load_block(C, 0).replace("inertia_kgm2 = 0.0\n", "").replace("delta = 0.04\n", "")
-    linkage = re.sub(r"show = .*\n", 'show = ["mechanism", "inertia"]\n', linkage)
+    linkage = re.sub(r"show = .*\n", 'show = ["mechanism", "rundown"]\n', linkage)
     scene = parse(linkage + "[flywheel.braking]\nmoment_Nm = 20\n")
     assert scene.flywheel.machine.masses and scene.flywheel.machine.loads == ()
     assert len(scene.positions.values) == 12

@@ -381,7 +381,7 @@ class ExactMachine:
         problems: list[tuple[str, str]] = []
         if not mc.omega_m > 0:
             problems.append(("omega_m", "the mean angular velocity must be > 0"))
-        if not 0 < mc.delta < 2:
+        if not 0 < mc.delta < 2 and not math.isnan(mc.delta):  # NaN: a run-down, no δ asked
             problems.append(("delta", "δ must lie in (0, 2)"))
         if not (mc.cycle > 0 and math.isfinite(mc.cycle)):
             problems.append(("cycle", "the cycle Φ must be > 0"))
