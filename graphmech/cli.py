@@ -196,6 +196,13 @@ def _check(args: argparse.Namespace) -> int:
             extra_doc["true_motion"] = an.motion_summary()
         if an.braking is not None:
             extra_doc["braking"] = an.braking_summary()
+    elif scene.forces is not None:
+        from graphmech.force_check import analyse_forces
+
+        an = analyse_forces(scene, tuple(extra))
+        verdicts = an.verdicts
+        if scene.forces.model.has_friction:
+            extra_doc["friction"] = an.friction_summary()
     elif scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 
