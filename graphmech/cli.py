@@ -99,6 +99,11 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
         sheet = flywheel_sheet(scene.title, fan.design, list(scene.show), page_size(scene), footer)
         warnings = list(fan.warnings)
         return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
+    if scene.forces is not None:
+        from graphmech.force_check import render_forces
+
+        sheet, warnings = render_forces(scene, footer)
+        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
     if scene.cam is not None:
         from graphmech.cam_check import analyse_cam
         from graphmech.methods.cam_figures import cam_sheet

@@ -307,4 +307,40 @@ def _judge_forces(fa: ForceAnalysis, entries: list[tuple[str, str, float]]) -> l
     return out
 
 
-__all__ = ["ForceAnalysis", "analyse_forces", "is_force_name", "FORCE_NAME"]
+FORCE_PANELS = ("forces", "force_polygons", "lever")
+
+
+def render_forces(scene: Any, footer: tuple[str, ...] = ()) -> tuple[Any, list[str]]:
+    """The sheet of a force scene and its warnings: the kinematic panels it shows, then the
+    loads, each group's free body and force polygon and Zhukovsky's lever, at one position."""
+    from graphmech.check import page_size
+    from graphmech.methods.figures import linkage_sheet
+    from graphmech.methods.force_figures import force_sheet
+
+    drawn = [p for p in scene.show if p in FORCE_PANELS]
+    if drawn and len(scene.positions.values) > 1:
+        raise SceneError([("show", f"{', '.join(drawn)} draw one position and this scene has "
+                                   f"{len(scene.positions.values)}: give the driver one angle "
+                                   "(graphmech check takes them all)")], scene.source)
+    fa = analyse_forces(scene)
+    an = fa.kinematics
+    b = an.build
+    kin_show = [p for p in scene.show if p in ("mechanism", "velocity", "acceleration")]
+    head: tuple = ()
+    if kin_show:
+        texts = [position_text(b, lab) for lab in an.labels]
+        head = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
+                             kin_show, page_size(scene)).panels
+    if not drawn:
+        from graphmech.render.primitives import Sheet
+
+        return Sheet(scene.title, tuple(head), page_size(scene), footer), list(fa.warnings)
+    if not _ok(fa, 0):
+        raise SceneError([("driver", f"{position_text(b, an.labels[0])} cannot be solved: "
+                                     f"{an.failures[0] or 'the exact solution is undefined here'}")], scene.source)
+    sheet = force_sheet(scene.title, b, fa.kin, fa.solution, scene.forces.model, fa.lever, fa.scales["F"],
+                        drawn, 0, position_text(b, an.labels[0]), page_size(scene), head, footer)
+    return sheet, list(fa.warnings)
+
+
+__all__ = ["ForceAnalysis", "analyse_forces", "is_force_name", "FORCE_NAME", "render_forces", "FORCE_PANELS"]
