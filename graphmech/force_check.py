@@ -37,8 +37,8 @@ from graphmech.scales import format_scale, round_scale
 
 #: The force quantities a scene may ask for (links are one character: R_12, F_i2, h_2).
 FORCE_NAME = re.compile(
-    r"(?:F_i(?P<fi>\w)(?P<fic>_x|_y)?|M_i(?P<mi>\w)|h_(?P<h>\w)|R_(?P<ri>\w)(?P<rj>\w)(?P<rc>_x|_y)?"
-    r"|M_(?P<gi>\w)(?P<gj>\w)|M_b|M_b_lever|M_b0|eta)")
+    r"(?:M_b|M_b_lever|M_b0|eta|F_i(?P<fi>\w)(?P<fic>_x|_y)?|M_i(?P<mi>\w)|h_(?P<h>\w)"
+    r"|R_(?P<ri>\w)(?P<rj>\w)(?P<rc>_x|_y)?|M_(?P<gi>\w)(?P<gj>\w))")
 #: Room for the largest force polygon, mm (μF is chosen so that it fits).
 POLYGON_ROOM_MM = 70.0
 
@@ -97,7 +97,7 @@ def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (
     plan = b.g.prune(construction_targets(b))
     batch = plan.evaluate_batch({b.param: an.positions})
     kin = kinematics_from_construction(b, batch.values, batch.valid)
-    draw = "force_polygons" in scene.show or "forces" in scene.show
+    draw = "force_polygons" in scene.show
     sol = kinetostatics(b.linkage, model, kin, polygons=draw)
     exact = solve_forces(b.linkage, model, an.positions, an.exact)
     names = [split_name(n)[0] for n in scene.find] + [split_name(n)[0] for _, n, _ in force_measured]

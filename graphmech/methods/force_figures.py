@@ -113,6 +113,8 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
         if model.gravity > 0 and lm.mass > 0:
             loads.append((f"G_{lm.link}", complex(0.0, -lm.mass * model.gravity), at))
         il = sol.inertia.get(lm.link)
+        if il is not None and il.moment[i] != 0:
+            items += _moment_arc(build.to_drawing(_c(at)), float(il.moment[i]), f"M_i{lm.link}", 4.0)
         if il is not None and abs(il.force[i]) > 0:
             if il.moment[i] != 0 and il.offset[i] > 0:
                 # F_i through S (thin), and its single resultant moved by h (bold)
