@@ -33,7 +33,8 @@ from graphmech.methods.kinetostatics import (
     kinetostatics,
     zhukovsky_lever,
 )
-from graphmech.scales import format_scale, round_scale
+from graphmech.scales import round_scale
+from graphmech.tolerances import COND_WARN
 
 #: The force quantities a scene may ask for (links are one character: R_12, F_i2, h_2).
 FORCE_NAME = re.compile(
@@ -137,24 +138,20 @@ def _choose_force_scale(fa: ForceAnalysis) -> None:
 
 def _conditioning(fa: ForceAnalysis) -> None:
     """Near a toggle a polygon's closing lines meet at a shallow angle and the reactions grow
-    without bound: say where."""
+    without bound: say where, and flag the rows where rounding itself is amplified."""
     for i, lab in enumerate(fa.labels):
         if not _ok(fa, i):
             continue
         where = position_text(fa.build, lab)
-        for g in fa.solution.groups:
-            s = float(g.closing_sin[i])
+        for name, sin in fa.solution.closing.items():
+            s = float(sin[i])
             if s < SHALLOW_SIN:
-                fa.ill[i] = True
-                fa.warnings.append(f"{where}: {g.name}: the force polygon's closing lines meet at "
+                if 1.0 / max(s, 1e-300) > COND_WARN:
+                    fa.ill[i] = True
+                fa.warnings.append(f"{where}: {name}: the force polygon's closing lines meet at "
                                    f"{math.degrees(math.asin(min(s, 1.0))):.2g}° — near-collinear forces, "
-                                   "ill-conditioned; a hand construction is unreliable here")
-        cond = float(fa.exact.condition[i])
-        if cond > 1e6:
-            fa.ill[i] = True
-            fa.warnings.append(f"{where}: the equilibrium equations are nearly singular (condition number "
-                               f"{cond:.2g}): the transmission angle is near 0° and the reactions grow "
-                               "without bound")
+                                   "ill-conditioned: the transmission angle is near 0° and the reactions "
+                                   "grow without bound (a hand construction is unreliable here)")
 
 
 def _characteristic_force(fa: ForceAnalysis, i: int) -> float:

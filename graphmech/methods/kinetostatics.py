@@ -393,6 +393,7 @@ class KinetostaticSolution:
     groups: tuple[GroupPolygon, ...] = ()
     iterations: int = 0
     friction_moments: dict[tuple[str, str], np.ndarray] = field(default_factory=dict)
+    closing: dict[str, np.ndarray] = field(default_factory=dict)  # group name → |sin| of its closing lines
 
 
 # --------------------------------------------------------------------------------------------
@@ -433,6 +434,7 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
     joints: list[Joint] = []
     guides: list[GuideReaction] = []
     groups: list[GroupPolygon] = []
+    closing: dict[str, np.ndarray] = {}
     P = kin.point
 
     def friction(j: Joint) -> None:
@@ -496,6 +498,7 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
         # Close the polygon: x·e_p (∥ PC, through the start) + y·u_close (through the end) = −s.
         det = _cross(e_p, u_close)
         closing_sin = np.abs(det)
+        closing[f"group {i}–{k}"] = closing_sin
         _guard_parallel(closing_sin, kin.valid, f"group {i}–{k}: the force polygon's closing lines "
                         f"(∥ {y.p}{y.c} and {'∥ ' + y.q + y.c if jq else '⟂ guide'}) are parallel")
         safe = np.where(closing_sin > PARALLEL_SIN, det, 1.0)
@@ -545,7 +548,7 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
                                    tuple(loads.couples.get(d.link, [])) + (Couple("M_b", m_b),), tuple(chain),
                                    (f"R_{frame}{d.link}",), np.ones(n)))
     return KinetostaticSolution(reactions, tuple(joints), tuple(guides), m_b, inertia, tuple(groups),
-                                0, fmoments)
+                                0, fmoments, closing)
 
 
 def _guide_point(C: np.ndarray, t: complex, r: np.ndarray, m: np.ndarray) -> np.ndarray:
@@ -611,7 +614,7 @@ def kinetostatics(linkage: Linkage, model: ForceModel, kin: PolygonKinematics, *
             state.previous, state.normal, state.normal_next = sol, state.normal_next, {}
             final = _solve_round(linkage, kin, base, inertia, state, polygons) if polygons else sol
             return KinetostaticSolution(final.reactions, final.joints, final.guides, final.balancing_moment,
-                                        inertia, final.groups, it, final.friction_moments)
+                                        inertia, final.groups, it, final.friction_moments, final.closing)
     raise DegenerateConstruction(
         "friction by successive approximation",
         f"does not converge in {model.max_iterations} rounds (the reactions still change by "

@@ -1,0 +1,260 @@
+"""Kinetostatics: extreme cases, friction, only what the scene asks, bad input, figures."""
+from __future__ import annotations
+
+import dataclasses
+import subprocess
+import sys
+import tomllib
+
+import numpy as np
+import pytest
+
+import graphmech.methods.kinetostatics as K
+from graphmech.errors import SceneError
+from graphmech.force_check import analyse_forces
+from graphmech.mechanisms.forces import ForceModel, LinkMass
+from graphmech.scene import load_scene, parse_scene
+from tests.conftest import ROOT, SCENES, check_json, fourbar_scene, run_cli, values
+
+FOURBAR_LOADS = """
+[forces]
+[[forces.mass]]
+link = "2"
+point = "B"
+mass_kg = 1
+[[forces.moment]]
+link = "3"
+moment_Nm = -10
+"""
+
+SLIDER_CRANK = """
+find = ["R_12", "R_43", "M_b"]
+show = ["mechanism"]
+[units]
+length = "mm"
+angle = "deg"
+[frame]
+A = [0, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = 100
+angle = 90
+omega_rad_s = 10
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["2", "3"]
+length = {length}
+guide = {{ through = [0, 0], angle = 0 }}
+branch = "forward"
+[forces]
+[[forces.mass]]
+link = "3"
+point = "C"
+mass_kg = 2
+[[forces.force]]
+link = "3"
+point = "C"
+force_N = 100
+angle = 180
+{extra}
+"""
+
+
+def _scene(text: str):
+    return parse_scene(tomllib.loads(text), "t.toml")
+
+
+def _fourbar(c: float, find: str = '["R_23", "M_b"]', show: str = '["mechanism"]', extra: str = "") -> str:
+    return fourbar_scene(a=60, b=100, c=c, d=120, angle="180", find=find, show=show) + FOURBAR_LOADS + extra
+
+
+def _write(tmp_path, text: str, name: str = "s.toml"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+# ----------------------------------------------------------------------------- extreme cases
+
+
+def test_transmission_angle_near_zero_reactions_grow_without_bound_and_warn():
+    """At φ1 = 180° |BD| = 180 mm; l2 + l3 just above it puts C nearly in line with B and D."""
+    r = {}
+    for c in (80.5, 80.01, 80.0001):
+        fa = analyse_forces(_scene(_fourbar(c)))
+        q = {row.name: row for row in fa.rows}
+        r[c] = q["R_23"].graphical
+        assert q["R_23"].rel_error < 1e-9  # the matrix method agrees even here
+        near = [w for w in fa.warnings if "grow without bound" in w]
+        assert bool(near) == (c < 80.1), fa.warnings
+        assert q["M_b"].graphical == pytest.approx(10.0 / 3.0, rel=1e-12)  # M_b stays bounded
+    # R ~ 1/sin γ: γ shrinks 10× from 1.22° to 0.122°, so does R grow 10×
+    assert r[80.0001] / r[80.01] == pytest.approx(10.0, rel=1e-3)
+    assert r[80.01] > 7 * r[80.5]
+
+
+def test_near_collinear_closing_lines_of_a_slider_group_are_flagged():
+    bad = analyse_forces(_scene(SLIDER_CRANK.format(length=100.2, extra="")))
+    good = analyse_forces(_scene(SLIDER_CRANK.format(length=150, extra="")))
+    assert any("near-collinear forces" in w and "group 2–3" in w for w in bad.warnings)
+    assert not any("near-collinear" in w for w in good.warnings)
+    assert values_of(bad)["R_12"] > 40 * values_of(good)["R_12"]
+
+
+def values_of(fa):
+    return {r.name: r.graphical for r in fa.rows}
+
+
+def test_exactly_parallel_closing_lines_are_one_line_errors():
+    kin = K.PolygonKinematics({}, {}, {}, {}, {}, 1.0, np.array([True]))
+    with pytest.raises(K.DegenerateConstruction, match="grow without bound"):
+        K._guard_parallel(np.array([0.0]), kin.valid, "group 2–3: parallel")
+
+
+def test_f_zero_is_the_frictionless_solution_without_iterating(monkeypatch):
+    rounds = []
+    original = K._solve_round
+    monkeypatch.setattr(K, "_solve_round", lambda *a, **k: rounds.append(1) or original(*a, **k))
+    zero = """
+[[forces.journal]]
+point = "B"
+f_v = 0
+radius = 10
+[[forces.guide]]
+link = "3"
+f = 0
+"""
+    fa0 = analyse_forces(_scene(SLIDER_CRANK.format(length=150, extra=zero)))
+    assert len(rounds) == 1 and fa0.solution.iterations == 0
+    rounds.clear()
+    fa = analyse_forces(_scene(SLIDER_CRANK.format(length=150, extra="")))
+    assert len(rounds) == 1
+    assert values_of(fa0) == values_of(fa)
+    rounds.clear()
+    friction = zero.replace("f_v = 0", "f_v = 0.2").replace("f = 0", "f = 0.15")
+    ff = analyse_forces(_scene(SLIDER_CRANK.format(length=150, extra=friction)))
+    assert len(rounds) > 3 and ff.solution.iterations == len(rounds) - 1  # the frictionless start, then the rounds
+    for row in ff.rows:
+        assert row.rel_error < 1e-10, row  # successive approximation = scipy's root on the matrix
+    assert values_of(ff)["M_b"] != pytest.approx(values_of(fa)["M_b"], rel=1e-3)
+
+
+def test_friction_that_does_not_converge_says_so_in_one_line(tmp_path):
+    text = SLIDER_CRANK.format(length=150, extra="""
+[[forces.journal]]
+point = "B"
+f_v = 0.2
+radius = 10
+[[forces.guide]]
+link = "3"
+f = 0.3
+""").replace("[forces]\n", "[forces]\nmax_iterations = 2\n", 1)
+    code, out, err = run_cli("check", str(_write(tmp_path, text)))
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and "does not converge in 2 rounds" in err
+
+
+def test_friction_circle_larger_than_the_geometry_allows(tmp_path):
+    text = _fourbar(90, extra='[[forces.journal]]\npoint = "B"\nf_v = 0.2\nradius = 60\n')
+    code, out, err = run_cli("check", str(_write(tmp_path, text)))
+    assert code == 2 and out == ""
+    assert err == ("s.toml: forces.journal[0]: the journal at B (r = 60 mm, friction circle ρ = 12 mm) is "
+                   "larger than the geometry allows: it must be smaller than half the 60 mm to the next joint\n")
+
+
+# ----------------------------------------------------------------------------- only what is asked
+
+
+def test_only_the_balancing_moment_builds_no_polygons_and_no_lever(monkeypatch):
+    built = []
+    original = K.GroupPolygon
+    monkeypatch.setattr(K, "GroupPolygon", lambda *a, **k: built.append(a[0]) or original(*a, **k))
+    import graphmech.force_check as fc
+
+    monkeypatch.setattr(fc, "zhukovsky_lever", lambda *a, **k: pytest.fail("lever built"))
+    fa = analyse_forces(_scene(_fourbar(90, find='["M_b"]')))
+    assert [r.name for r in fa.rows] == ["M_b"] and built == [] and fa.lever is None
+    fa = analyse_forces(_scene(_fourbar(90, find='["M_b"]', show='["force_polygons"]')))
+    assert built == ["group 2–3", "driver 1"]
+
+
+def test_a_frictionless_scene_does_not_iterate(monkeypatch):
+    rounds = []
+    original = K._solve_round
+    monkeypatch.setattr(K, "_solve_round", lambda *a, **k: rounds.append(1) or original(*a, **k))
+    check_json(SCENES / "force.sixbar_kinetostatic.toml")
+    assert len(rounds) == 1
+
+
+def test_force_polygons_close():
+    fa = analyse_forces(load_scene(SCENES / "force.sixbar_kinetostatic.toml"))
+    assert [g.name for g in fa.solution.groups] == ["group 4–5", "group 2–3", "driver 1"]
+    for g in fa.solution.groups:
+        total = sum(complex(v[0]) for _, v in g.chain)
+        assert abs(total) < 1e-10 * max(abs(complex(v[0])) for _, v in g.chain), g.name
+
+
+# ----------------------------------------------------------------------------- bad input
+
+
+@pytest.mark.parametrize("find, message", [
+    ('["R_13"]', "find[0]: links 1 and 3 have no joint (reactions: R_12, R_14, R_23, R_34)"),
+    ('["F_i3"]', "find[0]: link 3 has no [[forces.mass]] (masses on links 2)"),
+    ('["eta"]', "find[0]: eta compares with friction: this scene has none"),
+])
+def test_unknown_force_names_are_one_line_errors(tmp_path, find, message):
+    code, out, err = run_cli("check", str(_write(tmp_path, _fourbar(90, find=find))))
+    assert code == 2 and err == f"s.toml: {message}\n"
+
+
+def test_rpr_groups_are_refused_in_one_line(tmp_path):
+    text = (SCENES / "kin.oscillating_block.toml").read_text(encoding="utf-8") + """
+[forces]
+[[forces.moment]]
+link = "3"
+moment_Nm = 5
+"""
+    code, out, err = run_cli("check", str(_write(tmp_path, text, "rpr.toml")))
+    assert code == 2 and err.count("\n") == 1
+    assert "RPR groups are not built for force polygons yet (RRR and RRP are)" in err
+
+
+def test_forces_scene_keys_are_checked(tmp_path):
+    text = _fourbar(90).replace("mass_kg = 1", "mass_kg = -1\ncolour = 3")
+    code, _, err = run_cli("check", str(_write(tmp_path, text)))
+    assert code == 2 and err.startswith("s.toml: forces.mass[0].")
+    with pytest.raises(SceneError, match="not a point of link 2"):
+        _scene(_fourbar(90).replace('point = "B"', 'point = "D"'))
+
+
+def test_value_objects_are_frozen():
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        LinkMass("2", "S2", 1.0).mass = 2.0  # type: ignore[misc]
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        ForceModel().gravity = 9.81  # type: ignore[misc]
+
+
+# ----------------------------------------------------------------------------- figures
+
+
+def test_force_sheet_panels_and_one_position_only(tmp_path):
+    from graphmech.cli import render_scene
+
+    svg, warnings = render_scene(SCENES / "force.sixbar_kinetostatic.toml")
+    for title in ("Free body, group 4–5", "Force polygon, group 2–3", "Zhukovsky", "μF = 25 N/mm"):
+        assert title in svg
+    text = _fourbar(90, show='["force_polygons"]').replace('angle = 180', 'angle = [170, 180]')
+    code, _, err = run_cli("render", str(_write(tmp_path, text)), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and "draw one position" in err and not (tmp_path / "x.svg").exists()
+
+
+def test_check_of_a_force_scene_never_imports_matplotlib():
+    code = ("import sys; from graphmech.cli import main; "
+            f"main(['check', {str(SCENES / 'force.sixbar_kinetostatic-friction.toml')!r}]); "
+            "assert not any(m.split('.')[0] == 'matplotlib' for m in sys.modules), 'matplotlib imported'")
+    r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
