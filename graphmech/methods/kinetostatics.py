@@ -181,7 +181,7 @@ def inertia_load(mass: float, inertia: float, a_S: Any, alpha: Any) -> tuple[Any
     mag = np.abs(f)
     h = np.where(mag > 0, np.abs(m) / np.where(mag > 0, mag, 1.0), 0.0)
     if np.ndim(h) == 0:
-        return f[()], float(m), float(h)
+        return f.item(), float(m), float(h)
     return f, m, h
 
 
