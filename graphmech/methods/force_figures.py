@@ -174,7 +174,16 @@ def free_body_items(build: Any, kin: PolygonKinematics, group: GroupPolygon, rho
         if name in rho and rho[name] > 0:
             items.append(Circle(to_mm(complex(kin.point[name][i])), max(rho[name] / build.mu_l, 0.3)))
         items.append(Label(name, to_mm(complex(kin.point[name][i])), (), 3.0))
-    forces = [(f.name, complex(f.vector[i]), complex(f.at[i])) for f in group.free_body]
+    # With friction a reaction is tangent to its friction circle: its line of action is moved off
+    # the joint's centre so that its moment about it is the friction couple M_f.
+    friction = {c.name: float(c.moment[i]) for c in group.couples if c.name.startswith("M_f")}
+    forces = []
+    for f in group.free_body:
+        vec, at = complex(f.vector[i]), complex(f.at[i])
+        m = friction.get("M_f" + f.name[2:], 0.0) if f.name.startswith("R_") else 0.0
+        if m != 0.0 and abs(vec) > 0:
+            at = at - 1j * m * vec / abs(vec) ** 2
+        forces.append((f.name, vec, at))
     largest = max([abs(v) for _, v, _ in forces], default=0.0)
     items += _arrows(forces, to_mm, largest)
     for c in group.couples:
@@ -253,9 +262,10 @@ def force_sheet(title: str, build: Any, kin: PolygonKinematics, sol: Kinetostati
         joints = {j.point for j in sol.joints}
         for g in sol.groups:
             key = "-".join(g.links)
+            notes = ("arrows not to scale",) + (
+                (f"friction circles at μl = {mu_l:.6g} m/mm; reactions tangent to them",) if rho else ())
             panels.append(Panel(f"free-{key}", f"Free body, {g.name}",
-                                tuple(free_body_items(build, kin, g, rho, joints, i)),
-                                ("arrows not to scale",)))
+                                tuple(free_body_items(build, kin, g, rho, joints, i)), notes))
             panels.append(Panel(f"polygon-{key}", f"Force polygon, {g.name}", tuple(polygon_items(g, mu_F, i)),
                                 (f"μF = {mu_F:.6g} N/mm",)))
     if "lever" in show and lever is not None:
