@@ -162,6 +162,8 @@ def _revolute_points(linkage: Linkage) -> set[str]:
             out |= {y.p, y.c, y.q}
         elif isinstance(y, RRP):
             out |= {y.p, y.c}
+        elif isinstance(y, RPR):
+            out |= {y.p, y.q}
     return out
 
 
@@ -250,14 +252,16 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
         journals.append(RevoluteFriction(point, f_v, radius))
 
     slides: list[SlidingFriction] = []
-    sliders = {y.links[1] for y in linkage.dyads if isinstance(y, RRP)} if linkage is not None else None
+    sliders = None if linkage is None else (
+        {y.links[1] for y in linkage.dyads if isinstance(y, RRP)}
+        | {y.block_link for y in linkage.dyads if isinstance(y, RPR)})
     for r in fr.tables_at("guide")[:MAX_ITEMS]:
         value = r.raw("link", required=True, hint='the slider\'s link number, e.g. link = "3"')
         link = None if value is _MISSING else r.link_id(value, r.at("link"))
         f = _coefficient(r, "f")
         r.finish()
         if link is not None and sliders is not None and link not in sliders:
-            r.problem(r.at("link"), f"link {link} is not a slider on a frame guide"
+            r.problem(r.at("link"), f"link {link} is not a slider (on a frame guide or a guide bar)"
                                     + (f" (sliders: {', '.join(sorted(sliders))})" if sliders else ""))
             continue
         if link is not None and f is not None:
@@ -291,9 +295,9 @@ def _supported(top: _Reader, linkage: Linkage) -> None:
     if not isinstance(linkage.driver, Crank):
         top.problem("driver.type", "a force scene's driver is a crank: the balancing moment acts on it")
     for k, y in enumerate(linkage.dyads):
-        if isinstance(y, (RPR, RPP)):
+        if isinstance(y, RPP):
             top.problem(f"dyad[{k}].type", f"{y.kind} groups are not built for force polygons yet "
-                                            "(RRR and RRP are)")
+                                            "(RRR, RRP and RPR are)")
 
 
 def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]) -> Scene:

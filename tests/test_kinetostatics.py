@@ -211,16 +211,73 @@ def test_unknown_force_names_are_one_line_errors(tmp_path, find, message):
     assert code == 2 and err == f"s.toml: {message}\n"
 
 
-def test_rpr_groups_are_refused_in_one_line(tmp_path):
-    text = (SCENES / "kin.oscillating_block.toml").read_text(encoding="utf-8") + """
+def test_rpp_groups_and_slider_drivers_are_refused_in_one_line(tmp_path):
+    text = (SCENES / "linkage.slider_fixed_angle_guide.toml").read_text(encoding="utf-8") + """
 [forces]
 [[forces.moment]]
 link = "3"
 moment_Nm = 5
 """
-    code, out, err = run_cli("check", str(_write(tmp_path, text, "rpr.toml")))
+    code, out, err = run_cli("check", str(_write(tmp_path, text, "rpp.toml")))
     assert code == 2 and err.count("\n") == 1
-    assert "RPR groups are not built for force polygons yet (RRR and RRP are)" in err
+    assert "RPP groups are not built for force polygons yet (RRR, RRP and RPR are)" in err
+
+
+RPR_LOADS = """
+[forces]
+gravity_m_s2 = 9.81
+[[forces.mass]]
+link = "2"
+point = "D"
+mass_kg = 1.5
+inertia_kgm2 = 0.004
+[[forces.mass]]
+link = "3"
+point = "C"
+mass_kg = 0.5
+inertia_kgm2 = 0.0005
+[[forces.force]]
+name = "F"
+link = "2"
+point = "E"
+force_N = 40
+angle = -60
+"""
+RPR_FRICTION = """
+[[forces.journal]]
+point = "B"
+f_v = 0.1
+radius = 5
+[[forces.journal]]
+point = "C"
+f_v = 0.1
+radius = 5
+[[forces.guide]]
+link = "3"
+f = 0.2
+"""
+
+
+@pytest.mark.parametrize("friction", [False, True])
+def test_rpr_oscillating_block_polygons_lever_and_matrix_agree(friction):
+    """The oscillating block of kin.oscillating_block (bar 2 through the block 3 pivoted at C),
+    with ε1 = 20 rad/s² and at three positions."""
+    text = (SCENES / "kin.oscillating_block.toml").read_text(encoding="utf-8")
+    text = text.replace("angle = 45", "angle = [45, 160, 300]\nepsilon_rad_s2 = 20")
+    text = text.replace('find = ["l_BC"', 'find = ["R_12", "R_23", "R_43", "R_41", "M_b", "M_b_lever", "F_i3", "M_i3", "l_BC"')
+    text += RPR_LOADS + (RPR_FRICTION if friction else "")
+    fa = analyse_forces(_scene(text))
+    rows = {r.name: r for r in fa.rows}
+    assert len([n for n in rows if n.startswith("R_")]) == 12
+    for row in fa.rows:
+        if row.name.startswith("M_b_lever") and friction:
+            continue  # the lever is frictionless
+        assert row.rel_error < 1e-12, row
+    # the block turns with the bar: its inertia couple counts in the lever too
+    assert rows["M_i3@45"].graphical == pytest.approx(-0.0005 * fa.kin.alpha["2"][0], rel=1e-14)
+    assert (fa.solution.iterations > 0) == friction
+    if not friction:
+        assert rows["M_b_lever@160"].graphical == pytest.approx(rows["M_b@160"].exact, rel=1e-12)
 
 
 def test_forces_scene_keys_are_checked(tmp_path):

@@ -24,7 +24,7 @@ import numpy as np
 
 from graphmech.exact.linkage import Kinematics, solve as solve_kinematics
 from graphmech.mechanisms.forces import ForceModel
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage
+from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage
 
 __all__ = ["ExactForces", "solve_forces", "pairs"]
 
@@ -63,12 +63,14 @@ class ExactForces:
     iterations: np.ndarray
 
 
-def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str, str, float]]]:
-    """The revolutes ``(a, b, point)`` and the sliders on frame guides ``(link, point, guide angle)``."""
+def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str, str, str, str]]]:
+    """The revolutes ``(a, b, point)`` and the sliding pairs ``(a, b, point, guide)``: link b slides
+    on link a at ``point``; ``guide`` is ``"frame"`` (a's guide of fixed direction, a the frame) or
+    the name of the bar's pivot (the guide runs from it through ``point``)."""
     frame = linkage.frame_link
     on: dict[str, str] = {name: frame for name in linkage.frame_points}
     revolutes: list[tuple[str, str, str]] = []
-    sliders: list[tuple[str, str, float]] = []
+    slides: list[tuple[str, str, str, str]] = []
     d = linkage.driver
     if not isinstance(d, Crank):
         raise ValueError("the matrix method here takes a crank-driven linkage")
@@ -81,13 +83,17 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
                 on[name] = extra[name]
         if isinstance(y, RRR):
             revolutes += [(on[y.p], y.links[0], y.p), (y.links[0], y.links[1], y.c), (on[y.q], y.links[1], y.q)]
+            on.setdefault(y.c, y.links[0])
         elif isinstance(y, RRP):
             revolutes += [(on[y.p], y.links[0], y.p), (y.links[0], y.links[1], y.c)]
-            sliders.append((y.links[1], y.c, y.guide.angle))
+            slides.append((frame, y.links[1], y.c, "frame"))
+            on.setdefault(y.c, y.links[0])
+        elif isinstance(y, RPR):
+            revolutes += [(on[y.bar_pivot], y.bar_link, y.bar_pivot), (on[y.block_pivot], y.block_link, y.block_pivot)]
+            slides.append((y.bar_link, y.block_link, y.block_pivot, y.bar_pivot))
         else:
-            raise ValueError(f"the matrix method here takes RRR and RRP groups, not {y.kind}")
-        on.setdefault(y.c, y.links[0])
-    return revolutes, sliders
+            raise ValueError(f"the matrix method here takes RRR, RRP and RPR groups, not {y.kind}")
+    return revolutes, slides
 
 
 def _moving_links(linkage: Linkage) -> list[str]:
@@ -141,16 +147,20 @@ def solve_forces(linkage: Linkage, model: ForceModel, positions: np.ndarray,
             A[:, r0 + 2, 2 * u] += sign * cx
             A[:, r0 + 2, 2 * u + 1] += sign * cy
     base = 2 * len(revolutes)
-    normals = []
-    for s, (link, p, angle) in enumerate(sliders):
-        nx, ny = -math.sin(angle), math.cos(angle)
-        normals.append((nx, ny))
-        r0 = row[link]
-        A[:, r0, base + 2 * s] = nx
-        A[:, r0 + 1, base + 2 * s] = ny
-        cx, cy = cross_col(kin.point[p] - ref[link])
-        A[:, r0 + 2, base + 2 * s] = cx * nx + cy * ny
-        A[:, r0 + 2, base + 2 * s + 1] = 1.0
+    # A sliding pair: the force of a on b is N·n at the point (n ⟂ the guide) plus a couple M.
+    tangents = [_guide_tangent(linkage, kin, slide) for slide in sliders]
+    for s, (a, b, p, _) in enumerate(sliders):
+        t = tangents[s]
+        nrm = np.stack([-t[:, 1], t[:, 0]], axis=1)
+        for link, sign in ((b, 1.0), (a, -1.0)):
+            if link not in row:
+                continue
+            r0 = row[link]
+            A[:, r0, base + 2 * s] += sign * nrm[:, 0]
+            A[:, r0 + 1, base + 2 * s] += sign * nrm[:, 1]
+            cx, cy = cross_col(kin.point[p] - ref[link])
+            A[:, r0 + 2, base + 2 * s] += sign * (cx * nrm[:, 0] + cy * nrm[:, 1])
+            A[:, r0 + 2, base + 2 * s + 1] += sign
     crank = linkage.driver.link
     A[:, row[crank] + 2, m - 1] = 1.0
 
@@ -196,7 +206,7 @@ def solve_forces(linkage: Linkage, model: ForceModel, positions: np.ndarray,
         x[valid] = np.linalg.solve(A[valid], rhs[valid][..., None])[..., 0]
     iterations = np.zeros(n, dtype=int)
     if model.has_friction:
-        x, iterations, ok = _with_friction(linkage, model, kin, A, rhs, x, valid, revolutes, sliders, normals)
+        x, iterations, ok = _with_friction(linkage, model, kin, A, rhs, x, valid, revolutes, sliders, tangents)
         valid &= ok
 
     reactions: dict[tuple[str, str], np.ndarray] = {}
@@ -204,22 +214,41 @@ def solve_forces(linkage: Linkage, model: ForceModel, positions: np.ndarray,
         r = x[:, 2 * u: 2 * u + 2]
         reactions[(a, b)], reactions[(b, a)] = r, -r
     guide_moments: dict[str, np.ndarray] = {}
-    frame = linkage.frame_link
     fric = {fr.link: fr.f for fr in model.sliding_friction}
-    for s, (link, p, angle) in enumerate(sliders):
-        nrm = x[:, base + 2 * s]
-        t = np.array([math.cos(angle), math.sin(angle)])
-        v = kin.vel[p] @ t
-        tang = -fric.get(link, 0.0) * np.abs(nrm) * np.sign(v)
-        r = nrm[:, None] * np.array(normals[s]) + tang[:, None] * t
-        reactions[(frame, link)], reactions[(link, frame)] = r, -r
-        guide_moments[link] = x[:, base + 2 * s + 1]
+    for s, (a, b, p, _) in enumerate(sliders):
+        nrm_mag = x[:, base + 2 * s]
+        t = tangents[s]
+        v = np.einsum("ij,ij->i", _sliding_velocity(linkage, kin, sliders[s]), t)
+        tang = -fric.get(b, 0.0) * np.abs(nrm_mag) * np.sign(v)
+        r = nrm_mag[:, None] * np.stack([-t[:, 1], t[:, 0]], axis=1) + tang[:, None] * t
+        reactions[(a, b)], reactions[(b, a)] = r, -r
+        guide_moments[b] = x[:, base + 2 * s + 1]
     return ExactForces(reactions, guide_moments, x[:, m - 1], f_in, m_in, condition, valid, iterations)
+
+
+def _guide_tangent(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str, str]) -> np.ndarray:
+    """Unit direction of a sliding pair's guide at every position, shape (N, 2)."""
+    a, b, p, guide = slide
+    n = kin.valid.shape[0]
+    if guide == "frame":
+        angle = next(y.guide.angle for y in linkage.dyads if isinstance(y, RRP) and y.links[1] == b)
+        return np.tile([math.cos(angle), math.sin(angle)], (n, 1))
+    d = kin.point[p] - kin.point[guide]
+    length = np.hypot(d[:, 0], d[:, 1])
+    return d / np.where(length > 0, length, 1.0)[:, None]
+
+
+def _sliding_velocity(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str, str]) -> np.ndarray:
+    """Velocity of b relative to a at the pair's point, shape (N, 2)."""
+    a, b, p, guide = slide
+    if guide == "frame":
+        return kin.vel[p]
+    return kin.vel[p + b] - kin.vel[p + a]  # the block's and the bar's coincident points
 
 
 def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.ndarray, rhs: np.ndarray,
                    x0: np.ndarray, valid: np.ndarray, revolutes: list, sliders: list,
-                   normals: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                   tangents: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Solve A·x + g(x) = b, g the friction couples and forces, position by position (scipy root)."""
     from scipy.optimize import root
 
@@ -234,14 +263,16 @@ def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.n
     evaluations = np.zeros(n, dtype=int)
     ok = np.ones(n, dtype=bool)
     zero = np.zeros(n)
+    rel_v = [np.einsum("ij,ij->i", _sliding_velocity(linkage, kin, sl), tangents[s]) for s, sl in enumerate(sliders)]
     for i in np.flatnonzero(valid):
-        # Per position: which way each joint turns relatively, and the geometry of the sliders.
+        # Per position: which way each joint turns relatively, and the geometry of the slides.
         rel = [float(np.sign(kin.omega.get(b, zero)[i] - kin.omega.get(a, zero)[i])) for a, b, _ in revolutes]
         slide = []
-        for s, (link, p, angle) in enumerate(sliders):
-            t = np.array([math.cos(angle), math.sin(angle)])
-            arm = kin.point[p][i] - kin.point[pts[link][0]][i]
-            slide.append((row[link], t, arm, float(np.sign(kin.vel[p][i] @ t)), fric.get(link, 0.0)))
+        for s, (a, b, p, _) in enumerate(sliders):
+            t = tangents[s][i]
+            arms = [(row[k], sign, kin.point[p][i] - kin.point[pts[k][0]][i]) for k, sign in ((b, 1.0), (a, -1.0))
+                    if k in row]
+            slide.append((arms, t, float(np.sign(rel_v[s][i])), fric.get(b, 0.0)))
 
         def residual(z: np.ndarray, i: int = i, rel: list = rel, slide: list = slide) -> np.ndarray:
             res = A[i] @ z - rhs[i]
@@ -254,13 +285,14 @@ def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.n
                     res[row[b] + 2] += m_f
                 if a in row:
                     res[row[a] + 2] -= m_f
-            for s, (r0, t, arm, sv, f) in enumerate(slide):
+            for s, (arms, t, sv, f) in enumerate(slide):
                 if f == 0.0 or sv == 0.0:
                     continue
-                tang = -f * abs(z[base + 2 * s]) * sv
-                res[r0] += tang * t[0]
-                res[r0 + 1] += tang * t[1]
-                res[r0 + 2] += tang * (arm[0] * t[1] - arm[1] * t[0])
+                tang = -f * abs(z[base + 2 * s]) * sv  # on b along the guide; −tang on a
+                for r0, sign, arm in arms:
+                    res[r0] += sign * tang * t[0]
+                    res[r0 + 1] += sign * tang * t[1]
+                    res[r0 + 2] += sign * tang * (arm[0] * t[1] - arm[1] * t[0])
             return res
 
         sol = root(residual, x0[i], method="hybr", options={"xtol": 1e-14, "maxfev": 2000})

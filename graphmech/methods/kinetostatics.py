@@ -35,7 +35,7 @@ import numpy as np
 
 from graphmech.errors import DegenerateConstruction, GraphmechError
 from graphmech.mechanisms.forces import ForceModel, LinkMass
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage
+from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage
 from graphmech.tolerances import PARALLEL_SIN, SHALLOW_DEG
 
 #: |sin| of the angle between the two unknown directions of a polygon below which a hand
@@ -300,6 +300,9 @@ def carriers(linkage: Linkage) -> dict[str, str]:
             out.setdefault(y.c, y.links[0])
         elif isinstance(y, RRP):
             out.setdefault(y.c, y.links[0])
+        elif isinstance(y, RPR):
+            out.setdefault(y.coincident[0], y.bar_link)
+            out.setdefault(y.coincident[1], y.block_link)
     for pt in linkage.points:
         out.setdefault(pt.name, pt.link)
     return out
@@ -311,9 +314,9 @@ def check_supported(linkage: Linkage) -> None:
         raise UnsupportedGroup("kinetostatics: the force polygons need a crank as driver "
                                "(a slider-driven linkage is not supported)")
     for k, y in enumerate(linkage.dyads):
-        if not isinstance(y, (RRR, RRP)):
+        if not isinstance(y, (RRR, RRP, RPR)):
             raise UnsupportedGroup(f"kinetostatics: dyad[{k}] is an {y.kind} group; the force polygons are "
-                                   "built for RRR and RRP groups only")
+                                   "built for RRR, RRP and RPR groups only")
 
 
 # --------------------------------------------------------------------------------------------
@@ -453,6 +456,10 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
             loads.force(j.a, Force(f"R_{j.b}{j.a}", -r_on_b, P[j.point], j.point))
 
     for y in reversed(linkage.dyads):  # the group farthest from the driver first
+        if isinstance(y, RPR):
+            _rpr_group(y, kin, loads, owner, friction, found, reactions, joints, groups, closing, fr,
+                       keep_groups)
+            continue
         i, k = y.links
         jp = Joint(y.p, owner[y.p], i)
         jc = Joint(y.c, i, k)
@@ -549,6 +556,56 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
                                    (f"R_{frame}{d.link}",), np.ones(n)))
     return KinetostaticSolution(reactions, tuple(joints), tuple(guides), m_b, inertia, tuple(groups),
                                 0, fmoments, closing)
+
+
+def _rpr_group(y: RPR, kin: PolygonKinematics, loads: _Loads, owner: dict[str, str], friction: Any,
+               found: Any, reactions: dict, joints: list, groups: list, closing: dict, fr: _Friction,
+               keep_groups: bool) -> None:
+    """A guide bar b pivoted at P and a block k pivoted at X sliding on it (导杆, 摇块).
+
+    The bar's reaction on the block is N ⟂ the bar (tilted by φ with friction), on the line of
+    action X + s·t along the bar. The block's moments about X give s·N; the bar's moments about
+    its pivot P give N (the reaction's component along the bar passes through P); then each link's
+    polygon closes with its pivot's reaction.
+    """
+    n = kin.valid.shape[0]
+    b, k = y.bar_link, y.block_link
+    P, X = kin.point[y.bar_pivot], kin.point[y.block_pivot]
+    jb = Joint(y.bar_pivot, owner[y.bar_pivot], b)
+    jk = Joint(y.block_pivot, owner[y.block_pivot], k)
+    friction(jb)
+    friction(jk)
+    d = X - P
+    L = np.abs(d)
+    t = d / np.where(L > 0, L, 1.0)
+    nrm = 1j * t
+    _guard_parallel(np.where(L > 0, 1.0, 0.0), kin.valid, f"group {b}–{k}: the block's pivot {y.block_pivot} is "
+                    f"on the bar's pivot {y.bar_pivot}, so the bar's moments cannot give the reaction")
+    m_bar = loads.moment_about(b, P)  # about the bar's pivot
+    m_block = loads.moment_about(k, X)  # about the block's pivot
+    N = (m_bar + m_block) / np.where(L > 0, L, 1.0)
+    # Friction on the slide: −f|N| along the bar against the block's motion relative to the bar.
+    f = fr.f.get(k, 0.0) if fr.previous is not None else 0.0
+    v_rel = (np.conj(t) * (kin.vel[y.coincident[1]] - kin.vel[y.coincident[0]])).real
+    r_bk = N * nrm - f * np.abs(N) * _sign(v_rel) * t  # the bar on the block
+    fr.normal_next[k] = N
+    known_b = loads.total(b, n)
+    known_k = loads.total(k, n)
+    r_pb = r_bk - known_b  # closes the bar's polygon: ΣF_b + R_kb + R_Pb = 0
+    r_xk = -r_bk - known_k  # closes the block's polygon
+    body = [*loads.forces.get(b, []), *loads.forces.get(k, [])]
+    couples = [*loads.couples.get(b, []), *loads.couples.get(k, [])]
+    found(jb, r_pb)
+    found(jk, r_xk)
+    reactions[(b, k)], reactions[(k, b)] = r_bk, -r_bk
+    joints.append(Joint(y.block_pivot, b, k))
+    closing[f"group {b}–{k}"] = np.ones(n)
+    if keep_groups:
+        chain = [(f"R_{k}{b}", -r_bk)] + [(f.name, f.vector) for f in loads.forces.get(b, [])]
+        chain += [(f"R_{jb.a}{b}", r_pb)]
+        body += [Force(f"R_{jb.a}{b}", r_pb, P, y.bar_pivot), Force(f"R_{jk.a}{k}", r_xk, X, y.block_pivot)]
+        groups.append(GroupPolygon(f"group {b}–{k}", (b, k), tuple(body), tuple(couples), tuple(chain),
+                                   (f"R_{jb.a}{b}",), np.ones(n)))
 
 
 def _guide_point(C: np.ndarray, t: complex, r: np.ndarray, m: np.ndarray) -> np.ndarray:
@@ -672,7 +729,10 @@ def zhukovsky_lever(linkage: Linkage, model: ForceModel, kin: PolygonKinematics)
         u, v = pts[link][0], pts[link][1] if len(pts[link]) > 1 else pts[link][0]
         uv = kin.point[v] - kin.point[u]
         for c in cs:
-            if u == v:  # a translating link: a couple on it does no work
+            if u == v:
+                # A link with one point (a rocking block turning with its bar): the couple's power
+                # M·ω is put on the lever as its moment −M·ω/μv directly.
+                total = total - c.moment * kin.omega.get(link, np.zeros_like(total)) / mv
                 continue
             pair = c.moment / np.abs(uv) ** 2 * (1j * uv)
             for name, at, force in ((c.name, v, pair), (c.name, u, -pair)):
