@@ -140,9 +140,13 @@ def _conditioning(fa: ForceAnalysis) -> None:
     """Near a toggle a polygon's closing lines meet at a shallow angle and the reactions grow
     without bound: say where, and flag the rows where rounding itself is amplified."""
     for i, lab in enumerate(fa.labels):
+        where = position_text(fa.build, lab)
+        if fa.kin.valid[i] and fa.kinematics.exact.valid[i] and not fa.exact.valid[i]:
+            fa.warnings.append(f"{where}: the equilibrium equations are singular (condition number "
+                               f"{float(fa.exact.condition[i]):.2g}): the transmission angle is 0° and the "
+                               "reactions are unbounded; no force values here")
         if not _ok(fa, i):
             continue
-        where = position_text(fa.build, lab)
         for name, sin in fa.solution.closing.items():
             s = float(sin[i])
             if s < SHALLOW_SIN:
@@ -186,7 +190,7 @@ def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, f
         link = m.group("h")
         f, mo = ex.inertia_force[link][i], ex.inertia_moment[link][i]
         fm = math.hypot(f[0], f[1])
-        e = abs(mo) / fm if fm > 0 else 0.0
+        e = float(abs(mo) / fm) if fm > 0 else 0.0
         h = float(sol.inertia[link].offset[i])
         return h / mu_l, mu_l, (h / mu_l) * mu_l, e, "m"
     if m.group("ri"):
@@ -265,9 +269,11 @@ def _rows(fa: ForceAnalysis) -> None:
             if not (math.isfinite(g) and math.isfinite(e)):
                 problems.append((f"find[{k}]", f"{base} is not finite at {position_text(fa.build, fa.labels[i])}"))
                 continue
+            g, e = float(g), float(e)
             err = abs(g - e) / max(abs(e), ch)
-            fa.rows.append(Row(f"{base}@{fa.labels[i]}" if multi else base, unit, drawn, scale, g, e, err,
-                               fa.ill.get(i, False)))
+            fa.rows.append(Row(f"{base}@{fa.labels[i]}" if multi else base, unit,
+                               None if drawn is None else float(drawn), float(scale), g, e, err,
+                               bool(fa.ill.get(i, False))))
     if problems:
         raise SceneError(problems, fa.scene.source)
 
@@ -298,7 +304,8 @@ def _judge_forces(fa: ForceAnalysis, entries: list[tuple[str, str, float]]) -> l
             tol = prec * fa.scales["l"]
         elif unit == "":
             tol = 0.01
-        out.append(Verdict(name, value, e, tol, abs(value - e) <= tol + 1e-12 * abs(e), unit))
+        e = float(e)
+        out.append(Verdict(name, value, e, float(tol), bool(abs(value - e) <= tol + 1e-12 * abs(e)), unit))
     if problems:
         raise SceneError(problems, fa.scene.source)
     return out

@@ -315,3 +315,18 @@ def test_check_of_a_force_scene_never_imports_matplotlib():
             "assert not any(m.split('.')[0] == 'matplotlib' for m in sys.modules), 'matplotlib imported'")
     r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
+
+
+def test_measured_forces_are_judged_at_the_drawing_precision():
+    """R_12 read off the polygon at μF = 25 N/mm: ±0.5 mm is ±12.5 N; M_b ± 12.5 N × l_AB."""
+    scene = SCENES / "force.sixbar_kinetostatic.toml"
+    code, out, err = run_cli("check", str(scene), "--json", "--measured", "R_12=1595,M_b=121.8,h_2=0.0245")
+    assert code == 0, err
+    import json
+
+    verdicts = {v["name"]: v for v in json.loads(out)["measured"]}
+    assert verdicts["R_12"]["tolerance"] == pytest.approx(12.5) and verdicts["R_12"]["ok"]
+    assert verdicts["M_b"]["tolerance"] == pytest.approx(12.5 * 0.08) and verdicts["M_b"]["ok"]
+    assert verdicts["h_2"]["tolerance"] == pytest.approx(0.0025) and verdicts["h_2"]["ok"]
+    code, out, _ = run_cli("check", str(scene), "--measured", "R_12=1600.5")
+    assert code == 1 and "OUT OF TOLERANCE" in out
