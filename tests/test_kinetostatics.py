@@ -330,3 +330,44 @@ def test_measured_forces_are_judged_at_the_drawing_precision():
     assert verdicts["h_2"]["tolerance"] == pytest.approx(0.0025) and verdicts["h_2"]["ok"]
     code, out, _ = run_cli("check", str(scene), "--measured", "R_12=1600.5")
     assert code == 1 and "OUT OF TOLERANCE" in out
+
+
+# ----------------------------------------------------------------------------- properties
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+def _fourbar_linkage(a: float, b: float, c: float, d: float):
+    from graphmech.mechanisms.linkage import RRR, Crank, Linkage, LinkPoint
+
+    return Linkage({"A": (0.0, 0.0), "D": (d, 0.0)}, Crank("1", "A", "B", a, 10.0, 3.0),
+                   (RRR("B", "C", "D", ("2", "3"), (b, c), "left"),),
+                   (LinkPoint("S2", "2", ("B", "C"), b / 2, 0.01), LinkPoint("S3", "3", ("D", "C"), c / 3, 0.0)), "0")
+
+
+@settings(max_examples=40, deadline=None)
+@given(phi=st.floats(0.0, 6.28), m2=st.floats(0.1, 10.0), m3=st.floats(0.1, 10.0), f=st.floats(0.0, 500.0),
+       angle=st.floats(-3.14, 3.14), friction=st.booleans())
+def test_polygons_equal_the_matrix_method_on_random_loads(phi, m2, m3, f, angle, friction):
+    """A crank-rocker (AB 60, BC 120, CD 90, AD 120 mm) at any angle, any loads, with or without
+    friction: the group-by-group polygons and the matrix method give the same reactions and M_b."""
+    from graphmech.exact.kinetostatics import solve_forces
+    from graphmech.mechanisms.forces import PointForce, RevoluteFriction
+    from graphmech.methods.polygons import build_polygons
+
+    lk = _fourbar_linkage(0.06, 0.12, 0.09, 0.12)
+    journals = tuple(RevoluteFriction(p, 0.1, 0.005) for p in "ABCD") if friction else ()
+    model = ForceModel((LinkMass("2", "S2", m2, m2 * 0.002), LinkMass("3", "S3", m3, m3 * 0.001)),
+                       (PointForce("3", "C", f, angle),), gravity=9.81, revolute_friction=journals)
+    b = build_polygons(lk, {"l": 0.001, "v": 0.01, "a": 0.1})
+    batch = b.g.prune(K.construction_targets(b)).evaluate_batch({"phi": np.array([phi])})
+    kin = K.kinematics_from_construction(b, batch.values, batch.valid)
+    sol = K.kinetostatics(lk, model, kin, polygons=False)
+    ex = solve_forces(lk, model, np.array([phi]))
+    size = max(abs(complex(r[0])) for r in sol.reactions.values())
+    for key, r in sol.reactions.items():
+        assert abs(complex(r[0]) - complex(*ex.reactions[key][0])) <= 1e-9 * size, key
+    assert abs(sol.balancing_moment[0] - ex.balancing_moment[0]) <= 1e-9 * size * 0.06
+    if not friction:
+        lever = K.zhukovsky_lever(lk, model, kin)
+        assert abs(lever.balancing_moment[0] - ex.balancing_moment[0]) <= 1e-9 * size * 0.06

@@ -219,11 +219,24 @@ def solve_forces(linkage: Linkage, model: ForceModel, positions: np.ndarray,
         nrm_mag = x[:, base + 2 * s]
         t = tangents[s]
         v = np.einsum("ij,ij->i", _sliding_velocity(linkage, kin, sliders[s]), t)
-        tang = -fric.get(b, 0.0) * np.abs(nrm_mag) * np.sign(v)
+        tang = -fric.get(b, 0.0) * np.abs(nrm_mag) * _sense(v, _speed_scale(kin))
         r = nrm_mag[:, None] * np.stack([-t[:, 1], t[:, 0]], axis=1) + tang[:, None] * t
         reactions[(a, b)], reactions[(b, a)] = r, -r
         guide_moments[b] = x[:, base + 2 * s + 1]
     return ExactForces(reactions, guide_moments, x[:, m - 1], f_in, m_in, condition, valid, iterations)
+
+
+#: Relative rotation or sliding below this fraction of the largest rate in the mechanism is none:
+#: the friction's sense is then undefined, and the friction force or couple is taken as zero.
+_STILL = 1e-9
+
+
+def _sense(x: np.ndarray | float, scale: np.ndarray | float) -> np.ndarray:
+    return np.where(np.abs(x) > _STILL * np.asarray(scale), np.sign(x), 0.0)
+
+
+def _speed_scale(kin: Kinematics) -> np.ndarray:
+    return np.max(np.stack([np.hypot(v[:, 0], v[:, 1]) for v in kin.vel.values()]), axis=0)
 
 
 def _guide_tangent(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str, str]) -> np.ndarray:
@@ -264,15 +277,18 @@ def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.n
     ok = np.ones(n, dtype=bool)
     zero = np.zeros(n)
     rel_v = [np.einsum("ij,ij->i", _sliding_velocity(linkage, kin, sl), tangents[s]) for s, sl in enumerate(sliders)]
+    w_scale = np.max(np.abs(np.stack(list(kin.omega.values()) or [zero])), axis=0)
+    v_scale = _speed_scale(kin)
     for i in np.flatnonzero(valid):
         # Per position: which way each joint turns relatively, and the geometry of the slides.
-        rel = [float(np.sign(kin.omega.get(b, zero)[i] - kin.omega.get(a, zero)[i])) for a, b, _ in revolutes]
+        rel = [float(_sense(kin.omega.get(b, zero)[i] - kin.omega.get(a, zero)[i], w_scale[i]))
+               for a, b, _ in revolutes]
         slide = []
         for s, (a, b, p, _) in enumerate(sliders):
             t = tangents[s][i]
             arms = [(row[k], sign, kin.point[p][i] - kin.point[pts[k][0]][i]) for k, sign in ((b, 1.0), (a, -1.0))
                     if k in row]
-            slide.append((arms, t, float(np.sign(rel_v[s][i])), fric.get(b, 0.0)))
+            slide.append((arms, t, float(_sense(rel_v[s][i], v_scale[i])), fric.get(b, 0.0)))
 
         def residual(z: np.ndarray, i: int = i, rel: list = rel, slide: list = slide) -> np.ndarray:
             res = A[i] @ z - rhs[i]

@@ -220,8 +220,19 @@ def _cross(u: np.ndarray, w: np.ndarray) -> np.ndarray:
     return (np.conj(u) * w).imag
 
 
-def _sign(x: np.ndarray) -> np.ndarray:
-    return np.sign(x).astype(float)
+#: A relative rotation or sliding speed below this fraction of the mechanism's largest is no
+#: motion at all (two links turning together at a position): no sense, so no friction there.
+STILL = 1e-9
+
+
+def _sign(x: np.ndarray, scale: Any = 0.0) -> np.ndarray:
+    """sign(x), 0 where |x| ≤ STILL·scale (rounding must not pick a friction's sense)."""
+    return np.where(np.abs(x) > STILL * np.asarray(scale), np.sign(x), 0.0).astype(float)
+
+
+def _largest(rates: dict[str, np.ndarray], n: int) -> np.ndarray:
+    """The largest |value| among the links (or points) at each position."""
+    return np.max(np.abs(np.stack(list(rates.values()) or [np.zeros(n)])), axis=0)
 
 
 @dataclass
@@ -418,7 +429,7 @@ class _Friction:
             return np.zeros(n)
         r = np.abs(self.previous.reactions[(joint.a, joint.b)])
         rel = omega.get(joint.b, np.zeros(n)) - omega.get(joint.a, np.zeros(n))
-        return -rho * r * _sign(rel)
+        return -rho * r * _sign(rel, _largest(omega, n))
 
     #: slider link → the guide's normal reaction (signed along the guide's normal), the round
     #: before and this round: its sense decides which way the reaction is tilted.
@@ -499,7 +510,7 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
             f = fr.f.get(k, 0.0) if fr.previous is not None else 0.0
             v_rel = (np.conj(t) * kin.vel[y.c]).real
             sigma = np.where(fr.normal.get(k, np.ones(n)) >= 0, 1.0, -1.0)
-            u_close = nrm - f * sigma * _sign(v_rel) * t
+            u_close = nrm - f * sigma * _sign(v_rel, _largest(kin.vel, n)) * t
             u_close = u_close / np.abs(u_close)
             close_name = f"R_{frame}{k}"
         # Close the polygon: x·e_p (∥ PC, through the start) + y·u_close (through the end) = −s.
@@ -587,7 +598,7 @@ def _rpr_group(y: RPR, kin: PolygonKinematics, loads: _Loads, owner: dict[str, s
     # Friction on the slide: −f|N| along the bar against the block's motion relative to the bar.
     f = fr.f.get(k, 0.0) if fr.previous is not None else 0.0
     v_rel = (np.conj(t) * (kin.vel[y.coincident[1]] - kin.vel[y.coincident[0]])).real
-    r_bk = N * nrm - f * np.abs(N) * _sign(v_rel) * t  # the bar on the block
+    r_bk = N * nrm - f * np.abs(N) * _sign(v_rel, _largest(kin.vel, n)) * t  # the bar on the block
     fr.normal_next[k] = N
     known_b = loads.total(b, n)
     known_k = loads.total(k, n)
