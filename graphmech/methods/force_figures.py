@@ -19,7 +19,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage
+from graphmech.mechanisms.linkage import RRP, Crank, Linkage
 from graphmech.methods.figures import mechanism_items
 from graphmech.methods.kinetostatics import GroupPolygon, KinetostaticSolution, Lever, PolygonKinematics
 from graphmech.render.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Segment, Sheet,
