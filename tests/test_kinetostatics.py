@@ -8,13 +8,14 @@ import tomllib
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 import graphmech.methods.kinetostatics as K
 from graphmech.errors import SceneError
 from graphmech.force_check import analyse_forces
 from graphmech.mechanisms.forces import ForceModel, LinkMass
 from graphmech.scene import load_scene, parse_scene
-from tests.conftest import ROOT, SCENES, check_json, fourbar_scene, run_cli, values
+from tests.conftest import ROOT, SCENES, check_json, fourbar_scene, run_cli
 
 FOURBAR_LOADS = """
 [forces]
@@ -334,7 +335,6 @@ def test_measured_forces_are_judged_at_the_drawing_precision():
 
 # ----------------------------------------------------------------------------- properties
 
-from hypothesis import given, settings, strategies as st  # noqa: E402
 
 
 def _fourbar_linkage(a: float, b: float, c: float, d: float):
