@@ -39,7 +39,7 @@ from graphmech.tolerances import COND_WARN
 #: The force quantities a scene may ask for (links are one character: R_12, F_i2, h_2).
 FORCE_NAME = re.compile(
     r"(?:M_b|M_b_lever|M_b0|eta|F_i(?P<fi>\w)(?P<fic>_x|_y)?|M_i(?P<mi>\w)|h_(?P<h>\w)"
-    r"|R_(?P<ri>\w)(?P<rj>\w)(?P<rc>_x|_y)?|M_(?P<gi>\w)(?P<gj>\w))")
+    r"|R_(?P<ri>\w)(?P<rj>\w)(?P<rc>_x|_y)?|(?P<gm>M|e)_(?P<gi>\w)(?P<gj>\w))")
 #: Room for the largest force polygon, mm (μF is chosen so that it fits).
 POLYGON_ROOM_MM = 70.0
 
@@ -199,7 +199,19 @@ def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, f
     if m.group("gi"):
         slider = m.group("gj")
         g = next(gr for gr in sol.guides if gr.slider == slider)
-        return None, 1.0, float(g.moment[i]), float(ex.guide_moments[slider][i]), "N·m"
+        if m.group("gm") == "M":
+            return None, 1.0, float(g.moment[i]), float(ex.guide_moments[slider][i]), "N·m"
+        # e: where the guide reaction's line of action crosses the guide, from the slider's point
+        # along the guide (M = e·(t × R)), drawn on the free body at μl
+        y = next(d for d in fa.build.linkage.dyads if getattr(d, "links", (None, None))[1] == slider
+                 and hasattr(d, "guide"))
+        t = complex(math.cos(y.guide.angle), math.sin(y.guide.angle))
+        tr = (np.conj(t) * complex(g.force[i])).imag
+        e_g = float(g.moment[i]) / tr if tr != 0 else 0.0
+        r = ex.reactions[(g.frame, slider)][i]
+        tr_x = t.real * r[1] - t.imag * r[0]
+        e_x = float(ex.guide_moments[slider][i]) / tr_x if tr_x != 0 else 0.0
+        return e_g / mu_l, mu_l, (e_g / mu_l) * mu_l, e_x, "m"
     if base == "M_b":
         return None, 1.0, float(sol.balancing_moment[i]), float(ex.balancing_moment[i]), "N·m"
     bare = fa.frictionless or sol
@@ -228,7 +240,7 @@ def _known(fa: ForceAnalysis, base: str) -> str | None:
         pairs = sorted({f"R_{a}{b}" for (a, b) in fa.solution.reactions if a < b})
         return f"links {m.group('ri')} and {m.group('rj')} have no joint (reactions: {', '.join(pairs)})"
     if m.group("gi") and not any(g.slider == m.group("gj") and g.frame == m.group("gi") for g in fa.solution.guides):
-        guides = ", ".join(f"M_{g.frame}{g.slider}" for g in fa.solution.guides) or "none"
+        guides = ", ".join(f"M_{g.frame}{g.slider}, e_{g.frame}{g.slider}" for g in fa.solution.guides) or "none"
         return f"no slider {m.group('gj')} on a guide of link {m.group('gi')} (guide moments: {guides})"
     if base in ("eta", "M_b0") and not fa.scene.forces.model.has_friction:
         return f"{base} compares with friction: this scene has none"

@@ -59,6 +59,8 @@ def test_sixbar_reactions_polygon_equals_matrix_equals_reference(sixbar, problem
     assert q["R_05_x"]["graphical"] == pytest.approx(0.0, abs=1e-10)
     assert q["R_05_y"]["graphical"] == pytest.approx(ref["R05_y_N"], rel=1e-12)
     assert q["M_05"]["graphical"] == pytest.approx(ref["M05_Nm"], rel=1e-12)
+    assert q["e_05"]["graphical"] == pytest.approx(ref["e05_m"], rel=1e-12)  # x_Q − x_F
+    assert q["e_05"]["drawn_mm"] == pytest.approx(ref["e05_m"] / 0.005, rel=1e-12)
 
 
 def test_sixbar_balancing_moment_three_ways(sixbar, problems):
@@ -78,6 +80,7 @@ def test_sixbar_with_friction(sixbar_friction, problems):
         assert q[f"R_{ij}"]["exact"] == pytest.approx(ref[f"R{ij}_friction_N"], rel=1e-11), ij
     assert q["R_05_x"]["graphical"] == pytest.approx(ref["R05_friction_x_N"], rel=1e-10)
     assert q["M_05"]["graphical"] == pytest.approx(ref["M05_friction_Nm"], rel=1e-10)
+    assert q["e_05"]["graphical"] == pytest.approx(ref["e05_friction_m"], rel=1e-10)
     assert q["M_b"]["graphical"] == pytest.approx(ref["Mb_friction_Nm"], rel=1e-12)
     assert q["M_b0"]["graphical"] == pytest.approx(ref["Mb_Nm"], rel=1e-12)
     assert q["eta"]["graphical"] == pytest.approx(ref["eta_instant"], rel=1e-12)
