@@ -254,7 +254,9 @@ def force_sheet(title: str, build: Any, kin: PolygonKinematics, sol: Kinetostati
     panels: list[Panel] = list(head)
     mu_l = build.mu_l
     if "forces" in show:
-        notes = (f"μl = {mu_l:.6g} m/mm", "loads: arrows not to scale")
+        notes: tuple[str, ...] = (f"μl = {mu_l:.6g} m/mm", "loads: arrows not to scale")
+        if any(fr.rho > 0 for fr in model.revolute_friction):
+            notes += ("friction circles ρ = f_v·r at μl",)
         panels.append(Panel("forces", f"Loads and inertia forces, {position}",
                             tuple(loads_items(build, kin, sol, model, i)), notes))
     if "force_polygons" in show:
