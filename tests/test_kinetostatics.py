@@ -96,6 +96,11 @@ def test_transmission_angle_near_zero_reactions_grow_without_bound_and_warn():
     # R ~ 1/sin γ: γ shrinks 10× from 1.22° to 0.122°, so does R grow 10×
     assert r[80.0001] / r[80.01] == pytest.approx(10.0, rel=1e-3)
     assert r[80.01] > 7 * r[80.5]
+    # closer still, rounding itself is amplified past the agreement bar: the rows say so
+    fa = analyse_forces(_scene(_fourbar(80.00001)))
+    row = {x.name: x for x in fa.rows}["R_23"]
+    assert row.ill_conditioned and row.rel_error > 1e-10
+    assert not any(x.ill_conditioned for x in analyse_forces(_scene(_fourbar(80.01))).rows)
 
 
 def test_near_collinear_closing_lines_of_a_slider_group_are_flagged():
