@@ -38,7 +38,7 @@ from graphmech.tolerances import COND_WARN
 
 #: The force quantities a scene may ask for (links are one character: R_12, F_i2, h_2).
 FORCE_NAME = re.compile(
-    r"(?:M_b|M_b_lever|M_b0|eta|F_i(?P<fi>\w)(?P<fic>_x|_y)?|M_i(?P<mi>\w)|h_(?P<h>\w)"
+    r"(?:M_b|M_b_lever|M_b0|F_b|F_b_lever|F_b0|eta|F_i(?P<fi>\w)(?P<fic>_x|_y)?|M_i(?P<mi>\w)|h_(?P<h>\w)"
     r"|R_(?P<ri>\w)(?P<rj>\w)(?P<rc>_x|_y)?|(?P<gm>M|e)_(?P<gi>\w)(?P<gj>\w))")
 #: Room for the largest force polygon, mm (μF is chosen so that it fits).
 POLYGON_ROOM_MM = 70.0
@@ -105,12 +105,13 @@ def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (
     fa = ForceAnalysis(scene, an, kin, sol, exact, dict(an.scales), set(an.stated), an.labels)
     fa.warnings = list(an.warnings)
     fa.rows = list(an.rows)
-    wants_frictionless = any(n in ("M_b_lever", "M_b0", "eta") for n in names) or "lever" in scene.show
+    wants_frictionless = any(n in ("M_b_lever", "M_b0", "F_b_lever", "F_b0", "eta") for n in names) \
+        or "lever" in scene.show
     if model.has_friction and wants_frictionless:
         bare = replace(model, revolute_friction=(), sliding_friction=())
         fa.frictionless = kinetostatics(b.linkage, bare, kin, polygons=False)
         fa.exact_frictionless = solve_forces(b.linkage, bare, an.positions, an.exact)
-    if "M_b_lever" in names or "lever" in scene.show:
+    if "M_b_lever" in names or "F_b_lever" in names or "lever" in scene.show:
         fa.lever = zhukovsky_lever(b.linkage, model, kin)
     _choose_force_scale(fa)
     _conditioning(fa)
@@ -203,9 +204,10 @@ def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, f
             return None, 1.0, float(g.moment[i]), float(ex.guide_moments[slider][i]), "N·m"
         # e: where the guide reaction's line of action crosses the guide, from the slider's point
         # along the guide (M = e·(t × R)), drawn on the free body at μl
-        y = next(d for d in fa.build.linkage.dyads if getattr(d, "links", (None, None))[1] == slider
-                 and hasattr(d, "guide"))
-        t = complex(math.cos(y.guide.angle), math.sin(y.guide.angle))
+        angle = next(y.guide.angle for y in (fa.build.linkage.driver, *fa.build.linkage.dyads)
+                     if hasattr(y, "guide") and (getattr(y, "link", None) == slider
+                                                 or getattr(y, "links", (None, None))[1] == slider))
+        t = complex(math.cos(angle), math.sin(angle))
         tr = (np.conj(t) * complex(g.force[i])).imag
         e_g = float(g.moment[i]) / tr if tr != 0 else 0.0
         r = ex.reactions[(g.frame, slider)][i]
@@ -216,12 +218,27 @@ def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, f
         return None, 1.0, float(sol.balancing_moment[i]), float(ex.balancing_moment[i]), "N·m"
     bare = fa.frictionless or sol
     bare_ex = fa.exact_frictionless or ex
+    if base.startswith("F_b"):  # a driving slider's balancing force, signed along its guide
+        assert sol.balancing_force is not None and ex.balancing_force is not None
+        assert bare.balancing_force is not None and bare_ex.balancing_force is not None
+        if base == "F_b":
+            g, e = float(sol.balancing_force[i]), float(ex.balancing_force[i])
+        elif base == "F_b0":
+            g, e = float(bare.balancing_force[i]), float(bare_ex.balancing_force[i])
+        else:
+            assert fa.lever is not None and fa.lever.balancing_force is not None
+            g, e = float(fa.lever.balancing_force[i]), float(bare_ex.balancing_force[i])
+        return g / mu_F, mu_F, (g / mu_F) * mu_F, e, "N"
     if base == "M_b0":
         return None, 1.0, float(bare.balancing_moment[i]), float(bare_ex.balancing_moment[i]), "N·m"
     if base == "M_b_lever":
         assert fa.lever is not None
         return None, 1.0, float(fa.lever.balancing_moment[i]), float(bare_ex.balancing_moment[i]), "N·m"
-    # eta: the instantaneous efficiency, M_b without friction over M_b with it
+    # eta: the instantaneous efficiency, M_b (F_b) without friction over M_b (F_b) with it
+    if sol.balancing_force is not None:
+        g = float(bare.balancing_force[i]) / float(sol.balancing_force[i])  # type: ignore[index]
+        e = float(bare_ex.balancing_force[i]) / float(ex.balancing_force[i])  # type: ignore[index]
+        return None, 1.0, g, e, ""
     g = float(bare.balancing_moment[i]) / float(sol.balancing_moment[i])
     e = float(bare_ex.balancing_moment[i]) / float(ex.balancing_moment[i])
     return None, 1.0, g, e, ""
@@ -242,8 +259,13 @@ def _known(fa: ForceAnalysis, base: str) -> str | None:
     if m.group("gi") and not any(g.slider == m.group("gj") and g.frame == m.group("gi") for g in fa.solution.guides):
         guides = ", ".join(f"M_{g.frame}{g.slider}, e_{g.frame}{g.slider}" for g in fa.solution.guides) or "none"
         return f"no slider {m.group('gj')} on a guide of link {m.group('gi')} (guide moments: {guides})"
-    if base in ("eta", "M_b0") and not fa.scene.forces.model.has_friction:
+    if base in ("eta", "M_b0", "F_b0") and not fa.scene.forces.model.has_friction:
         return f"{base} compares with friction: this scene has none"
+    slider_driven = fa.solution.balancing_force is not None
+    if base.startswith("M_b") and slider_driven:
+        return f"the driver is a slider: its balancing force is {base.replace('M_b', 'F_b')}"
+    if base.startswith("F_b") and not slider_driven:
+        return f"the driver is a crank: its balancing moment is {base.replace('F_b', 'M_b')}"
     if base == "eta":
         return None
     return None
@@ -281,7 +303,7 @@ def _rows(fa: ForceAnalysis) -> None:
             if not (math.isfinite(g) and math.isfinite(e)):
                 problems.append((f"find[{k}]", f"{base} is not finite at {position_text(fa.build, fa.labels[i])}"))
                 continue
-            g, e = float(g), float(e)
+            g, e = float(g) + 0.0, float(e) + 0.0  # no "-0" in the table
             err = abs(g - e) / max(abs(e), ch)
             fa.rows.append(Row(f"{base}@{fa.labels[i]}" if multi else base, unit,
                                None if drawn is None else float(drawn), float(scale), g, e, err,

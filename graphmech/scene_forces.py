@@ -1,6 +1,6 @@
 """Read a force scene: a linkage scene with a ``[forces]`` table (kinetostatic analysis).
 
-A force scene is a linkage scene (``[frame]``, ``[driver]`` — a crank —, ``[[dyad]]``,
+A force scene is a linkage scene (``[frame]``, ``[driver]`` — a crank or a slider —, ``[[dyad]]``,
 ``[[point]]``) with a ``[forces]`` table: the links' masses and moments of inertia at named
 centres of mass, external forces at named points and moments on links, gravity, friction in the
 journals (friction circles) and on the guides (friction angles), and the force scale μF.
@@ -156,7 +156,7 @@ def _joint_lengths(linkage: Linkage) -> dict[str, float]:
 
 def _revolute_points(linkage: Linkage) -> set[str]:
     d = linkage.driver
-    out = {d.pivot, d.tip} if isinstance(d, Crank) else set()
+    out = {d.pivot, d.tip} if isinstance(d, Crank) else {d.point}
     for y in linkage.dyads:
         if isinstance(y, RRR):
             out |= {y.p, y.c, y.q}
@@ -254,6 +254,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     slides: list[SlidingFriction] = []
     sliders = None if linkage is None else (
         {y.links[1] for y in linkage.dyads if isinstance(y, RRP)}
+        | ({linkage.driver.link} if not isinstance(linkage.driver, Crank) else set())
         | {y.block_link for y in linkage.dyads if isinstance(y, RPR)})
     for r in fr.tables_at("guide")[:MAX_ITEMS]:
         value = r.raw("link", required=True, hint='the slider\'s link number, e.g. link = "3"')
@@ -291,9 +292,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
 
 
 def _supported(top: _Reader, linkage: Linkage) -> None:
-    """The force polygons are built for a crank driving RRR and RRP groups: refuse the rest."""
-    if not isinstance(linkage.driver, Crank):
-        top.problem("driver.type", "a force scene's driver is a crank: the balancing moment acts on it")
+    """The force polygons are built for RRR, RRP and RPR groups: refuse RPP."""
     for k, y in enumerate(linkage.dyads):
         if isinstance(y, RPP):
             top.problem(f"dyad[{k}].type", f"{y.kind} groups are not built for force polygons yet "

@@ -217,7 +217,7 @@ def test_unknown_force_names_are_one_line_errors(tmp_path, find, message):
     assert code == 2 and err == f"s.toml: {message}\n"
 
 
-def test_rpp_groups_and_slider_drivers_are_refused_in_one_line(tmp_path):
+def test_rpp_groups_are_refused_in_one_line(tmp_path):
     text = (SCENES / "linkage.slider_fixed_angle_guide.toml").read_text(encoding="utf-8") + """
 [forces]
 [[forces.moment]]
@@ -376,3 +376,75 @@ def test_polygons_equal_the_matrix_method_on_random_loads(phi, m2, m3, f, angle,
     if not friction:
         lever = K.zhukovsky_lever(lk, model, kin)
         assert abs(lever.balancing_moment[0] - ex.balancing_moment[0]) <= 1e-9 * size * 0.06
+
+
+SLIDER_DRIVEN = """
+title = "Slider-driven rocker: balancing force"
+show = ["forces", "force_polygons", "lever"]
+find = ["F_b", "F_b_lever", "R_12", "R_23", "R_03", "R_01", "M_01"{more}]
+[units]
+length = "mm"
+angle = "deg"
+velocity = "m/s"
+acceleration = "m/s2"
+[frame]
+link = "0"
+O = [0, 0]
+D = [100, 60]
+[driver]
+type = "slider"
+link = "1"
+point = "B"
+guide = {{ through = "O", angle = 0 }}
+position = [40, 60, 80]
+velocity = 0.5
+acceleration = -2
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths = [80, 50]
+branch = "right"
+[[point]]
+name = "S2"
+link = "2"
+base = ["B", "C"]
+along = 40
+left = 0
+[forces]
+gravity_m_s2 = 9.81
+[[forces.mass]]
+link = "1"
+point = "B"
+mass_kg = 3
+[[forces.mass]]
+link = "2"
+point = "S2"
+mass_kg = 1
+inertia_kgm2 = 0.002
+[[forces.moment]]
+name = "M_r"
+link = "3"
+moment_Nm = 4
+{extra}
+"""
+
+
+@pytest.mark.parametrize("friction", [False, True])
+def test_a_driving_slider_gets_a_balancing_force(friction):
+    """The slider-driven rocker of the docs at three positions: F_b by the polygons, by the matrix
+    method and by Zhukovsky's lever (F_b = μv·ΣM_p/v)."""
+    extra = '[[forces.guide]]\nlink = "1"\nf = 0.2\n[[forces.journal]]\npoint = "C"\nf_v = 0.2\nradius = 5\n'
+    text = SLIDER_DRIVEN.format(more=', "F_b0"' if friction else "", extra=extra if friction else "")
+    fa = analyse_forces(_scene(text))
+    rows = {r.name: r for r in fa.rows}
+    assert len(rows) == 3 * (8 if friction else 7)
+    for row in fa.rows:
+        assert row.rel_error < 1e-12, row
+    for lab in ("40", "60", "80"):  # the lever is frictionless
+        ref = rows[f"F_b0@{lab}"].graphical if friction else rows[f"F_b@{lab}"].graphical
+        assert rows[f"F_b_lever@{lab}"].graphical == pytest.approx(ref, rel=1e-12)
+    assert rows["F_b@60"].graphical == pytest.approx(-86.8604612 if friction else -89.4518378, rel=1e-8)
+    assert _scene(text).forces is not None
+    with pytest.raises(SceneError, match="the driver is a slider: its balancing force is F_b"):
+        analyse_forces(_scene(text.replace('"F_b",', '"M_b",', 1)))

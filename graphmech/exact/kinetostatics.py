@@ -24,7 +24,7 @@ import numpy as np
 
 from graphmech.exact.linkage import Kinematics, solve as solve_kinematics
 from graphmech.mechanisms.forces import ForceModel
-from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage
+from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage, SliderInput
 
 __all__ = ["ExactForces", "solve_forces", "pairs"]
 
@@ -40,7 +40,7 @@ class ExactForces:
     guide_moments : dict of str to ndarray, shape (N,)
         Slider link → moment of the guide's reaction about the slider's point, N·m.
     balancing_moment : ndarray, shape (N,)
-        M_b on the crank, N·m.
+        M_b on the crank, N·m (0 with a slider driver).
     inertia_force : dict of str to ndarray, shape (N, 2)
         Link → F_i = −m·a_S, N.
     inertia_moment : dict of str to ndarray, shape (N,)
@@ -51,6 +51,9 @@ class ExactForces:
         Where the kinematics and the equations could be solved.
     iterations : ndarray of int
         Function evaluations of the nonlinear solver per position (0 without friction).
+    balancing_force : ndarray or None
+        A driving slider's balancing force along its guide, N (None for a crank; then
+        ``balancing_moment`` is M_b, and 0 for a slider).
     """
 
     reactions: dict[tuple[str, str], np.ndarray]
@@ -61,6 +64,7 @@ class ExactForces:
     condition: np.ndarray
     valid: np.ndarray
     iterations: np.ndarray
+    balancing_force: np.ndarray | None = None
 
 
 def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str, str, str, str]]]:
@@ -72,10 +76,12 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
     revolutes: list[tuple[str, str, str]] = []
     slides: list[tuple[str, str, str, str]] = []
     d = linkage.driver
-    if not isinstance(d, Crank):
-        raise ValueError("the matrix method here takes a crank-driven linkage")
-    revolutes.append((frame, d.link, d.pivot))
-    on.setdefault(d.tip, d.link)
+    if isinstance(d, Crank):
+        revolutes.append((frame, d.link, d.pivot))
+        on.setdefault(d.tip, d.link)
+    else:  # a driving slider on its frame guide
+        slides.append((frame, d.link, d.point, "frame"))
+        on.setdefault(d.point, d.link)
     extra = {pt.name: pt.link for pt in linkage.points}
     for y in linkage.dyads:
         for name in (y.p, getattr(y, "q", y.p)):
@@ -161,8 +167,15 @@ def solve_forces(linkage: Linkage, model: ForceModel, positions: np.ndarray,
             cx, cy = cross_col(kin.point[p] - ref[link])
             A[:, r0 + 2, base + 2 * s] += sign * (cx * nrm[:, 0] + cy * nrm[:, 1])
             A[:, r0 + 2, base + 2 * s + 1] += sign
-    crank = linkage.driver.link
-    A[:, row[crank] + 2, m - 1] = 1.0
+    d = linkage.driver
+    if isinstance(d, Crank):  # the balancing moment on the crank
+        A[:, row[d.link] + 2, m - 1] = 1.0
+    else:  # the balancing force along the driving slider's guide, through its point
+        t = (math.cos(d.guide.angle), math.sin(d.guide.angle))
+        r0 = row[d.link]
+        cx, cy = cross_col(kin.point[d.point] - ref[d.link])
+        A[:, r0, m - 1], A[:, r0 + 1, m - 1] = t
+        A[:, r0 + 2, m - 1] = cx * t[0] + cy * t[1]
 
     # Known loads: weights, d'Alembert's inertia loads, external forces and moments.
     f_in: dict[str, np.ndarray] = {}
@@ -223,7 +236,9 @@ def solve_forces(linkage: Linkage, model: ForceModel, positions: np.ndarray,
         r = nrm_mag[:, None] * np.stack([-t[:, 1], t[:, 0]], axis=1) + tang[:, None] * t
         reactions[(a, b)], reactions[(b, a)] = r, -r
         guide_moments[b] = x[:, base + 2 * s + 1]
-    return ExactForces(reactions, guide_moments, x[:, m - 1], f_in, m_in, condition, valid, iterations)
+    if isinstance(d, Crank):
+        return ExactForces(reactions, guide_moments, x[:, m - 1], f_in, m_in, condition, valid, iterations)
+    return ExactForces(reactions, guide_moments, np.zeros(n), f_in, m_in, condition, valid, iterations, x[:, m - 1])
 
 
 #: Relative rotation or sliding below this fraction of the largest rate in the mechanism is none:
@@ -244,7 +259,9 @@ def _guide_tangent(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str
     a, b, p, guide = slide
     n = kin.valid.shape[0]
     if guide == "frame":
-        angle = next(y.guide.angle for y in linkage.dyads if isinstance(y, RRP) and y.links[1] == b)
+        d = linkage.driver
+        angle = d.guide.angle if isinstance(d, SliderInput) and d.link == b else next(
+            y.guide.angle for y in linkage.dyads if isinstance(y, RRP) and y.links[1] == b)
         return np.tile([math.cos(angle), math.sin(angle)], (n, 1))
     d = kin.point[p] - kin.point[guide]
     length = np.hypot(d[:, 0], d[:, 1])

@@ -141,6 +141,9 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
     d = linkage.driver
     if isinstance(d, Crank):
         items += _moment_arc(pos[d.pivot], float(sol.balancing_moment[i]), "M_b", 9.0)
+    elif sol.balancing_force is not None and float(sol.balancing_force[i]) != 0.0:
+        f_b = float(sol.balancing_force[i]) * complex(math.cos(d.guide.angle), math.sin(d.guide.angle))
+        items += _arrows([("F_b", f_b, complex(kin.point[d.point][i]))], to_mm, abs(f_b), "result")
     for fr in model.revolute_friction:
         if fr.rho > 0 and fr.point in pos:
             items.append(Circle(pos[fr.point], max(fr.rho / build.mu_l, 0.3), "construction"))
@@ -271,10 +274,13 @@ def force_sheet(title: str, build: Any, kin: PolygonKinematics, sol: Kinetostati
             panels.append(Panel(f"polygon-{key}", f"Force polygon, {g.name}", tuple(polygon_items(g, mu_F, i)),
                                 (f"μF = {mu_F:.6g} N/mm",)))
     if "lever" in show and lever is not None:
-        m_b = float(lever.balancing_moment[i])
+        if lever.balancing_force is not None:
+            result = f"F_b = μv·ΣM_p/v = {float(lever.balancing_force[i]):.6g} N"
+        else:
+            result = f"M_b = μv·ΣM_p/ω1 = {float(lever.balancing_moment[i]):.6g} N·m"
         panels.append(Panel("lever", "Zhukovsky's lever (velocity polygon turned 90°)",
                             tuple(lever_items(build.linkage, kin, lever, i)),
-                            (f"μv = {kin.mu_v:.6g} (m/s)/mm", f"M_b = μv·ΣM_p/ω1 = {m_b:.6g} N·m")))
+                            (f"μv = {kin.mu_v:.6g} (m/s)/mm", result)))
     return Sheet(title, tuple(panels), page, footer)
 
 

@@ -28,14 +28,14 @@ reaction ``R_ij`` is the force of link i on link j.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from graphmech.errors import DegenerateConstruction, GraphmechError
 from graphmech.mechanisms.forces import ForceModel, LinkMass
-from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage
+from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage, SliderInput
 from graphmech.tolerances import PARALLEL_SIN, SHALLOW_DEG
 
 #: |sin| of the angle between the two unknown directions of a polygon below which a hand
@@ -304,8 +304,7 @@ def carriers(linkage: Linkage) -> dict[str, str]:
     """Point name → the link that first carries it (frame points → the frame link)."""
     out = {p: linkage.frame_link for p in linkage.frame_points}
     d = linkage.driver
-    if isinstance(d, Crank):
-        out.setdefault(d.tip, d.link)
+    out.setdefault(d.tip if isinstance(d, Crank) else d.point, d.link)
     for y in linkage.dyads:
         if isinstance(y, RRR):
             out.setdefault(y.c, y.links[0])
@@ -321,9 +320,6 @@ def carriers(linkage: Linkage) -> dict[str, str]:
 
 def check_supported(linkage: Linkage) -> None:
     """Refuse, in one line, what the force polygons here are not built for."""
-    if not isinstance(linkage.driver, Crank):
-        raise UnsupportedGroup("kinetostatics: the force polygons need a crank as driver "
-                               "(a slider-driven linkage is not supported)")
     for k, y in enumerate(linkage.dyads):
         if not isinstance(y, (RRR, RRP, RPR)):
             raise UnsupportedGroup(f"kinetostatics: dyad[{k}] is an {y.kind} group; the force polygons are "
@@ -389,7 +385,7 @@ class KinetostaticSolution:
     joints : tuple of Joint
     guides : tuple of GuideReaction
     balancing_moment : ndarray
-        M_b on the crank, N·m, + CCW.
+        M_b on the crank, N·m, + CCW (0 for a slider driver).
     inertia : dict of str to InertiaLoad
     groups : tuple of GroupPolygon
         In the order solved (the farthest group first, the driver last); empty unless asked.
@@ -408,6 +404,7 @@ class KinetostaticSolution:
     iterations: int = 0
     friction_moments: dict[tuple[str, str], np.ndarray] = field(default_factory=dict)
     closing: dict[str, np.ndarray] = field(default_factory=dict)  # group name → |sin| of its closing lines
+    balancing_force: np.ndarray | None = None  # F_b on a slider driver, N along its guide (None: a crank)
 
 
 # --------------------------------------------------------------------------------------------
@@ -551,7 +548,9 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
                                        unknown, closing_sin))
     # The driver: the frame's reaction closes its polygon, the balancing moment its moments.
     d = linkage.driver
-    assert isinstance(d, Crank)
+    if isinstance(d, SliderInput):
+        return _slider_driver(d, linkage, kin, loads, reactions, joints, guides, groups, inertia, fmoments,
+                              closing, fr, keep_groups)
     ja = Joint(d.pivot, frame, d.link)
     friction(ja)
     A = P[d.pivot]
@@ -567,6 +566,38 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
                                    (f"R_{frame}{d.link}",), np.ones(n)))
     return KinetostaticSolution(reactions, tuple(joints), tuple(guides), m_b, inertia, tuple(groups),
                                 0, fmoments, closing)
+
+
+def _slider_driver(d: SliderInput, linkage: Linkage, kin: PolygonKinematics, loads: _Loads, reactions: dict,
+                   joints: list, guides: list, groups: list, inertia: dict, fmoments: dict, closing: dict,
+                   fr: _Friction, keep_groups: bool) -> KinetostaticSolution:
+    """A driving slider: the balancing force F_b along its guide and the guide's reaction ⟂ it
+    (tilted by φ with friction) close its polygon; the guide reaction's line of action from the
+    slider's moments about its point."""
+    n = kin.valid.shape[0]
+    frame = linkage.frame_link
+    t = complex(math.cos(d.guide.angle), math.sin(d.guide.angle))
+    nrm = 1j * t
+    C = kin.point[d.point]
+    s = loads.total(d.link, n)
+    normal = -(np.conj(nrm) * s).real
+    f = fr.f.get(d.link, 0.0) if fr.previous is not None else 0.0
+    v = (np.conj(t) * kin.vel[d.point]).real
+    r_guide = normal * nrm - f * np.abs(normal) * _sign(v, _largest(kin.vel, n)) * t
+    f_b = -(np.conj(t) * (s + r_guide)).real
+    m_guide = -loads.moment_about(d.link, C)  # F_b acts along the guide through the slider's point
+    reactions[(frame, d.link)], reactions[(d.link, frame)] = r_guide, -r_guide
+    guides.append(GuideReaction(frame, d.link, d.point, r_guide, m_guide))
+    fr.normal_next[d.link] = normal
+    if keep_groups:
+        chain = [(f.name, f.vector) for f in loads.forces.get(d.link, [])]
+        chain += [(f"R_{frame}{d.link}", r_guide), ("F_b", f_b * t)]
+        body = [*loads.forces.get(d.link, []), Force(f"R_{frame}{d.link}", r_guide, _guide_point(C, t, r_guide, m_guide)),
+                Force("F_b", f_b * t, C, d.point)]
+        groups.append(GroupPolygon(f"driver {d.link}", (d.link,), tuple(body), tuple(loads.couples.get(d.link, [])),
+                                   tuple(chain), (f"R_{frame}{d.link}", "F_b"), np.ones(n)))
+    return KinetostaticSolution(reactions, tuple(joints), tuple(guides), np.zeros(n), inertia, tuple(groups),
+                                0, fmoments, closing, f_b)
 
 
 def _rpr_group(y: RPR, kin: PolygonKinematics, loads: _Loads, owner: dict[str, str], friction: Any,
@@ -681,8 +712,7 @@ def kinetostatics(linkage: Linkage, model: ForceModel, kin: PolygonKinematics, *
         if change < model.tolerance:
             state.previous, state.normal, state.normal_next = sol, state.normal_next, {}
             final = _solve_round(linkage, kin, base, inertia, state, polygons) if polygons else sol
-            return KinetostaticSolution(final.reactions, final.joints, final.guides, final.balancing_moment,
-                                        inertia, final.groups, it, final.friction_moments, final.closing)
+            return replace(final, groups=final.groups, iterations=it)
     raise DegenerateConstruction(
         "friction by successive approximation",
         f"does not converge in {model.max_iterations} rounds (the reactions still change by "
@@ -691,6 +721,8 @@ def kinetostatics(linkage: Linkage, model: ForceModel, kin: PolygonKinematics, *
 
 def _largest_change(a: KinetostaticSolution, b: KinetostaticSolution, valid: np.ndarray) -> float:
     out = float(np.max(np.abs(a.balancing_moment - b.balancing_moment)[valid], initial=0.0))
+    if a.balancing_force is not None and b.balancing_force is not None:
+        out = max(out, float(np.max(np.abs(a.balancing_force - b.balancing_force)[valid], initial=0.0)))
     for key, r in b.reactions.items():
         out = max(out, float(np.max(np.abs(r - a.reactions[key])[valid], initial=0.0)))
     for ga, gb in zip(a.guides, b.guides):
@@ -713,6 +745,7 @@ class Lever:
     arms: tuple[tuple[str, np.ndarray, np.ndarray], ...]
     moment: np.ndarray
     balancing_moment: np.ndarray
+    balancing_force: np.ndarray | None = None  # a slider driver's F_b along its guide, N
 
 
 def zhukovsky_lever(linkage: Linkage, model: ForceModel, kin: PolygonKinematics) -> Lever:
@@ -750,6 +783,13 @@ def zhukovsky_lever(linkage: Linkage, model: ForceModel, kin: PolygonKinematics)
                 image = kin.vel[at] / mv * 1j
                 arms.append((name, image, force))
                 total = total + _cross(image, force)
+    if isinstance(d, SliderInput):
+        # F_b·v + ΣP = 0 with ΣP = −μv·ΣM_p: the balancing force along the guide
+        if d.velocity == 0.0:
+            raise DegenerateConstruction("Zhukovsky's lever", "the driving slider stands still: no virtual power")
+        return Lever(tuple(arms), total, np.zeros_like(total), mv * total / d.velocity)
+    if d.omega == 0.0:
+        raise DegenerateConstruction("Zhukovsky's lever", "the crank stands still: no virtual power")
     m_b = mv * total / d.omega
     return Lever(tuple(arms), total, m_b)
 
