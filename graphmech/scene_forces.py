@@ -164,6 +164,8 @@ def _revolute_points(linkage: Linkage) -> set[str]:
             out |= {y.p, y.c}
         elif isinstance(y, RPR):
             out |= {y.p, y.q}
+        elif isinstance(y, RPP):
+            out.add(y.p)
     return out
 
 
@@ -255,7 +257,8 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     sliders = None if linkage is None else (
         {y.links[1] for y in linkage.dyads if isinstance(y, RRP)}
         | ({linkage.driver.link} if not isinstance(linkage.driver, Crank) else set())
-        | {y.block_link for y in linkage.dyads if isinstance(y, RPR)})
+        | {y.block_link for y in linkage.dyads if isinstance(y, RPR)}
+        | {k for y in linkage.dyads if isinstance(y, RPP) for k in y.links})
     for r in fr.tables_at("guide")[:MAX_ITEMS]:
         value = r.raw("link", required=True, hint='the slider\'s link number, e.g. link = "3"')
         link = None if value is _MISSING else r.link_id(value, r.at("link"))
@@ -291,14 +294,6 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     return ForceScene(model, mu_F)
 
 
-def _supported(top: _Reader, linkage: Linkage) -> None:
-    """The force polygons are built for RRR, RRP and RPR groups: refuse RPP."""
-    for k, y in enumerate(linkage.dyads):
-        if isinstance(y, RPP):
-            top.problem(f"dyad[{k}].type", f"{y.kind} groups are not built for force polygons yet "
-                                            "(RRR, RRP and RPR are)")
-
-
 def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]) -> Scene:
     """The rest of :func:`graphmech.scene.parse_scene` for a linkage scene with a [forces] table.
 
@@ -330,8 +325,6 @@ def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: M
     title, show, find = _read_header(top, FORCE_SHOW_CHOICES, FORCE_SHOW_DEFAULT)
     scales = _read_scales(top)
     linkage, positions, _ = _read_linkage(top)
-    if linkage is not None:
-        _supported(top, linkage)
     fr = top.table_at("forces")
     forces = None if fr is None else _read_forces(fr, linkage)
     measured = _read_measured(top, positions.labels if positions else None)

@@ -217,16 +217,59 @@ def test_unknown_force_names_are_one_line_errors(tmp_path, find, message):
     assert code == 2 and err == f"s.toml: {message}\n"
 
 
-def test_rpp_groups_are_refused_in_one_line(tmp_path):
-    text = (SCENES / "linkage.slider_fixed_angle_guide.toml").read_text(encoding="utf-8") + """
+RPP_LOADS = """
 [forces]
-[[forces.moment]]
+gravity_m_s2 = 9.81
+[[forces.mass]]
+link = "2"
+point = "B"
+mass_kg = 0.5
+[[forces.mass]]
 link = "3"
-moment_Nm = 5
+point = "C"
+mass_kg = 2
+[[forces.force]]
+name = "Q"
+link = "3"
+point = "C"
+force_N = 300
+angle = 180
 """
-    code, out, err = run_cli("check", str(_write(tmp_path, text, "rpp.toml")))
-    assert code == 2 and err.count("\n") == 1
-    assert "RPP groups are not built for force polygons yet (RRR, RRP and RPR are)" in err
+RPP_FRICTION = """
+[[forces.guide]]
+link = "2"
+f = 0.15
+[[forces.guide]]
+link = "3"
+f = 0.1
+[[forces.journal]]
+point = "B"
+f_v = 0.1
+radius = 5
+"""
+
+
+@pytest.mark.parametrize("friction", [False, True])
+def test_rpp_slotted_slider_polygons_lever_and_matrix_agree(friction):
+    """linkage.slider_fixed_angle_guide (block 2 in the 120° slot of slider 3 on the x guide) at
+    four crank angles: friction in the slot, on the guide and in the journal B."""
+    text = (SCENES / "linkage.slider_fixed_angle_guide.toml").read_text(encoding="utf-8")
+    text = text.replace("angle = 45\n", "angle = [45, 100, 200, 300]\n", 1)
+    text = text.replace('find = ["omega_2"', 'find = ["R_12", "R_23", "R_43", "M_43", "e_43", "M_b", "M_b_lever", "omega_2"')
+    fa = analyse_forces(_scene(text + RPP_LOADS + (RPP_FRICTION if friction else "")))
+    rows = {r.name: r for r in fa.rows}
+    for row in fa.rows:
+        if not (friction and "lever" in row.name):
+            assert row.rel_error < 1e-12, row
+    assert (fa.solution.iterations > 0) == friction
+    if not friction:
+        for lab in ("45", "100", "200", "300"):
+            assert rows[f"M_b_lever@{lab}"].graphical == pytest.approx(rows[f"M_b@{lab}"].exact, rel=1e-12)
+    # the slot's reaction on the block is ⟂ the slot (tilted by φ = arctan 0.15 with friction)
+    r = complex(fa.solution.reactions[("3", "2")][0])
+    slot = complex(np.cos(np.radians(120.0)), np.sin(np.radians(120.0)))
+    tilt = abs(np.degrees(np.angle(r / (1j * slot))))
+    assert min(tilt, 180 - tilt) == pytest.approx(np.degrees(np.arctan(0.15)) if friction else 0.0, abs=1e-9)
 
 
 RPR_LOADS = """

@@ -24,7 +24,7 @@ import numpy as np
 
 from graphmech.exact.linkage import Kinematics, solve as solve_kinematics
 from graphmech.mechanisms.forces import ForceModel
-from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage, SliderInput
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, SliderInput
 
 __all__ = ["ExactForces", "solve_forces", "pairs"]
 
@@ -70,7 +70,8 @@ class ExactForces:
 def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str, str, str, str]]]:
     """The revolutes ``(a, b, point)`` and the sliding pairs ``(a, b, point, guide)``: link b slides
     on link a at ``point``; ``guide`` is ``"frame"`` (a's guide of fixed direction, a the frame) or
-    the name of the bar's pivot (the guide runs from it through ``point``)."""
+    ``"slot"`` (an RPP block b in the straight slot of a), or the name of the bar's pivot (the
+    guide runs from it through ``point``)."""
     frame = linkage.frame_link
     on: dict[str, str] = {name: frame for name in linkage.frame_points}
     revolutes: list[tuple[str, str, str]] = []
@@ -97,6 +98,10 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
         elif isinstance(y, RPR):
             revolutes += [(on[y.bar_pivot], y.bar_link, y.bar_pivot), (on[y.block_pivot], y.block_link, y.block_pivot)]
             slides.append((y.bar_link, y.block_link, y.block_pivot, y.bar_pivot))
+        elif isinstance(y, RPP):
+            revolutes.append((on[y.p], y.links[0], y.p))
+            slides += [(y.links[1], y.links[0], y.p, "slot"), (frame, y.links[1], y.c, "frame")]
+            on.setdefault(y.c, y.links[1])
         else:
             raise ValueError(f"the matrix method here takes RRR, RRP and RPR groups, not {y.kind}")
     return revolutes, slides
@@ -258,10 +263,14 @@ def _guide_tangent(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str
     """Unit direction of a sliding pair's guide at every position, shape (N, 2)."""
     a, b, p, guide = slide
     n = kin.valid.shape[0]
-    if guide == "frame":
+    if guide in ("frame", "slot"):
         d = linkage.driver
-        angle = d.guide.angle if isinstance(d, SliderInput) and d.link == b else next(
-            y.guide.angle for y in linkage.dyads if isinstance(y, RRP) and y.links[1] == b)
+        if guide == "slot":
+            angle = next(y.slot_angle for y in linkage.dyads if isinstance(y, RPP) and y.links[0] == b)
+        elif isinstance(d, SliderInput) and d.link == b:
+            angle = d.guide.angle
+        else:
+            angle = next(y.guide.angle for y in linkage.dyads if isinstance(y, (RRP, RPP)) and y.links[1] == b)
         return np.tile([math.cos(angle), math.sin(angle)], (n, 1))
     d = kin.point[p] - kin.point[guide]
     length = np.hypot(d[:, 0], d[:, 1])
@@ -273,7 +282,7 @@ def _sliding_velocity(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, 
     a, b, p, guide = slide
     if guide == "frame":
         return kin.vel[p]
-    return kin.vel[p + b] - kin.vel[p + a]  # the block's and the bar's coincident points
+    return kin.vel[p + b] - kin.vel[p + a]  # the coincident points of b and a (block, bar or slot)
 
 
 def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.ndarray, rhs: np.ndarray,

@@ -11,16 +11,20 @@ The textbook order, for every position at once (arrays over positions):
    R^t_Q head to tail; through the end draw ∥ QC, through the start ∥ PC; they meet at the
    polygon's closing vertex. The middle joint's reaction closes the polygon of one link. For a
    slider (RRP) the guide's reaction is ⟂ guide (tilted by φ with friction) and its line of
-   action comes from the slider's moments about C.
+   action comes from the slider's moments about C. A guide bar and block (RPR): the bar's
+   reaction on the block from the bar's moments about its pivot. A block in a slot of a slider
+   (RPP): the slotted slider's polygon closes on the slot's and the guide's directions.
 3. **The driver**: what the groups put on the crank, its own loads, the frame's reaction R_01
-   closing its polygon and the **balancing moment** M_b from its moments about the pivot.
+   closing its polygon and the **balancing moment** M_b from its moments about the pivot (a
+   driving slider: the **balancing force** F_b along its guide and the guide's reaction).
 4. **Friction** (摩擦圆, 摩擦角) by successive approximation from the frictionless solution: each
    round the revolute reactions are moved tangent to their friction circles (a couple −ρ|R|
    against the relative rotation) and the slider reactions tilted by φ = arctan f against the
    sliding velocity, with the magnitudes and senses of the round before; the groups are solved
    again until no reaction changes by more than the tolerance.
 5. **Zhukovsky's lever** (茹可夫斯基杠杆): the velocity polygon turned 90°, every load applied at
-   its point's image, moments about the pole p: M_b = μv·ΣM_p/ω1 (virtual power).
+   its point's image, moments about the pole p: M_b = μv·ΣM_p/ω1 (virtual power; a driving
+   slider: F_b = μv·ΣM_p/v).
 
 Plane vectors are complex numbers ``x + iy`` (arrays of shape (N,)); ``u × w = Im(ū·w)``. A
 reaction ``R_ij`` is the force of link i on link j.
@@ -33,19 +37,14 @@ from typing import Any
 
 import numpy as np
 
-from graphmech.errors import DegenerateConstruction, GraphmechError
+from graphmech.errors import DegenerateConstruction
 from graphmech.mechanisms.forces import ForceModel, LinkMass
-from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage, SliderInput
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, SliderInput
 from graphmech.tolerances import PARALLEL_SIN, SHALLOW_DEG
 
 #: |sin| of the angle between the two unknown directions of a polygon below which a hand
 #: construction is unreliable (the closing vertex moves by 1/sin of a pencil's error).
 SHALLOW_SIN = math.sin(math.radians(SHALLOW_DEG))
-
-
-class UnsupportedGroup(GraphmechError, ValueError):
-    """A linkage with an Assur group the force polygons are not built for (RPR, RPP) or a
-    driver other than a crank."""
 
 
 # --------------------------------------------------------------------------------------------
@@ -313,17 +312,11 @@ def carriers(linkage: Linkage) -> dict[str, str]:
         elif isinstance(y, RPR):
             out.setdefault(y.coincident[0], y.bar_link)
             out.setdefault(y.coincident[1], y.block_link)
+        elif isinstance(y, RPP):
+            out.setdefault(y.c, y.links[1])
     for pt in linkage.points:
         out.setdefault(pt.name, pt.link)
     return out
-
-
-def check_supported(linkage: Linkage) -> None:
-    """Refuse, in one line, what the force polygons here are not built for."""
-    for k, y in enumerate(linkage.dyads):
-        if not isinstance(y, (RRR, RRP, RPR)):
-            raise UnsupportedGroup(f"kinetostatics: dyad[{k}] is an {y.kind} group; the force polygons are "
-                                   "built for RRR, RRP and RPR groups only")
 
 
 # --------------------------------------------------------------------------------------------
@@ -467,6 +460,10 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
         if isinstance(y, RPR):
             _rpr_group(y, kin, loads, owner, friction, found, reactions, joints, groups, closing, fr,
                        keep_groups)
+            continue
+        if isinstance(y, RPP):
+            _rpp_group(y, kin, loads, owner, friction, found, reactions, joints, guides, groups, closing, fr,
+                       frame, keep_groups)
             continue
         i, k = y.links
         jp = Joint(y.p, owner[y.p], i)
@@ -650,6 +647,65 @@ def _rpr_group(y: RPR, kin: PolygonKinematics, loads: _Loads, owner: dict[str, s
                                    (f"R_{jb.a}{b}",), np.ones(n)))
 
 
+def _rpp_group(y: RPP, kin: PolygonKinematics, loads: _Loads, owner: dict[str, str], friction: Any,
+               found: Any, reactions: dict, joints: list, guides: list, groups: list, closing: dict,
+               fr: _Friction, frame: str, keep_groups: bool) -> None:
+    """A block i pivoted at P slides in the straight slot of j, which slides on a frame guide.
+
+    The slotted link's polygon closes on two known directions — the slot's reaction ⟂ the slot
+    and the guide's ⟂ the guide (each tilted by φ with friction); the block's polygon then gives
+    the reaction at P; the block's moments about P give the slot reaction's couple, the slotted
+    link's moments about C the guide reaction's.
+    """
+    n = kin.valid.shape[0]
+    i, j = y.links
+    P, C = kin.point[y.p], kin.point[y.c]
+    jp = Joint(y.p, owner[y.p], i)
+    friction(jp)
+    t1 = complex(math.cos(y.slot_angle), math.sin(y.slot_angle))
+    t2 = complex(math.cos(y.guide.angle), math.sin(y.guide.angle))
+    speed = _largest(kin.vel, n)
+
+    def tilted(t: complex, link: str, v_rel: np.ndarray) -> np.ndarray:
+        f = fr.f.get(link, 0.0) if fr.previous is not None else 0.0
+        sigma = np.where(fr.normal.get(link, np.ones(n)) >= 0, 1.0, -1.0)
+        u = 1j * t - f * sigma * _sign(v_rel, speed) * t
+        return u / np.abs(u)
+
+    # the slot on the block (against the block's sliding in the slot), the guide on j
+    u1 = tilted(t1, i, (np.conj(t1) * (kin.vel[y.coincident[0]] - kin.vel[y.coincident[1]])).real)
+    u2 = tilted(t2, j, (np.conj(t2) * kin.vel[y.c]).real)
+    known_i, known_j = loads.total(i, n), loads.total(j, n)
+    # link j: ΣF_j − N1·u1 + N2·u2 = 0, closed by lines ∥ u1 and ∥ u2
+    det = _cross(-u1, u2)
+    sin = np.abs(det)
+    closing[f"group {i}–{j}"] = sin
+    _guard_parallel(sin, kin.valid, f"group {i}–{j}: the slot and the guide are parallel")
+    safe = np.where(sin > PARALLEL_SIN, det, 1.0)
+    n1 = _cross(-known_j, u2) / safe
+    n2 = _cross(-u1, -known_j) / safe
+    r_ji = n1 * u1  # the slotted link on the block
+    r_guide = n2 * u2
+    r_p = -(known_i + r_ji)
+    m_slot = -loads.moment_about(i, P)  # couple of j on the block about P
+    m_guide = -(loads.moment_about(j, C) + _cross(P - C, -r_ji) - m_slot)
+    fr.normal_next[i], fr.normal_next[j] = n1, n2
+    body = [*loads.forces.get(i, []), *loads.forces.get(j, [])]
+    couples = [*loads.couples.get(i, []), *loads.couples.get(j, [])]
+    found(jp, r_p)
+    reactions[(j, i)], reactions[(i, j)] = r_ji, -r_ji
+    reactions[(frame, j)], reactions[(j, frame)] = r_guide, -r_guide
+    joints.append(Joint(y.p, j, i))
+    guides.append(GuideReaction(frame, j, y.c, r_guide, m_guide))
+    if keep_groups:
+        chain = [(f.name, f.vector) for f in loads.forces.get(j, [])]
+        chain += [(f"R_{frame}{j}", r_guide), (f"R_{i}{j}", -r_ji)]
+        body += [Force(f"R_{jp.a}{i}", r_p, P, y.p),
+                 Force(f"R_{frame}{j}", r_guide, _guide_point(C, t2, r_guide, m_guide))]
+        groups.append(GroupPolygon(f"group {i}–{j}", (i, j), tuple(body), tuple(couples), tuple(chain),
+                                   (f"R_{frame}{j}", f"R_{i}{j}"), sin))
+
+
 def _guide_point(C: np.ndarray, t: complex, r: np.ndarray, m: np.ndarray) -> np.ndarray:
     """Where the guide reaction's line of action crosses the guide line through C: C + s·t with
     s·(t × R) = M."""
@@ -675,7 +731,7 @@ def kinetostatics(linkage: Linkage, model: ForceModel, kin: PolygonKinematics, *
     Parameters
     ----------
     linkage : Linkage
-        Crank-driven, RRR and RRP groups.
+        Driven by a crank or a slider; any dyads (RRR, RRP, RPR, RPP).
     model : ForceModel
         Masses, loads, friction.
     kin : PolygonKinematics
@@ -689,12 +745,9 @@ def kinetostatics(linkage: Linkage, model: ForceModel, kin: PolygonKinematics, *
 
     Raises
     ------
-    UnsupportedGroup
-        For an RPR or RPP group or a slider driver.
     DegenerateConstruction
         Where a polygon's closing lines are parallel, or friction does not converge.
     """
-    check_supported(linkage)
     inertia = inertia_loads(model.masses, kin)
     base = external_loads(model, kin, inertia, linkage.frame_link)
     rho = {fr.point: fr.rho for fr in model.revolute_friction if fr.rho > 0}
@@ -712,7 +765,7 @@ def kinetostatics(linkage: Linkage, model: ForceModel, kin: PolygonKinematics, *
         if change < model.tolerance:
             state.previous, state.normal, state.normal_next = sol, state.normal_next, {}
             final = _solve_round(linkage, kin, base, inertia, state, polygons) if polygons else sol
-            return replace(final, groups=final.groups, iterations=it)
+            return replace(final, iterations=it)
     raise DegenerateConstruction(
         "friction by successive approximation",
         f"does not converge in {model.max_iterations} rounds (the reactions still change by "
@@ -756,7 +809,6 @@ def zhukovsky_lever(linkage: Linkage, model: ForceModel, kin: PolygonKinematics)
     ±M/|UV|² ⟂ UV at the images of two of its points U, V. The moments about the pole p balance:
     ΣM_p(loads) + M_p(M_b) = 0 with M_p(M_b) = −M_b·ω1/μv, so M_b = μv·ΣM_p/ω1.
     """
-    check_supported(linkage)
     d = linkage.driver
     inertia = inertia_loads(model.masses, kin)
     loads = external_loads(model, kin, inertia, linkage.frame_link)
@@ -797,6 +849,5 @@ def zhukovsky_lever(linkage: Linkage, model: ForceModel, kin: PolygonKinematics)
 __all__ = [
     "PolygonKinematics", "kinematics_from_construction", "construction_targets", "InertiaLoad",
     "inertia_load", "inertia_loads", "Force", "Couple", "Joint", "GroupPolygon", "GuideReaction",
-    "KinetostaticSolution", "kinetostatics", "zhukovsky_lever", "Lever", "UnsupportedGroup", "carriers",
-    "check_supported", "SHALLOW_SIN",
+    "KinetostaticSolution", "kinetostatics", "zhukovsky_lever", "Lever", "carriers", "SHALLOW_SIN",
 ]
