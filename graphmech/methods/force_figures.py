@@ -19,7 +19,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
-from graphmech.mechanisms.linkage import RRP, Crank, Linkage
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Linkage
 from graphmech.methods.figures import mechanism_items
 from graphmech.methods.kinetostatics import GroupPolygon, KinetostaticSolution, Lever, PolygonKinematics
 from graphmech.render.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Segment, Sheet,
@@ -168,9 +168,20 @@ def free_body_items(build: Any, kin: PolygonKinematics, group: GroupPolygon, rho
             if math.dist(pa, pb) > 1e-9:
                 items.append(Segment(pa, pb, "given"))
         drawn.update(names)
-    for y in linkage.dyads:
+    for y in linkage.dyads:  # the blocks and slots of the group's sliding pairs
         if isinstance(y, RRP) and y.links[1] in group.links:
             items.append(Slider(to_mm(complex(kin.point[y.c][i])), y.guide.angle))
+        elif isinstance(y, RPR) and y.block_link in group.links:
+            x, p = complex(kin.point[y.block_pivot][i]), complex(kin.point[y.bar_pivot][i])
+            items.append(Slider(to_mm(x), math.atan2((x - p).imag, (x - p).real)))
+        elif isinstance(y, RPP) and y.links[0] in group.links:
+            c, p = complex(kin.point[y.c][i]), complex(kin.point[y.p][i])
+            items.append(Segment(to_mm(c), to_mm(p), "given"))  # the slot
+            items.append(Slider(to_mm(p), y.slot_angle, 6.0, 4.0))
+            items.append(Slider(to_mm(c), y.guide.angle))
+    d = linkage.driver
+    if not isinstance(d, Crank) and d.link in group.links:
+        items.append(Slider(to_mm(complex(kin.point[d.point][i])), d.guide.angle))
     for name in sorted(drawn):
         if name in joints:
             items.append(Hinge(to_mm(complex(kin.point[name][i]))))
