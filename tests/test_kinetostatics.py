@@ -491,3 +491,32 @@ def test_a_driving_slider_gets_a_balancing_force(friction):
     assert _scene(text).forces is not None
     with pytest.raises(SceneError, match="the driver is a slider: its balancing force is F_b"):
         analyse_forces(_scene(text.replace('"F_b",', '"M_b",', 1)))
+
+
+@settings(max_examples=40, deadline=None)
+@given(phi=st.floats(0.0, 6.28), m3=st.floats(0.1, 10.0), f=st.floats(0.0, 2000.0), fs=st.floats(0.0, 0.4),
+       fv=st.floats(0.0, 0.3), e=st.floats(-30.0, 30.0))
+def test_slider_crank_with_friction_equals_the_matrix_method(phi, m3, f, fs, fv, e):
+    """An offset slider-crank (AB 100, BC 300 mm, offset e) at any angle, a piston force against +x,
+    friction on the guide and in all three journals: polygons = matrix method (scipy root)."""
+    from graphmech.exact.kinetostatics import solve_forces
+    from graphmech.mechanisms.forces import PointForce, RevoluteFriction, SlidingFriction
+    from graphmech.mechanisms.linkage import RRP, Crank, Guide, Linkage, LinkPoint
+    from graphmech.methods.polygons import build_polygons
+
+    lk = Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.1, 150.0),
+                 (RRP("B", "C", ("2", "3"), 0.3, Guide((0.0, e / 1000.0), 0.0), "forward"),),
+                 (LinkPoint("S2", "2", ("B", "C"), 0.1, 0.0),), "0")
+    model = ForceModel((LinkMass("2", "S2", 2.0, 0.02), LinkMass("3", "C", m3)), (PointForce("3", "C", f, np.pi),),
+                       gravity=9.81, revolute_friction=tuple(RevoluteFriction(p, fv, 0.01) for p in "ABC"),
+                       sliding_friction=(SlidingFriction("3", fs),))
+    b = build_polygons(lk, {"l": 0.002, "v": 0.1, "a": 10.0})
+    batch = b.g.prune(K.construction_targets(b)).evaluate_batch({"phi": np.array([phi])})
+    kin = K.kinematics_from_construction(b, batch.values, batch.valid)
+    sol = K.kinetostatics(lk, model, kin, polygons=False)
+    ex = solve_forces(lk, model, np.array([phi]))
+    assert ex.valid[0]
+    size = max(abs(complex(r[0])) for r in sol.reactions.values())
+    for key, r in sol.reactions.items():
+        assert abs(complex(r[0]) - complex(*ex.reactions[key][0])) <= 1e-8 * size, key
+    assert abs(sol.balancing_moment[0] - ex.balancing_moment[0]) <= 1e-8 * size * 0.1
