@@ -411,6 +411,10 @@ class _Friction:
     rho: dict[str, float]  # joint point → ρ
     f: dict[str, float]  # slider link → f
     previous: KinetostaticSolution | None = None
+    #: slider link → the guide's normal reaction (signed along the guide's normal), the round
+    #: before and this round: its sense decides which way the reaction is tilted.
+    normal: dict[str, np.ndarray] = field(default_factory=dict)
+    normal_next: dict[str, np.ndarray] = field(default_factory=dict)
 
     def couple(self, joint: Joint, omega: dict[str, np.ndarray], n: int) -> np.ndarray:
         """Friction couple of link a on link b: −ρ|R_ab|·sign(ω_b − ω_a) (zero in round 0)."""
@@ -420,11 +424,6 @@ class _Friction:
         r = np.abs(self.previous.reactions[(joint.a, joint.b)])
         rel = omega.get(joint.b, np.zeros(n)) - omega.get(joint.a, np.zeros(n))
         return -rho * r * _sign(rel, _largest(omega, n))
-
-    #: slider link → the guide's normal reaction (signed along the guide's normal), the round
-    #: before and this round: its sense decides which way the reaction is tilted.
-    normal: dict[str, np.ndarray] = field(default_factory=dict)
-    normal_next: dict[str, np.ndarray] = field(default_factory=dict)
 
 
 def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia: dict[str, InertiaLoad],
