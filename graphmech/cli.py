@@ -111,6 +111,11 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
         sheet = Sheet(scene.title, tuple(panels), page_size(scene), footer)
         warnings = list(fan.warnings)
         return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
+    if scene.forces is not None:
+        from graphmech.force_check import render_forces
+
+        sheet, warnings = render_forces(scene, footer)
+        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
     if scene.cam is not None:
         from graphmech.cam_check import analyse_cam
         from graphmech.methods.cam_figures import cam_sheet
@@ -225,6 +230,13 @@ def _check(args: argparse.Namespace) -> int:
             extra_doc["true_motion"] = an.motion_summary()
         if an.braking is not None:
             extra_doc["braking"] = an.braking_summary()
+    elif scene.forces is not None:
+        from graphmech.force_check import analyse_forces
+
+        an = analyse_forces(scene, tuple(extra))
+        verdicts = an.verdicts
+        if scene.forces.model.has_friction:
+            extra_doc["friction"] = an.friction_summary()
     elif scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 

@@ -240,6 +240,7 @@ class Scene:
     page: Page = Page()
     cam: CamScene | None = None
     flywheel: FlywheelScene | None = None
+    forces: Any = None  # a ForceScene (graphmech.scene_forces) in a force scene
 
 
 # --------------------------------------------------------------------------------------------
@@ -353,6 +354,7 @@ _TOP_KEYS = (
     "page",
     "cam",
     "flywheel",
+    "forces",
 )
 
 #: The tables only a linkage scene has.
@@ -1917,6 +1919,14 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
             "put the cam in a scene of its own",
         )
         raise SceneError(problems, source)
+    if "forces" in data and (has_cam or "flywheel" in data):
+        top.problem("forces", "[forces] belongs to a linkage scene (kinetostatics), not to a "
+                              + ("cam" if has_cam else "flywheel") + " scene: put it in a scene of its own")
+        raise SceneError(problems, source)
+    if "forces" in data:
+        from graphmech.scene_forces import parse_forces_scene
+
+        return parse_forces_scene(data, source, top, order)
     if has_cam:
         return _parse_cam_scene(data, source, top, order)
     if "flywheel" in data:

@@ -21,6 +21,14 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
     if scene.flywheel is not None:  # its analysis is graphmech.flywheel_check's; here it is parsed
         pytest.importorskip("graphmech.flywheel_check")
         return
+    if scene.forces is not None:  # the force polygons against the matrix method and the lever
+        from graphmech.force_check import analyse_forces
+
+        fan = analyse_forces(scene)
+        assert fan.rows
+        for row in fan.rows:
+            assert row.rel_error <= 1e-9 or row.ill_conditioned, row
+        return
     if scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 

@@ -1,0 +1,384 @@
+"""From a force scene to checked values: kinematics, inertia loads, group-by-group force
+polygons, the matrix method and Zhukovsky's lever, compared row by row.
+
+The kinematics are the linkage scene's own (:func:`graphmech.check.analyse`: the velocity and
+acceleration polygons, checked against the closed form). The force polygons
+(:mod:`graphmech.methods.kinetostatics`) take their accelerations from those polygons; the matrix
+method (:mod:`graphmech.exact.kinetostatics`) takes them from the closed form and solves every
+reaction at once. Each row of the table is a value read off a force polygon (drawn length × μF)
+against the matrix method's; ``M_b_lever`` is Zhukovsky's lever against the matrix method.
+
+Only what the scene asks for is computed: no polygons kept unless they are drawn, no lever
+unless ``M_b_lever`` is asked or the lever is drawn, no successive approximation without friction.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+import numpy as np
+
+from graphmech.check import Analysis, Row, Verdict, analyse, judge, position_text, split_name
+from graphmech.errors import SceneError
+from graphmech.exact.kinetostatics import ExactForces, solve_forces
+from graphmech.methods.kinetostatics import (
+    SHALLOW_SIN,
+    KinetostaticSolution,
+    Lever,
+    PolygonKinematics,
+    construction_targets,
+    kinematics_from_construction,
+    kinetostatics,
+    zhukovsky_lever,
+)
+from graphmech.scales import round_scale
+from graphmech.tolerances import COND_WARN
+
+#: The force quantities a scene may ask for (links are one character: R_12, F_i2, h_2).
+FORCE_NAME = re.compile(
+    r"(?:M_b|M_b_lever|M_b0|F_b|F_b_lever|F_b0|eta|F_i(?P<fi>\w)(?P<fic>_x|_y)?|M_i(?P<mi>\w)|h_(?P<h>\w)"
+    r"|R_(?P<ri>\w)(?P<rj>\w)(?P<rc>_x|_y)?|(?P<gm>M|e)_(?P<gi>\w)(?P<gj>\w))")
+#: Room for the largest force polygon, mm (μF is chosen so that it fits).
+POLYGON_ROOM_MM = 70.0
+
+
+def is_force_name(name: str) -> bool:
+    return FORCE_NAME.fullmatch(split_name(name)[0]) is not None
+
+
+@dataclass
+class ForceAnalysis:
+    """Everything a force scene produced."""
+
+    scene: Any
+    kinematics: Analysis  # the linkage check (its build, plan, solutions, exact kinematics)
+    kin: PolygonKinematics
+    solution: KinetostaticSolution
+    exact: ExactForces
+    scales: dict[str, float]
+    stated: set[str]
+    labels: tuple[str, ...]
+    frictionless: KinetostaticSolution | None = None
+    exact_frictionless: ExactForces | None = None
+    lever: Lever | None = None
+    rows: list[Row] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    verdicts: list[Verdict] = field(default_factory=list)
+    ill: dict[int, bool] = field(default_factory=dict)  # position → some polygon is ill-conditioned
+
+    @property
+    def build(self) -> Any:
+        return self.kinematics.build
+
+    def scale_notes(self) -> list[str]:
+        notes = self.kinematics.scale_notes()
+        if "F" in self.scales:
+            notes.append(f"μF = {self.scales['F']:.6g} N/mm" + ("" if "F" in self.stated else " (chosen)"))
+        return notes
+
+    def friction_summary(self) -> dict[str, Any]:
+        return {"iterations": self.solution.iterations,
+                "tolerance_N": self.scene.forces.model.tolerance}
+
+
+def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> ForceAnalysis:
+    """Build and check a force scene (``extra_measured``: values from the command line)."""
+    model = scene.forces.model
+    measured = [(n, v) for n, v in scene.measured if not is_force_name(n)]
+    extra_kin = tuple((n, v) for n, v in extra_measured if not is_force_name(n))
+    force_measured = [(f"measured.{n}", n, v) for n, v in scene.measured if is_force_name(n)] + [
+        (f"--measured {n}", n, v) for n, v in extra_measured if is_force_name(n)]
+    kin_find = tuple(n for n in scene.find if not is_force_name(n))
+    kin_show = tuple(p for p in scene.show if p in ("mechanism", "velocity", "acceleration")) or ("mechanism",)
+    plain = replace(scene, find=kin_find, show=kin_show, measured=tuple(measured), forces=None)
+    an = analyse(plain, extra_kin)
+    b = an.build
+    plan = b.g.prune(construction_targets(b))
+    batch = plan.evaluate_batch({b.param: an.positions})
+    kin = kinematics_from_construction(b, batch.values, batch.valid)
+    draw = "force_polygons" in scene.show
+    sol = kinetostatics(b.linkage, model, kin, polygons=draw)
+    exact = solve_forces(b.linkage, model, an.positions, an.exact)
+    names = [split_name(n)[0] for n in scene.find] + [split_name(n)[0] for _, n, _ in force_measured]
+    fa = ForceAnalysis(scene, an, kin, sol, exact, dict(an.scales), set(an.stated), an.labels)
+    fa.warnings = list(an.warnings)
+    fa.rows = list(an.rows)
+    wants_frictionless = any(n in ("M_b_lever", "M_b0", "F_b_lever", "F_b0", "eta") for n in names) \
+        or "lever" in scene.show
+    if model.has_friction and wants_frictionless:
+        bare = replace(model, revolute_friction=(), sliding_friction=())
+        fa.frictionless = kinetostatics(b.linkage, bare, kin, polygons=False)
+        fa.exact_frictionless = solve_forces(b.linkage, bare, an.positions, an.exact)
+    if "M_b_lever" in names or "F_b_lever" in names or "lever" in scene.show:
+        fa.lever = zhukovsky_lever(b.linkage, model, kin)
+    _choose_force_scale(fa)
+    _conditioning(fa)
+    _rows(fa)
+    fa.verdicts = list(judge(an, None)) if (measured or extra_kin) else []
+    fa.verdicts += _judge_forces(fa, force_measured)
+    return fa
+
+
+def _ok(fa: ForceAnalysis, i: int) -> bool:
+    return bool(fa.kin.valid[i] and fa.exact.valid[i] and fa.kinematics.solutions[i] is not None)
+
+
+def _choose_force_scale(fa: ForceAnalysis) -> None:
+    mu = fa.scene.forces.mu_F
+    if mu is not None:
+        fa.scales["F"], fa.stated = mu, fa.stated | {"F"}
+        return
+    largest = max((float(np.max(np.abs(r[fa.kin.valid]), initial=0.0)) for r in fa.solution.reactions.values()),
+                  default=0.0)
+    for il in fa.solution.inertia.values():
+        largest = max(largest, float(np.max(np.abs(il.force[fa.kin.valid]), initial=0.0)))
+    fa.scales["F"] = round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0
+
+
+def _conditioning(fa: ForceAnalysis) -> None:
+    """Near a toggle a polygon's closing lines meet at a shallow angle and the reactions grow
+    without bound: say where, and flag the rows where rounding itself is amplified."""
+    for i, lab in enumerate(fa.labels):
+        where = position_text(fa.build, lab)
+        if fa.kin.valid[i] and fa.kinematics.exact.valid[i] and not fa.exact.valid[i]:
+            fa.warnings.append(f"{where}: the equilibrium equations are singular (condition number "
+                               f"{float(fa.exact.condition[i]):.2g}): the transmission angle is 0° and the "
+                               "reactions are unbounded; no force values here")
+        if not _ok(fa, i):
+            continue
+        for name, sin in fa.solution.closing.items():
+            s = float(sin[i])
+            if s < SHALLOW_SIN:
+                if 1.0 / max(s, 1e-300) > COND_WARN:
+                    fa.ill[i] = True
+                fa.warnings.append(f"{where}: {name}: the force polygon's closing lines meet at "
+                                   f"{math.degrees(math.asin(min(s, 1.0))):.2g}° — near-collinear forces, "
+                                   "ill-conditioned: the transmission angle is near 0° and the reactions "
+                                   "grow without bound (a hand construction is unreliable here)")
+
+
+def _characteristic_force(fa: ForceAnalysis, i: int) -> float:
+    out = max((abs(complex(r[i])) for r in fa.solution.reactions.values()), default=0.0)
+    return max(out, 1e-300)
+
+
+def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, float, float, str]:
+    """(drawn mm or None, scale, graphical, exact, unit) of a force quantity at position i."""
+    m = FORCE_NAME.fullmatch(base)
+    assert m is not None
+    mu_F, mu_l = fa.scales["F"], fa.scales["l"]
+    sol, ex = fa.solution, fa.exact
+
+    def vector(g: complex, e: np.ndarray, comp: str | None) -> tuple[float | None, float, float, float, str]:
+        if comp == "_x":
+            gv, ev = g.real, float(e[0])
+        elif comp == "_y":
+            gv, ev = g.imag, float(e[1])
+        else:
+            gv, ev = abs(g), float(math.hypot(e[0], e[1]))
+        return gv / mu_F, mu_F, (gv / mu_F) * mu_F, ev, "N"
+
+    if m.group("fi"):
+        link = m.group("fi")
+        il = sol.inertia[link]
+        return vector(complex(il.force[i]), ex.inertia_force[link][i], m.group("fic"))
+    if m.group("mi"):
+        link = m.group("mi")
+        return None, 1.0, float(sol.inertia[link].moment[i]), float(ex.inertia_moment[link][i]), "N·m"
+    if m.group("h"):
+        link = m.group("h")
+        f, mo = ex.inertia_force[link][i], ex.inertia_moment[link][i]
+        fm = math.hypot(f[0], f[1])
+        e = float(abs(mo) / fm) if fm > 0 else 0.0
+        h = float(sol.inertia[link].offset[i])
+        return h / mu_l, mu_l, (h / mu_l) * mu_l, e, "m"
+    if m.group("ri"):
+        key = (m.group("ri"), m.group("rj"))
+        return vector(complex(sol.reactions[key][i]), ex.reactions[key][i], m.group("rc"))
+    if m.group("gi"):
+        slider = m.group("gj")
+        g = next(gr for gr in sol.guides if gr.slider == slider)
+        if m.group("gm") == "M":
+            return None, 1.0, float(g.moment[i]), float(ex.guide_moments[slider][i]), "N·m"
+        # e: where the guide reaction's line of action crosses the guide, from the slider's point
+        # along the guide (M = e·(t × R)), drawn on the free body at μl
+        angle = next(y.guide.angle for y in (fa.build.linkage.driver, *fa.build.linkage.dyads)
+                     if hasattr(y, "guide") and (getattr(y, "link", None) == slider
+                                                 or getattr(y, "links", (None, None))[1] == slider))
+        t = complex(math.cos(angle), math.sin(angle))
+        tr = (np.conj(t) * complex(g.force[i])).imag
+        e_g = float(g.moment[i]) / tr if tr != 0 else 0.0
+        r = ex.reactions[(g.frame, slider)][i]
+        tr_x = t.real * r[1] - t.imag * r[0]
+        e_x = float(ex.guide_moments[slider][i]) / tr_x if tr_x != 0 else 0.0
+        return e_g / mu_l, mu_l, (e_g / mu_l) * mu_l, e_x, "m"
+    if base == "M_b":
+        return None, 1.0, float(sol.balancing_moment[i]), float(ex.balancing_moment[i]), "N·m"
+    bare = fa.frictionless or sol
+    bare_ex = fa.exact_frictionless or ex
+    if base.startswith("F_b"):  # a driving slider's balancing force, signed along its guide
+        assert sol.balancing_force is not None and ex.balancing_force is not None
+        assert bare.balancing_force is not None and bare_ex.balancing_force is not None
+        if base == "F_b":
+            g, e = float(sol.balancing_force[i]), float(ex.balancing_force[i])
+        elif base == "F_b0":
+            g, e = float(bare.balancing_force[i]), float(bare_ex.balancing_force[i])
+        else:
+            assert fa.lever is not None and fa.lever.balancing_force is not None
+            g, e = float(fa.lever.balancing_force[i]), float(bare_ex.balancing_force[i])
+        return g / mu_F, mu_F, (g / mu_F) * mu_F, e, "N"
+    if base == "M_b0":
+        return None, 1.0, float(bare.balancing_moment[i]), float(bare_ex.balancing_moment[i]), "N·m"
+    if base == "M_b_lever":
+        assert fa.lever is not None
+        return None, 1.0, float(fa.lever.balancing_moment[i]), float(bare_ex.balancing_moment[i]), "N·m"
+    # eta: the instantaneous efficiency, M_b (F_b) without friction over M_b (F_b) with it
+    if sol.balancing_force is not None:
+        g = float(bare.balancing_force[i]) / float(sol.balancing_force[i])  # type: ignore[index]
+        e = float(bare_ex.balancing_force[i]) / float(ex.balancing_force[i])  # type: ignore[index]
+        return None, 1.0, g, e, ""
+    g = float(bare.balancing_moment[i]) / float(sol.balancing_moment[i])
+    e = float(bare_ex.balancing_moment[i]) / float(ex.balancing_moment[i])
+    return None, 1.0, g, e, ""
+
+
+def _known(fa: ForceAnalysis, base: str) -> str | None:
+    """Why ``base`` names nothing in this scene (None if it does)."""
+    m = FORCE_NAME.fullmatch(base)
+    assert m is not None
+    for key in ("fi", "mi", "h"):
+        link = m.group(key)
+        if link and link not in fa.solution.inertia:
+            return f"link {link} has no [[forces.mass]]" + (
+                f" (masses on links {', '.join(fa.solution.inertia)})" if fa.solution.inertia else "")
+    if m.group("ri") and (m.group("ri"), m.group("rj")) not in fa.solution.reactions:
+        pairs = sorted({f"R_{a}{b}" for (a, b) in fa.solution.reactions if a < b})
+        return f"links {m.group('ri')} and {m.group('rj')} have no joint (reactions: {', '.join(pairs)})"
+    if m.group("gi") and not any(g.slider == m.group("gj") and g.frame == m.group("gi") for g in fa.solution.guides):
+        guides = ", ".join(f"M_{g.frame}{g.slider}, e_{g.frame}{g.slider}" for g in fa.solution.guides) or "none"
+        return f"no slider {m.group('gj')} on a guide of link {m.group('gi')} (guide moments: {guides})"
+    if base in ("eta", "M_b0", "F_b0") and not fa.scene.forces.model.has_friction:
+        return f"{base} compares with friction: this scene has none"
+    slider_driven = fa.solution.balancing_force is not None
+    if base.startswith("M_b") and slider_driven:
+        return f"the driver is a slider: its balancing force is {base.replace('M_b', 'F_b')}"
+    if base.startswith("F_b") and not slider_driven:
+        return f"the driver is a crank: its balancing moment is {base.replace('F_b', 'M_b')}"
+    if base == "eta":
+        return None
+    return None
+
+
+def _rows(fa: ForceAnalysis) -> None:
+    problems = []
+    multi = len(fa.labels) > 1
+    for k, raw in enumerate(fa.scene.find):
+        base, at = split_name(raw)
+        if not is_force_name(base):
+            continue
+        why = _known(fa, base)
+        if why:
+            problems.append((f"find[{k}]", why))
+            continue
+        if at is None:
+            idx = range(len(fa.labels))
+        elif at in fa.labels:
+            idx = [fa.labels.index(at)]
+        else:
+            problems.append((f"find[{k}]", f"no position {at!r} (positions: {', '.join(fa.labels)})"))
+            continue
+        for i in idx:
+            if not _ok(fa, i):
+                continue
+            drawn, scale, g, e, unit = _value(fa, base, i)
+            ch = _characteristic_force(fa, i)
+            if unit == "N·m":
+                ch *= fa.kinematics.size
+            elif unit == "m":
+                ch = fa.kinematics.size
+            elif unit == "":
+                ch = 1.0
+            if not (math.isfinite(g) and math.isfinite(e)):
+                problems.append((f"find[{k}]", f"{base} is not finite at {position_text(fa.build, fa.labels[i])}"))
+                continue
+            g, e = float(g) + 0.0, float(e) + 0.0  # no "-0" in the table
+            err = abs(g - e) / max(abs(e), ch)
+            fa.rows.append(Row(f"{base}@{fa.labels[i]}" if multi else base, unit,
+                               None if drawn is None else float(drawn), float(scale), g, e, err,
+                               bool(fa.ill.get(i, False))))
+    if problems:
+        raise SceneError(problems, fa.scene.source)
+
+
+def _judge_forces(fa: ForceAnalysis, entries: list[tuple[str, str, float]]) -> list[Verdict]:
+    """A measured force is judged within the drawing precision at μF (a moment: × the crank)."""
+    out, problems = [], []
+    prec = fa.scene.precision_mm
+    for key, name, value in entries:
+        base, at = split_name(name)
+        why = _known(fa, base)
+        if why is None and at is not None and at not in fa.labels:
+            why = f"no position {at!r} (positions: {', '.join(fa.labels)})"
+        if why is None and at is None and len(fa.labels) > 1:
+            why = f"the scene has {len(fa.labels)} positions: name one, e.g. {base}@{fa.labels[0]}"
+        if why:
+            problems.append((key, why))
+            continue
+        i = fa.labels.index(at) if at is not None else 0
+        if not _ok(fa, i):
+            problems.append((key, f"position {fa.labels[i]} could not be solved"))
+            continue
+        drawn, scale, g, e, unit = _value(fa, base, i)
+        tol = prec * fa.scales["F"]
+        if unit == "N·m":
+            tol *= fa.build.linkage.driver.length
+        elif unit == "m":
+            tol = prec * fa.scales["l"]
+        elif unit == "":
+            tol = 0.01
+        e = float(e)
+        out.append(Verdict(name, value, e, float(tol), bool(abs(value - e) <= tol + 1e-12 * abs(e)), unit))
+    if problems:
+        raise SceneError(problems, fa.scene.source)
+    return out
+
+
+FORCE_PANELS = ("forces", "force_polygons", "lever")
+
+
+def render_forces(scene: Any, footer: tuple[str, ...] = ()) -> tuple[Any, list[str]]:
+    """The sheet of a force scene and its warnings: the kinematic panels it shows, then the
+    loads, each group's free body and force polygon and Zhukovsky's lever, at one position."""
+    from graphmech.check import page_size
+    from graphmech.methods.figures import linkage_sheet
+    from graphmech.methods.force_figures import force_sheet
+
+    drawn = [p for p in scene.show if p in FORCE_PANELS]
+    if drawn and len(scene.positions.values) > 1:
+        raise SceneError([("show", f"{', '.join(drawn)} draw one position and this scene has "
+                                   f"{len(scene.positions.values)}: give the driver one angle "
+                                   "(graphmech check takes them all)")], scene.source)
+    fa = analyse_forces(scene)
+    an = fa.kinematics
+    b = an.build
+    kin_show = [p for p in scene.show if p in ("mechanism", "velocity", "acceleration")]
+    head: tuple = ()
+    if kin_show:
+        texts = [position_text(b, lab) for lab in an.labels]
+        head = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
+                             kin_show, page_size(scene)).panels
+    if not drawn:
+        from graphmech.render.primitives import Sheet
+
+        return Sheet(scene.title, tuple(head), page_size(scene), footer), list(fa.warnings)
+    if not _ok(fa, 0):
+        raise SceneError([("driver", f"{position_text(b, an.labels[0])} cannot be solved: "
+                                     f"{an.failures[0] or 'the exact solution is undefined here'}")], scene.source)
+    sheet = force_sheet(scene.title, b, fa.kin, fa.solution, scene.forces.model, fa.lever, fa.scales["F"],
+                        drawn, 0, position_text(b, an.labels[0]), page_size(scene), head, footer)
+    return sheet, list(fa.warnings)
+
+
+__all__ = ["ForceAnalysis", "analyse_forces", "is_force_name", "FORCE_NAME", "render_forces", "FORCE_PANELS"]

@@ -1,0 +1,355 @@
+"""Read a force scene: a linkage scene with a ``[forces]`` table (kinetostatic analysis).
+
+A force scene is a linkage scene (``[frame]``, ``[driver]`` — a crank or a slider —, ``[[dyad]]``,
+``[[point]]``) with a ``[forces]`` table: the links' masses and moments of inertia at named
+centres of mass, external forces at named points and moments on links, gravity, friction in the
+journals (friction circles) and on the guides (friction angles), and the force scale μF.
+:func:`parse_forces_scene` is the rest of :func:`graphmech.scene.parse_scene` for such a scene,
+with the same reader, key paths and one-line messages; everything is converted to SI into a
+:class:`~graphmech.mechanisms.forces.ForceModel`.
+
+The format, with examples, is the "Force scenes" section of ``docs/scene-format.md``.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from graphmech.errors import SceneError
+from graphmech.mechanisms.forces import (
+    ForceModel,
+    LinkCouple,
+    LinkMass,
+    PointForce,
+    RevoluteFriction,
+    SlidingFriction,
+)
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage
+from graphmech.scene import (
+    _MISSING,
+    _TOP_KEYS,
+    SHOW_CHOICES,
+    Scene,
+    _rank,
+    _read_check,
+    _read_header,
+    _read_linkage,
+    _read_measured,
+    _read_page,
+    _read_scales,
+    _Reader,
+    _say,
+    _type_name,
+)
+
+#: What a force scene may show: the kinematics' panels, then the loads and reactions on the
+#: mechanism ("forces"), each Assur group's free body and force polygon ("force_polygons"), and
+#: Zhukovsky's lever ("lever").
+FORCE_SHOW_CHOICES = SHOW_CHOICES + ("forces", "force_polygons", "lever")
+#: What a force scene shows when it does not say.
+FORCE_SHOW_DEFAULT = ("forces", "force_polygons")
+#: The most masses, forces, moments or friction entries of one kind.
+MAX_ITEMS = 100
+#: The most rounds of successive approximation a scene may allow.
+MAX_ITERATIONS = 10_000
+
+
+@dataclass(frozen=True)
+class ForceScene:
+    """The loads of a force scene and how to draw them.
+
+    Parameters
+    ----------
+    model : ForceModel
+        Masses, loads, friction, in SI.
+    mu_F : float or None
+        The force polygons' scale, N/mm (None: chosen to fit the page).
+    """
+
+    model: ForceModel
+    mu_F: float | None = None
+
+
+def _non_negative(r: _Reader, base: str, kind: str, *, required: bool = True) -> float | None:
+    v = r.value(base, kind, required=required)
+    if v is None:
+        return None
+    if v.si < 0:
+        r.problem(v.path, "must be ≥ 0")
+        return None
+    return v.si
+
+
+def _name(r: _Reader, key: str, hint: str) -> str | None:
+    value = r.raw(key, required=True, hint=hint)
+    return None if value is _MISSING else r.point_name(value, r.at(key))
+
+
+def _link(r: _Reader, links: dict[str, list[str]] | None, frame: str | None) -> str | None:
+    value = r.raw("link", required=True, hint='the number of the link, e.g. link = "2"')
+    link = None if value is _MISSING else r.link_id(value, r.at("link"))
+    if link is None or links is None:
+        return link
+    if link == frame:
+        r.problem(r.at("link"), f"link {link} is the frame: it does not move")
+        return None
+    if link not in links:
+        r.problem(r.at("link"), f"link {link} is not a moving link (links: {', '.join(links)})")
+        return None
+    return link
+
+
+def _on_link(r: _Reader, point: str | None, link: str | None, links: dict[str, list[str]] | None) -> str | None:
+    if point is None or link is None or links is None:
+        return point
+    if point not in links[link]:
+        r.problem(r.at("point"), f"{point} is not a point of link {link} (it carries {', '.join(links[link])})")
+        return None
+    return point
+
+
+def _label_text(r: _Reader, key: str, default: str) -> str:
+    value = r.raw(key)
+    if value is _MISSING:
+        return default
+    if not isinstance(value, str) or not value.strip() or len(value) > 16:
+        r.problem(r.at(key), "must be a short label (1 … 16 characters), e.g. \"P_r\"")
+        return default
+    return value
+
+
+def _coefficient(r: _Reader, key: str) -> float | None:
+    value = r.raw(key, required=True, hint=f"the friction coefficient, e.g. {key} = 0.1")
+    if value is _MISSING:
+        return None
+    x = r.number(value, r.at(key))
+    if x is None:
+        return None
+    if not 0 <= x < 10:
+        r.problem(r.at(key), f"{_say(value)} is not a friction coefficient: 0 ≤ f < 10")
+        return None
+    return x
+
+
+def _joint_lengths(linkage: Linkage) -> dict[str, float]:
+    """Joint → the shortest fixed distance from it to another joint of a link it belongs to (m):
+    a journal must be smaller than half of it, or it overlaps its neighbour."""
+    out: dict[str, float] = {}
+
+    def near(a: str, b: str, length: float) -> None:
+        for x in (a, b):
+            out[x] = min(out.get(x, math.inf), length)
+
+    d = linkage.driver
+    if isinstance(d, Crank):
+        near(d.pivot, d.tip, d.length)
+    for y in linkage.dyads:
+        if isinstance(y, RRR):
+            near(y.p, y.c, y.lengths[0])
+            near(y.q, y.c, y.lengths[1])
+        elif isinstance(y, RRP):
+            near(y.p, y.c, y.length)
+    return out
+
+
+def _revolute_points(linkage: Linkage) -> set[str]:
+    d = linkage.driver
+    out = {d.pivot, d.tip} if isinstance(d, Crank) else {d.point}
+    for y in linkage.dyads:
+        if isinstance(y, RRR):
+            out |= {y.p, y.c, y.q}
+        elif isinstance(y, RRP):
+            out |= {y.p, y.c}
+        elif isinstance(y, RPR):
+            out |= {y.p, y.q}
+        elif isinstance(y, RPP):
+            out.add(y.p)
+    return out
+
+
+def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
+    links = None if linkage is None else {k: v for k, v in linkage.links().items() if k != linkage.frame_link}
+    frame = None if linkage is None else linkage.frame_link
+    before = len(fr.problems)
+    mu_F = None
+    given = fr.quantity("mu_F", "force", required=False, per_mm=True)
+    if given is not None:
+        x = fr.number(given.value, fr.at(given.key), positive=True)
+        mu_F = None if x is None else given.si(x)
+    gravity = _non_negative(fr, "gravity", "acceleration", required=False) or 0.0
+
+    masses: list[LinkMass] = []
+    seen: dict[str, str] = {}
+    for r in fr.tables_at("mass")[:MAX_ITEMS]:
+        link = _link(r, links, frame)
+        point = _on_link(r, _name(r, "point", "its centre of mass S, a point of that link"), link, links)
+        if r.present("mass") and r.present("weight"):
+            r.problem(r.at(r.present("weight")), "give mass or weight, not both")
+            r.ignore("weight")
+        if r.present("weight"):
+            w = _non_negative(r, "weight", "force")
+            g = gravity or 9.81  # a weight names its mass through g
+            mass = None if w is None else w / g
+        else:
+            mass = _non_negative(r, "mass", "mass")
+        inertia = _non_negative(r, "inertia", "inertia", required=False) or 0.0
+        r.finish()
+        if link is not None and link in seen:
+            r.problem(r.at("link"), f"link {link} already has its mass ({seen[link]})")
+            continue
+        if link is not None:
+            seen[link] = r.path
+        if link is not None and point is not None and mass is not None:
+            masses.append(LinkMass(link, point, mass, inertia))
+
+    forces: list[PointForce] = []
+    for k, r in enumerate(fr.tables_at("force")[:MAX_ITEMS]):
+        name = _label_text(r, "name", f"F_{k + 1}")
+        link = _link(r, links, frame)
+        point = _on_link(r, _name(r, "point", "the point the force acts at, on that link"), link, links)
+        magnitude = _non_negative(r, "force", "force")
+        angle = r.scalar("angle", "angle")
+        value = r.raw("resistance")
+        resistance = False
+        if value is not _MISSING:
+            if not isinstance(value, bool):
+                r.problem(r.at("resistance"), f"must be true or false, not {_type_name(value)}")
+            else:
+                resistance = value
+        r.finish()
+        if link is not None and point is not None and magnitude is not None and angle is not None:
+            forces.append(PointForce(link, point, magnitude, angle, resistance, name))
+
+    couples: list[LinkCouple] = []
+    for k, r in enumerate(fr.tables_at("moment")[:MAX_ITEMS]):
+        name = _label_text(r, "name", f"M_{k + 1}")
+        link = _link(r, links, frame)
+        moment = r.scalar("moment", "moment")
+        r.finish()
+        if link is not None and moment is not None:
+            couples.append(LinkCouple(link, moment, name))
+
+    journals: list[RevoluteFriction] = []
+    revolutes = _revolute_points(linkage) if linkage is not None else None
+    spans = _joint_lengths(linkage) if linkage is not None else {}
+    for r in fr.tables_at("journal")[:MAX_ITEMS]:
+        point = _name(r, "point", "the revolute's point, e.g. point = \"B\"")
+        f_v = _coefficient(r, "f_v")
+        radius = _non_negative(r, "radius", "length")
+        r.finish()
+        if point is not None and revolutes is not None and point not in revolutes:
+            r.problem(r.at("point"), f"{point} is not a revolute of the linkage (revolutes: "
+                                     f"{', '.join(sorted(revolutes))})")
+            continue
+        if point is None or f_v is None or radius is None:
+            continue
+        span = spans.get(point, math.inf)
+        if radius >= span / 2 or f_v * radius >= span / 2:
+            r.problem(r.path, f"the journal at {point} (r = {radius * 1000:g} mm, friction circle ρ = "
+                              f"{f_v * radius * 1000:g} mm) is larger than the geometry allows: it must be "
+                              f"smaller than half the {span * 1000:g} mm to the next joint")
+            continue
+        journals.append(RevoluteFriction(point, f_v, radius))
+
+    slides: list[SlidingFriction] = []
+    sliders = None if linkage is None else (
+        {y.links[1] for y in linkage.dyads if isinstance(y, RRP)}
+        | ({linkage.driver.link} if not isinstance(linkage.driver, Crank) else set())
+        | {y.block_link for y in linkage.dyads if isinstance(y, RPR)}
+        | {k for y in linkage.dyads if isinstance(y, RPP) for k in y.links})
+    for r in fr.tables_at("guide")[:MAX_ITEMS]:
+        value = r.raw("link", required=True, hint='the slider\'s link number, e.g. link = "3"')
+        link = None if value is _MISSING else r.link_id(value, r.at("link"))
+        f = _coefficient(r, "f")
+        r.finish()
+        if link is not None and sliders is not None and link not in sliders:
+            r.problem(r.at("link"), f"link {link} is not a slider (on a frame guide or a guide bar)"
+                                    + (f" (sliders: {', '.join(sorted(sliders))})" if sliders else ""))
+            continue
+        if link is not None and f is not None:
+            slides.append(SlidingFriction(link, f))
+
+    tolerance, iterations = 1e-10, 100
+    value = fr.raw("tolerance_N")
+    if value is not _MISSING:
+        x = fr.number(value, fr.at("tolerance_N"), positive=True)
+        tolerance = x if x is not None else tolerance
+    value = fr.raw("max_iterations")
+    if value is not _MISSING:
+        if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_ITERATIONS:
+            fr.problem(fr.at("max_iterations"), f"must be a whole number 1 … {MAX_ITERATIONS}")
+        else:
+            iterations = value
+    for key in ("mass", "force", "moment", "journal", "guide"):
+        value = fr.table.get(key)
+        if isinstance(value, list) and len(value) > MAX_ITEMS:
+            fr.problem(fr.at(key), f"too many entries ({len(value)} > {MAX_ITEMS})")
+    fr.finish()
+    if len(fr.problems) != before or linkage is None:
+        return None
+    model = ForceModel(tuple(masses), tuple(forces), tuple(couples), gravity, tuple(journals), tuple(slides),
+                       tolerance, iterations)
+    return ForceScene(model, mu_F)
+
+
+def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]) -> Scene:
+    """The rest of :func:`graphmech.scene.parse_scene` for a linkage scene with a [forces] table.
+
+    Returns
+    -------
+    Scene
+        A linkage scene with ``forces`` set.
+
+    Raises
+    ------
+    SceneError
+        With every problem found, the first in file order in the message.
+
+    Examples
+    --------
+    >>> from graphmech.scene import parse_scene
+    >>> scene = parse_scene({
+    ...     "units": {"length": "mm", "angle": "deg"},
+    ...     "find": ["M_b"],
+    ...     "frame": {"A": [0, 0]},
+    ...     "driver": {"type": "crank", "link": "1", "pivot": "A", "tip": "B", "length": 100,
+    ...                "angle": 0, "omega_rad_s": 10},
+    ...     "forces": {"force": [{"link": "1", "point": "B", "force_N": 50, "angle": -90}]},
+    ... }, "crank.toml")
+    >>> scene.forces.model.forces[0].magnitude, scene.show
+    (50.0, ('forces', 'force_polygons'))
+    """
+    problems = top.problems
+    title, show, find = _read_header(top, FORCE_SHOW_CHOICES, FORCE_SHOW_DEFAULT)
+    scales = _read_scales(top)
+    linkage, positions, _ = _read_linkage(top)
+    fr = top.table_at("forces")
+    forces = None if fr is None else _read_forces(fr, linkage)
+    measured = _read_measured(top, positions.labels if positions else None)
+    precision = _read_check(top)
+    page = _read_page(top)
+    top.known.update(_TOP_KEYS)
+    top.finish()
+    if problems or linkage is None or forces is None:
+        table = data.get("forces")
+        sub_order = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
+        problems.sort(key=lambda p: _rank(p, order, sub_order, "forces"))
+        raise SceneError(problems or [("forces", "invalid")], source)
+    return Scene(
+        source=source,
+        title=title,
+        show=show,
+        find=find,
+        scales=scales,
+        linkage=linkage,
+        positions=positions,
+        measured=measured,
+        precision_mm=precision,
+        page=page,
+        forces=forces,
+    )
+
+
+__all__ = ["FORCE_SHOW_CHOICES", "FORCE_SHOW_DEFAULT", "ForceScene", "parse_forces_scene"]

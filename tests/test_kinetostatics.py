@@ -1,0 +1,522 @@
+"""Kinetostatics: extreme cases, friction, only what the scene asks, bad input, figures."""
+from __future__ import annotations
+
+import dataclasses
+import subprocess
+import sys
+import tomllib
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+import graphmech.methods.kinetostatics as K
+from graphmech.errors import SceneError
+from graphmech.force_check import analyse_forces
+from graphmech.mechanisms.forces import ForceModel, LinkMass
+from graphmech.scene import load_scene, parse_scene
+from tests.conftest import ROOT, SCENES, check_json, fourbar_scene, run_cli
+
+FOURBAR_LOADS = """
+[forces]
+[[forces.mass]]
+link = "2"
+point = "B"
+mass_kg = 1
+[[forces.moment]]
+link = "3"
+moment_Nm = -10
+"""
+
+SLIDER_CRANK = """
+find = ["R_12", "R_43", "M_b"]
+show = ["mechanism"]
+[units]
+length = "mm"
+angle = "deg"
+[frame]
+A = [0, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = 100
+angle = 90
+omega_rad_s = 10
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["2", "3"]
+length = {length}
+guide = {{ through = [0, 0], angle = 0 }}
+branch = "forward"
+[forces]
+[[forces.mass]]
+link = "3"
+point = "C"
+mass_kg = 2
+[[forces.force]]
+link = "3"
+point = "C"
+force_N = 100
+angle = 180
+{extra}
+"""
+
+
+def _scene(text: str):
+    return parse_scene(tomllib.loads(text), "t.toml")
+
+
+def _fourbar(c: float, find: str = '["R_23", "M_b"]', show: str = '["mechanism"]', extra: str = "") -> str:
+    return fourbar_scene(a=60, b=100, c=c, d=120, angle="180", find=find, show=show) + FOURBAR_LOADS + extra
+
+
+def _write(tmp_path, text: str, name: str = "s.toml"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+# ----------------------------------------------------------------------------- extreme cases
+
+
+def test_transmission_angle_near_zero_reactions_grow_without_bound_and_warn():
+    """At φ1 = 180° |BD| = 180 mm; l2 + l3 just above it puts C nearly in line with B and D."""
+    r = {}
+    for c in (80.5, 80.01, 80.0001):
+        fa = analyse_forces(_scene(_fourbar(c)))
+        q = {row.name: row for row in fa.rows}
+        r[c] = q["R_23"].graphical
+        assert q["R_23"].rel_error < 1e-9  # the matrix method agrees even here
+        near = [w for w in fa.warnings if "grow without bound" in w]
+        assert bool(near) == (c < 80.1), fa.warnings
+        assert q["M_b"].graphical == pytest.approx(10.0 / 3.0, rel=1e-12)  # M_b stays bounded
+    # R ~ 1/sin γ: γ shrinks 10× from 1.22° to 0.122°, so does R grow 10×
+    assert r[80.0001] / r[80.01] == pytest.approx(10.0, rel=1e-3)
+    assert r[80.01] > 7 * r[80.5]
+    # closer still, rounding itself is amplified past the agreement bar: the rows say so
+    fa = analyse_forces(_scene(_fourbar(80.00001)))
+    row = {x.name: x for x in fa.rows}["R_23"]
+    assert row.ill_conditioned and row.rel_error > 1e-10
+    assert not any(x.ill_conditioned for x in analyse_forces(_scene(_fourbar(80.01))).rows)
+
+
+def test_near_collinear_closing_lines_of_a_slider_group_are_flagged():
+    bad = analyse_forces(_scene(SLIDER_CRANK.format(length=100.2, extra="")))
+    good = analyse_forces(_scene(SLIDER_CRANK.format(length=150, extra="")))
+    assert any("near-collinear forces" in w and "group 2–3" in w for w in bad.warnings)
+    assert not any("near-collinear" in w for w in good.warnings)
+    assert values_of(bad)["R_12"] > 40 * values_of(good)["R_12"]
+
+
+def values_of(fa):
+    return {r.name: r.graphical for r in fa.rows}
+
+
+def test_exactly_parallel_closing_lines_are_one_line_errors():
+    kin = K.PolygonKinematics({}, {}, {}, {}, {}, 1.0, np.array([True]))
+    with pytest.raises(K.DegenerateConstruction, match="grow without bound"):
+        K._guard_parallel(np.array([0.0]), kin.valid, "group 2–3: parallel")
+
+
+def test_f_zero_is_the_frictionless_solution_without_iterating(monkeypatch):
+    rounds = []
+    original = K._solve_round
+    monkeypatch.setattr(K, "_solve_round", lambda *a, **k: rounds.append(1) or original(*a, **k))
+    zero = """
+[[forces.journal]]
+point = "B"
+f_v = 0
+radius = 10
+[[forces.guide]]
+link = "3"
+f = 0
+"""
+    fa0 = analyse_forces(_scene(SLIDER_CRANK.format(length=150, extra=zero)))
+    assert len(rounds) == 1 and fa0.solution.iterations == 0
+    rounds.clear()
+    fa = analyse_forces(_scene(SLIDER_CRANK.format(length=150, extra="")))
+    assert len(rounds) == 1
+    assert values_of(fa0) == values_of(fa)
+    rounds.clear()
+    friction = zero.replace("f_v = 0", "f_v = 0.2").replace("f = 0", "f = 0.15")
+    ff = analyse_forces(_scene(SLIDER_CRANK.format(length=150, extra=friction)))
+    assert len(rounds) > 3 and ff.solution.iterations == len(rounds) - 1  # the frictionless start, then the rounds
+    for row in ff.rows:
+        assert row.rel_error < 1e-10, row  # successive approximation = scipy's root on the matrix
+    assert values_of(ff)["M_b"] != pytest.approx(values_of(fa)["M_b"], rel=1e-3)
+
+
+def test_friction_that_does_not_converge_says_so_in_one_line(tmp_path):
+    text = SLIDER_CRANK.format(length=150, extra="""
+[[forces.journal]]
+point = "B"
+f_v = 0.2
+radius = 10
+[[forces.guide]]
+link = "3"
+f = 0.3
+""").replace("[forces]\n", "[forces]\nmax_iterations = 2\n", 1)
+    code, out, err = run_cli("check", str(_write(tmp_path, text)))
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and "does not converge in 2 rounds" in err
+
+
+def test_friction_circle_larger_than_the_geometry_allows(tmp_path):
+    text = _fourbar(90, extra='[[forces.journal]]\npoint = "B"\nf_v = 0.2\nradius = 60\n')
+    code, out, err = run_cli("check", str(_write(tmp_path, text)))
+    assert code == 2 and out == ""
+    assert err == ("s.toml: forces.journal[0]: the journal at B (r = 60 mm, friction circle ρ = 12 mm) is "
+                   "larger than the geometry allows: it must be smaller than half the 60 mm to the next joint\n")
+
+
+# ----------------------------------------------------------------------------- only what is asked
+
+
+def test_only_the_balancing_moment_builds_no_polygons_and_no_lever(monkeypatch):
+    built = []
+    original = K.GroupPolygon
+    monkeypatch.setattr(K, "GroupPolygon", lambda *a, **k: built.append(a[0]) or original(*a, **k))
+    import graphmech.force_check as fc
+
+    monkeypatch.setattr(fc, "zhukovsky_lever", lambda *a, **k: pytest.fail("lever built"))
+    fa = analyse_forces(_scene(_fourbar(90, find='["M_b"]')))
+    assert [r.name for r in fa.rows] == ["M_b"] and built == [] and fa.lever is None
+    fa = analyse_forces(_scene(_fourbar(90, find='["M_b"]', show='["force_polygons"]')))
+    assert built == ["group 2–3", "driver 1"]
+
+
+def test_a_frictionless_scene_does_not_iterate(monkeypatch):
+    rounds = []
+    original = K._solve_round
+    monkeypatch.setattr(K, "_solve_round", lambda *a, **k: rounds.append(1) or original(*a, **k))
+    check_json(SCENES / "force.sixbar_kinetostatic.toml")
+    assert len(rounds) == 1
+
+
+def test_force_polygons_close():
+    fa = analyse_forces(load_scene(SCENES / "force.sixbar_kinetostatic.toml"))
+    assert [g.name for g in fa.solution.groups] == ["group 4–5", "group 2–3", "driver 1"]
+    for g in fa.solution.groups:
+        total = sum(complex(v[0]) for _, v in g.chain)
+        assert abs(total) < 1e-10 * max(abs(complex(v[0])) for _, v in g.chain), g.name
+
+
+# ----------------------------------------------------------------------------- bad input
+
+
+@pytest.mark.parametrize("find, message", [
+    ('["R_13"]', "find[0]: links 1 and 3 have no joint (reactions: R_12, R_14, R_23, R_34)"),
+    ('["F_i3"]', "find[0]: link 3 has no [[forces.mass]] (masses on links 2)"),
+    ('["eta"]', "find[0]: eta compares with friction: this scene has none"),
+])
+def test_unknown_force_names_are_one_line_errors(tmp_path, find, message):
+    code, out, err = run_cli("check", str(_write(tmp_path, _fourbar(90, find=find))))
+    assert code == 2 and err == f"s.toml: {message}\n"
+
+
+RPP_LOADS = """
+[forces]
+gravity_m_s2 = 9.81
+[[forces.mass]]
+link = "2"
+point = "B"
+mass_kg = 0.5
+[[forces.mass]]
+link = "3"
+point = "C"
+mass_kg = 2
+[[forces.force]]
+name = "Q"
+link = "3"
+point = "C"
+force_N = 300
+angle = 180
+"""
+RPP_FRICTION = """
+[[forces.guide]]
+link = "2"
+f = 0.15
+[[forces.guide]]
+link = "3"
+f = 0.1
+[[forces.journal]]
+point = "B"
+f_v = 0.1
+radius = 5
+"""
+
+
+@pytest.mark.parametrize("friction", [False, True])
+def test_rpp_slotted_slider_polygons_lever_and_matrix_agree(friction):
+    """linkage.slider_fixed_angle_guide (block 2 in the 120° slot of slider 3 on the x guide) at
+    four crank angles: friction in the slot, on the guide and in the journal B."""
+    text = (SCENES / "linkage.slider_fixed_angle_guide.toml").read_text(encoding="utf-8")
+    text = text.replace("angle = 45\n", "angle = [45, 100, 200, 300]\n", 1)
+    text = text.replace('find = ["omega_2"', 'find = ["R_12", "R_23", "R_43", "M_43", "e_43", "M_b", "M_b_lever", "omega_2"')
+    fa = analyse_forces(_scene(text + RPP_LOADS + (RPP_FRICTION if friction else "")))
+    rows = {r.name: r for r in fa.rows}
+    for row in fa.rows:
+        if not (friction and "lever" in row.name):
+            assert row.rel_error < 1e-12, row
+    assert (fa.solution.iterations > 0) == friction
+    if not friction:
+        for lab in ("45", "100", "200", "300"):
+            assert rows[f"M_b_lever@{lab}"].graphical == pytest.approx(rows[f"M_b@{lab}"].exact, rel=1e-12)
+    # the slot's reaction on the block is ⟂ the slot (tilted by φ = arctan 0.15 with friction)
+    r = complex(fa.solution.reactions[("3", "2")][0])
+    slot = complex(np.cos(np.radians(120.0)), np.sin(np.radians(120.0)))
+    tilt = abs(np.degrees(np.angle(r / (1j * slot))))
+    assert min(tilt, 180 - tilt) == pytest.approx(np.degrees(np.arctan(0.15)) if friction else 0.0, abs=1e-9)
+
+
+RPR_LOADS = """
+[forces]
+gravity_m_s2 = 9.81
+[[forces.mass]]
+link = "2"
+point = "D"
+mass_kg = 1.5
+inertia_kgm2 = 0.004
+[[forces.mass]]
+link = "3"
+point = "C"
+mass_kg = 0.5
+inertia_kgm2 = 0.0005
+[[forces.force]]
+name = "F"
+link = "2"
+point = "E"
+force_N = 40
+angle = -60
+"""
+RPR_FRICTION = """
+[[forces.journal]]
+point = "B"
+f_v = 0.1
+radius = 5
+[[forces.journal]]
+point = "C"
+f_v = 0.1
+radius = 5
+[[forces.guide]]
+link = "3"
+f = 0.2
+"""
+
+
+@pytest.mark.parametrize("friction", [False, True])
+def test_rpr_oscillating_block_polygons_lever_and_matrix_agree(friction):
+    """The oscillating block of kin.oscillating_block (bar 2 through the block 3 pivoted at C),
+    with ε1 = 20 rad/s² and at three positions."""
+    text = (SCENES / "kin.oscillating_block.toml").read_text(encoding="utf-8")
+    text = text.replace("angle = 45", "angle = [45, 160, 300]\nepsilon_rad_s2 = 20")
+    text = text.replace('find = ["l_BC"', 'find = ["R_12", "R_23", "R_43", "R_41", "M_b", "M_b_lever", "F_i3", "M_i3", "l_BC"')
+    text += RPR_LOADS + (RPR_FRICTION if friction else "")
+    fa = analyse_forces(_scene(text))
+    rows = {r.name: r for r in fa.rows}
+    assert len([n for n in rows if n.startswith("R_")]) == 12
+    for row in fa.rows:
+        if row.name.startswith("M_b_lever") and friction:
+            continue  # the lever is frictionless
+        assert row.rel_error < 1e-12, row
+    # the block turns with the bar: its inertia couple counts in the lever too
+    assert rows["M_i3@45"].graphical == pytest.approx(-0.0005 * fa.kin.alpha["2"][0], rel=1e-14)
+    assert (fa.solution.iterations > 0) == friction
+    if not friction:
+        assert rows["M_b_lever@160"].graphical == pytest.approx(rows["M_b@160"].exact, rel=1e-12)
+
+
+def test_forces_scene_keys_are_checked(tmp_path):
+    text = _fourbar(90).replace("mass_kg = 1", "mass_kg = -1\ncolour = 3")
+    code, _, err = run_cli("check", str(_write(tmp_path, text)))
+    assert code == 2 and err.startswith("s.toml: forces.mass[0].")
+    with pytest.raises(SceneError, match="not a point of link 2"):
+        _scene(_fourbar(90).replace('point = "B"', 'point = "D"'))
+
+
+def test_value_objects_are_frozen():
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        LinkMass("2", "S2", 1.0).mass = 2.0  # type: ignore[misc]
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        ForceModel().gravity = 9.81  # type: ignore[misc]
+
+
+# ----------------------------------------------------------------------------- figures
+
+
+def test_force_sheet_panels_and_one_position_only(tmp_path):
+    from graphmech.cli import render_scene
+
+    svg, warnings = render_scene(SCENES / "force.sixbar_kinetostatic.toml")
+    for title in ("Free body, group 4–5", "Force polygon, group 2–3", "Zhukovsky", "μF = 25 N/mm"):
+        assert title in svg
+    text = _fourbar(90, show='["force_polygons"]').replace('angle = 180', 'angle = [170, 180]')
+    code, _, err = run_cli("render", str(_write(tmp_path, text)), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and "draw one position" in err and not (tmp_path / "x.svg").exists()
+
+
+def test_check_of_a_force_scene_never_imports_matplotlib():
+    code = ("import sys; from graphmech.cli import main; "
+            f"main(['check', {str(SCENES / 'force.sixbar_kinetostatic-friction.toml')!r}]); "
+            "assert not any(m.split('.')[0] == 'matplotlib' for m in sys.modules), 'matplotlib imported'")
+    r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+
+
+def test_measured_forces_are_judged_at_the_drawing_precision():
+    """R_12 read off the polygon at μF = 25 N/mm: ±0.5 mm is ±12.5 N; M_b ± 12.5 N × l_AB."""
+    scene = SCENES / "force.sixbar_kinetostatic.toml"
+    code, out, err = run_cli("check", str(scene), "--json", "--measured", "R_12=1595,M_b=121.8,h_2=0.0245")
+    assert code == 0, err
+    import json
+
+    verdicts = {v["name"]: v for v in json.loads(out)["measured"]}
+    assert verdicts["R_12"]["tolerance"] == pytest.approx(12.5) and verdicts["R_12"]["ok"]
+    assert verdicts["M_b"]["tolerance"] == pytest.approx(12.5 * 0.08) and verdicts["M_b"]["ok"]
+    assert verdicts["h_2"]["tolerance"] == pytest.approx(0.0025) and verdicts["h_2"]["ok"]
+    code, out, _ = run_cli("check", str(scene), "--measured", "R_12=1600.5")
+    assert code == 1 and "OUT OF TOLERANCE" in out
+
+
+# ----------------------------------------------------------------------------- properties
+
+
+
+def _fourbar_linkage(a: float, b: float, c: float, d: float):
+    from graphmech.mechanisms.linkage import RRR, Crank, Linkage, LinkPoint
+
+    return Linkage({"A": (0.0, 0.0), "D": (d, 0.0)}, Crank("1", "A", "B", a, 10.0, 3.0),
+                   (RRR("B", "C", "D", ("2", "3"), (b, c), "left"),),
+                   (LinkPoint("S2", "2", ("B", "C"), b / 2, 0.01), LinkPoint("S3", "3", ("D", "C"), c / 3, 0.0)), "0")
+
+
+@settings(max_examples=40, deadline=None)
+@given(phi=st.floats(0.0, 6.28), m2=st.floats(0.1, 10.0), m3=st.floats(0.1, 10.0), f=st.floats(0.0, 500.0),
+       angle=st.floats(-3.14, 3.14), friction=st.booleans())
+def test_polygons_equal_the_matrix_method_on_random_loads(phi, m2, m3, f, angle, friction):
+    """A crank-rocker (AB 60, BC 120, CD 90, AD 120 mm) at any angle, any loads, with or without
+    friction: the group-by-group polygons and the matrix method give the same reactions and M_b."""
+    from graphmech.exact.kinetostatics import solve_forces
+    from graphmech.mechanisms.forces import PointForce, RevoluteFriction
+    from graphmech.methods.polygons import build_polygons
+
+    lk = _fourbar_linkage(0.06, 0.12, 0.09, 0.12)
+    journals = tuple(RevoluteFriction(p, 0.1, 0.005) for p in "ABCD") if friction else ()
+    model = ForceModel((LinkMass("2", "S2", m2, m2 * 0.002), LinkMass("3", "S3", m3, m3 * 0.001)),
+                       (PointForce("3", "C", f, angle),), gravity=9.81, revolute_friction=journals)
+    b = build_polygons(lk, {"l": 0.001, "v": 0.01, "a": 0.1})
+    batch = b.g.prune(K.construction_targets(b)).evaluate_batch({"phi": np.array([phi])})
+    kin = K.kinematics_from_construction(b, batch.values, batch.valid)
+    sol = K.kinetostatics(lk, model, kin, polygons=False)
+    ex = solve_forces(lk, model, np.array([phi]))
+    size = max(abs(complex(r[0])) for r in sol.reactions.values())
+    for key, r in sol.reactions.items():
+        assert abs(complex(r[0]) - complex(*ex.reactions[key][0])) <= 1e-9 * size, key
+    assert abs(sol.balancing_moment[0] - ex.balancing_moment[0]) <= 1e-9 * size * 0.06
+    if not friction:
+        lever = K.zhukovsky_lever(lk, model, kin)
+        assert abs(lever.balancing_moment[0] - ex.balancing_moment[0]) <= 1e-9 * size * 0.06
+
+
+SLIDER_DRIVEN = """
+title = "Slider-driven rocker: balancing force"
+show = ["forces", "force_polygons", "lever"]
+find = ["F_b", "F_b_lever", "R_12", "R_23", "R_03", "R_01", "M_01"{more}]
+[units]
+length = "mm"
+angle = "deg"
+velocity = "m/s"
+acceleration = "m/s2"
+[frame]
+link = "0"
+O = [0, 0]
+D = [100, 60]
+[driver]
+type = "slider"
+link = "1"
+point = "B"
+guide = {{ through = "O", angle = 0 }}
+position = [40, 60, 80]
+velocity = 0.5
+acceleration = -2
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths = [80, 50]
+branch = "right"
+[[point]]
+name = "S2"
+link = "2"
+base = ["B", "C"]
+along = 40
+left = 0
+[forces]
+gravity_m_s2 = 9.81
+[[forces.mass]]
+link = "1"
+point = "B"
+mass_kg = 3
+[[forces.mass]]
+link = "2"
+point = "S2"
+mass_kg = 1
+inertia_kgm2 = 0.002
+[[forces.moment]]
+name = "M_r"
+link = "3"
+moment_Nm = 4
+{extra}
+"""
+
+
+@pytest.mark.parametrize("friction", [False, True])
+def test_a_driving_slider_gets_a_balancing_force(friction):
+    """The slider-driven rocker of the docs at three positions: F_b by the polygons, by the matrix
+    method and by Zhukovsky's lever (F_b = μv·ΣM_p/v)."""
+    extra = '[[forces.guide]]\nlink = "1"\nf = 0.2\n[[forces.journal]]\npoint = "C"\nf_v = 0.2\nradius = 5\n'
+    text = SLIDER_DRIVEN.format(more=', "F_b0"' if friction else "", extra=extra if friction else "")
+    fa = analyse_forces(_scene(text))
+    rows = {r.name: r for r in fa.rows}
+    assert len(rows) == 3 * (8 if friction else 7)
+    for row in fa.rows:
+        assert row.rel_error < 1e-12, row
+    for lab in ("40", "60", "80"):  # the lever is frictionless
+        ref = rows[f"F_b0@{lab}"].graphical if friction else rows[f"F_b@{lab}"].graphical
+        assert rows[f"F_b_lever@{lab}"].graphical == pytest.approx(ref, rel=1e-12)
+    assert rows["F_b@60"].graphical == pytest.approx(-86.8604612 if friction else -89.4518378, rel=1e-8)
+    assert _scene(text).forces is not None
+    with pytest.raises(SceneError, match="the driver is a slider: its balancing force is F_b"):
+        analyse_forces(_scene(text.replace('"F_b",', '"M_b",', 1)))
+
+
+@settings(max_examples=40, deadline=None)
+@given(phi=st.floats(0.0, 6.28), m3=st.floats(0.1, 10.0), f=st.floats(0.0, 2000.0), fs=st.floats(0.0, 0.4),
+       fv=st.floats(0.0, 0.3), e=st.floats(-30.0, 30.0))
+def test_slider_crank_with_friction_equals_the_matrix_method(phi, m3, f, fs, fv, e):
+    """An offset slider-crank (AB 100, BC 300 mm, offset e) at any angle, a piston force against +x,
+    friction on the guide and in all three journals: polygons = matrix method (scipy root)."""
+    from graphmech.exact.kinetostatics import solve_forces
+    from graphmech.mechanisms.forces import PointForce, RevoluteFriction, SlidingFriction
+    from graphmech.mechanisms.linkage import RRP, Crank, Guide, Linkage, LinkPoint
+    from graphmech.methods.polygons import build_polygons
+
+    lk = Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.1, 150.0),
+                 (RRP("B", "C", ("2", "3"), 0.3, Guide((0.0, e / 1000.0), 0.0), "forward"),),
+                 (LinkPoint("S2", "2", ("B", "C"), 0.1, 0.0),), "0")
+    model = ForceModel((LinkMass("2", "S2", 2.0, 0.02), LinkMass("3", "C", m3)), (PointForce("3", "C", f, np.pi),),
+                       gravity=9.81, revolute_friction=tuple(RevoluteFriction(p, fv, 0.01) for p in "ABC"),
+                       sliding_friction=(SlidingFriction("3", fs),))
+    b = build_polygons(lk, {"l": 0.002, "v": 0.1, "a": 10.0})
+    batch = b.g.prune(K.construction_targets(b)).evaluate_batch({"phi": np.array([phi])})
+    kin = K.kinematics_from_construction(b, batch.values, batch.valid)
+    sol = K.kinetostatics(lk, model, kin, polygons=False)
+    ex = solve_forces(lk, model, np.array([phi]))
+    assert ex.valid[0]
+    size = max(abs(complex(r[0])) for r in sol.reactions.values())
+    for key, r in sol.reactions.items():
+        assert abs(complex(r[0]) - complex(*ex.reactions[key][0])) <= 1e-8 * size, key
+    assert abs(sol.balancing_moment[0] - ex.balancing_moment[0]) <= 1e-8 * size * 0.1
