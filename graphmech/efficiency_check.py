@@ -194,7 +194,7 @@ def _values(an: EfficiencyAnalysis, base: str, d: str) -> tuple[float, float, fl
         if base == "P_in":
             return stages[0].power_in, p_out / eta_e, None, 1.0, False, p_out
         return stages[-1].power_out, p_out, None, 1.0, False, p_out
-    phi, Q = an.phi, float(p.load)  # type: ignore[arg-type]
+    phi, Q = an.phi, float(p.load if p.load is not None else 1.0)
     mu = an.scales.get("F", 1.0)
     if base in ("phi", "phi_v"):
         return math.degrees(phi), math.degrees(math.atan((p.f or 0.0) / math.cos(p.half_angle))), None, 1.0, False, 1.0

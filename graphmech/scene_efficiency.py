@@ -211,6 +211,13 @@ def _needs_friction(kind: str, find: tuple[str, ...], show: tuple[str, ...]) -> 
     return "polygon" in show or any(q.get(n, ("", False, True))[2] for n in names)
 
 
+def _needs_load(kind: str, find: tuple[str, ...], show: tuple[str, ...]) -> bool:
+    """The load Q is needed for the polygon and every force, moment or stress (η too: it is read
+    off the polygons); not for angles such as ψ."""
+    names = [n.partition("@")[0] for n in find] or list(DEFAULT_FIND[kind])
+    return "polygon" in show or any(n in ("F", "F0", "eta", "R", "R12", "R32", "R31", "M", "sigma") for n in names)
+
+
 def read_efficiency(top: _Reader, find: tuple[str, ...], show: tuple[str, ...]) -> EfficiencyProblem | None:
     """[efficiency] → :class:`EfficiencyProblem` (None after reporting when it is invalid)."""
     r = top.table_at("efficiency", required=True)
@@ -239,7 +246,8 @@ def read_efficiency(top: _Reader, find: tuple[str, ...], show: tuple[str, ...]) 
             return None
         return EfficiencyProblem("chain", (), load=load, speed=speed, stages=stages)
     directions = _directions(r)
-    load = r.scalar("load", "force", positive=True)
+    load_needed = _needs_load(kind, find, show)
+    load = r.scalar("load", "force", positive=True, required=load_needed)
     f_needed = _needs_friction(kind, find, show)
     f, equivalent = _friction(r, kind, f_needed)
     prob: dict[str, Any] = {}
@@ -259,7 +267,7 @@ def read_efficiency(top: _Reader, find: tuple[str, ...], show: tuple[str, ...]) 
     else:
         ok = _read_screw(r, prob, f, equivalent)
     r.finish()
-    if not ok or load is None or (f_needed and f is None) or _has(r, "efficiency"):
+    if not ok or (load_needed and load is None) or (f_needed and f is None) or _has(r, "efficiency"):
         return None
     return EfficiencyProblem(kind, directions, f=f, load=load, f_is_equivalent=equivalent, **prob)
 

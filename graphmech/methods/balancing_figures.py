@@ -69,7 +69,7 @@ def rotor_items(masses: Sequence[Any], corrections: Sequence[Correction], mu_l: 
         th = float(c.theta)  # type: ignore[arg-type]
         p = (c.r_b / mu_l * math.cos(th), c.r_b / mu_l * math.sin(th))
         items += [Segment((0.0, 0.0), p, "result"), Circle(p, 2.2, "result"),
-                  Label("m_b" + (" " + c.plane if c.plane else ""), p, ((-math.cos(th), -math.sin(th)),), 3.2)]
+                  Label("mb" + (" " + c.plane if c.plane else ""), p, ((-math.cos(th), -math.sin(th)),), 3.2)]
     return items
 
 
@@ -110,8 +110,8 @@ def balancing_sheet(title: str, kind: str, masses: Sequence[Any], planes: tuple[
                 notes = (format_scale("W", mu_W), "closes by itself: no correction mass needed")
             else:
                 notes = (format_scale("W", mu_W),
-                         f"m_b·r_b = {c.W:.5g} kg·m, θ_b = {math.degrees(float(c.theta)) % 360.0:.4g}°, "  # type: ignore[arg-type]
-                         f"m_b = {c.m_b:.4g} kg")
+                         f"mb·rb = {c.W:.5g} kg·m, θb = {math.degrees(float(c.theta)) % 360.0:.4g}°, "  # type: ignore[arg-type]
+                         f"mb = {c.m_b:.4g} kg")
             panels.append(Panel(f"polygon{c.plane}", name, tuple(polygon_items(c)), notes, row=1))
     return Sheet(title, tuple(panels), page, footer)
 

@@ -139,14 +139,14 @@ def _wedge_diagram(gamma: float, beta: float) -> list[Primitive]:
 def _chain_diagram(stages: Sequence[Any], powers: Sequence[Any]) -> list[Primitive]:
     items: list[Primitive] = []
     x = 0.0
-    box_w, box_h, gap = 26.0, 12.0, 22.0
+    box_w, box_h, gap = 36.0, 17.0, 24.0
 
     def box(cx: float, cy: float, text: str, eta: str) -> None:
         pts = ((cx - box_w / 2, cy - box_h / 2), (cx + box_w / 2, cy - box_h / 2), (cx + box_w / 2, cy + box_h / 2),
                (cx - box_w / 2, cy + box_h / 2))
         items.append(Polyline(pts, "given", closed=True))
-        items.append(Label(text, (cx, cy + 2.2), (), 2.8, italic=False))
-        items.append(Label(eta, (cx, cy - 2.6), (), 2.8))
+        items.append(Label(text, (cx, cy + 3.2), (), 2.8, italic=False))
+        items.append(Label(eta, (cx, cy - 3.2), (), 2.8))
 
     items.append(Label("motor", (x, 0.0), (), 3.2, italic=False))
     x += 8.0
@@ -162,12 +162,12 @@ def _chain_diagram(stages: Sequence[Any], powers: Sequence[Any]) -> list[Primiti
         else:
             n = len(stage.branches)
             for i, (share, series) in enumerate(stage.branches):
-                cy = (n - 1) * 9.0 - i * 18.0
-                pts = ((x - box_w / 2, cy - 7.0), (x + box_w / 2, cy - 7.0), (x + box_w / 2, cy + 7.0),
-                       (x - box_w / 2, cy + 7.0))
+                cy = (n - 1) * 11.0 - i * 22.0
+                pts = ((x - box_w / 2, cy - 9.0), (x + box_w / 2, cy - 9.0), (x + box_w / 2, cy + 9.0),
+                       (x - box_w / 2, cy + 9.0))
                 items.append(Polyline(pts, "given", closed=True))
-                items.append(Label(f"{stage.name}: {share:g}", (x, cy + 2.2), (), 2.6, italic=False))
-                items.append(Label("η = " + "·".join(f"{e:g}" for e in series), (x, cy - 2.6), (), 2.6))
+                items.append(Label(f"{stage.name}: {share:g}", (x, cy + 3.4), (), 2.6, italic=False))
+                items.append(Label("η = " + "·".join(f"{e:g}" for e in series), (x, cy - 3.4), (), 2.6))
         x += box_w / 2.0
     items.append(Arrow((x, 0.0), (x + gap, 0.0), "result"))
     items.append(Label(f"{powers[-1].power_out / 1000.0:.4g} kW", (x + gap / 2.0, 4.5), ((0.0, -1.0),), 2.8,
@@ -213,7 +213,8 @@ def efficiency_sheet(title: str, problem: Any, strokes: dict[str, Stroke], chain
         notes: tuple[str, ...] = ()
         if kind == "chain":
             items = _chain_diagram(problem.stages, chain[1])
-            head = "machines in series and in parallel"
+            parallel = any(len(st.branches) > 1 for st in problem.stages)
+            head = "machines in series" + (" and in parallel" if parallel else "")
             notes = (f"η = {chain[0]:.6g}",)
         elif kind == "wedge":
             items = _wedge_diagram(problem.gamma, problem.beta)
