@@ -335,7 +335,8 @@ def _read_screw(r: _Reader, prob: dict[str, Any], f: float | None, equivalent: b
     given = [n for n, v in (("pitch", pitch), ("lead_angle", lead_angle)) if v is not None] + \
         (["at_self_locking_limit"] if at_limit else [])
     if len(given) != 1:
-        where = r.at(given[1] if len(given) > 1 else "pitch")
+        key = given[1] if len(given) > 1 else "pitch"
+        where = r.at(r.present(key) or key)
         r.problem(where, "give the thread's lead as exactly one of pitch_mm (with d2_mm), lead_angle_deg, or "
                          "at_self_locking_limit = true" + (f" (given: {', '.join(given)})" if given else ""))
         return False
