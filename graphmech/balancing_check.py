@@ -102,6 +102,12 @@ def _exact(an: BalancingAnalysis) -> tuple[complex, ...]:
     return ex.dynamic_correction(us, p.planes[0], p.planes[1])  # type: ignore[index]
 
 
+def _deg360(theta: float) -> float:
+    """An angle in degrees in [0, 360) (−0° and −1e-17° are 0°, not 360°)."""
+    g = math.degrees(theta) % 360.0
+    return 0.0 if g >= 360.0 else g + 0.0
+
+
 def _angle_diff_deg(a: float, b: float) -> float:
     return (a - b + 180.0) % 360.0 - 180.0
 
@@ -128,8 +134,8 @@ def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | Non
         return c.m_b, abs(w) / c.r_b, c.drawn_mm, mu / c.r_b, an.size / c.r_b
     if c.balanced:
         return None
-    g = math.degrees(c.theta) % 360.0  # type: ignore[arg-type]
-    e = math.degrees(cmath.phase(w)) % 360.0
+    g = gm.degrees_0_360(float(c.theta))  # type: ignore[arg-type]
+    e = _deg360(cmath.phase(w))
     return g, g - _angle_diff_deg(g, e), None, 1.0, 360.0
 
 

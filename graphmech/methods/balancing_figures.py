@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from typing import Any, Sequence
 
-from graphmech.methods.balancing import Correction
+from graphmech.methods.balancing import Correction, degrees_0_360
 from graphmech.render.primitives import Arrow, Circle, Label, Panel, Primitive, Segment, Sheet
 from graphmech.render.style import subscript
 from graphmech.scales import format_scale, round_scale
@@ -110,7 +110,7 @@ def balancing_sheet(title: str, kind: str, masses: Sequence[Any], planes: tuple[
                 notes = (format_scale("W", mu_W), "closes by itself: no correction mass needed")
             else:
                 notes = (format_scale("W", mu_W),
-                         f"mb·rb = {c.W:.5g} kg·m, θb = {math.degrees(float(c.theta)) % 360.0:.4g}°, "  # type: ignore[arg-type]
+                         f"mb·rb = {c.W:.5g} kg·m, θb = {degrees_0_360(float(c.theta)):.4g}°, "  # type: ignore[arg-type]
                          f"mb = {c.m_b:.4g} kg")
             panels.append(Panel(f"polygon{c.plane}", name, tuple(polygon_items(c)), notes, row=1))
     return Sheet(title, tuple(panels), page, footer)
