@@ -21,6 +21,18 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
     if scene.flywheel is not None:  # its analysis is graphmech.flywheel_check's; here it is parsed
         pytest.importorskip("graphmech.flywheel_check")
         return
+    if scene.efficiency is not None or scene.balancing is not None:
+        if scene.efficiency is not None:
+            from graphmech.efficiency_check import analyse_efficiency as analyse_forces, judge_efficiency as judge_forces
+        else:
+            from graphmech.balancing_check import analyse_balancing as analyse_forces, judge_balancing as judge_forces
+        fan = analyse_forces(scene)
+        assert fan.rows
+        for row in fan.rows:  # polygons against the closed forms
+            assert row.rel_error <= 1e-9 or row.ill_conditioned, row
+        for verdict in judge_forces(fan):
+            assert verdict.ok, verdict
+        return
     if scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 
