@@ -151,8 +151,12 @@ def _strokes(an: EfficiencyAnalysis) -> None:
                                "it — self-locked, η = 0")
         elif st.eta == 0.0:
             an.warnings.append(f"{what}: at the self-locking limit, η = 0 exactly")
+        elif st.eta < 0.0 and d == "forward":
+            an.warnings.append(f"{what}: self-locking (η = {st.eta:.4g} ≤ 0): no force F in its direction, however "
+                               "large, moves it")
         elif st.eta < 0.0:
-            an.warnings.append(f"{what}: self-locking (η = {st.eta:.4g} ≤ 0): F must act the other way to move it")
+            an.warnings.append(f"{what}: self-locking (η = {st.eta:.4g} ≤ 0): the load cannot drive it; F must act "
+                               "the other way to move it")
         if st.F is not None and st.cond > COND_HAND:
             angle = math.degrees(math.asin(min(1.0, 1.0 / st.cond)))
             an.warnings.append(f"{what}: the polygon closes at {angle:.3g}° (nearly collinear forces): the drawn "

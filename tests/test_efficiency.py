@@ -291,3 +291,62 @@ def test_frozen_results():
     s = gm.incline(10.0, 0.3, 0.1, "forward", 1.0)
     with pytest.raises(AttributeError):
         s.F = 3.0  # type: ignore[misc]
+
+
+# ---------------------------------------------------------------------------- fuzzing
+
+
+def _forces_blocks() -> list[str]:
+    import re
+
+    text = (ROOT / "docs" / "scene-format.md").read_text(encoding="utf-8")
+    blocks = re.findall(r"^```toml\n(.*?)^```", text, re.S | re.M)
+    return [b for b in blocks if "[efficiency]" in b or "[balancing]" in b] + [
+        p.read_text(encoding="utf-8") for p in sorted(SCENES.glob("*.toml"))
+        if p.stem.startswith(("force.", "eff.", "thread.", "bal."))]
+
+
+_values_to_try = st.one_of(st.booleans(), st.integers(-5, 400), st.floats(allow_nan=True, allow_infinity=True),
+                           st.sampled_from([0, 0.0, 1e-300, 89.999999, 90, 45, -1, "forward", "V", "x", [], [0, 0],
+                                            [1, 1], {}]))
+
+
+def _leaves(data, path=()):
+    if isinstance(data, dict):
+        return [path] + [q for k, v in data.items() for q in _leaves(v, path + (k,))]
+    if isinstance(data, list):
+        return [path] + [q for i, v in enumerate(data) for q in _leaves(v, path + (i,))]
+    return [path]
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.data())
+def test_any_mutation_checks_or_is_refused_in_one_line(data):
+    """Whatever a mutated efficiency or balancing scene holds: a table without NaN, or exit 2 in one
+    line — never an internal error."""
+    import copy
+
+    from graphmech.balancing_check import analyse_balancing
+    from graphmech.efficiency_check import analyse_efficiency
+    from graphmech.errors import GraphmechError
+
+    base = tomllib.loads(data.draw(st.sampled_from(_forces_blocks())))
+    mutated = copy.deepcopy(base)
+    path = data.draw(st.sampled_from(_leaves(mutated)[1:]))
+    parent = mutated
+    for step in path[:-1]:
+        parent = parent[step]
+    if data.draw(st.booleans()) and isinstance(parent, dict):
+        del parent[path[-1]]
+    else:
+        parent[path[-1]] = data.draw(_values_to_try)
+    try:
+        sc = parse_scene(mutated, "fuzz.toml")
+        an = analyse_efficiency(sc) if sc.efficiency is not None else analyse_balancing(sc) \
+            if sc.balancing is not None else None
+    except GraphmechError as err:
+        assert "\n" not in str(err)
+        return
+    if an is not None:
+        for row in an.rows:
+            assert math.isfinite(row.graphical) and math.isfinite(row.exact) and math.isfinite(row.rel_error), row
