@@ -149,10 +149,8 @@ def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: M
             elif "polygon" in show:
                 top.problem(f"show[{list(data['show']).index('polygon')}]",
                             "a chain of machines has no force polygon: show diagram")
-    if balancing or problem is None:
-        measured = _read_measured(top, None, cam=balancing)
-    else:  # names such as eta@reverse: the labels are the directions
-        measured = _read_measured(top, problem.directions or None, cam=not problem.directions)
+    # names such as eta@reverse: the check validates the direction against the quantity
+    measured = _read_measured(top, None)
     precision = _read_check(top)
     page = _read_page(top)
     top.known.update(_FORCES_KEYS)

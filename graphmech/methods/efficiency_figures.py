@@ -108,7 +108,7 @@ def _incline_diagram(alpha: float, phi: float, stroke: Stroke | None, push: str,
         a_n = math.atan2(normal[1], normal[0])
         a_r = math.atan2(r_dir[1], r_dir[0])
         if abs(a_r - a_n) > 1e-9:
-            items += _angle_arc(contact, 11.0, a_n, a_r, "φ")
+            items += _angle_arc(contact, 11.0, a_n, a_r, "φv" if thread else "φ")
     return items
 
 
@@ -236,7 +236,8 @@ def efficiency_sheet(title: str, problem: Any, strokes: dict[str, Stroke], chain
             if st.F is None:
                 notes = (format_scale("F", scales["F"]), "F ∥ R: no finite force — self-locked, η = 0")
             else:
-                notes = (format_scale("F", scales["F"]), f"F = {st.F:.5g} N, F₀ = {st.F0:.5g} N, η = {st.eta:.4g}")
+                notes = (format_scale("F", scales["F"]),
+                         f"F = {st.F:.5g} N, F₀ = {st.F0:.5g} N, η = {st.eta:.4g}".replace("-", "−"))
             panels.append(Panel(f"polygon-{d}", f"force polygon — {_WORDS[d]}", tuple(items), notes))
     return Sheet(title, tuple(panels), page, footer)
 
