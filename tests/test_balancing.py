@@ -173,3 +173,19 @@ def test_bad_balancing_scenes(body, where, words, tmp_path):
     assert words in e.value.problems[0][1], e.value.problems
     code, out, err = run_cli("check", str(p))
     assert code == 2 and err.count("\n") == 1
+
+
+def test_recorded_draw_calls_of_a_polygon_panel():
+    """Each mass-radius product is a shaft and a filled triangle (never a marker); labels are text."""
+    from graphmech.render.recording import RecordingBackend
+    from graphmech.render.sheet import draw_sheet
+
+    an = analyse_balancing(load_scene(SCENES / "bal.disc_static.toml"))
+    sheet = balancing_figure(an, (297.0, 210.0))
+    only_polygon = type(sheet)(sheet.title, (sheet.panels[1],), sheet.page, sheet.footer)
+    calls = draw_sheet(only_polygon, RecordingBackend())
+    heads = [c for c in calls if c[0] == "polyline" and c[4] and len(c[1]) == 3]
+    assert len(heads) == 5  # W1 … W4 and the closing W_b
+    texts = {c[1] for c in calls if c[0] == "text"}
+    assert {"W₁", "W₂", "W₃", "W₄", "Wb"} <= texts
+    assert any("μW = 0.05 (kg·m)/mm" in t for t in texts)

@@ -350,3 +350,15 @@ def test_any_mutation_checks_or_is_refused_in_one_line(data):
     if an is not None:
         for row in an.rows:
             assert math.isfinite(row.graphical) and math.isfinite(row.exact) and math.isfinite(row.rel_error), row
+
+
+def test_scene_text_is_escaped_in_the_svg(tmp_path):
+    import xml.etree.ElementTree as ET
+
+    p = scene('title = "a <b> & \\"c\\""\n[efficiency]\ntype = "chain"\nload_N = 1\nspeed_m_s = 1\n'
+              '[[efficiency.stage]]\nname = "</text><script>x</script>"\neta = 0.9\n', tmp_path)
+    code, out, err = run_cli("render", str(p), "-o", str(tmp_path / "e.svg"))
+    assert code == 0, err
+    svg = (tmp_path / "e.svg").read_text(encoding="utf-8")
+    ET.fromstring(svg)  # well-formed
+    assert "<script>" not in svg and "&lt;script&gt;" in svg

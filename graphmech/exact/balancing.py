@@ -15,7 +15,7 @@ in kg·m and moments in kg·m². Angles in rad, lengths in m.
 from __future__ import annotations
 
 import cmath
-import math
+import math  # noqa: F401  (the doctests use it)
 from dataclasses import dataclass
 from typing import Sequence
 
