@@ -63,7 +63,7 @@ def test_incline_polygon_is_the_closed_form(alpha, f, push, direction):
 
 
 @settings(max_examples=60, deadline=None)
-@given(gamma=st.floats(25.0, 85.0), beta=st.floats(5.0, 85.0), f=st.floats(0.0, 0.2),
+@given(gamma=st.floats(3.0, 85.0), beta=st.floats(5.0, 85.0), f=st.floats(0.0, 0.2),
        direction=st.sampled_from(["forward", "reverse"]))
 def test_wedge_polygons_are_the_sine_rule(gamma, beta, f, direction):
     if abs(gamma + beta - 90.0) < 3.0 or gamma + beta > 170.0:
@@ -79,6 +79,18 @@ def test_wedge_polygons_are_the_sine_rule(gamma, beta, f, direction):
     r = dict(s.reactions)
     assert (r["R12"], r["R32"], r["R31"]) == pytest.approx((w.R12, w.R32, w.R31), rel=1e-9, abs=1e-9)
     assert s.F0 == pytest.approx(ex.wedge_ideal_force(1000.0, g, b), rel=1e-12)
+
+
+def test_wedge_below_its_locking_angle_is_self_locking_not_an_error(tmp_path):
+    """γ = 10° < 2φ = 17.06°: friction turns R12 past R32 — the forward stroke cannot be driven."""
+    p = scene('find = ["eta", "gamma_limit"]\n[efficiency]\ntype = "wedge"\ngamma_deg = 10\nbeta_deg = 30\n'
+              'f = 0.15\nload_N = 1000\n', tmp_path)
+    doc = check_json(p)
+    q = values(doc)
+    assert q["eta@forward"]["graphical"] < 0 and q["eta@forward"]["rel_error"] < 1e-14
+    assert q["eta@reverse"]["graphical"] > 0
+    assert q["gamma_limit"]["graphical"] == pytest.approx(2 * math.degrees(math.atan(0.15)), rel=1e-10)
+    assert any("forward stroke" in w and "however large" in w for w in doc["warnings"])
 
 
 def test_every_polygon_closes():

@@ -143,6 +143,16 @@ def close_polygon(body: str, start: XY, known: Sequence[DrawnForce | tuple[str, 
     return ForcePolygon(body, tuple(sides), cond, ideal)
 
 
+def _crossing(poly: ForcePolygon) -> float:
+    """The sine of the angle from the first unknown side to the second (the last two drawn)."""
+    a, b = poly.forces[-2], poly.forces[-1]
+    ax, ay = a.end[0] - a.start[0], a.end[1] - a.start[1]
+    bx, by = b.end[0] - b.start[0], b.end[1] - b.start[1]
+    sa = math.copysign(1.0, a.value) if a.value else 1.0
+    sb = math.copysign(1.0, b.value) if b.value else 1.0
+    return (ax * by - ay * bx) * sa * sb  # the directions as given, whatever the signs came out
+
+
 def _value(poly: ForcePolygon, name: str) -> float:
     return next(s.value for s in poly.forces if s.name == name)
 
@@ -257,8 +267,11 @@ def wedge(Q: float, gamma: float, beta: float, phi: float, direction: Direction,
         p2, p1 = solve(phi, sides, False)  # type: ignore[arg-type]
     except DegenerateConstruction:
         return Stroke(direction, ideal_polys, None, F0, 0.0, (), math.inf, (("v1", v1), ("v2", v2)))
+    # friction turning the two unknowns of a triangle past parallel is self-locking (F changes sign
+    # through infinity: η ≤ 0), not a contact changing sides
+    locked = any(_crossing(q) * _crossing(p) < 0 for q, p in ((ideal_polys[0], p2), (ideal_polys[1], p1)))
     for p, n in ((p2, "R12"), (p2, "R32"), (p1, "R31")):
-        if _value(p, n) < 0:
+        if _value(p, n) < 0 and not locked:
             raise DegenerateConstruction(
                 f"{p.body}: {n}", "friction reverses the side this contact bears on (γ + β too close to 90° or "
                 "γ too steep): the one-sided reconstruction does not apply")
