@@ -69,7 +69,8 @@ def analyse_balancing(scene: Any, extra_measured: tuple[tuple[str, float], ...] 
     an = BalancingAnalysis(scene, p, extra_measured=tuple(extra_measured))
     masses = [gm.Mass(u.name, u.m, u.r, u.theta, u.z) for u in p.masses]
     if "W" in scene.scales:
-        an.scales["W"], _ = scene.scales["W"], an.stated.add("W")
+        an.scales["W"] = scene.scales["W"]
+        an.stated.add("W")
     else:  # draw at 1 kg·m/mm to see the sizes, then at a round μW
         trial = _balance(p, masses, 1.0)
         longest = max([math.hypot(s.end[0] - s.start[0], s.end[1] - s.start[1]) for c in trial
