@@ -77,6 +77,14 @@ def analyse_balancing(scene: Any, extra_measured: tuple[tuple[str, float], ...] 
                        for s in c.sides + (c.closing,)] + [EPS])
         an.scales["W"] = round_scale(longest / POLYGON_MM)
     an.corrections = _balance(p, masses, an.scales["W"])
+    if "W" in an.stated:
+        longest = max([math.hypot(s.end[0] - s.start[0], s.end[1] - s.start[1]) for c in an.corrections
+                       for s in c.sides + (c.closing,)] + [0.0])
+        if not 2.0 <= longest <= 2000.0:
+            raise SceneError([("scales", f"μW = {an.scales['W']:g} kg·m/mm draws the largest mass-radius product "
+                                         f"{longest:.3g} mm long: choose μW so that it is 2 … 2000 mm (about "
+                                         f"{round_scale(longest * an.scales['W'] / POLYGON_MM):g} kg·m/mm)")],
+                             scene.source)
     for c in an.corrections:
         if c.balanced:
             where = "the rotor is" if p.type == "static" else f"plane {c.plane} is"

@@ -24,6 +24,9 @@ from graphmech.tolerances import EPS, SHALLOW_DEG
 
 #: The longest side of a force polygon when graphmech chooses μF, mm.
 POLYGON_MM = 80.0
+#: A stated μF must draw the largest force between these lengths, mm.
+DRAWN_MM = (2.0, 2000.0)
+
 #: A polygon that closes at an angle below SHALLOW_DEG is ill-conditioned for a hand construction.
 COND_HAND = 1.0 / math.sin(math.radians(SHALLOW_DEG))
 
@@ -82,6 +85,9 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
             continue
         if q[base][2] and p.f is None:
             problems.append((key, f"{base} needs the friction coefficient: add f to [efficiency]"))
+            continue
+        if base == "eta_self_locking_max" and not p.f:
+            problems.append((key, "eta_self_locking_max needs f > 0: without friction no screw self-locks"))
             continue
         if base == "M" and p.d2 is None:
             problems.append((key, "M needs the pitch diameter: add d2_mm to [efficiency]"))
@@ -144,6 +150,13 @@ def _strokes(an: EfficiencyAnalysis) -> None:
             an.strokes[d] = _stroke(an, d, an.scales["F"])
     except DegenerateConstruction as e:
         raise SceneError([("efficiency", str(e))], an.scene.source) from None
+    if stated is not None:
+        longest = max((math.hypot(s.end[0] - s.start[0], s.end[1] - s.start[1])
+                       for st in an.strokes.values() for poly in st.polygons for s in poly.forces), default=1.0)
+        if not DRAWN_MM[0] <= longest <= DRAWN_MM[1]:
+            raise SceneError([("scales", f"μF = {stated:g} N/mm draws the largest force {longest:.3g} mm "
+                               f"long: choose μF so that it is {DRAWN_MM[0]:g} … {DRAWN_MM[1]:g} mm (about "
+                               f"{round_scale(longest * stated / POLYGON_MM):g} N/mm)")], an.scene.source)
     for d, st in an.strokes.items():
         what = {"forward": "forward stroke (F drives)", "reverse": "reverse stroke (the load drives)"}[d]
         if st.F is None:
@@ -218,14 +231,12 @@ def _values(an: EfficiencyAnalysis, base: str, d: str) -> tuple[float, float, fl
         area = math.pi * d1 * d1 / 4.0
         return Q / area, 4.0 * Q / (math.pi * d1 ** 2), None, 1.0, False, 1.0
     if base in ("self_locking_angle", "gamma_limit", "eta_self_locking_max"):
-        if base == "gamma_limit":
-            g = gm.wedge_locking_angle(float(p.beta), phi)  # type: ignore[arg-type]
-            return math.degrees(g), math.degrees(2.0 * phi), None, 1.0, False, 1.0
-        g = gm.limiting_angle(lambda x: _eta_reverse_at(an, x), 1e-12, math.radians(89.999))
-        if base == "self_locking_angle":
-            return math.degrees(g), math.degrees(phi), None, 1.0, False, 1.0
-        eta = gm.incline(1.0, g, phi, "forward", 1.0).eta
-        return eta, ex.self_locking_efficiency_bound(phi), None, 1.0, False, 1.0
+        if phi == 0.0 and base != "eta_self_locking_max":  # no friction, nothing locks: the limit is 0
+            return 0.0, 0.0, None, 1.0, False, 1.0
+        try:
+            return _limits(an, base, phi)
+        except DegenerateConstruction as e:
+            raise SceneError([("find", f"{base}: {e}")], an.scene.source) from None
     st = an.strokes[d]
     ill = st.F is not None and st.cond > COND_HAND
     if p.type == "wedge":
@@ -253,6 +264,19 @@ def _values(an: EfficiencyAnalysis, base: str, d: str) -> tuple[float, float, fl
         return st.F * r2, Me, st.F / mu, mu * r2, ill, Q * r2
     value = dict(st.reactions)[base]
     return value, exact_R[base], value / mu, mu, ill, Q
+
+
+def _limits(an: EfficiencyAnalysis, base: str, phi: float) -> tuple[float, float, float | None, float, bool, float]:
+    """The self-locking limits, found on the construction by redrawing it until η = 0."""
+    p = an.problem
+    if base == "gamma_limit":
+        g = gm.wedge_locking_angle(float(p.beta), phi)  # type: ignore[arg-type]
+        return math.degrees(g), math.degrees(2.0 * phi), None, 1.0, False, 1.0
+    g = gm.limiting_angle(lambda x: _eta_reverse_at(an, x), 1e-12, math.radians(89.999))
+    if base == "self_locking_angle":
+        return math.degrees(g), math.degrees(phi), None, 1.0, False, 1.0
+    eta = gm.incline(1.0, g, phi, "forward", 1.0).eta
+    return eta, ex.self_locking_efficiency_bound(phi), None, 1.0, False, 1.0
 
 
 def judge_efficiency(an: EfficiencyAnalysis, precision_mm: float | None = None) -> list[Verdict]:

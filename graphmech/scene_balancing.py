@@ -8,6 +8,7 @@ scene (key paths, one-line messages, all problems collected); called from
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from graphmech.scene import _MISSING, _Reader, _say, _type_name
@@ -25,6 +26,11 @@ QUANTITIES = {
 DEFAULT_FIND = {"static": ("W_b", "m_b", "theta_b", "residual_force"),
                 "dynamic": ("W_I", "m_I", "theta_I", "W_II", "m_II", "theta_II", "residual_force", "residual_moment")}
 MAX_MASSES = 50
+#: Two correction planes closer than this, relative to their distance from z = 0 (or to 1 mm), are
+#: one plane: the lever rule would divide by a rounding error.
+COINCIDENT_PLANES = 1e-9
+#: The largest m, r or |z| in SI units (kg, m): beyond it the polygon's sums overflow.
+MAX_SIZE = 1e9
 
 
 @dataclass(frozen=True)
@@ -72,9 +78,11 @@ def read_balancing(top: _Reader) -> BalancingProblem | None:
         given = r.quantity("planes", "length", required=True)
         if given is not None:
             zz = r.numbers(given.value, r.at(given.key), 2, shape="[z_I, z_II]")
-            if zz is not None:
+            if zz is not None and max(abs(given.si(zz[0])), abs(given.si(zz[1]))) > MAX_SIZE:
+                r.problem(r.at(given.key), "absurd plane positions for a rotor (|z| up to 1e9 m)")
+            elif zz is not None:
                 a, b = given.si(zz[0]), given.si(zz[1])
-                if a == b:
+                if abs(a - b) <= COINCIDENT_PLANES * max(abs(a), abs(b), 1e-3):
                     r.problem(r.at(given.key), f"the correction planes coincide (z = {a:g} m): dynamic balancing "
                                                "needs two distinct planes")
                 else:
@@ -113,6 +121,13 @@ def read_balancing(top: _Reader) -> BalancingProblem | None:
                 s.quantity("z", "length", required=False)
                 s.problem(s.at(s.present("z") or "z"), 'a static balance has one plane: no z (write type = "dynamic")')
         s.finish()
+        if th is not None and not (math.isfinite(th) and abs(th) <= 1e4):
+            s.problem(s.at(s.present("angle") or "angle"), "an absurd angle (write it within ±360°)")
+            th = None
+        for value, base in ((m, "m"), (rad, "r"), (z, "z")):
+            if value is not None and (abs(value) > MAX_SIZE or 0 < abs(value) < 1e-9):
+                s.problem(s.at(s.present(base) or base), f"{value:g} (SI) is absurd for a rotor")
+                m = None
         if None not in (m, rad, th, z):
             masses.append(RotorMass(label, m, rad, th, z))  # type: ignore[arg-type]
     r.finish()
@@ -129,9 +144,14 @@ def _radii(r: _Reader, count: int) -> tuple[float, ...] | None:
     value = given.value
     if isinstance(value, list):
         xs = r.numbers(value, path, count, positive=True, shape="[r_I, r_II]" if count == 2 else "[r_b]")
-        return None if xs is None else tuple(given.si(x) for x in xs)
-    x = r.number(value, path, positive=True)
-    return None if x is None else (given.si(x),) * count
+        out = None if xs is None else tuple(given.si(x) for x in xs)
+    else:
+        x = r.number(value, path, positive=True)
+        out = None if x is None else (given.si(x),) * count
+    if out is not None and any(not 1e-9 <= v <= MAX_SIZE for v in out):
+        r.problem(path, "an absurd correction radius for a rotor (between 1e-9 and 1e9 m)")
+        return None
+    return out
 
 
 __all__ = ["BALANCING_SHOW_CHOICES", "BALANCING_TYPES", "BalancingProblem", "DEFAULT_FIND", "QUANTITIES", "RotorMass",

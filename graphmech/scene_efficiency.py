@@ -120,7 +120,7 @@ def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: M
     >>> parse_scene({"efficiency": {"type": "incline", "angle_deg": 95, "f": 0.1, "load_N": 1}}, "x.toml")
     Traceback (most recent call last):
     ...
-    graphmech.errors.SceneError: x.toml: efficiency.angle_deg: must lie between 0° and 90° (exclusive)
+    graphmech.errors.SceneError: x.toml: efficiency.angle_deg: must lie between 0° and 90° (exclusive; at least 0.01° from either)
     """
     problems = top.problems
     for key in _LINKAGE_KEYS + ("cam", "flywheel"):
@@ -165,12 +165,43 @@ def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: M
                  balancing=problem if balancing else None)
 
 
+#: How close an angle may come to the ends of its range, degrees: a wedge of 1e-300° has no
+#: finite ideal force, and no drawing can tell it from 0°.
+ANGLE_MARGIN_DEG = 0.01
+#: The largest load, N: beyond it the polygons' sums overflow long before any drawing makes sense.
+MAX_LOAD_N = 1e12
+#: The smallest overall efficiency of a chain: below it nothing reaches the load (and P_in overflows).
+MIN_CHAIN_ETA = 1e-12
+
+
 def _angle(r: _Reader, base: str, lo: float, hi: float, required: bool = True) -> float | None:
     v = r.value(base, "angle", required=required)
     if v is None:
         return None
-    if not (math.radians(lo) < v.si < math.radians(hi)):
-        r.problem(v.path, f"must lie between {lo:g}° and {hi:g}° (exclusive)")
+    if not (math.radians(lo + ANGLE_MARGIN_DEG) <= v.si <= math.radians(hi - ANGLE_MARGIN_DEG)):
+        r.problem(v.path, f"must lie between {lo:g}° and {hi:g}° (exclusive; at least {ANGLE_MARGIN_DEG:g}° "
+                          "from either)")
+        return None
+    return v.si
+
+
+def _length(r: _Reader, base: str) -> float | None:
+    """A thread's diameter or pitch: 1 µm … 100 m (beyond, squares underflow or overflow)."""
+    v = r.value(base, "length", required=False, positive=True)
+    if v is None:
+        return None
+    if not 1e-6 <= v.si <= 100.0:
+        r.problem(v.path, f"{v.text()} is absurd for a screw thread (1 µm … 100 m)")
+        return None
+    return v.si
+
+
+def _load(r: _Reader, base: str, kind: str, required: bool = True) -> float | None:
+    v = r.value(base, kind, required=required, positive=True)
+    if v is None:
+        return None
+    if v.si > MAX_LOAD_N or v.si < 1e-9:
+        r.problem(v.path, f"{v.text()} is absurd for a machine (between 1e-9 and {MAX_LOAD_N:g} in SI units)")
         return None
     return v.si
 
@@ -239,8 +270,8 @@ def read_efficiency(top: _Reader, find: tuple[str, ...], show: tuple[str, ...]) 
                         r.problem(r.at(k), f"not a key of type {kind!r} (it belongs to {other!r})")
     ok = True
     if kind == "chain":
-        load = r.scalar("load", "force", positive=True)
-        speed = r.scalar("speed", "velocity", positive=True)
+        load = _load(r, "load", "force")
+        speed = _load(r, "speed", "velocity")
         stages = _read_stages(r)
         r.finish()
         if load is None or speed is None or not stages or _has(r, "efficiency"):
@@ -248,7 +279,7 @@ def read_efficiency(top: _Reader, find: tuple[str, ...], show: tuple[str, ...]) 
         return EfficiencyProblem("chain", (), load=load, speed=speed, stages=stages)
     directions = _directions(r)
     load_needed = _needs_load(kind, find, show)
-    load = r.scalar("load", "force", positive=True, required=load_needed)
+    load = _load(r, "load", "force", required=load_needed)
     f_needed = _needs_friction(kind, find, show)
     f, equivalent = _friction(r, kind, f_needed)
     prob: dict[str, Any] = {}
@@ -315,8 +346,8 @@ def _read_screw(r: _Reader, prob: dict[str, Any], f: float | None, equivalent: b
                           '(write thread = "V")')
                 ok = False
         prob["half_angle"] = 0.0
-    prob["d2"] = r.scalar("d2", "length", required=False, positive=True)
-    pitch = r.scalar("pitch", "length", required=False, positive=True)
+    prob["d2"] = _length(r, "d2")
+    pitch = _length(r, "pitch")
     starts_raw = r.raw("starts")
     starts = 1
     if starts_raw is not _MISSING:
@@ -350,17 +381,21 @@ def _read_screw(r: _Reader, prob: dict[str, Any], f: float | None, equivalent: b
     elif lead_angle is not None:
         prob["lead_angle"] = lead_angle
     else:
-        if f is None:
-            r.problem(r.at("at_self_locking_limit"), "the self-locking limit ψ = φv needs the friction coefficient f")
+        if not f:
+            r.problem(r.at("at_self_locking_limit"), "the self-locking limit ψ = φv needs a friction coefficient "
+                                                     "f > 0 (without friction nothing self-locks)")
             return False
         prob["at_limit"] = True
         prob["lead_angle"] = None
-    prob["d1"] = r.scalar("d1", "length", required=False, positive=True)
+    prob["d1"] = _length(r, "d1")
     collar = r.quantity("collar", "length", required=False)
     if collar is not None:
         xy = r.numbers(collar.value, r.at(collar.key), 2, positive=True, shape="[d0, dw]")
         if xy is not None:
-            if xy[0] >= xy[1]:
+            if not all(1e-6 <= collar.si(v) <= 100.0 for v in xy):
+                r.problem(r.at(collar.key), "absurd bearing-face diameters (1 µm … 100 m)")
+                ok = False
+            elif xy[0] >= xy[1]:
                 r.problem(r.at(collar.key), "the bearing face's inner diameter d0 must be smaller than its outer dw")
                 ok = False
             prob["collar"] = (collar.si(xy[0]), collar.si(xy[1]))
@@ -422,6 +457,11 @@ def _read_stages(r: _Reader) -> tuple[Stage, ...]:
             out.append(Stage(name, tuple(branches)))
     if not out and not _has(r, r.at("stage")):
         r.problem(r.at("stage"), "no [[efficiency.stage]]: a chain needs at least one machine")
+    log_eta = sum(math.log(sum(sh * math.prod(es) for sh, es in st.branches) / sum(sh for sh, _ in st.branches))
+                  for st in out if all(math.prod(es) > 0 for _, es in st.branches))
+    if out and (log_eta < math.log(MIN_CHAIN_ETA) or any(math.prod(es) <= 0 for st in out for _, es in st.branches)):
+        r.problem(r.at("stage"), f"the chain's overall efficiency is below {MIN_CHAIN_ETA:g}: nothing reaches the load")
+        return ()
     return tuple(out)
 
 

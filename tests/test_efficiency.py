@@ -334,8 +334,8 @@ def _leaves(data, path=()):
 @settings(max_examples=150, deadline=None)
 @given(st.data())
 def test_any_mutation_checks_or_is_refused_in_one_line(data):
-    """Whatever a mutated efficiency or balancing scene holds: a table without NaN, or exit 2 in one
-    line — never an internal error."""
+    """Whatever a mutated efficiency or balancing scene holds: a table without NaN and its figure, or
+    a refusal in one line — never an internal error."""
     import copy
 
     from graphmech.balancing_check import analyse_balancing
@@ -359,9 +359,21 @@ def test_any_mutation_checks_or_is_refused_in_one_line(data):
     except GraphmechError as err:
         assert "\n" not in str(err)
         return
-    if an is not None:
-        for row in an.rows:
-            assert math.isfinite(row.graphical) and math.isfinite(row.exact) and math.isfinite(row.rel_error), row
+    if an is None:
+        return
+    for row in an.rows:
+        assert math.isfinite(row.graphical) and math.isfinite(row.exact) and math.isfinite(row.rel_error), row
+    from graphmech.balancing_check import balancing_figure
+    from graphmech.render.svg import render_svg
+
+    try:  # and its figure draws, or a stated scale that cannot draw it is refused in one line
+        sheet = efficiency_figure(an, (297.0, 210.0)) if sc.efficiency is not None else \
+            balancing_figure(an, (297.0, 210.0))
+    except GraphmechError as err:
+        assert "\n" not in str(err)
+        return
+    svg = render_svg(sheet, "gfuzz", on_warning=lambda w: None)
+    assert "nan" not in svg.lower().replace("nane", "") and "inf" not in svg.lower().replace("info", "")
 
 
 def test_scene_text_is_escaped_in_the_svg(tmp_path):

@@ -314,6 +314,9 @@ def limiting_angle(eta_of: "callable[[float], float]", lo: float, hi: float, tol
     a screw); here it is found as a draftsman would, by redrawing the polygon until η = 0.
     """
     f_lo = eta_of(lo)
+    if (f_lo > 0) == (eta_of(hi) > 0):
+        raise DegenerateConstruction("the self-locking limit", "η does not change sign between the ends of the "
+                                     "range: there is no limiting angle in it")
     for _ in range(200):
         mid = 0.5 * (lo + hi)
         if hi - lo <= tol * max(1.0, abs(mid)):
