@@ -31,6 +31,8 @@ from graphmech.scales import format_scale
 ARROW_MM = 16.0
 #: Paper size of a diagram's main feature (the incline, the unrolled thread), mm.
 DIAGRAM_MM = 70.0
+#: The wedge's sketch, enlarged from its 48 mm layout to about the incline's size.
+WEDGE_SCALE = 1.4
 _WORDS = {"forward": "forward stroke: F drives", "reverse": "reverse stroke: the load drives"}
 
 
@@ -112,27 +114,43 @@ def _incline_diagram(alpha: float, phi: float, stroke: Stroke | None, push: str,
     return items
 
 
-def _wedge_diagram(gamma: float, beta: float) -> list[Primitive]:
+def _wedge_diagram(gamma: float, beta: float, stroke: Stroke | None = None) -> list[Primitive]:
     """Slider 1, a wedge in the V between guide 1 (at β, frame below-left) and the face (at γ);
-    slider 2 right of the face on the horizontal guide, Q pushing back on it."""
+    slider 2 right of the face on the horizontal guide, Q pushing back on it; the total reactions
+    of ``stroke`` (when given) at their contacts, each beside its dashed normal."""
     V = (0.0, 0.0)
     face = _dir(gamma)
     up_left = (-math.cos(beta), math.sin(beta))
-    g1_end = _add(V, up_left, 48.0)
-    items: list[Primitive] = [GuideLine((-30.0, 0.0), (55.0, 0.0)), GuideLine(g1_end, V),
-                              Segment(V, _add(V, face, 44.0), "given")]
-    h = 24.0 * math.sin(gamma)
-    s2 = [V, (34.0, 0.0), (34.0, h), _add(V, face, 24.0)]
+    k = WEDGE_SCALE
+    g1_end = _add(V, up_left, 48.0 * k)
+    items: list[Primitive] = [GuideLine((-30.0 * k, 0.0), (55.0 * k, 0.0)), GuideLine(g1_end, V),
+                              Segment(V, _add(V, face, 44.0 * k), "given")]
+    h = 24.0 * k * math.sin(gamma)
+    s2 = [V, (34.0 * k, 0.0), (34.0 * k, h), _add(V, face, 24.0 * k)]
     items.append(Polyline(tuple(s2), "given", closed=True))
-    s1 = [_add(V, face, 6.0), _add(V, face, 34.0), _add(V, up_left, 34.0), _add(V, up_left, 6.0)]
+    s1 = [_add(V, face, 6.0 * k), _add(V, face, 34.0 * k), _add(V, up_left, 34.0 * k), _add(V, up_left, 6.0 * k)]
     items.append(Polyline(tuple(s1), "given", closed=True))
     c1 = _mid(_mid(s1[0], s1[1]), _mid(s1[2], s1[3]))
-    items += [Label("1", c1, (), 3.5, italic=False), Label("2", (22.0, h / 2.0), (), 3.5, italic=False)]
-    items += _force_arrow("Q", (34.0, h / 2.0), (-1.0, 0.0))
+    items += [Label("1", c1, (), 3.5, italic=False), Label("2", (22.0 * k, h / 2.0), (), 3.5, italic=False)]
+    items += _force_arrow("Q", (34.0 * k, h / 2.0), (-1.0, 0.0))
     top_mid = _mid(s1[1], s1[2])
     items += _force_arrow("F", top_mid, (-up_left[0], -up_left[1]))
-    items += _angle_arc(V, 10.0, 0.0, gamma, "γ")
-    items += _angle_arc(V, 14.0, math.pi - beta, math.pi, "β")
+    items += _angle_arc(V, 9.0, 0.0, gamma, "γ")
+    items += _angle_arc(V, 18.0, math.pi - beta, math.pi, "β")
+    if stroke is not None:  # the total reactions of the first stroke drawn, each at its contact
+        real = [poly for poly in stroke.polygons if not poly.ideal]
+        sides = {f.name: f for poly in real for f in poly.forces}
+        contacts = {"R32": ((27.0 * k, 0.0), (0.0, 1.0)),
+                    "R12": (_add(V, face, 19.0 * k), (math.sin(gamma), -math.cos(gamma))),
+                    "R31": (_add(V, up_left, 22.0 * k), (math.sin(beta), math.cos(beta)))}
+        for name, (at, normal) in contacts.items():
+            side = sides.get(name)
+            if side is None or math.hypot(side.end[0] - side.start[0], side.end[1] - side.start[1]) == 0.0:
+                continue
+            d = _unit((side.end[0] - side.start[0], side.end[1] - side.start[1]))
+            n = normal if d[0] * normal[0] + d[1] * normal[1] >= 0 else (-normal[0], -normal[1])
+            items.append(Segment(_add(at, n, -5.0), _add(at, n, 15.0), "construction", dashed=True))
+            items += _force_arrow(name, at, d, 13.0, at_tail=True)
     return items
 
 
@@ -217,7 +235,7 @@ def efficiency_sheet(title: str, problem: Any, strokes: dict[str, Stroke], chain
             head = "machines in series" + (" and in parallel" if parallel else "")
             notes = (f"η = {chain[0]:.6g}",)
         elif kind == "wedge":
-            items = _wedge_diagram(problem.gamma, problem.beta)
+            items = _wedge_diagram(problem.gamma, problem.beta, first)
             head = f"wedge: γ = {math.degrees(problem.gamma):g}°, β = {math.degrees(problem.beta):g}°"
             notes = (f"φ = arctan f = {math.degrees(phi):.4g}°",) if problem.f is not None else ()
         else:
