@@ -83,6 +83,10 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
             what = f"one of {', '.join(p.directions)}" if q[base][1] else "none: it does not depend on the direction"
             problems.append((key, f"{base}@{at}: no such direction (directions: {what})"))
             continue
+        if not at and multi and q[base][1] and not key.startswith("find"):
+            problems.append((key, f"{base} depends on the direction: write "
+                                  f"{' or '.join(f'{base}@{d}' for d in p.directions)}"))
+            continue
         if q[base][2] and p.f is None:
             problems.append((key, f"{base} needs the friction coefficient: add f to [efficiency]"))
             continue

@@ -386,3 +386,9 @@ def test_scene_text_is_escaped_in_the_svg(tmp_path):
     svg = (tmp_path / "e.svg").read_text(encoding="utf-8")
     ET.fromstring(svg)  # well-formed
     assert "<script>" not in svg and "&lt;script&gt;" in svg
+
+
+def test_a_measured_value_that_depends_on_the_direction_must_say_which():
+    code, out, err = run_cli("check", str(SCENES / "force.wedge_F1430.toml"), "--measured", "eta=0.7")
+    assert code == 2 and err == ("force.wedge_F1430.toml: --measured eta: eta depends on the direction: write "
+                                 "eta@forward or eta@reverse\n")
