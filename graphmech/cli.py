@@ -88,6 +88,15 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
 
     scene = load_scene(path)
     footer = (f"graphmech {graphmech.__version__}",)
+    if scene.efficiency is not None or scene.balancing is not None:
+        if scene.efficiency is not None:
+            from graphmech.efficiency_check import analyse_efficiency as analyse_forces, efficiency_figure as figure
+        else:
+            from graphmech.balancing_check import analyse_balancing as analyse_forces, balancing_figure as figure
+        fan = analyse_forces(scene)
+        warnings = list(fan.warnings)
+        svg = render_svg(figure(fan, page_size(scene), footer), _id_prefix(path), on_warning=warnings.append)
+        return svg, warnings
     if scene.flywheel is not None:
         from graphmech.flywheel_check import analyse_flywheel
         from graphmech.methods.flywheel_figures import flywheel_sheet
@@ -221,7 +230,17 @@ def _check(args: argparse.Namespace) -> int:
     extra = _parse_measured(args.measured)
     scene = load_scene(args.scene)
     extra_doc: dict[str, Any] = {}
-    if scene.flywheel is not None:
+    if scene.efficiency is not None:
+        from graphmech.efficiency_check import analyse_efficiency, judge_efficiency
+
+        an = analyse_efficiency(scene, tuple(extra))
+        verdicts = judge_efficiency(an, args.precision)
+    elif scene.balancing is not None:
+        from graphmech.balancing_check import analyse_balancing, judge_balancing
+
+        an = analyse_balancing(scene, tuple(extra))
+        verdicts = judge_balancing(an, args.precision)
+    elif scene.flywheel is not None:
         from graphmech.flywheel_check import analyse_flywheel, judge_flywheel
 
         an = analyse_flywheel(scene, tuple(extra))

@@ -34,6 +34,8 @@ SCALE_INFO = {
     "T": ("μT", "J/mm"),
     "t": ("μt", "s/mm"),
     "omega": ("μω", "(rad/s)/mm"),
+    "F": ("μF", "N/mm"),
+    "W": ("μW", "(kg·m)/mm"),
 }
 
 

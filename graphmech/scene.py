@@ -241,6 +241,8 @@ class Scene:
     cam: CamScene | None = None
     flywheel: FlywheelScene | None = None
     forces: Any = None  # a ForceScene (graphmech.scene_forces) in a force scene
+    efficiency: Any = None  # graphmech.scene_efficiency.EfficiencyProblem of an [efficiency] scene
+    balancing: Any = None  # graphmech.scene_balancing.BalancingProblem of a [balancing] scene
 
 
 # --------------------------------------------------------------------------------------------
@@ -290,6 +292,8 @@ _UNITS: dict[str, dict[str, tuple[float, float]]] = {
         "m2": (1.0, 1.0),
         "m²": (1.0, 1.0),
     },
+    "mass_radius": {"kgm": (1.0, 1.0), "kg·m": (1.0, 1.0), "kgcm": (1.0, 100.0), "kg·cm": (1.0, 100.0),
+                    "kgmm": (1.0, 1000.0), "kg·mm": (1.0, 1000.0)},
 }
 
 #: Key suffix (after ``base_``) → unit, per kind; the first is the one messages suggest.
@@ -308,6 +312,7 @@ _SUFFIXES: dict[str, dict[str, str]] = {
     "pressure": {"MPa": "MPa", "kPa": "kPa", "Pa": "Pa", "bar": "bar"},
     "time": {"s": "s", "ms": "ms"},
     "area": {"mm2": "mm2", "cm2": "cm2", "m2": "m2"},
+    "mass_radius": {"kgm": "kgm", "kgcm": "kgcm", "kgmm": "kgmm"},
 }
 
 _KIND_WORDS = {
@@ -325,6 +330,7 @@ _KIND_WORDS = {
     "pressure": "a pressure",
     "time": "a time",
     "area": "an area",
+    "mass_radius": "a mass-radius product",
 }
 
 _PER_MM = "_per_mm"
@@ -1919,14 +1925,19 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
             "put the cam in a scene of its own",
         )
         raise SceneError(problems, source)
-    if "forces" in data and (has_cam or "flywheel" in data):
+    if "forces" in data and (has_cam or "flywheel" in data or "efficiency" in data or "balancing" in data):
+        other = "cam" if has_cam else "flywheel" if "flywheel" in data else "efficiency or balancing"
         top.problem("forces", "[forces] belongs to a linkage scene (kinetostatics), not to a "
-                              + ("cam" if has_cam else "flywheel") + " scene: put it in a scene of its own")
+                              f"{other} scene: put it in a scene of its own")
         raise SceneError(problems, source)
     if "forces" in data:
         from graphmech.scene_forces import parse_forces_scene
 
         return parse_forces_scene(data, source, top, order)
+    if "efficiency" in data or "balancing" in data:  # a problem of forces alone: no mechanism
+        from graphmech.scene_efficiency import parse_efficiency_scene
+
+        return parse_efficiency_scene(data, source, top, order)
     if has_cam:
         return _parse_cam_scene(data, source, top, order)
     if "flywheel" in data:

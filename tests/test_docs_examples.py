@@ -29,6 +29,18 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
         for row in fan.rows:
             assert row.rel_error <= 1e-9 or row.ill_conditioned, row
         return
+    if scene.efficiency is not None or scene.balancing is not None:
+        if scene.efficiency is not None:
+            from graphmech.efficiency_check import analyse_efficiency as analyse_, judge_efficiency as judge_
+        else:
+            from graphmech.balancing_check import analyse_balancing as analyse_, judge_balancing as judge_
+        fan = analyse_(scene)
+        assert fan.rows
+        for row in fan.rows:  # polygons against the closed forms
+            assert row.rel_error <= 1e-9 or row.ill_conditioned, row
+        for verdict in judge_(fan):
+            assert verdict.ok, verdict
+        return
     if scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 

@@ -754,7 +754,7 @@ def test_docs_have_an_example_of_every_feature() -> None:
     blocks = doc_blocks()
     scenes = [parse_scene(tomllib.loads(b), "scene-format.md") for b in blocks]
     # the cam and flywheel scenes: tests/test_scene_cam.py, tests/test_scene_flywheel.py
-    scenes = [s for s in scenes if s.cam is None and s.flywheel is None]
+    scenes = [s for s in scenes if s.cam is None and s.flywheel is None and s.linkage is not None]
     dyad_types = {type(d) for s in scenes for d in s.linkage.dyads}
     assert dyad_types == {RRR, RRP, RPR, RPP}
     assert {type(s.linkage.driver) for s in scenes} == {Crank, SliderInput}
@@ -783,6 +783,9 @@ def test_each_doc_example_parses(index: int, tmp_path: Path) -> None:
         return
     if scene.flywheel is not None and scene.linkage is None:  # a machine without a linkage
         assert scene.positions is None
+        return
+    if scene.efficiency is not None or scene.balancing is not None:  # forces alone: no mechanism
+        assert scene.linkage is None and scene.positions is None
         return
     assert scene.linkage.frame_link not in scene.linkage.links()
 
@@ -886,6 +889,9 @@ def test_any_mutation_gives_a_scene_or_a_scene_error(data: st.DataObject) -> Non
         return
     if scene.flywheel is not None and scene.linkage is None:
         assert scene.positions is None
+        return
+    if scene.efficiency is not None or scene.balancing is not None:  # fuzzed further in tests/test_efficiency.py
+        assert scene.linkage is None and scene.positions is None
         return
     assert all(math.isfinite(v) for v in scene.positions.values)
     assert 1 <= len(scene.positions.values) <= 3600

@@ -1,0 +1,79 @@
+"""Closed-form balancing of a rigid rotor: the correction masses from the equations of balance.
+
+The polygons of :mod:`graphmech.methods.balancing` are checked against the two conditions a
+balanced rotor meets, written with complex numbers (x + iy in the plane of rotation) and solved
+directly — nothing is taken from ``graphmech.methods``, ``graphmech.construction`` or
+``graphmech.geometry``:
+
+* static (one plane): Σ mᵢrᵢ + W_b = 0;
+* dynamic (planes I and II at z_I ≠ z_II): the resultant force Σ mᵢrᵢ + W_I + W_II = 0 and the
+  resultant moment about z = 0, Σ mᵢrᵢzᵢ + W_I·z_I + W_II·z_II = 0, solved by Cramer's rule.
+
+The ω² of the centrifugal forces is left out throughout (it multiplies every term), so forces are
+in kg·m and moments in kg·m². Angles in rad, lengths in m.
+"""
+from __future__ import annotations
+
+import cmath
+import math  # noqa: F401  (the doctests use it)
+from dataclasses import dataclass
+from typing import Sequence
+
+
+@dataclass(frozen=True)
+class Unbalance:
+    """An eccentric mass: m (kg) at radius r (m), angle θ (rad), axial position z (m)."""
+
+    m: float
+    r: float
+    theta: float
+    z: float = 0.0
+
+    def vector(self) -> complex:
+        """m·r as a complex number, kg·m."""
+        return self.m * self.r * cmath.exp(1j * self.theta)
+
+
+def static_correction(masses: Sequence[Unbalance]) -> complex:
+    """W_b = −Σ mᵢrᵢ, kg·m (complex).
+
+    >>> w = static_correction([Unbalance(1.0, 0.1, 0.0), Unbalance(1.0, 0.1, math.pi / 2)])
+    >>> round(abs(w), 12), round(math.degrees(cmath.phase(w)), 9)
+    (0.141421356237, -135.0)
+    """
+    return -sum((u.vector() for u in masses), 0j)
+
+
+def dynamic_correction(masses: Sequence[Unbalance], z_I: float, z_II: float) -> tuple[complex, complex]:
+    """(W_I, W_II), kg·m, from the balance of forces and of moments about z = 0.
+
+    Raises
+    ------
+    ValueError
+        When the planes coincide (the moment equation cannot be met).
+
+    Examples
+    --------
+    >>> a, b = dynamic_correction([Unbalance(1.0, 0.1, 0.0, 0.25)], 0.0, 1.0)
+    >>> round(a.real, 12), round(b.real, 12)
+    (-0.075, -0.025)
+    """
+    if z_I == z_II:
+        raise ValueError("the correction planes coincide")
+    U = sum((u.vector() for u in masses), 0j)
+    V = sum((u.vector() * u.z for u in masses), 0j)
+    det = z_II - z_I  # | 1  1 ; z_I  z_II |
+    W_I = (-U * z_II + V) / det
+    W_II = (-V + U * z_I) / det
+    return W_I, W_II
+
+
+def residuals(masses: Sequence[Unbalance], corrections: Sequence[tuple[complex, float]]) -> tuple[float, float]:
+    """|resultant force| (kg·m) and |resultant moment about z = 0| (kg·m²) of the rotor with the
+    corrections (W, z) added: zero to round-off when it is balanced."""
+    F = sum((u.vector() for u in masses), 0j) + sum((w for w, _ in corrections), 0j)
+    M = sum((u.vector() * u.z for u in masses), 0j) + sum((w * z for w, z in corrections), 0j)
+    return abs(F), abs(M)
+
+
+__all__ = ["Unbalance", "dynamic_correction", "residuals", "static_correction"]
