@@ -15,28 +15,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from graphmech.mechanisms.machine import Mass
 
-@dataclass(frozen=True)
-class LinkMass:
-    """A moving link's inertia.
 
-    Parameters
-    ----------
-    link : str
-        The link's id ("2").
-    point : str
-        Its centre of mass S, a named point of the linkage carried by the link (a crank balanced
-        about its pivot has S at the pivot).
-    mass : float
-        m, kg (≥ 0).
-    inertia : float
-        J_S about S, kg·m² (≥ 0).
-    """
-
-    link: str
-    point: str
-    mass: float
-    inertia: float = 0.0
+#: A moving link's inertia: m at its centre of mass S and J_S about S — the same record the
+#: flywheel's machine uses (one concept, one class).
+LinkMass = Mass
 
 
 @dataclass(frozen=True)
