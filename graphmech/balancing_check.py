@@ -67,7 +67,7 @@ def analyse_balancing(scene: Any, extra_measured: tuple[tuple[str, float], ...] 
     p: BalancingProblem = scene.balancing
     names = requested(scene, extra_measured)
     an = BalancingAnalysis(scene, p, extra_measured=tuple(extra_measured))
-    masses = [gm.Mass(u.name, u.m, u.r, u.theta, u.z) for u in p.masses]
+    masses = list(p.masses)
     if "W" in scene.scales:
         an.scales["W"] = scene.scales["W"]
         an.stated.add("W")

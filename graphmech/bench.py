@@ -8,9 +8,8 @@ inversion: ``n`` divisions of the turn).
 from __future__ import annotations
 
 import math
-import time
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
@@ -20,6 +19,7 @@ from graphmech.mechanisms.cam import DiscCam, MotionProgram, OscillatingFollower
 from graphmech.mechanisms.linkage import Crank, Linkage, RRR
 from graphmech.methods.cam_inversion import CamReading, near, read_cam, rigid_corners as _rigid_corners
 from graphmech.methods.polygons import build_polygons
+from graphmech.timing import best_time
 
 FOURBAR_QUANTITIES = ("v_B", "v_C", "v_CB", "omega_2", "omega_3", "a_C", "a_CB", "a_CB_n", "a_CB_t",
                       "a_CD_n", "a_CD_t", "alpha_2", "alpha_3")
@@ -30,15 +30,6 @@ def fourbar() -> Linkage:
     return Linkage({"A": (0.0, 0.0), "D": (0.12, 0.0)}, Crank("1", "A", "B", 0.06, 10.0),
                    (RRR("B", "C", "D", ("2", "3"), (0.12, 0.09), "left"),), frame_link="4")
 
-
-def _best(fn: Callable[[], Any], repeat: int, number: int) -> float:
-    best = math.inf
-    for _ in range(repeat):
-        t = time.perf_counter()
-        for _ in range(number):
-            fn()
-        best = min(best, (time.perf_counter() - t) / number)
-    return best
 
 
 def closed_form_fourbar(phi: np.ndarray, a: float = 0.06, b: float = 0.12, c: float = 0.09,
@@ -82,10 +73,10 @@ def polygon_records(repeat: int = 7) -> list[dict[str, Any]]:
         phis = np.radians(np.arange(n) * (360.0 / n) + (165.0 if n == 1 else 0.0))
         if n == 1:
             p0 = float(phis[0])
-            secs = _best(lambda: plan.solve({"phi": p0}), repeat, 2000)
+            secs, _ = best_time(lambda: plan.solve({"phi": p0}), repeat, 2000)
             sols = [plan.solve({"phi": p0})]
         else:
-            secs = _best(lambda: plan.evaluate_batch({"phi": phis}), repeat, 50)
+            secs, _ = best_time(lambda: plan.evaluate_batch({"phi": phis}), repeat, 50)
             batch = plan.evaluate_batch({"phi": phis})
             sols = [batch.at(i) for i in range(n)]
         kin = solve_exact(lk, phis)
@@ -99,7 +90,7 @@ def polygon_records(repeat: int = 7) -> list[dict[str, Any]]:
         records.append({"method": "polygons", "case": "fourbar-120-60-120-90", "n": n, "seconds": secs,
                         "max_rel_error": worst})
     phis = np.radians(np.arange(360.0))
-    secs = _best(lambda: closed_form_fourbar(phis), repeat, 50)
+    secs, _ = best_time(lambda: closed_form_fourbar(phis), repeat, 50)
     ref = closed_form_fourbar(phis)
     kin = solve_exact(lk, phis)
     err = 0.0
@@ -245,7 +236,7 @@ def cam_records(repeat: int = 7, ns: tuple[int, ...] = CAM_DIVISIONS,
     for case, cam in cam_cases().items():
         ref = cam_reference(cam, samples)
         for n in ns:
-            secs = _best(lambda: read_cam(cam, n), repeat, max(1, 360 // n))
+            secs, _ = best_time(lambda: read_cam(cam, n), repeat, max(1, 360 // n))
             records.append(cam_record(case, n, secs, read_cam(cam, n), ref))
     return records
 
@@ -325,7 +316,7 @@ def wittenbauer_records(repeat: int = 5, ns: tuple[int, ...] = WITTENBAUER_N) ->
                 return design_flywheel(r.phi, r.J, r.M, cycle=m.cycle, omega_m=m.omega_m, delta=m.delta,
                                        balance=m.balance, form=form, H_mm=40.0, need=need)
 
-            secs = _best(run, repeat, 1)
+            secs, _ = best_time(run, repeat, 1)
             d = run()
             got = d.J_F_indicator if case == "indicator" else d.J_F
             records.append({"method": "wittenbauer" if case != "indicator" else "energy-indicator",

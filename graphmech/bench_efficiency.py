@@ -17,25 +17,17 @@ from __future__ import annotations
 import cmath
 import math
 import random
-import time
-from collections.abc import Callable
 from typing import Any
 
 from graphmech.exact import balancing as exb
 from graphmech.exact import efficiency as exe
+from graphmech.mechanisms.rotor import RotorMass
 from graphmech.methods import balancing as gmb
 from graphmech.methods import efficiency as gme
+from graphmech.timing import best_time
 
 __all__ = ["efficiency_records"]
 
-
-def _best(fn: Callable[[], Any], repeat: int) -> tuple[float, Any]:
-    best, out = math.inf, None
-    for _ in range(repeat):
-        t = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t)
-    return best, out
 
 
 def efficiency_records(repeat: int = 5, ns: tuple[int, ...] = (10, 100, 1000),
@@ -55,7 +47,7 @@ def efficiency_records(repeat: int = 5, ns: tuple[int, ...] = (10, 100, 1000),
                     err = max(err, abs(s.F - e) / max(abs(e), 1000.0))  # type: ignore[operator]
             return err
 
-        secs, err = _best(sweep, repeat)
+        secs, err = best_time(sweep, repeat)
         records.append({"method": "force-polygon", "case": "incline-sweep", "n": n, "seconds": secs,
                         "max_rel_error": err})
 
@@ -68,11 +60,11 @@ def efficiency_records(repeat: int = 5, ns: tuple[int, ...] = (10, 100, 1000),
             err = max(err, abs(s.F - e) / abs(e))  # type: ignore[operator]
         return err
 
-    secs, err = _best(wedge, repeat)
+    secs, err = best_time(wedge, repeat)
     records.append({"method": "force-polygon", "case": "wedge-F1430", "n": 2, "seconds": secs, "max_rel_error": err})
     rng = random.Random(5)
     for n in masses:
-        rotor = [gmb.Mass(str(k + 1), rng.uniform(0.5, 20.0), rng.uniform(0.02, 0.4), rng.uniform(0, 2 * math.pi),
+        rotor = [RotorMass(str(k + 1), rng.uniform(0.5, 20.0), rng.uniform(0.02, 0.4), rng.uniform(0, 2 * math.pi),
                           rng.uniform(-0.1, 1.1)) for k in range(n)]
         size = sum(u.m * u.r for u in rotor)
 
@@ -82,7 +74,7 @@ def efficiency_records(repeat: int = 5, ns: tuple[int, ...] = (10, 100, 1000),
             return max(abs((0j if c.balanced else cmath.rect(c.W, c.theta)) - w)  # type: ignore[arg-type]
                        for c, w in ((I, WI), (II, WII))) / size
 
-        secs, err = _best(balance, repeat)
+        secs, err = best_time(balance, repeat)
         records.append({"method": "mass-radius-polygon", "case": "dynamic-random", "n": n, "seconds": secs,
                         "max_rel_error": err})
     return records

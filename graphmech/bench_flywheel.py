@@ -21,7 +21,6 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
-from collections.abc import Callable
 from functools import partial
 from typing import Any
 
@@ -29,6 +28,7 @@ from graphmech.exact.flywheel import ExactMachine
 from graphmech.exact.true_motion import integrate, true_motion
 from graphmech.mechanisms.linkage import RRP, Crank, Guide, Linkage, LinkPoint
 from graphmech.mechanisms.machine import Machine, Mass, Motor, SliderLoad, Table
+from graphmech.timing import best_time
 
 __all__ = ["RTOLS", "SOLVERS", "compressor_machine", "true_motion_records"]
 
@@ -74,14 +74,6 @@ def compressor_machine(motor: Motor | None = None) -> Machine:
                    motor=motor)
 
 
-def _best(fn: Callable[[], Any], repeat: int) -> tuple[float, Any]:
-    best, out = math.inf, None
-    for _ in range(repeat):
-        t = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t)
-    return best, out
-
 
 def _explicit_record(stiff: Machine, exact: ExactMachine, J_F: float, omega0: float,
                      quick: bool, rtol: float = 1e-10) -> dict[str, Any]:
@@ -123,7 +115,7 @@ def true_motion_records(quick: bool = False) -> list[dict[str, Any]]:
     for case, machine, d_ref in cases:
         for solver in SOLVERS:
             for rtol in rtols:
-                secs, tm = _best(partial(true_motion, machine, exact, J_F, solver=solver, rtol=rtol),
+                secs, tm = best_time(partial(true_motion, machine, exact, J_F, solver=solver, rtol=rtol),
                                  repeat)
                 records.append({"method": "true-motion", "case": case, "n": tm.steps, "seconds": secs,
                                 "max_rel_error": abs(tm.delta - d_ref) / d_ref, "rtol": rtol,

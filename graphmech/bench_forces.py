@@ -14,9 +14,7 @@ scipy's ``root`` position by position; ``rounds`` is how many rounds it took).
 """
 from __future__ import annotations
 
-import math
-import time
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
@@ -31,6 +29,7 @@ from graphmech.methods.kinetostatics import (
     zhukovsky_lever,
 )
 from graphmech.methods.polygons import build_polygons
+from graphmech.timing import best_time
 
 __all__ = ["sixbar", "sixbar_loads", "kinetostatic_records", "kinetostatic_notes"]
 
@@ -60,14 +59,6 @@ def sixbar_loads(friction: bool = False) -> ForceModel:
     return ForceModel(masses, forces, gravity=9.81, revolute_friction=journals,
                       sliding_friction=(SlidingFriction("5", 0.1),))
 
-
-def _best(fn: Callable[[], Any], repeat: int) -> tuple[float, Any]:
-    best, out = math.inf, None
-    for _ in range(repeat):
-        t = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t)
-    return best, out
 
 
 def _disagreement(sol: Any, lever: Any, ex: Any, crank: float) -> dict[str, float]:
@@ -104,9 +95,9 @@ def kinetostatic_records(quick: bool = False) -> list[dict[str, Any]]:
                 lever = zhukovsky_lever(lk, model, kin) if not friction else None
                 return sol, lever
 
-            secs, (sol, lever) = _best(run, repeat)
+            secs, (sol, lever) = best_time(run, repeat)
             kin_exact = solve_exact(lk, phi)
-            m_secs, ex = _best(lambda: solve_forces(lk, model, phi, kin_exact), 1 if friction else repeat)
+            m_secs, ex = best_time(lambda: solve_forces(lk, model, phi, kin_exact), 1 if friction else repeat)
             d = _disagreement(sol, lever, ex, lk.driver.length)
             records.append({"method": "kinetostatics", "case": case, "n": n, "seconds": secs,
                             "max_rel_error": max(d.values()), **d, "matrix_seconds": m_secs,

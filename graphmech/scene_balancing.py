@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 
 from graphmech.scene import _MISSING, _Reader, _say, _type_name
+from graphmech.mechanisms.rotor import RotorMass
 
 BALANCING_TYPES = ("static", "dynamic")
 #: What a balancing scene may show: the rotor (end view with the masses; the planes for a
@@ -31,17 +32,6 @@ MAX_MASSES = 50
 COINCIDENT_PLANES = 1e-9
 #: The largest m, r or |z| in SI units (kg, m): beyond it the polygon's sums overflow.
 MAX_SIZE = 1e9
-
-
-@dataclass(frozen=True)
-class RotorMass:
-    """An eccentric mass: its label, m kg, r m, angle θ rad (CCW), axial position z m."""
-
-    name: str
-    m: float
-    r: float
-    theta: float
-    z: float = 0.0
 
 
 @dataclass(frozen=True)

@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from graphmech.balancing_check import analyse_balancing, balancing_figure
 from graphmech.errors import SceneError
 from graphmech.exact import balancing as ex
+from graphmech.mechanisms.rotor import RotorMass
 from graphmech.methods import balancing as gm
 from graphmech.render.primitives import Arrow
 from graphmech.scene import load_scene
@@ -24,7 +25,7 @@ masses = st.lists(st.tuples(st.floats(0.1, 50.0), st.floats(0.01, 0.5), st.float
 @settings(max_examples=80, deadline=None)
 @given(ms=masses, mu=st.sampled_from([0.01, 0.05, 0.2]))
 def test_dynamic_polygons_meet_the_equations_of_balance(ms, mu):
-    rotor = [gm.Mass(str(k + 1), m, r, math.radians(a), z) for k, (m, r, a, z) in enumerate(ms)]
+    rotor = [RotorMass(str(k + 1), m, r, math.radians(a), z) for k, (m, r, a, z) in enumerate(ms)]
     I, II = gm.dynamic_balance(rotor, 0.0, 1.0, (0.2, 0.3), mu)
     WI, WII = ex.dynamic_correction([ex.Unbalance(u.m, u.r, u.theta, u.z) for u in rotor], 0.0, 1.0)
     size = sum(u.m * u.r for u in rotor) * 3
@@ -39,7 +40,7 @@ def test_dynamic_polygons_meet_the_equations_of_balance(ms, mu):
 @settings(max_examples=60, deadline=None)
 @given(ms=masses)
 def test_static_polygon_closes_on_the_correction(ms):
-    rotor = [gm.Mass(str(k + 1), m, r, math.radians(a)) for k, (m, r, a, _) in enumerate(ms)]
+    rotor = [RotorMass(str(k + 1), m, r, math.radians(a)) for k, (m, r, a, _) in enumerate(ms)]
     c = gm.static_balance(rotor, 0.1, 0.02)
     w = ex.static_correction([ex.Unbalance(u.m, u.r, u.theta) for u in rotor])
     size = sum(u.m * u.r for u in rotor)

@@ -16,6 +16,7 @@ The balance conditions that check them are solved independently in
 from __future__ import annotations
 
 import math
+from graphmech.mechanisms.rotor import RotorMass
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -23,17 +24,6 @@ XY = tuple[float, float]
 #: A closing side shorter than this fraction of the polygon's total length is no correction:
 #: the rotor is already balanced in that plane (no angle can be read off a point).
 BALANCED_REL = 1e-12
-
-
-@dataclass(frozen=True)
-class Mass:
-    """An eccentric mass: ``name`` (as labelled, "1"), m kg, r m, angle θ rad (CCW), axial z m."""
-
-    name: str
-    m: float
-    r: float
-    theta: float
-    z: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -100,12 +90,12 @@ def close_mass_radius_polygon(plane: str, vectors: Sequence[tuple[str, float, fl
     return Correction(plane, tuple(sides), closing, drawn, W, theta, r_b, W / r_b, shares)
 
 
-def static_balance(masses: Sequence[Mass], r_b: float, mu_W: float) -> Correction:
+def static_balance(masses: Sequence[RotorMass], r_b: float, mu_W: float) -> Correction:
     """The one-plane correction: Σ Wᵢ + W_b = 0 by the polygon."""
     return close_mass_radius_polygon("", [(f"W{u.name}", u.m * u.r, u.theta) for u in masses], r_b, mu_W)
 
 
-def dynamic_balance(masses: Sequence[Mass], z_I: float, z_II: float, r_b: tuple[float, float],
+def dynamic_balance(masses: Sequence[RotorMass], z_I: float, z_II: float, r_b: tuple[float, float],
                     mu_W: float) -> tuple[Correction, Correction]:
     """The two-plane correction: each Wᵢ resolved into planes I and II, one polygon in each.
 
@@ -132,5 +122,5 @@ def dynamic_balance(masses: Sequence[Mass], z_I: float, z_II: float, r_b: tuple[
     return out[0], out[1]
 
 
-__all__ = ["BALANCED_REL", "Correction", "degrees_0_360", "DrawnSide", "Mass", "close_mass_radius_polygon", "dynamic_balance",
+__all__ = ["BALANCED_REL", "Correction", "degrees_0_360", "DrawnSide", "close_mass_radius_polygon", "dynamic_balance",
            "static_balance"]
