@@ -1,0 +1,232 @@
+"""The full cycle: a linkage at N positions of its crank, as a course sheet draws it.
+
+The crank's turn is divided into N equal parts from a stated start (an extreme position of
+the output, or the crank's given angle) and numbered 1 … N in the crank's sense. The whole
+construction — kinematic diagram, velocity and acceleration polygons — is built once and
+evaluated at all N positions in one vectorised pass (``Plan.evaluate_batch``); from it:
+
+* the positions of every point on the kinematic diagram (the mechanism overlaid N times) and
+  the paths of chosen points (coupler curves);
+* the displacement diagram s–φ of a slider (along its guide, from position 1) or the angle
+  diagram ψ–φ of a rotating link, *read off the kinematic diagram* at μs (μψ) and μφ;
+* the v–φ (ω–φ) diagram by graphical differentiation of s–φ by chords with the pole distance
+  H₁, at μv = μs·ω₁/(μφ·H₁), its values at the middles of the intervals; and the a–φ (ε–φ)
+  diagram by differentiating v–φ again with H₂, at μa = μv·ω₁/(μφ·H₂), its values back at the
+  positions (the middles of the middles).
+
+The φ axis is a time axis (t = φ/ω₁) only for a crank turning uniformly, so the diagrams need
+ε₁ = 0. Nothing here draws; :mod:`graphmech.methods.cycle_figures` does.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Sequence
+
+import numpy as np
+
+from graphmech.errors import DegenerateConstruction
+from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, SliderInput
+from graphmech.methods.graphical_differentiation import Differentiation, differentiate_cycle
+from graphmech.methods.polygons import LinkageConstruction, build_polygons
+
+__all__ = ["CycleDiagram", "FullCycle", "cycle_positions", "diagram_subjects", "evaluate_cycle", "sliders"]
+
+TWO_PI = 2.0 * math.pi
+
+
+def cycle_positions(start: float, n: int, sense: float) -> np.ndarray:
+    """The crank's absolute angles at positions 1 … N (rad), from ``start`` in its sense.
+
+    >>> np.degrees(cycle_positions(math.radians(30.0), 4, -1.0)).round(9).tolist()
+    [30.0, 300.0, 210.0, 120.0]
+    """
+    k = np.arange(n, dtype=float)
+    return np.mod(start + sense * k * TWO_PI / n, TWO_PI)
+
+
+def sliders(linkage: Linkage) -> dict[str, tuple[float, float]]:
+    """Points that slide on a frame guide → the guide's unit direction."""
+    out: dict[str, tuple[float, float]] = {}
+    d = linkage.driver
+    if isinstance(d, SliderInput):
+        out[d.point] = d.guide.direction
+    for y in linkage.dyads:
+        if isinstance(y, (RRP, RPP)):
+            out[y.c] = y.guide.direction
+    return out
+
+
+def diagram_subjects(linkage: Linkage) -> dict[str, str]:
+    """What may have s–φ, v–φ, a–φ diagrams: sliders (``"point"``) and rotating links (``"link"``)."""
+    out = {name: "point" for name in sliders(linkage)}
+    translating = {y.links[1] for y in linkage.dyads if isinstance(y, (RRP, RPP))}
+    for link, pts in linkage.links().items():
+        if link not in translating and len(pts) >= 2:
+            out[link] = "link"
+    return out
+
+
+@dataclass(frozen=True, eq=False)
+class CycleDiagram:
+    """s–φ, v–φ and a–φ of one slider (or ψ–φ, ω–φ, ε–φ of one link) on the drawing.
+
+    Attributes
+    ----------
+    subject : str
+        The slider's point name (``"C"``) or the link's id (``"3"``).
+    kind : str
+        ``"point"`` (m, m/s, m/s²) or ``"link"`` (rad, rad/s, rad/s²).
+    x_mm : ndarray, shape (N,)
+        The positions on the φ axis, mm (position 1 at 0).
+    s_mm : ndarray, shape (N,)
+        The displacement (angle) from position 1, read off the kinematic diagram, at ``mu_s``.
+    velocity : Differentiation
+        s–φ differentiated by chords with H₁ (its ordinates at the middles, at ``mu_v``).
+    acceleration : Differentiation
+        v–φ differentiated with H₂ (at ``mu_a``); ``a_mm`` holds its ordinates at the positions.
+    """
+
+    subject: str
+    kind: str
+    x_mm: np.ndarray
+    s_mm: np.ndarray
+    velocity: Differentiation
+    acceleration: Differentiation
+    mu_s: float
+    mu_v: float
+    mu_a: float
+
+    @property
+    def a_mm(self) -> np.ndarray:
+        """The a–φ ordinates at positions 1 … N (the second chords' middles are the positions)."""
+        return np.roll(self.acceleration.derivative_mm, 1)
+
+
+@dataclass(frozen=True, eq=False)
+class FullCycle:
+    """The linkage at N positions, evaluated once.
+
+    Attributes
+    ----------
+    build : LinkageConstruction
+        The construction (kinematic diagram, polygons) at the sheet's μl, μv, μa.
+    angles : ndarray, shape (N,)
+        The crank's absolute angles at positions 1 … N, rad.
+    mech, vel, acc : dict
+        Point name → (N, 2) array of its place on the kinematic diagram, its velocity image,
+        its acceleration image (mm; velocity and acceleration only when asked for).
+    values : dict
+        Every evaluated step's values at all positions (for the overlaid polygons).
+    diagrams : tuple of CycleDiagram
+        The diagrams asked for.
+    mu_phi : float
+        rad/mm of the φ axis.
+    H_mm : (float, float)
+        The pole distances of the two differentiations.
+    """
+
+    build: LinkageConstruction
+    plan: object
+    angles: np.ndarray
+    mech: dict[str, np.ndarray] = field(hash=False)
+    vel: dict[str, np.ndarray] = field(hash=False)
+    acc: dict[str, np.ndarray] = field(hash=False)
+    values: dict[str, object] = field(hash=False)
+    diagrams: tuple[CycleDiagram, ...]
+    mu_phi: float
+    H_mm: tuple[float, float]
+    sense: float
+
+    @property
+    def n(self) -> int:
+        return int(self.angles.size)
+
+
+def _xy(values: dict[str, object], step: str, n: int) -> np.ndarray:
+    x, y = values[step]  # type: ignore[misc]
+    return np.column_stack([np.broadcast_to(np.asarray(x, dtype=float), (n,)),
+                            np.broadcast_to(np.asarray(y, dtype=float), (n,))])
+
+
+def _unwrap_from_first(theta: np.ndarray, sense: float) -> np.ndarray:
+    """A link's angle from position 1, continuous over the cycle (rad)."""
+    return np.unwrap(theta - theta[0])
+
+
+def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarray, *,
+                   polygons: Sequence[str] = (), diagrams: Sequence[str] = (),
+                   mu_phi: float, mu_s: dict[str, float] | None = None,
+                   H_mm: tuple[float, float] = (30.0, 30.0)) -> FullCycle:
+    """Evaluate the construction at all positions; read off and differentiate the diagrams.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        Crank-driven; ε₁ = 0 when diagrams are asked for.
+    scales : dict
+        μl, μv, μa of the kinematic diagram and the polygons (SI per mm).
+    angles : ndarray, shape (N,)
+        The crank's angles at positions 1 … N (:func:`cycle_positions`), N ≥ 3.
+    polygons : sequence of str
+        ``"velocity"``, ``"acceleration"``: which overlaid polygons to evaluate.
+    diagrams : sequence of str
+        Slider point names and link ids (:func:`diagram_subjects`).
+    mu_phi : float
+        rad/mm of the φ axis.
+    mu_s : dict
+        Per diagram subject, its μs (m/mm) or μψ (rad/mm).
+    H_mm : (float, float)
+        Pole distances H₁ (s → v) and H₂ (v → a), mm.
+
+    Raises
+    ------
+    DegenerateConstruction
+        A position cannot be constructed (the crank does not turn fully): one line naming it.
+    """
+    d = linkage.driver
+    assert isinstance(d, Crank)
+    n = int(np.asarray(angles).size)
+    b = build_polygons(linkage, scales)
+    targets = list(b.mech.values())
+    for panel in polygons:
+        targets += b.steps_of_panel(panel)
+    plan = b.g.prune(targets)
+    with np.errstate(all="ignore"):
+        batch = plan.evaluate_batch({b.param: np.asarray(angles, dtype=float)})
+    if not batch.valid.all():
+        i = int(np.flatnonzero(~batch.valid)[0])
+        step, why = next((s, w) for s, (m, w) in batch.failures.items() if m[i])
+        raise DegenerateConstruction(step, f"{why}: the crank cannot make a full turn, so there is no full cycle",
+                                     f"position {i + 1} (φ{d.link} = {math.degrees(float(angles[i])):.6g}°)")
+    vals = batch.values
+    mech = {p: _xy(vals, s, n) for p, s in b.mech.items() if s in vals}
+    vel = {p: _xy(vals, s, n) for p, s in b.vel.items() if s in vals} if "velocity" in polygons else {}
+    acc = {p: _xy(vals, s, n) for p, s in b.acc.items() if s in vals} if "acceleration" in polygons else {}
+    sense = -1.0 if d.omega < 0 else 1.0
+    w = abs(d.omega)
+    x = np.arange(n, dtype=float) * (TWO_PI / n) / mu_phi
+    period = TWO_PI / mu_phi
+    slide = sliders(linkage)
+    links = linkage.links()
+    out = []
+    for subject in diagrams:
+        mu = (mu_s or {})[subject]
+        if subject in slide:
+            gx, gy = slide[subject]
+            p = mech[subject]
+            s_m = ((p[:, 0] - p[0, 0]) * gx + (p[:, 1] - p[0, 1]) * gy) * b.mu_l  # along the guide
+            kind = "point"
+        else:
+            u, v = links[subject][:2]
+            pu, pv = mech[u], mech[v]
+            s_m = _unwrap_from_first(np.arctan2(pv[:, 1] - pu[:, 1], pv[:, 0] - pu[:, 0]), sense)
+            kind = "link"
+        s_mm = s_m / mu
+        vdiff = differentiate_cycle(x, s_mm, period, H_mm[0])
+        mu_v = mu * w / (mu_phi * H_mm[0])
+        adiff = differentiate_cycle(vdiff.mid_mm, vdiff.derivative_mm, period, H_mm[1])
+        mu_a = mu_v * w / (mu_phi * H_mm[1])
+        out.append(CycleDiagram(subject, kind, x, s_mm, vdiff, adiff, mu, mu_v, mu_a))
+    return FullCycle(b, plan, np.asarray(angles, dtype=float), mech, vel, acc, vals, tuple(out), mu_phi,
+                     (float(H_mm[0]), float(H_mm[1])), sense)
