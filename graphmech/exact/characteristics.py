@@ -298,7 +298,7 @@ def slider_crank(A: complex, G: complex, guide_angle: float, a: float, b: float,
     stroke = abs((C2 - C1) / g)
     gamma_min = math.acos(min(1.0, (a + abs(e)) / b))
     # B farthest from the guide: the crank at right angles to the guide, away from it
-    away = 1.0 if e >= 0.0 else -1.0
+    away = 1.0 if e > 0.0 else -1.0
     at = _wrap(guide_angle + away * math.pi / 2.0)
     return ExactCharacteristics("slider_crank", "crank", start, end, theta, None, stroke, gamma_min, at)
 

@@ -1,0 +1,460 @@
+"""From a full-cycle or characteristics scene to checked values.
+
+Like :mod:`graphmech.check` for one position, this module knows about users: it chooses the
+scales the scene leaves open, evaluates only what the scene shows or finds, compares each drawn
+value with the exact one and words the warnings.
+
+What can be found (``find``)
+----------------------------
+characteristics (from the construction of :mod:`graphmech.methods.characteristics`, checked
+against the closed forms of :mod:`graphmech.exact.characteristics`)
+    ``theta``, ``psi`` (a rocker's or bar's swing), ``stroke`` (a slider's H), ``K``,
+    ``gamma_min``, ``gamma_min_at`` (the crank's angle there), ``phi_start``/``phi_end`` (the
+    crank's angles at the extreme positions; the working stroke runs from the first), with
+    ``[characteristics] t_work`` also ``phi_work``, ``phi_return``, ``t_return``,
+    ``crank_period``, ``n_crank``; with ``ranges = true`` the Grashof ranges of the crank's
+    length, ``l_AB_<class>_min`` / ``_max`` (a class met twice gets ``_2``).
+the diagrams of a cycle (graphical differentiation, against the exact kinematics)
+    ``s_C@k`` (a slider's displacement from position 1), ``v_C_diagram@k.5`` (the v–φ diagram
+    at the middle of interval k … k+1), ``a_C_diagram@k``; for a link ``psi_3@k`` (deg),
+    ``omega_3_diagram@k.5``, ``alpha_3_diagram@k``.
+the polygons at the cycle's positions
+    any quantity of a linkage scene, ``v_C@3``, ``omega_3@12`` (by :func:`graphmech.check.analyse`).
+
+Angles are reported in degrees, everything else in SI (``n_crank`` in r/min).
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+import numpy as np
+
+from graphmech.check import Row, Verdict, analyse, characteristic, judge, measured_entries, mechanism_size, page_size
+from graphmech.errors import SceneError
+from graphmech.exact import characteristics as exact_ch
+from graphmech.exact.linkage import solve as solve_exact
+from graphmech.mechanisms.linkage import Crank, Linkage
+from graphmech.methods.characteristics import DrawnCharacteristics, draw_characteristics, grashof_ranges
+from graphmech.methods.full_cycle import FullCycle, evaluate_cycle, sliders
+from graphmech.scales import format_scale, round_scale
+
+__all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "nice_pole"]
+
+#: Characteristic quantities → unit.
+CHARACTERISTICS = {"theta": "deg", "psi": "deg", "stroke": "m", "K": "", "gamma_min": "deg",
+                   "gamma_min_at": "deg", "phi_start": "deg", "phi_end": "deg"}
+TIMING = {"phi_work": "deg", "phi_return": "deg", "t_return": "s", "crank_period": "s", "n_crank": "rpm"}
+#: Round pole distances a draftsman takes, mm.
+POLES_MM = (5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 80.0, 100.0)
+#: The height a diagram is given when its scale or pole is chosen, mm; the φ axis's length.
+DIAGRAM_MM, PHI_AXIS_MM = 30.0, 120.0
+_DIAGRAM_NAME = re.compile(r"(s|psi|v|omega|a|alpha)_([A-Za-z0-9']+?)(_diagram)?")
+
+
+def nice_pole(max_slope: float, height_mm: float = DIAGRAM_MM) -> float:
+    """The largest round pole distance H whose derivative diagram stays within ``height_mm``.
+
+    >>> nice_pole(1.0), nice_pole(0.01), nice_pole(100.0)
+    (30.0, 100.0, 5.0)
+    """
+    if not max_slope > 0.0:
+        return POLES_MM[-1]
+    fits = [h for h in POLES_MM if h * max_slope <= height_mm * (1 + 1e-12)]
+    return fits[-1] if fits else POLES_MM[0]
+
+
+@dataclass
+class CycleAnalysis:
+    """What one full-cycle or characteristics scene produced."""
+
+    scene: Any
+    scales: dict[str, float]
+    stated: set[str]
+    cycle: FullCycle | None = None
+    drawn: DrawnCharacteristics | None = None
+    exact: exact_ch.ExactCharacteristics | None = None
+    ranges: list[tuple[str, float, float]] | None = None
+    ranges_exact: list[tuple[str, float, float]] | None = None
+    rows: list[Row] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    summary: dict[str, Any] = field(default_factory=dict)
+    polygons: Any = None  # graphmech.check.Analysis of the polygon quantities asked for
+    extra_measured: tuple[tuple[str, float], ...] = ()
+
+    def scale_notes(self) -> list[str]:
+        out = []
+        for k, v in self.scales.items():
+            base = k.split("_", 1)[0]
+            text = (format_scale(base, v) if base in ("l", "v", "a", "phi", "s") else f"μ{k} = {v:.6g}")
+            out.append(text + ("" if k in self.stated else " (chosen)"))
+        return out
+
+
+def _kind(scene: Any, name: str) -> str:
+    """"char", "timing", "ranges", "diagram" or "polygon"."""
+    base = name.partition("@")[0]
+    if base in CHARACTERISTICS:
+        return "char"
+    if base in TIMING:
+        return "timing"
+    if base.startswith("l_") and ("_min" in base or "_max" in base) and scene.cycle.characteristics.ranges:
+        return "ranges"
+    m = _DIAGRAM_NAME.fullmatch(base)
+    cy = scene.cycle.cycle
+    if m and cy is not None and m.group(2) in cy.diagrams:
+        if m.group(1) in ("s", "psi") and m.group(3) is None:
+            return "diagram"
+        if m.group(1) not in ("s", "psi") and m.group(3):
+            return "diagram"
+    return "polygon"
+
+
+def _wants(scene: Any, names: list[str]) -> dict[str, bool]:
+    kinds = {_kind(scene, n) for n in names}
+    show = scene.show
+    return {"characteristics": "characteristics" in show or bool(kinds & {"char", "timing"})
+            or (scene.cycle.cycle is not None and scene.cycle.cycle.start == "extreme"),
+            "ranges": "ranges" in kinds,
+            "cycle": scene.cycle.cycle is not None and (bool({"cycle", "paths", "diagrams", "velocity", "acceleration"}
+                                                             & set(show)) or "diagram" in kinds)}
+
+
+def _mech_scale(scene: Any, linkage: Linkage) -> float:
+    """μl: stated, or the round value that fits the mechanism's sweep into about 130 × 90 mm."""
+    if "l" in scene.scales:
+        return float(scene.scales["l"])
+    kin = solve_exact(linkage, np.linspace(0.0, 2.0 * math.pi, 72, endpoint=False))  # only for the size
+    size = mechanism_size(linkage, kin)
+    w, h = page_size(scene)
+    return round_scale(size / min(0.45 * w, 0.45 * h, 130.0))
+
+
+def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> CycleAnalysis:
+    """Evaluate what the scene shows and finds, and check it."""
+    cs = scene.cycle
+    linkage: Linkage = scene.linkage
+    measured = [n for _, n, _ in measured_entries(scene, extra_measured)]
+    names = list(scene.find)
+    wants = _wants(scene, names + measured)
+    stated = {k for k in ("l", "v", "a") if k in scene.scales}
+    mu_l = _mech_scale(scene, linkage)
+    an = CycleAnalysis(scene, {"l": mu_l}, stated, extra_measured=tuple(extra_measured))
+    d = linkage.driver
+    assert isinstance(d, Crank)
+    if wants["characteristics"]:
+        _characteristics(an, linkage, mu_l)
+    if wants["ranges"]:
+        from graphmech.methods.characteristics import fourbar_lengths
+
+        L = fourbar_lengths(linkage)
+        an.ranges = grashof_ranges(L["BC"], L["CD"], L["AD"])
+        an.ranges_exact = exact_ch.grashof_ranges(L["BC"], L["CD"], L["AD"])
+        an.summary["grashof_ranges"] = [{"class": k, "min": lo, "max": hi} for k, lo, hi in an.ranges_exact]
+    if wants["cycle"]:
+        _cycle(an, linkage)
+    rows, problems = [], []
+    poly = []
+    for k, raw in enumerate(names):
+        kind = _kind(scene, raw)
+        try:
+            if kind == "polygon":
+                poly.append(raw)
+            else:
+                rows += _rows(an, raw, kind)
+        except KeyError as e:
+            problems.append((f"find[{k}]", str(e.args[0])))
+    if problems:
+        raise SceneError(problems, scene.source)
+    poly_measured = [(n, v) for n, v in scene.measured if _kind(scene, n) == "polygon"]
+    if poly or poly_measured or any(_kind(scene, n) == "polygon" for n, _ in extra_measured):
+        sub = replace(scene, find=tuple(poly), show=(), measured=tuple(poly_measured))
+        extra = tuple((n, v) for n, v in extra_measured if _kind(scene, n) == "polygon")
+        an.polygons = analyse(sub, extra)
+        an.warnings += an.polygons.warnings
+        rows += an.polygons.rows
+    an.rows = rows
+    return an
+
+
+def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
+    try:
+        an.drawn = draw_characteristics(linkage, mu_l)
+    except ValueError as e:
+        raise SceneError([("characteristics", str(e))], an.scene.source) from None
+    loop = an.drawn.loop
+    n = loop.names
+    A = complex(*linkage.frame_points[n["A"]])
+    if loop.kind == "fourbar":
+        D = complex(*linkage.frame_points[n["D"]])
+        y = linkage.dyads[0]
+        branch = y.branch if getattr(y, "q", None) == n["D"] else ("right" if y.branch == "left" else "left")  # type: ignore[union-attr]
+        an.exact = exact_ch.fourbar(A, D, loop.a, loop.b, loop.c, branch, loop.sense)
+    elif loop.kind == "slider_crank":
+        y = linkage.dyads[0]
+        an.exact = exact_ch.slider_crank(A, complex(*y.guide.through), y.guide.angle, loop.a, loop.b,  # type: ignore[union-attr]
+                                         y.branch, loop.sense)  # type: ignore[union-attr]
+    else:
+        an.exact = exact_ch.guide_bar(A, complex(*linkage.frame_points[n["C"]]), loop.a, loop.sense)
+    if loop.kind == "fourbar":
+        L = [loop.a, loop.b, loop.c, abs(complex(*linkage.frame_points[n["D"]]) - A)]
+        exact_class = exact_ch.fourbar_class(*L)
+        if exact_class != an.drawn.grashof:
+            an.warnings.append(f"Grashof's rule says {an.drawn.grashof}, the closure of the loop {exact_class}")
+        if an.drawn.grashof == "change_point":
+            an.warnings.append("change point: s + l = p + q (Grashof's equality) — the links can all lie on one "
+                               "line, where the output's motion is undetermined")
+    an.summary["characteristics"] = {"loop": loop.kind, "grashof": an.drawn.grashof,
+                                     "grashof_exact": an.exact.grashof if loop.kind != "fourbar" else exact_class}
+
+
+def _cycle(an: CycleAnalysis, linkage: Linkage) -> None:
+    scene = an.scene
+    spec = scene.cycle.cycle
+    angles = np.asarray(scene.positions.values, dtype=float)
+    d = linkage.driver
+    assert isinstance(d, Crank)
+    polygons = [p for p in ("velocity", "acceleration") if p in scene.show]
+    subjects = list(spec.diagrams)
+    mu_phi = spec.scales.get("phi", math.radians(round_scale(360.0 / PHI_AXIS_MM)))
+    if "phi" in spec.scales:
+        an.stated.add("phi")
+    scales = {"l": an.scales["l"], "v": 1.0, "a": 1.0}
+    slide = sliders(linkage)
+    if polygons or subjects:  # a provisional pass at μ = 1 gives every extent in real units
+        probe = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
+                               mu_s={s: 1.0 for s in subjects}, H_mm=(1.0, 1.0))
+        w, h = page_size(scene)
+        room = min(0.4 * w, 0.4 * h, 110.0)
+        for key, images in (("v", probe.vel), ("a", probe.acc)):
+            if key in scene.scales:
+                scales[key] = float(scene.scales[key])
+            elif images:
+                pts = np.concatenate(list(images.values()))
+                ext = float(np.max(pts.max(axis=0) - pts.min(axis=0)))
+                scales[key] = round_scale(ext / room) if ext > 0 else 1.0
+        mu_s, poles = {}, []
+        for dg in probe.diagrams:
+            key = "s" if dg.subject in slide else "psi"
+            if key in spec.scales:
+                mu_s[dg.subject] = spec.scales[key]
+            else:
+                ext = float(np.max(np.abs(dg.s_mm)))  # real units at μ = 1
+                mu_s[dg.subject] = (round_scale(ext / DIAGRAM_MM) if key == "s" else
+                                    math.radians(round_scale(math.degrees(ext) / DIAGRAM_MM))) if ext > 0 else 1.0
+        probe2 = evaluate_cycle(linkage, scales, angles, diagrams=subjects, mu_phi=mu_phi, mu_s=mu_s,
+                                H_mm=(1.0, 1.0)) if subjects else None
+        if spec.pole_distance_mm is not None:
+            H = spec.pole_distance_mm
+        elif probe2 is not None:
+            h1 = min(nice_pole(float(np.max(np.abs(g.velocity.derivative_mm)))) for g in probe2.diagrams)
+            h2 = min(nice_pole(float(np.max(np.abs(g.acceleration.derivative_mm))) * h1) for g in probe2.diagrams)
+            H = (h1, h2)
+        else:
+            H = (20.0, 20.0)
+    else:
+        mu_s, H = {}, (20.0, 20.0)
+    an.cycle = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
+                              mu_s=mu_s, H_mm=H)
+    for k in polygons:
+        an.scales["v" if k == "velocity" else "a"] = scales["v" if k == "velocity" else "a"]
+    if subjects:
+        an.scales["phi"] = mu_phi
+        an.summary["diagrams"] = []
+    for dg in an.cycle.diagrams:
+        key = "s" if dg.kind == "point" else "psi"
+        an.scales[f"s_{dg.subject}" if key == "s" else f"psi_{dg.subject}"] = dg.mu_s
+        if key in spec.scales:
+            an.stated.add(f"{key}_{dg.subject}")
+        an.scales[f"v_{dg.subject}" if key == "s" else f"omega_{dg.subject}"] = dg.mu_v
+        an.scales[f"a_{dg.subject}" if key == "s" else f"alpha_{dg.subject}"] = dg.mu_a
+        errs = _diagram_errors(an, dg)
+        an.summary["diagrams"].append({"subject": dg.subject, "kind": dg.kind, "H1_mm": H[0], "H2_mm": H[1],
+                                       "mu_s": dg.mu_s, "mu_v": dg.mu_v, "mu_a": dg.mu_a, **errs})
+    an.summary["cycle"] = {"positions": int(angles.size), "start_deg": math.degrees(float(angles[0])),
+                           "start": spec.start}
+
+
+def _exact_series(an: CycleAnalysis, subject: str) -> dict[str, np.ndarray]:
+    """The exact s, v, a of a diagram's subject at the positions (s, a) and middles (v)."""
+    cache = an.summary.setdefault("_exact", {})
+    if subject in cache:
+        return cache[subject]
+    linkage = an.scene.linkage
+    cyc = an.cycle
+    assert cyc is not None
+    n = cyc.n
+    mids = cyc.angles + cyc.sense * math.pi / n
+    at, mid = solve_exact(linkage, cyc.angles), solve_exact(linkage, mids)
+    slide = sliders(linkage)
+    if subject in slide:
+        g = np.array(slide[subject])
+        s = (at.point[subject] - at.point[subject][0]) @ g
+        out = {"s": s, "v": mid.vel[subject] @ g, "a": at.acc[subject] @ g, "valid": at.valid & mid.valid}
+    else:
+        th = at.angle[subject]
+        out = {"s": np.unwrap(th - th[0]), "v": mid.omega[subject], "a": at.alpha[subject],
+               "valid": at.valid & mid.valid}
+    cache[subject] = out
+    return out
+
+
+def _diagram_errors(an: CycleAnalysis, dg: Any) -> dict[str, float]:
+    ex = _exact_series(an, dg.subject)
+    linkage = an.scene.linkage
+    unit_v, unit_a = ("m/s", "m/s²") if dg.kind == "point" else ("rad/s", "rad/s²")
+    size = mechanism_size(linkage)
+    v = dg.velocity.derivative_mm * dg.mu_v
+    a = dg.a_mm * dg.mu_a
+    cv, ca = characteristic(linkage, unit_v, size), characteristic(linkage, unit_a, size)
+    return {"max_rel_error_v": float(np.max(np.abs(v - ex["v"]) / np.maximum(np.abs(ex["v"]), cv))),
+            "max_rel_error_a": float(np.max(np.abs(a - ex["a"]) / np.maximum(np.abs(ex["a"]), ca)))}
+
+
+def _ch_values(an: CycleAnalysis) -> tuple[dict[str, tuple[float, float, float | None]], dict[str, str]]:
+    """name → (graphical, exact, drawn mm or None), and units, for the characteristics."""
+    dr, ex = an.drawn, an.exact
+    assert dr is not None and ex is not None
+    out: dict[str, tuple[float, float, float | None]] = {
+        "theta": (math.degrees(dr.theta), math.degrees(ex.theta), None),
+        "K": (exact_ch.time_ratio(dr.theta), ex.K, None),
+        "gamma_min": (math.degrees(dr.gamma_min), math.degrees(ex.gamma_min), None),
+        "gamma_min_at": (math.degrees(dr.gamma_min_at), math.degrees(ex.gamma_min_at), None),
+        "phi_start": (math.degrees(dr.phi_start), math.degrees(ex.phi_start), None),
+        "phi_end": (math.degrees(dr.phi_end), math.degrees(ex.phi_end), None),
+    }
+    if dr.psi is not None and ex.psi is not None:
+        out["psi"] = (math.degrees(dr.psi), math.degrees(ex.psi), None)
+    if dr.stroke_mm is not None and ex.stroke is not None:
+        out["stroke"] = (dr.stroke_mm * dr.mu_l, ex.stroke, dr.stroke_mm)
+    t_work = an.scene.cycle.characteristics.t_work
+    if t_work is not None:
+        g, e = exact_ch.timing(dr.theta, t_work), exact_ch.timing(ex.theta, t_work)
+        for k in TIMING:
+            conv = math.degrees if k.startswith("phi") else float
+            out[k] = (conv(g[k]), conv(e[k]), None)
+    return out, {**CHARACTERISTICS, **TIMING}
+
+
+def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
+    scene = an.scene
+    base, _, at = raw.partition("@")
+    if kind in ("char", "timing"):
+        if at:
+            raise KeyError(f"{base} is a property of the whole cycle: write {base!r} without @")
+        values, units = _ch_values(an)
+        if base not in values:
+            why = ("the timing needs [characteristics] t_work" if kind == "timing" else
+                   f"{base} is not a characteristic of a {an.drawn.loop.kind.replace('_', '-')}")  # type: ignore[union-attr]
+            raise KeyError(why)
+        g, e, drawn = values[base]
+        unit = units[base]
+        return [_row(an, base, unit, g, e, drawn, an.scales["l"] if drawn is not None else 1.0)]
+    if kind == "ranges":
+        assert an.ranges is not None and an.ranges_exact is not None
+        names = _range_names(an.ranges, scene.linkage)
+        names_exact = _range_names(an.ranges_exact, scene.linkage)
+        if base not in names or base not in names_exact:
+            raise KeyError(f"unknown Grashof range limit {base!r}; the ranges give "
+                           f"{', '.join(sorted(names))}")
+        return [_row(an, base, "m", names[base], names_exact[base], None, 1.0)]
+    # a diagram's value
+    m = _DIAGRAM_NAME.fullmatch(base)
+    assert m is not None and an.cycle is not None
+    what, subject = m.group(1), m.group(2)
+    dg = next(g for g in an.cycle.diagrams if g.subject == subject)
+    if (what in ("s", "v", "a")) != (dg.kind == "point"):
+        raise KeyError(f"{base}: {subject} is a {'slider' if dg.kind == 'point' else 'link'}; write "
+                       + ("s_, v_…_diagram, a_…_diagram" if dg.kind == "point" else "psi_, omega_…_diagram, alpha_…_diagram"))
+    n = an.cycle.n
+    mid = what in ("v", "omega")
+    labels = [f"{k}.5" for k in range(1, n + 1)] if mid else [str(k) for k in range(1, n + 1)]
+    if at and at not in labels:
+        raise KeyError(f"no {'interval middle' if mid else 'position'} {at!r} "
+                       f"({labels[0]} … {labels[-1]})")
+    idx = [labels.index(at)] if at else range(n)
+    ex = _exact_series(an, subject)
+    unit = {"s": "m", "v": "m/s", "a": "m/s²", "psi": "deg", "omega": "rad/s", "alpha": "rad/s²"}[what]
+    if what in ("s", "psi"):
+        drawn, mu, exact = dg.s_mm, dg.mu_s, ex["s"]
+    elif mid:
+        drawn, mu, exact = dg.velocity.derivative_mm, dg.mu_v, ex["v"]
+    else:
+        drawn, mu, exact = dg.a_mm, dg.mu_a, ex["a"]
+    out = []
+    for i in idx:
+        g, e = float(drawn[i] * mu), float(exact[i])
+        if unit == "deg":
+            g, e = math.degrees(g), math.degrees(e)
+        out.append(_row(an, f"{base}@{labels[i]}", unit, g, e, float(drawn[i]), mu if unit != "deg" else math.degrees(mu)))
+    return out
+
+
+def _range_names(ranges: list[tuple[str, float, float]], linkage: Linkage) -> dict[str, float]:
+    """``l_AB_crank_rocker_max`` → 0.015 …; a class met a second time is ``double_rocker_2``."""
+    from graphmech.methods.characteristics import basic_loop
+
+    loop = basic_loop(linkage)
+    crank = f"l_{loop.names['A']}{loop.names['B']}"
+    seen: dict[str, int] = {}
+    out: dict[str, float] = {}
+    for k, lo, hi in ranges:
+        seen[k] = seen.get(k, 0) + 1
+        key = f"{crank}_{k}" + (f"_{seen[k]}" if seen[k] > 1 else "")
+        if lo > 0.0:
+            out[key + "_min"] = lo
+        out[key + "_max"] = hi
+    return out
+
+
+def _row(an: CycleAnalysis, name: str, unit: str, g: float, e: float, drawn: float | None, scale: float) -> Row:
+    if unit == "deg":
+        err = abs((g - e + 180.0) % 360.0 - 180.0) / 360.0
+    elif unit in ("", "s", "rpm"):
+        err = abs(g - e) / max(abs(e), 1e-300)
+    else:
+        err = abs(g - e) / max(abs(e), characteristic(an.scene.linkage, unit, mechanism_size(an.scene.linkage)))
+    return Row(name, unit, drawn, scale, g, e, err, False)
+
+
+def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Verdict]:
+    """Hand readings: the polygons' quantities as in a linkage scene; θ, ψ, γ_min read with a
+    protractor on arms of the drawn length (± precision/arm on each arm), the stroke at μl, K from θ."""
+    scene = an.scene
+    prec = precision_mm if precision_mm is not None else scene.precision_mm
+    out: list[Verdict] = []
+    problems = []
+    for key, name, value in measured_entries(scene, an.extra_measured):
+        kind = _kind(scene, name)
+        if kind == "polygon":
+            continue
+        if kind != "char" or an.drawn is None:
+            problems.append((key, f"{name!r} cannot be judged here: measure the characteristics (theta, psi, "
+                                  "stroke, K, gamma_min) or the polygons' quantities"))
+            continue
+        values, units = _ch_values(an)
+        if name not in values or name in ("gamma_min_at", "phi_start", "phi_end"):
+            problems.append((key, f"{name!r} cannot be judged here"))
+            continue
+        g, e, drawn = values[name]
+        p = an.drawn.points
+        A = p["A"]
+        arm = min(math.dist(A, p["C1"]), math.dist(A, p["C2"])) if name in ("theta", "K") else (
+            math.dist(p["Cg"], p["Bg"]) if name == "gamma_min" else
+            math.dist(p.get("D", p.get("C", A)), p["C1" if "D" in p else "B1"]))
+        tol_rad = 2.0 * prec / max(arm, prec)
+        if name == "stroke":
+            tol = 2.0 * prec * an.drawn.mu_l
+        elif name == "K":
+            th = an.exact.theta  # type: ignore[union-attr]
+            tol = 2.0 * math.pi / (math.pi - th) ** 2 * tol_rad
+        else:
+            tol = math.degrees(tol_rad)
+        out.append(Verdict(name, value, e, tol, abs(value - e) <= tol, units[name]))
+    if problems:
+        raise SceneError(problems, scene.source)
+    if an.polygons is not None:
+        out = judge(an.polygons, precision_mm) + out
+    return out
