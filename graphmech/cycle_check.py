@@ -86,9 +86,16 @@ class CycleAnalysis:
 
     def scale_notes(self) -> list[str]:
         out = []
+        units = {"s": "m/mm", "v": "(m/s)/mm", "a": "(m/s²)/mm", "psi": "°/mm", "omega": "(rad/s)/mm",
+                 "alpha": "(rad/s²)/mm"}
+        symbols = {"psi": "ψ", "omega": "ω", "alpha": "ε"}
         for k, v in self.scales.items():
-            base = k.split("_", 1)[0]
-            text = (format_scale(base, v) if base in ("l", "v", "a", "phi", "s") else f"μ{k} = {v:.6g}")
+            base, _, subject = k.partition("@")
+            if subject:  # a diagram's own scale: μs(C), μω(3)
+                shown = math.degrees(v) if base == "psi" else v
+                text = f"μ{symbols.get(base, base)}({subject}) = {shown:.6g} {units[base]}"
+            else:
+                text = format_scale(base, v)
             out.append(text + ("" if k in self.stated else " (chosen)"))
         return out
 
@@ -146,7 +153,7 @@ def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()
     assert isinstance(d, Crank)
     if wants["characteristics"]:
         _characteristics(an, linkage, mu_l)
-    if wants["ranges"]:
+    if wants["ranges"] or (scene.cycle.characteristics.ranges and "characteristics" in scene.show):
         from graphmech.methods.characteristics import fourbar_lengths
 
         L = fourbar_lengths(linkage)
@@ -170,7 +177,10 @@ def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()
         raise SceneError(problems, scene.source)
     poly_measured = [(n, v) for n, v in scene.measured if _kind(scene, n) == "polygon"]
     if poly or poly_measured or any(_kind(scene, n) == "polygon" for n, _ in extra_measured):
-        sub = replace(scene, find=tuple(poly), show=(), measured=tuple(poly_measured))
+        # the polygons at the sheet's own μ, so a drawn length means the same everywhere
+        same = {k: an.scales[k] for k in ("l", "v", "a") if k in an.scales}
+        sub = replace(scene, find=tuple(poly), show=(), measured=tuple(poly_measured),
+                      scales={**scene.scales, **same})
         extra = tuple((n, v) for n, v in extra_measured if _kind(scene, n) == "polygon")
         an.polygons = analyse(sub, extra)
         an.warnings += an.polygons.warnings
@@ -256,8 +266,9 @@ def _cycle(an: CycleAnalysis, linkage: Linkage) -> None:
             H = (20.0, 20.0)
     else:
         mu_s, H = {}, (20.0, 20.0)
+    paths = spec.paths if ("paths" in scene.show) else ()
     an.cycle = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
-                              mu_s=mu_s, H_mm=H)
+                              mu_s=mu_s, H_mm=H, paths=paths)
     for k in polygons:
         an.scales["v" if k == "velocity" else "a"] = scales["v" if k == "velocity" else "a"]
     if subjects:
@@ -265,11 +276,11 @@ def _cycle(an: CycleAnalysis, linkage: Linkage) -> None:
         an.summary["diagrams"] = []
     for dg in an.cycle.diagrams:
         key = "s" if dg.kind == "point" else "psi"
-        an.scales[f"s_{dg.subject}" if key == "s" else f"psi_{dg.subject}"] = dg.mu_s
+        names = ("s", "v", "a") if key == "s" else ("psi", "omega", "alpha")
+        for name, mu in zip(names, (dg.mu_s, dg.mu_v, dg.mu_a)):
+            an.scales[f"{name}@{dg.subject}"] = mu
         if key in spec.scales:
-            an.stated.add(f"{key}_{dg.subject}")
-        an.scales[f"v_{dg.subject}" if key == "s" else f"omega_{dg.subject}"] = dg.mu_v
-        an.scales[f"a_{dg.subject}" if key == "s" else f"alpha_{dg.subject}"] = dg.mu_a
+            an.stated.add(f"{key}@{dg.subject}")
         errs = _diagram_errors(an, dg)
         an.summary["diagrams"].append({"subject": dg.subject, "kind": dg.kind, "H1_mm": H[0], "H2_mm": H[1],
                                        "mu_s": dg.mu_s, "mu_v": dg.mu_v, "mu_a": dg.mu_a, **errs})

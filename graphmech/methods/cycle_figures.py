@@ -129,7 +129,7 @@ def cycle_items(cyc: Any, paths: Sequence[str] = ()) -> list[Primitive]:
     curves: list[Primitive] = []
     for name in paths:
         xy = cyc.mech[name]
-        curves.append(Polyline(tuple(map(_pt, xy)), "result", closed=True))
+        curves.append(Polyline(tuple(map(_pt, cyc.paths.get(name, xy))), "result", closed=True))
         if cyc.n <= MOST_DOTS:
             curves += [Circle(_pt(p), DOT, "result") for p in xy]
     return items + curves + first + numbers
@@ -376,7 +376,44 @@ def _characteristics_notes(an: Any) -> tuple[str, ...]:
     line += f", K = (180° + θ)/(180° − θ) = {k:.4g}"
     out.append(line)
     out.append(f"γmin = {math.degrees(dr.gamma_min):.4g}° at φ = {math.degrees(dr.gamma_min_at):.4g}°")
+    t_work = an.scene.cycle.characteristics.t_work
+    if t_work is not None:
+        work, back = math.pi + dr.theta, math.pi - dr.theta
+        period = t_work * 2.0 * math.pi / work
+        out.append(f"working stroke {math.degrees(work):.4g}° in {t_work:.4g} s, return {math.degrees(back):.4g}° in "
+                   f"{period - t_work:.4g} s: a turn in {period:.4g} s, n = {60.0 / period:.4g} r/min")
     return tuple(out)
+
+
+#: The classes' names on the ranges diagram.
+CLASS_NAMES = {"crank_rocker_AB": "crank-rocker", "crank_rocker_CD": "crank-rocker (CD)", "double_crank": "double crank",
+               "double_rocker": "double rocker", "change_point": "change point"}
+#: The length of the ranges diagram's axis, mm (its scale a round number).
+RANGES_MM = 150.0
+
+
+def ranges_items(ranges: Sequence[tuple[str, float, float]], crank: str, length: float) -> tuple[list[Primitive], float]:
+    """The Grashof ranges of the crank's length on one axis: each class a bold stretch (alternately solid
+    and dashed) named above, the limits below; the crank's length in the scene marked. Returns the items and
+    the axis's scale (m/mm)."""
+    from graphmech.scales import round_scale
+
+    limit = max(hi for _, _, hi in ranges)
+    mu = round_scale(limit / RANGES_MM)
+    end = limit / mu
+    items: list[Primitive] = [Arrow((0.0, 0.0), (end + AXIS_OVERRUN, 0.0), "label")]
+    labels: list[Primitive] = [Label(f"l{crank}", (end + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2),
+                               Label("0", (0.0, 0.0), _BELOW, NUMBER_SIZE, italic=False)]
+    for k, (kind, lo, hi) in enumerate(ranges):
+        x0, x1 = lo / mu, hi / mu
+        items.append(Segment((x0, 3.0), (x1, 3.0), "result", dashed=bool(k % 2)))
+        items += [Segment((x1, -1.0), (x1, 5.0), "label")]
+        labels.append(Label(CLASS_NAMES.get(kind, kind), ((x0 + x1) / 2.0, 3.0), ((0.0, -1.0),), 3.0, italic=False))
+        labels.append(Label(f"{hi * 1000:.4g}", (x1, 0.0), _BELOW, NUMBER_SIZE, italic=False))
+    x = length / mu
+    items.append(Circle((x, 0.0), 1.0, "result"))
+    labels.append(Label(f"{crank} = {length * 1000:.4g}", (x, -6.0), ((0.0, 1.0),), 3.0))
+    return items + labels, mu
 
 
 # ----------------------------------------------------------------------------- the sheet
@@ -391,6 +428,13 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
         if entry == "characteristics":
             panels.append(Panel("characteristics", "Extreme positions, θ, ψ and γmin",
                                 tuple(characteristics_items(an.drawn, an.scene.linkage)), _characteristics_notes(an)))
+            if an.ranges is not None:
+                loop = an.drawn.loop
+                crank = loop.names["A"] + loop.names["B"]
+                items, mu = ranges_items(an.ranges, crank, loop.a)
+                panels.append(Panel("ranges", f"Grashof's rule: the classes as l{crank} grows (mm)", tuple(items),
+                                    (f"{mu * 1000:.6g} mm of l{crank} per mm",
+                                     "s + l < p + q: the shortest link turns fully; = : change point")))
         elif entry == "cycle" or (entry == "paths" and "cycle" not in show):
             items = cycle_items(cyc, paths if "paths" in show else ())
             notes = [format_scale("l", an.scales["l"]), f"{cyc.n} positions, 1 at φ = "

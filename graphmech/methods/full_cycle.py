@@ -137,6 +137,7 @@ class FullCycle:
     mu_phi: float
     H_mm: tuple[float, float]
     sense: float
+    paths: dict[str, np.ndarray] = field(default_factory=dict, hash=False)
 
     @property
     def n(self) -> int:
@@ -154,8 +155,13 @@ def _unwrap_from_first(theta: np.ndarray, sense: float) -> np.ndarray:
     return np.unwrap(theta - theta[0])
 
 
+#: A point's path is drawn through at least this many positions (the N among them), so a coupler
+#: curve is smooth however few positions the sheet has.
+PATH_POSITIONS = 360
+
+
 def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarray, *,
-                   polygons: Sequence[str] = (), diagrams: Sequence[str] = (),
+                   polygons: Sequence[str] = (), diagrams: Sequence[str] = (), paths: Sequence[str] = (),
                    mu_phi: float, mu_s: dict[str, float] | None = None,
                    H_mm: tuple[float, float] = (30.0, 30.0)) -> FullCycle:
     """Evaluate the construction at all positions; read off and differentiate the diagrams.
@@ -178,6 +184,9 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
         Per diagram subject, its μs (m/mm) or μψ (rad/mm).
     H_mm : (float, float)
         Pole distances H₁ (s → v) and H₂ (v → a), mm.
+    paths : sequence of str
+        Points whose paths are evaluated at k·N ≥ :data:`PATH_POSITIONS` positions (the N
+        among them), for a smooth curve through the N.
 
     Raises
     ------
@@ -228,5 +237,19 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
         adiff = differentiate_cycle(vdiff.mid_mm, vdiff.derivative_mm, period, H_mm[1])
         mu_a = mu_v * w / (mu_phi * H_mm[1])
         out.append(CycleDiagram(subject, kind, x, s_mm, vdiff, adiff, mu, mu_v, mu_a))
+    dense: dict[str, np.ndarray] = {}
+    if paths:
+        k = max(1, -(-PATH_POSITIONS // n))
+        fine = (np.asarray(angles, dtype=float)[:, None] + sense * np.arange(k) * TWO_PI / (n * k)).ravel()
+        if k == 1:
+            dense = {p: mech[p] for p in paths}
+        else:
+            pplan = b.g.prune([b.mech[p] for p in paths])
+            with np.errstate(all="ignore"):
+                pb = pplan.evaluate_batch({b.param: fine})
+            if pb.valid.all():
+                dense = {p: _xy(pb.values, b.mech[p], fine.size) for p in paths}
+            else:  # a position between the N cannot be built: the path through the N only
+                dense = {p: mech[p] for p in paths}
     return FullCycle(b, plan, np.asarray(angles, dtype=float), mech, vel, acc, vals, tuple(out), mu_phi,
-                     (float(H_mm[0]), float(H_mm[1])), sense)
+                     (float(H_mm[0]), float(H_mm[1])), sense, dense)
