@@ -363,4 +363,8 @@ def run_bench(quick: bool = False) -> dict[str, Any]:
     fly = wittenbauer_records(repeat=2 if quick else 5)
     motion = true_motion_records(quick=quick)
     notes += _flywheel_notes(fly)
-    return {"records": records + cams + fly + motion, "notes": notes}
+    from graphmech.bench_cycle import cycle_notes, differentiation_records, sheet_record
+
+    cycle = differentiation_records(repeat=2 if quick else 5) + [sheet_record(repeat=1 if quick else 3)]
+    notes += cycle_notes(cycle)
+    return {"records": records + cams + fly + motion + cycle, "notes": notes}

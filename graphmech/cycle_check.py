@@ -161,7 +161,9 @@ def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()
         an.ranges_exact = exact_ch.grashof_ranges(L["BC"], L["CD"], L["AD"])
         an.summary["grashof_ranges"] = [{"class": k, "min": lo, "max": hi} for k, lo, hi in an.ranges_exact]
     if wants["cycle"]:
-        _cycle(an, linkage)
+        named = {m.group(2) for n in names + measured if _kind(scene, n) == "diagram"
+                 for m in [_DIAGRAM_NAME.fullmatch(n.partition("@")[0])] if m}
+        _cycle(an, linkage, named)
     rows, problems = [], []
     poly = []
     for k, raw in enumerate(names):
@@ -220,14 +222,15 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
                                      "grashof_exact": an.exact.grashof if loop.kind != "fourbar" else exact_class}
 
 
-def _cycle(an: CycleAnalysis, linkage: Linkage) -> None:
+def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
     scene = an.scene
     spec = scene.cycle.cycle
     angles = np.asarray(scene.positions.values, dtype=float)
     d = linkage.driver
     assert isinstance(d, Crank)
     polygons = [p for p in ("velocity", "acceleration") if p in scene.show]
-    subjects = list(spec.diagrams)
+    # the diagrams shown, or only those a value is asked of
+    subjects = [s for s in spec.diagrams if "diagrams" in scene.show or s in named]
     mu_phi = spec.scales.get("phi", math.radians(round_scale(360.0 / PHI_AXIS_MM)))
     if "phi" in spec.scales:
         an.stated.add("phi")
@@ -329,13 +332,17 @@ def _ch_values(an: CycleAnalysis) -> tuple[dict[str, tuple[float, float, float |
     dr, ex = an.drawn, an.exact
     assert dr is not None and ex is not None
     out: dict[str, tuple[float, float, float | None]] = {
-        "theta": (math.degrees(dr.theta), math.degrees(ex.theta), None),
-        "K": (exact_ch.time_ratio(dr.theta), ex.K, None),
         "gamma_min": (math.degrees(dr.gamma_min), math.degrees(ex.gamma_min), None),
         "gamma_min_at": (math.degrees(dr.gamma_min_at), math.degrees(ex.gamma_min_at), None),
-        "phi_start": (math.degrees(dr.phi_start), math.degrees(ex.phi_start), None),
-        "phi_end": (math.degrees(dr.phi_end), math.degrees(ex.phi_end), None),
     }
+    if dr.theta is None or ex.theta is None:  # the output turns fully: no extreme positions
+        return out, {**CHARACTERISTICS, **TIMING}
+    out.update({
+        "theta": (math.degrees(dr.theta), math.degrees(ex.theta), None),
+        "K": (exact_ch.time_ratio(dr.theta), exact_ch.time_ratio(ex.theta), None),
+        "phi_start": (math.degrees(dr.phi_start), math.degrees(ex.phi_start), None),  # type: ignore[arg-type]
+        "phi_end": (math.degrees(dr.phi_end), math.degrees(ex.phi_end), None),  # type: ignore[arg-type]
+    })
     if dr.psi is not None and ex.psi is not None:
         out["psi"] = (math.degrees(dr.psi), math.degrees(ex.psi), None)
     if dr.stroke_mm is not None and ex.stroke is not None:
@@ -357,8 +364,15 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
             raise KeyError(f"{base} is a property of the whole cycle: write {base!r} without @")
         values, units = _ch_values(an)
         if base not in values:
-            why = ("the timing needs [characteristics] t_work" if kind == "timing" else
-                   f"{base} is not a characteristic of a {an.drawn.loop.kind.replace('_', '-')}")  # type: ignore[union-attr]
+            dr = an.drawn
+            assert dr is not None
+            if dr.theta is None:
+                why = (f"{base}: no extreme positions — the output turns fully too "
+                       f"({dr.grashof.replace('_', ' ')})")
+            elif kind == "timing":
+                why = "the timing needs [characteristics] t_work"
+            else:
+                why = f"{base} is not a characteristic of a {dr.loop.kind.replace('_', '-')}"
             raise KeyError(why)
         g, e, drawn = values[base]
         unit = units[base]

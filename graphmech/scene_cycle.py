@@ -180,9 +180,9 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
         poles = _read_poles(cy)
         cy.finish()
         for i, s in enumerate(show_list):
-            if s == "paths" and not paths:
+            if s == "paths" and "paths" not in cy.table:
                 top.problem(f"show[{i}]", '"paths" needs the points: [cycle] paths = ["C", …]')
-            if s == "diagrams" and not diagrams:
+            if s == "diagrams" and "diagrams" not in cy.table:
                 top.problem(f"show[{i}]", '"diagrams" needs what to plot: [cycle] diagrams = ["C", "3"] '
                                           "(sliders, rotating links)")
         if diagrams and crank and linkage is not None and linkage.driver.epsilon != 0.0:  # type: ignore[union-attr]
@@ -222,10 +222,15 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
         from graphmech.methods.characteristics import draw_characteristics
 
         try:
-            start_angle = draw_characteristics(linkage, 1e-3).phi_start
+            first = draw_characteristics(linkage, 1e-3).phi_start
         except ValueError as e:
             top.problem("cycle.start", f"no extreme position to start from: {e}")
             return None, positions
+        if first is None:
+            top.problem("cycle.start", "no extreme position to start from: the output turns fully too "
+                                       '(a double crank); start = "driver"')
+            return None, positions
+        start_angle = first
     if spec is not None:
         from graphmech.methods.full_cycle import cycle_positions
 

@@ -57,13 +57,14 @@ class ExactCharacteristics:
         ``"crank_rocker_AB"`` (the crank turns fully), ``"crank_rocker_CD"``, ``"double_crank"``,
         ``"double_rocker"``, ``"change_point"`` (Grashof's equality), or for the other loops
         ``"crank"`` (the crank turns fully) / ``"rotating_guide_bar"``.
-    phi_start, phi_end : float
+    phi_start, phi_end : float or None
         The crank's absolute angles at the extreme positions (rad in [0, 2π)): the working
-        (slow) stroke runs from ``phi_start`` to ``phi_end`` in the crank's sense.
-    theta : float
+        (slow) stroke runs from ``phi_start`` to ``phi_end`` in the crank's sense. None when the
+        output turns fully too (a double crank, a parallelogram): it has no extreme positions.
+    theta : float or None
         The crank angle between the extreme positions, rad.
     psi : float or None
-        The rocker's (bar's) swing angle, rad (None for a slider).
+        The rocker's (bar's) swing angle, rad (None for a slider or without extremes).
     stroke : float or None
         The slider's stroke H (None for a rocker).
     gamma_min : float
@@ -74,18 +75,18 @@ class ExactCharacteristics:
 
     kind: str
     grashof: str
-    phi_start: float
-    phi_end: float
-    theta: float
+    phi_start: float | None
+    phi_end: float | None
+    theta: float | None
     psi: float | None
     stroke: float | None
     gamma_min: float
     gamma_min_at: float
 
     @property
-    def K(self) -> float:
-        """The time ratio (180° + θ)/(180° − θ)."""
-        return time_ratio(self.theta)
+    def K(self) -> float | None:
+        """The time ratio (180° + θ)/(180° − θ) (None without extreme positions)."""
+        return None if self.theta is None else time_ratio(self.theta)
 
 
 def time_ratio(theta: float) -> float:
@@ -234,6 +235,9 @@ def fourbar(A: complex, D: complex, a: float, b: float, c: float, branch: str,
         raise ValueError(f"the crank does not turn fully ({kind.replace('_', ' ')}): no extreme positions")
     side = 1.0 if branch == "left" else -1.0
     u = (D - A) / d
+    gamma_min = _fourbar_gamma(a, b, c, d, u)
+    if _turns(c, b, a, d):  # the output turns fully too: no extreme positions
+        return ExactCharacteristics("fourbar", kind, None, None, None, None, None, *gamma_min)
 
     def c_at(ac: float, b_dir: float) -> complex:
         """C with |AC| = ac on the branch; B = A + b_dir·a·(C − A)/|AC|."""
@@ -249,7 +253,11 @@ def fourbar(A: complex, D: complex, a: float, b: float, c: float, branch: str,
     C1, C2 = c_at(b - a, -1.0), c_at(b + a, 1.0)
     start, end, theta = _extremes(A, C1, C2, sense)
     psi = abs(cmath.phase((C2 - D) / (C1 - D)))
-    # the transmission angle at BD = d − a (φ = φ_AD) and BD = d + a (φ = φ_AD + 180°)
+    return ExactCharacteristics("fourbar", kind, start, end, theta, psi, None, *gamma_min)
+
+
+def _fourbar_gamma(a: float, b: float, c: float, d: float, u: complex) -> tuple[float, float]:
+    """γ_min and the crank angle where it is: BD = d − a (φ = φ_AD) or d + a (φ = φ_AD + 180°)."""
     best = None
     for off, bd in ((0.0, abs(d - a)), (math.pi, d + a)):
         delta = _angle_at(b, c, bd)
@@ -257,7 +265,7 @@ def fourbar(A: complex, D: complex, a: float, b: float, c: float, branch: str,
         if best is None or gamma < best[0] - 1e-15:
             best = (gamma, _wrap(cmath.phase(u) + off))
     assert best is not None
-    return ExactCharacteristics("fourbar", kind, start, end, theta, psi, None, best[0], best[1])
+    return best
 
 
 def slider_crank(A: complex, G: complex, guide_angle: float, a: float, b: float, branch: str,

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Callable
 from graphmech.geometry.kernels import ScalarOps, intersect_circle_line, intersect_circles
 from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage
 
@@ -143,8 +144,9 @@ class DrawnCharacteristics:
         Drawing mm (origin at A): ``A``, ``D`` or the bar's pivot ``C``; ``B1``, ``C1`` and
         ``B2``, ``C2`` at the extreme positions (1: the working stroke starts here); ``Bg``, ``Cg``
         where γ is smallest; for a slider the guide as ``G0``, ``G1`` (two points on it).
-    phi_start, phi_end : float
-        The crank's absolute angles at the extreme positions, rad [0, 2π).
+    phi_start, phi_end : float or None
+        The crank's absolute angles at the extreme positions, rad [0, 2π); None (with θ and ψ)
+        when the output turns fully too (a double crank, a parallelogram).
     theta, psi, stroke_mm, gamma_min, gamma_min_at : float
         θ (rad), ψ (rad; None for a slider), H on the drawing (mm; None for a rocker), γ_min
         (rad) and the crank angle where it occurs (rad).
@@ -154,9 +156,9 @@ class DrawnCharacteristics:
     grashof: str
     mu_l: float
     points: dict[str, _XY] = field(hash=False)
-    phi_start: float
-    phi_end: float
-    theta: float
+    phi_start: float | None
+    phi_end: float | None
+    theta: float | None
     psi: float | None
     stroke_mm: float | None
     gamma_min: float
@@ -256,23 +258,20 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
                     return B, C
             return B, C
 
+        links = {"AB": a, "BC": b, "CD": c, "AD": d}
+        shortest = min(links.values())
+        rocker_turns = kind == "double_crank" or (kind == "change_point" and c <= shortest * (1 + 1e-12))
+        if rocker_turns:  # the output turns fully too: γ only
+            g_best = _fourbar_gamma_drawn(A, D, a, b, c, ops, on_branch)
+            pts.update(D=D, Bg=g_best[1], Cg=g_best[2])
+            return DrawnCharacteristics(loop, kind, mu_l, pts, None, None, None, None, None, g_best[0],
+                                        _wrap(math.atan2(g_best[1][1], g_best[1][0])))
         B1, C1 = rocker_pin(b - a, True)  # folded: AC₁ = BC − AB
         B2, C2 = rocker_pin(b + a, False)  # extended: AC₂ = BC + AB
         psi: float | None = _angle(_sub(C1, D), _sub(C2, D))
         stroke = None
         pts["D"] = D
-        # γ where the crank lies along the frame line, towards D and away from it
-        best = None
-        for t in (a, -a):
-            B = _along(A, D, t)
-            for s in (1.0, -1.0):
-                C = intersect_circles(ops, B, b, D, c, s, lambda dd: no_turn)
-                if on_branch(B, C):
-                    break
-            delta = _angle(_sub(B, C), _sub(D, C))
-            g = min(delta, math.pi - delta)
-            if best is None or g < best[0] - 1e-12:
-                best = (g, B, C)
+        best = _fourbar_gamma_drawn(A, D, a, b, c, ops, on_branch)
     elif loop.kind == "slider_crank":
         kind = "crank"
         y = linkage.dyads[0]
@@ -318,6 +317,24 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
     pts.update(B1=B1, C1=C1, B2=B2, C2=C2, Bg=best[1], Cg=best[2])
     at = start if loop.kind == "guide_bar" else _wrap(math.atan2(best[1][1], best[1][0]))
     return DrawnCharacteristics(loop, kind, mu_l, pts, start, end, theta, psi, stroke, best[0], at)
+
+
+def _fourbar_gamma_drawn(A: _XY, D: _XY, a: float, b: float, c: float, ops: ScalarOps,
+                         on_branch: Callable[[_XY, _XY], bool]) -> tuple[float, _XY, _XY]:
+    """γ where the crank lies along the frame line, towards D and away from it: the smaller."""
+    best = None
+    for t in (a, -a):
+        B = _along(A, D, t)
+        for s in (1.0, -1.0):
+            C = intersect_circles(ops, B, b, D, c, s, lambda dd: "the crank does not turn fully")
+            if on_branch(B, C):
+                break
+        delta = _angle(_sub(B, C), _sub(D, C))
+        g = min(delta, math.pi - delta)
+        if best is None or g < best[0] - 1e-12:
+            best = (g, B, C)
+    assert best is not None
+    return best
 
 
 def fourbar_lengths(linkage: Linkage) -> dict[str, float]:

@@ -288,8 +288,16 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
     A = p["A"]
     items: list[Primitive] = []
     labels: list[Primitive] = []
-    B1, C1, B2, C2, Bg, Cg = p["B1"], p["C1"], p["B2"], p["C2"], p["Bg"], p["Cg"]
     sub = {k: v for k, v in loop.names.items()}
+    if dr.theta is None:  # the output turns fully: the linkage where γ is smallest, nothing else
+        D, Bg, Cg = p["D"], p["Bg"], p["Cg"]
+        items += [Segment(A, Bg, "result"), Segment(Bg, Cg, "result"), Segment(Cg, D, "result"), Segment(A, D, "given"),
+                  FixedPivot(A), FixedPivot(D), Hinge(Bg), Hinge(Cg)]
+        labels += _mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, "γmin")
+        for at, text in ((A, sub["A"]), (D, sub["D"]), (Bg, sub["B"]), (Cg, sub["C"])):
+            labels.append(Label(text, at, (_unit(at, A),) if at != A else (), 3.5))
+        return items + labels
+    B1, C1, B2, C2, Bg, Cg = p["B1"], p["C1"], p["B2"], p["C2"], p["Bg"], p["Cg"]
     if loop.kind == "fourbar":
         D = p["D"]
         items += [Segment(A, B1, "result"), Segment(B1, C1, "result"), Segment(C1, D, "result"),
@@ -366,6 +374,10 @@ def _characteristics_notes(an: Any) -> tuple[str, ...]:
     kinds = {"crank_rocker_AB": "crank-rocker (AB the crank)", "crank_rocker_CD": "crank-rocker (CD turns fully)",
              "double_crank": "double crank", "double_rocker": "double rocker", "change_point": "change point "
              "(s + l = p + q)", "crank": "the crank turns fully"}
+    if dr.theta is None:
+        out.append(f"{kinds.get(dr.grashof, dr.grashof)}: the output turns fully, no extreme positions")
+        out.append(f"γmin = {math.degrees(dr.gamma_min):.4g}° at φ = {math.degrees(dr.gamma_min_at):.4g}° (drawn)")
+        return tuple(out)
     out.append(f"{kinds.get(dr.grashof, dr.grashof)}; position 1 (bold): the working stroke begins")
     line = f"θ = {math.degrees(dr.theta):.4g}°"
     if dr.psi is not None:

@@ -1,0 +1,201 @@
+"""Full-cycle and characteristics scenes: the cycle through both dead centres, N = 3600, a
+parallelogram at its change point, what is refused, and that only what is asked is computed."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from graphmech.cli import render_scene
+from tests.conftest import ROOT, SCENES, check_json, run_cli, values
+
+SLIDER = """
+title = "Centred slider-crank, {n} positions"
+show = {show}
+find = {find}
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+[frame]
+A = [0, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = 50
+angle = {angle}
+omega = 10
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["2", "3"]
+length = 200
+guide = {{ through = [0, 0], angle = 0 }}
+branch = "forward"
+[cycle]
+positions = {n}
+start = "{start}"
+diagrams = ["C", "2"]
+paths = ["C"]
+{extra}
+[page]
+size = "A3"
+"""
+
+
+def scene(tmp_path, name="s.toml", *, n=12, show='["cycle", "velocity", "acceleration", "diagrams"]',
+          find='["v_C@1", "v_C@7", "a_C@1", "s_C@7", "v_C_diagram@1.5", "a_C_diagram@7", "omega_2@4"]',
+          start="extreme", angle=0, extra=""):
+    p = tmp_path / name
+    p.write_text(SLIDER.format(n=n, show=show, find=find, start=start, angle=angle, extra=extra), encoding="utf-8")
+    return p
+
+
+def test_a_full_cycle_through_both_dead_centres(tmp_path):
+    """Centred slider-crank, 12 positions from the extreme: positions 1 and 7 are the dead centres."""
+    doc = check_json(scene(tmp_path))
+    q = values(doc)
+    # θ = 0 (K = 1): both strokes take 180°; position 1 is the inner dead centre (crank at 180°)
+    assert doc["cycle"]["start_deg"] == pytest.approx(180.0, abs=1e-9)
+    for k in ("1", "7"):  # a zero velocity at a crank-driven dead centre is a normal result
+        assert abs(q[f"v_C@{k}"]["graphical"]) < 1e-12 and not q[f"v_C@{k}"]["ill_conditioned"]
+    assert q["a_C@1"]["graphical"] == pytest.approx(10 ** 2 * 0.05 * (1 - 50 / 200), rel=1e-12)  # ω²r(1 − λ)
+    assert q["s_C@7"]["graphical"] == pytest.approx(0.1, rel=1e-12)  # the stroke 2·AB
+    assert abs(q["v_C_diagram@1.5"]["rel_error"]) < 0.05 and abs(q["a_C_diagram@7"]["rel_error"]) < 0.1
+    assert q["omega_2@4"]["graphical"] == pytest.approx(q["omega_2@4"]["exact"], rel=1e-12)
+    text = json.dumps(doc)
+    assert "NaN" not in text and "Infinity" not in text
+    d = doc["diagrams"][0]
+    assert d["subject"] == "C" and 0 < d["max_rel_error_v"] < 0.05 and 0 < d["max_rel_error_a"] < 0.1
+
+
+def test_the_crank_rockers_rocker_is_at_rest_at_position_1():
+    q = values(check_json(SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"))
+    assert q["omega_3@4"]["graphical"] == pytest.approx(q["omega_3@4"]["exact"], rel=1e-12)
+    assert q["psi_3@7"]["graphical"] == pytest.approx(q["psi_3@7"]["exact"], rel=1e-12)
+    # graphical differentiation at 12 positions: within a few per cent, not 1e-9
+    assert 1e-4 < q["omega_3_diagram@1.5"]["rel_error"] < 0.02
+    assert 1e-4 < q["alpha_3_diagram@4"]["rel_error"] < 0.02
+
+
+def test_n_3600_is_checked_and_drawn_thinned(tmp_path):
+    p = scene(tmp_path, n=3600, find='["v_C@1", "v_C@1801", "s_C@1801", "v_C_diagram@900.5", "a_C_diagram@1"]')
+    doc = check_json(p)
+    q = values(doc)
+    assert abs(q["v_C@1801"]["graphical"]) < 1e-12
+    assert q["s_C@1801"]["graphical"] == pytest.approx(0.1, rel=1e-12)
+    assert doc["diagrams"][0]["max_rel_error_v"] < 1e-6 and doc["diagrams"][0]["max_rel_error_a"] < 1e-5
+    svg, warnings = render_scene(p)
+    assert svg.count("<svg") == 1
+    # 18 mechanisms drawn, not 3600: the note says so, and the file stays small
+    assert "every 200th of the 3600 positions drawn" in svg
+    assert len(svg) < 3_000_000
+
+
+def test_only_what_is_asked_is_computed(tmp_path, monkeypatch):
+    import graphmech.cycle_check as cc
+
+    calls = []
+    real = cc.evaluate_cycle
+    monkeypatch.setattr(cc, "evaluate_cycle", lambda *a, **k: calls.append(k) or real(*a, **k))
+    p = scene(tmp_path, show='["characteristics"]', find='["theta", "stroke"]')
+    q = values(check_json(p))
+    assert calls == []  # a characteristics scene evaluates no cycle
+    assert q["theta"]["graphical"] == pytest.approx(0.0, abs=1e-12) and q["stroke"]["exact"] == pytest.approx(0.1)
+    calls.clear()
+    p = scene(tmp_path, show='["cycle"]', find='["s_C@3"]')
+    check_json(p)
+    assert calls and all(not k.get("polygons") for k in calls)  # no polygons evaluated when none are shown
+    assert all(k.get("diagrams") == ["C"] for k in calls)  # only the diagram a value is found on
+
+
+def test_a_parallelogram_at_its_change_point(tmp_path):
+    p = tmp_path / "para.toml"
+    p.write_text("""
+title = "Parallelogram"
+show = ["characteristics"]
+find = ["gamma_min"]
+[frame]
+A_mm = [0, 0]
+D_mm = [60, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 30
+angle_deg = 60
+omega_rad_s = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths_mm = [60, 30]
+branch = "left"
+""", encoding="utf-8")
+    doc = check_json(p)
+    assert doc["characteristics"]["grashof"] == "change_point" == doc["characteristics"]["grashof_exact"]
+    assert any("Grashof's equality" in w for w in doc["warnings"])
+    assert values(doc)["gamma_min"]["graphical"] == pytest.approx(0.0, abs=1e-6)  # all four links on one line
+    svg, _ = render_scene(p)
+    assert "change point" in svg
+    p.write_text(p.read_text().replace('find = ["gamma_min"]', 'find = ["theta"]'))
+    code, out, err = run_cli("check", str(p))
+    assert code == 2 and err.count("\n") == 1 and "no extreme positions" in err
+
+
+@pytest.mark.parametrize("edit, key", [
+    (('positions = 12', 'positions = 2'), "cycle.positions"),
+    (('start = "extreme"', 'start = "dead"'), "cycle.start"),
+    (('diagrams = ["C", "2"]', 'diagrams = ["B"]'), "cycle.diagrams[0]"),
+    (('paths = ["C"]', 'paths = ["Q"]'), "cycle.paths[0]"),
+    (('angle = 0', 'angle = [0, 30]'), "driver.angle"),
+    (('omega = 10', 'omega = 10\nepsilon_rad_s2 = 2'), "driver.epsilon"),
+])
+def test_bad_cycle_input_is_one_line_naming_the_key(tmp_path, edit, key):
+    p = scene(tmp_path)
+    p.write_text(p.read_text().replace(*edit))
+    code, out, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and err.count("\n") == 1 and f": {key}:" in err, err
+    assert not (tmp_path / "x.svg").exists()
+
+
+def test_mechanism_is_refused_beside_a_cycle(tmp_path):
+    code, _, err = run_cli("check", str(scene(tmp_path, show='["mechanism", "cycle"]')))
+    assert code == 2 and "show[0]" in err and '"cycle"' in err
+
+
+def test_unknown_find_names_are_refused(tmp_path):
+    code, _, err = run_cli("check", str(scene(tmp_path, find='["v_C_diagram@3"]')))
+    assert code == 2 and "find[0]" in err and "interval middle" in err
+
+
+def test_same_scene_same_svg():
+    a, _ = render_scene(SCENES / "linkage.slider_crank_offset-cycle.toml")
+    b, _ = render_scene(SCENES / "linkage.slider_crank_offset-cycle.toml")
+    assert a == b == (ROOT / "figures" / "linkage.slider_crank_offset-cycle.svg").read_text(encoding="utf-8")
+
+
+def test_a_cycle_sheet_never_imports_matplotlib():
+    code = ("import sys; from graphmech.cli import main; "
+            f"main(['check', {str(SCENES / 'linkage.slider_crank_offset-cycle.toml')!r}]); "
+            "assert not any(m.split('.')[0] == 'matplotlib' for m in sys.modules), 'matplotlib imported'")
+    r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0 and "matplotlib imported" not in r.stderr, r.stderr
+
+
+def test_a_crank_that_cannot_turn_has_no_cycle(tmp_path):
+    """A double rocker (AB = 30 in the ranges problem's four-bar): one line naming the position."""
+    text = (SCENES / "linkage.grashof_ranges.toml").read_text(encoding="utf-8")
+    text = text.replace("length = 10", "length = 30").replace('show = ["characteristics"]', 'show = ["cycle"]')
+    text = text.replace("[characteristics]\nranges = true", "[cycle]\npositions = 12")
+    head, _, tail = text.partition("find = [")
+    text = head + "find = []\n" + tail.split("]\n", 1)[1]
+    p = tmp_path / "dr.toml"
+    p.write_text(text, encoding="utf-8")
+    code, _, err = run_cli("check", str(p))
+    assert code == 2 and err.count("\n") == 1 and "cannot make a full turn" in err and "position" in err, err
