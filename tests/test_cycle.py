@@ -59,12 +59,12 @@ def test_a_full_cycle_through_both_dead_centres(tmp_path):
     """Centred slider-crank, 12 positions from the extreme: positions 1 and 7 are the dead centres."""
     doc = check_json(scene(tmp_path))
     q = values(doc)
-    # θ = 0 (K = 1): both strokes take 180°; position 1 is the inner dead centre (crank at 180°)
-    assert doc["cycle"]["start_deg"] == pytest.approx(180.0, abs=1e-9)
+    # θ = 0 (K = 1): both strokes take 180°; position 1 is then the outer dead centre (crank at 0°)
+    assert doc["cycle"]["start_deg"] == pytest.approx(0.0, abs=1e-9)
     for k in ("1", "7"):  # a zero velocity at a crank-driven dead centre is a normal result
         assert abs(q[f"v_C@{k}"]["graphical"]) < 1e-12 and not q[f"v_C@{k}"]["ill_conditioned"]
-    assert q["a_C@1"]["graphical"] == pytest.approx(10 ** 2 * 0.05 * (1 - 50 / 200), rel=1e-12)  # ω²r(1 − λ)
-    assert q["s_C@7"]["graphical"] == pytest.approx(0.1, rel=1e-12)  # the stroke 2·AB
+    assert q["a_C@1"]["graphical"] == pytest.approx(-10 ** 2 * 0.05 * (1 + 50 / 200), rel=1e-12)  # −ω²r(1 + λ)
+    assert q["s_C@7"]["graphical"] == pytest.approx(-0.1, rel=1e-12)  # the stroke 2·AB
     assert abs(q["v_C_diagram@1.5"]["rel_error"]) < 0.05 and abs(q["a_C_diagram@7"]["rel_error"]) < 0.1
     assert q["omega_2@4"]["graphical"] == pytest.approx(q["omega_2@4"]["exact"], rel=1e-12)
     text = json.dumps(doc)
@@ -87,7 +87,7 @@ def test_n_3600_is_checked_and_drawn_thinned(tmp_path):
     doc = check_json(p)
     q = values(doc)
     assert abs(q["v_C@1801"]["graphical"]) < 1e-12
-    assert q["s_C@1801"]["graphical"] == pytest.approx(0.1, rel=1e-12)
+    assert q["s_C@1801"]["graphical"] == pytest.approx(-0.1, rel=1e-12)
     assert doc["diagrams"][0]["max_rel_error_v"] < 1e-6 and doc["diagrams"][0]["max_rel_error_a"] < 1e-5
     svg, warnings = render_scene(p)
     assert svg.count("<svg") == 1

@@ -43,6 +43,9 @@ __all__ = [
 
 #: Relative slack within which two sums of link lengths count as equal (a change point).
 EQUAL_REL = 1e-12
+#: Strokes whose crank angles differ by less than this (rad) count as equal: position 1 is then
+#: the extended position (the methods' drawing makes the same choice).
+TIE = 1e-9
 
 
 @dataclass(frozen=True)
@@ -198,7 +201,8 @@ def _extremes(A: complex, C1: complex, C2: complex, sense: float) -> tuple[float
     phi_e = _wrap(cmath.phase(C2 - A))
     delta = _wrap(sense * (phi_f - phi_e))  # the crank's travel from extended to folded
     theta = abs(delta - math.pi)
-    return (phi_e, phi_f, theta) if delta >= math.pi else (phi_f, phi_e, theta)
+    # equal strokes (θ = 0, K = 1) start at the extended position, whatever the rounding says
+    return (phi_e, phi_f, theta) if delta >= math.pi - TIE else (phi_f, phi_e, theta)
 
 
 def fourbar(A: complex, D: complex, a: float, b: float, c: float, branch: str,

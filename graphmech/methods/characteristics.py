@@ -117,7 +117,8 @@ def grashof_ranges(b: float, c: float, d: float) -> list[tuple[str, float, float
     others = sorted((float(b), float(c), float(d)))
     s, m, l = others
     limit = s + m + l
-    cuts = {0.0, limit, s + m - l, m + l - s, s + l - m}  # a shortest, a longest, a in the middle
+    # a shortest, a longest, a in the middle; and below l − s − m the links cannot close at all
+    cuts = {0.0, limit, s + m - l, m + l - s, s + l - m, l - s - m}
     cuts = sorted(x for x in cuts if 0.0 <= x <= limit)
     out: list[tuple[str, float, float]] = []
     for lo, hi in zip(cuts[:-1], cuts[1:]):
@@ -196,7 +197,8 @@ def _order(A: _XY, B1: _XY, B2: _XY, sense: float) -> tuple[float, float, float,
     p2 = _wrap(math.atan2(B2[1] - A[1], B2[0] - A[0]))
     travel = _wrap(sense * (p2 - p1))
     theta = abs(travel - math.pi)
-    return (p1, p2, theta, False) if travel >= math.pi else (p2, p1, theta, True)
+    # equal strokes (θ = 0): start at B2 (the extended position of a four-bar or slider-crank)
+    return (p1, p2, theta, False) if travel > math.pi + 1e-9 else (p2, p1, theta, True)
 
 
 def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
