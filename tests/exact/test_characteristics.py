@@ -5,7 +5,7 @@ import dataclasses
 import math
 
 import pytest
-from hypothesis import assume, given, settings
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from graphmech.exact import characteristics as X
@@ -19,10 +19,11 @@ def _wrap_diff(a: float, b: float) -> float:
     return abs((a - b + math.pi) % (2 * math.pi) - math.pi)
 
 
-@settings(max_examples=150, deadline=None)
-@given(lengths, lengths, lengths, lengths, st.sampled_from(["left", "right"]), st.sampled_from([1.0, -1.0]),
-       st.floats(0, 2 * math.pi))
-def test_fourbar_drawn_agrees_with_the_cosine_rule(a, b, c, d, branch, sense, tilt):
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@given(st.floats(0.02, 1.0), lengths, lengths, lengths, st.sampled_from(["left", "right"]),
+       st.sampled_from([1.0, -1.0]), st.floats(0, 2 * math.pi))
+def test_fourbar_drawn_agrees_with_the_cosine_rule(share, b, c, d, branch, sense, tilt):
+    a = share * min(b, c, d)  # mostly the shortest link: crank-rockers and double cranks
     kind = grashof_class(a, b, c, d)
     assert kind == X.fourbar_class(a, b, c, d) or kind == "change_point" or X.fourbar_class(a, b, c, d) == "change_point"
     assume(kind in ("crank_rocker_AB", "double_crank"))
