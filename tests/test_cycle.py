@@ -199,3 +199,41 @@ def test_a_crank_that_cannot_turn_has_no_cycle(tmp_path):
     p.write_text(text, encoding="utf-8")
     code, _, err = run_cli("check", str(p))
     assert code == 2 and err.count("\n") == 1 and "cannot make a full turn" in err and "position" in err, err
+
+
+def test_a_slider_driven_linkage_has_no_cycle(tmp_path):
+    p = tmp_path / "sl.toml"
+    p.write_text("""
+show = ["cycle"]
+[cycle]
+positions = 12
+[frame]
+O_mm = [0, 0]
+D_mm = [100, 60]
+[driver]
+type = "slider"
+link = "1"
+point = "B"
+guide = { through = "O", angle_deg = 0 }
+position_mm = 40
+velocity_m_s = 0.5
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths_mm = [80, 50]
+branch = "right"
+""", encoding="utf-8")
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and err.count("\n") == 1 and ": driver.type:" in err and "crank" in err, err
+
+
+def test_the_cycle_panel_numbers_positions_not_links():
+    from graphmech.cycle_check import analyse_cycle
+    from graphmech.methods.cycle_figures import cycle_items
+    from graphmech.render.primitives import Label
+    from graphmech.scene import load_scene
+
+    an = analyse_cycle(load_scene(SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"))
+    numbers = sorted(int(it.text) for it in cycle_items(an.cycle, ("E",)) if isinstance(it, Label) and it.text.isdigit())
+    assert numbers == list(range(1, 13))

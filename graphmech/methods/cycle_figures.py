@@ -111,8 +111,9 @@ def cycle_items(cyc: Any, paths: Sequence[str] = ()) -> list[Primitive]:
     for i in drawn_positions(cyc.n):
         pos = {name: _pt(xy[i]) for name, xy in cyc.mech.items()}
         its = mechanism_items(cyc.build, pos, spans)
-        if i == 0:
-            first = its
+        if i == 0:  # letters, not link numbers: the numbers on this sheet are the positions'
+            links = set(cyc.build.linkage.links())
+            first = [it for it in its if not (isinstance(it, Label) and not it.italic and it.text in links)]
             continue
         for it in its:  # the other positions thin, without letters, arrows or repeated frame
             if isinstance(it, Segment):
