@@ -66,3 +66,14 @@ def test_quick_return_timing(problems):
         assert q[name]["graphical"] == pytest.approx(p["exact"][key], rel=1e-12)
         if key in p["book"]:
             assert q[name]["graphical"] == pytest.approx(p["book"][key], rel=1e-12)
+
+
+def test_quick_return_timing_on_a_guide_bar(problems):
+    """The same timing on a guide-bar mechanism: θ = ψ = 2·arcsin(AB/AC), γ = 90°."""
+    p = problems["linkage.quick_return_timing"]
+    q = values(check_json(SCENES / "linkage.quick_return_timing-guide_bar.toml"))
+    assert q["theta"]["graphical"] == pytest.approx(p["inputs"]["theta_deg"], rel=1e-12)
+    assert q["psi"]["graphical"] == pytest.approx(q["theta"]["graphical"], rel=1e-12)
+    assert q["gamma_min"]["graphical"] == q["gamma_min"]["exact"] == 90.0
+    for name, key in {"t_return": "t_return_s", "crank_period": "crank_period_s", "n_crank": "n_crank_r_min"}.items():
+        assert q[name]["graphical"] == pytest.approx(p["exact"][key], rel=1e-12)

@@ -388,7 +388,10 @@ def _characteristics_notes(an: Any) -> tuple[str, ...]:
     k = (math.pi + dr.theta) / (math.pi - dr.theta)
     line += f", K = (180° + θ)/(180° − θ) = {k:.4g}"
     out.append(line)
-    out.append(f"γmin = {math.degrees(dr.gamma_min):.4g}° at φ = {math.degrees(dr.gamma_min_at):.4g}°")
+    if dr.loop.kind == "guide_bar":
+        out.append("γ = 90° throughout: the block drives the bar at right angles")
+    else:
+        out.append(f"γmin = {math.degrees(dr.gamma_min):.4g}° at φ = {math.degrees(dr.gamma_min_at):.4g}°")
     t_work = an.scene.cycle.characteristics.t_work
     if t_work is not None:
         work, back = math.pi + dr.theta, math.pi - dr.theta
@@ -439,7 +442,8 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
     paths = an.scene.cycle.cycle.paths if an.scene.cycle.cycle is not None else ()
     for entry in show:
         if entry == "characteristics":
-            panels.append(Panel("characteristics", "Extreme positions, θ, ψ and γmin",
+            head = "Extreme positions, θ, ψ" + (" and γmin" if an.drawn.loop.kind != "guide_bar" else "")
+            panels.append(Panel("characteristics", head,
                                 tuple(characteristics_items(an.drawn, an.scene.linkage)), _characteristics_notes(an)))
             if an.ranges is not None:
                 loop = an.drawn.loop
