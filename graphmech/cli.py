@@ -217,7 +217,7 @@ def _check(args: argparse.Namespace) -> int:
 
         an = analyse_cycle(scene, tuple(extra))
         verdicts = judge_cycle(an, args.precision)
-        extra_doc.update({k: v for k, v in an.summary.items() if not k.startswith("_")})
+        extra_doc.update(an.summary)
     else:
         an = analyse(scene, tuple(extra))
         verdicts = judge(an, args.precision)

@@ -83,6 +83,7 @@ class CycleAnalysis:
     summary: dict[str, Any] = field(default_factory=dict)
     polygons: Any = None  # graphmech.check.Analysis of the polygon quantities asked for
     extra_measured: tuple[tuple[str, float], ...] = ()
+    exact_series: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)  # subject → exact s, v, a
 
     def scale_notes(self) -> list[str]:
         out = []
@@ -293,7 +294,7 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
 
 def _exact_series(an: CycleAnalysis, subject: str) -> dict[str, np.ndarray]:
     """The exact s, v, a of a diagram's subject at the positions (s, a) and middles (v)."""
-    cache = an.summary.setdefault("_exact", {})
+    cache = an.exact_series
     if subject in cache:
         return cache[subject]
     linkage = an.scene.linkage
