@@ -69,6 +69,30 @@ def drawn_positions(n: int) -> list[int]:
     return list(range(0, n, count_every(n, MOST_DRAWN)))
 
 
+#: A drawn curve keeps a vertex only this far (mm) from the last one kept: finer is below the pen.
+CURVE_STEP_MM = 0.25
+
+
+def thinned(points: Any, step: float = CURVE_STEP_MM) -> tuple[XY, ...]:
+    """The vertices of a drawn curve at least ``step`` mm apart along it (ends kept).
+
+    Thousands of positions put vertices hundredths of a millimetre apart; the curve looks the same
+    through every ``step`` mm, and the sheet's label placer works on far fewer segments.
+
+    >>> thinned([(0.0, 0.0), (0.1, 0.0), (0.2, 0.0), (0.3, 0.0), (1.0, 0.0)])
+    ((0.0, 0.0), (0.3, 0.0), (1.0, 0.0))
+    """
+    p = np.asarray(points, dtype=float)
+    if len(p) <= 2:
+        return tuple(map(_pt, p))
+    s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(p, axis=0).T))])
+    bins = np.floor(s / step + 1e-9)
+    keep = np.flatnonzero(np.diff(bins, prepend=-1.0) > 0)
+    if keep[-1] != len(p) - 1:
+        keep = np.append(keep, len(p) - 1)
+    return tuple(map(_pt, p[keep]))
+
+
 def _which(n: int) -> str:
     k = count_every(n, MOST_DRAWN)
     return "" if k == 1 else f"every {k}th of the {n} positions drawn"
@@ -130,7 +154,7 @@ def cycle_items(cyc: Any, paths: Sequence[str] = ()) -> list[Primitive]:
     curves: list[Primitive] = []
     for name in paths:
         xy = cyc.mech[name]
-        curves.append(Polyline(tuple(map(_pt, cyc.paths.get(name, xy))), "result", closed=True))
+        curves.append(Polyline(thinned(cyc.paths.get(name, xy)), "result", closed=True))
         if cyc.n <= MOST_DOTS:
             curves += [Circle(_pt(p), DOT, "result") for p in xy]
     return items + curves + first + numbers
@@ -202,7 +226,7 @@ def _differentiation_items(diff: Any, values_at: np.ndarray, name: str, n: int, 
     gap = (mx[0] + period - mx[-1])
     y0 = float(my[-1] + (my[0] - my[-1]) * (period - mx[-1]) / gap) if gap > 0 else float(my[0])
     curve = [(0.0, y0)] + list(zip(mx.tolist(), my.tolist())) + [(period, y0)]
-    result: list[Primitive] = [Polyline(tuple(curve), "result"), Circle(P, DOT, "result")]
+    result: list[Primitive] = [Polyline(thinned(curve), "result"), Circle(P, DOT, "result")]
     if n <= MOST_DOTS:
         result += [Circle((float(a), float(b)), DOT, "result") for a, b in zip(mx, my)]
     yd = lo - 5.0
@@ -224,7 +248,7 @@ def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
     lo, hi = min(0.0, float(s.min())), max(0.0, float(s.max()))
     items, labels = _axes(period, lo, hi, names[0] + (subscript(dg.subject) if not point else dg.subject), n, every,
                           period)
-    top: list[Primitive] = [Polyline(tuple(zip(x.tolist(), s.tolist())), "result")]
+    top: list[Primitive] = [Polyline(thinned(np.column_stack([x, s])), "result")]
     if n <= MOST_DOTS:
         top += [Circle((float(a), float(b)), DOT, "result") for a, b in zip(dg.x_mm, dg.s_mm)]
         top += [Segment((float(a), 0.0), (float(a), float(b)), "construction") for a, b in zip(dg.x_mm, dg.s_mm)
