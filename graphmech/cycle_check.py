@@ -447,7 +447,9 @@ def _row(an: CycleAnalysis, name: str, unit: str, g: float, e: float, drawn: flo
 
 def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Verdict]:
     """Hand readings: the polygons' quantities as in a linkage scene; θ, ψ, γ_min read with a
-    protractor on arms of the drawn length (± precision/arm on each arm), the stroke at μl, K from θ."""
+    protractor on arms of the drawn length (± precision/arm on each arm), the stroke at μl, K from θ;
+    a diagram's ordinate (``v_C_diagram@3.5``) against the same chords drawn here, ± precision at
+    the diagram's μ (the chords' own discretisation is the method's, not the student's)."""
     scene = an.scene
     prec = precision_mm if precision_mm is not None else scene.precision_mm
     out: list[Verdict] = []
@@ -455,6 +457,19 @@ def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Ve
     for key, name, value in measured_entries(scene, an.extra_measured):
         kind = _kind(scene, name)
         if kind == "polygon":
+            continue
+        if kind == "diagram":  # a hand diagram by chords against these chords, ± precision at its μ
+            if "@" not in name:
+                problems.append((key, f"{name!r}: name the position, e.g. {name}@3"))
+                continue
+            try:
+                row = _rows(an, name, "diagram")[0]
+            except KeyError as e:
+                problems.append((key, str(e.args[0])))
+                continue
+            tol = prec * row.scale
+            out.append(Verdict(name, value, row.graphical, tol, abs(value - row.graphical) <= tol + 1e-12 * abs(value),
+                               row.unit))
             continue
         if kind != "char" or an.drawn is None:
             problems.append((key, f"{name!r} cannot be judged here: measure the characteristics (theta, psi, "

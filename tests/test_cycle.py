@@ -237,3 +237,17 @@ def test_the_cycle_panel_numbers_positions_not_links():
     an = analyse_cycle(load_scene(SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"))
     numbers = sorted(int(it.text) for it in cycle_items(an.cycle, ("E",)) if isinstance(it, Label) and it.text.isdigit())
     assert numbers == list(range(1, 13))
+
+
+def test_a_students_hand_diagram_is_judged_against_the_same_chords(tmp_path):
+    p = scene(tmp_path, find='["v_C_diagram@3.5"]')
+    q = values(check_json(p))["v_C_diagram@3.5"]
+    mu = q["scale"]
+    good, bad = q["graphical"] + 0.4 * mu, q["graphical"] + 0.6 * mu  # 0.4 mm and 0.6 mm off on the drawing
+    code, out, _ = run_cli("check", str(p), "--json", "--measured", f"v_C_diagram@3.5={good}")
+    doc = json.loads(out)
+    assert code == 0 and doc["measured"][0]["ok"] and doc["measured"][0]["expected"] == q["graphical"]
+    code, out, _ = run_cli("check", str(p), "--json", "--measured", f"v_C_diagram@3.5={bad}")
+    assert code == 1 and not json.loads(out)["measured"][0]["ok"]
+    code, _, err = run_cli("check", str(p), "--measured", "v_C_diagram=1")
+    assert code == 2 and "name the position" in err
