@@ -131,18 +131,16 @@ def _wants(scene: Any, names: list[str]) -> dict[str, bool]:
 
 
 def _mech_scale(scene: Any, linkage: Linkage) -> float:
-    """μl: stated, or the round value that fits the mechanism's sweep into about 130 × 90 mm."""
+    """μl: stated, or a round value that fits the mechanism's sweep into about 130 mm (or 45 % of the page)."""
     if "l" in scene.scales:
         return float(scene.scales["l"])
-    kin = solve_exact(linkage, np.linspace(0.0, 2.0 * math.pi, 72, endpoint=False))  # only for the size
-    size = mechanism_size(linkage, kin)
+    size = 2.5 * mechanism_size(linkage)  # the longest link or frame distance; the sweep is about 2.5×
     w, h = page_size(scene)
     return round_scale(size / min(0.45 * w, 0.45 * h, 130.0))
 
 
 def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> CycleAnalysis:
     """Evaluate what the scene shows and finds, and check it."""
-    cs = scene.cycle
     linkage: Linkage = scene.linkage
     measured = [n for _, n, _ in measured_entries(scene, extra_measured)]
     names = list(scene.find)
@@ -237,7 +235,16 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
         an.stated.add("phi")
     scales = {"l": an.scales["l"], "v": 1.0, "a": 1.0}
     slide = sliders(linkage)
-    if polygons or subjects:  # a provisional pass at μ = 1 gives every extent in real units
+    stated_all = (all(k in scene.scales for k in ("v" if p == "velocity" else "a" for p in polygons))
+                  and all(("s" if s in slide else "psi") in spec.scales for s in subjects)
+                  and (spec.pole_distance_mm is not None or not subjects))
+    if stated_all:  # nothing to choose: no provisional pass
+        for key in ("v", "a"):
+            if key in scene.scales:
+                scales[key] = float(scene.scales[key])
+        mu_s = {s: spec.scales["s" if s in slide else "psi"] for s in subjects}
+        H = spec.pole_distance_mm or (20.0, 20.0)
+    elif polygons or subjects:  # a provisional pass at μ = 1 gives every extent in real units
         probe = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
                                mu_s={s: 1.0 for s in subjects}, H_mm=(1.0, 1.0))
         w, h = page_size(scene)
@@ -249,7 +256,7 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
                 pts = np.concatenate(list(images.values()))
                 ext = float(np.max(pts.max(axis=0) - pts.min(axis=0)))
                 scales[key] = round_scale(ext / room) if ext > 0 else 1.0
-        mu_s, poles = {}, []
+        mu_s = {}
         for dg in probe.diagrams:
             key = "s" if dg.subject in slide else "psi"
             if key in spec.scales:
@@ -285,6 +292,8 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
             an.scales[f"{name}@{dg.subject}"] = mu
         if key in spec.scales:
             an.stated.add(f"{key}@{dg.subject}")
+            if spec.pole_distance_mm is not None and "phi" in spec.scales:  # μv, μa follow from what is stated
+                an.stated.update(f"{name}@{dg.subject}" for name in names[1:])
         errs = _diagram_errors(an, dg)
         an.summary["diagrams"].append({"subject": dg.subject, "kind": dg.kind, "H1_mm": H[0], "H2_mm": H[1],
                                        "mu_s": dg.mu_s, "mu_v": dg.mu_v, "mu_a": dg.mu_a, **errs})

@@ -394,7 +394,7 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
 
 
 def _characteristics_notes(an: Any) -> tuple[str, ...]:
-    dr, ex = an.drawn, an.exact
+    dr = an.drawn
     out = [format_scale("l", dr.mu_l)]
     kinds = {"crank_rocker_AB": "crank-rocker (AB the crank)", "crank_rocker_CD": "crank-rocker (CD turns fully)",
              "double_crank": "double crank", "double_rocker": "double rocker", "change_point": "change point "
