@@ -184,10 +184,33 @@ def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()
                       scales={**scene.scales, **same})
         extra = tuple((n, v) for n, v in extra_measured if _kind(scene, n) == "polygon")
         an.polygons = analyse(sub, extra)
-        an.warnings += an.polygons.warnings
+        an.warnings += _renamed(an, an.polygons.warnings)
         rows += an.polygons.rows
     an.rows = rows
     return an
+
+
+def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
+    """The polygons' warnings name a cycle's positions by number and angle ("position 3 (φ1 = 60°)"),
+    and leave out what the cycle has said already (a polygon that cannot be drawn)."""
+    from graphmech.check import position_text
+
+    if an.scene.cycle.cycle is None:
+        return list(warnings)
+    build = an.polygons.build
+    link = an.scene.linkage.driver.link
+    said = set(an.cycle.polygon_failures) if an.cycle is not None else set()
+    prefixes = {position_text(build, lab) + ":": i for i, lab in enumerate(an.scene.positions.labels)}
+    out = []
+    for w in warnings:
+        head, sep, rest = w.partition(": ")
+        i = prefixes.get(head + ":")
+        if i is None:
+            out.append(w)
+        elif not (i in said and rest.startswith("construction impossible")):
+            angle = math.degrees(an.scene.positions.values[i])
+            out.append(f"position {i + 1} (φ{link} = {angle:.6g}°): {rest}")
+    return out
 
 
 def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
@@ -299,6 +322,44 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
                                        "mu_s": dg.mu_s, "mu_v": dg.mu_v, "mu_a": dg.mu_a, **errs})
     an.summary["cycle"] = {"positions": int(angles.size), "start_deg": math.degrees(float(angles[0])),
                            "start": spec.start}
+    an.warnings += _cycle_warnings(an.cycle, d.link)
+
+
+def _positions_text(idx: Any, most: int = 12) -> str:
+    idx = [int(i) + 1 for i in idx]
+    return ", ".join(map(str, idx[:most])) + (f" … ({len(idx)} positions)" if len(idx) > most else "")
+
+
+def _cycle_warnings(cyc: FullCycle, link: str) -> list[str]:
+    """A polygon left out, and the positions where an intersection is ill-conditioned or shallow —
+    one line each, however many positions (N may be 3600)."""
+    from graphmech import tolerances as T
+
+    out = []
+    for i, why in sorted(cyc.polygon_failures.items())[:12]:
+        out.append(f"position {i + 1} (φ{link} = {math.degrees(float(cyc.angles[i])):.6g}°): no polygon — {why} "
+                   "(a change point: the output's motion is undetermined there)")
+    if len(cyc.polygon_failures) > 12:
+        out.append(f"… and {len(cyc.polygon_failures) - 12} more positions without a polygon")
+    if not cyc.conds:
+        return out
+    texts = list(cyc.conds)
+    c = np.stack([np.asarray(cyc.conds[t], dtype=float) for t in texts])
+    c[:, sorted(cyc.polygon_failures)] = 0.0
+    worst = c.max(axis=0)
+    shallow = 1.0 / math.sin(math.radians(T.SHALLOW_DEG))
+    for limit, what in ((T.COND_WARN, "ill-conditioned"), (shallow, "shallow")):
+        hit = np.flatnonzero(worst > limit) if what == "ill-conditioned" else \
+            np.flatnonzero((worst > shallow) & (worst <= T.COND_WARN))
+        if hit.size:
+            j = int(hit[np.argmax(worst[hit])])
+            step = texts[int(np.argmax(c[:, j]))]
+            angle = math.degrees(math.asin(min(1.0, 1.0 / worst[j])))
+            tail = ("values drawn there may be wrong by far more than 1e-9" if what == "ill-conditioned" else
+                    "a hand construction is unreliable there")
+            out.append(f"{what} intersections at positions {_positions_text(hit)}; the worst, '{step}' at position "
+                       f"{j + 1}, meets at {angle:.3g}°: {tail}")
+    return out
 
 
 def _exact_series(an: CycleAnalysis, subject: str) -> dict[str, np.ndarray]:
@@ -333,8 +394,11 @@ def _diagram_errors(an: CycleAnalysis, dg: Any) -> dict[str, float]:
     v = dg.velocity.derivative_mm * dg.mu_v
     a = dg.a_mm * dg.mu_a
     cv, ca = characteristic(linkage, unit_v, size), characteristic(linkage, unit_a, size)
-    return {"max_rel_error_v": float(np.max(np.abs(v - ex["v"]) / np.maximum(np.abs(ex["v"]), cv))),
-            "max_rel_error_a": float(np.max(np.abs(a - ex["a"]) / np.maximum(np.abs(ex["a"]), ca)))}
+    ok = ex["valid"]  # where the exact rates exist (not at a change point)
+    if not ok.any():
+        return {"max_rel_error_v": None, "max_rel_error_a": None}
+    return {"max_rel_error_v": float(np.max((np.abs(v - ex["v"]) / np.maximum(np.abs(ex["v"]), cv))[ok])),
+            "max_rel_error_a": float(np.max((np.abs(a - ex["a"]) / np.maximum(np.abs(ex["a"]), ca))[ok]))}
 
 
 def _ch_values(an: CycleAnalysis) -> tuple[dict[str, tuple[float, float, float | None]], dict[str, str]]:
@@ -420,6 +484,10 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
         drawn, mu, exact = dg.a_mm, dg.mu_a, ex["a"]
     out = []
     for i in idx:
+        if not ex["valid"][i]:
+            an.warnings.append(f"{base}@{labels[i]}: the exact value is undefined there (a change point); "
+                               "not checked")
+            continue
         g, e = float(drawn[i] * mu), float(exact[i])
         if unit == "deg":
             g, e = math.degrees(g), math.degrees(e)

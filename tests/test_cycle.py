@@ -251,3 +251,48 @@ def test_a_students_hand_diagram_is_judged_against_the_same_chords(tmp_path):
     assert code == 1 and not json.loads(out)["measured"][0]["ok"]
     code, _, err = run_cli("check", str(p), "--measured", "v_C_diagram=1")
     assert code == 2 and "name the position" in err
+
+
+def test_a_parallelogram_full_cycle_passes_its_change_points(tmp_path):
+    """At φ = 0° and 180° all four links lie on one line: the mechanism is drawn there, its velocity
+    polygon cannot be (⟂BC and ⟂DC are parallel) and is left out with a warning naming the position;
+    the fixed branch runs on as a parallelogram on one side and an antiparallelogram on the other."""
+    p = tmp_path / "para.toml"
+    p.write_text("""
+title = "Parallelogram through its change points"
+show = ["cycle", "velocity", "diagrams"]
+find = ["omega_3@4", "omega_3@10", "psi_3@4", "omega_3_diagram@3.5"]
+[frame]
+A_mm = [0, 0]
+D_mm = [60, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 30
+angle_deg = 0
+omega_rad_s = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths_mm = [60, 30]
+branch = "left"
+[cycle]
+positions = 12
+diagrams = ["3"]
+[page]
+size = "A3"
+""", encoding="utf-8")
+    doc = check_json(p)
+    q = values(doc)
+    assert q["omega_3@4"]["graphical"] == pytest.approx(10.0, rel=1e-12)  # parallelogram: ω3 = ω1
+    assert q["omega_3@10"]["graphical"] != pytest.approx(10.0, rel=1e-3)  # antiparallelogram
+    assert q["omega_3_diagram@3.5"]["graphical"] == pytest.approx(10.0, rel=1e-12)  # ψ linear: chords exact
+    gone = [w for w in doc["warnings"] if "no polygon" in w]
+    assert [w.split(" (")[0] for w in gone] == ["position 1", "position 7"]
+    assert not any("φ₁ = 1°" in w for w in doc["warnings"])  # positions are named by number, not as angles
+    assert "NaN" not in json.dumps(doc)
+    svg, _ = render_scene(p)
+    assert "no polygon at positions 1, 7" in svg

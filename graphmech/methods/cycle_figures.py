@@ -167,6 +167,8 @@ def polygons_items(cyc: Any, panel: str) -> list[Primitive]:
     items: list[Primitive] = []
     labels: dict[tuple[float, float], str] = {}
     for i in drawn_positions(cyc.n):
+        if i in cyc.polygon_failures:  # no polygon at a change point: the panel's note says so
+            continue
         values = _at(cyc.values, i)
         for it in polygon_items(plan, values, panel):
             if isinstance(it, Segment) and it.role == "construction":
@@ -488,6 +490,11 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
         elif entry in ("velocity", "acceleration"):
             key = "v" if entry == "velocity" else "a"
             notes = [format_scale(key, an.scales[key])] + ([_which(cyc.n)] if _which(cyc.n) else [])
+            if cyc.polygon_failures:
+                gone = sorted(cyc.polygon_failures)
+                notes.append("no polygon at position" + ("s " if len(gone) > 1 else " ")
+                             + ", ".join(str(i + 1) for i in gone[:12]) + (" …" if len(gone) > 12 else "")
+                             + ": two of its lines are parallel there")
             head = ("Velocity" if key == "v" else "Acceleration") + " polygons of all positions, common pole"
             panels.append(Panel(entry, head, tuple(polygons_items(cyc, entry)), tuple(notes)))
         elif entry == "diagrams":

@@ -120,6 +120,10 @@ class FullCycle:
         Every evaluated step's values at all positions (for the overlaid polygons).
     diagrams : tuple of CycleDiagram
         The diagrams asked for.
+    polygon_failures : dict
+        Position index → why its polygon cannot be drawn (a change point), those left out.
+    conds : dict
+        Intersection step → its condition number at every position (the drawn panels' steps).
     mu_phi : float
         rad/mm of the φ axis.
     H_mm : (float, float)
@@ -138,6 +142,8 @@ class FullCycle:
     H_mm: tuple[float, float]
     sense: float
     paths: dict[str, np.ndarray] = field(default_factory=dict, hash=False)
+    polygon_failures: dict[int, str] = field(default_factory=dict, hash=False)
+    conds: dict[str, np.ndarray] = field(default_factory=dict, hash=False)
 
     @property
     def n(self) -> int:
@@ -203,11 +209,19 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
     plan = b.g.prune(targets)
     with np.errstate(all="ignore"):
         batch = plan.evaluate_batch({b.param: np.asarray(angles, dtype=float)})
-    if not batch.valid.all():
-        i = int(np.flatnonzero(~batch.valid)[0])
-        step, why = next((s, w) for s, (m, w) in batch.failures.items() if m[i])
-        raise DegenerateConstruction(step, f"{why}: the crank cannot make a full turn, so there is no full cycle",
-                                     f"position {i + 1} (φ{d.link} = {math.degrees(float(angles[i])):.6g}°)")
+    # A position the mechanism cannot take ends the cycle; a polygon that cannot be drawn at a
+    # position (a change point: two of its lines parallel) only leaves that polygon out.
+    panel_of = {st.text: st.panel for st in plan.steps}
+    polygon_failures: dict[int, str] = {}
+    for step, (mask, why) in batch.failures.items():
+        for i in np.flatnonzero(mask):
+            i = int(i)
+            if panel_of.get(step) == "mechanism" or why.startswith("cannot be assembled"):
+                raise DegenerateConstruction(step, f"{why}: the crank cannot make a full turn, so there is no full "
+                                                   "cycle", f"position {i + 1} (φ{d.link} = "
+                                                            f"{math.degrees(float(angles[i])):.6g}°)")
+            polygon_failures.setdefault(i, f"{step}: {why}")
+    conds = {text: c for text, c in batch.conds.items() if panel_of.get(text) in ("mechanism", *polygons)}
     vals = batch.values
     mech = {p: _xy(vals, s, n) for p, s in b.mech.items() if s in vals}
     vel = {p: _xy(vals, s, n) for p, s in b.vel.items() if s in vals} if "velocity" in polygons else {}
@@ -252,4 +266,4 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
             else:  # a position between the N cannot be built: the path through the N only
                 dense = {p: mech[p] for p in paths}
     return FullCycle(b, plan, np.asarray(angles, dtype=float), mech, vel, acc, vals, tuple(out), mu_phi,
-                     (float(H_mm[0]), float(H_mm[1])), sense, dense)
+                     (float(H_mm[0]), float(H_mm[1])), sense, dense, polygon_failures, conds)
