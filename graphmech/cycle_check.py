@@ -200,13 +200,18 @@ def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
     build = an.polygons.build
     link = an.scene.linkage.driver.link
     said = set(an.cycle.polygon_failures) if an.cycle is not None else set()
-    prefixes = {position_text(build, lab) + ":": i for i, lab in enumerate(an.scene.positions.labels)}
+    labels = an.scene.positions.labels
+    prefixes = {position_text(build, lab) + ":": i for i, lab in enumerate(labels)}
+    asked = {labels.index(r.name.partition("@")[2]) for r in an.polygons.rows if r.name.partition("@")[2] in labels}
     out = []
     for w in warnings:
         head, sep, rest = w.partition(": ")
         i = prefixes.get(head + ":")
         if i is None:
             out.append(w)
+        elif an.cycle is not None and rest.startswith(("shallow intersection", "ill-conditioned intersection")) \
+                and (i not in asked or rest.startswith("shallow")):
+            continue  # the cycle's one-line summary says it for every position
         elif not (i in said and rest.startswith("construction impossible")):
             angle = math.degrees(an.scene.positions.values[i])
             out.append(f"position {i + 1} (φ{link} = {angle:.6g}°): {rest}")

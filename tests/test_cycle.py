@@ -296,3 +296,38 @@ size = "A3"
     assert "NaN" not in json.dumps(doc)
     svg, _ = render_scene(p)
     assert "no polygon at positions 1, 7" in svg
+
+
+def test_ill_conditioned_positions_are_one_line_however_many(tmp_path):
+    """A crank-rocker a hair from its change point (20 + 80 vs 60 + 40.02): near the folded position the
+    coupler and rocker almost align; 360 positions give one summary line per kind, not hundreds."""
+    p = tmp_path / "near.toml"
+    p.write_text(f"""
+title = "Near a change point"
+show = ["cycle", "velocity"]
+find = ["omega_3@1"]
+[frame]
+A_mm = [0, 0]
+D_mm = [80, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 20
+angle_deg = 0
+omega_rad_s = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths_mm = [60, 40.02]
+branch = "left"
+[cycle]
+positions = 360
+""", encoding="utf-8")
+    doc = check_json(p)
+    summary = [w for w in doc["warnings"] if w.startswith(("ill-conditioned intersections", "shallow intersections"))]
+    assert summary and len(summary) <= 2
+    assert "positions 1" in summary[0] or "position" in summary[0]
+    assert len(doc["warnings"]) == len(summary)  # not one line per position and step
