@@ -96,3 +96,11 @@ def test_a_crank_that_does_not_turn_has_no_characteristics():
                  (RRR("B", "C", "D", ("2", "3"), (0.05, 0.035), "left"),))
     with pytest.raises(ValueError, match="does not turn fully"):
         draw_characteristics(lk, 0.001)
+
+
+def test_the_drawn_characteristics_are_frozen():
+    lk = Linkage({"A": (0.0, 0.0), "D": (0.072, 0.0)}, Crank("1", "A", "B", 0.028, 10.0),
+                 (RRR("B", "C", "D", ("2", "3"), (0.052, 0.05), "left"),))
+    dr = draw_characteristics(lk, 0.001)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        dr.theta = 0.0  # type: ignore[misc]

@@ -57,3 +57,13 @@ def test_scale_is_the_inverse_of_the_integrals():
 def test_bad_input_is_refused(args):
     with pytest.raises(ValueError):
         differentiate_by_chords(*args)
+
+
+def test_the_result_is_frozen_and_read_only():
+    import dataclasses
+
+    d = differentiate_by_chords([0.0, 10.0], [0.0, 5.0], 20.0)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        d.H_mm = 1.0  # type: ignore[misc]
+    with pytest.raises(ValueError):
+        d.derivative_mm[0] = 0.0
