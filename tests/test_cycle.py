@@ -331,3 +331,29 @@ positions = 360
     assert summary and len(summary) <= 2
     assert "positions 1" in summary[0] or "position" in summary[0]
     assert len(doc["warnings"]) == len(summary)  # not one line per position and step
+
+
+@pytest.mark.parametrize("direction", ["ccw", "cw"])
+def test_the_diagrams_follow_the_cranks_sense(tmp_path, direction):
+    """Numbered in the crank's sense either way; the chords' values agree with the exact ones to O(1/N²)."""
+    p = scene(tmp_path, n=72, find='["v_C_diagram@10.5", "a_C_diagram@30", "omega_2_diagram@50.5", "alpha_2_diagram@5"]',
+              extra="")
+    p.write_text(p.read_text().replace("omega = 10", f'omega = 10\ndirection = "{direction}"'))
+    doc = check_json(p)
+    for row in doc["quantities"]:
+        assert row["rel_error"] < 5e-3, row
+    assert doc["diagrams"][0]["max_rel_error_v"] < 1e-3
+
+
+def test_a_guide_bar_cycle_starts_at_its_extreme(tmp_path):
+    p = tmp_path / "gb.toml"
+    text = (SCENES / "linkage.quick_return_timing-guide_bar.toml").read_text(encoding="utf-8")
+    text = text.replace('show = ["characteristics"]', 'show = ["cycle", "diagrams"]').replace(
+        "[characteristics]\nt_work_s = 7", '[cycle]\npositions = 24\nstart = "extreme"\ndiagrams = ["3"]')
+    head, _, tail = text.partition("find = [")
+    text = head + 'find = ["phi_start"]\n' + tail.split("]\n", 1)[1]
+    p.write_text(text, encoding="utf-8")
+    doc = check_json(p)
+    ch = values(doc)
+    assert doc["cycle"]["start_deg"] == pytest.approx(ch["phi_start"]["exact"], abs=1e-9)
+    assert doc["diagrams"][0]["max_rel_error_v"] < 0.02
