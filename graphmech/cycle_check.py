@@ -262,15 +262,15 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
     if "phi" in spec.scales:
         an.stated.add("phi")
     scales = {"l": an.scales["l"], "v": 1.0, "a": 1.0}
-    slide = sliders(linkage)
+    links = linkage.links()  # a link's diagram is of its angle (μψ); a point's of a length (μs)
     stated_all = (all(k in scene.scales for k in ("v" if p == "velocity" else "a" for p in polygons))
-                  and all(("s" if s in slide else "psi") in spec.scales for s in subjects)
+                  and all(("psi" if s in links else "s") in spec.scales for s in subjects)
                   and (spec.pole_distance_mm is not None or not subjects))
     if stated_all:  # nothing to choose: no provisional pass
         for key in ("v", "a"):
             if key in scene.scales:
                 scales[key] = float(scene.scales[key])
-        mu_s = {s: spec.scales["s" if s in slide else "psi"] for s in subjects}
+        mu_s = {s: spec.scales["psi" if s in links else "s"] for s in subjects}
         H = spec.pole_distance_mm or (20.0, 20.0)
     elif polygons or subjects:  # a provisional pass at μ = 1 gives every extent in real units
         probe = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
@@ -286,7 +286,7 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
                 scales[key] = round_scale(ext / room) if ext > 0 else 1.0
         mu_s = {}
         for dg in probe.diagrams:
-            key = "s" if dg.subject in slide else "psi"
+            key = "psi" if dg.subject in links else "s"
             if key in spec.scales:
                 mu_s[dg.subject] = spec.scales[key]
             else:
@@ -314,7 +314,7 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
         an.scales["phi"] = mu_phi
         an.summary["diagrams"] = []
     for dg in an.cycle.diagrams:
-        key = "s" if dg.kind == "point" else "psi"
+        key = "psi" if dg.kind == "link" else "s"
         names = ("s", "v", "a") if key == "s" else ("psi", "omega", "alpha")
         for name, mu in zip(names, (dg.mu_s, dg.mu_v, dg.mu_a)):
             an.scales[f"{name}@{dg.subject}"] = mu
@@ -383,6 +383,8 @@ def _exact_series(an: CycleAnalysis, subject: str) -> dict[str, np.ndarray]:
         g = np.array(slide[subject])
         s = (at.point[subject] - at.point[subject][0]) @ g
         out = {"s": s, "v": mid.vel[subject] @ g, "a": at.acc[subject] @ g, "valid": at.valid & mid.valid}
+    elif subject not in linkage.links():  # a point's path: arc length, speed, tangential acceleration
+        out = _exact_path(linkage, subject, cyc.angles, cyc.sense, at, mid)
     else:
         th = at.angle[subject]
         out = {"s": np.unwrap(th - th[0]), "v": mid.omega[subject], "a": at.alpha[subject],
@@ -391,10 +393,37 @@ def _exact_series(an: CycleAnalysis, subject: str) -> dict[str, np.ndarray]:
     return out
 
 
+#: Gauss–Legendre nodes per interval for the exact arc length of a path.
+ARC_NODES = 20
+
+
+def _exact_path(linkage: Linkage, point: str, angles: np.ndarray, sense: float, at: Any, mid: Any) -> dict[str, Any]:
+    """The exact way along a point's path from position 1 (∫|v|dt by Gauss–Legendre, 20 nodes per
+    interval), its speed at the interval middles and its tangential acceleration v·a/|v| at the
+    positions (undefined where it stops: a cusp)."""
+    d = linkage.driver
+    n = angles.size
+    step = 2.0 * math.pi / n
+    t, wts = np.polynomial.legendre.leggauss(ARC_NODES)
+    nodes = (angles[:, None] + sense * step * (t[None, :] + 1.0) / 2.0).ravel()
+    q = solve_exact(linkage, nodes)
+    speed = np.hypot(*q.vel[point].T).reshape(n, ARC_NODES)
+    # ds/dφ = |v|/|ω1|; each interval is Δφ long
+    piece = (speed @ wts) * (step / 2.0) / abs(d.omega)
+    s = np.concatenate([[0.0], np.cumsum(piece[:-1])])
+    v = np.hypot(*mid.vel[point].T)
+    V, A = at.vel[point], at.acc[point]
+    vs = np.hypot(*V.T)
+    moving = vs > 1e-9 * abs(d.omega) * max(math.hypot(*p) for p in (at.point[point][0], (1e-300, 0.0)))
+    a = np.where(moving, np.einsum("ij,ij->i", V, A) / np.where(moving, vs, 1.0), 0.0)
+    valid = at.valid & mid.valid & moving & q.valid.reshape(n, ARC_NODES).all(axis=1)
+    return {"s": s, "v": v, "a": a, "valid": valid}
+
+
 def _diagram_errors(an: CycleAnalysis, dg: Any) -> dict[str, float]:
     ex = _exact_series(an, dg.subject)
     linkage = an.scene.linkage
-    unit_v, unit_a = ("m/s", "m/s²") if dg.kind == "point" else ("rad/s", "rad/s²")
+    unit_v, unit_a = ("rad/s", "rad/s²") if dg.kind == "link" else ("m/s", "m/s²")
     size = mechanism_size(linkage)
     v = dg.velocity.derivative_mm * dg.mu_v
     a = dg.a_mm * dg.mu_a
@@ -469,9 +498,9 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
     assert m is not None and an.cycle is not None
     what, subject = m.group(1), m.group(2)
     dg = next(g for g in an.cycle.diagrams if g.subject == subject)
-    if (what in ("s", "v", "a")) != (dg.kind == "point"):
-        raise KeyError(f"{base}: {subject} is a {'slider' if dg.kind == 'point' else 'link'}; write "
-                       + ("s_, v_…_diagram, a_…_diagram" if dg.kind == "point" else "psi_, omega_…_diagram, alpha_…_diagram"))
+    if (what in ("s", "v", "a")) != (dg.kind != "link"):
+        raise KeyError(f"{base}: {subject} is a {'link' if dg.kind == 'link' else 'point'}; write "
+                       + ("psi_, omega_…_diagram, alpha_…_diagram" if dg.kind == "link" else "s_, v_…_diagram, a_…_diagram"))
     n = an.cycle.n
     mid = what in ("v", "omega")
     labels = [f"{k}.5" for k in range(1, n + 1)] if mid else [str(k) for k in range(1, n + 1)]

@@ -169,8 +169,10 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
 
         def is_subject(name: str, path: str) -> bool:
             if linkage is not None and name not in subjects:
-                choices = ", ".join(f"{k} ({'slider' if v == 'point' else 'link'})" for k, v in subjects.items())
-                cy.problem(path, f"{_say(name)} has no s–φ diagram: name a slider or a rotating link ({choices})")
+                what = {"point": "slider", "link": "link", "path": "point"}
+                choices = ", ".join(f"{k} ({what[v]})" for k, v in subjects.items())
+                cy.problem(path, f"{_say(name)} has no s–φ diagram: name a slider, a rotating link or a moving "
+                                 f"point ({choices})")
                 return False
             return True
 

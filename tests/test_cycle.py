@@ -151,7 +151,7 @@ branch = "left"
 @pytest.mark.parametrize("edit, key", [
     (('positions = 12', 'positions = 2'), "cycle.positions"),
     (('start = "extreme"', 'start = "dead"'), "cycle.start"),
-    (('diagrams = ["C", "2"]', 'diagrams = ["B"]'), "cycle.diagrams[0]"),
+    (('diagrams = ["C", "2"]', 'diagrams = ["A"]'), "cycle.diagrams[0]"),
     (('paths = ["C"]', 'paths = ["Q"]'), "cycle.paths[0]"),
     (('angle = 0', 'angle = [0, 30]'), "driver.angle"),
     (('omega = 10', 'omega = 10\nepsilon_rad_s2 = 2'), "driver.epsilon"),
@@ -357,3 +357,28 @@ def test_a_guide_bar_cycle_starts_at_its_extreme(tmp_path):
     ch = values(doc)
     assert doc["cycle"]["start_deg"] == pytest.approx(ch["phi_start"]["exact"], abs=1e-9)
     assert doc["diagrams"][0]["max_rel_error_v"] < 0.02
+
+
+def test_a_points_way_along_its_path_and_a_link_that_turns_fully(tmp_path):
+    """Coupler point E: s is its chords laid end to end (dividers), v its speed, a its tangential
+    acceleration, all O(1/N²) from the exact ∫|v|dt, |v|, v·a/|v|; the crank (link 1) gains a full
+    turn per cycle, which closes its ψ–φ curve, so its chords are exact."""
+    text = (SCENES / "linkage.fourbar_28_52_50_72-cycle.toml").read_text(encoding="utf-8")
+    text = text.replace('diagrams = ["3"]', 'diagrams = ["3", "E", "1"]')
+    head, _, tail = text.partition("find = [")
+    rest = tail.split("]\n", 1)[1]
+    errs = {}
+    for n in (12, 120):
+        p = tmp_path / f"e{n}.toml"
+        p.write_text(head + 'find = ["s_E@5", "v_E_diagram@5.5", "a_E_diagram@3", "omega_1_diagram@3.5", '
+                     '"psi_1@7"]\n' + rest.replace("positions = 12", f"positions = {n}"), encoding="utf-8")
+        doc = check_json(p)
+        q = values(doc)
+        assert q["omega_1_diagram@3.5"]["graphical"] == pytest.approx(10.0, rel=1e-12)
+        assert q["psi_1@7"]["graphical"] == pytest.approx(360.0 * 6 / n, rel=1e-12)
+        e = next(d for d in doc["diagrams"] if d["subject"] == "E")
+        assert e["kind"] == "path"
+        errs[n] = (e["max_rel_error_v"], e["max_rel_error_a"])
+    assert errs[12][0] / errs[120][0] == pytest.approx(100, rel=0.2)  # order 2
+    assert errs[12][1] / errs[120][1] == pytest.approx(100, rel=0.7)
+    assert errs[120][0] < 1e-3 and errs[120][1] < 1e-2

@@ -241,12 +241,12 @@ def _differentiation_items(diff: Any, values_at: np.ndarray, name: str, n: int, 
 
 def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
     """s–φ, v–φ and a–φ of one subject, stacked top to bottom (the s diagram's origin at (0, 0))."""
-    point = dg.kind == "point"
-    names = ("s", "v", "a") if point else ("ψ", "ω", "ε")
+    point = dg.kind != "link"
+    names = ("s", "v", "aτ" if dg.kind == "path" else "a") if point else ("ψ", "ω", "ε")
     every = numbers_every(n, period / n)
     # s–φ: the curve through the positions, closed at the cycle's end
     x = np.append(dg.x_mm, period)
-    s = np.append(dg.s_mm, dg.s_mm[0])
+    s = np.append(dg.s_mm, dg.s_mm[0] + dg.rise_mm)
     lo, hi = min(0.0, float(s.min())), max(0.0, float(s.max()))
     items, labels = _axes(period, lo, hi, names[0] + (subscript(dg.subject) if not point else dg.subject), n, every,
                           period)
@@ -272,7 +272,12 @@ def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
 
 
 def _diagram_notes(dg: Any, mu_phi: float) -> tuple[str, ...]:
-    if dg.kind == "point":
+    if dg.kind == "path":
+        s = f"s along the path of {dg.subject} (its chords end to end): {format_scale('s', dg.mu_s)}, " \
+            f"{format_scale('phi', mu_phi)}"
+        v = f"H₁ = {dg.velocity.H_mm:g} mm: the speed, μv = μs·ω₁/(μφ·H₁) = {dg.mu_v:.6g} (m/s)/mm"
+        a = f"H₂ = {dg.acceleration.H_mm:g} mm: the tangential acceleration, μa = μv·ω₁/(μφ·H₂) = {dg.mu_a:.6g} (m/s²)/mm"
+    elif dg.kind == "point":
         s = f"{format_scale('s', dg.mu_s)}, {format_scale('phi', mu_phi)}"
         v = f"H₁ = {dg.velocity.H_mm:g} mm: μv = μs·ω₁/(μφ·H₁) = {dg.mu_v:.6g} (m/s)/mm"
         a = f"H₂ = {dg.acceleration.H_mm:g} mm: μa = μv·ω₁/(μφ·H₂) = {dg.mu_a:.6g} (m/s²)/mm"
@@ -500,8 +505,8 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
         elif entry == "diagrams":
             period = 2.0 * math.pi / cyc.mu_phi
             for dg in cyc.diagrams:
-                what = f"slider {dg.subject}" if dg.kind == "point" else f"link {dg.subject}"
-                head = ("s–φ, v–φ, a–φ" if dg.kind == "point" else "ψ–φ, ω–φ, ε–φ") + f" of {what}, by chords"
+                what = {"point": "slider", "path": "point", "link": "link"}[dg.kind] + f" {dg.subject}"
+                head = ("ψ–φ, ω–φ, ε–φ" if dg.kind == "link" else "s–φ, v–φ, aτ–φ" if dg.kind == "path" else "s–φ, v–φ, a–φ") + f" of {what}, by chords"
                 panels.append(Panel(f"diagrams-{dg.subject}", head, tuple(diagram_items(dg, cyc.n, period)),
                                     _diagram_notes(dg, cyc.mu_phi)))
     return Sheet(title, tuple(panels), tuple(page), tuple(footer))  # type: ignore[arg-type]

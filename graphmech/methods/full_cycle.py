@@ -58,12 +58,17 @@ def sliders(linkage: Linkage) -> dict[str, tuple[float, float]]:
 
 
 def diagram_subjects(linkage: Linkage) -> dict[str, str]:
-    """What may have s–φ, v–φ, a–φ diagrams: sliders (``"point"``) and rotating links (``"link"``)."""
+    """What may have s–φ, v–φ, a–φ diagrams: sliders (``"point"``: along the guide), rotating links
+    (``"link"``: their angle), and every other moving point (``"path"``: the distance travelled along
+    its path, v its speed, a its tangential acceleration)."""
     out = {name: "point" for name in sliders(linkage)}
     translating = {y.links[1] for y in linkage.dyads if isinstance(y, (RRP, RPP))}
     for link, pts in linkage.links().items():
         if link not in translating and len(pts) >= 2:
             out[link] = "link"
+        for p in pts:
+            if p not in out and p not in linkage.frame_points:
+                out[p] = "path"
     return out
 
 
@@ -76,7 +81,8 @@ class CycleDiagram:
     subject : str
         The slider's point name (``"C"``) or the link's id (``"3"``).
     kind : str
-        ``"point"`` (m, m/s, m/s²) or ``"link"`` (rad, rad/s, rad/s²).
+        ``"point"`` (a slider: m, m/s, m/s² along its guide), ``"link"`` (rad, rad/s, rad/s²) or
+        ``"path"`` (a point's distance along its path, its speed, its tangential acceleration).
     x_mm : ndarray, shape (N,)
         The positions on the φ axis, mm (position 1 at 0).
     s_mm : ndarray, shape (N,)
@@ -96,6 +102,7 @@ class CycleDiagram:
     mu_s: float
     mu_v: float
     mu_a: float
+    rise_mm: float = 0.0  # what s gains over the cycle: a turn of a link, the length of a path
 
     @property
     def a_mm(self) -> np.ndarray:
@@ -235,22 +242,31 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
     out = []
     for subject in diagrams:
         mu = (mu_s or {})[subject]
+        rise = 0.0  # what s gains over the cycle
         if subject in slide:
             gx, gy = slide[subject]
             p = mech[subject]
             s_m = ((p[:, 0] - p[0, 0]) * gx + (p[:, 1] - p[0, 1]) * gy) * b.mu_l  # along the guide
             kind = "point"
-        else:
+        elif subject in links:
             u, v = links[subject][:2]
             pu, pv = mech[u], mech[v]
-            s_m = _unwrap_from_first(np.arctan2(pv[:, 1] - pu[:, 1], pv[:, 0] - pu[:, 0]), sense)
+            theta = np.arctan2(pv[:, 1] - pu[:, 1], pv[:, 0] - pu[:, 0])
+            s_m = _unwrap_from_first(theta, sense)
+            rise = float(s_m[-1] + (theta[0] - theta[-1] + math.pi) % TWO_PI - math.pi)  # a full turn, or 0
             kind = "link"
+        else:  # a point's way along its path: the chords between its positions, laid end to end (dividers)
+            p = mech[subject]
+            chords = np.hypot(*np.diff(np.vstack([p, p[:1]]), axis=0).T) * b.mu_l
+            s_m = np.concatenate([[0.0], np.cumsum(chords[:-1])])
+            rise = float(chords.sum())
+            kind = "path"
         s_mm = s_m / mu
-        vdiff = differentiate_cycle(x, s_mm, period, H_mm[0])
+        vdiff = differentiate_cycle(x, s_mm, period, H_mm[0], rise / mu)
         mu_v = mu * w / (mu_phi * H_mm[0])
         adiff = differentiate_cycle(vdiff.mid_mm, vdiff.derivative_mm, period, H_mm[1])
         mu_a = mu_v * w / (mu_phi * H_mm[1])
-        out.append(CycleDiagram(subject, kind, x, s_mm, vdiff, adiff, mu, mu_v, mu_a))
+        out.append(CycleDiagram(subject, kind, x, s_mm, vdiff, adiff, mu, mu_v, mu_a, rise / mu))
     dense: dict[str, np.ndarray] = {}
     if paths:
         k = max(1, -(-PATH_POSITIONS // n))

@@ -129,11 +129,14 @@ def differentiate_by_chords(x_mm: ArrayLike, y_mm: ArrayLike, H_mm: float) -> Di
     return Differentiation(_frozen(x), _frozen(y), H, (-H, 0.0), _frozen(mid), _frozen(ray))
 
 
-def differentiate_cycle(x_mm: ArrayLike, y_mm: ArrayLike, period_mm: float, H_mm: float) -> Differentiation:
+def differentiate_cycle(x_mm: ArrayLike, y_mm: ArrayLike, period_mm: float, H_mm: float,
+                        rise_mm: float = 0.0) -> Differentiation:
     """Differentiate a periodic curve given at N divisions of one period.
 
-    The chord from the last division to the first one of the next period (x₀ + period, y₀)
-    closes the cycle, so the result has N derivatives, at the middles of the N intervals.
+    The chord from the last division to the first one of the next period (x₀ + period, y₀ + rise)
+    closes the cycle, so the result has N derivatives, at the middles of the N intervals. ``rise``
+    is what the curve gains over a period: 0 for a slider or a rocker, a full turn for a link that
+    turns fully, the path's length for a distance travelled along it.
 
     >>> d = differentiate_cycle([0.0, 10.0, 20.0, 30.0], [0.0, 5.0, 0.0, -5.0], 40.0, 10.0)
     >>> d.derivative_mm.tolist(), d.mid_mm.tolist()
@@ -145,4 +148,4 @@ def differentiate_cycle(x_mm: ArrayLike, y_mm: ArrayLike, period_mm: float, H_mm
         raise ValueError("a cycle needs at least two divisions, with one ordinate each")
     if not (period_mm > x[-1] - x[0]):
         raise ValueError("the period must be longer than the span of the divisions")
-    return differentiate_by_chords(np.append(x, x[0] + period_mm), np.append(y, y[0]), H_mm)
+    return differentiate_by_chords(np.append(x, x[0] + period_mm), np.append(y, y[0] + rise_mm), H_mm)
