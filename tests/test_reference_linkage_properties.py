@@ -77,3 +77,17 @@ def test_quick_return_timing_on_a_guide_bar(problems):
     assert q["gamma_min"]["graphical"] == q["gamma_min"]["exact"] == 90.0
     for name, key in {"t_return": "t_return_s", "crank_period": "crank_period_s", "n_crank": "n_crank_r_min"}.items():
         assert q[name]["graphical"] == pytest.approx(p["exact"][key], rel=1e-12)
+
+
+def test_offset_slider_crank_characteristics_by_hand():
+    """H = √(400² − 30²) − √(200² − 30²), θ = asin(30/200) − asin(30/400), cos γmin = (100 + 30)/300."""
+    import math
+
+    q = values(check_json(SCENES / "linkage.slider_crank_offset-characteristics.toml"))
+    assert q["stroke"]["graphical"] * 1000 == pytest.approx(math.sqrt(400**2 - 30**2) - math.sqrt(200**2 - 30**2), rel=1e-12)
+    theta = math.degrees(math.asin(30 / 200) - math.asin(30 / 400))
+    assert q["theta"]["graphical"] == pytest.approx(theta, rel=1e-12)
+    assert q["K"]["graphical"] == pytest.approx((180 + theta) / (180 - theta), rel=1e-12)
+    assert q["gamma_min"]["graphical"] == pytest.approx(math.degrees(math.acos(130 / 300)), rel=1e-12)
+    assert q["gamma_min_at"]["graphical"] == pytest.approx(270.0)  # the guide is above A: the crank points down
+    assert q["stroke"]["drawn_mm"] == pytest.approx(q["stroke"]["graphical"] / 0.004, rel=1e-12)

@@ -374,8 +374,10 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
         items += [Segment(C1, d1, "label"), Segment(C2, d2, "label"), Arrow(mid, d1, "label"), Arrow(mid, d2, "label")]
         labels.append(Label("H", mid, (g, (-g[0], -g[1])), 3.2))
         across = (-g[1], g[0])
-        labels += _mark(Cg, _unit(Cg, Bg), across if (Bg[0] - Cg[0]) * across[0] + (Bg[1] - Cg[1]) * across[1] > 0
-                        else (-across[0], -across[1]), 6.0, "γmin")
+        normal = across if (Bg[0] - Cg[0]) * across[0] + (Bg[1] - Cg[1]) * across[1] > 0 else (-across[0], -across[1])
+        # γ is measured from the normal to the guide (the slider's path is the guide)
+        items.append(Segment(Cg, (Cg[0] + 14.0 * normal[0], Cg[1] + 14.0 * normal[1]), "construction", dashed=True))
+        labels += _mark(Cg, _unit(Cg, Bg), normal, 8.0, "γmin")
         items += [FixedPivot(A)] + [Hinge(x) for x in (B1, B2, C1, C2, Bg, Cg)]
         names = [(A, sub["A"]), (B1, sub["B"] + "₁"), (C1, sub["C"] + "₁"), (B2, sub["B"] + "₂"), (C2, sub["C"] + "₂")]
     else:
@@ -473,7 +475,8 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
     paths = an.scene.cycle.cycle.paths if an.scene.cycle.cycle is not None else ()
     for entry in show:
         if entry == "characteristics":
-            head = "Extreme positions, θ, ψ" + (" and γmin" if an.drawn.loop.kind != "guide_bar" else "")
+            head = {"fourbar": "Extreme positions, θ, ψ and γmin", "slider_crank": "Extreme positions, θ, H and γmin",
+                    "guide_bar": "Extreme positions, θ and ψ"}[an.drawn.loop.kind]
             panels.append(Panel("characteristics", head,
                                 tuple(characteristics_items(an.drawn, an.scene.linkage)), _characteristics_notes(an)))
             if an.ranges is not None:
