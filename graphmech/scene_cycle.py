@@ -95,7 +95,8 @@ def _read_count(r: _Reader) -> int | None:
         return DEFAULT_CYCLE_POSITIONS
     bounds = f"{MIN_CYCLE_POSITIONS} … {MAX_POSITIONS}"
     if isinstance(value, bool) or not isinstance(value, int):
-        r.problem(r.at("positions"), f"must be a whole number of positions ({bounds}), not {_say(value)}")
+        shown = _say(value) if isinstance(value, float) else _type_name(value)
+        r.problem(r.at("positions"), f"must be a whole number of positions ({bounds}), not {shown}")
         return None
     if not MIN_CYCLE_POSITIONS <= value <= MAX_POSITIONS:
         r.problem(r.at("positions"), f"must lie between {MIN_CYCLE_POSITIONS} and {MAX_POSITIONS}, not {value}")
