@@ -108,7 +108,8 @@ def _kind(scene: Any, name: str) -> str:
         return "char"
     if base in TIMING:
         return "timing"
-    if base.startswith("l_") and ("_min" in base or "_max" in base) and scene.cycle.characteristics.ranges:
+    if base.startswith("l_") and base.endswith(("_min", "_max")) and any(
+            k in base for k in ("crank_rocker", "double_crank", "double_rocker", "change_point")):
         return "ranges"
     m = _DIAGRAM_NAME.fullmatch(base)
     cy = scene.cycle.cycle
@@ -155,7 +156,10 @@ def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()
     if wants["ranges"] or (scene.cycle.characteristics.ranges and "characteristics" in scene.show):
         from graphmech.methods.characteristics import fourbar_lengths
 
-        L = fourbar_lengths(linkage)
+        try:
+            L = fourbar_lengths(linkage)
+        except ValueError as e:
+            raise SceneError([("find", f"the Grashof ranges: {e}")], scene.source) from None
         an.ranges = grashof_ranges(L["BC"], L["CD"], L["AD"])
         an.ranges_exact = exact_ch.grashof_ranges(L["BC"], L["CD"], L["AD"])
         an.summary["grashof_ranges"] = [{"class": k, "min": lo, "max": hi} for k, lo, hi in an.ranges_exact]
@@ -486,7 +490,8 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
         unit = units[base]
         return [_row(an, base, unit, g, e, drawn, an.scales["l"] if drawn is not None else 1.0)]
     if kind == "ranges":
-        assert an.ranges is not None and an.ranges_exact is not None
+        if an.ranges is None or an.ranges_exact is None:
+            raise KeyError(f"{base}: the Grashof ranges need [characteristics] ranges = true")
         names = _range_names(an.ranges, scene.linkage)
         names_exact = _range_names(an.ranges_exact, scene.linkage)
         if base not in names or base not in names_exact:
