@@ -12,12 +12,13 @@ against the closed forms of :mod:`graphmech.exact.characteristics`)
     ``gamma_min``, ``gamma_min_at`` (the crank's angle there), ``phi_start``/``phi_end`` (the
     crank's angles at the extreme positions; the working stroke runs from the first), with
     ``[characteristics] t_work`` also ``phi_work``, ``phi_return``, ``t_return``,
-    ``crank_period``, ``n_crank``; with ``ranges = true`` the Grashof ranges of the crank's
-    length, ``l_AB_<class>_min`` / ``_max`` (a class met twice gets ``_2``).
+    ``crank_period``, ``n_crank``; the Grashof ranges of the crank's length,
+    ``l_AB_<class>_min`` / ``_max`` (a class met twice gets ``_2``; drawn with ``ranges = true``).
 the diagrams of a cycle (graphical differentiation, against the exact kinematics)
     ``s_C@k`` (a slider's displacement from position 1), ``v_C_diagram@k.5`` (the v–φ diagram
     at the middle of interval k … k+1), ``a_C_diagram@k``; for a link ``psi_3@k`` (deg),
-    ``omega_3_diagram@k.5``, ``alpha_3_diagram@k``.
+    ``omega_3_diagram@k.5``, ``alpha_3_diagram@k``; for any other point the same names as a
+    slider's, meaning its way along its path, its speed and its tangential acceleration.
 the polygons at the cycle's positions
     any quantity of a linkage scene, ``v_C@3``, ``omega_3@12`` (by :func:`graphmech.check.analyse`).
 

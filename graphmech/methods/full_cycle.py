@@ -7,8 +7,9 @@ evaluated at all N positions in one vectorised pass (``Plan.evaluate_batch``); f
 
 * the positions of every point on the kinematic diagram (the mechanism overlaid N times) and
   the paths of chosen points (coupler curves);
-* the displacement diagram s–φ of a slider (along its guide, from position 1) or the angle
-  diagram ψ–φ of a rotating link, *read off the kinematic diagram* at μs (μψ) and μφ;
+* the displacement diagram s–φ of a slider (along its guide, from position 1), the angle
+  diagram ψ–φ of a rotating link, or the way of any other point along its path (its chords laid
+  end to end, as with dividers), *read off the kinematic diagram* at μs (μψ) and μφ;
 * the v–φ (ω–φ) diagram by graphical differentiation of s–φ by chords with the pole distance
   H₁, at μv = μs·ω₁/(μφ·H₁), its values at the middles of the intervals; and the a–φ (ε–φ)
   diagram by differentiating v–φ again with H₂, at μa = μv·ω₁/(μφ·H₂), its values back at the
