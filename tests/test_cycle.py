@@ -3,6 +3,7 @@ parallelogram at its change point, what is refused, and that only what is asked 
 from __future__ import annotations
 
 import json
+import math
 import subprocess
 import sys
 
@@ -382,3 +383,18 @@ def test_a_points_way_along_its_path_and_a_link_that_turns_fully(tmp_path):
     assert errs[12][0] / errs[120][0] == pytest.approx(100, rel=0.2)  # order 2
     assert errs[12][1] / errs[120][1] == pytest.approx(100, rel=0.7)
     assert errs[120][0] < 1e-3 and errs[120][1] < 1e-2
+
+
+def test_the_compressors_cycle_starts_where_its_flywheel_project_does():
+    """start = "extreme" finds the outer dead centre the flywheel scene states by hand, asin(e/(a + b)):
+    the twelve positions of the kinematics sheet are those the reduction to the crank uses."""
+    from graphmech.scene import load_scene
+
+    cyc = load_scene(SCENES / "fly.compressor_course_project-cycle.toml")
+    fly = load_scene(SCENES / "fly.compressor_course_project.toml")
+    assert cyc.positions.labels == fly.positions.labels == tuple(str(k) for k in range(1, 13))
+    for a, b in zip(cyc.positions.values, fly.positions.values):
+        assert abs((a - b + math.pi) % (2 * math.pi) - math.pi) < 1e-12
+    q = values(check_json(SCENES / "fly.compressor_course_project-cycle.toml"))
+    assert q["phi_start"]["graphical"] == pytest.approx(math.degrees(math.asin(10 / 375)), rel=1e-12)
+    assert q["s_C@7"]["graphical"] == pytest.approx(-q["stroke"]["exact"], abs=1e-5)  # position 7: near the inner dead centre
