@@ -233,6 +233,8 @@ def _check(args: argparse.Namespace) -> int:
             verdict = "" if br["ok"] is None else (f" ≤ {br['time_limit']:g} s: meets the requirement" if br["ok"]
                                                      else f" > {br['time_limit']:g} s: DOES NOT meet the requirement")
             print(f"stopping time {br['t_stop']:.6g} s{verdict}")
+        for line in getattr(an, "summary_lines", lambda: [])():  # a cycle's class, ranges and diagrams
+            print(line)
         for w in an.warnings:
             print(f"warning: {w}", file=sys.stderr)
     return EXIT_OUT_OF_TOLERANCE if bad else EXIT_OK

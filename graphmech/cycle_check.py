@@ -86,6 +86,25 @@ class CycleAnalysis:
     extra_measured: tuple[tuple[str, float], ...] = ()
     exact_series: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)  # subject → exact s, v, a
 
+    def summary_lines(self) -> list[str]:
+        """What the check table does not show: the Grashof class and ranges, the diagrams' errors."""
+        out = []
+        ch = self.summary.get("characteristics")
+        if ch and ch["loop"] == "fourbar":
+            out.append(f"four-bar: {ch['grashof'].replace('_', ' ')} by Grashof's rule, "
+                       f"{ch['grashof_exact'].replace('_', ' ')} by the closure of the loop")
+        elif ch:
+            out.append(f"{ch['loop'].replace('_', '-')}: the crank turns fully")
+        if self.summary.get("grashof_ranges"):
+            out.append("Grashof ranges of the crank's length:")
+        for r in self.summary.get("grashof_ranges", []):
+            out.append(f"  {r['class'].replace('_', ' ')}: {r['min'] * 1000:.6g} … {r['max'] * 1000:.6g} mm")
+        for d in self.summary.get("diagrams", []):
+            if d["max_rel_error_v"] is not None:
+                out.append(f"diagrams of {d['subject']} by chords (H1 = {d['H1_mm']:g}, H2 = {d['H2_mm']:g} mm): "
+                           f"largest error over the cycle {d['max_rel_error_v']:.1e} (v), {d['max_rel_error_a']:.1e} (a)")
+        return out
+
     def scale_notes(self) -> list[str]:
         out = []
         units = {"s": "m/mm", "v": "(m/s)/mm", "a": "(m/s²)/mm", "psi": "°/mm", "omega": "(rad/s)/mm",

@@ -398,3 +398,10 @@ def test_the_compressors_cycle_starts_where_its_flywheel_project_does():
     q = values(check_json(SCENES / "fly.compressor_course_project-cycle.toml"))
     assert q["phi_start"]["graphical"] == pytest.approx(math.degrees(math.asin(10 / 375)), rel=1e-12)
     assert q["s_C@7"]["graphical"] == pytest.approx(-q["stroke"]["exact"], abs=1e-5)  # position 7: near the inner dead centre
+
+
+def test_the_text_table_tells_the_class_the_ranges_and_the_diagrams_errors():
+    code, out, _ = run_cli("check", str(SCENES / "linkage.grashof_ranges.toml"))
+    assert code == 0 and "crank rocker AB by Grashof's rule" in out and "double crank: 45 … 55 mm" in out
+    code, out, _ = run_cli("check", str(SCENES / "linkage.slider_crank_offset-cycle.toml"))
+    assert code == 0 and "diagrams of C by chords (H1 = 20, H2 = 15 mm): largest error over the cycle 1.7e-02 (v)" in out
