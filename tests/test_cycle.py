@@ -405,3 +405,30 @@ def test_the_text_table_tells_the_class_the_ranges_and_the_diagrams_errors():
     assert code == 0 and "crank rocker AB by Grashof's rule" in out and "double crank: 45 … 55 mm" in out
     code, out, _ = run_cli("check", str(SCENES / "linkage.slider_crank_offset-cycle.toml"))
     assert code == 0 and "diagrams of C by chords (H1 = 20, H2 = 15 mm): largest error over the cycle 1.6e-02 (v)" in out
+
+
+def test_a_slider_crank_whose_crank_cannot_turn_names_the_construction_step(tmp_path):
+    p = tmp_path / "sc.toml"
+    p.write_text("""
+show = ["characteristics"]
+find = ["theta"]
+[frame]
+A_mm = [0, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 100
+angle_deg = 90
+omega_rad_s = 10
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["2", "3"]
+length_mm = 150
+guide = { through_mm = [0, 60], angle_deg = 0 }
+branch = "forward"
+""", encoding="utf-8")
+    code, out, err = run_cli("check", str(p))  # a + e = 160 mm > b = 150 mm
+    assert code == 2 and err.count("\n") == 1 and "C₁ = arc(A, BC − AB) ∩ guide" in err and "does not turn fully" in err

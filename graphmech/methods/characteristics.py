@@ -253,6 +253,8 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
 
         def rocker_pin(radius: float, crank_back: bool) -> tuple[_XY, _XY]:
             """C on the arc of ``radius`` about A and the rocker's circle; B on AC (or behind A)."""
+            ops.step = f"{n['C']} = arc({n['A']}, {n['B']}{n['C']} {'−' if crank_back else '+'} {n['A']}{n['B']}) ∩ " \
+                       f"circle({n['D']}, {n['C']}{n['D']})"
             for s in (1.0, -1.0):
                 C = intersect_circles(ops, A, radius, D, c, s, lambda dd: no_turn)
                 B = _along(A, C, -a if crank_back else a)
@@ -283,7 +285,9 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
         g = y.guide.direction
         line = (G[0], G[1], g[0], g[1])
         side = 1.0 if y.branch == "forward" else -1.0
+        ops.step = f"{n['C']}₁ = arc({n['A']}, {n['B']}{n['C']} − {n['A']}{n['B']}) ∩ guide"
         C1 = intersect_circle_line(ops, A, b - a, line, side, lambda e: no_turn)
+        ops.step = f"{n['C']}₂ = arc({n['A']}, {n['B']}{n['C']} + {n['A']}{n['B']}) ∩ guide"
         C2 = intersect_circle_line(ops, A, b + a, line, side, lambda e: no_turn)
         B1, B2 = _along(A, C1, -a), _along(A, C2, a)
         psi, stroke = None, math.dist(C1, C2)
@@ -305,6 +309,7 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
         if a >= math.hypot(*Cp) * (1.0 - 1e-12):
             raise ValueError("the bar turns fully (a rotating guide bar): no extreme positions")
         M = (Cp[0] / 2.0, Cp[1] / 2.0)  # the circle on AC as diameter: the bar ⟂ the crank there
+        ops.step = f"{n['B']}₁, {n['B']}₂ = crank circle ∩ circle on {n['A']}{n['C']} as diameter"
         r = math.hypot(*Cp) / 2.0
         B1 = intersect_circles(ops, A, a, M, r, 1.0, lambda dd: no_turn)
         B2 = intersect_circles(ops, A, a, M, r, -1.0, lambda dd: no_turn)
