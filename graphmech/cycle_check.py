@@ -287,9 +287,11 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
         an.stated.add("phi")
     scales = {"l": an.scales["l"], "v": 1.0, "a": 1.0}
     links = linkage.links()  # a link's diagram is of its angle (μψ); a point's of a length (μs)
+    derived = {s: ("omega", "epsilon") if s in links else ("v", "a") for s in subjects}  # μ that fix H₁, H₂
     stated_all = (all(k in scene.scales for k in ("v" if p == "velocity" else "a" for p in polygons))
                   and all(("psi" if s in links else "s") in spec.scales for s in subjects)
-                  and (spec.pole_distance_mm is not None or not subjects))
+                  and (spec.pole_distance_mm is not None
+                       or all(k in spec.scales for s in subjects for k in derived[s])))
     if stated_all:  # nothing to choose: no provisional pass
         for key in ("v", "a"):
             if key in scene.scales:
@@ -329,9 +331,18 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
             H = (20.0, 20.0)
     else:
         mu_s, H = {}, (20.0, 20.0)
+    # a stated μv (μω) fixes H₁ = μs·ω₁/(μφ·μv), a stated μa (με) H₂ = μv·ω₁/(μφ·μa)
+    w = abs(d.omega)
+    poles: dict[str, tuple[float, float]] = {}
+    for subj in subjects:
+        kv, ka = derived[subj]
+        h1 = mu_s[subj] * w / (mu_phi * spec.scales[kv]) if kv in spec.scales else H[0]
+        mu_v = mu_s[subj] * w / (mu_phi * h1)
+        h2 = mu_v * w / (mu_phi * spec.scales[ka]) if ka in spec.scales else H[1]
+        poles[subj] = (h1, h2)
     paths = spec.paths if ("paths" in scene.show) else ()
     an.cycle = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
-                              mu_s=mu_s, H_mm=H, paths=paths)
+                              mu_s=mu_s, H_mm=poles, paths=paths)
     for k in polygons:
         an.scales["v" if k == "velocity" else "a"] = scales["v" if k == "velocity" else "a"]
     if subjects:
@@ -346,8 +357,10 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
             an.stated.add(f"{key}@{dg.subject}")
             if spec.pole_distance_mm is not None and "phi" in spec.scales:  # μv, μa follow from what is stated
                 an.stated.update(f"{name}@{dg.subject}" for name in names[1:])
+        an.stated.update(f"{name}@{dg.subject}" for name, k in zip(names[1:], derived[dg.subject]) if k in spec.scales)
         errs = _diagram_errors(an, dg)
-        an.summary["diagrams"].append({"subject": dg.subject, "kind": dg.kind, "H1_mm": H[0], "H2_mm": H[1],
+        an.summary["diagrams"].append({"subject": dg.subject, "kind": dg.kind, "H1_mm": dg.velocity.H_mm,
+                                       "H2_mm": dg.acceleration.H_mm,
                                        "mu_s": dg.mu_s, "mu_v": dg.mu_v, "mu_a": dg.mu_a, **errs})
     an.summary["cycle"] = {"positions": int(angles.size), "start_deg": math.degrees(float(angles[0])),
                            "start": spec.start}

@@ -34,8 +34,9 @@ DEFAULT_POLE_MM = 20.0
 @dataclass(frozen=True)
 class CycleSpec:
     """``[cycle]``: N, where position 1 is, the points whose paths and the subjects whose diagrams
-    are drawn, the diagrams' stated scales (``phi`` rad/mm, ``s`` m/mm, ``psi`` rad/mm) and pole
-    distances (mm; None: chosen)."""
+    are drawn, the diagrams' stated scales (``phi`` rad/mm, ``s`` m/mm, ``psi`` rad/mm; ``v``, ``a``
+    or for a link ``omega``, ``epsilon``, which fix the pole distances) and pole distances (mm;
+    None: chosen, or fixed by the stated μv, μa)."""
 
     positions: int = DEFAULT_CYCLE_POSITIONS
     start: str = "driver"
@@ -179,8 +180,13 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
 
         paths = _names(cy, "paths", is_point)
         diagrams = _names(cy, "diagrams", is_subject)
-        scales = _read_scales(cy, entries=[("phi", "angle"), ("s", "length"), ("psi", "angle")])
+        scales = _read_scales(cy, entries=[("phi", "angle"), ("s", "length"), ("psi", "angle"), ("v", "velocity"),
+                                           ("a", "acceleration"), ("omega", "omega"), ("epsilon", "epsilon")])
         poles = _read_poles(cy)
+        derived = [k for k in ("v", "a", "omega", "epsilon") if k in scales]
+        if poles is not None and derived:  # μv = μs·ω₁/(μφ·H₁): one fixes the other
+            cy.problem(cy.at("pole_distance_mm"), f"give the pole distances or the diagrams' μ{derived[0]}, not both: "
+                                                  "they fix each other (μv = μs·ω₁/(μφ·H₁), μa = μv·ω₁/(μφ·H₂))")
         cy.finish()
         for i, s in enumerate(show_list):
             if s == "paths" and "paths" not in cy.table:

@@ -432,3 +432,21 @@ branch = "forward"
 """, encoding="utf-8")
     code, out, err = run_cli("check", str(p))  # a + e = 160 mm > b = 150 mm
     assert code == 2 and err.count("\n") == 1 and "C₁ = arc(A, BC − AB) ∩ guide" in err and "does not turn fully" in err
+
+
+def test_stated_diagram_scales_fix_the_pole_distances(tmp_path):
+    """μv and μa stated: H₁ = μs·ω₁/(μφ·μv), H₂ = μv·ω₁/(μφ·μa); the values do not depend on H."""
+    extra = 'scales = { s_mm_per_mm = 2, phi_deg_per_mm = 3, v_m_s_per_mm = 0.02, a_m_s2_per_mm = 0.25 }'
+    p = scene(tmp_path, find='["v_C_diagram@3.5", "a_C_diagram@4"]', extra=extra)
+    doc = check_json(p)
+    d = doc["diagrams"][0]
+    assert d["mu_v"] == pytest.approx(0.02, rel=1e-12) and d["mu_a"] == pytest.approx(0.25, rel=1e-12)
+    assert d["H1_mm"] == pytest.approx(0.002 * 10 / (math.radians(3) * 0.02), rel=1e-12)
+    assert doc["scales"]["v@C"] == pytest.approx(0.02, rel=1e-12)
+    q = values(doc)
+    other = values(check_json(scene(tmp_path, "o.toml", find='["v_C_diagram@3.5", "a_C_diagram@4"]',
+                                    extra='scales = { s_mm_per_mm = 2, phi_deg_per_mm = 3 }\npole_distance_mm = 40')))
+    for k in q:
+        assert q[k]["graphical"] == pytest.approx(other[k]["graphical"], rel=1e-12)
+    code, _, err = run_cli("check", str(scene(tmp_path, "c.toml", extra=extra + "\npole_distance_mm = 40")))
+    assert code == 2 and "cycle.pole_distance_mm" in err and "not both" in err

@@ -134,9 +134,8 @@ class FullCycle:
     conds : dict
         Intersection step → its condition number at every position (the drawn panels' steps).
     mu_phi : float
-        rad/mm of the φ axis.
-    H_mm : (float, float)
-        The pole distances of the two differentiations.
+        rad/mm of the φ axis (each diagram's pole distances are its ``velocity.H_mm`` and
+        ``acceleration.H_mm``).
     """
 
     build: LinkageConstruction
@@ -148,7 +147,6 @@ class FullCycle:
     values: dict[str, object] = field(hash=False)
     diagrams: tuple[CycleDiagram, ...]
     mu_phi: float
-    H_mm: tuple[float, float]
     sense: float
     paths: dict[str, np.ndarray] = field(default_factory=dict, hash=False)
     polygon_failures: dict[int, str] = field(default_factory=dict, hash=False)
@@ -178,7 +176,7 @@ PATH_POSITIONS = 360
 def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarray, *,
                    polygons: Sequence[str] = (), diagrams: Sequence[str] = (), paths: Sequence[str] = (),
                    mu_phi: float, mu_s: dict[str, float] | None = None,
-                   H_mm: tuple[float, float] = (30.0, 30.0)) -> FullCycle:
+                   H_mm: tuple[float, float] | dict[str, tuple[float, float]] = (30.0, 30.0)) -> FullCycle:
     """Evaluate the construction at all positions; read off and differentiate the diagrams.
 
     Parameters
@@ -197,8 +195,8 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
         rad/mm of the φ axis.
     mu_s : dict
         Per diagram subject, its μs (m/mm) or μψ (rad/mm).
-    H_mm : (float, float)
-        Pole distances H₁ (s → v) and H₂ (v → a), mm.
+    H_mm : (float, float) or dict
+        Pole distances H₁ (s → v) and H₂ (v → a), mm — for every diagram, or per subject.
     paths : sequence of str
         Points whose paths are evaluated at k·N ≥ :data:`PATH_POSITIONS` positions (the N
         among them), for a smooth curve through the N.
@@ -264,10 +262,11 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
             rise = float(chords.sum())
             kind = "path"
         s_mm = s_m / mu
-        vdiff = differentiate_cycle(x, s_mm, period, H_mm[0], rise / mu)
-        mu_v = mu * w / (mu_phi * H_mm[0])
-        adiff = differentiate_cycle(vdiff.mid_mm, vdiff.derivative_mm, period, H_mm[1])
-        mu_a = mu_v * w / (mu_phi * H_mm[1])
+        h1, h2 = H_mm[subject] if isinstance(H_mm, dict) else H_mm
+        vdiff = differentiate_cycle(x, s_mm, period, h1, rise / mu)
+        mu_v = mu * w / (mu_phi * h1)
+        adiff = differentiate_cycle(vdiff.mid_mm, vdiff.derivative_mm, period, h2)
+        mu_a = mu_v * w / (mu_phi * h2)
         out.append(CycleDiagram(subject, kind, _frozen(x), _frozen(s_mm), vdiff, adiff, mu, mu_v, mu_a, rise / mu))
     dense: dict[str, np.ndarray] = {}
     if paths:
@@ -284,4 +283,4 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
             else:  # a position between the N cannot be built: the path through the N only
                 dense = {p: mech[p] for p in paths}
     return FullCycle(b, plan, _frozen(angles), mech, vel, acc, vals, tuple(out), mu_phi,
-                     (float(H_mm[0]), float(H_mm[1])), sense, dense, polygon_failures, conds)
+                     sense, dense, polygon_failures, conds)
