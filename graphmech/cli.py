@@ -134,6 +134,14 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
                           roller_circles=scene.cam.roller_circles, marks=can.marks, footer=footer)
         warnings = list(can.warnings)
         return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
+    if scene.cycle is not None:
+        from graphmech.cycle_check import analyse_cycle
+        from graphmech.methods.cycle_figures import cycle_sheet
+
+        can = analyse_cycle(scene)
+        sheet = cycle_sheet(scene.title, can, list(scene.show), page_size(scene), footer)
+        warnings = list(can.warnings)
+        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
     fit = rows_that_fit(page_size(scene))
     if len(scene.positions.values) > fit:
         raise SceneError([("driver", f"{len(scene.positions.values)} positions do not fit one sheet of "
@@ -264,6 +272,12 @@ def _check(args: argparse.Namespace) -> int:
         extra_doc["impacts"] = an.impacts
         if an.divisions:
             extra_doc["divisions"] = an.divisions
+    elif scene.cycle is not None:
+        from graphmech.cycle_check import analyse_cycle, judge_cycle
+
+        an = analyse_cycle(scene, tuple(extra))
+        verdicts = judge_cycle(an, args.precision)
+        extra_doc.update(an.summary)
     else:
         an = analyse(scene, tuple(extra))
         verdicts = judge(an, args.precision)
@@ -279,6 +293,8 @@ def _check(args: argparse.Namespace) -> int:
             verdict = "" if br["ok"] is None else (f" ≤ {br['time_limit']:g} s: meets the requirement" if br["ok"]
                                                      else f" > {br['time_limit']:g} s: DOES NOT meet the requirement")
             print(f"stopping time {br['t_stop']:.6g} s{verdict}")
+        for line in getattr(an, "summary_lines", lambda: [])():  # a cycle's class, ranges and diagrams
+            print(line)
         for w in an.warnings:
             print(f"warning: {w}", file=sys.stderr)
     return EXIT_OUT_OF_TOLERANCE if bad else EXIT_OK

@@ -226,6 +226,9 @@ class Scene:
         The cam of a cam scene (None otherwise).
     flywheel : FlywheelScene or None
         The machine and the flywheel problem of a flywheel scene (None otherwise).
+    cycle : graphmech.scene_cycle.CycleScene or None
+        A linkage scene's full cycle ([cycle]) and characteristics (None when it asks for
+        neither).
     """
 
     source: str
@@ -243,6 +246,7 @@ class Scene:
     forces: Any = None  # a ForceScene (graphmech.scene_forces) in a force scene
     efficiency: Any = None  # graphmech.scene_efficiency.EfficiencyProblem of an [efficiency] scene
     balancing: Any = None  # graphmech.scene_balancing.BalancingProblem of a [balancing] scene
+    cycle: Any = None  # graphmech.scene_cycle.CycleScene: a full cycle and/or the characteristics
 
 
 # --------------------------------------------------------------------------------------------
@@ -1959,13 +1963,19 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         top.finish()
         problems.sort(key=lambda p: _rank(p, order))
         raise SceneError(problems, source)
-    title, show, find = _read_header(top)
+    from graphmech.scene_cycle import CYCLE_SHOW_CHOICES, read_cycle
+
+    default = ("cycle",) if "cycle" in data else ("characteristics",) if "characteristics" in data else SHOW_CHOICES
+    title, show, find = _read_header(top, SHOW_CHOICES + CYCLE_SHOW_CHOICES, default)
     scales = _read_scales(top)
     linkage, positions, _ = _read_linkage(top)
+    cycle = None
+    if "cycle" in data or "characteristics" in data or any(s in CYCLE_SHOW_CHOICES for s in show):
+        cycle, positions = read_cycle(top, data, show, linkage, positions)
     measured = _read_measured(top, positions.labels if positions else None)
     precision = _read_check(top)
     page = _read_page(top)
-    top.known.update(_TOP_KEYS)
+    top.known.update(_TOP_KEYS + ("cycle", "characteristics"))
     top.finish()
     if problems or linkage is None:
         problems.sort(key=lambda p: _rank(p, order))
@@ -1981,6 +1991,7 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         measured=measured,
         precision_mm=precision,
         page=page,
+        cycle=cycle,
     )
 
 

@@ -549,7 +549,7 @@ def test_header_problems() -> None:
     assert problems_of(text).problems == [
         ("title", "too long (201 characters; at most 200)"),
         ("show[1]", "velocity is listed twice"),
-        ("show[2]", "unknown value 'speed': use mechanism, velocity or acceleration"),
+        ("show[2]", "unknown value 'speed': use mechanism, velocity, acceleration, cycle, paths, diagrams or characteristics"),
         ("find[1]", "must be a non-empty string (a quantity name)"),
         ("find[2]", "'v_C' is listed twice"),
     ]

@@ -13,7 +13,8 @@ integration by chords
     mean_i over the run H, the chord rises over the run Δx_i).
 differentiation by a ray
     a straight line from the origin to (x_end, y_end) is differentiated by the ray from P
-    parallel to it: the ray cuts the ordinate axis at H·y_end/x_end.
+    parallel to it: the ray cuts the ordinate axis at H·y_end/x_end — the one-chord case of
+    :func:`graphmech.methods.graphical_differentiation.differentiate_by_chords`, which does it.
 
 Scales: if the abscissa is at μx (units per mm) and the integrand at μy, the integral curve is at
 ``μ_integral = μy·μx·H`` (:func:`integral_scale`); reading back, the derivative of a line drawn at
@@ -161,13 +162,16 @@ def differentiate_by_ray(x_mm: float, y_end_mm: float, H_mm: float) -> float:
     >>> differentiate_by_ray(160.0, -20.0, 40.0)   # a line falling 20 mm over 160 mm, H = 40 mm
     -5.0
     """
+    from graphmech.methods.graphical_differentiation import differentiate_by_chords  # the same ray
+
     if not (x_mm > 0.0 and math.isfinite(x_mm)):
         raise ValueError(f"the line's end abscissa must be positive and finite, not {x_mm!r}")
     if not (H_mm > 0.0 and math.isfinite(H_mm)):
         raise ValueError(f"the pole distance H must be positive and finite, not {H_mm!r}")
     if not math.isfinite(y_end_mm):
         raise ValueError(f"the line's end ordinate must be finite, not {y_end_mm!r}")
-    return float(H_mm) * float(y_end_mm) / float(x_mm)
+    # a straight line is its own chord: the ray of its one interval
+    return float(differentiate_by_chords([0.0, float(x_mm)], [0.0, float(y_end_mm)], float(H_mm)).derivative_mm[0])
 
 
 __all__ = ["Integration", "differentiate_by_ray", "integral_scale", "integrate_by_chords"]

@@ -1,0 +1,106 @@
+"""Characteristics: the drawn construction against the closed forms, over many linkages."""
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from graphmech.exact import characteristics as X
+from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Guide, Linkage
+from graphmech.methods.characteristics import draw_characteristics, grashof_class, grashof_ranges
+
+lengths = st.floats(0.01, 0.2)
+
+
+def _wrap_diff(a: float, b: float) -> float:
+    return abs((a - b + math.pi) % (2 * math.pi) - math.pi)
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@given(st.floats(0.02, 1.0), lengths, lengths, lengths, st.sampled_from(["left", "right"]),
+       st.sampled_from([1.0, -1.0]), st.floats(0, 2 * math.pi))
+def test_fourbar_drawn_agrees_with_the_cosine_rule(share, b, c, d, branch, sense, tilt):
+    a = share * min(b, c, d)  # mostly the shortest link: crank-rockers and double cranks
+    kind = grashof_class(a, b, c, d)
+    assert kind == X.fourbar_class(a, b, c, d) or kind == "change_point" or X.fourbar_class(a, b, c, d) == "change_point"
+    assume(kind in ("crank_rocker_AB", "double_crank"))
+    D = (d * math.cos(tilt), d * math.sin(tilt))
+    lk = Linkage({"A": (0.0, 0.0), "D": D}, Crank("1", "A", "B", a, 10.0 * sense),
+                 (RRR("B", "C", "D", ("2", "3"), (b, c), branch),))
+    dr = draw_characteristics(lk, 0.001)
+    ex = X.fourbar(0j, complex(*D), a, b, c, branch, sense)
+    assert dr.grashof == ex.grashof
+    assert dr.gamma_min == pytest.approx(ex.gamma_min, abs=1e-9)
+    if ex.theta is None:
+        assert dr.theta is None and kind == "double_crank"
+        return
+    # near a change point the extremes are tangent intersections: the drawing keeps √ε of its digits
+    tol = 1e-9 if min(abs(b + c - a - d), abs(b - a - abs(d - c))) > 1e-4 * (a + b + c + d) else 1e-5
+    assert dr.theta == pytest.approx(ex.theta, abs=tol)
+    assert dr.psi == pytest.approx(ex.psi, abs=tol)
+    assert _wrap_diff(dr.phi_start, ex.phi_start) < tol and _wrap_diff(dr.phi_end, ex.phi_end) < tol
+    # the working stroke is the longer one: 180° + θ in the crank's sense
+    travel = (sense * (ex.phi_end - ex.phi_start)) % (2 * math.pi)
+    assert travel == pytest.approx(math.pi + ex.theta, abs=1e-9)
+
+
+@settings(max_examples=100, deadline=None)
+@given(lengths, st.floats(1.2, 5.0), st.floats(-0.9, 0.9), st.sampled_from(["forward", "backward"]),
+       st.sampled_from([1.0, -1.0]), st.floats(-math.pi, math.pi))
+def test_slider_crank_drawn_agrees(a, ratio, off, branch, sense, angle):
+    b = a * ratio
+    e = off * (b - a)
+    g = (math.cos(angle), math.sin(angle))
+    through = (-e * g[1], e * g[0])  # the guide passes e to the left of A
+    lk = Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", a, 10.0 * sense),
+                 (RRP("B", "C", ("2", "3"), b, Guide(through, angle), branch),))
+    dr = draw_characteristics(lk, 0.001)
+    ex = X.slider_crank(0j, complex(*through), angle, a, b, branch, sense)
+    assert dr.theta == pytest.approx(ex.theta, abs=1e-9)
+    assert dr.stroke_mm * 0.001 == pytest.approx(ex.stroke, rel=1e-9)
+    assert dr.gamma_min == pytest.approx(ex.gamma_min, abs=1e-9)
+    assert _wrap_diff(dr.gamma_min_at, ex.gamma_min_at) < 1e-9
+    assert _wrap_diff(dr.phi_start, ex.phi_start) < 1e-9
+
+
+@given(st.floats(0.1, 0.95), st.sampled_from([1.0, -1.0]))
+def test_guide_bar_theta_equals_psi(r, sense):
+    lk = Linkage({"A": (0.0, 0.0), "C": (0.0, -0.2)}, Crank("1", "A", "B", 0.2 * r, 10.0 * sense),
+                 (RPR("B", "C", ("2", "3"), "second"),))
+    dr = draw_characteristics(lk, 0.001)
+    ex = X.guide_bar(0j, -0.2j, 0.2 * r, sense)
+    assert dr.theta == pytest.approx(ex.theta, abs=1e-9) == pytest.approx(2 * math.asin(r), abs=1e-9)
+    assert dr.psi == pytest.approx(ex.theta, abs=1e-9)
+    assert ex.gamma_min == dr.gamma_min == math.pi / 2
+
+
+def test_ranges_by_the_sum_rule_and_by_closure_agree():
+    for b, c, d in ((50, 35, 30), (40, 60, 80), (100, 30, 45), (20, 20, 20)):
+        assert [(k, pytest.approx(lo), pytest.approx(hi)) for k, lo, hi in grashof_ranges(b, c, d)] == \
+            X.grashof_ranges(b, c, d)
+
+
+def test_results_are_frozen():
+    ex = X.fourbar(0j, 72 + 0j, 28, 52, 50, "left")
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        ex.theta = 0.0  # type: ignore[misc]
+
+
+def test_a_crank_that_does_not_turn_has_no_characteristics():
+    with pytest.raises(ValueError, match="does not turn fully"):
+        X.fourbar(0j, 30 + 0j, 30, 50, 35, "left")
+    lk = Linkage({"A": (0.0, 0.0), "D": (0.03, 0.0)}, Crank("1", "A", "B", 0.03, 10.0),
+                 (RRR("B", "C", "D", ("2", "3"), (0.05, 0.035), "left"),))
+    with pytest.raises(ValueError, match="does not turn fully"):
+        draw_characteristics(lk, 0.001)
+
+
+def test_the_drawn_characteristics_are_frozen():
+    lk = Linkage({"A": (0.0, 0.0), "D": (0.072, 0.0)}, Crank("1", "A", "B", 0.028, 10.0),
+                 (RRR("B", "C", "D", ("2", "3"), (0.052, 0.05), "left"),))
+    dr = draw_characteristics(lk, 0.001)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        dr.theta = 0.0  # type: ignore[misc]

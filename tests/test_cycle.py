@@ -1,0 +1,452 @@
+"""Full-cycle and characteristics scenes: the cycle through both dead centres, N = 3600, a
+parallelogram at its change point, what is refused, and that only what is asked is computed."""
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+
+import pytest
+
+from graphmech.cli import render_scene
+from tests.conftest import ROOT, SCENES, check_json, run_cli, values
+
+SLIDER = """
+title = "Centred slider-crank, {n} positions"
+show = {show}
+find = {find}
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+[frame]
+A = [0, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = 50
+angle = {angle}
+omega = 10
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["2", "3"]
+length = 200
+guide = {{ through = [0, 0], angle = 0 }}
+branch = "forward"
+[cycle]
+positions = {n}
+start = "{start}"
+diagrams = ["C", "2"]
+paths = ["C"]
+{extra}
+[page]
+size = "A3"
+"""
+
+
+def scene(tmp_path, name="s.toml", *, n=12, show='["cycle", "velocity", "acceleration", "diagrams"]',
+          find='["v_C@1", "v_C@7", "a_C@1", "s_C@7", "v_C_diagram@1.5", "a_C_diagram@7", "omega_2@4"]',
+          start="extreme", angle=0, extra=""):
+    p = tmp_path / name
+    p.write_text(SLIDER.format(n=n, show=show, find=find, start=start, angle=angle, extra=extra), encoding="utf-8")
+    return p
+
+
+def test_a_full_cycle_through_both_dead_centres(tmp_path):
+    """Centred slider-crank, 12 positions from the extreme: positions 1 and 7 are the dead centres."""
+    doc = check_json(scene(tmp_path))
+    q = values(doc)
+    # θ = 0 (K = 1): both strokes take 180°; position 1 is then the outer dead centre (crank at 0°)
+    assert doc["cycle"]["start_deg"] == pytest.approx(0.0, abs=1e-9)
+    for k in ("1", "7"):  # a zero velocity at a crank-driven dead centre is a normal result
+        assert abs(q[f"v_C@{k}"]["graphical"]) < 1e-12 and not q[f"v_C@{k}"]["ill_conditioned"]
+    assert q["a_C@1"]["graphical"] == pytest.approx(-10 ** 2 * 0.05 * (1 + 50 / 200), rel=1e-12)  # −ω²r(1 + λ)
+    assert q["s_C@7"]["graphical"] == pytest.approx(-0.1, rel=1e-12)  # the stroke 2·AB
+    assert abs(q["v_C_diagram@1.5"]["rel_error"]) < 0.05 and abs(q["a_C_diagram@7"]["rel_error"]) < 0.1
+    assert q["omega_2@4"]["graphical"] == pytest.approx(q["omega_2@4"]["exact"], rel=1e-12)
+    text = json.dumps(doc)
+    assert "NaN" not in text and "Infinity" not in text
+    d = doc["diagrams"][0]
+    assert d["subject"] == "C" and 0 < d["max_rel_error_v"] < 0.05 and 0 < d["max_rel_error_a"] < 0.1
+
+
+def test_the_crank_rockers_rocker_is_at_rest_at_position_1():
+    q = values(check_json(SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"))
+    assert q["omega_3@4"]["graphical"] == pytest.approx(q["omega_3@4"]["exact"], rel=1e-12)
+    assert q["psi_3@7"]["graphical"] == pytest.approx(q["psi_3@7"]["exact"], rel=1e-12)
+    # graphical differentiation at 12 positions: within a few per cent, not 1e-9
+    assert 1e-4 < q["omega_3_diagram@1.5"]["rel_error"] < 0.02
+    assert 1e-4 < q["alpha_3_diagram@4"]["rel_error"] < 0.02
+
+
+def test_n_3600_is_checked_and_drawn_thinned(tmp_path):
+    p = scene(tmp_path, n=3600, find='["v_C@1", "v_C@1801", "s_C@1801", "v_C_diagram@900.5", "a_C_diagram@1"]')
+    doc = check_json(p)
+    q = values(doc)
+    assert abs(q["v_C@1801"]["graphical"]) < 1e-12
+    assert q["s_C@1801"]["graphical"] == pytest.approx(-0.1, rel=1e-12)
+    assert doc["diagrams"][0]["max_rel_error_v"] < 1e-6 and doc["diagrams"][0]["max_rel_error_a"] < 1e-5
+    svg, warnings = render_scene(p)
+    assert svg.count("<svg") == 1
+    # 18 mechanisms drawn, not 3600: the note says so, and the file stays small
+    assert "every 200th of the 3600 positions drawn" in svg
+    assert len(svg) < 3_000_000
+
+
+def test_only_what_is_asked_is_computed(tmp_path, monkeypatch):
+    import graphmech.cycle_check as cc
+
+    calls = []
+    real = cc.evaluate_cycle
+    monkeypatch.setattr(cc, "evaluate_cycle", lambda *a, **k: calls.append(k) or real(*a, **k))
+    p = scene(tmp_path, show='["characteristics"]', find='["theta", "stroke"]')
+    q = values(check_json(p))
+    assert calls == []  # a characteristics scene evaluates no cycle
+    assert q["theta"]["graphical"] == pytest.approx(0.0, abs=1e-12) and q["stroke"]["exact"] == pytest.approx(0.1)
+    calls.clear()
+    p = scene(tmp_path, show='["cycle"]', find='["s_C@3"]')
+    check_json(p)
+    assert calls and all(not k.get("polygons") for k in calls)  # no polygons evaluated when none are shown
+    assert all(k.get("diagrams") == ["C"] for k in calls)  # only the diagram a value is found on
+
+
+def test_a_parallelogram_at_its_change_point(tmp_path):
+    p = tmp_path / "para.toml"
+    p.write_text("""
+title = "Parallelogram"
+show = ["characteristics"]
+find = ["gamma_min"]
+[frame]
+A_mm = [0, 0]
+D_mm = [60, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 30
+angle_deg = 60
+omega_rad_s = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths_mm = [60, 30]
+branch = "left"
+""", encoding="utf-8")
+    doc = check_json(p)
+    assert doc["characteristics"]["grashof"] == "change_point" == doc["characteristics"]["grashof_exact"]
+    assert any("Grashof's equality" in w for w in doc["warnings"])
+    assert values(doc)["gamma_min"]["graphical"] == pytest.approx(0.0, abs=1e-6)  # all four links on one line
+    svg, _ = render_scene(p)
+    assert "change point" in svg
+    p.write_text(p.read_text().replace('find = ["gamma_min"]', 'find = ["theta"]'))
+    code, out, err = run_cli("check", str(p))
+    assert code == 2 and err.count("\n") == 1 and "no extreme positions" in err
+
+
+@pytest.mark.parametrize("edit, key", [
+    (('positions = 12', 'positions = 2'), "cycle.positions"),
+    (('start = "extreme"', 'start = "dead"'), "cycle.start"),
+    (('diagrams = ["C", "2"]', 'diagrams = ["A"]'), "cycle.diagrams[0]"),
+    (('paths = ["C"]', 'paths = ["Q"]'), "cycle.paths[0]"),
+    (('angle = 0', 'angle = [0, 30]'), "driver.angle"),
+    (('omega = 10', 'omega = 10\nepsilon_rad_s2 = 2'), "driver.epsilon"),
+])
+def test_bad_cycle_input_is_one_line_naming_the_key(tmp_path, edit, key):
+    p = scene(tmp_path)
+    p.write_text(p.read_text().replace(*edit))
+    code, out, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and err.count("\n") == 1 and f": {key}:" in err, err
+    assert not (tmp_path / "x.svg").exists()
+
+
+def test_mechanism_is_refused_beside_a_cycle(tmp_path):
+    code, _, err = run_cli("check", str(scene(tmp_path, show='["mechanism", "cycle"]')))
+    assert code == 2 and "show[0]" in err and '"cycle"' in err
+
+
+def test_unknown_find_names_are_refused(tmp_path):
+    code, _, err = run_cli("check", str(scene(tmp_path, find='["v_C_diagram@3"]')))
+    assert code == 2 and "find[0]" in err and "interval middle" in err
+
+
+def test_same_scene_same_svg():
+    a, _ = render_scene(SCENES / "linkage.slider_crank_offset-cycle.toml")
+    b, _ = render_scene(SCENES / "linkage.slider_crank_offset-cycle.toml")
+    assert a == b  # (the committed figure is compared, parsed, in tests/test_cli.py)
+
+
+def test_a_cycle_sheet_never_imports_matplotlib():
+    code = ("import sys; from graphmech.cli import main; "
+            f"main(['check', {str(SCENES / 'linkage.slider_crank_offset-cycle.toml')!r}]); "
+            "assert not any(m.split('.')[0] == 'matplotlib' for m in sys.modules), 'matplotlib imported'")
+    r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0 and "matplotlib imported" not in r.stderr, r.stderr
+
+
+def test_a_crank_that_cannot_turn_has_no_cycle(tmp_path):
+    """A double rocker (AB = 30 in the ranges problem's four-bar): one line naming the position."""
+    text = (SCENES / "linkage.grashof_ranges.toml").read_text(encoding="utf-8")
+    text = text.replace("length = 10", "length = 30").replace('show = ["characteristics"]', 'show = ["cycle"]')
+    text = text.replace("[characteristics]\nranges = true", "[cycle]\npositions = 12")
+    head, _, tail = text.partition("find = [")
+    text = head + "find = []\n" + tail.split("]\n", 1)[1]
+    p = tmp_path / "dr.toml"
+    p.write_text(text, encoding="utf-8")
+    code, _, err = run_cli("check", str(p))
+    assert code == 2 and err.count("\n") == 1 and "cannot make a full turn" in err and "position" in err, err
+
+
+def test_a_slider_driven_linkage_has_no_cycle(tmp_path):
+    p = tmp_path / "sl.toml"
+    p.write_text("""
+show = ["cycle"]
+[cycle]
+positions = 12
+[frame]
+O_mm = [0, 0]
+D_mm = [100, 60]
+[driver]
+type = "slider"
+link = "1"
+point = "B"
+guide = { through = "O", angle_deg = 0 }
+position_mm = 40
+velocity_m_s = 0.5
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths_mm = [80, 50]
+branch = "right"
+""", encoding="utf-8")
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and err.count("\n") == 1 and ": driver.type:" in err and "crank" in err, err
+
+
+def test_the_cycle_panel_numbers_positions_not_links():
+    from graphmech.cycle_check import analyse_cycle
+    from graphmech.methods.cycle_figures import cycle_items
+    from graphmech.render.primitives import Label
+    from graphmech.scene import load_scene
+
+    an = analyse_cycle(load_scene(SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"))
+    numbers = sorted(int(it.text) for it in cycle_items(an.cycle, ("E",)) if isinstance(it, Label) and it.text.isdigit())
+    assert numbers == list(range(1, 13))
+
+
+def test_a_students_hand_diagram_is_judged_against_the_same_chords(tmp_path):
+    p = scene(tmp_path, find='["v_C_diagram@3.5"]')
+    q = values(check_json(p))["v_C_diagram@3.5"]
+    mu = q["scale"]
+    good, bad = q["graphical"] + 0.4 * mu, q["graphical"] + 0.6 * mu  # 0.4 mm and 0.6 mm off on the drawing
+    code, out, _ = run_cli("check", str(p), "--json", "--measured", f"v_C_diagram@3.5={good}")
+    doc = json.loads(out)
+    assert code == 0 and doc["measured"][0]["ok"] and doc["measured"][0]["expected"] == q["graphical"]
+    code, out, _ = run_cli("check", str(p), "--json", "--measured", f"v_C_diagram@3.5={bad}")
+    assert code == 1 and not json.loads(out)["measured"][0]["ok"]
+    code, _, err = run_cli("check", str(p), "--measured", "v_C_diagram=1")
+    assert code == 2 and "name the position" in err
+
+
+def test_a_parallelogram_full_cycle_passes_its_change_points(tmp_path):
+    """At φ = 0° and 180° all four links lie on one line: the mechanism is drawn there, its velocity
+    polygon cannot be (⟂BC and ⟂DC are parallel) and is left out with a warning naming the position;
+    the fixed branch runs on as a parallelogram on one side and an antiparallelogram on the other."""
+    p = tmp_path / "para.toml"
+    p.write_text("""
+title = "Parallelogram through its change points"
+show = ["cycle", "velocity", "diagrams"]
+find = ["omega_3@4", "omega_3@10", "psi_3@4", "omega_3_diagram@3.5"]
+[frame]
+A_mm = [0, 0]
+D_mm = [60, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 30
+angle_deg = 0
+omega_rad_s = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths_mm = [60, 30]
+branch = "left"
+[cycle]
+positions = 12
+diagrams = ["3"]
+[page]
+size = "A3"
+""", encoding="utf-8")
+    doc = check_json(p)
+    q = values(doc)
+    assert q["omega_3@4"]["graphical"] == pytest.approx(10.0, rel=1e-12)  # parallelogram: ω3 = ω1
+    assert q["omega_3@10"]["graphical"] != pytest.approx(10.0, rel=1e-3)  # antiparallelogram
+    assert q["omega_3_diagram@3.5"]["graphical"] == pytest.approx(10.0, rel=1e-12)  # ψ linear: chords exact
+    gone = [w for w in doc["warnings"] if "no polygon" in w]
+    assert [w.split(" (")[0] for w in gone] == ["position 1", "position 7"]
+    assert not any("φ₁ = 1°" in w for w in doc["warnings"])  # positions are named by number, not as angles
+    assert "NaN" not in json.dumps(doc)
+    svg, _ = render_scene(p)
+    assert "no polygon at positions 1, 7" in svg
+
+
+def test_ill_conditioned_positions_are_one_line_however_many(tmp_path):
+    """A crank-rocker a hair from its change point (20 + 80 vs 60 + 40.02): near the folded position the
+    coupler and rocker almost align; 360 positions give one summary line per kind, not hundreds."""
+    p = tmp_path / "near.toml"
+    p.write_text("""
+title = "Near a change point"
+show = ["cycle", "velocity"]
+find = ["omega_3@1"]
+[frame]
+A_mm = [0, 0]
+D_mm = [80, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 20
+angle_deg = 0
+omega_rad_s = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["2", "3"]
+lengths_mm = [60, 40.02]
+branch = "left"
+[cycle]
+positions = 360
+""", encoding="utf-8")
+    doc = check_json(p)
+    summary = [w for w in doc["warnings"] if w.startswith(("ill-conditioned intersections", "shallow intersections"))]
+    assert summary and len(summary) <= 2
+    assert "positions 1" in summary[0] or "position" in summary[0]
+    assert len(doc["warnings"]) == len(summary)  # not one line per position and step
+
+
+@pytest.mark.parametrize("direction", ["ccw", "cw"])
+def test_the_diagrams_follow_the_cranks_sense(tmp_path, direction):
+    """Numbered in the crank's sense either way; the chords' values agree with the exact ones to O(1/N²)."""
+    p = scene(tmp_path, n=72, find='["v_C_diagram@10.5", "a_C_diagram@30", "omega_2_diagram@50.5", "alpha_2_diagram@5"]',
+              extra="")
+    p.write_text(p.read_text().replace("omega = 10", f'omega = 10\ndirection = "{direction}"'))
+    doc = check_json(p)
+    for row in doc["quantities"]:
+        assert row["rel_error"] < 5e-3, row
+    assert doc["diagrams"][0]["max_rel_error_v"] < 1e-3
+
+
+def test_a_guide_bar_cycle_starts_at_its_extreme(tmp_path):
+    p = tmp_path / "gb.toml"
+    text = (SCENES / "linkage.quick_return_timing-guide_bar.toml").read_text(encoding="utf-8")
+    text = text.replace('show = ["characteristics"]', 'show = ["cycle", "diagrams"]').replace(
+        "[characteristics]\nt_work_s = 7", '[cycle]\npositions = 24\nstart = "extreme"\ndiagrams = ["3"]')
+    head, _, tail = text.partition("find = [")
+    text = head + 'find = ["phi_start"]\n' + tail.split("]\n", 1)[1]
+    p.write_text(text, encoding="utf-8")
+    doc = check_json(p)
+    ch = values(doc)
+    assert doc["cycle"]["start_deg"] == pytest.approx(ch["phi_start"]["exact"], abs=1e-9)
+    assert doc["diagrams"][0]["max_rel_error_v"] < 0.02
+
+
+def test_a_points_way_along_its_path_and_a_link_that_turns_fully(tmp_path):
+    """Coupler point E: s is its chords laid end to end (dividers), v its speed, a its tangential
+    acceleration, all O(1/N²) from the exact ∫|v|dt, |v|, v·a/|v|; the crank (link 1) gains a full
+    turn per cycle, which closes its ψ–φ curve, so its chords are exact."""
+    text = (SCENES / "linkage.fourbar_28_52_50_72-cycle.toml").read_text(encoding="utf-8")
+    text = text.replace('diagrams = ["3"]', 'diagrams = ["3", "E", "1"]')
+    head, _, tail = text.partition("find = [")
+    rest = tail.split("]\n", 1)[1]
+    errs = {}
+    for n in (12, 120):
+        p = tmp_path / f"e{n}.toml"
+        p.write_text(head + 'find = ["s_E@5", "v_E_diagram@5.5", "a_E_diagram@3", "omega_1_diagram@3.5", '
+                     '"psi_1@7"]\n' + rest.replace("positions = 12", f"positions = {n}"), encoding="utf-8")
+        doc = check_json(p)
+        q = values(doc)
+        assert q["omega_1_diagram@3.5"]["graphical"] == pytest.approx(10.0, rel=1e-12)
+        assert q["psi_1@7"]["graphical"] == pytest.approx(360.0 * 6 / n, rel=1e-12)
+        e = next(d for d in doc["diagrams"] if d["subject"] == "E")
+        assert e["kind"] == "path"
+        errs[n] = (e["max_rel_error_v"], e["max_rel_error_a"])
+    assert errs[12][0] / errs[120][0] == pytest.approx(100, rel=0.2)  # order 2
+    assert errs[12][1] / errs[120][1] == pytest.approx(100, rel=0.7)
+    assert errs[120][0] < 1e-3 and errs[120][1] < 1e-2
+
+
+def test_the_compressors_cycle_starts_where_its_flywheel_project_does():
+    """start = "extreme" finds the outer dead centre the flywheel scene states by hand, asin(e/(a + b)):
+    the twelve positions of the kinematics sheet are those the reduction to the crank uses."""
+    from graphmech.scene import load_scene
+
+    cyc = load_scene(SCENES / "fly.compressor_course_project-cycle.toml")
+    fly = load_scene(SCENES / "fly.compressor_course_project.toml")
+    assert cyc.positions.labels == fly.positions.labels == tuple(str(k) for k in range(1, 13))
+    for a, b in zip(cyc.positions.values, fly.positions.values):
+        assert abs((a - b + math.pi) % (2 * math.pi) - math.pi) < 1e-12
+    q = values(check_json(SCENES / "fly.compressor_course_project-cycle.toml"))
+    assert q["phi_start"]["graphical"] == pytest.approx(math.degrees(math.asin(10 / 375)), rel=1e-12)
+    assert q["s_C@7"]["graphical"] == pytest.approx(-q["stroke"]["exact"], abs=1e-5)  # position 7: near the inner dead centre
+
+
+def test_the_text_table_tells_the_class_the_ranges_and_the_diagrams_errors():
+    code, out, _ = run_cli("check", str(SCENES / "linkage.grashof_ranges.toml"))
+    assert code == 0 and "crank rocker AB by Grashof's rule" in out and "double crank: 45 … 55 mm" in out
+    code, out, _ = run_cli("check", str(SCENES / "linkage.slider_crank_offset-cycle.toml"))
+    assert code == 0 and "diagrams of C by chords (H1 = 20, H2 = 15 mm): largest error over the cycle 1.6e-02 (v)" in out
+
+
+def test_a_slider_crank_whose_crank_cannot_turn_names_the_construction_step(tmp_path):
+    p = tmp_path / "sc.toml"
+    p.write_text("""
+show = ["characteristics"]
+find = ["theta"]
+[frame]
+A_mm = [0, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 100
+angle_deg = 90
+omega_rad_s = 10
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["2", "3"]
+length_mm = 150
+guide = { through_mm = [0, 60], angle_deg = 0 }
+branch = "forward"
+""", encoding="utf-8")
+    code, out, err = run_cli("check", str(p))  # a + e = 160 mm > b = 150 mm
+    assert code == 2 and err.count("\n") == 1 and "C₁ = arc(A, BC − AB) ∩ guide" in err and "does not turn fully" in err
+
+
+def test_stated_diagram_scales_fix_the_pole_distances(tmp_path):
+    """μv and μa stated: H₁ = μs·ω₁/(μφ·μv), H₂ = μv·ω₁/(μφ·μa); the values do not depend on H."""
+    extra = 'scales = { s_mm_per_mm = 2, phi_deg_per_mm = 3, v_m_s_per_mm = 0.02, a_m_s2_per_mm = 0.25 }'
+    p = scene(tmp_path, find='["v_C_diagram@3.5", "a_C_diagram@4"]', extra=extra)
+    doc = check_json(p)
+    d = doc["diagrams"][0]
+    assert d["mu_v"] == pytest.approx(0.02, rel=1e-12) and d["mu_a"] == pytest.approx(0.25, rel=1e-12)
+    assert d["H1_mm"] == pytest.approx(0.002 * 10 / (math.radians(3) * 0.02), rel=1e-12)
+    assert doc["scales"]["v@C"] == pytest.approx(0.02, rel=1e-12)
+    q = values(doc)
+    other = values(check_json(scene(tmp_path, "o.toml", find='["v_C_diagram@3.5", "a_C_diagram@4"]',
+                                    extra='scales = { s_mm_per_mm = 2, phi_deg_per_mm = 3 }\npole_distance_mm = 40')))
+    for k in q:
+        assert q[k]["graphical"] == pytest.approx(other[k]["graphical"], rel=1e-12)
+    code, _, err = run_cli("check", str(scene(tmp_path, "c.toml", extra=extra + "\npole_distance_mm = 40")))
+    assert code == 2 and "cycle.pole_distance_mm" in err and "not both" in err
