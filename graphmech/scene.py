@@ -61,7 +61,7 @@ MAX_POSITIONS = 3600
 #: The longest title, in characters.
 MAX_TITLE = 200
 #: What a scene may show, in the order a textbook draws them.
-SHOW_CHOICES = ("mechanism", "velocity", "acceleration")
+SHOW_CHOICES = ("mechanism", "velocity", "acceleration", "instant_centres")
 #: What a cam scene may show: the profile by inversion and the s–δ, v–δ, a–δ diagrams.
 CAM_SHOW_CHOICES = ("profile", "displacement", "velocity", "acceleration")
 #: What a cam scene shows when it does not say.

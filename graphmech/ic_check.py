@@ -1,0 +1,471 @@
+"""Checking the instant-centre method of a linkage scene against the exact kinematics.
+
+A linkage scene asks for the instant centres with ``show = ["instant_centres"]`` (the centres,
+the Kennedy lines and the polygon of links are drawn) and for values by name in ``find``:
+
+``P13``             the centre: rows ``x_P13``, ``y_P13`` (m), or ``dir_P13`` (deg in [0, 180)) at infinity
+``x_P13``, ``y_P13``, ``dir_P13``   one coordinate, or the direction of a centre at infinity
+``omega_3_ic``      ω3 from the centres, ``ω3 = ω2·P12P23/P13P23`` (rad/s, + CCW)
+``v_C_ic``          the speed of point C, ``|ω_k|·P1kC`` (m/s)
+``v_min_BC_ic``     the least speed of the points of line BC (fixed on one link) (m/s) …
+``s_min_BC_ic``     … and where that point E is: its signed distance from B along B→C (m)
+``phi_v0_C``        the crank angles at which v_C = 0 (rows ``phi_v0_C_1``, ``phi_v0_C_2`` …, deg)
+
+(``_ic`` tells these apart from the polygons' ``omega_3``, ``v_C``; ``@`` stays the position
+suffix: ``omega_3_ic@165``.) Every value is compared with :mod:`graphmech.exact.linkage`, which
+shares nothing with the construction: the exact centre P_ij is where the exact velocity fields
+of links i and j agree, ``P = k × (v0_i − v0_j)/(ω_i − ω_j)`` (at infinity ⟂ ``v0_i − v0_j`` when
+ω_i = ω_j); the exact zero-velocity angles are the roots of the exact ω_k(φ) or v(φ).
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+import numpy as np
+
+from graphmech import tolerances as T
+from graphmech.errors import SceneError
+from graphmech.exact.linkage import Kinematics, solve as solve_exact
+from graphmech.mechanisms.linkage import Crank, Linkage
+from graphmech.methods.instant_centres import (InstantCentres, centre_name, instant_centres, least_speed_on_line,
+                                               pair, polygon_of_links)
+
+#: The ``show`` entry that draws the instant centres.
+SHOW = "instant_centres"
+#: Samples of the crank's turn searched for a vanishing velocity (then refined by Brent's method).
+ZERO_SAMPLES = 720
+
+_CENTRE = re.compile(r"(x_|y_|dir_)?P([0-9A-Za-z]+?)_?([0-9A-Za-z]+)")
+_OMEGA = re.compile(r"omega_([0-9A-Za-z]{1,8})_ic")
+_SPEED = re.compile(r"v_([A-Z]+[0-9]*['′]*)_ic")
+_LEAST = re.compile(r"(v|s)_min_([A-Z][A-Z0-9'′]*)_ic")
+_ZERO = re.compile(r"phi_v0_([A-Z]+[0-9]*['′]*)")
+
+
+def claims(name: str) -> bool:
+    """Whether a ``find`` name (without its ``@position``) is the instant-centre method's."""
+    base = name.partition("@")[0]
+    return any(p.fullmatch(base) for p in (_CENTRE, _OMEGA, _SPEED, _LEAST, _ZERO))
+
+
+def asked(scene: Any) -> bool:
+    """Whether the scene shows or finds anything by instant centres."""
+    return SHOW in scene.show or any(claims(n) for n in scene.find)
+
+
+@dataclass
+class ICAnalysis:
+    """Per position the centres (None where the position was not constructed) and the zero angles."""
+
+    centres: list[InstantCentres | None]
+    zeros: dict[str, list[float]] = field(default_factory=dict)  # point → crank angles (rad) with v = 0
+
+
+# ---------------------------------------------------------------------------- the method at a position
+
+
+def positions_mm(build: Any, sol: Any) -> dict[str, tuple[float, float]]:
+    """Every point of the kinematic diagram as the construction drew it (mm)."""
+    return {name: (float(sol.values[slot][0]), float(sol.values[slot][1]))
+            for name, slot in build.mech.items() if slot in sol.values}
+
+
+def centres_at(an: Any, sol: Any) -> InstantCentres:
+    return instant_centres(an.build.linkage, positions_mm(an.build, sol), mu_l=an.scales["l"])
+
+
+# ---------------------------------------------------------------------------- exact counterparts
+
+
+def _twist(linkage: Linkage, kin: Kinematics, link: str, i: int) -> tuple[float, float, float]:
+    """Exact (ω, v0x, v0y): the link's velocity field ``v(X) = v0 + ω k×X`` (SI) at position i."""
+    if link == linkage.frame_link:
+        return 0.0, 0.0, 0.0
+    w = float(kin.omega[link][i])
+    x, y = kin.point[linkage.links()[link][0]][i]
+    vx, vy = kin.vel[linkage.links()[link][0]][i]
+    return w, float(vx + w * y), float(vy - w * x)
+
+
+def exact_centre(linkage: Linkage, kin: Kinematics, a: str, b: str, i: int) -> tuple[str, tuple[float, float]]:
+    """``("point", (x, y))`` m, or ``("direction", (dx, dy))`` at infinity, or ``("none", …)``."""
+    wa, ax, ay = _twist(linkage, kin, a, i)
+    wb, bx, by = _twist(linkage, kin, b, i)
+    dw, dvx, dvy = wa - wb, ax - bx, ay - by
+    if dw != 0.0:
+        return "point", (-dvy / dw, dvx / dw)
+    n = math.hypot(dvx, dvy)
+    if n == 0.0:
+        return "none", (0.0, 0.0)
+    return "direction", (-dvy / n, dvx / n)
+
+
+def _point_names(linkage: Linkage) -> set[str]:
+    names = set(linkage.frame_points)
+    for pts in linkage.links().values():
+        names.update(pts)
+    return names
+
+
+def _split_line(text: str, names: set[str]) -> tuple[str, str] | None:
+    """``"BC"`` → ``("B", "C")``: the one split into two known points."""
+    splits = [(text[:k], text[k:]) for k in range(1, len(text)) if text[:k] in names and text[k:] in names]
+    return splits[0] if len(splits) == 1 else None
+
+
+def _common_link(linkage: Linkage, a: str, b: str) -> str | None:
+    for lid, pts in linkage.links().items():
+        if lid != linkage.frame_link and a in pts and b in pts:
+            return lid
+    return None
+
+
+def _carrier(linkage: Linkage, ic: InstantCentres, x: str) -> str | None:
+    """A link carrying point x whose motion the centres determine (the frame for a frame point)."""
+    if x in linkage.frame_points:
+        return linkage.frame_link
+    for lid, pts in linkage.links().items():
+        if x in pts and lid in ic.motions:
+            return lid
+    return None
+
+
+# ---------------------------------------------------------------------------- rows
+
+
+def add_rows(an: Any) -> ICAnalysis:
+    """Compute the centres at every constructed position; append the asked rows and warnings to ``an``."""
+    from graphmech.check import Row, characteristic, position_text, split_name
+
+    scene, build, linkage = an.scene, an.build, an.build.linkage
+    mu = an.scales["l"]
+    ox, oy = build.origin
+    ica = ICAnalysis([centres_at(an, s) if s is not None else None for s in an.solutions])
+    links = polygon_of_links(linkage)
+    names = _point_names(linkage)
+    problems: list[tuple[str, str]] = []
+    multi = len(an.labels) > 1
+
+    def rel(g: float, e: float, unit: str) -> float:
+        if unit == "deg":
+            return abs((g - e + 90.0) % 180.0 - 90.0) / 180.0
+        return abs(g - e) / max(abs(e), characteristic(linkage, unit, an.size))
+
+    def ill(ic: InstantCentres, sol: Any, keys: list[tuple[str, str]]) -> bool:
+        return (any(ic.centres[k].cond > T.COND_WARN for k in keys)
+                or any(c > T.COND_WARN for c in sol.conds.values()))
+
+    rows: list[Any] = []
+    for k, raw in enumerate(scene.find):
+        base, at = split_name(raw)
+        if not claims(base):
+            continue
+        key = f"find[{k}]"
+        m_zero = _ZERO.fullmatch(base)
+        if m_zero:
+            if at is not None:
+                problems.append((key, f"{base} is found over the whole turn of the crank: drop '@{at}'"))
+                continue
+            x = m_zero.group(1)
+            try:
+                rows += _zero_rows(an, ica, x, key)
+            except ValueError as e:
+                problems.append((key, str(e)))
+            continue
+        if at is not None and at not in an.labels:
+            problems.append((key, f"no position {at!r} (positions: {', '.join(an.labels)})"))
+            continue
+        spec = _parse(base, linkage, links, names)
+        if isinstance(spec, str):
+            problems.append((key, spec))
+            continue
+        for i in ([an.labels.index(at)] if at is not None else range(len(an.labels))):
+            ic, sol = ica.centres[i], an.solutions[i]
+            if ic is None or not an.exact.valid[i]:
+                continue
+            where = position_text(build, an.labels[i])
+            suffix = f"@{an.labels[i]}" if multi else ""
+            kind = spec[0]
+            if kind == "centre":
+                _, coord, a, b = spec
+                c = ic.centre(a, b)
+                nm = centre_name(*c.links)
+                if not c.known:
+                    an.warnings.append(f"{where}: {nm} cannot be determined — {c.why}")
+                    continue
+                ek, ev = exact_centre(linkage, an.exact, a, b, i)
+                if c.at_infinity:
+                    if coord in ("x_", "y_"):
+                        an.warnings.append(f"{where}: {nm} is at infinity (direction "
+                                           f"{_deg(c.direction):.6g}°): it has no {coord[0]} coordinate")
+                        continue
+                    g = _deg(c.direction)
+                    e = _deg(ev)  # a huge exact point lies in (nearly) the same direction
+                    rows.append(Row(f"dir_{nm}{suffix}", "deg", None, 1.0, g, e, rel(g, e, "deg"), ill(ic, sol, [c.links])))
+                    continue
+                if coord == "dir_":
+                    an.warnings.append(f"{where}: {nm} is a finite point, not a direction: ask for x_{nm}, y_{nm}")
+                    continue
+                for axis, n in (("x", 0), ("y", 1)):
+                    if coord in ("", f"{axis}_"):
+                        drawn = c.point[n] + (ox, oy)[n] / mu
+                        g = drawn * mu
+                        e = ev[n] if ek == "point" else math.copysign(math.inf, 1.0)
+                        if not math.isfinite(e):
+                            an.warnings.append(f"{where}: the exact {nm} is at infinity; the construction "
+                                               f"put it at {g:.6g} m (ill-conditioned)")
+                            continue
+                        rows.append(Row(f"{axis}_{nm}{suffix}", "m", drawn, mu, g, e, rel(g, e, "m"),
+                                        ill(ic, sol, [c.links])))
+            elif kind == "omega":
+                lid = spec[1]
+                if lid not in ic.motions:
+                    an.warnings.append(f"{where}: ω{lid} cannot be found from the centres — {ic.undetermined[lid]}")
+                    continue
+                mo = ic.motions[lid]
+                e = float(an.exact.omega[lid][i]) if lid != linkage.frame_link else 0.0
+                drawn, scale = (mo.drawn, mo.scale) if mo.drawn is not None else (None, 1.0)
+                g = mo.omega if drawn is None else drawn * scale
+                keys = [ic.absolute(lid).links] + ([pair(links, mo.found[0], lid)] if len(mo.found) == 4 else [])
+                rows.append(Row(f"omega_{lid}_ic{suffix}", "rad/s", drawn, scale if drawn is not None else 1.0, g, e,
+                                rel(g, e, "rad/s"), ill(ic, sol, keys)))
+            elif kind == "speed":
+                x = spec[1]
+                lid = _carrier(linkage, ic, x)
+                if lid is None:
+                    an.warnings.append(f"{where}: v_{x} cannot be found from the centres — the motion of every "
+                                       "link carrying it is undetermined")
+                    continue
+                mo = ic.motions[lid]
+                p = positions_mm(build, sol)[x]
+                p1 = ic.absolute(lid)
+                if p1.point is not None:  # |v| = |ω|·P1kX
+                    drawn = math.dist(p1.point, p)
+                    scale = abs(mo.omega) * mu
+                else:  # a translating link: the velocity found at its common centre
+                    drawn, scale = math.hypot(*mo.velocity(p)), mu
+                g = drawn * scale
+                e = float(np.hypot(*an.exact.vel[x][i]))
+                rows.append(Row(f"v_{x}_ic{suffix}", "m/s", drawn, scale, g, e, rel(g, e, "m/s"),
+                                ill(ic, sol, [p1.links])))
+            elif kind == "least":
+                _, what, a, b, lid = spec
+                pos = positions_mm(build, sol)
+                found = least_speed_on_line(ic, lid, pos[a], pos[b])
+                if isinstance(found, str):
+                    an.warnings.append(f"{where}: no single point of {a}{b} with the least speed — {found}")
+                    continue
+                s_mm, dist_mm, _ = found
+                e_s, e_v = _exact_least(linkage, an.exact, lid, a, b, i)
+                if what == "v":
+                    drawn, scale = dist_mm, abs(ic.motions[lid].omega) * mu
+                    g = drawn * scale
+                    rows.append(Row(f"v_min_{a}{b}_ic{suffix}", "m/s", drawn, scale, g, e_v, rel(g, e_v, "m/s"),
+                                    ill(ic, sol, [ic.absolute(lid).links])))
+                else:
+                    g = s_mm * mu
+                    rows.append(Row(f"s_min_{a}{b}_ic{suffix}", "m", s_mm, mu, g, e_s, rel(g, e_s, "m"),
+                                    ill(ic, sol, [ic.absolute(lid).links])))
+    if problems:
+        raise SceneError(problems, scene.source)
+    an.rows.extend(rows)
+    for i, ic in enumerate(ica.centres):  # say what the construction cannot determine
+        if ic is None:
+            continue
+        where = position_text(build, an.labels[i])
+        for c in ic.centres.values():
+            if not c.known:
+                an.warnings.append(f"{where}: {centre_name(*c.links)} cannot be determined — {c.why}")
+        for lid, why in ic.undetermined.items():
+            an.warnings.append(f"{where}: the motion of link {lid} cannot be found from the centres — {why}")
+    an.warnings[:] = list(dict.fromkeys(an.warnings))
+    return ica
+
+
+def _deg(d: tuple[float, float] | None) -> float:
+    """A direction's angle in [0, 180) degrees (a line's direction has no sense)."""
+    assert d is not None
+    a = math.degrees(math.atan2(d[1], d[0])) % 180.0
+    return 0.0 if a >= 180.0 else a + 0.0
+
+
+def _exact_least(linkage: Linkage, kin: Kinematics, lid: str, a: str, b: str, i: int) -> tuple[float, float]:
+    """Exact (s, v_min): the foot of the ⟂ from the exact P1k on line AB, and |ω|·distance."""
+    w, vx, vy = _twist(linkage, kin, lid, i)
+    pa, pb = kin.point[a][i], kin.point[b][i]
+    u = (pb - pa) / np.hypot(*(pb - pa))
+    if w == 0.0:
+        return math.nan, math.hypot(vx, vy)
+    p1 = np.array([-vy / w, vx / w])
+    r = p1 - pa
+    return float(r @ u), float(abs(w) * abs(r[0] * u[1] - r[1] * u[0]))
+
+
+def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str]) -> tuple | str:
+    """A name → what to compute, or the reason it names nothing."""
+    m = _CENTRE.fullmatch(base)
+    if m:
+        coord, raw = m.group(1) or "", base[len(m.group(1) or "") + 1:]
+        for k in range(1, len(raw)):
+            a, b = raw[:k].rstrip("_"), raw[k:].lstrip("_")
+            if a in links and b in links and a != b:
+                return ("centre", coord, a, b)
+        return f"{base!r} names no instant centre (links: {', '.join(links)}; e.g. {centre_name(*links[:2])})"
+    m = _OMEGA.fullmatch(base)
+    if m:
+        if m.group(1) not in links:
+            return f"no link {m.group(1)!r} (links: {', '.join(links)})"
+        return ("omega", m.group(1))
+    m = _SPEED.fullmatch(base)
+    if m:
+        if m.group(1) not in names:
+            return f"no point {m.group(1)!r} in the linkage"
+        return ("speed", m.group(1))
+    m = _LEAST.fullmatch(base)
+    if m:
+        ab = _split_line(m.group(2), names)
+        if ab is None:
+            return f"{m.group(2)!r} is not two points of the linkage (write v_min_BC_ic for line BC)"
+        lid = _common_link(linkage, *ab)
+        if lid is None:
+            return f"{ab[0]} and {ab[1]} are not points of one moving link"
+        return ("least", m.group(1), ab[0], ab[1], lid)
+    return f"unknown instant-centre quantity {base!r}"
+
+
+# ---------------------------------------------------------------------------- v = 0 over the turn
+
+
+def _signed(linkage: Linkage, x: str) -> tuple[str, str, tuple[float, float] | None]:
+    """Which signed rate vanishes with v_X: ("omega", link, None) for a point of a link pivoted on the
+    frame, ("slide", link, guide direction) for a slider on a frame guide."""
+    from graphmech.methods.instant_centres import direct_centres
+
+    frame = linkage.frame_link
+    carriers = [lid for lid, pts in linkage.links().items() if x in pts and lid != frame]
+    if x in linkage.frame_points or not carriers:
+        raise ValueError(f"{x} is a point of the frame: its velocity is always 0" if x in linkage.frame_points
+                         else f"no point {x!r} in the linkage")
+    for dc in direct_centres(linkage):
+        if frame not in dc.links:
+            continue
+        lid = dc.links[0] if dc.links[1] == frame else dc.links[1]
+        if lid not in carriers:
+            continue
+        if dc.at is not None:
+            return "omega", lid, None
+        assert dc.normal is not None
+        return "slide", lid, (math.sin(dc.normal), -math.cos(dc.normal))
+    raise ValueError(f"v_{x} vanishes only where {x} happens to be the instant centre of its link with the frame, "
+                     f"which moves: choose a point of a link pivoted on the frame or of a slider on a frame guide")
+
+
+def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
+    """Crank angles at which v_X = 0: by the centres (sampled, refined by Brent), and exactly."""
+    from graphmech.check import Row
+
+    linkage = an.build.linkage
+    if not isinstance(linkage.driver, Crank):
+        raise ValueError("crank angles with a vanishing velocity need a crank as the driver")
+    kind, lid, u = _signed(linkage, x)
+    plan, build = an.plan, an.build
+    mu = an.scales["l"]
+    grid = np.linspace(0.0, 2.0 * math.pi, ZERO_SAMPLES + 1)
+
+    def by_centres(phi: float) -> float:
+        try:
+            sol = plan.solve({build.param: float(phi)})
+        except Exception:  # not constructible here: no sign
+            return math.nan
+        ic = centres_at(an, sol)
+        if lid not in ic.motions:
+            return math.nan
+        mo = ic.motions[lid]
+        if kind == "omega":
+            return mo.omega
+        assert u is not None
+        return (mo.v0[0] * u[0] + mo.v0[1] * u[1]) * mu
+
+    batch = plan.evaluate_batch({build.param: grid})
+    values = []
+    for i in range(len(grid)):
+        if not batch.valid[i]:
+            values.append(math.nan)
+            continue
+        ic = instant_centres(linkage, positions_mm(build, batch.at(i)), mu_l=mu)
+        if lid not in ic.motions:
+            values.append(math.nan)
+        elif kind == "omega":
+            values.append(ic.motions[lid].omega)
+        else:
+            assert u is not None
+            values.append((ic.motions[lid].v0[0] * u[0] + ic.motions[lid].v0[1] * u[1]) * mu)
+    graphical = _roots(grid, np.array(values), by_centres)
+
+    kin = solve_exact(linkage, grid)
+    if kind == "omega":
+        ex = np.where(kin.valid, kin.omega[lid], np.nan)
+    else:
+        assert u is not None
+        ex = np.where(kin.valid, kin.vel[x][:, 0] * u[0] + kin.vel[x][:, 1] * u[1], np.nan)
+
+    def exact_at(phi: float) -> float:
+        k1 = solve_exact(linkage, np.array([phi]))
+        if not k1.valid[0]:
+            return math.nan
+        return float(k1.omega[lid][0]) if kind == "omega" else float(k1.vel[x][0] @ np.array(u))
+
+    exact = _roots(grid, ex, exact_at)
+    ica.zeros[x] = graphical
+    if not graphical and not exact:
+        an.warnings.append(f"v_{x} does not vanish over the crank's turn")
+        return []
+    rows = []
+    for n, g in enumerate(graphical, 1):
+        e = min(exact, key=lambda t: abs((t - g + math.pi) % (2 * math.pi) - math.pi)) if exact else math.nan
+        if not math.isfinite(e):
+            continue
+        gd, ed = math.degrees(g) % 360.0, math.degrees(e) % 360.0
+        err = abs((gd - ed + 180.0) % 360.0 - 180.0) / 360.0
+        rows.append(Row(f"phi_v0_{x}_{n}", "deg", None, 1.0, gd, ed, err))
+    if len(exact) != len(graphical):
+        an.warnings.append(f"v_{x} vanishes at {len(exact)} crank angles exactly but at {len(graphical)} by the "
+                           "centres (a root at a dead centre or in a gap of assembly)")
+    return rows
+
+
+def _roots(grid: np.ndarray, values: np.ndarray, f: Callable[[float], float]) -> list[float]:
+    """Sign changes of ``values`` between neighbouring finite samples, refined by Brent's method.
+
+    A sign change across an infinite rate (a dead centre) is not a zero: it is kept only if
+    ``|f|`` at the refined point is small compared with the rate's size.
+    """
+    from scipy.optimize import brentq
+
+    finite = values[np.isfinite(values)]
+    size = float(np.max(np.abs(finite))) if finite.size else 0.0
+    out: list[float] = []
+    for k in range(len(grid) - 1):
+        a, b = values[k], values[k + 1]
+        if not (math.isfinite(a) and math.isfinite(b)):
+            continue
+        if a == 0.0:
+            root = float(grid[k])
+        elif a * b < 0.0:
+            try:
+                root = brentq(f, float(grid[k]), float(grid[k + 1]), xtol=1e-14, rtol=4 * T.EPS, maxiter=200)
+            except (ValueError, RuntimeError):  # f undefined inside the bracket (a dead centre)
+                continue
+        else:
+            continue
+        if abs(f(root)) <= 1e-6 * max(size, 1e-300):
+            r = root % (2.0 * math.pi)
+            if not out or abs(r - out[-1]) > 1e-9:
+                out.append(r)
+    return out
+
+
+__all__ = ["SHOW", "ICAnalysis", "add_rows", "asked", "claims", "exact_centre", "positions_mm"]
