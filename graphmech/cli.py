@@ -117,9 +117,17 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
     an = analyse(scene)
     b = an.build
     texts = [position_text(b, lab) for lab in an.labels]
+    from graphmech.methods.polygons import PANELS
+
     sheet = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
-                          list(scene.show),
+                          [s for s in scene.show if s in PANELS],
                           page_size(scene), footer)
+    if "instant_centres" in scene.show:
+        from dataclasses import replace
+
+        from graphmech.methods.ic_figures import ic_panels
+
+        sheet = replace(sheet, panels=sheet.panels + tuple(ic_panels(an, page_size(scene))))
     warnings = list(an.warnings)
     svg = render_svg(sheet, _id_prefix(path), on_warning=warnings.append)
     return svg, warnings

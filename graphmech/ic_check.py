@@ -96,27 +96,27 @@ def exact_centre(linkage: Linkage, kin: Kinematics, a: str, b: str, i: int) -> t
     wb, bx, by = _twist(linkage, kin, b, i)
     dw, dvx, dvy = wa - wb, ax - bx, ay - by
     if dw != 0.0:
-        return "point", (-dvy / dw, dvx / dw)
+        return "point", (-dvy / dw + 0.0, dvx / dw + 0.0)
     n = math.hypot(dvx, dvy)
     if n == 0.0:
         return "none", (0.0, 0.0)
     return "direction", (-dvy / n, dvx / n)
 
 
-def _point_names(linkage: Linkage) -> set[str]:
+def point_names(linkage: Linkage) -> set[str]:
     names = set(linkage.frame_points)
     for pts in linkage.links().values():
         names.update(pts)
     return names
 
 
-def _split_line(text: str, names: set[str]) -> tuple[str, str] | None:
+def split_line(text: str, names: set[str]) -> tuple[str, str] | None:
     """``"BC"`` → ``("B", "C")``: the one split into two known points."""
     splits = [(text[:k], text[k:]) for k in range(1, len(text)) if text[:k] in names and text[k:] in names]
     return splits[0] if len(splits) == 1 else None
 
 
-def _common_link(linkage: Linkage, a: str, b: str) -> str | None:
+def common_link(linkage: Linkage, a: str, b: str) -> str | None:
     for lid, pts in linkage.links().items():
         if lid != linkage.frame_link and a in pts and b in pts:
             return lid
@@ -145,7 +145,7 @@ def add_rows(an: Any) -> ICAnalysis:
     ox, oy = build.origin
     ica = ICAnalysis([centres_at(an, s) if s is not None else None for s in an.solutions])
     links = polygon_of_links(linkage)
-    names = _point_names(linkage)
+    names = point_names(linkage)
     problems: list[tuple[str, str]] = []
     multi = len(an.labels) > 1
 
@@ -326,10 +326,10 @@ def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str])
         return ("speed", m.group(1))
     m = _LEAST.fullmatch(base)
     if m:
-        ab = _split_line(m.group(2), names)
+        ab = split_line(m.group(2), names)
         if ab is None:
             return f"{m.group(2)!r} is not two points of the linkage (write v_min_BC_ic for line BC)"
-        lid = _common_link(linkage, *ab)
+        lid = common_link(linkage, *ab)
         if lid is None:
             return f"{ab[0]} and {ab[1]} are not points of one moving link"
         return ("least", m.group(1), ab[0], ab[1], lid)

@@ -246,7 +246,7 @@ def _meet(l1: np.ndarray, l2: np.ndarray, size: float) -> tuple[np.ndarray | Non
         gap = abs(l1[2] - l2[2]) if same_sense else abs(l1[2] + l2[2])
         if gap <= SAME_REL * size:
             return None, math.inf
-        return np.array([-l1[1], l1[0], 0.0]), 1.0 / max(abs(s), 1e-300)
+        return np.array([-l1[1], l1[0], 0.0]), 1.0  # a direction: as sure as the lines' own
     return np.array([x[0] / x[2], x[1] / x[2], 1.0]), 1.0 / abs(s)
 
 

@@ -1,0 +1,326 @@
+"""Instant centres by Kennedy's theorem: every centre, ω and v against the exact kinematics,
+centres at infinity, a parallelogram's change point, dead centres, the book's four-bar."""
+from __future__ import annotations
+
+import json
+import math
+import tomllib
+from itertools import combinations
+
+import numpy as np
+import pytest
+
+from graphmech.check import analyse
+from graphmech.errors import SceneError
+from graphmech.exact.linkage import solve as solve_exact
+from graphmech.ic_check import exact_centre, positions_mm
+from graphmech.mechanisms.linkage import Crank, Linkage, RRR
+from graphmech.methods.instant_centres import centre_name, instant_centres
+from graphmech.scene import parse_scene
+from tests.conftest import SCENES, check_json, run_cli, values
+
+HEAD = """
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+velocity = "m/s"
+[scales]
+l_m_per_mm = 0.002
+"""
+
+FOURBAR = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+D = [{d}, 0]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "B"
+length = {a}
+angle = {phi}
+omega = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["3", "4"]
+lengths = [{b}, {c}]
+branch = "{branch}"
+"""
+
+SLIDER_CRANK = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "B"
+length = 100
+angle = [30, 120, 250]
+omega = 10
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["3", "4"]
+length = 300
+guide = { through = [0, 30], angle = 0 }
+branch = "forward"
+"""
+
+OSCILLATING_BLOCK = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+C = [-100, 0]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "B"
+length = 30
+angle = [45, 200]
+omega = 10
+[[dyad]]
+type = "RPR"
+joints = ["B", "C"]
+links = ["3", "4"]
+bar = "first"
+"""
+
+SIXBAR = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+D = [120, 0]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "B"
+length = 60
+angle = [40, 165]
+omega = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["3", "4"]
+lengths = [120, 90]
+branch = "left"
+[[point]]
+name = "E"
+link = "3"
+base = ["B", "C"]
+along = 60
+left = 40
+[[dyad]]
+type = "RRP"
+joints = ["E", "F"]
+links = ["5", "6"]
+length = 150
+guide = { through = [0, 160], angle = 0 }
+branch = "forward"
+"""
+
+
+def scene_of(text: str, show=("instant_centres",), find=()):
+    data = tomllib.loads(text)
+    data["show"] = list(show)
+    data["find"] = list(find)
+    return parse_scene(data, "test.toml")
+
+
+def all_centres_agree(an, tol=1e-9):
+    """Every centre of every position against the exact one (points relative to the size)."""
+    linkage = an.build.linkage
+    mu = an.scales["l"]
+    ox, oy = an.build.origin
+    checked = 0
+    for i, ic in enumerate(an.instant_centres.centres):
+        assert ic is not None
+        n = len(ic.links)
+        assert len(ic.centres) == n * (n - 1) // 2
+        for a, b in combinations(ic.links, 2):
+            c = ic.centre(a, b)
+            assert c.known, (centre_name(a, b), c.why)
+            kind, ev = exact_centre(linkage, an.exact, a, b, i)
+            if c.at_infinity:
+                assert kind == "direction", centre_name(a, b)
+                assert abs(c.direction[0] * ev[1] - c.direction[1] * ev[0]) < tol
+            else:
+                assert kind == "point", centre_name(a, b)
+                x, y = c.point[0] * mu + ox, c.point[1] * mu + oy
+                assert math.dist((x, y), ev) <= tol * an.size, (centre_name(a, b), (x, y), ev)
+            checked += 1
+        for lid, mo in ic.motions.items():
+            if lid != linkage.frame_link:
+                assert mo.omega == pytest.approx(float(an.exact.omega[lid][i]), abs=tol * 10)
+    return checked
+
+
+def test_book_fourbar_by_instant_centres(problems):
+    p = problems["kin.fourbar_instant_centres"]
+    doc = check_json(SCENES / "kin.fourbar_instant_centres.toml")
+    v = values(doc)
+    ex, book = p["exact"], p["book"]
+    assert v["omega_3_ic"]["graphical"] == pytest.approx(ex["omega3_rad_s"], rel=1e-9)
+    assert v["v_C_ic"]["graphical"] == pytest.approx(ex["vC_m_s"], rel=1e-9)
+    assert v["v_min_BC_ic"]["graphical"] == pytest.approx(ex["vE_m_s"], rel=1e-9)
+    assert v["s_min_BC_ic"]["graphical"] * 1000 == pytest.approx(ex["BE_mm"], rel=1e-9)
+    zeros = [v["phi_v0_C_1"]["graphical"], v["phi_v0_C_2"]["graphical"]]
+    # A, B, C in line (P24 = P12): |AC| = 180 or 60 mm, the law of cosines in triangle ACD
+    closed = [math.degrees(math.acos((180**2 + 120**2 - 90**2) / (2 * 180 * 120))),
+              180 + math.degrees(math.acos((60**2 + 120**2 - 90**2) / (2 * 60 * 120)))]
+    assert zeros == pytest.approx(closed, abs=1e-11)
+    assert zeros == pytest.approx(ex["phi_vC0_deg"], abs=3e-9)  # the bank's root is 1.6e-9° off
+    # the book's graphical answers differ from these by the bank's rel_diff (1.1 % at most)
+    for ours, key in (("omega_3_ic", "omega3_rad_s"), ("v_C_ic", "vC_m_s"), ("v_min_BC_ic", "vE_m_s")):
+        g = v[ours]["graphical"]
+        assert (book[key] - g) / abs(g) == pytest.approx(p["rel_diff"][key], abs=1e-8)
+    assert zeros == pytest.approx(book["phi_vC0_deg"], abs=0.05)
+    for q in doc["quantities"]:
+        assert q["rel_error"] <= 1e-12, q
+    # P24 is on AD (the frame line) and E beyond C: BE > BC
+    assert v["y_P24"]["graphical"] == pytest.approx(0.0, abs=1e-15)
+    assert v["s_min_BC_ic"]["graphical"] > 0.12
+
+
+@pytest.mark.parametrize("text,n_links", [(SLIDER_CRANK, 4), (OSCILLATING_BLOCK, 4), (SIXBAR, 6)],
+                         ids=["RRP", "RPR", "sixbar"])
+def test_every_centre_and_omega_agree_with_the_exact_kinematics(text, n_links):
+    an = analyse(scene_of(text))
+    assert all_centres_agree(an) == len(an.labels) * n_links * (n_links - 1) // 2
+
+
+def test_slider_centre_is_at_infinity_perpendicular_to_the_guide():
+    an = analyse(scene_of(SLIDER_CRANK, find=["P14", "v_C_ic", "omega_3_ic", "phi_v0_C"]))
+    ic = an.instant_centres.centres[0]
+    assert ic.centre("1", "4").direction == pytest.approx((0.0, 1.0), abs=1e-15)
+    v = {r.name: r for r in an.rows}
+    assert v["dir_P14@30"].graphical == pytest.approx(90.0, abs=1e-12)
+    for r in an.rows:
+        assert r.rel_error <= 1e-9, r
+    # a slider's velocity vanishes at its dead centres: where B is on line AC, sin(φ) = e/(l ± r)
+    e, r, l = 0.03, 0.1, 0.3
+    expect = sorted([math.degrees(math.asin(e / (l + r))), 180 + math.degrees(math.asin(e / (l - r)))])
+    assert sorted([v["phi_v0_C_1"].graphical, v["phi_v0_C_2"].graphical]) == pytest.approx(expect, abs=1e-9)
+
+
+def test_rpr_sliding_pair_centre_is_perpendicular_to_the_bar():
+    an = analyse(scene_of(OSCILLATING_BLOCK))
+    ic = an.instant_centres.centres[0]
+    pos = positions_mm(an.build, an.solutions[0])
+    d = ic.centre("3", "4").direction
+    bc = np.subtract(pos["C"], pos["B"])
+    assert abs(d[0] * bc[0] + d[1] * bc[1]) < 1e-12 * np.hypot(*bc)
+    assert ic.centre("1", "4").point == pos["C"]  # the block's pivot on the frame
+
+
+def test_parallel_kennedy_lines_put_the_centre_at_infinity():
+    # a parallelogram: AB ∥ DC, so P13 (on AB and on DC) is at infinity and the coupler translates
+    an = analyse(scene_of(FOURBAR.format(d=120, a=60, b=120, c=60, phi=70, branch="left"),
+                          find=["P13", "P24", "omega_3_ic", "omega_4_ic", "v_C_ic"]))
+    v = {r.name: r for r in an.rows}
+    assert v["dir_P13"].graphical == pytest.approx(70.0, abs=1e-9)
+    assert v["dir_P13"].exact == pytest.approx(70.0, abs=1e-9)
+    assert v["omega_3_ic"].graphical == 0.0
+    assert v["omega_4_ic"].graphical == pytest.approx(10.0, rel=1e-9)
+    assert v["v_C_ic"].graphical == pytest.approx(0.6, rel=1e-12)  # = v_B: a translating coupler
+    assert "x_P13" not in v
+    ic = an.instant_centres.centres[0]
+    assert ic.centre("2", "4").at_infinity  # AD ∥ BC as well
+    assert not any("nan" in json.dumps(r.as_dict()).lower() for r in an.rows)
+
+
+def test_parallelogram_change_point_says_what_cannot_be_determined(tmp_path):
+    text = FOURBAR.format(d=120, a=60, b=120, c=60, phi=0, branch="left")
+    an = analyse(scene_of(text, find=["P13", "omega_3_ic", "omega_4_ic", "P23"]))
+    ic = an.instant_centres.centres[0]
+    for pair in (("1", "3"), ("2", "4")):
+        c = ic.centre(*pair)
+        assert c.kind == "undetermined" and "coincide" in c.why
+    assert set(ic.undetermined) == {"3", "4"}
+    text_w = " ".join(an.warnings)
+    assert "P13 cannot be determined" in text_w and "P24 cannot be determined" in text_w
+    assert "the motion of link 3 cannot be found" in text_w
+    assert an.rows == []  # the exact solution is undefined there too (B, C, D in line)
+    assert "exact solution is undefined" in text_w
+    assert ic.centre("2", "3").point is not None  # the direct centres are still drawn
+    path = tmp_path / "change.toml"
+    path.write_text('title = "change point"\nshow = ["instant_centres"]\nfind = ["P13"]\n' + text)
+    code, out, err = run_cli("render", str(path), "-o", str(tmp_path / "c.svg"))
+    assert code == 0, err
+    svg = (tmp_path / "c.svg").read_text()
+    assert "undetermined" in svg and "nan" not in svg.lower()
+
+
+def test_dead_centre_of_the_rocker_is_where_p24_meets_p12():
+    # the book's four-bar at its first v_C = 0 angle: A, B, C in line, P24 = P12 = A, ω4 = 0
+    phi = 26.38432975096472
+    an = analyse(scene_of(FOURBAR.format(d=120, a=60, b=120, c=90, phi=phi, branch="left"),
+                          find=["P24", "omega_4_ic", "v_C_ic"]))
+    v = {r.name: r for r in an.rows}
+    assert math.hypot(v["x_P24"].graphical, v["y_P24"].graphical) < 1e-9 * an.size
+    assert abs(v["omega_4_ic"].graphical) < 1e-9 and abs(v["v_C_ic"].graphical) < 1e-9
+
+
+def test_rocker_driven_dead_centre_leaves_the_crank_undetermined():
+    # drive the rocker DC: at A, B, C in line P24 coincides with P14? no — with P12 (= A), so
+    # ω2 = ω4·P14P24/P12P24 has a zero denominator: the crank cannot be driven from the rocker.
+    fb = Linkage({"D": (0.12, 0.0), "A": (0.0, 0.0)}, Crank("4", "D", "C", 0.09, 10.0),
+                 (RRR("C", "B", "A", ("3", "2"), (0.12, 0.06), "right"),), frame_link="1")
+    a, b = np.array([0.0, 0.0]), np.array([0.06, 0.0]) * 1.0
+    # place C on the line AB beyond B with |AC| = 0.18 and |DC| = 0.09
+    ang = math.acos((0.18 ** 2 + 0.12 ** 2 - 0.09 ** 2) / (2 * 0.18 * 0.12))
+    c = 0.18 * np.array([math.cos(ang), math.sin(ang)])
+    b = 0.06 * np.array([math.cos(ang), math.sin(ang)])
+    pos = {"A": (0.0, 0.0), "D": (120.0, 0.0), "B": tuple(b * 1000), "C": tuple(c * 1000)}
+    ic = instant_centres(fb, pos, mu_l=0.001)
+    assert ic.centre("2", "4").point == pytest.approx((0.0, 0.0), abs=1e-9)
+    assert "2" in ic.undetermined and "dead centre" in ic.undetermined["2"]
+    assert "3" in ic.motions or "3" in ic.undetermined
+
+
+def test_only_what_is_asked_is_computed():
+    an = analyse(scene_of(SLIDER_CRANK, show=("mechanism",), find=["v_C"]))
+    assert an.instant_centres is None
+    an = analyse(scene_of(SLIDER_CRANK, show=("mechanism",), find=["omega_3_ic"]))
+    assert an.instant_centres is not None and [r.name[:10] for r in an.rows] == ["omega_3_ic"] * 3
+
+
+@pytest.mark.parametrize("name,reason", [
+    ("P19", "names no instant centre"), ("omega_9_ic", "no link '9'"), ("v_Z_ic", "no point 'Z'"),
+    ("v_min_AC_ic", "not points of one moving link"), ("phi_v0_A", "point of the frame"),
+    ("phi_v0_C@30", "whole turn"),
+])
+def test_bad_instant_centre_names_are_one_line_errors(name, reason):
+    with pytest.raises(SceneError) as e:
+        analyse(scene_of(SLIDER_CRANK, find=[name]))
+    assert reason in str(e.value) and "find[0]" in str(e.value)
+
+
+def test_the_sheet_draws_every_centre_and_the_polygon_of_links():
+    from graphmech.cli import render_scene
+    from graphmech.methods.ic_figures import ic_panels
+    from graphmech.render.primitives import Sheet
+    from graphmech.render.recording import RecordingBackend
+    from graphmech.render.sheet import draw_sheet
+
+    svg, warnings = render_scene(SCENES / "kin.fourbar_instant_centres.toml")
+    for name in ("P₁₃", "P₂₄", "P₁₂", "P₃₄", "Polygon of links"):
+        assert name in svg
+    an = analyse(scene_of(SIXBAR))
+    panels = ic_panels(an, (420.0, 297.0))
+    assert [p.name for p in panels] == ["ic-40", "ic-circle-40", "ic-165", "ic-circle-165"]
+    circle = panels[1]
+    segs = [it for it in circle.items if type(it).__name__ == "Segment"]
+    ic = an.instant_centres.centres[0]
+    kennedy = sum(1 for c in ic.centres.values() if c.kind == "kennedy")
+    assert sum(s.dashed for s in segs) == kennedy and len(segs) == 15
+    rec = draw_sheet(Sheet("t", tuple(panels), (420.0, 297.0)), RecordingBackend())
+    texts = [c[1] for c in rec if c[0] == "text"]
+    for name in ("P₁₅", "P₂₆", "P₃₆", "P₄₅"):
+        assert name in texts
