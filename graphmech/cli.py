@@ -88,6 +88,14 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
 
     scene = load_scene(path)
     footer = (f"graphmech {graphmech.__version__}",)
+    if scene.structure is not None:
+        from graphmech.methods.structure_figures import structure_sheet
+        from graphmech.structure_check import analyse_structure
+
+        san = analyse_structure(scene)
+        sheet = structure_sheet(scene.title, san, page_size(scene), footer)
+        warnings = list(san.warnings)
+        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
     if scene.flywheel is not None:
         from graphmech.flywheel_check import analyse_flywheel
         from graphmech.methods.flywheel_figures import flywheel_sheet
@@ -204,6 +212,12 @@ def _check(args: argparse.Namespace) -> int:
             extra_doc["true_motion"] = an.motion_summary()
         if an.braking is not None:
             extra_doc["braking"] = an.braking_summary()
+    elif scene.structure is not None:
+        from graphmech.structure_check import analyse_structure
+
+        an = analyse_structure(scene)
+        verdicts = []
+        extra_doc["structure"] = an.summary()
     elif scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 
@@ -222,6 +236,10 @@ def _check(args: argparse.Namespace) -> int:
         print(json.dumps(doc, indent=1, ensure_ascii=False, allow_nan=False))
     else:
         print(_table(an, verdicts))
+        if scene.structure is not None:
+            from graphmech.structure_check import text_summary
+
+            print("\n".join(text_summary(an)))
         if extra_doc.get("braking"):
             br = extra_doc["braking"]
             verdict = "" if br["ok"] is None else (f" ≤ {br['time_limit']:g} s: meets the requirement" if br["ok"]

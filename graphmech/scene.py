@@ -240,6 +240,7 @@ class Scene:
     page: Page = Page()
     cam: CamScene | None = None
     flywheel: FlywheelScene | None = None
+    structure: Any = None  # graphmech.scene_structure.StructureScene of a [structure] scene
 
 
 # --------------------------------------------------------------------------------------------
@@ -353,6 +354,7 @@ _TOP_KEYS = (
     "page",
     "cam",
     "flywheel",
+    "structure",
 )
 
 #: The tables only a linkage scene has.
@@ -1919,6 +1921,10 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         raise SceneError(problems, source)
     if has_cam:
         return _parse_cam_scene(data, source, top, order)
+    if "structure" in data:  # mobility and structure: graphmech.scene_structure
+        from graphmech.scene_structure import parse_structure_scene
+
+        return parse_structure_scene(data, source, top, order)
     if "flywheel" in data:
         from graphmech.scene_flywheel import parse_flywheel_scene
 
