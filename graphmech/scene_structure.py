@@ -99,10 +99,13 @@ def _read_structure(st: _Reader) -> StructureScene | None:
         if links is not None:
             if len(set(links)) != len(links):
                 p.problem(p.at("links"), "a link is listed twice")
+                links = None
             elif kind in ("P", "higher") and len(links) != 2:
                 p.problem(p.at("links"), f"a {kind} pair joins exactly two links, not {len(links)}")
+                links = None
             elif len(links) < 2:
                 p.problem(p.at("links"), "a pair joins at least two links")
+                links = None
         if kind in ("P", "higher") and at is not None and angle is None:
             what = "the guide's direction" if kind == "P" else "the common normal's direction"
             p.problem(p.at("angle"), f"missing: {what} (with at, for the Jacobian)")
@@ -119,7 +122,7 @@ def _read_structure(st: _Reader) -> StructureScene | None:
     if 0 < with_at < len(pair_tables):
         missing = next(k for k, p in enumerate(pairs) if p.at is None)
         st.problem(f"{st.at('pair')}[{missing}].at", "give every pair's coordinates or none (the Jacobian needs all)")
-    if frame_id is None:
+    if frame_id is None or len(pairs) < len(pair_tables):  # a broken pair: the rest would only echo it
         return None
     seen = list(dict.fromkeys(x for p in pairs for x in p.links if x != frame_id))
     if moving is None:

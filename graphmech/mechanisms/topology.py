@@ -154,10 +154,7 @@ def constraint_jacobian(topo: Topology) -> np.ndarray:
     if len(pts) < len(topo.pairs):
         missing = [p.name or "+".join(p.links) for p in topo.pairs if p.at is None]
         raise ValueError(f"pairs without coordinates: {', '.join(missing)}")
-    xs = [p[0] for p in pts]
-    ys = [p[1] for p in pts]
-    size = max(math.hypot(max(xs) - min(xs), max(ys) - min(ys)), 1e-300)
-    cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+    cx, cy, size = _reference(topo)
     rows: list[np.ndarray] = []
 
     def point_row(link: str, sign: float, px: float, py: float, d: tuple[float, float], row: np.ndarray) -> None:
@@ -198,6 +195,25 @@ def constraint_jacobian(topo: Topology) -> np.ndarray:
     return np.array(rows) if rows else np.zeros((0, 3 * topo.n))
 
 
+def _reference(topo: Topology) -> tuple[float, float, float]:
+    """The Jacobian's reference point (the middle of the pairs' box) and size (its diagonal), m."""
+    pts = [p.at for p in topo.pairs if p.at is not None]
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    size = max(math.hypot(max(xs) - min(xs), max(ys) - min(ys)), 1e-300)
+    return (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2, size
+
+
+def _spin(topo: Topology, roller: str) -> np.ndarray:
+    """The roller turning about its own pin, as a vector of the Jacobian's unknowns."""
+    cx, cy, size = _reference(topo)
+    pin = next(p for p in topo.pairs_of(roller) if p.kind == "R")
+    assert pin.at is not None
+    e = np.zeros(3 * topo.n)
+    c = 3 * topo.links.index(roller)
+    e[c:c + 3] = ((pin.at[1] - cy) / size, -(pin.at[0] - cx) / size, 1.0)  # the pin stands still
+    return e
+
+
 def mobility(topo: Topology, with_geometry: bool) -> Mobility:
     """The count, and with ``with_geometry`` the rank of the constraint Jacobian (numpy's SVD)."""
     rollers = topo.rollers()
@@ -212,7 +228,11 @@ def mobility(topo: Topology, with_geometry: bool) -> Mobility:
         sv = tuple(float(x) for x in s)
         top = float(s[0]) if s.size else 0.0
         rank = int(np.sum(s > RANK_REL * top)) if top > 0 else 0
-        f_actual = 3 * topo.n - rank - f_local
+        # a roller's spin is a local freedom only if no constraint feels it (the contact normal
+        # through its pin): J times the spin about the pin is zero
+        spins = sum(1 for r in rollers
+                    if np.linalg.norm(J @ _spin(topo, r)) <= RANK_REL * max(top, 1e-300) * np.linalg.norm(_spin(topo, r)))
+        f_actual = 3 * topo.n - rank - spins
         p_act = eq - rank
     stated = topo.redundant if topo.redundant is not None else 0  # the count knows only what is stated
     F = 3 * topo.n - (2 * topo.pl + topo.ph - stated) - f_local
@@ -263,7 +283,7 @@ def _lower(topo: Topology) -> tuple[Topology, tuple[str, ...], tuple[str, ...]]:
     out, replaced, virtual = [], [], []
     for k, p in enumerate(pairs):
         if p.kind == "higher":
-            v = f"h{k + 1}"
+            v = f"h{p.name}" if p.name else f"h{k + 1}"  # the substitute link, named after its contact
             virtual.append(v)
             replaced.append(p.name or "+".join(p.links))
             out += [Pair("R", (p.links[0], v), f"{p.name}′"), Pair("R", (v, p.links[1]), f"{p.name}″")]
