@@ -21,6 +21,14 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
     if scene.flywheel is not None:  # its analysis is graphmech.flywheel_check's; here it is parsed
         pytest.importorskip("graphmech.flywheel_check")
         return
+    if scene.structure is not None:  # the count against the Jacobian's rank (graphmech.structure_check)
+        from graphmech.structure_check import analyse_structure
+
+        san = analyse_structure(scene)
+        assert san.mobility is not None or san.cases
+        for row in san.rows:
+            assert row.graphical == row.exact, row
+        return
     if scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 
