@@ -230,7 +230,7 @@ def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analy
             targets += build.steps_of_panel(panel)
     from graphmech import ic_check
 
-    ic = ic_check.asked(scene)
+    ic = ic_check.asked(scene, extra_measured)
     if ic:  # the instant centres are found on the kinematic diagram: every point of it
         targets += list(build.mech.values())
     plan = build.g.prune(targets)
@@ -532,7 +532,11 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
     prec = precision_mm if precision_mm is not None else scene.precision_mm
     problems = []
     out = []
+    from graphmech import ic_check
+
     for key, name, value in measured_entries(scene, an.extra_measured):
+        if ic_check.claims(split_name(name)[0]):  # judged by graphmech.ic_check, below
+            continue
         try:
             qname, i, segment = _resolve(name, an.build, an.labels)
         except ValueError as e:
@@ -560,6 +564,10 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
         else:
             tol = _angle_tolerance(an, q, sol, prec) if q.unit == "deg" else prec * abs(float(scale))
             out.append(Verdict(name, value, e, tol, abs(value - e) <= tol + 1e-12 * abs(e), q.unit))
+    if an.instant_centres is not None:
+        more, trouble = ic_check.judge(an, prec)
+        out += more
+        problems += trouble
     if problems:
         raise SceneError(problems, scene.source)
     return out

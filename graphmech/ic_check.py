@@ -43,17 +43,19 @@ _OMEGA = re.compile(r"omega_([0-9A-Za-z]{1,8})_ic")
 _SPEED = re.compile(r"v_([A-Z]+[0-9]*['′]*)_ic")
 _LEAST = re.compile(r"(v|s)_min_([A-Z][A-Z0-9'′]*)_ic")
 _ZERO = re.compile(r"phi_v0_([A-Z]+[0-9]*['′]*)")
+_ZERO_ROW = re.compile(r"phi_v0_([A-Z]+[0-9]*['′]*)_[0-9]+")  # one of its rows, as a measured name
 
 
 def claims(name: str) -> bool:
     """Whether a ``find`` name (without its ``@position``) is the instant-centre method's."""
     base = name.partition("@")[0]
-    return any(p.fullmatch(base) for p in (_CENTRE, _OMEGA, _SPEED, _LEAST, _ZERO))
+    return any(p.fullmatch(base) for p in (_CENTRE, _OMEGA, _SPEED, _LEAST, _ZERO, _ZERO_ROW))
 
 
-def asked(scene: Any) -> bool:
-    """Whether the scene shows or finds anything by instant centres."""
-    return SHOW in scene.show or any(claims(n) for n in scene.find)
+def asked(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> bool:
+    """Whether the scene shows, finds or judges anything by instant centres."""
+    return (SHOW in scene.show or any(claims(n) for n in scene.find)
+            or any(claims(n) for n, _ in tuple(scene.measured) + tuple(extra_measured)))
 
 
 @dataclass
@@ -62,6 +64,7 @@ class ICAnalysis:
 
     centres: list[InstantCentres | None]
     zeros: dict[str, list[float]] = field(default_factory=dict)  # point → crank angles (rad) with v = 0
+    measured: dict[str, Any] = field(default_factory=dict)  # row name → Row, for judging [measured] values
 
 
 # ---------------------------------------------------------------------------- the method at a position
@@ -138,19 +141,49 @@ def _carrier(linkage: Linkage, ic: InstantCentres, x: str) -> str | None:
 
 def add_rows(an: Any) -> ICAnalysis:
     """Compute the centres at every constructed position; append the asked rows and warnings to ``an``."""
-    from graphmech.check import Row, characteristic, position_text, split_name
+    from graphmech.check import measured_entries, position_text, split_name
 
-    scene, build, linkage = an.scene, an.build, an.build.linkage
-    mu = an.scales["l"]
-    ox, oy = build.origin
+    scene, linkage = an.scene, an.build.linkage
     ica = ICAnalysis([centres_at(an, s) if s is not None else None for s in an.solutions])
     links = polygon_of_links(linkage)
     names = point_names(linkage)
     problems: list[tuple[str, str]] = []
+    requests = [(f"find[{k}]", raw, False) for k, raw in enumerate(scene.find)]
+    requests += [(key, raw, True) for key, raw, _ in measured_entries(scene, an.extra_measured)]
+    found: list[Any] = []
+    for key, raw, judged in requests:
+        base, at = split_name(raw)
+        if not claims(base):
+            continue
+        m_row = _ZERO_ROW.fullmatch(base)
+        if m_row:
+            if not judged:
+                problems.append((key, f"find phi_v0_{m_row.group(1)}: its rows are numbered {base[:-2]}_1 …"))
+                continue
+            base = f"phi_v0_{m_row.group(1)}"
+        rows: list[Any] = []
+        _collect(an, ica, key, base, at, rows, problems, links, names)
+        if judged:  # kept apart, for judge(); only what find asks for goes into the table
+            ica.measured.update({r.name: r for r in rows})
+        else:
+            found += rows
+    if problems:
+        raise SceneError(problems, scene.source)
+    an.rows.extend(found)
+    _say_undetermined(an, ica, position_text)
+    return ica
+
+
+def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows: list[Any],
+             problems: list[tuple[str, str]], links: tuple[str, ...], names: set[str]) -> None:
+    """Append the rows of one instant-centre name (at one position or at every position)."""
+    from graphmech.check import Row, characteristic, position_text
+
+    build, linkage = an.build, an.build.linkage
     multi = len(an.labels) > 1
 
     def rel(g: float, e: float, unit: str) -> float:
-        if unit == "deg":
+        if unit == "deg":  # a direction: modulo 180°
             return abs((g - e + 90.0) % 180.0 - 90.0) / 180.0
         return abs(g - e) / max(abs(e), characteristic(linkage, unit, an.size))
 
@@ -158,121 +191,119 @@ def add_rows(an: Any) -> ICAnalysis:
         return (any(ic.centres[k].cond > T.COND_WARN for k in keys)
                 or any(c > T.COND_WARN for c in sol.conds.values()))
 
-    rows: list[Any] = []
-    for k, raw in enumerate(scene.find):
-        base, at = split_name(raw)
-        if not claims(base):
+    mu = an.scales["l"]
+    ox, oy = build.origin
+    m_zero = _ZERO.fullmatch(base)
+    if m_zero:
+        if at is not None:
+            problems.append((key, f"{base} is found over the whole turn of the crank: drop '@{at}'"))
+            return
+        x = m_zero.group(1)
+        try:
+            rows += _zero_rows(an, ica, x, key)
+        except ValueError as e:
+            problems.append((key, str(e)))
+        return
+    if at is not None and at not in an.labels:
+        problems.append((key, f"no position {at!r} (positions: {', '.join(an.labels)})"))
+        return
+    spec = _parse(base, linkage, links, names)
+    if isinstance(spec, str):
+        problems.append((key, spec))
+        return
+    for i in ([an.labels.index(at)] if at is not None else range(len(an.labels))):
+        ic, sol = ica.centres[i], an.solutions[i]
+        if ic is None or not an.exact.valid[i]:
             continue
-        key = f"find[{k}]"
-        m_zero = _ZERO.fullmatch(base)
-        if m_zero:
-            if at is not None:
-                problems.append((key, f"{base} is found over the whole turn of the crank: drop '@{at}'"))
+        where = position_text(build, an.labels[i])
+        suffix = f"@{an.labels[i]}" if multi else ""
+        kind = spec[0]
+        if kind == "centre":
+            _, coord, a, b = spec
+            c = ic.centre(a, b)
+            nm = centre_name(*c.links)
+            if not c.known:
+                an.warnings.append(f"{where}: {nm} cannot be determined — {c.why}")
                 continue
-            x = m_zero.group(1)
-            try:
-                rows += _zero_rows(an, ica, x, key)
-            except ValueError as e:
-                problems.append((key, str(e)))
-            continue
-        if at is not None and at not in an.labels:
-            problems.append((key, f"no position {at!r} (positions: {', '.join(an.labels)})"))
-            continue
-        spec = _parse(base, linkage, links, names)
-        if isinstance(spec, str):
-            problems.append((key, spec))
-            continue
-        for i in ([an.labels.index(at)] if at is not None else range(len(an.labels))):
-            ic, sol = ica.centres[i], an.solutions[i]
-            if ic is None or not an.exact.valid[i]:
-                continue
-            where = position_text(build, an.labels[i])
-            suffix = f"@{an.labels[i]}" if multi else ""
-            kind = spec[0]
-            if kind == "centre":
-                _, coord, a, b = spec
-                c = ic.centre(a, b)
-                nm = centre_name(*c.links)
-                if not c.known:
-                    an.warnings.append(f"{where}: {nm} cannot be determined — {c.why}")
+            ek, ev = exact_centre(linkage, an.exact, a, b, i)
+            if c.at_infinity:
+                if coord in ("x_", "y_"):
+                    an.warnings.append(f"{where}: {nm} is at infinity (direction "
+                                       f"{_deg(c.direction):.6g}°): it has no {coord[0]} coordinate")
                     continue
-                ek, ev = exact_centre(linkage, an.exact, a, b, i)
-                if c.at_infinity:
-                    if coord in ("x_", "y_"):
-                        an.warnings.append(f"{where}: {nm} is at infinity (direction "
-                                           f"{_deg(c.direction):.6g}°): it has no {coord[0]} coordinate")
+                g = _deg(c.direction)
+                e = _deg(ev)  # a huge exact point lies in (nearly) the same direction
+                rows.append(Row(f"dir_{nm}{suffix}", "deg", None, 1.0, g, e, rel(g, e, "deg"), ill(ic, sol, [c.links])))
+                continue
+            if coord == "dir_":
+                an.warnings.append(f"{where}: {nm} is a finite point, not a direction: ask for x_{nm}, y_{nm}")
+                continue
+            for axis, n in (("x", 0), ("y", 1)):
+                if coord in ("", f"{axis}_"):
+                    drawn = c.point[n] + (ox, oy)[n] / mu
+                    g = drawn * mu
+                    e = ev[n] if ek == "point" else math.copysign(math.inf, 1.0)
+                    if not math.isfinite(e):
+                        an.warnings.append(f"{where}: the exact {nm} is at infinity; the construction "
+                                           f"put it at {g:.6g} m (ill-conditioned)")
                         continue
-                    g = _deg(c.direction)
-                    e = _deg(ev)  # a huge exact point lies in (nearly) the same direction
-                    rows.append(Row(f"dir_{nm}{suffix}", "deg", None, 1.0, g, e, rel(g, e, "deg"), ill(ic, sol, [c.links])))
-                    continue
-                if coord == "dir_":
-                    an.warnings.append(f"{where}: {nm} is a finite point, not a direction: ask for x_{nm}, y_{nm}")
-                    continue
-                for axis, n in (("x", 0), ("y", 1)):
-                    if coord in ("", f"{axis}_"):
-                        drawn = c.point[n] + (ox, oy)[n] / mu
-                        g = drawn * mu
-                        e = ev[n] if ek == "point" else math.copysign(math.inf, 1.0)
-                        if not math.isfinite(e):
-                            an.warnings.append(f"{where}: the exact {nm} is at infinity; the construction "
-                                               f"put it at {g:.6g} m (ill-conditioned)")
-                            continue
-                        rows.append(Row(f"{axis}_{nm}{suffix}", "m", drawn, mu, g, e, rel(g, e, "m"),
-                                        ill(ic, sol, [c.links])))
-            elif kind == "omega":
-                lid = spec[1]
-                if lid not in ic.motions:
-                    an.warnings.append(f"{where}: ω{lid} cannot be found from the centres — {ic.undetermined[lid]}")
-                    continue
-                mo = ic.motions[lid]
-                e = float(an.exact.omega[lid][i]) if lid != linkage.frame_link else 0.0
-                drawn, scale = (mo.drawn, mo.scale) if mo.drawn is not None else (None, 1.0)
-                g = mo.omega if drawn is None else drawn * scale
-                keys = [ic.absolute(lid).links] + ([pair(links, mo.found[0], lid)] if len(mo.found) == 4 else [])
-                rows.append(Row(f"omega_{lid}_ic{suffix}", "rad/s", drawn, scale if drawn is not None else 1.0, g, e,
-                                rel(g, e, "rad/s"), ill(ic, sol, keys)))
-            elif kind == "speed":
-                x = spec[1]
-                lid = _carrier(linkage, ic, x)
-                if lid is None:
-                    an.warnings.append(f"{where}: v_{x} cannot be found from the centres — the motion of every "
-                                       "link carrying it is undetermined")
-                    continue
-                mo = ic.motions[lid]
-                p = positions_mm(build, sol)[x]
-                p1 = ic.absolute(lid)
-                if p1.point is not None:  # |v| = |ω|·P1kX
-                    drawn = math.dist(p1.point, p)
-                    scale = abs(mo.omega) * mu
-                else:  # a translating link: the velocity found at its common centre
-                    drawn, scale = math.hypot(*mo.velocity(p)), mu
+                    rows.append(Row(f"{axis}_{nm}{suffix}", "m", drawn, mu, g, e, rel(g, e, "m"),
+                                    ill(ic, sol, [c.links])))
+        elif kind == "omega":
+            lid = spec[1]
+            if lid not in ic.motions:
+                an.warnings.append(f"{where}: ω{lid} cannot be found from the centres — {ic.undetermined[lid]}")
+                continue
+            mo = ic.motions[lid]
+            e = float(an.exact.omega[lid][i]) if lid != linkage.frame_link else 0.0
+            drawn, scale = (mo.drawn, mo.scale) if mo.drawn is not None else (None, 1.0)
+            g = mo.omega if drawn is None else drawn * scale
+            keys = [ic.absolute(lid).links] + ([pair(links, mo.found[0], lid)] if len(mo.found) == 4 else [])
+            rows.append(Row(f"omega_{lid}_ic{suffix}", "rad/s", drawn, scale if drawn is not None else 1.0, g, e,
+                            rel(g, e, "rad/s"), ill(ic, sol, keys)))
+        elif kind == "speed":
+            x = spec[1]
+            lid = _carrier(linkage, ic, x)
+            if lid is None:
+                an.warnings.append(f"{where}: v_{x} cannot be found from the centres — the motion of every "
+                                   "link carrying it is undetermined")
+                continue
+            mo = ic.motions[lid]
+            p = positions_mm(build, sol)[x]
+            p1 = ic.absolute(lid)
+            if p1.point is not None:  # |v| = |ω|·P1kX
+                drawn = math.dist(p1.point, p)
+                scale = abs(mo.omega) * mu
+            else:  # a translating link: the velocity found at its common centre
+                drawn, scale = math.hypot(*mo.velocity(p)), mu
+            g = drawn * scale
+            e = float(np.hypot(*an.exact.vel[x][i]))
+            rows.append(Row(f"v_{x}_ic{suffix}", "m/s", drawn, scale, g, e, rel(g, e, "m/s"),
+                            ill(ic, sol, [p1.links])))
+        elif kind == "least":
+            _, what, a, b, lid = spec
+            pos = positions_mm(build, sol)
+            found = least_speed_on_line(ic, lid, pos[a], pos[b])
+            if isinstance(found, str):
+                an.warnings.append(f"{where}: no single point of {a}{b} with the least speed — {found}")
+                continue
+            s_mm, dist_mm, _ = found
+            e_s, e_v = _exact_least(linkage, an.exact, lid, a, b, i)
+            if what == "v":
+                drawn, scale = dist_mm, abs(ic.motions[lid].omega) * mu
                 g = drawn * scale
-                e = float(np.hypot(*an.exact.vel[x][i]))
-                rows.append(Row(f"v_{x}_ic{suffix}", "m/s", drawn, scale, g, e, rel(g, e, "m/s"),
-                                ill(ic, sol, [p1.links])))
-            elif kind == "least":
-                _, what, a, b, lid = spec
-                pos = positions_mm(build, sol)
-                found = least_speed_on_line(ic, lid, pos[a], pos[b])
-                if isinstance(found, str):
-                    an.warnings.append(f"{where}: no single point of {a}{b} with the least speed — {found}")
-                    continue
-                s_mm, dist_mm, _ = found
-                e_s, e_v = _exact_least(linkage, an.exact, lid, a, b, i)
-                if what == "v":
-                    drawn, scale = dist_mm, abs(ic.motions[lid].omega) * mu
-                    g = drawn * scale
-                    rows.append(Row(f"v_min_{a}{b}_ic{suffix}", "m/s", drawn, scale, g, e_v, rel(g, e_v, "m/s"),
-                                    ill(ic, sol, [ic.absolute(lid).links])))
-                else:
-                    g = s_mm * mu
-                    rows.append(Row(f"s_min_{a}{b}_ic{suffix}", "m", s_mm, mu, g, e_s, rel(g, e_s, "m"),
-                                    ill(ic, sol, [ic.absolute(lid).links])))
-    if problems:
-        raise SceneError(problems, scene.source)
-    an.rows.extend(rows)
-    for i, ic in enumerate(ica.centres):  # say what the construction cannot determine
+                rows.append(Row(f"v_min_{a}{b}_ic{suffix}", "m/s", drawn, scale, g, e_v, rel(g, e_v, "m/s"),
+                                ill(ic, sol, [ic.absolute(lid).links])))
+            else:
+                g = s_mm * mu
+                rows.append(Row(f"s_min_{a}{b}_ic{suffix}", "m", s_mm, mu, g, e_s, rel(g, e_s, "m"),
+                                ill(ic, sol, [ic.absolute(lid).links])))
+
+
+def _say_undetermined(an: Any, ica: ICAnalysis, position_text: Any) -> None:
+    """Warn about every centre and every link motion the construction cannot determine."""
+    build = an.build
+    for i, ic in enumerate(ica.centres):
         if ic is None:
             continue
         where = position_text(build, an.labels[i])
@@ -282,7 +313,48 @@ def add_rows(an: Any) -> ICAnalysis:
         for lid, why in ic.undetermined.items():
             an.warnings.append(f"{where}: the motion of link {lid} cannot be found from the centres — {why}")
     an.warnings[:] = list(dict.fromkeys(an.warnings))
-    return ica
+
+
+def judge(an: Any, precision_mm: float) -> tuple[list[Any], list[tuple[str, str]]]:
+    """Verdicts on the measured instant-centre values, within the drawing precision.
+
+    A length read on the diagram (a coordinate, a distance, a speed ``|ω|·r``, a ratio's
+    numerator) is good to ``precision_mm × μ``; a crank angle to the angle the precision
+    subtends at the crank's length; a direction to the angle it subtends over the mechanism.
+    """
+    import math as _m
+
+    from graphmech.check import Verdict, characteristic, measured_entries, split_name
+
+    ica: ICAnalysis | None = an.instant_centres
+    out, problems = [], []
+    size_mm = an.size / an.scales["l"]
+    for key, name, value in measured_entries(an.scene, an.extra_measured):
+        base, at = split_name(name)
+        if not claims(base):
+            continue
+        if at is None and len(an.labels) > 1 and not base.startswith("phi_v0_"):
+            problems.append((key, f"the scene has {len(an.labels)} positions: name one, e.g. {base}@{an.labels[0]}"))
+            continue
+        row = None if ica is None else ica.measured.get(name if len(an.labels) > 1 else base)
+        if row is None:
+            problems.append((key, f"{name} cannot be judged here (undetermined, at infinity or not constructed)"))
+            continue
+        if row.unit == "deg":
+            crank = getattr(an.build.linkage.driver, "length", an.size) / an.scales["l"]
+            arm = crank if base.startswith("phi_v0_") else size_mm
+            tol = _m.degrees(precision_mm / max(arm, precision_mm))
+        elif row.drawn_mm is not None:
+            tol = precision_mm * abs(row.scale)
+        else:
+            tol = precision_mm / size_mm * max(abs(row.exact), characteristic(an.build.linkage, row.unit, an.size))
+        e = row.exact
+        ok = abs(value - e) <= tol + 1e-12 * abs(e)
+        if row.unit == "deg":
+            period = 360.0 if base.startswith("phi_v0_") else 180.0
+            ok = abs((value - e + period / 2) % period - period / 2) <= tol
+        out.append(Verdict(name, value, e, tol, ok, row.unit))
+    return out, problems
 
 
 def _deg(d: tuple[float, float] | None) -> float:

@@ -96,6 +96,9 @@ def _read_structure(st: _Reader) -> StructureScene | None:
             name = _MISSING
         at = p.pair("at", required=False)
         angle = p.scalar("angle", "angle", required=False)
+        if angle is not None and not abs(angle) <= 1e6:  # a direction: keep its sine meaningful
+            p.problem(p.at(p.present("angle") or "angle"), "must be an angle within ±1e6 rad")
+            angle = None
         if links is not None:
             if len(set(links)) != len(links):
                 p.problem(p.at("links"), "a link is listed twice")
@@ -119,11 +122,11 @@ def _read_structure(st: _Reader) -> StructureScene | None:
     if not pair_tables:
         st.problem(st.at("pair"), "no [[structure.pair]]: describe the pairs (or give [[structure.case]] counts)")
         return None
-    if 0 < with_at < len(pair_tables):
-        missing = next(k for k, p in enumerate(pairs) if p.at is None)
-        st.problem(f"{st.at('pair')}[{missing}].at", "give every pair's coordinates or none (the Jacobian needs all)")
     if frame_id is None or len(pairs) < len(pair_tables):  # a broken pair: the rest would only echo it
         return None
+    if 0 < with_at < len(pairs):
+        missing = next(k for k, p in enumerate(pairs) if p.at is None)
+        st.problem(f"{st.at('pair')}[{missing}].at", "give every pair's coordinates or none (the Jacobian needs all)")
     seen = list(dict.fromkeys(x for p in pairs for x in p.links if x != frame_id))
     if moving is None:
         moving = seen
@@ -170,7 +173,7 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: _Reader, order
     structure = None if st is None else _read_structure(st)
     for i, name in enumerate(find):
         base = name.partition("@")[0]
-        if base not in STRUCTURE_QUANTITIES and not base.startswith("F_"):
+        if base not in STRUCTURE_QUANTITIES:
             top.problem(f"find[{i}]", f"unknown quantity {base!r}: a structure scene finds "
                                       f"{', '.join(STRUCTURE_QUANTITIES)}")
     precision = _read_check(top)

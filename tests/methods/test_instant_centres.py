@@ -324,3 +324,67 @@ def test_the_sheet_draws_every_centre_and_the_polygon_of_links():
     texts = [c[1] for c in rec if c[0] == "text"]
     for name in ("P₁₅", "P₂₆", "P₃₆", "P₄₅"):
         assert name in texts
+
+
+SLIDER_DRIVEN = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+[driver]
+type = "slider"
+link = "4"
+point = "C"
+guide = { through = [0, 20], angle = 0 }
+position = [250, 320]
+velocity = 1.5
+[[dyad]]
+type = "RRR"
+joints = ["C", "B", "A"]
+links = ["3", "2"]
+lengths = [300, 100]
+branch = "right"
+"""
+
+
+def test_rpp_three_centres_at_infinity_and_the_line_at_infinity():
+    # block 2 in the slot of the translating slider 3: P23, P34 at infinity, so P24 is found on
+    # the line at infinity (through P23 and P34) and the finite line AB: at infinity along AB
+    text = (SCENES / "linkage.slider_fixed_angle_guide.toml").read_text()
+    data = tomllib.loads(text)
+    data["show"], data["find"] = ["instant_centres"], ["P24", "P13", "omega_2_ic", "v_C_ic"]
+    an = analyse(parse_scene(data, "rpp.toml"))
+    assert all_centres_agree(an) == 6
+    ic = an.instant_centres.centres[0]
+    assert [ic.centre(*k).at_infinity for k in (("2", "3"), ("3", "4"), ("2", "4"))] == [True] * 3
+    v = {r.name: r for r in an.rows}
+    assert v["dir_P24"].graphical == pytest.approx(45.0, abs=1e-9)  # along AB at φ1 = 45°
+    for r in an.rows:
+        assert r.rel_error <= 1e-12, r
+
+
+def test_a_driven_slider_gives_the_velocities_through_its_centre_at_infinity():
+    an = analyse(scene_of(SLIDER_DRIVEN, find=["omega_2_ic", "omega_3_ic", "v_B_ic", "P24"]))
+    assert all_centres_agree(an) == 2 * 6
+    for r in an.rows:
+        assert r.rel_error <= 1e-12, r
+
+
+def test_measured_instant_centre_values_are_judged_within_the_drawing_precision(problems):
+    book = problems["kin.fourbar_instant_centres"]["book"]
+    scene = SCENES / "kin.fourbar_instant_centres.toml"
+    doc = check_json(scene, "--measured", f"omega_3_ic={book['omega3_rad_s']},v_C_ic={book['vC_m_s']}",
+                     "--measured", f"phi_v0_C_1={book['phi_vC0_deg'][0]},v_min_BC_ic={book['vE_m_s']}")
+    m = {v["name"]: v for v in doc["measured"]}
+    assert m["omega_3_ic"]["ok"] and m["v_C_ic"]["ok"] and m["phi_v0_C_1"]["ok"]
+    # v_E: 0.5 mm at μl = 0.002 m/mm is ±0.0025 m/s; the book's 0.357 is 0.0039 off
+    assert not m["v_min_BC_ic"]["ok"] and m["v_min_BC_ic"]["tolerance"] == pytest.approx(0.5 * 0.002 * 2.538487, rel=1e-5)
+    code, out, err = run_cli("check", str(scene), "--measured", "x_P99=0.1")
+    assert code == 2 and "names no instant centre" in err
+    an_text = SLIDER_CRANK
+    with pytest.raises(SceneError) as e:
+        from graphmech.check import judge
+
+        sc = scene_of(an_text, find=["v_C"])
+        sc = __import__("dataclasses").replace(sc, measured=(("omega_3_ic", 2.0),))
+        judge(analyse(sc))
+    assert "name one, e.g. omega_3_ic@30" in str(e.value)
