@@ -93,17 +93,28 @@ def _twist(linkage: Linkage, kin: Kinematics, link: str, i: int) -> tuple[float,
     return w, float(vx + w * y), float(vy - w * x)
 
 
-def exact_centre(linkage: Linkage, kin: Kinematics, a: str, b: str, i: int) -> tuple[str, tuple[float, float]]:
-    """``("point", (x, y))`` m, or ``("direction", (dx, dy))`` at infinity, or ``("none", …)``."""
+def exact_centre(linkage: Linkage, kin: Kinematics, a: str, b: str, i: int,
+                 at_rest: float = 0.0) -> tuple[str, tuple[float, float]]:
+    """``("point", (x, y))`` m, or ``("direction", (dx, dy))`` at infinity, or ``("none", …)``
+    where links a and b are at relative rest: their relative speed nowhere exceeds ``at_rest``
+    (m/s) over the mechanism's size (the centre of a motion that is not there is undefined)."""
     wa, ax, ay = _twist(linkage, kin, a, i)
     wb, bx, by = _twist(linkage, kin, b, i)
     dw, dvx, dvy = wa - wb, ax - bx, ay - by
+    n = math.hypot(dvx, dvy)
+    if relative_speed(linkage, kin, a, b, i) <= at_rest:
+        return "none", (0.0, 0.0)
     if dw != 0.0:
         return "point", (-dvy / dw + 0.0, dvx / dw + 0.0)
-    n = math.hypot(dvx, dvy)
-    if n == 0.0:
-        return "none", (0.0, 0.0)
     return "direction", (-dvy / n, dvx / n)
+
+
+def relative_speed(linkage: Linkage, kin: Kinematics, a: str, b: str, i: int) -> float:
+    """How fast links a and b move relative to each other: ``|ω_a − ω_b|·size + |v0_a − v0_b|`` (m/s)."""
+    wa, ax, ay = _twist(linkage, kin, a, i)
+    wb, bx, by = _twist(linkage, kin, b, i)
+    size = max(float(np.hypot(*p[i])) for p in kin.point.values()) + 1e-300
+    return abs(wa - wb) * size + math.hypot(ax - bx, ay - by)
 
 
 def point_names(linkage: Linkage) -> set[str]:
@@ -225,7 +236,20 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
             if not c.known:
                 an.warnings.append(f"{where}: {nm} cannot be determined — {c.why}")
                 continue
-            ek, ev = exact_centre(linkage, an.exact, a, b, i)
+            v_char = characteristic(linkage, "m/s", an.size)
+            if c.kind == "direct" and c.point is not None:  # a joint: where the exact solution puts it
+                ek, ev = "point", tuple(float(t) for t in an.exact.point[c.via[0]][i])
+                shaky = False
+            else:
+                ek, ev = exact_centre(linkage, an.exact, a, b, i, 1e-9 * v_char)
+                # the exact centre divides by the links' relative motion: near relative rest it
+                # carries EPS·v/relative of error (COND_SAFETY as for an intersection)
+                shaky = ek != "none" and relative_speed(linkage, an.exact, a, b, i) < \
+                    T.COND_SAFETY * T.EPS / T.REL_AGREEMENT * v_char
+            if ek == "none":
+                an.warnings.append(f"{where}: links {a} and {b} are at relative rest, so the exact {nm} is "
+                                   "undefined; the construction's is not checked")
+                continue
             if c.at_infinity:
                 if coord in ("x_", "y_"):
                     an.warnings.append(f"{where}: {nm} is at infinity (direction "
@@ -233,7 +257,8 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                     continue
                 g = _deg(c.direction)
                 e = _deg(ev)  # a huge exact point lies in (nearly) the same direction
-                rows.append(Row(f"dir_{nm}{suffix}", "deg", None, 1.0, g, e, rel(g, e, "deg"), ill(ic, sol, [c.links])))
+                rows.append(Row(f"dir_{nm}{suffix}", "deg", None, 1.0, g, e, rel(g, e, "deg"),
+                                ill(ic, sol, [c.links]) or shaky))
                 continue
             if coord == "dir_":
                 an.warnings.append(f"{where}: {nm} is a finite point, not a direction: ask for x_{nm}, y_{nm}")
@@ -248,7 +273,7 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                                            f"put it at {g:.6g} m (ill-conditioned)")
                         continue
                     rows.append(Row(f"{axis}_{nm}{suffix}", "m", drawn, mu, g, e, rel(g, e, "m"),
-                                    ill(ic, sol, [c.links])))
+                                    ill(ic, sol, [c.links]) or shaky))
         elif kind == "omega":
             lid = spec[1]
             if lid not in ic.motions:
@@ -390,6 +415,8 @@ def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str])
     if m:
         if m.group(1) not in links:
             return f"no link {m.group(1)!r} (links: {', '.join(links)})"
+        if m.group(1) == linkage.frame_link:
+            return f"link {m.group(1)} is the frame: it does not turn"
         return ("omega", m.group(1))
     m = _SPEED.fullmatch(base)
     if m:

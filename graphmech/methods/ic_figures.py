@@ -137,7 +137,8 @@ def _line(on: list[tuple[str, str]], ic: InstantCentres, pts: dict, near: set) -
     """A Kennedy line through the finite near centres on it, overrunning, or toward a direction."""
     finite = [pts[key] for key in on if key in near]
     dirs = [ic.centres[key].direction for key in on if ic.centres[key].at_infinity]
-    if len(finite) >= 2:
+    spread = len(finite) >= 2 and max(math.dist(p, finite[0]) for p in finite) > 1e-9
+    if spread:
         a = finite[0]
         b = max(finite, key=lambda p: math.dist(p, a))
         d = math.dist(a, b)
@@ -148,7 +149,7 @@ def _line(on: list[tuple[str, str]], ic: InstantCentres, pts: dict, near: set) -
             hi += ARROW_MM
             lo -= ARROW_MM
         return [Segment((a[0] + lo * u[0], a[1] + lo * u[1]), (a[0] + hi * u[0], a[1] + hi * u[1]), "construction")]
-    if len(finite) == 1 and dirs:
+    if finite and dirs:  # one point (or several at one place) and a direction
         a, u = finite[0], dirs[0]
         assert u is not None
         return [Segment((a[0] - 3 * ARROW_MM * u[0], a[1] - 3 * ARROW_MM * u[1]),
