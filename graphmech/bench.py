@@ -363,4 +363,7 @@ def run_bench(quick: bool = False) -> dict[str, Any]:
     fly = wittenbauer_records(repeat=2 if quick else 5)
     motion = true_motion_records(quick=quick)
     notes += _flywheel_notes(fly)
-    return {"records": records + cams + fly + motion, "notes": notes}
+    from graphmech.bench_ic import ic_records
+
+    ics = ic_records(quick=quick)
+    return {"records": records + cams + fly + motion + ics, "notes": notes}
