@@ -388,3 +388,55 @@ def test_measured_instant_centre_values_are_judged_within_the_drawing_precision(
         sc = __import__("dataclasses").replace(sc, measured=(("omega_3_ic", 2.0),))
         judge(analyse(sc))
     assert "name one, e.g. omega_3_ic@30" in str(e.value)
+
+
+def test_centres_and_topologies_are_frozen():
+    import dataclasses
+
+    from graphmech.mechanisms.topology import Pair
+
+    an = analyse(scene_of(SLIDER_CRANK))
+    c = an.instant_centres.centres[0].centre("1", "3")
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        c.point = (0.0, 0.0)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        Pair("R", ("1", "2")).kind = "P"
+
+
+from hypothesis import HealthCheck, assume, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(a=st.floats(20, 80), b=st.floats(60, 160), c=st.floats(40, 140), d=st.floats(60, 160),
+       phi=st.floats(0, 360), branch=st.sampled_from(["left", "right"]))
+def test_kennedy_any_three_centres_are_in_line_and_agree_with_the_exact_ones(a, b, c, d, phi, branch):
+    """For every three links i, j, k the centres P_ij, P_jk, P_ik are on one line (Kennedy), and
+    every centre and ω agrees with the exact kinematics unless the construction says it is
+    ill-conditioned."""
+    from graphmech.errors import DegenerateConstruction
+
+    try:
+        an = analyse(scene_of(FOURBAR.format(d=d, a=a, b=b, c=c, phi=phi, branch=branch),
+                              find=["P13", "P24", "omega_3_ic", "omega_4_ic", "v_C_ic"]))
+    except DegenerateConstruction:  # cannot be assembled at this angle
+        assume(False)
+        return
+    ic = an.instant_centres.centres[0]
+    assume(not ic.undetermined and an.exact.valid[0])
+    for i, j, k in combinations(ic.links, 3):
+        pts = [ic.centre(x, y) for x, y in ((i, j), (j, k), (i, k))]
+        fin = [p.point for p in pts if p.point is not None]
+        dirs = [p.direction for p in pts if p.direction is not None]
+        if len(fin) == 3:
+            (x0, y0), (x1, y1), (x2, y2) = fin
+            area = abs((x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0))
+            span = max(math.dist(fin[0], fin[1]), math.dist(fin[0], fin[2]), math.dist(fin[1], fin[2]))
+            assert area <= 1e-9 * max(span, 1.0) ** 2 * max(p.cond for p in pts)
+        elif len(fin) == 2 and dirs:
+            (x0, y0), (x1, y1) = fin
+            u = dirs[0]
+            assert abs((x1 - x0) * u[1] - (y1 - y0) * u[0]) <= 1e-9 * max(math.dist(*fin), 1.0) * max(
+                p.cond for p in pts)
+    for r in an.rows:
+        assert r.rel_error <= 1e-9 or r.ill_conditioned, r
