@@ -438,7 +438,7 @@ def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str])
 # ---------------------------------------------------------------------------- v = 0 over the turn
 
 
-def _signed(linkage: Linkage, x: str) -> tuple[str, str, tuple[float, float] | None]:
+def signed_rate(linkage: Linkage, x: str) -> tuple[str, str, tuple[float, float] | None]:
     """Which signed rate vanishes with v_X: ("omega", link, None) for a point of a link pivoted on the
     frame, ("slide", link, guide direction) for a slider on a frame guide."""
     from graphmech.methods.instant_centres import direct_centres
@@ -469,7 +469,7 @@ def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
     linkage = an.build.linkage
     if not isinstance(linkage.driver, Crank):
         raise ValueError("crank angles with a vanishing velocity need a crank as the driver")
-    kind, lid, u = _signed(linkage, x)
+    kind, lid, u = signed_rate(linkage, x)
     plan, build = an.plan, an.build
     mu = an.scales["l"]
     grid = np.linspace(0.0, 2.0 * math.pi, ZERO_SAMPLES + 1)

@@ -17,7 +17,7 @@ from typing import Any, Sequence
 
 from graphmech.methods.figures import mechanism_items
 from graphmech.methods.instant_centres import Centre, InstantCentres, centre_name, direct_centres, pair
-from graphmech.render.primitives import Arrow, Circle, Label, Panel, Primitive, Segment
+from graphmech.render.primitives import ArcArrow, Arrow, Circle, Label, Panel, Primitive, Segment
 from graphmech.render.style import subscript
 from graphmech.scales import format_scale, round_scale
 
@@ -236,7 +236,55 @@ def ic_panels(an: Any, page: tuple[float, float], first_row: int = 0) -> list[Pa
         head = "Instant centres, " + position_text(build, an.labels[i])
         panels.append(ic_panel(f"ic-{an.labels[i]}", head, build, pos, ic, mu, notes, marks, first_row + i, spans))
         panels.append(circle_panel(f"ic-circle-{an.labels[i]}", ic, first_row + i))
+    if ica is not None:
+        last = first_row + len(an.solutions)
+        for k, (x, zs) in enumerate(ica.zeros.items()):
+            if zs:
+                panels.append(zero_panel(an, x, zs, spans, last + k))
     return panels
+
+
+def zero_panel(an: Any, x: str, zeros: Sequence[float], spans: dict[int, tuple[float, float]] | None,
+               row: int) -> Panel:
+    """The mechanism drawn at each crank angle where v_x = 0, with the centre that makes it so:
+    the driver's centre with x's link falls on the driver's pivot (the ratio's numerator is 0)."""
+    from graphmech.ic_check import positions_mm
+    from graphmech.methods.instant_centres import instant_centres
+
+    build = an.build
+    linkage = build.linkage
+    driver = linkage.driver.link
+    from graphmech.ic_check import signed_rate
+
+    carrier = signed_rate(linkage, x)[1]  # the rocker or slider whose rate vanishes with v_x
+    items: list[Primitive] = []
+    seen: set[tuple[str, float, float]] = set()
+    for k, z in enumerate(zeros):
+        sol = an.plan.solve({build.param: float(z)})
+        pos = positions_mm(build, sol)
+        for it in mechanism_items(build, pos, spans):
+            if k and isinstance(it, ArcArrow) or (isinstance(it, Label) and it.text.startswith("ω") and k):
+                continue  # the driver's sense once
+            if isinstance(it, Label):  # the frame's letters once
+                key = (it.text, round(it.anchor[0], 6), round(it.anchor[1], 6))
+                if key in seen:
+                    continue
+                seen.add(key)
+            items.append(it)
+        tip = pos.get(getattr(linkage.driver, "tip", ""), None)
+        if tip is not None:
+            items.append(Label(f"φ{subscript(driver)} = {math.degrees(z):.2f}°", tip, (), 3.0, italic=False))
+        ic = instant_centres(linkage, pos, mu_l=build.mu_l)
+        if carrier is not None and carrier != driver:
+            c = ic.centre(driver, carrier)
+            key = ("P", round(c.point[0], 6), round(c.point[1], 6)) if c.point is not None else None
+            if c.point is not None and key not in seen:
+                seen.add(key)  # type: ignore[arg-type]
+                items.append(Circle(c.point, 1.4, "result"))
+                items.append(Label(label(driver, carrier), c.point, (), 3.0))
+    ang = ", ".join(f"{math.degrees(z):.2f}°" for z in zeros)
+    return Panel(f"ic-zero-{x}", f"v{subscript(x)} = 0", tuple(items),
+                 (format_scale("l", build.mu_l), f"at φ{subscript(driver)} = {ang}"), row=row)
 
 
 def _omega_note(ic: InstantCentres, lid: str, mu_l: float) -> str:

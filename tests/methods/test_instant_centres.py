@@ -310,8 +310,13 @@ def test_the_sheet_draws_every_centre_and_the_polygon_of_links():
     from graphmech.render.sheet import draw_sheet
 
     svg, warnings = render_scene(SCENES / "kin.fourbar_instant_centres.toml")
-    for name in ("P₁₃", "P₂₄", "P₁₂", "P₃₄", "Polygon of links"):
+    for name in ("P₁₃", "P₂₄", "P₁₂", "P₃₄", "Polygon of links", "φ₂ = 26.38°", "φ₂ = 226.57°"):
         assert name in svg
+    book = analyse(parse_scene(tomllib.loads((SCENES / "kin.fourbar_instant_centres.toml").read_text()), "b"))
+    zero = ic_panels(book, (420.0, 297.0))[-1]
+    assert zero.name == "ic-zero-C"  # the mechanism where v_C = 0: P24 on P12 = A, twice
+    marks = [it.anchor for it in zero.items if type(it).__name__ == "Label" and it.text == "P₂₄"]
+    assert marks == [pytest.approx((0.0, 0.0), abs=1e-9)]
     an = analyse(scene_of(SIXBAR))
     panels = ic_panels(an, (420.0, 297.0))
     assert [p.name for p in panels] == ["ic-40", "ic-circle-40", "ic-165", "ic-circle-165"]
@@ -440,3 +445,42 @@ def test_kennedy_any_three_centres_are_in_line_and_agree_with_the_exact_ones(a, 
                 p.cond for p in pts)
     for r in an.rows:
         assert r.rel_error <= 1e-9 or r.ill_conditioned, r
+
+
+COMPOUND = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+D = [120, 0]
+G = [200, 100]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "B"
+length = 60
+angle = [60, 150]
+omega = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["3", "4"]
+lengths = [120, 90]
+branch = "left"
+[[dyad]]
+type = "RRR"
+joints = ["C", "E", "G"]
+links = ["5", "6"]
+lengths = [110, 80]
+branch = "left"
+"""
+
+
+def test_a_compound_hinge_is_the_centre_of_every_two_of_its_links():
+    # link 5 hangs on C, where 3 and 4 already meet: P34 = P35 = P45 = C
+    an = analyse(scene_of(COMPOUND))
+    assert all_centres_agree(an) == 2 * 15
+    ic = an.instant_centres.centres[0]
+    c = positions_mm(an.build, an.solutions[0])["C"]
+    assert ic.centre("3", "4").point == ic.centre("3", "5").point == ic.centre("4", "5").point == c
+    assert sum(1 for x in ic.centres.values() if x.kind == "direct") == 8  # A, B, D, G, E and C thrice
