@@ -44,8 +44,13 @@ def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequ
         for x in p.links:
             if x in where and mm(p.at) not in where[x]:
                 where[x].append(mm(p.at))
-    for x, ps in where.items():  # each link through its pairs
-        if len(ps) == 2:
+    rollers = set(topo.rollers())
+    for x, ps in where.items():  # each link through its pairs; a roller as its circle
+        if x in rollers and len(ps) == 2:
+            pin = next(mm(p.at) for p in topo.pairs_of(x) if p.kind == "R" and p.at is not None)
+            contact = next(q for q in ps if q != pin)
+            items.append(Circle(pin, math.dist(pin, contact), "given"))
+        elif len(ps) == 2:
             items.append(Segment(ps[0], ps[1], "given"))
         elif len(ps) > 2:
             items.append(Polyline(tuple(_hull(ps)), "given", closed=True))
@@ -133,7 +138,8 @@ def structure_sheet(title: str, an: Any, page: tuple[float, float], footer: tupl
         if m.rank is not None:
             notes.append(f"rank J = {m.rank} of {m.equations}: F = 3·{m.n} − {m.rank} − {m.F_local} = {m.F_actual}")
         if ss.geometry:
-            mu = an.scales.get("l") or choose_scale(ss.topology, (page[0] * 0.55, page[1] * 0.5))
+            room = (page[0] * 0.6, max(page[1] - 120.0, 40.0))  # less title, notes, the block diagram
+            mu = an.scales.get("l") or choose_scale(ss.topology, room)
             an.scales["l"] = mu
             panels.append(mechanism_panel(ss.topology, an.structure, mu, notes))
         if an.structure is not None:
