@@ -30,8 +30,9 @@ from graphmech import tolerances as T
 from graphmech.errors import SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
-from graphmech.methods.instant_centres import (InstantCentres, centre_name, instant_centres, least_speed_on_line,
-                                               pair, polygon_of_links)
+from graphmech.methods.instant_centres import (InstantCentres, centre_name, common_link, instant_centres,
+                                               least_speed_on_line, pair, point_names, polygon_of_links,
+                                               positions_mm, signed_rate, split_line)
 
 #: The ``show`` entry that draws the instant centres.
 SHOW = "instant_centres"
@@ -68,12 +69,6 @@ class ICAnalysis:
 
 
 # ---------------------------------------------------------------------------- the method at a position
-
-
-def positions_mm(build: Any, sol: Any) -> dict[str, tuple[float, float]]:
-    """Every point of the kinematic diagram as the construction drew it (mm)."""
-    return {name: (float(sol.values[slot][0]), float(sol.values[slot][1]))
-            for name, slot in build.mech.items() if slot in sol.values}
 
 
 def centres_at(an: Any, sol: Any) -> InstantCentres:
@@ -115,26 +110,6 @@ def relative_speed(linkage: Linkage, kin: Kinematics, a: str, b: str, i: int) ->
     wb, bx, by = _twist(linkage, kin, b, i)
     size = max(float(np.hypot(*p[i])) for p in kin.point.values()) + 1e-300
     return abs(wa - wb) * size + math.hypot(ax - bx, ay - by)
-
-
-def point_names(linkage: Linkage) -> set[str]:
-    names = set(linkage.frame_points)
-    for pts in linkage.links().values():
-        names.update(pts)
-    return names
-
-
-def split_line(text: str, names: set[str]) -> tuple[str, str] | None:
-    """``"BC"`` → ``("B", "C")``: the one split into two known points."""
-    splits = [(text[:k], text[k:]) for k in range(1, len(text)) if text[:k] in names and text[k:] in names]
-    return splits[0] if len(splits) == 1 else None
-
-
-def common_link(linkage: Linkage, a: str, b: str) -> str | None:
-    for lid, pts in linkage.links().items():
-        if lid != linkage.frame_link and a in pts and b in pts:
-            return lid
-    return None
 
 
 def _carrier(linkage: Linkage, ic: InstantCentres, x: str) -> str | None:
@@ -347,8 +322,6 @@ def judge(an: Any, precision_mm: float) -> tuple[list[Any], list[tuple[str, str]
     numerator) is good to ``precision_mm × μ``; a crank angle to the angle the precision
     subtends at the crank's length; a direction to the angle it subtends over the mechanism.
     """
-    import math as _m
-
     from graphmech.check import Verdict, characteristic, measured_entries, split_name
 
     ica: ICAnalysis | None = an.instant_centres
@@ -368,7 +341,7 @@ def judge(an: Any, precision_mm: float) -> tuple[list[Any], list[tuple[str, str]
         if row.unit == "deg":
             crank = getattr(an.build.linkage.driver, "length", an.size) / an.scales["l"]
             arm = crank if base.startswith("phi_v0_") else size_mm
-            tol = _m.degrees(precision_mm / max(arm, precision_mm))
+            tol = math.degrees(precision_mm / max(arm, precision_mm))
         elif row.drawn_mm is not None:
             tol = precision_mm * abs(row.scale)
         else:
@@ -436,30 +409,6 @@ def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str])
 
 
 # ---------------------------------------------------------------------------- v = 0 over the turn
-
-
-def signed_rate(linkage: Linkage, x: str) -> tuple[str, str, tuple[float, float] | None]:
-    """Which signed rate vanishes with v_X: ("omega", link, None) for a point of a link pivoted on the
-    frame, ("slide", link, guide direction) for a slider on a frame guide."""
-    from graphmech.methods.instant_centres import direct_centres
-
-    frame = linkage.frame_link
-    carriers = [lid for lid, pts in linkage.links().items() if x in pts and lid != frame]
-    if x in linkage.frame_points or not carriers:
-        raise ValueError(f"{x} is a point of the frame: its velocity is always 0" if x in linkage.frame_points
-                         else f"no point {x!r} in the linkage")
-    for dc in direct_centres(linkage):
-        if frame not in dc.links:
-            continue
-        lid = dc.links[0] if dc.links[1] == frame else dc.links[1]
-        if lid not in carriers:
-            continue
-        if dc.at is not None:
-            return "omega", lid, None
-        assert dc.normal is not None
-        return "slide", lid, (math.sin(dc.normal), -math.cos(dc.normal))
-    raise ValueError(f"v_{x} vanishes only where {x} happens to be the instant centre of its link with the frame, "
-                     f"which moves: choose a point of a link pivoted on the frame or of a slider on a frame guide")
 
 
 def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
@@ -567,4 +516,4 @@ def _roots(grid: np.ndarray, values: np.ndarray, f: Callable[[float], float]) ->
     return out
 
 
-__all__ = ["SHOW", "ICAnalysis", "add_rows", "asked", "claims", "exact_centre", "positions_mm"]
+__all__ = ["SHOW", "ICAnalysis", "add_rows", "asked", "claims", "exact_centre", "judge", "positions_mm"]

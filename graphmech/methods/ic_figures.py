@@ -193,9 +193,9 @@ def circle_panel(name: str, ic: InstantCentres, row: int | None = None) -> Panel
 def ic_panels(an: Any, page: tuple[float, float], first_row: int = 0) -> list[Panel]:
     """The instant-centre panels of every constructed position of a checked linkage scene."""
     from graphmech.check import position_text
-    from graphmech.ic_check import positions_mm
     from graphmech.methods.figures import _guide_spans
-    from graphmech.methods.instant_centres import least_speed_on_line
+    from graphmech.methods.instant_centres import (common_link, least_speed_on_line, point_names, positions_mm,
+                                                   split_line)
 
     ica = an.instant_centres
     build = an.build
@@ -224,8 +224,6 @@ def ic_panels(an: Any, page: tuple[float, float], first_row: int = 0) -> list[Pa
                          + ", ".join(f"{math.degrees(z):.2f}°" for z in zs))
         marks = []
         for text in least:
-            from graphmech.ic_check import common_link, point_names, split_line
-
             ab = split_line(text, point_names(build.linkage))
             lid = common_link(build.linkage, *ab) if ab else None
             if ab and lid:
@@ -248,14 +246,11 @@ def zero_panel(an: Any, x: str, zeros: Sequence[float], spans: dict[int, tuple[f
                row: int) -> Panel:
     """The mechanism drawn at each crank angle where v_x = 0, with the centre that makes it so:
     the driver's centre with x's link falls on the driver's pivot (the ratio's numerator is 0)."""
-    from graphmech.ic_check import positions_mm
-    from graphmech.methods.instant_centres import instant_centres
+    from graphmech.methods.instant_centres import instant_centres, positions_mm, signed_rate
 
     build = an.build
     linkage = build.linkage
     driver = linkage.driver.link
-    from graphmech.ic_check import signed_rate
-
     carrier = signed_rate(linkage, x)[1]  # the rocker or slider whose rate vanishes with v_x
     items: list[Primitive] = []
     seen: set[tuple[str, float, float]] = set()

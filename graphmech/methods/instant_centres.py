@@ -27,7 +27,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from itertools import combinations
-from typing import Literal, Mapping
+from typing import Any, Literal, Mapping
 
 import numpy as np
 
@@ -470,5 +470,59 @@ def least_speed_on_line(ic: InstantCentres, link: str, a: XY, b: XY) -> tuple[fl
     return s, dist, foot
 
 
-__all__ = ["Centre", "InstantCentres", "LinkMotion", "Direct", "centre_name", "direct_centres", "instant_centres",
-           "least_speed_on_line", "pair", "polygon_of_links"]
+# ---------------------------------------------------------------------------- helpers on the linkage
+
+
+def positions_mm(build: Any, sol: Any) -> dict[str, tuple[float, float]]:
+    """Every point of the kinematic diagram as the construction drew it (mm)."""
+    return {name: (float(sol.values[slot][0]), float(sol.values[slot][1]))
+            for name, slot in build.mech.items() if slot in sol.values}
+
+
+def point_names(linkage: Linkage) -> set[str]:
+    """Every named point of the linkage (the frame's too)."""
+    names = set(linkage.frame_points)
+    for pts in linkage.links().values():
+        names.update(pts)
+    return names
+
+
+def split_line(text: str, names: set[str]) -> tuple[str, str] | None:
+    """``"BC"`` → ``("B", "C")``: the one split into two known points."""
+    splits = [(text[:k], text[k:]) for k in range(1, len(text)) if text[:k] in names and text[k:] in names]
+    return splits[0] if len(splits) == 1 else None
+
+
+def common_link(linkage: Linkage, a: str, b: str) -> str | None:
+    """The moving link that carries both points, if any."""
+    for lid, pts in linkage.links().items():
+        if lid != linkage.frame_link and a in pts and b in pts:
+            return lid
+    return None
+
+
+def signed_rate(linkage: Linkage, x: str) -> tuple[str, str, tuple[float, float] | None]:
+    """Which signed rate vanishes with v_X: ("omega", link, None) for a point of a link pivoted on the
+    frame, ("slide", link, guide direction) for a slider on a frame guide."""
+    frame = linkage.frame_link
+    carriers = [lid for lid, pts in linkage.links().items() if x in pts and lid != frame]
+    if x in linkage.frame_points or not carriers:
+        raise ValueError(f"{x} is a point of the frame: its velocity is always 0" if x in linkage.frame_points
+                         else f"no point {x!r} in the linkage")
+    for dc in direct_centres(linkage):
+        if frame not in dc.links:
+            continue
+        lid = dc.links[0] if dc.links[1] == frame else dc.links[1]
+        if lid not in carriers:
+            continue
+        if dc.at is not None:
+            return "omega", lid, None
+        assert dc.normal is not None
+        return "slide", lid, (math.sin(dc.normal), -math.cos(dc.normal))
+    raise ValueError(f"v_{x} vanishes only where {x} happens to be the instant centre of its link with the frame, "
+                     f"which moves: choose a point of a link pivoted on the frame or of a slider on a frame guide")
+
+
+__all__ = ["Centre", "InstantCentres", "LinkMotion", "Direct", "centre_name", "common_link", "direct_centres",
+           "instant_centres", "least_speed_on_line", "pair", "point_names", "polygon_of_links", "positions_mm",
+           "signed_rate", "split_line"]

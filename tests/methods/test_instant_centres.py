@@ -12,7 +12,6 @@ import pytest
 
 from graphmech.check import analyse
 from graphmech.errors import SceneError
-from graphmech.exact.linkage import solve as solve_exact
 from graphmech.ic_check import exact_centre, positions_mm
 from graphmech.mechanisms.linkage import Crank, Linkage, RRR
 from graphmech.methods.instant_centres import centre_name, instant_centres
@@ -268,20 +267,22 @@ def test_dead_centre_of_the_rocker_is_where_p24_meets_p12():
 
 
 def test_rocker_driven_dead_centre_leaves_the_crank_undetermined():
-    # drive the rocker DC: at A, B, C in line P24 coincides with P14? no — with P12 (= A), so
-    # ω2 = ω4·P14P24/P12P24 has a zero denominator: the crank cannot be driven from the rocker.
+    # the rocker DC drives; with A, B, C in line P24 falls on P12 = A, so ω2 = ω4·P14P24/P12P24
+    # has a zero denominator: a dead centre, the crank cannot be driven from the rocker
     fb = Linkage({"D": (0.12, 0.0), "A": (0.0, 0.0)}, Crank("4", "D", "C", 0.09, 10.0),
                  (RRR("C", "B", "A", ("3", "2"), (0.12, 0.06), "right"),), frame_link="1")
-    a, b = np.array([0.0, 0.0]), np.array([0.06, 0.0]) * 1.0
-    # place C on the line AB beyond B with |AC| = 0.18 and |DC| = 0.09
+    # C on the line AB beyond B: |AC| = 0.18 = l_AB + l_BC, |DC| = 0.09
     ang = math.acos((0.18 ** 2 + 0.12 ** 2 - 0.09 ** 2) / (2 * 0.18 * 0.12))
-    c = 0.18 * np.array([math.cos(ang), math.sin(ang)])
-    b = 0.06 * np.array([math.cos(ang), math.sin(ang)])
-    pos = {"A": (0.0, 0.0), "D": (120.0, 0.0), "B": tuple(b * 1000), "C": tuple(c * 1000)}
+    u = np.array([math.cos(ang), math.sin(ang)])
+    pos = {"A": (0.0, 0.0), "D": (120.0, 0.0), "B": tuple(60.0 * u), "C": tuple(180.0 * u)}
     ic = instant_centres(fb, pos, mu_l=0.001)
     assert ic.centre("2", "4").point == pytest.approx((0.0, 0.0), abs=1e-9)
     assert "2" in ic.undetermined and "dead centre" in ic.undetermined["2"]
-    assert "3" in ic.motions or "3" in ic.undetermined
+    # the coupler neither: P13 (on AB and on DC) is C itself, where C moves, so
+    # ω3 = ω4·P14P34/P13P34 divides by zero too
+    assert ic.centre("1", "3").point == pytest.approx(pos["C"], abs=1e-9)
+    assert set(ic.undetermined) == {"2", "3"} and "dead centre" in ic.undetermined["3"]
+    assert ic.motions["4"].omega == 10.0
 
 
 def test_only_what_is_asked_is_computed():
