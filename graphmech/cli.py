@@ -213,10 +213,10 @@ def _check(args: argparse.Namespace) -> int:
         if an.braking is not None:
             extra_doc["braking"] = an.braking_summary()
     elif scene.structure is not None:
-        from graphmech.structure_check import analyse_structure
+        from graphmech.structure_check import analyse_structure, judge_structure
 
         an = analyse_structure(scene)
-        verdicts = []
+        verdicts = judge_structure(an, tuple(extra))
         extra_doc["structure"] = an.summary()
     elif scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam

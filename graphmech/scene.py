@@ -1905,6 +1905,10 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     units = _read_units(top)
     top.units = units
     has_cam, has_driver = "cam" in data, "driver" in data
+    if "structure" in data:  # mobility and structure: graphmech.scene_structure
+        from graphmech.scene_structure import parse_structure_scene
+
+        return parse_structure_scene(data, source, top, order)
     if has_cam and "flywheel" in data:  # one problem, as below
         top.problem(
             "flywheel",
@@ -1921,10 +1925,6 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         raise SceneError(problems, source)
     if has_cam:
         return _parse_cam_scene(data, source, top, order)
-    if "structure" in data:  # mobility and structure: graphmech.scene_structure
-        from graphmech.scene_structure import parse_structure_scene
-
-        return parse_structure_scene(data, source, top, order)
     if "flywheel" in data:
         from graphmech.scene_flywheel import parse_flywheel_scene
 

@@ -14,7 +14,7 @@ from typing import Any, Mapping
 from graphmech.errors import SceneError
 from graphmech.mechanisms.topology import Pair, Topology
 from graphmech.scene import (_LINKAGE_KEYS, _MISSING, _TOP_KEYS, Scene, _rank, _read_check, _read_header,
-                             _read_page, _read_scales, _Reader, _say)
+                             _read_measured, _read_page, _read_scales, _Reader, _say)
 
 #: What a structure scene may show.
 STRUCTURE_SHOW_CHOICES = ("structure",)
@@ -165,10 +165,12 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: _Reader, order
     problems = top.problems
     title, show, find = _read_header(top, STRUCTURE_SHOW_CHOICES, ("structure",))
     scales = _read_scales(top, entries=(("l", "length"),))
-    for key in _LINKAGE_KEYS:
+    for key in (*_LINKAGE_KEYS, "cam", "flywheel"):
         if key in data:
             top.used.add(key)
-            top.problem(key, "belongs to a linkage scene; this is a structure scene ([structure])")
+            what = {"cam": "a cam scene", "flywheel": "a flywheel scene"}.get(key, "a linkage scene")
+            top.problem(key, f"belongs to {what}; this is a structure scene ([structure]): put each in a "
+                             "scene of its own")
     st = top.table_at("structure")
     structure = None if st is None else _read_structure(st)
     for i, name in enumerate(find):
@@ -176,6 +178,11 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: _Reader, order
         if base not in STRUCTURE_QUANTITIES:
             top.problem(f"find[{i}]", f"unknown quantity {base!r}: a structure scene finds "
                                       f"{', '.join(STRUCTURE_QUANTITIES)}")
+    measured = _read_measured(top, None, cam=True)  # whole numbers, no positions (judged exactly)
+    for name, _ in measured:
+        if name not in STRUCTURE_QUANTITIES:
+            top.problem(f"measured.{name}", f"unknown quantity {name!r}: a structure scene judges "
+                                            f"{', '.join(STRUCTURE_QUANTITIES)}")
     precision = _read_check(top)
     page = _read_page(top)
     top.known.update(_TOP_KEYS)
@@ -185,8 +192,8 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: _Reader, order
         sub_order = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
         problems.sort(key=lambda p: _rank(p, order, sub_order, "structure"))
         raise SceneError(problems or [("structure", "invalid")], source)
-    return Scene(source=source, title=title, show=show, find=find, scales=scales, precision_mm=precision,
-                 page=page, structure=structure)
+    return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
+                 precision_mm=precision, page=page, structure=structure)
 
 
 __all__ = ["Case", "STRUCTURE_QUANTITIES", "STRUCTURE_SHOW_CHOICES", "StructureScene", "parse_structure_scene"]

@@ -116,6 +116,35 @@ def analyse_structure(scene: Any) -> StructureAnalysis:
     return an
 
 
+def judge_structure(an: StructureAnalysis, extra: tuple[tuple[str, float], ...] = ()) -> list[Any]:
+    """Verdicts on measured counts (``F = 1``, ``class = 2`` …): whole numbers, judged exactly.
+
+    Raises
+    ------
+    SceneError
+        For a name that is not a count of this scene (or cannot be found without coordinates).
+    """
+    from graphmech.check import Verdict
+    from graphmech.errors import SceneError
+
+    doc = an.summary()
+    values = {k: doc[k] for k in ("n", "pl", "ph", "F_local", "p_redundant", "F_count", "F", "class") if k in doc}
+    if "jacobian" in doc:
+        j = doc["jacobian"]
+        values.update({"F_actual": j["F_actual"], "rank": j["rank"], "p_redundant_actual": j["p_redundant"]})
+    out, problems = [], []
+    entries = [(f"measured.{n}", n, v) for n, v in an.scene.measured] + [(f"--measured {n}", n, v) for n, v in extra]
+    for key, name, value in entries:
+        if name not in values:
+            problems.append((key, f"{name} is not found by this scene (it finds {', '.join(values) or 'nothing'})"))
+            continue
+        e = float(values[name])
+        out.append(Verdict(name, value, e, 0.0, value == e, ""))
+    if problems:
+        raise SceneError(problems, an.scene.source)
+    return out
+
+
 def text_summary(an: StructureAnalysis) -> list[str]:
     """Lines for ``graphmech check`` (without --json)."""
     lines = []
@@ -141,4 +170,4 @@ def text_summary(an: StructureAnalysis) -> list[str]:
     return lines
 
 
-__all__ = ["StructureAnalysis", "analyse_structure", "formula", "text_summary"]
+__all__ = ["StructureAnalysis", "analyse_structure", "formula", "judge_structure", "text_summary"]

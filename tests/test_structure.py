@@ -167,3 +167,19 @@ def test_structure_sheet_outlines_the_groups():
     svg, warnings = render_scene(SCENES / "dof.hfut_cases-ic_engine_EG.toml")
     assert "III (2,3,4,5)" in svg and "II (7,8)" in svg and "special construction" in svg
     assert "I: 1 + 6" in svg and "rank J = 20 of 20" in svg
+
+
+def test_measured_counts_are_judged_exactly_and_mixed_scenes_refused(tmp_path):
+    code, out, err = run_cli("check", str(SCENES / "dof.hfut_cases-ic_engine_EG.toml"), "--json",
+                             "--measured", "F=1,class=2,rank=20")
+    import json
+
+    doc = json.loads(out)
+    assert code == 1  # the class is III from EG, not II
+    assert [(v["name"], v["ok"]) for v in doc["measured"]] == [("F", True), ("class", False), ("rank", True)]
+    code, _, err = run_cli("check", str(SCENES / "dof.hfut_cases-ic_engine_EG.toml"), "--measured", "v_C=1")
+    assert code == 2 and "--measured v_C" in err
+    p = tmp_path / "mix.toml"
+    p.write_text('[cam]\nbase_radius_mm = 30\n[structure]\nframe = "1"\n')
+    code, _, err = run_cli("check", str(p))
+    assert code == 2 and "cam: belongs to a cam scene; this is a structure scene" in err
