@@ -145,7 +145,14 @@ def all_centres_agree(an, tol=1e-9):
         for a, b in combinations(ic.links, 2):
             c = ic.centre(a, b)
             assert c.known, (centre_name(a, b), c.why)
+            if c.kind == "direct" and c.point is not None:  # a joint: the exact joint
+                x, y = c.point[0] * mu + ox, c.point[1] * mu + oy
+                assert math.dist((x, y), an.exact.point[c.via[0]][i]) <= tol * an.size
+                checked += 1
+                continue
             kind, ev = exact_centre(linkage, an.exact, a, b, i)
+            if c.at_infinity and kind == "point":  # parallel in the construction, ~1e16 away exactly
+                kind, ev = "direction", (ev[0] / math.hypot(*ev), ev[1] / math.hypot(*ev))
             if c.at_infinity:
                 assert kind == "direction", centre_name(a, b)
                 assert abs(c.direction[0] * ev[1] - c.direction[1] * ev[0]) < tol
@@ -485,3 +492,25 @@ def test_a_compound_hinge_is_the_centre_of_every_two_of_its_links():
     c = positions_mm(an.build, an.solutions[0])["C"]
     assert ic.centre("3", "4").point == ic.centre("3", "5").point == ic.centre("4", "5").point == c
     assert sum(1 for x in ic.centres.values() if x.kind == "direct") == 8  # A, B, D, G, E and C thrice
+
+
+def _linkage_examples():
+    import re
+
+    from tests.conftest import ROOT
+
+    blocks = re.findall(r"```toml\n(.*?)```", (ROOT / "docs" / "scene-format.md").read_text(encoding="utf-8"), re.S)
+    out = [(f"doc{i}", b) for i, b in enumerate(blocks)]
+    out += [(p.stem, p.read_text(encoding="utf-8")) for p in sorted(SCENES.glob("*.toml"))
+            if p.stem != "ic.parallelogram_change_point"]
+    return [(n, t) for n, t in out if not any(k in tomllib.loads(t) for k in ("cam", "flywheel", "structure"))]
+
+
+@pytest.mark.parametrize("name,text", _linkage_examples(), ids=[n for n, _ in _linkage_examples()])
+def test_every_documented_and_reference_linkage_has_all_its_centres_right(name, text):
+    data = tomllib.loads(text)
+    data["show"], data["find"] = ["instant_centres"], []
+    data.pop("measured", None)
+    an = analyse(parse_scene(data, f"{name}.toml"))
+    n = len(an.instant_centres.centres[0].links)
+    assert all_centres_agree(an) == len(an.labels) * n * (n - 1) // 2
