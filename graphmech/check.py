@@ -121,7 +121,7 @@ def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) 
 
     for k, raw in enumerate(scene.find):
         base, at = split_name(raw)
-        if ic_check.claims(base):  # the instant-centre method's names (graphmech.ic_check)
+        if ic_check.claims(raw):  # the instant-centre method's names (graphmech.ic_check)
             continue
         if base not in build.quantities:
             close = close_names(base, build.quantities)
@@ -535,7 +535,7 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
     from graphmech import ic_check
 
     for key, name, value in measured_entries(scene, an.extra_measured):
-        if ic_check.claims(split_name(name)[0]):  # judged by graphmech.ic_check, below
+        if ic_check.claims(name):  # judged by graphmech.ic_check, below
             continue
         try:
             qname, i, segment = _resolve(name, an.build, an.labels)

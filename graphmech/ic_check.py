@@ -47,9 +47,17 @@ _ZERO = re.compile(r"phi_v0_([A-Z]+[0-9]*['′]*)")
 _ZERO_ROW = re.compile(r"phi_v0_([A-Z]+[0-9]*['′]*)_[0-9]+")  # one of its rows, as a measured name
 
 
+def canonical(name: str) -> str:
+    """``omega_3@ic`` (the alias) → ``omega_3_ic``; other names unchanged."""
+    base, sep, rest = name.partition("@")
+    if rest == "ic" or rest.startswith("ic@"):
+        return base + "_ic" + rest[2:]
+    return name
+
+
 def claims(name: str) -> bool:
-    """Whether a ``find`` name (without its ``@position``) is the instant-centre method's."""
-    base = name.partition("@")[0]
+    """Whether a ``find`` name (with or without its ``@position``) is the instant-centre method's."""
+    base = canonical(name).partition("@")[0]
     return any(p.fullmatch(base) for p in (_CENTRE, _OMEGA, _SPEED, _LEAST, _ZERO, _ZERO_ROW))
 
 
@@ -138,7 +146,7 @@ def add_rows(an: Any) -> ICAnalysis:
     requests += [(key, raw, True) for key, raw, _ in measured_entries(scene, an.extra_measured)]
     found: list[Any] = []
     for key, raw, judged in requests:
-        base, at = split_name(raw)
+        base, at = split_name(canonical(raw))
         if not claims(base):
             continue
         m_row = _ZERO_ROW.fullmatch(base)
@@ -328,9 +336,10 @@ def judge(an: Any, precision_mm: float) -> tuple[list[Any], list[tuple[str, str]
     out, problems = [], []
     size_mm = an.size / an.scales["l"]
     for key, name, value in measured_entries(an.scene, an.extra_measured):
-        base, at = split_name(name)
-        if not claims(base):
+        if not claims(name):
             continue
+        name = canonical(name)
+        base, at = split_name(name)
         if at is None and len(an.labels) > 1 and not base.startswith("phi_v0_"):
             problems.append((key, f"the scene has {len(an.labels)} positions: name one, e.g. {base}@{an.labels[0]}"))
             continue

@@ -1287,7 +1287,7 @@ def _read_measured(
             continue
         if "@" in key and labels is not None:
             label = key.split("@", 1)[1]
-            if label not in labels:
+            if label not in labels and label != "ic":  # omega_3@ic: by instant centres (ic_check)
                 r.problem(path, f"no position is labelled {label} (positions: {', '.join(labels)})")
                 continue
         out.append((key, x))

@@ -514,3 +514,14 @@ def test_every_documented_and_reference_linkage_has_all_its_centres_right(name, 
     an = analyse(parse_scene(data, f"{name}.toml"))
     n = len(an.instant_centres.centres[0].links)
     assert all_centres_agree(an) == len(an.labels) * n * (n - 1) // 2
+
+
+def test_the_at_ic_alias_names_the_same_values():
+    data = tomllib.loads((SCENES / "kin.fourbar_instant_centres.toml").read_text())
+    data["find"], data["measured"] = ["omega_3@ic", "v_C@ic"], {"omega_3@ic": 2.55}
+    from graphmech.check import judge
+
+    an = analyse(parse_scene(data, "alias.toml"))
+    assert [(r.name, round(r.graphical, 9)) for r in an.rows] == [("omega_3_ic", 2.538487323), ("v_C_ic", 0.400984584)]
+    [v] = judge(an)
+    assert v.name == "omega_3_ic" and v.ok
