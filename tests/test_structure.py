@@ -183,3 +183,19 @@ def test_measured_counts_are_judged_exactly_and_mixed_scenes_refused(tmp_path):
     p.write_text('[cam]\nbase_radius_mm = 30\n[structure]\nframe = "1"\n')
     code, _, err = run_cli("check", str(p))
     assert code == 2 and "cam: belongs to a cam scene; this is a structure scene" in err
+
+
+def test_rendering_instant_centres_and_structure_never_imports_matplotlib(tmp_path):
+    import subprocess
+    import sys
+
+    from tests.conftest import ROOT
+
+    scenes = [SCENES / "kin.fourbar_instant_centres.toml", SCENES / "dof.hfut_cases-3-2.toml"]
+    code = ("import sys; from graphmech.cli import main; "
+            f"rc = main(['render', *{[str(s) for s in scenes]!r}, '-d', r'{tmp_path}']); "
+            "assert not any(m.split('.')[0] == 'matplotlib' for m in sys.modules), 'matplotlib imported'; "
+            "sys.exit(rc)")
+    r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "dof.hfut_cases-3-2.svg").read_text().startswith("<svg")
