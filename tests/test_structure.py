@@ -199,3 +199,23 @@ def test_rendering_instant_centres_and_structure_never_imports_matplotlib(tmp_pa
     r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     assert (tmp_path / "dof.hfut_cases-3-2.svg").read_text().startswith("<svg")
+
+
+def test_precision_press_symmetric_half_is_found_redundant_only_when_symmetric(problems):
+    inp = problems["dof.hfut_cases"]["inputs"]
+    k = inp["labels"].index("precision_press_1")
+    doc, s = summary("dof.hfut_cases-precision_press_1")
+    assert (s["n"], s["pl"], s["ph"], s["p_redundant"]) == (inp["n"][k], inp["pl"][k], inp["ph"][k],
+                                                            inp["p_redundant"][k])
+    assert s["compound_hinges"] == ["M", "K1", "K2", "E"]
+    j = s["jacobian"]
+    assert (j["rank"], j["equations"], j["F_actual"], j["p_redundant"]) == (29, 30, 1, 1)
+    assert s["F"] == problems["dof.hfut_cases"]["book"]["F"][k] == 1
+    # move the right toggle's frame pivot 5 mm: no longer a mirror image, the press locks
+    data = tomllib.loads((SCENES / "dof.hfut_cases-precision_press_1.toml").read_text())
+    d2 = next(p for p in data["structure"]["pair"] if p["name"] == "D2")
+    d2["at"] = [75, 100]
+    an = analyse_structure(parse_scene(data, "asym.toml"))
+    assert (an.mobility.rank, an.mobility.F_actual, an.mobility.p_redundant_actual) == (30, 0, 0)
+    assert [(r.name, r.graphical, r.exact) for r in an.rows] == [("F", 1.0, 0.0), ("p_redundant", 1.0, 0.0)]
+    assert any("cannot move" in w for w in an.warnings)

@@ -138,7 +138,7 @@ def structure_sheet(title: str, an: Any, page: tuple[float, float], footer: tupl
         if m.rank is not None:
             notes.append(f"rank J = {m.rank} of {m.equations}: F = 3·{m.n} − {m.rank} − {m.F_local} = {m.F_actual}")
         if ss.geometry:
-            room = (page[0] * 0.6, max(page[1] - 120.0, 40.0))  # less title, notes, the block diagram
+            room = (page[0] * 0.6, max(page[1] - 135.0, 40.0))  # less title, notes, the block diagram
             mu = an.scales.get("l") or choose_scale(ss.topology, room)
             an.scales["l"] = mu
             panels.append(mechanism_panel(ss.topology, an.structure, mu, notes))
