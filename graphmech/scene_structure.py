@@ -22,6 +22,10 @@ STRUCTURE_SHOW_CHOICES = ("structure",)
 STRUCTURE_QUANTITIES = ("n", "pl", "ph", "p_redundant", "F_local", "F_count", "F", "F_actual", "rank",
                         "p_redundant_actual", "class")
 _PAIR_KINDS = ("R", "P", "higher")
+#: The most pairs (and printed cases) one structure scene may list.
+MAX_PAIRS = 200
+#: The most links one compound hinge may join.
+MAX_HINGE = 12
 
 
 @dataclass(frozen=True)
@@ -68,7 +72,11 @@ def _links(r: _Reader, key: str, *, required: bool = False) -> list[str] | None:
 
 def _read_structure(st: _Reader) -> StructureScene | None:
     cases = []
-    for c in st.tables_at("case"):
+    case_tables = st.tables_at("case")
+    if len(case_tables) > MAX_PAIRS:
+        st.problem(st.at("case"), f"{len(case_tables)} cases: at most {MAX_PAIRS} in one scene")
+        case_tables = []
+    for c in case_tables:
         label = c.string("label", required=True)
         n, pl = _count(c, "n"), _count(c, "pl")
         ph, pr, fl = _count(c, "ph", required=False), _count(c, "p_redundant", required=False), \
@@ -77,6 +85,9 @@ def _read_structure(st: _Reader) -> StructureScene | None:
         if None not in (label, n, pl, ph, pr, fl):
             cases.append(Case(label, n, pl, ph, pr, fl))  # type: ignore[arg-type]
     pair_tables = st.tables_at("pair")
+    if len(pair_tables) > MAX_PAIRS:
+        st.problem(st.at("pair"), f"{len(pair_tables)} pairs: at most {MAX_PAIRS} in one scene")
+        pair_tables = []
     if cases and pair_tables:
         st.problem(st.at("case"), "a scene gives either printed counts ([[structure.case]]) or a topology "
                                   "([[structure.pair]]), not both")
@@ -108,6 +119,9 @@ def _read_structure(st: _Reader) -> StructureScene | None:
                 links = None
             elif len(links) < 2:
                 p.problem(p.at("links"), "a pair joins at least two links")
+                links = None
+            elif len(links) > MAX_HINGE:
+                p.problem(p.at("links"), f"{len(links)} links in one hinge: at most {MAX_HINGE}")
                 links = None
         if kind in ("P", "higher") and at is not None and angle is None:
             what = "the guide's direction" if kind == "P" else "the common normal's direction"

@@ -29,6 +29,11 @@ import numpy as np
 
 PairKind = Literal["R", "P", "higher"]
 
+#: The largest Assur group searched for (links): class II–IV groups of the books have 2, 4 or 6.
+MAX_GROUP = 6
+#: The most candidate groups of one size examined before the search gives up.
+MAX_CANDIDATES = 200_000
+
 #: Relative singular value below which the constraint Jacobian counts as rank-deficient
 #: (σ ≤ RANK_REL·σ_max). Constraint rows are O(1) (unit directions) and O(size) (lever arms),
 #: so the columns are scaled by the mechanism's size first.
@@ -345,10 +350,15 @@ def structure(topo: Topology) -> Structure:
     known = {low.frame, *low.drivers}
     rest = [x for x in low.links if x not in known]
     groups: list[AssurGroup] = []
+    adjacent: dict[str, set[str]] = {x: set() for x in low.links}
+    for p in low.pairs:
+        for a, b in combinations([x for x in p.links if x in adjacent], 2):
+            adjacent[a].add(b)
+            adjacent[b].add(a)
     while rest:
         found = None
-        for size in range(2, len(rest) + 1, 2):
-            for combo in combinations(rest, size):
+        for size in range(2, min(len(rest), MAX_GROUP) + 1, 2):
+            for combo in _connected_subsets(rest, size, adjacent):
                 group = set(combo)
                 pairs = [p for p in low.pairs if group & set(p.links)]
                 binding = sum(_contributed(p, group, known) for p in pairs)
@@ -380,6 +390,28 @@ def structure(topo: Topology) -> Structure:
         msgs.append(f"links {', '.join(rest)} form no Assur group with drivers {', '.join(topo.drivers) or 'none'}: "
                     "the number of drivers differs from the mobility")
     return Structure(tuple(topo.drivers), tuple(groups), grade, replaced, removed, tuple(rest), tuple(msgs))
+
+
+def _connected_subsets(rest: list[str], size: int, adjacent: dict[str, set[str]]) -> list[tuple[str, ...]]:
+    """Every connected set of ``size`` links of ``rest``, each in ``rest``'s order, the sets in a
+    fixed order (an Assur group is connected, so only these need the count)."""
+    allowed = set(rest)
+    order = {x: k for k, x in enumerate(rest)}
+    found: set[frozenset[str]] = set()
+    frontier = [frozenset([x]) for x in rest]
+    for _ in range(size - 1):
+        grown: set[frozenset[str]] = set()
+        for sub in frontier:
+            for x in sub:
+                for y in adjacent[x]:
+                    if y in allowed and y not in sub:
+                        grown.add(sub | {y})
+            if len(grown) > MAX_CANDIDATES:  # a knot of compound hinges: give up, said by the caller
+                return []
+        frontier = list(grown)
+    found.update(frontier)
+    return sorted((tuple(sorted(f, key=order.__getitem__)) for f in found),
+                  key=lambda t: [order[x] for x in t])
 
 
 def _connected(group: set[str], pairs: list[Pair]) -> bool:
