@@ -229,6 +229,10 @@ def _check(args: argparse.Namespace) -> int:
     else:
         an = analyse(scene, tuple(extra))
         verdicts = judge(an, args.precision)
+        if an.instant_centres is not None:
+            from graphmech.ic_check import summary
+
+            extra_doc["instant_centres"] = summary(an)
     bad = any(not v.ok for v in verdicts)
     if args.json:
         doc = {"quantities": [r.as_dict() for r in an.rows], "measured": [v.as_dict() for v in verdicts],

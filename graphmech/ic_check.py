@@ -308,6 +308,35 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                                 ill(ic, sol, [ic.absolute(lid).links])))
 
 
+def summary(an: Any) -> list[dict[str, Any]]:
+    """The ``"instant_centres"`` section of ``check --json``: per constructed position every centre
+    (``x``, ``y`` in m; or ``direction_deg`` at infinity; or why it is undetermined, with the
+    links whose Kennedy lines found it) and each link's ω from them (rad/s)."""
+    mu = an.scales["l"]
+    ox, oy = an.build.origin
+    out = []
+    for i, ic in enumerate(an.instant_centres.centres):
+        if ic is None:
+            continue
+        centres = []
+        for key in ic.order:
+            c = ic.centres[key]
+            row: dict[str, Any] = {"name": centre_name(*key), "kind": c.kind}
+            if c.point is not None:
+                row.update(x=c.point[0] * mu + ox, y=c.point[1] * mu + oy)
+            elif c.direction is not None:
+                row["direction_deg"] = _deg(c.direction)
+            else:
+                row["why"] = c.why
+            if c.kind == "kennedy":
+                row["via"] = list(c.via)
+            centres.append(row)
+        out.append({"position": an.labels[i], "centres": centres,
+                    "omega": {k: m.omega for k, m in ic.motions.items() if k != ic.frame},
+                    "undetermined": dict(ic.undetermined)})
+    return out
+
+
 def _say_undetermined(an: Any, ica: ICAnalysis, position_text: Any) -> None:
     """Warn about every centre and every link motion the construction cannot determine."""
     build = an.build
@@ -525,4 +554,5 @@ def _roots(grid: np.ndarray, values: np.ndarray, f: Callable[[float], float]) ->
     return out
 
 
-__all__ = ["SHOW", "ICAnalysis", "add_rows", "asked", "claims", "exact_centre", "judge", "positions_mm"]
+__all__ = ["SHOW", "ICAnalysis", "add_rows", "asked", "canonical", "claims", "exact_centre", "judge", "positions_mm",
+           "summary"]

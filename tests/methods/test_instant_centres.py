@@ -525,3 +525,18 @@ def test_the_at_ic_alias_names_the_same_values():
     assert [(r.name, round(r.graphical, 9)) for r in an.rows] == [("omega_3_ic", 2.538487323), ("v_C_ic", 0.400984584)]
     [v] = judge(an)
     assert v.name == "omega_3_ic" and v.ok
+
+
+def test_check_json_lists_every_centre_and_what_is_undetermined():
+    doc = check_json(SCENES / "ic.parallelogram.toml")
+    [pos] = doc["instant_centres"]
+    byname = {c["name"]: c for c in pos["centres"]}
+    assert set(byname) == {"P12", "P13", "P14", "P23", "P24", "P34"}
+    assert byname["P13"]["kind"] == "kennedy" and byname["P13"]["direction_deg"] == pytest.approx(70.0, abs=1e-9)
+    assert byname["P23"] == {"name": "P23", "kind": "direct", "x": pytest.approx(0.06 * math.cos(math.radians(70))),
+                             "y": pytest.approx(0.06 * math.sin(math.radians(70)))}
+    assert pos["omega"] == {"2": 10.0, "3": 0.0, "4": pytest.approx(10.0)} and pos["undetermined"] == {}
+    doc = check_json(SCENES / "ic.parallelogram_change_point.toml")
+    [pos] = doc["instant_centres"]
+    assert {c["name"]: c["kind"] for c in pos["centres"]}["P13"] == "undetermined"
+    assert set(pos["undetermined"]) == {"3", "4"}
