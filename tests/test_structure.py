@@ -219,3 +219,16 @@ def test_precision_press_symmetric_half_is_found_redundant_only_when_symmetric(p
     assert (an.mobility.rank, an.mobility.F_actual, an.mobility.p_redundant_actual) == (30, 0, 0)
     assert [(r.name, r.graphical, r.exact) for r in an.rows] == [("F", 1.0, 0.0), ("p_redundant", 1.0, 0.0)]
     assert any("cannot move" in w for w in an.warnings)
+
+
+def test_a_five_bar_with_two_drivers_is_one_dyad():
+    pairs = (Pair("R", ("1", "2"), "A", (0.0, 0.0)), Pair("R", ("2", "3"), "B", (0.02, 0.05)),
+             Pair("R", ("3", "4"), "C", (0.08, 0.09)), Pair("R", ("4", "5"), "D", (0.13, 0.04)),
+             Pair("R", ("5", "1"), "E", (0.15, 0.0)))
+    five = Topology("1", ("2", "3", "4", "5"), pairs, ("2", "5"))
+    m = mobility(five, True)
+    assert (m.F, m.F_actual, m.rank) == (2, 2, 10)
+    s = structure(five)
+    assert [(g.links, g.grade) for g in s.groups] == [(("3", "4"), 2)] and not s.messages
+    one = structure(Topology("1", ("2", "3", "4", "5"), pairs, ("2",)))
+    assert one.leftover == ("3", "4", "5") and "drivers differs from the mobility" in one.messages[0]
