@@ -357,10 +357,12 @@ def run_bench(quick: bool = False) -> dict[str, Any]:
     from graphmech.bench_cycle import cycle_notes, differentiation_records, sheet_record
     from graphmech.bench_efficiency import efficiency_records
     from graphmech.bench_forces import kinetostatic_notes, kinetostatic_records
+    from graphmech.bench_ic import ic_records
 
     forces = kinetostatic_records(quick=quick)
     notes += kinetostatic_notes(forces)
     forces += efficiency_records(repeat=2 if quick else 5)
+    ics = ic_records(quick=quick)
     cycle = differentiation_records(repeat=2 if quick else 5) + [sheet_record(repeat=1 if quick else 3)]
     notes += cycle_notes(cycle)
-    return {"records": records + cams + fly + motion + forces + cycle, "notes": notes}
+    return {"records": records + cams + fly + motion + forces + cycle + ics, "notes": notes}

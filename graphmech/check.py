@@ -90,6 +90,7 @@ class Analysis:
     extra_measured: tuple[tuple[str, float], ...] = ()
     size: float = 1.0  # the mechanism's typical length, m
     dependencies: dict[str, set[str]] = field(default_factory=dict)  # step → the steps it needs (cache)
+    instant_centres: Any = None  # graphmech.ic_check.ICAnalysis when the scene asks for instant centres
 
     def scale_notes(self) -> list[str]:
         """μ as written on the drawing, marked where graphmech chose it."""
@@ -116,8 +117,12 @@ def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) 
     problems = []
     out = []
     multi = len(labels) > 1
+    from graphmech import ic_check
+
     for k, raw in enumerate(scene.find):
         base, at = split_name(raw)
+        if ic_check.claims(raw):  # the instant-centre method's names (graphmech.ic_check)
+            continue
         if base not in build.quantities:
             close = close_names(base, build.quantities)
             problems.append((f"find[{k}]", f"unknown quantity {base!r}{close}"))
@@ -223,6 +228,11 @@ def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analy
     for panel in PANELS:
         if panel in scene.show:
             targets += build.steps_of_panel(panel)
+    from graphmech import ic_check
+
+    ic = ic_check.asked(scene, extra_measured)
+    if ic:  # the instant centres are found on the kinematic diagram: every point of it
+        targets += list(build.mech.values())
     plan = build.g.prune(targets)
 
     solutions: list[Any] = []
@@ -268,6 +278,8 @@ def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analy
     if far:
         an.rows = [replace(r, ill_conditioned=True) for r in an.rows]
     an.warnings.extend(_conditioning_warnings(an, [q for _, q, _ in wanted] + measured_q))
+    if ic:
+        an.instant_centres = ic_check.add_rows(an)
     return an
 
 
@@ -520,7 +532,11 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
     prec = precision_mm if precision_mm is not None else scene.precision_mm
     problems = []
     out = []
+    from graphmech import ic_check
+
     for key, name, value in measured_entries(scene, an.extra_measured):
+        if ic_check.claims(name):  # judged by graphmech.ic_check, below
+            continue
         try:
             qname, i, segment = _resolve(name, an.build, an.labels)
         except ValueError as e:
@@ -548,6 +564,10 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
         else:
             tol = _angle_tolerance(an, q, sol, prec) if q.unit == "deg" else prec * abs(float(scale))
             out.append(Verdict(name, value, e, tol, abs(value - e) <= tol + 1e-12 * abs(e), q.unit))
+    if an.instant_centres is not None:
+        more, trouble = ic_check.judge(an, prec)
+        out += more
+        problems += trouble
     if problems:
         raise SceneError(problems, scene.source)
     return out

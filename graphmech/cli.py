@@ -97,6 +97,14 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
         warnings = list(fan.warnings)
         svg = render_svg(figure(fan, page_size(scene), footer), _id_prefix(path), on_warning=warnings.append)
         return svg, warnings
+    if scene.structure is not None:
+        from graphmech.methods.structure_figures import structure_sheet
+        from graphmech.structure_check import analyse_structure
+
+        san = analyse_structure(scene)
+        sheet = structure_sheet(scene.title, san, page_size(scene), footer)
+        warnings = list(san.warnings)
+        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
     if scene.flywheel is not None:
         from graphmech.flywheel_check import analyse_flywheel
         from graphmech.methods.flywheel_figures import flywheel_sheet
@@ -151,9 +159,17 @@ def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
     an = analyse(scene)
     b = an.build
     texts = [position_text(b, lab) for lab in an.labels]
+    from graphmech.methods.polygons import PANELS
+
     sheet = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
-                          list(scene.show),
+                          [s for s in scene.show if s in PANELS],
                           page_size(scene), footer)
+    if "instant_centres" in scene.show:
+        from dataclasses import replace
+
+        from graphmech.methods.ic_figures import ic_panels
+
+        sheet = replace(sheet, panels=sheet.panels + tuple(ic_panels(an, page_size(scene))))
     warnings = list(an.warnings)
     svg = render_svg(sheet, _id_prefix(path), on_warning=warnings.append)
     return svg, warnings
@@ -264,6 +280,12 @@ def _check(args: argparse.Namespace) -> int:
         verdicts = an.verdicts
         if scene.forces.model.has_friction:
             extra_doc["friction"] = an.friction_summary()
+    elif scene.structure is not None:
+        from graphmech.structure_check import analyse_structure, judge_structure
+
+        an = analyse_structure(scene)
+        verdicts = judge_structure(an, tuple(extra))
+        extra_doc["structure"] = an.summary()
     elif scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 
@@ -281,6 +303,10 @@ def _check(args: argparse.Namespace) -> int:
     else:
         an = analyse(scene, tuple(extra))
         verdicts = judge(an, args.precision)
+        if an.instant_centres is not None:
+            from graphmech.ic_check import summary
+
+            extra_doc["instant_centres"] = summary(an)
     bad = any(not v.ok for v in verdicts)
     if args.json:
         doc = {"quantities": [r.as_dict() for r in an.rows], "measured": [v.as_dict() for v in verdicts],
@@ -288,6 +314,10 @@ def _check(args: argparse.Namespace) -> int:
         print(json.dumps(doc, indent=1, ensure_ascii=False, allow_nan=False))
     else:
         print(_table(an, verdicts))
+        if scene.structure is not None:
+            from graphmech.structure_check import text_summary
+
+            print("\n".join(text_summary(an)))
         if extra_doc.get("braking"):
             br = extra_doc["braking"]
             verdict = "" if br["ok"] is None else (f" ≤ {br['time_limit']:g} s: meets the requirement" if br["ok"]

@@ -61,7 +61,7 @@ MAX_POSITIONS = 3600
 #: The longest title, in characters.
 MAX_TITLE = 200
 #: What a scene may show, in the order a textbook draws them.
-SHOW_CHOICES = ("mechanism", "velocity", "acceleration")
+SHOW_CHOICES = ("mechanism", "velocity", "acceleration", "instant_centres")
 #: What a cam scene may show: the profile by inversion and the s–δ, v–δ, a–δ diagrams.
 CAM_SHOW_CHOICES = ("profile", "displacement", "velocity", "acceleration")
 #: What a cam scene shows when it does not say.
@@ -247,6 +247,7 @@ class Scene:
     efficiency: Any = None  # graphmech.scene_efficiency.EfficiencyProblem of an [efficiency] scene
     balancing: Any = None  # graphmech.scene_balancing.BalancingProblem of a [balancing] scene
     cycle: Any = None  # graphmech.scene_cycle.CycleScene: a full cycle and/or the characteristics
+    structure: Any = None  # graphmech.scene_structure.StructureScene of a [structure] scene
 
 
 # --------------------------------------------------------------------------------------------
@@ -365,6 +366,7 @@ _TOP_KEYS = (
     "cam",
     "flywheel",
     "forces",
+    "structure",
 )
 
 #: The tables only a linkage scene has.
@@ -1297,7 +1299,7 @@ def _read_measured(
             continue
         if "@" in key and labels is not None:
             label = key.split("@", 1)[1]
-            if label not in labels:
+            if label not in labels and label != "ic":  # omega_3@ic: by instant centres (ic_check)
                 r.problem(path, f"no position is labelled {label} (positions: {', '.join(labels)})")
                 continue
         out.append((key, x))
@@ -1915,6 +1917,10 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     units = _read_units(top)
     top.units = units
     has_cam, has_driver = "cam" in data, "driver" in data
+    if "structure" in data:  # mobility and structure: graphmech.scene_structure
+        from graphmech.scene_structure import parse_structure_scene
+
+        return parse_structure_scene(data, source, top, order)
     if has_cam and "flywheel" in data:  # one problem, as below
         top.problem(
             "flywheel",

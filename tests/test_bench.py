@@ -20,3 +20,13 @@ def test_bench_records_and_agreement(tmp_path):
         assert r["max_rel_error"] <= 1e-12
     # the yardstick solves the same linkage to the same answers
     assert recs[("closed-form-numpy", "fourbar-120-60-120-90", 360)]["max_rel_error"] <= 1e-12
+
+
+def test_instant_centre_and_mobility_records():
+    from graphmech.bench_ic import ic_records
+
+    recs = {(r["method"], r["n"]): r for r in ic_records(quick=True)}
+    for n in (1, 360):
+        r = recs[("instant-centres", n)]
+        assert r["seconds"] > 0 and r["max_rel_error"] <= 1e-12
+    assert recs[("mobility-rank", 13)]["max_rel_error"] == 0.0  # the count and the rank agree: F = 1

@@ -41,6 +41,14 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
         for verdict in judge_(fan):
             assert verdict.ok, verdict
         return
+    if scene.structure is not None:  # the count against the Jacobian's rank (graphmech.structure_check)
+        from graphmech.structure_check import analyse_structure
+
+        san = analyse_structure(scene)
+        assert san.mobility is not None or san.cases
+        for row in san.rows:
+            assert row.graphical == row.exact, row
+        return
     if scene.cam is not None:
         from graphmech.cam_check import analyse_cam, judge_cam
 

@@ -549,7 +549,7 @@ def test_header_problems() -> None:
     assert problems_of(text).problems == [
         ("title", "too long (201 characters; at most 200)"),
         ("show[1]", "velocity is listed twice"),
-        ("show[2]", "unknown value 'speed': use mechanism, velocity, acceleration, cycle, paths, diagrams or characteristics"),
+        ("show[2]", "unknown value 'speed': use mechanism, velocity, acceleration, instant_centres, cycle, paths, diagrams or characteristics"),
         ("find[1]", "must be a non-empty string (a quantity name)"),
         ("find[2]", "'v_C' is listed twice"),
     ]
@@ -753,7 +753,7 @@ def doc_blocks() -> list[str]:
 def test_docs_have_an_example_of_every_feature() -> None:
     blocks = doc_blocks()
     scenes = [parse_scene(tomllib.loads(b), "scene-format.md") for b in blocks]
-    # the cam and flywheel scenes: tests/test_scene_cam.py, tests/test_scene_flywheel.py
+    # the cam, flywheel, force and structure scenes have tests of their own
     scenes = [s for s in scenes if s.cam is None and s.flywheel is None and s.linkage is not None]
     dyad_types = {type(d) for s in scenes for d in s.linkage.dyads}
     assert dyad_types == {RRR, RRP, RPR, RPP}
@@ -784,7 +784,7 @@ def test_each_doc_example_parses(index: int, tmp_path: Path) -> None:
     if scene.flywheel is not None and scene.linkage is None:  # a machine without a linkage
         assert scene.positions is None
         return
-    if scene.efficiency is not None or scene.balancing is not None:  # forces alone: no mechanism
+    if scene.efficiency is not None or scene.balancing is not None or scene.structure is not None:  # no mechanism
         assert scene.linkage is None and scene.positions is None
         return
     assert scene.linkage.frame_link not in scene.linkage.links()
@@ -892,6 +892,14 @@ def test_any_mutation_gives_a_scene_or_a_scene_error(data: st.DataObject) -> Non
         return
     if scene.efficiency is not None or scene.balancing is not None:  # fuzzed further in tests/test_efficiency.py
         assert scene.linkage is None and scene.positions is None
+        return
+    if scene.structure is not None:  # a topology: its analysis must not fail either
+        import json
+
+        from graphmech.structure_check import analyse_structure
+
+        assert scene.linkage is None and scene.positions is None
+        json.dumps(analyse_structure(scene).summary(), allow_nan=False)
         return
     assert all(math.isfinite(v) for v in scene.positions.values)
     assert 1 <= len(scene.positions.values) <= 3600

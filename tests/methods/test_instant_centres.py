@@ -1,0 +1,547 @@
+"""Instant centres by Kennedy's theorem: every centre, ω and v against the exact kinematics,
+centres at infinity, a parallelogram's change point, dead centres, the book's four-bar."""
+from __future__ import annotations
+
+import json
+import math
+import tomllib
+from itertools import combinations
+
+import numpy as np
+import pytest
+
+from graphmech.check import analyse
+from graphmech.errors import SceneError
+from graphmech.ic_check import exact_centre, positions_mm
+from graphmech.mechanisms.linkage import Crank, Linkage, RRR
+from graphmech.methods.instant_centres import centre_name, instant_centres
+from graphmech.scene import parse_scene
+from tests.conftest import SCENES, check_json, run_cli, values
+
+HEAD = """
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+velocity = "m/s"
+[scales]
+l_m_per_mm = 0.002
+"""
+
+FOURBAR = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+D = [{d}, 0]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "B"
+length = {a}
+angle = {phi}
+omega = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["3", "4"]
+lengths = [{b}, {c}]
+branch = "{branch}"
+"""
+
+SLIDER_CRANK = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "B"
+length = 100
+angle = [30, 120, 250]
+omega = 10
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["3", "4"]
+length = 300
+guide = { through = [0, 30], angle = 0 }
+branch = "forward"
+"""
+
+OSCILLATING_BLOCK = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+C = [-100, 0]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "B"
+length = 30
+angle = [45, 200]
+omega = 10
+[[dyad]]
+type = "RPR"
+joints = ["B", "C"]
+links = ["3", "4"]
+bar = "first"
+"""
+
+SIXBAR = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+D = [120, 0]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "B"
+length = 60
+angle = [40, 165]
+omega = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["3", "4"]
+lengths = [120, 90]
+branch = "left"
+[[point]]
+name = "E"
+link = "3"
+base = ["B", "C"]
+along = 60
+left = 40
+[[dyad]]
+type = "RRP"
+joints = ["E", "F"]
+links = ["5", "6"]
+length = 150
+guide = { through = [0, 160], angle = 0 }
+branch = "forward"
+"""
+
+
+def scene_of(text: str, show=("instant_centres",), find=()):
+    data = tomllib.loads(text)
+    data["show"] = list(show)
+    data["find"] = list(find)
+    return parse_scene(data, "test.toml")
+
+
+def all_centres_agree(an, tol=1e-9):
+    """Every centre of every position against the exact one (points relative to the size)."""
+    linkage = an.build.linkage
+    mu = an.scales["l"]
+    ox, oy = an.build.origin
+    checked = 0
+    for i, ic in enumerate(an.instant_centres.centres):
+        assert ic is not None
+        n = len(ic.links)
+        assert len(ic.centres) == n * (n - 1) // 2
+        for a, b in combinations(ic.links, 2):
+            c = ic.centre(a, b)
+            assert c.known, (centre_name(a, b), c.why)
+            if c.kind == "direct" and c.point is not None:  # a joint: the exact joint
+                x, y = c.point[0] * mu + ox, c.point[1] * mu + oy
+                assert math.dist((x, y), an.exact.point[c.via[0]][i]) <= tol * an.size
+                checked += 1
+                continue
+            kind, ev = exact_centre(linkage, an.exact, a, b, i)
+            if kind == "none":  # at relative rest (a slider at its dead centre): velocities define no centre
+                checked += 1
+                continue
+            if c.at_infinity and kind == "point":  # parallel in the construction, ~1e16 away exactly
+                kind, ev = "direction", (ev[0] / math.hypot(*ev), ev[1] / math.hypot(*ev))
+            if c.at_infinity:
+                assert kind == "direction", centre_name(a, b)
+                assert abs(c.direction[0] * ev[1] - c.direction[1] * ev[0]) < tol
+            else:
+                assert kind == "point", centre_name(a, b)
+                x, y = c.point[0] * mu + ox, c.point[1] * mu + oy
+                assert math.dist((x, y), ev) <= tol * an.size, (centre_name(a, b), (x, y), ev)
+            checked += 1
+        for lid, mo in ic.motions.items():
+            if lid != linkage.frame_link:
+                assert mo.omega == pytest.approx(float(an.exact.omega[lid][i]), abs=tol * 10)
+    return checked
+
+
+def test_book_fourbar_by_instant_centres(problems):
+    p = problems["kin.fourbar_instant_centres"]
+    doc = check_json(SCENES / "kin.fourbar_instant_centres.toml")
+    v = values(doc)
+    ex, book = p["exact"], p["book"]
+    assert v["omega_3_ic"]["graphical"] == pytest.approx(ex["omega3_rad_s"], rel=1e-9)
+    assert v["v_C_ic"]["graphical"] == pytest.approx(ex["vC_m_s"], rel=1e-9)
+    assert v["v_min_BC_ic"]["graphical"] == pytest.approx(ex["vE_m_s"], rel=1e-9)
+    assert v["s_min_BC_ic"]["graphical"] * 1000 == pytest.approx(ex["BE_mm"], rel=1e-9)
+    zeros = [v["phi_v0_C_1"]["graphical"], v["phi_v0_C_2"]["graphical"]]
+    # A, B, C in line (P24 = P12): |AC| = 180 or 60 mm, the law of cosines in triangle ACD
+    closed = [math.degrees(math.acos((180**2 + 120**2 - 90**2) / (2 * 180 * 120))),
+              180 + math.degrees(math.acos((60**2 + 120**2 - 90**2) / (2 * 60 * 120)))]
+    assert zeros == pytest.approx(closed, abs=1e-11)
+    assert zeros == pytest.approx(ex["phi_vC0_deg"], abs=3e-9)  # the bank's root is 1.6e-9° off
+    # the book's graphical answers differ from these by the bank's rel_diff (1.1 % at most)
+    for ours, key in (("omega_3_ic", "omega3_rad_s"), ("v_C_ic", "vC_m_s"), ("v_min_BC_ic", "vE_m_s")):
+        g = v[ours]["graphical"]
+        assert (book[key] - g) / abs(g) == pytest.approx(p["rel_diff"][key], abs=1e-8)
+    assert zeros == pytest.approx(book["phi_vC0_deg"], abs=0.05)
+    for q in doc["quantities"]:
+        assert q["rel_error"] <= 1e-12, q
+    # P24 is on AD (the frame line) and E beyond C: BE > BC
+    assert v["y_P24"]["graphical"] == pytest.approx(0.0, abs=1e-15)
+    assert v["s_min_BC_ic"]["graphical"] > 0.12
+
+
+@pytest.mark.parametrize("text,n_links", [(SLIDER_CRANK, 4), (OSCILLATING_BLOCK, 4), (SIXBAR, 6)],
+                         ids=["RRP", "RPR", "sixbar"])
+def test_every_centre_and_omega_agree_with_the_exact_kinematics(text, n_links):
+    an = analyse(scene_of(text))
+    assert all_centres_agree(an) == len(an.labels) * n_links * (n_links - 1) // 2
+
+
+def test_slider_centre_is_at_infinity_perpendicular_to_the_guide():
+    an = analyse(scene_of(SLIDER_CRANK, find=["P14", "v_C_ic", "omega_3_ic", "phi_v0_C"]))
+    ic = an.instant_centres.centres[0]
+    assert ic.centre("1", "4").direction == pytest.approx((0.0, 1.0), abs=1e-15)
+    v = {r.name: r for r in an.rows}
+    assert v["dir_P14@30"].graphical == pytest.approx(90.0, abs=1e-12)
+    for r in an.rows:
+        assert r.rel_error <= 1e-9, r
+    # a slider's velocity vanishes at its dead centres: where B is on line AC, sin(φ) = e/(l ± r)
+    e, r, l = 0.03, 0.1, 0.3
+    expect = sorted([math.degrees(math.asin(e / (l + r))), 180 + math.degrees(math.asin(e / (l - r)))])
+    assert sorted([v["phi_v0_C_1"].graphical, v["phi_v0_C_2"].graphical]) == pytest.approx(expect, abs=1e-9)
+
+
+def test_rpr_sliding_pair_centre_is_perpendicular_to_the_bar():
+    an = analyse(scene_of(OSCILLATING_BLOCK))
+    ic = an.instant_centres.centres[0]
+    pos = positions_mm(an.build, an.solutions[0])
+    d = ic.centre("3", "4").direction
+    bc = np.subtract(pos["C"], pos["B"])
+    assert abs(d[0] * bc[0] + d[1] * bc[1]) < 1e-12 * np.hypot(*bc)
+    assert ic.centre("1", "4").point == pos["C"]  # the block's pivot on the frame
+
+
+def test_parallel_kennedy_lines_put_the_centre_at_infinity():
+    # a parallelogram: AB ∥ DC, so P13 (on AB and on DC) is at infinity and the coupler translates
+    an = analyse(scene_of(FOURBAR.format(d=120, a=60, b=120, c=60, phi=70, branch="left"),
+                          find=["P13", "P24", "omega_3_ic", "omega_4_ic", "v_C_ic"]))
+    v = {r.name: r for r in an.rows}
+    assert v["dir_P13"].graphical == pytest.approx(70.0, abs=1e-9)
+    assert v["dir_P13"].exact == pytest.approx(70.0, abs=1e-9)
+    assert v["omega_3_ic"].graphical == 0.0
+    assert v["omega_4_ic"].graphical == pytest.approx(10.0, rel=1e-9)
+    assert v["v_C_ic"].graphical == pytest.approx(0.6, rel=1e-12)  # = v_B: a translating coupler
+    assert "x_P13" not in v
+    ic = an.instant_centres.centres[0]
+    assert ic.centre("2", "4").at_infinity  # AD ∥ BC as well
+    assert not any("nan" in json.dumps(r.as_dict()).lower() for r in an.rows)
+
+
+def test_parallelogram_change_point_says_what_cannot_be_determined(tmp_path):
+    text = FOURBAR.format(d=120, a=60, b=120, c=60, phi=0, branch="left")
+    an = analyse(scene_of(text, find=["P13", "omega_3_ic", "omega_4_ic", "P23"]))
+    ic = an.instant_centres.centres[0]
+    for pair in (("1", "3"), ("2", "4")):
+        c = ic.centre(*pair)
+        assert c.kind == "undetermined" and "coincide" in c.why
+    assert set(ic.undetermined) == {"3", "4"}
+    text_w = " ".join(an.warnings)
+    assert "P13 cannot be determined" in text_w and "P24 cannot be determined" in text_w
+    assert "the motion of link 3 cannot be found" in text_w
+    assert an.rows == []  # the exact solution is undefined there too (B, C, D in line)
+    assert "exact solution is undefined" in text_w
+    assert ic.centre("2", "3").point is not None  # the direct centres are still drawn
+    path = tmp_path / "change.toml"
+    path.write_text('title = "change point"\nshow = ["instant_centres"]\nfind = ["P13"]\n' + text)
+    code, out, err = run_cli("render", str(path), "-o", str(tmp_path / "c.svg"))
+    assert code == 0, err
+    svg = (tmp_path / "c.svg").read_text()
+    assert "undetermined" in svg and "nan" not in svg.lower()
+
+
+def test_dead_centre_of_the_rocker_is_where_p24_meets_p12():
+    # the book's four-bar at its first v_C = 0 angle: A, B, C in line, P24 = P12 = A, ω4 = 0
+    phi = 26.38432975096472
+    an = analyse(scene_of(FOURBAR.format(d=120, a=60, b=120, c=90, phi=phi, branch="left"),
+                          find=["P24", "omega_4_ic", "v_C_ic"]))
+    v = {r.name: r for r in an.rows}
+    assert math.hypot(v["x_P24"].graphical, v["y_P24"].graphical) < 1e-9 * an.size
+    assert abs(v["omega_4_ic"].graphical) < 1e-9 and abs(v["v_C_ic"].graphical) < 1e-9
+
+
+def test_rocker_driven_dead_centre_leaves_the_crank_undetermined():
+    # the rocker DC drives; with A, B, C in line P24 falls on P12 = A, so ω2 = ω4·P14P24/P12P24
+    # has a zero denominator: a dead centre, the crank cannot be driven from the rocker
+    fb = Linkage({"D": (0.12, 0.0), "A": (0.0, 0.0)}, Crank("4", "D", "C", 0.09, 10.0),
+                 (RRR("C", "B", "A", ("3", "2"), (0.12, 0.06), "right"),), frame_link="1")
+    # C on the line AB beyond B: |AC| = 0.18 = l_AB + l_BC, |DC| = 0.09
+    ang = math.acos((0.18 ** 2 + 0.12 ** 2 - 0.09 ** 2) / (2 * 0.18 * 0.12))
+    u = np.array([math.cos(ang), math.sin(ang)])
+    pos = {"A": (0.0, 0.0), "D": (120.0, 0.0), "B": tuple(60.0 * u), "C": tuple(180.0 * u)}
+    ic = instant_centres(fb, pos, mu_l=0.001)
+    assert ic.centre("2", "4").point == pytest.approx((0.0, 0.0), abs=1e-9)
+    assert "2" in ic.undetermined and "dead centre" in ic.undetermined["2"]
+    # the coupler neither: P13 (on AB and on DC) is C itself, where C moves, so
+    # ω3 = ω4·P14P34/P13P34 divides by zero too
+    assert ic.centre("1", "3").point == pytest.approx(pos["C"], abs=1e-9)
+    assert set(ic.undetermined) == {"2", "3"} and "dead centre" in ic.undetermined["3"]
+    assert ic.motions["4"].omega == 10.0
+
+
+def test_only_what_is_asked_is_computed():
+    an = analyse(scene_of(SLIDER_CRANK, show=("mechanism",), find=["v_C"]))
+    assert an.instant_centres is None
+    an = analyse(scene_of(SLIDER_CRANK, show=("mechanism",), find=["omega_3_ic"]))
+    assert an.instant_centres is not None and [r.name[:10] for r in an.rows] == ["omega_3_ic"] * 3
+
+
+@pytest.mark.parametrize("name,reason", [
+    ("P19", "names no instant centre"), ("omega_9_ic", "no link '9'"), ("v_Z_ic", "no point 'Z'"),
+    ("v_min_AC_ic", "not points of one moving link"), ("phi_v0_A", "point of the frame"),
+    ("phi_v0_C@30", "whole turn"),
+])
+def test_bad_instant_centre_names_are_one_line_errors(name, reason):
+    with pytest.raises(SceneError) as e:
+        analyse(scene_of(SLIDER_CRANK, find=[name]))
+    assert reason in str(e.value) and "find[0]" in str(e.value)
+
+
+def test_the_sheet_draws_every_centre_and_the_polygon_of_links():
+    from graphmech.cli import render_scene
+    from graphmech.methods.ic_figures import ic_panels
+    from graphmech.render.primitives import Sheet
+    from graphmech.render.recording import RecordingBackend
+    from graphmech.render.sheet import draw_sheet
+
+    svg, warnings = render_scene(SCENES / "kin.fourbar_instant_centres.toml")
+    for name in ("P₁₃", "P₂₄", "P₁₂", "P₃₄", "Polygon of links", "φ₂ = 26.38°", "φ₂ = 226.57°"):
+        assert name in svg
+    book = analyse(parse_scene(tomllib.loads((SCENES / "kin.fourbar_instant_centres.toml").read_text()), "b"))
+    zero = ic_panels(book, (420.0, 297.0))[-1]
+    assert zero.name == "ic-zero-C"  # the mechanism where v_C = 0: P24 on P12 = A, twice
+    marks = [it.anchor for it in zero.items if type(it).__name__ == "Label" and it.text == "P₂₄"]
+    assert marks == [pytest.approx((0.0, 0.0), abs=1e-9)]
+    an = analyse(scene_of(SIXBAR))
+    panels = ic_panels(an, (420.0, 297.0))
+    assert [p.name for p in panels] == ["ic-40", "ic-circle-40", "ic-165", "ic-circle-165"]
+    circle = panels[1]
+    segs = [it for it in circle.items if type(it).__name__ == "Segment"]
+    ic = an.instant_centres.centres[0]
+    kennedy = sum(1 for c in ic.centres.values() if c.kind == "kennedy")
+    assert sum(s.dashed for s in segs) == kennedy and len(segs) == 15
+    rec = draw_sheet(Sheet("t", tuple(panels), (420.0, 297.0)), RecordingBackend())
+    texts = [c[1] for c in rec if c[0] == "text"]
+    for name in ("P₁₅", "P₂₆", "P₃₆", "P₄₅"):
+        assert name in texts
+
+
+SLIDER_DRIVEN = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+[driver]
+type = "slider"
+link = "4"
+point = "C"
+guide = { through = [0, 20], angle = 0 }
+position = [250, 320]
+velocity = 1.5
+[[dyad]]
+type = "RRR"
+joints = ["C", "B", "A"]
+links = ["3", "2"]
+lengths = [300, 100]
+branch = "right"
+"""
+
+
+def test_rpp_three_centres_at_infinity_and_the_line_at_infinity():
+    # block 2 in the slot of the translating slider 3: P23, P34 at infinity, so P24 is found on
+    # the line at infinity (through P23 and P34) and the finite line AB: at infinity along AB
+    text = (SCENES / "linkage.slider_fixed_angle_guide.toml").read_text()
+    data = tomllib.loads(text)
+    data["show"], data["find"] = ["instant_centres"], ["P24", "P13", "omega_2_ic", "v_C_ic"]
+    an = analyse(parse_scene(data, "rpp.toml"))
+    assert all_centres_agree(an) == 6
+    ic = an.instant_centres.centres[0]
+    assert [ic.centre(*k).at_infinity for k in (("2", "3"), ("3", "4"), ("2", "4"))] == [True] * 3
+    v = {r.name: r for r in an.rows}
+    assert v["dir_P24"].graphical == pytest.approx(45.0, abs=1e-9)  # along AB at φ1 = 45°
+    for r in an.rows:
+        assert r.rel_error <= 1e-12, r
+
+
+def test_a_driven_slider_gives_the_velocities_through_its_centre_at_infinity():
+    an = analyse(scene_of(SLIDER_DRIVEN, find=["omega_2_ic", "omega_3_ic", "v_B_ic", "P24"]))
+    assert all_centres_agree(an) == 2 * 6
+    for r in an.rows:
+        assert r.rel_error <= 1e-12, r
+
+
+def test_measured_instant_centre_values_are_judged_within_the_drawing_precision(problems):
+    book = problems["kin.fourbar_instant_centres"]["book"]
+    scene = SCENES / "kin.fourbar_instant_centres.toml"
+    doc = check_json(scene, "--measured", f"omega_3_ic={book['omega3_rad_s']},v_C_ic={book['vC_m_s']}",
+                     "--measured", f"phi_v0_C_1={book['phi_vC0_deg'][0]},v_min_BC_ic={book['vE_m_s']}")
+    m = {v["name"]: v for v in doc["measured"]}
+    assert m["omega_3_ic"]["ok"] and m["v_C_ic"]["ok"] and m["phi_v0_C_1"]["ok"]
+    # v_E: 0.5 mm at μl = 0.002 m/mm is ±0.0025 m/s; the book's 0.357 is 0.0039 off
+    assert not m["v_min_BC_ic"]["ok"] and m["v_min_BC_ic"]["tolerance"] == pytest.approx(0.5 * 0.002 * 2.538487, rel=1e-5)
+    code, out, err = run_cli("check", str(scene), "--measured", "x_P99=0.1")
+    assert code == 2 and "names no instant centre" in err
+    an_text = SLIDER_CRANK
+    with pytest.raises(SceneError) as e:
+        from graphmech.check import judge
+
+        sc = scene_of(an_text, find=["v_C"])
+        sc = __import__("dataclasses").replace(sc, measured=(("omega_3_ic", 2.0),))
+        judge(analyse(sc))
+    assert "name one, e.g. omega_3_ic@30" in str(e.value)
+
+
+def test_centres_and_topologies_are_frozen():
+    import dataclasses
+
+    from graphmech.mechanisms.topology import Pair
+
+    an = analyse(scene_of(SLIDER_CRANK))
+    c = an.instant_centres.centres[0].centre("1", "3")
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        c.point = (0.0, 0.0)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        Pair("R", ("1", "2")).kind = "P"
+
+
+from hypothesis import HealthCheck, assume, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(a=st.floats(20, 80), b=st.floats(60, 160), c=st.floats(40, 140), d=st.floats(60, 160),
+       phi=st.floats(0, 360), branch=st.sampled_from(["left", "right"]))
+def test_kennedy_any_three_centres_are_in_line_and_agree_with_the_exact_ones(a, b, c, d, phi, branch):
+    """For every three links i, j, k the centres P_ij, P_jk, P_ik are on one line (Kennedy), and
+    every centre and ω agrees with the exact kinematics unless the construction says it is
+    ill-conditioned."""
+    from graphmech.errors import DegenerateConstruction
+
+    try:
+        an = analyse(scene_of(FOURBAR.format(d=d, a=a, b=b, c=c, phi=phi, branch=branch),
+                              find=["P13", "P24", "omega_3_ic", "omega_4_ic", "v_C_ic"]))
+    except DegenerateConstruction:  # cannot be assembled at this angle
+        assume(False)
+        return
+    ic = an.instant_centres.centres[0]
+    assume(not ic.undetermined and an.exact.valid[0])
+    for i, j, k in combinations(ic.links, 3):
+        pts = [ic.centre(x, y) for x, y in ((i, j), (j, k), (i, k))]
+        fin = [p.point for p in pts if p.point is not None]
+        dirs = [p.direction for p in pts if p.direction is not None]
+        if len(fin) == 3:
+            (x0, y0), (x1, y1), (x2, y2) = fin
+            area = abs((x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0))
+            span = max(math.dist(fin[0], fin[1]), math.dist(fin[0], fin[2]), math.dist(fin[1], fin[2]))
+            assert area <= 1e-9 * max(span, 1.0) ** 2 * max(p.cond for p in pts)
+        elif len(fin) == 2 and dirs:
+            (x0, y0), (x1, y1) = fin
+            u = dirs[0]
+            assert abs((x1 - x0) * u[1] - (y1 - y0) * u[0]) <= 1e-9 * max(math.dist(*fin), 1.0) * max(
+                p.cond for p in pts)
+    for r in an.rows:
+        assert r.rel_error <= 1e-9 or r.ill_conditioned, r
+
+
+COMPOUND = HEAD + """
+[frame]
+link = "1"
+A = [0, 0]
+D = [120, 0]
+G = [200, 100]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "B"
+length = 60
+angle = [60, 150]
+omega = 10
+[[dyad]]
+type = "RRR"
+joints = ["B", "C", "D"]
+links = ["3", "4"]
+lengths = [120, 90]
+branch = "left"
+[[dyad]]
+type = "RRR"
+joints = ["C", "E", "G"]
+links = ["5", "6"]
+lengths = [110, 80]
+branch = "left"
+"""
+
+
+def test_a_compound_hinge_is_the_centre_of_every_two_of_its_links():
+    # link 5 hangs on C, where 3 and 4 already meet: P34 = P35 = P45 = C
+    an = analyse(scene_of(COMPOUND))
+    assert all_centres_agree(an) == 2 * 15
+    ic = an.instant_centres.centres[0]
+    c = positions_mm(an.build, an.solutions[0])["C"]
+    assert ic.centre("3", "4").point == ic.centre("3", "5").point == ic.centre("4", "5").point == c
+    assert sum(1 for x in ic.centres.values() if x.kind == "direct") == 8  # A, B, D, G, E and C thrice
+
+
+def _linkage_examples():
+    import re
+
+    from tests.conftest import ROOT
+
+    blocks = re.findall(r"```toml\n(.*?)```", (ROOT / "docs" / "scene-format.md").read_text(encoding="utf-8"), re.S)
+    out = [(f"doc{i}", b) for i, b in enumerate(blocks)]
+    out += [(p.stem, p.read_text(encoding="utf-8")) for p in sorted(SCENES.glob("*.toml"))
+            if p.stem != "ic.parallelogram_change_point"]
+    no_linkage = ("cam", "flywheel", "structure", "efficiency", "balancing")
+    return [(n, t) for n, t in out if not any(k in tomllib.loads(t) for k in no_linkage)]
+
+
+@pytest.mark.parametrize("name,text", _linkage_examples(), ids=[n for n, _ in _linkage_examples()])
+def test_every_documented_and_reference_linkage_has_all_its_centres_right(name, text):
+    data = tomllib.loads(text)
+    data["show"], data["find"] = ["instant_centres"], []
+    for key in ("measured", "forces"):  # a force scene's linkage is a linkage like any other
+        data.pop(key, None)
+    an = analyse(parse_scene(data, f"{name}.toml"))
+    n = len(an.instant_centres.centres[0].links)
+    assert all_centres_agree(an) == len(an.labels) * n * (n - 1) // 2
+
+
+def test_the_at_ic_alias_names_the_same_values():
+    data = tomllib.loads((SCENES / "kin.fourbar_instant_centres.toml").read_text())
+    data["find"], data["measured"] = ["omega_3@ic", "v_C@ic"], {"omega_3@ic": 2.55}
+    from graphmech.check import judge
+
+    an = analyse(parse_scene(data, "alias.toml"))
+    assert [(r.name, round(r.graphical, 9)) for r in an.rows] == [("omega_3_ic", 2.538487323), ("v_C_ic", 0.400984584)]
+    [v] = judge(an)
+    assert v.name == "omega_3_ic" and v.ok
+
+
+def test_check_json_lists_every_centre_and_what_is_undetermined():
+    doc = check_json(SCENES / "ic.parallelogram.toml")
+    [pos] = doc["instant_centres"]
+    byname = {c["name"]: c for c in pos["centres"]}
+    assert set(byname) == {"P12", "P13", "P14", "P23", "P24", "P34"}
+    assert byname["P13"]["kind"] == "kennedy" and byname["P13"]["direction_deg"] == pytest.approx(70.0, abs=1e-9)
+    assert byname["P23"] == {"name": "P23", "kind": "direct", "x": pytest.approx(0.06 * math.cos(math.radians(70))),
+                             "y": pytest.approx(0.06 * math.sin(math.radians(70)))}
+    assert pos["omega"] == {"2": 10.0, "3": 0.0, "4": pytest.approx(10.0)} and pos["undetermined"] == {}
+    doc = check_json(SCENES / "ic.parallelogram_change_point.toml")
+    [pos] = doc["instant_centres"]
+    assert {c["name"]: c["kind"] for c in pos["centres"]}["P13"] == "undetermined"
+    assert set(pos["undetermined"]) == {"3", "4"}
