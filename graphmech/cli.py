@@ -81,115 +81,14 @@ def main(argv: Sequence[str] | None = None) -> int:
 def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
     """The SVG text of a scene and its warnings."""
     import graphmech
-    from graphmech.check import analyse, page_size, position_text, rows_that_fit
-    from graphmech.methods.figures import linkage_sheet
+    from graphmech.problems import sheet
     from graphmech.render.svg import render_svg
     from graphmech.scene import load_scene
 
     scene = load_scene(path)
-    footer = (f"graphmech {graphmech.__version__}",)
-    if scene.efficiency is not None or scene.balancing is not None:
-        if scene.efficiency is not None:
-            from graphmech.efficiency_check import analyse_efficiency as analyse_forces, efficiency_figure as figure
-        else:
-            from graphmech.balancing_check import analyse_balancing as analyse_forces, balancing_figure as figure
-        fan = analyse_forces(scene)
-        warnings = list(fan.warnings)
-        svg = render_svg(figure(fan, page_size(scene), footer), _id_prefix(path), on_warning=warnings.append)
-        return svg, warnings
-    if scene.structure is not None:
-        from graphmech.methods.structure_figures import structure_sheet
-        from graphmech.structure_check import analyse_structure
-
-        san = analyse_structure(scene)
-        sheet = structure_sheet(scene.title, san, page_size(scene), footer)
-        warnings = list(san.warnings)
-        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
-    if scene.flywheel is not None:
-        from graphmech.flywheel_check import analyse_flywheel
-        from graphmech.methods.flywheel_figures import flywheel_sheet
-        from graphmech.render.primitives import Sheet
-
-        fan = analyse_flywheel(scene)
-        cycle_panels = [p for p in scene.show if p not in ("mechanism", "rundown")]
-        if fan.design is None and not any(p in scene.show for p in ("mechanism", "rundown")):
-            raise SceneError([("show", "nothing to draw: this flywheel scene asks for no diagram; "
-                                       "use graphmech check")], scene.source)
-        panels: list[Any] = []
-        if "mechanism" in scene.show and scene.linkage is not None:
-            panels += _mechanism_panels(scene, footer)
-        if cycle_panels and fan.design is not None:
-            panels += flywheel_sheet(scene.title, fan.design, cycle_panels, page_size(scene), footer).panels
-        if "rundown" in scene.show:
-            from graphmech.methods.braking_figures import rundown_panel
-
-            b = scene.flywheel.braking
-            panels.append(rundown_panel(fan.braking_inertia, scene.flywheel.machine.omega_m, b.moment, b.time_limit))
-        sheet = Sheet(scene.title, tuple(panels), page_size(scene), footer)
-        warnings = list(fan.warnings)
-        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
-    if scene.forces is not None:
-        from graphmech.force_check import render_forces
-
-        sheet, warnings = render_forces(scene, footer)
-        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
-    if scene.cam is not None:
-        from graphmech.cam_check import analyse_cam
-        from graphmech.methods.cam_figures import cam_sheet
-
-        can = analyse_cam(scene)
-        sheet = cam_sheet(scene.title, can.cam, can.drawn, can.scales, list(scene.show), page_size(scene),
-                          roller_circles=scene.cam.roller_circles, marks=can.marks, footer=footer)
-        warnings = list(can.warnings)
-        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
-    if scene.cycle is not None:
-        from graphmech.cycle_check import analyse_cycle
-        from graphmech.methods.cycle_figures import cycle_sheet
-
-        can = analyse_cycle(scene)
-        sheet = cycle_sheet(scene.title, can, list(scene.show), page_size(scene), footer)
-        warnings = list(can.warnings)
-        return render_svg(sheet, _id_prefix(path), on_warning=warnings.append), warnings
-    fit = rows_that_fit(page_size(scene))
-    if len(scene.positions.values) > fit:
-        raise SceneError([("driver", f"{len(scene.positions.values)} positions do not fit one sheet of "
-                                     f"{page_size(scene)[0]:g} × {page_size(scene)[1]:g} mm (at most {fit}, one row "
-                                     "of panels each): split the scene or choose a larger [page] size; "
-                                     "`graphmech check` takes up to 3600")], str(path))
-    an = analyse(scene)
-    b = an.build
-    texts = [position_text(b, lab) for lab in an.labels]
-    from graphmech.methods.polygons import PANELS
-
-    sheet = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
-                          [s for s in scene.show if s in PANELS],
-                          page_size(scene), footer)
-    if "instant_centres" in scene.show:
-        from dataclasses import replace
-
-        from graphmech.methods.ic_figures import ic_panels
-
-        sheet = replace(sheet, panels=sheet.panels + tuple(ic_panels(an, page_size(scene))))
-    warnings = list(an.warnings)
-    svg = render_svg(sheet, _id_prefix(path), on_warning=warnings.append)
-    return svg, warnings
-
-
-def _mechanism_panels(scene: Any, footer: tuple[str, ...]) -> list[Any]:
-    """A flywheel scene's mechanism, drawn at position 1 (where φ = 0) as a linkage scene would."""
-    import dataclasses
-
-    from graphmech.check import analyse, page_size, position_text
-    from graphmech.methods.figures import linkage_sheet
-    from graphmech.mechanisms.linkage import Positions
-
-    first = Positions(scene.positions.values[:1], scene.positions.labels[:1])
-    lscene = dataclasses.replace(scene, show=("mechanism",), find=(), measured=(), flywheel=None, positions=first)
-    an = analyse(lscene)
-    texts = [f"position 1 (φ = 0), {position_text(an.build, lab)}" for lab in an.labels]
-    sheet = linkage_sheet(scene.title, an.build.linkage, an.build, an.plan, an.solutions, an.labels, texts,
-                          an.scales, ["mechanism"], page_size(scene), footer)
-    return [dataclasses.replace(p, row=0) for p in sheet.panels]
+    drawing, warnings = sheet(scene, (f"graphmech {graphmech.__version__}",))
+    warnings = list(warnings)
+    return render_svg(drawing, _id_prefix(path), on_warning=warnings.append), warnings
 
 
 def _id_prefix(path: str | os.PathLike[str]) -> str:
@@ -245,68 +144,15 @@ def _parse_measured(items: Sequence[str]) -> list[tuple[str, float]]:
 
 
 def _check(args: argparse.Namespace) -> int:
-    from graphmech.check import analyse, judge
+    from graphmech.problems import check, with_precision
     from graphmech.scene import load_scene
 
     if args.precision is not None and not (args.precision > 0 and math.isfinite(args.precision)):
         print("graphmech: --precision must be a positive number of mm", file=sys.stderr)
         return EXIT_BAD_INPUT
     extra = _parse_measured(args.measured)
-    scene = load_scene(args.scene)
-    extra_doc: dict[str, Any] = {}
-    if scene.efficiency is not None:
-        from graphmech.efficiency_check import analyse_efficiency, judge_efficiency
-
-        an = analyse_efficiency(scene, tuple(extra))
-        verdicts = judge_efficiency(an, args.precision)
-    elif scene.balancing is not None:
-        from graphmech.balancing_check import analyse_balancing, judge_balancing
-
-        an = analyse_balancing(scene, tuple(extra))
-        verdicts = judge_balancing(an, args.precision)
-    elif scene.flywheel is not None:
-        from graphmech.flywheel_check import analyse_flywheel, judge_flywheel
-
-        an = analyse_flywheel(scene, tuple(extra))
-        verdicts = judge_flywheel(an, args.precision)
-        if an.motion is not None:
-            extra_doc["true_motion"] = an.motion_summary()
-        if an.braking is not None:
-            extra_doc["braking"] = an.braking_summary()
-    elif scene.forces is not None:
-        from graphmech.force_check import analyse_forces
-
-        an = analyse_forces(scene, tuple(extra))
-        verdicts = an.verdicts
-        if scene.forces.model.has_friction:
-            extra_doc["friction"] = an.friction_summary()
-    elif scene.structure is not None:
-        from graphmech.structure_check import analyse_structure, judge_structure
-
-        an = analyse_structure(scene)
-        verdicts = judge_structure(an, tuple(extra))
-        extra_doc["structure"] = an.summary()
-    elif scene.cam is not None:
-        from graphmech.cam_check import analyse_cam, judge_cam
-
-        an = analyse_cam(scene, tuple(extra))
-        verdicts = judge_cam(an, args.precision)
-        extra_doc["impacts"] = an.impacts
-        if an.divisions:
-            extra_doc["divisions"] = an.divisions
-    elif scene.cycle is not None:
-        from graphmech.cycle_check import analyse_cycle, judge_cycle
-
-        an = analyse_cycle(scene, tuple(extra))
-        verdicts = judge_cycle(an, args.precision)
-        extra_doc.update(an.summary)
-    else:
-        an = analyse(scene, tuple(extra))
-        verdicts = judge(an, args.precision)
-        if an.instant_centres is not None:
-            from graphmech.ic_check import summary
-
-            extra_doc["instant_centres"] = summary(an)
+    scene = with_precision(load_scene(args.scene), args.precision)
+    an, verdicts, extra_doc, lines = check(scene, tuple(extra))
     bad = any(not v.ok for v in verdicts)
     if args.json:
         doc = {"quantities": [r.as_dict() for r in an.rows], "measured": [v.as_dict() for v in verdicts],
@@ -314,16 +160,7 @@ def _check(args: argparse.Namespace) -> int:
         print(json.dumps(doc, indent=1, ensure_ascii=False, allow_nan=False))
     else:
         print(_table(an, verdicts))
-        if scene.structure is not None:
-            from graphmech.structure_check import text_summary
-
-            print("\n".join(text_summary(an)))
-        if extra_doc.get("braking"):
-            br = extra_doc["braking"]
-            verdict = "" if br["ok"] is None else (f" ≤ {br['time_limit']:g} s: meets the requirement" if br["ok"]
-                                                     else f" > {br['time_limit']:g} s: DOES NOT meet the requirement")
-            print(f"stopping time {br['t_stop']:.6g} s{verdict}")
-        for line in getattr(an, "summary_lines", lambda: [])():  # a cycle's class, ranges and diagrams
+        for line in lines:
             print(line)
         for w in an.warnings:
             print(f"warning: {w}", file=sys.stderr)

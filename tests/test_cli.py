@@ -228,3 +228,15 @@ def test_two_positions_stand_in_two_rows(tmp_path):
     assert len(captions) == 6 and len(ys) == 2  # three panels a row, one row per position
     assert {t for y, t in captions if round(y, 3) == min(ys)} == {
         "Kinematic diagram, φ₁ = 50°", "Velocity polygon, φ₁ = 50°", "Acceleration polygon, φ₁ = 50°"}
+
+
+def test_precision_on_the_command_line_reaches_every_kind_of_scene():
+    """--precision widens the tolerance of a force scene's measured reaction too (it once read the scene's only)."""
+    scene = SCENES / "force.sixbar_kinetostatic.toml"
+    r12 = values(check_json(scene))["R_12"]
+    off = r12["graphical"] + 0.8 * r12["scale"]  # 0.8 mm of the polygon off at μF
+    code, out, _ = run_cli("check", str(scene), "--json", "--measured", f"R_12={off}")
+    assert code == 1 and json.loads(out)["measured"][0]["tolerance"] == pytest.approx(0.5 * r12["scale"])
+    code, out, _ = run_cli("check", str(scene), "--json", "--measured", f"R_12={off}", "--precision", "1")
+    verdict = json.loads(out)["measured"][0]
+    assert code == 0 and verdict["ok"] and verdict["tolerance"] == pytest.approx(1.0 * r12["scale"])
