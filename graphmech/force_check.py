@@ -85,6 +85,12 @@ class ForceAnalysis:
 
 def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> ForceAnalysis:
     """Build and check a force scene (``extra_measured``: values from the command line)."""
+    # a value that overflows is reported once, in one line, as "not finite" (no numpy warnings)
+    with np.errstate(all="ignore"):
+        return _analyse_forces(scene, extra_measured)
+
+
+def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> ForceAnalysis:
     model = scene.forces.model
     measured = [(n, v) for n, v in scene.measured if not is_force_name(n)]
     extra_kin = tuple((n, v) for n, v in extra_measured if not is_force_name(n))

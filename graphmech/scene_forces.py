@@ -54,6 +54,8 @@ FORCE_SHOW_DEFAULT = ("forces", "force_polygons")
 MAX_ITEMS = 100
 #: The most rounds of successive approximation a scene may allow.
 MAX_ITERATIONS = 10_000
+#: The magnitudes a load, mass, moment of inertia or gravity may have, SI (besides 0).
+ABSURD = (1e-9, 1e12)
 
 
 @dataclass(frozen=True)
@@ -78,6 +80,15 @@ def _non_negative(r: _Reader, base: str, kind: str, *, required: bool = True) ->
         return None
     if v.si < 0:
         r.problem(v.path, "must be ≥ 0")
+        return None
+    return _sane(r, v)
+
+
+def _sane(r: _Reader, v: Any) -> float | None:
+    """A load, mass or gravity of a machine: 0, or 1e-9 … 1e12 in SI units (beyond, the products
+    of the analysis under- or overflow: a denormal mass made h = M_i/F_i infinite)."""
+    if v.si != 0 and not ABSURD[0] <= abs(v.si) <= ABSURD[1]:
+        r.problem(v.path, f"{v.text()} is absurd for a machine (0, or {ABSURD[0]:g} … {ABSURD[1]:g} in SI units)")
         return None
     return v.si
 
@@ -234,6 +245,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     journals: list[RevoluteFriction] = []
     revolutes = _revolute_points(linkage) if linkage is not None else None
     spans = _joint_lengths(linkage) if linkage is not None else {}
+    seen_journals: dict[str, str] = {}
     for r in fr.tables_at("journal")[:MAX_ITEMS]:
         point = _name(r, "point", "the revolute's point, e.g. point = \"B\"")
         f_v = _coefficient(r, "f_v")
