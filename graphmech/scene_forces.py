@@ -196,10 +196,12 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     for r in fr.tables_at("mass")[:MAX_ITEMS]:
         link = _link(r, links, frame)
         point = _on_link(r, _name(r, "point", "its centre of mass S, a point of that link"), link, links)
-        if r.present("mass") and r.present("weight"):
+        by_weight = bool(r.present("weight"))
+        if r.present("mass") and by_weight:
             r.problem(r.at(r.present("weight")), "give mass or weight, not both")
             r.ignore("weight")
-        if r.present("weight"):
+            by_weight = False
+        if by_weight:
             w = _non_negative(r, "weight", "force")
             g = gravity or 9.81  # a weight names its mass through g
             mass = None if w is None else w / g
