@@ -239,7 +239,8 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     for k, r in enumerate(fr.tables_at("moment")[:MAX_ITEMS]):
         name = _label_text(r, "name", f"M_{k + 1}")
         link = _link(r, links, frame)
-        moment = r.scalar("moment", "moment")
+        given_moment = r.value("moment", "moment")
+        moment = None if given_moment is None else _sane(r, given_moment)
         r.finish()
         if link is not None and moment is not None:
             couples.append(LinkCouple(link, moment, name))
