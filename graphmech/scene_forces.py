@@ -260,6 +260,10 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
             continue
         if point is None or f_v is None or radius is None:
             continue
+        if point in seen_journals:  # two friction circles on one joint would silently both act
+            r.problem(r.at("point"), f"the journal at {point} is already given ({seen_journals[point]})")
+            continue
+        seen_journals[point] = r.path
         span = spans.get(point, math.inf)
         if radius >= span / 2 or f_v * radius >= span / 2:
             r.problem(r.path, f"the journal at {point} (r = {radius * 1000:g} mm, friction circle ρ = "
@@ -269,6 +273,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
         journals.append(RevoluteFriction(point, f_v, radius))
 
     slides: list[SlidingFriction] = []
+    seen_guides: dict[str, str] = {}
     sliders = None if linkage is None else (
         {y.links[1] for y in linkage.dyads if isinstance(y, RRP)}
         | ({linkage.driver.link} if not isinstance(linkage.driver, Crank) else set())
@@ -283,7 +288,11 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
             r.problem(r.at("link"), f"link {link} is not a slider (on a frame guide or a guide bar)"
                                     + (f" (sliders: {', '.join(sorted(sliders))})" if sliders else ""))
             continue
+        if link is not None and link in seen_guides:
+            r.problem(r.at("link"), f"link {link} already has its guide friction ({seen_guides[link]})")
+            continue
         if link is not None and f is not None:
+            seen_guides[link] = r.path
             slides.append(SlidingFriction(link, f))
 
     tolerance, iterations = 1e-10, 100
