@@ -42,6 +42,8 @@ FORCE_NAME = re.compile(
     r"|R_(?P<ri>\w)(?P<rj>\w)(?P<rc>_x|_y)?|(?P<gm>M|e)_(?P<gi>\w)(?P<gj>\w))")
 #: Room for the largest force polygon, mm (μF is chosen so that it fits).
 POLYGON_ROOM_MM = 70.0
+#: The lengths a stated μF may draw the largest force at (mm): outside, the scale is absurd.
+POLYGON_RANGE_MM = (1.0, 1e5)
 
 
 def is_force_name(name: str) -> bool:
@@ -132,15 +134,21 @@ def _ok(fa: ForceAnalysis, i: int) -> bool:
 
 
 def _choose_force_scale(fa: ForceAnalysis) -> None:
-    mu = fa.scene.forces.mu_F
-    if mu is not None:
-        fa.scales["F"], fa.stated = mu, fa.stated | {"F"}
-        return
     largest = max((float(np.max(np.abs(r[fa.kin.valid]), initial=0.0)) for r in fa.solution.reactions.values()),
                   default=0.0)
     for il in fa.solution.inertia.values():
         largest = max(largest, float(np.max(np.abs(il.force[fa.kin.valid]), initial=0.0)))
-    fa.scales["F"] = round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0
+    mu = fa.scene.forces.mu_F
+    if mu is None:
+        fa.scales["F"] = round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0
+        return
+    fa.scales["F"], fa.stated = mu, fa.stated | {"F"}
+    drawn = largest / mu
+    if largest > 0 and not POLYGON_RANGE_MM[0] <= drawn <= POLYGON_RANGE_MM[1]:
+        raise SceneError([(fa.scene.forces.mu_F_path, f"μF = {mu:g} N/mm draws the largest force {drawn:.3g} mm long: choose "
+                                          f"μF so that it is {POLYGON_RANGE_MM[0]:g} … {POLYGON_RANGE_MM[1]:g} mm "
+                                          f"(about {round_scale(largest / POLYGON_ROOM_MM):g} N/mm)")],
+                         fa.scene.source)
 
 
 def _conditioning(fa: ForceAnalysis) -> None:

@@ -68,10 +68,13 @@ class ForceScene:
         Masses, loads, friction, in SI.
     mu_F : float or None
         The force polygons' scale, N/mm (None: chosen to fit the page).
+    mu_F_path : str
+        Where the scene states μF (for messages about it).
     """
 
     model: ForceModel
     mu_F: float | None = None
+    mu_F_path: str = "forces.mu_F"
 
 
 def _non_negative(r: _Reader, base: str, kind: str, *, required: bool = True) -> float | None:
@@ -184,10 +187,11 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     links = None if linkage is None else {k: v for k, v in linkage.links().items() if k != linkage.frame_link}
     frame = None if linkage is None else linkage.frame_link
     before = len(fr.problems)
-    mu_F = None
+    mu_F, mu_F_path = None, fr.at("mu_F")
     given = fr.quantity("mu_F", "force", required=False, per_mm=True)
     if given is not None:
-        x = fr.number(given.value, fr.at(given.key), positive=True)
+        mu_F_path = fr.at(given.key)
+        x = fr.number(given.value, mu_F_path, positive=True)
         mu_F = None if x is None else given.si(x)
     gravity = _non_negative(fr, "gravity", "acceleration", required=False) or 0.0
 
@@ -315,7 +319,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
         return None
     model = ForceModel(tuple(masses), tuple(forces), tuple(couples), gravity, tuple(journals), tuple(slides),
                        tolerance, iterations)
-    return ForceScene(model, mu_F)
+    return ForceScene(model, mu_F, mu_F_path)
 
 
 def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]) -> Scene:

@@ -520,3 +520,35 @@ def test_slider_crank_with_friction_equals_the_matrix_method(phi, m3, f, fs, fv,
     for key, r in sol.reactions.items():
         assert abs(complex(r[0]) - complex(*ex.reactions[key][0])) <= 1e-8 * size, key
     assert abs(sol.balancing_moment[0] - ex.balancing_moment[0]) <= 1e-8 * size * 0.1
+
+
+# ----------------------------------------------------------------------------- hostile input (review)
+
+
+@pytest.mark.parametrize("old, new, message", [
+    # a denormal mass made h = |M_i/F_i| overflow: numpy warnings on stderr, then "h_2 is not finite"
+    ("mass_kg = 2", "mass_kg = 5e-324",
+     "forces.mass[0].mass_kg: 4.94065645841e-324 kg is absurd for a machine (0, or 1e-09 … 1e+12 in SI units)"),
+    ("force_N = 100", "force_N = 1e308",
+     "forces.force[0].force_N: 1e+308 N is absurd for a machine (0, or 1e-09 … 1e+12 in SI units)"),
+    ("[forces]\n", "[forces]\ngravity_m_s2 = 1e308\n",
+     "forces.gravity_m_s2: 1e+308 m/s2 is absurd for a machine (0, or 1e-09 … 1e+12 in SI units)"),
+    # both given: the message named mass_kg an "unknown key"
+    ("mass_kg = 2", "mass_kg = 2\nweight_N = 20", "forces.mass[0].weight_N: give mass or weight, not both"),
+    # a second guide friction on the same slider was silently used as well
+    ("[forces]\n", "[forces]\n[[forces.guide]]\nlink = \"3\"\nf = 0.1\n[[forces.guide]]\nlink = \"3\"\nf = 0.2\n",
+     "forces.guide[1].link: link 3 already has its guide friction (forces.guide[0])"),
+    ("[forces]\n", "[forces]\n[[forces.journal]]\npoint = \"B\"\nf_v = 0.1\nradius = 5\n"
+                   "[[forces.journal]]\npoint = \"B\"\nf_v = 0.2\nradius = 5\n",
+     "forces.journal[1].point: the journal at B is already given (forces.journal[0])"),
+    # an absurd stated μF drew polygons 1e-297 mm long without a word
+    ("[forces]\n", "[forces]\nmu_F_N_per_mm = 1e300\n",
+     "forces.mu_F_N_per_mm: μF = 1e+300 N/mm draws the largest force 1.14e-298 mm long: choose μF so that it "
+     "is 1 … 100000 mm (about 2 N/mm)"),
+])
+def test_hostile_force_inputs_are_one_line_errors(tmp_path, old, new, message):
+    text = SLIDER_CRANK.format(length=300, extra="")
+    assert old in text
+    code, out, err = run_cli("check", str(_write(tmp_path, text.replace(old, new, 1))))
+    assert (code, out) == (2, "")
+    assert err == f"s.toml: {message}\n"
