@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from graphmech.check import Analysis, Row, Verdict, analyse, judge, position_text, split_name
+from graphmech.check import Analysis, Row, Verdict, analyse, judge, page_size, position_text, split_name
 from graphmech.errors import SceneError
 from graphmech.exact.kinetostatics import ExactForces, solve_forces
 from graphmech.methods.kinetostatics import (
@@ -34,6 +34,7 @@ from graphmech.methods.kinetostatics import (
     zhukovsky_lever,
 )
 from graphmech.scales import round_scale
+from graphmech.scene import Page
 from graphmech.tolerances import COND_WARN
 
 #: The force quantities a scene may ask for (links are one character: R_12, F_i2, h_2).
@@ -85,14 +86,42 @@ class ForceAnalysis:
                 "tolerance_N": self.scene.forces.model.tolerance}
 
 
+#: How many times smaller than the page the room for the chosen scales is taken, tried in turn
+#: until the force sheet fits its page (the loads, every free body and the lever share it).
+FIT_SHRINK = (1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0)
+
+
 def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> ForceAnalysis:
-    """Build and check a force scene (``extra_measured``: values from the command line)."""
+    """Build and check a force scene (``extra_measured``: values from the command line).
+
+    The scales a scene does not state are chosen so that the sheet it draws fits its page:
+    the check table then reads the lengths at the μ the figure is drawn at.
+    """
     # a value that overflows is reported once, in one line, as "not finite" (no numpy warnings)
     with np.errstate(all="ignore"):
-        return _analyse_forces(scene, extra_measured)
+        drawn = any(p in FORCE_PANELS for p in scene.show) and len(scene.positions.values) == 1
+        chosen = any(k not in scene.scales for k in ("l", "v")) or scene.forces.mu_F is None
+        if not (drawn and chosen):
+            return _analyse_forces(scene, extra_measured, 1.0)
+        for shrink in FIT_SHRINK:
+            fa = _analyse_forces(scene, extra_measured, shrink)
+            if not _ok(fa, 0) or _fits(fa):
+                break
+        return fa
 
 
-def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> ForceAnalysis:
+def _fits(fa: ForceAnalysis) -> bool:
+    """Whether the force sheet lies on its page at these scales (labels placed as drawn)."""
+    from graphmech.render.layout import layout_sheet
+    from graphmech.render.sheet import panel_labels, panel_shapes
+
+    sheet = _sheet(fa)
+    shapes = [panel_shapes(p) for p in sheet.panels]
+    placed = [panel_labels(p, sh) for p, sh in zip(sheet.panels, shapes)]
+    return not layout_sheet(sheet, label_boxes=[[pl.box for pl in labels] for labels in placed]).warnings
+
+
+def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...], shrink: float) -> ForceAnalysis:
     model = scene.forces.model
     measured = [(n, v) for n, v in scene.measured if not is_force_name(n)]
     extra_kin = tuple((n, v) for n, v in extra_measured if not is_force_name(n))
@@ -100,7 +129,10 @@ def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -
         (f"--measured {n}", n, v) for n, v in extra_measured if is_force_name(n)]
     kin_find = tuple(n for n in scene.find if not is_force_name(n))
     kin_show = tuple(p for p in scene.show if p in ("mechanism", "velocity", "acceleration")) or ("mechanism",)
-    plain = replace(scene, find=kin_find, show=kin_show, measured=tuple(measured), forces=None)
+    # the chosen μl and μv fit a page ``shrink`` times smaller: the room one panel has on the force sheet
+    w, h = page_size(scene)
+    plain = replace(scene, find=kin_find, show=kin_show, measured=tuple(measured), forces=None,
+                    page=Page((w / shrink, h / shrink)))
     an = analyse(plain, extra_kin)
     b = an.build
     plan = b.g.prune(construction_targets(b))
@@ -121,7 +153,7 @@ def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -
         fa.exact_frictionless = solve_forces(b.linkage, bare, an.positions, an.exact)
     if "M_b_lever" in names or "F_b_lever" in names or "lever" in scene.show:
         fa.lever = zhukovsky_lever(b.linkage, model, kin)
-    _choose_force_scale(fa)
+    _choose_force_scale(fa, POLYGON_ROOM_MM / shrink)
     _conditioning(fa)
     _rows(fa)
     fa.verdicts = list(judge(an, None)) if (measured or extra_kin) else []
@@ -133,14 +165,14 @@ def _ok(fa: ForceAnalysis, i: int) -> bool:
     return bool(fa.kin.valid[i] and fa.exact.valid[i] and fa.kinematics.solutions[i] is not None)
 
 
-def _choose_force_scale(fa: ForceAnalysis) -> None:
+def _choose_force_scale(fa: ForceAnalysis, room: float = POLYGON_ROOM_MM) -> None:
     largest = max((float(np.max(np.abs(r[fa.kin.valid]), initial=0.0)) for r in fa.solution.reactions.values()),
                   default=0.0)
     for il in fa.solution.inertia.values():
         largest = max(largest, float(np.max(np.abs(il.force[fa.kin.valid]), initial=0.0)))
     mu = fa.scene.forces.mu_F
     if mu is None:
-        fa.scales["F"] = round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0
+        fa.scales["F"] = round_scale(largest / room) if largest > 0 else 1.0
         return
     fa.scales["F"], fa.stated = mu, fa.stated | {"F"}
     drawn = largest / mu
@@ -365,18 +397,28 @@ FORCE_PANELS = ("forces", "force_polygons", "lever")
 def render_forces(scene: Any, footer: tuple[str, ...] = ()) -> tuple[Any, list[str]]:
     """The sheet of a force scene and its warnings: the kinematic panels it shows, then the
     loads, each group's free body and force polygon and Zhukovsky's lever, at one position."""
-    from graphmech.check import page_size
-    from graphmech.methods.figures import linkage_sheet
-    from graphmech.methods.force_figures import force_sheet
-
     drawn = [p for p in scene.show if p in FORCE_PANELS]
     if drawn and len(scene.positions.values) > 1:
         raise SceneError([("show", f"{', '.join(drawn)} draw one position and this scene has "
                                    f"{len(scene.positions.values)}: give the driver one angle "
                                    "(graphmech check takes them all)")], scene.source)
     fa = analyse_forces(scene)
-    an = fa.kinematics
+    if drawn and not _ok(fa, 0):
+        an = fa.kinematics
+        raise SceneError([("driver", f"{position_text(an.build, an.labels[0])} cannot be solved: "
+                                     f"{an.failures[0] or 'the exact solution is undefined here'}")], scene.source)
+    return _sheet(fa, footer), list(fa.warnings)
+
+
+def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Any:
+    """The force scene's sheet at the analysis' scales (position 0 solved)."""
+    from graphmech.methods.figures import linkage_sheet
+    from graphmech.methods.force_figures import force_sheet
+    from graphmech.render.primitives import Sheet
+
+    scene, an = fa.scene, fa.kinematics
     b = an.build
+    drawn = [p for p in scene.show if p in FORCE_PANELS]
     kin_show = [p for p in scene.show if p in ("mechanism", "velocity", "acceleration")]
     head: tuple = ()
     if kin_show:
@@ -384,15 +426,9 @@ def render_forces(scene: Any, footer: tuple[str, ...] = ()) -> tuple[Any, list[s
         head = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
                              kin_show, page_size(scene)).panels
     if not drawn:
-        from graphmech.render.primitives import Sheet
-
-        return Sheet(scene.title, tuple(head), page_size(scene), footer), list(fa.warnings)
-    if not _ok(fa, 0):
-        raise SceneError([("driver", f"{position_text(b, an.labels[0])} cannot be solved: "
-                                     f"{an.failures[0] or 'the exact solution is undefined here'}")], scene.source)
-    sheet = force_sheet(scene.title, b, fa.kin, fa.solution, scene.forces.model, fa.lever, fa.scales["F"],
-                        drawn, 0, position_text(b, an.labels[0]), page_size(scene), head, footer)
-    return sheet, list(fa.warnings)
+        return Sheet(scene.title, tuple(head), page_size(scene), footer)
+    return force_sheet(scene.title, b, fa.kin, fa.solution, scene.forces.model, fa.lever, fa.scales["F"],
+                       drawn, 0, position_text(b, an.labels[0]), page_size(scene), head, footer)
 
 
 __all__ = ["ForceAnalysis", "analyse_forces", "is_force_name", "FORCE_NAME", "render_forces", "FORCE_PANELS"]

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import dataclasses
+import re
 import subprocess
 import sys
 import tomllib
@@ -552,3 +553,26 @@ def test_hostile_force_inputs_are_one_line_errors(tmp_path, old, new, message):
     code, out, err = run_cli("check", str(_write(tmp_path, text.replace(old, new, 1))))
     assert (code, out) == (2, "")
     assert err == f"s.toml: {message}\n"
+
+
+DOC_BLOCKS = re.findall(r"```toml\n(.*?)```", (ROOT / "docs" / "scene-format.md").read_text(encoding="utf-8"), re.S)
+
+
+def _doc_scene(title: str) -> str:
+    return next(b for b in DOC_BLOCKS if b.startswith(f'title = "{title}"'))
+
+
+@pytest.mark.parametrize("title, mu_l", [
+    ("Oscillating block: reactions with friction", "μl = 0.002 m/mm"),
+    ("Slider-driven rocker: balancing force", "μl = 0.002 m/mm"),
+])
+def test_chosen_scales_fit_the_force_sheet_on_its_page(tmp_path, title, mu_l):
+    # μl was chosen for the mechanism alone, filling the page: the free bodies and the lever ran
+    # off it ("the panels need 410.9 mm of height … run off the page", RPR at μl = 0.0005 m/mm)
+    p = _write(tmp_path, _doc_scene(title))
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "s.svg"))
+    assert code == 0 and "run off the page" not in err
+    assert mu_l in (tmp_path / "s.svg").read_text(encoding="utf-8")
+    code, out, _ = run_cli("check", str(p))
+    assert code == 0 and mu_l + " (chosen)" in out  # the table reads the figure's lengths
+
