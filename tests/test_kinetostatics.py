@@ -576,3 +576,11 @@ def test_chosen_scales_fit_the_force_sheet_on_its_page(tmp_path, title, mu_l):
     code, out, _ = run_cli("check", str(p))
     assert code == 0 and mu_l + " (chosen)" in out  # the table reads the figure's lengths
 
+
+def test_the_lever_with_friction_names_the_frictionless_balancing_moment(tmp_path):
+    # the caption said "M_b = μv·ΣM_p/ω1 = …" though the lever knows no friction: it is M_b0
+    code, _, err = run_cli("render", str(_write(tmp_path, _doc_scene("Oscillating block: reactions with friction")
+                                               .replace('show = ["forces", "force_polygons"]',
+                                                        'show = ["forces", "lever"]'))), "-o", str(tmp_path / "s.svg"))
+    svg = (tmp_path / "s.svg").read_text(encoding="utf-8")
+    assert code == 0 and "M_b0 = μv·ΣM_p/ω1 = " in svg and "N·m (without friction)" in svg

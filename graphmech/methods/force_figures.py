@@ -285,10 +285,12 @@ def force_sheet(title: str, build: Any, kin: PolygonKinematics, sol: Kinetostati
             panels.append(Panel(f"polygon-{key}", f"Force polygon, {g.name}", tuple(polygon_items(g, mu_F, i)),
                                 (f"μF = {mu_F:.6g} N/mm",)))
     if "lever" in show and lever is not None:
+        # the lever knows no friction: with friction it gives the frictionless M_b0 (F_b0)
+        bare, note = ("0", " (without friction)") if model.has_friction else ("", "")
         if lever.balancing_force is not None:
-            result = f"F_b = μv·ΣM_p/v = {float(lever.balancing_force[i]):.6g} N"
+            result = f"F_b{bare} = μv·ΣM_p/v = {float(lever.balancing_force[i]):.6g} N{note}"
         else:
-            result = f"M_b = μv·ΣM_p/ω1 = {float(lever.balancing_moment[i]):.6g} N·m"
+            result = f"M_b{bare} = μv·ΣM_p/ω1 = {float(lever.balancing_moment[i]):.6g} N·m{note}"
         panels.append(Panel("lever", "Zhukovsky's lever (velocity polygon turned 90°)",
                             tuple(lever_items(build.linkage, kin, lever, i)),
                             (f"μv = {kin.mu_v:.6g} (m/s)/mm", result)))
