@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from graphmech.check import Analysis, Row, Verdict, analyse, judge, page_size, position_text, split_name
-from graphmech.errors import SceneError
+from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.kinetostatics import ExactForces, solve_forces
 from graphmech.methods.kinetostatics import (
     SHALLOW_SIN,
@@ -152,7 +152,12 @@ def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...], s
         fa.frictionless = kinetostatics(b.linkage, bare, kin, polygons=False)
         fa.exact_frictionless = solve_forces(b.linkage, bare, an.positions, an.exact)
     if "M_b_lever" in names or "F_b_lever" in names or "lever" in scene.show:
-        fa.lever = zhukovsky_lever(b.linkage, model, kin)
+        try:
+            fa.lever = zhukovsky_lever(b.linkage, model, kin)
+        except DegenerateConstruction as e:  # a driver at rest: say which key asked for the lever
+            asked = [f"find[{k}]" for k, n in enumerate(scene.find) if split_name(n)[0] in ("M_b_lever", "F_b_lever")]
+            key = "show" if "lever" in scene.show else (asked[0] if asked else "--measured")
+            raise SceneError([(key, f"{e.step}: {e.reason}")], scene.source) from None
     _choose_force_scale(fa, POLYGON_ROOM_MM / shrink)
     _conditioning(fa)
     _rows(fa)

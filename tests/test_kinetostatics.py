@@ -584,3 +584,17 @@ def test_the_lever_with_friction_names_the_frictionless_balancing_moment(tmp_pat
                                                         'show = ["forces", "lever"]'))), "-o", str(tmp_path / "s.svg"))
     svg = (tmp_path / "s.svg").read_text(encoding="utf-8")
     assert code == 0 and "M_b0 = μv·ΣM_p/ω1 = " in svg and "N·m (without friction)" in svg
+
+
+@pytest.mark.parametrize("find, show, key", [
+    ('["M_b_lever"]', '["mechanism"]', "find[0]"),
+    ('["M_b"]', '["forces", "lever"]', "show"),
+])
+def test_a_lever_of_a_crank_at_rest_names_the_key_that_asked_for_it(tmp_path, find, show, key):
+    # the message had no key path: "s.toml: Zhukovsky's lever: the crank stands still: …"
+    text = SLIDER_CRANK.format(length=300, extra="").replace("omega_rad_s = 10", "omega_rad_s = 0")
+    text = text.replace('find = ["R_12", "R_43", "M_b"]', f"find = {find}").replace('show = ["mechanism"]',
+                                                                                 f"show = {show}")
+    code, out, err = run_cli("check", str(_write(tmp_path, text)))
+    assert (code, out) == (2, "")
+    assert err == f"s.toml: {key}: Zhukovsky's lever: the crank stands still: no virtual power\n"
