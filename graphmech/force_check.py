@@ -285,14 +285,22 @@ def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, f
     if base == "M_b_lever":
         assert fa.lever is not None
         return None, 1.0, float(fa.lever.balancing_moment[i]), float(bare_ex.balancing_moment[i]), "N·m"
-    # eta: the instantaneous efficiency, M_b (F_b) without friction over M_b (F_b) with it
+    # eta: the instantaneous efficiency, ideal over actual driving moment (force), M_b0/M_b, while
+    # the driver delivers power (M_b0·ω1 > 0); while the loads drive it (M_b0·ω1 < 0) the driver is
+    # the output, and η = M_b/M_b0, actual over ideal output (≤ 0: friction locks that drive) — as
+    # the reverse stroke of an [efficiency] scene. The exact sign decides for both columns.
+    d = fa.build.linkage.driver
     if sol.balancing_force is not None:
-        g = float(bare.balancing_force[i]) / float(sol.balancing_force[i])  # type: ignore[index]
-        e = float(bare_ex.balancing_force[i]) / float(ex.balancing_force[i])  # type: ignore[index]
-        return None, 1.0, g, e, ""
-    g = float(bare.balancing_moment[i]) / float(sol.balancing_moment[i])
-    e = float(bare_ex.balancing_moment[i]) / float(ex.balancing_moment[i])
-    return None, 1.0, g, e, ""
+        g0, g1 = float(bare.balancing_force[i]), float(sol.balancing_force[i])  # type: ignore[index]
+        e0, e1 = float(bare_ex.balancing_force[i]), float(ex.balancing_force[i])  # type: ignore[index]
+        speed = d.velocity
+    else:
+        g0, g1 = float(bare.balancing_moment[i]), float(sol.balancing_moment[i])
+        e0, e1 = float(bare_ex.balancing_moment[i]), float(ex.balancing_moment[i])
+        speed = d.omega
+    if e0 * speed < 0 and abs(e0) > 1e-9 * abs(e1):  # (an M_b0 that is round-off of 0 drives nothing)
+        return None, 1.0, g1 / g0, e1 / e0, ""
+    return None, 1.0, g0 / g1, e0 / e1, ""
 
 
 def _known(fa: ForceAnalysis, base: str) -> str | None:

@@ -598,3 +598,19 @@ def test_a_lever_of_a_crank_at_rest_names_the_key_that_asked_for_it(tmp_path, fi
     code, out, err = run_cli("check", str(_write(tmp_path, text)))
     assert (code, out) == (2, "")
     assert err == f"s.toml: {key}: Zhukovsky's lever: the crank stands still: no virtual power\n"
+
+
+def test_eta_of_a_crank_that_the_loads_drive_is_actual_over_ideal_output():
+    # the docs' slider-crank: P pushes the slider, the crank absorbs power (M_b0 = -50.16 N·m);
+    # η was M_b0/M_b = 1.074 > 1, now M_b/M_b0 as for a reverse stroke
+    fa = analyse_forces(_scene(_doc_scene("Slider-crank with friction: balancing moment")))
+    rows = {r.name: r for r in fa.rows}
+    m_b, m_b0 = rows["M_b"].exact, rows["M_b0"].exact
+    assert m_b0 == pytest.approx(-50.1601797, rel=1e-9) and -m_b0 > -m_b > 0
+    assert rows["eta"].exact == pytest.approx(m_b / m_b0, rel=1e-15)
+    assert rows["eta"].exact == pytest.approx(0.930961525, rel=1e-9)
+    assert rows["eta"].rel_error < 1e-14
+    # a crank that drives keeps η = M_b0/M_b (the six-bar with friction: 0.8919214560679)
+    fa = analyse_forces(load_scene(SCENES / "force.sixbar_kinetostatic-friction.toml"))
+    eta = next(r for r in fa.rows if r.name == "eta")
+    assert eta.exact == pytest.approx(0.8919214560679, rel=1e-12)
