@@ -396,8 +396,8 @@ def _judge_forces(fa: ForceAnalysis, entries: list[tuple[str, str, float]]) -> l
             continue
         drawn, scale, g, e, unit = _value(fa, base, i)
         tol = prec * fa.scales["F"]
-        if unit == "N·m":
-            tol *= fa.build.linkage.driver.length
+        if unit == "N·m":  # a polygon length off by the precision, times the arm it acts at
+            tol *= getattr(fa.build.linkage.driver, "length", fa.kinematics.size)
         elif unit == "m":
             tol = prec * fa.scales["l"]
         elif unit == "":

@@ -664,3 +664,13 @@ def test_a_position_where_every_load_vanishes_is_not_a_large_relative_error():
     rows = {r.name: r for r in fa.rows}
     assert abs(rows["R_12@240"].exact) < 1e-9 and rows["R_12@0"].exact == pytest.approx(1643.4364734438561, rel=1e-12)
     assert max(r.rel_error for r in fa.rows) < 1e-13
+
+
+def test_a_measured_moment_on_a_slider_driven_scene_is_judged(tmp_path):
+    # --measured M_01=… crashed: 'SliderInput' object has no attribute 'length' (exit 3)
+    p = _write(tmp_path, _doc_scene("Slider-driven rocker: balancing force"))
+    doc = check_json(p, "--measured", "M_01=0.0001")
+    v = next(x for x in doc["measured"] if x["name"] == "M_01")
+    assert v["expected"] == 0.0 and v["ok"] is True and 0 < v["tolerance"] < 1
+    code, _, err = run_cli("check", str(p), "--measured", "M_01=1")
+    assert code == 1 and err == ""
