@@ -674,3 +674,17 @@ def test_a_measured_moment_on_a_slider_driven_scene_is_judged(tmp_path):
     assert v["expected"] == 0.0 and v["ok"] is True and 0 < v["tolerance"] < 1
     code, _, err = run_cli("check", str(p), "--measured", "M_01=1")
     assert code == 1 and err == ""
+
+
+def test_a_resultant_moved_farther_than_the_mechanism_is_drawn_as_a_couple(tmp_path):
+    # link 2 of 1 mg with J = 0.03 kg·m²: h = |M_i/F_i| ≈ 19 km, and F_i2′ was drawn there (the
+    # sheet "needs 11289459.9 mm of height")
+    text = (SCENES / "force.sixbar_kinetostatic.toml").read_text(encoding="utf-8")
+    assert "mass_kg = 4\n" in text
+    p = _write(tmp_path, text.replace("mass_kg = 4\n", "mass_kg = 1e-6\n"))
+    fa = analyse_forces(load_scene(p))
+    assert float(fa.solution.inertia["2"].offset[0]) > 1e4  # metres
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "s.svg"))
+    svg = (tmp_path / "s.svg").read_text(encoding="utf-8")
+    assert code == 0 and "run off the page" not in err
+    assert "Fᵢ₂′" not in svg and "Fᵢ₂" in svg and "Fᵢ₃′" in svg

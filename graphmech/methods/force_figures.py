@@ -106,6 +106,10 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
 
     loads: list[tuple[str, complex, complex]] = []
     shifted: list[tuple[str, complex, complex]] = []
+    # A single resultant moved farther than the mechanism is wide is a couple in all but name
+    # (a light link turning fast: h = |M_i/F_i| runs to kilometres): F_i and M_i stay at S.
+    xs, ys = [p[0] for p in pos.values()], [p[1] for p in pos.values()]
+    reach = 2.0 * max(max(xs) - min(xs), max(ys) - min(ys), ARROW_LONG) * build.mu_l
     for lm in model.masses:
         if lm.link == linkage.frame_link:
             continue
@@ -116,7 +120,7 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
         if il is not None and il.moment[i] != 0:
             items += _moment_arc(build.to_drawing(_c(at)), float(il.moment[i]), f"M_i{lm.link}", 4.0)
         if il is not None and abs(il.force[i]) > 0:
-            if il.moment[i] != 0 and il.offset[i] > 0:
+            if il.moment[i] != 0 and 0 < il.offset[i] <= reach:
                 # F_i through S (thin), and its single resultant moved by h (bold)
                 loads.append((f"F_i{lm.link}", complex(il.force[i]), at))
                 shifted.append((f"F'_i{lm.link}", complex(il.force[i]), at + complex(il.resultant_shift[i])))
