@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from graphmech.check import Row, Verdict, close_names, measured_entries
+from graphmech.check import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import SceneError
 from graphmech.exact import balancing as ex
 from graphmech.methods import balancing as gm
@@ -172,11 +172,9 @@ def judge_balancing(an: BalancingAnalysis, precision_mm: float | None = None) ->
         if unit == "deg":
             c = an.corrections[0 if name.endswith(("_b", "_I")) else 1]
             tol = math.degrees(math.atan2(prec, max(c.drawn_mm, prec)))
-            ok = abs(_angle_diff_deg(value, g)) <= tol
+            out.append(Verdict(name, value, g, tol, abs(_angle_diff_deg(value, g)) <= tol, unit))
         else:
-            tol = prec * abs(scale) if drawn is not None else max(abs(g) * 1e-3, EPS)
-            ok = abs(value - g) <= tol + 1e-12 * abs(g)
-        out.append(Verdict(name, value, g, tol, ok, unit))
+            out.append(judge_value(name, value, g, drawn, scale, prec, unit))
     return out
 
 

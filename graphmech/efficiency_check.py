@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from graphmech.check import Row, Verdict, close_names, measured_entries
+from graphmech.check import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact import efficiency as ex
 from graphmech.methods import efficiency as gm
@@ -293,8 +293,7 @@ def judge_efficiency(an: EfficiencyAnalysis, precision_mm: float | None = None) 
         d = at or (an.problem.directions[0] if an.problem.directions else "forward")
         g, _e, drawn, scale, _ill, _c = _values(an, base, d)
         unit = an.problem.quantities()[base][0]
-        tol = prec * abs(scale) if drawn is not None else max(abs(g) * 1e-3, EPS)
-        out.append(Verdict(name, value, g, tol, abs(value - g) <= tol + 1e-12 * abs(g), unit))
+        out.append(judge_value(name, value, g, drawn, scale, prec, unit))
     return out
 
 
