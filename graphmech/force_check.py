@@ -139,7 +139,10 @@ def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...], s
     batch = plan.evaluate_batch({b.param: an.positions})
     kin = kinematics_from_construction(b, batch.values, batch.valid)
     draw = "force_polygons" in scene.show
-    sol = kinetostatics(b.linkage, model, kin, polygons=draw)
+    try:
+        sol = kinetostatics(b.linkage, model, kin, polygons=draw)
+    except DegenerateConstruction as e:  # friction that does not settle, closing lines parallel
+        raise SceneError([("forces", str(e))], scene.source) from None
     exact = solve_forces(b.linkage, model, an.positions, an.exact)
     names = [split_name(n)[0] for n in scene.find] + [split_name(n)[0] for _, n, _ in force_measured]
     fa = ForceAnalysis(scene, an, kin, sol, exact, dict(an.scales), set(an.stated), an.labels)
