@@ -689,3 +689,16 @@ def test_a_resultant_moved_farther_than_the_mechanism_is_drawn_as_a_couple(tmp_p
     svg = (tmp_path / "s.svg").read_text(encoding="utf-8")
     assert code == 0 and "run off the page" not in err
     assert "Fᵢ₂′" not in svg and "Fᵢ₂" in svg and "Fᵢ₃′" in svg
+
+
+def test_a_scene_couple_is_drawn_on_the_loads_and_on_its_free_body(tmp_path):
+    # M_r = 4 N·m on rocker 3 acted in every polygon but was drawn only on Zhukovsky's lever (at c
+    # and p): the loads panel and the free body of group 2–3 left it out
+    p = _write(tmp_path, _doc_scene("Slider-driven rocker: balancing force"))
+    code, _, _ = run_cli("render", str(p), "-o", str(tmp_path / "s.svg"))
+    svg = (tmp_path / "s.svg").read_text(encoding="utf-8")
+    assert code == 0 and svg.count(">Mᵣ<") == 4
+    no_lever = _doc_scene("Slider-driven rocker: balancing force").replace(
+        'show = ["forces", "force_polygons", "lever"]', 'show = ["force_polygons"]')
+    code, _, _ = run_cli("render", str(_write(tmp_path, no_lever, "t.toml")), "-o", str(tmp_path / "t.svg"))
+    assert code == 0 and (tmp_path / "t.svg").read_text(encoding="utf-8").count(">Mᵣ<") == 1

@@ -142,6 +142,9 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
                            ((-u[0], -u[1]),), 3.0))
         s = to_mm(at - complex(sol.inertia[name[-1]].resultant_shift[i]))
         items.append(Segment(s, p0, "construction", dashed=True))  # the offset h
+    links = linkage.links()
+    for c in model.couples:  # the scene's own moments on links (a resisting moment M_r …)
+        items += _moment_arc(_middle(kin, links[c.link], i, to_mm), c.moment, c.name, 4.0)
     d = linkage.driver
     if isinstance(d, Crank):
         items += _moment_arc(pos[d.pivot], float(sol.balancing_moment[i]), "M_b", 9.0)
@@ -204,13 +207,16 @@ def free_body_items(build: Any, kin: PolygonKinematics, group: GroupPolygon, rho
         forces.append((f.name, vec, at))
     largest = max([abs(v) for _, v, _ in forces], default=0.0)
     items += _arrows(forces, to_mm, largest)
-    for c in group.couples:
+    for c in group.couples:  # M_i, M_b and the scene's own couples; friction couples moved the reactions
         m = float(c.moment[i])
-        if m != 0 and c.name.startswith(("M_i", "M_b")):
-            link = c.name[3:] if c.name.startswith("M_i") else group.links[0]
-            at = to_mm(complex(kin.point[pts[link][0]][i] + kin.point[pts[link][-1]][i]) / 2)
-            items += _moment_arc(at, m, c.name, 4.0)
+        if m != 0 and c.name not in friction:
+            items += _moment_arc(_middle(kin, pts[c.link or group.links[0]], i, to_mm), m, c.name, 4.0)
     return items
+
+
+def _middle(kin: PolygonKinematics, names: Sequence[str], i: int, to_mm: Any) -> tuple[float, float]:
+    """Where a couple on a link is drawn: halfway between its first and last points."""
+    return to_mm(complex(kin.point[names[0]][i] + kin.point[names[-1]][i]) / 2)
 
 
 def polygon_items(group: GroupPolygon, mu_F: float, i: int) -> list[Primitive]:

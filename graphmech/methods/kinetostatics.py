@@ -213,6 +213,7 @@ class Force:
 class Couple:
     name: str
     moment: np.ndarray
+    link: str = ""  # the link it acts on (set when it is put on one)
 
 
 def _cross(u: np.ndarray, w: np.ndarray) -> np.ndarray:
@@ -245,7 +246,7 @@ class _Loads:
         self.forces.setdefault(link, []).append(f)
 
     def couple(self, link: str, c: Couple) -> None:
-        self.couples.setdefault(link, []).append(c)
+        self.couples.setdefault(link, []).append(replace(c, link=link))
 
     def total(self, link: str, n: int) -> np.ndarray:
         return sum((f.vector for f in self.forces.get(link, [])), np.zeros(n, complex))
