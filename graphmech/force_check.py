@@ -115,7 +115,7 @@ def _fits(fa: ForceAnalysis) -> bool:
     from graphmech.render.layout import layout_sheet
     from graphmech.render.sheet import panel_labels, panel_shapes
 
-    sheet = _sheet(fa)
+    sheet = _sheet(fa, ("graphmech",))  # a rendered sheet has a one-line footer: it takes room too
     shapes = [panel_shapes(p) for p in sheet.panels]
     placed = [panel_labels(p, sh) for p, sh in zip(sheet.panels, shapes)]
     return not layout_sheet(sheet, label_boxes=[[pl.box for pl in labels] for labels in placed]).warnings

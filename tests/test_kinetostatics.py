@@ -702,3 +702,15 @@ def test_a_scene_couple_is_drawn_on_the_loads_and_on_its_free_body(tmp_path):
         'show = ["forces", "force_polygons", "lever"]', 'show = ["force_polygons"]')
     code, _, _ = run_cli("render", str(_write(tmp_path, no_lever, "t.toml")), "-o", str(tmp_path / "t.svg"))
     assert code == 0 and (tmp_path / "t.svg").read_text(encoding="utf-8").count(">Mᵣ<") == 1
+
+
+def test_the_fit_counts_the_footer_of_the_rendered_sheet(tmp_path):
+    # the chosen μv fitted Zhukovsky's lever to a page without the footer line: rendered, it
+    # needed 383.2 mm where the A2 page leaves 381.2 mm
+    text = (SCENES / "force.sixbar_kinetostatic.toml").read_text(encoding="utf-8")
+    text = text.replace('show = ["forces", "force_polygons", "lever"]', 'show = ["lever"]')
+    text = re.sub(r"\[scales\]\n(.*\n){3}", "", text).replace("mu_F_N_per_mm = 25\n", "")
+    text = text.replace("angle = 120\n", "angle = 41.6009\n").replace("omega = 12\n", "omega = -50\n")
+    assert "[scales]" not in text and "omega = -50" in text
+    code, _, err = run_cli("render", str(_write(tmp_path, text)), "-o", str(tmp_path / "s.svg"))
+    assert code == 0 and "run off the page" not in err
