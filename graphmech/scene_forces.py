@@ -228,6 +228,9 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
         point = _on_link(r, _name(r, "point", "the point the force acts at, on that link"), link, links)
         magnitude = _non_negative(r, "force", "force")
         angle = r.scalar("angle", "angle")
+        if angle is not None and abs(angle) > 1e4:  # radians: beyond, cos and sin are round-off
+            r.problem(r.at(r.present("angle") or "angle"), "an absurd angle (write it within ±360°)")
+            angle = None
         value = r.raw("resistance")
         resistance = False
         if value is not _MISSING:

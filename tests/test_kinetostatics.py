@@ -543,6 +543,8 @@ def test_slider_crank_with_friction_equals_the_matrix_method(phi, m3, f, fs, fv,
     ("[forces]\n", "[forces]\n[[forces.journal]]\npoint = \"B\"\nf_v = 0.1\nradius = 5\n"
                    "[[forces.journal]]\npoint = \"B\"\nf_v = 0.2\nradius = 5\n",
      "forces.journal[1].point: the journal at B is already given (forces.journal[0])"),
+    # a force's direction of 1e300° was taken (cos and sin of it are round-off)
+    ("angle = 180", "angle = 1e300", "forces.force[0].angle: an absurd angle (write it within ±360°)"),
     # an absurd stated μF drew polygons 1e-297 mm long without a word
     ("[forces]\n", "[forces]\nmu_F_N_per_mm = 1e300\n",
      "forces.mu_F_N_per_mm: μF = 1e+300 N/mm draws the largest force 1.14e-298 mm long: choose μF so that it "
