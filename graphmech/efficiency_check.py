@@ -293,6 +293,13 @@ def judge_efficiency(an: EfficiencyAnalysis, precision_mm: float | None = None) 
         d = at or (an.problem.directions[0] if an.problem.directions else "forward")
         g, _e, drawn, scale, _ill, _c = _values(an, base, d)
         unit = an.problem.quantities()[base][0]
+        st = an.strokes.get(d) if base == "eta" and an.problem.type != "chain" else None
+        if st is not None and st.F and st.F0:
+            # η = F0/F (F/F0) from two lengths read off the polygons, each within the precision
+            # × μF: its tolerance follows from theirs (0.1 % would fail a correctly drawn F)
+            tol = abs(g) * prec * an.scales["F"] * (1.0 / abs(st.F) + 1.0 / abs(st.F0))
+            out.append(Verdict(name, value, g, tol, abs(value - g) <= tol + 1e-12 * abs(g), unit))
+            continue
         out.append(judge_value(name, value, g, drawn, scale, prec, unit))
     return out
 

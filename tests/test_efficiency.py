@@ -392,3 +392,19 @@ def test_a_measured_value_that_depends_on_the_direction_must_say_which():
     code, out, err = run_cli("check", str(SCENES / "force.wedge_F1430.toml"), "--measured", "eta=0.7")
     assert code == 2 and err == ("force.wedge_F1430.toml: --measured eta: eta depends on the direction: write "
                                  "eta@forward or eta@reverse\n")
+
+
+def test_eta_read_off_the_polygons_is_judged_at_their_precision():
+    # F1430 drawn as 1440 N is within 0.5 mm × 25 N/mm; the η a student computes from it,
+    # 1000/1440 = 0.6944, was judged wrong at 0.1 % (η = 0.69896)
+    code, out, err = run_cli("check", str(SCENES / "force.wedge_F1430.toml"), "--json",
+                             "--measured", "F@forward=1440", "--measured", "eta@forward=0.6944")
+    doc = json.loads(out)
+    verdicts = {v["name"]: v for v in doc["measured"]}
+    assert verdicts["F@forward"]["ok"] and verdicts["eta@forward"]["ok"]
+    eta = verdicts["eta@forward"]
+    assert eta["expected"] == pytest.approx(0.69896, abs=1e-5)
+    assert eta["tolerance"] == pytest.approx(eta["expected"] * 12.5 * (1 / 1430.7004224765808 + 1 / 1000.0), rel=1e-9)
+    code, out, err = run_cli("check", str(SCENES / "force.wedge_F1430.toml"), "--json",
+                             "--measured", "eta@forward=0.67")  # 4 % off: wrong
+    assert code == 1 and not json.loads(out)["measured"][-1]["ok"]
