@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import dataclasses
+import math
 import re
 import subprocess
 import sys
@@ -716,3 +717,27 @@ def test_the_fit_counts_the_footer_of_the_rendered_sheet(tmp_path):
     assert "[scales]" not in text and "omega = -50" in text
     code, _, err = run_cli("render", str(_write(tmp_path, text)), "-o", str(tmp_path / "s.svg"))
     assert code == 0 and "run off the page" not in err
+
+
+def test_a_guide_reaction_whose_line_crosses_far_off_is_drawn_at_the_slider_with_its_moment():
+    # RPP, slot ⟂ guide, friction: the guide's reaction on slot 3 is nearly along the guide and its
+    # line of action crossed the guide 0.55 m from C — its arrow floated 270 mm off the free body
+    from graphmech.methods.force_figures import free_body_items
+    from graphmech.render.primitives import Arrow, Label
+
+    text = RPP_LOADED.replace("slot_angle_deg = 60", "slot_angle_deg = 90").replace(
+        "angle_deg = { start = 0, stop = 360, step = 60 }", "angle_deg = 45")
+    scene = _scene(text.replace('show = ["mechanism"]', 'show = ["force_polygons"]'))
+    fa = analyse_forces(scene)
+    g = fa.solution.guides[0]
+    c = complex(fa.kin.point["C"][0])
+    e = float(g.moment[0]) / abs(complex(g.force[0]))
+    assert abs(e) > 0.2  # metres: the line of action is far off
+    group = next(gr for gr in fa.solution.groups if "3" in gr.links)
+    items = free_body_items(fa.build, fa.kin, group, {}, {j.point for j in fa.solution.joints}, 0,
+                            fa.solution.guides)
+    at_c = fa.build.to_drawing((c.real, c.imag))
+    assert any(isinstance(x, Arrow) and math.dist(x.p0, at_c) < 1e-9 for x in items)
+    assert any(isinstance(x, Label) and x.text == "M₀₃" for x in items)
+    xs = [p for x in items if isinstance(x, Arrow) for p in (x.p0[0], x.p1[0])]
+    assert max(xs) - min(xs) < 100.0  # mm: the free body stays compact

@@ -21,7 +21,8 @@ import numpy as np
 
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Linkage
 from graphmech.methods.figures import mechanism_items
-from graphmech.methods.kinetostatics import GroupPolygon, KinetostaticSolution, Lever, PolygonKinematics
+from graphmech.methods.kinetostatics import (GroupPolygon, GuideReaction, KinetostaticSolution, Lever,
+                                            PolygonKinematics)
 from graphmech.render.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Segment, Sheet,
                                          Slider)
 
@@ -158,8 +159,12 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
 
 
 def free_body_items(build: Any, kin: PolygonKinematics, group: GroupPolygon, rho: dict[str, float],
-                    joints: set[str], i: int) -> list[Primitive]:
-    """One group cut free: its links, hinges, slider, and every force on it (arrows not to scale)."""
+                    joints: set[str], i: int, guides: Sequence[GuideReaction] = ()) -> list[Primitive]:
+    """One group cut free: its links, hinges, slider, and every force on it (arrows not to scale).
+
+    A guide's reaction is drawn on its line of action, unless that crosses the guide farther off
+    than the group is wide (a small normal force with a moment): then at the slider's point with
+    its moment M_ij about it, as the book draws a slider that bears on the ends of its guide."""
     linkage: Linkage = build.linkage
     pts = linkage.links()
     items: list[Primitive] = []
@@ -198,12 +203,20 @@ def free_body_items(build: Any, kin: PolygonKinematics, group: GroupPolygon, rho
     # With friction a reaction is tangent to its friction circle: its line of action is moved off
     # the joint's centre so that its moment about it is the friction couple M_f.
     friction = {c.name: float(c.moment[i]) for c in group.couples if c.name.startswith("M_f")}
-    forces = []
+    seen = [to_mm(complex(kin.point[name][i])) for name in drawn]
+    reach = 2.0 * max(max(p[0] for p in seen) - min(p[0] for p in seen),
+                      max(p[1] for p in seen) - min(p[1] for p in seen), ARROW_LONG) * build.mu_l
+    by_name = {g.name: g for g in guides}
+    forces, guide_moments = [], []
     for f in group.free_body:
         vec, at = complex(f.vector[i]), complex(f.at[i])
         m = friction.get("M_f" + f.name[2:], 0.0) if f.name.startswith("R_") else 0.0
         if m != 0.0 and abs(vec) > 0:
             at = at - 1j * m * vec / abs(vec) ** 2
+        g = by_name.get(f.name)
+        if g is not None and abs(at - complex(kin.point[g.point][i])) > reach:
+            at = complex(kin.point[g.point][i])
+            guide_moments.append((f"M_{g.frame}{g.slider}", float(g.moment[i]), at))
         forces.append((f.name, vec, at))
     largest = max([abs(v) for _, v, _ in forces], default=0.0)
     items += _arrows(forces, to_mm, largest)
@@ -211,6 +224,8 @@ def free_body_items(build: Any, kin: PolygonKinematics, group: GroupPolygon, rho
         m = float(c.moment[i])
         if m != 0 and c.name not in friction:
             items += _moment_arc(_middle(kin, pts[c.link or group.links[0]], i, to_mm), m, c.name, 4.0)
+    for name, m, at in guide_moments:
+        items += _moment_arc(to_mm(at), m, name, 6.0)
     return items
 
 
@@ -291,7 +306,7 @@ def force_sheet(title: str, build: Any, kin: PolygonKinematics, sol: Kinetostati
             notes = ("arrows not to scale",) + (
                 (f"friction circles at μl = {mu_l:.6g} m/mm; reactions tangent to them",) if rho else ())
             panels.append(Panel(f"free-{key}", f"Free body, {g.name}",
-                                tuple(free_body_items(build, kin, g, rho, joints, i)), notes))
+                                tuple(free_body_items(build, kin, g, rho, joints, i, sol.guides)), notes))
             panels.append(Panel(f"polygon-{key}", f"Force polygon, {g.name}", tuple(polygon_items(g, mu_F, i)),
                                 (f"μF = {mu_F:.6g} N/mm",)))
     if "lever" in show and lever is not None:
