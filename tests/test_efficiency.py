@@ -280,6 +280,9 @@ def test_measured_values_are_judged(tmp_path):
     ('[efficiency]\ntype = "incline"\nangle_deg = 30\nf = 0.1\nload_N = 1\ngamma_deg = 3\n', "efficiency.gamma_deg",
      "belongs to 'wedge'"),
     ('[efficiency]\ntype = "incline"\nangle_deg = 30\nf = 0.1\nload_N = 1\n[driver]\n', "driver", "one problem"),
+    # a minor diameter larger than the pitch diameter was taken (σ = 4Q/(π·d1²) from it)
+    ('[efficiency]\ntype = "screw"\nf = 0.1\nd2_mm = 10\npitch_mm = 1\nd1_mm = 12\nload_N = 1\n', "efficiency.d1_mm",
+     "the minor diameter d1 = 12 mm must be smaller than the pitch diameter d2 = 10 mm"),
 ])
 def test_bad_scenes_are_one_line(body, where, words, tmp_path):
     p = scene(body, tmp_path)
