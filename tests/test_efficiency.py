@@ -411,3 +411,17 @@ def test_eta_read_off_the_polygons_is_judged_at_their_precision():
     code, out, err = run_cli("check", str(SCENES / "force.wedge_F1430.toml"), "--json",
                              "--measured", "eta@forward=0.67")  # 4 % off: wrong
     assert code == 1 and not json.loads(out)["measured"][-1]["ok"]
+
+
+def test_the_library_refuses_an_unknown_direction_or_push():
+    # incline(..., "up", ...) was drawn as a reverse stroke, push="vertical" as a parallel one
+    with pytest.raises(ValueError, match="'forward' or 'reverse', not 'up'"):
+        gm.incline(100.0, 0.3, 0.1, "up", 1.0)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="'horizontal' or 'parallel', not 'vertical'"):
+        gm.incline(100.0, 0.3, 0.1, "forward", 1.0, "vertical")
+    with pytest.raises(ValueError, match="not 'down'"):
+        gm.wedge(1000.0, 1.0, 1.0, 0.1, "down", 20.0)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="not 'up'"):
+        ex.incline_force(100.0, 0.3, 0.1, "up")  # type: ignore[arg-type]
+    assert gm.incline(100.0, 0.3, 0.1, "reverse", 1.0).F == pytest.approx(ex.incline_force(100.0, 0.3, 0.1, "reverse"),
+                                                                          rel=1e-12)
