@@ -209,3 +209,16 @@ angle_deg = 90
     code, out, err = run_cli("check", str(p))
     assert (code, out) == (2, "")
     assert err == "r.toml: scales.W_kgcm_per_mm: 4.94066e-324 is out of range once converted to SI units\n"
+
+
+def test_the_library_refuses_a_zero_scale_or_correction_radius():
+    # static_balance(…, mu_W=0) raised ZeroDivisionError from inside the polygon
+    from graphmech.mechanisms.rotor import RotorMass
+    from graphmech.methods.balancing import static_balance
+
+    m = [RotorMass("1", 1.0, 0.1, 0.0)]
+    with pytest.raises(ValueError, match="μW and r_b must be positive"):
+        static_balance(m, 0.1, 0.0)
+    with pytest.raises(ValueError, match="r_b = 0.0"):
+        static_balance(m, 0.0, 1.0)
+    assert static_balance(m, 0.1, 0.01).m_b == pytest.approx(1.0, rel=1e-15)
