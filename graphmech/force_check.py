@@ -34,7 +34,6 @@ from graphmech.methods.kinetostatics import (
     zhukovsky_lever,
 )
 from graphmech.scales import round_scale
-from graphmech.scene import Page
 from graphmech.tolerances import COND_WARN
 
 #: The force quantities a scene may ask for (links are one character: R_12, F_i2, h_2).
@@ -70,6 +69,7 @@ class ForceAnalysis:
     warnings: list[str] = field(default_factory=list)
     verdicts: list[Verdict] = field(default_factory=list)
     ill: dict[int, bool] = field(default_factory=dict)  # position → some polygon is ill-conditioned
+    spill_mm: float = 0.0  # how far the force sheet runs off its page at the chosen scales
 
     @property
     def build(self) -> Any:
@@ -86,42 +86,69 @@ class ForceAnalysis:
                 "tolerance_N": self.scene.forces.model.tolerance}
 
 
-#: How many times smaller than the page the room for the chosen scales is taken, tried in turn
-#: until the force sheet fits its page (the loads, every free body and the lever share it).
-FIT_SHRINK = (1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0)
+#: Factors by which the chosen scales are made coarser, in turn, until the force sheet fits its
+#: page (the loads, every free body, the polygons and the lever share it).
+FIT_COARSER = (1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0)
+#: Where no scale fits the sheet (captions and arrows not to scale take room too), a coarser one
+#: is taken only if it spills this much less, mm: drawings are not shrunk for nothing.
+FIT_GAIN_MM = 2.0
 
 
 def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> ForceAnalysis:
     """Build and check a force scene (``extra_measured``: values from the command line).
 
-    The scales a scene does not state are chosen so that the sheet it draws fits its page:
-    the check table then reads the lengths at the μ the figure is drawn at.
+    The scales a scene does not state are chosen so that the sheet it draws fits its page: μl
+    and μv first (the finest round ones that fit), then μF too; the check table then reads the
+    lengths at the μ the figure is drawn at.
     """
     # a value that overflows is reported once, in one line, as "not finite" (no numpy warnings)
     with np.errstate(all="ignore"):
+        fa = _analyse_forces(scene, extra_measured, {})
         drawn = any(p in FORCE_PANELS for p in scene.show) and len(scene.positions.values) == 1
-        chosen = any(k not in scene.scales for k in ("l", "v")) or scene.forces.mu_F is None
-        if not (drawn and chosen):
-            return _analyse_forces(scene, extra_measured, 1.0)
-        for shrink in FIT_SHRINK:
-            fa = _analyse_forces(scene, extra_measured, shrink)
-            if not _ok(fa, 0) or _fits(fa):
-                break
-        return fa
+        if not (drawn and _ok(fa, 0)):
+            return fa
+        best, spill, forced = fa, _spill(fa), {}
+        tried: set[tuple[tuple[str, float], ...]] = set()
+        for keys in (("l", "v"), ("F",)):  # the drawings of the mechanism first, then the polygons
+            keys = tuple(k for k in keys if k not in fa.stated)
+            for factor in FIT_COARSER:
+                if spill == 0.0 or not keys:
+                    break
+                trial = {**forced, **{k: round_scale(fa.scales[k] * factor) for k in keys}}
+                if tuple(sorted(trial.items())) in tried:
+                    continue
+                tried.add(tuple(sorted(trial.items())))
+                candidate = _analyse_forces(scene, extra_measured, trial)
+                s = _spill(candidate)
+                if s == 0.0 or s < spill - FIT_GAIN_MM:
+                    best, spill, forced = candidate, s, trial
+        best.spill_mm = spill
+        return best
 
 
-def _fits(fa: ForceAnalysis) -> bool:
-    """Whether the force sheet lies on its page at these scales (labels placed as drawn)."""
+def _spill(fa: ForceAnalysis) -> float:
+    """How far the force sheet runs off its page, mm (0: it fits), its labels placed as drawn."""
     from graphmech.render.layout import layout_sheet
     from graphmech.render.sheet import panel_labels, panel_shapes
+    from graphmech.render.style import DEFAULT
 
     sheet = _sheet(fa, ("graphmech",))  # a rendered sheet has a one-line footer: it takes room too
     shapes = [panel_shapes(p) for p in sheet.panels]
     placed = [panel_labels(p, sh) for p, sh in zip(sheet.panels, shapes)]
-    return not layout_sheet(sheet, label_boxes=[[pl.box for pl in labels] for labels in placed]).warnings
+    layout = layout_sheet(sheet, label_boxes=[[pl.box for pl in labels] for labels in placed])
+    if not layout.warnings:
+        return 0.0
+    m = DEFAULT.page_margin
+    # the room above the footer line, as render.layout reckons it
+    bottom = sheet.page[1] - m - (DEFAULT.note_size * DEFAULT.line_gap * len(sheet.footer) + DEFAULT.note_size)
+    right = sheet.page[0] - m
+    over = [max(p.frame[3] - bottom, p.frame[2] - right, m - p.frame[0]) for p in layout.panels]
+    return max([0.0, *over]) + 1e-6  # (a sheet that warns never ranks with one that fits)
 
 
-def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...], shrink: float) -> ForceAnalysis:
+def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...],
+                    forced: dict[str, float]) -> ForceAnalysis:
+    """The analysis at the scene's scales, those in ``forced`` imposed (still reported as chosen)."""
     model = scene.forces.model
     measured = [(n, v) for n, v in scene.measured if not is_force_name(n)]
     extra_kin = tuple((n, v) for n, v in extra_measured if not is_force_name(n))
@@ -129,11 +156,11 @@ def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...], s
         (f"--measured {n}", n, v) for n, v in extra_measured if is_force_name(n)]
     kin_find = tuple(n for n in scene.find if not is_force_name(n))
     kin_show = tuple(p for p in scene.show if p in ("mechanism", "velocity", "acceleration")) or ("mechanism",)
-    # the chosen μl and μv fit a page ``shrink`` times smaller: the room one panel has on the force sheet
-    w, h = page_size(scene)
+    kin_forced = {k: v for k, v in forced.items() if k in ("l", "v")}
     plain = replace(scene, find=kin_find, show=kin_show, measured=tuple(measured), forces=None,
-                    page=Page((w / shrink, h / shrink)))
+                    scales={**scene.scales, **kin_forced})
     an = analyse(plain, extra_kin)
+    an.stated = an.stated - set(kin_forced)  # imposed to fit the sheet, not stated by the scene
     b = an.build
     plan = b.g.prune(construction_targets(b))
     batch = plan.evaluate_batch({b.param: an.positions})
@@ -161,7 +188,7 @@ def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...], s
             asked = [f"find[{k}]" for k, n in enumerate(scene.find) if split_name(n)[0] in ("M_b_lever", "F_b_lever")]
             key = "show" if "lever" in scene.show else (asked[0] if asked else "--measured")
             raise SceneError([(key, f"{e.step}: {e.reason}")], scene.source) from None
-    _choose_force_scale(fa, POLYGON_ROOM_MM / shrink)
+    _choose_force_scale(fa, forced.get("F"))
     _conditioning(fa)
     _rows(fa)
     fa.verdicts = list(judge(an, None)) if (measured or extra_kin) else []
@@ -173,14 +200,14 @@ def _ok(fa: ForceAnalysis, i: int) -> bool:
     return bool(fa.kin.valid[i] and fa.exact.valid[i] and fa.kinematics.solutions[i] is not None)
 
 
-def _choose_force_scale(fa: ForceAnalysis, room: float = POLYGON_ROOM_MM) -> None:
+def _choose_force_scale(fa: ForceAnalysis, forced: float | None = None) -> None:
     largest = max((float(np.max(np.abs(r[fa.kin.valid]), initial=0.0)) for r in fa.solution.reactions.values()),
                   default=0.0)
     for il in fa.solution.inertia.values():
         largest = max(largest, float(np.max(np.abs(il.force[fa.kin.valid]), initial=0.0)))
     mu = fa.scene.forces.mu_F
     if mu is None:
-        fa.scales["F"] = round_scale(largest / room) if largest > 0 else 1.0
+        fa.scales["F"] = forced or (round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0)
         return
     fa.scales["F"], fa.stated = mu, fa.stated | {"F"}
     drawn = largest / mu
@@ -428,7 +455,10 @@ def render_forces(scene: Any, footer: tuple[str, ...] = ()) -> tuple[Any, list[s
         an = fa.kinematics
         raise SceneError([("driver", f"{position_text(an.build, an.labels[0])} cannot be solved: "
                                      f"{an.failures[0] or 'the exact solution is undefined here'}")], scene.source)
-    return _sheet(fa, footer), list(fa.warnings)
+    hint = [] if fa.spill_mm == 0.0 else [
+        f"the force sheet does not fit a {page_size(scene)[0]:g} × {page_size(scene)[1]:g} mm page at any round "
+        "scale (its captions and arrows take room too): give [page] size = \"A3\" or show fewer panels"]
+    return _sheet(fa, footer), list(fa.warnings) + hint
 
 
 def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Any:
