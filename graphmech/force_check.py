@@ -368,6 +368,7 @@ def _rows(fa: ForceAnalysis) -> None:
     problems = []
     multi = len(fa.labels) > 1
     force_size = _characteristic_force(fa)
+    locked: list[int] = []
     for k, raw in enumerate(fa.scene.find):
         base, at = split_name(raw)
         if not is_force_name(base):
@@ -402,8 +403,15 @@ def _rows(fa: ForceAnalysis) -> None:
             fa.rows.append(Row(f"{base}@{fa.labels[i]}" if multi else base, unit,
                                None if drawn is None else float(drawn), float(scale), g, e, err,
                                bool(fa.ill.get(i, False))))
+            if base == "eta" and e <= 0.0:
+                locked.append(i)
     if problems:
         raise SceneError(problems, fa.scene.source)
+    if locked:  # η ≤ 0: friction takes all the power there, as a self-locking stroke of [efficiency]
+        where = position_text(fa.build, fa.labels[locked[0]])
+        more = f" and {len(locked) - 1} more position(s)" if len(locked) > 1 else ""
+        fa.warnings.append(f"{where}{more}: η ≤ 0 — self-locking: friction takes all the power there (the "
+                           "driver cannot move the loads, or the loads cannot drive the driver)")
 
 
 def _judge_forces(fa: ForceAnalysis, entries: list[tuple[str, str, float]]) -> list[Verdict]:

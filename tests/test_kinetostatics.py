@@ -821,3 +821,18 @@ def test_a_sheet_that_fits_no_round_scale_keeps_readable_drawings_and_says_so(tm
     a3 = DOUBLE_SLIDER.replace("[units]", '[page]\nsize = "A3"\n[units]')
     code, _, err = run_cli("render", str(_write(tmp_path, a3, "a3.toml")), "-o", str(tmp_path / "a3.svg"))
     assert code == 0 and "run off the page" not in err and "A3" not in err
+
+
+def test_eta_at_or_below_zero_is_said_to_be_self_locking():
+    # the rocking block with f = 5 between block and bar: η ≤ 0 at 20 of 36 positions, in silence
+    text = _doc_scene("Oscillating block: reactions with friction").replace("f = 0.2", "f = 5").replace(
+        "angle = 45", "angle = { start = 0, stop = 360, step = 10 }").replace(
+        'show = ["forces", "force_polygons"]', 'show = ["mechanism"]')
+    fa = analyse_forces(_scene(text))
+    etas = [r for r in fa.rows if r.name.startswith("eta@")]
+    locked = [r for r in etas if r.exact <= 0]
+    assert len(etas) == 36 and 0 < len(locked) < 36
+    warning = next(w for w in fa.warnings if "self-locking" in w)
+    assert f"and {len(locked) - 1} more position(s): η ≤ 0" in warning
+    assert not any("self-locking" in w for w in analyse_forces(_scene(
+        _doc_scene("Oscillating block: reactions with friction"))).warnings)
