@@ -425,3 +425,18 @@ def test_the_library_refuses_an_unknown_direction_or_push():
         ex.incline_force(100.0, 0.3, 0.1, "up")  # type: ignore[arg-type]
     assert gm.incline(100.0, 0.3, 0.1, "reverse", 1.0).F == pytest.approx(ex.incline_force(100.0, 0.3, 0.1, "reverse"),
                                                                           rel=1e-12)
+
+
+def test_a_long_chain_of_machines_wraps_on_its_page(tmp_path):
+    # the boxes stood in one row: 4 stages were 288.6 mm wide on an A4 page leaving 277 mm, 6 were 408.6
+    stages = "".join(f'[[efficiency.stage]]\nname = "gear pair {k}"\neta = 0.97\n' for k in range(6))
+    p = scene('find = ["eta", "P_in"]\n[efficiency]\ntype = "chain"\nload_N = 5500\nspeed_m_s = 1.2\n' + stages,
+              tmp_path)
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "c.svg"))
+    assert code == 0 and "runs off the page" not in err and "run off the page" not in err
+    an = analyse_efficiency(load_scene(p))
+    assert an.rows[0].exact == pytest.approx(0.97 ** 6, rel=1e-14)
+    panel = efficiency_figure(an, (297.0, 210.0)).panels[0]
+    xs = [q[0] for item in panel.items if hasattr(item, "points") for q in item.points]
+    assert max(xs) - min(xs) < 277.0 and len({round(q[1]) for item in panel.items if hasattr(item, "points")
+                                               for q in item.points}) > 4  # two rows of boxes
