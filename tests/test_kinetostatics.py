@@ -836,3 +836,26 @@ def test_eta_at_or_below_zero_is_said_to_be_self_locking():
     assert f"and {len(locked) - 1} more position(s): η ≤ 0" in warning
     assert not any("self-locking" in w for w in analyse_forces(_scene(
         _doc_scene("Oscillating block: reactions with friction"))).warnings)
+
+
+def test_friction_dissipates_exactly_the_extra_driving_power_over_the_cycle(tmp_path):
+    # an independent check of the friction senses (the polygons and the matrix method share the
+    # convention): (M_b − M_b0)·ω1 must equal the power lost, Σ|R|·ρ·|ω_rel| in the journals plus
+    # f·|N|·|v| on the guide, each from the matrix method's reactions and the exact kinematics
+    text = (SCENES / "force.sixbar_kinetostatic-friction.toml").read_text(encoding="utf-8")
+    text = re.sub(r"^show = .*$", 'show = ["mechanism"]', text, flags=re.M)
+    text = text.replace("angle = 120\n", "angle = { start = 0, stop = 360, step = 15 }\n", 1)
+    assert "step = 15" in text
+    fa = analyse_forces(load_scene(_write(tmp_path, text)))
+    ex, kin = fa.exact, fa.kinematics.exact
+    om = {"0": 0.0, **{k: np.asarray(v) for k, v in kin.omega.items()}}
+    lost = 0.0
+    for fr in fa.scene.forces.model.revolute_friction:
+        (a, b), = [(j.a, j.b) for j in fa.solution.joints if j.point == fr.point]
+        lost = lost + np.hypot(*ex.reactions[(a, b)].T) * fr.rho * np.abs(om[b] - om[a])
+    r05 = ex.reactions[("0", "5")]
+    lost = lost + 0.1 * np.abs(r05[:, 1]) * np.abs(kin.vel["F"][:, 0])  # guide y = 300 mm: N is R_y
+    gained = (np.asarray(ex.balancing_moment) - np.asarray(fa.exact_frictionless.balancing_moment)) * 12.0
+    ok = np.asarray(ex.valid)
+    assert ok.sum() == 24 and np.all(lost[ok] > 0)
+    np.testing.assert_allclose(gained[ok], lost[ok], rtol=1e-11)
