@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from graphmech.check import Row, Verdict, close_names, measured_entries
+from graphmech.check import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import SceneError
 from graphmech.exact import balancing as ex
 from graphmech.methods import balancing as gm
@@ -68,23 +68,23 @@ def analyse_balancing(scene: Any, extra_measured: tuple[tuple[str, float], ...] 
     names = requested(scene, extra_measured)
     an = BalancingAnalysis(scene, p, extra_measured=tuple(extra_measured))
     masses = list(p.masses)
+    # The polygons are linear in 1/μW: drawn once at 1 kg·m/mm they give every length, so a stated
+    # μW is judged (and an absurd one refused) before anything is divided by it.
+    trial = _balance(p, masses, 1.0)
+    longest = max([math.hypot(s.end[0] - s.start[0], s.end[1] - s.start[1]) for c in trial
+                   for s in c.sides + (c.closing,)] + [EPS])
     if "W" in scene.scales:
         an.scales["W"] = scene.scales["W"]
         an.stated.add("W")
-    else:  # draw at 1 kg·m/mm to see the sizes, then at a round μW
-        trial = _balance(p, masses, 1.0)
-        longest = max([math.hypot(s.end[0] - s.start[0], s.end[1] - s.start[1]) for c in trial
-                       for s in c.sides + (c.closing,)] + [EPS])
+        drawn = longest / an.scales["W"]
+        if not 2.0 <= drawn <= 2000.0:
+            raise SceneError([("scales", f"μW = {an.scales['W']:g} kg·m/mm draws the largest mass-radius product "
+                                         f"{drawn:.3g} mm long: choose μW so that it is 2 … 2000 mm (about "
+                                         f"{round_scale(longest / POLYGON_MM):g} kg·m/mm)")],
+                             scene.source)
+    else:  # a round μW that draws the longest side POLYGON_MM long
         an.scales["W"] = round_scale(longest / POLYGON_MM)
     an.corrections = _balance(p, masses, an.scales["W"])
-    if "W" in an.stated:
-        longest = max([math.hypot(s.end[0] - s.start[0], s.end[1] - s.start[1]) for c in an.corrections
-                       for s in c.sides + (c.closing,)] + [0.0])
-        if not 2.0 <= longest <= 2000.0:
-            raise SceneError([("scales", f"μW = {an.scales['W']:g} kg·m/mm draws the largest mass-radius product "
-                                         f"{longest:.3g} mm long: choose μW so that it is 2 … 2000 mm (about "
-                                         f"{round_scale(longest * an.scales['W'] / POLYGON_MM):g} kg·m/mm)")],
-                             scene.source)
     for c in an.corrections:
         if c.balanced:
             where = "the rotor is" if p.type == "static" else f"plane {c.plane} is"
@@ -172,11 +172,9 @@ def judge_balancing(an: BalancingAnalysis, precision_mm: float | None = None) ->
         if unit == "deg":
             c = an.corrections[0 if name.endswith(("_b", "_I")) else 1]
             tol = math.degrees(math.atan2(prec, max(c.drawn_mm, prec)))
-            ok = abs(_angle_diff_deg(value, g)) <= tol
+            out.append(Verdict(name, value, g, tol, abs(_angle_diff_deg(value, g)) <= tol, unit))
         else:
-            tol = prec * abs(scale) if drawn is not None else max(abs(g) * 1e-3, EPS)
-            ok = abs(value - g) <= tol + 1e-12 * abs(g)
-        out.append(Verdict(name, value, g, tol, ok, unit))
+            out.append(judge_value(name, value, g, drawn, scale, prec, unit))
     return out
 
 

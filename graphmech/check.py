@@ -71,6 +71,14 @@ class Verdict:
                 "tolerance": self.tolerance, "ok": self.ok, "unit": self.unit}
 
 
+def judge_value(name: str, value: float, expected: float, drawn: float | None, scale: float,
+                precision_mm: float, unit: str) -> Verdict:
+    """A measured value against the expected one: a length read off the drawing within the
+    drawing precision × its μ, any other value (a computed one) within 0.1 %."""
+    tol = precision_mm * abs(scale) if drawn is not None else max(abs(expected) * 1e-3, T.EPS)
+    return Verdict(name, value, expected, tol, abs(value - expected) <= tol + 1e-12 * abs(expected), unit)
+
+
 @dataclass
 class Analysis:
     """Everything one scene produced: the construction, its solutions, the exact solution."""

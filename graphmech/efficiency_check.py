@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from graphmech.check import Row, Verdict, close_names, measured_entries
+from graphmech.check import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact import efficiency as ex
 from graphmech.methods import efficiency as gm
@@ -293,8 +293,14 @@ def judge_efficiency(an: EfficiencyAnalysis, precision_mm: float | None = None) 
         d = at or (an.problem.directions[0] if an.problem.directions else "forward")
         g, _e, drawn, scale, _ill, _c = _values(an, base, d)
         unit = an.problem.quantities()[base][0]
-        tol = prec * abs(scale) if drawn is not None else max(abs(g) * 1e-3, EPS)
-        out.append(Verdict(name, value, g, tol, abs(value - g) <= tol + 1e-12 * abs(g), unit))
+        st = an.strokes.get(d) if base == "eta" and an.problem.type != "chain" else None
+        if st is not None and st.F and st.F0:
+            # η = F0/F (F/F0) from two lengths read off the polygons, each within the precision
+            # × μF: its tolerance follows from theirs (0.1 % would fail a correctly drawn F)
+            tol = abs(g) * prec * an.scales["F"] * (1.0 / abs(st.F) + 1.0 / abs(st.F0))
+            out.append(Verdict(name, value, g, tol, abs(value - g) <= tol + 1e-12 * abs(g), unit))
+            continue
+        out.append(judge_value(name, value, g, drawn, scale, prec, unit))
     return out
 
 

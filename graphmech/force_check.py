@@ -20,8 +20,8 @@ from typing import Any
 
 import numpy as np
 
-from graphmech.check import Analysis, Row, Verdict, analyse, judge, position_text, split_name
-from graphmech.errors import SceneError
+from graphmech.check import Analysis, Row, Verdict, analyse, judge, page_size, position_text, split_name
+from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.kinetostatics import ExactForces, solve_forces
 from graphmech.methods.kinetostatics import (
     SHALLOW_SIN,
@@ -42,6 +42,8 @@ FORCE_NAME = re.compile(
     r"|R_(?P<ri>\w)(?P<rj>\w)(?P<rc>_x|_y)?|(?P<gm>M|e)_(?P<gi>\w)(?P<gj>\w))")
 #: Room for the largest force polygon, mm (μF is chosen so that it fits).
 POLYGON_ROOM_MM = 70.0
+#: The lengths a stated μF may draw the largest force at (mm): outside, the scale is absurd.
+POLYGON_RANGE_MM = (1.0, 1e5)
 
 
 def is_force_name(name: str) -> bool:
@@ -67,6 +69,7 @@ class ForceAnalysis:
     warnings: list[str] = field(default_factory=list)
     verdicts: list[Verdict] = field(default_factory=list)
     ill: dict[int, bool] = field(default_factory=dict)  # position → some polygon is ill-conditioned
+    spill_mm: float = 0.0  # how far the force sheet runs off its page at the chosen scales
 
     @property
     def build(self) -> Any:
@@ -83,8 +86,69 @@ class ForceAnalysis:
                 "tolerance_N": self.scene.forces.model.tolerance}
 
 
+#: Factors by which the chosen scales are made coarser, in turn, until the force sheet fits its
+#: page (the loads, every free body, the polygons and the lever share it).
+FIT_COARSER = (1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0)
+#: Where no scale fits the sheet (captions and arrows not to scale take room too), a coarser one
+#: is taken only if it spills this much less, mm: drawings are not shrunk for nothing.
+FIT_GAIN_MM = 2.0
+
+
 def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> ForceAnalysis:
-    """Build and check a force scene (``extra_measured``: values from the command line)."""
+    """Build and check a force scene (``extra_measured``: values from the command line).
+
+    The scales a scene does not state are chosen so that the sheet it draws fits its page: μl
+    and μv first (the finest round ones that fit), then μF too; the check table then reads the
+    lengths at the μ the figure is drawn at.
+    """
+    # a value that overflows is reported once, in one line, as "not finite" (no numpy warnings)
+    with np.errstate(all="ignore"):
+        fa = _analyse_forces(scene, extra_measured, {})
+        drawn = any(p in FORCE_PANELS for p in scene.show) and len(scene.positions.values) == 1
+        if not (drawn and _ok(fa, 0)):
+            return fa
+        best, spill, forced = fa, _spill(fa), {}
+        tried: set[tuple[tuple[str, float], ...]] = set()
+        for keys in (("l", "v"), ("F",)):  # the drawings of the mechanism first, then the polygons
+            keys = tuple(k for k in keys if k not in fa.stated)
+            for factor in FIT_COARSER:
+                if spill == 0.0 or not keys:
+                    break
+                trial = {**forced, **{k: round_scale(fa.scales[k] * factor) for k in keys}}
+                if tuple(sorted(trial.items())) in tried:
+                    continue
+                tried.add(tuple(sorted(trial.items())))
+                candidate = _analyse_forces(scene, extra_measured, trial)
+                s = _spill(candidate)
+                if s == 0.0 or s < spill - FIT_GAIN_MM:
+                    best, spill, forced = candidate, s, trial
+        best.spill_mm = spill
+        return best
+
+
+def _spill(fa: ForceAnalysis) -> float:
+    """How far the force sheet runs off its page, mm (0: it fits), its labels placed as drawn."""
+    from graphmech.render.layout import layout_sheet
+    from graphmech.render.sheet import panel_labels, panel_shapes
+    from graphmech.render.style import DEFAULT
+
+    sheet = _sheet(fa, ("graphmech",))  # a rendered sheet has a one-line footer: it takes room too
+    shapes = [panel_shapes(p) for p in sheet.panels]
+    placed = [panel_labels(p, sh) for p, sh in zip(sheet.panels, shapes)]
+    layout = layout_sheet(sheet, label_boxes=[[pl.box for pl in labels] for labels in placed])
+    if not layout.warnings:
+        return 0.0
+    m = DEFAULT.page_margin
+    # the room above the footer line, as render.layout reckons it
+    bottom = sheet.page[1] - m - (DEFAULT.note_size * DEFAULT.line_gap * len(sheet.footer) + DEFAULT.note_size)
+    right = sheet.page[0] - m
+    over = [max(p.frame[3] - bottom, p.frame[2] - right, m - p.frame[0]) for p in layout.panels]
+    return max([0.0, *over]) + 1e-6  # (a sheet that warns never ranks with one that fits)
+
+
+def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...],
+                    forced: dict[str, float]) -> ForceAnalysis:
+    """The analysis at the scene's scales, those in ``forced`` imposed (still reported as chosen)."""
     model = scene.forces.model
     measured = [(n, v) for n, v in scene.measured if not is_force_name(n)]
     extra_kin = tuple((n, v) for n, v in extra_measured if not is_force_name(n))
@@ -92,14 +156,20 @@ def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (
         (f"--measured {n}", n, v) for n, v in extra_measured if is_force_name(n)]
     kin_find = tuple(n for n in scene.find if not is_force_name(n))
     kin_show = tuple(p for p in scene.show if p in ("mechanism", "velocity", "acceleration")) or ("mechanism",)
-    plain = replace(scene, find=kin_find, show=kin_show, measured=tuple(measured), forces=None)
+    kin_forced = {k: v for k, v in forced.items() if k in ("l", "v")}
+    plain = replace(scene, find=kin_find, show=kin_show, measured=tuple(measured), forces=None,
+                    scales={**scene.scales, **kin_forced})
     an = analyse(plain, extra_kin)
+    an.stated = an.stated - set(kin_forced)  # imposed to fit the sheet, not stated by the scene
     b = an.build
     plan = b.g.prune(construction_targets(b))
     batch = plan.evaluate_batch({b.param: an.positions})
     kin = kinematics_from_construction(b, batch.values, batch.valid)
     draw = "force_polygons" in scene.show
-    sol = kinetostatics(b.linkage, model, kin, polygons=draw)
+    try:
+        sol = kinetostatics(b.linkage, model, kin, polygons=draw)
+    except DegenerateConstruction as e:  # friction that does not settle, closing lines parallel
+        raise SceneError([("forces", str(e))], scene.source) from None
     exact = solve_forces(b.linkage, model, an.positions, an.exact)
     names = [split_name(n)[0] for n in scene.find] + [split_name(n)[0] for _, n, _ in force_measured]
     fa = ForceAnalysis(scene, an, kin, sol, exact, dict(an.scales), set(an.stated), an.labels)
@@ -112,8 +182,13 @@ def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (
         fa.frictionless = kinetostatics(b.linkage, bare, kin, polygons=False)
         fa.exact_frictionless = solve_forces(b.linkage, bare, an.positions, an.exact)
     if "M_b_lever" in names or "F_b_lever" in names or "lever" in scene.show:
-        fa.lever = zhukovsky_lever(b.linkage, model, kin)
-    _choose_force_scale(fa)
+        try:
+            fa.lever = zhukovsky_lever(b.linkage, model, kin)
+        except DegenerateConstruction as e:  # a driver at rest: say which key asked for the lever
+            asked = [f"find[{k}]" for k, n in enumerate(scene.find) if split_name(n)[0] in ("M_b_lever", "F_b_lever")]
+            key = "show" if "lever" in scene.show else (asked[0] if asked else "--measured")
+            raise SceneError([(key, f"{e.step}: {e.reason}")], scene.source) from None
+    _choose_force_scale(fa, forced.get("F"))
     _conditioning(fa)
     _rows(fa)
     fa.verdicts = list(judge(an, None)) if (measured or extra_kin) else []
@@ -125,16 +200,22 @@ def _ok(fa: ForceAnalysis, i: int) -> bool:
     return bool(fa.kin.valid[i] and fa.exact.valid[i] and fa.kinematics.solutions[i] is not None)
 
 
-def _choose_force_scale(fa: ForceAnalysis) -> None:
-    mu = fa.scene.forces.mu_F
-    if mu is not None:
-        fa.scales["F"], fa.stated = mu, fa.stated | {"F"}
-        return
+def _choose_force_scale(fa: ForceAnalysis, forced: float | None = None) -> None:
     largest = max((float(np.max(np.abs(r[fa.kin.valid]), initial=0.0)) for r in fa.solution.reactions.values()),
                   default=0.0)
     for il in fa.solution.inertia.values():
         largest = max(largest, float(np.max(np.abs(il.force[fa.kin.valid]), initial=0.0)))
-    fa.scales["F"] = round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0
+    mu = fa.scene.forces.mu_F
+    if mu is None:
+        fa.scales["F"] = forced or (round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0)
+        return
+    fa.scales["F"], fa.stated = mu, fa.stated | {"F"}
+    drawn = largest / mu
+    if largest > 0 and not POLYGON_RANGE_MM[0] <= drawn <= POLYGON_RANGE_MM[1]:
+        raise SceneError([(fa.scene.forces.mu_F_path, f"μF = {mu:g} N/mm draws the largest force {drawn:.3g} mm long: choose "
+                                          f"μF so that it is {POLYGON_RANGE_MM[0]:g} … {POLYGON_RANGE_MM[1]:g} mm "
+                                          f"(about {round_scale(largest / POLYGON_ROOM_MM):g} N/mm)")],
+                         fa.scene.source)
 
 
 def _conditioning(fa: ForceAnalysis) -> None:
@@ -159,8 +240,12 @@ def _conditioning(fa: ForceAnalysis) -> None:
                                    "grow without bound (a hand construction is unreliable here)")
 
 
-def _characteristic_force(fa: ForceAnalysis, i: int) -> float:
-    out = max((abs(complex(r[i])) for r in fa.solution.reactions.values()), default=0.0)
+def _characteristic_force(fa: ForceAnalysis) -> float:
+    """The scene's force size: its largest reaction over every position solved (N). A relative
+    error divides by max(|exact|, this) — per scene, as the kinematic rows do: a position where
+    every load vanishes has only round-off to compare (4e-13 N against 4.5e-13 N read 6 %)."""
+    ok = np.array([_ok(fa, i) for i in range(len(fa.labels))], dtype=bool)
+    out = max((float(np.max(np.abs(r[ok]), initial=0.0)) for r in fa.solution.reactions.values()), default=0.0)
     return max(out, 1e-300)
 
 
@@ -234,14 +319,22 @@ def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, f
     if base == "M_b_lever":
         assert fa.lever is not None
         return None, 1.0, float(fa.lever.balancing_moment[i]), float(bare_ex.balancing_moment[i]), "N·m"
-    # eta: the instantaneous efficiency, M_b (F_b) without friction over M_b (F_b) with it
+    # eta: the instantaneous efficiency, ideal over actual driving moment (force), M_b0/M_b, while
+    # the driver delivers power (M_b0·ω1 > 0); while the loads drive it (M_b0·ω1 < 0) the driver is
+    # the output, and η = M_b/M_b0, actual over ideal output (≤ 0: friction locks that drive) — as
+    # the reverse stroke of an [efficiency] scene. The exact sign decides for both columns.
+    d = fa.build.linkage.driver
     if sol.balancing_force is not None:
-        g = float(bare.balancing_force[i]) / float(sol.balancing_force[i])  # type: ignore[index]
-        e = float(bare_ex.balancing_force[i]) / float(ex.balancing_force[i])  # type: ignore[index]
-        return None, 1.0, g, e, ""
-    g = float(bare.balancing_moment[i]) / float(sol.balancing_moment[i])
-    e = float(bare_ex.balancing_moment[i]) / float(ex.balancing_moment[i])
-    return None, 1.0, g, e, ""
+        g0, g1 = float(bare.balancing_force[i]), float(sol.balancing_force[i])  # type: ignore[index]
+        e0, e1 = float(bare_ex.balancing_force[i]), float(ex.balancing_force[i])  # type: ignore[index]
+        speed = d.velocity
+    else:
+        g0, g1 = float(bare.balancing_moment[i]), float(sol.balancing_moment[i])
+        e0, e1 = float(bare_ex.balancing_moment[i]), float(ex.balancing_moment[i])
+        speed = d.omega
+    if e0 * speed < 0 and abs(e0) > 1e-9 * abs(e1):  # (an M_b0 that is round-off of 0 drives nothing)
+        return None, 1.0, g1 / g0, e1 / e0, ""
+    return None, 1.0, g0 / g1, e0 / e1, ""
 
 
 def _known(fa: ForceAnalysis, base: str) -> str | None:
@@ -274,6 +367,8 @@ def _known(fa: ForceAnalysis, base: str) -> str | None:
 def _rows(fa: ForceAnalysis) -> None:
     problems = []
     multi = len(fa.labels) > 1
+    force_size = _characteristic_force(fa)
+    locked: list[int] = []
     for k, raw in enumerate(fa.scene.find):
         base, at = split_name(raw)
         if not is_force_name(base):
@@ -293,7 +388,7 @@ def _rows(fa: ForceAnalysis) -> None:
             if not _ok(fa, i):
                 continue
             drawn, scale, g, e, unit = _value(fa, base, i)
-            ch = _characteristic_force(fa, i)
+            ch = force_size
             if unit == "N·m":
                 ch *= fa.kinematics.size
             elif unit == "m":
@@ -308,8 +403,15 @@ def _rows(fa: ForceAnalysis) -> None:
             fa.rows.append(Row(f"{base}@{fa.labels[i]}" if multi else base, unit,
                                None if drawn is None else float(drawn), float(scale), g, e, err,
                                bool(fa.ill.get(i, False))))
+            if base == "eta" and e <= 0.0:
+                locked.append(i)
     if problems:
         raise SceneError(problems, fa.scene.source)
+    if locked:  # η ≤ 0: friction takes all the power there, as a self-locking stroke of [efficiency]
+        where = position_text(fa.build, fa.labels[locked[0]])
+        more = f" and {len(locked) - 1} more position(s)" if len(locked) > 1 else ""
+        fa.warnings.append(f"{where}{more}: η ≤ 0 — self-locking: friction takes all the power there (the "
+                           "driver cannot move the loads, or the loads cannot drive the driver)")
 
 
 def _judge_forces(fa: ForceAnalysis, entries: list[tuple[str, str, float]]) -> list[Verdict]:
@@ -332,8 +434,8 @@ def _judge_forces(fa: ForceAnalysis, entries: list[tuple[str, str, float]]) -> l
             continue
         drawn, scale, g, e, unit = _value(fa, base, i)
         tol = prec * fa.scales["F"]
-        if unit == "N·m":
-            tol *= fa.build.linkage.driver.length
+        if unit == "N·m":  # a polygon length off by the precision, times the arm it acts at
+            tol *= getattr(fa.build.linkage.driver, "length", fa.kinematics.size)
         elif unit == "m":
             tol = prec * fa.scales["l"]
         elif unit == "":
@@ -351,18 +453,31 @@ FORCE_PANELS = ("forces", "force_polygons", "lever")
 def render_forces(scene: Any, footer: tuple[str, ...] = ()) -> tuple[Any, list[str]]:
     """The sheet of a force scene and its warnings: the kinematic panels it shows, then the
     loads, each group's free body and force polygon and Zhukovsky's lever, at one position."""
-    from graphmech.check import page_size
-    from graphmech.methods.figures import linkage_sheet
-    from graphmech.methods.force_figures import force_sheet
-
     drawn = [p for p in scene.show if p in FORCE_PANELS]
     if drawn and len(scene.positions.values) > 1:
         raise SceneError([("show", f"{', '.join(drawn)} draw one position and this scene has "
                                    f"{len(scene.positions.values)}: give the driver one angle "
                                    "(graphmech check takes them all)")], scene.source)
     fa = analyse_forces(scene)
-    an = fa.kinematics
+    if drawn and not _ok(fa, 0):
+        an = fa.kinematics
+        raise SceneError([("driver", f"{position_text(an.build, an.labels[0])} cannot be solved: "
+                                     f"{an.failures[0] or 'the exact solution is undefined here'}")], scene.source)
+    hint = [] if fa.spill_mm == 0.0 else [
+        f"the force sheet does not fit a {page_size(scene)[0]:g} × {page_size(scene)[1]:g} mm page at any round "
+        "scale (its captions and arrows take room too): give [page] size = \"A3\" or show fewer panels"]
+    return _sheet(fa, footer), list(fa.warnings) + hint
+
+
+def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Any:
+    """The force scene's sheet at the analysis' scales (position 0 solved)."""
+    from graphmech.methods.figures import linkage_sheet
+    from graphmech.methods.force_figures import force_sheet
+    from graphmech.render.primitives import Sheet
+
+    scene, an = fa.scene, fa.kinematics
     b = an.build
+    drawn = [p for p in scene.show if p in FORCE_PANELS]
     kin_show = [p for p in scene.show if p in ("mechanism", "velocity", "acceleration")]
     head: tuple = ()
     if kin_show:
@@ -370,15 +485,9 @@ def render_forces(scene: Any, footer: tuple[str, ...] = ()) -> tuple[Any, list[s
         head = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
                              kin_show, page_size(scene)).panels
     if not drawn:
-        from graphmech.render.primitives import Sheet
-
-        return Sheet(scene.title, tuple(head), page_size(scene), footer), list(fa.warnings)
-    if not _ok(fa, 0):
-        raise SceneError([("driver", f"{position_text(b, an.labels[0])} cannot be solved: "
-                                     f"{an.failures[0] or 'the exact solution is undefined here'}")], scene.source)
-    sheet = force_sheet(scene.title, b, fa.kin, fa.solution, scene.forces.model, fa.lever, fa.scales["F"],
-                        drawn, 0, position_text(b, an.labels[0]), page_size(scene), head, footer)
-    return sheet, list(fa.warnings)
+        return Sheet(scene.title, tuple(head), page_size(scene), footer)
+    return force_sheet(scene.title, b, fa.kin, fa.solution, scene.forces.model, fa.lever, fa.scales["F"],
+                       drawn, 0, position_text(b, an.labels[0]), page_size(scene), head, footer)
 
 
 __all__ = ["ForceAnalysis", "analyse_forces", "is_force_name", "FORCE_NAME", "render_forces", "FORCE_PANELS"]

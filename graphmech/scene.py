@@ -981,7 +981,9 @@ def _read_scales(
         given = r.quantity(name, kind, required=False, per_mm=True)
         if given is not None:
             x = r.number(given.value, r.at(given.key), positive=True)
-            if x is not None:
+            if x is not None and not 0 < given.si(x) < math.inf:  # under- or overflows in SI
+                r.problem(r.at(given.key), f"{x:g} is out of range once converted to SI units")
+            elif x is not None:
                 scales[name] = given.si(x)
     r.finish()
     return scales

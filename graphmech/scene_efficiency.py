@@ -388,6 +388,10 @@ def _read_screw(r: _Reader, prob: dict[str, Any], f: float | None, equivalent: b
         prob["at_limit"] = True
         prob["lead_angle"] = None
     prob["d1"] = _length(r, "d1")
+    if prob["d1"] is not None and prob["d2"] is not None and prob["d1"] >= prob["d2"]:
+        r.problem(r.at(r.present("d1") or "d1"), f"the minor diameter d1 = {prob['d1'] * 1000:g} mm must be smaller "
+                                                 f"than the pitch diameter d2 = {prob['d2'] * 1000:g} mm")
+        ok = False
     collar = r.quantity("collar", "length", required=False)
     if collar is not None:
         xy = r.numbers(collar.value, r.at(collar.key), 2, positive=True, shape="[d0, dw]")

@@ -54,6 +54,8 @@ FORCE_SHOW_DEFAULT = ("forces", "force_polygons")
 MAX_ITEMS = 100
 #: The most rounds of successive approximation a scene may allow.
 MAX_ITERATIONS = 10_000
+#: The magnitudes a load, mass, moment of inertia or gravity may have, SI (besides 0).
+ABSURD = (1e-9, 1e12)
 
 
 @dataclass(frozen=True)
@@ -66,10 +68,13 @@ class ForceScene:
         Masses, loads, friction, in SI.
     mu_F : float or None
         The force polygons' scale, N/mm (None: chosen to fit the page).
+    mu_F_path : str
+        Where the scene states μF (for messages about it).
     """
 
     model: ForceModel
     mu_F: float | None = None
+    mu_F_path: str = "forces.mu_F"
 
 
 def _non_negative(r: _Reader, base: str, kind: str, *, required: bool = True) -> float | None:
@@ -78,6 +83,15 @@ def _non_negative(r: _Reader, base: str, kind: str, *, required: bool = True) ->
         return None
     if v.si < 0:
         r.problem(v.path, "must be ≥ 0")
+        return None
+    return _sane(r, v)
+
+
+def _sane(r: _Reader, v: Any) -> float | None:
+    """A load, mass or gravity of a machine: 0, or 1e-9 … 1e12 in SI units (beyond, the products
+    of the analysis under- or overflow: a denormal mass made h = M_i/F_i infinite)."""
+    if v.si != 0 and not ABSURD[0] <= abs(v.si) <= ABSURD[1]:
+        r.problem(v.path, f"{v.text()} is absurd for a machine (0, or {ABSURD[0]:g} … {ABSURD[1]:g} in SI units)")
         return None
     return v.si
 
@@ -173,10 +187,11 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     links = None if linkage is None else {k: v for k, v in linkage.links().items() if k != linkage.frame_link}
     frame = None if linkage is None else linkage.frame_link
     before = len(fr.problems)
-    mu_F = None
+    mu_F, mu_F_path = None, fr.at("mu_F")
     given = fr.quantity("mu_F", "force", required=False, per_mm=True)
     if given is not None:
-        x = fr.number(given.value, fr.at(given.key), positive=True)
+        mu_F_path = fr.at(given.key)
+        x = fr.number(given.value, mu_F_path, positive=True)
         mu_F = None if x is None else given.si(x)
     gravity = _non_negative(fr, "gravity", "acceleration", required=False) or 0.0
 
@@ -185,10 +200,12 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     for r in fr.tables_at("mass")[:MAX_ITEMS]:
         link = _link(r, links, frame)
         point = _on_link(r, _name(r, "point", "its centre of mass S, a point of that link"), link, links)
-        if r.present("mass") and r.present("weight"):
+        by_weight = bool(r.present("weight"))
+        if r.present("mass") and by_weight:
             r.problem(r.at(r.present("weight")), "give mass or weight, not both")
             r.ignore("weight")
-        if r.present("weight"):
+            by_weight = False
+        if by_weight:
             w = _non_negative(r, "weight", "force")
             g = gravity or 9.81  # a weight names its mass through g
             mass = None if w is None else w / g
@@ -211,6 +228,9 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
         point = _on_link(r, _name(r, "point", "the point the force acts at, on that link"), link, links)
         magnitude = _non_negative(r, "force", "force")
         angle = r.scalar("angle", "angle")
+        if angle is not None and abs(angle) > 1e4:  # radians: beyond, cos and sin are round-off
+            r.problem(r.at(r.present("angle") or "angle"), "an absurd angle (write it within ±360°)")
+            angle = None
         value = r.raw("resistance")
         resistance = False
         if value is not _MISSING:
@@ -226,7 +246,8 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     for k, r in enumerate(fr.tables_at("moment")[:MAX_ITEMS]):
         name = _label_text(r, "name", f"M_{k + 1}")
         link = _link(r, links, frame)
-        moment = r.scalar("moment", "moment")
+        given_moment = r.value("moment", "moment")
+        moment = None if given_moment is None else _sane(r, given_moment)
         r.finish()
         if link is not None and moment is not None:
             couples.append(LinkCouple(link, moment, name))
@@ -234,6 +255,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     journals: list[RevoluteFriction] = []
     revolutes = _revolute_points(linkage) if linkage is not None else None
     spans = _joint_lengths(linkage) if linkage is not None else {}
+    seen_journals: dict[str, str] = {}
     for r in fr.tables_at("journal")[:MAX_ITEMS]:
         point = _name(r, "point", "the revolute's point, e.g. point = \"B\"")
         f_v = _coefficient(r, "f_v")
@@ -245,6 +267,10 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
             continue
         if point is None or f_v is None or radius is None:
             continue
+        if point in seen_journals:  # two friction circles on one joint would silently both act
+            r.problem(r.at("point"), f"the journal at {point} is already given ({seen_journals[point]})")
+            continue
+        seen_journals[point] = r.path
         span = spans.get(point, math.inf)
         if radius >= span / 2 or f_v * radius >= span / 2:
             r.problem(r.path, f"the journal at {point} (r = {radius * 1000:g} mm, friction circle ρ = "
@@ -254,6 +280,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
         journals.append(RevoluteFriction(point, f_v, radius))
 
     slides: list[SlidingFriction] = []
+    seen_guides: dict[str, str] = {}
     sliders = None if linkage is None else (
         {y.links[1] for y in linkage.dyads if isinstance(y, RRP)}
         | ({linkage.driver.link} if not isinstance(linkage.driver, Crank) else set())
@@ -268,7 +295,11 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
             r.problem(r.at("link"), f"link {link} is not a slider (on a frame guide or a guide bar)"
                                     + (f" (sliders: {', '.join(sorted(sliders))})" if sliders else ""))
             continue
+        if link is not None and link in seen_guides:
+            r.problem(r.at("link"), f"link {link} already has its guide friction ({seen_guides[link]})")
+            continue
         if link is not None and f is not None:
+            seen_guides[link] = r.path
             slides.append(SlidingFriction(link, f))
 
     tolerance, iterations = 1e-10, 100
@@ -291,7 +322,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
         return None
     model = ForceModel(tuple(masses), tuple(forces), tuple(couples), gravity, tuple(journals), tuple(slides),
                        tolerance, iterations)
-    return ForceScene(model, mu_F)
+    return ForceScene(model, mu_F, mu_F_path)
 
 
 def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]) -> Scene:

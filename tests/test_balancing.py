@@ -190,3 +190,35 @@ def test_recorded_draw_calls_of_a_polygon_panel():
     texts = {c[1] for c in calls if c[0] == "text"}
     assert {"W₁", "W₂", "W₃", "W₄", "Wb"} <= texts
     assert any("μW = 0.05 (kg·m)/mm" in t for t in texts)
+
+
+def test_a_stated_scale_that_underflows_in_si_is_refused_in_one_line(tmp_path):
+    # 5e-324 kg·cm/mm is a positive number in the file but 0 kg·m/mm once converted: it used to
+    # divide by zero (exit 3, internal error)
+    p = write(tmp_path, """
+[scales]
+W_kgcm_per_mm = 5e-324
+[balancing]
+type = "static"
+correction_radius_cm = 15
+[[balancing.mass]]
+m_kg = 5
+r_cm = 10
+angle_deg = 90
+""")
+    code, out, err = run_cli("check", str(p))
+    assert (code, out) == (2, "")
+    assert err == "r.toml: scales.W_kgcm_per_mm: 4.94066e-324 is out of range once converted to SI units\n"
+
+
+def test_the_library_refuses_a_zero_scale_or_correction_radius():
+    # static_balance(…, mu_W=0) raised ZeroDivisionError from inside the polygon
+    from graphmech.mechanisms.rotor import RotorMass
+    from graphmech.methods.balancing import static_balance
+
+    m = [RotorMass("1", 1.0, 0.1, 0.0)]
+    with pytest.raises(ValueError, match="μW and r_b must be positive"):
+        static_balance(m, 0.1, 0.0)
+    with pytest.raises(ValueError, match="r_b = 0.0"):
+        static_balance(m, 0.0, 1.0)
+    assert static_balance(m, 0.1, 0.01).m_b == pytest.approx(1.0, rel=1e-15)

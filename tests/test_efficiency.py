@@ -280,6 +280,9 @@ def test_measured_values_are_judged(tmp_path):
     ('[efficiency]\ntype = "incline"\nangle_deg = 30\nf = 0.1\nload_N = 1\ngamma_deg = 3\n', "efficiency.gamma_deg",
      "belongs to 'wedge'"),
     ('[efficiency]\ntype = "incline"\nangle_deg = 30\nf = 0.1\nload_N = 1\n[driver]\n', "driver", "one problem"),
+    # a minor diameter larger than the pitch diameter was taken (σ = 4Q/(π·d1²) from it)
+    ('[efficiency]\ntype = "screw"\nf = 0.1\nd2_mm = 10\npitch_mm = 1\nd1_mm = 12\nload_N = 1\n', "efficiency.d1_mm",
+     "the minor diameter d1 = 12 mm must be smaller than the pitch diameter d2 = 10 mm"),
 ])
 def test_bad_scenes_are_one_line(body, where, words, tmp_path):
     p = scene(body, tmp_path)
@@ -392,3 +395,48 @@ def test_a_measured_value_that_depends_on_the_direction_must_say_which():
     code, out, err = run_cli("check", str(SCENES / "force.wedge_F1430.toml"), "--measured", "eta=0.7")
     assert code == 2 and err == ("force.wedge_F1430.toml: --measured eta: eta depends on the direction: write "
                                  "eta@forward or eta@reverse\n")
+
+
+def test_eta_read_off_the_polygons_is_judged_at_their_precision():
+    # F1430 drawn as 1440 N is within 0.5 mm × 25 N/mm; the η a student computes from it,
+    # 1000/1440 = 0.6944, was judged wrong at 0.1 % (η = 0.69896)
+    code, out, err = run_cli("check", str(SCENES / "force.wedge_F1430.toml"), "--json",
+                             "--measured", "F@forward=1440", "--measured", "eta@forward=0.6944")
+    doc = json.loads(out)
+    verdicts = {v["name"]: v for v in doc["measured"]}
+    assert verdicts["F@forward"]["ok"] and verdicts["eta@forward"]["ok"]
+    eta = verdicts["eta@forward"]
+    assert eta["expected"] == pytest.approx(0.69896, abs=1e-5)
+    assert eta["tolerance"] == pytest.approx(eta["expected"] * 12.5 * (1 / 1430.7004224765808 + 1 / 1000.0), rel=1e-9)
+    code, out, err = run_cli("check", str(SCENES / "force.wedge_F1430.toml"), "--json",
+                             "--measured", "eta@forward=0.67")  # 4 % off: wrong
+    assert code == 1 and not json.loads(out)["measured"][-1]["ok"]
+
+
+def test_the_library_refuses_an_unknown_direction_or_push():
+    # incline(..., "up", ...) was drawn as a reverse stroke, push="vertical" as a parallel one
+    with pytest.raises(ValueError, match="'forward' or 'reverse', not 'up'"):
+        gm.incline(100.0, 0.3, 0.1, "up", 1.0)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="'horizontal' or 'parallel', not 'vertical'"):
+        gm.incline(100.0, 0.3, 0.1, "forward", 1.0, "vertical")
+    with pytest.raises(ValueError, match="not 'down'"):
+        gm.wedge(1000.0, 1.0, 1.0, 0.1, "down", 20.0)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="not 'up'"):
+        ex.incline_force(100.0, 0.3, 0.1, "up")  # type: ignore[arg-type]
+    assert gm.incline(100.0, 0.3, 0.1, "reverse", 1.0).F == pytest.approx(ex.incline_force(100.0, 0.3, 0.1, "reverse"),
+                                                                          rel=1e-12)
+
+
+def test_a_long_chain_of_machines_wraps_on_its_page(tmp_path):
+    # the boxes stood in one row: 4 stages were 288.6 mm wide on an A4 page leaving 277 mm, 6 were 408.6
+    stages = "".join(f'[[efficiency.stage]]\nname = "gear pair {k}"\neta = 0.97\n' for k in range(6))
+    p = scene('find = ["eta", "P_in"]\n[efficiency]\ntype = "chain"\nload_N = 5500\nspeed_m_s = 1.2\n' + stages,
+              tmp_path)
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "c.svg"))
+    assert code == 0 and "runs off the page" not in err and "run off the page" not in err
+    an = analyse_efficiency(load_scene(p))
+    assert an.rows[0].exact == pytest.approx(0.97 ** 6, rel=1e-14)
+    panel = efficiency_figure(an, (297.0, 210.0)).panels[0]
+    xs = [q[0] for item in panel.items if hasattr(item, "points") for q in item.points]
+    assert max(xs) - min(xs) < 277.0 and len({round(q[1]) for item in panel.items if hasattr(item, "points")
+                                               for q in item.points}) > 4  # two rows of boxes

@@ -2,6 +2,8 @@
 from __future__ import annotations
 
 import dataclasses
+import math
+import re
 import subprocess
 import sys
 import tomllib
@@ -161,7 +163,8 @@ f = 0.3
 """).replace("[forces]\n", "[forces]\nmax_iterations = 2\n", 1)
     code, out, err = run_cli("check", str(_write(tmp_path, text)))
     assert code == 2 and out == ""
-    assert err.count("\n") == 1 and "does not converge in 2 rounds" in err
+    assert err.count("\n") == 1 and err.startswith("s.toml: forces: friction by successive approximation: "
+                                                    "does not converge in 2 rounds")
 
 
 def test_friction_circle_larger_than_the_geometry_allows(tmp_path):
@@ -520,3 +523,339 @@ def test_slider_crank_with_friction_equals_the_matrix_method(phi, m3, f, fs, fv,
     for key, r in sol.reactions.items():
         assert abs(complex(r[0]) - complex(*ex.reactions[key][0])) <= 1e-8 * size, key
     assert abs(sol.balancing_moment[0] - ex.balancing_moment[0]) <= 1e-8 * size * 0.1
+
+
+# ----------------------------------------------------------------------------- hostile input (review)
+
+
+@pytest.mark.parametrize("old, new, message", [
+    # a denormal mass made h = |M_i/F_i| overflow: numpy warnings on stderr, then "h_2 is not finite"
+    ("mass_kg = 2", "mass_kg = 5e-324",
+     "forces.mass[0].mass_kg: 4.94065645841e-324 kg is absurd for a machine (0, or 1e-09 … 1e+12 in SI units)"),
+    ("force_N = 100", "force_N = 1e308",
+     "forces.force[0].force_N: 1e+308 N is absurd for a machine (0, or 1e-09 … 1e+12 in SI units)"),
+    ("[forces]\n", "[forces]\ngravity_m_s2 = 1e308\n",
+     "forces.gravity_m_s2: 1e+308 m/s2 is absurd for a machine (0, or 1e-09 … 1e+12 in SI units)"),
+    # both given: the message named mass_kg an "unknown key"
+    ("mass_kg = 2", "mass_kg = 2\nweight_N = 20", "forces.mass[0].weight_N: give mass or weight, not both"),
+    # a second guide friction on the same slider was silently used as well
+    ("[forces]\n", "[forces]\n[[forces.guide]]\nlink = \"3\"\nf = 0.1\n[[forces.guide]]\nlink = \"3\"\nf = 0.2\n",
+     "forces.guide[1].link: link 3 already has its guide friction (forces.guide[0])"),
+    ("[forces]\n", "[forces]\n[[forces.journal]]\npoint = \"B\"\nf_v = 0.1\nradius = 5\n"
+                   "[[forces.journal]]\npoint = \"B\"\nf_v = 0.2\nradius = 5\n",
+     "forces.journal[1].point: the journal at B is already given (forces.journal[0])"),
+    # a force's direction of 1e300° was taken (cos and sin of it are round-off)
+    ("angle = 180", "angle = 1e300", "forces.force[0].angle: an absurd angle (write it within ±360°)"),
+    # an absurd stated μF drew polygons 1e-297 mm long without a word
+    ("[forces]\n", "[forces]\nmu_F_N_per_mm = 1e300\n",
+     "forces.mu_F_N_per_mm: μF = 1e+300 N/mm draws the largest force 1.14e-298 mm long: choose μF so that it "
+     "is 1 … 100000 mm (about 2 N/mm)"),
+])
+def test_hostile_force_inputs_are_one_line_errors(tmp_path, old, new, message):
+    text = SLIDER_CRANK.format(length=300, extra="")
+    assert old in text
+    code, out, err = run_cli("check", str(_write(tmp_path, text.replace(old, new, 1))))
+    assert (code, out) == (2, "")
+    assert err == f"s.toml: {message}\n"
+
+
+DOC_BLOCKS = re.findall(r"```toml\n(.*?)```", (ROOT / "docs" / "scene-format.md").read_text(encoding="utf-8"), re.S)
+
+
+def _doc_scene(title: str) -> str:
+    return next(b for b in DOC_BLOCKS if b.startswith(f'title = "{title}"'))
+
+
+@pytest.mark.parametrize("title, mu_l", [
+    ("Oscillating block: reactions with friction", "μl = 0.002 m/mm"),
+    ("Slider-driven rocker: balancing force", "μl = 0.005 m/mm"),
+])
+def test_chosen_scales_fit_the_force_sheet_on_its_page(tmp_path, title, mu_l):
+    # μl was chosen for the mechanism alone, filling the page: the free bodies and the lever ran
+    # off it ("the panels need 410.9 mm of height … run off the page", RPR at μl = 0.0005 m/mm)
+    p = _write(tmp_path, _doc_scene(title))
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "s.svg"))
+    assert code == 0 and "run off the page" not in err
+    assert mu_l in (tmp_path / "s.svg").read_text(encoding="utf-8")
+    code, out, _ = run_cli("check", str(p))
+    assert code == 0 and mu_l + " (chosen)" in out  # the table reads the figure's lengths
+
+
+def test_the_lever_with_friction_names_the_frictionless_balancing_moment(tmp_path):
+    # the caption said "M_b = μv·ΣM_p/ω1 = …" though the lever knows no friction: it is M_b0
+    code, _, err = run_cli("render", str(_write(tmp_path, _doc_scene("Oscillating block: reactions with friction")
+                                               .replace('show = ["forces", "force_polygons"]',
+                                                        'show = ["forces", "lever"]'))), "-o", str(tmp_path / "s.svg"))
+    svg = (tmp_path / "s.svg").read_text(encoding="utf-8")
+    assert code == 0 and "M_b0 = μv·ΣM_p/ω1 = " in svg and "N·m (without friction)" in svg
+
+
+@pytest.mark.parametrize("find, show, key", [
+    ('["M_b_lever"]', '["mechanism"]', "find[0]"),
+    ('["M_b"]', '["forces", "lever"]', "show"),
+])
+def test_a_lever_of_a_crank_at_rest_names_the_key_that_asked_for_it(tmp_path, find, show, key):
+    # the message had no key path: "s.toml: Zhukovsky's lever: the crank stands still: …"
+    text = SLIDER_CRANK.format(length=300, extra="").replace("omega_rad_s = 10", "omega_rad_s = 0")
+    text = text.replace('find = ["R_12", "R_43", "M_b"]', f"find = {find}").replace('show = ["mechanism"]',
+                                                                                 f"show = {show}")
+    code, out, err = run_cli("check", str(_write(tmp_path, text)))
+    assert (code, out) == (2, "")
+    assert err == f"s.toml: {key}: Zhukovsky's lever: the crank stands still: no virtual power\n"
+
+
+def test_eta_of_a_crank_that_the_loads_drive_is_actual_over_ideal_output():
+    # the docs' slider-crank: P pushes the slider, the crank absorbs power (M_b0 = -50.16 N·m);
+    # η was M_b0/M_b = 1.074 > 1, now M_b/M_b0 as for a reverse stroke
+    fa = analyse_forces(_scene(_doc_scene("Slider-crank with friction: balancing moment")))
+    rows = {r.name: r for r in fa.rows}
+    m_b, m_b0 = rows["M_b"].exact, rows["M_b0"].exact
+    assert m_b0 == pytest.approx(-50.1601797, rel=1e-9) and -m_b0 > -m_b > 0
+    assert rows["eta"].exact == pytest.approx(m_b / m_b0, rel=1e-15)
+    assert rows["eta"].exact == pytest.approx(0.930961525, rel=1e-9)
+    assert rows["eta"].rel_error < 1e-14
+    # a crank that drives keeps η = M_b0/M_b (the six-bar with friction: 0.8919214560679)
+    fa = analyse_forces(load_scene(SCENES / "force.sixbar_kinetostatic-friction.toml"))
+    eta = next(r for r in fa.rows if r.name == "eta")
+    assert eta.exact == pytest.approx(0.8919214560679, rel=1e-12)
+
+
+RPP_LOADED = """
+find = ["R_12", "R_03", "M_b", "M_b0"]
+show = ["mechanism"]
+[frame]
+link = "0"
+A_mm = [0, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 40
+angle_deg = { start = 0, stop = 360, step = 60 }
+omega_rad_s = 100
+[[dyad]]
+type = "RPP"
+joints = ["B", "C"]
+links = ["2", "3"]
+slot_angle_deg = 60
+guide = { through = "A", angle_deg = 0 }
+[forces]
+[[forces.mass]]
+link = "3"
+point = "C"
+mass_kg = 2
+[[forces.force]]
+link = "3"
+point = "C"
+force_N = 500
+angle_deg = 0
+resistance = true
+[[forces.journal]]
+point = "B"
+f_v = 0.1
+radius_mm = 5
+[[forces.guide]]
+link = "3"
+f = 0.15
+"""
+
+
+def test_a_position_where_every_load_vanishes_is_not_a_large_relative_error():
+    # at 240° the slider's acceleration is 0 and the resistance idle: every reaction is round-off
+    # (4.2e-13 N against 4.5e-13 N), which the per-position denominator read as 6 % errors
+    fa = analyse_forces(_scene(RPP_LOADED))
+    rows = {r.name: r for r in fa.rows}
+    assert abs(rows["R_12@240"].exact) < 1e-9 and rows["R_12@0"].exact == pytest.approx(1643.4364734438561, rel=1e-12)
+    assert max(r.rel_error for r in fa.rows) < 1e-13
+
+
+def test_a_measured_moment_on_a_slider_driven_scene_is_judged(tmp_path):
+    # --measured M_01=… crashed: 'SliderInput' object has no attribute 'length' (exit 3)
+    p = _write(tmp_path, _doc_scene("Slider-driven rocker: balancing force"))
+    doc = check_json(p, "--measured", "M_01=0.0001")
+    v = next(x for x in doc["measured"] if x["name"] == "M_01")
+    assert v["expected"] == 0.0 and v["ok"] is True and 0 < v["tolerance"] < 1
+    code, _, err = run_cli("check", str(p), "--measured", "M_01=1")
+    assert code == 1 and err == ""
+
+
+def test_a_resultant_moved_farther_than_the_mechanism_is_drawn_as_a_couple(tmp_path):
+    # link 2 of 1 mg with J = 0.03 kg·m²: h = |M_i/F_i| ≈ 19 km, and F_i2′ was drawn there (the
+    # sheet "needs 11289459.9 mm of height")
+    text = (SCENES / "force.sixbar_kinetostatic.toml").read_text(encoding="utf-8")
+    assert "mass_kg = 4\n" in text
+    p = _write(tmp_path, text.replace("mass_kg = 4\n", "mass_kg = 1e-6\n"))
+    fa = analyse_forces(load_scene(p))
+    assert float(fa.solution.inertia["2"].offset[0]) > 1e4  # metres
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "s.svg"))
+    svg = (tmp_path / "s.svg").read_text(encoding="utf-8")
+    assert code == 0 and "run off the page" not in err
+    assert "Fᵢ₂′" not in svg and "Fᵢ₂" in svg and "Fᵢ₃′" in svg
+
+
+def test_a_scene_couple_is_drawn_on_the_loads_and_on_its_free_body(tmp_path):
+    # M_r = 4 N·m on rocker 3 acted in every polygon but was drawn only on Zhukovsky's lever (at c
+    # and p): the loads panel and the free body of group 2–3 left it out
+    p = _write(tmp_path, _doc_scene("Slider-driven rocker: balancing force"))
+    code, _, _ = run_cli("render", str(p), "-o", str(tmp_path / "s.svg"))
+    svg = (tmp_path / "s.svg").read_text(encoding="utf-8")
+    assert code == 0 and svg.count(">Mᵣ<") == 4
+    no_lever = _doc_scene("Slider-driven rocker: balancing force").replace(
+        'show = ["forces", "force_polygons", "lever"]', 'show = ["force_polygons"]')
+    code, _, _ = run_cli("render", str(_write(tmp_path, no_lever, "t.toml")), "-o", str(tmp_path / "t.svg"))
+    assert code == 0 and (tmp_path / "t.svg").read_text(encoding="utf-8").count(">Mᵣ<") == 1
+
+
+def test_the_fit_counts_the_footer_of_the_rendered_sheet(tmp_path):
+    # the chosen μv fitted Zhukovsky's lever to a page without the footer line: rendered, it
+    # needed 383.2 mm where the A2 page leaves 381.2 mm
+    text = (SCENES / "force.sixbar_kinetostatic.toml").read_text(encoding="utf-8")
+    text = text.replace('show = ["forces", "force_polygons", "lever"]', 'show = ["lever"]')
+    text = re.sub(r"\[scales\]\n(.*\n){3}", "", text).replace("mu_F_N_per_mm = 25\n", "")
+    text = text.replace("angle = 120\n", "angle = 41.6009\n").replace("omega = 12\n", "omega = -50\n")
+    assert "[scales]" not in text and "omega = -50" in text
+    code, _, err = run_cli("render", str(_write(tmp_path, text)), "-o", str(tmp_path / "s.svg"))
+    assert code == 0 and "run off the page" not in err
+
+
+def test_a_guide_reaction_whose_line_crosses_far_off_is_drawn_at_the_slider_with_its_moment():
+    # RPP, slot ⟂ guide, friction: the guide's reaction on slot 3 is nearly along the guide and its
+    # line of action crossed the guide 0.55 m from C — its arrow floated 270 mm off the free body
+    from graphmech.methods.force_figures import free_body_items
+    from graphmech.render.primitives import Arrow, Label
+
+    text = RPP_LOADED.replace("slot_angle_deg = 60", "slot_angle_deg = 90").replace(
+        "angle_deg = { start = 0, stop = 360, step = 60 }", "angle_deg = 45")
+    scene = _scene(text.replace('show = ["mechanism"]', 'show = ["force_polygons"]'))
+    fa = analyse_forces(scene)
+    g = fa.solution.guides[0]
+    c = complex(fa.kin.point["C"][0])
+    e = float(g.moment[0]) / abs(complex(g.force[0]))
+    assert abs(e) > 0.2  # metres: the line of action is far off
+    group = next(gr for gr in fa.solution.groups if "3" in gr.links)
+    items = free_body_items(fa.build, fa.kin, group, {}, {j.point for j in fa.solution.joints}, 0,
+                            fa.solution.guides)
+    at_c = fa.build.to_drawing((c.real, c.imag))
+    assert any(isinstance(x, Arrow) and math.dist(x.p0, at_c) < 1e-9 for x in items)
+    assert any(isinstance(x, Label) and x.text == "M₀₃" for x in items)
+    xs = [p for x in items if isinstance(x, Arrow) for p in (x.p0[0], x.p1[0])]
+    assert max(xs) - min(xs) < 100.0  # mm: the free body stays compact
+
+
+DOUBLE_SLIDER = """
+title = "Slider drives a slider"
+show = ["forces", "force_polygons", "lever"]
+find = ["F_b", "F_b0", "eta"]
+[units]
+length = "mm"
+angle = "deg"
+velocity = "m/s"
+acceleration = "m/s2"
+[frame]
+link = "0"
+O = [0, 0]
+[driver]
+type = "slider"
+link = "1"
+point = "B"
+guide = { through = "O", angle = 0 }
+position = 60
+velocity = 0.5
+acceleration = 0
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["2", "3"]
+length = 100
+guide = { through = [0, 0], angle = 90 }
+branch = "forward"
+[[point]]
+name = "S2"
+link = "2"
+base = ["B", "C"]
+along = 50
+left = 0
+[forces]
+gravity_m_s2 = 9.81
+[[forces.mass]]
+link = "2"
+point = "S2"
+mass_kg = 1
+inertia_kgm2 = 0.002
+[[forces.mass]]
+link = "3"
+point = "C"
+mass_kg = 2
+[[forces.force]]
+name = "Q"
+link = "3"
+point = "C"
+force_N = 50
+angle = -90
+[[forces.guide]]
+link = "1"
+f = 0.2
+[[forces.guide]]
+link = "3"
+f = 0.15
+[[forces.journal]]
+point = "B"
+f_v = 0.1
+radius = 5
+"""
+
+
+def test_a_sheet_that_fits_no_round_scale_keeps_readable_drawings_and_says_so(tmp_path):
+    # the first fit made everything coarser until the spill was least: μF = 20 N/mm drew 3 mm
+    # polygons on an A4 sheet that captions alone overfill; now μl, μv first, a coarser scale only
+    # for a real gain, and a hint
+    code, _, err = run_cli("render", str(_write(tmp_path, DOUBLE_SLIDER)), "-o", str(tmp_path / "s.svg"))
+    assert code == 0 and 'give [page] size = "A3"' in err
+    fa = analyse_forces(_scene(DOUBLE_SLIDER))
+    assert (fa.scales["l"], fa.scales["F"]) == (0.01, 5.0) and fa.spill_mm > 0
+    rows = {r.name: r for r in fa.rows}
+    # the loads drive the slider here (F_b0 < 0 along +v): η = F_b/F_b0
+    assert rows["F_b0"].exact == pytest.approx(-46.921582, rel=1e-7)
+    assert rows["eta"].exact == pytest.approx(rows["F_b"].exact / rows["F_b0"].exact, rel=1e-14)
+    a3 = DOUBLE_SLIDER.replace("[units]", '[page]\nsize = "A3"\n[units]')
+    code, _, err = run_cli("render", str(_write(tmp_path, a3, "a3.toml")), "-o", str(tmp_path / "a3.svg"))
+    assert code == 0 and "run off the page" not in err and "A3" not in err
+
+
+def test_eta_at_or_below_zero_is_said_to_be_self_locking():
+    # the rocking block with f = 5 between block and bar: η ≤ 0 at 20 of 36 positions, in silence
+    text = _doc_scene("Oscillating block: reactions with friction").replace("f = 0.2", "f = 5").replace(
+        "angle = 45", "angle = { start = 0, stop = 360, step = 10 }").replace(
+        'show = ["forces", "force_polygons"]', 'show = ["mechanism"]')
+    fa = analyse_forces(_scene(text))
+    etas = [r for r in fa.rows if r.name.startswith("eta@")]
+    locked = [r for r in etas if r.exact <= 0]
+    assert len(etas) == 36 and 0 < len(locked) < 36
+    warning = next(w for w in fa.warnings if "self-locking" in w)
+    assert f"and {len(locked) - 1} more position(s): η ≤ 0" in warning
+    assert not any("self-locking" in w for w in analyse_forces(_scene(
+        _doc_scene("Oscillating block: reactions with friction"))).warnings)
+
+
+def test_friction_dissipates_exactly_the_extra_driving_power_over_the_cycle(tmp_path):
+    # an independent check of the friction senses (the polygons and the matrix method share the
+    # convention): (M_b − M_b0)·ω1 must equal the power lost, Σ|R|·ρ·|ω_rel| in the journals plus
+    # f·|N|·|v| on the guide, each from the matrix method's reactions and the exact kinematics
+    text = (SCENES / "force.sixbar_kinetostatic-friction.toml").read_text(encoding="utf-8")
+    text = re.sub(r"^show = .*$", 'show = ["mechanism"]', text, flags=re.M)
+    text = text.replace("angle = 120\n", "angle = { start = 0, stop = 360, step = 15 }\n", 1)
+    assert "step = 15" in text
+    fa = analyse_forces(load_scene(_write(tmp_path, text)))
+    ex, kin = fa.exact, fa.kinematics.exact
+    om = {"0": 0.0, **{k: np.asarray(v) for k, v in kin.omega.items()}}
+    lost = 0.0
+    for fr in fa.scene.forces.model.revolute_friction:
+        (a, b), = [(j.a, j.b) for j in fa.solution.joints if j.point == fr.point]
+        lost = lost + np.hypot(*ex.reactions[(a, b)].T) * fr.rho * np.abs(om[b] - om[a])
+    r05 = ex.reactions[("0", "5")]
+    lost = lost + 0.1 * np.abs(r05[:, 1]) * np.abs(kin.vel["F"][:, 0])  # guide y = 300 mm: N is R_y
+    gained = (np.asarray(ex.balancing_moment) - np.asarray(fa.exact_frictionless.balancing_moment)) * 12.0
+    ok = np.asarray(ex.valid)
+    assert ok.sum() == 24 and np.all(lost[ok] > 0)
+    np.testing.assert_allclose(gained[ok], lost[ok], rtol=1e-11)

@@ -72,7 +72,14 @@ def close_mass_radius_polygon(plane: str, vectors: Sequence[tuple[str, float, fl
     >>> c = close_mass_radius_polygon("I", [("W1", 0.1, 0.0), ("W2", 0.1, math.pi / 2)], 0.1, 0.002)
     >>> round(c.W, 12), round(math.degrees(c.theta), 9), round(c.m_b, 12)
     (0.141421356237, -135.0, 1.414213562373)
+
+    Raises
+    ------
+    ValueError
+        When μW or the correction radius r_b is not a positive finite number (it is divided by).
     """
+    if not (0 < mu_W < math.inf and 0 < r_b < math.inf):
+        raise ValueError(f"μW and r_b must be positive and finite, not μW = {mu_W!r}, r_b = {r_b!r}")
     sides = []
     p = (0.0, 0.0)
     total = 0.0

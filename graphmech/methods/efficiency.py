@@ -167,6 +167,13 @@ def _eta(direction: Direction, F0: float, F: float | None) -> float:
 # ---------------------------------------------------------------------------- incline and screw
 
 
+def _sense(direction: str) -> float:
+    """+1 forward, −1 reverse; anything else is a caller's mistake, not a reverse stroke."""
+    if direction not in ("forward", "reverse"):
+        raise ValueError(f"direction must be 'forward' or 'reverse', not {direction!r}")
+    return 1.0 if direction == "forward" else -1.0
+
+
 def incline(Q: float, alpha: float, phi: float, direction: Direction, mu_F: float,
             push: str = "horizontal", *, names: tuple[str, str] = ("F", "R")) -> Stroke:
     """A block of weight Q on an incline α; F horizontal (the unrolled screw) or ∥ the incline.
@@ -193,7 +200,9 @@ def incline(Q: float, alpha: float, phi: float, direction: Direction, mu_F: floa
     """
     fname, rname = names
     up = (math.cos(alpha), math.sin(alpha))
-    v = up if direction == "forward" else (-up[0], -up[1])
+    if push not in ("horizontal", "parallel"):
+        raise ValueError(f"push must be 'horizontal' or 'parallel', not {push!r}")
+    v = up if _sense(direction) > 0 else (-up[0], -up[1])
     normal = (-math.sin(alpha), math.cos(alpha))  # the incline pushes the block up-and-out
     f_dir = (1.0, 0.0) if push == "horizontal" else up
     load = ("Q", (0.0, -Q))
@@ -232,7 +241,7 @@ def wedge(Q: float, gamma: float, beta: float, phi: float, direction: Direction,
     >>> round(s.F, 6), round(s.F0, 9)
     (1430.700422, 1000.0)
     """
-    sense = 1.0 if direction == "forward" else -1.0
+    sense = _sense(direction)
     guide1 = (math.cos(beta), -math.sin(beta))  # slider 1 pushed down along −β (forward)
     guide2 = (1.0, 0.0)
     face = (math.cos(gamma), math.sin(gamma))

@@ -154,43 +154,61 @@ def _wedge_diagram(gamma: float, beta: float, stroke: Stroke | None = None) -> l
     return items
 
 
-def _chain_diagram(stages: Sequence[Any], powers: Sequence[Any]) -> list[Primitive]:
+def _chain_diagram(stages: Sequence[Any], powers: Sequence[Any], width: float = math.inf) -> list[Primitive]:
+    """The machines as boxes, the power on the arrows between them, in rows no wider than
+    ``width`` mm (a long chain wraps: the power line runs down to the start of the next row)."""
     items: list[Primitive] = []
-    x = 0.0
-    box_w, box_h, gap = 36.0, 17.0, 24.0
+    box_w, gap = 36.0, 24.0
+    per_row = max(1, int((width - 8.0 - gap - 14.0) // (gap + box_w))) if math.isfinite(width) else len(stages)
+
+    def height(stage: Any) -> float:
+        return 17.0 if len(stage.branches) == 1 else 22.0 * len(stage.branches) - 4.0
 
     def box(cx: float, cy: float, text: str, eta: str) -> None:
-        pts = ((cx - box_w / 2, cy - box_h / 2), (cx + box_w / 2, cy - box_h / 2), (cx + box_w / 2, cy + box_h / 2),
-               (cx - box_w / 2, cy + box_h / 2))
+        pts = ((cx - box_w / 2, cy - 8.5), (cx + box_w / 2, cy - 8.5), (cx + box_w / 2, cy + 8.5),
+               (cx - box_w / 2, cy + 8.5))
         items.append(Polyline(pts, "given", closed=True))
         items.append(Label(text, (cx, cy + 3.2), (), 2.8, italic=False))
         items.append(Label(eta, (cx, cy - 3.2), (), 2.8))
 
-    items.append(Label("motor", (x, 0.0), (), 3.2, italic=False))
-    x += 8.0
+    items.append(Label("motor", (0.0, 0.0), (), 3.2, italic=False))
+    x, y, x0 = 8.0, 0.0, 8.0
     for k, (stage, res) in enumerate(zip(stages, powers)):
-        items.append(Arrow((x, 0.0), (x + gap, 0.0), "result"))
-        items.append(Label(f"{res.power_in / 1000.0:.4g} kW", (x + gap / 2.0, 4.5), ((0.0, -1.0),), 2.8, italic=False))
-        x += gap + box_w / 2.0
+        if k and k % per_row == 0:  # wrap: down half-way between the rows, back left, down again
+            below = max(height(st) for st in stages[k - per_row:k]) / 2.0
+            drop = below + max(height(st) for st in stages[k:k + per_row]) / 2.0 + 16.0
+            turn = x + gap / 2.0
+            items.append(Polyline(((x, y), (turn, y), (turn, y - below - 8.0), (x0 - gap / 2.0, y - below - 8.0),
+                                   (x0 - gap / 2.0, y - drop)), "result"))
+            x, y = x0 - gap / 2.0, y - drop
+            items.append(Arrow((x, y), (x + gap / 2.0, y), "result"))
+            items.append(Label(f"{res.power_in / 1000.0:.4g} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),), 2.8,
+                               italic=False))
+            x += gap / 2.0 + box_w / 2.0
+        else:
+            items.append(Arrow((x, y), (x + gap, y), "result"))
+            items.append(Label(f"{res.power_in / 1000.0:.4g} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),), 2.8,
+                               italic=False))
+            x += gap + box_w / 2.0
         if len(stage.branches) == 1:
             series = stage.branches[0][1]
             text = stage.name if len(series) == 1 else f"{stage.name} ×{len(series)}"
             eta = "η = " + (f"{series[0]:g}" if len(set(series)) == 1 else "·".join(f"{e:g}" for e in series))
-            box(x, 0.0, text, eta)
+            box(x, y, text, eta)
         else:
             n = len(stage.branches)
             for i, (share, series) in enumerate(stage.branches):
-                cy = (n - 1) * 11.0 - i * 22.0
+                cy = y + (n - 1) * 11.0 - i * 22.0
                 pts = ((x - box_w / 2, cy - 9.0), (x + box_w / 2, cy - 9.0), (x + box_w / 2, cy + 9.0),
                        (x - box_w / 2, cy + 9.0))
                 items.append(Polyline(pts, "given", closed=True))
                 items.append(Label(f"{stage.name}: {share:g}", (x, cy + 3.4), (), 2.6, italic=False))
                 items.append(Label("η = " + "·".join(f"{e:g}" for e in series), (x, cy - 3.4), (), 2.6))
         x += box_w / 2.0
-    items.append(Arrow((x, 0.0), (x + gap, 0.0), "result"))
-    items.append(Label(f"{powers[-1].power_out / 1000.0:.4g} kW", (x + gap / 2.0, 4.5), ((0.0, -1.0),), 2.8,
+    items.append(Arrow((x, y), (x + gap, y), "result"))
+    items.append(Label(f"{powers[-1].power_out / 1000.0:.4g} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),), 2.8,
                        italic=False))
-    items.append(Label("load", (x + gap + 6.0, 0.0), (), 3.2, italic=False))
+    items.append(Label("load", (x + gap + 6.0, y), (), 3.2, italic=False))
     return items
 
 
@@ -230,7 +248,7 @@ def efficiency_sheet(title: str, problem: Any, strokes: dict[str, Stroke], chain
         kind = problem.type
         notes: tuple[str, ...] = ()
         if kind == "chain":
-            items = _chain_diagram(problem.stages, chain[1])
+            items = _chain_diagram(problem.stages, chain[1], page[0] - 40.0)
             parallel = any(len(st.branches) > 1 for st in problem.stages)
             head = "machines in series" + (" and in parallel" if parallel else "")
             notes = (f"η = {chain[0]:.6g}",)

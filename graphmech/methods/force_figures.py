@@ -21,7 +21,8 @@ import numpy as np
 
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Linkage
 from graphmech.methods.figures import mechanism_items
-from graphmech.methods.kinetostatics import GroupPolygon, KinetostaticSolution, Lever, PolygonKinematics
+from graphmech.methods.kinetostatics import (GroupPolygon, GuideReaction, KinetostaticSolution, Lever,
+                                            PolygonKinematics)
 from graphmech.render.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Segment, Sheet,
                                          Slider)
 
@@ -106,6 +107,10 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
 
     loads: list[tuple[str, complex, complex]] = []
     shifted: list[tuple[str, complex, complex]] = []
+    # A single resultant moved farther than the mechanism is wide is a couple in all but name
+    # (a light link turning fast: h = |M_i/F_i| runs to kilometres): F_i and M_i stay at S.
+    xs, ys = [p[0] for p in pos.values()], [p[1] for p in pos.values()]
+    reach = 2.0 * max(max(xs) - min(xs), max(ys) - min(ys), ARROW_LONG) * build.mu_l
     for lm in model.masses:
         if lm.link == linkage.frame_link:
             continue
@@ -116,7 +121,7 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
         if il is not None and il.moment[i] != 0:
             items += _moment_arc(build.to_drawing(_c(at)), float(il.moment[i]), f"M_i{lm.link}", 4.0)
         if il is not None and abs(il.force[i]) > 0:
-            if il.moment[i] != 0 and il.offset[i] > 0:
+            if il.moment[i] != 0 and 0 < il.offset[i] <= reach:
                 # F_i through S (thin), and its single resultant moved by h (bold)
                 loads.append((f"F_i{lm.link}", complex(il.force[i]), at))
                 shifted.append((f"F'_i{lm.link}", complex(il.force[i]), at + complex(il.resultant_shift[i])))
@@ -138,6 +143,9 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
                            ((-u[0], -u[1]),), 3.0))
         s = to_mm(at - complex(sol.inertia[name[-1]].resultant_shift[i]))
         items.append(Segment(s, p0, "construction", dashed=True))  # the offset h
+    links = linkage.links()
+    for c in model.couples:  # the scene's own moments on links (a resisting moment M_r …)
+        items += _moment_arc(_middle(kin, links[c.link], i, to_mm), c.moment, c.name, 4.0)
     d = linkage.driver
     if isinstance(d, Crank):
         items += _moment_arc(pos[d.pivot], float(sol.balancing_moment[i]), "M_b", 9.0)
@@ -151,8 +159,12 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
 
 
 def free_body_items(build: Any, kin: PolygonKinematics, group: GroupPolygon, rho: dict[str, float],
-                    joints: set[str], i: int) -> list[Primitive]:
-    """One group cut free: its links, hinges, slider, and every force on it (arrows not to scale)."""
+                    joints: set[str], i: int, guides: Sequence[GuideReaction] = ()) -> list[Primitive]:
+    """One group cut free: its links, hinges, slider, and every force on it (arrows not to scale).
+
+    A guide's reaction is drawn on its line of action, unless that crosses the guide farther off
+    than the group is wide (a small normal force with a moment): then at the slider's point with
+    its moment M_ij about it, as the book draws a slider that bears on the ends of its guide."""
     linkage: Linkage = build.linkage
     pts = linkage.links()
     items: list[Primitive] = []
@@ -191,22 +203,35 @@ def free_body_items(build: Any, kin: PolygonKinematics, group: GroupPolygon, rho
     # With friction a reaction is tangent to its friction circle: its line of action is moved off
     # the joint's centre so that its moment about it is the friction couple M_f.
     friction = {c.name: float(c.moment[i]) for c in group.couples if c.name.startswith("M_f")}
-    forces = []
+    seen = [to_mm(complex(kin.point[name][i])) for name in drawn]
+    reach = 2.0 * max(max(p[0] for p in seen) - min(p[0] for p in seen),
+                      max(p[1] for p in seen) - min(p[1] for p in seen), ARROW_LONG) * build.mu_l
+    by_name = {g.name: g for g in guides}
+    forces, guide_moments = [], []
     for f in group.free_body:
         vec, at = complex(f.vector[i]), complex(f.at[i])
         m = friction.get("M_f" + f.name[2:], 0.0) if f.name.startswith("R_") else 0.0
         if m != 0.0 and abs(vec) > 0:
             at = at - 1j * m * vec / abs(vec) ** 2
+        g = by_name.get(f.name)
+        if g is not None and abs(at - complex(kin.point[g.point][i])) > reach:
+            at = complex(kin.point[g.point][i])
+            guide_moments.append((f"M_{g.frame}{g.slider}", float(g.moment[i]), at))
         forces.append((f.name, vec, at))
     largest = max([abs(v) for _, v, _ in forces], default=0.0)
     items += _arrows(forces, to_mm, largest)
-    for c in group.couples:
+    for c in group.couples:  # M_i, M_b and the scene's own couples; friction couples moved the reactions
         m = float(c.moment[i])
-        if m != 0 and c.name.startswith(("M_i", "M_b")):
-            link = c.name[3:] if c.name.startswith("M_i") else group.links[0]
-            at = to_mm(complex(kin.point[pts[link][0]][i] + kin.point[pts[link][-1]][i]) / 2)
-            items += _moment_arc(at, m, c.name, 4.0)
+        if m != 0 and c.name not in friction:
+            items += _moment_arc(_middle(kin, pts[c.link or group.links[0]], i, to_mm), m, c.name, 4.0)
+    for name, m, at in guide_moments:
+        items += _moment_arc(to_mm(at), m, name, 6.0)
     return items
+
+
+def _middle(kin: PolygonKinematics, names: Sequence[str], i: int, to_mm: Any) -> tuple[float, float]:
+    """Where a couple on a link is drawn: halfway between its first and last points."""
+    return to_mm(complex(kin.point[names[0]][i] + kin.point[names[-1]][i]) / 2)
 
 
 def polygon_items(group: GroupPolygon, mu_F: float, i: int) -> list[Primitive]:
@@ -281,14 +306,16 @@ def force_sheet(title: str, build: Any, kin: PolygonKinematics, sol: Kinetostati
             notes = ("arrows not to scale",) + (
                 (f"friction circles at μl = {mu_l:.6g} m/mm; reactions tangent to them",) if rho else ())
             panels.append(Panel(f"free-{key}", f"Free body, {g.name}",
-                                tuple(free_body_items(build, kin, g, rho, joints, i)), notes))
+                                tuple(free_body_items(build, kin, g, rho, joints, i, sol.guides)), notes))
             panels.append(Panel(f"polygon-{key}", f"Force polygon, {g.name}", tuple(polygon_items(g, mu_F, i)),
                                 (f"μF = {mu_F:.6g} N/mm",)))
     if "lever" in show and lever is not None:
+        # the lever knows no friction: with friction it gives the frictionless M_b0 (F_b0)
+        bare, note = ("0", " (without friction)") if model.has_friction else ("", "")
         if lever.balancing_force is not None:
-            result = f"F_b = μv·ΣM_p/v = {float(lever.balancing_force[i]):.6g} N"
+            result = f"F_b{bare} = μv·ΣM_p/v = {float(lever.balancing_force[i]):.6g} N{note}"
         else:
-            result = f"M_b = μv·ΣM_p/ω1 = {float(lever.balancing_moment[i]):.6g} N·m"
+            result = f"M_b{bare} = μv·ΣM_p/ω1 = {float(lever.balancing_moment[i]):.6g} N·m{note}"
         panels.append(Panel("lever", "Zhukovsky's lever (velocity polygon turned 90°)",
                             tuple(lever_items(build.linkage, kin, lever, i)),
                             (f"μv = {kin.mu_v:.6g} (m/s)/mm", result)))

@@ -213,6 +213,7 @@ class Force:
 class Couple:
     name: str
     moment: np.ndarray
+    link: str = ""  # the link it acts on (set when it is put on one)
 
 
 def _cross(u: np.ndarray, w: np.ndarray) -> np.ndarray:
@@ -245,7 +246,7 @@ class _Loads:
         self.forces.setdefault(link, []).append(f)
 
     def couple(self, link: str, c: Couple) -> None:
-        self.couples.setdefault(link, []).append(c)
+        self.couples.setdefault(link, []).append(replace(c, link=link))
 
     def total(self, link: str, n: int) -> np.ndarray:
         return sum((f.vector for f in self.forces.get(link, [])), np.zeros(n, complex))
@@ -426,6 +427,16 @@ class _Friction:
         return -rho * r * _sign(rel, _largest(omega, n))
 
 
+def _tangential(loads: _Loads, link: str, c: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Rᵗ at a dyad link's outer joint from the link's moments about the middle joint C (N),
+    ⟂ the link, and the unit vector from that joint to C."""
+    d = c - end
+    length = np.abs(d)
+    safe = np.where(length > 0, length, 1.0)
+    e = d / safe
+    return loads.moment_about(link, c) / safe * (1j * e), e
+
+
 def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia: dict[str, InertiaLoad],
                  fr: _Friction, keep_groups: bool) -> KinetostaticSolution:
     n = kin.valid.shape[0]
@@ -477,10 +488,7 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
                 friction(j)
         C = P[y.c]
         # Tangential components: moments of each link about the middle joint C.
-        d_p = C - P[y.p]
-        l_p = np.abs(d_p)
-        e_p = d_p / np.where(l_p > 0, l_p, 1.0)
-        rt_p = (loads.moment_about(i, C) / np.where(l_p > 0, l_p, 1.0)) * (1j * e_p)
+        rt_p, e_p = _tangential(loads, i, C, P[y.p])
         known_i = loads.total(i, n)
         known_k = loads.total(k, n)
         chain: list[tuple[str, np.ndarray]] = [(f"R^t_{jp.a}{i}", rt_p)]
@@ -488,10 +496,7 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
         chain += [(f.name, f.vector) for f in loads.forces.get(k, [])]
         s = rt_p + known_i + known_k
         if isinstance(y, RRR):
-            d_q = C - P[y.q]
-            l_q = np.abs(d_q)
-            e_q = d_q / np.where(l_q > 0, l_q, 1.0)
-            rt_q = (loads.moment_about(k, C) / np.where(l_q > 0, l_q, 1.0)) * (1j * e_q)
+            rt_q, e_q = _tangential(loads, k, C, P[y.q])
             chain.append((f"R^t_{jq.a}{k}", rt_q))
             s = s + rt_q
             u_close = e_q  # through the end: ∥ QC
