@@ -55,6 +55,18 @@ def _short(x: float) -> str:
     return fmt(x).rstrip("0").rstrip(".")
 
 
+def _subscripted(s: str) -> tuple[str, str]:
+    """A label written ``M_b`` as its symbol and subscript; any other text as it is.
+
+    >>> _subscripted("M_b"), _subscripted("F_i2′"), _subscripted("a_b_c"), _subscripted("x")
+    (('M', 'b'), ('F', 'i2′'), ('a_b_c', ''), ('x', ''))
+    """
+    head, sep, tail = s.partition("_")
+    if sep and head and tail and "_" not in tail and " " not in s:
+        return head, tail
+    return s, ""
+
+
 def clean_text(s: str) -> str:
     """``s`` without the characters XML 1.0 forbids (control characters other than tab, LF
     and CR; U+FFFE, U+FFFF; lone surrogates), nor the bidirectional overrides that would make
@@ -207,7 +219,10 @@ class SvgBackend:
             raise RuntimeError("SvgBackend: begin() must come first")
         if anchor not in ("start", "middle", "end"):
             raise ValueError(f"text anchor must be start, middle or end, got {anchor!r}")
-        el = self._dwg.text(clean_text(s), insert=self._pt(at))
+        base, sub = _subscripted(clean_text(s)) if style_key == "label" else (clean_text(s), "")
+        el = self._dwg.text(base, insert=self._pt(at))
+        if sub:  # M_b: the b lowered and smaller, by dy (baseline-shift is not honoured everywhere)
+            el.add(self._dwg.tspan(sub, dy=[fmt(0.3 * size)], font_size=fmt(0.7 * size)))
         el["font-family"] = self.style.font_family
         el["font-size"] = fmt(size)
         el["fill"] = self.style.pen(style_key).colour

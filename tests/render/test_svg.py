@@ -234,3 +234,17 @@ def test_svgwrite_is_imported_by_the_svg_backend_only() -> None:
         or "from svgwrite" in p.read_text(encoding="utf-8")
     )
     assert importers == ["render/svg.py"]
+
+
+def test_a_label_written_with_an_underscore_is_subscripted_by_dy() -> None:
+    """M_b: the b one step down and smaller, by dy (not baseline-shift, which Firefox ignores)."""
+    root = ET.fromstring(render_svg(demo_sheet(label="M_b"), "gm1"))
+    [text] = [t for t in root.iter(NS + "text") if t.text == "M"]
+    [sub] = list(text)
+    assert sub.tag == NS + "tspan" and sub.text == "b"
+    size = float(text.get("font-size"))
+    assert float(sub.get("dy")) == pytest.approx(0.3 * size, abs=1e-3)
+    assert float(sub.get("font-size")) == pytest.approx(0.7 * size, abs=1e-3)
+    # a title is the scene's own text: left as written
+    root = ET.fromstring(render_svg(demo_sheet(title="M_b and x_y"), "gm1"))
+    assert [t.text for t in root.iter(NS + "text")][0] == "M_b and x_y"
