@@ -450,3 +450,14 @@ def test_stated_diagram_scales_fix_the_pole_distances(tmp_path):
         assert q[k]["graphical"] == pytest.approx(other[k]["graphical"], rel=1e-12)
     code, _, err = run_cli("check", str(scene(tmp_path, "c.toml", extra=extra + "\npole_distance_mm = 40")))
     assert code == 2 and "cycle.pole_distance_mm" in err and "not both" in err
+
+
+def test_a_deltoid_asked_for_its_characteristics_is_one_line(tmp_path):
+    """AB = BC = 30, CD = AD = 72: the folded extreme position has C on A (no crank angle)."""
+    text = (SCENES / "linkage.fourbar_28_52_50_72.toml").read_text(encoding="utf-8")
+    text = text.replace("length = 28", "length = 30").replace("lengths = [52, 50]", "lengths = [30, 72]")
+    text = text.split("[measured]")[0]
+    p = tmp_path / "kite.toml"
+    p.write_text(text, encoding="utf-8")
+    code, _, err = run_cli("check", str(p))
+    assert code == 2 and err.count("\n") == 1 and ": characteristics: " in err and "deltoid" in err, err
