@@ -461,3 +461,26 @@ def test_a_deltoid_asked_for_its_characteristics_is_one_line(tmp_path):
     p.write_text(text, encoding="utf-8")
     code, _, err = run_cli("check", str(p))
     assert code == 2 and err.count("\n") == 1 and ": characteristics: " in err and "deltoid" in err, err
+
+
+def test_characteristics_of_a_kilometre_wide_drawing_stay_small(tmp_path):
+    """Lengths ×1e12 at the stated μl = 0.5 mm/mm: the arcs of radius BC ∓ AB are ~1e13 mm long;
+    they are drawn with a bounded number of chords (before: 2e13 points, memory exhausted)."""
+    from graphmech.render.primitives import ARC_MOST, Polyline
+
+    text = (SCENES / "linkage.fourbar_28_52_50_72.toml").read_text(encoding="utf-8").split("[measured]")[0]
+    for a, b in (("length = 28", "length = 28e12"), ("lengths = [52, 50]", "lengths = [52e12, 50e12]"),
+                 ("D = [72, 0]", "D = [72e12, 0]")):
+        text = text.replace(a, b)
+    p = tmp_path / "huge.toml"
+    p.write_text(text, encoding="utf-8")
+    from graphmech.methods.characteristics import draw_characteristics
+    from graphmech.methods.cycle_figures import characteristics_items
+    from graphmech.scene import load_scene
+
+    sc = load_scene(p)
+    items = characteristics_items(draw_characteristics(sc.linkage, sc.scales["l"]), sc.linkage)
+    arcs = [it for it in items if isinstance(it, Polyline)]
+    assert arcs and max(len(a.points) for a in arcs) == ARC_MOST + 1
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "huge.svg"))
+    assert code == 0 and (tmp_path / "huge.svg").stat().st_size < 200_000, err
