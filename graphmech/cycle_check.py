@@ -35,6 +35,7 @@ import numpy as np
 
 from graphmech.check import Row, Verdict, analyse, characteristic, judge, measured_entries, mechanism_size, page_size
 from graphmech.errors import SceneError
+from graphmech.scene_cycle import MAX_POLE_MM
 from graphmech.exact import characteristics as exact_ch
 from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
@@ -340,6 +341,11 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
         mu_v = mu_s[subj] * w / (mu_phi * h1)
         h2 = mu_v * w / (mu_phi * spec.scales[ka]) if ka in spec.scales else H[1]
         poles[subj] = (h1, h2)
+        for k, h, mu in ((1, h1, kv), (2, h2, ka)):  # a stated μv, μa far off the diagram's own puts P off the page
+            if mu in spec.scales and not 0.0 < h <= MAX_POLE_MM:
+                raise SceneError([("cycle.scales", f"μ{mu} of {subj}'s diagram puts its pole P{k} at H{k} = {h:.3g} mm "
+                                                   f"(at most {MAX_POLE_MM:g} mm): choose a larger μ{mu}")],
+                                 scene.source)
     paths = spec.paths if ("paths" in scene.show) else ()
     an.cycle = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
                               mu_s=mu_s, H_mm=poles, paths=paths)

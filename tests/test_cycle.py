@@ -156,6 +156,11 @@ branch = "left"
     (('paths = ["C"]', 'paths = ["Q"]'), "cycle.paths[0]"),
     (('angle = 0', 'angle = [0, 30]'), "driver.angle"),
     (('omega = 10', 'omega = 10\nepsilon_rad_s2 = 2'), "driver.epsilon"),
+    (('omega = 10', 'omega = 0'), "driver.omega"),  # v, a all 0 and μv = 0 before
+    (('paths = ["C"]', 'paths = ["C"]\npole_distance_mm = 1e308'), "cycle.pole_distance_mm"),  # exit 3 before
+    (('paths = ["C"]', 'paths = ["C"]\npole_distance_mm = [20, 5000]'), "cycle.pole_distance_mm[1]"),
+    (('paths = ["C"]', 'paths = ["C"]\nscales = { phi_deg_per_mm = 1e-300 }'), "cycle.scales.phi_deg_per_mm"),
+    (('paths = ["C"]', 'paths = ["C"]\nscales = { s_m_per_mm = 0.005, v_m_s_per_mm = 1e-300 }'), "cycle.scales"),
 ])
 def test_bad_cycle_input_is_one_line_naming_the_key(tmp_path, edit, key):
     p = scene(tmp_path)
