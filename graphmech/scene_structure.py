@@ -67,6 +67,10 @@ def _links(r: _Reader, key: str, *, required: bool = False) -> list[str] | None:
         r.problem(r.at(key), 'must be a list of link numbers such as ["2", "3"]')
         return None
     out = [r.link_id(v, f"{r.at(key)}[{i}]") for i, v in enumerate(value)]
+    for i, x in enumerate(out):
+        if x is not None and x in out[:i]:
+            r.problem(f"{r.at(key)}[{i}]", f"link {x!r} is listed twice")
+            return None
     return None if any(x is None for x in out) else out  # type: ignore[return-value]
 
 

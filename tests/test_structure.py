@@ -232,3 +232,16 @@ def test_a_five_bar_with_two_drivers_is_one_dyad():
     assert [(g.links, g.grade) for g in s.groups] == [(("3", "4"), 2)] and not s.messages
     one = structure(Topology("1", ("2", "3", "4", "5"), pairs, ("2",)))
     assert one.leftover == ("3", "4", "5") and "drivers differs from the mobility" in one.messages[0]
+
+
+@pytest.mark.parametrize("key", ["drivers", "links"])
+def test_a_link_listed_twice_among_the_drivers_or_links_is_refused(key):
+    """drivers = ["2", "2"] was taken as two drivers ("F = 1 but 2 driver(s): over-constrained")."""
+    data = {"structure": {"frame": "1", "drivers": ["2"], "pair": [
+        {"kind": "R", "links": ["1", "2"]}, {"kind": "R", "links": ["2", "3"]}, {"kind": "R", "links": ["3", "4"]},
+        {"kind": "R", "links": ["4", "1"]}]}}
+    data["structure"][key] = ["2", "2"] if key == "drivers" else ["2", "3", "4", "2"]
+    with pytest.raises(SceneError) as e:
+        parse_scene(data, "twice.toml")
+    where = f"structure.{key}[1]" if key == "drivers" else f"structure.{key}[3]"
+    assert e.value.one_line() == f"twice.toml: {where}: link '2' is listed twice"
