@@ -352,6 +352,19 @@ def _say_undetermined(an: Any, ica: ICAnalysis, position_text: Any) -> None:
     an.warnings[:] = list(dict.fromkeys(an.warnings))
 
 
+def _not_judged(base: str, name: str, ica: ICAnalysis | None) -> str:
+    """Why a measured instant-centre value has no row to be judged against."""
+    if _CENTRE.fullmatch(base) and not base.startswith(("x_", "y_", "dir_")):
+        return f"a centre is read as its coordinates: x_{base}, y_{base} (m), or dir_{base} (deg) at infinity"
+    if _ZERO.fullmatch(base):
+        return f"name one of the angles: {base}_1, {base}_2 …"
+    if _ZERO_ROW.fullmatch(base) and ica is not None:
+        stem = base.rpartition("_")[0]
+        found = sorted(k for k in ica.measured if k.startswith(stem + "_"))
+        return f"{name}: v = 0 at {len(found)} crank angle(s) only ({', '.join(found) or 'none'})"
+    return f"{name} cannot be judged here (undetermined, at infinity or not constructed)"
+
+
 def judge(an: Any, precision_mm: float) -> tuple[list[Any], list[tuple[str, str]]]:
     """Verdicts on the measured instant-centre values, within the drawing precision.
 
@@ -374,7 +387,7 @@ def judge(an: Any, precision_mm: float) -> tuple[list[Any], list[tuple[str, str]
             continue
         row = None if ica is None else ica.measured.get(name if len(an.labels) > 1 else base)
         if row is None:
-            problems.append((key, f"{name} cannot be judged here (undetermined, at infinity or not constructed)"))
+            problems.append((key, _not_judged(base, name, ica)))
             continue
         if row.unit == "deg":
             crank = getattr(an.build.linkage.driver, "length", an.size) / an.scales["l"]

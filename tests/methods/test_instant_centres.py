@@ -545,3 +545,15 @@ def test_check_json_lists_every_centre_and_what_is_undetermined():
     [pos] = doc["instant_centres"]
     assert {c["name"]: c["kind"] for c in pos["centres"]}["P13"] == "undetermined"
     assert set(pos["undetermined"]) == {"3", "4"}
+
+
+@pytest.mark.parametrize("measured, reason", [
+    ("P13=0.17", "--measured P13: a centre is read as its coordinates: x_P13, y_P13 (m), or dir_P13 (deg) at infinity"),
+    ("phi_v0_C=26.4", "--measured phi_v0_C: name one of the angles: phi_v0_C_1, phi_v0_C_2 …"),
+    ("phi_v0_C_3=10", "--measured phi_v0_C_3: phi_v0_C_3: v = 0 at 2 crank angle(s) only (phi_v0_C_1, phi_v0_C_2)"),
+])
+def test_a_measured_centre_or_zero_angle_that_has_no_row_says_what_to_write(measured, reason):
+    """Before: 'cannot be judged here (undetermined, at infinity or not constructed)' for a centre
+    that is neither — P13 of the book's four-bar is a finite point."""
+    code, _, err = run_cli("check", str(SCENES / "kin.fourbar_instant_centres.toml"), "--measured", measured)
+    assert code == 2 and err == f"kin.fourbar_instant_centres.toml: {reason}\n", err
