@@ -245,3 +245,16 @@ def test_a_link_listed_twice_among_the_drivers_or_links_is_refused(key):
         parse_scene(data, "twice.toml")
     where = f"structure.{key}[1]" if key == "drivers" else f"structure.{key}[3]"
     assert e.value.one_line() == f"twice.toml: {where}: link '2' is listed twice"
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in SCENES.glob("*.toml")
+                                        if p.stem.startswith(("dof.", "structure."))))
+def test_every_structure_sheet_fits_its_page(name):
+    """The class III message (IC engine from EG) made the block diagram's panel 403 mm wide on an
+    A4 page; HFUT 3-2's diagram was drawn at μl = 0.005 (38 mm tall, labels on top of each other)."""
+    from graphmech.cli import render_scene
+
+    svg, warnings = render_scene(SCENES / f"{name}.toml")
+    assert not [w for w in warnings if "runs off the page" in w], warnings
+    if name == "dof.hfut_cases-3-2":
+        assert "μl = 0.0025 m/mm" in svg
