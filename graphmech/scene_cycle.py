@@ -111,12 +111,9 @@ def _read_count(r: _Reader) -> int | None:
 
 
 def _read_poles(r: _Reader) -> tuple[float, float] | None:
-    r.known.add("pole_distance_mm")
-    for key in list(r.table):
-        if key == "pole_distance" or (key.startswith("pole_distance_") and key != "pole_distance_mm"):
-            r.used.add(key)
-            r.problem(r.at(key), "H is a distance on the drawing: write pole_distance_mm")
-    value = r.raw("pole_distance_mm")
+    from graphmech.scene_flywheel import pole_distance_value
+
+    value = pole_distance_value(r)
     if value is _MISSING:
         return None
     path = r.at("pole_distance_mm")

@@ -339,14 +339,20 @@ def _read_cycle(fw: _Reader) -> float | None:
     return TWO_PI / round(k)
 
 
+def pole_distance_value(r: _Reader) -> Any:
+    """The raw ``pole_distance_mm`` of a table (or ``_MISSING``); ``pole_distance`` in other units
+    is refused: H is always millimetres of drawing."""
+    r.known.add("pole_distance_mm")
+    for key in list(r.table):
+        if key == "pole_distance" or (key.startswith("pole_distance_") and key != "pole_distance_mm"):
+            r.used.add(key)
+            r.problem(r.at(key), "H is a distance on the drawing: write pole_distance_mm")
+    return r.raw("pole_distance_mm")
+
+
 def _read_pole_distance(fw: _Reader) -> float | None:
     """``pole_distance_mm``: H, drawing mm (> 0), always in millimetres of drawing."""
-    fw.known.add("pole_distance_mm")
-    for key in list(fw.table):
-        if key == "pole_distance" or (key.startswith("pole_distance_") and key != "pole_distance_mm"):
-            fw.used.add(key)
-            fw.problem(fw.at(key), "H is a distance on the drawing: write pole_distance_mm")
-    value = fw.raw("pole_distance_mm")
+    value = pole_distance_value(fw)
     if value is _MISSING:
         return None
     return fw.number(value, fw.at("pole_distance_mm"), positive=True)

@@ -28,6 +28,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from graphmech.construction.graph import values_at
 from graphmech.methods.figures import display, mechanism_items, polygon_items
 from graphmech.methods.flywheel_figures import (AXIS_OVERRUN, NUMBER_SIZE, _moved, _phi_axis_numbers, count_every,
                                                 numbers_every)
@@ -99,17 +100,6 @@ def _which(n: int) -> str:
     return "" if k == 1 else f"every {k}th of the {n} positions drawn"
 
 
-def _at(values: dict[str, Any], i: int) -> dict[str, Any]:
-    def pick(v: Any) -> Any:
-        if isinstance(v, tuple):
-            return tuple(pick(x) for x in v)
-        if isinstance(v, np.ndarray):
-            return float(v[i]) if v.ndim else float(v)
-        return v
-
-    return {k: pick(v) for k, v in values.items()}
-
-
 def _guide_spans(cyc: Any) -> dict[int, tuple[float, float]]:
     """The stretch of each guide its slider covers over the cycle (mm along the guide)."""
     from graphmech.mechanisms.linkage import RPP, RRP, SliderInput
@@ -170,7 +160,7 @@ def polygons_items(cyc: Any, panel: str) -> list[Primitive]:
     for i in drawn_positions(cyc.n):
         if i in cyc.polygon_failures:  # no polygon at a change point: the panel's note says so
             continue
-        values = _at(cyc.values, i)
+        values = values_at(cyc.values, i)
         for it in polygon_items(plan, values, panel):
             if isinstance(it, Segment) and it.role == "construction":
                 continue
