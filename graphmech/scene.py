@@ -574,6 +574,16 @@ class _Reader:
             return None
         return value
 
+    def flag(self, key: str) -> bool | None:
+        """A true/false key: its value, or None when it is missing or not a boolean (said)."""
+        value = self.raw(key)
+        if value is _MISSING:
+            return None
+        if not isinstance(value, bool):
+            self.problem(self.at(key), f"must be true or false, not {_type_name(value)}")
+            return None
+        return value
+
     def point_name(self, value: Any, path: str) -> str | None:
         if not isinstance(value, str):
             self.problem(
@@ -1634,14 +1644,12 @@ def _read_cam(top: _Reader) -> CamScene | None:
     alpha = r.value("alpha_permissible", "angle", required=False, positive=True)
     if alpha is not None and not alpha.si < math.pi / 2:
         r.problem(alpha.path, f"must be below 90°, not {alpha.text()}")
-    circles = r.raw("roller_circles")
-    if circles is not _MISSING and not isinstance(circles, bool):
-        r.problem(r.at("roller_circles"), f"must be true or false, not {_type_name(circles)}")
+    circles = r.flag("roller_circles")
     if "direction" in r.table and "direction" not in r.used:  # the crank's word for it
         r.used.add("direction")
         r.problem(r.at("direction"), 'a cam\'s sense is written rotation = "ccw" or "cw"')
     follower, kind, contact, follower_bad = _read_follower(r, r0)
-    if isinstance(circles, bool) and contact is not None and contact != "roller":
+    if circles is not None and contact is not None and contact != "roller":
         r.problem(r.at("roller_circles"), f'only for contact = "roller" (this follower is {contact})')
     program, program_bad = _read_program(r, kind)
     r.finish()

@@ -226,12 +226,7 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
     if ch is not None:
         v = ch.value("t_work", "time", required=False, positive=True)
         t_work = None if v is None else v.si
-        value = ch.raw("ranges")
-        if value is not _MISSING:
-            if not isinstance(value, bool):
-                ch.problem(ch.at("ranges"), f"must be true or false, not {_type_name(value)}")
-            else:
-                ranges = value
+        ranges = ch.flag("ranges") or False
         ch.finish()
     wants = "characteristics" in show or ch is not None or (spec is not None and spec.start == "extreme")
     why = _loop_problem(linkage) if wants and crank else ""
