@@ -118,10 +118,11 @@ def block_panel(st: Structure, topo: Topology) -> Panel:
 
 def cases_panel(cases: Sequence[dict[str, Any]]) -> Panel:
     """A book's table of printed counts, one line a case."""
+    from graphmech.structure_check import case_formula
+
     items: list[Primitive] = []
     for k, c in enumerate(cases):
-        text = (f"{c['label']}:  F = 3·{c['n']} − (2·{c['pl']} + {c['ph']} − {c['p_redundant']}) − "
-                f"{c['F_local']} = {c['F']}")
+        text = f"{c['label']}:  " + case_formula(c)
         items.append(Label(text, (0.0, -8.0 * k), (), 3.5, italic=False))
     return Panel("cases", "Mobility F = 3n − (2pl + ph − p′) − F′", tuple(items))
 
