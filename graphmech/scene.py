@@ -26,7 +26,7 @@ import re
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Iterable, Mapping
+from typing import Any, Iterable, Mapping, NoReturn
 
 from graphmech.errors import SceneError
 from graphmech.scales import PAPER
@@ -1826,6 +1826,16 @@ def _check_structure(
     return str(max(numeric) + 1) if numeric else "0"
 
 
+def _raise_sorted(problems: list[tuple[str, str]], data: Mapping[str, Any], order: Mapping[str, int],
+                  section: str, source: str) -> NoReturn:
+    """Raise the problems of a scene whose own table is ``section`` ([cam], [flywheel] …), in the
+    order of the file: top-level keys first by ``order``, then the section's keys as written."""
+    table = data.get(section)
+    sub_order = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
+    problems.sort(key=lambda p: _rank(p, order, sub_order, section))
+    raise SceneError(problems or [(section, "invalid")], source)
+
+
 def _rank(
     problem: tuple[str, str],
     order: Mapping[str, int],
@@ -2028,10 +2038,7 @@ def _parse_cam_scene(
     top.known.update(_TOP_KEYS)
     top.finish()
     if problems or cam is None:
-        cam_table = data.get("cam")
-        cam_order = {k: n for n, k in enumerate(cam_table)} if isinstance(cam_table, dict) else {}
-        problems.sort(key=lambda p: _rank(p, order, cam_order))
-        raise SceneError(problems or [("cam", "invalid")], source)
+        _raise_sorted(problems, data, order, "cam", source)
     return Scene(
         source=source,
         title=title,

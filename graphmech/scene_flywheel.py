@@ -21,7 +21,6 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from graphmech.errors import SceneError
 from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, Positions
 from graphmech.mechanisms.machine import (
     TWO_PI,
@@ -49,7 +48,7 @@ from graphmech.scene import (
     _key_text,
     _label,
     _not_for,
-    _rank,
+    _raise_sorted,
     _read_check,
     _read_header,
     _read_linkage,
@@ -914,10 +913,7 @@ def parse_flywheel_scene(
     top.known.update(_TOP_KEYS)
     top.finish()
     if problems or flywheel is None:
-        table = data.get("flywheel")
-        sub_order = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
-        problems.sort(key=lambda p: _rank(p, order, sub_order, "flywheel"))
-        raise SceneError(problems or [("flywheel", "invalid")], source)
+        _raise_sorted(problems, data, order, "flywheel", source)
     model = flywheel.machine
     positions_out = None
     if model.linkage is not None:

@@ -11,9 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from graphmech.errors import SceneError
 from graphmech.mechanisms.topology import Pair, Topology
-from graphmech.scene import (_LINKAGE_KEYS, _MISSING, _TOP_KEYS, Scene, _rank, _read_check, _read_header,
+from graphmech.scene import (_LINKAGE_KEYS, _MISSING, _TOP_KEYS, Scene, _raise_sorted, _read_check, _read_header,
                              _read_measured, _read_page, _read_scales, _Reader, _say)
 
 #: What a structure scene may show.
@@ -206,10 +205,7 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: _Reader, order
     top.known.update(_TOP_KEYS)
     top.finish()
     if problems or structure is None:
-        table = data.get("structure")
-        sub_order = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
-        problems.sort(key=lambda p: _rank(p, order, sub_order, "structure"))
-        raise SceneError(problems or [("structure", "invalid")], source)
+        _raise_sorted(problems, data, order, "structure", source)
     return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
                  precision_mm=precision, page=page, structure=structure)
 
