@@ -139,6 +139,8 @@ def _kind(scene: Any, name: str) -> str:
             return "diagram"
         if m.group(1) not in ("s", "psi") and m.group(3):
             return "diagram"
+    if m and (m.group(3) or (m.group(1) in ("s", "psi") and "@" in name)):
+        return "no_diagram"  # a diagram's ordinate of what has no diagram in this scene
     return "polygon"
 
 
@@ -528,6 +530,12 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
         g, e, drawn = values[base]
         unit = units[base]
         return [_row(an, base, unit, g, e, drawn, an.scales["l"] if drawn is not None else 1.0)]
+    if kind == "no_diagram":
+        subject = _DIAGRAM_NAME.fullmatch(base).group(2)  # type: ignore[union-attr]
+        if scene.cycle.cycle is None:
+            raise KeyError(f"{base} is read off a diagram of the full cycle: add a [cycle] table with "
+                           f"diagrams = [{subject!r}]".replace("'", '"'))
+        raise KeyError(f"{base} is read off the diagram of {subject}: add {subject} to [cycle] diagrams")
     if kind == "ranges":
         if an.ranges is None or an.ranges_exact is None:
             raise KeyError(f"{base}: the Grashof ranges need [characteristics] ranges = true")

@@ -489,3 +489,16 @@ def test_characteristics_of_a_kilometre_wide_drawing_stay_small(tmp_path):
     assert arcs and max(len(a.points) for a in arcs) == ARC_MOST + 1
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "huge.svg"))
     assert code == 0 and (tmp_path / "huge.svg").stat().st_size < 200_000, err
+
+
+@pytest.mark.parametrize("find, diagrams, reason", [
+    ('["s_C@4"]', '["2"]', "find[0]: s_C is read off the diagram of C: add C to [cycle] diagrams"),
+    ('["v_C_diagram@1.5"]', '["2"]', "find[0]: v_C_diagram is read off the diagram of C: add C to [cycle] diagrams"),
+    ('["omega_2_diagram@1.5"]', '["C"]', "find[0]: omega_2_diagram is read off the diagram of 2: add 2 to [cycle] diagrams"),
+])
+def test_a_diagram_value_of_what_has_no_diagram_says_how_to_get_one(tmp_path, find, diagrams, reason):
+    """Before: "unknown quantity 's_C'; did you mean v_C, a_C?" though s_C@4 is a documented name."""
+    p = scene(tmp_path, show='["cycle"]', find=find)
+    p.write_text(p.read_text().replace('diagrams = ["C", "2"]', f"diagrams = {diagrams}"))
+    code, _, err = run_cli("check", str(p))
+    assert code == 2 and err == f"s.toml: {reason}\n", err
