@@ -126,6 +126,9 @@ def _read_structure(st: _Reader) -> StructureScene | None:
             elif len(links) > MAX_HINGE:
                 p.problem(p.at("links"), f"{len(links)} links in one hinge: at most {MAX_HINGE}")
                 links = None
+        if kind == "R" and angle is not None:  # a revolute has no direction: the angle would be ignored
+            p.problem(p.at(p.present("angle") or "angle"), "a revolute (R) has no direction: drop angle "
+                                                             "(it is a P pair's guide or a higher pair's normal)")
         if kind in ("P", "higher") and at is not None and angle is None:
             what = "the guide's direction" if kind == "P" else "the common normal's direction"
             p.problem(p.at("angle"), f"missing: {what} (with at, for the Jacobian)")

@@ -142,6 +142,7 @@ def test_only_what_is_asked_is_computed():
     ({"kind": "Q", "links": ["1", "2"]}, "unknown value"),
     ({"kind": "R", "links": ["2", "2"]}, "listed twice"),
     ({"kind": "R", "links": ["1", "2"], "at_mm": [0, 0]}, "coordinates or none"),
+    ({"kind": "R", "links": ["1", "2"], "angle_deg": 10}, "a revolute (R) has no direction: drop angle"),  # was ignored
 ])
 def test_bad_pairs_are_one_line_errors(pair, reason):
     data = {"structure": {"frame": "1", "drivers": ["2"], "pair": [
