@@ -162,6 +162,10 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
         if s == "mechanism":
             top.problem(f"show[{i}]", 'with a full cycle or the characteristics the mechanism is drawn as "cycle" '
                                       '(all N positions) or "characteristics" (its extreme positions): drop "mechanism"')
+        elif s == "instant_centres":  # a sheet of rows, one per position: not on the cycle's sheet
+            top.problem(f"show[{i}]", 'the instant centres are drawn one row per position on a linkage sheet: show them '
+                                      'in a scene without [cycle] and [characteristics] (find still takes P13, '
+                                      'omega_3_ic@3 … here)')
         elif s in _NEEDS_CYCLE and cy is None:
             top.problem(f"show[{i}]", f'"{s}" needs a [cycle] table (positions = 12, start = "extreme" …)')
     spec = None

@@ -502,3 +502,17 @@ def test_a_diagram_value_of_what_has_no_diagram_says_how_to_get_one(tmp_path, fi
     p.write_text(p.read_text().replace('diagrams = ["C", "2"]', f"diagrams = {diagrams}"))
     code, _, err = run_cli("check", str(p))
     assert code == 2 and err == f"s.toml: {reason}\n", err
+
+
+def test_instant_centres_are_refused_on_a_cycle_sheet_but_found(tmp_path):
+    """show = ["instant_centres", "cycle"] drew the cycle and silently no centres."""
+    p = scene(tmp_path, show='["instant_centres", "cycle"]', find='["P13@4"]')
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and err.startswith("s.toml: show[0]: the instant centres are drawn one row per position")
+    assert not (tmp_path / "x.svg").exists()
+    doc = check_json(scene(tmp_path, "t.toml", show='["cycle"]', find='["P13@4", "omega_2_ic@4"]'))
+    got = values(doc)
+    # centred slider-crank r = 50, l = 200 at position 4 (φ = 90° from the extreme at 0°): the rod's
+    # ω = −ω1·r·cos φ/(l·cos β) = 0
+    assert got["omega_2_ic@4"]["graphical"] == pytest.approx(0.0, abs=1e-12)
+    assert got["x_P13@4"]["graphical"] == pytest.approx(got["x_P13@4"]["exact"], abs=1e-12)
