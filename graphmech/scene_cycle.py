@@ -180,6 +180,9 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
             if linkage is not None and name not in mech_points:
                 cy.problem(path, f"{_say(name)} is not a point of the linkage ({', '.join(sorted(mech_points))})")
                 return False
+            if linkage is not None and name in linkage.frame_points:
+                cy.problem(path, f"{_say(name)} is a point of the frame: it does not move, it has no path")
+                return False
             return True
 
         def is_subject(name: str, path: str) -> bool:

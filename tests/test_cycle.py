@@ -154,6 +154,7 @@ branch = "left"
     (('start = "extreme"', 'start = "dead"'), "cycle.start"),
     (('diagrams = ["C", "2"]', 'diagrams = ["A"]'), "cycle.diagrams[0]"),
     (('paths = ["C"]', 'paths = ["Q"]'), "cycle.paths[0]"),
+    (('paths = ["C"]', 'paths = ["C", "A"]'), "cycle.paths[1]"),  # the frame pivot's "path": was drawn as a dot
     (('angle = 0', 'angle = [0, 30]'), "driver.angle"),
     (('omega = 10', 'omega = 10\nepsilon_rad_s2 = 2'), "driver.epsilon"),
     (('omega = 10', 'omega = 0'), "driver.omega"),  # v, a all 0 and μv = 0 before
