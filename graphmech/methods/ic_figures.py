@@ -289,7 +289,8 @@ def _omega_note(ic: InstantCentres, lid: str, mu_l: float) -> str:
         v = math.hypot(*mo.v0) * mu_l
         return f"link {lid} translates ({_sub(mo.found[3])} ∞): v = v({_sub(mo.found[2])}) = {v:.4g} m/s"
     p1i, pij, p1j = (_sub(n) for n in mo.found[1:])
-    return f"ω{subscript(lid)} = ω{subscript(i)}·{p1i}{pij}/{p1j}{pij} = {mo.omega:.4g} rad/s"
+    omega = f"{mo.omega:.4g}".replace("-", "−")  # the typographic minus, as everywhere on the sheet
+    return f"ω{subscript(lid)} = ω{subscript(i)}·{p1i}{pij}/{p1j}{pij} = {omega} rad/s"
 
 
 def _sub(name: str) -> str:

@@ -560,3 +560,12 @@ def test_a_measured_centre_or_zero_angle_that_has_no_row_says_what_to_write(meas
     that is neither — P13 of the book's four-bar is a finite point."""
     code, _, err = run_cli("check", str(SCENES / "kin.fourbar_instant_centres.toml"), "--measured", measured)
     assert code == 2 and err == f"kin.fourbar_instant_centres.toml: {reason}\n", err
+
+
+def test_a_negative_omega_on_the_sheet_has_a_minus_sign():
+    """The coupler at the rocker's extreme turns at ω3 = −ω2·AB/BC = −5 rad/s; the note printed
+    '-5' with a hyphen."""
+    from graphmech.cli import render_scene
+
+    svg, _ = render_scene(SCENES / "ic.fourbar_dead_centre.toml")
+    assert "= −5 rad/s" in svg and "= -5 rad/s" not in svg
