@@ -52,7 +52,7 @@ from graphmech.mechanisms.linkage import (
     Positions,
     SliderInput,
 )
-from graphmech.tolerances import DRAWING_PRECISION_MM, PARALLEL_SIN
+from graphmech.tolerances import DRAWING_PRECISION_MM, MAX_PRECISION_MM, PARALLEL_SIN
 
 #: A scene file larger than this (bytes) is refused before it is parsed.
 MAX_BYTES = 1 << 20
@@ -1325,6 +1325,9 @@ def _read_check(top: _Reader) -> float:
     precision = DRAWING_PRECISION_MM
     if value is not _MISSING:
         x = r.number(value, r.at("precision_mm"), positive=True)
+        if x is not None and x > MAX_PRECISION_MM:
+            r.problem(r.at("precision_mm"), f"at most {MAX_PRECISION_MM:g} mm, not {x:g}: coarser judges nothing")
+            x = None
         precision = precision if x is None else x
     r.finish()
     return precision

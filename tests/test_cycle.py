@@ -517,3 +517,16 @@ def test_instant_centres_are_refused_on_a_cycle_sheet_but_found(tmp_path):
     # ω = −ω1·r·cos φ/(l·cos β) = 0
     assert got["omega_2_ic@4"]["graphical"] == pytest.approx(0.0, abs=1e-12)
     assert got["x_P13@4"]["graphical"] == pytest.approx(got["x_P13@4"]["exact"], abs=1e-12)
+
+
+def test_an_absurd_drawing_precision_is_refused_not_an_internal_error(tmp_path):
+    """--precision 1e308 made θ's protractor tolerance inf, and check --json died on it (exit 3)."""
+    scene_path = SCENES / "linkage.fourbar_28_52_50_72.toml"
+    code, _, err = run_cli("check", "--json", str(scene_path), "--precision", "1e308")
+    assert code == 2 and err == "graphmech: --precision must be a number of mm above 0 and at most 10\n", err
+    p = tmp_path / "coarse.toml"
+    p.write_text(scene_path.read_text(encoding="utf-8") + "\n[check]\nprecision_mm = 1e308\n", encoding="utf-8")
+    code, _, err = run_cli("check", "--json", str(p))
+    assert code == 2 and err == "coarse.toml: check.precision_mm: at most 10 mm, not 1e+308: coarser judges nothing\n"
+    doc = check_json(scene_path, "--precision", "10")  # the coarsest accepted: finite tolerances
+    assert all(math.isfinite(m["tolerance"]) for m in doc["measured"])
