@@ -41,7 +41,7 @@ from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.characteristics import DrawnCharacteristics, draw_characteristics, grashof_ranges
 from graphmech.methods.full_cycle import FullCycle, evaluate_cycle, sliders
-from graphmech.scales import format_scale, round_scale
+from graphmech.scales import drawn_size_problem, format_scale, round_scale
 
 __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "nice_pole"]
 
@@ -157,6 +157,9 @@ def _wants(scene: Any, names: list[str]) -> dict[str, bool]:
 def _mech_scale(scene: Any, linkage: Linkage) -> float:
     """μl: stated, or a round value that fits the mechanism's sweep into about 130 mm (or 45 % of the page)."""
     if "l" in scene.scales:
+        why = drawn_size_problem(mechanism_size(linkage), float(scene.scales["l"]))
+        if why:
+            raise SceneError([("scales", why)], scene.source)
         return float(scene.scales["l"])
     size = 2.5 * mechanism_size(linkage)  # the longest link or frame distance; the sweep is about 2.5×
     w, h = page_size(scene)

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from graphmech.mechanisms.topology import Mobility, Structure, grubler, mobility, roman, structure
+from graphmech.scales import drawn_size_problem
 
 #: find names that need the Jacobian (the others are counts or the decomposition).
 _NEEDS_RANK = {"F", "F_actual", "rank", "p_redundant", "p_redundant_actual"}
@@ -89,6 +90,13 @@ def analyse_structure(scene: Any) -> StructureAnalysis:
     topo = ss.topology
     if topo is None:
         return an
+    if ss.geometry and "l" in scene.scales:  # a stated μl must draw the pairs on paper
+        xs, ys = zip(*(p.at for p in topo.pairs))
+        why = drawn_size_problem(max(max(xs) - min(xs), max(ys) - min(ys)), float(scene.scales["l"]))
+        if why:
+            from graphmech.errors import SceneError
+
+            raise SceneError([("scales", why)], scene.source)
     find = {n.partition("@")[0] for n in scene.find}
     rank = ss.geometry and (not find or bool(find & _NEEDS_RANK) or "structure" in scene.show)
     an.mobility = m = mobility(topo, bool(rank))

@@ -469,14 +469,15 @@ def test_a_deltoid_asked_for_its_characteristics_is_one_line(tmp_path):
     assert code == 2 and err.count("\n") == 1 and ": characteristics: " in err and "deltoid" in err, err
 
 
-def test_characteristics_of_a_kilometre_wide_drawing_stay_small(tmp_path):
-    """Lengths ×1e12 at the stated μl = 0.5 mm/mm: the arcs of radius BC ∓ AB are ~1e13 mm long;
-    they are drawn with a bounded number of chords (before: 2e13 points, memory exhausted)."""
+def test_characteristics_of_a_hundred_metre_drawing_stay_small(tmp_path):
+    """Lengths ×1e3 at the stated μl = 0.5 mm/mm: the arcs of radius BC ∓ AB are ~1e5 mm long and
+    drawn with a bounded number of chords (×1e12 took 2e13 points and exhausted memory; such a
+    drawing, 1.4e14 mm across, is now refused by the bound on the drawn size)."""
     from graphmech.render.primitives import ARC_MOST, Polyline
 
     text = (SCENES / "linkage.fourbar_28_52_50_72.toml").read_text(encoding="utf-8").split("[measured]")[0]
-    for a, b in (("length = 28", "length = 28e12"), ("lengths = [52, 50]", "lengths = [52e12, 50e12]"),
-                 ("D = [72, 0]", "D = [72e12, 0]")):
+    for a, b in (("length = 28", "length = 28e3"), ("lengths = [52, 50]", "lengths = [52e3, 50e3]"),
+                 ("D = [72, 0]", "D = [72e3, 0]")):
         text = text.replace(a, b)
     p = tmp_path / "huge.toml"
     p.write_text(text, encoding="utf-8")
@@ -530,3 +531,13 @@ def test_an_absurd_drawing_precision_is_refused_not_an_internal_error(tmp_path):
     assert code == 2 and err == "coarse.toml: check.precision_mm: at most 10 mm, not 1e+308: coarser judges nothing\n"
     doc = check_json(scene_path, "--precision", "10")  # the coarsest accepted: finite tolerances
     assert all(math.isfinite(m["tolerance"]) for m in doc["measured"])
+
+
+@pytest.mark.parametrize("scale, across", [("1e-300", "2e+299"), ("1e300", "2e-301")])
+def test_a_stated_scale_that_cannot_be_drawn_is_refused(tmp_path, scale, across):
+    """μl = 1e-300 m/mm (render: exit 3) or 1e300 (check: ZeroDivisionError, exit 3)."""
+    p = scene(tmp_path, show='["cycle"]', find='[]')
+    p.write_text(p.read_text().replace("[units]", f"[scales]\nl_m_per_mm = {scale}\n\n[units]"))
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and err.startswith(f"s.toml: scales: μl = {scale.replace('1e300', '1e+300')} m/mm draws the "
+                                        f"mechanism {across} mm across"), err
