@@ -221,7 +221,8 @@ def ic_panels(an: Any, page: tuple[float, float], first_row: int = 0) -> list[Pa
         notes += [f"{centre_name(*c.links)}: undetermined — {c.why}" for c in ic.centres.values() if not c.known]
         for x, zs in ica.zeros.items():
             notes.append(f"v{subscript(x)} = 0 at φ{subscript(build.linkage.driver.link)} = "
-                         + ", ".join(f"{math.degrees(z):.2f}°" for z in zs))
+                         + ", ".join(f"{math.degrees(z):.2f}°" for z in zs) if zs else
+                         f"v{subscript(x)} ≠ 0 over the whole turn")  # (was "= 0 at φ = " and nothing)
         marks = []
         for text in least:
             ab = split_line(text, point_names(build.linkage))

@@ -569,3 +569,16 @@ def test_a_negative_omega_on_the_sheet_has_a_minus_sign():
 
     svg, _ = render_scene(SCENES / "ic.fourbar_dead_centre.toml")
     assert "= −5 rad/s" in svg and "= -5 rad/s" not in svg
+
+
+def test_a_velocity_that_never_vanishes_is_said_so_on_the_sheet(tmp_path):
+    """The parallelogram's v_C = ω·CD never vanishes: the note read "vC = 0 at φ₂ = " and nothing."""
+    from graphmech.cli import render_scene
+
+    text = (SCENES / "ic.parallelogram.toml").read_text(encoding="utf-8")
+    p = tmp_path / "par.toml"
+    p.write_text("\n".join('find = ["phi_v0_C"]' if line.startswith("find") else line
+                           for line in text.splitlines()) + "\n", encoding="utf-8")
+    svg, warnings = render_scene(p)
+    assert "v_C does not vanish over the crank's turn" in " ".join(warnings)
+    assert "= 0 at φ₂ = <" not in svg and "≠ 0 over the whole turn" in svg
