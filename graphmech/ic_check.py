@@ -446,12 +446,16 @@ def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str])
     if m:
         if m.group(1) not in names:
             return f"no point {m.group(1)!r} in the linkage"
+        if m.group(1) in linkage.frame_points:  # no moving link carries it (was an internal error)
+            return f"{m.group(1)} is a point of the frame: its velocity is always 0"
         return ("speed", m.group(1))
     m = _LEAST.fullmatch(base)
     if m:
         ab = split_line(m.group(2), names)
         if ab is None:
             return f"{m.group(2)!r} is not two points of the linkage (write v_min_BC_ic for line BC)"
+        if ab[0] == ab[1]:
+            return f"{m.group(2)!r} is one point twice: name a line by two points (v_min_BC_ic for line BC)"
         lid = common_link(linkage, *ab)
         if lid is None:
             return f"{ab[0]} and {ab[1]} are not points of one moving link"

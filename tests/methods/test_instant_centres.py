@@ -582,3 +582,17 @@ def test_a_velocity_that_never_vanishes_is_said_so_on_the_sheet(tmp_path):
     svg, warnings = render_scene(p)
     assert "v_C does not vanish over the crank's turn" in " ".join(warnings)
     assert "= 0 at φ₂ = <" not in svg and "≠ 0 over the whole turn" in svg
+
+
+@pytest.mark.parametrize("name, reason", [
+    ("v_A_ic", "A is a point of the frame: its velocity is always 0"),  # was an internal error (KeyError)
+    ("v_D_ic", "D is a point of the frame: its velocity is always 0"),
+    ("v_min_BB_ic", "'BB' is one point twice: name a line by two points (v_min_BC_ic for line BC)"),  # was a warning
+])
+def test_a_frame_points_speed_or_a_one_point_line_is_refused(tmp_path, name, reason):
+    text = (SCENES / "kin.fourbar_instant_centres.toml").read_text(encoding="utf-8")
+    p = tmp_path / "ic.toml"
+    p.write_text("\n".join(f'find = ["{name}"]' if line.startswith("find") else line
+                           for line in text.splitlines()) + "\n", encoding="utf-8")
+    code, _, err = run_cli("check", str(p))
+    assert code == 2 and err == f"ic.toml: find[0]: {reason}\n", err
