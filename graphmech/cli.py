@@ -147,8 +147,11 @@ def _check(args: argparse.Namespace) -> int:
     from graphmech.problems import check, with_precision
     from graphmech.scene import load_scene
 
-    if args.precision is not None and not (args.precision > 0 and math.isfinite(args.precision)):
-        print("graphmech: --precision must be a positive number of mm", file=sys.stderr)
+    from graphmech.tolerances import MAX_PRECISION_MM
+
+    if args.precision is not None and not 0 < args.precision <= MAX_PRECISION_MM:
+        print(f"graphmech: --precision must be a number of mm above 0 and at most {MAX_PRECISION_MM:g}",
+              file=sys.stderr)
         return EXIT_BAD_INPUT
     extra = _parse_measured(args.measured)
     scene = with_precision(load_scene(args.scene), args.precision)

@@ -35,12 +35,13 @@ import numpy as np
 
 from graphmech.check import Row, Verdict, analyse, characteristic, judge, measured_entries, mechanism_size, page_size
 from graphmech.errors import SceneError
+from graphmech.scene_cycle import MAX_POLE_MM
 from graphmech.exact import characteristics as exact_ch
 from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.characteristics import DrawnCharacteristics, draw_characteristics, grashof_ranges
 from graphmech.methods.full_cycle import FullCycle, evaluate_cycle, sliders
-from graphmech.scales import format_scale, round_scale
+from graphmech.scales import drawn_size_problem, format_scale, round_scale
 
 __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "nice_pole"]
 
@@ -138,6 +139,8 @@ def _kind(scene: Any, name: str) -> str:
             return "diagram"
         if m.group(1) not in ("s", "psi") and m.group(3):
             return "diagram"
+    if m and (m.group(3) or (m.group(1) in ("s", "psi") and "@" in name)):
+        return "no_diagram"  # a diagram's ordinate of what has no diagram in this scene
     return "polygon"
 
 
@@ -154,6 +157,9 @@ def _wants(scene: Any, names: list[str]) -> dict[str, bool]:
 def _mech_scale(scene: Any, linkage: Linkage) -> float:
     """μl: stated, or a round value that fits the mechanism's sweep into about 130 mm (or 45 % of the page)."""
     if "l" in scene.scales:
+        why = drawn_size_problem(mechanism_size(linkage), float(scene.scales["l"]))
+        if why:
+            raise SceneError([("scales", why)], scene.source)
         return float(scene.scales["l"])
     size = 2.5 * mechanism_size(linkage)  # the longest link or frame distance; the sweep is about 2.5×
     w, h = page_size(scene)
@@ -340,6 +346,11 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
         mu_v = mu_s[subj] * w / (mu_phi * h1)
         h2 = mu_v * w / (mu_phi * spec.scales[ka]) if ka in spec.scales else H[1]
         poles[subj] = (h1, h2)
+        for k, h, mu in ((1, h1, kv), (2, h2, ka)):  # a stated μv, μa far off the diagram's own puts P off the page
+            if mu in spec.scales and not 0.0 < h <= MAX_POLE_MM:
+                raise SceneError([("cycle.scales", f"μ{mu} of {subj}'s diagram puts its pole P{k} at H{k} = {h:.3g} mm "
+                                                   f"(at most {MAX_POLE_MM:g} mm): choose a larger μ{mu}")],
+                                 scene.source)
     paths = spec.paths if ("paths" in scene.show) else ()
     an.cycle = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
                               mu_s=mu_s, H_mm=poles, paths=paths)
@@ -522,6 +533,12 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
         g, e, drawn = values[base]
         unit = units[base]
         return [_row(an, base, unit, g, e, drawn, an.scales["l"] if drawn is not None else 1.0)]
+    if kind == "no_diagram":
+        subject = _DIAGRAM_NAME.fullmatch(base).group(2)  # type: ignore[union-attr]
+        if scene.cycle.cycle is None:
+            raise KeyError(f"{base} is read off a diagram of the full cycle: add a [cycle] table with "
+                           f"diagrams = [{subject!r}]".replace("'", '"'))
+        raise KeyError(f"{base} is read off the diagram of {subject}: add {subject} to [cycle] diagrams")
     if kind == "ranges":
         if an.ranges is None or an.ranges_exact is None:
             raise KeyError(f"{base}: the Grashof ranges need [characteristics] ranges = true")

@@ -352,6 +352,19 @@ def _say_undetermined(an: Any, ica: ICAnalysis, position_text: Any) -> None:
     an.warnings[:] = list(dict.fromkeys(an.warnings))
 
 
+def _not_judged(base: str, name: str, ica: ICAnalysis | None) -> str:
+    """Why a measured instant-centre value has no row to be judged against."""
+    if _CENTRE.fullmatch(base) and not base.startswith(("x_", "y_", "dir_")):
+        return f"a centre is read as its coordinates: x_{base}, y_{base} (m), or dir_{base} (deg) at infinity"
+    if _ZERO.fullmatch(base):
+        return f"name one of the angles: {base}_1, {base}_2 …"
+    if _ZERO_ROW.fullmatch(base) and ica is not None:
+        stem = base.rpartition("_")[0]
+        found = sorted(k for k in ica.measured if k.startswith(stem + "_"))
+        return f"{name}: v = 0 at {len(found)} crank angle(s) only ({', '.join(found) or 'none'})"
+    return f"{name} cannot be judged here (undetermined, at infinity or not constructed)"
+
+
 def judge(an: Any, precision_mm: float) -> tuple[list[Any], list[tuple[str, str]]]:
     """Verdicts on the measured instant-centre values, within the drawing precision.
 
@@ -374,7 +387,7 @@ def judge(an: Any, precision_mm: float) -> tuple[list[Any], list[tuple[str, str]
             continue
         row = None if ica is None else ica.measured.get(name if len(an.labels) > 1 else base)
         if row is None:
-            problems.append((key, f"{name} cannot be judged here (undetermined, at infinity or not constructed)"))
+            problems.append((key, _not_judged(base, name, ica)))
             continue
         if row.unit == "deg":
             crank = getattr(an.build.linkage.driver, "length", an.size) / an.scales["l"]
@@ -433,12 +446,16 @@ def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str])
     if m:
         if m.group(1) not in names:
             return f"no point {m.group(1)!r} in the linkage"
+        if m.group(1) in linkage.frame_points:  # no moving link carries it (was an internal error)
+            return f"{m.group(1)} is a point of the frame: its velocity is always 0"
         return ("speed", m.group(1))
     m = _LEAST.fullmatch(base)
     if m:
         ab = split_line(m.group(2), names)
         if ab is None:
             return f"{m.group(2)!r} is not two points of the linkage (write v_min_BC_ic for line BC)"
+        if ab[0] == ab[1]:
+            return f"{m.group(2)!r} is one point twice: name a line by two points (v_min_BC_ic for line BC)"
         lid = common_link(linkage, *ab)
         if lid is None:
             return f"{ab[0]} and {ab[1]} are not points of one moving link"

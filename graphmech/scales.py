@@ -61,3 +61,21 @@ def format_scale(symbol: str, value: float) -> str:
     if symbol == "phi":
         value = math.degrees(value)
     return f"{sym} = {value:.6g} {unit}"
+
+#: A mechanism drawn at a stated μl must come out between these sizes on the paper, mm (beyond,
+#: the drawing's numbers leave double precision: 1e-300 m/mm drew kilometres of 1e298).
+DRAWN_SIZE_RANGE_MM = (0.1, 1e6)
+
+
+def drawn_size_problem(size_m: float, mu_l: float) -> str | None:
+    """Why a mechanism ``size_m`` across (m) cannot be drawn at ``mu_l`` (m/mm); None if it can.
+
+    >>> drawn_size_problem(0.1, 0.001) is None, drawn_size_problem(0.1, 1e-300)[:38]
+    (True, 'μl = 1e-300 m/mm draws the mechanism 1')
+    """
+    lo, hi = DRAWN_SIZE_RANGE_MM
+    drawn = size_m / mu_l
+    if lo <= drawn <= hi:
+        return None
+    return (f"μl = {mu_l:g} m/mm draws the mechanism {drawn:.3g} mm across: choose μl so that it is "
+            f"{lo:g} … {hi:g} mm")

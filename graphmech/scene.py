@@ -26,7 +26,7 @@ import re
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Iterable, Mapping
+from typing import Any, Iterable, Mapping, NoReturn
 
 from graphmech.errors import SceneError
 from graphmech.scales import PAPER
@@ -52,7 +52,7 @@ from graphmech.mechanisms.linkage import (
     Positions,
     SliderInput,
 )
-from graphmech.tolerances import DRAWING_PRECISION_MM, PARALLEL_SIN
+from graphmech.tolerances import DRAWING_PRECISION_MM, MAX_PRECISION_MM, PARALLEL_SIN
 
 #: A scene file larger than this (bytes) is refused before it is parsed.
 MAX_BYTES = 1 << 20
@@ -571,6 +571,16 @@ class _Reader:
                 self.at(key),
                 f"unknown value {_say(value)}: use {_choices(options)}" + _maybe(value, options),
             )
+            return None
+        return value
+
+    def flag(self, key: str) -> bool | None:
+        """A true/false key: its value, or None when it is missing or not a boolean (said)."""
+        value = self.raw(key)
+        if value is _MISSING:
+            return None
+        if not isinstance(value, bool):
+            self.problem(self.at(key), f"must be true or false, not {_type_name(value)}")
             return None
         return value
 
@@ -1317,6 +1327,9 @@ def _read_check(top: _Reader) -> float:
     precision = DRAWING_PRECISION_MM
     if value is not _MISSING:
         x = r.number(value, r.at("precision_mm"), positive=True)
+        if x is not None and x > MAX_PRECISION_MM:
+            r.problem(r.at("precision_mm"), f"at most {MAX_PRECISION_MM:g} mm, not {x:g}: coarser judges nothing")
+            x = None
         precision = precision if x is None else x
     r.finish()
     return precision
@@ -1636,14 +1649,12 @@ def _read_cam(top: _Reader) -> CamScene | None:
     alpha = r.value("alpha_permissible", "angle", required=False, positive=True)
     if alpha is not None and not alpha.si < math.pi / 2:
         r.problem(alpha.path, f"must be below 90°, not {alpha.text()}")
-    circles = r.raw("roller_circles")
-    if circles is not _MISSING and not isinstance(circles, bool):
-        r.problem(r.at("roller_circles"), f"must be true or false, not {_type_name(circles)}")
+    circles = r.flag("roller_circles")
     if "direction" in r.table and "direction" not in r.used:  # the crank's word for it
         r.used.add("direction")
         r.problem(r.at("direction"), 'a cam\'s sense is written rotation = "ccw" or "cw"')
     follower, kind, contact, follower_bad = _read_follower(r, r0)
-    if isinstance(circles, bool) and contact is not None and contact != "roller":
+    if circles is not None and contact is not None and contact != "roller":
         r.problem(r.at("roller_circles"), f'only for contact = "roller" (this follower is {contact})')
     program, program_bad = _read_program(r, kind)
     r.finish()
@@ -1818,6 +1829,16 @@ def _check_structure(
         return fixed
     numeric = [int(x) for x in owner if x.isdigit()]
     return str(max(numeric) + 1) if numeric else "0"
+
+
+def _raise_sorted(problems: list[tuple[str, str]], data: Mapping[str, Any], order: Mapping[str, int],
+                  section: str, source: str) -> NoReturn:
+    """Raise the problems of a scene whose own table is ``section`` ([cam], [flywheel] …), in the
+    order of the file: top-level keys first by ``order``, then the section's keys as written."""
+    table = data.get(section)
+    sub_order = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
+    problems.sort(key=lambda p: _rank(p, order, sub_order, section))
+    raise SceneError(problems or [(section, "invalid")], source)
 
 
 def _rank(
@@ -2022,10 +2043,7 @@ def _parse_cam_scene(
     top.known.update(_TOP_KEYS)
     top.finish()
     if problems or cam is None:
-        cam_table = data.get("cam")
-        cam_order = {k: n for n, k in enumerate(cam_table)} if isinstance(cam_table, dict) else {}
-        problems.sort(key=lambda p: _rank(p, order, cam_order))
-        raise SceneError(problems or [("cam", "invalid")], source)
+        _raise_sorted(problems, data, order, "cam", source)
     return Scene(
         source=source,
         title=title,

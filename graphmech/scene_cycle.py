@@ -11,6 +11,7 @@ where the working stroke begins — and the scene's positions become those N, la
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -29,6 +30,10 @@ MIN_CYCLE_POSITIONS, DEFAULT_CYCLE_POSITIONS = 4, 12
 START_CHOICES = ("driver", "extreme")
 #: The pole distances H₁, H₂ when the scene gives none, mm.
 DEFAULT_POLE_MM = 20.0
+#: The longest pole distance, mm (stated or fixed by a stated μv, μa): farther, the pole leaves any page.
+MAX_POLE_MM = 1000.0
+#: The φ axis of the diagrams (a whole turn) is between these lengths on the drawing, mm.
+PHI_AXIS_RANGE_MM = (10.0, 2000.0)
 
 
 @dataclass(frozen=True)
@@ -106,19 +111,23 @@ def _read_count(r: _Reader) -> int | None:
 
 
 def _read_poles(r: _Reader) -> tuple[float, float] | None:
-    r.known.add("pole_distance_mm")
-    for key in list(r.table):
-        if key == "pole_distance" or (key.startswith("pole_distance_") and key != "pole_distance_mm"):
-            r.used.add(key)
-            r.problem(r.at(key), "H is a distance on the drawing: write pole_distance_mm")
-    value = r.raw("pole_distance_mm")
+    from graphmech.scene_flywheel import pole_distance_value
+
+    value = pole_distance_value(r)
     if value is _MISSING:
         return None
     path = r.at("pole_distance_mm")
     if isinstance(value, list):
         xs = r.numbers(value, path, 2, positive=True, shape="[H1, H2]")
+        if xs is not None and max(xs) > MAX_POLE_MM:
+            k = int(xs[1] > MAX_POLE_MM)
+            r.problem(f"{path}[{k}]", f"H{k + 1} = {xs[k]:g} mm: at most {MAX_POLE_MM:g} mm, or the pole leaves the page")
+            return None
         return None if xs is None else (xs[0], xs[1])
     x = r.number(value, path, positive=True)
+    if x is not None and x > MAX_POLE_MM:
+        r.problem(path, f"H = {x:g} mm: at most {MAX_POLE_MM:g} mm, or the pole leaves the page")
+        return None
     return None if x is None else (x, x)
 
 
@@ -153,6 +162,10 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
         if s == "mechanism":
             top.problem(f"show[{i}]", 'with a full cycle or the characteristics the mechanism is drawn as "cycle" '
                                       '(all N positions) or "characteristics" (its extreme positions): drop "mechanism"')
+        elif s == "instant_centres":  # a sheet of rows, one per position: not on the cycle's sheet
+            top.problem(f"show[{i}]", 'the instant centres are drawn one row per position on a linkage sheet: show them '
+                                      'in a scene without [cycle] and [characteristics] (find still takes P13, '
+                                      'omega_3_ic@3 … here)')
         elif s in _NEEDS_CYCLE and cy is None:
             top.problem(f"show[{i}]", f'"{s}" needs a [cycle] table (positions = 12, start = "extreme" …)')
     spec = None
@@ -166,6 +179,9 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
         def is_point(name: str, path: str) -> bool:
             if linkage is not None and name not in mech_points:
                 cy.problem(path, f"{_say(name)} is not a point of the linkage ({', '.join(sorted(mech_points))})")
+                return False
+            if linkage is not None and name in linkage.frame_points:
+                cy.problem(path, f"{_say(name)} is a point of the frame: it does not move, it has no path")
                 return False
             return True
 
@@ -183,6 +199,14 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
         scales = _read_scales(cy, entries=[("phi", "angle"), ("s", "length"), ("psi", "angle"), ("v", "velocity"),
                                            ("a", "acceleration"), ("omega", "omega"), ("epsilon", "epsilon")])
         poles = _read_poles(cy)
+        if "phi" in scales:  # a whole turn's φ axis must fit a drawing
+            axis = 2.0 * math.pi / scales["phi"]
+            lo, hi = PHI_AXIS_RANGE_MM
+            if not lo <= axis <= hi:
+                tab = cy.table.get("scales")
+                key = next((k for k in tab if k.startswith("phi")), "phi") if isinstance(tab, dict) else "phi"
+                cy.problem(f"cycle.scales.{key}", f"μφ makes the φ axis of a turn {axis:.3g} mm long: choose μφ so that it "
+                                           f"is {lo:g} … {hi:g} mm (phi_deg_per_mm = {360 / hi:g} … {360 / lo:g})")
         derived = [k for k in ("v", "a", "omega", "epsilon") if k in scales]
         if poles is not None and derived:  # μv = μs·ω₁/(μφ·H₁): one fixes the other
             cy.problem(cy.at("pole_distance_mm"), f"give the pole distances or the diagrams' μ{derived[0]}, not both: "
@@ -194,6 +218,9 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
             if s == "diagrams" and "diagrams" not in cy.table:
                 top.problem(f"show[{i}]", '"diagrams" needs what to plot: [cycle] diagrams = ["C", "3"] '
                                           "(sliders, rotating links)")
+        if diagrams and crank and linkage is not None and linkage.driver.omega == 0.0:  # type: ignore[union-attr]
+            top.problem("driver.omega", "the s–φ, v–φ, a–φ diagrams need a turning crank (ω ≠ 0): at ω = 0 their "
+                                        "φ axis is no time axis and every v, a is 0")
         if diagrams and crank and linkage is not None and linkage.driver.epsilon != 0.0:  # type: ignore[union-attr]
             top.problem("driver.epsilon", "the s–φ, v–φ, a–φ diagrams need a crank turning uniformly (ε = 0): "
                                           "their φ axis is a time axis only then")
@@ -206,12 +233,7 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
     if ch is not None:
         v = ch.value("t_work", "time", required=False, positive=True)
         t_work = None if v is None else v.si
-        value = ch.raw("ranges")
-        if value is not _MISSING:
-            if not isinstance(value, bool):
-                ch.problem(ch.at("ranges"), f"must be true or false, not {_type_name(value)}")
-            else:
-                ranges = value
+        ranges = ch.flag("ranges") or False
         ch.finish()
     wants = "characteristics" in show or ch is not None or (spec is not None and spec.start == "extreme")
     why = _loop_problem(linkage) if wants and crank else ""

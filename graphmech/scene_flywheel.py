@@ -21,7 +21,6 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from graphmech.errors import SceneError
 from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, Positions
 from graphmech.mechanisms.machine import (
     TWO_PI,
@@ -49,7 +48,7 @@ from graphmech.scene import (
     _key_text,
     _label,
     _not_for,
-    _rank,
+    _raise_sorted,
     _read_check,
     _read_header,
     _read_linkage,
@@ -339,14 +338,20 @@ def _read_cycle(fw: _Reader) -> float | None:
     return TWO_PI / round(k)
 
 
+def pole_distance_value(r: _Reader) -> Any:
+    """The raw ``pole_distance_mm`` of a table (or ``_MISSING``); ``pole_distance`` in other units
+    is refused: H is always millimetres of drawing."""
+    r.known.add("pole_distance_mm")
+    for key in list(r.table):
+        if key == "pole_distance" or (key.startswith("pole_distance_") and key != "pole_distance_mm"):
+            r.used.add(key)
+            r.problem(r.at(key), "H is a distance on the drawing: write pole_distance_mm")
+    return r.raw("pole_distance_mm")
+
+
 def _read_pole_distance(fw: _Reader) -> float | None:
     """``pole_distance_mm``: H, drawing mm (> 0), always in millimetres of drawing."""
-    fw.known.add("pole_distance_mm")
-    for key in list(fw.table):
-        if key == "pole_distance" or (key.startswith("pole_distance_") and key != "pole_distance_mm"):
-            fw.used.add(key)
-            fw.problem(fw.at(key), "H is a distance on the drawing: write pole_distance_mm")
-    value = fw.raw("pole_distance_mm")
+    value = pole_distance_value(fw)
     if value is _MISSING:
         return None
     return fw.number(value, fw.at("pole_distance_mm"), positive=True)
@@ -908,10 +913,7 @@ def parse_flywheel_scene(
     top.known.update(_TOP_KEYS)
     top.finish()
     if problems or flywheel is None:
-        table = data.get("flywheel")
-        sub_order = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
-        problems.sort(key=lambda p: _rank(p, order, sub_order, "flywheel"))
-        raise SceneError(problems or [("flywheel", "invalid")], source)
+        _raise_sorted(problems, data, order, "flywheel", source)
     model = flywheel.machine
     positions_out = None
     if model.linkage is not None:

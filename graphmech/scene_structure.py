@@ -11,9 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from graphmech.errors import SceneError
 from graphmech.mechanisms.topology import Pair, Topology
-from graphmech.scene import (_LINKAGE_KEYS, _MISSING, _TOP_KEYS, Scene, _rank, _read_check, _read_header,
+from graphmech.scene import (_LINKAGE_KEYS, _MISSING, _TOP_KEYS, Scene, _raise_sorted, _read_check, _read_header,
                              _read_measured, _read_page, _read_scales, _Reader, _say)
 
 #: What a structure scene may show.
@@ -67,6 +66,10 @@ def _links(r: _Reader, key: str, *, required: bool = False) -> list[str] | None:
         r.problem(r.at(key), 'must be a list of link numbers such as ["2", "3"]')
         return None
     out = [r.link_id(v, f"{r.at(key)}[{i}]") for i, v in enumerate(value)]
+    for i, x in enumerate(out):
+        if x is not None and x in out[:i]:
+            r.problem(f"{r.at(key)}[{i}]", f"link {x!r} is listed twice")
+            return None
     return None if any(x is None for x in out) else out  # type: ignore[return-value]
 
 
@@ -123,6 +126,9 @@ def _read_structure(st: _Reader) -> StructureScene | None:
             elif len(links) > MAX_HINGE:
                 p.problem(p.at("links"), f"{len(links)} links in one hinge: at most {MAX_HINGE}")
                 links = None
+        if kind == "R" and angle is not None:  # a revolute has no direction: the angle would be ignored
+            p.problem(p.at(p.present("angle") or "angle"), "a revolute (R) has no direction: drop angle "
+                                                             "(it is a P pair's guide or a higher pair's normal)")
         if kind in ("P", "higher") and at is not None and angle is None:
             what = "the guide's direction" if kind == "P" else "the common normal's direction"
             p.problem(p.at("angle"), f"missing: {what} (with at, for the Jacobian)")
@@ -202,10 +208,7 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: _Reader, order
     top.known.update(_TOP_KEYS)
     top.finish()
     if problems or structure is None:
-        table = data.get("structure")
-        sub_order = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
-        problems.sort(key=lambda p: _rank(p, order, sub_order, "structure"))
-        raise SceneError(problems or [("structure", "invalid")], source)
+        _raise_sorted(problems, data, order, "structure", source)
     return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
                  precision_mm=precision, page=page, structure=structure)
 

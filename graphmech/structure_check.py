@@ -14,7 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from graphmech.mechanisms.topology import Mobility, Structure, mobility, roman, structure
+from graphmech.mechanisms.topology import Mobility, Structure, grubler, mobility, roman, structure
+from graphmech.scales import drawn_size_problem
 
 #: find names that need the Jacobian (the others are counts or the decomposition).
 _NEEDS_RANK = {"F", "F_actual", "rank", "p_redundant", "p_redundant_actual"}
@@ -61,7 +62,17 @@ class StructureAnalysis:
 
 def formula(m: Mobility) -> str:
     """``F = 3·3 − (2·4 + 0 − 0) − 0 = 1`` as the book writes it."""
-    return f"F = 3·{m.n} − (2·{m.pl} + {m.ph} − {m.p_redundant}) − {m.F_local} = {m.F}"
+    return formula_text(m.n, m.pl, m.ph, m.p_redundant, m.F_local, m.F)
+
+
+def case_formula(c: dict[str, Any]) -> str:
+    """The count of a printed case (as :attr:`StructureAnalysis.cases` holds it) written out."""
+    return formula_text(c["n"], c["pl"], c["ph"], c["p_redundant"], c["F_local"], c["F"])
+
+
+def formula_text(n: int, pl: int, ph: int, p_redundant: int, F_local: int, F: int) -> str:
+    """Grübler–Kutzbach's count written out: ``F = 3·3 − (2·4 + 0 − 0) − 0 = 1``."""
+    return f"F = 3·{n} − (2·{pl} + {ph} − {p_redundant}) − {F_local} = {F}"
 
 
 def analyse_structure(scene: Any) -> StructureAnalysis:
@@ -71,7 +82,7 @@ def analyse_structure(scene: Any) -> StructureAnalysis:
     ss = scene.structure
     an = StructureAnalysis(scene, None, None, scales=dict(scene.scales))
     for c in ss.cases:
-        f = 3 * c.n - (2 * c.pl + c.ph - c.p_redundant) - c.F_local
+        f = grubler(c.n, c.pl, c.ph, c.p_redundant, c.F_local)
         an.cases.append({"label": c.label, "n": c.n, "pl": c.pl, "ph": c.ph, "p_redundant": c.p_redundant,
                          "F_local": c.F_local, "F": f})
         if f <= 0:
@@ -79,6 +90,13 @@ def analyse_structure(scene: Any) -> StructureAnalysis:
     topo = ss.topology
     if topo is None:
         return an
+    if ss.geometry and "l" in scene.scales:  # a stated μl must draw the pairs on paper
+        xs, ys = zip(*(p.at for p in topo.pairs))
+        why = drawn_size_problem(max(max(xs) - min(xs), max(ys) - min(ys)), float(scene.scales["l"]))
+        if why:
+            from graphmech.errors import SceneError
+
+            raise SceneError([("scales", why)], scene.source)
     find = {n.partition("@")[0] for n in scene.find}
     rank = ss.geometry and (not find or bool(find & _NEEDS_RANK) or "structure" in scene.show)
     an.mobility = m = mobility(topo, bool(rank))
@@ -149,8 +167,7 @@ def text_summary(an: StructureAnalysis) -> list[str]:
     """Lines for ``graphmech check`` (without --json)."""
     lines = []
     for c in an.cases:
-        lines.append(f"{c['label']:<24} F = 3·{c['n']} − (2·{c['pl']} + {c['ph']} − {c['p_redundant']}) − "
-                     f"{c['F_local']} = {c['F']}")
+        lines.append(f"{c['label']:<24} " + case_formula(c))
     m = an.mobility
     if m is not None:
         lines.append(formula(m))
@@ -170,4 +187,5 @@ def text_summary(an: StructureAnalysis) -> list[str]:
     return lines
 
 
-__all__ = ["StructureAnalysis", "analyse_structure", "formula", "judge_structure", "text_summary"]
+__all__ = ["StructureAnalysis", "analyse_structure", "case_formula", "formula", "formula_text", "judge_structure",
+           "text_summary"]

@@ -30,4 +30,6 @@ TANGENT_REL = 1e-9
 
 #: Default drawing precision for judging a hand construction, in drawing millimetres.
 DRAWING_PRECISION_MM = 0.5
+#: The coarsest drawing precision a check accepts, mm: coarser judges nothing (and 1e308 overflowed).
+MAX_PRECISION_MM = 10.0
 

@@ -154,8 +154,14 @@ branch = "left"
     (('start = "extreme"', 'start = "dead"'), "cycle.start"),
     (('diagrams = ["C", "2"]', 'diagrams = ["A"]'), "cycle.diagrams[0]"),
     (('paths = ["C"]', 'paths = ["Q"]'), "cycle.paths[0]"),
+    (('paths = ["C"]', 'paths = ["C", "A"]'), "cycle.paths[1]"),  # the frame pivot's "path": was drawn as a dot
     (('angle = 0', 'angle = [0, 30]'), "driver.angle"),
     (('omega = 10', 'omega = 10\nepsilon_rad_s2 = 2'), "driver.epsilon"),
+    (('omega = 10', 'omega = 0'), "driver.omega"),  # v, a all 0 and μv = 0 before
+    (('paths = ["C"]', 'paths = ["C"]\npole_distance_mm = 1e308'), "cycle.pole_distance_mm"),  # exit 3 before
+    (('paths = ["C"]', 'paths = ["C"]\npole_distance_mm = [20, 5000]'), "cycle.pole_distance_mm[1]"),
+    (('paths = ["C"]', 'paths = ["C"]\nscales = { phi_deg_per_mm = 1e-300 }'), "cycle.scales.phi_deg_per_mm"),
+    (('paths = ["C"]', 'paths = ["C"]\nscales = { s_m_per_mm = 0.005, v_m_s_per_mm = 1e-300 }'), "cycle.scales"),
 ])
 def test_bad_cycle_input_is_one_line_naming_the_key(tmp_path, edit, key):
     p = scene(tmp_path)
@@ -450,3 +456,88 @@ def test_stated_diagram_scales_fix_the_pole_distances(tmp_path):
         assert q[k]["graphical"] == pytest.approx(other[k]["graphical"], rel=1e-12)
     code, _, err = run_cli("check", str(scene(tmp_path, "c.toml", extra=extra + "\npole_distance_mm = 40")))
     assert code == 2 and "cycle.pole_distance_mm" in err and "not both" in err
+
+
+def test_a_deltoid_asked_for_its_characteristics_is_one_line(tmp_path):
+    """AB = BC = 30, CD = AD = 72: the folded extreme position has C on A (no crank angle)."""
+    text = (SCENES / "linkage.fourbar_28_52_50_72.toml").read_text(encoding="utf-8")
+    text = text.replace("length = 28", "length = 30").replace("lengths = [52, 50]", "lengths = [30, 72]")
+    text = text.split("[measured]")[0]
+    p = tmp_path / "kite.toml"
+    p.write_text(text, encoding="utf-8")
+    code, _, err = run_cli("check", str(p))
+    assert code == 2 and err.count("\n") == 1 and ": characteristics: " in err and "deltoid" in err, err
+
+
+def test_characteristics_of_a_hundred_metre_drawing_stay_small(tmp_path):
+    """Lengths ×1e3 at the stated μl = 0.5 mm/mm: the arcs of radius BC ∓ AB are ~1e5 mm long and
+    drawn with a bounded number of chords (×1e12 took 2e13 points and exhausted memory; such a
+    drawing, 1.4e14 mm across, is now refused by the bound on the drawn size)."""
+    from graphmech.render.primitives import ARC_MOST, Polyline
+
+    text = (SCENES / "linkage.fourbar_28_52_50_72.toml").read_text(encoding="utf-8").split("[measured]")[0]
+    for a, b in (("length = 28", "length = 28e3"), ("lengths = [52, 50]", "lengths = [52e3, 50e3]"),
+                 ("D = [72, 0]", "D = [72e3, 0]")):
+        text = text.replace(a, b)
+    p = tmp_path / "huge.toml"
+    p.write_text(text, encoding="utf-8")
+    from graphmech.methods.characteristics import draw_characteristics
+    from graphmech.methods.cycle_figures import characteristics_items
+    from graphmech.scene import load_scene
+
+    sc = load_scene(p)
+    items = characteristics_items(draw_characteristics(sc.linkage, sc.scales["l"]), sc.linkage)
+    arcs = [it for it in items if isinstance(it, Polyline)]
+    assert arcs and max(len(a.points) for a in arcs) == ARC_MOST + 1
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "huge.svg"))
+    assert code == 0 and (tmp_path / "huge.svg").stat().st_size < 200_000, err
+
+
+@pytest.mark.parametrize("find, diagrams, reason", [
+    ('["s_C@4"]', '["2"]', "find[0]: s_C is read off the diagram of C: add C to [cycle] diagrams"),
+    ('["v_C_diagram@1.5"]', '["2"]', "find[0]: v_C_diagram is read off the diagram of C: add C to [cycle] diagrams"),
+    ('["omega_2_diagram@1.5"]', '["C"]', "find[0]: omega_2_diagram is read off the diagram of 2: add 2 to [cycle] diagrams"),
+])
+def test_a_diagram_value_of_what_has_no_diagram_says_how_to_get_one(tmp_path, find, diagrams, reason):
+    """Before: "unknown quantity 's_C'; did you mean v_C, a_C?" though s_C@4 is a documented name."""
+    p = scene(tmp_path, show='["cycle"]', find=find)
+    p.write_text(p.read_text().replace('diagrams = ["C", "2"]', f"diagrams = {diagrams}"))
+    code, _, err = run_cli("check", str(p))
+    assert code == 2 and err == f"s.toml: {reason}\n", err
+
+
+def test_instant_centres_are_refused_on_a_cycle_sheet_but_found(tmp_path):
+    """show = ["instant_centres", "cycle"] drew the cycle and silently no centres."""
+    p = scene(tmp_path, show='["instant_centres", "cycle"]', find='["P13@4"]')
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and err.startswith("s.toml: show[0]: the instant centres are drawn one row per position")
+    assert not (tmp_path / "x.svg").exists()
+    doc = check_json(scene(tmp_path, "t.toml", show='["cycle"]', find='["P13@4", "omega_2_ic@4"]'))
+    got = values(doc)
+    # centred slider-crank r = 50, l = 200 at position 4 (φ = 90° from the extreme at 0°): the rod's
+    # ω = −ω1·r·cos φ/(l·cos β) = 0
+    assert got["omega_2_ic@4"]["graphical"] == pytest.approx(0.0, abs=1e-12)
+    assert got["x_P13@4"]["graphical"] == pytest.approx(got["x_P13@4"]["exact"], abs=1e-12)
+
+
+def test_an_absurd_drawing_precision_is_refused_not_an_internal_error(tmp_path):
+    """--precision 1e308 made θ's protractor tolerance inf, and check --json died on it (exit 3)."""
+    scene_path = SCENES / "linkage.fourbar_28_52_50_72.toml"
+    code, _, err = run_cli("check", "--json", str(scene_path), "--precision", "1e308")
+    assert code == 2 and err == "graphmech: --precision must be a number of mm above 0 and at most 10\n", err
+    p = tmp_path / "coarse.toml"
+    p.write_text(scene_path.read_text(encoding="utf-8") + "\n[check]\nprecision_mm = 1e308\n", encoding="utf-8")
+    code, _, err = run_cli("check", "--json", str(p))
+    assert code == 2 and err == "coarse.toml: check.precision_mm: at most 10 mm, not 1e+308: coarser judges nothing\n"
+    doc = check_json(scene_path, "--precision", "10")  # the coarsest accepted: finite tolerances
+    assert all(math.isfinite(m["tolerance"]) for m in doc["measured"])
+
+
+@pytest.mark.parametrize("scale, across", [("1e-300", "2e+299"), ("1e300", "2e-301")])
+def test_a_stated_scale_that_cannot_be_drawn_is_refused(tmp_path, scale, across):
+    """μl = 1e-300 m/mm (render: exit 3) or 1e300 (check: ZeroDivisionError, exit 3)."""
+    p = scene(tmp_path, show='["cycle"]', find='[]')
+    p.write_text(p.read_text().replace("[units]", f"[scales]\nl_m_per_mm = {scale}\n\n[units]"))
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and err.startswith(f"s.toml: scales: μl = {scale.replace('1e300', '1e+300')} m/mm draws the "
+                                        f"mechanism {across} mm across"), err

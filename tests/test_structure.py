@@ -142,6 +142,7 @@ def test_only_what_is_asked_is_computed():
     ({"kind": "Q", "links": ["1", "2"]}, "unknown value"),
     ({"kind": "R", "links": ["2", "2"]}, "listed twice"),
     ({"kind": "R", "links": ["1", "2"], "at_mm": [0, 0]}, "coordinates or none"),
+    ({"kind": "R", "links": ["1", "2"], "angle_deg": 10}, "a revolute (R) has no direction: drop angle"),  # was ignored
 ])
 def test_bad_pairs_are_one_line_errors(pair, reason):
     data = {"structure": {"frame": "1", "drivers": ["2"], "pair": [
@@ -232,3 +233,39 @@ def test_a_five_bar_with_two_drivers_is_one_dyad():
     assert [(g.links, g.grade) for g in s.groups] == [(("3", "4"), 2)] and not s.messages
     one = structure(Topology("1", ("2", "3", "4", "5"), pairs, ("2",)))
     assert one.leftover == ("3", "4", "5") and "drivers differs from the mobility" in one.messages[0]
+
+
+@pytest.mark.parametrize("key", ["drivers", "links"])
+def test_a_link_listed_twice_among_the_drivers_or_links_is_refused(key):
+    """drivers = ["2", "2"] was taken as two drivers ("F = 1 but 2 driver(s): over-constrained")."""
+    data = {"structure": {"frame": "1", "drivers": ["2"], "pair": [
+        {"kind": "R", "links": ["1", "2"]}, {"kind": "R", "links": ["2", "3"]}, {"kind": "R", "links": ["3", "4"]},
+        {"kind": "R", "links": ["4", "1"]}]}}
+    data["structure"][key] = ["2", "2"] if key == "drivers" else ["2", "3", "4", "2"]
+    with pytest.raises(SceneError) as e:
+        parse_scene(data, "twice.toml")
+    where = f"structure.{key}[1]" if key == "drivers" else f"structure.{key}[3]"
+    assert e.value.one_line() == f"twice.toml: {where}: link '2' is listed twice"
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in SCENES.glob("*.toml")
+                                        if p.stem.startswith(("dof.", "structure."))))
+def test_every_structure_sheet_fits_its_page(name):
+    """The class III message (IC engine from EG) made the block diagram's panel 403 mm wide on an
+    A4 page; HFUT 3-2's diagram was drawn at μl = 0.005 (38 mm tall, labels on top of each other)."""
+    from graphmech.cli import render_scene
+
+    svg, warnings = render_scene(SCENES / f"{name}.toml")
+    assert not [w for w in warnings if "runs off the page" in w], warnings
+    if name == "dof.hfut_cases-3-2":
+        assert "μl = 0.0025 m/mm" in svg
+
+
+def test_a_stated_scale_that_cannot_draw_the_pairs_is_refused(tmp_path):
+    """μl = 1e-300 m/mm drew the parallelogram 1e299 mm across: render exit 3."""
+    text = (SCENES / "structure.parallelogram_redundant.toml").read_text(encoding="utf-8")
+    p = tmp_path / "tiny.toml"
+    p.write_text(text.replace('[units]', '[scales]\nl_m_per_mm = 1e-300\n\n[units]'), encoding="utf-8")
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and err.startswith("tiny.toml: scales: μl = 1e-300 m/mm draws the mechanism 1.3e+299 mm"), err
+    assert not (tmp_path / "x.svg").exists()

@@ -164,16 +164,21 @@ class BatchSolution:
 
     def at(self, i: int) -> Solution:
         """The solution at position i, as plain floats."""
+        return Solution(values_at(self.values, i), {k: float(c[i]) for k, c in self.conds.items()})
 
-        def pick(v: Any) -> Any:
-            if isinstance(v, tuple):
-                return tuple(pick(x) for x in v)
-            if isinstance(v, np.ndarray):
-                return float(v[i]) if v.ndim else float(v)
-            return v
 
-        return Solution({k: pick(v) for k, v in self.values.items()},
-                        {k: float(c[i]) for k, c in self.conds.items()})
+def values_at(values: dict[str, Any], i: int) -> dict[str, Any]:
+    """Batch values (arrays over positions, or tuples of them, or constants) at position i, as
+    plain floats."""
+
+    def pick(v: Any) -> Any:
+        if isinstance(v, tuple):
+            return tuple(pick(x) for x in v)
+        if isinstance(v, np.ndarray):
+            return float(v[i]) if v.ndim else float(v)
+        return v
+
+    return {k: pick(v) for k, v in values.items()}
 
 
 def _compile(program: tuple, constants: dict[str, Any], params: list[str]) -> Any:

@@ -254,6 +254,9 @@ def fourbar(A: complex, D: complex, a: float, b: float, c: float, branch: str,
 
         return _pick(cands, on_branch)
 
+    if _equal(a, b, a + b + c + d):  # a deltoid: the folded position puts C on A, B anywhere
+        raise ValueError("AB = BC (a deltoid): at the folded position C falls on A, so the crank's angle "
+                         "there is undetermined: no extreme positions")
     C1, C2 = c_at(b - a, -1.0), c_at(b + a, 1.0)
     start, end, theta = _extremes(A, C1, C2, sense)
     psi = abs(cmath.phase((C2 - D) / (C1 - D)))

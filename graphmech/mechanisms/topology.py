@@ -219,6 +219,16 @@ def _spin(topo: Topology, roller: str) -> np.ndarray:
     return e
 
 
+def grubler(n: int, pl: int, ph: int = 0, p_redundant: int = 0, F_local: int = 0) -> int:
+    """Grübler–Kutzbach: F = 3n − (2pl + ph − p′) − F′ (n moving links, pl lower and ph higher
+    pairs, p′ redundant constraints, F′ local freedoms).
+
+    >>> grubler(3, 4), grubler(3, 3, 1, F_local=1), grubler(4, 6, p_redundant=1)
+    (1, 1, 1)
+    """
+    return 3 * n - (2 * pl + ph - p_redundant) - F_local
+
+
 def mobility(topo: Topology, with_geometry: bool) -> Mobility:
     """The count, and with ``with_geometry`` the rank of the constraint Jacobian (numpy's SVD)."""
     rollers = topo.rollers()
@@ -240,7 +250,7 @@ def mobility(topo: Topology, with_geometry: bool) -> Mobility:
         f_actual = 3 * topo.n - rank - spins
         p_act = eq - rank
     stated = topo.redundant if topo.redundant is not None else 0  # the count knows only what is stated
-    F = 3 * topo.n - (2 * topo.pl + topo.ph - stated) - f_local
+    F = grubler(topo.n, topo.pl, topo.ph, stated, f_local)
     return Mobility(topo.n, topo.pl, topo.ph, f_local, stated, count, F, rank, eq, f_actual, p_act, sv, RANK_REL,
                     tuple(p.name or "+".join(p.links) for p in topo.compound), rollers)
 
@@ -437,5 +447,5 @@ def _roman(k: int) -> str:
 
 roman = _roman
 
-__all__ = ["AssurGroup", "Mobility", "Pair", "Structure", "Topology", "constraint_jacobian", "mobility", "roman",
+__all__ = ["AssurGroup", "Mobility", "Pair", "Structure", "Topology", "constraint_jacobian", "grubler", "mobility", "roman",
            "structure", "RANK_REL"]

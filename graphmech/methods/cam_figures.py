@@ -33,7 +33,7 @@ from graphmech.mechanisms.motion import breakpoints, displacement, impacts
 from graphmech.methods.cam_inversion import DrawnProfile, divisions
 from graphmech.render.labels import text_box_size
 from graphmech.render.primitives import (ArcArrow, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
-                                         Polyline, Primitive, Segment, Sheet)
+                                         Polyline, Primitive, Segment, Sheet, angle_arc)
 from graphmech.scales import format_scale
 
 #: The panels a cam sheet can show, in the order they stand in the row.
@@ -214,17 +214,6 @@ def _follower_items(cam: DiscCam, b0: tuple[float, float], u0: tuple[float, floa
     return items
 
 
-def _angle_arc(at: tuple[float, float], d1: tuple[float, float], d2: tuple[float, float], r: float) -> Polyline | None:
-    a1, a2 = math.atan2(d1[1], d1[0]), math.atan2(d2[1], d2[0])
-    sweep = (a2 - a1 + math.pi) % math.tau - math.pi
-    if abs(sweep) * r < 0.3:
-        return None
-    n = max(4, int(abs(sweep) * r / 0.5))
-    pts = tuple((at[0] + r * math.cos(a1 + sweep * k / n), at[1] + r * math.sin(a1 + sweep * k / n))
-                for k in range(n + 1))
-    return Polyline(pts, "label")
-
-
 def _point_on(pitch: np.ndarray, delta: np.ndarray, at: float) -> np.ndarray:
     """The point of the drawn pitch polygon at cam angle ``at``, between its divisions."""
     d = np.append(delta, delta[0] + math.tau)
@@ -255,7 +244,7 @@ def _mark_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, ok: np.ndarray,
             normal = (-normal[0], -normal[1])
         if tangent != (0.0, 0.0) and u != (0.0, 0.0):
             items += [Segment(b, _add(b, normal, MARK_LINE), "label"), Segment(b, _add(b, u, MARK_LINE), "label")]
-            arc = _angle_arc(b, normal, u, MARK_ARC)
+            arc = angle_arc(b, normal, u, MARK_ARC)
             if arc is not None:
                 items.append(arc)
             alpha = float(marks.get("alpha_max", drawn.pressure_angle[k]))

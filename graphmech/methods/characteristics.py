@@ -270,6 +270,10 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
             pts.update(D=D, Bg=g_best[1], Cg=g_best[2])
             return DrawnCharacteristics(loop, kind, mu_l, pts, None, None, None, None, None, g_best[0],
                                         _wrap(math.atan2(g_best[1][1], g_best[1][0])))
+        if b - a <= 1e-12 * (a + b + c + d):  # a deltoid AB = BC: folded, C falls on A
+            raise ValueError(f"{n['A']}{n['B']} = {n['B']}{n['C']} (a deltoid): at the folded position "
+                             f"{n['C']} falls on {n['A']}, so the crank's angle there is undetermined: "
+                             "no extreme positions")
         B1, C1 = rocker_pin(b - a, True)  # folded: AC₁ = BC − AB
         B2, C2 = rocker_pin(b + a, False)  # extended: AC₂ = BC + AB
         psi: float | None = _angle(_sub(C1, D), _sub(C2, D))

@@ -28,11 +28,12 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from graphmech.construction.graph import values_at
 from graphmech.methods.figures import display, mechanism_items, polygon_items
 from graphmech.methods.flywheel_figures import (AXIS_OVERRUN, NUMBER_SIZE, _moved, _phi_axis_numbers, count_every,
                                                 numbers_every)
 from graphmech.render.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
-                                         Polyline, Primitive, Segment, Sheet, Slider)
+                                         Polyline, Primitive, Segment, Sheet, Slider, angle_arc)
 from graphmech.render.style import subscript
 from graphmech.scales import format_scale
 
@@ -99,17 +100,6 @@ def _which(n: int) -> str:
     return "" if k == 1 else f"every {k}th of the {n} positions drawn"
 
 
-def _at(values: dict[str, Any], i: int) -> dict[str, Any]:
-    def pick(v: Any) -> Any:
-        if isinstance(v, tuple):
-            return tuple(pick(x) for x in v)
-        if isinstance(v, np.ndarray):
-            return float(v[i]) if v.ndim else float(v)
-        return v
-
-    return {k: pick(v) for k, v in values.items()}
-
-
 def _guide_spans(cyc: Any) -> dict[int, tuple[float, float]]:
     """The stretch of each guide its slider covers over the cycle (mm along the guide)."""
     from graphmech.mechanisms.linkage import RPP, RRP, SliderInput
@@ -170,7 +160,7 @@ def polygons_items(cyc: Any, panel: str) -> list[Primitive]:
     for i in drawn_positions(cyc.n):
         if i in cyc.polygon_failures:  # no polygon at a change point: the panel's note says so
             continue
-        values = _at(cyc.values, i)
+        values = values_at(cyc.values, i)
         for it in polygon_items(plan, values, panel):
             if isinstance(it, Segment) and it.role == "construction":
                 continue
@@ -290,19 +280,8 @@ def _diagram_notes(dg: Any, mu_phi: float) -> tuple[str, ...]:
 
 
 # ----------------------------------------------------------------------------- characteristics
-def _arc(at: XY, d1: XY, d2: XY, r: float, role: str = "label") -> Polyline | None:
-    """The arc marking the angle between directions d1 and d2 (the smaller one) at ``at``."""
-    a1, a2 = math.atan2(d1[1], d1[0]), math.atan2(d2[1], d2[0])
-    sweep = (a2 - a1 + math.pi) % math.tau - math.pi
-    if abs(sweep) * r < 0.3:
-        return None
-    k = max(4, int(abs(sweep) * r / 0.5))
-    return Polyline(tuple((at[0] + r * math.cos(a1 + sweep * j / k), at[1] + r * math.sin(a1 + sweep * j / k))
-                          for j in range(k + 1)), role)  # type: ignore[arg-type]
-
-
 def _mark(at: XY, d1: XY, d2: XY, r: float, text: str) -> list[Primitive]:
-    arc = _arc(at, d1, d2, r)
+    arc = angle_arc(at, d1, d2, r)
     if arc is None:
         return [Label(text, at, (d1, d2), 3.2)]
     mid = arc.points[len(arc.points) // 2]
@@ -311,7 +290,7 @@ def _mark(at: XY, d1: XY, d2: XY, r: float, text: str) -> list[Primitive]:
 
 def _arc_between(centre: XY, p: XY, q: XY, role: str = "construction") -> Polyline | None:
     r = math.dist(centre, p)
-    return _arc(centre, _unit(centre, p), _unit(centre, q), r, role)
+    return angle_arc(centre, _unit(centre, p), _unit(centre, q), r, role)  # type: ignore[arg-type]
 
 
 def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
@@ -359,7 +338,7 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
                   Segment(A, Bg, "construction"), Segment(Bg, Cg, "construction"),
                   Slider(C1, math.atan2(g[1], g[0])), Slider(C2, math.atan2(g[1], g[0]))]
         for r in (math.dist(A, C1), math.dist(A, C2)):
-            arc = _arc(A, _unit(A, C1), _unit(A, C2), r, "construction")
+            arc = angle_arc(A, _unit(A, C1), _unit(A, C2), r, "construction")
             if arc is not None:
                 items.append(arc)
         if math.dist(A, C1) > 1e-9:

@@ -21,13 +21,13 @@ Everything is vectorised: N may be thousands.
 """
 from __future__ import annotations
 
-import math
+import math  # noqa: F401  (the doctests use it)
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from graphmech.methods.graphical_integration import _frozen
+from graphmech.methods.graphical_integration import _frozen, divisions
 
 __all__ = ["Differentiation", "derivative_scale", "differentiate_by_chords", "differentiate_cycle"]
 
@@ -112,19 +112,8 @@ def differentiate_by_chords(x_mm: ArrayLike, y_mm: ArrayLike, H_mm: float) -> Di
     >>> d.derivative_mm.tolist(), d.mid_mm.tolist(), d.pole
     ([10.0, 30.0], [5.0, 15.0], (-20.0, 0.0))
     """
-    x = np.asarray(x_mm, dtype=float)
-    y = np.asarray(y_mm, dtype=float)
-    if x.ndim != 1 or y.shape != x.shape or x.size < 2:
-        raise ValueError(f"x_mm and y_mm must be 1-D of the same length ≥ 2, got shapes {x.shape} and {y.shape}")
-    if not (np.isfinite(x).all() and np.isfinite(y).all()):
-        raise ValueError("the divisions and ordinates must be finite")
-    dx = np.diff(x)
-    if not np.all(dx > 0.0):
-        raise ValueError("the division abscissae must be strictly increasing")
-    if not (H_mm > 0.0 and math.isfinite(H_mm)):
-        raise ValueError(f"the pole distance H must be positive and finite, not {H_mm!r}")
-    H = float(H_mm)
-    ray = H * np.diff(y) / dx  # the ray from P ∥ the chord cuts the ordinate axis here
+    x, y, H = divisions(x_mm, y_mm, H_mm)
+    ray = H * np.diff(y) / np.diff(x)  # the ray from P ∥ the chord cuts the ordinate axis here
     mid = 0.5 * (x[:-1] + x[1:])
     return Differentiation(_frozen(x), _frozen(y), H, (-H, 0.0), _frozen(mid), _frozen(ray))
 

@@ -78,6 +78,28 @@ class Integration:
         return np.column_stack([self.x_mm[:-1], self.integral_mm[:-1], self.x_mm[1:], self.integral_mm[1:]])
 
 
+def divisions(x_mm: ArrayLike, y_mm: ArrayLike, H_mm: float) -> tuple[np.ndarray, np.ndarray, float]:
+    """The divisions, ordinates (mm) and pole distance of a construction by chords, checked.
+
+    Raises
+    ------
+    ValueError
+        Fewer than two divisions, arrays of different lengths, non-finite values, abscissae not
+        strictly increasing, or H not positive and finite.
+    """
+    x = np.asarray(x_mm, dtype=float)
+    y = np.asarray(y_mm, dtype=float)
+    if x.ndim != 1 or y.shape != x.shape or x.size < 2:
+        raise ValueError(f"x_mm and y_mm must be 1-D of the same length ≥ 2, got shapes {x.shape} and {y.shape}")
+    if not (np.isfinite(x).all() and np.isfinite(y).all()):
+        raise ValueError("the divisions and ordinates must be finite")
+    if not np.all(np.diff(x) > 0.0):
+        raise ValueError("the division abscissae must be strictly increasing")
+    if not (H_mm > 0.0 and math.isfinite(H_mm)):
+        raise ValueError(f"the pole distance H must be positive and finite, not {H_mm!r}")
+    return x, y, float(H_mm)
+
+
 def integral_scale(mu_x: float, mu_y: float, H_mm: float) -> float:
     """The scale of the integral curve, μy·μx·H (e.g. μA = μM·μφ·H, J/mm with μφ in rad/mm).
 
@@ -125,17 +147,7 @@ def integrate_by_chords(x_mm: ArrayLike, y_mm: ArrayLike, H_mm: float) -> Integr
     >>> g.ray_slopes.tolist()                     # each chord is parallel to its ray
     [0.5, 1.0]
     """
-    x = np.asarray(x_mm, dtype=float)
-    y = np.asarray(y_mm, dtype=float)
-    if x.ndim != 1 or y.shape != x.shape or x.size < 2:
-        raise ValueError(f"x_mm and y_mm must be 1-D of the same length ≥ 2, got shapes {x.shape} and {y.shape}")
-    if not (np.isfinite(x).all() and np.isfinite(y).all()):
-        raise ValueError("the divisions and ordinates must be finite")
-    if not np.all(np.diff(x) > 0.0):
-        raise ValueError("the division abscissae must be strictly increasing")
-    if not (H_mm > 0.0 and math.isfinite(H_mm)):
-        raise ValueError(f"the pole distance H must be positive and finite, not {H_mm!r}")
-    H = float(H_mm)
+    x, y, H = divisions(x_mm, y_mm, H_mm)
     mean = 0.5 * (y[:-1] + y[1:])  # the step of equal area, projected on the ordinate axis
     rise = mean * np.diff(x) / H  # chord i ∥ ray P → (0, mean_i) over its interval
     integral = np.concatenate([[0.0], np.cumsum(rise)])
@@ -174,4 +186,4 @@ def differentiate_by_ray(x_mm: float, y_end_mm: float, H_mm: float) -> float:
     return float(differentiate_by_chords([0.0, float(x_mm)], [0.0, float(y_end_mm)], float(H_mm)).derivative_mm[0])
 
 
-__all__ = ["Integration", "differentiate_by_ray", "integral_scale", "integrate_by_chords"]
+__all__ = ["Integration", "differentiate_by_ray", "divisions", "integral_scale", "integrate_by_chords"]

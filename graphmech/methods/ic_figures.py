@@ -221,7 +221,8 @@ def ic_panels(an: Any, page: tuple[float, float], first_row: int = 0) -> list[Pa
         notes += [f"{centre_name(*c.links)}: undetermined — {c.why}" for c in ic.centres.values() if not c.known]
         for x, zs in ica.zeros.items():
             notes.append(f"v{subscript(x)} = 0 at φ{subscript(build.linkage.driver.link)} = "
-                         + ", ".join(f"{math.degrees(z):.2f}°" for z in zs))
+                         + ", ".join(f"{math.degrees(z):.2f}°" for z in zs) if zs else
+                         f"v{subscript(x)} ≠ 0 over the whole turn")  # (was "= 0 at φ = " and nothing)
         marks = []
         for text in least:
             ab = split_line(text, point_names(build.linkage))
@@ -289,7 +290,8 @@ def _omega_note(ic: InstantCentres, lid: str, mu_l: float) -> str:
         v = math.hypot(*mo.v0) * mu_l
         return f"link {lid} translates ({_sub(mo.found[3])} ∞): v = v({_sub(mo.found[2])}) = {v:.4g} m/s"
     p1i, pij, p1j = (_sub(n) for n in mo.found[1:])
-    return f"ω{subscript(lid)} = ω{subscript(i)}·{p1i}{pij}/{p1j}{pij} = {mo.omega:.4g} rad/s"
+    omega = f"{mo.omega:.4g}".replace("-", "−")  # the typographic minus, as everywhere on the sheet
+    return f"ω{subscript(lid)} = ω{subscript(i)}·{p1i}{pij}/{p1j}{pij} = {omega} rad/s"
 
 
 def _sub(name: str) -> str:

@@ -10,6 +10,7 @@ label says that its polygons need a special construction.
 from __future__ import annotations
 
 import math
+import textwrap
 from typing import Any, Sequence
 
 from graphmech.mechanisms.topology import Mobility, Structure, Topology, roman
@@ -20,6 +21,8 @@ from graphmech.scales import format_scale, round_scale
 #: How far a group's outline stands off its links, mm.
 OUTLINE_MM = 7.0
 BOX_W, BOX_H, BOX_GAP = 34.0, 14.0, 12.0
+#: The longest line of a note under the block diagram, characters (about 2 mm each: A4's 277 mm).
+NOTE_CHARS = 100
 
 
 def choose_scale(topo: Topology, room: tuple[float, float]) -> float:
@@ -108,16 +111,18 @@ def block_panel(st: Structure, topo: Topology) -> Panel:
         notes.append(f"higher pairs replaced by a link and two revolutes: {', '.join(st.replaced)}")
     if st.removed:
         notes.append(f"rollers (local freedoms) left out: {', '.join(st.removed)}")
-    notes += list(st.messages)
+    for message in st.messages:  # a class III group's message is long: lines that fit the page
+        notes += textwrap.wrap(message, NOTE_CHARS)
     return Panel("groups", "Structure: drivers and Assur groups", tuple(items), tuple(notes))
 
 
 def cases_panel(cases: Sequence[dict[str, Any]]) -> Panel:
     """A book's table of printed counts, one line a case."""
+    from graphmech.structure_check import case_formula
+
     items: list[Primitive] = []
     for k, c in enumerate(cases):
-        text = (f"{c['label']}:  F = 3·{c['n']} − (2·{c['pl']} + {c['ph']} − {c['p_redundant']}) − "
-                f"{c['F_local']} = {c['F']}")
+        text = f"{c['label']}:  " + case_formula(c)
         items.append(Label(text, (0.0, -8.0 * k), (), 3.5, italic=False))
     return Panel("cases", "Mobility F = 3n − (2pl + ph − p′) − F′", tuple(items))
 
@@ -138,7 +143,7 @@ def structure_sheet(title: str, an: Any, page: tuple[float, float], footer: tupl
         if m.rank is not None:
             notes.append(f"rank J = {m.rank} of {m.equations}: F = 3·{m.n} − {m.rank} − {m.F_local} = {m.F_actual}")
         if ss.geometry:
-            room = (page[0] * 0.6, max(page[1] - 135.0, 40.0))  # less title, notes, the block diagram
+            room = (page[0] * 0.6, max(page[1] - 125.0, 40.0))  # less title, notes, the block diagram
             mu = an.scales.get("l") or choose_scale(ss.topology, room)
             an.scales["l"] = mu
             panels.append(mechanism_panel(ss.topology, an.structure, mu, notes))

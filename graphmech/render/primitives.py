@@ -87,6 +87,29 @@ class Polyline:
         object.__setattr__(self, "points", pts)
 
 
+def angle_arc(at: XY, d1: XY, d2: XY, r: float, role: Role = "label") -> Polyline | None:
+    """The arc of radius ``r`` (mm) about ``at`` marking the smaller angle between directions
+    ``d1`` and ``d2``: chords of about 0.5 mm, at most ``ARC_MOST`` of them (a drawing at a stated
+    μl may be kilometres wide); None when the arc would be shorter than 0.3 mm.
+
+    >>> len(angle_arc((0, 0), (1, 0), (0, 1), 1e15).points) == ARC_MOST + 1
+    True
+    """
+    import math
+
+    a1, a2 = math.atan2(d1[1], d1[0]), math.atan2(d2[1], d2[0])
+    sweep = (a2 - a1 + math.pi) % math.tau - math.pi
+    if abs(sweep) * r < 0.3:
+        return None
+    n = min(ARC_MOST, max(4, int(abs(sweep) * r / 0.5)))
+    return Polyline(tuple((at[0] + r * math.cos(a1 + sweep * k / n), at[1] + r * math.sin(a1 + sweep * k / n))
+                          for k in range(n + 1)), role)
+
+
+#: The most chords of an angle's arc (0.5 mm each up to an arc of 360 mm).
+ARC_MOST = 720
+
+
 @dataclass(frozen=True)
 class Circle:
     center: XY

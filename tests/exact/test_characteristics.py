@@ -104,3 +104,17 @@ def test_the_drawn_characteristics_are_frozen():
     dr = draw_characteristics(lk, 0.001)
     with pytest.raises(dataclasses.FrozenInstanceError):
         dr.theta = 0.0  # type: ignore[misc]
+
+
+def test_a_deltoid_has_no_extreme_positions_and_says_why():
+    """AB = BC, CD = AD (a kite at Grashof's equality): folded, C falls on A and the crank's angle
+    there is undetermined — a one-line reason from both, never a division by zero."""
+    lk = Linkage({"A": (0.0, 0.0), "D": (0.072, 0.0)}, Crank("1", "A", "B", 0.030, 10.0),
+                 (RRR("B", "C", "D", ("2", "3"), (0.030, 0.072), "left"),))
+    with pytest.raises(ValueError, match="deltoid"):
+        draw_characteristics(lk, 0.0005)
+    with pytest.raises(ValueError, match="deltoid"):
+        X.fourbar(0j, 0.072 + 0j, 0.030, 0.030, 0.072, "left")
+    # the other kite (AB = AD, BC = CD) is a double crank with γ only, as before
+    other = X.fourbar(0j, 0.030 + 0j, 0.030, 0.072, 0.072, "left")
+    assert other.theta is None and other.grashof == "change_point"

@@ -513,7 +513,10 @@ def _linkage_examples():
 @pytest.mark.parametrize("name,text", _linkage_examples(), ids=[n for n, _ in _linkage_examples()])
 def test_every_documented_and_reference_linkage_has_all_its_centres_right(name, text):
     data = tomllib.loads(text)
-    data["show"], data["find"] = ["instant_centres"], []
+    if "cycle" in data or "characteristics" in data:  # not drawn on a cycle's sheet: found at its positions
+        data["find"] = ["P12"]
+    else:
+        data["show"], data["find"] = ["instant_centres"], []
     for key in ("measured", "forces"):  # a force scene's linkage is a linkage like any other
         data.pop(key, None)
     an = analyse(parse_scene(data, f"{name}.toml"))
@@ -545,3 +548,51 @@ def test_check_json_lists_every_centre_and_what_is_undetermined():
     [pos] = doc["instant_centres"]
     assert {c["name"]: c["kind"] for c in pos["centres"]}["P13"] == "undetermined"
     assert set(pos["undetermined"]) == {"3", "4"}
+
+
+@pytest.mark.parametrize("measured, reason", [
+    ("P13=0.17", "--measured P13: a centre is read as its coordinates: x_P13, y_P13 (m), or dir_P13 (deg) at infinity"),
+    ("phi_v0_C=26.4", "--measured phi_v0_C: name one of the angles: phi_v0_C_1, phi_v0_C_2 …"),
+    ("phi_v0_C_3=10", "--measured phi_v0_C_3: phi_v0_C_3: v = 0 at 2 crank angle(s) only (phi_v0_C_1, phi_v0_C_2)"),
+])
+def test_a_measured_centre_or_zero_angle_that_has_no_row_says_what_to_write(measured, reason):
+    """Before: 'cannot be judged here (undetermined, at infinity or not constructed)' for a centre
+    that is neither — P13 of the book's four-bar is a finite point."""
+    code, _, err = run_cli("check", str(SCENES / "kin.fourbar_instant_centres.toml"), "--measured", measured)
+    assert code == 2 and err == f"kin.fourbar_instant_centres.toml: {reason}\n", err
+
+
+def test_a_negative_omega_on_the_sheet_has_a_minus_sign():
+    """The coupler at the rocker's extreme turns at ω3 = −ω2·AB/BC = −5 rad/s; the note printed
+    '-5' with a hyphen."""
+    from graphmech.cli import render_scene
+
+    svg, _ = render_scene(SCENES / "ic.fourbar_dead_centre.toml")
+    assert "= −5 rad/s" in svg and "= -5 rad/s" not in svg
+
+
+def test_a_velocity_that_never_vanishes_is_said_so_on_the_sheet(tmp_path):
+    """The parallelogram's v_C = ω·CD never vanishes: the note read "vC = 0 at φ₂ = " and nothing."""
+    from graphmech.cli import render_scene
+
+    text = (SCENES / "ic.parallelogram.toml").read_text(encoding="utf-8")
+    p = tmp_path / "par.toml"
+    p.write_text("\n".join('find = ["phi_v0_C"]' if line.startswith("find") else line
+                           for line in text.splitlines()) + "\n", encoding="utf-8")
+    svg, warnings = render_scene(p)
+    assert "v_C does not vanish over the crank's turn" in " ".join(warnings)
+    assert "= 0 at φ₂ = <" not in svg and "≠ 0 over the whole turn" in svg
+
+
+@pytest.mark.parametrize("name, reason", [
+    ("v_A_ic", "A is a point of the frame: its velocity is always 0"),  # was an internal error (KeyError)
+    ("v_D_ic", "D is a point of the frame: its velocity is always 0"),
+    ("v_min_BB_ic", "'BB' is one point twice: name a line by two points (v_min_BC_ic for line BC)"),  # was a warning
+])
+def test_a_frame_points_speed_or_a_one_point_line_is_refused(tmp_path, name, reason):
+    text = (SCENES / "kin.fourbar_instant_centres.toml").read_text(encoding="utf-8")
+    p = tmp_path / "ic.toml"
+    p.write_text("\n".join(f'find = ["{name}"]' if line.startswith("find") else line
+                           for line in text.splitlines()) + "\n", encoding="utf-8")
+    code, _, err = run_cli("check", str(p))
+    assert code == 2 and err == f"ic.toml: find[0]: {reason}\n", err
