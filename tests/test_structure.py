@@ -269,3 +269,22 @@ def test_a_stated_scale_that_cannot_draw_the_pairs_is_refused(tmp_path):
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
     assert code == 2 and err.startswith("tiny.toml: scales: μl = 1e-300 m/mm draws the mechanism 1.3e+299 mm"), err
     assert not (tmp_path / "x.svg").exists()
+
+
+def test_an_oscillating_follower_pivoted_on_the_frame_is_not_a_roller():
+    """Cam 2 and a follower 3 pinned to the frame and touching the cam: F = 3·2 − (2·2 + 1) = 1.
+    The follower (one R, one higher pair) was taken for a roller: F′ = 1, F = 0, "cannot move"."""
+    data = {"structure": {"frame": "1", "drivers": ["2"], "pair": [
+        {"kind": "R", "links": ["1", "2"]}, {"kind": "higher", "links": ["2", "3"]},
+        {"kind": "R", "links": ["3", "1"]}]}}
+    topo = parse_scene(data, "cam.toml").structure.topology
+    assert topo.rollers() == ()
+    m = mobility(topo, False)
+    assert (m.F_local, m.F) == (0, 1)
+    assert structure(topo).grade == 2  # the contact replaced by a link and two revolutes: one dyad
+    # with the roller on a translating follower it is still recognised (HFUT 3-2 has one)
+    data["structure"]["pair"] = [
+        {"kind": "R", "links": ["1", "2"]}, {"kind": "higher", "links": ["2", "3"]},
+        {"kind": "R", "links": ["3", "4"]}, {"kind": "P", "links": ["4", "1"]}]
+    m = mobility(parse_scene(data, "roller.toml").structure.topology, False)
+    assert (m.F_local, m.F) == (1, 1)

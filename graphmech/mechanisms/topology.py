@@ -103,13 +103,17 @@ class Topology:
 
     def rollers(self) -> tuple[str, ...]:
         """Links with a local freedom (局部自由度): a roller — a moving link with exactly one
-        revolute and one higher pair and nothing else; it may turn about its pin without moving
-        anything else (the contact normal passes through the pin for a round roller)."""
+        revolute, to another moving link (the follower that carries it), and one higher pair and
+        nothing else; it may turn about its pin without moving anything else (the contact normal
+        passes through the pin for a round roller). A link pinned to the frame with one higher
+        pair is an oscillating follower, not a roller."""
         out = []
         for lid in self.links:
             ps = self.pairs_of(lid)
             kinds = sorted(p.kind for p in ps)
-            if kinds == ["R", "higher"] and all(len(p.links) == 2 for p in ps) and lid not in self.drivers:
+            pin = next((p for p in ps if p.kind == "R"), None)
+            if (kinds == ["R", "higher"] and all(len(p.links) == 2 for p in ps) and lid not in self.drivers
+                    and pin is not None and self.frame not in pin.links):
                 out.append(lid)
         return tuple(out)
 
