@@ -16,12 +16,11 @@ import math
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from graphmech.errors import SceneError
 from graphmech.scene import (
     _LINKAGE_KEYS,
     _MISSING,
     Scene,
-    _rank,
+    _raise_sorted,
     _read_check,
     _read_header,
     _read_measured,
@@ -156,10 +155,7 @@ def parse_efficiency_scene(data: dict[str, Any], source: str, top: _Reader, orde
     top.known.update(_FORCES_KEYS)
     top.finish()
     if problems or problem is None:
-        table = data.get("balancing" if balancing else "efficiency")
-        sub = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
-        problems.sort(key=lambda p: _rank(p, order, sub, "balancing" if balancing else "efficiency"))
-        raise SceneError(problems or [("efficiency", "invalid")], source)
+        _raise_sorted(problems, data, order, "balancing" if balancing else "efficiency", source)
     return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
                  precision_mm=precision, page=page, efficiency=None if balancing else problem,
                  balancing=problem if balancing else None)
@@ -356,13 +352,10 @@ def _read_screw(r: _Reader, prob: dict[str, Any], f: float | None, equivalent: b
             ok = False
         else:
             starts = starts_raw
-    limit = r.raw("at_self_locking_limit")
-    at_limit = False
-    if limit is not _MISSING:
-        if not isinstance(limit, bool):
-            r.problem(r.at("at_self_locking_limit"), f"must be true or false, not {_type_name(limit)}")
-            ok = False
-        at_limit = limit is True
+    limit = r.flag("at_self_locking_limit")
+    if limit is None and r.raw("at_self_locking_limit") is not _MISSING:
+        ok = False  # said by flag()
+    at_limit = limit is True
     lead_angle = _angle(r, "lead_angle", 0.0, 90.0, required=False)
     given = [n for n, v in (("pitch", pitch), ("lead_angle", lead_angle)) if v is not None] + \
         (["at_self_locking_limit"] if at_limit else [])

@@ -17,7 +17,6 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from graphmech.errors import SceneError
 from graphmech.mechanisms.forces import (
     ForceModel,
     LinkCouple,
@@ -32,7 +31,7 @@ from graphmech.scene import (
     _TOP_KEYS,
     SHOW_CHOICES,
     Scene,
-    _rank,
+    _raise_sorted,
     _read_check,
     _read_header,
     _read_linkage,
@@ -41,7 +40,6 @@ from graphmech.scene import (
     _read_scales,
     _Reader,
     _say,
-    _type_name,
 )
 
 #: What a force scene may show: the kinematics' panels, then the loads and reactions on the
@@ -231,13 +229,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
         if angle is not None and abs(angle) > 1e4:  # radians: beyond, cos and sin are round-off
             r.problem(r.at(r.present("angle") or "angle"), "an absurd angle (write it within ±360°)")
             angle = None
-        value = r.raw("resistance")
-        resistance = False
-        if value is not _MISSING:
-            if not isinstance(value, bool):
-                r.problem(r.at("resistance"), f"must be true or false, not {_type_name(value)}")
-            else:
-                resistance = value
+        resistance = bool(r.flag("resistance"))
         r.finish()
         if link is not None and point is not None and magnitude is not None and angle is not None:
             forces.append(PointForce(link, point, magnitude, angle, resistance, name))
@@ -354,6 +346,10 @@ def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: M
     """
     problems = top.problems
     title, show, find = _read_header(top, FORCE_SHOW_CHOICES, FORCE_SHOW_DEFAULT)
+    if "instant_centres" in show:  # a sheet of rows, one per position: not on the force sheet
+        top.problem(f"show[{list(data['show']).index('instant_centres')}]",
+                    "the instant centres are drawn on a linkage sheet: show them in a scene without [forces] "
+                    "(find still takes P13, omega_3_ic … here)")
     scales = _read_scales(top)
     linkage, positions, _ = _read_linkage(top)
     fr = top.table_at("forces")
@@ -364,10 +360,7 @@ def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: M
     top.known.update(_TOP_KEYS)
     top.finish()
     if problems or linkage is None or forces is None:
-        table = data.get("forces")
-        sub_order = {k: n for n, k in enumerate(table)} if isinstance(table, dict) else {}
-        problems.sort(key=lambda p: _rank(p, order, sub_order, "forces"))
-        raise SceneError(problems or [("forces", "invalid")], source)
+        _raise_sorted(problems, data, order, "forces", source)
     return Scene(
         source=source,
         title=title,

@@ -859,3 +859,12 @@ def test_friction_dissipates_exactly_the_extra_driving_power_over_the_cycle(tmp_
     ok = np.asarray(ex.valid)
     assert ok.sum() == 24 and np.all(lost[ok] > 0)
     np.testing.assert_allclose(gained[ok], lost[ok], rtol=1e-11)
+
+
+def test_a_force_scene_refuses_to_show_instant_centres_it_would_not_draw():
+    """show = ["forces", "instant_centres"] drew no centres and said nothing; now one line, exit 2."""
+    text = (SCENES / "force.sixbar_kinetostatic.toml").read_text(encoding="utf-8")
+    text = re.sub(r"^show = \[.*\]$", 'show = ["forces", "instant_centres"]', text, count=1, flags=re.M)
+    with pytest.raises(SceneError) as e:
+        parse_scene(tomllib.loads(text), "f.toml")
+    assert str(e.value).startswith("f.toml: show[1]: the instant centres are drawn on a linkage sheet")
