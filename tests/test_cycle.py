@@ -541,3 +541,13 @@ def test_a_stated_scale_that_cannot_be_drawn_is_refused(tmp_path, scale, across)
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
     assert code == 2 and err.startswith(f"s.toml: scales: μl = {scale.replace('1e300', '1e+300')} m/mm draws the "
                                         f"mechanism {across} mm across"), err
+
+
+def test_a_slider_s_v_a_axes_are_named_with_subscripts():
+    """The diagrams of slider C are s_C, v_C, a_C: C set as a subscript in the SVG, as books write them."""
+    import xml.etree.ElementTree as ET
+
+    svg, _ = render_scene(SCENES / "linkage.slider_crank_offset-cycle.toml")
+    ns = "{http://www.w3.org/2000/svg}"
+    subscripted = {(t.text, t[0].text) for t in ET.fromstring(svg).iter(ns + "text") if len(t)}
+    assert {("s", "C"), ("v", "C"), ("a", "C")} <= subscripted

@@ -239,16 +239,16 @@ def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
     x = np.append(dg.x_mm, period)
     s = np.append(dg.s_mm, dg.s_mm[0] + dg.rise_mm)
     lo, hi = min(0.0, float(s.min())), max(0.0, float(s.max()))
-    items, labels = _axes(period, lo, hi, names[0] + (subscript(dg.subject) if not point else dg.subject), n, every,
-                          period)
+    # a point's subject is a letter: written s_C, the renderer sets C as a subscript
+    sub = (lambda name: f"{name}_{dg.subject}") if point else (lambda name: name + subscript(dg.subject))
+    items, labels = _axes(period, lo, hi, sub(names[0]), n, every, period)
     top: list[Primitive] = [Polyline(thinned(np.column_stack([x, s])), "result")]
     if n <= MOST_DOTS:
         top += [Circle((float(a), float(b)), DOT, "result") for a, b in zip(dg.x_mm, dg.s_mm)]
         top += [Segment((float(a), 0.0), (float(a), float(b)), "construction") for a, b in zip(dg.x_mm, dg.s_mm)
                 if abs(b) > 1e-9]
     out: list[Primitive] = items + top + labels
-    v_name = names[1] + (dg.subject if point else subscript(dg.subject))
-    a_name = names[2] + (dg.subject if point else subscript(dg.subject))
+    v_name, a_name = sub(names[1]), sub(names[2])
     v_items = _differentiation_items(dg.velocity, dg.velocity.derivative_mm, v_name, n, every, period, "P₁")
     a_items = _differentiation_items(dg.acceleration, dg.a_mm, a_name, n, every, period, "P₂")
     y = lo - STACK_GAP - 6.0
