@@ -156,6 +156,9 @@ def judge_structure(an: StructureAnalysis, extra: tuple[tuple[str, float], ...] 
         if name not in values:
             problems.append((key, f"{name} is not found by this scene (it finds {', '.join(values) or 'nothing'})"))
             continue
+        if value != int(value):
+            problems.append((key, f"{name} is a count: a whole number, not {value:g}"))
+            continue
         e = float(values[name])
         out.append(Verdict(name, value, e, 0.0, value == e, ""))
     if problems:

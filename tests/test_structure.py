@@ -180,6 +180,8 @@ def test_measured_counts_are_judged_exactly_and_mixed_scenes_refused(tmp_path):
     assert [(v["name"], v["ok"]) for v in doc["measured"]] == [("F", True), ("class", False), ("rank", True)]
     code, _, err = run_cli("check", str(SCENES / "dof.hfut_cases-ic_engine_EG.toml"), "--measured", "v_C=1")
     assert code == 2 and "--measured v_C" in err
+    code, _, err = run_cli("check", str(SCENES / "dof.hfut_cases-ic_engine_EG.toml"), "--measured", "F=1.5")
+    assert code == 2 and err.strip().endswith("--measured F: F is a count: a whole number, not 1.5")
     p = tmp_path / "mix.toml"
     p.write_text('[cam]\nbase_radius_mm = 30\n[structure]\nframe = "1"\n')
     code, _, err = run_cli("check", str(p))
