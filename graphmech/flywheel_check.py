@@ -327,7 +327,11 @@ def _row(an: FlywheelAnalysis, name: str) -> Row:
     base, at = split(name)
     unit = QUANTITIES[base][0]
     g, e, drawn, scale, ill = _values(an, base, None if at is None else int(at) - 1)
-    return Row(name, unit, drawn, scale, g, e, _rel(g, e, scale), ill)
+    rel = _rel(g, e, scale)
+    if unit == "J" and base != "t_stop":  # an energy near zero (ΔT_min) is judged against the cycle's swing of ΔT
+        x = _exact(an).extremes()
+        rel = abs(g - e) / max(abs(e), x.maximum - x.minimum, 1e-300)
+    return Row(name, unit, drawn, scale, g, e, rel, ill)
 
 
 def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, float, float | None, float, bool]:
