@@ -255,8 +255,6 @@ def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
                                 delta=machine.delta, balance=machine.balance, form=fw.tangents,
                                 H_mm=fw.pole_distance, scales=scales, need=want)
     an.scales.update(getattr(an.design, "scales", {}))
-    if r is not None and machine.linkage is not None:
-        pass
     if "wittenbauer" in want:
         apart = float(getattr(an.design.wittenbauer, "angle_between_deg", 90.0))
         if apart < TANGENTS_APART_DEG:

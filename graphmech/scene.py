@@ -1371,6 +1371,15 @@ _TRANSLATING_ONLY = ("offset",)
 _OSCILLATING_ONLY = ("pivot_distance", "arm", "sense")
 
 
+def _read_tail(top: _Reader, known: Iterable[str] = _TOP_KEYS) -> tuple[float, Page]:
+    """The end of every scene reader: [check] and [page], then any top-level key not in ``known``
+    is an unknown key. Returns the drawing precision (mm) and the page."""
+    precision, page = _read_check(top), _read_page(top)
+    top.known.update(known)
+    top.finish()
+    return precision, page
+
+
 def _peek_follower(data: Mapping[str, Any]) -> str | None:
     """The follower's type if the scene states a valid one (to choose the scales' units)."""
     cam = data.get("cam")
@@ -1986,10 +1995,7 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         _read_header(top)
         _read_scales(top)
         _read_measured(top, None)
-        _read_check(top)
-        _read_page(top)
-        top.known.update(_TOP_KEYS)
-        top.finish()
+        _read_tail(top)
         problems.sort(key=lambda p: _rank(p, order))
         raise SceneError(problems, source)
     from graphmech.scene_cycle import CYCLE_SHOW_CHOICES, read_cycle
@@ -2002,10 +2008,7 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     if "cycle" in data or "characteristics" in data or any(s in CYCLE_SHOW_CHOICES for s in show):
         cycle, positions = read_cycle(top, data, show, linkage, positions)
     measured = _read_measured(top, positions.labels if positions else None)
-    precision = _read_check(top)
-    page = _read_page(top)
-    top.known.update(_TOP_KEYS + ("cycle", "characteristics"))
-    top.finish()
+    precision, page = _read_tail(top, _TOP_KEYS + ("cycle", "characteristics"))
     if problems or linkage is None:
         problems.sort(key=lambda p: _rank(p, order))
         raise SceneError(problems or [("driver", "invalid")], source)
@@ -2038,10 +2041,7 @@ def _parse_cam_scene(
             top.problem(key, f"{what} belongs to a linkage scene; this is a cam scene ([cam])")
     cam = _read_cam(top)
     measured = _read_measured(top, None, cam=True)
-    precision = _read_check(top)
-    page = _read_page(top)
-    top.known.update(_TOP_KEYS)
-    top.finish()
+    precision, page = _read_tail(top)
     if problems or cam is None:
         _raise_sorted(problems, data, order, "cam", source)
     return Scene(

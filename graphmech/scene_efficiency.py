@@ -21,10 +21,9 @@ from graphmech.scene import (
     _MISSING,
     Scene,
     _raise_sorted,
-    _read_check,
+    _read_tail,
     _read_header,
     _read_measured,
-    _read_page,
     _read_scales,
     _Reader,
     _say,
@@ -150,10 +149,7 @@ def parse_efficiency_scene(data: dict[str, Any], source: str, top: _Reader, orde
                             "a chain of machines has no force polygon: show diagram")
     # names such as eta@reverse: the check validates the direction against the quantity
     measured = _read_measured(top, None)
-    precision = _read_check(top)
-    page = _read_page(top)
-    top.known.update(_FORCES_KEYS)
-    top.finish()
+    precision, page = _read_tail(top, _FORCES_KEYS)
     if problems or problem is None:
         _raise_sorted(problems, data, order, "balancing" if balancing else "efficiency", source)
     return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,

@@ -38,7 +38,6 @@ from graphmech.scene import (
     _MISSING,
     _QUANTITY_NAME,
     _SUFFIXES,
-    _TOP_KEYS,
     MAX_POSITIONS,
     MAX_TABLE_POINTS,
     Braking,
@@ -49,11 +48,10 @@ from graphmech.scene import (
     _label,
     _not_for,
     _raise_sorted,
-    _read_check,
+    _read_tail,
     _read_header,
     _read_linkage,
     _read_measured,
-    _read_page,
     _read_scales,
     _Reader,
     _say,
@@ -908,10 +906,7 @@ def parse_flywheel_scene(
             reason = _label_problem(key, count)
             if reason:
                 top.problem(f"measured.{_key_text(key)}", reason)
-    precision = _read_check(top)
-    page = _read_page(top)
-    top.known.update(_TOP_KEYS)
-    top.finish()
+    precision, page = _read_tail(top)
     if problems or flywheel is None:
         _raise_sorted(problems, data, order, "flywheel", source)
     model = flywheel.machine

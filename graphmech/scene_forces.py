@@ -28,15 +28,13 @@ from graphmech.mechanisms.forces import (
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage
 from graphmech.scene import (
     _MISSING,
-    _TOP_KEYS,
     SHOW_CHOICES,
     Scene,
     _raise_sorted,
-    _read_check,
+    _read_tail,
     _read_header,
     _read_linkage,
     _read_measured,
-    _read_page,
     _read_scales,
     _Reader,
     _say,
@@ -355,10 +353,7 @@ def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: M
     fr = top.table_at("forces")
     forces = None if fr is None else _read_forces(fr, linkage)
     measured = _read_measured(top, positions.labels if positions else None)
-    precision = _read_check(top)
-    page = _read_page(top)
-    top.known.update(_TOP_KEYS)
-    top.finish()
+    precision, page = _read_tail(top)
     if problems or linkage is None or forces is None:
         _raise_sorted(problems, data, order, "forces", source)
     return Scene(

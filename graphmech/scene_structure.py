@@ -12,8 +12,8 @@ from dataclasses import dataclass
 from typing import Any, Mapping
 
 from graphmech.mechanisms.topology import Pair, Topology
-from graphmech.scene import (_LINKAGE_KEYS, _MISSING, _TOP_KEYS, Scene, _raise_sorted, _read_check, _read_header,
-                             _read_measured, _read_page, _read_scales, _Reader, _say)
+from graphmech.scene import (_LINKAGE_KEYS, _MISSING, Scene, _raise_sorted, _read_header,
+                             _read_measured, _read_scales, _read_tail, _Reader, _say)
 
 #: What a structure scene may show.
 STRUCTURE_SHOW_CHOICES = ("structure",)
@@ -203,10 +203,7 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: _Reader, order
         if name not in STRUCTURE_QUANTITIES:
             top.problem(f"measured.{name}", f"unknown quantity {name!r}: a structure scene judges "
                                             f"{', '.join(STRUCTURE_QUANTITIES)}")
-    precision = _read_check(top)
-    page = _read_page(top)
-    top.known.update(_TOP_KEYS)
-    top.finish()
+    precision, page = _read_tail(top)
     if problems or structure is None:
         _raise_sorted(problems, data, order, "structure", source)
     return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,

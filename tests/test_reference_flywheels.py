@@ -7,12 +7,10 @@ the reference computes from the same N positions.
 """
 from __future__ import annotations
 
-import math
 
-import numpy as np
 import pytest
 
-from tests.conftest import SCENES, check_json, run_cli, values
+from tests.conftest import SCENES, check_json, values
 
 COMPRESSOR = SCENES / "fly.compressor_course_project.toml"
 
