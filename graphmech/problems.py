@@ -11,6 +11,7 @@ code of another kind, and nothing here imports matplotlib.
 from __future__ import annotations
 
 import dataclasses
+import importlib
 from dataclasses import dataclass
 from typing import Any, Callable
 
@@ -51,6 +52,42 @@ def with_precision(scene: Any, precision_mm: float | None) -> Any:
     return scene if precision_mm is None else dataclasses.replace(scene, precision_mm=precision_mm)
 
 
+def _function(module: str, name: str) -> Callable[..., Any]:
+    """``module.name``, imported when first called: a check never imports another kind's code."""
+
+    def call(*args: Any) -> Any:
+        return getattr(importlib.import_module(module), name)(*args)
+
+    return call
+
+
+def _analysing(module: str, name: str) -> Callable[[Any, Extra], Any]:
+    """A check module's ``analyse_…(scene, extra)``."""
+    return _function(module, name)
+
+
+def _judging(module: str, name: str) -> Callable[[Any, Extra], list[Any]]:
+    """A check module's ``judge_…(analysis)`` (the precision is the scene's; ``extra`` is in the analysis)."""
+    judge = _function(module, name)
+    return lambda an, extra: judge(an)
+
+
+#: Each kind's analysis and judge, imported when first used.
+_analyse_linkage = _analysing("graphmech.check", "analyse")
+_analyse_cycle = _analysing("graphmech.cycle_check", "analyse_cycle")
+_analyse_cam = _analysing("graphmech.cam_check", "analyse_cam")
+_analyse_flywheel = _analysing("graphmech.flywheel_check", "analyse_flywheel")
+_analyse_efficiency = _analysing("graphmech.efficiency_check", "analyse_efficiency")
+_analyse_balancing = _analysing("graphmech.balancing_check", "analyse_balancing")
+_analyse_forces = _analysing("graphmech.force_check", "analyse_forces")
+_judge_linkage = _judging("graphmech.check", "judge")
+_judge_cycle = _judging("graphmech.cycle_check", "judge_cycle")
+_judge_cam = _judging("graphmech.cam_check", "judge_cam")
+_judge_flywheel = _judging("graphmech.flywheel_check", "judge_flywheel")
+_judge_efficiency = _judging("graphmech.efficiency_check", "judge_efficiency")
+_judge_balancing = _judging("graphmech.balancing_check", "judge_balancing")
+
+
 def _page(scene: Any) -> tuple[float, float]:
     from graphmech.check import page_size
 
@@ -60,25 +97,13 @@ def _page(scene: Any) -> tuple[float, float]:
 # ---------------------------------------------------------------------------- linkage
 
 
-def _linkage_analyse(scene: Any, extra: Extra) -> Any:
-    from graphmech.check import analyse
-
-    return analyse(scene, extra)
-
-
-def _linkage_judge(an: Any, extra: Extra) -> list[Any]:
-    from graphmech.check import judge
-
-    return judge(an)
-
-
 def _linkage_sheet(scene: Any, footer: Footer, caption: str = "") -> tuple[Any, list[str]]:
     from graphmech.check import position_text
     from graphmech.methods.figures import linkage_sheet
     from graphmech.methods.polygons import PANELS
 
     _linkage_fits(scene)
-    an = _linkage_analyse(scene, ())
+    an = _analyse_linkage(scene, ())
     b = an.build
     texts = [caption + position_text(b, lab) for lab in an.labels]
     sheet = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
@@ -114,41 +139,17 @@ def _linkage_extras(an: Any) -> dict[str, Any]:
 # ---------------------------------------------------------------------------- cycle, cam
 
 
-def _cycle_analyse(scene: Any, extra: Extra) -> Any:
-    from graphmech.cycle_check import analyse_cycle
-
-    return analyse_cycle(scene, extra)
-
-
-def _cycle_judge(an: Any, extra: Extra) -> list[Any]:
-    from graphmech.cycle_check import judge_cycle
-
-    return judge_cycle(an)
-
-
 def _cycle_sheet(scene: Any, footer: Footer) -> tuple[Any, list[str]]:
     from graphmech.methods.cycle_figures import cycle_sheet
 
-    an = _cycle_analyse(scene, ())
+    an = _analyse_cycle(scene, ())
     return cycle_sheet(scene.title, an, list(scene.show), _page(scene), footer), list(an.warnings)
-
-
-def _cam_analyse(scene: Any, extra: Extra) -> Any:
-    from graphmech.cam_check import analyse_cam
-
-    return analyse_cam(scene, extra)
-
-
-def _cam_judge(an: Any, extra: Extra) -> list[Any]:
-    from graphmech.cam_check import judge_cam
-
-    return judge_cam(an)
 
 
 def _cam_sheet(scene: Any, footer: Footer) -> tuple[Any, list[str]]:
     from graphmech.methods.cam_figures import cam_sheet
 
-    an = _cam_analyse(scene, ())
+    an = _analyse_cam(scene, ())
     sheet = cam_sheet(scene.title, an.cam, an.drawn, an.scales, list(scene.show), _page(scene),
                       roller_circles=scene.cam.roller_circles, marks=an.marks, footer=footer)
     return sheet, list(an.warnings)
@@ -161,23 +162,11 @@ def _cam_extras(an: Any) -> dict[str, Any]:
 # ---------------------------------------------------------------------------- flywheel
 
 
-def _flywheel_analyse(scene: Any, extra: Extra) -> Any:
-    from graphmech.flywheel_check import analyse_flywheel
-
-    return analyse_flywheel(scene, extra)
-
-
-def _flywheel_judge(an: Any, extra: Extra) -> list[Any]:
-    from graphmech.flywheel_check import judge_flywheel
-
-    return judge_flywheel(an)
-
-
 def _flywheel_sheet(scene: Any, footer: Footer) -> tuple[Any, list[str]]:
     from graphmech.methods.flywheel_figures import flywheel_sheet
     from graphmech.render.primitives import Sheet
 
-    an = _flywheel_analyse(scene, ())
+    an = _analyse_flywheel(scene, ())
     cycle_panels = [p for p in scene.show if p not in ("mechanism", "rundown")]
     if an.design is None and not any(p in scene.show for p in ("mechanism", "rundown")):
         raise SceneError([("show", "nothing to draw: this flywheel scene asks for no diagram; "
@@ -226,12 +215,6 @@ def _flywheel_lines(an: Any) -> list[str]:
 # ---------------------------------------------------------------------------- forces
 
 
-def _forces_analyse(scene: Any, extra: Extra) -> Any:
-    from graphmech.force_check import analyse_forces
-
-    return analyse_forces(scene, extra)
-
-
 def _forces_sheet(scene: Any, footer: Footer) -> tuple[Any, list[str]]:
     from graphmech.force_check import render_forces
 
@@ -242,41 +225,17 @@ def _forces_extras(an: Any) -> dict[str, Any]:
     return {"friction": an.friction_summary()} if an.scene.forces.model.has_friction else {}
 
 
-def _efficiency_analyse(scene: Any, extra: Extra) -> Any:
-    from graphmech.efficiency_check import analyse_efficiency
-
-    return analyse_efficiency(scene, extra)
-
-
-def _efficiency_judge(an: Any, extra: Extra) -> list[Any]:
-    from graphmech.efficiency_check import judge_efficiency
-
-    return judge_efficiency(an)
-
-
 def _efficiency_sheet(scene: Any, footer: Footer) -> tuple[Any, list[str]]:
     from graphmech.efficiency_check import efficiency_figure
 
-    an = _efficiency_analyse(scene, ())
+    an = _analyse_efficiency(scene, ())
     return efficiency_figure(an, _page(scene), footer), list(an.warnings)
-
-
-def _balancing_analyse(scene: Any, extra: Extra) -> Any:
-    from graphmech.balancing_check import analyse_balancing
-
-    return analyse_balancing(scene, extra)
-
-
-def _balancing_judge(an: Any, extra: Extra) -> list[Any]:
-    from graphmech.balancing_check import judge_balancing
-
-    return judge_balancing(an)
 
 
 def _balancing_sheet(scene: Any, footer: Footer) -> tuple[Any, list[str]]:
     from graphmech.balancing_check import balancing_figure
 
-    an = _balancing_analyse(scene, ())
+    an = _analyse_balancing(scene, ())
     return balancing_figure(an, _page(scene), footer), list(an.warnings)
 
 
@@ -309,15 +268,15 @@ def _structure_lines(an: Any) -> list[str]:
 
 
 KINDS: dict[str, Kind] = {
-    "linkage": Kind("linkage", _linkage_analyse, _linkage_judge, _linkage_sheet, _linkage_extras),
-    "cycle": Kind("cycle", _cycle_analyse, _cycle_judge, _cycle_sheet, lambda an: dict(an.summary),
+    "linkage": Kind("linkage", _analyse_linkage, _judge_linkage, _linkage_sheet, _linkage_extras),
+    "cycle": Kind("cycle", _analyse_cycle, _judge_cycle, _cycle_sheet, lambda an: dict(an.summary),
                   lambda an: an.summary_lines()),
-    "cam": Kind("cam", _cam_analyse, _cam_judge, _cam_sheet, _cam_extras),
-    "flywheel": Kind("flywheel", _flywheel_analyse, _flywheel_judge, _flywheel_sheet, _flywheel_extras,
+    "cam": Kind("cam", _analyse_cam, _judge_cam, _cam_sheet, _cam_extras),
+    "flywheel": Kind("flywheel", _analyse_flywheel, _judge_flywheel, _flywheel_sheet, _flywheel_extras,
                      _flywheel_lines),
-    "forces": Kind("forces", _forces_analyse, lambda an, extra: an.verdicts, _forces_sheet, _forces_extras),
-    "efficiency": Kind("efficiency", _efficiency_analyse, _efficiency_judge, _efficiency_sheet),
-    "balancing": Kind("balancing", _balancing_analyse, _balancing_judge, _balancing_sheet),
+    "forces": Kind("forces", _analyse_forces, lambda an, extra: an.verdicts, _forces_sheet, _forces_extras),
+    "efficiency": Kind("efficiency", _analyse_efficiency, _judge_efficiency, _efficiency_sheet),
+    "balancing": Kind("balancing", _analyse_balancing, _judge_balancing, _balancing_sheet),
     "structure": Kind("structure", _structure_analyse, _structure_judge, _structure_sheet,
                       lambda an: {"structure": an.summary()}, _structure_lines),
 }
