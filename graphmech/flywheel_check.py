@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -94,7 +95,7 @@ class FlywheelAnalysis:
                 "omega_s": mo.omega_s, "delta_required": self.machine.delta}
 
 
-    @property
+    @cached_property
     def braking_inertia(self) -> float:
         """The inertia the brake stops, kg·m²: the constant one, plus the masses' reduced inertia
         averaged over a turn (a run-down lasts many turns, so the swing of Jп averages out)."""
