@@ -28,7 +28,10 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _parser() -> argparse.ArgumentParser:
+    import graphmech
+
     p = _Parser(prog="graphmech", description="Textbook graphical methods as exact, checked constructions.")
+    p.add_argument("--version", action="version", version=f"graphmech {graphmech.__version__}")
     sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
     r = sub.add_parser("render", help="draw a scene to SVG")
     r.add_argument("scenes", nargs="+", metavar="SCENE")

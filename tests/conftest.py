@@ -1,6 +1,7 @@
 """Shared test helpers: the reference problems and running the command line in-process."""
 from __future__ import annotations
 
+import functools
 import io
 import json
 import tomllib
@@ -10,14 +11,30 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-SHARED = ROOT.parent / "shared"
 SCENES = ROOT / "figures" / "scenes"
+# The textbook's reference problems, copied into the repository (a clone has nothing beside it).
+REFERENCE = ROOT / "tests" / "reference" / "problems.toml"
+
+
+@functools.cache
+def reference_problems() -> dict[str, dict]:
+    """The bank's problems by id (read once; callers must not change them)."""
+    with REFERENCE.open("rb") as f:
+        return {p["id"]: p for p in tomllib.load(f)["problem"]}
+
+
+def reference_problem(pid: str) -> dict:
+    return reference_problems()[pid]
+
+
+def reference_area(area: str) -> dict[str, dict]:
+    """The bank's problems of one area (``kinematics``, ``cam``, ``flywheel`` …) by id."""
+    return {pid: p for pid, p in reference_problems().items() if p["area"] == area}
 
 
 @pytest.fixture(scope="session")
 def problems() -> dict:
-    with open(SHARED / "problems.toml", "rb") as f:
-        return {p["id"]: p for p in tomllib.load(f)["problem"]}
+    return reference_problems()
 
 
 def run_cli(*argv: str) -> tuple[int, str, str]:

@@ -134,6 +134,7 @@ def test_exact_reference_profile_matches_the_book(problems, sense, e):
     assert np.max(np.abs(pts[k] - q)) <= 0.5e-7 + 1e-12
     pitch = profile(cam, [math.radians(150.0)]).pitch[0]
     gap_mm = (float(np.hypot(*(pts[k] - pitch))) - 0.01) * 1e3
+    # pts[k] is the densely drawn profile's point nearest the vertex, not the corner itself: 1e-6 mm
     assert gap_mm == pytest.approx(ex[f"roller_gap_at_150_mm_{sense}"], abs=1e-6)
 
 

@@ -1,4 +1,4 @@
-"""The textbook's efficiency, thread and balancing problems (../shared/problems.toml and the seeds'
+"""The textbook's efficiency, thread and balancing problems (tests/reference/problems.toml and the seeds'
 worked balancing examples) reproduced by their scenes, flags read.
 
 Force polygons agree with the closed-form trigonometric answers to rounding (1e-12); the book's

@@ -1,4 +1,4 @@
-"""The force problems of ../shared/problems.toml reproduced by their scenes.
+"""The force problems of tests/reference/problems.toml reproduced by their scenes.
 
 force.sixbar_kinetostatic is the complete kinetostatic example: two Assur groups (RRP 4–5 solved
 first, then RRR 2–3), inertia loads and gravity, a working resistance; with friction too. The force

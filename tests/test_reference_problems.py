@@ -1,4 +1,4 @@
-"""The textbook's kinematics problems (../shared/problems.toml) reproduced by their scenes.
+"""The textbook's kinematics problems (tests/reference/problems.toml) reproduced by their scenes.
 
 Exact values to 1e-9; the book's printed values within 2 % where its answer is graphical and
 0.1 % where it is analytical — except where the problem's ``flag`` says the book is wrong.
@@ -60,9 +60,7 @@ def test_oscillating_block(problems):
     for name, key in pairs.items():
         g = abs(q[name]["graphical"])  # the problem states magnitudes
         assert g == pytest.approx(abs(q[name]["exact"]), rel=1e-9), name
-        # problems.toml's rates for this problem carry ~1e-7 relative error (finite differences,
-        # by the look of it); ours agree with an independent differentiation to 1e-9 (below).
-        assert g == pytest.approx(p["exact"][key], rel=5e-7), name
+        assert g == pytest.approx(p["exact"][key], rel=1e-9), name
         assert close(g, p["book"][key], 0.02), name  # graphical answers in the book: 2 %
     # E is on the side the flag chose, not the other one
     assert abs(q["v_E"]["graphical"] - p["exact"]["vE_other_side_m_s"]) > 0.05

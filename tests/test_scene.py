@@ -13,13 +13,13 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from tests.conftest import reference_area
 from graphmech.errors import SceneError
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Guide, LinkPoint, SliderInput
 from graphmech.scene import MAX_BYTES, Page, Scene, load_scene, parse_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs" / "scene-format.md"
-PROBLEMS = ROOT.parent / "shared" / "problems.toml"
 
 FOURBAR = """\
 title = "Four-bar, φ = 30°"
@@ -790,16 +790,10 @@ def test_each_doc_example_parses(index: int, tmp_path: Path) -> None:
     assert scene.linkage.frame_link not in scene.linkage.links()
 
 
-def kinematics_problems() -> dict[str, dict]:
-    if not PROBLEMS.exists():
-        pytest.skip("../shared/problems.toml is not beside the project")
-    data = tomllib.loads(PROBLEMS.read_text(encoding="utf-8"))
-    return {p["id"]: p["inputs"] for p in data["problem"] if p["area"] == "kinematics"}
-
 
 def test_the_reference_kinematics_problems_can_be_written() -> None:
     """Each `kinematics` problem's inputs, written as a scene, come back in SI."""
-    problems = kinematics_problems()
+    problems = {pid: p["inputs"] for pid, p in reference_area("kinematics").items()}
     docs = {s.title: s for s in (parse_scene(tomllib.loads(b)) for b in doc_blocks())}
 
     p = problems["linkage.slider_crank_offset"]

@@ -33,11 +33,10 @@ from graphmech.scene import (
     parse_scene,
 )
 from graphmech.scene_flywheel import FLYWHEEL_SHOW_DEFAULT
-from tests.conftest import run_cli
+from tests.conftest import reference_area, run_cli
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs" / "scene-format.md"
-PROBLEMS = ROOT.parent / "shared" / "problems.toml"
 
 #: Every feature at once: an offset slider-crank compressor with an indicator diagram, a moment
 #: on link 3 and one on the crank, a motor, the true motion and braking.
@@ -841,12 +840,6 @@ def doc_flywheel_scenes() -> dict[str, Scene]:
     return {s.title: s for s in scenes if s.flywheel is not None}
 
 
-def flywheel_problems() -> dict[str, dict]:
-    if not PROBLEMS.exists():
-        pytest.skip("../shared/problems.toml is not beside the project")
-    data = tomllib.loads(PROBLEMS.read_text(encoding="utf-8"))
-    return {p["id"]: p for p in data["problem"] if p["area"] == "flywheel"}
-
 
 def test_docs_have_the_three_flywheel_examples() -> None:
     scenes = doc_flywheel_scenes()
@@ -889,7 +882,7 @@ def test_documented_error_messages_are_real() -> None:
 
 
 def test_compressor_course_project() -> None:
-    p = flywheel_problems()["fly.compressor_course_project"]
+    p = reference_area("flywheel")["fly.compressor_course_project"]
     inputs, exact = p["inputs"], p["exact"]
     scene = doc_flywheel_scenes()["Air compressor: flywheel by the Wittenbauer diagram"]
     m = scene.flywheel.machine
@@ -919,7 +912,7 @@ def test_compressor_course_project() -> None:
 
 
 def test_ic_engine_flywheel() -> None:
-    p = flywheel_problems()["fly.ic_engine_flywheel"]
+    p = reference_area("flywheel")["fly.ic_engine_flywheel"]
     inputs = p["inputs"]
     m = doc_flywheel_scenes()["IC engine: flywheel on the crankshaft"].flywheel.machine
     assert m.linkage is None and m.cycle == math.pi and m.balance == "resisting"
@@ -935,7 +928,7 @@ def test_ic_engine_flywheel() -> None:
 
 
 def test_brake_time() -> None:
-    p = flywheel_problems()["fly.brake_time"]
+    p = reference_area("flywheel")["fly.brake_time"]
     inputs = p["inputs"]
     fly = doc_flywheel_scenes()["Run-down under a brake"].flywheel
     assert fly.machine.omega_m == inputs["omega_rad_s"]
