@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from graphmech.accuracy import CONSTRUCTION
 from graphmech import tolerances as T
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
@@ -48,11 +49,22 @@ class Row:
     exact: float
     rel_error: float
     ill_conditioned: bool = False
+    # How accurate the method says it is (graphmech.accuracy): a construction is exact but for
+    # round-off; a discretised or read-off value carries its own relative error estimate and the
+    # basis it was found on ("12 positions", "15° divisions").
+    error_source: str = CONSTRUCTION
+    error_estimate: float | None = None
+    basis: str = ""
 
     def as_dict(self) -> dict[str, Any]:
         return {"name": self.name, "unit": self.unit, "drawn_mm": self.drawn_mm, "scale": self.scale,
                 "graphical": self.graphical, "exact": self.exact, "rel_error": self.rel_error,
-                "ill_conditioned": self.ill_conditioned}
+                "ill_conditioned": self.ill_conditioned, "error_source": self.error_source,
+                "error_estimate": self.error_estimate, "basis": self.basis}
+
+    def estimated(self, source: str, estimate: float, basis: str) -> "Row":
+        """This row as a discretised or read-off value with its own error estimate."""
+        return replace(self, error_source=source, error_estimate=float(estimate), basis=basis)
 
 
 @dataclass(frozen=True)

@@ -180,6 +180,8 @@ def _table(an: Any, verdicts: Sequence[Any]) -> str:
         for r in an.rows:
             drawn = "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}"
             flag = "  ILL-CONDITIONED" if r.ill_conditioned else ""
+            if r.error_estimate is not None:  # a discretised or read-off value: how accurate it says it is
+                flag += f"  ±{_percent(r.error_estimate)} ({r.basis or r.error_source})"
             lines.append(f"{r.name:<16} {drawn:>11} {r.scale:>11.5g} {r.graphical:>16.9g} {r.exact:>16.9g}"
                          f" {r.rel_error:>9.1e}  {r.unit}{flag}")
     if verdicts:
@@ -188,6 +190,12 @@ def _table(an: Any, verdicts: Sequence[Any]) -> str:
             lines.append(f"{v.name:<16} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
                          f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
     return "\n".join(lines)
+
+
+def _percent(fraction: float) -> str:
+    """A relative error as the table prints it: '8 %', '0.013 %', '<1e-10 %'."""
+    p = 100.0 * fraction
+    return "<1e-10 %" if p < 1e-10 else f"{p:.2g} %"
 
 
 # ---------------------------------------------------------------------------- bench

@@ -4,8 +4,9 @@ from __future__ import annotations
 import functools
 import io
 import json
+import signal
 import tomllib
-from contextlib import redirect_stderr, redirect_stdout
+from contextlib import contextmanager, redirect_stderr, redirect_stdout
 from pathlib import Path
 
 import pytest
@@ -37,14 +38,50 @@ def problems() -> dict:
     return reference_problems()
 
 
-def run_cli(*argv: str) -> tuple[int, str, str]:
-    """Run ``graphmech`` in-process; (exit code, stdout, stderr)."""
+# A command still running after this many seconds fails its test: the hang guard. Bounded time
+# is shown this way, never by a speed assertion.
+HANG_GUARD_S = 60.0
+
+
+class Hang(AssertionError):
+    pass
+
+
+@contextmanager
+def hang_guard(seconds: float = HANG_GUARD_S):
+    """Fail (raise Hang) if the block is still running after ``seconds`` (SIGALRM, main thread)."""
+    def stop(signum, frame):
+        raise Hang(f"still running after {seconds:g} s")
+
+    previous = signal.signal(signal.SIGALRM, stop)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0.0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+def run_cli(*argv: str, limit: float = HANG_GUARD_S) -> tuple[int, str, str]:
+    """Run ``graphmech`` in-process under the hang guard; (exit code, stdout, stderr)."""
     from graphmech.cli import main
 
     out, err = io.StringIO(), io.StringIO()
-    with redirect_stdout(out), redirect_stderr(err):
+    with hang_guard(limit), redirect_stdout(out), redirect_stderr(err):
         code = main(list(argv))
     return code, out.getvalue(), err.getvalue()
+
+
+def assert_refused(result: tuple[int, str, str], file: str, *words: str) -> str:
+    """A refusal: exit 2, nothing on stdout, one line on stderr that names the file (and the words)."""
+    code, out, err = result
+    assert code == 2, (code, err)
+    assert out == "", out
+    assert err.endswith("\n") and err.count("\n") == 1, repr(err)
+    assert err.startswith(f"{file}: "), err
+    for w in words:
+        assert w in err, (w, err)
+    return err.rstrip("\n")
 
 
 def check_json(scene: Path | str, *extra: str) -> dict:

@@ -1,0 +1,54 @@
+"""How accurate a row of the check table is, as the method itself can tell without the exact value.
+
+Every row has an ``error_source``:
+
+- ``"construction"``: exact but for round-off (``ill_conditioned`` flags where round-off grows);
+- ``"discretisation"``: the method works on N positions or divisions (chords, a flywheel from N
+  positions, graphical differentiation and integration), so its error falls with N;
+- ``"reading"``: read off the drawing at a finite resolution (the largest pressure angle at the
+  cam's divisions, a radius of curvature from three drawn points).
+
+The last two carry an ``error_estimate``: the relative error (with the row's own denominator, as
+``rel_error``) that the method estimates by doing the work again more finely, never from the exact
+solution — Richardson's estimate for a method of known order p from N and 2N,
+
+    e(N) ≈ |v(N) − v(2N)| · 2ᵖ / (2ᵖ − 1),
+
+or, where the order is not known in advance (a maximum that may sit at a kink), the order observed
+on N, 2N and 4N.
+"""
+from __future__ import annotations
+
+import math
+
+CONSTRUCTION, DISCRETISATION, READING = "construction", "discretisation", "reading"
+SOURCES = (CONSTRUCTION, DISCRETISATION, READING)
+
+
+def richardson(coarse: float, fine: float, order: float) -> float:
+    """The estimated absolute error of ``coarse`` (at N) from ``fine`` (at 2N), order p known."""
+    return abs(coarse - fine) * 2.0**order / (2.0**order - 1.0)
+
+
+def observed_order(v1: float, v2: float, v4: float, lo: float = 0.5, hi: float = 4.0) -> float:
+    """The order seen on N, 2N, 4N: log₂(|v1 − v2| / |v2 − v4|), kept within [lo, hi].
+
+    >>> round(observed_order(1.0 + 1/16, 1.0 + 1/64, 1.0 + 1/256), 6)
+    2.0
+    """
+    d12, d24 = abs(v1 - v2), abs(v2 - v4)
+    if d24 == 0.0 or d12 == 0.0:
+        return hi  # already converged to round-off: assume the fast end
+    return min(hi, max(lo, math.log2(d12 / d24)))
+
+
+def estimate_from_three(v1: float, v2: float, v4: float) -> float:
+    """The estimated absolute error of v1 (at N) from the same method at 2N and 4N."""
+    return richardson(v1, v2, observed_order(v1, v2, v4))
+
+
+def relative(abs_error: float, denominator: float) -> float:
+    """An absolute error estimate as a relative one, as ``rel_error`` is (never NaN or inf)."""
+    if not math.isfinite(abs_error):
+        return math.inf if denominator else 0.0
+    return abs_error / denominator if denominator > 0.0 else abs_error
