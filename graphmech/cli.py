@@ -13,10 +13,13 @@ import json
 import math
 import os
 import sys
+import warnings
 from pathlib import Path
 from typing import Any, Sequence
 
-from graphmech.errors import DegenerateConstruction, GraphmechError, SceneError
+import numpy as np
+
+from graphmech.errors import COMMAND_LINE, GraphmechError, SceneError, printable
 from graphmech.files import write_atomic
 
 EXIT_OK, EXIT_OUT_OF_TOLERANCE, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
@@ -50,32 +53,43 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
+def say(text: str) -> None:
+    """One line on stderr, whatever a user's names and titles hold."""
+    print(printable(text), file=sys.stderr)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    args.current = None  # the scene being read, for the messages
     try:
-        if args.command == "render":
-            return _render(args)
-        if args.command == "check":
-            return _check(args)
-        return _bench(args)
+        # Numerical trouble is ours to detect and say in words (a warning naming the value, or a
+        # refusal); numpy's and the libraries' own warnings never reach the user's stderr.
+        with warnings.catch_warnings(), np.errstate(all="ignore"):
+            warnings.simplefilter("ignore")
+            if args.command == "render":
+                return _render(args)
+            if args.command == "check":
+                return _check(args)
+            return _bench(args)
     except SceneError as e:
-        print(e.one_line(), file=sys.stderr)
+        say(e.one_line(_file_name(args)))
         return EXIT_BAD_INPUT
-    except DegenerateConstruction as e:
-        print(f"{getattr(args, 'scene', None) or args.current}: {e}", file=sys.stderr)
-        return EXIT_BAD_INPUT
-    except GraphmechError as e:
-        print(f"graphmech: {e}", file=sys.stderr)
+    except GraphmechError as e:  # a construction that cannot be made, or another refusal
+        say(f"{_file_name(args) or 'graphmech'}: {e}")
         return EXIT_BAD_INPUT
     except OSError as e:
-        print(f"graphmech: {e.filename or ''}{': ' if e.filename else ''}{e.strerror or e}", file=sys.stderr)
+        say(f"graphmech: {e.filename or ''}{': ' if e.filename else ''}{e.strerror or e}")
         return EXIT_BAD_INPUT
     except KeyboardInterrupt:
         return 130
     except Exception as e:  # a bug of ours: still one line, never a traceback
-        print(f"graphmech: internal error ({type(e).__name__}: {e}); please report it with the scene",
-              file=sys.stderr)
+        say(f"graphmech: internal error ({type(e).__name__}: {e}); please report it with the scene")
         return EXIT_INTERNAL
+
+
+def _file_name(args: argparse.Namespace) -> str | None:
+    """The scene file the messages name, as the scene readers name it."""
+    return Path(args.current).name if args.current else None
 
 
 # ---------------------------------------------------------------------------- render
@@ -101,14 +115,14 @@ def _id_prefix(path: str | os.PathLike[str]) -> str:
 
 def _render(args: argparse.Namespace) -> int:
     if args.output and len(args.scenes) > 1:
-        print("graphmech: -o takes one scene; use -d DIR for several", file=sys.stderr)
+        say("graphmech: -o takes one scene; use -d DIR for several")
         return EXIT_BAD_INPUT
     outputs = []
     for s in args.scenes:  # render everything first: one bad scene writes nothing
         args.current = s  # for the message if it cannot be constructed
-        svg, warnings = render_scene(s)
-        for w in warnings:
-            print(f"{s}: warning: {w}", file=sys.stderr)
+        svg, found = render_scene(s)
+        for w in found:
+            say(f"{_file_name(args)}: warning: {w}")
         if args.output:
             out = Path(args.output)
         else:
@@ -116,10 +130,10 @@ def _render(args: argparse.Namespace) -> int:
         outputs.append((out, svg))
     for out, svg in outputs:
         if not Path(os.path.realpath(out)).parent.is_dir():
-            print(f"graphmech: {out}: folder does not exist", file=sys.stderr)
+            say(f"graphmech: {out}: folder does not exist")
             return EXIT_BAD_INPUT
         if out.is_dir():
-            print(f"graphmech: {out}: is a folder; give a file name", file=sys.stderr)
+            say(f"graphmech: {out}: is a folder; give a file name")
             return EXIT_BAD_INPUT
     for out, svg in outputs:
         write_atomic(out, svg)
@@ -141,7 +155,7 @@ def _parse_measured(items: Sequence[str]) -> list[tuple[str, float]]:
                 v = math.nan
             if not sep or not name.strip() or not math.isfinite(v):
                 raise SceneError([(f"--measured {part.strip()}", "expected NAME=VALUE with a finite number")],
-                                 "command line")
+                                 COMMAND_LINE)
             out.append((name.strip(), v))
     return out
 
@@ -153,10 +167,10 @@ def _check(args: argparse.Namespace) -> int:
     from graphmech.tolerances import MAX_PRECISION_MM
 
     if args.precision is not None and not 0 < args.precision <= MAX_PRECISION_MM:
-        print(f"graphmech: --precision must be a number of mm above 0 and at most {MAX_PRECISION_MM:g}",
-              file=sys.stderr)
+        say(f"graphmech: --precision must be a number of mm above 0 and at most {MAX_PRECISION_MM:g}")
         return EXIT_BAD_INPUT
     extra = _parse_measured(args.measured)
+    args.current = args.scene
     scene = with_precision(load_scene(args.scene), args.precision)
     an, verdicts, extra_doc, lines = check(scene, tuple(extra))
     bad = any(not v.ok for v in verdicts)
@@ -169,7 +183,7 @@ def _check(args: argparse.Namespace) -> int:
         for line in lines:
             print(line)
         for w in an.warnings:
-            print(f"warning: {w}", file=sys.stderr)
+            say(f"{_file_name(args)}: warning: {w}")
     return EXIT_OUT_OF_TOLERANCE if bad else EXIT_OK
 
 

@@ -6,8 +6,21 @@ and carries *where* it happened: a scene's key path or a construction step.
 from __future__ import annotations
 
 
+def printable(text: str) -> str:
+    """``text`` with every control or other unprintable character escaped (``\\n``, ``\\x1b``),
+    so a message built from a user's names and titles stays on one line.
+
+    >>> printable("v_C\\nrm -rf")
+    'v_C\\\\nrm -rf'
+    """
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
+
+
 class GraphmechError(Exception):
     """Root of every error graphmech raises on purpose."""
+
+
+COMMAND_LINE = "command line"  # the source of a problem with the command's own arguments
 
 
 class SceneError(GraphmechError, ValueError):
@@ -26,11 +39,15 @@ class SceneError(GraphmechError, ValueError):
         self.source = source
         super().__init__(self.one_line())
 
-    def one_line(self) -> str:
+    def one_line(self, file: str | None = None) -> str:
+        """``file: key: reason`` on one line. A problem found below the scene reader (its source a
+        section such as ``machine`` or ``linkage``) is put under the scene ``file`` that led to it."""
         key, reason = self.problems[0]
         more = f" (and {len(self.problems) - 1} more)" if len(self.problems) > 1 else ""
-        where = f"{self.source}: {key}: " if key else f"{self.source}: "
-        return f"{where}{reason}{more}"
+        where = [self.source, key]
+        if file and self.source not in (file, COMMAND_LINE):
+            where.insert(0, file)
+        return printable(": ".join([w for w in where if w] + [f"{reason}{more}"]))
 
 
 class DegenerateConstruction(GraphmechError, ArithmeticError):

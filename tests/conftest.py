@@ -43,7 +43,7 @@ def problems() -> dict:
 HANG_GUARD_S = 60.0
 
 
-class Hang(AssertionError):
+class Hang(BaseException):  # not an Exception: the command's own "except Exception" must not swallow it
     pass
 
 

@@ -8,7 +8,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from tests.conftest import ROOT, SCENES, check_json, fourbar_scene, run_cli, values
+from tests.conftest import ROOT, SCENES, assert_refused, check_json, fourbar_scene, run_cli, values
 
 STATED = "[scales]\nl_m_per_mm = 0.002\nv_m_s_per_mm = 0.01\na_m_s2_per_mm = 0.1"
 
@@ -240,3 +240,48 @@ def test_precision_on_the_command_line_reaches_every_kind_of_scene():
     code, out, _ = run_cli("check", str(scene), "--json", "--measured", f"R_12={off}", "--precision", "1")
     verdict = json.loads(out)["measured"][0]
     assert code == 0 and verdict["ok"] and verdict["tolerance"] == pytest.approx(1.0 * r12["scale"])
+
+
+# ---------------------------------------------------------------------------- one line, naming the file
+
+
+def test_a_control_character_in_a_measured_name_stays_on_one_line():
+    scene = SCENES / "fly.ic_engine_flywheel.toml"
+    err = assert_refused(run_cli("check", str(scene), "--measured", "J_F\nX\x1b[31m=3"),
+                         "fly.ic_engine_flywheel.toml", "--measured")
+    assert "J_F\\nX\\x1b[31m" in err
+
+
+def test_a_problem_found_below_the_scene_reader_names_the_scene_file(tmp_path):
+    """The exact machine raises with the section it knows ("machine"); the message still starts
+    with the scene file and keeps the section and key."""
+    text = (SCENES / "fly.ic_engine_flywheel.toml").read_text(encoding="utf-8")
+    scene = tmp_path / "no-work.toml"
+    scene.write_text(text.replace("moment_Nm = [0, 200, 200, 0]", "moment_Nm = [0, 0, 0, 0]"), encoding="utf-8")
+    for argv in (("check", str(scene)), ("render", str(scene), "-o", str(tmp_path / "x.svg"))):
+        err = assert_refused(run_cli(*argv), "no-work.toml", "machine: loads: the loads do no work")
+    assert not (tmp_path / "x.svg").exists()
+
+
+def test_warnings_name_the_scene_file_and_numpy_says_nothing(tmp_path):
+    text = (SCENES / "cam.law_maxima-cosine.toml").read_text(encoding="utf-8")
+    scene = tmp_path / "soft.toml"
+    scene.write_text(text, encoding="utf-8")
+    code, out, err = run_cli("check", str(scene))
+    assert code == 0 and err
+    assert all(line.startswith("soft.toml: warning: ") for line in err.splitlines())
+
+
+def test_numpy_warnings_never_reach_stderr(tmp_path):
+    """A flat-face cam on a base circle of 1e-300 mm divides by zero inside numpy (ten
+    RuntimeWarnings when run bare); the command says only its own one-line warnings."""
+    doc = (ROOT / "docs" / "scene-format.md").read_text(encoding="utf-8")
+    block = doc.split('title = "Flat-face follower, cosine rise, 3-4-5 return"', 1)[1].split("```", 1)[0]
+    scene = tmp_path / "flat.toml"
+    scene.write_text('title = "flat"' + block.replace("base_radius = 40", "base_radius = 1e-300"), encoding="utf-8")
+    for argv in (("check", str(scene)), ("render", str(scene), "-o", str(tmp_path / "f.svg"))):
+        code, out, err = run_cli(*argv)
+        assert code in (0, 2), err
+        assert "RuntimeWarning" not in err and "encountered" not in err
+        lines = err.splitlines()
+        assert all(ln.startswith("flat.toml: ") for ln in lines) and (code == 0 or len(lines) == 1), err
