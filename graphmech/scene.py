@@ -52,7 +52,7 @@ from graphmech.mechanisms.linkage import (
     Positions,
     SliderInput,
 )
-from graphmech.tolerances import DRAWING_PRECISION_MM, MAX_PRECISION_MM, PARALLEL_SIN
+from graphmech.tolerances import DRAWING_PRECISION_MM, MAX_PRECISION_MM, PARALLEL_SIN, SCALE_RANGE_SI
 
 #: A scene file larger than this (bytes) is refused before it is parsed.
 MAX_BYTES = 1 << 20
@@ -991,12 +991,20 @@ def _read_scales(
         given = r.quantity(name, kind, required=False, per_mm=True)
         if given is not None:
             x = r.number(given.value, r.at(given.key), positive=True)
-            if x is not None and not 0 < given.si(x) < math.inf:  # under- or overflows in SI
-                r.problem(r.at(given.key), f"{x:g} is out of range once converted to SI units")
+            if x is not None and (why := scale_out_of_range(given.si(x))):
+                r.problem(r.at(given.key), f"{x:g}: {why}")
             elif x is not None:
                 scales[name] = given.si(x)
     r.finish()
     return scales
+
+
+def scale_out_of_range(si: float) -> str:
+    """Why a stated scale μ (SI per drawing mm) cannot be drawn at, or "" (tolerances.SCALE_RANGE_SI)."""
+    lo, hi = SCALE_RANGE_SI
+    if lo <= si <= hi:
+        return ""
+    return f"{'under' if si < lo else 'over'} {lo if si < lo else hi:g} SI units per mm once converted: no page shows a figure at that scale"
 
 
 def _read_frame(top: _Reader) -> tuple[dict[str, tuple[float, float] | None], str | None]:

@@ -17,6 +17,7 @@ from typing import Any
 
 from graphmech.mechanisms.linkage import Crank, Linkage, Positions
 from graphmech.scene import _MISSING, MAX_POSITIONS, _read_scales, _Reader, _say, _type_name
+from graphmech.tolerances import POLE_RANGE_MM
 
 __all__ = ["CYCLE_SHOW_CHOICES", "CharacteristicsSpec", "CycleScene", "CycleSpec", "read_cycle"]
 
@@ -31,7 +32,7 @@ START_CHOICES = ("driver", "extreme")
 #: The pole distances H₁, H₂ when the scene gives none, mm.
 DEFAULT_POLE_MM = 20.0
 #: The longest pole distance, mm (stated or fixed by a stated μv, μa): farther, the pole leaves any page.
-MAX_POLE_MM = 1000.0
+MAX_POLE_MM = POLE_RANGE_MM[1]
 #: The φ axis of the diagrams (a whole turn) is between these lengths on the drawing, mm.
 PHI_AXIS_RANGE_MM = (10.0, 2000.0)
 
@@ -111,24 +112,10 @@ def _read_count(r: _Reader) -> int | None:
 
 
 def _read_poles(r: _Reader) -> tuple[float, float] | None:
-    from graphmech.scene_flywheel import pole_distance_value
+    from graphmech.scene_flywheel import pole_distances
 
-    value = pole_distance_value(r)
-    if value is _MISSING:
-        return None
-    path = r.at("pole_distance_mm")
-    if isinstance(value, list):
-        xs = r.numbers(value, path, 2, positive=True, shape="[H1, H2]")
-        if xs is not None and max(xs) > MAX_POLE_MM:
-            k = int(xs[1] > MAX_POLE_MM)
-            r.problem(f"{path}[{k}]", f"H{k + 1} = {xs[k]:g} mm: at most {MAX_POLE_MM:g} mm, or the pole leaves the page")
-            return None
-        return None if xs is None else (xs[0], xs[1])
-    x = r.number(value, path, positive=True)
-    if x is not None and x > MAX_POLE_MM:
-        r.problem(path, f"H = {x:g} mm: at most {MAX_POLE_MM:g} mm, or the pole leaves the page")
-        return None
-    return None if x is None else (x, x)
+    h = pole_distances(r, 2)
+    return None if h is None else (h[0], h[1])
 
 
 def _loop_problem(linkage: Linkage | None) -> str:

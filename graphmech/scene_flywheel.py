@@ -21,6 +21,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from graphmech.tolerances import POLE_RANGE_MM
 from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, Positions
 from graphmech.mechanisms.machine import (
     TWO_PI,
@@ -347,12 +348,34 @@ def pole_distance_value(r: _Reader) -> Any:
     return r.raw("pole_distance_mm")
 
 
-def _read_pole_distance(fw: _Reader) -> float | None:
-    """``pole_distance_mm``: H, drawing mm (> 0), always in millimetres of drawing."""
-    value = pole_distance_value(fw)
+def pole_distances(r: _Reader, count: int = 1) -> tuple[float, ...] | None:
+    """``pole_distance_mm``: H in drawing mm, one number (for all ``count`` diagrams) or, when
+    ``count`` > 1, a list [H1, H2 …]; each within tolerances.POLE_RANGE_MM."""
+    value = pole_distance_value(r)
     if value is _MISSING:
         return None
-    return fw.number(value, fw.at("pole_distance_mm"), positive=True)
+    path = r.at("pole_distance_mm")
+    if isinstance(value, list) and count > 1:
+        xs = r.numbers(value, path, count, positive=True, shape="[" + ", ".join(f"H{k + 1}" for k in range(count)) + "]")
+        where = [(f"{path}[{k}]", f"H{k + 1}") for k in range(count)]
+    else:
+        x = r.number(value, path, positive=True)
+        xs, where = (None if x is None else [x] * count), [(path, "H")] * count
+    if xs is None:
+        return None
+    lo, hi = POLE_RANGE_MM
+    for x, (key, name) in zip(xs, where):
+        if not lo <= x <= hi:
+            r.problem(key, f"{name} = {x:g} mm: a pole distance lies between {lo:g} and {hi:g} mm "
+                           "(closer, the rays cannot be drawn; farther, the pole leaves the page)")
+            return None
+    return tuple(xs)
+
+
+def _read_pole_distance(fw: _Reader) -> float | None:
+    """``pole_distance_mm``: H, drawing mm, always in millimetres of drawing."""
+    h = pole_distances(fw)
+    return None if h is None else h[0]
 
 
 def _read_masses(fw: _Reader, machine: _Machine) -> tuple[list[Mass], bool]:

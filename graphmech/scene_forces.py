@@ -31,6 +31,7 @@ from graphmech.scene import (
     SHOW_CHOICES,
     Scene,
     _raise_sorted,
+    scale_out_of_range,
     _read_tail,
     _read_header,
     _read_linkage,
@@ -188,6 +189,9 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     if given is not None:
         mu_F_path = fr.at(given.key)
         x = fr.number(given.value, mu_F_path, positive=True)
+        if x is not None and (why := scale_out_of_range(given.si(x))):
+            fr.problem(mu_F_path, f"{x:g}: {why}")
+            x = None
         mu_F = None if x is None else given.si(x)
     gravity = _non_negative(fr, "gravity", "acceleration", required=False) or 0.0
 

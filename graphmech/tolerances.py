@@ -33,3 +33,12 @@ DRAWING_PRECISION_MM = 0.5
 #: The coarsest drawing precision a check accepts, mm: coarser judges nothing (and 1e308 overflowed).
 MAX_PRECISION_MM = 10.0
 
+
+#: A stated scale μ (SI units per drawing mm) outside this range draws a textbook figure on no
+#: page (1e-15 m/mm puts a metre at 1e15 mm) and sends 1/μ or lengths/μ to inf or 0 on the way:
+#: refused when read. Each sheet then bounds what its own quantities draw (0.1 mm … the page).
+SCALE_RANGE_SI = (1e-15, 1e15)
+
+#: A pole distance H (drawing mm) of graphical differentiation or integration: under 1 mm the
+#: rays cannot be drawn and H·Δy/Δx overflows; over 1 m the pole leaves the page.
+POLE_RANGE_MM = (1.0, 1000.0)

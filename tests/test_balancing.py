@@ -208,7 +208,8 @@ angle_deg = 90
 """)
     code, out, err = run_cli("check", str(p))
     assert (code, out) == (2, "")
-    assert err == "r.toml: scales.W_kgcm_per_mm: 4.94066e-324 is out of range once converted to SI units\n"
+    assert err == ("r.toml: scales.W_kgcm_per_mm: 4.94066e-324: under 1e-15 SI units per mm once converted: "
+                   "no page shows a figure at that scale\n")
 
 
 def test_the_library_refuses_a_zero_scale_or_correction_radius():

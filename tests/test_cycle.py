@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import subprocess
 import sys
 
 import pytest
 
 from graphmech.cli import render_scene
-from tests.conftest import ROOT, SCENES, check_json, run_cli, values
+from tests.conftest import ROOT, SCENES, assert_refused, check_json, run_cli, values
 
 SLIDER = """
 title = "Centred slider-crank, {n} positions"
@@ -161,7 +162,7 @@ branch = "left"
     (('paths = ["C"]', 'paths = ["C"]\npole_distance_mm = 1e308'), "cycle.pole_distance_mm"),  # exit 3 before
     (('paths = ["C"]', 'paths = ["C"]\npole_distance_mm = [20, 5000]'), "cycle.pole_distance_mm[1]"),
     (('paths = ["C"]', 'paths = ["C"]\nscales = { phi_deg_per_mm = 1e-300 }'), "cycle.scales.phi_deg_per_mm"),
-    (('paths = ["C"]', 'paths = ["C"]\nscales = { s_m_per_mm = 0.005, v_m_s_per_mm = 1e-300 }'), "cycle.scales"),
+    (('paths = ["C"]', 'paths = ["C"]\nscales = { s_m_per_mm = 0.005, v_m_s_per_mm = 1e-300 }'), "cycle.scales.v_m_s_per_mm"),
 ])
 def test_bad_cycle_input_is_one_line_naming_the_key(tmp_path, edit, key):
     p = scene(tmp_path)
@@ -533,14 +534,23 @@ def test_an_absurd_drawing_precision_is_refused_not_an_internal_error(tmp_path):
     assert all(math.isfinite(m["tolerance"]) for m in doc["measured"])
 
 
-@pytest.mark.parametrize("scale, across", [("1e-300", "2e+299"), ("1e300", "2e-301")])
+@pytest.mark.parametrize("scale, across", [("1e-9", "2e+08"), ("1e9", "2e-10")])
 def test_a_stated_scale_that_cannot_be_drawn_is_refused(tmp_path, scale, across):
-    """μl = 1e-300 m/mm (render: exit 3) or 1e300 (check: ZeroDivisionError, exit 3)."""
+    """μl = 1e-300 m/mm (render: exit 3) or 1e300 (check: ZeroDivisionError, exit 3) are refused
+    where every scale is read (below); within that range the cycle sheet bounds the mechanism."""
     p = scene(tmp_path, show='["cycle"]', find='[]')
     p.write_text(p.read_text().replace("[units]", f"[scales]\nl_m_per_mm = {scale}\n\n[units]"))
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
-    assert code == 2 and err.startswith(f"s.toml: scales: μl = {scale.replace('1e300', '1e+300')} m/mm draws the "
+    assert code == 2 and err.startswith(f"s.toml: scales: μl = {scale.replace('1e9', '1e+09').replace('1e-9', '1e-09')} m/mm draws the "
                                         f"mechanism {across} mm across"), err
+
+
+@pytest.mark.parametrize("scale, word", [("1e-300", "under 1e-15"), ("1e300", "over 1e+15"), ("5e-324", "under 1e-15")])
+def test_a_stated_scale_out_of_every_page_is_refused_where_it_is_read(tmp_path, scale, word):
+    p = scene(tmp_path, show='["cycle"]', find='[]')
+    p.write_text(p.read_text().replace("[units]", f"[scales]\nl_m_per_mm = {scale}\n\n[units]"))
+    for argv in (("render", str(p), "-o", str(tmp_path / "x.svg")), ("check", str(p), "--json")):
+        assert_refused(run_cli(*argv), "s.toml", f"scales.l_m_per_mm: {float(scale):g}: {word} SI units per mm")
 
 
 def test_a_slider_s_v_a_axes_are_named_with_subscripts():
@@ -551,3 +561,19 @@ def test_a_slider_s_v_a_axes_are_named_with_subscripts():
     ns = "{http://www.w3.org/2000/svg}"
     subscripted = {(t.text, t[0].text) for t in ET.fromstring(svg).iter(ns + "text") if len(t)}
     assert {("s", "C"), ("v", "C"), ("a", "C")} <= subscripted
+
+
+@pytest.mark.parametrize("scene_id, h", [("linkage.slider_crank_offset-cycle", "5e-324"),
+                                         ("linkage.slider_crank_offset-cycle", "1e-300"),
+                                         ("linkage.slider_crank_offset-cycle", "[20, 0.5]"),
+                                         ("fly.compressor_course_project", "5e-324"),
+                                         ("fly.compressor_course_project", "2000")])
+def test_a_pole_distance_that_cannot_be_drawn_is_refused_where_it_is_read(tmp_path, scene_id, h):
+    """H = 5e-324 mm divided by zero (cycle) or made an infinite ordinate (flywheel): exit 3."""
+    text = (SCENES / f"{scene_id}.toml").read_text(encoding="utf-8")
+    p = tmp_path / "h.toml"
+    if "pole_distance_mm" not in text:
+        text = text.replace("[flywheel]\n", "[flywheel]\npole_distance_mm = 30\n")
+    p.write_text(re.sub(r"pole_distance_mm = .*", f"pole_distance_mm = {h}", text), encoding="utf-8")
+    for argv in (("render", str(p), "-o", str(tmp_path / "x.svg")), ("check", str(p), "--json")):
+        assert_refused(run_cli(*argv), "h.toml", "pole_distance_mm", "a pole distance lies between 1 and 1000 mm")

@@ -548,7 +548,9 @@ def test_slider_crank_with_friction_equals_the_matrix_method(phi, m3, f, fs, fv,
     ("angle = 180", "angle = 1e300", "forces.force[0].angle: an absurd angle (write it within ±360°)"),
     # an absurd stated μF drew polygons 1e-297 mm long without a word
     ("[forces]\n", "[forces]\nmu_F_N_per_mm = 1e300\n",
-     "forces.mu_F_N_per_mm: μF = 1e+300 N/mm draws the largest force 1.14e-298 mm long: choose μF so that it "
+     "forces.mu_F_N_per_mm: 1e+300: over 1e+15 SI units per mm once converted: no page shows a figure at that scale"),
+    ("[forces]\n", "[forces]\nmu_F_N_per_mm = 1e9\n",
+     "forces.mu_F_N_per_mm: μF = 1e+09 N/mm draws the largest force 1.14e-07 mm long: choose μF so that it "
      "is 1 … 100000 mm (about 2 N/mm)"),
 ])
 def test_hostile_force_inputs_are_one_line_errors(tmp_path, old, new, message):
