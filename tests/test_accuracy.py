@@ -1,0 +1,53 @@
+"""Every row of every reference scene says how accurate it is, and the methods' own error
+estimates are honest: within a factor of ten of the true error wherever that exceeds 1e-10,
+and below 1e-8 where the true error is round-off (graphmech/accuracy.py)."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from graphmech.accuracy import CONSTRUCTION, SOURCES, estimate_from_three, observed_order, relative, richardson
+from tests.conftest import SCENES, check_json
+
+REFERENCE_SCENES = sorted(SCENES.glob("*.toml"))
+
+
+def test_richardson_recovers_the_error_of_a_second_order_method():
+    # v(N) = v* + C/N²: the estimate of v(N)'s error is exact
+    exact, c = 1.0, 3.0
+    v = {n: exact + c / n**2 for n in (12, 24, 48)}
+    assert richardson(v[12], v[24], 2) == pytest.approx(c / 144, rel=1e-12)
+    assert estimate_from_three(v[12], v[24], v[48]) == pytest.approx(c / 144, rel=1e-9)
+    # a first-order one (a maximum sampled at a kink) is seen as first order
+    w = {n: exact + c / n for n in (12, 24, 48)}
+    assert observed_order(w[12], w[24], w[48]) == pytest.approx(1.0, rel=1e-12)
+    assert estimate_from_three(w[12], w[24], w[48]) == pytest.approx(c / 12, rel=1e-9)
+    assert relative(math.inf, 2.0) == math.inf and relative(1.0, 0.0) == 1.0
+
+
+@pytest.mark.parametrize("path", REFERENCE_SCENES, ids=lambda p: p.stem)
+def test_every_row_says_how_accurate_it_is(path):
+    doc = check_json(path)
+    for q in doc["quantities"]:
+        assert q["error_source"] in SOURCES, q
+        if q["error_source"] == CONSTRUCTION:
+            assert q["error_estimate"] is None, q
+            continue
+        est, true = q["error_estimate"], q["rel_error"]
+        assert est is not None and math.isfinite(est) and est >= 0 and q["basis"], q
+        if true > 1e-10:
+            assert 0.1 <= est / true <= 10, (q["name"], est, true)
+        else:
+            assert est < 1e-8, (q["name"], est, true)
+
+
+def test_the_reference_scenes_have_discretised_rows_to_judge():
+    """Flywheels from N positions, cycle diagrams by chords and cams read at their divisions are
+    not constructions: the test above judges their estimates on these scenes."""
+    sources = {}
+    for path in REFERENCE_SCENES:
+        if path.stem.split(".")[0] in ("fly", "cam", "linkage"):
+            for q in check_json(path)["quantities"]:
+                sources.setdefault(path.stem.split(".")[0], set()).add(q["error_source"])
+    assert all(len(s - {CONSTRUCTION}) >= 1 for s in sources.values()), sources
