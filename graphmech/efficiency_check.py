@@ -193,12 +193,15 @@ def _row(an: EfficiencyAnalysis, name: str) -> Row:
 
 
 def _eta_reverse_at(an: EfficiencyAnalysis, angle: float) -> float:
+    """The reverse η = F/F0 of the polygons at this angle, its sign unrounded (Stroke.eta reports
+    |η| ≤ ETA_ZERO as 0, which would blur the limit by 1e-12 of itself)."""
     p = an.problem
     push = p.push if p.type == "incline" else "horizontal"
     try:
-        return gm.incline(1.0, angle, an.phi, "reverse", 1.0, push).eta
+        st = gm.incline(1.0, angle, an.phi, "reverse", 1.0, push)
     except DegenerateConstruction:
         return 0.0
+    return 0.0 if st.F is None else st.F / st.F0
 
 
 def _values(an: EfficiencyAnalysis, base: str, d: str) -> tuple[float, float, float | None, float, bool, float]:
@@ -276,7 +279,7 @@ def _limits(an: EfficiencyAnalysis, base: str, phi: float) -> tuple[float, float
     if base == "gamma_limit":
         g = gm.wedge_locking_angle(float(p.beta), phi)  # type: ignore[arg-type]
         return math.degrees(g), math.degrees(2.0 * phi), None, 1.0, False, 1.0
-    g = gm.limiting_angle(lambda x: _eta_reverse_at(an, x), 1e-12, math.radians(89.999))
+    g = gm.limiting_angle(lambda x: _eta_reverse_at(an, x), *gm.INCLINE_LIMIT_RANGE)
     if base == "self_locking_angle":
         return math.degrees(g), math.degrees(phi), None, 1.0, False, 1.0
     eta = gm.incline(1.0, g, phi, "forward", 1.0).eta

@@ -105,3 +105,57 @@ def test_the_exact_split_takes_its_moments_about_the_planes():
     u = [ex_bal.Unbalance(1.0, 0.1, 0.0, 9.0)]
     WI, WII = ex_bal.dynamic_correction(u, 9.0, 9.000001)
     assert WI == -0.1 and WII == 0.0
+
+
+# ---------------------------------------------------------------------------- efficiency
+
+
+def screw_at_limit(f: str) -> str:
+    text = (SCENES / "thread.self_locking_efficiency_bound.toml").read_text(encoding="utf-8")
+    return text.replace("f = 0.1\n", f"f = {f}\n").replace("[scales]\nF_N_per_mm = 20\n", "")
+
+
+@pytest.mark.parametrize("f", ["1e-14", "1e-12", "1e-6", "0.1", "9.9"])
+def test_the_self_locking_limit_of_a_screw_is_found_to_round_off(f, tmp_path):
+    # ψ = φv found by redrawing the polygon until η = 0: with a stop at an absolute 1e-15 rad the
+    # limit of f = 1e-12 came out 3e-4 off and η bound 0.5000872 against 0.5; f = 1e-14 was refused
+    q = values(check_json(write(tmp_path, screw_at_limit(f))))
+    phi = math.atan(float(f))
+    assert q["self_locking_angle"]["graphical"] == pytest.approx(math.degrees(phi), rel=1e-14)
+    t = math.tan(phi)
+    assert q["eta_self_locking_max"]["graphical"] == pytest.approx((1 - t * t) / 2, rel=1e-13)
+
+
+@pytest.mark.parametrize("f", [1e-9, 1e-4, 0.15, 0.3])
+def test_the_wedge_locking_angle_is_found_to_round_off(f, tmp_path):
+    p = write(tmp_path, f'find = ["gamma_limit"]\n[efficiency]\ntype = "wedge"\ngamma_deg = 60\nbeta_deg = 60\n'
+                        f'f = {f!r}\nload_N = 1000\n')
+    q = values(check_json(p))
+    assert q["gamma_limit"]["graphical"] == pytest.approx(math.degrees(2 * math.atan(f)), rel=1e-13)
+
+
+def test_the_wedge_press_with_a_vertical_guide_is_solved(tmp_path):
+    # β = 90°: slider 1 driven straight down a vertical guide, the wedge press. By hand, each
+    # total reaction turned by φ from its normal: forward F = Q·cot(γ − 2φ), F0 = Q·cot γ,
+    # η = tan(γ − 2φ)/tan γ; reverse F = Q·cot(γ + 2φ), η = tan γ/tan(γ + 2φ).
+    text = (SCENES / "force.wedge_F1430.toml").read_text(encoding="utf-8").replace("beta_deg = 60", "beta_deg = 90")
+    p = write(tmp_path, text)
+    doc = check_json(p)
+    q = values(doc)
+    Q, g, phi = 1000.0, math.radians(60), math.atan(0.15)
+    assert q["F@forward"]["graphical"] == pytest.approx(Q / math.tan(g - 2 * phi), rel=1e-13)
+    assert q["F0"]["graphical"] == pytest.approx(Q / math.tan(g), rel=1e-13)
+    assert q["eta@forward"]["graphical"] == pytest.approx(math.tan(g - 2 * phi) / math.tan(g), rel=1e-13)
+    assert q["F@reverse"]["graphical"] == pytest.approx(Q / math.tan(g + 2 * phi), rel=1e-13)
+    assert q["eta@reverse"]["graphical"] == pytest.approx(math.tan(g) / math.tan(g + 2 * phi), rel=1e-13)
+    # slider 2 on its guide: R32 balances Q's lack of a vertical part, R12 the rest (by hand, the
+    # sine rule in the triangle Q, R32 at 90° + φ, R12 at γ − 90° − φ)
+    assert q["R32@forward"]["graphical"] == pytest.approx(Q * math.cos(g - phi) / math.sin(g - 2 * phi), rel=1e-13)
+    assert q["R12@forward"]["graphical"] == pytest.approx(Q * math.cos(phi) / math.sin(g - 2 * phi), rel=1e-13)
+    code, out, err = run_cli("render", str(p), "-o", str(tmp_path / "w.svg"))
+    assert code == 0 and err == "" and "β = 90°" in (tmp_path / "w.svg").read_text(encoding="utf-8")
+
+
+def test_a_wedge_guide_beyond_90_degrees_is_still_refused(tmp_path):
+    p = write(tmp_path, '[efficiency]\ntype = "wedge"\ngamma_deg = 60\nbeta_deg = 90.5\nf = 0.1\nload_N = 1\n')
+    assert_refused(run_cli("check", str(p)), "r.toml", "efficiency.beta_deg", "at most 90°")
