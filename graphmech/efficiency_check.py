@@ -319,4 +319,42 @@ def efficiency_figure(an: EfficiencyAnalysis, page: tuple[float, float], footer:
         _strokes(an)
     angle = an.angle if p.type in ("incline", "screw") else None
     show = [s for s in an.scene.show if not (s == "polygon" and p.type == "chain")]
-    return efficiency_sheet(an.scene.title, p, an.strokes, an.chain, an.phi, angle, an.scales, show, page, footer)
+    if p.type == "chain" and "diagram" in show:
+        _chain_fits(an, page)
+    sheet = efficiency_sheet(an.scene.title, p, an.strokes, an.chain, an.phi, angle, an.scales, show, page, footer)
+    if p.type == "chain" and "diagram" in show:
+        _chain_fits(an, page, sheet)
+    return sheet
+
+
+#: The most machines (boxes) a chain's diagram draws, whatever the page: each brings labels that
+#: the label placer sets against every other (a textbook chain has a handful; 3 601 took minutes).
+MAX_CHAIN_BOXES = 120
+
+
+def _chain_fits(an: EfficiencyAnalysis, page: tuple[float, float], sheet: Any = None) -> None:
+    """Refuse a chain whose diagram the page cannot show: too many machines to label legibly, or
+    (given the sheet) boxes that run off the page — before any label is placed."""
+    from graphmech.render.labels import text_box_size
+    from graphmech.render.layout import layout_sheet
+    from graphmech.render.primitives import Label
+
+    boxes = sum(len(s.branches) for s in an.problem.stages)
+    if boxes > MAX_CHAIN_BOXES:
+        raise SceneError([("efficiency.stage", f"{boxes} machines (boxes) in the chain: a diagram shows at most "
+                                               f"{MAX_CHAIN_BOXES} legibly; use graphmech check")], an.scene.source)
+
+    def centred(label: Label) -> tuple[float, float, float, float]:
+        w, h = text_box_size(label.text, label.size)
+        return (label.anchor[0] - w / 2, label.anchor[1] - h / 2, label.anchor[0] + w / 2, label.anchor[1] + h / 2)
+
+    # each label as if centred on its anchor (the placer only moves them further out): what this
+    # lays off the page surely runs off it
+    nominal = [[centred(it) for it in panel.items if isinstance(it, Label)] for panel in (sheet.panels if sheet else ())]
+    if sheet is not None and layout_sheet(sheet, label_boxes=nominal).warnings:
+        n = len(an.problem.stages)
+        raise SceneError([("efficiency.stage", f"the chain's diagram ({n} stage{'s' * (n != 1)}, {boxes} "
+                                               f"machine{'s' * (boxes != 1)}) does not fit a page of "
+                                               f"{page[0]:g} × {page[1]:g} mm: "
+                                               "choose a larger [page] size or use graphmech check")],
+                         an.scene.source)

@@ -159,3 +159,28 @@ def test_the_wedge_press_with_a_vertical_guide_is_solved(tmp_path):
 def test_a_wedge_guide_beyond_90_degrees_is_still_refused(tmp_path):
     p = write(tmp_path, '[efficiency]\ntype = "wedge"\ngamma_deg = 60\nbeta_deg = 90.5\nf = 0.1\nload_N = 1\n')
     assert_refused(run_cli("check", str(p)), "r.toml", "efficiency.beta_deg", "at most 90°")
+
+
+def chain(branches: int, page: str = "", etas: str = "[0.9]") -> str:
+    head = f'title = "chain"\nshow = ["diagram"]\n{page}\n[efficiency]\ntype = "chain"\nload_N = 5500\nspeed_m_s = 1.2\n'
+    return head + '[[efficiency.stage]]\nname = "par"\n' + \
+        f"[[efficiency.stage.branch]]\nshare = 1\neta = {etas}\n" * branches
+
+
+def test_a_chain_of_3601_branches_is_refused_before_its_labels_are_placed(tmp_path):
+    p = write(tmp_path, chain(3601))
+    out = tmp_path / "c.svg"
+    assert_refused(run_cli("render", str(p), "-o", str(out)), "r.toml", "efficiency.stage", "3601 machines",
+                   "at most 120")
+    assert not out.exists()
+    assert values(check_json(p))["eta"]["graphical"] == pytest.approx(0.9, rel=1e-14)  # check still takes it
+
+
+def test_a_chain_that_runs_off_its_page_is_refused_and_one_that_fits_is_drawn(tmp_path):
+    assert_refused(run_cli("render", str(write(tmp_path, chain(8))), "-o", str(tmp_path / "c.svg")), "r.toml",
+                   "efficiency.stage", "1 stage, 8 machines", "does not fit a page of 297 × 210 mm")
+    wide = write(tmp_path, chain(2, etas="[" + ", ".join(["0.9999"] * 300) + "]"), "wide.toml")
+    assert_refused(run_cli("render", str(wide), "-o", str(tmp_path / "c.svg")), "wide.toml", "does not fit")
+    for body in (chain(7), chain(8, page='[page]\nsize = "A3"')):
+        code, out, err = run_cli("render", str(write(tmp_path, body)), "-o", str(tmp_path / "c.svg"))
+        assert code == 0 and err == "", err
