@@ -184,3 +184,45 @@ def test_a_chain_that_runs_off_its_page_is_refused_and_one_that_fits_is_drawn(tm
     for body in (chain(7), chain(8, page='[page]\nsize = "A3"')):
         code, out, err = run_cli("render", str(write(tmp_path, body)), "-o", str(tmp_path / "c.svg"))
         assert code == 0 and err == "", err
+
+
+# ---------------------------------------------------------------------------- how accurate each row is
+
+MY_KINDS = sorted(p for pat in ("force.*.toml", "eff.*.toml", "thread.*.toml", "bal*.toml") for p in SCENES.glob(pat))
+
+
+@pytest.mark.parametrize("scene", MY_KINDS, ids=lambda p: p.stem)
+def test_reference_rows_are_constructions_exact_to_round_off(scene):
+    # the friction iteration (tolerance 1e-10 N) and the bisected self-locking limits converge to
+    # round-off on every reference scene: no row needs an estimate, and each is within 1e-12 of
+    # the closed form relative to itself (limits found to an absolute 1e-15 rad were not)
+    doc = check_json(scene)
+    for q in doc["quantities"]:
+        assert q["error_source"] == "construction" and q["error_estimate"] is None, q["name"]
+        if q["name"] in ("self_locking_angle", "gamma_limit", "eta_self_locking_max"):
+            assert abs(q["graphical"] - q["exact"]) <= 1e-13 * abs(q["exact"]), q["name"]
+        assert q["rel_error"] < 1e-12, q["name"]
+
+
+FRICTION = SCENES / "force.sixbar_kinetostatic-friction.toml"
+
+
+@pytest.mark.parametrize("tolerance", ["1e-3", "1", "30"])
+def test_a_friction_iteration_stopped_early_estimates_its_own_error(tolerance, tmp_path):
+    # successive approximation stopped at a coarse tolerance: the rows it moves say so, with the
+    # error estimated from the last three rounds (Aitken), never from the exact solution
+    text = FRICTION.read_text(encoding="utf-8").replace("[forces]\n", f"[forces]\ntolerance_N = {tolerance}\n", 1)
+    doc = check_json(write(tmp_path, text))
+    marked = 0
+    for q in doc["quantities"]:
+        if q["error_source"] == "construction":
+            assert q["error_estimate"] is None and q["rel_error"] < 1e-10, q["name"]
+            continue
+        marked += 1
+        assert q["error_source"] == "discretisation" and "rounds to" in q["basis"]
+        if q["rel_error"] > 1e-10:
+            assert 0.1 <= q["error_estimate"] / q["rel_error"] <= 10, (q["name"], q["error_estimate"], q["rel_error"])
+        else:
+            assert q["error_estimate"] < 1e-8
+    assert marked >= 6  # R_01 … R_03, M_b, eta at least
+    assert values(doc)["M_b0"]["error_source"] == "construction"  # frictionless: no iteration
