@@ -193,12 +193,15 @@ def _row(an: EfficiencyAnalysis, name: str) -> Row:
 
 
 def _eta_reverse_at(an: EfficiencyAnalysis, angle: float) -> float:
+    """The reverse η = F/F0 of the polygons at this angle, its sign unrounded (Stroke.eta reports
+    |η| ≤ ETA_ZERO as 0, which would blur the limit by 1e-12 of itself)."""
     p = an.problem
     push = p.push if p.type == "incline" else "horizontal"
     try:
-        return gm.incline(1.0, angle, an.phi, "reverse", 1.0, push).eta
+        st = gm.incline(1.0, angle, an.phi, "reverse", 1.0, push)
     except DegenerateConstruction:
         return 0.0
+    return 0.0 if st.F is None else st.F / st.F0
 
 
 def _values(an: EfficiencyAnalysis, base: str, d: str) -> tuple[float, float, float | None, float, bool, float]:
@@ -276,7 +279,7 @@ def _limits(an: EfficiencyAnalysis, base: str, phi: float) -> tuple[float, float
     if base == "gamma_limit":
         g = gm.wedge_locking_angle(float(p.beta), phi)  # type: ignore[arg-type]
         return math.degrees(g), math.degrees(2.0 * phi), None, 1.0, False, 1.0
-    g = gm.limiting_angle(lambda x: _eta_reverse_at(an, x), 1e-12, math.radians(89.999))
+    g = gm.limiting_angle(lambda x: _eta_reverse_at(an, x), *gm.INCLINE_LIMIT_RANGE)
     if base == "self_locking_angle":
         return math.degrees(g), math.degrees(phi), None, 1.0, False, 1.0
     eta = gm.incline(1.0, g, phi, "forward", 1.0).eta
@@ -316,4 +319,42 @@ def efficiency_figure(an: EfficiencyAnalysis, page: tuple[float, float], footer:
         _strokes(an)
     angle = an.angle if p.type in ("incline", "screw") else None
     show = [s for s in an.scene.show if not (s == "polygon" and p.type == "chain")]
-    return efficiency_sheet(an.scene.title, p, an.strokes, an.chain, an.phi, angle, an.scales, show, page, footer)
+    if p.type == "chain" and "diagram" in show:
+        _chain_fits(an, page)
+    sheet = efficiency_sheet(an.scene.title, p, an.strokes, an.chain, an.phi, angle, an.scales, show, page, footer)
+    if p.type == "chain" and "diagram" in show:
+        _chain_fits(an, page, sheet)
+    return sheet
+
+
+#: The most machines (boxes) a chain's diagram draws, whatever the page: each brings labels that
+#: the label placer sets against every other (a textbook chain has a handful; 3 601 took minutes).
+MAX_CHAIN_BOXES = 120
+
+
+def _chain_fits(an: EfficiencyAnalysis, page: tuple[float, float], sheet: Any = None) -> None:
+    """Refuse a chain whose diagram the page cannot show: too many machines to label legibly, or
+    (given the sheet) boxes that run off the page — before any label is placed."""
+    from graphmech.render.labels import text_box_size
+    from graphmech.render.layout import layout_sheet
+    from graphmech.render.primitives import Label
+
+    boxes = sum(len(s.branches) for s in an.problem.stages)
+    if boxes > MAX_CHAIN_BOXES:
+        raise SceneError([("efficiency.stage", f"{boxes} machines (boxes) in the chain: a diagram shows at most "
+                                               f"{MAX_CHAIN_BOXES} legibly; use graphmech check")], an.scene.source)
+
+    def centred(label: Label) -> tuple[float, float, float, float]:
+        w, h = text_box_size(label.text, label.size)
+        return (label.anchor[0] - w / 2, label.anchor[1] - h / 2, label.anchor[0] + w / 2, label.anchor[1] + h / 2)
+
+    # each label as if centred on its anchor (the placer only moves them further out): what this
+    # lays off the page surely runs off it
+    nominal = [[centred(it) for it in panel.items if isinstance(it, Label)] for panel in (sheet.panels if sheet else ())]
+    if sheet is not None and layout_sheet(sheet, label_boxes=nominal).warnings:
+        n = len(an.problem.stages)
+        raise SceneError([("efficiency.stage", f"the chain's diagram ({n} stage{'s' * (n != 1)}, {boxes} "
+                                               f"machine{'s' * (boxes != 1)}) does not fit a page of "
+                                               f"{page[0]:g} × {page[1]:g} mm: "
+                                               "choose a larger [page] size or use graphmech check")],
+                         an.scene.source)

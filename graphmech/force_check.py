@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from graphmech.accuracy import DISCRETISATION, relative
 from graphmech.check import Analysis, Row, Verdict, analyse, judge, page_size, position_text, split_name
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.kinetostatics import ExactForces, solve_forces
@@ -29,6 +30,7 @@ from graphmech.methods.kinetostatics import (
     Lever,
     PolygonKinematics,
     construction_targets,
+    iteration_error,
     kinematics_from_construction,
     kinetostatics,
     zhukovsky_lever,
@@ -364,11 +366,21 @@ def _known(fa: ForceAnalysis, base: str) -> str | None:
     return None
 
 
+#: A friction iteration whose own error estimate is below this (relative) has converged to
+#: round-off: its rows stay constructions.
+ROUND_OFF = 1e-12
+
+
 def _rows(fa: ForceAnalysis) -> None:
     problems = []
     multi = len(fa.labels) > 1
     force_size = _characteristic_force(fa)
     locked: list[int] = []
+    sol = fa.solution
+    # with friction, the same quantities one and two rounds earlier: how far the iteration still moves them
+    before = None if sol.previous is None else replace(fa, solution=sol.previous)
+    earlier = None if before is None else replace(fa, solution=sol.previous.previous)  # type: ignore[union-attr]
+    basis = f"friction: {sol.iterations} rounds to {fa.scene.forces.model.tolerance:g} N"
     for k, raw in enumerate(fa.scene.find):
         base, at = split_name(raw)
         if not is_force_name(base):
@@ -400,9 +412,14 @@ def _rows(fa: ForceAnalysis) -> None:
                 continue
             g, e = float(g) + 0.0, float(e) + 0.0  # no "-0" in the table
             err = abs(g - e) / max(abs(e), ch)
-            fa.rows.append(Row(f"{base}@{fa.labels[i]}" if multi else base, unit,
-                               None if drawn is None else float(drawn), float(scale), g, e, err,
-                               bool(fa.ill.get(i, False))))
+            row = Row(f"{base}@{fa.labels[i]}" if multi else base, unit, None if drawn is None else float(drawn),
+                      float(scale), g, e, err, bool(fa.ill.get(i, False)))
+            if before is not None and earlier is not None:  # friction stopped at its tolerance: how close?
+                estimate = relative(iteration_error(g, float(_value(before, base, i)[2]),
+                                                    float(_value(earlier, base, i)[2])), max(abs(e), ch))
+                if estimate > ROUND_OFF:
+                    row = row.estimated(DISCRETISATION, estimate, basis)
+            fa.rows.append(row)
             if base == "eta" and e <= 0.0:
                 locked.append(i)
     if problems:

@@ -166,13 +166,18 @@ MAX_LOAD_N = 1e12
 MIN_CHAIN_ETA = 1e-12
 
 
-def _angle(r: _Reader, base: str, lo: float, hi: float, required: bool = True) -> float | None:
+def _angle(r: _Reader, base: str, lo: float, hi: float, required: bool = True,
+           hi_included: bool = False) -> float | None:
+    """An angle in (lo, hi) at least ANGLE_MARGIN_DEG from either end; ``hi_included`` admits hi
+    itself (a wedge's guide 1 at β = 90°: the wedge press)."""
     v = r.value(base, "angle", required=required)
     if v is None:
         return None
-    if not (math.radians(lo + ANGLE_MARGIN_DEG) <= v.si <= math.radians(hi - ANGLE_MARGIN_DEG)):
-        r.problem(v.path, f"must lie between {lo:g}° and {hi:g}° (exclusive; at least {ANGLE_MARGIN_DEG:g}° "
-                          "from either)")
+    top = math.radians(hi) if hi_included else math.radians(hi - ANGLE_MARGIN_DEG)
+    if not (math.radians(lo + ANGLE_MARGIN_DEG) <= v.si <= top):
+        ends = (f"at least {ANGLE_MARGIN_DEG:g}° above {lo:g}°, at most {hi:g}°" if hi_included else
+                f"exclusive; at least {ANGLE_MARGIN_DEG:g}° from either")
+        r.problem(v.path, f"must lie between {lo:g}° and {hi:g}° ({ends})")
         return None
     return v.si
 
@@ -281,7 +286,7 @@ def read_efficiency(top: _Reader, find: tuple[str, ...], show: tuple[str, ...]) 
         ok = prob["angle"] is not None
     elif kind == "wedge":
         prob["gamma"] = _angle(r, "gamma", 0.0, 90.0)
-        prob["beta"] = _angle(r, "beta", 0.0, 90.0)
+        prob["beta"] = _angle(r, "beta", 0.0, 90.0, hi_included=True)  # 90°: the wedge press
         ok = prob["gamma"] is not None and prob["beta"] is not None
         if ok and abs(math.degrees(prob["gamma"] + prob["beta"]) - 90.0) < 1.0:
             r.problem(r.at(r.present("beta") or "beta"),

@@ -29,6 +29,11 @@ XY = tuple[float, float]
 Direction = Literal["forward", "reverse"]
 #: An efficiency this close to 0 is the self-locking limit, reported as exactly 0.
 ETA_ZERO = 1e-12
+#: Where self-locking limits are looked for, rad: an incline (an unrolled thread) can be drawn at
+#: any positive angle up to 89.999°; a wedge's face only while it still meets guide 2 (sin γ
+#: well above PARALLEL_SIN), up to 90°.
+INCLINE_LIMIT_RANGE = (1e-200, math.radians(89.999))
+WEDGE_LIMIT_RANGE = (1e-12, math.pi / 2 - 1e-9)
 
 
 @dataclass(frozen=True)
@@ -310,32 +315,37 @@ def wedge_locking_angle(beta: float, phi: float) -> float:
         d32 = turned_by_friction(n32, v2, phi)
         return d12[0] * d32[1] - d12[1] * d32[0]
 
-    return limiting_angle(sine, 1e-9, math.pi / 2 - 1e-9)
+    return limiting_angle(sine, *WEDGE_LIMIT_RANGE)
 
 
 # ---------------------------------------------------------------------------- limiting angles
 
 
-def limiting_angle(eta_of: "callable[[float], float]", lo: float, hi: float, tol: float = 1e-15) -> float:
+def limiting_angle(eta_of: "callable[[float], float]", lo: float, hi: float) -> float:
     """The angle in (lo, hi) where η(angle) changes sign, by bisection on the construction.
 
     The textbook gives the self-locking limit in closed form (α = φ for the incline, ψ = φv for
-    a screw); here it is found as a draftsman would, by redrawing the polygon until η = 0.
+    a screw); here it is found as a draftsman would, by redrawing the polygon until η = 0 — down
+    to adjacent floating-point angles, so the limit is exact but for round-off however small it
+    is (a stop at an absolute 1e-15 rad left a limit of 1e-12 rad 1e-3 off). While the bracket
+    spans more than a factor of 4 it is halved geometrically (a limit of 1e-14 rad in a range
+    from 1e-200 rad to 90° takes ten steps to reach), then arithmetically.
     """
     f_lo = eta_of(lo)
     if (f_lo > 0) == (eta_of(hi) > 0):
-        raise DegenerateConstruction("the self-locking limit", "η does not change sign between the ends of the "
-                                     "range: there is no limiting angle in it")
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if hi - lo <= tol * max(1.0, abs(mid)):
+        raise DegenerateConstruction("the self-locking limit", "η does not change sign between "
+                                     f"{math.degrees(lo):.3g}° and {math.degrees(hi):.3g}°: the limit lies outside "
+                                     "the angles the construction can draw")
+    for _ in range(400):  # ≈ 10 geometric + 53 arithmetic steps reach adjacent floats
+        mid = math.sqrt(lo) * math.sqrt(hi) if 0.0 < lo and 4.0 * lo < hi else lo + 0.5 * (hi - lo)
+        if not lo < mid < hi:
             break
         f_mid = eta_of(mid)
         if (f_mid > 0) == (f_lo > 0) and f_mid != 0.0:
             lo, f_lo = mid, f_mid
         else:
             hi = mid
-    return 0.5 * (lo + hi)
+    return lo + 0.5 * (hi - lo)
 
 
 # ---------------------------------------------------------------------------- chains of machines
@@ -383,4 +393,5 @@ def chain(stages: Sequence[tuple[str, Sequence[tuple[float, Sequence[float]]]]],
 
 
 __all__ = ["DrawnForce", "ForcePolygon", "Stroke", "StageResult", "Unknown", "chain", "close_polygon", "incline",
-           "limiting_angle", "turned_by_friction", "wedge", "wedge_locking_angle", "ETA_ZERO"]
+           "limiting_angle", "turned_by_friction", "wedge", "wedge_locking_angle", "ETA_ZERO",
+           "INCLINE_LIMIT_RANGE", "WEDGE_LIMIT_RANGE"]
