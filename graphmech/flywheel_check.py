@@ -52,6 +52,9 @@ QUANTITIES: dict[str, tuple[str, str]] = {
 #: Per-position quantities (named ``Jp@3``).
 PER_POSITION = ("Jp", "Mp", "DeltaT", "A_p")
 DEFAULT_FIND = ("M_b", "DeltaW_max", "J_F")
+#: Angles that say where in the cycle something happens: compared modulo the cycle Φ, their
+#: relative error is the wrapped difference over Φ (an angle near 0° has no scale of its own).
+POSITION_ANGLES = ("phi_DeltaT_max", "phi_DeltaT_min", "phi_omega_max", "phi_omega_min")
 #: Angle between the two tangents below which a drawn pair cannot be told apart, degrees.
 TANGENTS_APART_DEG = 0.1
 
@@ -165,6 +168,8 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
             problems.append((key, "t_stop needs a [flywheel.braking] table"))
         elif QUANTITIES[base][1] == "motion" and fw.machine.loads == ():
             problems.append((key, f"{base} needs loads to move the machine"))
+        elif base == "omega_s" and fw.machine.motor is None:
+            problems.append((key, "omega_s is the motor's synchronous speed: it needs a [flywheel.motor] table"))
     if problems:
         raise SceneError(problems, scene.source)
     return names
@@ -230,6 +235,11 @@ def _reduce(an: FlywheelAnalysis) -> None:
         scales = {"l": lin["l"], "v": lin["v"]}
         an.stated |= {k for k in ("l", "v") if k in stated}
     an.reduction = reduce_to_crank(machine, an.phi, scales)
+    for k in sorted({k for k, _ in an.reduction.on_steps}):  # one rule at a jump, stated where it applies
+        at = [i for kk, i in an.reduction.on_steps if kk == k]
+        where = ", ".join(f"{i + 1} (φ = {math.degrees(an.phi[i]):.6g}°)" for i in at[:6]) + (" …" if len(at) > 6 else "")
+        an.warnings.append(f"flywheel.load[{k}]: a step of its table falls on position{'s' if len(at) > 1 else ''} "
+                           f"{where}: Mп there is the mean of both sides of the step")
     bad = np.flatnonzero(~an.reduction.valid)
     if bad.size:
         k = int(bad[0])
@@ -245,16 +255,19 @@ def _with_show(scene: Any) -> Any:
 
 
 def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
-    from graphmech.methods.flywheel import design_flywheel
+    from graphmech.methods.flywheel import WrongBalance, design_flywheel
 
     fw, machine = an.scene.flywheel, an.machine
     scales = {k: float(v) for k, v in an.scene.scales.items() if k in ("phi", "M", "J", "T")}
     an.stated |= set(scales)
     want = tuple(x for x in ("wittenbauer", "indicator") if x in needs)
     r = an.reduction
-    an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
-                                delta=machine.delta, balance=machine.balance, form=fw.tangents,
-                                H_mm=fw.pole_distance, scales=scales, need=want)
+    try:
+        an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
+                                    delta=machine.delta, balance=machine.balance, form=fw.tangents,
+                                    H_mm=fw.pole_distance, scales=scales, need=want)
+    except WrongBalance as e:
+        raise SceneError([("flywheel.balance", _wrong_balance(machine.balance, e.work))], an.scene.source) from None
     an.scales.update(getattr(an.design, "scales", {}))
     if "wittenbauer" in want:
         apart = float(getattr(an.design.wittenbauer, "angle_between_deg", 90.0))
@@ -263,6 +276,15 @@ def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
                 f"the tangents ψmax and ψmin differ by {apart:.2g}° (δ = {machine.delta:g}): a drawn pair cannot "
                 "be told apart, and their intersection is ill-conditioned; k and l were found analytically "
                 "(the extremes of ΔT − ω²·Jп/2 over the positions), not by intersecting drawn lines")
+
+
+def _wrong_balance(balance: str, work: float) -> str:
+    """Why the constant moment named by ``balance`` cannot balance the loads' work over a cycle."""
+    if balance == "driving":
+        return (f"the loads deliver {work:.6g} J over a cycle: a constant driving moment cannot balance them; "
+                'check the signs of the loads or set balance = "resisting"')
+    return (f"the driving torque absorbs {-work:.6g} J over a cycle: a constant resistance cannot balance it; "
+            'check the signs of the loads or set balance = "driving"')
 
 
 def _design_J_F(an: FlywheelAnalysis) -> float:
@@ -304,15 +326,30 @@ def _motion(an: FlywheelAnalysis) -> None:
 
 
 def _braking(an: FlywheelAnalysis) -> None:
-    from graphmech.exact.true_motion import braking_time
+    from graphmech.exact.true_motion import T_STOP_MIN, braking_time
 
     fw = an.scene.flywheel
     from graphmech.methods.braking_figures import draw_rundown
 
+    b, w0 = fw.braking, an.machine.omega_m
     J = an.braking_inertia
-    an.braking = braking_time(J, an.machine.omega_m, fw.braking.moment)
-    an.rundown = r = draw_rundown(J, an.machine.omega_m, fw.braking.moment, fw.braking.time_limit)
+    if not J > 0.0:
+        raise SceneError([("flywheel.braking", "nothing to stop: the machine's reduced inertia is 0; give its "
+                           "inertia (inertia_kgm2) or [[flywheel.mass]] with mass")], an.scene.source)
+    t = J * w0 / b.moment
+    if not (math.isfinite(t) and t >= T_STOP_MIN):  # J·ω0/M beyond double precision: no number to draw
+        raise SceneError([(b.moment_path, f"the brake stops J = {J:.6g} kg·m² from ω = {w0:.6g} rad/s in "
+                           f"J·ω/M = {t:.6g} s, beyond the range of numbers a run-down can be drawn at")],
+                         an.scene.source)
+    an.braking = braking_time(J, w0, b.moment)
+    an.rundown = r = draw_rundown(J, w0, b.moment, b.time_limit)
     an.scales.update({"t": r.mu_t, "omega": r.mu_omega})
+    prec = an.scene.precision_mm
+    if r.t_stop_mm < prec:
+        an.warnings.append(
+            f"the run-down stops after {t:.6g} s, {r.t_stop_mm:.3g} mm on the t axis at μt = {r.mu_t:g} s/mm "
+            f"(drawn to fit the required {b.time_limit:.6g} s): below the drawing's precision of {prec:g} mm, "
+            "t_stop cannot be read off it")
 
 
 # ---------------------------------------------------------------------------- rows
@@ -327,6 +364,9 @@ def _row(an: FlywheelAnalysis, name: str) -> Row:
     unit = QUANTITIES[base][0]
     g, e, drawn, scale, ill = _values(an, base, None if at is None else int(at) - 1)
     rel = _rel(g, e, scale)
+    if base in POSITION_ANGLES:  # where in the cycle: 0° and 353.47° are 6.53° apart, not 353.47°
+        cycle = math.degrees(an.machine.cycle)
+        rel = abs(math.remainder(g - e, cycle)) / cycle
     if unit == "J" and base != "t_stop":  # an energy near zero (ΔT_min) is judged against the cycle's swing of ΔT
         x = _exact(an).extremes()
         rel = abs(g - e) / max(abs(e), x.maximum - x.minimum, 1e-300)
@@ -345,7 +385,8 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
         phi = an.phi[i : i + 1]
         if base == "Jp":
             return float(an.reduction.J[i]), float(ex.inertia(phi)[0]), None, an.scales.get("v", 1.0), False
-        return float(an.reduction.M[i]), float(ex.load_moment(phi)[0]), None, an.scales.get("v", 1.0), False
+        return float(an.reduction.M[i]), float(ex.load_moment(phi, mean_at_steps=True)[0]), None, \
+            an.scales.get("v", 1.0), False
     ex = _exact(an)
     mu_T = float(d.scales["T"]) if d is not None else 1.0
     if base in ("DeltaT", "A_p"):
