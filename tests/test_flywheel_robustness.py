@@ -150,3 +150,69 @@ def test_angles_in_the_cycle_are_compared_modulo_the_cycle(tmp_path):
     assert lo["rel_error"] == pytest.approx((360.0 - lo["exact"]) / 360.0, rel=1e-12)
     hi = q["phi_DeltaT_max"]
     assert hi["rel_error"] == pytest.approx(abs(hi["graphical"] - hi["exact"]) / 360.0, rel=1e-12)
+
+
+# ------------------------------------------------------------------ 7. every row says how accurate it is
+
+FLYWHEEL_SCENES = sorted(p for p in SCENES.glob("fly.*.toml") if "[flywheel]" in p.read_text(encoding="utf-8"))
+SWEEP_FIND = ("DeltaT@4", "A_p@4", "M_b", "DeltaT_max", "DeltaT_min", "phi_DeltaT_max", "phi_DeltaT_min", "k", "l",
+              "J_F", "J_F_wittenbauer", "J_F_indicator", "DeltaW_max", "J_mean")
+CONSTRUCTED = ("Jp", "Mp", "omega_s", "t_stop", "psi_max", "psi_min", "n_max", "omega_max", "omega_min")
+
+
+def assert_honest(rows) -> None:
+    """Each row's own estimate against its true error: within a factor 10 where the true error is
+    above 1e-10, below 1e-8 where it is not; a construction carries none."""
+    for r in rows:
+        if r.name.split("@")[0] in CONSTRUCTED:
+            assert r.error_source == "construction" and r.error_estimate is None, r
+            continue
+        assert r.error_source in ("discretisation", "reading") and r.basis, r
+        e = r.error_estimate
+        if r.rel_error > 1e-10:
+            assert 0.1 <= e / r.rel_error <= 10, (r.name, r.rel_error, e)
+        else:
+            assert e < 1e-8, (r.name, r.rel_error, e)
+
+
+@pytest.mark.parametrize("path", FLYWHEEL_SCENES, ids=lambda p: p.stem)
+def test_every_reference_flywheel_row_estimates_its_own_error(path):
+    from graphmech.flywheel_check import analyse_flywheel
+    from graphmech.scene import load_scene
+
+    an = analyse_flywheel(load_scene(path))
+    assert an.rows
+    assert_honest(an.rows)
+
+
+@pytest.mark.parametrize("n", [12, 24, 36, 72, 360])
+def test_the_compressor_s_estimates_hold_over_an_n_sweep(n):
+    import dataclasses
+
+    from graphmech.flywheel_check import analyse_flywheel
+    from graphmech.scene import load_scene
+
+    sc = load_scene(SCENES / "fly.compressor_course_project.toml")
+    fw = dataclasses.replace(sc.flywheel, positions=n, true_motion=None)
+    an = analyse_flywheel(dataclasses.replace(sc, flywheel=fw, find=SWEEP_FIND, measured=()))
+    assert_honest(an.rows)
+    assert {r.name: r.basis for r in an.rows}["J_F"] == f"{n} positions"
+
+
+def test_the_true_motion_estimates_its_error_by_a_tighter_solve():
+    doc = check_json(SCENES / "fly.compressor_course_project-stiff.toml")
+    q = values(doc)
+    assert q["delta_achieved"]["basis"] == "Radau rtol 1e-10"
+    assert q["delta_achieved"]["rel_error"] > 1e-9  # a small difference of two speeds: 1.4e-8
+    assert 0.1 <= q["delta_achieved"]["error_estimate"] / q["delta_achieved"]["rel_error"] <= 10
+    assert q["omega_s"]["error_source"] == "construction"
+
+
+def test_the_text_table_prints_each_estimate_with_its_basis():
+    code, out, err = run_cli("check", str(SCENES / "fly.compressor_course_project.toml"))
+    line = next(x for x in out.splitlines() if x.startswith("J_F "))
+    assert "0.585892693" in line and line.endswith("kg·m²  ±7.7 % (12 positions)"), line
+    line = next(x for x in out.splitlines() if x.startswith("Jp@1 "))
+    assert "±" not in line
+    code, out, err = run_cli("check", str(SCENES / "fly.ic_engine_flywheel.toml"))
+    assert "(36 positions, read at a position)" in next(x for x in out.splitlines() if x.startswith("phi_DeltaT_max"))
