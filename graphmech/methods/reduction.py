@@ -125,7 +125,9 @@ def reduce_to_crank(machine: Machine, phi: np.ndarray, scales: dict[str, float])
 
     Examples
     --------
-    A machine without a linkage: an engine's torque curve on a flywheel of 2 kg·m².
+    A machine without a linkage: an engine's torque curve on a flywheel of 2 kg·m². The curve
+    repeats every half turn, so at φ = 0 it jumps from 0 back to 100 N·m: position 1 takes the
+    mean of both sides.
 
     >>> import math
     >>> from graphmech.mechanisms.machine import CrankMoment, Machine, Table
@@ -133,7 +135,7 @@ def reduce_to_crank(machine: Machine, phi: np.ndarray, scales: dict[str, float])
     ...             loads=(CrankMoment(Table((0.0, math.pi), (100.0, 0.0))),))
     >>> r = reduce_to_crank(m, np.array([0.0, math.pi / 2]), {})
     >>> r.J.tolist(), r.M.tolist()
-    ([2.0, 2.0], [100.0, 50.0])
+    ([2.0, 2.0], [50.0, 50.0])
     """
     phi = np.asarray(phi, dtype=float)
     n = phi.shape[0]
