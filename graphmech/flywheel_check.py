@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from graphmech.accuracy import DISCRETISATION, READING, estimate_from_three, relative
 from graphmech.check import Row, Verdict, close_names, measured_entries
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.mechanisms.machine import Machine
@@ -52,6 +53,9 @@ QUANTITIES: dict[str, tuple[str, str]] = {
 #: Per-position quantities (named ``Jp@3``).
 PER_POSITION = ("Jp", "Mp", "DeltaT", "A_p")
 DEFAULT_FIND = ("M_b", "DeltaW_max", "J_F")
+#: Angles that say where in the cycle something happens: compared modulo the cycle Φ, their
+#: relative error is the wrapped difference over Φ (an angle near 0° has no scale of its own).
+POSITION_ANGLES = ("phi_DeltaT_max", "phi_DeltaT_min", "phi_omega_max", "phi_omega_min")
 #: Angle between the two tangents below which a drawn pair cannot be told apart, degrees.
 TANGENTS_APART_DEG = 0.1
 
@@ -165,6 +169,8 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
             problems.append((key, "t_stop needs a [flywheel.braking] table"))
         elif QUANTITIES[base][1] == "motion" and fw.machine.loads == ():
             problems.append((key, f"{base} needs loads to move the machine"))
+        elif base == "omega_s" and fw.machine.motor is None:
+            problems.append((key, "omega_s is the motor's synchronous speed: it needs a [flywheel.motor] table"))
     if problems:
         raise SceneError(problems, scene.source)
     return names
@@ -200,6 +206,7 @@ def _analyse(scene: Any, extra: tuple[tuple[str, float], ...]) -> FlywheelAnalys
         _motion(an)
     for name in names:
         an.rows.append(_row(an, name))
+    _estimate(an, needs)
     return an
 
 
@@ -230,6 +237,11 @@ def _reduce(an: FlywheelAnalysis) -> None:
         scales = {"l": lin["l"], "v": lin["v"]}
         an.stated |= {k for k in ("l", "v") if k in stated}
     an.reduction = reduce_to_crank(machine, an.phi, scales)
+    for k in sorted({k for k, _ in an.reduction.on_steps}):  # one rule at a jump, stated where it applies
+        at = [i for kk, i in an.reduction.on_steps if kk == k]
+        where = ", ".join(f"{i + 1} (φ = {math.degrees(an.phi[i]):.6g}°)" for i in at[:6]) + (" …" if len(at) > 6 else "")
+        an.warnings.append(f"flywheel.load[{k}]: a step of its table falls on position{'s' if len(at) > 1 else ''} "
+                           f"{where}: Mп there is the mean of both sides of the step")
     bad = np.flatnonzero(~an.reduction.valid)
     if bad.size:
         k = int(bad[0])
@@ -245,16 +257,19 @@ def _with_show(scene: Any) -> Any:
 
 
 def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
-    from graphmech.methods.flywheel import design_flywheel
+    from graphmech.methods.flywheel import WrongBalance, design_flywheel
 
     fw, machine = an.scene.flywheel, an.machine
     scales = {k: float(v) for k, v in an.scene.scales.items() if k in ("phi", "M", "J", "T")}
     an.stated |= set(scales)
     want = tuple(x for x in ("wittenbauer", "indicator") if x in needs)
     r = an.reduction
-    an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
-                                delta=machine.delta, balance=machine.balance, form=fw.tangents,
-                                H_mm=fw.pole_distance, scales=scales, need=want)
+    try:
+        an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
+                                    delta=machine.delta, balance=machine.balance, form=fw.tangents,
+                                    H_mm=fw.pole_distance, scales=scales, need=want)
+    except WrongBalance as e:
+        raise SceneError([("flywheel.balance", _wrong_balance(machine.balance, e.work))], an.scene.source) from None
     an.scales.update(getattr(an.design, "scales", {}))
     if "wittenbauer" in want:
         apart = float(getattr(an.design.wittenbauer, "angle_between_deg", 90.0))
@@ -263,6 +278,15 @@ def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
                 f"the tangents ψmax and ψmin differ by {apart:.2g}° (δ = {machine.delta:g}): a drawn pair cannot "
                 "be told apart, and their intersection is ill-conditioned; k and l were found analytically "
                 "(the extremes of ΔT − ω²·Jп/2 over the positions), not by intersecting drawn lines")
+
+
+def _wrong_balance(balance: str, work: float) -> str:
+    """Why the constant moment named by ``balance`` cannot balance the loads' work over a cycle."""
+    if balance == "driving":
+        return (f"the loads deliver {work:.6g} J over a cycle: a constant driving moment cannot balance them; "
+                'check the signs of the loads or set balance = "resisting"')
+    return (f"the driving torque absorbs {-work:.6g} J over a cycle: a constant resistance cannot balance it; "
+            'check the signs of the loads or set balance = "driving"')
 
 
 def _design_J_F(an: FlywheelAnalysis) -> float:
@@ -304,15 +328,30 @@ def _motion(an: FlywheelAnalysis) -> None:
 
 
 def _braking(an: FlywheelAnalysis) -> None:
-    from graphmech.exact.true_motion import braking_time
+    from graphmech.exact.true_motion import T_STOP_MIN, braking_time
 
     fw = an.scene.flywheel
     from graphmech.methods.braking_figures import draw_rundown
 
+    b, w0 = fw.braking, an.machine.omega_m
     J = an.braking_inertia
-    an.braking = braking_time(J, an.machine.omega_m, fw.braking.moment)
-    an.rundown = r = draw_rundown(J, an.machine.omega_m, fw.braking.moment, fw.braking.time_limit)
+    if not J > 0.0:
+        raise SceneError([("flywheel.braking", "nothing to stop: the machine's reduced inertia is 0; give its "
+                           "inertia (inertia_kgm2) or [[flywheel.mass]] with mass")], an.scene.source)
+    t = J * w0 / b.moment
+    if not (math.isfinite(t) and t >= T_STOP_MIN):  # J·ω0/M beyond double precision: no number to draw
+        raise SceneError([(b.moment_path, f"the brake stops J = {J:.6g} kg·m² from ω = {w0:.6g} rad/s in "
+                           f"J·ω/M = {t:.6g} s, beyond the range of numbers a run-down can be drawn at")],
+                         an.scene.source)
+    an.braking = braking_time(J, w0, b.moment)
+    an.rundown = r = draw_rundown(J, w0, b.moment, b.time_limit)
     an.scales.update({"t": r.mu_t, "omega": r.mu_omega})
+    prec = an.scene.precision_mm
+    if r.t_stop_mm < prec:
+        an.warnings.append(
+            f"the run-down stops after {t:.6g} s, {r.t_stop_mm:.3g} mm on the t axis at μt = {r.mu_t:g} s/mm "
+            f"(drawn to fit the required {b.time_limit:.6g} s): below the drawing's precision of {prec:g} mm, "
+            "t_stop cannot be read off it")
 
 
 # ---------------------------------------------------------------------------- rows
@@ -327,6 +366,9 @@ def _row(an: FlywheelAnalysis, name: str) -> Row:
     unit = QUANTITIES[base][0]
     g, e, drawn, scale, ill = _values(an, base, None if at is None else int(at) - 1)
     rel = _rel(g, e, scale)
+    if base in POSITION_ANGLES:  # where in the cycle: 0° and 353.47° are 6.53° apart, not 353.47°
+        cycle = math.degrees(an.machine.cycle)
+        rel = abs(math.remainder(g - e, cycle)) / cycle
     if unit == "J" and base != "t_stop":  # an energy near zero (ΔT_min) is judged against the cycle's swing of ΔT
         x = _exact(an).extremes()
         rel = abs(g - e) / max(abs(e), x.maximum - x.minimum, 1e-300)
@@ -345,7 +387,8 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
         phi = an.phi[i : i + 1]
         if base == "Jp":
             return float(an.reduction.J[i]), float(ex.inertia(phi)[0]), None, an.scales.get("v", 1.0), False
-        return float(an.reduction.M[i]), float(ex.load_moment(phi)[0]), None, an.scales.get("v", 1.0), False
+        return float(an.reduction.M[i]), float(ex.load_moment(phi, mean_at_steps=True)[0]), None, \
+            an.scales.get("v", 1.0), False
     ex = _exact(an)
     mu_T = float(d.scales["T"]) if d is not None else 1.0
     if base in ("DeltaT", "A_p"):
@@ -410,6 +453,156 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
     if base == "omega_s":
         return float(mo.omega_s), float(getattr(ref, "omega_s", mo.omega_s)), None, 1.0, False
     raise KeyError(base)  # requested() let through a name with no row: a bug of ours
+
+
+# ---------------------------------------------------------------------------- how accurate
+
+#: Values the construction gets exactly (but for round-off): read off the velocity polygons, or
+#: a formula of the scene's data (ω_max of the tangents, ψ, the brake's run-down line).
+CONSTRUCTED = ("Jp", "Mp", "omega_max", "omega_min", "n_max", "n_min", "psi_max", "psi_min", "omega_s", "t_stop")
+#: Extremes over the N positions: their sampled value also misses the extreme between positions.
+SAMPLED_EXTREMES = ("DeltaT_max", "DeltaT_min", "k", "l", "J_F", "J_F_wittenbauer", "J_F_indicator", "DeltaW_max")
+#: The true motion's values: the ODE's own error, estimated by the same solve at a tighter rtol.
+MOTION = ("omega_max_true", "omega_min_true", "phi_omega_max", "phi_omega_min", "delta_achieved",
+          "omega_mean_time")
+
+
+def _estimate(an: FlywheelAnalysis, needs: set[str]) -> None:
+    """Each row's own error estimate (graphmech.accuracy), from the method, never the exact value.
+
+    - N positions (chords, graphical integration, ΔT and everything drawn from it): the same
+      pipeline at 2N and 4N, Richardson with the order observed on the three (the pipeline is
+      second order, but a kink of Mп between positions lowers it). An extreme over the positions
+      also misses the extreme between them, by a jump that is not smooth in N: that part is
+      read off the parabola through the extreme position and its neighbours, and the estimate is
+      the larger of the two.
+    - The angle of an extreme is a reading at the positions: its error is its distance from the
+      extreme that the pipeline at 2N places between its positions (the vertex of that parabola).
+    - The true motion: the same solve at rtol/100.
+    """
+    rows = [(k, r) for k, r in enumerate(an.rows) if split(r.name)[0] not in CONSTRUCTED]
+    if not rows:
+        return
+    n = an.scene.flywheel.positions
+    basis = f"{n} positions"
+    finer: dict[int, FlywheelAnalysis] = {}
+
+    def at(factor: int) -> FlywheelAnalysis:
+        if factor not in finer:
+            finer[factor] = _with_positions(an, n * factor, needs)
+        return finer[factor]
+
+    motion_fine = None
+    for k, r in rows:
+        base, pos = split(r.name)
+        i = None if pos is None else int(pos) - 1
+        den = _denominator(an, r)
+        if base in MOTION:
+            if motion_fine is None:
+                motion_fine = _tighter_motion(an)
+            g, scale_down = motion_fine
+            fine = _motion_value(g, base)
+            err = abs(_wrapped(an, base, r.graphical - fine)) * scale_down
+            an.rows[k] = r.estimated(DISCRETISATION, relative(err, den), f"{an.motion.solver} rtol {an.motion.rtol:g}")
+            continue
+        v2 = _values(at(2), base, None if i is None else 2 * i)[0]
+        if base in ("phi_DeltaT_max", "phi_DeltaT_min"):
+            top = base.endswith("max")
+            err = abs(_wrapped(an, base, r.graphical - _refined_angle(at(2), top)))
+            an.rows[k] = r.estimated(READING, relative(err, den), f"{basis}, read at a position")
+            continue
+        v4 = _values(at(4), base, None if i is None else 4 * i)[0]
+        err = estimate_from_three(r.graphical, v2, v4)
+        if base in SAMPLED_EXTREMES:  # the extreme between the positions, as N and 2N place it
+            err = max(err, abs(_between_positions(an, base)),
+                      abs(r.graphical - v2 - _between_positions(at(2), base)))
+        an.rows[k] = r.estimated(DISCRETISATION, relative(err, den), basis)
+
+
+def _with_positions(an: FlywheelAnalysis, n: int, needs: set[str]) -> FlywheelAnalysis:
+    """The same graphical pipeline at n positions (its warnings dropped; the exact part shared)."""
+    fine = FlywheelAnalysis(an.scene, an.machine, np.asarray(an.machine.positions(n), dtype=float),
+                            tuple(str(k + 1) for k in range(n)), exact=an.exact)
+    _reduce(fine)
+    _design(fine, needs - {"motion"})
+    return fine
+
+
+def _denominator(an: FlywheelAnalysis, r: Row) -> float:
+    """The row's rel_error denominator (so that the estimate compares with rel_error)."""
+    base, _ = split(r.name)
+    if base in POSITION_ANGLES:
+        return math.degrees(an.machine.cycle)
+    if r.unit == "J":
+        x = _exact(an).extremes()
+        return max(abs(r.exact), x.maximum - x.minimum, 1e-300)
+    return max(abs(r.exact), abs(r.scale) * 1e-3, 1e-300)
+
+
+def _wrapped(an: FlywheelAnalysis, base: str, d: float) -> float:
+    """A difference of angles in the cycle taken the short way round; other differences as they are."""
+    return math.remainder(d, math.degrees(an.machine.cycle)) if base in POSITION_ANGLES else d
+
+
+def _vertex(y: np.ndarray, i: int) -> tuple[float, float]:
+    """The parabola through y[i−1], y[i], y[i+1] (periodic): (its vertex's value − y[i], the
+    vertex's offset from i in steps, within ±½)."""
+    a, b, c = float(y[(i - 1) % y.size]), float(y[i]), float(y[(i + 1) % y.size])
+    curv = a + c - 2.0 * b
+    off = 0.5 if curv == 0.0 else min(0.5, max(-0.5, (a - c) / (2.0 * curv)))
+    return 0.5 * (c - a) * off + 0.5 * curv * off * off, off
+
+
+def _between_positions(an: FlywheelAnalysis, base: str) -> float:
+    """How far the extreme(s) behind an extreme value lie beyond the positions' values (signed,
+    in the row's unit), read off the parabola through the extreme position and its neighbours."""
+    d, m = an.design, an.machine
+    mu = float(d.scales["T"])
+    T = np.asarray(d.energy_mm[:-1], dtype=float) * mu
+    per_J_F = 1.0 / (m.omega_m ** 2 * m.delta)
+    hi, lo = _vertex(T, int(d.energy_max_index))[0], _vertex(T, int(d.energy_min_index))[0]
+    if base == "DeltaT_max":
+        return hi
+    if base == "DeltaT_min":
+        return lo
+    if base == "DeltaW_max":
+        return hi - lo
+    if base == "J_F_indicator" or (base == "J_F" and an.scene.flywheel.method == "indicator"):
+        return (hi - lo) * per_J_F
+    w = d.wittenbauer
+    x, y = np.asarray(w.x_mm, dtype=float), np.asarray(w.y_mm, dtype=float)
+    k = _vertex((y - x * w.tan_psi_max) * mu, int(w.k_index))[0]
+    l_ = _vertex((y - x * w.tan_psi_min) * mu, int(w.l_index))[0]
+    return {"k": k, "l": l_}.get(base, (k - l_) * per_J_F)
+
+
+def _refined_angle(an: FlywheelAnalysis, top: bool) -> float:
+    """Where the pipeline places the extreme of ΔT between its positions, degrees."""
+    d = an.design
+    T = np.asarray(d.energy_mm[:-1], dtype=float)
+    i = int(d.energy_max_index if top else d.energy_min_index)
+    step = math.degrees(an.machine.cycle) / T.size
+    return math.degrees(float(an.phi[i])) + _vertex(T, i)[1] * step
+
+
+def _tighter_motion(an: FlywheelAnalysis) -> tuple[Any, float]:
+    """The same solve at rtol/100 (or, at the tightest rtol already, at 100·rtol with its difference
+    scaled down by 100: the error goes as rtol); and that scale."""
+    from graphmech.exact.true_motion import true_motion
+    from graphmech.scene_flywheel import RTOL_MIN
+
+    mo = an.motion
+    rtol, down = (mo.rtol * 1e-2, 1.0) if mo.rtol * 1e-2 >= RTOL_MIN else (mo.rtol * 1e2, 1e-2)
+    try:
+        return true_motion(an.machine, _exact(an), mo.J_F, solver=mo.solver, rtol=rtol), down
+    except ValueError as e:
+        raise DegenerateConstruction("the true motion", str(e)) from None
+
+
+def _motion_value(mo: Any, base: str) -> float:
+    return {"omega_max_true": mo.omega_max, "omega_min_true": mo.omega_min,
+            "phi_omega_max": math.degrees(mo.phi_omega_max), "phi_omega_min": math.degrees(mo.phi_omega_min),
+            "delta_achieved": mo.delta, "omega_mean_time": mo.omega_time_mean}[base]
 
 
 # ---------------------------------------------------------------------------- verdicts

@@ -139,10 +139,13 @@ class Braking:
         The brake's moment, N·m (> 0).
     time_limit : float or None
         The required stopping time, s (> 0); None: the time is only reported.
+    moment_path : str
+        The moment's key path as written (``flywheel.braking.moment_Nm``), for a refusal.
     """
 
     moment: float
     time_limit: float | None = None
+    moment_path: str = field(default="flywheel.braking.moment", compare=False)
 
 
 @dataclass(frozen=True)

@@ -640,7 +640,7 @@ def _read_braking(fw: _Reader) -> tuple[Braking | None, bool]:
     b.finish()
     if moment is None or (limit is None and b.present("time_limit") is not None):
         return None, False
-    return Braking(moment.si, None if limit is None else limit.si), True
+    return Braking(moment.si, None if limit is None else limit.si, moment.path), True
 
 
 def _read_flywheel(

@@ -449,9 +449,10 @@ class ExactMachine:
             raise SceneError([("linkage", why)], source="machine")
         return kin
 
-    def _evaluate(self, phi: np.ndarray | float, kin: Kinematics | None = None
+    def _evaluate(self, phi: np.ndarray | float, kin: Kinematics | None = None, mean_at_steps: bool = False
                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(Jп, dJп/dφ, Mп) at φ (one linkage solve)."""
+        """(Jп, dJп/dφ, Mп) at φ (one linkage solve); Mп right-continuous at a table's step, or
+        with ``mean_at_steps`` the mean of both sides there (the rule for a position on a step)."""
         phi = np.asarray(phi, dtype=float)
         mc = self.machine
         shape = phi.shape
@@ -471,12 +472,17 @@ class ExactMachine:
                 dj += 2.0 * (ms.mass * (v[:, 0] * a[:, 0] + v[:, 1] * a[:, 1])
                              + ms.inertia * w * al) / (w1s * w1)
         tau = np.mod(phi, self.cycle)
+
+        def value(table: Table, x: np.ndarray, period: float | None = None) -> np.ndarray:
+            v = table_value(table, x)
+            return table.mean_at_steps(x, v, period)[0] if mean_at_steps else v
+
         for k, ld in enumerate(mc.loads):
             if isinstance(ld, CrankMoment):
-                m += table_value(ld.table, tau)
+                m += value(ld.table, tau, self.cycle)
             elif isinstance(ld, LinkMoment):
                 assert kin is not None
-                m += table_value(ld.table, tau) * kin.omega[ld.link] / w1
+                m += value(ld.table, tau, self.cycle) * kin.omega[ld.link] / w1
             else:
                 assert kin is not None
                 st = self.strokes[k]
@@ -486,7 +492,7 @@ class ExactMachine:
                 x = (p[:, 0] * ux + p[:, 1] * uy - st.back) / st.H
                 vax = v[:, 0] * ux + v[:, 1] * uy
                 active = self._active(ld, vax)
-                m += np.where(active, ld.sense * table_value(ld.table, x) * vax / w1, 0.0)
+                m += np.where(active, ld.sense * value(ld.table, x) * vax / w1, 0.0)
         return j.reshape(shape), dj.reshape(shape), m.reshape(shape)
 
     @staticmethod
@@ -511,9 +517,10 @@ class ExactMachine:
         """dJп/dφ, kg·m²/rad (exact, from the accelerations of a uniformly turning crank)."""
         return self._evaluate(phi)[1]
 
-    def load_moment(self, phi: np.ndarray | float) -> np.ndarray:
-        """The loads' reduced moment Mп(φ), N·m, signed by power (positive drives)."""
-        return self._evaluate(phi)[2]
+    def load_moment(self, phi: np.ndarray | float, mean_at_steps: bool = False) -> np.ndarray:
+        """The loads' reduced moment Mп(φ), N·m, signed by power (positive drives); at a step of
+        a table right-continuous, or with ``mean_at_steps`` the mean of both sides."""
+        return self._evaluate(phi, mean_at_steps=mean_at_steps)[2]
 
     def slider_travel(self, k: int, phi: np.ndarray | float
                       ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

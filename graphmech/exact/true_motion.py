@@ -53,6 +53,8 @@ _STALL = 1e-4
 _FLOOR = 1e-7
 #: Hermite grid intervals per crank turn: the cubic's error ~h⁴/384·max|f⁗| stays ~1e-14 of Jп.
 _GRID_PER_TURN = 4096
+#: The shortest stopping time taken as a number, s (below it J·ω0/M has lost its digits).
+T_STOP_MIN = 1e-290
 
 
 class TrueMotionError(GraphmechError, ValueError):
@@ -655,12 +657,16 @@ def braking_time(J: float, omega0: float, M_brake: float) -> Braking:
     """
     if not (J > 0 and omega0 > 0 and M_brake > 0):
         raise ValueError("J, ω0 and the braking moment must all be > 0")
+    t = J * omega0 / M_brake
+    if not (math.isfinite(t) and t >= T_STOP_MIN):
+        raise ValueError(f"the stopping time J·ω0/M = {J:.6g}·{omega0:.6g}/{M_brake:.6g} s is out of range")
 
-    def stopped(t: float, y: np.ndarray) -> float:
+    def stopped(tau: float, y: np.ndarray) -> float:
         return float(y[0])
 
     stopped.terminal = True  # type: ignore[attr-defined]
     stopped.direction = -1  # type: ignore[attr-defined]
-    sol = solve_ivp(lambda t, y: [-M_brake / J], (0.0, 10.0 * J * omega0 / M_brake), [omega0],
-                    events=stopped, rtol=1e-12, atol=1e-12 * omega0)
-    return Braking(J * omega0 / M_brake, float(sol.t_events[0][0]))
+    # In units of ω0 and of J·ω0/M the run-down is dω/dτ = −1 from 1: the solver (and its event
+    # search, whose tolerances are absolute) then sees numbers of order one whatever J, ω0, M are.
+    sol = solve_ivp(lambda tau, y: [-1.0], (0.0, 10.0), [1.0], events=stopped, rtol=1e-12, atol=1e-12)
+    return Braking(t, t * float(sol.t_events[0][0]))

@@ -26,17 +26,21 @@ import math
 from dataclasses import dataclass
 from typing import Literal, Union
 
+import numpy as np
+
 from graphmech.mechanisms.linkage import Linkage
 
 TWO_PI = 2.0 * math.pi
+#: A table's argument within this fraction of the table's span of a step is on the step.
+ON_STEP = 1e-12
 
 
 @dataclass(frozen=True)
 class Table:
     """A piecewise-linear function y(x) through the points (x_i, y_i).
 
-    ``x`` is non-decreasing; a repeated x is a step (the value jumps there). Outside the table
-    the end values hold. Periodic use (a moment over the cycle) is the caller's business: it
+    ``x`` is non-decreasing; a repeated x is a step (the value jumps there; exactly at the step
+    the value is the mean of both sides). Outside the table the end values hold. Periodic use (a moment over the cycle) is the caller's business: it
     passes ``x mod Φ``.
     """
 
@@ -46,6 +50,56 @@ class Table:
     def breaks(self) -> tuple[float, ...]:
         """The x where the function has a kink or a step (interior points), sorted, unique."""
         return tuple(sorted(set(self.x[1:-1])))
+
+    def steps(self, period: float | None = None) -> tuple[tuple[float, float, float], ...]:
+        """Each step as (x, value just before, value just after): a repeated x, the first and
+        the last value written at it (the value before the table's first x is its first y).
+
+        With ``period`` (a moment against φ over the cycle Φ) the table repeats: the value at
+        the end of the cycle meets the one at its start, which is a step at x = 0 when they differ.
+        """
+        xs, ys = self.x, self.y
+        out = []
+        i, n = 0, len(xs)
+        while i < n:
+            j = i
+            while j + 1 < n and xs[j + 1] == xs[i]:
+                j += 1
+            inner = period is None or 0.0 < xs[i] < period
+            if j > i and ys[i] != ys[j] and inner:
+                out.append((xs[i], ys[i], ys[j]))
+            i = j + 1
+        if period is not None:
+            end = next((y for x, y in zip(xs, ys) if x >= period), ys[-1])  # the limit from below at Φ
+            start = [y for x, y in zip(xs, ys) if x <= 0.0]
+            start_value = start[-1] if start else ys[0]  # the limit from above at 0
+            if end != start_value:
+                out.append((0.0, end, start_value))
+        return tuple(out)
+
+    def mean_at_steps(self, x: "np.ndarray", values: "np.ndarray", period: float | None = None
+                      ) -> tuple["np.ndarray", "np.ndarray"]:
+        """``values`` (the table at ``x`` by any one-sided rule) with the mean of both sides
+        wherever x falls on a step, and where it did (a bool mask); ``period`` as for
+        :meth:`steps` (x then in [0, Φ)).
+
+        "On" is to within ``ON_STEP`` of the table's span: a step written at 210° and a position
+        computed as k·Φ/N differ by rounding only, and would otherwise be sampled from whichever
+        side the rounding fell on. One rule for the graphical method and the exact solution
+        (docs/scene-format.md, "Flywheel scenes").
+        """
+        x = np.asarray(x, dtype=float)
+        out = np.array(values, dtype=float, copy=True)
+        hit = np.zeros(x.shape, dtype=bool)
+        span = max(abs(self.x[-1] - self.x[0]), abs(self.x[-1]), abs(self.x[0]), period or 0.0)
+        tol = ON_STEP * span
+        for xs, before, after in self.steps(period):
+            on = np.abs(x - xs) <= tol
+            if period is not None and xs == 0.0:
+                on |= np.abs(x - period) <= tol
+            out = np.where(on, 0.5 * (before + after), out)
+            hit |= on
+        return out, hit
 
 
 @dataclass(frozen=True)
@@ -202,4 +256,4 @@ class Machine:
         return tuple(self.cycle * k / n for k in range(n))
 
 
-__all__ = ["Table", "Mass", "SliderLoad", "LinkMoment", "CrankMoment", "Load", "Motor", "Machine", "TWO_PI"]
+__all__ = ["ON_STEP", "Table", "Mass", "SliderLoad", "LinkMoment", "CrankMoment", "Load", "Motor", "Machine", "TWO_PI"]

@@ -52,6 +52,17 @@ NEEDS = ("wittenbauer", "indicator")
 SIGN_SLACK = 1e-12
 
 
+class WrongBalance(ValueError):
+    """The loads' work over a cycle has the sign the constant moment cannot balance.
+
+    ``work`` is Aп(Φ), J: > 0 when the loads deliver work (no constant *driving* moment balances
+    them), < 0 when a driving torque absorbs it (no constant *resistance* does)."""
+
+    def __init__(self, message: str, work: float) -> None:
+        super().__init__(message)
+        self.work = work
+
+
 @dataclass(frozen=True, eq=False)
 class FlywheelDesign:
     """The graphical flywheel design: every construction (for drawing) and its results.
@@ -317,11 +328,13 @@ def design_flywheel(phi: ArrayLike, J: ArrayLike, M: ArrayLike, *, cycle: float,
     moment = balancing_mm * mu["M"]
     slack = SIGN_SLACK * max(float(np.abs(m).max()), 1e-300)
     if balance == "driving" and moment < -slack:
-        raise ValueError(f"the loads deliver work over the cycle (Aп(Φ) = {-end * mu['T']:.6g} J > 0): a constant "
-                         "driving moment cannot balance them; check the signs of Mп or use balance='resisting'")
+        raise WrongBalance(f"the loads deliver work over the cycle (Aп(Φ) = {-end * mu['T']:.6g} J > 0): a constant "
+                           "driving moment cannot balance them; check the signs of Mп or use balance='resisting'",
+                           -end * mu["T"])
     if balance == "resisting" and moment > slack:
-        raise ValueError(f"the driving torque absorbs work over the cycle (Aп(Φ) = {-end * mu['T']:.6g} J < 0): a "
-                         "constant resistance cannot balance it; check the signs of Mп or use balance='driving'")
+        raise WrongBalance(f"the driving torque absorbs work over the cycle (Aп(Φ) = {-end * mu['T']:.6g} J < 0): a "
+                           "constant resistance cannot balance it; check the signs of Mп or use balance='driving'",
+                           -end * mu["T"])
 
     # 5. ΔT = Aп + A_b
     energy = work + balance_work
@@ -352,4 +365,4 @@ def design_flywheel(phi: ArrayLike, J: ArrayLike, M: ArrayLike, *, cycle: float,
         J_mean=j_mean, wittenbauer=w, J_F=J_F, indicator=ind, DeltaW_max=dW, J_F_indicator=J_F_ind)
 
 
-__all__ = ["FlywheelDesign", "NEEDS", "design_flywheel"]
+__all__ = ["FlywheelDesign", "NEEDS", "WrongBalance", "design_flywheel"]

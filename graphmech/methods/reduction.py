@@ -45,6 +45,9 @@ class Reduction:
     reasons : tuple of str
     strokes : dict
         Slider point → (s_min, s_max) along its axis, m (from the drawn extreme positions).
+    on_steps : tuple of (int, int)
+        (load index, position index), 0-based, where a step of the load's table fell on the
+        position: Mп there takes the mean of both sides.
     """
 
     phi: np.ndarray
@@ -53,13 +56,19 @@ class Reduction:
     valid: np.ndarray
     reasons: tuple[str, ...]
     strokes: dict[str, tuple[float, float]]
+    on_steps: tuple[tuple[int, int], ...] = ()
 
 
-def table_at(table: Table, x: np.ndarray) -> np.ndarray:
-    """A piecewise-linear table at x (a repeated node is a step: the right-hand value wins)."""
+def table_at(table: Table, x: np.ndarray, period: float | None = None) -> np.ndarray:
+    """A piecewise-linear table at x (a repeated node is a step: at the step, the mean of both
+    sides — :meth:`Table.mean_at_steps`; ``period``: the table repeats every Φ)."""
+    return _table_at(table, x, period)[0]
+
+
+def _table_at(table: Table, x: np.ndarray, period: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The table at x and where x fell on a step (``period``: the table repeats every Φ)."""
     xs, ys = np.asarray(table.x, float), np.asarray(table.y, float)
-    # np.interp takes the last of equal nodes for x at the node: right-continuous steps.
-    return np.interp(x, xs, ys)
+    return table.mean_at_steps(x, np.interp(x, xs, ys), period)
 
 
 def _axis_of(b: LinkageConstruction, point: str, load: SliderLoad) -> tuple[float, float]:
@@ -116,7 +125,9 @@ def reduce_to_crank(machine: Machine, phi: np.ndarray, scales: dict[str, float])
 
     Examples
     --------
-    A machine without a linkage: an engine's torque curve on a flywheel of 2 kg·m².
+    A machine without a linkage: an engine's torque curve on a flywheel of 2 kg·m². The curve
+    repeats every half turn, so at φ = 0 it jumps from 0 back to 100 N·m: position 1 takes the
+    mean of both sides.
 
     >>> import math
     >>> from graphmech.mechanisms.machine import CrankMoment, Machine, Table
@@ -124,7 +135,7 @@ def reduce_to_crank(machine: Machine, phi: np.ndarray, scales: dict[str, float])
     ...             loads=(CrankMoment(Table((0.0, math.pi), (100.0, 0.0))),))
     >>> r = reduce_to_crank(m, np.array([0.0, math.pi / 2]), {})
     >>> r.J.tolist(), r.M.tolist()
-    ([2.0, 2.0], [100.0, 50.0])
+    ([2.0, 2.0], [50.0, 50.0])
     """
     phi = np.asarray(phi, dtype=float)
     n = phi.shape[0]
@@ -133,12 +144,22 @@ def reduce_to_crank(machine: Machine, phi: np.ndarray, scales: dict[str, float])
     valid = np.ones(n, dtype=bool)
     reasons = [""] * n
     strokes: dict[str, tuple[float, float]] = {}
-    for load in machine.loads:
+    on_steps: list[tuple[int, int]] = []  # (load, position) where a table's step fell on a position
+
+    def sample(k: int, table: Table, x: np.ndarray, where: np.ndarray | None = None,
+               period: float | None = None) -> np.ndarray:
+        values, hit = _table_at(table, x, period)
+        if where is not None:
+            hit &= where
+        on_steps.extend((k, int(i)) for i in np.flatnonzero(hit))
+        return values
+
+    for k, load in enumerate(machine.loads):
         if isinstance(load, CrankMoment):
-            M += table_at(load.table, np.mod(phi, machine.cycle))
+            M += sample(k, load.table, np.mod(phi, machine.cycle), period=machine.cycle)
     link = machine.linkage
     if link is None:
-        return Reduction(phi, J, M, valid, tuple(reasons), strokes)
+        return Reduction(phi, J, M, valid, tuple(reasons), strokes, tuple(sorted(on_steps)))
 
     b = build_polygons(link, {"l": scales["l"], "v": scales["v"], "a": scales.get("a", 1.0)})
     w1 = abs(link.driver.omega)
@@ -176,7 +197,7 @@ def reduce_to_crank(machine: Machine, phi: np.ndarray, scales: dict[str, float])
         if mass.inertia:
             w = rate(mass.link)
             J = J + mass.inertia * w * w / (w1 * w1)
-    for load in machine.loads:
+    for k, load in enumerate(machine.loads):
         if isinstance(load, SliderLoad):
             u = _axis_of(b, load.point, load)
             if load.point not in strokes:
@@ -190,13 +211,13 @@ def reduce_to_crank(machine: Machine, phi: np.ndarray, scales: dict[str, float])
             vx, vy = image(load.point)
             v = vx * u[0] + vy * u[1]  # along the axis
             on = {"forward": v > 0, "backward": v < 0, "both": np.ones(n, dtype=bool)}[load.during]
-            force = load.sense * table_at(load.table, np.clip(s / stroke, 0.0, 1.0))
+            force = load.sense * sample(k, load.table, np.clip(s / stroke, 0.0, 1.0), on & (v != 0.0))
             M = M + np.where(on, force * v, 0.0) / w1
         elif isinstance(load, LinkMoment):
-            M = M + table_at(load.table, np.mod(phi, machine.cycle)) * rate(load.link) / w1
+            M = M + sample(k, load.table, np.mod(phi, machine.cycle), period=machine.cycle) * rate(load.link) / w1
     J = np.where(valid, J, 0.0)
     M = np.where(valid, M, 0.0)
-    return Reduction(phi, J, M, valid, tuple(reasons), strokes)
+    return Reduction(phi, J, M, valid, tuple(reasons), strokes, tuple(sorted(on_steps)))
 
 
 __all__ = ["Reduction", "reduce_to_crank", "slider_stroke", "table_at"]

@@ -79,6 +79,14 @@ def test_link_moment_and_crank_moment_reduce_by_power():
     assert r.J.tolist() == [0.0, 0.0, 0.0]
 
 
-def test_a_repeated_node_is_a_step_taking_the_right_hand_value():
+def test_a_repeated_node_is_a_step_taking_the_mean_of_both_sides_on_it():
+    """One rule at a jump: on the step (to rounding) the mean, either side its own value."""
     t = Table((0.0, 1.0, 1.0, 2.0), (0.0, 0.0, 5.0, 5.0))
-    assert table_at(t, np.array([0.999, 1.0, 1.5])).tolist() == [0.0, 5.0, 5.0]
+    assert table_at(t, np.array([0.999, 1.0, 1.0 - 2e-16, 1.0 + 2e-16, 1.5])).tolist() == [0.0, 2.5, 2.5, 2.5, 5.0]
+
+
+def test_a_moment_over_the_cycle_steps_where_its_end_meets_its_start():
+    """Repeated every Φ, a table ending at −300 and starting at 0 jumps at φ = 0: the mean there."""
+    t = Table((0.0, 1.0, 1.0, 2.0), (0.0, 0.0, -300.0, -300.0))
+    assert table_at(t, np.array([0.0, 0.5, 1.0]), period=2.0).tolist() == [-150.0, 0.0, -150.0]
+    assert table_at(t, np.array([0.0]), period=None).tolist() == [0.0]
