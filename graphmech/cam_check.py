@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from graphmech.accuracy import DISCRETISATION, READING, estimate_from_three, relative
 from graphmech.check import Row, Verdict, close_names, measured_entries, page_size
 from graphmech.errors import SceneError
 from graphmech.exact import cam as exact_cam
@@ -54,6 +55,8 @@ class CamAnalysis:
     reading: Any = None  # what is read off the drawn profile (methods.cam_inversion.CamReading)
     divisions: list[dict[str, Any]] = field(default_factory=list)  # the book's table, one row a division
     extra_measured: tuple[tuple[str, float], ...] = ()
+    step: float = 0.0  # rad, the divisions' step as drawn (2π/N)
+    finer: tuple = ()  # the same drawing at 2N, 4N and 8N divisions, for the rows' error estimates
 
     def scale_notes(self) -> list[str]:
         """μ as written on the drawing (an oscillating follower's μs is an angle per mm)."""
@@ -118,13 +121,14 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) 
     cam: DiscCam = cs.cam
     names = _requested(scene)
     asked = names + [n for _, n, _ in measured_entries(scene, extra_measured)]
-    delta = divisions(cam, cs.step, breakpoints(cam.program))
+    step = math.tau / max(1, round(math.tau / cs.step))
+    delta = divisions(cam, step, breakpoints(cam.program))
     s = displacement(cam.program, delta)
     # Only what the scene asks for: no profile for a scene that wants the diagrams alone.
     wants_profile = "profile" in scene.show or any(n in PROFILE_QUANTITIES or n.startswith("alpha@") for n in asked)
     drawn = draw_profile(cam, delta, s) if wants_profile else None
     scales, stated = choose_cam_scales(scene, cam, drawn)
-    an = CamAnalysis(scene, cam, delta, s, drawn, scales, stated, extra_measured=tuple(extra_measured))
+    an = CamAnalysis(scene, cam, delta, s, drawn, scales, stated, extra_measured=tuple(extra_measured), step=step)
     lin = "rad" if _angular(cam) else "m"
     an.impacts = [{"angle_deg": math.degrees(i.angle), "kind": i.kind,
                    # the jump of v (rigid) or of a (soft), in SI with the cam's ω
@@ -136,7 +140,7 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) 
                 else "soft impact: the acceleration jumps by a finite amount")
         an.warnings.append(f"δ = {math.degrees(i.angle):.6g}°: {what}")
     if drawn is None:
-        an.rows = [_row(an, name) for name in names]
+        an.rows = [_estimated(an, _row(an, name)) for name in names]
         return an
     an.warnings += exact_cam.undercut(cam)
     reading = read_drawing(cam, drawn)
@@ -153,7 +157,7 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) 
     an.rows = []
     for name in names:
         try:
-            an.rows.append(_row(an, name))
+            an.rows.append(_estimated(an, _row(an, name)))
         except ArithmeticError as e:  # e.g. the exact working profile folds over itself (undercut)
             an.warnings.append(f"{name}: not measured — {e}")
         except SceneError:
@@ -289,7 +293,7 @@ def _row(an: CamAnalysis, name: str) -> Row:
                       cam.program.stroke, cam.program.stroke)
     if name == "r0_min":
         e = exact_cam.min_base_radius(cam, cam.alpha_permissible)
-        g = _graphical_r0_min(cam, cam.alpha_permissible, an.scene.cam.step)
+        g = _graphical_r0_min(cam, cam.alpha_permissible, an.step)
         return _plain(name, unit, g / an.scales["l"], an.scales["l"], e, size)
     # v_max, a_max, j_max and where: read off the diagrams at the divisions vs the exact law
     q = name.split("_")[0]
@@ -302,6 +306,61 @@ def _row(an: CamAnalysis, name: str) -> Row:
     scale = an.scales.get(q, 1.0)
     unit = {"v": "rad/s", "a": "rad/s²", "j": "rad/s³"}[q] if ang else unit
     return _plain(name, unit, vals[k] / scale, scale, ext.value, ext.value)
+
+
+#: Values read off the drawing at the divisions, and how their error arises; s@δ and h are exact
+#: ordinates, and the law's v, a, j maxima are read at the divisions off closed forms (exact where the
+#: maximum falls on a division, which the finer drawings show).
+_SOURCES = {"alpha_max": READING, "alpha_max_at": READING, "rho_min_pitch": READING, "rho_min_pitch_at": READING,
+            "rho_min_actual": READING, "r0_min": READING, "profile_deviation": DISCRETISATION,
+            "v_max": READING, "v_max_at": READING, "a_max": READING, "a_max_at": READING, "j_max": READING,
+            "j_max_at": READING}
+
+
+def _finer(an: CamAnalysis, factor: int) -> CamAnalysis:
+    """The same drawing redone with ``factor`` times the divisions (nested: every division stays one)."""
+    from dataclasses import replace
+
+    cam = an.cam
+    step = an.step / factor
+    delta = divisions(cam, step, breakpoints(cam.program))
+    s = displacement(cam.program, delta)
+    if an.drawn is None:
+        return replace(an, delta=delta, s=s, step=step)
+    drawn = draw_profile(cam, delta, s)
+    return replace(an, delta=delta, s=s, drawn=drawn, reading=read_drawing(cam, drawn), step=step)
+
+
+def _estimated(an: CamAnalysis, row: Row) -> Row:
+    """A row read off the drawing with the error the drawing itself estimates: the same reading at
+    2N and 4N divisions (graphmech.accuracy.estimate_from_three), relative to the row's own
+    denominator (an angle's span, or the drawing's size).
+
+    The reading at 8N is a floor under it: a smallest ρ next to a pitch-curve corner, or the place
+    of a flat maximum, can read the same at N, 2N and 4N (the base circle's r0, the same division)
+    before the finer divisions resolve it — the three would then claim no error at all."""
+    name = row.name
+    source = READING if name.startswith("alpha@") else _SOURCES.get(name)
+    if source is None:
+        return row
+    if not an.finer:  # drawn once for every row
+        an.finer = tuple(_finer(an, k) for k in (2, 4, 8))
+    v1 = row.graphical
+    v2, v4, v8 = (_row(f, name).graphical for f in an.finer)
+    if name.endswith("_at"):  # places round the turn: 358° and 2° are 4° apart
+        v2, v4, v8 = (v1 + (v - v1 + 180.0) % 360.0 - 180.0 for v in (v2, v4, v8))
+    est = max(estimate_from_three(v1, v2, v4), abs(v1 - v8))
+    if row.unit == "deg" and row.drawn_mm is None:
+        d = 360.0 if name.endswith("_at") else 90.0
+    elif name in ("v_max", "a_max", "j_max"):
+        d = abs(row.graphical)
+    else:
+        size = float(np.max(np.hypot(*an.drawn.pitch.T))) if an.drawn is not None else an.cam.base_radius
+        d = max(abs(row.graphical), size)
+    n = round(math.tau / an.step)
+    if name.split("_")[0] in ("v", "a", "j") and relative(est, d) <= 1e-12:
+        return row  # the maximum is on a division: the closed form's value, a construction
+    return row.estimated(source, relative(est, d), f"{n} divisions ({math.degrees(an.step):.6g}°)")
 
 
 def _tied(drawn_at: float, exact_at: float, exact_there: float, extreme: float) -> float:
