@@ -22,7 +22,7 @@ from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxima
 from graphmech.methods.cam_figures import panel_rows, scale_note
 from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile, read_drawing
-from graphmech.scales import round_scale
+from graphmech.scales import DRAWN_SIZE_RANGE_MM, round_scale
 
 #: What a cam scene can ask for, with the unit each is reported in.
 CAM_QUANTITIES = {
@@ -100,6 +100,7 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
     reach = pitch_r + getattr(f, "roller_radius", 0.0)
     if _angular(cam):
         reach = max(reach, f.pivot_distance + getattr(f, "roller_radius", 0.0))
+    _legible(scene, cam, scales, 2.0 * reach)
     if "l" not in scales:
         scales["l"] = round_scale(2.0 * reach / min(room_profile, room_h))
     if "phi" not in scales:  # books choose degrees per mm
@@ -112,6 +113,20 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
             peak = ext[key].value
             scales[key] = round_scale(2.0 * peak / (0.6 * room_h)) if peak > 0 else 1.0
     return scales, stated
+
+
+def _legible(scene: Any, cam: DiscCam, stated: dict[str, float], across: float) -> None:
+    """Refuse a stated μ that draws what is shown beyond a page (graphmech.scales.DRAWN_SIZE_RANGE_MM,
+    the rule a linkage's μl keeps): a 16 km stroke at μs = 0.0005 m/mm would be dashed for hours."""
+    ext = maxima(cam.program, cam.omega)
+    sizes = {"l": ("profile", across), "s": ("displacement", abs(cam.program.stroke)),
+             "v": ("velocity", 2.0 * ext["v"].value), "a": ("acceleration", 2.0 * ext["a"].value)}
+    lo, hi = DRAWN_SIZE_RANGE_MM
+    for key, (panel, size) in sizes.items():
+        if key in stated and panel in scene.show and size > 0.0 and not lo <= size / stated[key] <= hi:
+            raise SceneError([("scales", f"{scale_note(key, stated[key], _angular(cam))} draws the {panel} "
+                                         f"{size / stated[key]:.3g} mm across: choose it so that it is "
+                                         f"{lo:g} … {hi:g} mm")], scene.source)
 
 
 def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> CamAnalysis:

@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Any, Iterable, Mapping, NoReturn
 
 from graphmech.errors import SceneError
-from graphmech.scales import PAPER
+from graphmech.scales import PAPER, phi_axis_problem
 from graphmech.mechanisms.cam import (
     DiscCam,
     Follower,
@@ -1451,7 +1451,8 @@ def _read_follower(
             model = TranslatingFollower(e, contact, roller.si if roller else 0.0)  # type: ignore[arg-type]
     else:
         a = r.value("pivot_distance", "length", positive=True)
-        arm = r.value("arm", "length", positive=True)
+        # a flat face lies along the rocker through A: it has no arm length (docs: not used)
+        arm = r.value("arm", "length", positive=True, required=contact != "flat")
         sense = r.string("sense", choices=("opposite", "same"), required=True)
         _not_for(r, _TRANSLATING_ONLY, f"only for a translating follower (this one is {kind})")
         if contact == "flat":
@@ -1472,9 +1473,10 @@ def _read_follower(
                     f"|a − l| = {r0.text(near)} and a + l = {r0.text(far)} "
                     f"(pivot_distance a = {a.text()}, arm l = {arm.text()})",
                 )
-        if complete and _valid(a, arm, sense) and len(r.problems) == before:
+        complete = complete and (arm is not None or (contact == "flat" and r.present("arm") is None))
+        if complete and _valid(a, sense) and len(r.problems) == before:
             model = OscillatingFollower(
-                a.si, arm.si, contact, roller.si if roller else 0.0, sense  # type: ignore[arg-type, union-attr]
+                a.si, arm.si if arm else 0.0, contact, roller.si if roller else 0.0, sense  # type: ignore[arg-type, union-attr]
             )
     r.finish()
     return model, kind, contact, len(r.problems) != before
@@ -2034,6 +2036,10 @@ def _parse_cam_scene(
     problems = top.problems
     title, show, find = _read_header(top, CAM_SHOW_CHOICES, CAM_SHOW_DEFAULT)
     scales = _read_scales(top, cam=True, follower=_peek_follower(data))
+    why = phi_axis_problem(scales["phi"]) if "phi" in scales else None  # the diagrams' φ axis, as a cycle's
+    if why:
+        tab = data.get("scales")
+        top.problem("scales." + next((k for k in tab if k.startswith("phi")), "phi"), why)
     for key in _LINKAGE_KEYS:
         if key in data:
             top.used.add(key)
