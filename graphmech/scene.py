@@ -1640,6 +1640,27 @@ def _read_table(s: _Reader, value: Any) -> tuple[tuple[float, float], ...] | Non
     return tuple((pt[0], pt[1]) for pt in points)  # type: ignore[index]
 
 
+#: A base radius below this fraction of the cam's size is lost in round-off (r0 + s == s).
+CAM_R0_MIN_REL = 1e-12
+
+
+def _lost_in_round_off(r0: _Value, f: Follower, stroke: float) -> list[tuple[str, str]]:
+    """A base circle or a rocker position that double precision cannot tell from the degenerate
+    one: the profile's normal, curvature and envelope then come out as 0/0."""
+    size = stroke if isinstance(f, TranslatingFollower) else f.pivot_distance
+    if r0.si < CAM_R0_MIN_REL * size:
+        what = f"the stroke h = {r0.text(stroke)}" if isinstance(f, TranslatingFollower) else \
+            f"pivot_distance a = {r0.text(size)}"
+        return [(r0.path, f"r0 = {r0.text()} is lost in round-off beside {what}: the profile cannot be "
+                          f"drawn (r0 ≥ {CAM_R0_MIN_REL:g} × that)")]
+    if isinstance(f, OscillatingFollower) and f.contact != "flat":
+        a, l = f.pivot_distance, f.arm
+        if not -1.0 < (a * a + l * l - r0.si * r0.si) / (2.0 * a * l) < 1.0:  # cos of ψ0, as the inversion finds it
+            return [(r0.path, f"r0 = {r0.text()} meets the arm's reach |a − l| or a + l within round-off: "
+                              "the rocker's start angle ψ0 cannot be found")]
+    return []
+
+
 def _read_cam(top: _Reader) -> CamScene | None:
     """[cam]: the disc cam, its follower and motion program, and how to divide the inversion."""
     r = top.table_at("cam", required=True)
@@ -1668,6 +1689,9 @@ def _read_cam(top: _Reader) -> CamScene | None:
     if circles is not None and contact is not None and contact != "roller":
         r.problem(r.at("roller_circles"), f'only for contact = "roller" (this follower is {contact})')
     program, program_bad = _read_program(r, kind)
+    if r0 is not None and follower is not None and program is not None:
+        for path, why in _lost_in_round_off(r0, follower, program.stroke):
+            r.problem(path, why)
     r.finish()
     if len(r.problems) != before or follower_bad or program_bad:
         return None
