@@ -332,6 +332,10 @@ _SOURCES = {"alpha_max": READING, "alpha_max_at": READING, "rho_min_pitch": READ
             "j_max_at": READING}
 
 
+#: A reading off by more than this (relative, as estimated or against the exact value) is warned of.
+UNRESOLVED = 0.1
+
+
 def _finer(an: CamAnalysis, factor: int) -> CamAnalysis:
     """The same drawing redone with ``factor`` times the divisions (nested: every division stays one)."""
     from dataclasses import replace
@@ -361,7 +365,7 @@ def _estimated(an: CamAnalysis, row: Row) -> Row:
     if not an.finer:  # drawn once for every row
         an.finer = tuple(_finer(an, k) for k in (2, 4, 8))
     v1 = row.graphical
-    v2, v4, v8 = (_row(f, name).graphical for f in an.finer)
+    v2, v4, v8 = read = tuple(_row(f, name).graphical for f in an.finer)
     if name.endswith("_at"):  # places round the turn: 358° and 2° are 4° apart
         v2, v4, v8 = (v1 + (v - v1 + 180.0) % 360.0 - 180.0 for v in (v2, v4, v8))
     est = max(estimate_from_three(v1, v2, v4), abs(v1 - v8))
@@ -375,7 +379,14 @@ def _estimated(an: CamAnalysis, row: Row) -> Row:
     n = round(math.tau / an.step)
     if name.split("_")[0] in ("v", "a", "j") and relative(est, d) <= 1e-12:
         return row  # the maximum is on a division: the closed form's value, a construction
-    return row.estimated(source, relative(est, d), f"{n} divisions ({math.degrees(an.step):.6g}°)")
+    basis = f"{n} divisions ({math.degrees(an.step):.6g}°)"
+    if max(relative(est, d), row.rel_error) > UNRESOLVED:
+        u = "°" if row.unit == "deg" else f" {row.unit}"
+        finer = ", ".join(f"{v:.4g}" for v in read)
+        an.warnings.append(f"{name} read at {basis} is {v1:.4g}{u}, at {2 * n}, {4 * n}, {8 * n} divisions {finer}, "
+                           f"exact {row.exact:.4g}{u}: the drawing does not resolve it (it changes within a "
+                           "division), take a finer step")
+    return row.estimated(source, relative(est, d), basis)
 
 
 def _tied(drawn_at: float, exact_at: float, exact_there: float, extreme: float) -> float:
