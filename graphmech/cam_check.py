@@ -9,7 +9,7 @@ divisions get finer; the check table states by how much they differ at the scene
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -231,7 +231,6 @@ def _requested(scene: Any) -> list[str]:
 def _graphical_r0_min(cam: DiscCam, alpha: float, step: float) -> float:
     """The smallest base radius found the draftsman's way: redraw at a trial r0 and read the
     largest pressure angle off the drawing, bisecting on r0 (to 1e-9 relative)."""
-    from dataclasses import replace
 
     def worst(r0: float) -> float:
         c = replace(cam, base_radius=r0)
@@ -338,8 +337,6 @@ UNRESOLVED = 0.1
 
 def _finer(an: CamAnalysis, factor: int) -> CamAnalysis:
     """The same drawing redone with ``factor`` times the divisions (nested: every division stays one)."""
-    from dataclasses import replace
-
     cam = an.cam
     step = an.step / factor
     delta = divisions(cam, step, breakpoints(cam.program))
@@ -362,13 +359,21 @@ def _estimated(an: CamAnalysis, row: Row) -> Row:
     source = READING if name.startswith("alpha@") else _SOURCES.get(name)
     if source is None:
         return row
-    if not an.finer:  # drawn once for every row
-        an.finer = tuple(_finer(an, k) for k in (2, 4, 8))
+    n = round(math.tau / an.step)
+    basis = f"{n} divisions ({math.degrees(an.step):.6g}°)"
+    try:
+        if not an.finer:  # drawn once for every row
+            an.finer = tuple(_finer(an, k) for k in (2, 4, 8))
+        v2, v4, v8 = read = tuple(_row(f, name).graphical for f in an.finer)
+    except (ArithmeticError, ValueError) as e:  # the finer drawing fails where this one did not
+        an.warnings.append(f"{name}: no error estimate — the drawing at {2 * n}…{8 * n} divisions fails ({e})")
+        return replace(row, error_source=source, basis=basis)
     v1 = row.graphical
-    v2, v4, v8 = read = tuple(_row(f, name).graphical for f in an.finer)
     if name.endswith("_at"):  # places round the turn: 358° and 2° are 4° apart
         v2, v4, v8 = (v1 + (v - v1 + 180.0) % 360.0 - 180.0 for v in (v2, v4, v8))
     est = max(estimate_from_three(v1, v2, v4), abs(v1 - v8))
+    if name == "profile_deviation":  # a distance to the exact profile is its own error; the finer
+        est = max(est, abs(v1))  # drawings alone would miss a floor (≈ 4e-6 of the size at 0.1°)
     if row.unit == "deg" and row.drawn_mm is None:
         d = 360.0 if name.endswith("_at") else 90.0
     elif name in ("v_max", "a_max", "j_max"):
@@ -376,10 +381,8 @@ def _estimated(an: CamAnalysis, row: Row) -> Row:
     else:
         size = float(np.max(np.hypot(*an.drawn.pitch.T))) if an.drawn is not None else an.cam.base_radius
         d = max(abs(row.graphical), size)
-    n = round(math.tau / an.step)
     if name.split("_")[0] in ("v", "a", "j") and relative(est, d) <= 1e-12:
         return row  # the maximum is on a division: the closed form's value, a construction
-    basis = f"{n} divisions ({math.degrees(an.step):.6g}°)"
     if max(relative(est, d), row.rel_error) > UNRESOLVED:
         u = "°" if row.unit == "deg" else f" {row.unit}"
         finer = ", ".join(f"{v:.4g}" for v in read)
