@@ -9,11 +9,12 @@ divisions get finer; the check table states by how much they differ at the scene
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
+from graphmech.accuracy import DISCRETISATION, READING, estimate_from_three, relative
 from graphmech.check import Row, Verdict, close_names, measured_entries, page_size
 from graphmech.errors import SceneError
 from graphmech.exact import cam as exact_cam
@@ -21,7 +22,7 @@ from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxima
 from graphmech.methods.cam_figures import panel_rows, scale_note
 from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile, read_drawing
-from graphmech.scales import round_scale
+from graphmech.scales import DRAWN_SIZE_RANGE_MM, round_scale
 
 #: What a cam scene can ask for, with the unit each is reported in.
 CAM_QUANTITIES = {
@@ -54,6 +55,8 @@ class CamAnalysis:
     reading: Any = None  # what is read off the drawn profile (methods.cam_inversion.CamReading)
     divisions: list[dict[str, Any]] = field(default_factory=list)  # the book's table, one row a division
     extra_measured: tuple[tuple[str, float], ...] = ()
+    step: float = 0.0  # rad, the divisions' step as drawn (2π/N)
+    finer: tuple = ()  # the same drawing at 2N, 4N and 8N divisions, for the rows' error estimates
 
     def scale_notes(self) -> list[str]:
         """μ as written on the drawing (an oscillating follower's μs is an angle per mm)."""
@@ -97,6 +100,7 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
     reach = pitch_r + getattr(f, "roller_radius", 0.0)
     if _angular(cam):
         reach = max(reach, f.pivot_distance + getattr(f, "roller_radius", 0.0))
+    _legible(scene, cam, scales, 2.0 * reach)
     if "l" not in scales:
         scales["l"] = round_scale(2.0 * reach / min(room_profile, room_h))
     if "phi" not in scales:  # books choose degrees per mm
@@ -111,6 +115,20 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
     return scales, stated
 
 
+def _legible(scene: Any, cam: DiscCam, stated: dict[str, float], across: float) -> None:
+    """Refuse a stated μ that draws what is shown beyond a page (graphmech.scales.DRAWN_SIZE_RANGE_MM,
+    the rule a linkage's μl keeps): a 16 km stroke at μs = 0.0005 m/mm would be dashed for hours."""
+    ext = maxima(cam.program, cam.omega)
+    sizes = {"l": ("profile", across), "s": ("displacement", abs(cam.program.stroke)),
+             "v": ("velocity", 2.0 * ext["v"].value), "a": ("acceleration", 2.0 * ext["a"].value)}
+    lo, hi = DRAWN_SIZE_RANGE_MM
+    for key, (panel, size) in sizes.items():
+        if key in stated and panel in scene.show and size > 0.0 and not lo <= size / stated[key] <= hi:
+            raise SceneError([("scales", f"{scale_note(key, stated[key], _angular(cam))} draws the {panel} "
+                                         f"{size / stated[key]:.3g} mm across: choose it so that it is "
+                                         f"{lo:g} … {hi:g} mm")], scene.source)
+
+
 def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> CamAnalysis:
     """The inversion at the scene's divisions, its readings, and the check table
     (``extra_measured``: hand readings from the command line, which may need the profile)."""
@@ -118,13 +136,14 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) 
     cam: DiscCam = cs.cam
     names = _requested(scene)
     asked = names + [n for _, n, _ in measured_entries(scene, extra_measured)]
-    delta = divisions(cam, cs.step, breakpoints(cam.program))
+    step = math.tau / max(1, round(math.tau / cs.step))
+    delta = divisions(cam, step, breakpoints(cam.program))
     s = displacement(cam.program, delta)
     # Only what the scene asks for: no profile for a scene that wants the diagrams alone.
     wants_profile = "profile" in scene.show or any(n in PROFILE_QUANTITIES or n.startswith("alpha@") for n in asked)
     drawn = draw_profile(cam, delta, s) if wants_profile else None
     scales, stated = choose_cam_scales(scene, cam, drawn)
-    an = CamAnalysis(scene, cam, delta, s, drawn, scales, stated, extra_measured=tuple(extra_measured))
+    an = CamAnalysis(scene, cam, delta, s, drawn, scales, stated, extra_measured=tuple(extra_measured), step=step)
     lin = "rad" if _angular(cam) else "m"
     an.impacts = [{"angle_deg": math.degrees(i.angle), "kind": i.kind,
                    # the jump of v (rigid) or of a (soft), in SI with the cam's ω
@@ -136,7 +155,7 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) 
                 else "soft impact: the acceleration jumps by a finite amount")
         an.warnings.append(f"δ = {math.degrees(i.angle):.6g}°: {what}")
     if drawn is None:
-        an.rows = [_row(an, name) for name in names]
+        an.rows = [_estimated(an, _row(an, name)) for name in names]
         return an
     an.warnings += exact_cam.undercut(cam)
     reading = read_drawing(cam, drawn)
@@ -153,7 +172,7 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) 
     an.rows = []
     for name in names:
         try:
-            an.rows.append(_row(an, name))
+            an.rows.append(_estimated(an, _row(an, name)))
         except ArithmeticError as e:  # e.g. the exact working profile folds over itself (undercut)
             an.warnings.append(f"{name}: not measured — {e}")
         except SceneError:
@@ -212,7 +231,6 @@ def _requested(scene: Any) -> list[str]:
 def _graphical_r0_min(cam: DiscCam, alpha: float, step: float) -> float:
     """The smallest base radius found the draftsman's way: redraw at a trial r0 and read the
     largest pressure angle off the drawing, bisecting on r0 (to 1e-9 relative)."""
-    from dataclasses import replace
 
     def worst(r0: float) -> float:
         c = replace(cam, base_radius=r0)
@@ -289,7 +307,7 @@ def _row(an: CamAnalysis, name: str) -> Row:
                       cam.program.stroke, cam.program.stroke)
     if name == "r0_min":
         e = exact_cam.min_base_radius(cam, cam.alpha_permissible)
-        g = _graphical_r0_min(cam, cam.alpha_permissible, an.scene.cam.step)
+        g = _graphical_r0_min(cam, cam.alpha_permissible, an.step)
         return _plain(name, unit, g / an.scales["l"], an.scales["l"], e, size)
     # v_max, a_max, j_max and where: read off the diagrams at the divisions vs the exact law
     q = name.split("_")[0]
@@ -302,6 +320,76 @@ def _row(an: CamAnalysis, name: str) -> Row:
     scale = an.scales.get(q, 1.0)
     unit = {"v": "rad/s", "a": "rad/s²", "j": "rad/s³"}[q] if ang else unit
     return _plain(name, unit, vals[k] / scale, scale, ext.value, ext.value)
+
+
+#: Values read off the drawing at the divisions, and how their error arises; s@δ and h are exact
+#: ordinates, and the law's v, a, j maxima are read at the divisions off closed forms (exact where the
+#: maximum falls on a division, which the finer drawings show).
+_SOURCES = {"alpha_max": READING, "alpha_max_at": READING, "rho_min_pitch": READING, "rho_min_pitch_at": READING,
+            "rho_min_actual": READING, "r0_min": READING, "profile_deviation": DISCRETISATION,
+            "v_max": READING, "v_max_at": READING, "a_max": READING, "a_max_at": READING, "j_max": READING,
+            "j_max_at": READING}
+
+
+#: A reading off by more than this (relative, as estimated or against the exact value) is warned of.
+UNRESOLVED = 0.1
+
+
+def _finer(an: CamAnalysis, factor: int) -> CamAnalysis:
+    """The same drawing redone with ``factor`` times the divisions (nested: every division stays one)."""
+    cam = an.cam
+    step = an.step / factor
+    delta = divisions(cam, step, breakpoints(cam.program))
+    s = displacement(cam.program, delta)
+    if an.drawn is None:
+        return replace(an, delta=delta, s=s, step=step)
+    drawn = draw_profile(cam, delta, s)
+    return replace(an, delta=delta, s=s, drawn=drawn, reading=read_drawing(cam, drawn), step=step)
+
+
+def _estimated(an: CamAnalysis, row: Row) -> Row:
+    """A row read off the drawing with the error the drawing itself estimates: the same reading at
+    2N and 4N divisions (graphmech.accuracy.estimate_from_three), relative to the row's own
+    denominator (an angle's span, or the drawing's size).
+
+    The reading at 8N is a floor under it: a smallest ρ next to a pitch-curve corner, or the place
+    of a flat maximum, can read the same at N, 2N and 4N (the base circle's r0, the same division)
+    before the finer divisions resolve it — the three would then claim no error at all."""
+    name = row.name
+    source = READING if name.startswith("alpha@") else _SOURCES.get(name)
+    if source is None:
+        return row
+    n = round(math.tau / an.step)
+    basis = f"{n} divisions of {math.degrees(an.step):.6g}°"
+    try:
+        if not an.finer:  # drawn once for every row
+            an.finer = tuple(_finer(an, k) for k in (2, 4, 8))
+        v2, v4, v8 = read = tuple(_row(f, name).graphical for f in an.finer)
+    except (ArithmeticError, ValueError) as e:  # the finer drawing fails where this one did not
+        an.warnings.append(f"{name}: no error estimate — the drawing at {2 * n}…{8 * n} divisions fails ({e})")
+        return replace(row, error_source=source, basis=basis)
+    v1 = row.graphical
+    if name.endswith("_at"):  # places round the turn: 358° and 2° are 4° apart
+        v2, v4, v8 = (v1 + (v - v1 + 180.0) % 360.0 - 180.0 for v in (v2, v4, v8))
+    est = max(estimate_from_three(v1, v2, v4), abs(v1 - v8))
+    if name == "profile_deviation":  # a distance to the exact profile is its own error; the finer
+        est = max(est, abs(v1))  # drawings alone would miss a floor (≈ 4e-6 of the size at 0.1°)
+    if row.unit == "deg" and row.drawn_mm is None:
+        d = 360.0 if name.endswith("_at") else 90.0
+    elif name in ("v_max", "a_max", "j_max"):
+        d = abs(row.graphical)
+    else:
+        size = float(np.max(np.hypot(*an.drawn.pitch.T))) if an.drawn is not None else an.cam.base_radius
+        d = max(abs(row.graphical), size)
+    if name.split("_")[0] in ("v", "a", "j") and relative(est, d) <= 1e-12:
+        return row  # the maximum is on a division: the closed form's value, a construction
+    if max(relative(est, d), row.rel_error) > UNRESOLVED:
+        u = "°" if row.unit == "deg" else f" {row.unit}"
+        finer = ", ".join(f"{v:.4g}" for v in read)
+        an.warnings.append(f"{name} read at {basis} is {v1:.4g}{u}, at {2 * n}, {4 * n}, {8 * n} divisions {finer}, "
+                           f"exact {row.exact:.4g}{u}: the drawing does not resolve it (it changes within a "
+                           "division), take a finer step")
+    return row.estimated(source, relative(est, d), basis)
 
 
 def _tied(drawn_at: float, exact_at: float, exact_there: float, extreme: float) -> float:

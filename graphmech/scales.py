@@ -79,3 +79,21 @@ def drawn_size_problem(size_m: float, mu_l: float) -> str | None:
         return None
     return (f"μl = {mu_l:g} m/mm draws the mechanism {drawn:.3g} mm across: choose μl so that it is "
             f"{lo:g} … {hi:g} mm")
+
+
+#: The φ axis of a diagram (a whole turn) is between these lengths on the drawing, mm.
+PHI_AXIS_RANGE_MM = (10.0, 2000.0)
+
+
+def phi_axis_problem(mu_phi: float) -> str | None:
+    """Why a whole turn's φ axis cannot be drawn at ``mu_phi`` (rad/mm); None if it can.
+
+    >>> phi_axis_problem(math.radians(2.5)) is None, phi_axis_problem(math.radians(2.5e-6))[:39]
+    (True, 'μφ makes the φ axis of a turn 1.44e+08 ')
+    """
+    axis = 2.0 * math.pi / mu_phi
+    lo, hi = PHI_AXIS_RANGE_MM
+    if lo <= axis <= hi:
+        return None
+    return (f"μφ makes the φ axis of a turn {axis:.3g} mm long: choose μφ so that it "
+            f"is {lo:g} … {hi:g} mm (phi_deg_per_mm = {360 / hi:g} … {360 / lo:g})")

@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Any, Iterable, Mapping, NoReturn
 
 from graphmech.errors import SceneError
-from graphmech.scales import PAPER
+from graphmech.scales import PAPER, phi_axis_problem
 from graphmech.mechanisms.cam import (
     DiscCam,
     Follower,
@@ -1462,7 +1462,8 @@ def _read_follower(
             model = TranslatingFollower(e, contact, roller.si if roller else 0.0)  # type: ignore[arg-type]
     else:
         a = r.value("pivot_distance", "length", positive=True)
-        arm = r.value("arm", "length", positive=True)
+        # a flat face lies along the rocker through A: it has no arm length (docs: not used)
+        arm = r.value("arm", "length", positive=True, required=contact != "flat")
         sense = r.string("sense", choices=("opposite", "same"), required=True)
         _not_for(r, _TRANSLATING_ONLY, f"only for a translating follower (this one is {kind})")
         if contact == "flat":
@@ -1483,9 +1484,10 @@ def _read_follower(
                     f"|a − l| = {r0.text(near)} and a + l = {r0.text(far)} "
                     f"(pivot_distance a = {a.text()}, arm l = {arm.text()})",
                 )
-        if complete and _valid(a, arm, sense) and len(r.problems) == before:
+        complete = complete and (arm is not None or (contact == "flat" and r.present("arm") is None))
+        if complete and _valid(a, sense) and len(r.problems) == before:
             model = OscillatingFollower(
-                a.si, arm.si, contact, roller.si if roller else 0.0, sense  # type: ignore[arg-type, union-attr]
+                a.si, arm.si if arm else 0.0, contact, roller.si if roller else 0.0, sense  # type: ignore[arg-type, union-attr]
             )
     r.finish()
     return model, kind, contact, len(r.problems) != before
@@ -1649,6 +1651,27 @@ def _read_table(s: _Reader, value: Any) -> tuple[tuple[float, float], ...] | Non
     return tuple((pt[0], pt[1]) for pt in points)  # type: ignore[index]
 
 
+#: A base radius below this fraction of the cam's size is lost in round-off (r0 + s == s).
+CAM_R0_MIN_REL = 1e-12
+
+
+def _lost_in_round_off(r0: _Value, f: Follower, stroke: float) -> list[tuple[str, str]]:
+    """A base circle or a rocker position that double precision cannot tell from the degenerate
+    one: the profile's normal, curvature and envelope then come out as 0/0."""
+    size = stroke if isinstance(f, TranslatingFollower) else f.pivot_distance
+    if r0.si < CAM_R0_MIN_REL * size:
+        what = f"the stroke h = {r0.text(stroke)}" if isinstance(f, TranslatingFollower) else \
+            f"pivot_distance a = {r0.text(size)}"
+        return [(r0.path, f"r0 = {r0.text()} is lost in round-off beside {what}: the profile cannot be "
+                          f"drawn (r0 ≥ {CAM_R0_MIN_REL:g} × that)")]
+    if isinstance(f, OscillatingFollower) and f.contact != "flat":
+        a, l = f.pivot_distance, f.arm
+        if not -1.0 < (a * a + l * l - r0.si * r0.si) / (2.0 * a * l) < 1.0:  # cos of ψ0, as the inversion finds it
+            return [(r0.path, f"r0 = {r0.text()} meets the arm's reach |a − l| or a + l within round-off: "
+                              "the rocker's start angle ψ0 cannot be found")]
+    return []
+
+
 def _read_cam(top: _Reader) -> CamScene | None:
     """[cam]: the disc cam, its follower and motion program, and how to divide the inversion."""
     r = top.table_at("cam", required=True)
@@ -1677,6 +1700,9 @@ def _read_cam(top: _Reader) -> CamScene | None:
     if circles is not None and contact is not None and contact != "roller":
         r.problem(r.at("roller_circles"), f'only for contact = "roller" (this follower is {contact})')
     program, program_bad = _read_program(r, kind)
+    if r0 is not None and follower is not None and program is not None:
+        for path, why in _lost_in_round_off(r0, follower, program.stroke):
+            r.problem(path, why)
     r.finish()
     if len(r.problems) != before or follower_bad or program_bad:
         return None
@@ -2045,6 +2071,10 @@ def _parse_cam_scene(
     problems = top.problems
     title, show, find = _read_header(top, CAM_SHOW_CHOICES, CAM_SHOW_DEFAULT)
     scales = _read_scales(top, cam=True, follower=_peek_follower(data))
+    why = phi_axis_problem(scales["phi"]) if "phi" in scales else None  # the diagrams' φ axis, as a cycle's
+    if why:
+        tab = data.get("scales")
+        top.problem("scales." + next((k for k in tab if k.startswith("phi")), "phi"), why)
     for key in _LINKAGE_KEYS:
         if key in data:
             top.used.add(key)

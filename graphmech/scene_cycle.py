@@ -11,11 +11,11 @@ where the working stroke begins — and the scene's positions become those N, la
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import Any
 
 from graphmech.mechanisms.linkage import Crank, Linkage, Positions
+from graphmech.scales import phi_axis_problem
 from graphmech.scene import _MISSING, MAX_POSITIONS, _read_scales, _Reader, _say, _type_name
 from graphmech.tolerances import POLE_RANGE_MM
 
@@ -33,8 +33,6 @@ START_CHOICES = ("driver", "extreme")
 DEFAULT_POLE_MM = 20.0
 #: The longest pole distance, mm (stated or fixed by a stated μv, μa): farther, the pole leaves any page.
 MAX_POLE_MM = POLE_RANGE_MM[1]
-#: The φ axis of the diagrams (a whole turn) is between these lengths on the drawing, mm.
-PHI_AXIS_RANGE_MM = (10.0, 2000.0)
 
 
 @dataclass(frozen=True)
@@ -186,14 +184,11 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
         scales = _read_scales(cy, entries=[("phi", "angle"), ("s", "length"), ("psi", "angle"), ("v", "velocity"),
                                            ("a", "acceleration"), ("omega", "omega"), ("epsilon", "epsilon")])
         poles = _read_poles(cy)
-        if "phi" in scales:  # a whole turn's φ axis must fit a drawing
-            axis = 2.0 * math.pi / scales["phi"]
-            lo, hi = PHI_AXIS_RANGE_MM
-            if not lo <= axis <= hi:
-                tab = cy.table.get("scales")
-                key = next((k for k in tab if k.startswith("phi")), "phi") if isinstance(tab, dict) else "phi"
-                cy.problem(f"cycle.scales.{key}", f"μφ makes the φ axis of a turn {axis:.3g} mm long: choose μφ so that it "
-                                           f"is {lo:g} … {hi:g} mm (phi_deg_per_mm = {360 / hi:g} … {360 / lo:g})")
+        why = phi_axis_problem(scales["phi"]) if "phi" in scales else None  # a whole turn's φ axis must fit a drawing
+        if why:
+            tab = cy.table.get("scales")
+            key = next((k for k in tab if k.startswith("phi")), "phi") if isinstance(tab, dict) else "phi"
+            cy.problem(f"cycle.scales.{key}", why)
         derived = [k for k in ("v", "a", "omega", "epsilon") if k in scales]
         if poles is not None and derived:  # μv = μs·ω₁/(μφ·H₁): one fixes the other
             cy.problem(cy.at("pole_distance_mm"), f"give the pole distances or the diagrams' μ{derived[0]}, not both: "

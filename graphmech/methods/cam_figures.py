@@ -369,7 +369,7 @@ def profile_notes(cam: DiscCam, mu_l: float) -> tuple[str, ...]:
         if f.offset:
             dims.append(f"e = {_mm(f.offset)}")
     else:
-        dims += [f"|OA| = {_mm(f.pivot_distance)}", f"l = {_mm(f.arm)}"]
+        dims += [f"|OA| = {_mm(f.pivot_distance)}"] + ([f"l = {_mm(f.arm)}"] if f.arm else [])  # a flat face has none
     if f.contact == "roller":
         dims.append(f"rᵣ = {_mm(f.roller_radius)}")
     sense = "counter-clockwise" if cam.rotation >= 0 else "clockwise"
