@@ -532,10 +532,17 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
     found = sorted(found, key=lambda n: (n.startswith(("omega", "alpha")), n))
     if not found:
         raise ValueError(f"no drawn segment {base!r} in this construction")
-    ends = {frozenset(build.quantities[n].segment): "".join(build.quantities[n].segment) for n in found}
-    segments = sorted(ends.values())  # one per pair of ends, whichever way round it was named
-    if len(segments) > 1:
-        raise ValueError(f"{base!r} could be any of {', '.join(segments)}: name the segment exactly")
+    # One drawn segment per pair of end steps, whichever way round it was named: the letters
+    # alone may name two (the pole p and the image p of a point P).
+    ends: dict[frozenset, str] = {}
+    for n in found:
+        ends.setdefault(frozenset(build.g.steps[build.quantities[n].slot].inputs[-2:]), n)
+    if len(ends) > 1:
+        segments = sorted({"".join(sorted(build.quantities[n].segment)) for n in ends.values()})
+        if len(segments) == len(ends):
+            segments = sorted("".join(build.quantities[n].segment) for n in ends.values())
+            raise ValueError(f"{base!r} could be any of {', '.join(segments)}: name the segment exactly")
+        raise ValueError(f"{base!r} could be any of {', '.join(sorted(ends.values()))}: name the quantity")
     return found[0], idx, True
 
 
