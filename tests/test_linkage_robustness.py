@@ -52,3 +52,48 @@ def test_a_segment_the_letters_name_twice_is_refused(tmp_path):
     scene = tmp_path / "p.toml"
     scene.write_text(_rename(BLOCK, {"E": "P"}))
     assert_refused(run_cli("check", str(scene), "--measured", "pd=45"), "p.toml", "v_D", "v_DP")
+
+
+# ---------------------------------------------------------------------------- item 1: no internal error
+
+FOURBAR = (SCENES / "linkage.fourbar_28_52_50_72.toml").read_text()
+FOURBAR_CYCLE = (SCENES / "linkage.fourbar_28_52_50_72-cycle.toml").read_text()
+GUIDE_BAR = (SCENES / "linkage.quick_return_timing-guide_bar.toml").read_text()
+
+
+def test_coincident_frame_pivots_characteristics(tmp_path):
+    """D on A: B and C both turn about A, the triangle ABC is rigid: a double crank whose γ is
+    the same everywhere (cos γ = (b² + c² − a²)/2bc), found without a frame line."""
+    import math
+
+    text = FOURBAR.replace("D = [72, 0]", "D = [0, 0]").split("[measured]")[0]
+    text = text.replace('find = ["theta", "psi", "K", "gamma_min", "gamma_min_at", "phi_start", "phi_end"]',
+                        'find = ["gamma_min", "gamma_min_at"]')
+    scene = tmp_path / "coincident.toml"
+    scene.write_text(text)
+    rows = _rows(scene)
+    delta = math.degrees(math.acos((52**2 + 50**2 - 28**2) / (2 * 52 * 50)))
+    assert rows["gamma_min"]["graphical"] == pytest.approx(min(delta, 180 - delta), rel=1e-12)
+    assert rows["gamma_min"]["exact"] == pytest.approx(min(delta, 180 - delta), rel=1e-12)
+    code, _, err = run_cli("render", str(scene), "-o", str(tmp_path / "c.svg"))
+    assert code == 0 and err == "", err
+    # the extremes the scene asked for do not exist: refused, not an internal error
+    scene.write_text(FOURBAR.replace("D = [72, 0]", "D = [0, 0]"))
+    assert_refused(run_cli("check", str(scene)), "coincident.toml", "find[0]", "double crank")
+
+
+def test_coincident_frame_pivots_cycle_from_the_extreme(tmp_path):
+    scene = tmp_path / "cycle.toml"
+    scene.write_text(re.sub(r"(?m)^D = .*$", "D = [0, 0]", FOURBAR_CYCLE))
+    assert_refused(run_cli("check", str(scene)), "cycle.toml", "cycle.start", "double crank")
+
+
+@pytest.mark.parametrize("frame", ['A = [0, 0]\nC = [0, -1e300]', 'A = [1e300, 1e300]\nC = [1e300, 9e299]'])
+def test_guide_bar_at_1e300(tmp_path, frame):
+    """A crank of 26 mm beside a frame of 1e300 mm at a chosen μl: refused at the key path."""
+    text = GUIDE_BAR.replace("[scales]\nl_mm_per_mm = 1\n", "").replace("A = [0, 0]\nC = [0, -100]", frame)
+    scene = tmp_path / "far.toml"
+    scene.write_text(text)
+    for argv in (("check", str(scene)), ("render", str(scene), "-o", str(tmp_path / "far.svg"))):
+        assert_refused(run_cli(*argv), "far.toml", "characteristics", "too small")
+    assert not (tmp_path / "far.svg").exists()
