@@ -24,9 +24,6 @@ from graphmech.tolerances import EPS
 
 #: The longest polygon side when graphmech chooses μW, mm.
 POLYGON_MM = 60.0
-#: Above this z/Δ (the largest |z| over the planes' distance Δ) the two-plane split amplifies the
-#: round-off of the z's past 1e-10 of the corrections: warned of and flagged ill-conditioned.
-ILL_SPLIT = 1e6
 
 
 @dataclass
@@ -49,16 +46,6 @@ class BalancingAnalysis:
     def size(self) -> float:
         """Σ|mᵢrᵢ|, kg·m: the characteristic size of the residuals."""
         return sum(u.m * u.r for u in self.problem.masses)
-
-    @property
-    def split_condition(self) -> float:
-        """z/Δ: how much the lever rule (z_II − z)/Δ amplifies a rounding of the z's (1 for a
-        static balance). The corrections grow as (rotor length)/Δ and cancel each other's force."""
-        p = self.problem
-        if p.planes is None:
-            return 1.0
-        span = abs(p.planes[1] - p.planes[0])
-        return max([abs(u.z) for u in p.masses] + [abs(z) for z in p.planes]) / span
 
 
 def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
@@ -99,20 +86,10 @@ def analyse_balancing(scene: Any, extra_measured: tuple[tuple[str, float], ...] 
         an.scales["W"] = round_scale(longest / POLYGON_MM)
     an.corrections = _balance(p, masses, an.scales["W"])
     for c in an.corrections:
-        if c.balanced and c.plane and not any(share for _, share in c.shares):
-            an.warnings.append(f"plane {c.plane}: every mass lies in the other correction plane, so none has a "
-                               "share here: no correction mass needed (its polygon is a point)")
-        elif c.balanced:
+        if c.balanced:
             where = "the rotor is" if p.type == "static" else f"plane {c.plane} is"
             an.warnings.append(f"{where} already balanced: no correction mass needed (the polygon closes by "
                                "itself, so there is no angle)")
-    kappa = an.split_condition
-    if kappa > ILL_SPLIT:
-        span = abs(p.planes[1] - p.planes[0])  # type: ignore[index]
-        an.warnings.append(f"the correction planes are only {span * 1000:.3g} mm apart against z up to "
-                           f"{kappa * span * 1000:.4g} mm: the two-plane split amplifies round-off by z/Δ = "
-                           f"{kappa:.2g} (ill-conditioned; the corrections are good to about {kappa * 2e-16:.0e} "
-                           "and cancel each other's force) — put the planes further apart")
     for name in names:
         row = _row(an, name)
         if row is not None:
@@ -152,7 +129,7 @@ def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | Non
         us = [ex.Unbalance(u.m, u.r, u.theta, u.z) for u in p.masses]
         planes = (0.0,) if p.type == "static" else p.planes
         drawn = [(0j if c.balanced else cmath.rect(c.W, c.theta), z) for c, z in zip(an.corrections, planes)]  # type: ignore[arg-type]
-        force, moment = ex.residuals(us, drawn, planes[0])  # about plane I: no far-off lever to cancel
+        force, moment = ex.residuals(us, drawn)
         span = 1.0 if p.type == "static" else abs(p.planes[1] - p.planes[0])  # type: ignore[index]
         if name == "residual_force":
             return force, 0.0, None, 1.0, an.size
@@ -177,8 +154,7 @@ def _row(an: BalancingAnalysis, name: str) -> Row | None:
         return None
     g, e, drawn, scale, char = v
     unit = QUANTITIES[an.problem.type][name]
-    return Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), char, 1e-300),
-               an.split_condition > ILL_SPLIT)
+    return Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), char, 1e-300), False)
 
 
 def judge_balancing(an: BalancingAnalysis, precision_mm: float | None = None) -> list[Verdict]:

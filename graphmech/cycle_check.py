@@ -41,7 +41,7 @@ from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.characteristics import DrawnCharacteristics, draw_characteristics, grashof_ranges
 from graphmech.methods.full_cycle import FullCycle, evaluate_cycle, sliders
-from graphmech.scales import drawn_size_problem, format_scale, round_scale
+from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
 
 __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "nice_pole"]
 
@@ -86,6 +86,7 @@ class CycleAnalysis:
     polygons: Any = None  # graphmech.check.Analysis of the polygon quantities asked for
     extra_measured: tuple[tuple[str, float], ...] = ()
     exact_series: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)  # subject → exact s, v, a
+    far: bool = False  # the mechanism lies so far from the origin that its coordinates lose its digits
 
     def summary_lines(self) -> list[str]:
         """What the check table does not show: the Grashof class and ranges, the diagrams' errors."""
@@ -253,8 +254,28 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
         an.drawn = draw_characteristics(linkage, mu_l)
     except ValueError as e:
         raise SceneError([("characteristics", str(e))], an.scene.source) from None
+    except (ZeroDivisionError, OverflowError):
+        # a crank of 26 mm beside a frame of 1e300 mm: their squares leave double precision
+        crank = linkage.driver.length  # type: ignore[union-attr]
+        raise SceneError([("characteristics", f"the crank ({crank:.3g} m) is {crank / mechanism_size(linkage):.2g} "
+                           "of the mechanism's size: too small beside it to be constructed on one drawing")],
+                         an.scene.source) from None
     loop = an.drawn.loop
     n = loop.names
+    # A guide's point 2⁶⁴ mm from the crank draws a guide no page can hold (and hatching it never ends).
+    xs = [c for p in an.drawn.points.values() for c in p]
+    extent = max(xs) - min(xs)
+    if not extent <= DRAWN_SIZE_RANGE_MM[1]:
+        where = "dyad[0].guide.through" if loop.kind == "slider_crank" else "scales"
+        raise SceneError([(where, f"the extreme positions' drawing runs {extent:.3g} mm across at μl = {mu_l:g} m/mm: "
+                                  f"more than a page can show (at most {DRAWN_SIZE_RANGE_MM[1]:g} mm); "
+                                  "put the guide's point near the crank")], an.scene.source)
+    from graphmech.check import _offset_warning
+
+    far = _offset_warning(linkage, mechanism_size(linkage))
+    if far:  # the characteristics' rows carry as few digits as the coordinates leave
+        an.warnings.append(far)
+        an.far = True
     A = complex(*linkage.frame_points[n["A"]])
     if loop.kind == "fourbar":
         D = complex(*linkage.frame_points[n["D"]])
@@ -608,7 +629,7 @@ def _row(an: CycleAnalysis, name: str, unit: str, g: float, e: float, drawn: flo
         err = abs(g - e) / max(abs(e), 1e-300)
     else:
         err = abs(g - e) / max(abs(e), characteristic(an.scene.linkage, unit, mechanism_size(an.scene.linkage)))
-    return Row(name, unit, drawn, scale, g, e, err, False)
+    return Row(name, unit, drawn, scale, g, e, err, an.far)
 
 
 def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Verdict]:

@@ -97,3 +97,38 @@ def test_guide_bar_at_1e300(tmp_path, frame):
     for argv in (("check", str(scene)), ("render", str(scene), "-o", str(tmp_path / "far.svg"))):
         assert_refused(run_cli(*argv), "far.toml", "characteristics", "too small")
     assert not (tmp_path / "far.svg").exists()
+
+
+# ---------------------------------------------------------------------------- item 2: bounded time
+
+def test_zeros_of_a_velocity_when_the_crank_stands_still(tmp_path):
+    """ω = 0: v_C vanishes at every angle; 720 'zeros' took minutes to label. Refused."""
+    text = (SCENES / "ic.slider_crank.toml").read_text()
+    text = re.sub(r"(?m)^omega = 10$", "omega = 0", text)
+    text = re.sub(r"(?m)^find = .*$", 'find = ["phi_v0_C"]', text)
+    scene = tmp_path / "still.toml"
+    scene.write_text(text)
+    for argv in (("check", str(scene)), ("render", str(scene), "-o", str(tmp_path / "s.svg"))):
+        assert_refused(run_cli(*argv), "still.toml", "find[0]", "ω = 0")
+
+
+CHARACTERISTICS = (SCENES / "linkage.slider_crank_offset-characteristics.toml").read_text()
+
+
+def test_characteristics_at_two_to_the_64_mm(tmp_path):
+    """The crank 2⁶⁴ mm from the guide's point: a guide no page can hold (hatching it never ended)."""
+    scene = tmp_path / "big.toml"
+    scene.write_text(CHARACTERISTICS.replace("A = [0, 0]", "A = [18446744073709551616, 0]"))
+    for argv in (("check", str(scene)), ("render", str(scene), "-o", str(tmp_path / "b.svg"))):
+        assert_refused(run_cli(*argv), "big.toml", "dyad[0].guide.through", "page")
+
+
+def test_characteristics_far_from_the_origin_warn(tmp_path):
+    """The whole mechanism 1e12 mm out: the values keep ~6 digits — said, and the rows marked."""
+    scene = tmp_path / "far.toml"
+    scene.write_text(CHARACTERISTICS.replace("A = [0, 0]", "A = [1e12, 0]").replace("[0, 30]", "[1e12, 30]"))
+    code, out, err = run_cli("check", "--json", str(scene))
+    assert code == 0
+    doc = json.loads(out)
+    assert any("times its own size from the origin" in w for w in doc["warnings"])
+    assert all(r["ill_conditioned"] for r in doc["quantities"])

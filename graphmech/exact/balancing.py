@@ -7,8 +7,7 @@ directly — nothing is taken from ``graphmech.methods``, ``graphmech.constructi
 
 * static (one plane): Σ mᵢrᵢ + W_b = 0;
 * dynamic (planes I and II at z_I ≠ z_II): the resultant force Σ mᵢrᵢ + W_I + W_II = 0 and the
-  resultant moment, Σ mᵢrᵢzᵢ + W_I·z_I + W_II·z_II = 0, solved by Cramer's rule (the moments
-  taken about the correction planes, so that nothing cancels in round-off).
+  resultant moment about z = 0, Σ mᵢrᵢzᵢ + W_I·z_I + W_II·z_II = 0, solved by Cramer's rule.
 
 The ω² of the centrifugal forces is left out throughout (it multiplies every term), so forces are
 in kg·m and moments in kg·m². Angles in rad, lengths in m.
@@ -46,7 +45,7 @@ def static_correction(masses: Sequence[Unbalance]) -> complex:
 
 
 def dynamic_correction(masses: Sequence[Unbalance], z_I: float, z_II: float) -> tuple[complex, complex]:
-    """(W_I, W_II), kg·m, from the balance of moments about each correction plane.
+    """(W_I, W_II), kg·m, from the balance of forces and of moments about z = 0.
 
     Raises
     ------
@@ -61,31 +60,19 @@ def dynamic_correction(masses: Sequence[Unbalance], z_I: float, z_II: float) -> 
     """
     if z_I == z_II:
         raise ValueError("the correction planes coincide")
-    # Cramer's rule with the moments taken about each correction plane in turn (about plane II
-    # for W_I, about plane I for W_II): the same solution as about z = 0, without the round-off
-    # of Σ mᵢrᵢzᵢ − U·z_II cancelling when the planes are close together far from z = 0.
-    det = z_II - z_I
-    W_I = -sum((u.vector() * (z_II - u.z) for u in masses), 0j) / det
-    W_II = -sum((u.vector() * (u.z - z_I) for u in masses), 0j) / det
+    U = sum((u.vector() for u in masses), 0j)
+    V = sum((u.vector() * u.z for u in masses), 0j)
+    det = z_II - z_I  # | 1  1 ; z_I  z_II |
+    W_I = (-U * z_II + V) / det
+    W_II = (-V + U * z_I) / det
     return W_I, W_II
 
 
-def residuals(masses: Sequence[Unbalance], corrections: Sequence[tuple[complex, float]],
-              about: float = 0.0) -> tuple[float, float]:
-    """|resultant force| (kg·m) and |resultant moment about z = ``about``| (kg·m²) of the rotor with
-    the corrections (W, z) added: zero to round-off when it is balanced.
-
-    Take ``about`` at a correction plane: with planes close together the corrections are large
-    and opposite, and their moments about a far-away z = 0 would cancel in round-off (a residual
-    of 1e-2 of the moments for planes 1e-3 mm apart 9 m out), which is the check's error, not
-    the balance's.
-
-    >>> W = dynamic_correction([Unbalance(1.0, 0.1, 0.0, 9.0)], 9.0, 9.000001)
-    >>> [x < 1e-12 for x in residuals([Unbalance(1.0, 0.1, 0.0, 9.0)], list(zip(W, (9.0, 9.000001))), 9.0)]
-    [True, True]
-    """
+def residuals(masses: Sequence[Unbalance], corrections: Sequence[tuple[complex, float]]) -> tuple[float, float]:
+    """|resultant force| (kg·m) and |resultant moment about z = 0| (kg·m²) of the rotor with the
+    corrections (W, z) added: zero to round-off when it is balanced."""
     F = sum((u.vector() for u in masses), 0j) + sum((w for w, _ in corrections), 0j)
-    M = sum((u.vector() * (u.z - about) for u in masses), 0j) + sum((w * (z - about) for w, z in corrections), 0j)
+    M = sum((u.vector() * u.z for u in masses), 0j) + sum((w * z for w, z in corrections), 0j)
     return abs(F), abs(M)
 
 

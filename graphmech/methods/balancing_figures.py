@@ -51,8 +51,6 @@ def polygon_items(c: Correction) -> list[Primitive]:
         n = math.hypot(*d)
         items.append(Label(_w_name(s.name), ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2),
                            ((d[0] / n, d[1] / n), (-d[0] / n, -d[1] / n)), 3.4))
-    if not items:  # no mass has a share in this plane: the polygon is its start point, closed
-        items = [Circle((0.0, 0.0), 0.8, "result"), Label("o", (0.0, 0.0), (), 3.2)]
     return items
 
 
@@ -108,9 +106,7 @@ def balancing_sheet(title: str, kind: str, masses: Sequence[Any], planes: tuple[
     if "polygon" in show:
         for c in corrections:
             name = "mass-radius polygon" + (f", plane {c.plane}" if c.plane else "")
-            if c.balanced and c.plane and not any(share for _, share in c.shares):
-                notes = (format_scale("W", mu_W), f"no mass acts in plane {c.plane}: no correction mass needed")
-            elif c.balanced:
+            if c.balanced:
                 notes = (format_scale("W", mu_W), "closes by itself: no correction mass needed")
             else:
                 notes = (format_scale("W", mu_W),
