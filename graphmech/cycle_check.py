@@ -33,6 +33,7 @@ from typing import Any
 
 import numpy as np
 
+from graphmech.accuracy import DISCRETISATION, relative
 from graphmech.check import Row, Verdict, analyse, characteristic, judge, measured_entries, mechanism_size, page_size
 from graphmech.errors import SceneError
 from graphmech.scene_cycle import MAX_POLE_MM
@@ -40,7 +41,7 @@ from graphmech.exact import characteristics as exact_ch
 from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.characteristics import DrawnCharacteristics, draw_characteristics, grashof_ranges
-from graphmech.methods.full_cycle import FullCycle, evaluate_cycle, sliders
+from graphmech.methods.full_cycle import CycleDiagram, FullCycle, cycle_positions, evaluate_cycle, sliders
 from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
 
 __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "nice_pole"]
@@ -86,6 +87,7 @@ class CycleAnalysis:
     polygons: Any = None  # graphmech.check.Analysis of the polygon quantities asked for
     extra_measured: tuple[tuple[str, float], ...] = ()
     exact_series: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)  # subject → exact s, v, a
+    refined: dict[tuple[str, int, bool], CycleDiagram] = field(default_factory=dict)  # the same diagram at m·N
     far: bool = False  # the mechanism lies so far from the origin that its coordinates lose its digits
 
     def summary_lines(self) -> list[str]:
@@ -601,8 +603,50 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
         g, e = float(drawn[i] * mu), float(exact[i])
         if unit == "deg":
             g, e = math.degrees(g), math.degrees(e)
-        out.append(_row(an, f"{base}@{labels[i]}", unit, g, e, float(drawn[i]), mu if unit != "deg" else math.degrees(mu)))
+        row = _row(an, f"{base}@{labels[i]}", unit, g, e, float(drawn[i]), mu if unit != "deg" else math.degrees(mu))
+        if what in ("v", "omega", "a", "alpha") or dg.kind == "path":  # chords: an error of order Δφ²
+            out.append(row.estimated(DISCRETISATION, _chord_estimate(an, dg, what, i, g), f"{n} positions"))
+        else:  # s or ψ read off the kinematic diagram at the position: a construction
+            out.append(row)
     return out
+
+
+def _diagram_at(an: CycleAnalysis, dg: CycleDiagram, m: int, mid: bool) -> CycleDiagram:
+    """The same diagram drawn by the same chords over m·N positions, placed so that every one of
+    the N positions (``mid``: every middle of the N intervals) is one of its own."""
+    key = (dg.subject, m, mid)
+    if key not in an.refined:
+        cyc = an.cycle
+        assert cyc is not None
+        step = 2.0 * math.pi / cyc.n
+        start = float(cyc.angles[0]) + (cyc.sense * (step / 2.0 - step / (2.0 * m)) if mid else 0.0)
+        fine = evaluate_cycle(an.scene.linkage, {"l": an.scales["l"], "v": 1.0, "a": 1.0},
+                              cycle_positions(start, m * cyc.n, cyc.sense), diagrams=[dg.subject],
+                              mu_phi=cyc.mu_phi, mu_s={dg.subject: dg.mu_s},
+                              H_mm=(dg.velocity.H_mm, dg.acceleration.H_mm))
+        an.refined[key] = fine.diagrams[0]
+    return an.refined[key]
+
+
+def _chord_estimate(an: CycleAnalysis, dg: CycleDiagram, what: str, i: int, g: float) -> float:
+    """The relative error of a value the chords give over N positions, as the chords themselves tell
+    it: the same value over 2N and 4N positions, extrapolated (Richardson, order 2: a chord's slope
+    is the curve's at its middle to Δφ²), against the one over N."""
+    mid = what in ("v", "omega")
+    vals = []
+    for m in (2, 4):
+        f = _diagram_at(an, dg, m, mid)
+        if what in ("s", "psi"):
+            vals.append(float(f.s_mm[m * i] * f.mu_s))
+        elif mid:
+            vals.append(float(f.velocity.derivative_mm[m * i] * f.mu_v))
+        else:
+            vals.append(float(f.a_mm[m * i] * f.mu_a))
+    v2, v4 = vals
+    limit = v4 + (v4 - v2) / 3.0
+    unit = {"s": "m", "v": "m/s", "a": "m/s²", "omega": "rad/s", "alpha": "rad/s²"}[what]
+    linkage = an.scene.linkage
+    return relative(abs(g - limit), max(abs(limit), characteristic(linkage, unit, mechanism_size(linkage))))
 
 
 def _range_names(ranges: list[tuple[str, float, float]], linkage: Linkage) -> dict[str, float]:

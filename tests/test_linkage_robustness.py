@@ -132,3 +132,45 @@ def test_characteristics_far_from_the_origin_warn(tmp_path):
     doc = json.loads(out)
     assert any("times its own size from the origin" in w for w in doc["warnings"])
     assert all(r["ill_conditioned"] for r in doc["quantities"])
+
+
+# ---------------------------------------------------------------------------- item 7: how accurate
+
+CYCLES = sorted(SCENES.glob("*-cycle.toml"))
+CYCLE_PATH = {"fly.compressor_course_project-cycle.toml": "S2"}  # a point's path to add to the diagrams
+
+
+def cycle_rows(path, n: int, tmp_path) -> list[dict]:
+    """Every diagram value of a reference cycle scene over n positions (and of a path's diagram)."""
+    text = path.read_text()
+    subjects = json.loads(re.search(r"(?m)^diagrams = (\[.*\])$", text).group(1))
+    subjects.append(CYCLE_PATH.get(path.name, "E"))
+    find = [f"{w}_{s}" + ("" if w in ("s", "psi") else "_diagram")
+            for s in subjects for w in (("psi", "omega", "alpha") if s.isdigit() else ("s", "v", "a"))]
+    text = re.sub(r"(?m)^diagrams = .*$", "diagrams = " + json.dumps(subjects), text)
+    text = re.sub(r"(?m)^positions = 12$", f"positions = {n}", text)
+    text = re.sub(r"(?m)^find = .*$", "find = " + json.dumps(find), text)
+    text = text.split("[measured]")[0]
+    scene = tmp_path / f"{path.stem}-{n}.toml"
+    scene.write_text(text)
+    code, out, err = run_cli("check", "--json", str(scene))
+    assert code == 0, err
+    return json.loads(out)["quantities"]
+
+
+@pytest.mark.parametrize("n", [12, 24, 36, 72, 360])
+@pytest.mark.parametrize("path", CYCLES, ids=[p.stem for p in CYCLES])
+def test_chord_diagrams_estimate_their_own_error(path, n, tmp_path):
+    rows = cycle_rows(path, n, tmp_path)
+    chords = [r for r in rows if "_diagram@" in r["name"] or (r["name"].startswith(("s_E@", "s_S2@")))]
+    assert len(chords) == 5 * n  # v, a of the diagram's subject; s, v, a of the path
+    for r in rows:
+        if r in chords:
+            assert r["error_source"] == "discretisation" and r["basis"] == f"{n} positions", r
+            est, true = r["error_estimate"], r["rel_error"]
+            if true > 1e-10:
+                assert 0.1 <= est / true <= 10.0, r
+            else:
+                assert est < 1e-8, r
+        else:  # s of a slider, ψ of a link: read off the kinematic diagram, a construction
+            assert r["error_source"] == "construction" and r["error_estimate"] is None, r
