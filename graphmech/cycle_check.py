@@ -89,6 +89,7 @@ class CycleAnalysis:
     exact_series: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)  # subject → exact s, v, a
     refined: dict[tuple[str, int, bool], CycleDiagram] = field(default_factory=dict)  # the same diagram at m·N
     far: bool = False  # the mechanism lies so far from the origin that its coordinates lose its digits
+    ill: set[str] = field(default_factory=set)  # characteristics whose conditioning exceeds 1e-9
 
     def summary_lines(self) -> list[str]:
         """What the check table does not show: the Grashof class and ranges, the diagrams' errors."""
@@ -279,17 +280,21 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
         an.warnings.append(far)
         an.far = True
     A = complex(*linkage.frame_points[n["A"]])
-    if loop.kind == "fourbar":
-        D = complex(*linkage.frame_points[n["D"]])
-        y = linkage.dyads[0]
-        branch = y.branch if getattr(y, "q", None) == n["D"] else ("right" if y.branch == "left" else "left")  # type: ignore[union-attr]
-        an.exact = exact_ch.fourbar(A, D, loop.a, loop.b, loop.c, branch, loop.sense)
-    elif loop.kind == "slider_crank":
-        y = linkage.dyads[0]
-        an.exact = exact_ch.slider_crank(A, complex(*y.guide.through), y.guide.angle, loop.a, loop.b,  # type: ignore[union-attr]
+
+    def closed_form(a: float, b: float, c: float) -> exact_ch.ExactCharacteristics:
+        if loop.kind == "fourbar":
+            D = complex(*linkage.frame_points[n["D"]])
+            y = linkage.dyads[0]
+            branch = y.branch if getattr(y, "q", None) == n["D"] else ("right" if y.branch == "left" else "left")  # type: ignore[union-attr]
+            return exact_ch.fourbar(A, D, a, b, c, branch, loop.sense)
+        if loop.kind == "slider_crank":
+            y = linkage.dyads[0]
+            return exact_ch.slider_crank(A, complex(*y.guide.through), y.guide.angle, a, b,  # type: ignore[union-attr]
                                          y.branch, loop.sense)  # type: ignore[union-attr]
-    else:
-        an.exact = exact_ch.guide_bar(A, complex(*linkage.frame_points[n["C"]]), loop.a, loop.sense)
+        return exact_ch.guide_bar(A, complex(*linkage.frame_points[n["C"]]), a, loop.sense)
+
+    an.exact = closed_form(loop.a, loop.b, loop.c)
+    _characteristics_conditioning(an, closed_form)
     if loop.kind == "fourbar":
         L = [loop.a, loop.b, loop.c, abs(complex(*linkage.frame_points[n["D"]]) - A)]
         exact_class = exact_ch.fourbar_class(*L)
@@ -300,6 +305,53 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
                                "line, where the output's motion is undetermined")
     an.summary["characteristics"] = {"loop": loop.kind, "grashof": an.drawn.grashof,
                                      "grashof_exact": an.exact.grashof if loop.kind != "fourbar" else exact_class}
+
+
+#: The relative change of one length by which the characteristics' sensitivity to it is measured.
+_NUDGE = 1e-12
+
+
+def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
+    """Name the characteristics that the last bit of a length moves by more than 1e-9.
+
+    Each value's condition number κ = |Δv/v| / |Δl/l| is measured on the closed form with one
+    length (crank, coupler, rocker) nudged by 1e-12 of itself; a value with COND_SAFETY·κ·EPS
+    above 1e-9 (K of a guide bar with AB/AC = 1 − 1e-9: the extremes 0.005° from a dead point)
+    cannot be checked to 1e-9 by any method: its row is marked and one line says why.
+    """
+    from graphmech import tolerances as T
+
+    loop = an.drawn.loop  # type: ignore[union-attr]
+    base = {k: v[1] for k, v in _ch_values(an)[0].items()}
+    exact = an.exact
+    kappa = dict.fromkeys(base, 0.0)
+    lengths = [loop.a, loop.b, loop.c]
+    for k, length in enumerate(lengths):
+        if length == 0.0:
+            continue
+        for sign in (1.0, -1.0):
+            nudged = list(lengths)
+            nudged[k] = length * (1.0 + sign * _NUDGE)
+            try:
+                an.exact = closed_form(*nudged)
+                moved = _ch_values(an)[0]
+            except ValueError:  # a bit further and the crank no longer turns: as ill-conditioned as can be
+                moved = {}
+            finally:
+                an.exact = exact
+            for name, v in base.items():
+                w = moved[name][1] if name in moved and moved[name][1] is not None else math.inf
+                rel = abs(((w - v + 180.0) % 360.0 - 180.0) / 360.0 if CHARACTERISTICS.get(name, TIMING.get(name)) == "deg"
+                          else (w - v) / max(abs(v), 1e-300))
+                kappa[name] = max(kappa[name], rel / _NUDGE)
+    bad = {name: c for name, c in kappa.items() if T.COND_SAFETY * c * T.EPS > T.REL_AGREEMENT}
+    if bad:
+        an.ill = set(bad)
+        worst = max(bad, key=bad.get)  # type: ignore[arg-type]
+        names = ", ".join(f"{k} = {base[k]:.6g}" for k in bad)
+        an.warnings.append(f"ill-conditioned characteristics: {names}; the last bit of a link's length moves "
+                           f"{worst} by {bad[worst] * T.EPS:.1g} relative (condition number {bad[worst]:.2g}), so no "
+                           "method can give them to 1e-9")
 
 
 def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
@@ -673,7 +725,7 @@ def _row(an: CycleAnalysis, name: str, unit: str, g: float, e: float, drawn: flo
         err = abs(g - e) / max(abs(e), 1e-300)
     else:
         err = abs(g - e) / max(abs(e), characteristic(an.scene.linkage, unit, mechanism_size(an.scene.linkage)))
-    return Row(name, unit, drawn, scale, g, e, err, an.far)
+    return Row(name, unit, drawn, scale, g, e, err, an.far or name in an.ill)
 
 
 def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Verdict]:

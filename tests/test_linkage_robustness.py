@@ -174,3 +174,75 @@ def test_chord_diagrams_estimate_their_own_error(path, n, tmp_path):
                 assert est < 1e-8, r
         else:  # s of a slider, ψ of a link: read off the kinematic diagram, a construction
             assert r["error_source"] == "construction" and r["error_estimate"] is None, r
+
+
+# ---------------------------------------------------------------------------- item 6: no silent inaccuracy
+
+GUIDE_BAR_POLYGONS = """
+title = "Guide bar, the crank pin 2e-4 mm from the bar's pivot"
+show = ["mechanism", "velocity", "acceleration"]
+find = ["omega_3", "alpha_3", "a_k_B3B2"]
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+[frame]
+link = "4"
+A = [0, 0]
+C = [0, -100]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = 99.9998
+angle = -90
+omega = 10
+[[dyad]]
+type = "RPR"
+joints = ["B", "C"]
+links = ["2", "3"]
+bar = "second"
+"""
+
+
+def _alpha_3_in_rationals() -> float:
+    """ε₃ = ω₁²·θ₃″(φ) of the bar's angle θ₃ = atan2(r sin φ − y_C, r cos φ), in exact rationals of
+    the scene's SI numbers (the crank's sin and cos as floats give them)."""
+    import math
+    from fractions import Fraction as F
+
+    r, yc, phi = F(99.9998 / 1000), F(-100 / 1000), math.radians(-90)
+    c, s = F(math.cos(phi)), F(math.sin(phi))
+    u, v, du, dv = r * c, r * s - yc, -r * s, r * c
+    N, D = u * dv - v * du, u * u + v * v
+    dN, dD = u * (-r * s) - v * (-r * c), 2 * (u * du + v * dv)
+    return float(100 * (dN * D - N * dD) / (D * D))
+
+
+def test_guide_bar_pin_near_the_pivot(tmp_path):
+    """ω₃ ≈ 5e6 rad/s: the bar's direction as e^{iθ} of a rounded θ put the exact ε₃ 3e-6 off."""
+    scene = tmp_path / "pin.toml"
+    scene.write_text(GUIDE_BAR_POLYGONS)
+    rows = _rows(scene)
+    truth = _alpha_3_in_rationals()
+    assert abs(rows["alpha_3"]["exact"] - truth) <= 1e-12 * abs(truth)
+    assert abs(rows["alpha_3"]["graphical"] - truth) <= 1e-9 * abs(truth)
+    assert all(r["rel_error"] < 1e-9 for r in rows.values())
+
+
+def test_time_ratio_of_a_guide_bar_at_its_limit(tmp_path):
+    """AB/AC = 1 − 1e-9: K ≈ 7e4 moves by 1e-7 with the last bit of AB — said and marked."""
+    scene = tmp_path / "limit.toml"
+    scene.write_text(GUIDE_BAR.replace("length = 25.881904510252074", "length = 99.9999999"))
+    code, out, err = run_cli("check", "--json", str(scene))
+    assert code == 0, err
+    doc = json.loads(out)
+    rows = {r["name"]: r for r in doc["quantities"]}
+    assert rows["K"]["ill_conditioned"] and rows["t_return"]["ill_conditioned"]
+    assert not rows["theta"]["ill_conditioned"] and rows["theta"]["rel_error"] < 1e-9
+    warning = [w for w in doc["warnings"] if "ill-conditioned characteristics" in w]
+    assert len(warning) == 1 and "K = 70247" in warning[0]
+    # the reference guide bar is well-conditioned: nothing said, nothing marked
+    code, out, _ = run_cli("check", "--json", str(SCENES / "linkage.quick_return_timing-guide_bar.toml"))
+    assert not any(r["ill_conditioned"] for r in json.loads(out)["quantities"])
