@@ -324,13 +324,18 @@ def mechanism_size(linkage: Linkage, kin: Kinematics | None = None) -> float:
 OUT_OF_RANGE = "numbers out of the range of double precision (the scene's sizes or speeds are too extreme)"
 
 
-def _offset_warning(linkage: Linkage, size: float) -> str:
-    """Coordinates far from the origin, compared with the mechanism's size, carry few digits of it."""
+def offset_ratio(linkage: Linkage, size: float) -> float:
+    """How many times its own size the mechanism's given coordinates lie from the origin."""
     coords = [abs(c) for p in linkage.frame_points.values() for c in p]
     d = linkage.driver
     coords += [abs(c) for g in [getattr(d, "guide", None)] + [getattr(y, "guide", None) for y in linkage.dyads]
                if g is not None for c in g.through]
-    ratio = max(coords + [0.0]) / size
+    return max(coords + [0.0]) / size
+
+
+def _offset_warning(linkage: Linkage, size: float) -> str:
+    """Coordinates far from the origin, compared with the mechanism's size, carry few digits of it."""
+    ratio = offset_ratio(linkage, size)
     if T.COND_SAFETY * T.EPS * ratio <= T.REL_AGREEMENT:
         return ""
     return (f"the mechanism lies {ratio:.2g} times its own size from the origin: its coordinates keep "

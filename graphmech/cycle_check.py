@@ -36,7 +36,7 @@ import numpy as np
 from graphmech.accuracy import DISCRETISATION, relative
 from graphmech.check import Row, Verdict, analyse, characteristic, judge, measured_entries, mechanism_size, page_size
 from graphmech.errors import SceneError
-from graphmech.scene_cycle import MAX_POLE_MM
+from graphmech.scene_cycle import MAX_POLE_MM, MIN_POLE_MM
 from graphmech.exact import characteristics as exact_ch
 from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
@@ -171,7 +171,22 @@ def _mech_scale(scene: Any, linkage: Linkage) -> float:
 
 
 def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> CycleAnalysis:
-    """Evaluate what the scene shows and finds, and check it."""
+    """Evaluate what the scene shows and finds, and check it.
+
+    As for one position (:func:`graphmech.check.analyse`), numbers beyond double precision (ω of
+    1e300 rad/s squared, a crank of 5e-324 mm) are one line, never a traceback, an inf or a NaN.
+    """
+    from graphmech.check import OUT_OF_RANGE
+    from graphmech.errors import DegenerateConstruction
+
+    try:
+        with np.errstate(all="ignore"):
+            return _analyse_cycle(scene, extra_measured)
+    except (OverflowError, ZeroDivisionError, FloatingPointError) as e:
+        raise DegenerateConstruction("the construction", f"{OUT_OF_RANGE} ({e})") from None
+
+
+def _analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> CycleAnalysis:
     linkage: Linkage = scene.linkage
     measured = [n for _, n, _ in measured_entries(scene, extra_measured)]
     names = list(scene.find)
@@ -273,9 +288,16 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
         raise SceneError([(where, f"the extreme positions' drawing runs {extent:.3g} mm across at μl = {mu_l:g} m/mm: "
                                   f"more than a page can show (at most {DRAWN_SIZE_RANGE_MM[1]:g} mm); "
                                   "put the guide's point near the crank")], an.scene.source)
-    from graphmech.check import _offset_warning
+    from graphmech.check import _offset_warning, offset_ratio
+    from graphmech.tolerances import EPS
 
-    far = _offset_warning(linkage, mechanism_size(linkage))
+    size = mechanism_size(linkage)
+    far = _offset_warning(linkage, size)
+    ratio = offset_ratio(linkage, size)
+    if EPS * ratio > 0.1:  # not one digit of the mechanism is left to draw
+        raise SceneError([("frame", f"the mechanism lies {ratio:.2g} times its own size from the origin: its "
+                                    "coordinates keep no digit of its geometry; move the origin to a frame pivot")],
+                         an.scene.source)
     if far:  # the characteristics' rows carry as few digits as the coordinates leave
         an.warnings.append(far)
         an.far = True
@@ -422,10 +444,18 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
         h2 = mu_v * w / (mu_phi * spec.scales[ka]) if ka in spec.scales else H[1]
         poles[subj] = (h1, h2)
         for k, h, mu in ((1, h1, kv), (2, h2, ka)):  # a stated μv, μa far off the diagram's own puts P off the page
-            if mu in spec.scales and not 0.0 < h <= MAX_POLE_MM:
+            if mu in spec.scales and not MIN_POLE_MM <= h <= MAX_POLE_MM:
                 raise SceneError([("cycle.scales", f"μ{mu} of {subj}'s diagram puts its pole P{k} at H{k} = {h:.3g} mm "
-                                                   f"(at most {MAX_POLE_MM:g} mm): choose a larger μ{mu}")],
+                                                   f"({MIN_POLE_MM:g} … {MAX_POLE_MM:g} mm): choose "
+                                                   f"{'a larger' if h > MAX_POLE_MM else 'a smaller'} μ{mu}")],
                                  scene.source)
+        # what s–φ (ψ–φ) can reach: the mechanism's size, a few turns; a μs that draws it off any page
+        reach = 4.0 * mechanism_size(linkage) if subj not in links else 4.0 * math.pi
+        if not reach / mu_s[subj] <= DRAWN_SIZE_RANGE_MM[1]:
+            key = "psi" if subj in links else "s"
+            raise SceneError([("cycle.scales", f"μ{key} = {mu_s[subj]:g} draws the diagram of {subj} up to "
+                                               f"{reach / mu_s[subj]:.3g} mm high: more than a page can show "
+                                               f"(at most {DRAWN_SIZE_RANGE_MM[1]:g} mm)")], scene.source)
     paths = spec.paths if ("paths" in scene.show) else ()
     an.cycle = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
                               mu_s=mu_s, H_mm=poles, paths=paths)

@@ -32,6 +32,8 @@ START_CHOICES = ("driver", "extreme")
 DEFAULT_POLE_MM = 20.0
 #: The longest pole distance, mm (stated or fixed by a stated μv, μa): farther, the pole leaves any page.
 MAX_POLE_MM = 1000.0
+#: The shortest pole distance a ray can be drawn from (its pole on the ordinate axis otherwise), mm.
+MIN_POLE_MM = 1.0
 #: The φ axis of the diagrams (a whole turn) is between these lengths on the drawing, mm.
 PHI_AXIS_RANGE_MM = (10.0, 2000.0)
 
@@ -123,10 +125,18 @@ def _read_poles(r: _Reader) -> tuple[float, float] | None:
             k = int(xs[1] > MAX_POLE_MM)
             r.problem(f"{path}[{k}]", f"H{k + 1} = {xs[k]:g} mm: at most {MAX_POLE_MM:g} mm, or the pole leaves the page")
             return None
+        if xs is not None and min(xs) < MIN_POLE_MM:
+            k = int(xs[1] < MIN_POLE_MM)
+            r.problem(f"{path}[{k}]", f"H{k + 1} = {xs[k]:g} mm: at least {MIN_POLE_MM:g} mm, or no ray can be drawn "
+                                      "from the pole")
+            return None
         return None if xs is None else (xs[0], xs[1])
     x = r.number(value, path, positive=True)
     if x is not None and x > MAX_POLE_MM:
         r.problem(path, f"H = {x:g} mm: at most {MAX_POLE_MM:g} mm, or the pole leaves the page")
+        return None
+    if x is not None and x < MIN_POLE_MM:
+        r.problem(path, f"H = {x:g} mm: at least {MIN_POLE_MM:g} mm, or no ray can be drawn from the pole")
         return None
     return None if x is None else (x, x)
 

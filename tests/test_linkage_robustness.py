@@ -246,3 +246,34 @@ def test_time_ratio_of_a_guide_bar_at_its_limit(tmp_path):
     # the reference guide bar is well-conditioned: nothing said, nothing marked
     code, out, _ = run_cli("check", "--json", str(SCENES / "linkage.quick_return_timing-guide_bar.toml"))
     assert not any(r["ill_conditioned"] for r in json.loads(out)["quantities"])
+
+
+# ---------------------------------------------------------------------------- more of item 1, found by mutation
+
+CYCLE = (SCENES / "linkage.slider_crank_offset-cycle.toml").read_text()
+
+
+@pytest.mark.parametrize("source, old, new, key", [
+    (CYCLE, "length = 100\n", "length = 5e-324\n", "numbers out of the range"),
+    (FOURBAR_CYCLE, "omega = 10\n", "omega = 1e300\n", "numbers out of the range"),
+    (CYCLE, "pole_distance_mm = [20, 15]", "pole_distance_mm = [5e-324, 15]", "cycle.pole_distance_mm[0]"),
+    (CYCLE, "s_m_per_mm = 0.005", "s_m_per_mm = 5e-324", "cycle.scales"),
+    (CHARACTERISTICS, "A = [0, 0]", "A = [-1e300, 0]", "frame"),
+])
+def test_cycle_extremes_are_refused_in_one_line(tmp_path, source, old, new, key):
+    assert old in source
+    scene = tmp_path / "x.toml"
+    scene.write_text(source.replace(old, new, 1))
+    for argv in (("check", str(scene)), ("render", str(scene), "-o", str(tmp_path / "x.svg"))):
+        code, out, err = run_cli(*argv)
+        # named as given (a construction's refusal) or by its name (a scene's)
+        assert_refused((code, out, err), str(scene) if err.startswith(str(scene)) else "x.toml", key)
+    assert not (tmp_path / "x.svg").exists()
+
+
+def test_a_stroke_too_short_to_draw(tmp_path):
+    """A crank of 1e-300 mm: the stroke H has no length on the drawing; no arrow, no internal error."""
+    scene = tmp_path / "tiny.toml"
+    scene.write_text(CHARACTERISTICS.replace("length = 100\n", "length = 1e-300\n", 1))
+    code, _, err = run_cli("render", str(scene), "-o", str(tmp_path / "t.svg"))
+    assert code == 0 and "internal" not in err, err
