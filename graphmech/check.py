@@ -324,13 +324,18 @@ def mechanism_size(linkage: Linkage, kin: Kinematics | None = None) -> float:
 OUT_OF_RANGE = "numbers out of the range of double precision (the scene's sizes or speeds are too extreme)"
 
 
-def _offset_warning(linkage: Linkage, size: float) -> str:
-    """Coordinates far from the origin, compared with the mechanism's size, carry few digits of it."""
+def offset_ratio(linkage: Linkage, size: float) -> float:
+    """How many times its own size the mechanism's given coordinates lie from the origin."""
     coords = [abs(c) for p in linkage.frame_points.values() for c in p]
     d = linkage.driver
     coords += [abs(c) for g in [getattr(d, "guide", None)] + [getattr(y, "guide", None) for y in linkage.dyads]
                if g is not None for c in g.through]
-    ratio = max(coords + [0.0]) / size
+    return max(coords + [0.0]) / size
+
+
+def _offset_warning(linkage: Linkage, size: float) -> str:
+    """Coordinates far from the origin, compared with the mechanism's size, carry few digits of it."""
+    ratio = offset_ratio(linkage, size)
     if T.COND_SAFETY * T.EPS * ratio <= T.REL_AGREEMENT:
         return ""
     return (f"the mechanism lies {ratio:.2g} times its own size from the origin: its coordinates keep "
@@ -532,10 +537,17 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
     found = sorted(found, key=lambda n: (n.startswith(("omega", "alpha")), n))
     if not found:
         raise ValueError(f"no drawn segment {base!r} in this construction")
-    ends = {frozenset(build.quantities[n].segment): "".join(build.quantities[n].segment) for n in found}
-    segments = sorted(ends.values())  # one per pair of ends, whichever way round it was named
-    if len(segments) > 1:
-        raise ValueError(f"{base!r} could be any of {', '.join(segments)}: name the segment exactly")
+    # One drawn segment per pair of end steps, whichever way round it was named: the letters
+    # alone may name two (the pole p and the image p of a point P).
+    ends: dict[frozenset, str] = {}
+    for n in found:
+        ends.setdefault(frozenset(build.g.steps[build.quantities[n].slot].inputs[-2:]), n)
+    if len(ends) > 1:
+        segments = sorted({"".join(sorted(build.quantities[n].segment)) for n in ends.values()})
+        if len(segments) == len(ends):
+            segments = sorted("".join(build.quantities[n].segment) for n in ends.values())
+            raise ValueError(f"{base!r} could be any of {', '.join(segments)}: name the segment exactly")
+        raise ValueError(f"{base!r} could be any of {', '.join(sorted(ends.values()))}: name the quantity")
     return found[0], idx, True
 
 

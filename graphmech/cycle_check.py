@@ -33,15 +33,16 @@ from typing import Any
 
 import numpy as np
 
+from graphmech.accuracy import DISCRETISATION, relative
 from graphmech.check import Row, Verdict, analyse, characteristic, judge, measured_entries, mechanism_size, page_size
 from graphmech.errors import SceneError
-from graphmech.scene_cycle import MAX_POLE_MM
+from graphmech.scene_cycle import MAX_POLE_MM, MIN_POLE_MM
 from graphmech.exact import characteristics as exact_ch
 from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.characteristics import DrawnCharacteristics, draw_characteristics, grashof_ranges
-from graphmech.methods.full_cycle import FullCycle, evaluate_cycle, sliders
-from graphmech.scales import drawn_size_problem, format_scale, round_scale
+from graphmech.methods.full_cycle import CycleDiagram, FullCycle, cycle_positions, evaluate_cycle, sliders
+from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
 
 __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "nice_pole"]
 
@@ -86,6 +87,9 @@ class CycleAnalysis:
     polygons: Any = None  # graphmech.check.Analysis of the polygon quantities asked for
     extra_measured: tuple[tuple[str, float], ...] = ()
     exact_series: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)  # subject → exact s, v, a
+    refined: dict[tuple[str, int, bool], CycleDiagram] = field(default_factory=dict)  # the same diagram at m·N
+    far: bool = False  # the mechanism lies so far from the origin that its coordinates lose its digits
+    ill: set[str] = field(default_factory=set)  # characteristics whose conditioning exceeds 1e-9
 
     def summary_lines(self) -> list[str]:
         """What the check table does not show: the Grashof class and ranges, the diagrams' errors."""
@@ -167,7 +171,22 @@ def _mech_scale(scene: Any, linkage: Linkage) -> float:
 
 
 def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> CycleAnalysis:
-    """Evaluate what the scene shows and finds, and check it."""
+    """Evaluate what the scene shows and finds, and check it.
+
+    As for one position (:func:`graphmech.check.analyse`), numbers beyond double precision (ω of
+    1e300 rad/s squared, a crank of 5e-324 mm) are one line, never a traceback, an inf or a NaN.
+    """
+    from graphmech.check import OUT_OF_RANGE
+    from graphmech.errors import DegenerateConstruction
+
+    try:
+        with np.errstate(all="ignore"):
+            return _analyse_cycle(scene, extra_measured)
+    except (OverflowError, ZeroDivisionError, FloatingPointError) as e:
+        raise DegenerateConstruction("the construction", f"{OUT_OF_RANGE} ({e})") from None
+
+
+def _analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> CycleAnalysis:
     linkage: Linkage = scene.linkage
     measured = [n for _, n, _ in measured_entries(scene, extra_measured)]
     names = list(scene.find)
@@ -253,20 +272,51 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
         an.drawn = draw_characteristics(linkage, mu_l)
     except ValueError as e:
         raise SceneError([("characteristics", str(e))], an.scene.source) from None
+    except (ZeroDivisionError, OverflowError):
+        # a crank of 26 mm beside a frame of 1e300 mm: their squares leave double precision
+        crank = linkage.driver.length  # type: ignore[union-attr]
+        raise SceneError([("characteristics", f"the crank ({crank:.3g} m) is {crank / mechanism_size(linkage):.2g} "
+                           "of the mechanism's size: too small beside it to be constructed on one drawing")],
+                         an.scene.source) from None
     loop = an.drawn.loop
     n = loop.names
+    # A guide's point 2⁶⁴ mm from the crank draws a guide no page can hold (and hatching it never ends).
+    xs = [c for p in an.drawn.points.values() for c in p]
+    extent = max(xs) - min(xs)
+    if not extent <= DRAWN_SIZE_RANGE_MM[1]:
+        where = "dyad[0].guide.through" if loop.kind == "slider_crank" else "scales"
+        raise SceneError([(where, f"the extreme positions' drawing runs {extent:.3g} mm across at μl = {mu_l:g} m/mm: "
+                                  f"more than a page can show (at most {DRAWN_SIZE_RANGE_MM[1]:g} mm); "
+                                  "put the guide's point near the crank")], an.scene.source)
+    from graphmech.check import _offset_warning, offset_ratio
+    from graphmech.tolerances import EPS
+
+    size = mechanism_size(linkage)
+    far = _offset_warning(linkage, size)
+    ratio = offset_ratio(linkage, size)
+    if EPS * ratio > 0.1:  # not one digit of the mechanism is left to draw
+        raise SceneError([("frame", f"the mechanism lies {ratio:.2g} times its own size from the origin: its "
+                                    "coordinates keep no digit of its geometry; move the origin to a frame pivot")],
+                         an.scene.source)
+    if far:  # the characteristics' rows carry as few digits as the coordinates leave
+        an.warnings.append(far)
+        an.far = True
     A = complex(*linkage.frame_points[n["A"]])
-    if loop.kind == "fourbar":
-        D = complex(*linkage.frame_points[n["D"]])
-        y = linkage.dyads[0]
-        branch = y.branch if getattr(y, "q", None) == n["D"] else ("right" if y.branch == "left" else "left")  # type: ignore[union-attr]
-        an.exact = exact_ch.fourbar(A, D, loop.a, loop.b, loop.c, branch, loop.sense)
-    elif loop.kind == "slider_crank":
-        y = linkage.dyads[0]
-        an.exact = exact_ch.slider_crank(A, complex(*y.guide.through), y.guide.angle, loop.a, loop.b,  # type: ignore[union-attr]
+
+    def closed_form(a: float, b: float, c: float) -> exact_ch.ExactCharacteristics:
+        if loop.kind == "fourbar":
+            D = complex(*linkage.frame_points[n["D"]])
+            y = linkage.dyads[0]
+            branch = y.branch if getattr(y, "q", None) == n["D"] else ("right" if y.branch == "left" else "left")  # type: ignore[union-attr]
+            return exact_ch.fourbar(A, D, a, b, c, branch, loop.sense)
+        if loop.kind == "slider_crank":
+            y = linkage.dyads[0]
+            return exact_ch.slider_crank(A, complex(*y.guide.through), y.guide.angle, a, b,  # type: ignore[union-attr]
                                          y.branch, loop.sense)  # type: ignore[union-attr]
-    else:
-        an.exact = exact_ch.guide_bar(A, complex(*linkage.frame_points[n["C"]]), loop.a, loop.sense)
+        return exact_ch.guide_bar(A, complex(*linkage.frame_points[n["C"]]), a, loop.sense)
+
+    an.exact = closed_form(loop.a, loop.b, loop.c)
+    _characteristics_conditioning(an, closed_form)
     if loop.kind == "fourbar":
         L = [loop.a, loop.b, loop.c, abs(complex(*linkage.frame_points[n["D"]]) - A)]
         exact_class = exact_ch.fourbar_class(*L)
@@ -277,6 +327,53 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
                                "line, where the output's motion is undetermined")
     an.summary["characteristics"] = {"loop": loop.kind, "grashof": an.drawn.grashof,
                                      "grashof_exact": an.exact.grashof if loop.kind != "fourbar" else exact_class}
+
+
+#: The relative change of one length by which the characteristics' sensitivity to it is measured.
+_NUDGE = 1e-12
+
+
+def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
+    """Name the characteristics that the last bit of a length moves by more than 1e-9.
+
+    Each value's condition number κ = |Δv/v| / |Δl/l| is measured on the closed form with one
+    length (crank, coupler, rocker) nudged by 1e-12 of itself; a value with COND_SAFETY·κ·EPS
+    above 1e-9 (K of a guide bar with AB/AC = 1 − 1e-9: the extremes 0.005° from a dead point)
+    cannot be checked to 1e-9 by any method: its row is marked and one line says why.
+    """
+    from graphmech import tolerances as T
+
+    loop = an.drawn.loop  # type: ignore[union-attr]
+    base = {k: v[1] for k, v in _ch_values(an)[0].items()}
+    exact = an.exact
+    kappa = dict.fromkeys(base, 0.0)
+    lengths = [loop.a, loop.b, loop.c]
+    for k, length in enumerate(lengths):
+        if length == 0.0:
+            continue
+        for sign in (1.0, -1.0):
+            nudged = list(lengths)
+            nudged[k] = length * (1.0 + sign * _NUDGE)
+            try:
+                an.exact = closed_form(*nudged)
+                moved = _ch_values(an)[0]
+            except ValueError:  # a bit further and the crank no longer turns: as ill-conditioned as can be
+                moved = {}
+            finally:
+                an.exact = exact
+            for name, v in base.items():
+                w = moved[name][1] if name in moved and moved[name][1] is not None else math.inf
+                rel = abs(((w - v + 180.0) % 360.0 - 180.0) / 360.0 if CHARACTERISTICS.get(name, TIMING.get(name)) == "deg"
+                          else (w - v) / max(abs(v), 1e-300))
+                kappa[name] = max(kappa[name], rel / _NUDGE)
+    bad = {name: c for name, c in kappa.items() if T.COND_SAFETY * c * T.EPS > T.REL_AGREEMENT}
+    if bad:
+        an.ill = set(bad)
+        worst = max(bad, key=bad.get)  # type: ignore[arg-type]
+        names = ", ".join(f"{k} = {base[k]:.6g}" for k in bad)
+        an.warnings.append(f"ill-conditioned characteristics: {names}; the last bit of a link's length moves "
+                           f"{worst} by {bad[worst] * T.EPS:.1g} relative (condition number {bad[worst]:.2g}), so no "
+                           "method can give them to 1e-9")
 
 
 def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
@@ -347,10 +444,18 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
         h2 = mu_v * w / (mu_phi * spec.scales[ka]) if ka in spec.scales else H[1]
         poles[subj] = (h1, h2)
         for k, h, mu in ((1, h1, kv), (2, h2, ka)):  # a stated μv, μa far off the diagram's own puts P off the page
-            if mu in spec.scales and not 0.0 < h <= MAX_POLE_MM:
+            if mu in spec.scales and not MIN_POLE_MM <= h <= MAX_POLE_MM:
                 raise SceneError([("cycle.scales", f"μ{mu} of {subj}'s diagram puts its pole P{k} at H{k} = {h:.3g} mm "
-                                                   f"(at most {MAX_POLE_MM:g} mm): choose a larger μ{mu}")],
+                                                   f"({MIN_POLE_MM:g} … {MAX_POLE_MM:g} mm): choose "
+                                                   f"{'a larger' if h > MAX_POLE_MM else 'a smaller'} μ{mu}")],
                                  scene.source)
+        # what s–φ (ψ–φ) can reach: the mechanism's size, a few turns; a μs that draws it off any page
+        reach = 4.0 * mechanism_size(linkage) if subj not in links else 4.0 * math.pi
+        if not reach / mu_s[subj] <= DRAWN_SIZE_RANGE_MM[1]:
+            key = "psi" if subj in links else "s"
+            raise SceneError([("cycle.scales", f"μ{key} = {mu_s[subj]:g} draws the diagram of {subj} up to "
+                                               f"{reach / mu_s[subj]:.3g} mm high: more than a page can show "
+                                               f"(at most {DRAWN_SIZE_RANGE_MM[1]:g} mm)")], scene.source)
     paths = spec.paths if ("paths" in scene.show) else ()
     an.cycle = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
                               mu_s=mu_s, H_mm=poles, paths=paths)
@@ -580,8 +685,50 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
         g, e = float(drawn[i] * mu), float(exact[i])
         if unit == "deg":
             g, e = math.degrees(g), math.degrees(e)
-        out.append(_row(an, f"{base}@{labels[i]}", unit, g, e, float(drawn[i]), mu if unit != "deg" else math.degrees(mu)))
+        row = _row(an, f"{base}@{labels[i]}", unit, g, e, float(drawn[i]), mu if unit != "deg" else math.degrees(mu))
+        if what in ("v", "omega", "a", "alpha") or dg.kind == "path":  # chords: an error of order Δφ²
+            out.append(row.estimated(DISCRETISATION, _chord_estimate(an, dg, what, i, g), f"{n} positions"))
+        else:  # s or ψ read off the kinematic diagram at the position: a construction
+            out.append(row)
     return out
+
+
+def _diagram_at(an: CycleAnalysis, dg: CycleDiagram, m: int, mid: bool) -> CycleDiagram:
+    """The same diagram drawn by the same chords over m·N positions, placed so that every one of
+    the N positions (``mid``: every middle of the N intervals) is one of its own."""
+    key = (dg.subject, m, mid)
+    if key not in an.refined:
+        cyc = an.cycle
+        assert cyc is not None
+        step = 2.0 * math.pi / cyc.n
+        start = float(cyc.angles[0]) + (cyc.sense * (step / 2.0 - step / (2.0 * m)) if mid else 0.0)
+        fine = evaluate_cycle(an.scene.linkage, {"l": an.scales["l"], "v": 1.0, "a": 1.0},
+                              cycle_positions(start, m * cyc.n, cyc.sense), diagrams=[dg.subject],
+                              mu_phi=cyc.mu_phi, mu_s={dg.subject: dg.mu_s},
+                              H_mm=(dg.velocity.H_mm, dg.acceleration.H_mm))
+        an.refined[key] = fine.diagrams[0]
+    return an.refined[key]
+
+
+def _chord_estimate(an: CycleAnalysis, dg: CycleDiagram, what: str, i: int, g: float) -> float:
+    """The relative error of a value the chords give over N positions, as the chords themselves tell
+    it: the same value over 2N and 4N positions, extrapolated (Richardson, order 2: a chord's slope
+    is the curve's at its middle to Δφ²), against the one over N."""
+    mid = what in ("v", "omega")
+    vals = []
+    for m in (2, 4):
+        f = _diagram_at(an, dg, m, mid)
+        if what in ("s", "psi"):
+            vals.append(float(f.s_mm[m * i] * f.mu_s))
+        elif mid:
+            vals.append(float(f.velocity.derivative_mm[m * i] * f.mu_v))
+        else:
+            vals.append(float(f.a_mm[m * i] * f.mu_a))
+    v2, v4 = vals
+    limit = v4 + (v4 - v2) / 3.0
+    unit = {"s": "m", "v": "m/s", "a": "m/s²", "omega": "rad/s", "alpha": "rad/s²"}[what]
+    linkage = an.scene.linkage
+    return relative(abs(g - limit), max(abs(limit), characteristic(linkage, unit, mechanism_size(linkage))))
 
 
 def _range_names(ranges: list[tuple[str, float, float]], linkage: Linkage) -> dict[str, float]:
@@ -608,7 +755,7 @@ def _row(an: CycleAnalysis, name: str, unit: str, g: float, e: float, drawn: flo
         err = abs(g - e) / max(abs(e), 1e-300)
     else:
         err = abs(g - e) / max(abs(e), characteristic(an.scene.linkage, unit, mechanism_size(an.scene.linkage)))
-    return Row(name, unit, drawn, scale, g, e, err, False)
+    return Row(name, unit, drawn, scale, g, e, err, an.far or name in an.ill)
 
 
 def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Verdict]:

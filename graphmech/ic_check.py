@@ -473,6 +473,8 @@ def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
     linkage = an.build.linkage
     if not isinstance(linkage.driver, Crank):
         raise ValueError("crank angles with a vanishing velocity need a crank as the driver")
+    if linkage.driver.omega == 0.0:  # every angle would be a root: nothing to single out
+        raise ValueError(f"the crank stands still (ω = 0): v_{x} is zero at every crank angle")
     kind, lid, u = signed_rate(linkage, x)
     plan, build = an.plan, an.build
     mu = an.scales["l"]
@@ -506,6 +508,8 @@ def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
         else:
             assert u is not None
             values.append((ic.motions[lid].v0[0] * u[0] + ic.motions[lid].v0[1] * u[1]) * mu)
+    if not np.any(np.nan_to_num(values)):  # a point at rest (on the frame): no angles to single out
+        raise ValueError(f"v_{x} is zero at every crank angle: it has no crank angles of its own where it vanishes")
     graphical = _roots(grid, np.array(values), by_centres)
 
     kin = solve_exact(linkage, grid)

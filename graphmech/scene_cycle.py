@@ -32,7 +32,7 @@ START_CHOICES = ("driver", "extreme")
 #: The pole distances H₁, H₂ when the scene gives none, mm.
 DEFAULT_POLE_MM = 20.0
 #: The longest pole distance, mm (stated or fixed by a stated μv, μa): farther, the pole leaves any page.
-MAX_POLE_MM = POLE_RANGE_MM[1]
+MIN_POLE_MM, MAX_POLE_MM = POLE_RANGE_MM
 
 
 @dataclass(frozen=True)

@@ -238,7 +238,9 @@ def fourbar(A: complex, D: complex, a: float, b: float, c: float, branch: str,
     if kind not in ("crank_rocker_AB", "double_crank", "change_point") or not _turns(a, b, c, d):
         raise ValueError(f"the crank does not turn fully ({kind.replace('_', ' ')}): no extreme positions")
     side = 1.0 if branch == "left" else -1.0
-    u = (D - A) / d
+    # Coincident frame pivots (d = 0): B and C both turn about A, the triangle ABC is rigid and γ
+    # the same everywhere; the x axis stands in for the undefined frame line.
+    u = (D - A) / d if d > 0.0 else 1.0 + 0j
     gamma_min = _fourbar_gamma(a, b, c, d, u)
     if _turns(c, b, a, d):  # the output turns fully too: no extreme positions
         return ExactCharacteristics("fourbar", kind, None, None, None, None, None, *gamma_min)

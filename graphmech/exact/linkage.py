@@ -264,7 +264,10 @@ def _rpr(st: _State, y: RPR) -> None:
     st.fail(coincide, f"RPR {y.p}-{y.q}: {y.p} and {y.q} coincide, the bar's line is undefined")
     r = np.where(coincide, 1.0, r)
 
-    e = np.exp(1j * th)
+    # The bar's direction straight from the loop, not as e^{iθ} of a rounded θ: with the pin 2e-4 mm
+    # from the pivot, θ's last bit moves e's small component by 1e-5 of itself, and the Coriolis
+    # term 2·ṙ·ω, with ω ≈ 5e6 rad/s, with it.
+    e = np.where(coincide, 1.0, rel / r)
     k2 = 1j * r * e  # coefficient of ω (and α); that of ṙ (and r̈) is e^{iθ}
     rd, w = _cramer(e, k2, vx - vb, r)
     _, al = _cramer(e, k2, ax - ab - 2.0 * rd * w * 1j * e + w * w * r * e, r)

@@ -24,7 +24,7 @@ if TYPE_CHECKING:
     from graphmech.methods.polygons import LinkageConstruction
 
 PANEL = "acceleration"
-POLE = "a:p'"
+POLE = E.own(PANEL, "p'")
 
 
 def label(point: str) -> str:
@@ -55,14 +55,14 @@ def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
     """
     k = b.mu_l / b.scales["a"]
     tag = f"n{link}'"
-    while b.g.has(f"a:{tag}"):
+    while b.g.has(E.own(PANEL, tag)):
         tag += "'"
 
     def kern(ops: Any, start: tuple, x: tuple, y: tuple, om: tuple) -> tuple:
         w2 = (om[0] * om[1]) ** 2
         return (start[0] + w2 * k * (y[0] - x[0]), start[1] + w2 * k * (y[1] - x[1]))
 
-    n = b.g.add(f"a:{tag}", "point", kern, (b.acc[Y], b.mech[X], b.mech[Y], b.omega[link]),
+    n = b.g.add(E.own(PANEL, tag), "point", kern, (b.acc[Y], b.mech[X], b.mech[Y], b.omega[link]),
                 role="construction", panel=PANEL, label=tag,
                 text=f"lay off {_lbl(b, b.acc[Y])}{tag} = ω{link}²·l_{X}{Y}/μa ∥ {X}{Y}")
     E.vector(b, PANEL, b.acc[Y], n, "construction")
@@ -71,7 +71,7 @@ def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
 
 
 def _tangential_line(b: "LinkageConstruction", n: str, X: str, Y: str) -> str:
-    return E.line(b, PANEL, f"⟂{Y}{X}@{_lbl(b, n)}",
+    return E.line(b, PANEL, f"⟂{Y}·{X}@{_lbl(b, n)}",
                  K.line_perpendicular_to, (n, E.direction(b, Y, X)), f"through {_lbl(b, n)} draw ⟂ {Y}{X} (a^t_{X}{Y})")
 
 
@@ -162,13 +162,13 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
         return (start[0] - kk * w * ry, start[1] + kk * w * rx)
 
     ktag = "k'"
-    while b.g.has(f"a:{ktag}"):
+    while b.g.has(E.own(PANEL, ktag)):
         ktag += "'"
-    k = b.g.add(f"a:{ktag}", "point", coriolis, (b.acc[X], b.vel[xbar], b.vel[xblock], b.omega[bar]),
+    k = b.g.add(E.own(PANEL, ktag), "point", coriolis, (b.acc[X], b.vel[xbar], b.vel[xblock], b.omega[bar]),
                 role="construction", panel=PANEL, label=ktag,
                 text=f"lay off {_lbl(b, b.acc[X])}{ktag} = 2ω{bar}·v_{xbar}{xblock}/μa (Coriolis)")
     E.vector(b, PANEL, b.acc[X], k, "construction")
-    lr = E.line(b, PANEL, f"∥{Bp}{X}@{ktag}", K.line_parallel_to, (k, E.direction(b, Bp, X)), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})")
+    lr = E.line(b, PANEL, f"∥{Bp}·{X}@{ktag}", K.line_parallel_to, (k, E.direction(b, Bp, X)), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})")
     img = E.image(b, PANEL, b.acc, xbar, label(xbar), K.intersect_lines, (lt, lr),
                  f"{label(xbar)} = (⟂{Bp}{X} through {_lbl(b, n)}) ∩ (∥{Bp}{X} through {ktag})")
     b.g.extend_line(lt, img)
@@ -189,7 +189,7 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     sx, sy = math.cos(y.slot_angle), math.sin(y.slot_angle)
     lg = E.line(b, PANEL, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p′ draw ∥ the guide of {C}")
-    ls = E.line(b, PANEL, f"∥slot@{_lbl(b, b.acc[P])}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.acc[P],),
+    ls = E.line(b, PANEL, f"∥slot{C}@{_lbl(b, b.acc[P])}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.acc[P],),
                f"through {_lbl(b, b.acc[P])} draw ∥ the slot")
     img = E.image(b, PANEL, b.acc, C, label(C), K.intersect_lines, (lg, ls),
                  f"{label(C)} = (∥ guide through p′) ∩ (∥ slot through {_lbl(b, b.acc[P])})")

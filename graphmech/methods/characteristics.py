@@ -334,8 +334,11 @@ def _fourbar_gamma_drawn(A: _XY, D: _XY, a: float, b: float, c: float, ops: Scal
                          on_branch: Callable[[_XY, _XY], bool]) -> tuple[float, _XY, _XY]:
     """γ where the crank lies along the frame line, towards D and away from it: the smaller."""
     best = None
+    # Frame pivots that coincide leave the frame line undefined, but the triangle ABC is then
+    # rigid (B and C both turn about A): γ is the same everywhere, so any line will do.
+    towards = D if D != A else (A[0] + 1.0, A[1])
     for t in (a, -a):
-        B = _along(A, D, t)
+        B = _along(A, towards, t)
         for s in (1.0, -1.0):
             C = intersect_circles(ops, B, b, D, c, s, lambda dd: "the crank does not turn fully")
             if on_branch(B, C):

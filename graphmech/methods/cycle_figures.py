@@ -351,7 +351,9 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
         d1 = (C1[0] + off * nrm[0], C1[1] + off * nrm[1])
         d2 = (C2[0] + off * nrm[0], C2[1] + off * nrm[1])
         mid = ((d1[0] + d2[0]) / 2.0, (d1[1] + d2[1]) / 2.0)
-        items += [Segment(C1, d1, "label"), Segment(C2, d2, "label"), Arrow(mid, d1, "label"), Arrow(mid, d2, "label")]
+        items += [Segment(C1, d1, "label"), Segment(C2, d2, "label")]
+        if math.dist(d1, d2) > 1e-6:  # a stroke too short to draw (a crank of 1e-300 mm) gets no arrows
+            items += [Arrow(mid, d1, "label"), Arrow(mid, d2, "label")]
         labels.append(Label("H", mid, (g, (-g[0], -g[1])), 3.2))
         across = (-g[1], g[0])
         normal = across if (Bg[0] - Cg[0]) * across[0] + (Bg[1] - Cg[1]) * across[1] > 0 else (-across[0], -across[1])

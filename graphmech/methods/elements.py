@@ -1,7 +1,11 @@
 """Drawn elements shared by the polygons: vectors, plain segments and construction lines.
 
 Step names carry the figure's initial (``v:`` velocity, ``a:`` acceleration) so one
-construction holds both polygons without clashes.
+construction holds both polygons without clashes. Within a figure the images of the user's
+points are named by their letters (``v:c`` for C), and the construction's own points (the pole
+p, the normal-component point n₂′, the Coriolis point k′) by :func:`own`, in brackets that no
+point name can produce: a point named P, N2 or K has an image ``v:p``, ``a:n2'``, ``a:k'`` that
+never meets them. Lines name their points with a separator (``⟂B·CD``), so B + CD ≠ BC + D.
 """
 from __future__ import annotations
 
@@ -26,6 +30,11 @@ def image(b: "LinkageConstruction", panel: str, images: dict[str, str], point: s
     images[point] = b.g.add(f"{panel[0]}:{lab}", "point", kernel, inputs, role="result", text=text,
                             panel=panel, label=lab)
     return images[point]
+
+
+def own(panel: str, tag: str) -> str:
+    """The step name of a point the construction adds itself (pole, n′, k′): apart from images."""
+    return f"{panel[0]}:({tag})"
 
 
 def line(b: "LinkageConstruction", panel: str, name: str, kernel: Any, inputs: tuple, text: str) -> str:

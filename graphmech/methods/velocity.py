@@ -21,7 +21,7 @@ if TYPE_CHECKING:
     from graphmech.methods.polygons import LinkageConstruction
 
 PANEL = "velocity"
-POLE = "v:p"
+POLE = E.own(PANEL, "p")
 
 
 def label(point: str) -> str:
@@ -69,8 +69,8 @@ def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
 def _rrr(b: "LinkageConstruction", y: RRR) -> None:
     P, C, Q = y.p, y.c, y.q
     lp, lq, lc = _img_label(b, P), _img_label(b, Q), label(C)
-    li = E.line(b, PANEL, f"⟂{P}{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}")
-    lj = E.line(b, PANEL, f"⟂{Q}{C}@{lq}", K.line_perpendicular_to, (b.vel[Q], E.direction(b, Q, C)), f"through {lq} draw ⟂ {Q}{C}")
+    li = E.line(b, PANEL, f"⟂{P}·{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}")
+    lj = E.line(b, PANEL, f"⟂{Q}·{C}@{lq}", K.line_perpendicular_to, (b.vel[Q], E.direction(b, Q, C)), f"through {lq} draw ⟂ {Q}{C}")
     img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, (li, lj),
                  f"{lc} = (⟂{P}{C} through {lp}) ∩ (⟂{Q}{C} through {lq})")
     b.g.extend_line(li, img)
@@ -86,7 +86,7 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     P, C = y.p, y.c
     gx, gy = y.guide.direction
     lp, lc = _img_label(b, P), label(C)
-    li = E.line(b, PANEL, f"⟂{P}{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}")
+    li = E.line(b, PANEL, f"⟂{P}·{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}")
     lg = E.line(b, PANEL, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p draw ∥ the guide of {C}")
     img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, (li, lg),
@@ -105,8 +105,8 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     xbar, xblock = y.coincident
     b.vel[xblock] = b.vel[X]
     lp, lx, lc = _img_label(b, Bp), _img_label(b, X), label(xbar)
-    lt = E.line(b, PANEL, f"⟂{Bp}{X}@{lp}", K.line_perpendicular_to, (b.vel[Bp], E.direction(b, Bp, X)), f"through {lp} draw ⟂ {Bp}{X}")
-    lr = E.line(b, PANEL, f"∥{Bp}{X}@{lx}", K.line_parallel_to, (b.vel[X], E.direction(b, Bp, X)), f"through {lx} draw ∥ {Bp}{X}")
+    lt = E.line(b, PANEL, f"⟂{Bp}·{X}@{lp}", K.line_perpendicular_to, (b.vel[Bp], E.direction(b, Bp, X)), f"through {lp} draw ⟂ {Bp}{X}")
+    lr = E.line(b, PANEL, f"∥{Bp}·{X}@{lx}", K.line_parallel_to, (b.vel[X], E.direction(b, Bp, X)), f"through {lx} draw ∥ {Bp}{X}")
     img = E.image(b, PANEL, b.vel, xbar, label(xbar), K.intersect_lines, (lt, lr),
                  f"{lc} = (⟂{Bp}{X} through {lp}) ∩ (∥{Bp}{X} through {lx})")
     b.g.extend_line(lt, img)
@@ -127,7 +127,7 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     lp, lc = _img_label(b, P), label(C)
     lg = E.line(b, PANEL, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
                f"through p draw ∥ the guide of {C}")
-    ls = E.line(b, PANEL, f"∥slot@{lp}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.vel[P],),
+    ls = E.line(b, PANEL, f"∥slot{C}@{lp}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.vel[P],),
                f"through {lp} draw ∥ the slot")
     img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, (lg, ls),
                  f"{lc} = (∥ guide through p) ∩ (∥ slot through {lp})")
