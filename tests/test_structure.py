@@ -264,12 +264,16 @@ def test_every_structure_sheet_fits_its_page(name):
 
 
 def test_a_stated_scale_that_cannot_draw_the_pairs_is_refused(tmp_path):
-    """μl = 1e-300 m/mm drew the parallelogram 1e299 mm across: render exit 3."""
+    """μl = 1e-300 m/mm drew the parallelogram 1e299 mm across: render exit 3. Now refused where
+    every scale is read; within that range the structure sheet bounds the drawing itself."""
     text = (SCENES / "structure.parallelogram_redundant.toml").read_text(encoding="utf-8")
     p = tmp_path / "tiny.toml"
     p.write_text(text.replace('[units]', '[scales]\nl_m_per_mm = 1e-300\n\n[units]'), encoding="utf-8")
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
-    assert code == 2 and err.startswith("tiny.toml: scales: μl = 1e-300 m/mm draws the mechanism 1.3e+299 mm"), err
+    assert code == 2 and err.startswith("tiny.toml: scales.l_m_per_mm: 1e-300: under 1e-15 SI units per mm"), err
+    p.write_text(text.replace('[units]', '[scales]\nl_m_per_mm = 1e-12\n\n[units]'), encoding="utf-8")
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and err.startswith("tiny.toml: scales: μl = 1e-12 m/mm draws the mechanism 1.3e+11 mm"), err
     assert not (tmp_path / "x.svg").exists()
 
 
