@@ -21,9 +21,10 @@ from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
 from graphmech.render.style import subscript
-from graphmech.scales import PAPER, format_scale, round_scale
+from graphmech.scales import PAPER, drawn_size_problem, format_scale, round_scale
 
 SCALE_KEYS = {"mechanism": "l", "velocity": "v", "acceleration": "a"}
+_PANEL_WORDS = {"mechanism": "the mechanism", "velocity": "the velocity polygon", "acceleration": "the acceleration polygon"}
 
 #: The smallest drawing a panel may get, mm; a sheet whose positions leave less is refused.
 MIN_PANEL_MM = 25.0
@@ -185,8 +186,6 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
     """
     stated = {k for k in ("l", "v", "a") if k in scene.scales}
     scales = {k: float(scene.scales[k]) for k in ("l", "v", "a") if k in stated}
-    if len(stated) == 3:
-        return scales, stated
     provisional = {k: scales.get(k, 1.0) for k in ("l", "v", "a")}
     b = build_polygons(linkage, provisional)
     steps = [s for s in b.g.steps.values() if s.kind == "point"]
@@ -200,8 +199,6 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
     room_w = (w - 20.0 - 12.0 * (len(shown) - 1)) / len(shown) - 12.0
     room_h = max((h - 38.0) / rows - 35.0, MIN_PANEL_MM)
     for panel, key in SCALE_KEYS.items():
-        if key in stated:
-            continue
         xs, ys = [], []
         for s in steps:
             if s.panel != panel:
@@ -215,6 +212,12 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
         xa, ya = np.concatenate(xs), np.concatenate(ys)
         ext_x = (xa.max() - xa.min()) * provisional[key]
         ext_y = (ya.max() - ya.min()) * provisional[key]
+        if key in stated:  # drawn as stated, if a page can hold it legibly (a polygon of 0 is a point)
+            size = max(ext_x, ext_y)
+            why = size > 0 and drawn_size_problem(size, scales[key], key, _PANEL_WORDS[panel])
+            if why:
+                raise SceneError([("scales", why)], scene.source)
+            continue
         need = max(ext_x / room_w, ext_y / room_h)
         scales[key] = round_scale(need) if need > 0 else 1.0
     return {k: scales[k] for k in ("l", "v", "a")}, stated

@@ -62,22 +62,27 @@ def format_scale(symbol: str, value: float) -> str:
         value = math.degrees(value)
     return f"{sym} = {value:.6g} {unit}"
 
-#: A mechanism drawn at a stated μl must come out between these sizes on the paper, mm (beyond,
-#: the drawing's numbers leave double precision: 1e-300 m/mm drew kilometres of 1e298).
-DRAWN_SIZE_RANGE_MM = (0.1, 1e6)
+#: A figure drawn at a stated μ must come out between these sizes on the paper, mm: under 0.1 mm
+#: it is a dot; over 10 m of paper (eight A0 sheets) no page shows it and its dashes and hatching
+#: take minutes to draw (1e-300 m/mm drew kilometres of 1e298).
+DRAWN_SIZE_RANGE_MM = (0.1, 1e4)
 
 
-def drawn_size_problem(size_m: float, mu_l: float) -> str | None:
-    """Why a mechanism ``size_m`` across (m) cannot be drawn at ``mu_l`` (m/mm); None if it can.
+def drawn_size_problem(size: float, mu: float, symbol: str = "l", what: str = "the mechanism") -> str | None:
+    """Why a figure ``size`` across (SI units of ``symbol``'s scale) cannot be drawn at ``mu``
+    (SI per mm); None if it can.
 
     >>> drawn_size_problem(0.1, 0.001) is None, drawn_size_problem(0.1, 1e-300)[:38]
     (True, 'μl = 1e-300 m/mm draws the mechanism 1')
+    >>> drawn_size_problem(4.0, 1e-9, "v", "the velocity polygon")[:52]
+    'μv = 1e-09 (m/s)/mm draws the velocity polygon 4e+09'
     """
     lo, hi = DRAWN_SIZE_RANGE_MM
-    drawn = size_m / mu_l
+    drawn = size / mu
     if lo <= drawn <= hi:
         return None
-    return (f"μl = {mu_l:g} m/mm draws the mechanism {drawn:.3g} mm across: choose μl so that it is "
+    sym, unit = SCALE_INFO[symbol]
+    return (f"{sym} = {mu:g} {unit} draws {what} {drawn:.3g} mm across: choose {sym} so that it is "
             f"{lo:g} … {hi:g} mm")
 
 

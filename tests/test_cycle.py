@@ -471,16 +471,21 @@ def test_a_deltoid_asked_for_its_characteristics_is_one_line(tmp_path):
 
 
 def test_characteristics_of_a_hundred_metre_drawing_stay_small(tmp_path):
-    """Lengths ×1e3 at the stated μl = 0.5 mm/mm: the arcs of radius BC ∓ AB are ~1e5 mm long and
+    """Lengths ×50 at the stated μl = 0.5 mm/mm: the arcs of radius BC ∓ AB are metres long and
     drawn with a bounded number of chords (×1e12 took 2e13 points and exhausted memory; such a
-    drawing, 1.4e14 mm across, is now refused by the bound on the drawn size)."""
+    drawing, 1.4e14 mm across, is refused by the bound on the drawn size, as ×1e3 is: 10 m of paper)."""
     from graphmech.render.primitives import ARC_MOST, Polyline
 
     text = (SCENES / "linkage.fourbar_28_52_50_72.toml").read_text(encoding="utf-8").split("[measured]")[0]
+    big = text
     for a, b in (("length = 28", "length = 28e3"), ("lengths = [52, 50]", "lengths = [52e3, 50e3]"),
                  ("D = [72, 0]", "D = [72e3, 0]")):
-        text = text.replace(a, b)
+        text, big = text.replace(a, b.replace("e3", "*50")), big.replace(a, b)
+    text = re.sub(r"(\d+)\*50", lambda m: str(int(m.group(1)) * 50), text)
     p = tmp_path / "huge.toml"
+    p.write_text(big, encoding="utf-8")
+    assert_refused(run_cli("render", str(p), "-o", str(tmp_path / "huge.svg")), "huge.toml",
+                   "draws the mechanism 1.44e+05 mm across")
     p.write_text(text, encoding="utf-8")
     from graphmech.methods.characteristics import draw_characteristics
     from graphmech.methods.cycle_figures import characteristics_items

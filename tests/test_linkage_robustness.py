@@ -277,3 +277,23 @@ def test_a_stroke_too_short_to_draw(tmp_path):
     scene.write_text(CHARACTERISTICS.replace("length = 100\n", "length = 1e-300\n", 1))
     code, _, err = run_cli("render", str(scene), "-o", str(tmp_path / "t.svg"))
     assert code == 0 and "internal" not in err, err
+
+
+@pytest.mark.parametrize("scene_id, key, value, words", [
+    ("linkage.slider_crank_offset", "l_m_per_mm", "1e-9", "draws the mechanism"),
+    ("ic.slider_crank", "l_m_per_mm", "1e-9", "draws the mechanism"),
+    ("kin.oscillating_block", "v_m_s_per_mm", "1e-9", "draws the velocity polygon"),
+    ("kin.oscillating_block", "a_m_s2_per_mm", "1e6", "draws the acceleration polygon"),
+])
+def test_a_stated_scale_whose_figure_no_page_holds_is_refused(tmp_path, scene_id, key, value, words):
+    """Found by the fuzz campaign: μl = 1e-9 m/mm drew a 4e8 mm polygon sheet or instant-centre
+    sheet and render ran past 20 s; a polygon of 1e-7 mm was drawn as a dot without a word."""
+    text = (SCENES / f"{scene_id}.toml").read_text(encoding="utf-8")
+    if "[scales]" not in text:
+        text = text.replace("[units]", "[scales]\n\n[units]", 1)
+    text = re.sub(rf"^{key} = .*\n", "", text, flags=re.M).replace("[scales]\n", f"[scales]\n{key} = {value}\n", 1)
+    p = tmp_path / "s.toml"
+    p.write_text(text, encoding="utf-8")
+    for argv in (("check", str(p), "--json"), ("render", str(p), "-o", str(tmp_path / "s.svg"))):
+        assert_refused(run_cli(*argv), "s.toml", "scales: ", words, "0.1 … 10000 mm")
+    assert not (tmp_path / "s.svg").exists()
