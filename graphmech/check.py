@@ -207,7 +207,7 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
             xs.append(np.broadcast_to(x, sol.valid.shape)[sol.valid])
             ys.append(np.broadcast_to(y, sol.valid.shape)[sol.valid])
         if not xs or not any(a.size for a in xs):
-            scales[key] = 1.0
+            scales.setdefault(key, 1.0)  # nothing drawn at this μ: a stated one stays as stated
             continue
         xa, ya = np.concatenate(xs), np.concatenate(ys)
         ext_x = (xa.max() - xa.min()) * provisional[key]
