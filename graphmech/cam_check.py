@@ -129,9 +129,12 @@ def _legible(scene: Any, cam: DiscCam, stated: dict[str, float], across: float) 
                                          f"{lo:g} … {hi:g} mm")], scene.source)
 
 
-def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> CamAnalysis:
+def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), *,
+                estimates: bool = True) -> CamAnalysis:
     """The inversion at the scene's divisions, its readings, and the check table
-    (``extra_measured``: hand readings from the command line, which may need the profile)."""
+    (``extra_measured``: hand readings from the command line, which may need the profile; each
+    reading's own error estimate redraws at 2, 4 and 8 times the divisions: only a check needs it)."""
+    estimated = _estimated if estimates else (lambda an, row: row)
     cs = scene.cam
     cam: DiscCam = cs.cam
     names = _requested(scene)
@@ -155,7 +158,7 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) 
                 else "soft impact: the acceleration jumps by a finite amount")
         an.warnings.append(f"δ = {math.degrees(i.angle):.6g}°: {what}")
     if drawn is None:
-        an.rows = [_estimated(an, _row(an, name)) for name in names]
+        an.rows = [estimated(an, _row(an, name)) for name in names]
         return an
     an.warnings += exact_cam.undercut(cam)
     reading = read_drawing(cam, drawn)
@@ -172,7 +175,7 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) 
     an.rows = []
     for name in names:
         try:
-            an.rows.append(_estimated(an, _row(an, name)))
+            an.rows.append(estimated(an, _row(an, name)))
         except ArithmeticError as e:  # e.g. the exact working profile folds over itself (undercut)
             an.warnings.append(f"{name}: not measured — {e}")
         except SceneError:

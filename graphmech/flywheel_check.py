@@ -176,16 +176,18 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
     return names
 
 
-def analyse_flywheel(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> FlywheelAnalysis:
-    """Carry out what the flywheel scene asks for and build its check table."""
+def analyse_flywheel(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), *,
+                     estimates: bool = True) -> FlywheelAnalysis:
+    """Carry out what the flywheel scene asks for and build its check table (with each row's own
+    error estimate, which redoes the work at 2N and 4N positions: only a check needs it)."""
     try:
         with np.errstate(all="ignore"):
-            return _analyse(scene, extra_measured)
+            return _analyse(scene, extra_measured, estimates)
     except (OverflowError, ZeroDivisionError, FloatingPointError) as e:
         raise DegenerateConstruction("the flywheel construction", f"numbers out of range ({e})") from None
 
 
-def _analyse(scene: Any, extra: tuple[tuple[str, float], ...]) -> FlywheelAnalysis:
+def _analyse(scene: Any, extra: tuple[tuple[str, float], ...], estimates: bool) -> FlywheelAnalysis:
     fw = scene.flywheel
     machine: Machine = fw.machine
     names = requested(scene, extra)
@@ -206,7 +208,8 @@ def _analyse(scene: Any, extra: tuple[tuple[str, float], ...]) -> FlywheelAnalys
         _motion(an)
     for name in names:
         an.rows.append(_row(an, name))
-    _estimate(an, needs)
+    if estimates:
+        _estimate(an, needs)
     return an
 
 

@@ -55,8 +55,8 @@ def with_precision(scene: Any, precision_mm: float | None) -> Any:
 def _function(module: str, name: str) -> Callable[..., Any]:
     """``module.name``, imported when first called: a check never imports another kind's code."""
 
-    def call(*args: Any) -> Any:
-        return getattr(importlib.import_module(module), name)(*args)
+    def call(*args: Any, **kwargs: Any) -> Any:
+        return getattr(importlib.import_module(module), name)(*args, **kwargs)
 
     return call
 
@@ -149,7 +149,7 @@ def _cycle_sheet(scene: Any, footer: Footer) -> tuple[Any, list[str]]:
 def _cam_sheet(scene: Any, footer: Footer) -> tuple[Any, list[str]]:
     from graphmech.methods.cam_figures import cam_sheet
 
-    an = _analyse_cam(scene, ())
+    an = _analyse_cam(scene, (), estimates=False)  # a drawing needs no error estimates
     sheet = cam_sheet(scene.title, an.cam, an.drawn, an.scales, list(scene.show), _page(scene),
                       roller_circles=scene.cam.roller_circles, marks=an.marks, footer=footer)
     return sheet, list(an.warnings)
@@ -166,7 +166,7 @@ def _flywheel_sheet(scene: Any, footer: Footer) -> tuple[Any, list[str]]:
     from graphmech.methods.flywheel_figures import flywheel_sheet
     from graphmech.render.primitives import Sheet
 
-    an = _analyse_flywheel(scene, ())
+    an = _analyse_flywheel(scene, (), estimates=False)  # a drawing needs no error estimates
     cycle_panels = [p for p in scene.show if p not in ("mechanism", "rundown")]
     if an.design is None and not any(p in scene.show for p in ("mechanism", "rundown")):
         raise SceneError([("show", "nothing to draw: this flywheel scene asks for no diagram; "

@@ -51,3 +51,20 @@ def test_the_reference_scenes_have_discretised_rows_to_judge():
             for q in check_json(path)["quantities"]:
                 sources.setdefault(path.stem.split(".")[0], set()).add(q["error_source"])
     assert all(len(s - {CONSTRUCTION}) >= 1 for s in sources.values()), sources
+
+
+def test_a_drawing_does_not_pay_for_the_error_estimates(monkeypatch, tmp_path):
+    """The estimates redo the work at 2N, 4N (8N) positions or divisions: only `check` asks for them."""
+    from graphmech import cam_check, flywheel_check
+    from tests.conftest import run_cli
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("an error estimate was computed for a drawing")
+
+    monkeypatch.setattr(flywheel_check, "_estimate", refuse)
+    monkeypatch.setattr(cam_check, "_estimated", refuse)
+    for scene in ("fly.compressor_course_project", "cam.offset_roller_translating-pos"):
+        code, _, err = run_cli("render", str(SCENES / f"{scene}.toml"), "-o", str(tmp_path / "x.svg"))
+        assert code == 0, err
+        code, _, err = run_cli("check", str(SCENES / f"{scene}.toml"))
+        assert code == 3 and "an error estimate was computed" in err  # check does compute them
