@@ -219,6 +219,8 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
                 raise SceneError([("scales", why)], scene.source)
             continue
         need = max(ext_x / room_w, ext_y / room_h)
+        if not math.isfinite(need):  # a link of 1e300 m: the figure's extent overflows
+            raise DegenerateConstruction("the construction", OUT_OF_RANGE)
         scales[key] = round_scale(need) if need > 0 else 1.0
     return {k: scales[k] for k in ("l", "v", "a")}, stated
 
@@ -241,6 +243,7 @@ def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> A
 
 def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
     linkage: Linkage = scene.linkage
+    refuse_far_from_origin(scene, linkage, mechanism_size(linkage))
     positions = np.asarray(scene.positions.values, dtype=float)
     labels = tuple(scene.positions.labels) or tuple(f"{v:g}" for v in positions)
     scales, stated = choose_scales(scene, linkage, positions)
@@ -334,6 +337,17 @@ def offset_ratio(linkage: Linkage, size: float) -> float:
     coords += [abs(c) for g in [getattr(d, "guide", None)] + [getattr(y, "guide", None) for y in linkage.dyads]
                if g is not None for c in g.through]
     return max(coords + [0.0]) / size
+
+
+def refuse_far_from_origin(scene: Any, linkage: Linkage, size: float) -> None:
+    """Refuse a mechanism so far from the origin that its coordinates keep no digit of its
+    geometry (a guide through x = 1e300 m): nothing can be drawn or solved there (the friction
+    iteration of a force scene ran for minutes on it)."""
+    ratio = offset_ratio(linkage, size)
+    if T.EPS * ratio > 0.1:
+        raise SceneError([("frame", f"the mechanism lies {ratio:.2g} times its own size from the origin: its "
+                                    "coordinates keep no digit of its geometry; move the origin to a frame pivot")],
+                         scene.source)
 
 
 def _offset_warning(linkage: Linkage, size: float) -> str:

@@ -83,7 +83,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         return 130
     except Exception as e:  # a bug of ours: still one line, never a traceback
-        say(f"graphmech: internal error ({type(e).__name__}: {e}); please report it with the scene")
+        say(f"{_file_name(args) or 'graphmech'}: internal error ({type(e).__name__}: {e}); please report it with the scene")
         return EXIT_INTERNAL
 
 

@@ -288,16 +288,11 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
         raise SceneError([(where, f"the extreme positions' drawing runs {extent:.3g} mm across at μl = {mu_l:g} m/mm: "
                                   f"more than a page can show (at most {DRAWN_SIZE_RANGE_MM[1]:g} mm); "
                                   "put the guide's point near the crank")], an.scene.source)
-    from graphmech.check import _offset_warning, offset_ratio
-    from graphmech.tolerances import EPS
+    from graphmech.check import _offset_warning, refuse_far_from_origin
 
     size = mechanism_size(linkage)
+    refuse_far_from_origin(an.scene, linkage, size)
     far = _offset_warning(linkage, size)
-    ratio = offset_ratio(linkage, size)
-    if EPS * ratio > 0.1:  # not one digit of the mechanism is left to draw
-        raise SceneError([("frame", f"the mechanism lies {ratio:.2g} times its own size from the origin: its "
-                                    "coordinates keep no digit of its geometry; move the origin to a frame pivot")],
-                         an.scene.source)
     if far:  # the characteristics' rows carry as few digits as the coordinates leave
         an.warnings.append(far)
         an.far = True

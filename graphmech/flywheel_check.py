@@ -245,6 +245,10 @@ def _reduce(an: FlywheelAnalysis) -> None:
         where = ", ".join(f"{i + 1} (φ = {math.degrees(an.phi[i]):.6g}°)" for i in at[:6]) + (" …" if len(at) > 6 else "")
         an.warnings.append(f"flywheel.load[{k}]: a step of its table falls on position{'s' if len(at) > 1 else ''} "
                            f"{where}: Mп there is the mean of both sides of the step")
+    if not (np.isfinite(an.reduction.J).all() and np.isfinite(an.reduction.M).all()):  # ω1 of 1e-300 rad/s
+        from graphmech.check import OUT_OF_RANGE
+
+        raise DegenerateConstruction("the reduction to the crank", OUT_OF_RANGE)
     bad = np.flatnonzero(~an.reduction.valid)
     if bad.size:
         k = int(bad[0])

@@ -61,9 +61,17 @@ def _function(module: str, name: str) -> Callable[..., Any]:
     return call
 
 
-def _analysing(module: str, name: str) -> Callable[[Any, Extra], Any]:
-    """A check module's ``analyse_…(scene, extra)``."""
-    return _function(module, name)
+def _analysing(module: str, name: str) -> Callable[..., Any]:
+    """A check module's ``analyse_…(scene, extra)``; whatever it finds is finite or refused in words
+    (for the table, the JSON and the drawing alike)."""
+    analyse = _function(module, name)
+
+    def call(*args: Any, **kwargs: Any) -> Any:
+        an = analyse(*args, **kwargs)
+        _refuse_non_finite(an.rows)
+        return an
+
+    return call
 
 
 def _judging(module: str, name: str) -> Callable[[Any, Extra], list[Any]]:
@@ -287,6 +295,19 @@ def check(scene: Any, extra: Extra = ()) -> tuple[Any, list[Any], dict[str, Any]
     kind = kind_of(scene)
     an = kind.analyse(scene, tuple(extra))
     return an, kind.judge(an, tuple(extra)), kind.extras(an), kind.lines(an)
+
+
+def _refuse_non_finite(rows: list[Any]) -> None:
+    """A value that left double precision (J_F for δ = 5e-324) is refused in words, whatever the
+    kind: never an inf or NaN in the table or the JSON."""
+    import math
+
+    from graphmech.check import OUT_OF_RANGE
+    from graphmech.errors import DegenerateConstruction
+
+    for r in rows:
+        if not all(math.isfinite(v) for v in (r.graphical, r.exact)):
+            raise DegenerateConstruction(r.name, OUT_OF_RANGE)
 
 
 def sheet(scene: Any, footer: Footer = ()) -> tuple[Any, list[str]]:

@@ -82,6 +82,8 @@ def drawn_size_problem(size: float, mu: float, symbol: str = "l", what: str = "t
     if lo <= drawn <= hi:
         return None
     sym, unit = SCALE_INFO[symbol]
+    if not math.isfinite(drawn):
+        return f"{what} is too large for double precision (the scene's sizes are too extreme) at {sym} = {mu:g} {unit}"
     return (f"{sym} = {mu:g} {unit} draws {what} {drawn:.3g} mm across: choose {sym} so that it is "
             f"{lo:g} … {hi:g} mm")
 

@@ -1664,6 +1664,9 @@ def _lost_in_round_off(r0: _Value, f: Follower, stroke: float) -> list[tuple[str
             f"pivot_distance a = {r0.text(size)}"
         return [(r0.path, f"r0 = {r0.text()} is lost in round-off beside {what}: the profile cannot be "
                           f"drawn (r0 ≥ {CAM_R0_MIN_REL:g} × that)")]
+    if isinstance(f, TranslatingFollower) and stroke < CAM_R0_MIN_REL * r0.si:  # the other way round
+        return [(r0.path, f"r0 = {r0.text()} leaves the stroke h = {r0.text(stroke)} in round-off: the profile "
+                          f"is a circle to double precision (r0 ≤ h / {CAM_R0_MIN_REL:g})")]
     if isinstance(f, OscillatingFollower) and f.contact != "flat":
         a, l = f.pivot_distance, f.arm
         if not -1.0 < (a * a + l * l - r0.si * r0.si) / (2.0 * a * l) < 1.0:  # cos of ψ0, as the inversion finds it

@@ -136,6 +136,10 @@ def _count_text(value: Any) -> str:
 # --------------------------------------------------------------------------------------------
 
 
+#: The largest magnitude of a table's value in SI (N, Pa, N·m, rad): far beyond any machine.
+MAX_TABLE_SI = 1e15
+
+
 def _series(r: _Reader, base: str, kind: str) -> _Series | None:
     """A list of at least two numbers with a unit (``phi_deg = [0, 180, 360]``), in SI."""
     given = r.quantity(base, kind)
@@ -149,7 +153,13 @@ def _series(r: _Reader, base: str, kind: str) -> _Series | None:
         unit = r.units.get(kind) or ""
     else:
         unit = _SUFFIXES[kind][given.key[len(base) + 1 :]]
-    return _Series([given.si(x) for x in written], path, unit, given.num, given.den)
+    si = [given.si(x) for x in written]
+    for i, x in enumerate(si):
+        if not abs(x) <= MAX_TABLE_SI:  # a load of 1e300 Pa: its diagram's arrows collapse in round-off
+            r.problem(f"{path}[{i}]", f"{written[i]:g} is beyond {MAX_TABLE_SI:g} in SI units: no machine of "
+                                      "the book, and no diagram can be drawn of it")
+            return None
+    return _Series(si, path, unit, given.num, given.den)
 
 
 def _number_list(r: _Reader, value: Any, path: str) -> list[float] | None:
@@ -327,7 +337,7 @@ def _read_cycle(fw: _Reader) -> float | None:
     v = fw.value("cycle", "angle", required=False, positive=True)
     if v is None:
         return TWO_PI if fw.present("cycle") is None else None
-    k = TWO_PI / v.si
+    k = TWO_PI / v.si if v.si > 0.0 else math.inf  # 5e-324° is 0 rad once converted
     if not (math.isfinite(k) and 0.5 <= k <= MAX_POSITIONS) or abs(k - round(k)) > 1e-9 * k:
         fw.problem(
             v.path,

@@ -48,12 +48,16 @@ class StructureScene:
     cases: tuple[Case, ...] = ()
 
 
+#: The largest count a structure scene takes (links, pairs): a mechanism of the book has a dozen.
+MAX_COUNT = 10_000
+
+
 def _count(r: _Reader, key: str, *, required: bool = True, default: int = 0) -> int | None:
     value = r.raw(key, required=required, hint="a whole number ≥ 0")
     if value is _MISSING:
         return default
-    if isinstance(value, bool) or not isinstance(value, int) or value < 0:
-        r.problem(r.at(key), f"must be a whole number ≥ 0, not {_say(value)}")
+    if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value <= MAX_COUNT:
+        r.problem(r.at(key), f"must be a whole number from 0 to {MAX_COUNT}, not {_say(value)}")
         return None
     return value
 

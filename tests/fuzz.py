@@ -222,7 +222,7 @@ def run_one(doc: dict, folder: Path, run_cli, limit: float = 60.0) -> tuple[str,
             except ET.ParseError as e:
                 broken.append(f"render: not well-formed SVG ({e})")
             # numbers live in attributes (a title may say "nan": that is the user's text)
-            if re.search(r'="[^"]*\b(nan|inf)\b', svg, re.IGNORECASE):
+            if re.search(r'="[^"]*\b(nan|inf)\b|=\s*[−-]?(nan|inf)\b', svg, re.IGNORECASE):
                 broken.append("render: NaN or inf in the SVG's numbers")
             if "<svg onload" in svg[100:]:
                 broken.append("render: unescaped markup in the SVG")

@@ -57,3 +57,32 @@ def test_seeded_mutants_keep_every_promise(tmp_path):
     assert not broken, "\n".join(broken)
     outcomes = {o for (_, o) in r["counts"]}
     assert outcomes == {"answered", "refused"}  # both kinds of run were exercised
+
+
+# What the 10 000-mutant campaign (seed 11) found after the families were fixed: each is
+# now refused in one line at its key (the edit to a reference scene, the words of the refusal).
+CAMPAIGN_FINDINGS = [
+    ("cam.offset_roller_translating-pos", "omega_rad_s = 1\n", "omega_rad_s = 1e300\n", "the cam construction: numbers out of"),
+    ("cam.offset_roller_translating-pos", "base_radius = 30\n", "base_radius = 1e300\n", "cam.base_radius: r0 = 1e+300 mm leaves the stroke"),
+    ("linkage.slider_crank_offset", "length = 300\n", "length = 1e300\n", "too large for double precision"),
+    ("fly.ic_engine_flywheel", "delta = 0.01\n", "delta = 5e-324\n", "J_F: numbers out of the range"),
+    ("fly.ic_engine_flywheel", "cycle_deg = 180\n", "cycle_deg = 5e-324\n", "flywheel.cycle_deg: must divide one turn"),
+    ("fly.compressor_course_project", "omega_rpm = 960\n", "omega_rpm = 1e-300\n", "the reduction to the crank: numbers out of"),
+    ("fly.compressor_course_project", "pressure_MPa = [0, 0.014,", "pressure_MPa = [0, 1e300,", "pressure_MPa[1]: 1e+300 is beyond 1e+15"),
+    ("force.sixbar_kinetostatic-friction", "through = [0, 300]", "through = [1e300, 300]", "frame: the mechanism lies"),
+    ("structure.parallelogram_redundant", "redundant = 1\n", f"redundant = {10**60}\n", "structure.redundant: must be a whole number"),
+]
+
+
+@pytest.mark.parametrize("scene_id, old, new, words", CAMPAIGN_FINDINGS, ids=[f"{c[0]}:{c[2].strip()[:20]}" for c in CAMPAIGN_FINDINGS])
+def test_what_the_campaign_found_is_refused_in_one_line(tmp_path, scene_id, old, new, words):
+    from tests.conftest import SCENES, assert_refused
+
+    text = (SCENES / f"{scene_id}.toml").read_text(encoding="utf-8")
+    assert old in text
+    p = tmp_path / "found.toml"
+    p.write_text(text.replace(old, new, 1), encoding="utf-8")
+    out = tmp_path / "found.svg"
+    for argv in (("check", str(p), "--json"), ("render", str(p), "-o", str(out))):
+        assert_refused(run_cli(*argv), "found.toml", words)
+    assert not out.exists()
