@@ -48,7 +48,8 @@ def estimate_from_three(v1: float, v2: float, v4: float) -> float:
 
 
 def relative(abs_error: float, denominator: float) -> float:
-    """An absolute error estimate as a relative one, as ``rel_error`` is (never NaN or inf)."""
+    """An absolute error estimate as a relative one, as ``rel_error`` is (never NaN; inf where the
+    finer work itself broke down — graphmech.problems refuses such a row in words)."""
     if not math.isfinite(abs_error):
-        return math.inf if denominator else 0.0
+        return math.inf
     return abs_error / denominator if denominator > 0.0 else abs_error

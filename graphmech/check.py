@@ -564,7 +564,7 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
         if len(segments) == len(ends):
             segments = sorted("".join(build.quantities[n].segment) for n in ends.values())
             raise ValueError(f"{base!r} could be any of {', '.join(segments)}: name the segment exactly")
-        raise ValueError(f"{base!r} could be any of {', '.join(sorted(ends.values()))}: name the quantity")
+        raise ValueError(f"{base!r} could be any of {', '.join(sorted(ends.values()))}: write one of these instead of {base}")
     return found[0], idx, True
 
 

@@ -284,10 +284,11 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
     xs = [c for p in an.drawn.points.values() for c in p]
     extent = max(xs) - min(xs)
     if not extent <= DRAWN_SIZE_RANGE_MM[1]:
-        where = "dyad[0].guide.through" if loop.kind == "slider_crank" else "scales"
+        where, fix = (("dyad[0].guide.through", "put the guide's point near the crank") if loop.kind == "slider_crank"
+                      else ("scales", "choose a larger μl"))
         raise SceneError([(where, f"the extreme positions' drawing runs {extent:.3g} mm across at μl = {mu_l:g} m/mm: "
-                                  f"more than a page can show (at most {DRAWN_SIZE_RANGE_MM[1]:g} mm); "
-                                  "put the guide's point near the crank")], an.scene.source)
+                                  f"more than a page can show (at most {DRAWN_SIZE_RANGE_MM[1]:g} mm); {fix}")],
+                         an.scene.source)
     from graphmech.check import _offset_warning, refuse_far_from_origin
 
     size = mechanism_size(linkage)
@@ -357,7 +358,10 @@ def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
             finally:
                 an.exact = exact
             for name, v in base.items():
-                w = moved[name][1] if name in moved and moved[name][1] is not None else math.inf
+                if name not in moved or moved[name][1] is None:  # no longer defined a bit further on
+                    kappa[name] = math.inf
+                    continue
+                w = moved[name][1]
                 rel = abs(((w - v + 180.0) % 360.0 - 180.0) / 360.0 if CHARACTERISTICS.get(name, TIMING.get(name)) == "deg"
                           else (w - v) / max(abs(v), 1e-300))
                 kappa[name] = max(kappa[name], rel / _NUDGE)
@@ -366,8 +370,9 @@ def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
         an.ill = set(bad)
         worst = max(bad, key=bad.get)  # type: ignore[arg-type]
         names = ", ".join(f"{k} = {base[k]:.6g}" for k in bad)
-        an.warnings.append(f"ill-conditioned characteristics: {names}; the last bit of a link's length moves "
-                           f"{worst} by {bad[worst] * T.EPS:.1g} relative (condition number {bad[worst]:.2g}), so no "
+        how = ("changes the linkage's type (the crank no longer turns)" if math.isinf(bad[worst]) else
+               f"moves {worst} by {bad[worst] * T.EPS:.1g} relative (condition number {bad[worst]:.2g})")
+        an.warnings.append(f"ill-conditioned characteristics: {names}; the last bit of a link's length {how}, so no "
                            "method can give them to 1e-9")
 
 

@@ -222,9 +222,20 @@ def _exact(an: FlywheelAnalysis) -> Any:
 
         try:
             an.exact = ExactMachine(an.machine)
+        except SceneError as e:  # the exact machine names its own parts: say them as the scene's keys
+            raise SceneError([_scene_key(k, why) for k, why in e.problems], an.scene.source) from None
         except ValueError as e:
             raise SceneError([("flywheel", str(e))], an.scene.source) from None
     return an.exact
+
+
+def _scene_key(key: str, why: str) -> tuple[str, str]:
+    """A problem the exact machine found (``loads[2]``, ``balance``, ``linkage``) under the scene's key."""
+    if key.startswith("loads"):
+        return "flywheel.load" + key[len("loads"):], why
+    if key == "linkage":
+        return "", f"the linkage {why}"
+    return f"flywheel.{key}", why
 
 
 def _reduce(an: FlywheelAnalysis) -> None:

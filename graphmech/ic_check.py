@@ -475,6 +475,9 @@ def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
         raise ValueError("crank angles with a vanishing velocity need a crank as the driver")
     if linkage.driver.omega == 0.0:  # every angle would be a root: nothing to single out
         raise ValueError(f"the crank stands still (ω = 0): v_{x} is zero at every crank angle")
+    if not abs(linkage.driver.omega) * an.size > 1e-250:  # ω = 5e-324: every velocity underflows to 0
+        raise ValueError(f"ω = {linkage.driver.omega:g} rad/s makes every velocity underflow double precision; "
+                         f"the angles where v_{x} vanishes do not depend on ω: give ω = 1")
     kind, lid, u = signed_rate(linkage, x)
     plan, build = an.plan, an.build
     mu = an.scales["l"]

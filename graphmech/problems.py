@@ -308,6 +308,9 @@ def _refuse_non_finite(rows: list[Any]) -> None:
     for r in rows:
         if not all(math.isfinite(v) for v in (r.graphical, r.exact)):
             raise DegenerateConstruction(r.name, OUT_OF_RANGE)
+        if r.error_estimate is not None and not math.isfinite(r.error_estimate):
+            raise DegenerateConstruction(r.name, "its error estimate left double precision: the same method "
+                                                 "at more positions or divisions breaks down")
 
 
 def sheet(scene: Any, footer: Footer = ()) -> tuple[Any, list[str]]:

@@ -737,6 +737,10 @@ class _Reader:
         x = self.number(given.value, path, positive=positive)
         if x is None:
             return None
+        if kind == "angle" and not abs(given.si(x)) <= MAX_ANGLE_TURNS * 2.0 * math.pi:
+            # 1e300° is a direction only by the accident of argument reduction: no reader meant it
+            self.problem(path, f"{x:g} is more than {MAX_ANGLE_TURNS} turns: give the angle within one turn")
+            return None
         if given.key == base:
             unit = self.units[kind] or ""
         else:
@@ -1649,6 +1653,11 @@ def _read_table(s: _Reader, value: Any) -> tuple[tuple[float, float], ...] | Non
     if any(pt is None for pt in points):
         return None
     return tuple((pt[0], pt[1]) for pt in points)  # type: ignore[index]
+
+
+#: An angle of more turns than this is refused where it is read (a guide at −1e300° ran a stiff
+#: equation of motion for minutes).
+MAX_ANGLE_TURNS = 1000
 
 
 #: A base radius below this fraction of the cam's size is lost in round-off (r0 + s == s).

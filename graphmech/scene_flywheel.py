@@ -524,7 +524,7 @@ def _read_slider_load(r: _Reader, machine: _Machine) -> SliderLoad | None:
                 "missing: with pressure give piston_diameter_mm (the area is π d²/4) or area_mm2",
             )
         elif diameter is not None:
-            area = math.pi * diameter.si**2 / 4
+            area = math.pi * diameter.si * diameter.si / 4  # inf, not OverflowError, for d = 1e300
         elif given is not None:
             area = given.si
     elif has_force:
@@ -544,6 +544,11 @@ def _read_slider_load(r: _Reader, machine: _Machine) -> SliderLoad | None:
     if (has_force and has_pressure) or (has_pressure and area is None):
         return None
     forces = tuple(y.si) if has_force else tuple(p * area for p in y.si)  # type: ignore[operator]
+    if not all(abs(f) <= MAX_TABLE_SI for f in forces):  # the piston's area times the pressure
+        r.problem(r.at(r.present("piston_diameter") or r.present("area") or "area"),
+                  f"the piston's force p·A reaches beyond {MAX_TABLE_SI:g} N: no machine of the book, "
+                  "and no diagram can be drawn of it")
+        return None
     linkage = machine.linkage
     if point is None or during is None or sense is None or linkage is None:
         return None

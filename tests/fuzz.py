@@ -3,7 +3,7 @@ through ``graphmech check`` and ``render`` in-process, and every run held to the
 
 Used by tests/test_fuzz.py (a short seeded budget in the suite) and as a campaign::
 
-    python -m tests.fuzz --mutants 10000 --seed 1 [--jobs 2]
+    python -m tests.fuzz --mutants 10000 --seed 1 [--limit 60] [--out DIR]
 
 which prints the counts by outcome and by mutation, the slowest mutants and every broken promise
 (with the mutant's TOML written to ``fuzz-failures/`` for a regression test).

@@ -71,6 +71,11 @@ CAMPAIGN_FINDINGS = [
     ("fly.compressor_course_project", "pressure_MPa = [0, 0.014,", "pressure_MPa = [0, 1e300,", "pressure_MPa[1]: 1e+300 is beyond 1e+15"),
     ("force.sixbar_kinetostatic-friction", "through = [0, 300]", "through = [1e300, 300]", "frame: the mechanism lies"),
     ("structure.parallelogram_redundant", "redundant = 1\n", f"redundant = {10**60}\n", "structure.redundant: must be a whole number"),
+    # the second campaign (seed 12): 3 of 10 000
+    ("fly.compressor_course_project", "piston_diameter_mm = 120\n", "piston_diameter_mm = 1e300\n",
+     "piston_diameter_mm: the piston's force p·A reaches beyond 1e+15 N"),
+    ("fly.compressor_course_project-stiff", "angle = 0 }", "angle = -1e300 }", "guide.angle: -1e+300 is more than 1000 turns"),
+    ("kin.fourbar_instant_centres", "omega = 10\n", "omega = 5e-324\n", "makes every velocity underflow double precision"),
 ]
 
 

@@ -297,3 +297,17 @@ def test_a_stated_scale_whose_figure_no_page_holds_is_refused(tmp_path, scene_id
     for argv in (("check", str(p), "--json"), ("render", str(p), "-o", str(tmp_path / "s.svg"))):
         assert_refused(run_cli(*argv), "s.toml", "scales: ", words, "0.1 … 10000 mm")
     assert not (tmp_path / "s.svg").exists()
+
+
+def test_characteristics_that_a_last_bit_makes_undefined_are_all_flagged(tmp_path):
+    """A guide bar whose crank is within 1.5e-12 of the frame: nudging a length stops the crank
+    turning; the degree-valued rows (θ, ψ, φ_work …) lost their flag to a NaN (inf mod 360)."""
+    text = (SCENES / "linkage.quick_return_timing-guide_bar.toml").read_text(encoding="utf-8")
+    p = tmp_path / "g.toml"
+    p.write_text(text.replace("length = 25.881904510252074", "length = 99.99999999985"), encoding="utf-8")
+    from tests.conftest import check_json
+
+    doc = check_json(p)
+    assert doc["quantities"] and all(q["ill_conditioned"] for q in doc["quantities"])
+    assert any("changes the linkage's type (the crank no longer turns)" in w for w in doc["warnings"])
+    assert not any("inf" in w.split() for w in doc["warnings"])

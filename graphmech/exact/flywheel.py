@@ -689,7 +689,14 @@ class ExactMachine:
         return 0.0 if phi >= self.cycle else phi
 
     def extremes(self) -> Extremes:
-        """ΔT_max, ΔT_min over the cycle (J) and their φ (rad): roots of Mп + M_b, global."""
+        """ΔT_max, ΔT_min over the cycle (J) and their φ (rad): roots of Mп + M_b, global (found
+        once per machine: every J row of a check asks for them)."""
+        found = self.__dict__.get("_extremes")
+        if found is None:
+            found = self.__dict__["_extremes"] = self._find_extremes()
+        return found
+
+    def _find_extremes(self) -> Extremes:
         mb = self.balancing_moment()
         dt = self._samples_dt()
 
