@@ -111,9 +111,6 @@ def read_balancing(top: _Reader) -> BalancingProblem | None:
                 s.quantity("z", "length", required=False)
                 s.problem(s.at(s.present("z") or "z"), 'a static balance has one plane: no z (write type = "dynamic")')
         s.finish()
-        if th is not None and not (math.isfinite(th) and abs(th) <= 1e4):
-            s.problem(s.at(s.present("angle") or "angle"), "an absurd angle (write it within ±360°)")
-            th = None
         for value, base in ((m, "m"), (rad, "r"), (z, "z")):
             if value is not None and (abs(value) > MAX_SIZE or 0 < abs(value) < 1e-9):
                 s.problem(s.at(s.present(base) or base), f"{value:g} (SI) is absurd for a rotor")

@@ -227,10 +227,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
         link = _link(r, links, frame)
         point = _on_link(r, _name(r, "point", "the point the force acts at, on that link"), link, links)
         magnitude = _non_negative(r, "force", "force")
-        angle = r.scalar("angle", "angle")
-        if angle is not None and abs(angle) > 1e4:  # radians: beyond, cos and sin are round-off
-            r.problem(r.at(r.present("angle") or "angle"), "an absurd angle (write it within ±360°)")
-            angle = None
+        angle = r.scalar("angle", "angle")  # beyond 1000 turns refused where every angle is read
         resistance = bool(r.flag("resistance"))
         r.finish()
         if link is not None and point is not None and magnitude is not None and angle is not None:

@@ -546,7 +546,7 @@ def test_slider_crank_with_friction_equals_the_matrix_method(phi, m3, f, fs, fv,
                    "[[forces.journal]]\npoint = \"B\"\nf_v = 0.2\nradius = 5\n",
      "forces.journal[1].point: the journal at B is already given (forces.journal[0])"),
     # a force's direction of 1e300° was taken (cos and sin of it are round-off)
-    ("angle = 180", "angle = 1e300", "forces.force[0].angle: an absurd angle (write it within ±360°)"),
+    ("angle = 180", "angle = 1e300", "forces.force[0].angle: 1e+300 is more than 1000 turns: give the angle within one turn"),
     # an absurd stated μF drew polygons 1e-297 mm long without a word
     ("[forces]\n", "[forces]\nmu_F_N_per_mm = 1e300\n",
      "forces.mu_F_N_per_mm: 1e+300: over 1e+15 SI units per mm once converted: no page shows a figure at that scale"),
