@@ -15,8 +15,8 @@ from typing import Any
 import numpy as np
 
 from graphmech.accuracy import DISCRETISATION, READING, estimate_from_three, relative
-from graphmech.check import OUT_OF_RANGE, Row, Verdict, close_names, measured_entries, page_size
-from graphmech.errors import DegenerateConstruction, SceneError
+from graphmech.check import Row, Verdict, close_names, in_double_precision, measured_entries, page_size
+from graphmech.errors import SceneError
 from graphmech.exact import cam as exact_cam
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxima
@@ -134,11 +134,8 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), 
     """The inversion at the scene's divisions, its readings, and the check table
     (``extra_measured``: hand readings from the command line, which may need the profile; each
     reading's own error estimate redraws at 2, 4 and 8 times the divisions: only a check needs it)."""
-    try:
-        with np.errstate(all="ignore"):
-            return _analyse_cam(scene, extra_measured, estimates)
-    except (OverflowError, ZeroDivisionError, FloatingPointError):  # ω of 1e300: ω³·j overflows
-        raise DegenerateConstruction("the cam construction", OUT_OF_RANGE) from None
+    with in_double_precision("the cam construction"):  # ω of 1e300: ω³·j overflows
+        return _analyse_cam(scene, extra_measured, estimates)
 
 
 def _analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...], estimates: bool) -> CamAnalysis:

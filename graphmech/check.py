@@ -10,6 +10,8 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
@@ -234,11 +236,19 @@ def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> A
     Numbers beyond double precision (an ω of 1e155 rad/s squared) are a one-line
     :class:`DegenerateConstruction`, never a traceback, an inf or a NaN.
     """
+    with in_double_precision("the construction"):
+        return _analyse(scene, extra_measured)
+
+
+@contextmanager
+def in_double_precision(step: str) -> Iterator[None]:
+    """Run an analysis whose numbers may leave double precision (a speed of 1e300, a scale of
+    5e-324): numpy stays quiet, and an overflow or a division by zero is said in one line."""
     try:
         with np.errstate(all="ignore"):
-            return _analyse(scene, extra_measured)
-    except (OverflowError, ZeroDivisionError, FloatingPointError) as e:
-        raise DegenerateConstruction("the construction", f"{OUT_OF_RANGE} ({e})") from None
+            yield
+    except (OverflowError, ZeroDivisionError, FloatingPointError):
+        raise DegenerateConstruction(step, OUT_OF_RANGE) from None
 
 
 def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analysis:

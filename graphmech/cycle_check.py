@@ -34,7 +34,8 @@ from typing import Any
 import numpy as np
 
 from graphmech.accuracy import DISCRETISATION, relative
-from graphmech.check import Row, Verdict, analyse, characteristic, judge, measured_entries, mechanism_size, page_size
+from graphmech.check import (Row, Verdict, analyse, characteristic, in_double_precision, judge, measured_entries,
+                             mechanism_size, page_size)
 from graphmech.errors import SceneError
 from graphmech.scene_cycle import MAX_POLE_MM, MIN_POLE_MM
 from graphmech.exact import characteristics as exact_ch
@@ -176,14 +177,8 @@ def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()
     As for one position (:func:`graphmech.check.analyse`), numbers beyond double precision (ω of
     1e300 rad/s squared, a crank of 5e-324 mm) are one line, never a traceback, an inf or a NaN.
     """
-    from graphmech.check import OUT_OF_RANGE
-    from graphmech.errors import DegenerateConstruction
-
-    try:
-        with np.errstate(all="ignore"):
-            return _analyse_cycle(scene, extra_measured)
-    except (OverflowError, ZeroDivisionError, FloatingPointError) as e:
-        raise DegenerateConstruction("the construction", f"{OUT_OF_RANGE} ({e})") from None
+    with in_double_precision("the construction"):
+        return _analyse_cycle(scene, extra_measured)
 
 
 def _analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> CycleAnalysis:

@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from graphmech.accuracy import DISCRETISATION, READING, estimate_from_three, relative
-from graphmech.check import Row, Verdict, close_names, measured_entries
+from graphmech.check import Row, Verdict, close_names, in_double_precision, measured_entries
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.mechanisms.machine import Machine
 from graphmech.tolerances import EPS
@@ -180,11 +180,8 @@ def analyse_flywheel(scene: Any, extra_measured: tuple[tuple[str, float], ...] =
                      estimates: bool = True) -> FlywheelAnalysis:
     """Carry out what the flywheel scene asks for and build its check table (with each row's own
     error estimate, which redoes the work at 2N and 4N positions: only a check needs it)."""
-    try:
-        with np.errstate(all="ignore"):
-            return _analyse(scene, extra_measured, estimates)
-    except (OverflowError, ZeroDivisionError, FloatingPointError) as e:
-        raise DegenerateConstruction("the flywheel construction", f"numbers out of range ({e})") from None
+    with in_double_precision("the flywheel construction"):
+        return _analyse(scene, extra_measured, estimates)
 
 
 def _analyse(scene: Any, extra: tuple[tuple[str, float], ...], estimates: bool) -> FlywheelAnalysis:

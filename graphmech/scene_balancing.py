@@ -8,7 +8,6 @@ scene (key paths, one-line messages, all problems collected); called from
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 from graphmech.scene import _MISSING, _Reader, _say, _type_name
