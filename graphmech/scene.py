@@ -737,6 +737,9 @@ class _Reader:
         x = self.number(given.value, path, positive=positive)
         if x is None:
             return None
+        if positive and not given.si(x) > 0.0:  # 5e-324 rpm is a positive number, and 0 rad/s
+            self.problem(path, f"{x:g} is 0 once converted to SI units: too small for double precision")
+            return None
         if kind == "angle" and not abs(given.si(x)) <= MAX_ANGLE_TURNS * 2.0 * math.pi:
             # 1e300° is a direction only by the accident of argument reduction: no reader meant it
             self.problem(path, f"{x:g} is more than {MAX_ANGLE_TURNS} turns: give the angle within one turn")

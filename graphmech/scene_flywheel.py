@@ -337,7 +337,7 @@ def _read_cycle(fw: _Reader) -> float | None:
     v = fw.value("cycle", "angle", required=False, positive=True)
     if v is None:
         return TWO_PI if fw.present("cycle") is None else None
-    k = TWO_PI / v.si if v.si > 0.0 else math.inf  # 5e-324° is 0 rad once converted
+    k = TWO_PI / v.si
     if not (math.isfinite(k) and 0.5 <= k <= MAX_POSITIONS) or abs(k - round(k)) > 1e-9 * k:
         fw.problem(
             v.path,
