@@ -42,7 +42,7 @@ from graphmech.exact import characteristics as exact_ch
 from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.characteristics import DrawnCharacteristics, draw_characteristics, grashof_ranges
-from graphmech.methods.full_cycle import CycleDiagram, FullCycle, cycle_positions, evaluate_cycle, sliders
+from graphmech.methods.full_cycle import CycleDiagram, FullCycle, evaluate_cycle, finer_positions, sliders
 from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
 
 __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "nice_pole"]
@@ -695,10 +695,8 @@ def _diagram_at(an: CycleAnalysis, dg: CycleDiagram, m: int, mid: bool) -> Cycle
     if key not in an.refined:
         cyc = an.cycle
         assert cyc is not None
-        step = 2.0 * math.pi / cyc.n
-        start = float(cyc.angles[0]) + (cyc.sense * (step / 2.0 - step / (2.0 * m)) if mid else 0.0)
         fine = evaluate_cycle(an.scene.linkage, {"l": an.scales["l"], "v": 1.0, "a": 1.0},
-                              cycle_positions(start, m * cyc.n, cyc.sense), diagrams=[dg.subject],
+                              finer_positions(float(cyc.angles[0]), cyc.n, cyc.sense, m, mid), diagrams=[dg.subject],
                               mu_phi=cyc.mu_phi, mu_s={dg.subject: dg.mu_s},
                               H_mm=(dg.velocity.H_mm, dg.acceleration.H_mm))
         an.refined[key] = fine.diagrams[0]

@@ -47,6 +47,20 @@ def cycle_positions(start: float, n: int, sense: float) -> np.ndarray:
     return np.mod(start + sense * k * TWO_PI / n, TWO_PI)
 
 
+def finer_positions(start: float, n: int, sense: float, m: int, middles: bool) -> np.ndarray:
+    """The m·N positions of the same cycle drawn m times finer, placed so that each of the N
+    positions is the (m·k)-th of them (``middles``: each middle of the N intervals, where a chord's
+    slope is laid off, is the (m·k)-th middle of the finer intervals). How a chord diagram checks itself.
+
+    >>> fine = np.degrees(finer_positions(0.0, 4, 1.0, 2, True))
+    >>> ((fine[::2] + fine[1::2]) / 2).round(9).tolist()
+    [45.0, 135.0, 225.0, 315.0]
+    """
+    step = TWO_PI / n
+    offset = sense * (step / 2.0 - step / (2.0 * m)) if middles else 0.0
+    return cycle_positions(start + offset, m * n, sense)
+
+
 def sliders(linkage: Linkage) -> dict[str, tuple[float, float]]:
     """Points that slide on a frame guide → the guide's unit direction."""
     out: dict[str, tuple[float, float]] = {}
