@@ -21,7 +21,7 @@ from graphmech.exact import cam as exact_cam
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxima
 from graphmech.methods.cam_figures import panel_rows, scale_note
-from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile, read_drawing
+from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile, read_drawing, whole_turn_step
 from graphmech.scales import DRAWN_SIZE_RANGE_MM, round_scale
 
 #: What a cam scene can ask for, with the unit each is reported in.
@@ -144,7 +144,7 @@ def _analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...], esti
     cam: DiscCam = cs.cam
     names = _requested(scene)
     asked = names + [n for _, n, _ in measured_entries(scene, extra_measured)]
-    step = math.tau / max(1, round(math.tau / cs.step))
+    step = whole_turn_step(cs.step)
     delta = divisions(cam, step, breakpoints(cam.program))
     s = displacement(cam.program, delta)
     # Only what the scene asks for: no profile for a scene that wants the diagrams alone.
@@ -274,7 +274,7 @@ def _row(an: CamAnalysis, name: str) -> Row:
         if abs((delta[k] - at + math.pi) % math.tau - math.pi) > 1e-9:
             key = f"find[{list(an.scene.find).index(name)}]" if name in an.scene.find else "find"
             raise SceneError([(key, f"{name}: {at_deg:g}° is not a division of this drawing "
-                                    f"(every {deg(an.scene.cam.step):g}° and at the laws' joints)")], an.scene.source)
+                                    f"(every {deg(an.step):.6g}° and at the laws' joints)")], an.scene.source)
         if name.startswith("alpha@"):
             e = float(exact_cam.profile(cam, np.array([delta[k]])).pressure_angle[0])
             g = 0.0 if cam.follower.contact == "flat" else deg(drawn.pressure_angle[k])  # the face's normal is the axis

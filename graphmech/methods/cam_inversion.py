@@ -36,9 +36,19 @@ from graphmech.mechanisms.motion import breakpoints, displacement, impacts
 PANEL = "profile"
 
 
+def whole_turn_step(step: float) -> float:
+    """The step the divisions are drawn at: ``step`` rounded so that it divides a turn (7° → 7.0588°).
+
+    >>> round(math.degrees(whole_turn_step(math.radians(7.0))), 4)
+    7.0588
+    """
+    return math.tau / max(1, round(math.tau / step))
+
+
 def divisions(cam: DiscCam, step: float, breakpoints: np.ndarray) -> np.ndarray:
-    """The cam angles of the divisions: every ``step`` from 0, plus the laws' joints (rad, sorted)."""
-    n = max(1, int(round(math.tau / step)))
+    """The cam angles of the divisions: every ``step`` (rounded to divide a turn) from 0, plus the
+    laws' joints (rad, sorted)."""
+    n = round(math.tau / whole_turn_step(step))
     grid = np.arange(n) * (math.tau / n)
     allv = np.concatenate([grid, np.asarray(breakpoints, dtype=float) % math.tau])
     allv = np.unique(np.round(allv, 12))
