@@ -217,3 +217,11 @@ def test_the_estimates_hold_on_a_divisions_sweep_of_the_offset_roller_cam(tmp_pa
     assert {"alpha_max", "rho_min_pitch", "r0_min", "alpha@60"} <= judged.keys()
     if 24 <= n <= 360:  # the estimates shrink with the divisions, as the errors do (to a floor at 0.1°)
         assert values(doc)[PROFILE_DEVIATION]["error_estimate"] < 0.02 * (24 / n) ** 2 * 1.1
+
+
+def test_a_step_that_does_not_divide_a_turn_is_named_as_drawn(tmp_path):
+    """step = 7° is drawn at 360/51 = 7.05882°: a refusal of a reading between divisions says so."""
+    p = scene(tmp_path, find='["alpha@14"]')
+    p.write_text(p.read_text(encoding="utf-8").replace("step = 15", "step = 7"), encoding="utf-8")
+    assert_refused(run_cli("check", str(p)), p.name, "find[0]: alpha@14: 14° is not a division",
+                   "every 7.05882° and at the laws' joints")
