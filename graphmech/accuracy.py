@@ -30,6 +30,16 @@ def richardson(coarse: float, fine: float, order: float) -> float:
     return abs(coarse - fine) * 2.0**order / (2.0**order - 1.0)
 
 
+def extrapolated(coarse: float, fine: float, order: float) -> float:
+    """The value at infinitely many positions from N (``coarse``) and 2N (``fine``), order p known:
+    fine + (fine − coarse)/(2ᵖ − 1). Works on arrays too.
+
+    >>> extrapolated(1.0 + 1/4, 1.0 + 1/16, 2)
+    1.0
+    """
+    return fine + (fine - coarse) / (2.0**order - 1.0)
+
+
 def observed_order(v1: float, v2: float, v4: float, lo: float = 0.5, hi: float = 4.0) -> float:
     """The order seen on N, 2N, 4N: log₂(|v1 − v2| / |v2 − v4|), kept within [lo, hi].
 

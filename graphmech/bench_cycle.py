@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from graphmech.accuracy import extrapolated
 from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage
 from graphmech.methods.full_cycle import cycle_positions, evaluate_cycle, finer_positions
@@ -83,11 +84,11 @@ def differentiation_records(repeat: int = 5, ns: tuple[int, ...] = CYCLE_N) -> l
 
 def _extrapolated(finer: list[Any], n: int, pick: str) -> np.ndarray:
     """v (at the N middles) or a (at the N positions) from the diagrams over 2N and 4N positions,
-    extrapolated to infinitely many: v4 + (v4 − v2)/3."""
+    extrapolated to infinitely many (the chords' order 2)."""
     v2, v4 = ((f.velocity.derivative_mm * f.mu_v if pick == "v" else f.a_mm * f.mu_a)[::m]
               for f, m in zip(finer, (2, 4)))
     assert len(v2) == len(v4) == n
-    return v4 + (v4 - v2) / 3.0
+    return extrapolated(v2, v4, order=2)
 
 
 def sheet_record(repeat: int = 3) -> dict[str, Any]:

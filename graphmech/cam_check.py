@@ -22,7 +22,7 @@ from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxima
 from graphmech.methods.cam_figures import panel_rows, scale_note
 from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile, read_drawing, whole_turn_step
-from graphmech.scales import DRAWN_SIZE_RANGE_MM, round_scale
+from graphmech.scales import drawn_size_problem, round_scale
 
 #: What a cam scene can ask for, with the unit each is reported in.
 CAM_QUANTITIES = {
@@ -121,12 +121,11 @@ def _legible(scene: Any, cam: DiscCam, stated: dict[str, float], across: float) 
     ext = maxima(cam.program, cam.omega)
     sizes = {"l": ("profile", across), "s": ("displacement", abs(cam.program.stroke)),
              "v": ("velocity", 2.0 * ext["v"].value), "a": ("acceleration", 2.0 * ext["a"].value)}
-    lo, hi = DRAWN_SIZE_RANGE_MM
     for key, (panel, size) in sizes.items():
-        if key in stated and panel in scene.show and size > 0.0 and not lo <= size / stated[key] <= hi:
-            raise SceneError([("scales", f"{scale_note(key, stated[key], _angular(cam))} draws the {panel} "
-                                         f"{size / stated[key]:.3g} mm across: choose it so that it is "
-                                         f"{lo:g} … {hi:g} mm")], scene.source)
+        if key in stated and panel in scene.show and size > 0.0:
+            why = drawn_size_problem(size, stated[key], key, f"the {panel}", scale_note(key, stated[key], _angular(cam)))
+            if why:
+                raise SceneError([("scales", why)], scene.source)
 
 
 def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), *,

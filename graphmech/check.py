@@ -299,7 +299,7 @@ def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analy
     an = Analysis(scene, build, plan, scales, stated, positions, labels, solutions, failures, exact)
     an.extra_measured = tuple(extra_measured)
     an.size = mechanism_size(linkage, exact)
-    far = _offset_warning(linkage, an.size)
+    far = offset_warning(linkage, an.size)
     if far:
         an.warnings.append(far)
     for i, why in enumerate(failures):
@@ -360,7 +360,7 @@ def refuse_far_from_origin(scene: Any, linkage: Linkage, size: float) -> None:
                          scene.source)
 
 
-def _offset_warning(linkage: Linkage, size: float) -> str:
+def offset_warning(linkage: Linkage, size: float) -> str:
     """Coordinates far from the origin, compared with the mechanism's size, carry few digits of it."""
     ratio = offset_ratio(linkage, size)
     if T.COND_SAFETY * T.EPS * ratio <= T.REL_AGREEMENT:

@@ -33,7 +33,7 @@ from typing import Any
 
 import numpy as np
 
-from graphmech.accuracy import DISCRETISATION, relative
+from graphmech.accuracy import DISCRETISATION, extrapolated, relative
 from graphmech.check import (Row, Verdict, analyse, characteristic, in_double_precision, judge, measured_entries,
                              mechanism_size, page_size)
 from graphmech.errors import SceneError
@@ -284,11 +284,11 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
         raise SceneError([(where, f"the extreme positions' drawing runs {extent:.3g} mm across at μl = {mu_l:g} m/mm: "
                                   f"more than a page can show (at most {DRAWN_SIZE_RANGE_MM[1]:g} mm); {fix}")],
                          an.scene.source)
-    from graphmech.check import _offset_warning, refuse_far_from_origin
+    from graphmech.check import offset_warning, refuse_far_from_origin
 
     size = mechanism_size(linkage)
     refuse_far_from_origin(an.scene, linkage, size)
-    far = _offset_warning(linkage, size)
+    far = offset_warning(linkage, size)
     if far:  # the characteristics' rows carry as few digits as the coordinates leave
         an.warnings.append(far)
         an.far = True
@@ -711,14 +711,13 @@ def _chord_estimate(an: CycleAnalysis, dg: CycleDiagram, what: str, i: int, g: f
     vals = []
     for m in (2, 4):
         f = _diagram_at(an, dg, m, mid)
-        if what in ("s", "psi"):
+        if what == "s":  # a point's way along its path
             vals.append(float(f.s_mm[m * i] * f.mu_s))
         elif mid:
             vals.append(float(f.velocity.derivative_mm[m * i] * f.mu_v))
         else:
             vals.append(float(f.a_mm[m * i] * f.mu_a))
-    v2, v4 = vals
-    limit = v4 + (v4 - v2) / 3.0
+    limit = extrapolated(*vals, order=2)
     unit = {"s": "m", "v": "m/s", "a": "m/s²", "omega": "rad/s", "alpha": "rad/s²"}[what]
     linkage = an.scene.linkage
     return relative(abs(g - limit), max(abs(limit), characteristic(linkage, unit, mechanism_size(linkage))))

@@ -383,7 +383,7 @@ def _row(an: FlywheelAnalysis, name: str) -> Row:
     rel = _rel(g, e, scale)
     if base in POSITION_ANGLES:  # where in the cycle: 0° and 353.47° are 6.53° apart, not 353.47°
         cycle = math.degrees(an.machine.cycle)
-        rel = abs(math.remainder(g - e, cycle)) / cycle
+        rel = abs(_wrapped(an, base, g - e)) / cycle
     if unit == "J" and base != "t_stop":  # an energy near zero (ΔT_min) is judged against the cycle's swing of ΔT
         x = _exact(an).extremes()
         rel = abs(g - e) / max(abs(e), x.maximum - x.minimum, 1e-300)
@@ -493,7 +493,7 @@ def _estimate(an: FlywheelAnalysis, needs: set[str]) -> None:
       the larger of the two.
     - The angle of an extreme is a reading at the positions: its error is its distance from the
       extreme that the pipeline at 2N places between its positions (the vertex of that parabola).
-    - The true motion: the same solve at rtol/100.
+    - The true motion: the same solve at rtol/10.
     """
     rows = [(k, r) for k, r in enumerate(an.rows) if split(r.name)[0] not in CONSTRUCTED]
     if not rows:

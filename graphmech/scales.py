@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import math
 
+from graphmech.tolerances import SCALE_RANGE_SI
+
 #: Paper sizes in mm (width, height), landscape unless named "-portrait".
 PAPER = {
     "A4": (297.0, 210.0),
@@ -62,15 +64,29 @@ def format_scale(symbol: str, value: float) -> str:
         value = math.degrees(value)
     return f"{sym} = {value:.6g} {unit}"
 
+def scale_out_of_range(si: float) -> str:
+    """Why a stated scale μ (SI per drawing mm) cannot be drawn at, or "" (tolerances.SCALE_RANGE_SI).
+
+    >>> scale_out_of_range(0.002), scale_out_of_range(5e-324)[:11]
+    ('', 'under 1e-15')
+    """
+    lo, hi = SCALE_RANGE_SI
+    if lo <= si <= hi:
+        return ""
+    return f"{'under' if si < lo else 'over'} {lo if si < lo else hi:g} SI units per mm once converted: no page shows a figure at that scale"
+
+
 #: A figure drawn at a stated μ must come out between these sizes on the paper, mm: under 0.1 mm
 #: it is a dot; over 10 m of paper (eight A0 sheets) no page shows it and its dashes and hatching
 #: take minutes to draw (1e-300 m/mm drew kilometres of 1e298).
 DRAWN_SIZE_RANGE_MM = (0.1, 1e4)
 
 
-def drawn_size_problem(size: float, mu: float, symbol: str = "l", what: str = "the mechanism") -> str | None:
+def drawn_size_problem(size: float, mu: float, symbol: str = "l", what: str = "the mechanism",
+                       note: str | None = None) -> str | None:
     """Why a figure ``size`` across (SI units of ``symbol``'s scale) cannot be drawn at ``mu``
-    (SI per mm); None if it can.
+    (SI per mm); None if it can. ``note`` writes the scale where its unit is not ``symbol``'s
+    (an oscillating follower's μs is an angle per mm).
 
     >>> drawn_size_problem(0.1, 0.001) is None, drawn_size_problem(0.1, 1e-300)[:38]
     (True, 'μl = 1e-300 m/mm draws the mechanism 1')
@@ -82,9 +98,10 @@ def drawn_size_problem(size: float, mu: float, symbol: str = "l", what: str = "t
     if lo <= drawn <= hi:
         return None
     sym, unit = SCALE_INFO[symbol]
+    note = note or f"{sym} = {mu:g} {unit}"
     if not math.isfinite(drawn):
-        return f"{what} is too large for double precision (the scene's sizes are too extreme) at {sym} = {mu:g} {unit}"
-    return (f"{sym} = {mu:g} {unit} draws {what} {drawn:.3g} mm across: choose {sym} so that it is "
+        return f"{what} is too large for double precision (the scene's sizes are too extreme) at {note}"
+    return (f"{note} draws {what} {drawn:.3g} mm across: choose {sym} so that it is "
             f"{lo:g} … {hi:g} mm")
 
 

@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Any, Iterable, Mapping, NoReturn
 
 from graphmech.errors import SceneError
-from graphmech.scales import PAPER, phi_axis_problem
+from graphmech.scales import PAPER, phi_axis_problem, scale_out_of_range
 from graphmech.mechanisms.cam import (
     DiscCam,
     Follower,
@@ -52,7 +52,7 @@ from graphmech.mechanisms.linkage import (
     Positions,
     SliderInput,
 )
-from graphmech.tolerances import DRAWING_PRECISION_MM, MAX_PRECISION_MM, PARALLEL_SIN, SCALE_RANGE_SI
+from graphmech.tolerances import DRAWING_PRECISION_MM, MAX_PRECISION_MM, PARALLEL_SIN
 
 #: A scene file larger than this (bytes) is refused before it is parsed.
 MAX_BYTES = 1 << 20
@@ -1007,14 +1007,6 @@ def _read_scales(
                 scales[name] = given.si(x)
     r.finish()
     return scales
-
-
-def scale_out_of_range(si: float) -> str:
-    """Why a stated scale μ (SI per drawing mm) cannot be drawn at, or "" (tolerances.SCALE_RANGE_SI)."""
-    lo, hi = SCALE_RANGE_SI
-    if lo <= si <= hi:
-        return ""
-    return f"{'under' if si < lo else 'over'} {lo if si < lo else hi:g} SI units per mm once converted: no page shows a figure at that scale"
 
 
 def _read_frame(top: _Reader) -> tuple[dict[str, tuple[float, float] | None], str | None]:

@@ -26,12 +26,12 @@ from graphmech.mechanisms.forces import (
     SlidingFriction,
 )
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage
+from graphmech.scales import scale_out_of_range
 from graphmech.scene import (
     _MISSING,
     SHOW_CHOICES,
     Scene,
     _raise_sorted,
-    scale_out_of_range,
     _read_tail,
     _read_header,
     _read_linkage,
