@@ -64,7 +64,7 @@ def closed_form_fourbar(phi: np.ndarray, a: float = 0.06, b: float = 0.12, c: fl
 
 def polygon_records(repeat: int = 7) -> list[dict[str, Any]]:
     """The four-bar's velocity and acceleration polygons at 1 and at 360 positions."""
-    from graphmech.check import characteristic, exact_value
+    from graphmech.problems.linkage.check import characteristic, exact_value
 
     lk = fourbar()
     b = build_polygons(lk, {"l": 0.002, "v": 0.01, "a": 0.1})
@@ -296,7 +296,7 @@ def wittenbauer_records(repeat: int = 5, ns: tuple[int, ...] = WITTENBAUER_N) ->
     moment, ΔT, the Wittenbauer diagram and its tangents (or the energy indicator). The exact J_F
     takes the tangents to the continuous curve (:class:`graphmech.exact.flywheel.ExactMachine`).
     """
-    from graphmech.bench_flywheel import compressor_machine
+    from graphmech.problems.flywheel.bench import compressor_machine
     from graphmech.exact.flywheel import ExactMachine
     from graphmech.methods.flywheel import design_flywheel
     from graphmech.methods.reduction import reduce_to_crank
@@ -353,15 +353,15 @@ def run_bench(quick: bool = False) -> dict[str, Any]:
         f"the plain closed-form numpy solution ({base['seconds'] * 1e6:.0f} µs; target ≤ 3×)",
         f"agreement: {max(one['max_rel_error'], cyc['max_rel_error']):.1e} (target ≤ 1e-12)",
     ] + _cam_notes(cams)
-    from graphmech.bench_flywheel import true_motion_records
+    from graphmech.problems.flywheel.bench import true_motion_records
 
     fly = wittenbauer_records(repeat=2 if quick else 5)
     motion = true_motion_records(quick=quick)
     notes += _flywheel_notes(fly)
-    from graphmech.bench_cycle import cycle_notes, differentiation_records, sheet_record
-    from graphmech.bench_efficiency import efficiency_records
-    from graphmech.bench_forces import kinetostatic_notes, kinetostatic_records
-    from graphmech.bench_ic import ic_records
+    from graphmech.problems.cycle.bench import cycle_notes, differentiation_records, sheet_record
+    from graphmech.problems.efficiency.bench import efficiency_records
+    from graphmech.problems.forces.bench import kinetostatic_notes, kinetostatic_records
+    from graphmech.problems.instant_centres.bench import ic_records
 
     forces = kinetostatic_records(quick=quick)
     notes += kinetostatic_notes(forces)

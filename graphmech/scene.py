@@ -3,7 +3,7 @@
 A scene describes either a linkage (frame points, a driver, Assur dyads in assembly order,
 extra points on links, and the driver's positions), a disc cam (its base circle, follower
 and motion program, table ``[cam]``) or a flywheel problem (a machine — a linkage or none —
-with its masses and loads, table ``[flywheel]``, read by :mod:`graphmech.scene_flywheel`),
+with its masses and loads, table ``[flywheel]``, read by :mod:`graphmech.problems.flywheel.scene`),
 together with the drawing scales, what to show and find, and the values a draughtsman
 measured on paper. Every number is converted to SI on load.
 
@@ -201,7 +201,7 @@ class Scene:
         Free text (the renderer escapes it).
     show : tuple of str
         A subset of :data:`SHOW_CHOICES` (a cam scene: :data:`CAM_SHOW_CHOICES`; a flywheel
-        scene: :data:`graphmech.scene_flywheel.FLYWHEEL_SHOW_CHOICES`, with a linkage also
+        scene: :data:`graphmech.problems.flywheel.scene.FLYWHEEL_SHOW_CHOICES`, with a linkage also
         "mechanism") in the user's order, no duplicates.
     find : tuple of str
         Quantity names as written (``"v_C"``, ``"omega_3"``, ``"alpha_max"``, ``"J_F"``);
@@ -229,7 +229,7 @@ class Scene:
         The cam of a cam scene (None otherwise).
     flywheel : FlywheelScene or None
         The machine and the flywheel problem of a flywheel scene (None otherwise).
-    cycle : graphmech.scene_cycle.CycleScene or None
+    cycle : graphmech.problems.cycle.scene.CycleScene or None
         A linkage scene's full cycle ([cycle]) and characteristics (None when it asks for
         neither).
     """
@@ -246,11 +246,11 @@ class Scene:
     page: Page = Page()
     cam: CamScene | None = None
     flywheel: FlywheelScene | None = None
-    forces: Any = None  # a ForceScene (graphmech.scene_forces) in a force scene
-    efficiency: Any = None  # graphmech.scene_efficiency.EfficiencyProblem of an [efficiency] scene
-    balancing: Any = None  # graphmech.scene_balancing.BalancingProblem of a [balancing] scene
-    cycle: Any = None  # graphmech.scene_cycle.CycleScene: a full cycle and/or the characteristics
-    structure: Any = None  # graphmech.scene_structure.StructureScene of a [structure] scene
+    forces: Any = None  # a ForceScene (graphmech.problems.forces.scene) in a force scene
+    efficiency: Any = None  # graphmech.problems.efficiency.scene.EfficiencyProblem of an [efficiency] scene
+    balancing: Any = None  # graphmech.problems.balancing.scene.BalancingProblem of a [balancing] scene
+    cycle: Any = None  # graphmech.problems.cycle.scene.CycleScene: a full cycle and/or the characteristics
+    structure: Any = None  # graphmech.problems.structure.scene.StructureScene of a [structure] scene
 
 
 # --------------------------------------------------------------------------------------------
@@ -1993,8 +1993,8 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     units = _read_units(top)
     top.units = units
     has_cam, has_driver = "cam" in data, "driver" in data
-    if "structure" in data:  # mobility and structure: graphmech.scene_structure
-        from graphmech.scene_structure import parse_structure_scene
+    if "structure" in data:  # mobility and structure: graphmech.problems.structure.scene
+        from graphmech.problems.structure.scene import parse_structure_scene
 
         return parse_structure_scene(data, source, top, order)
     if has_cam and "flywheel" in data:  # one problem, as below
@@ -2017,17 +2017,17 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
                               f"{other} scene: put it in a scene of its own")
         raise SceneError(problems, source)
     if "forces" in data:
-        from graphmech.scene_forces import parse_forces_scene
+        from graphmech.problems.forces.scene import parse_forces_scene
 
         return parse_forces_scene(data, source, top, order)
     if "efficiency" in data or "balancing" in data:  # a problem of forces alone: no mechanism
-        from graphmech.scene_efficiency import parse_efficiency_scene
+        from graphmech.problems.efficiency.scene import parse_efficiency_scene
 
         return parse_efficiency_scene(data, source, top, order)
     if has_cam:
         return _parse_cam_scene(data, source, top, order)
     if "flywheel" in data:
-        from graphmech.scene_flywheel import parse_flywheel_scene
+        from graphmech.problems.flywheel.scene import parse_flywheel_scene
 
         return parse_flywheel_scene(data, source, top, order)
     elif not any(k in data for k in _LINKAGE_KEYS):
@@ -2042,7 +2042,7 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         _read_tail(top)
         problems.sort(key=lambda p: _rank(p, order))
         raise SceneError(problems, source)
-    from graphmech.scene_cycle import CYCLE_SHOW_CHOICES, read_cycle
+    from graphmech.problems.cycle.scene import CYCLE_SHOW_CHOICES, read_cycle
 
     default = ("cycle",) if "cycle" in data else ("characteristics",) if "characteristics" in data else SHOW_CHOICES
     title, show, find = _read_header(top, SHOW_CHOICES + CYCLE_SHOW_CHOICES, default)

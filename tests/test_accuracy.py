@@ -8,7 +8,7 @@ import math
 import pytest
 
 from graphmech.accuracy import CONSTRUCTION, SOURCES, estimate_from_three, observed_order, relative, richardson
-from graphmech.cam_check import PROFILE_DEVIATION
+from graphmech.problems.cam.check import PROFILE_DEVIATION
 from tests.conftest import SCENES, check_json
 
 REFERENCE_SCENES = sorted(SCENES.glob("*.toml"))
@@ -60,7 +60,8 @@ def test_the_reference_scenes_have_discretised_rows_to_judge():
 
 def test_a_drawing_does_not_pay_for_the_error_estimates(monkeypatch, tmp_path):
     """The estimates redo the work at 2N, 4N (8N) positions or divisions: only `check` asks for them."""
-    from graphmech import cam_check, flywheel_check
+    from graphmech.problems.cam import check as cam_check
+    from graphmech.problems.flywheel import check as flywheel_check
     from tests.conftest import run_cli
 
     def refuse(*args, **kwargs):

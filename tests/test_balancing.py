@@ -9,12 +9,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from graphmech.balancing_check import analyse_balancing, balancing_figure
+from graphmech.problems.balancing.check import analyse_balancing, balancing_figure
 from graphmech.errors import SceneError
 from graphmech.exact import balancing as ex
 from graphmech.mechanisms.rotor import RotorMass
 from graphmech.methods import balancing as gm
-from graphmech.render.primitives import Arrow
+from graphmech.drawing.primitives import Arrow
 from graphmech.scene import load_scene
 from tests.conftest import SCENES, check_json, run_cli, values
 

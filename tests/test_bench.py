@@ -23,7 +23,7 @@ def test_bench_records_and_agreement(tmp_path):
 
 
 def test_instant_centre_and_mobility_records():
-    from graphmech.bench_ic import ic_records
+    from graphmech.problems.instant_centres.bench import ic_records
 
     recs = {(r["method"], r["n"]): r for r in ic_records(quick=True)}
     for n in (1, 360):

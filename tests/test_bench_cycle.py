@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from graphmech.bench import convergence_order
-from graphmech.bench_cycle import cycle_notes, differentiation_records, sheet_record
+from graphmech.problems.cycle.bench import cycle_notes, differentiation_records, sheet_record
 
 
 def test_graphical_differentiation_converges_at_order_two():

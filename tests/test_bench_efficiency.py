@@ -1,7 +1,7 @@
 """The force and mass-radius polygon benchmark records: their shape and accuracy (not their speed)."""
 from __future__ import annotations
 
-from graphmech.bench_efficiency import efficiency_records
+from graphmech.problems.efficiency.bench import efficiency_records
 
 
 def test_efficiency_records_agree_with_the_closed_forms():

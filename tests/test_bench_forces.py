@@ -1,7 +1,7 @@
 """The kinetostatics benchmark's records: their shape and the agreement of the three methods."""
 from __future__ import annotations
 
-from graphmech.bench_forces import kinetostatic_notes, kinetostatic_records, sixbar, sixbar_loads
+from graphmech.problems.forces.bench import kinetostatic_notes, kinetostatic_records, sixbar, sixbar_loads
 
 
 def test_kinetostatic_records_agree(problems):

@@ -60,7 +60,7 @@ def test_a_base_circle_so_small_that_the_roller_undercuts(tmp_path):
 
 
 def test_a_roller_equal_to_the_smallest_radius_of_curvature_is_reported(tmp_path):
-    from graphmech.cam_check import analyse_cam
+    from graphmech.problems.cam.check import analyse_cam
     from graphmech.exact.cam import min_convex_rho_pitch
     from graphmech.scene import load_scene
 
@@ -108,7 +108,7 @@ def test_3600_divisions_converge(tmp_path):
 
 
 def test_a_scene_that_wants_the_diagrams_alone_builds_no_profile(tmp_path):
-    from graphmech.cam_check import analyse_cam
+    from graphmech.problems.cam.check import analyse_cam
     from graphmech.scene import load_scene
 
     an = analyse_cam(load_scene(scene(tmp_path, show='["displacement"]', find='["v_max"]')))
@@ -178,7 +178,7 @@ def test_the_exact_largest_pressure_angle_is_found_past_a_steep_flank():
 
 
 def test_an_extreme_reached_at_several_places_is_no_error_of_its_place():
-    from graphmech.cam_check import _tied
+    from graphmech.problems.cam.check import _tied
 
     # the drawing's place is another place where the exact extreme is reached: it is right
     assert _tied(5.0, 0.0, exact_there=0.040, extreme=0.040) == 5.0

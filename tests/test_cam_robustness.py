@@ -9,7 +9,7 @@ import warnings
 
 import pytest
 
-from graphmech.cam_check import PROFILE_DEVIATION
+from graphmech.problems.cam.check import PROFILE_DEVIATION
 from tests.conftest import SCENES, assert_refused, check_json, run_cli, values
 
 CAM = """
@@ -77,7 +77,7 @@ def test_a_phi_scale_whose_axis_leaves_the_page_is_refused_at_its_key(tmp_path, 
 
 
 def test_the_cycle_scenes_phi_axis_rule_is_the_same_function():
-    from graphmech import scene_cycle
+    from graphmech.problems.cycle import scene as scene_cycle
     from graphmech.scales import phi_axis_problem
 
     assert scene_cycle.phi_axis_problem is phi_axis_problem

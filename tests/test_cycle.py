@@ -99,7 +99,7 @@ def test_n_3600_is_checked_and_drawn_thinned(tmp_path):
 
 
 def test_only_what_is_asked_is_computed(tmp_path, monkeypatch):
-    import graphmech.cycle_check as cc
+    import graphmech.problems.cycle.check as cc
 
     calls = []
     real = cc.evaluate_cycle
@@ -237,9 +237,9 @@ branch = "right"
 
 
 def test_the_cycle_panel_numbers_positions_not_links():
-    from graphmech.cycle_check import analyse_cycle
-    from graphmech.methods.cycle_figures import cycle_items
-    from graphmech.render.primitives import Label
+    from graphmech.problems.cycle.check import analyse_cycle
+    from graphmech.problems.cycle.figures import cycle_items
+    from graphmech.drawing.primitives import Label
     from graphmech.scene import load_scene
 
     an = analyse_cycle(load_scene(SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"))
@@ -474,7 +474,7 @@ def test_characteristics_of_a_hundred_metre_drawing_stay_small(tmp_path):
     """Lengths ×50 at the stated μl = 0.5 mm/mm: the arcs of radius BC ∓ AB are metres long and
     drawn with a bounded number of chords (×1e12 took 2e13 points and exhausted memory; such a
     drawing, 1.4e14 mm across, is refused by the bound on the drawn size, as ×1e3 is: 10 m of paper)."""
-    from graphmech.render.primitives import ARC_MOST, Polyline
+    from graphmech.drawing.primitives import ARC_MOST, Polyline
 
     text = (SCENES / "linkage.fourbar_28_52_50_72.toml").read_text(encoding="utf-8").split("[measured]")[0]
     big = text
@@ -488,7 +488,7 @@ def test_characteristics_of_a_hundred_metre_drawing_stay_small(tmp_path):
                    "draws the mechanism 1.44e+05 mm across")
     p.write_text(text, encoding="utf-8")
     from graphmech.methods.characteristics import draw_characteristics
-    from graphmech.methods.cycle_figures import characteristics_items
+    from graphmech.problems.cycle.figures import characteristics_items
     from graphmech.scene import load_scene
 
     sc = load_scene(p)

@@ -6,7 +6,7 @@ import re
 
 import pytest
 
-from graphmech.check import analyse, judge
+from graphmech.problems.linkage.check import analyse, judge
 from graphmech.scene import parse_scene
 from tests.conftest import ROOT
 
@@ -18,11 +18,11 @@ BLOCKS = re.findall(r"```toml\n(.*?)```", (ROOT / "docs" / "scene-format.md").re
 @pytest.mark.parametrize("text", BLOCKS, ids=[f"example{i}" for i in range(len(BLOCKS))])
 def test_documented_scene_constructs_and_agrees_with_exact(text):
     scene = parse_scene(tomllib.loads(text), "doc.toml")
-    if scene.flywheel is not None:  # its analysis is graphmech.flywheel_check's; here it is parsed
-        pytest.importorskip("graphmech.flywheel_check")
+    if scene.flywheel is not None:  # its analysis is graphmech.problems.flywheel.check's; here it is parsed
+        pytest.importorskip("graphmech.problems.flywheel.check")
         return
     if scene.forces is not None:  # the force polygons against the matrix method and the lever
-        from graphmech.force_check import analyse_forces
+        from graphmech.problems.forces.check import analyse_forces
 
         fan = analyse_forces(scene)
         assert fan.rows
@@ -31,9 +31,9 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
         return
     if scene.efficiency is not None or scene.balancing is not None:
         if scene.efficiency is not None:
-            from graphmech.efficiency_check import analyse_efficiency as analyse_, judge_efficiency as judge_
+            from graphmech.problems.efficiency.check import analyse_efficiency as analyse_, judge_efficiency as judge_
         else:
-            from graphmech.balancing_check import analyse_balancing as analyse_, judge_balancing as judge_
+            from graphmech.problems.balancing.check import analyse_balancing as analyse_, judge_balancing as judge_
         fan = analyse_(scene)
         assert fan.rows
         for row in fan.rows:  # polygons against the closed forms
@@ -41,8 +41,8 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
         for verdict in judge_(fan):
             assert verdict.ok, verdict
         return
-    if scene.structure is not None:  # the count against the Jacobian's rank (graphmech.structure_check)
-        from graphmech.structure_check import analyse_structure
+    if scene.structure is not None:  # the count against the Jacobian's rank (graphmech.problems.structure.check)
+        from graphmech.problems.structure.check import analyse_structure
 
         san = analyse_structure(scene)
         assert san.mobility is not None or san.cases
@@ -50,7 +50,7 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
             assert row.graphical == row.exact, row
         return
     if scene.cam is not None:
-        from graphmech.cam_check import analyse_cam, judge_cam
+        from graphmech.problems.cam.check import analyse_cam, judge_cam
 
         can = analyse_cam(scene)
         for row in can.rows:  # a discretising method: finite, and within a few % at the scene's step
@@ -59,7 +59,7 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
             assert verdict.ok, verdict
         return
     if scene.cycle is not None:  # a full cycle / the characteristics: drawn against closed forms
-        from graphmech.cycle_check import analyse_cycle, judge_cycle
+        from graphmech.problems.cycle.check import analyse_cycle, judge_cycle
 
         can = analyse_cycle(scene)
         for row in can.rows:  # the diagrams' chords carry O(1/N²); everything else is exact

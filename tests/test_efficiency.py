@@ -11,11 +11,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from graphmech.efficiency_check import analyse_efficiency, efficiency_figure
+from graphmech.problems.efficiency.check import analyse_efficiency, efficiency_figure
 from graphmech.errors import SceneError
 from graphmech.exact import efficiency as ex
 from graphmech.methods import efficiency as gm
-from graphmech.render.primitives import Arrow, Segment
+from graphmech.drawing.primitives import Arrow, Segment
 from graphmech.scene import load_scene, parse_scene
 from tests.conftest import ROOT, SCENES, check_json, run_cli, values
 
@@ -341,8 +341,8 @@ def test_any_mutation_checks_or_is_refused_in_one_line(data):
     a refusal in one line — never an internal error."""
     import copy
 
-    from graphmech.balancing_check import analyse_balancing
-    from graphmech.efficiency_check import analyse_efficiency
+    from graphmech.problems.balancing.check import analyse_balancing
+    from graphmech.problems.efficiency.check import analyse_efficiency
     from graphmech.errors import GraphmechError
 
     base = tomllib.loads(data.draw(st.sampled_from(_forces_blocks())))
@@ -366,7 +366,7 @@ def test_any_mutation_checks_or_is_refused_in_one_line(data):
         return
     for row in an.rows:
         assert math.isfinite(row.graphical) and math.isfinite(row.exact) and math.isfinite(row.rel_error), row
-    from graphmech.balancing_check import balancing_figure
+    from graphmech.problems.balancing.check import balancing_figure
     from graphmech.render.svg import render_svg
 
     try:  # and its figure draws, or a stated scale that cannot draw it is refused in one line

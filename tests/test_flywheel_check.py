@@ -40,7 +40,7 @@ def engine(tmp_path, *, show='["energy"]', find='["J_F"]', n=36, delta=0.01, met
 
 
 def test_an_indicator_scene_draws_no_wittenbauer_and_integrates_no_motion(tmp_path):
-    from graphmech.flywheel_check import analyse_flywheel
+    from graphmech.problems.flywheel.check import analyse_flywheel
     from graphmech.scene import load_scene
 
     an = analyse_flywheel(load_scene(engine(tmp_path)))
@@ -136,8 +136,8 @@ def test_a_load_with_a_step(tmp_path):
 def test_a_braking_scene_draws_its_rundown_and_reads_t_stop_off_it():
     """ω(t) from ω0 = 100 rad/s at μω = 2 (rad/s)/mm falls to 0 at 125 mm of t at μt = 0.02 s/mm: 2.5 s."""
     from graphmech.cli import render_scene
-    from graphmech.methods.braking_figures import rundown_panel
-    from graphmech.render.primitives import Segment
+    from graphmech.problems.flywheel.braking_figures import rundown_panel
+    from graphmech.drawing.primitives import Segment
 
     doc = check_json(SCENES / "fly.brake_time.toml")
     q = values(doc)["t_stop"]

@@ -177,7 +177,7 @@ def assert_honest(rows) -> None:
 
 @pytest.mark.parametrize("path", FLYWHEEL_SCENES, ids=lambda p: p.stem)
 def test_every_reference_flywheel_row_estimates_its_own_error(path):
-    from graphmech.flywheel_check import analyse_flywheel
+    from graphmech.problems.flywheel.check import analyse_flywheel
     from graphmech.scene import load_scene
 
     an = analyse_flywheel(load_scene(path))
@@ -189,7 +189,7 @@ def test_every_reference_flywheel_row_estimates_its_own_error(path):
 def test_the_compressor_s_estimates_hold_over_an_n_sweep(n):
     import dataclasses
 
-    from graphmech.flywheel_check import analyse_flywheel
+    from graphmech.problems.flywheel.check import analyse_flywheel
     from graphmech.scene import load_scene
 
     sc = load_scene(SCENES / "fly.compressor_course_project.toml")

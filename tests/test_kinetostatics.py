@@ -14,7 +14,7 @@ from hypothesis import given, settings, strategies as st
 
 import graphmech.methods.kinetostatics as K
 from graphmech.errors import SceneError
-from graphmech.force_check import analyse_forces
+from graphmech.problems.forces.check import analyse_forces
 from graphmech.mechanisms.forces import ForceModel, LinkMass
 from graphmech.scene import load_scene, parse_scene
 from tests.conftest import ROOT, SCENES, check_json, fourbar_scene, run_cli
@@ -183,7 +183,7 @@ def test_only_the_balancing_moment_builds_no_polygons_and_no_lever(monkeypatch):
     built = []
     original = K.GroupPolygon
     monkeypatch.setattr(K, "GroupPolygon", lambda *a, **k: built.append(a[0]) or original(*a, **k))
-    import graphmech.force_check as fc
+    import graphmech.problems.forces.check as fc
 
     monkeypatch.setattr(fc, "zhukovsky_lever", lambda *a, **k: pytest.fail("lever built"))
     fa = analyse_forces(_scene(_fourbar(90, find='["M_b"]')))
@@ -725,8 +725,8 @@ def test_the_fit_counts_the_footer_of_the_rendered_sheet(tmp_path):
 def test_a_guide_reaction_whose_line_crosses_far_off_is_drawn_at_the_slider_with_its_moment():
     # RPP, slot ⟂ guide, friction: the guide's reaction on slot 3 is nearly along the guide and its
     # line of action crossed the guide 0.55 m from C — its arrow floated 270 mm off the free body
-    from graphmech.methods.force_figures import free_body_items
-    from graphmech.render.primitives import Arrow, Label
+    from graphmech.problems.forces.figures import free_body_items
+    from graphmech.drawing.primitives import Arrow, Label
 
     text = RPP_LOADED.replace("slot_angle_deg = 60", "slot_angle_deg = 90").replace(
         "angle_deg = { start = 0, stop = 360, step = 60 }", "angle_deg = 45")

@@ -14,7 +14,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from graphmech.force_check import analyse_forces
+from graphmech.problems.forces.check import analyse_forces
 from graphmech.mechanisms.linkage import Positions
 from graphmech.methods.kinetostatics import inertia_load
 from graphmech.scene import load_scene

@@ -890,7 +890,7 @@ def test_any_mutation_gives_a_scene_or_a_scene_error(data: st.DataObject) -> Non
     if scene.structure is not None:  # a topology: its analysis must not fail either
         import json
 
-        from graphmech.structure_check import analyse_structure
+        from graphmech.problems.structure.check import analyse_structure
 
         assert scene.linkage is None and scene.positions is None
         json.dumps(analyse_structure(scene).summary(), allow_nan=False)

@@ -32,7 +32,7 @@ from graphmech.scene import (
     load_scene,
     parse_scene,
 )
-from graphmech.scene_flywheel import FLYWHEEL_SHOW_DEFAULT
+from graphmech.problems.flywheel.scene import FLYWHEEL_SHOW_DEFAULT
 from tests.conftest import reference_area, run_cli
 
 ROOT = Path(__file__).resolve().parents[1]

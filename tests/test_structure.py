@@ -9,7 +9,7 @@ import pytest
 from graphmech.errors import SceneError
 from graphmech.mechanisms.topology import Pair, Topology, mobility, structure
 from graphmech.scene import load_scene, parse_scene
-from graphmech.structure_check import analyse_structure
+from graphmech.problems.structure.check import analyse_structure
 from tests.conftest import SCENES, check_json, run_cli
 
 

@@ -16,7 +16,7 @@ evaluated at all N positions in one vectorised pass (``Plan.evaluate_batch``); f
   positions (the middles of the middles).
 
 The φ axis is a time axis (t = φ/ω₁) only for a crank turning uniformly, so the diagrams need
-ε₁ = 0. Nothing here draws; :mod:`graphmech.methods.cycle_figures` does.
+ε₁ = 0. Nothing here draws; :mod:`graphmech.problems.cycle.figures` does.
 """
 from __future__ import annotations
 

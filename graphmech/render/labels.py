@@ -22,7 +22,7 @@ already placed label, further rings (3 mm apart, up to four) are tried before gi
 
 Examples
 --------
->>> from graphmech.render.primitives import Label
+>>> from graphmech.drawing.primitives import Label
 >>> [p] = place_labels([Label("B", (0.0, 0.0))])
 >>> p.center[0] > 0 and p.center[1] > 0        # upper right when nothing is in the way
 True
@@ -38,7 +38,7 @@ from typing import Sequence
 
 import numpy as np
 
-from graphmech.render.primitives import XY, Label
+from graphmech.drawing.primitives import XY, Label
 from graphmech.render.style import DEFAULT, Style
 
 #: (xmin, ymin, xmax, ymax), mm.

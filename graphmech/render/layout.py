@@ -13,7 +13,7 @@ millimetres (origin top-left, y down). ``PanelPlacement.to_page`` is the only tr
 
 Examples
 --------
->>> from graphmech.render.primitives import Panel, Segment, Sheet
+>>> from graphmech.drawing.primitives import Panel, Segment, Sheet
 >>> p = Panel("a", "Mechanism", (Segment((0.0, 0.0), (40.0, 0.0)),))
 >>> lay = layout_sheet(Sheet("t", (p, p)))
 >>> lay.warnings
@@ -28,7 +28,7 @@ from dataclasses import dataclass
 from typing import Sequence
 
 from graphmech.render.labels import Box, text_box_size
-from graphmech.render.primitives import (
+from graphmech.drawing.primitives import (
     XY,
     ArcArrow,
     Arrow,

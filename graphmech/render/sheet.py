@@ -1,4 +1,4 @@
-"""The frontend: a :class:`~graphmech.render.primitives.Sheet` → calls on a backend.
+"""The frontend: a :class:`~graphmech.drawing.primitives.Sheet` → calls on a backend.
 
 What the frontend decides, so that every backend draws the same figure:
 
@@ -21,7 +21,7 @@ What the frontend decides, so that every backend draws the same figure:
 
 Examples
 --------
->>> from graphmech.render.primitives import Arrow, Panel, Sheet
+>>> from graphmech.drawing.primitives import Arrow, Panel, Sheet
 >>> from graphmech.render.recording import RecordingBackend
 >>> sheet = Sheet("", (Panel("v", "", (Arrow((0.0, 0.0), (20.0, 0.0)),)),))
 >>> calls = draw_sheet(sheet, RecordingBackend())
@@ -39,7 +39,7 @@ from typing import Callable, Sequence, TypeVar, Union
 from graphmech.render.backend import Backend
 from graphmech.render.labels import PlacedLabel, place_labels
 from graphmech.render.layout import PanelPlacement, layout_sheet, slider_corners
-from graphmech.render.primitives import (
+from graphmech.drawing.primitives import (
     XY,
     ArcArrow,
     Arrow,

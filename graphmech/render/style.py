@@ -1,7 +1,7 @@
 """Line weights, colours, dashes, arrowheads and lettering of a textbook figure.
 
 Every size is paper millimetres: a style never depends on a panel's scale μ. A backend looks a
-pen up by its *style key*; the keys are the four roles of :mod:`graphmech.render.primitives`
+pen up by its *style key*; the keys are the four roles of :mod:`graphmech.drawing.primitives`
 (``given``, ``construction``, ``result``, ``label``) and the symbol pens the frontend uses
 (``frame`` for pivot triangles and guides, ``hatch`` for ground hatching, ``hinge`` for the
 white-filled joint circles, ``slider`` for the white-filled slider blocks, ``text`` for titles

@@ -30,7 +30,7 @@ from typing import Any, Callable, Sequence
 import svgwrite
 
 from graphmech.render.backend import Anchor, PagePoint
-from graphmech.render.primitives import Sheet
+from graphmech.drawing.primitives import Sheet
 from graphmech.render.sheet import draw_sheet
 from graphmech.render.style import DEFAULT, Style
 

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from graphmech.bench_flywheel import compressor_machine
+from graphmech.problems.flywheel.bench import compressor_machine
 from graphmech.exact.flywheel import ExactMachine, Extremes, table_line, table_value
 from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage, LinkPoint
 from graphmech.mechanisms.machine import (

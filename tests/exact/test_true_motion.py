@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from graphmech.bench_flywheel import compressor_machine
+from graphmech.problems.flywheel.bench import compressor_machine
 from graphmech.exact.flywheel import ExactMachine
 from graphmech.exact.true_motion import (
     TrueMotion,

@@ -9,10 +9,10 @@ import pytest
 
 from graphmech.mechanisms.cam import Contact, DiscCam, MotionProgram, OscillatingFollower, Segment, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement
-from graphmech.methods.cam_figures import cam_sheet, numbered_every
+from graphmech.problems.cam.figures import cam_sheet, numbered_every
 from graphmech.methods.cam_inversion import divisions, draw_profile
 from graphmech.render.layout import item_box, layout_sheet
-from graphmech.render.primitives import (Arrow, Circle, FixedPivot, Label, Panel, Polyline, Segment as Line, Sheet)
+from graphmech.drawing.primitives import (Arrow, Circle, FixedPivot, Label, Panel, Polyline, Segment as Line, Sheet)
 from graphmech.render.recording import RecordingBackend
 from graphmech.render.sheet import dash_pieces, draw_sheet, panel_labels, panel_shapes
 from graphmech.render.svg import render_svg

@@ -5,9 +5,9 @@ import math
 
 import pytest
 
-from graphmech.check import analyse, page_size, position_text
-from graphmech.methods.figures import display, linkage_sheet
-from graphmech.render.primitives import ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Segment, Slider
+from graphmech.problems.linkage.check import analyse, page_size, position_text
+from graphmech.problems.linkage.figures import display, linkage_sheet
+from graphmech.drawing.primitives import ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Segment, Slider
 from graphmech.render.recording import RecordingBackend
 from graphmech.render.sheet import draw_sheet
 from graphmech.scene import load_scene

@@ -7,11 +7,11 @@ import numpy as np
 import pytest
 
 from graphmech.methods.flywheel import design_flywheel
-from graphmech.methods.flywheel_figures import (CLIP_MM, MOST_NUMBERS, PANELS, count_every, flywheel_sheet,
+from graphmech.problems.flywheel.figures import (CLIP_MM, MOST_NUMBERS, PANELS, count_every, flywheel_sheet,
                                                 inertia_phi_scale, panel_members)
 from graphmech.render.labels import boxes_overlap
 from graphmech.render.layout import layout_sheet
-from graphmech.render.primitives import Arrow, Circle, Label, Panel, Polyline, Segment, Sheet
+from graphmech.drawing.primitives import Arrow, Circle, Label, Panel, Polyline, Segment, Sheet
 from graphmech.render.recording import RecordingBackend
 from graphmech.render.sheet import draw_sheet, panel_labels, panel_shapes
 from graphmech.render.svg import render_svg

@@ -10,9 +10,9 @@ from itertools import combinations
 import numpy as np
 import pytest
 
-from graphmech.check import analyse
+from graphmech.problems.linkage.check import analyse
 from graphmech.errors import SceneError
-from graphmech.ic_check import exact_centre, positions_mm
+from graphmech.problems.instant_centres.check import exact_centre, positions_mm
 from graphmech.mechanisms.linkage import Crank, Linkage, RRR
 from graphmech.methods.instant_centres import centre_name, instant_centres
 from graphmech.scene import parse_scene
@@ -315,8 +315,8 @@ def test_bad_instant_centre_names_are_one_line_errors(name, reason):
 
 def test_the_sheet_draws_every_centre_and_the_polygon_of_links():
     from graphmech.cli import render_scene
-    from graphmech.methods.ic_figures import ic_panels
-    from graphmech.render.primitives import Sheet
+    from graphmech.problems.instant_centres.figures import ic_panels
+    from graphmech.drawing.primitives import Sheet
     from graphmech.render.recording import RecordingBackend
     from graphmech.render.sheet import draw_sheet
 
@@ -398,7 +398,7 @@ def test_measured_instant_centre_values_are_judged_within_the_drawing_precision(
     assert code == 2 and "names no instant centre" in err
     an_text = SLIDER_CRANK
     with pytest.raises(SceneError) as e:
-        from graphmech.check import judge
+        from graphmech.problems.linkage.check import judge
 
         sc = scene_of(an_text, find=["v_C"])
         sc = __import__("dataclasses").replace(sc, measured=(("omega_3_ic", 2.0),))
@@ -527,7 +527,7 @@ def test_every_documented_and_reference_linkage_has_all_its_centres_right(name, 
 def test_the_at_ic_alias_names_the_same_values():
     data = tomllib.loads((SCENES / "kin.fourbar_instant_centres.toml").read_text())
     data["find"], data["measured"] = ["omega_3@ic", "v_C@ic"], {"omega_3@ic": 2.55}
-    from graphmech.check import judge
+    from graphmech.problems.linkage.check import judge
 
     an = analyse(parse_scene(data, "alias.toml"))
     assert [(r.name, round(r.graphical, 9)) for r in an.rows] == [("omega_3_ic", 2.538487323), ("v_C_ic", 0.400984584)]

@@ -8,7 +8,7 @@ import warnings
 import pytest
 
 from graphmech.render.layout import layout_sheet
-from graphmech.render.primitives import (
+from graphmech.drawing.primitives import (
     Arrow,
     Circle,
     FixedPivot,

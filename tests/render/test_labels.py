@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from graphmech.render.labels import boxes_overlap, place_labels, text_box_size
-from graphmech.render.primitives import Label
+from graphmech.drawing.primitives import Label
 
 
 def box_hits_segment(box, p0, p1, n: int = 400) -> bool:

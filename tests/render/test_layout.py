@@ -4,7 +4,7 @@ from __future__ import annotations
 import pytest
 
 from graphmech.render.layout import item_box, layout_sheet, panel_bbox
-from graphmech.render.primitives import Arrow, FixedPivot, Hinge, Label, Panel, Segment, Sheet
+from graphmech.drawing.primitives import Arrow, FixedPivot, Hinge, Label, Panel, Segment, Sheet
 from graphmech.render.style import DEFAULT
 
 

@@ -9,7 +9,7 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from graphmech.render.layout import layout_sheet
-from graphmech.render.primitives import (
+from graphmech.drawing.primitives import (
     Arrow,
     FixedPivot,
     GuideLine,

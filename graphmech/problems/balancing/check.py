@@ -1,0 +1,214 @@
+"""Checking a balancing scene: the mass-radius polygons against the equations of balance.
+
+The correction's m·r, magnitude and angle are read off the polygons of
+:mod:`graphmech.methods.balancing` (drawn length × μW; the closing side's direction) and set
+against :mod:`graphmech.exact.balancing`, which solves the balance of forces (and of moments)
+directly; the rotor with the *drawn* corrections added is then shown to have zero resultant force
+and moment to round-off (``residual_force``, ``residual_moment``). A plane that needs no
+correction says so instead of an angle.
+"""
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+from graphmech.problems.linkage.check import Row, Verdict, close_names, judge_value, measured_entries
+from graphmech.errors import SceneError
+from graphmech.exact import balancing as ex
+from graphmech.methods import balancing as gm
+from graphmech.scales import format_scale, round_scale
+from graphmech.problems.balancing.scene import DEFAULT_FIND, QUANTITIES, BalancingProblem
+from graphmech.tolerances import EPS
+
+#: The longest polygon side when graphmech chooses μW, mm.
+POLYGON_MM = 60.0
+#: Above this z/Δ (the largest |z| over the planes' distance Δ) the two-plane split amplifies the
+#: round-off of the z's past 1e-10 of the corrections: warned of and flagged ill-conditioned.
+ILL_SPLIT = 1e6
+
+
+@dataclass
+class BalancingAnalysis:
+    """What one balancing scene produced: the corrections (one per plane), rows, warnings."""
+
+    scene: Any
+    problem: BalancingProblem
+    corrections: tuple[gm.Correction, ...] = ()
+    rows: list[Row] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    scales: dict[str, float] = field(default_factory=dict)
+    stated: set[str] = field(default_factory=set)
+    extra_measured: tuple[tuple[str, float], ...] = ()
+
+    def scale_notes(self) -> list[str]:
+        return [format_scale(k, v) + ("" if k in self.stated else " (chosen)") for k, v in self.scales.items()]
+
+    @property
+    def size(self) -> float:
+        """Σ|mᵢrᵢ|, kg·m: the characteristic size of the residuals."""
+        return sum(u.m * u.r for u in self.problem.masses)
+
+    @property
+    def split_condition(self) -> float:
+        """z/Δ: how much the lever rule (z_II − z)/Δ amplifies a rounding of the z's (1 for a
+        static balance). The corrections grow as (rotor length)/Δ and cancel each other's force."""
+        p = self.problem
+        if p.planes is None:
+            return 1.0
+        span = abs(p.planes[1] - p.planes[0])
+        return max([abs(u.z) for u in p.masses] + [abs(z) for z in p.planes]) / span
+
+
+def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
+    p: BalancingProblem = scene.balancing
+    q = QUANTITIES[p.type]
+    names = list(scene.find) or list(DEFAULT_FIND[p.type])
+    problems = []
+    for key, name in [(f"find[{i}]", n) for i, n in enumerate(scene.find)] + \
+            [(k, n) for k, n, _ in measured_entries(scene, extra)]:
+        if name not in q:
+            problems.append((key, f"unknown {p.type} balancing quantity {name!r}{close_names(name, q)}"))
+    if problems:
+        raise SceneError(problems, scene.source)
+    return names
+
+
+def analyse_balancing(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> BalancingAnalysis:
+    """Draw the polygons the scene needs and build its check table."""
+    p: BalancingProblem = scene.balancing
+    names = requested(scene, extra_measured)
+    an = BalancingAnalysis(scene, p, extra_measured=tuple(extra_measured))
+    masses = list(p.masses)
+    # The polygons are linear in 1/μW: drawn once at 1 kg·m/mm they give every length, so a stated
+    # μW is judged (and an absurd one refused) before anything is divided by it.
+    trial = _balance(p, masses, 1.0)
+    longest = max([math.hypot(s.end[0] - s.start[0], s.end[1] - s.start[1]) for c in trial
+                   for s in c.sides + (c.closing,)] + [EPS])
+    if "W" in scene.scales:
+        an.scales["W"] = scene.scales["W"]
+        an.stated.add("W")
+        drawn = longest / an.scales["W"]
+        if not 2.0 <= drawn <= 2000.0:
+            raise SceneError([("scales", f"μW = {an.scales['W']:g} kg·m/mm draws the largest mass-radius product "
+                                         f"{drawn:.3g} mm long: choose μW so that it is 2 … 2000 mm (about "
+                                         f"{round_scale(longest / POLYGON_MM):g} kg·m/mm)")],
+                             scene.source)
+    else:  # a round μW that draws the longest side POLYGON_MM long
+        an.scales["W"] = round_scale(longest / POLYGON_MM)
+    an.corrections = _balance(p, masses, an.scales["W"])
+    for c in an.corrections:
+        if c.balanced and c.plane and not any(share for _, share in c.shares):
+            an.warnings.append(f"plane {c.plane}: every mass lies in the other correction plane, so none has a "
+                               "share here: no correction mass needed (its polygon is a point)")
+        elif c.balanced:
+            where = "the rotor is" if p.type == "static" else f"plane {c.plane} is"
+            an.warnings.append(f"{where} already balanced: no correction mass needed (the polygon closes by "
+                               "itself, so there is no angle)")
+    kappa = an.split_condition
+    if kappa > ILL_SPLIT:
+        span = abs(p.planes[1] - p.planes[0])  # type: ignore[index]
+        an.warnings.append(f"the correction planes are only {span * 1000:.3g} mm apart against z up to "
+                           f"{kappa * span * 1000:.4g} mm: the two-plane split amplifies round-off by z/Δ = "
+                           f"{kappa:.2g} (ill-conditioned; the corrections are good to about {kappa * 2e-16:.0e} "
+                           "and cancel each other's force) — put the planes further apart")
+    for name in names:
+        row = _row(an, name)
+        if row is not None:
+            an.rows.append(row)
+    return an
+
+
+def _balance(p: BalancingProblem, masses: list[gm.Mass], mu_W: float) -> tuple[gm.Correction, ...]:
+    if p.type == "static":
+        return (gm.static_balance(masses, p.r_b[0], mu_W),)
+    return gm.dynamic_balance(masses, p.planes[0], p.planes[1], (p.r_b[0], p.r_b[1]), mu_W)  # type: ignore[index]
+
+
+def _exact(an: BalancingAnalysis) -> tuple[complex, ...]:
+    p = an.problem
+    us = [ex.Unbalance(u.m, u.r, u.theta, u.z) for u in p.masses]
+    if p.type == "static":
+        return (ex.static_correction(us),)
+    return ex.dynamic_correction(us, p.planes[0], p.planes[1])  # type: ignore[index]
+
+
+def _deg360(theta: float) -> float:
+    """An angle in degrees in [0, 360) (−0° and −1e-17° are 0°, not 360°)."""
+    g = math.degrees(theta) % 360.0
+    return 0.0 if g >= 360.0 else g + 0.0
+
+
+def _angle_diff_deg(a: float, b: float) -> float:
+    return (a - b + 180.0) % 360.0 - 180.0
+
+
+def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | None, float, float] | None:
+    """(graphical, exact, drawn mm or None, μ, characteristic); None for the angle of no correction."""
+    p = an.problem
+    mu = an.scales["W"]
+    if name.startswith("residual"):
+        us = [ex.Unbalance(u.m, u.r, u.theta, u.z) for u in p.masses]
+        planes = (0.0,) if p.type == "static" else p.planes
+        drawn = [(0j if c.balanced else cmath.rect(c.W, c.theta), z) for c, z in zip(an.corrections, planes)]  # type: ignore[arg-type]
+        force, moment = ex.residuals(us, drawn, planes[0])  # about plane I: no far-off lever to cancel
+        span = 1.0 if p.type == "static" else abs(p.planes[1] - p.planes[0])  # type: ignore[index]
+        if name == "residual_force":
+            return force, 0.0, None, 1.0, an.size
+        return moment, 0.0, None, 1.0, an.size * span
+    plane = name.split("_", 1)[1]
+    k = 0 if plane in ("b", "I") else 1
+    c, w = an.corrections[k], _exact(an)[k]
+    if name.startswith("W"):
+        return c.W, abs(w), c.drawn_mm, mu, an.size
+    if name.startswith("m"):
+        return c.m_b, abs(w) / c.r_b, c.drawn_mm, mu / c.r_b, an.size / c.r_b
+    if c.balanced:
+        return None
+    g = gm.degrees_0_360(float(c.theta))  # type: ignore[arg-type]
+    e = _deg360(cmath.phase(w))
+    return g, g - _angle_diff_deg(g, e), None, 1.0, 360.0
+
+
+def _row(an: BalancingAnalysis, name: str) -> Row | None:
+    v = _values(an, name)
+    if v is None:
+        return None
+    g, e, drawn, scale, char = v
+    unit = QUANTITIES[an.problem.type][name]
+    return Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), char, 1e-300),
+               an.split_condition > ILL_SPLIT)
+
+
+def judge_balancing(an: BalancingAnalysis, precision_mm: float | None = None) -> list[Verdict]:
+    """Hand values against the drawing: m·r and m within the drawing precision × their μ, angles
+    within the angle a precision-long slip at the closing side's end turns it by."""
+    prec = precision_mm if precision_mm is not None else an.scene.precision_mm
+    out = []
+    for _key, name, value in measured_entries(an.scene, an.extra_measured):
+        v = _values(an, name)
+        unit = QUANTITIES[an.problem.type][name]
+        if v is None:
+            out.append(Verdict(name, value, 0.0, 0.0, False, unit))
+            continue
+        g, _e, drawn, scale, _c = v
+        if unit == "deg":
+            c = an.corrections[0 if name.endswith(("_b", "_I")) else 1]
+            tol = math.degrees(math.atan2(prec, max(c.drawn_mm, prec)))
+            out.append(Verdict(name, value, g, tol, abs(_angle_diff_deg(value, g)) <= tol, unit))
+        else:
+            out.append(judge_value(name, value, g, drawn, scale, prec, unit))
+    return out
+
+
+__all__ = ["BalancingAnalysis", "analyse_balancing", "judge_balancing", "requested"]
+
+
+def balancing_figure(an: BalancingAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Any:
+    """The sheet of the scene's ``show``: the rotor and the mass-radius polygons."""
+    from graphmech.problems.balancing.figures import balancing_sheet
+
+    p = an.problem
+    return balancing_sheet(an.scene.title, p.type, p.masses, p.planes, an.corrections, an.scales["W"],
+                           list(an.scene.show), page, footer)

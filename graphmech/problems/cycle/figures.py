@@ -1,0 +1,498 @@
+"""The figures of a full cycle and of a linkage's characteristics, as a course sheet draws them.
+
+cycle — the kinematic diagram at N positions overlaid (at μl)
+    position 1 drawn bold with its letters, the others thin, the crank pin's positions numbered
+    1 … N in the crank's sense; with ``paths`` the paths of the chosen points (coupler curves)
+    through all N positions, their positions dotted.
+velocity, acceleration — the polygons of all positions with a common pole (at μv, μa)
+    each position's vectors from the pole and its polygon's sides; the images lettered with the
+    position's number (b₁, c₁ … b₁₂, c₁₂).
+diagrams — per slider (link): s–φ, v–φ and a–φ stacked (ψ–φ, ω–φ, ε–φ for a link)
+    s read off the kinematic diagram at the positions; v–φ by graphical differentiation: the
+    pole P₁ at H₁ left of the origin, rays from it parallel to the chords of s–φ cut the v axis,
+    each value carried across to the middle of its interval; a–φ likewise from v–φ with H₂.
+characteristics — the extreme positions
+    both extreme positions (position 1 bold, the other dashed), the arcs of radius BC − AB and
+    BC + AB about A that find them, the crank angle θ between them and the swing ψ (or the
+    stroke H) marked; the position of the smallest transmission angle γ_min thin, with γ_min
+    marked at C.
+
+Many positions (N up to 3600) are drawn in full in the curves and paths; the overlaid
+mechanisms, polygons, numbers and rays are thinned to a readable count, and the panel's note
+says which positions are drawn.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Sequence
+
+import numpy as np
+
+from graphmech.construction.graph import values_at
+from graphmech.problems.linkage.figures import display, mechanism_items, polygon_items
+from graphmech.problems.flywheel.figures import (AXIS_OVERRUN, NUMBER_SIZE, _moved, _phi_axis_numbers, count_every,
+                                                numbers_every)
+from graphmech.drawing.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
+                                         Polyline, Primitive, Segment, Sheet, Slider, angle_arc)
+from graphmech.render.style import subscript
+from graphmech.scales import format_scale
+
+__all__ = ["cycle_sheet", "cycle_items", "polygons_items", "diagram_items", "characteristics_items", "MOST_DRAWN"]
+
+#: At most this many overlaid mechanisms (and polygons) are drawn; at most this many rays.
+MOST_DRAWN, MOST_RAYS = 24, 12
+#: Path points get a dot up to this many positions.
+MOST_DOTS = 72
+#: Radius of a dot, mm; of the angle marks θ, ψ, γ.
+DOT, MARK_R = 0.35, 9.0
+#: Vertical gap between the stacked diagrams, mm.
+STACK_GAP = 14.0
+
+_BELOW = ((0.0, 1.0), (1.0, 0.0), (-1.0, 0.0))
+
+
+def _pt(v: Any) -> XY:
+    return (float(v[0]), float(v[1]))
+
+
+def _unit(a: XY, b: XY) -> XY:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n = math.hypot(dx, dy)
+    return (dx / n, dy / n) if n > 0 else (0.0, 0.0)
+
+
+def drawn_positions(n: int) -> list[int]:
+    """Which of N positions are drawn overlaid (0-based): all up to :data:`MOST_DRAWN`, else every k-th.
+
+    >>> drawn_positions(12)[-1], len(drawn_positions(3600)), drawn_positions(3600)[:3]
+    (11, 18, [0, 200, 400])
+    """
+    return list(range(0, n, count_every(n, MOST_DRAWN)))
+
+
+#: A drawn curve keeps a vertex only this far (mm) along it from the last one kept: a 0.5 mm chord
+#: departs from an arc of 5 mm radius by 0.006 mm, far below the pen.
+CURVE_STEP_MM = 0.5
+
+
+def thinned(points: Any, step: float = CURVE_STEP_MM) -> tuple[XY, ...]:
+    """The vertices of a drawn curve at least ``step`` mm apart along it (ends kept).
+
+    Thousands of positions put vertices hundredths of a millimetre apart; the curve looks the same
+    through every ``step`` mm, and the sheet's label placer works on far fewer segments.
+
+    >>> thinned([(0.0, 0.0), (0.1, 0.0), (0.2, 0.0), (0.3, 0.0), (1.0, 0.0)], step=0.25)
+    ((0.0, 0.0), (0.3, 0.0), (1.0, 0.0))
+    """
+    p = np.asarray(points, dtype=float)
+    if len(p) <= 2:
+        return tuple(map(_pt, p))
+    s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(p, axis=0).T))])
+    bins = np.floor(s / step + 1e-9)
+    keep = np.flatnonzero(np.diff(bins, prepend=-1.0) > 0)
+    if keep[-1] != len(p) - 1:
+        keep = np.append(keep, len(p) - 1)
+    return tuple(map(_pt, p[keep]))
+
+
+def _which(n: int) -> str:
+    k = count_every(n, MOST_DRAWN)
+    return "" if k == 1 else f"every {k}th of the {n} positions drawn"
+
+
+def _guide_spans(cyc: Any) -> dict[int, tuple[float, float]]:
+    """The stretch of each guide its slider covers over the cycle (mm along the guide)."""
+    from graphmech.mechanisms.linkage import RPP, RRP, SliderInput
+
+    linkage, b = cyc.build.linkage, cyc.build
+    guides = [(-1, linkage.driver.guide, linkage.driver.point)] if isinstance(linkage.driver, SliderInput) else []
+    guides += [(k, y.guide, y.c) for k, y in enumerate(linkage.dyads) if isinstance(y, (RRP, RPP))]
+    spans = {}
+    for k, g, point in guides:
+        if point in cyc.mech:
+            ox, oy = b.to_drawing(g.through)
+            s = (cyc.mech[point][:, 0] - ox) * g.direction[0] + (cyc.mech[point][:, 1] - oy) * g.direction[1]
+            spans[k] = (float(s.min()), float(s.max()))
+    return spans
+
+
+# ----------------------------------------------------------------------------- the mechanism
+def cycle_items(cyc: Any, paths: Sequence[str] = ()) -> list[Primitive]:
+    """The mechanism at its drawn positions, numbered, with the paths of ``paths``."""
+    spans = _guide_spans(cyc)
+    crank = cyc.build.linkage.driver
+    items: list[Primitive] = []
+    first: list[Primitive] = []
+    for i in drawn_positions(cyc.n):
+        pos = {name: _pt(xy[i]) for name, xy in cyc.mech.items()}
+        its = mechanism_items(cyc.build, pos, spans)
+        if i == 0:  # letters, not link numbers: the numbers on this sheet are the positions'
+            links = set(cyc.build.linkage.links())
+            first = [it for it in its if not (isinstance(it, Label) and not it.italic and it.text in links)]
+            continue
+        for it in its:  # the other positions thin, without letters, arrows or repeated frame
+            if isinstance(it, Segment):
+                items.append(Segment(it.p0, it.p1, "construction"))
+            elif isinstance(it, (Hinge, Slider)):
+                items.append(it)
+    numbers: list[Primitive] = []
+    A = cyc.mech[crank.pivot][0]
+    tip = cyc.mech[crank.tip]
+    every = numbers_every(cyc.n, 2.0 * math.pi * float(np.hypot(*(tip[0] - A))) / cyc.n)
+    for i in range(0, cyc.n, every):
+        at = _pt(tip[i])
+        numbers.append(Label(str(i + 1), at, (_unit(at, _pt(A)),), NUMBER_SIZE, italic=False))
+    curves: list[Primitive] = []
+    for name in paths:
+        xy = cyc.mech[name]
+        curves.append(Polyline(thinned(cyc.paths.get(name, xy)), "result", closed=True))
+        if cyc.n <= MOST_DOTS:
+            curves += [Circle(_pt(p), DOT, "result") for p in xy]
+    return items + curves + first + numbers
+
+
+def polygons_items(cyc: Any, panel: str) -> list[Primitive]:
+    """The polygons of the drawn positions with a common pole, images lettered with the position."""
+    b, plan = cyc.build, cyc.plan
+    images = b.vel if panel == "velocity" else b.acc
+    items: list[Primitive] = []
+    labels: dict[tuple[float, float], str] = {}
+    for i in drawn_positions(cyc.n):
+        if i in cyc.polygon_failures:  # no polygon at a change point: the panel's note says so
+            continue
+        values = values_at(cyc.values, i)
+        for it in polygon_items(plan, values, panel):
+            if isinstance(it, Segment) and it.role == "construction":
+                continue
+            if isinstance(it, Label):
+                if i == 0 and abs(it.anchor[0]) < 1e-9 and abs(it.anchor[1]) < 1e-9:
+                    labels[(0.0, 0.0)] = it.text  # the pole (and the images of fixed points)
+                continue
+            items.append(it)
+        for name, step in images.items():
+            s = plan.by_name.get(step)
+            if s is None or not s.label or step not in values:
+                continue
+            at = _pt(values[step])
+            key = (round(at[0], 6), round(at[1], 6))
+            if key == (0.0, 0.0):
+                continue
+            text = display(s.label)
+            text = text + (subscript(str(i + 1)) if not any(ch in text for ch in "₀₁₂₃₄₅₆₇₈₉") else f"({i + 1})")
+            labels[key] = labels[key] + "," + text if key in labels else text
+    out = [Label(t, k, (), 3.0) for k, t in labels.items()]
+    return items + out
+
+
+# ----------------------------------------------------------------------------- the diagrams
+def _axes(xe: float, lo: float, hi: float, name: str, n: int, every: int, period: float,
+          left: float = 0.0) -> tuple[list[Primitive], list[Label]]:
+    items: list[Primitive] = [Arrow((left, 0.0), (xe + AXIS_OVERRUN, 0.0), "label"),
+                              Arrow((0.0, lo - (3.0 if lo < 0.0 else 0.0)), (0.0, hi + AXIS_OVERRUN), "label")]
+    x = np.arange(n + 1) * (period / n)
+    for k in range(every, n + 1, every):
+        items.append(Segment((float(x[k]), 0.0), (float(x[k]), -1.0), "label"))
+    labels = [Label(name, (0.0, hi + AXIS_OVERRUN), ((0.0, -1.0),), 3.2),
+              Label("φ", (xe + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2),
+              Label("O", (0.0, 0.0), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), 3.0)]
+    return items, labels + _phi_axis_numbers(x, every)
+
+
+def _differentiation_items(diff: Any, values_at: np.ndarray, name: str, n: int, every: int, period: float,
+                           pole_name: str) -> list[Primitive]:
+    """A derivative diagram: pole, rays ∥ the chords, the values carried to the interval middles."""
+    H = diff.H_mm
+    y = np.asarray(values_at, dtype=float)
+    lo, hi = min(0.0, float(y.min())), max(0.0, float(y.max()))
+    items, labels = _axes(period, lo, hi, name, n, every, period, left=-H - 4.0)
+    P = (-H, 0.0)
+    ray_every = count_every(n, MOST_RAYS)
+    construction: list[Primitive] = []
+    for k in range(0, n, ray_every):
+        v = float(diff.derivative_mm[k])
+        construction += [Segment(P, (0.0, v), "construction"),
+                         Segment((0.0, v), (float(diff.mid_mm[k]) % period, v), "construction", dashed=True)]
+    # the curve through the values at the middles, closed across the cycle's seam
+    mx = np.asarray(diff.mid_mm, dtype=float) % period
+    order = np.argsort(mx)
+    mx, my = mx[order], np.asarray(diff.derivative_mm, dtype=float)[order]
+    gap = (mx[0] + period - mx[-1])
+    y0 = float(my[-1] + (my[0] - my[-1]) * (period - mx[-1]) / gap) if gap > 0 else float(my[0])
+    curve = [(0.0, y0)] + list(zip(mx.tolist(), my.tolist())) + [(period, y0)]
+    result: list[Primitive] = [Polyline(thinned(curve), "result"), Circle(P, DOT, "result")]
+    if n <= MOST_DOTS:
+        result += [Circle((float(a), float(b)), DOT, "result") for a, b in zip(mx, my)]
+    yd = lo - 5.0
+    dim: list[Primitive] = [Segment(P, (P[0], yd - 1.5), "label"), Arrow((-H / 2.0, yd), (-H, yd), "label"),
+                            Arrow((-H / 2.0, yd), (0.0, yd), "label"), Segment((0.0, 0.0), (0.0, yd - 1.5), "label")]
+    names = [Label(pole_name, P, ((1.0, 0.0), (1.0, 0.5)), 3.2),
+             Label("H" + pole_name[1:], (-H / 2.0, yd), ((1.0, 0.0), (-1.0, 0.0)), 3.2)]
+    return construction + items + result + dim + labels[:3] + names + labels[3:]
+
+
+def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
+    """s–φ, v–φ and a–φ of one subject, stacked top to bottom (the s diagram's origin at (0, 0))."""
+    point = dg.kind != "link"
+    names = ("s", "v", "aτ" if dg.kind == "path" else "a") if point else ("ψ", "ω", "ε")
+    every = numbers_every(n, period / n)
+    # s–φ: the curve through the positions, closed at the cycle's end
+    x = np.append(dg.x_mm, period)
+    s = np.append(dg.s_mm, dg.s_mm[0] + dg.rise_mm)
+    lo, hi = min(0.0, float(s.min())), max(0.0, float(s.max()))
+    # a point's subject is a letter: written s_C, the renderer sets C as a subscript
+    sub = (lambda name: f"{name}_{dg.subject}") if point else (lambda name: name + subscript(dg.subject))
+    items, labels = _axes(period, lo, hi, sub(names[0]), n, every, period)
+    top: list[Primitive] = [Polyline(thinned(np.column_stack([x, s])), "result")]
+    if n <= MOST_DOTS:
+        top += [Circle((float(a), float(b)), DOT, "result") for a, b in zip(dg.x_mm, dg.s_mm)]
+        top += [Segment((float(a), 0.0), (float(a), float(b)), "construction") for a, b in zip(dg.x_mm, dg.s_mm)
+                if abs(b) > 1e-9]
+    out: list[Primitive] = items + top + labels
+    v_name, a_name = sub(names[1]), sub(names[2])
+    v_items = _differentiation_items(dg.velocity, dg.velocity.derivative_mm, v_name, n, every, period, "P₁")
+    a_items = _differentiation_items(dg.acceleration, dg.a_mm, a_name, n, every, period, "P₂")
+    y = lo - STACK_GAP - 6.0
+    v_hi = max(0.0, float(np.max(dg.velocity.derivative_mm)))
+    v_lo = min(0.0, float(np.min(dg.velocity.derivative_mm)))
+    dy_v = y - v_hi - AXIS_OVERRUN
+    out += [_moved(i, 0.0, dy_v) for i in v_items]
+    a_hi = max(0.0, float(np.max(dg.acceleration.derivative_mm)))
+    dy_a = dy_v + v_lo - 5.0 - STACK_GAP - a_hi - AXIS_OVERRUN - 2.0
+    out += [_moved(i, 0.0, dy_a) for i in a_items]
+    return out
+
+
+def _diagram_notes(dg: Any, mu_phi: float) -> tuple[str, ...]:
+    if dg.kind == "path":
+        s = f"s along the path of {dg.subject} (its chords end to end): {format_scale('s', dg.mu_s)}, " \
+            f"{format_scale('phi', mu_phi)}"
+        v = f"H₁ = {dg.velocity.H_mm:g} mm: the speed, μv = μs·ω₁/(μφ·H₁) = {dg.mu_v:.6g} (m/s)/mm"
+        a = f"H₂ = {dg.acceleration.H_mm:g} mm: the tangential acceleration, μa = μv·ω₁/(μφ·H₂) = {dg.mu_a:.6g} (m/s²)/mm"
+    elif dg.kind == "point":
+        s = f"{format_scale('s', dg.mu_s)}, {format_scale('phi', mu_phi)}"
+        v = f"H₁ = {dg.velocity.H_mm:g} mm: μv = μs·ω₁/(μφ·H₁) = {dg.mu_v:.6g} (m/s)/mm"
+        a = f"H₂ = {dg.acceleration.H_mm:g} mm: μa = μv·ω₁/(μφ·H₂) = {dg.mu_a:.6g} (m/s²)/mm"
+    else:
+        s = f"μψ = {math.degrees(dg.mu_s):.6g} °/mm, {format_scale('phi', mu_phi)}"
+        v = f"H₁ = {dg.velocity.H_mm:g} mm: μω = μψ·ω₁/(μφ·H₁) = {dg.mu_v:.6g} (rad/s)/mm"
+        a = f"H₂ = {dg.acceleration.H_mm:g} mm: με = μω·ω₁/(μφ·H₂) = {dg.mu_a:.6g} (rad/s²)/mm"
+    return (s, v, a)
+
+
+# ----------------------------------------------------------------------------- characteristics
+def _mark(at: XY, d1: XY, d2: XY, r: float, text: str) -> list[Primitive]:
+    arc = angle_arc(at, d1, d2, r)
+    if arc is None:
+        return [Label(text, at, (d1, d2), 3.2)]
+    mid = arc.points[len(arc.points) // 2]
+    return [arc, Label(text, mid, (_unit(mid, at),), 3.2)]
+
+
+def _arc_between(centre: XY, p: XY, q: XY, role: str = "construction") -> Polyline | None:
+    r = math.dist(centre, p)
+    return angle_arc(centre, _unit(centre, p), _unit(centre, q), r, role)  # type: ignore[arg-type]
+
+
+def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
+    """Both extreme positions, θ and ψ (or H), and the position of γ_min, at μl (A at the origin)."""
+    p = dr.points
+    loop = dr.loop
+    A = p["A"]
+    items: list[Primitive] = []
+    labels: list[Primitive] = []
+    sub = {k: v for k, v in loop.names.items()}
+    if dr.theta is None:  # the output turns fully: the linkage where γ is smallest, nothing else
+        D, Bg, Cg = p["D"], p["Bg"], p["Cg"]
+        items += [Segment(A, Bg, "result"), Segment(Bg, Cg, "result"), Segment(Cg, D, "result"), Segment(A, D, "given"),
+                  FixedPivot(A), FixedPivot(D), Hinge(Bg), Hinge(Cg)]
+        labels += _mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, "γmin")
+        for at, text in ((A, sub["A"]), (D, sub["D"]), (Bg, sub["B"]), (Cg, sub["C"])):
+            labels.append(Label(text, at, (_unit(at, A),) if at != A else (), 3.5))
+        return items + labels
+    B1, C1, B2, C2, Bg, Cg = p["B1"], p["C1"], p["B2"], p["C2"], p["Bg"], p["Cg"]
+    if loop.kind == "fourbar":
+        D = p["D"]
+        items += [Segment(A, B1, "result"), Segment(B1, C1, "result"), Segment(C1, D, "result"),
+                  Segment(A, B2, "given", dashed=True), Segment(B2, C2, "given", dashed=True),
+                  Segment(C2, D, "given", dashed=True),
+                  Segment(A, D, "given"),
+                  Segment(Bg, Cg, "construction"), Segment(Cg, D, "construction"), Segment(A, Bg, "construction")]
+        for arc in (_arc_between(A, C1, C2), _arc_between(D, C1, C2)):
+            if arc is not None:
+                items.append(arc)
+        # θ between AC₁ and AC₂; ψ between DC₁ and DC₂; γ at C
+        ref = C1 if math.dist(A, C1) > 1e-9 else B1
+        labels += _mark(A, _unit(A, ref), _unit(A, C2), min(MARK_R, 0.8 * math.dist(A, C2)), "θ")
+        labels += _mark(D, _unit(D, C1), _unit(D, C2), min(MARK_R, 0.6 * math.dist(D, C1)), "ψ")
+        if math.dist(A, C1) > 1e-9:
+            items.append(Segment(A, C1, "construction", dashed=True))
+        items.append(Segment(A, C2, "construction", dashed=True))
+        labels += _mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, "γmin")
+        items += [FixedPivot(A), FixedPivot(D)] + [Hinge(x) for x in (B1, C1, B2, C2, Bg, Cg)]
+        names = [(A, sub["A"]), (D, sub["D"]), (B1, sub["B"] + "₁"), (C1, sub["C"] + "₁"), (B2, sub["B"] + "₂"),
+                 (C2, sub["C"] + "₂")]
+    elif loop.kind == "slider_crank":
+        g = _unit(p["G0"], p["G1"])
+        items += [GuideLine(p["G0"], p["G1"]), Segment(A, B1, "result"), Segment(B1, C1, "result"),
+                  Segment(A, B2, "given", dashed=True), Segment(B2, C2, "given", dashed=True),
+                  Segment(A, Bg, "construction"), Segment(Bg, Cg, "construction"),
+                  Slider(C1, math.atan2(g[1], g[0])), Slider(C2, math.atan2(g[1], g[0]))]
+        for r in (math.dist(A, C1), math.dist(A, C2)):
+            arc = angle_arc(A, _unit(A, C1), _unit(A, C2), r, "construction")
+            if arc is not None:
+                items.append(arc)
+        if math.dist(A, C1) > 1e-9:
+            items.append(Segment(A, C1, "construction", dashed=True))
+        items.append(Segment(A, C2, "construction", dashed=True))
+        labels += _mark(A, _unit(A, C1), _unit(A, C2), MARK_R, "θ")
+        # the stroke H dimensioned beside the guide
+        nrm = (-g[1], g[0])
+        off = -9.0 if (A[0] - C1[0]) * nrm[0] + (A[1] - C1[1]) * nrm[1] > 0 else 9.0
+        d1 = (C1[0] + off * nrm[0], C1[1] + off * nrm[1])
+        d2 = (C2[0] + off * nrm[0], C2[1] + off * nrm[1])
+        mid = ((d1[0] + d2[0]) / 2.0, (d1[1] + d2[1]) / 2.0)
+        items += [Segment(C1, d1, "label"), Segment(C2, d2, "label")]
+        if math.dist(d1, d2) > 1e-6:  # a stroke too short to draw (a crank of 1e-300 mm) gets no arrows
+            items += [Arrow(mid, d1, "label"), Arrow(mid, d2, "label")]
+        labels.append(Label("H", mid, (g, (-g[0], -g[1])), 3.2))
+        across = (-g[1], g[0])
+        normal = across if (Bg[0] - Cg[0]) * across[0] + (Bg[1] - Cg[1]) * across[1] > 0 else (-across[0], -across[1])
+        # γ is measured from the normal to the guide (the slider's path is the guide)
+        items.append(Segment(Cg, (Cg[0] + 14.0 * normal[0], Cg[1] + 14.0 * normal[1]), "construction", dashed=True))
+        labels += _mark(Cg, _unit(Cg, Bg), normal, 8.0, "γmin")
+        items += [FixedPivot(A)] + [Hinge(x) for x in (B1, B2, C1, C2, Bg, Cg)]
+        names = [(A, sub["A"]), (B1, sub["B"] + "₁"), (C1, sub["C"] + "₁"), (B2, sub["B"] + "₂"), (C2, sub["C"] + "₂")]
+    else:
+        C = p["C"]
+        r = math.dist(A, B1)
+        items.append(Circle(A, r, "construction"))
+        reach = max(math.dist(C, B1), math.dist(C, B2)) + 12.0
+        for B, role, dashed in ((B1, "result", False), (B2, "given", True)):
+            u = _unit(C, B)
+            items += [Segment(A, B, role, dashed=dashed),  # type: ignore[arg-type]
+                      Segment(C, (C[0] + reach * u[0], C[1] + reach * u[1]), role, dashed=dashed),  # type: ignore[arg-type]
+                      Slider(B, math.atan2(u[1], u[0]))]
+        items.append(Segment(A, C, "given"))
+        labels += _mark(C, _unit(C, B1), _unit(C, B2), MARK_R * 1.5, "ψ")
+        back = (2 * A[0] - B1[0], 2 * A[1] - B1[1])
+        items.append(Segment(A, back, "construction", dashed=True))
+        labels += _mark(A, _unit(A, back), _unit(A, B2), min(MARK_R, 0.8 * r), "θ")
+        items += [FixedPivot(A), FixedPivot(C), Hinge(B1), Hinge(B2)]
+        names = [(A, sub["A"]), (C, sub["C"]), (B1, sub["B"] + "₁"), (B2, sub["B"] + "₂")]
+    for at, text in names:
+        labels.append(Label(text, at, (_unit(at, A),) if at != A else (), 3.5))
+    return items + labels
+
+
+def _characteristics_notes(an: Any) -> tuple[str, ...]:
+    dr = an.drawn
+    out = [format_scale("l", dr.mu_l)]
+    kinds = {"crank_rocker_AB": "crank-rocker (AB the crank)", "crank_rocker_CD": "crank-rocker (CD turns fully)",
+             "double_crank": "double crank", "double_rocker": "double rocker", "change_point": "change point "
+             "(s + l = p + q)", "crank": "the crank turns fully"}
+    if dr.theta is None:
+        out.append(f"{kinds.get(dr.grashof, dr.grashof)}: the output turns fully, no extreme positions")
+        out.append(f"γmin = {math.degrees(dr.gamma_min):.4g}° at φ = {math.degrees(dr.gamma_min_at):.4g}° (drawn)")
+        return tuple(out)
+    out.append(f"{kinds.get(dr.grashof, dr.grashof)}; position 1 (bold): the working stroke begins")
+    line = f"θ = {math.degrees(dr.theta):.4g}°"
+    if dr.psi is not None:
+        line += f", ψ = {math.degrees(dr.psi):.4g}°"
+    if dr.stroke_mm is not None:
+        line += f", H = {dr.stroke_mm:.4g} mm = {dr.stroke_mm * dr.mu_l:.5g} m"
+    k = (math.pi + dr.theta) / (math.pi - dr.theta)
+    line += f", K = (180° + θ)/(180° − θ) = {k:.4g}"
+    out.append(line)
+    if dr.loop.kind == "guide_bar":
+        out.append("γ = 90° throughout: the block drives the bar at right angles")
+    else:
+        out.append(f"γmin = {math.degrees(dr.gamma_min):.4g}° at φ = {math.degrees(dr.gamma_min_at):.4g}°")
+    t_work = an.scene.cycle.characteristics.t_work
+    if t_work is not None:
+        work, back = math.pi + dr.theta, math.pi - dr.theta
+        period = t_work * 2.0 * math.pi / work
+        out.append(f"working stroke {math.degrees(work):.4g}° in {t_work:.4g} s, return {math.degrees(back):.4g}° in "
+                   f"{period - t_work:.4g} s: a turn in {period:.4g} s, n = {60.0 / period:.4g} r/min")
+    return tuple(out)
+
+
+#: The classes' names on the ranges diagram.
+CLASS_NAMES = {"crank_rocker_AB": "crank-rocker", "crank_rocker_CD": "crank-rocker (CD)", "double_crank": "double crank",
+               "double_rocker": "double rocker", "change_point": "change point"}
+#: The length of the ranges diagram's axis, mm (its scale a round number).
+RANGES_MM = 150.0
+
+
+def ranges_items(ranges: Sequence[tuple[str, float, float]], crank: str, length: float) -> tuple[list[Primitive], float]:
+    """The Grashof ranges of the crank's length on one axis: each class a bold stretch (alternately solid
+    and dashed) named above, the limits below; the crank's length in the scene marked. Returns the items and
+    the axis's scale (m/mm)."""
+    from graphmech.scales import round_scale
+
+    limit = max(hi for _, _, hi in ranges)
+    mu = round_scale(limit / RANGES_MM)
+    end = limit / mu
+    items: list[Primitive] = [Arrow((0.0, 0.0), (end + AXIS_OVERRUN, 0.0), "label")]
+    labels: list[Primitive] = [Label(f"l{crank}", (end + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2),
+                               Label("0", (0.0, 0.0), _BELOW, NUMBER_SIZE, italic=False)]
+    for k, (kind, lo, hi) in enumerate(ranges):
+        x0, x1 = lo / mu, hi / mu
+        items.append(Segment((x0, 3.0), (x1, 3.0), "result", dashed=bool(k % 2)))
+        items += [Segment((x1, -1.0), (x1, 5.0), "label")]
+        labels.append(Label(CLASS_NAMES.get(kind, kind), ((x0 + x1) / 2.0, 3.0), ((0.0, -1.0),), 3.0, italic=False))
+        labels.append(Label(f"{hi * 1000:.4g}", (x1, 0.0), _BELOW, NUMBER_SIZE, italic=False))
+    x = length / mu
+    items.append(Circle((x, 0.0), 1.0, "result"))
+    labels.append(Label(f"{crank} = {length * 1000:.4g}", (x, -6.0), ((0.0, 1.0),), 3.0))
+    return items + labels, mu
+
+
+# ----------------------------------------------------------------------------- the sheet
+def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, float],
+                footer: tuple[str, ...] = ()) -> Sheet:
+    """The sheet of a full-cycle / characteristics scene: the panels of ``show`` in its order
+    (``paths`` is drawn in the ``cycle`` panel, or alone when ``cycle`` is not shown)."""
+    panels: list[Panel] = []
+    cyc = an.cycle
+    paths = an.scene.cycle.cycle.paths if an.scene.cycle.cycle is not None else ()
+    for entry in show:
+        if entry == "characteristics":
+            head = {"fourbar": "Extreme positions, θ, ψ and γmin", "slider_crank": "Extreme positions, θ, H and γmin",
+                    "guide_bar": "Extreme positions, θ and ψ"}[an.drawn.loop.kind]
+            panels.append(Panel("characteristics", head,
+                                tuple(characteristics_items(an.drawn, an.scene.linkage)), _characteristics_notes(an)))
+            if an.ranges is not None:
+                loop = an.drawn.loop
+                crank = loop.names["A"] + loop.names["B"]
+                items, mu = ranges_items(an.ranges, crank, loop.a)
+                panels.append(Panel("ranges", f"Grashof's rule: the classes as l{crank} grows (mm)", tuple(items),
+                                    (f"{mu * 1000:.6g} mm of l{crank} per mm",
+                                     "s + l < p + q: the shortest link turns fully; = : change point")))
+        elif entry == "cycle" or (entry == "paths" and "cycle" not in show):
+            items = cycle_items(cyc, paths if "paths" in show else ())
+            notes = [format_scale("l", an.scales["l"]), f"{cyc.n} positions, 1 at φ = "
+                     f"{math.degrees(float(cyc.angles[0])):.6g}°" + (" (an extreme position)"
+                                                                     if an.scene.cycle.cycle.start == "extreme" else "")]
+            if _which(cyc.n):
+                notes.append(_which(cyc.n) + "; the paths through all")
+            head = "Kinematic diagram at all positions" + (", paths of " + ", ".join(paths) if "paths" in show else "")
+            panels.append(Panel("cycle", head, tuple(items), tuple(notes)))
+        elif entry in ("velocity", "acceleration"):
+            key = "v" if entry == "velocity" else "a"
+            notes = [format_scale(key, an.scales[key])] + ([_which(cyc.n)] if _which(cyc.n) else [])
+            if cyc.polygon_failures:
+                gone = sorted(cyc.polygon_failures)
+                notes.append("no polygon at position" + ("s " if len(gone) > 1 else " ")
+                             + ", ".join(str(i + 1) for i in gone[:12]) + (" …" if len(gone) > 12 else "")
+                             + ": two of its lines are parallel there")
+            head = ("Velocity" if key == "v" else "Acceleration") + " polygons of all positions, common pole"
+            panels.append(Panel(entry, head, tuple(polygons_items(cyc, entry)), tuple(notes)))
+        elif entry == "diagrams":
+            period = 2.0 * math.pi / cyc.mu_phi
+            for dg in cyc.diagrams:
+                what = {"point": "slider", "path": "point", "link": "link"}[dg.kind] + f" {dg.subject}"
+                head = ("ψ–φ, ω–φ, ε–φ" if dg.kind == "link" else "s–φ, v–φ, aτ–φ" if dg.kind == "path" else "s–φ, v–φ, a–φ") + f" of {what}, by chords"
+                panels.append(Panel(f"diagrams-{dg.subject}", head, tuple(diagram_items(dg, cyc.n, period)),
+                                    _diagram_notes(dg, cyc.mu_phi)))
+    return Sheet(title, tuple(panels), tuple(page), tuple(footer))  # type: ignore[arg-type]
+

@@ -1,0 +1,360 @@
+"""Checking an efficiency scene: force polygons against the closed-form trigonometric answers.
+
+The counterpart of :mod:`graphmech.problems.linkage.check` for ``[efficiency]`` scenes. The forces are read off
+the polygons of :mod:`graphmech.methods.efficiency` (drawn length × μF) and set against
+:mod:`graphmech.exact.efficiency`; the self-locking limit is found on the construction by
+redrawing it until η = 0 and set against its closed form (α = φ, ψ = φv, γ = 2φ). A chain of
+machines is walked stage by stage from the output back to the motor and set against the product
+formulas. Only what the scene asks for is computed: a screw scene that wants ψ alone draws no
+polygon and needs no friction coefficient.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+from graphmech.problems.linkage.check import Row, Verdict, close_names, judge_value, measured_entries
+from graphmech.errors import DegenerateConstruction, SceneError
+from graphmech.exact import efficiency as ex
+from graphmech.methods import efficiency as gm
+from graphmech.scales import format_scale, round_scale
+from graphmech.problems.efficiency.scene import DEFAULT_FIND, EfficiencyProblem
+from graphmech.tolerances import EPS, SHALLOW_DEG
+
+#: The longest side of a force polygon when graphmech chooses μF, mm.
+POLYGON_MM = 80.0
+#: A stated μF must draw the largest force between these lengths, mm.
+DRAWN_MM = (2.0, 2000.0)
+
+#: A polygon that closes at an angle below SHALLOW_DEG is ill-conditioned for a hand construction.
+COND_HAND = 1.0 / math.sin(math.radians(SHALLOW_DEG))
+
+
+@dataclass
+class EfficiencyAnalysis:
+    """What one efficiency scene produced: the strokes (per direction), the rows, the warnings."""
+
+    scene: Any
+    problem: EfficiencyProblem
+    strokes: dict[str, gm.Stroke] = field(default_factory=dict)
+    chain: Any = None
+    rows: list[Row] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    scales: dict[str, float] = field(default_factory=dict)
+    stated: set[str] = field(default_factory=set)
+    extra_measured: tuple[tuple[str, float], ...] = ()
+    values: dict[str, tuple[float, float, float | None, float, bool, float]] = field(default_factory=dict)
+
+    def scale_notes(self) -> list[str]:
+        return [format_scale(k, v) + ("" if k in self.stated else " (chosen)") for k, v in self.scales.items()]
+
+    @property
+    def phi(self) -> float:
+        """The (equivalent) friction angle, rad."""
+        p = self.problem
+        return ex.equivalent_friction_angle(p.f or 0.0, p.half_angle if p.type == "screw" else 0.0)
+
+    @property
+    def angle(self) -> float:
+        """The incline's α or the screw's lead angle ψ (φv at the self-locking limit), rad."""
+        p = self.problem
+        if p.type == "incline":
+            return float(p.angle)  # type: ignore[arg-type]
+        return self.phi if p.at_limit else float(p.lead_angle)  # type: ignore[arg-type]
+
+
+def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
+    """The row names the scene asks for, expanded over its directions; bad names → SceneError."""
+    p: EfficiencyProblem = scene.efficiency
+    q = p.quantities()
+    names = list(scene.find) or list(DEFAULT_FIND[p.type])
+    multi = len(p.directions) > 1
+    out: list[str] = []
+    problems = []
+    checks = [(f"find[{i}]", n) for i, n in enumerate(scene.find)] or [("find", n) for n in names]
+    checks += [(k, n) for k, n, _ in measured_entries(scene, extra)]
+    for key, name in checks:
+        base, _, at = name.partition("@")
+        if base not in q:
+            problems.append((key, f"unknown {p.type} quantity {base!r}{close_names(base, q)}"))
+            continue
+        if at and (not q[base][1] or at not in p.directions):
+            what = f"one of {', '.join(p.directions)}" if q[base][1] else "none: it does not depend on the direction"
+            problems.append((key, f"{base}@{at}: no such direction (directions: {what})"))
+            continue
+        if not at and multi and q[base][1] and not key.startswith("find"):
+            problems.append((key, f"{base} depends on the direction: write "
+                                  f"{' or '.join(f'{base}@{d}' for d in p.directions)}"))
+            continue
+        if q[base][2] and p.f is None:
+            problems.append((key, f"{base} needs the friction coefficient: add f to [efficiency]"))
+            continue
+        if base == "eta_self_locking_max" and not p.f:
+            problems.append((key, "eta_self_locking_max needs f > 0: without friction no screw self-locks"))
+            continue
+        if base == "M" and p.d2 is None:
+            problems.append((key, "M needs the pitch diameter: add d2_mm to [efficiency]"))
+            continue
+        if base in ("r_f", "sigma") and (p.collar if base == "r_f" else p.d1) is None:
+            need = "collar_mm = [d0, dw]" if base == "r_f" else "d1_mm"
+            problems.append((key, f"{base} needs {need} in [efficiency]"))
+            continue
+        if key.startswith("find"):
+            if q[base][1] and not at:
+                out += [f"{base}@{d}" if multi else base for d in p.directions]
+            else:
+                out.append(name if (at and multi) or not at else base)
+    if problems:
+        raise SceneError(problems, scene.source)
+    return list(dict.fromkeys(out))
+
+
+def analyse_efficiency(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> EfficiencyAnalysis:
+    """Carry out what the efficiency scene asks for and build its check table."""
+    p: EfficiencyProblem = scene.efficiency
+    names = requested(scene, extra_measured)
+    an = EfficiencyAnalysis(scene, p, extra_measured=tuple(extra_measured))
+    if p.type == "chain":
+        an.chain = gm.chain([(s.name, s.branches) for s in p.stages], p.load * p.speed)  # type: ignore[operator]
+    else:
+        bases = {n.partition("@")[0] for n in names} | {
+            m.partition("@")[0] for _, m, _ in measured_entries(scene, extra_measured)}
+        needs_polygon = "polygon" in scene.show or bool(bases & {"F", "F0", "eta", "R", "R12", "R32", "R31", "M"})
+        if needs_polygon:
+            _strokes(an)
+    for name in names:
+        an.rows.append(_row(an, name))
+    return an
+
+
+def _stroke(an: EfficiencyAnalysis, direction: str, mu_F: float) -> gm.Stroke:
+    p = an.problem
+    if p.type == "wedge":
+        return gm.wedge(p.load, p.gamma, p.beta, an.phi, direction, mu_F)  # type: ignore[arg-type]
+    names = ("F", "R")
+    push = p.push if p.type == "incline" else "horizontal"
+    return gm.incline(p.load, an.angle, an.phi if p.f is not None else 0.0, direction, mu_F, push,  # type: ignore[arg-type]
+                      names=names)
+
+
+def _strokes(an: EfficiencyAnalysis) -> None:
+    p = an.problem
+    stated = an.scene.scales.get("F")
+    try:
+        if stated is None:  # draw once at 1 N/mm to see the sizes, then at a round μF
+            trial = [_stroke(an, d, 1.0) for d in p.directions]
+            longest = max((math.hypot(s.end[0] - s.start[0], s.end[1] - s.start[1])
+                           for st in trial for poly in st.polygons for s in poly.forces), default=1.0)
+            an.scales["F"] = round_scale(max(longest, EPS) / POLYGON_MM)
+        else:
+            an.scales["F"] = stated
+            an.stated.add("F")
+        for d in p.directions:
+            an.strokes[d] = _stroke(an, d, an.scales["F"])
+    except DegenerateConstruction as e:
+        raise SceneError([("efficiency", str(e))], an.scene.source) from None
+    if stated is not None:
+        longest = max((math.hypot(s.end[0] - s.start[0], s.end[1] - s.start[1])
+                       for st in an.strokes.values() for poly in st.polygons for s in poly.forces), default=1.0)
+        if not DRAWN_MM[0] <= longest <= DRAWN_MM[1]:
+            raise SceneError([("scales", f"μF = {stated:g} N/mm draws the largest force {longest:.3g} mm "
+                               f"long: choose μF so that it is {DRAWN_MM[0]:g} … {DRAWN_MM[1]:g} mm (about "
+                               f"{round_scale(longest * stated / POLYGON_MM):g} N/mm)")], an.scene.source)
+    for d, st in an.strokes.items():
+        what = {"forward": "forward stroke (F drives)", "reverse": "reverse stroke (the load drives)"}[d]
+        if st.F is None:
+            an.warnings.append(f"{what}: the polygon cannot close (F ∥ the total reaction): no finite force moves "
+                               "it — self-locked, η = 0")
+        elif st.eta == 0.0:
+            an.warnings.append(f"{what}: at the self-locking limit, η = 0 exactly")
+        elif st.eta < 0.0 and d == "forward":
+            an.warnings.append(f"{what}: self-locking (η = {st.eta:.4g} ≤ 0): no force F in its direction, however "
+                               "large, moves it")
+        elif st.eta < 0.0:
+            an.warnings.append(f"{what}: self-locking (η = {st.eta:.4g} ≤ 0): the load cannot drive it; F must act "
+                               "the other way to move it")
+        if st.F is not None and st.cond > COND_HAND:
+            angle = math.degrees(math.asin(min(1.0, 1.0 / st.cond)))
+            an.warnings.append(f"{what}: the polygon closes at {angle:.3g}° (nearly collinear forces): the drawn "
+                               f"forces are ill-conditioned (a 0.5 mm slip moves them ×{st.cond:.3g})")
+
+
+def _rel(g: float, e: float, char: float) -> float:
+    return abs(g - e) / max(abs(e), abs(char), 1e-300)
+
+
+def _row(an: EfficiencyAnalysis, name: str) -> Row:
+    base, _, at = name.partition("@")
+    unit = an.problem.quantities()[base][0]
+    direction = at or (an.problem.directions[0] if an.problem.directions else "forward")
+    g, e, drawn, scale, ill, char = _values(an, base, direction)
+    return Row(name, unit, drawn, scale, g, e, _rel(g, e, char), ill)
+
+
+def _eta_reverse_at(an: EfficiencyAnalysis, angle: float) -> float:
+    """The reverse η = F/F0 of the polygons at this angle, its sign unrounded (Stroke.eta reports
+    |η| ≤ ETA_ZERO as 0, which would blur the limit by 1e-12 of itself)."""
+    p = an.problem
+    push = p.push if p.type == "incline" else "horizontal"
+    try:
+        st = gm.incline(1.0, angle, an.phi, "reverse", 1.0, push)
+    except DegenerateConstruction:
+        return 0.0
+    return 0.0 if st.F is None else st.F / st.F0
+
+
+def _values(an: EfficiencyAnalysis, base: str, d: str) -> tuple[float, float, float | None, float, bool, float]:
+    """(graphical, exact, drawn mm or None, μ, ill-conditioned, characteristic size)."""
+    p = an.problem
+    if p.type == "chain":
+        eta_g, stages = an.chain
+        branches = [[ex.series_efficiency(series) for _, series in s.branches] for s in p.stages]
+        eta_e = ex.series_efficiency([ex.parallel_efficiency([sh for sh, _ in s.branches], b)
+                                      for s, b in zip(p.stages, branches)])
+        p_out = p.load * p.speed  # type: ignore[operator]
+        if base == "eta":
+            return eta_g, eta_e, None, 1.0, False, 1.0
+        if base == "P_in":
+            return stages[0].power_in, p_out / eta_e, None, 1.0, False, p_out
+        return stages[-1].power_out, p_out, None, 1.0, False, p_out
+    phi, Q = an.phi, float(p.load if p.load is not None else 1.0)
+    mu = an.scales.get("F", 1.0)
+    if base in ("phi", "phi_v"):
+        return math.degrees(phi), math.degrees(math.atan((p.f or 0.0) / math.cos(p.half_angle))), None, 1.0, False, 1.0
+    if base == "psi":
+        if p.at_limit:
+            return math.degrees(an.angle), math.degrees(ex.equivalent_friction_angle(p.f or 0.0, p.half_angle)), \
+                None, 1.0, False, 1.0
+        if p.lead is not None:  # the unrolled thread: the hypotenuse over π·d2 and L, its slope read off
+            g = math.degrees(math.atan2(p.lead, math.pi * p.d2))  # type: ignore[operator]
+            return g, math.degrees(ex.lead_angle(p.lead, p.d2)), None, 1.0, False, 1.0  # type: ignore[arg-type]
+        return math.degrees(an.angle), math.degrees(float(p.lead_angle)), None, 1.0, False, 1.0  # type: ignore[arg-type]
+    if base == "r_f":
+        d0, dw = p.collar  # type: ignore[misc]
+        return (d0 + dw) / 4.0, 0.5 * (0.5 * d0 + 0.5 * dw), None, 1.0, False, dw
+    if base == "sigma":
+        d1 = float(p.d1)  # type: ignore[arg-type]
+        area = math.pi * d1 * d1 / 4.0
+        return Q / area, 4.0 * Q / (math.pi * d1 ** 2), None, 1.0, False, 1.0
+    if base in ("self_locking_angle", "gamma_limit", "eta_self_locking_max"):
+        if phi == 0.0 and base != "eta_self_locking_max":  # no friction, nothing locks: the limit is 0
+            return 0.0, 0.0, None, 1.0, False, 1.0
+        try:
+            return _limits(an, base, phi)
+        except DegenerateConstruction as e:
+            raise SceneError([("find", f"{base}: {e}")], an.scene.source) from None
+    st = an.strokes[d]
+    ill = st.F is not None and st.cond > COND_HAND
+    if p.type == "wedge":
+        exact = ex.wedge_forces(Q, p.gamma, p.beta, phi, d)  # type: ignore[arg-type]
+        F0e = ex.wedge_ideal_force(Q, p.gamma, p.beta)  # type: ignore[arg-type]
+        exact_R = {"R12": exact.R12, "R32": exact.R32, "R31": exact.R31}
+        Fe = exact.F
+    else:
+        push = p.push if p.type == "incline" else "horizontal"
+        Fe = ex.incline_force(Q, an.angle, phi, d, push)  # type: ignore[arg-type]
+        F0e = ex.incline_force(Q, an.angle, 0.0, d, push)  # type: ignore[arg-type]
+        exact_R = {"R": ex.incline_reaction(Q, an.angle, phi, d, push)}  # type: ignore[arg-type]
+    if base == "F0":
+        return st.F0, F0e, st.F0 / mu, mu, False, Q
+    if base == "eta":
+        eta_e = ex.efficiency(d, F0e, Fe)  # type: ignore[arg-type]
+        return st.eta, 0.0 if abs(eta_e) <= gm.ETA_ZERO else eta_e, None, 1.0, ill, 1.0
+    if st.F is None:
+        raise SceneError([("find", f"{base}@{d}: no finite force moves the {d} stroke (self-locked)")], an.scene.source)
+    if base == "F":
+        return st.F, Fe, st.F / mu, mu, ill, Q
+    if base == "M":
+        r2 = float(p.d2) / 2.0  # type: ignore[arg-type]
+        Me = ex.screw_torque(Q, float(p.d2), an.angle, phi, d)  # type: ignore[arg-type]
+        return st.F * r2, Me, st.F / mu, mu * r2, ill, Q * r2
+    value = dict(st.reactions)[base]
+    return value, exact_R[base], value / mu, mu, ill, Q
+
+
+def _limits(an: EfficiencyAnalysis, base: str, phi: float) -> tuple[float, float, float | None, float, bool, float]:
+    """The self-locking limits, found on the construction by redrawing it until η = 0."""
+    p = an.problem
+    if base == "gamma_limit":
+        g = gm.wedge_locking_angle(float(p.beta), phi)  # type: ignore[arg-type]
+        return math.degrees(g), math.degrees(2.0 * phi), None, 1.0, False, 1.0
+    g = gm.limiting_angle(lambda x: _eta_reverse_at(an, x), *gm.INCLINE_LIMIT_RANGE)
+    if base == "self_locking_angle":
+        return math.degrees(g), math.degrees(phi), None, 1.0, False, 1.0
+    eta = gm.incline(1.0, g, phi, "forward", 1.0).eta
+    return eta, ex.self_locking_efficiency_bound(phi), None, 1.0, False, 1.0
+
+
+def judge_efficiency(an: EfficiencyAnalysis, precision_mm: float | None = None) -> list[Verdict]:
+    """Hand values against the construction: drawn forces within the drawing precision × μF,
+    the rest within 0.1 %."""
+    prec = precision_mm if precision_mm is not None else an.scene.precision_mm
+    out = []
+    for _key, name, value in measured_entries(an.scene, an.extra_measured):
+        base, _, at = name.partition("@")
+        d = at or (an.problem.directions[0] if an.problem.directions else "forward")
+        g, _e, drawn, scale, _ill, _c = _values(an, base, d)
+        unit = an.problem.quantities()[base][0]
+        st = an.strokes.get(d) if base == "eta" and an.problem.type != "chain" else None
+        if st is not None and st.F and st.F0:
+            # η = F0/F (F/F0) from two lengths read off the polygons, each within the precision
+            # × μF: its tolerance follows from theirs (0.1 % would fail a correctly drawn F)
+            tol = abs(g) * prec * an.scales["F"] * (1.0 / abs(st.F) + 1.0 / abs(st.F0))
+            out.append(Verdict(name, value, g, tol, abs(value - g) <= tol + 1e-12 * abs(g), unit))
+            continue
+        out.append(judge_value(name, value, g, drawn, scale, prec, unit))
+    return out
+
+
+__all__ = ["EfficiencyAnalysis", "analyse_efficiency", "judge_efficiency", "requested"]
+
+
+def efficiency_figure(an: EfficiencyAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Any:
+    """The sheet of the scene's ``show``: the diagram and the force polygons."""
+    from graphmech.problems.efficiency.figures import efficiency_sheet
+
+    p = an.problem
+    if "polygon" in an.scene.show and not an.strokes and p.type != "chain":
+        _strokes(an)
+    angle = an.angle if p.type in ("incline", "screw") else None
+    show = [s for s in an.scene.show if not (s == "polygon" and p.type == "chain")]
+    if p.type == "chain" and "diagram" in show:
+        _chain_fits(an, page)
+    sheet = efficiency_sheet(an.scene.title, p, an.strokes, an.chain, an.phi, angle, an.scales, show, page, footer)
+    if p.type == "chain" and "diagram" in show:
+        _chain_fits(an, page, sheet)
+    return sheet
+
+
+#: The most machines (boxes) a chain's diagram draws, whatever the page: each brings labels that
+#: the label placer sets against every other (a textbook chain has a handful; 3 601 took minutes).
+MAX_CHAIN_BOXES = 120
+
+
+def _chain_fits(an: EfficiencyAnalysis, page: tuple[float, float], sheet: Any = None) -> None:
+    """Refuse a chain whose diagram the page cannot show: too many machines to label legibly, or
+    (given the sheet) boxes that run off the page — before any label is placed."""
+    from graphmech.render.labels import text_box_size
+    from graphmech.render.layout import layout_sheet
+    from graphmech.drawing.primitives import Label
+
+    boxes = sum(len(s.branches) for s in an.problem.stages)
+    if boxes > MAX_CHAIN_BOXES:
+        raise SceneError([("efficiency.stage", f"{boxes} machines (boxes) in the chain: a diagram shows at most "
+                                               f"{MAX_CHAIN_BOXES} legibly; use graphmech check")], an.scene.source)
+
+    def centred(label: Label) -> tuple[float, float, float, float]:
+        w, h = text_box_size(label.text, label.size)
+        return (label.anchor[0] - w / 2, label.anchor[1] - h / 2, label.anchor[0] + w / 2, label.anchor[1] + h / 2)
+
+    # each label as if centred on its anchor (the placer only moves them further out): what this
+    # lays off the page surely runs off it
+    nominal = [[centred(it) for it in panel.items if isinstance(it, Label)] for panel in (sheet.panels if sheet else ())]
+    if sheet is not None and layout_sheet(sheet, label_boxes=nominal).warnings:
+        n = len(an.problem.stages)
+        raise SceneError([("efficiency.stage", f"the chain's diagram ({n} stage{'s' * (n != 1)}, {boxes} "
+                                               f"machine{'s' * (boxes != 1)}) does not fit a page of "
+                                               f"{page[0]:g} × {page[1]:g} mm: "
+                                               "choose a larger [page] size or use graphmech check")],
+                         an.scene.source)

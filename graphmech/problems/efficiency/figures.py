@@ -1,0 +1,281 @@
+"""The figures of an efficiency problem: the bodies with their forces, and the force polygons.
+
+Methods produce primitives with roles; a renderer turns them into SVG. Forces in a polygon are
+laid off at μF (N/mm); everything in a diagram is paper millimetres (directions true, lengths
+not to a force scale).
+
+diagram
+    incline — the incline at α (hatched), the block on it, Q, F and the total reaction R turned
+    from the normal (thin dashed) by φ against the velocity v;
+    screw — the thread unrolled: the lead triangle π·d2 by L = n·P with ψ, and the nut as a
+    block on it, pushed by the circumferential force F (horizontal), loaded by Q;
+    wedge — guide 2 (horizontal), the face at γ, guide 1 at β, sliders 1 and 2, Q and F;
+    chain — the machines as boxes in the order power flows, their η, the power between them.
+polygon
+    one panel per direction (forward: F drives; reverse: the load drives): the frictionless
+    polygon thin and dashed (F0), the polygon with friction bold, every side an arrow named
+    after its force; for the wedge the two sliders' triangles joined along R12.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Sequence
+
+from graphmech.methods.efficiency import ForcePolygon, Stroke
+from graphmech.drawing.primitives import (XY, Arrow, GuideLine, Label, Panel, Polyline, Primitive, Segment,
+                                         Sheet, Slider)
+from graphmech.render.style import subscript
+from graphmech.scales import format_scale
+
+#: Length of a force arrow in a diagram (directions only), mm.
+ARROW_MM = 16.0
+#: Paper size of a diagram's main feature (the incline, the unrolled thread), mm.
+DIAGRAM_MM = 70.0
+#: The wedge's sketch, enlarged from its 48 mm layout to about the incline's size.
+WEDGE_SCALE = 1.4
+_WORDS = {"forward": "forward stroke: F drives", "reverse": "reverse stroke: the load drives"}
+
+
+def force_name(name: str) -> str:
+    """``"R12"`` → ``R₁₂``, ``"F0"`` → ``F₀``."""
+    head = name.rstrip("0123456789")
+    return head + subscript(name[len(head):])
+
+
+def _dir(angle: float) -> XY:
+    return (math.cos(angle), math.sin(angle))
+
+
+def _add(p: XY, d: XY, k: float = 1.0) -> XY:
+    return (p[0] + k * d[0], p[1] + k * d[1])
+
+
+def _mid(a: XY, b: XY) -> XY:
+    return ((a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0)
+
+
+def _unit(v: XY) -> XY:
+    n = math.hypot(v[0], v[1]) or 1.0
+    return (v[0] / n, v[1] / n)
+
+
+def _angle_arc(center: XY, r: float, a0: float, a1: float, text: str) -> list[Primitive]:
+    """An angle marked by a thin arc from direction a0 to a1 (rad) and its letter."""
+    n = 12
+    pts = tuple((center[0] + r * math.cos(a0 + (a1 - a0) * k / n), center[1] + r * math.sin(a0 + (a1 - a0) * k / n))
+                for k in range(n + 1))
+    mid = (a0 + a1) / 2.0
+    return [Polyline(pts, "construction"),
+            Label(text, (center[0] + (r + 3.0) * math.cos(mid), center[1] + (r + 3.0) * math.sin(mid)), (), 3.0)]
+
+
+def _force_arrow(name: str, tip: XY, d: XY, length: float = ARROW_MM, at_tail: bool = False) -> list[Primitive]:
+    """A force of direction d acting at ``tip`` (pushing: the arrow ends there), or starting there."""
+    d = _unit(d)
+    start, end = ((tip, _add(tip, d, length)) if at_tail else (_add(tip, d, -length), tip))
+    far = end if at_tail else start
+    return [Arrow(start, end, "given"), Label(force_name(name), far, ((d[0], d[1]), (-d[0], -d[1])), 3.2)]
+
+
+# ---------------------------------------------------------------------------- diagrams
+
+
+def _incline_diagram(alpha: float, phi: float, stroke: Stroke | None, push: str, names: tuple[str, str],
+                     thread: tuple[str, str] | None = None) -> list[Primitive]:
+    L = DIAGRAM_MM
+    up = _dir(alpha)
+    top = _add((0.0, 0.0), up, L)
+    items: list[Primitive] = [GuideLine((0.0, 0.0), top), Segment((0.0, 0.0), (top[0], 0.0), "construction")]
+    if thread is not None:  # the unrolled thread: base π·d2, height L, hypotenuse at ψ
+        items += [Segment((top[0], 0.0), top, "construction"),
+                  Label(thread[0], (top[0] / 2.0, -4.0), ((0.0, 1.0),), 3.2, italic=False),
+                  Label(thread[1], (top[0] + 4.0, top[1] / 2.0), ((-1.0, 0.0),), 3.2, italic=False)]
+    items += _angle_arc((0.0, 0.0), 14.0, 0.0, alpha, "ψ" if thread else "α")
+    normal = (-math.sin(alpha), math.cos(alpha))
+    contact = _add((0.0, 0.0), up, 0.55 * L)
+    centre = _add(contact, normal, 3.5)
+    items.append(Slider(centre, alpha, 12.0, 7.0))
+    items += _force_arrow("Q", _add(centre, (0.0, -1.0), 3.5), (0.0, -1.0), at_tail=True)
+    f_dir = (1.0, 0.0) if push == "horizontal" else up
+    items += _force_arrow(names[0], _add(centre, f_dir, -6.0), f_dir)
+    if stroke is not None and stroke.velocities:
+        v = stroke.velocities[0][1]
+        items.append(Arrow(_add(centre, normal, 6.0), _add(_add(centre, normal, 6.0), _unit(v), 10.0), "construction"))
+        items.append(Label("v", _add(_add(centre, normal, 6.0), _unit(v), 12.0), (), 3.0))
+        t = _unit(v)
+        c, s = math.cos(phi), math.sin(phi)
+        r_dir = (normal[0] * c - t[0] * s, normal[1] * c - t[1] * s)
+        items.append(Segment(_add(contact, normal, -10.0), _add(contact, normal, 22.0), "construction", dashed=True))
+        items += _force_arrow(names[1], contact, r_dir, 20.0, at_tail=True)
+        a_n = math.atan2(normal[1], normal[0])
+        a_r = math.atan2(r_dir[1], r_dir[0])
+        if abs(a_r - a_n) > 1e-9:
+            items += _angle_arc(contact, 11.0, a_n, a_r, "φv" if thread else "φ")
+    return items
+
+
+def _wedge_diagram(gamma: float, beta: float, stroke: Stroke | None = None) -> list[Primitive]:
+    """Slider 1, a wedge in the V between guide 1 (at β, frame below-left) and the face (at γ);
+    slider 2 right of the face on the horizontal guide, Q pushing back on it; the total reactions
+    of ``stroke`` (when given) at their contacts, each beside its dashed normal."""
+    V = (0.0, 0.0)
+    face = _dir(gamma)
+    up_left = (-math.cos(beta), math.sin(beta))
+    k = WEDGE_SCALE
+    g1_end = _add(V, up_left, 48.0 * k)
+    items: list[Primitive] = [GuideLine((-30.0 * k, 0.0), (55.0 * k, 0.0)), GuideLine(g1_end, V),
+                              Segment(V, _add(V, face, 44.0 * k), "given")]
+    h = 24.0 * k * math.sin(gamma)
+    s2 = [V, (34.0 * k, 0.0), (34.0 * k, h), _add(V, face, 24.0 * k)]
+    items.append(Polyline(tuple(s2), "given", closed=True))
+    s1 = [_add(V, face, 6.0 * k), _add(V, face, 34.0 * k), _add(V, up_left, 34.0 * k), _add(V, up_left, 6.0 * k)]
+    items.append(Polyline(tuple(s1), "given", closed=True))
+    c1 = _mid(_mid(s1[0], s1[1]), _mid(s1[2], s1[3]))
+    items += [Label("1", c1, (), 3.5, italic=False), Label("2", (22.0 * k, h / 2.0), (), 3.5, italic=False)]
+    items += _force_arrow("Q", (34.0 * k, h / 2.0), (-1.0, 0.0))
+    top_mid = _mid(s1[1], s1[2])
+    items += _force_arrow("F", top_mid, (-up_left[0], -up_left[1]))
+    items += _angle_arc(V, 9.0, 0.0, gamma, "γ")
+    items += _angle_arc(V, 18.0, math.pi - beta, math.pi, "β")
+    if stroke is not None:  # the total reactions of the first stroke drawn, each at its contact
+        real = [poly for poly in stroke.polygons if not poly.ideal]
+        sides = {f.name: f for poly in real for f in poly.forces}
+        contacts = {"R32": ((27.0 * k, 0.0), (0.0, 1.0)),
+                    "R12": (_add(V, face, 19.0 * k), (math.sin(gamma), -math.cos(gamma))),
+                    "R31": (_add(V, up_left, 22.0 * k), (math.sin(beta), math.cos(beta)))}
+        for name, (at, normal) in contacts.items():
+            side = sides.get(name)
+            if side is None or math.hypot(side.end[0] - side.start[0], side.end[1] - side.start[1]) == 0.0:
+                continue
+            d = _unit((side.end[0] - side.start[0], side.end[1] - side.start[1]))
+            n = normal if d[0] * normal[0] + d[1] * normal[1] >= 0 else (-normal[0], -normal[1])
+            items.append(Segment(_add(at, n, -5.0), _add(at, n, 15.0), "construction", dashed=True))
+            items += _force_arrow(name, at, d, 13.0, at_tail=True)
+    return items
+
+
+def _chain_diagram(stages: Sequence[Any], powers: Sequence[Any], width: float = math.inf) -> list[Primitive]:
+    """The machines as boxes, the power on the arrows between them, in rows no wider than
+    ``width`` mm (a long chain wraps: the power line runs down to the start of the next row)."""
+    items: list[Primitive] = []
+    box_w, gap = 36.0, 24.0
+    per_row = max(1, int((width - 8.0 - gap - 14.0) // (gap + box_w))) if math.isfinite(width) else len(stages)
+
+    def height(stage: Any) -> float:
+        return 17.0 if len(stage.branches) == 1 else 22.0 * len(stage.branches) - 4.0
+
+    def box(cx: float, cy: float, text: str, eta: str) -> None:
+        pts = ((cx - box_w / 2, cy - 8.5), (cx + box_w / 2, cy - 8.5), (cx + box_w / 2, cy + 8.5),
+               (cx - box_w / 2, cy + 8.5))
+        items.append(Polyline(pts, "given", closed=True))
+        items.append(Label(text, (cx, cy + 3.2), (), 2.8, italic=False))
+        items.append(Label(eta, (cx, cy - 3.2), (), 2.8))
+
+    items.append(Label("motor", (0.0, 0.0), (), 3.2, italic=False))
+    x, y, x0 = 8.0, 0.0, 8.0
+    for k, (stage, res) in enumerate(zip(stages, powers)):
+        if k and k % per_row == 0:  # wrap: down half-way between the rows, back left, down again
+            below = max(height(st) for st in stages[k - per_row:k]) / 2.0
+            drop = below + max(height(st) for st in stages[k:k + per_row]) / 2.0 + 16.0
+            turn = x + gap / 2.0
+            items.append(Polyline(((x, y), (turn, y), (turn, y - below - 8.0), (x0 - gap / 2.0, y - below - 8.0),
+                                   (x0 - gap / 2.0, y - drop)), "result"))
+            x, y = x0 - gap / 2.0, y - drop
+            items.append(Arrow((x, y), (x + gap / 2.0, y), "result"))
+            items.append(Label(f"{res.power_in / 1000.0:.4g} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),), 2.8,
+                               italic=False))
+            x += gap / 2.0 + box_w / 2.0
+        else:
+            items.append(Arrow((x, y), (x + gap, y), "result"))
+            items.append(Label(f"{res.power_in / 1000.0:.4g} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),), 2.8,
+                               italic=False))
+            x += gap + box_w / 2.0
+        if len(stage.branches) == 1:
+            series = stage.branches[0][1]
+            text = stage.name if len(series) == 1 else f"{stage.name} ×{len(series)}"
+            eta = "η = " + (f"{series[0]:g}" if len(set(series)) == 1 else "·".join(f"{e:g}" for e in series))
+            box(x, y, text, eta)
+        else:
+            n = len(stage.branches)
+            for i, (share, series) in enumerate(stage.branches):
+                cy = y + (n - 1) * 11.0 - i * 22.0
+                pts = ((x - box_w / 2, cy - 9.0), (x + box_w / 2, cy - 9.0), (x + box_w / 2, cy + 9.0),
+                       (x - box_w / 2, cy + 9.0))
+                items.append(Polyline(pts, "given", closed=True))
+                items.append(Label(f"{stage.name}: {share:g}", (x, cy + 3.4), (), 2.6, italic=False))
+                items.append(Label("η = " + "·".join(f"{e:g}" for e in series), (x, cy - 3.4), (), 2.6))
+        x += box_w / 2.0
+    items.append(Arrow((x, y), (x + gap, y), "result"))
+    items.append(Label(f"{powers[-1].power_out / 1000.0:.4g} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),), 2.8,
+                       italic=False))
+    items.append(Label("load", (x + gap + 6.0, y), (), 3.2, italic=False))
+    return items
+
+
+# ---------------------------------------------------------------------------- polygons
+
+
+def polygon_items(polygons: Sequence[ForcePolygon]) -> list[Primitive]:
+    """Every side of every polygon an arrow with its name; the ideal ones thin and dashed."""
+    items: list[Primitive] = []
+    seen: set[tuple[str, XY, XY]] = set()
+    for poly in polygons:
+        for s in poly.forces:
+            if math.hypot(s.end[0] - s.start[0], s.end[1] - s.start[1]) < 1e-9:
+                continue
+            if poly.ideal:
+                items.append(Segment(s.start, s.end, "construction", dashed=True))
+                continue
+            key = (s.name, s.start, s.end)
+            if key in seen:
+                continue
+            seen.add(key)
+            if s.name.startswith("R21"):  # the shared side, drawn once as R12 (reversed)
+                continue
+            items.append(Arrow(s.start, s.end, "result" if s.name in ("F", "R", "R12", "R32", "R31") else "given"))
+            d = _unit((s.end[0] - s.start[0], s.end[1] - s.start[1]))
+            items.append(Label(force_name(s.name), _mid(s.start, s.end), ((d[0], d[1]), (-d[0], -d[1])), 3.2))
+    return items
+
+
+def efficiency_sheet(title: str, problem: Any, strokes: dict[str, Stroke], chain: Any, phi: float, angle: float | None,
+                     scales: dict[str, float], show: Sequence[str], page: tuple[float, float],
+                     footer: tuple[str, ...] = ()) -> Sheet:
+    """The sheet of an efficiency problem: the diagram and a polygon per direction, as shown."""
+    panels: list[Panel] = []
+    first = next(iter(strokes.values()), None)
+    if "diagram" in show:
+        kind = problem.type
+        notes: tuple[str, ...] = ()
+        if kind == "chain":
+            items = _chain_diagram(problem.stages, chain[1], page[0] - 40.0)
+            parallel = any(len(st.branches) > 1 for st in problem.stages)
+            head = "machines in series" + (" and in parallel" if parallel else "")
+            notes = (f"η = {chain[0]:.6g}",)
+        elif kind == "wedge":
+            items = _wedge_diagram(problem.gamma, problem.beta, first)
+            head = f"wedge: γ = {math.degrees(problem.gamma):g}°, β = {math.degrees(problem.beta):g}°"
+            notes = (f"φ = arctan f = {math.degrees(phi):.4g}°",) if problem.f is not None else ()
+        else:
+            thread = ("π·d₂", "L = n·P") if kind == "screw" else None
+            push = problem.push if kind == "incline" else "horizontal"
+            items = _incline_diagram(float(angle), phi, first, push, ("F", "R"), thread)  # type: ignore[arg-type]
+            head = ("screw thread unrolled: ψ = " if kind == "screw" else "inclined plane: α = ") + \
+                f"{math.degrees(float(angle)):.4g}°"  # type: ignore[arg-type]
+            if problem.f is not None:
+                sym = "φv" if kind == "screw" else "φ"
+                notes = (f"{sym} = {math.degrees(phi):.4g}°",)
+        panels.append(Panel("diagram", head, tuple(items), notes))
+    if "polygon" in show:
+        for k, (d, st) in enumerate(strokes.items()):
+            items = polygon_items(st.polygons)
+            if st.F is None:
+                notes = (format_scale("F", scales["F"]), "F ∥ R: no finite force — self-locked, η = 0")
+            else:
+                notes = (format_scale("F", scales["F"]),
+                         f"F = {st.F:.5g} N, F₀ = {st.F0:.5g} N, η = {st.eta:.4g}".replace("-", "−"))
+            panels.append(Panel(f"polygon-{d}", f"force polygon — {_WORDS[d]}", tuple(items), notes))
+    return Sheet(title, tuple(panels), page, footer)
+
+
+__all__ = ["efficiency_sheet", "force_name", "polygon_items"]

@@ -1,0 +1,467 @@
+"""Read an efficiency scene (``[efficiency]``) — and route a balancing scene to its reader.
+
+An efficiency scene is one problem of friction and efficiency: a block on an inclined plane, the
+wedge of problem F1430, a screw (square or V thread), or a chain of machines in series and in
+parallel. :func:`parse_efficiency_scene` is the rest of :func:`graphmech.scene.parse_scene` for a
+scene with an ``[efficiency]`` or a ``[balancing]`` table (the latter read by
+:mod:`graphmech.problems.balancing.scene`), with the same reader, key paths and one-line messages: every
+problem is collected, then raised once as a :class:`~graphmech.errors.SceneError`.
+
+The format, with examples, is the "Efficiency and balancing scenes" section of
+``docs/scene-format.md``.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Mapping
+
+from graphmech.scene import (
+    _LINKAGE_KEYS,
+    _MISSING,
+    Scene,
+    _raise_sorted,
+    _read_tail,
+    _read_header,
+    _read_measured,
+    _read_scales,
+    _Reader,
+    _say,
+    _type_name,
+)
+
+EFFICIENCY_TYPES = ("incline", "wedge", "screw", "chain")
+DIRECTIONS = ("forward", "reverse")
+THREADS = ("square", "V")
+PUSHES = ("horizontal", "parallel")
+#: What an efficiency scene may show: the sketch of the bodies with their forces (the unrolled
+#: thread for a screw, the block diagram of a chain) and the force polygons at μF.
+EFFICIENCY_SHOW_CHOICES = ("diagram", "polygon")
+#: The keys each type reads, besides ``type``.
+_TYPE_KEYS = {
+    "incline": ("angle", "push", "f", "load", "direction"),
+    "wedge": ("gamma", "beta", "f", "load", "direction"),
+    "screw": ("thread", "half_angle", "f", "f_v", "d2", "pitch", "starts", "lead_angle", "at_self_locking_limit",
+              "d1", "collar", "load", "direction"),
+    "chain": ("load", "speed", "stage"),
+}
+#: Quantities each type offers: name → (unit, depends on the direction, needs friction).
+QUANTITIES: dict[str, dict[str, tuple[str, bool, bool]]] = {
+    "incline": {"phi": ("deg", False, True), "F": ("N", True, True), "F0": ("N", False, False),
+                "eta": ("", True, True), "R": ("N", True, True), "self_locking_angle": ("deg", False, True)},
+    "wedge": {"phi": ("deg", False, True), "F": ("N", True, True), "F0": ("N", False, False),
+              "eta": ("", True, True), "R12": ("N", True, True), "R32": ("N", True, True),
+              "R31": ("N", True, True), "gamma_limit": ("deg", False, True)},
+    "screw": {"psi": ("deg", False, False), "phi_v": ("deg", False, True), "F": ("N", True, True),
+              "F0": ("N", False, False), "M": ("N·m", True, True), "eta": ("", True, True),
+              "R": ("N", True, True), "self_locking_angle": ("deg", False, True),
+              "eta_self_locking_max": ("", False, True), "r_f": ("m", False, False), "sigma": ("Pa", False, False)},
+    "chain": {"eta": ("", False, False), "P_in": ("W", False, False), "P_out": ("W", False, False)},
+}
+DEFAULT_FIND = {"incline": ("F", "eta"), "wedge": ("F", "eta"), "screw": ("psi", "eta"), "chain": ("eta", "P_in")}
+
+
+@dataclass(frozen=True)
+class Stage:
+    """A stage of a chain: its name and its branches (share of the input power, the
+    efficiencies in series along the branch); one branch = machines in series."""
+
+    name: str
+    branches: tuple[tuple[float, tuple[float, ...]], ...]
+
+
+@dataclass(frozen=True)
+class EfficiencyProblem:
+    """An [efficiency] table in SI (N, rad, m, W).
+
+    ``f`` is the friction coefficient (for a screw given as ``f_v``: the equivalent one, then
+    ``half_angle`` is 0); None when the scene asks for nothing that needs it. ``lead_angle`` of a
+    screw is None when it sits at the self-locking limit (ψ = φv).
+    """
+
+    type: str
+    directions: tuple[str, ...] = DIRECTIONS
+    f: float | None = None
+    load: float | None = None
+    angle: float | None = None  # incline α
+    push: str = "horizontal"
+    gamma: float | None = None
+    beta: float | None = None
+    thread: str = "square"
+    half_angle: float = 0.0
+    f_is_equivalent: bool = False
+    d2: float | None = None
+    lead: float | None = None
+    lead_angle: float | None = None
+    at_limit: bool = False
+    d1: float | None = None
+    collar: tuple[float, float] | None = None
+    speed: float | None = None
+    stages: tuple[Stage, ...] = ()
+
+    def quantities(self) -> dict[str, tuple[str, bool, bool]]:
+        return QUANTITIES[self.type]
+
+
+_FORCES_KEYS = ("title", "show", "find", "scales", "units", "measured", "check", "page", "efficiency", "balancing")
+
+
+def parse_efficiency_scene(data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]) -> Scene:
+    """The rest of :func:`graphmech.scene.parse_scene` for an [efficiency] or [balancing] scene.
+
+    Examples
+    --------
+    >>> from graphmech.scene import parse_scene
+    >>> s = parse_scene({"efficiency": {"type": "incline", "angle_deg": 30, "f": 0.1, "load_N": 1000}}, "x.toml")
+    >>> s.efficiency.directions, round(s.efficiency.angle, 12)
+    (('forward', 'reverse'), 0.523598775598)
+    >>> parse_scene({"efficiency": {"type": "incline", "angle_deg": 95, "f": 0.1, "load_N": 1}}, "x.toml")
+    Traceback (most recent call last):
+    ...
+    graphmech.errors.SceneError: x.toml: efficiency.angle_deg: must lie between 0° and 90° (exclusive; at least 0.01° from either)
+    """
+    problems = top.problems
+    for key in _LINKAGE_KEYS + ("cam", "flywheel"):
+        if key in data:
+            top.used.add(key)
+            top.problem(key, f"a scene is one problem: [{key}] does not go with [efficiency] or [balancing]; "
+                             "put it in a scene of its own")
+    if "efficiency" in data and "balancing" in data:
+        top.used.add("balancing")
+        top.problem("balancing", "a scene is one problem: efficiency ([efficiency]) or balancing ([balancing]), "
+                                 "not both")
+    balancing = "efficiency" not in data
+    if balancing:
+        from graphmech.problems.balancing.scene import BALANCING_SHOW_CHOICES, read_balancing
+
+        title, show, find = _read_header(top, BALANCING_SHOW_CHOICES, BALANCING_SHOW_CHOICES)
+        scales = _read_scales(top, entries=[("W", "mass_radius"), ("l", "length")])
+        problem: Any = read_balancing(top)
+    else:
+        title, show, find = _read_header(top, EFFICIENCY_SHOW_CHOICES, EFFICIENCY_SHOW_CHOICES)
+        scales = _read_scales(top, entries=[("F", "force")])
+        problem = read_efficiency(top, find, show)
+        if problem is not None and problem.type == "chain":  # a chain has its block diagram, no polygon
+            if "show" not in data:
+                show = ("diagram",)
+            elif "polygon" in show:
+                top.problem(f"show[{list(data['show']).index('polygon')}]",
+                            "a chain of machines has no force polygon: show diagram")
+    # names such as eta@reverse: the check validates the direction against the quantity
+    measured = _read_measured(top, None)
+    precision, page = _read_tail(top, _FORCES_KEYS)
+    if problems or problem is None:
+        _raise_sorted(problems, data, order, "balancing" if balancing else "efficiency", source)
+    return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
+                 precision_mm=precision, page=page, efficiency=None if balancing else problem,
+                 balancing=problem if balancing else None)
+
+
+#: How close an angle may come to the ends of its range, degrees: a wedge of 1e-300° has no
+#: finite ideal force, and no drawing can tell it from 0°.
+ANGLE_MARGIN_DEG = 0.01
+#: The largest load, N: beyond it the polygons' sums overflow long before any drawing makes sense.
+MAX_LOAD_N = 1e12
+#: The smallest overall efficiency of a chain: below it nothing reaches the load (and P_in overflows).
+MIN_CHAIN_ETA = 1e-12
+
+
+def _angle(r: _Reader, base: str, lo: float, hi: float, required: bool = True,
+           hi_included: bool = False) -> float | None:
+    """An angle in (lo, hi) at least ANGLE_MARGIN_DEG from either end; ``hi_included`` admits hi
+    itself (a wedge's guide 1 at β = 90°: the wedge press)."""
+    v = r.value(base, "angle", required=required)
+    if v is None:
+        return None
+    top = math.radians(hi) if hi_included else math.radians(hi - ANGLE_MARGIN_DEG)
+    if not (math.radians(lo + ANGLE_MARGIN_DEG) <= v.si <= top):
+        ends = (f"at least {ANGLE_MARGIN_DEG:g}° above {lo:g}°, at most {hi:g}°" if hi_included else
+                f"exclusive; at least {ANGLE_MARGIN_DEG:g}° from either")
+        r.problem(v.path, f"must lie between {lo:g}° and {hi:g}° ({ends})")
+        return None
+    return v.si
+
+
+def _length(r: _Reader, base: str) -> float | None:
+    """A thread's diameter or pitch: 1 µm … 100 m (beyond, squares underflow or overflow)."""
+    v = r.value(base, "length", required=False, positive=True)
+    if v is None:
+        return None
+    if not 1e-6 <= v.si <= 100.0:
+        r.problem(v.path, f"{v.text()} is absurd for a screw thread (1 µm … 100 m)")
+        return None
+    return v.si
+
+
+def _load(r: _Reader, base: str, kind: str, required: bool = True) -> float | None:
+    v = r.value(base, kind, required=required, positive=True)
+    if v is None:
+        return None
+    if v.si > MAX_LOAD_N or v.si < 1e-9:
+        r.problem(v.path, f"{v.text()} is absurd for a machine (between 1e-9 and {MAX_LOAD_N:g} in SI units)")
+        return None
+    return v.si
+
+
+def _fraction(r: _Reader, value: Any, path: str, what: str) -> float | None:
+    x = r.number(value, path)
+    if x is None:
+        return None
+    if not 0.0 < x <= 1.0:
+        r.problem(path, f"{what} must lie in (0, 1], not {x:g}")
+        return None
+    return x
+
+
+def _directions(r: _Reader) -> tuple[str, ...]:
+    value = r.raw("direction")
+    if value is _MISSING:
+        return DIRECTIONS
+    items = value if isinstance(value, list) else [value]
+    out: list[str] = []
+    for i, item in enumerate(items):
+        path = r.at("direction") + (f"[{i}]" if isinstance(value, list) else "")
+        if not isinstance(item, str) or item not in DIRECTIONS:
+            r.problem(path, f"unknown value {_say(item) if isinstance(item, str) else _type_name(item)}: "
+                            'use "forward" (F drives: raising, tightening) or "reverse" (the load drives: '
+                            "lowering, loosening)")
+        elif item in out:
+            r.problem(path, f"{item} is listed twice")
+        else:
+            out.append(item)
+    if isinstance(value, list) and not value:
+        r.problem(r.at("direction"), "an empty list: give forward, reverse or both")
+    return tuple(out) or DIRECTIONS
+
+
+def _needs_friction(kind: str, find: tuple[str, ...], show: tuple[str, ...]) -> bool:
+    names = [n.partition("@")[0] for n in find] or list(DEFAULT_FIND[kind])
+    q = QUANTITIES[kind]
+    return "polygon" in show or any(q.get(n, ("", False, True))[2] for n in names)
+
+
+def _needs_load(kind: str, find: tuple[str, ...], show: tuple[str, ...]) -> bool:
+    """The load Q is needed for the polygon and every force, moment or stress (η too: it is read
+    off the polygons); not for angles such as ψ."""
+    names = [n.partition("@")[0] for n in find] or list(DEFAULT_FIND[kind])
+    return "polygon" in show or any(n in ("F", "F0", "eta", "R", "R12", "R32", "R31", "M", "sigma") for n in names)
+
+
+def read_efficiency(top: _Reader, find: tuple[str, ...], show: tuple[str, ...]) -> EfficiencyProblem | None:
+    """[efficiency] → :class:`EfficiencyProblem` (None after reporting when it is invalid)."""
+    r = top.table_at("efficiency", required=True)
+    if r is None:
+        return None
+    kind = r.string("type", choices=EFFICIENCY_TYPES, required=True)
+    if kind is None:
+        r.ignore(*{k for keys in _TYPE_KEYS.values() for k in keys})
+        r.finish()
+        return None
+    for other, keys in _TYPE_KEYS.items():
+        for key in keys:
+            if key not in _TYPE_KEYS[kind] and r.present(key) is not None:
+                r.known.add(key)
+                for k in list(r.table):
+                    if k == key or k.startswith(key + "_"):
+                        r.used.add(k)
+                        r.problem(r.at(k), f"not a key of type {kind!r} (it belongs to {other!r})")
+    ok = True
+    if kind == "chain":
+        load = _load(r, "load", "force")
+        speed = _load(r, "speed", "velocity")
+        stages = _read_stages(r)
+        r.finish()
+        if load is None or speed is None or not stages or _has(r, "efficiency"):
+            return None
+        return EfficiencyProblem("chain", (), load=load, speed=speed, stages=stages)
+    directions = _directions(r)
+    load_needed = _needs_load(kind, find, show)
+    load = _load(r, "load", "force", required=load_needed)
+    f_needed = _needs_friction(kind, find, show)
+    f, equivalent = _friction(r, kind, f_needed)
+    prob: dict[str, Any] = {}
+    if kind == "incline":
+        prob["angle"] = _angle(r, "angle", 0.0, 90.0)
+        prob["push"] = r.string("push", choices=PUSHES, default="horizontal") or "horizontal"
+        ok = prob["angle"] is not None
+    elif kind == "wedge":
+        prob["gamma"] = _angle(r, "gamma", 0.0, 90.0)
+        prob["beta"] = _angle(r, "beta", 0.0, 90.0, hi_included=True)  # 90°: the wedge press
+        ok = prob["gamma"] is not None and prob["beta"] is not None
+        if ok and abs(math.degrees(prob["gamma"] + prob["beta"]) - 90.0) < 1.0:
+            r.problem(r.at(r.present("beta") or "beta"),
+                      "γ + β within 1° of 90°: slider 1's guide carries almost nothing and the side it bears on "
+                      "is undecided; the reconstruction needs γ + β clear of 90°")
+            ok = False
+    else:
+        ok = _read_screw(r, prob, f, equivalent)
+    r.finish()
+    if not ok or (load_needed and load is None) or (f_needed and f is None) or _has(r, "efficiency"):
+        return None
+    return EfficiencyProblem(kind, directions, f=f, load=load, f_is_equivalent=equivalent, **prob)
+
+
+def _has(r: _Reader, prefix: str) -> bool:
+    return any(p.startswith(prefix) for p, _ in r.problems)
+
+
+def _friction(r: _Reader, kind: str, needed: bool) -> tuple[float | None, bool]:
+    has_f, has_fv = "f" in r.table, kind == "screw" and "f_v" in r.table
+    r.known.update(["f", "f_v"] if kind == "screw" else ["f"])
+    if has_f and has_fv:
+        r.used.update(["f", "f_v"])
+        r.problem(r.at("f_v"), "give f (with the thread's form) or f_v (the equivalent coefficient), not both")
+        return None, False
+    key = "f_v" if has_fv else "f"
+    if key not in r.table:
+        if needed:
+            more = " or f_v (the equivalent coefficient)" if kind == "screw" else ""
+            r.problem(r.at("f"), f"missing: the friction coefficient f{more}, needed for what the scene asks "
+                                 "(η, F, the polygon)")
+        return None, False
+    r.used.add(key)
+    x = r.number(r.table[key], r.at(key))
+    if x is None:
+        return None, False
+    if not 0.0 <= x < 10.0:
+        r.problem(r.at(key), f"must lie in [0, 10), not {x:g}")
+        return None, False
+    return x, has_fv
+
+
+def _read_screw(r: _Reader, prob: dict[str, Any], f: float | None, equivalent: bool) -> bool:
+    thread = r.string("thread", choices=THREADS, default="square") or "square"
+    prob["thread"] = thread
+    ok = True
+    if thread == "V" and not equivalent:
+        prob["half_angle"] = _angle(r, "half_angle", 0.0, 90.0, required=f is not None) or 0.0
+    else:
+        if r.present("half_angle") is not None:
+            r.value("half_angle", "angle")
+            if thread == "square":
+                r.problem(r.at(r.present("half_angle") or "half_angle"), "a square thread has no half-angle "
+                          '(write thread = "V")')
+                ok = False
+        prob["half_angle"] = 0.0
+    prob["d2"] = _length(r, "d2")
+    pitch = _length(r, "pitch")
+    starts_raw = r.raw("starts")
+    starts = 1
+    if starts_raw is not _MISSING:
+        if isinstance(starts_raw, bool) or not isinstance(starts_raw, int) or not 1 <= starts_raw <= 12:
+            r.problem(r.at("starts"), "must be a whole number of thread starts, 1 … 12")
+            ok = False
+        else:
+            starts = starts_raw
+    limit = r.flag("at_self_locking_limit")
+    if limit is None and r.raw("at_self_locking_limit") is not _MISSING:
+        ok = False  # said by flag()
+    at_limit = limit is True
+    lead_angle = _angle(r, "lead_angle", 0.0, 90.0, required=False)
+    given = [n for n, v in (("pitch", pitch), ("lead_angle", lead_angle)) if v is not None] + \
+        (["at_self_locking_limit"] if at_limit else [])
+    if len(given) != 1:
+        key = given[1] if len(given) > 1 else "pitch"
+        where = r.at(r.present(key) or key)
+        r.problem(where, "give the thread's lead as exactly one of pitch_mm (with d2_mm), lead_angle_deg, or "
+                         "at_self_locking_limit = true" + (f" (given: {', '.join(given)})" if given else ""))
+        return False
+    if pitch is not None:
+        if prob["d2"] is None:
+            r.problem(r.at("d2"), "missing: the pitch diameter d2 (write d2_mm), needed with pitch")
+            return False
+        prob["lead"] = pitch * starts
+        prob["lead_angle"] = math.atan(prob["lead"] / (math.pi * prob["d2"]))
+    elif lead_angle is not None:
+        prob["lead_angle"] = lead_angle
+    else:
+        if not f:
+            r.problem(r.at("at_self_locking_limit"), "the self-locking limit ψ = φv needs a friction coefficient "
+                                                     "f > 0 (without friction nothing self-locks)")
+            return False
+        prob["at_limit"] = True
+        prob["lead_angle"] = None
+    prob["d1"] = _length(r, "d1")
+    if prob["d1"] is not None and prob["d2"] is not None and prob["d1"] >= prob["d2"]:
+        r.problem(r.at(r.present("d1") or "d1"), f"the minor diameter d1 = {prob['d1'] * 1000:g} mm must be smaller "
+                                                 f"than the pitch diameter d2 = {prob['d2'] * 1000:g} mm")
+        ok = False
+    collar = r.quantity("collar", "length", required=False)
+    if collar is not None:
+        xy = r.numbers(collar.value, r.at(collar.key), 2, positive=True, shape="[d0, dw]")
+        if xy is not None:
+            if not all(1e-6 <= collar.si(v) <= 100.0 for v in xy):
+                r.problem(r.at(collar.key), "absurd bearing-face diameters (1 µm … 100 m)")
+                ok = False
+            elif xy[0] >= xy[1]:
+                r.problem(r.at(collar.key), "the bearing face's inner diameter d0 must be smaller than its outer dw")
+                ok = False
+            prob["collar"] = (collar.si(xy[0]), collar.si(xy[1]))
+    return ok
+
+
+def _read_stages(r: _Reader) -> tuple[Stage, ...]:
+    out = []
+    for k, s in enumerate(r.tables_at("stage")):
+        name = s.string("name", default=f"stage {k + 1}") or f"stage {k + 1}"
+        if len(name) > 40:
+            s.problem(s.at("name"), "too long (at most 40 characters)")
+        has_eta, has_branch = "eta" in s.table, "branch" in s.table
+        s.known.update(["eta", "count", "branch"])
+        if has_eta == has_branch:
+            s.problem(s.at("eta"), "give eta (machines in series) or [[…branch]] (machines in parallel), one of them")
+            s.used.update(["eta", "branch", "count"])
+            s.finish()
+            continue
+        if has_eta:
+            s.used.add("eta")
+            eta = _fraction(s, s.table["eta"], s.at("eta"), "an efficiency")
+            count_raw = s.raw("count")
+            count = 1
+            if count_raw is not _MISSING:
+                if isinstance(count_raw, bool) or not isinstance(count_raw, int) or not 1 <= count_raw <= 100:
+                    s.problem(s.at("count"), "must be a whole number 1 … 100 (identical machines in series)")
+                    count = 0
+                else:
+                    count = count_raw
+            s.finish()
+            if eta is not None and count:
+                out.append(Stage(name, ((1.0, (eta,) * count),)))
+            continue
+        branches = []
+        for b in s.tables_at("branch"):
+            share = b.raw("share", required=True, hint="the branch's share of the stage's input power")
+            sh = None if share is _MISSING else b.number(share, b.at("share"), positive=True)
+            etas = b.raw("eta", required=True, hint="the efficiencies in series along the branch, a list")
+            es: list[float] = []
+            if etas is not _MISSING:
+                items = etas if isinstance(etas, list) else [etas]
+                for i, e in enumerate(items):
+                    x = _fraction(b, e, b.at("eta") + (f"[{i}]" if isinstance(etas, list) else ""), "an efficiency")
+                    if x is not None:
+                        es.append(x)
+                if not items:
+                    b.problem(b.at("eta"), "an empty list")
+                ok = len(es) == len(items) and bool(items)
+            else:
+                ok = False
+            b.finish()
+            if sh is not None and ok:
+                branches.append((sh, tuple(es)))
+        s.finish()
+        if len(branches) < 2 and not _has(s, s.path):
+            s.problem(s.at("branch"), "machines in parallel need at least two [[…branch]] tables")
+        elif branches:
+            out.append(Stage(name, tuple(branches)))
+    if not out and not _has(r, r.at("stage")):
+        r.problem(r.at("stage"), "no [[efficiency.stage]]: a chain needs at least one machine")
+    log_eta = sum(math.log(sum(sh * math.prod(es) for sh, es in st.branches) / sum(sh for sh, _ in st.branches))
+                  for st in out if all(math.prod(es) > 0 for _, es in st.branches))
+    if out and (log_eta < math.log(MIN_CHAIN_ETA) or any(math.prod(es) <= 0 for st in out for _, es in st.branches)):
+        r.problem(r.at("stage"), f"the chain's overall efficiency is below {MIN_CHAIN_ETA:g}: nothing reaches the load")
+        return ()
+    return tuple(out)
+
+
+__all__ = ["EfficiencyProblem", "Stage", "parse_efficiency_scene", "read_efficiency", "QUANTITIES", "DEFAULT_FIND",
+           "EFFICIENCY_SHOW_CHOICES"]

@@ -1,0 +1,632 @@
+"""From a scene to checked values: choose μ, build and prune the construction, evaluate it at
+every position, measure, compare with the independent exact solution, judge hand measurements.
+
+This is one of the three modules (with ``scene`` and ``cli``) that know about users: it turns
+problems into :class:`~graphmech.errors.SceneError` with key paths, and conditioning into
+warnings.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field, replace
+from collections.abc import Iterator
+from contextlib import contextmanager
+from typing import Any
+
+import numpy as np
+
+from graphmech.accuracy import CONSTRUCTION
+from graphmech import tolerances as T
+from graphmech.errors import DegenerateConstruction, SceneError
+from graphmech.exact.linkage import Kinematics, solve as solve_exact
+from graphmech.mechanisms.linkage import Crank, Linkage
+from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
+from graphmech.render.style import subscript
+from graphmech.scales import PAPER, drawn_size_problem, format_scale, round_scale
+
+SCALE_KEYS = {"mechanism": "l", "velocity": "v", "acceleration": "a"}
+_PANEL_WORDS = {"mechanism": "the mechanism", "velocity": "the velocity polygon", "acceleration": "the acceleration polygon"}
+
+#: The smallest drawing a panel may get, mm; a sheet whose positions leave less is refused.
+MIN_PANEL_MM = 25.0
+
+
+def rows_that_fit(page: tuple[float, float]) -> int:
+    """How many positions (one row of panels each) one sheet of this size can hold."""
+    return max(1, int((page[1] - 38.0) // (MIN_PANEL_MM + 35.0)))
+
+
+# ---------------------------------------------------------------------------- results
+
+
+@dataclass(frozen=True)
+class Row:
+    """One line of the check table."""
+
+    name: str
+    unit: str
+    drawn_mm: float | None
+    scale: float
+    graphical: float
+    exact: float
+    rel_error: float
+    ill_conditioned: bool = False
+    # How accurate the method says it is (graphmech.accuracy): a construction is exact but for
+    # round-off; a discretised or read-off value carries its own relative error estimate and the
+    # basis it was found on ("12 positions", "15° divisions").
+    error_source: str = CONSTRUCTION
+    error_estimate: float | None = None
+    basis: str = ""
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"name": self.name, "unit": self.unit, "drawn_mm": self.drawn_mm, "scale": self.scale,
+                "graphical": self.graphical, "exact": self.exact, "rel_error": self.rel_error,
+                "ill_conditioned": self.ill_conditioned, "error_source": self.error_source,
+                "error_estimate": self.error_estimate, "basis": self.basis}
+
+    def estimated(self, source: str, estimate: float, basis: str) -> "Row":
+        """This row as a discretised or read-off value with its own error estimate."""
+        return replace(self, error_source=source, error_estimate=float(estimate), basis=basis)
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """A hand measurement judged against the exact value, within the drawing precision."""
+
+    name: str
+    measured: float
+    expected: float
+    tolerance: float
+    ok: bool
+    unit: str
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"name": self.name, "measured": self.measured, "expected": self.expected,
+                "tolerance": self.tolerance, "ok": self.ok, "unit": self.unit}
+
+
+def judge_value(name: str, value: float, expected: float, drawn: float | None, scale: float,
+                precision_mm: float, unit: str) -> Verdict:
+    """A measured value against the expected one: a length read off the drawing within the
+    drawing precision × its μ, any other value (a computed one) within 0.1 %."""
+    tol = precision_mm * abs(scale) if drawn is not None else max(abs(expected) * 1e-3, T.EPS)
+    return Verdict(name, value, expected, tol, abs(value - expected) <= tol + 1e-12 * abs(expected), unit)
+
+
+@dataclass
+class Analysis:
+    """Everything one scene produced: the construction, its solutions, the exact solution."""
+
+    scene: Any
+    build: LinkageConstruction
+    plan: Any
+    scales: dict[str, float]
+    stated: set[str]  # which μ the scene stated (the others were chosen)
+    positions: np.ndarray
+    labels: tuple[str, ...]
+    solutions: list[Any]  # per position: a Solution, or None where it failed
+    failures: list[str]  # per position: "" or the reason
+    exact: Kinematics
+    warnings: list[str] = field(default_factory=list)
+    rows: list[Row] = field(default_factory=list)
+    extra_measured: tuple[tuple[str, float], ...] = ()
+    size: float = 1.0  # the mechanism's typical length, m
+    dependencies: dict[str, set[str]] = field(default_factory=dict)  # step → the steps it needs (cache)
+    instant_centres: Any = None  # graphmech.problems.instant_centres.check.ICAnalysis when the scene asks for instant centres
+
+    def scale_notes(self) -> list[str]:
+        """μ as written on the drawing, marked where graphmech chose it."""
+        return [format_scale(k, v) + ("" if k in self.stated else " (chosen)") for k, v in self.scales.items()]
+
+
+# ---------------------------------------------------------------------------- names
+
+
+def position_text(build: LinkageConstruction, label: str) -> str:
+    driver = build.linkage.driver
+    sub = subscript(driver.link)
+    return f"φ{sub} = {label}°" if isinstance(driver, Crank) else f"s{sub} = {label}"
+
+
+def split_name(name: str) -> tuple[str, str | None]:
+    """``"v_C@50"`` → ``("v_C", "50")``."""
+    base, _, at = name.partition("@")
+    return base, (at or None)
+
+
+def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) -> list[tuple[str, str, int]]:
+    """(display name, quantity name, position index) for every ``find`` entry; bad names → SceneError."""
+    problems = []
+    out = []
+    multi = len(labels) > 1
+    from graphmech.problems.instant_centres import check as ic_check
+
+    for k, raw in enumerate(scene.find):
+        base, at = split_name(raw)
+        if ic_check.claims(raw):  # the instant-centre method's names (graphmech.problems.instant_centres.check)
+            continue
+        if base not in build.quantities:
+            close = close_names(base, build.quantities)
+            problems.append((f"find[{k}]", f"unknown quantity {base!r}{close}"))
+            continue
+        if at is None:
+            idx = range(len(labels))
+        elif at in labels:
+            idx = [labels.index(at)]
+        else:
+            problems.append((f"find[{k}]", f"no position {at!r} (positions: {', '.join(labels)})"))
+            continue
+        for i in idx:
+            out.append((f"{base}@{labels[i]}" if multi else base, base, i))
+    if problems:
+        raise SceneError(problems, scene.source)
+    return out
+
+
+def close_names(name: str, known: Any) -> str:
+    import difflib
+
+    m = difflib.get_close_matches(name, sorted(known), n=3)
+    return f"; did you mean {', '.join(m)}?" if m else ""
+
+
+# ---------------------------------------------------------------------------- scales
+
+
+def page_size(scene: Any) -> tuple[float, float]:
+    size = getattr(scene.page, "size", (297.0, 210.0))
+    return PAPER[size] if isinstance(size, str) else (float(size[0]), float(size[1]))
+
+
+def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[dict[str, float], set[str]]:
+    """μ from the scene where stated; otherwise the round value that fits the panel on the page.
+
+    The construction is linear in 1/μ, so one provisional evaluation at μ = 1 gives every
+    panel's extent in real units; each μ is then the smallest round number that fits that
+    extent into the room one panel has (the panels stand side by side, one row per position).
+    """
+    stated = {k for k in ("l", "v", "a") if k in scene.scales}
+    scales = {k: float(scene.scales[k]) for k in ("l", "v", "a") if k in stated}
+    provisional = {k: scales.get(k, 1.0) for k in ("l", "v", "a")}
+    b = build_polygons(linkage, provisional)
+    steps = [s for s in b.g.steps.values() if s.kind == "point"]
+    plan = b.g.prune([s.name for s in steps])
+    sol = plan.evaluate_batch({b.param: positions})
+    w, h = page_size(scene)
+    shown = [p for p in PANELS if p in scene.show] or ["mechanism"]
+    # Room for one panel's drawing: the page less margins (10), title (12) and footer (6); one
+    # row of panels per position, each row less its gap (12), caption (11) and labels (2 × 6).
+    rows = max(1, len(positions))
+    room_w = (w - 20.0 - 12.0 * (len(shown) - 1)) / len(shown) - 12.0
+    room_h = max((h - 38.0) / rows - 35.0, MIN_PANEL_MM)
+    for panel, key in SCALE_KEYS.items():
+        xs, ys = [], []
+        for s in steps:
+            if s.panel != panel:
+                continue
+            x, y = sol.values[s.name]
+            xs.append(np.broadcast_to(x, sol.valid.shape)[sol.valid])
+            ys.append(np.broadcast_to(y, sol.valid.shape)[sol.valid])
+        if not xs or not any(a.size for a in xs):
+            scales.setdefault(key, 1.0)  # nothing drawn at this μ: a stated one stays as stated
+            continue
+        xa, ya = np.concatenate(xs), np.concatenate(ys)
+        ext_x = (xa.max() - xa.min()) * provisional[key]
+        ext_y = (ya.max() - ya.min()) * provisional[key]
+        if key in stated:  # drawn as stated, if a page can hold it legibly (a polygon of 0 is a point)
+            size = max(ext_x, ext_y)
+            why = size > 0 and drawn_size_problem(size, scales[key], key, _PANEL_WORDS[panel])
+            if why:
+                raise SceneError([("scales", why)], scene.source)
+            continue
+        need = max(ext_x / room_w, ext_y / room_h)
+        if not math.isfinite(need):  # a link of 1e300 m: the figure's extent overflows
+            raise DegenerateConstruction("the construction", OUT_OF_RANGE)
+        scales[key] = round_scale(need) if need > 0 else 1.0
+    return {k: scales[k] for k in ("l", "v", "a")}, stated
+
+
+# ---------------------------------------------------------------------------- analysis
+
+
+def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> Analysis:
+    """Build, prune, evaluate and check one scene (``extra_measured``: values from the command line).
+
+    Numbers beyond double precision (an ω of 1e155 rad/s squared) are a one-line
+    :class:`DegenerateConstruction`, never a traceback, an inf or a NaN.
+    """
+    with in_double_precision("the construction"):
+        return _analyse(scene, extra_measured)
+
+
+@contextmanager
+def in_double_precision(step: str) -> Iterator[None]:
+    """Run an analysis whose numbers may leave double precision (a speed of 1e300, a scale of
+    5e-324): numpy stays quiet, and an overflow or a division by zero is said in one line."""
+    try:
+        with np.errstate(all="ignore"):
+            yield
+    except (OverflowError, ZeroDivisionError, FloatingPointError):
+        raise DegenerateConstruction(step, OUT_OF_RANGE) from None
+
+
+def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
+    linkage: Linkage = scene.linkage
+    refuse_far_from_origin(scene, linkage, mechanism_size(linkage))
+    positions = np.asarray(scene.positions.values, dtype=float)
+    labels = tuple(scene.positions.labels) or tuple(f"{v:g}" for v in positions)
+    scales, stated = choose_scales(scene, linkage, positions)
+    build = build_polygons(linkage, scales)
+    wanted = _requested(scene, build, labels)
+    measured_q = _measured_quantities(measured_entries(scene, extra_measured), build, labels)
+    targets = [build.quantities[q].slot for _, q, _ in wanted] + [build.quantities[q].slot for q in measured_q]
+    for panel in PANELS:
+        if panel in scene.show:
+            targets += build.steps_of_panel(panel)
+    from graphmech.problems.instant_centres import check as ic_check
+
+    ic = ic_check.asked(scene, extra_measured)
+    if ic:  # the instant centres are found on the kinematic diagram: every point of it
+        targets += list(build.mech.values())
+    plan = build.g.prune(targets)
+
+    solutions: list[Any] = []
+    failures: list[str] = []
+    if len(positions) == 1:
+        where = position_text(build, labels[0])
+        try:  # one position asked for: if it cannot be built, the caller reports why
+            sol = plan.solve({build.param: float(positions[0])}, where)
+        except (OverflowError, ZeroDivisionError) as e:
+            raise DegenerateConstruction("the construction", f"numbers out of range ({e})", where) from None
+        if not _finite(sol.values):
+            raise DegenerateConstruction("the construction", OUT_OF_RANGE, where)
+        solutions.append(sol)
+        failures.append("")
+    else:
+        batch = plan.evaluate_batch({build.param: positions})
+        reason = [""] * len(positions)
+        for step, (mask, why) in batch.failures.items():
+            for i in np.flatnonzero(mask):
+                reason[i] = f"{step}: {why}"
+        for i in range(len(positions)):
+            sol = batch.at(i) if batch.valid[i] else None
+            if sol is not None and not _finite(sol.values):
+                sol, reason[i] = None, OUT_OF_RANGE
+            solutions.append(sol)
+            failures.append(reason[i])
+    exact = solve_exact(linkage, positions)
+    an = Analysis(scene, build, plan, scales, stated, positions, labels, solutions, failures, exact)
+    an.extra_measured = tuple(extra_measured)
+    an.size = mechanism_size(linkage, exact)
+    far = offset_warning(linkage, an.size)
+    if far:
+        an.warnings.append(far)
+    for i, why in enumerate(failures):
+        if why:
+            an.warnings.append(f"{position_text(build, labels[i])}: construction impossible — {why}")
+    for i, ok in enumerate(exact.valid):
+        if not ok and solutions[i] is not None:
+            an.warnings.append(f"{position_text(build, labels[i])}: the exact solution is undefined here "
+                               f"({exact.reason[i]}); its values are not checked")
+    an.rows = [_row(an, display, q, i) for display, q, i in wanted
+               if solutions[i] is not None and exact.valid[i]]
+    if far:
+        an.rows = [replace(r, ill_conditioned=True) for r in an.rows]
+    an.warnings.extend(_conditioning_warnings(an, [q for _, q, _ in wanted] + measured_q))
+    if ic:
+        an.instant_centres = ic_check.add_rows(an)
+    return an
+
+
+def mechanism_size(linkage: Linkage, kin: Kinematics | None = None) -> float:
+    """A length typical of the mechanism: the diagonal of the box its points sweep (m).
+
+    Falls back on the links' and frame's own sizes where no solution is at hand.
+    """
+    if kin is not None and kin.valid.any():
+        pts = np.concatenate([p[kin.valid] for p in kin.point.values()])
+        size = float(np.hypot(*(pts.max(axis=0) - pts.min(axis=0))))
+        if size > 0.0:
+            return size
+    sizes = [abs(v) for y in linkage.dyads for v in (getattr(y, "lengths", None) or (getattr(y, "length", 0.0),))]
+    frame = list(linkage.frame_points.values())
+    sizes += [math.dist(a, b) for a in frame for b in frame]
+    if isinstance(linkage.driver, Crank):
+        sizes.append(linkage.driver.length)
+    return max(sizes + [0.0]) or 1.0
+
+
+OUT_OF_RANGE = "numbers out of the range of double precision (the scene's sizes or speeds are too extreme)"
+
+
+def offset_ratio(linkage: Linkage, size: float) -> float:
+    """How many times its own size the mechanism's given coordinates lie from the origin."""
+    coords = [abs(c) for p in linkage.frame_points.values() for c in p]
+    d = linkage.driver
+    coords += [abs(c) for g in [getattr(d, "guide", None)] + [getattr(y, "guide", None) for y in linkage.dyads]
+               if g is not None for c in g.through]
+    return max(coords + [0.0]) / size
+
+
+def refuse_far_from_origin(scene: Any, linkage: Linkage, size: float) -> None:
+    """Refuse a mechanism so far from the origin that its coordinates keep no digit of its
+    geometry (a guide through x = 1e300 m): nothing can be drawn or solved there (the friction
+    iteration of a force scene ran for minutes on it)."""
+    ratio = offset_ratio(linkage, size)
+    if T.EPS * ratio > 0.1:
+        raise SceneError([("frame", f"the mechanism lies {ratio:.2g} times its own size from the origin: its "
+                                    "coordinates keep no digit of its geometry; move the origin to a frame pivot")],
+                         scene.source)
+
+
+def offset_warning(linkage: Linkage, size: float) -> str:
+    """Coordinates far from the origin, compared with the mechanism's size, carry few digits of it."""
+    ratio = offset_ratio(linkage, size)
+    if T.COND_SAFETY * T.EPS * ratio <= T.REL_AGREEMENT:
+        return ""
+    return (f"the mechanism lies {ratio:.2g} times its own size from the origin: its coordinates keep "
+            f"only about {max(0.0, -math.log10(T.EPS * ratio)):.0f} significant digits of its geometry, "
+            "so no value can be checked to 1e-9; move the origin to a frame pivot")
+
+
+def _finite(values: Any) -> bool:
+    """Whether every number in a solution's values is finite."""
+    for v in values.values():
+        for x in (v if isinstance(v, tuple) else (v,)):
+            if isinstance(x, float) and not math.isfinite(x):
+                return False
+    return True
+
+
+def characteristic(linkage: Linkage, unit: str, size: float | None = None) -> float:
+    """The size of a quantity of this unit in this linkage (ω1·l_AB for velocities, …).
+
+    The relative error divides by max(|exact|, this), so a zero exact value does not blow it
+    up. ``size`` is the mechanism's typical length (:func:`mechanism_size`).
+    """
+    L = size if size is not None else mechanism_size(linkage)
+    d = linkage.driver
+    if isinstance(d, Crank):
+        w = abs(d.omega) + math.sqrt(abs(d.epsilon))
+        alpha = d.omega ** 2 + abs(d.epsilon)
+        v, a = w * d.length, alpha * d.length
+    else:
+        v = abs(d.velocity) + math.sqrt(abs(d.acceleration) * L)
+        a = abs(d.acceleration) + d.velocity ** 2 / L
+        w, alpha = v / L, a / L
+    chars = {"m/s": v, "m/s²": a, "rad/s": w, "rad/s²": alpha, "m": L, "deg": 360.0}
+    return max(chars.get(unit, 1.0), 1e-300)
+
+
+def _row(an: Analysis, display: str, qname: str, i: int) -> Row:
+    q = an.build.quantities[qname]
+    drawn, scale = an.solutions[i][q.slot]
+    drawn, scale = float(drawn), float(scale)
+    g = drawn * scale
+    e = exact_value(an.exact, q.exact, i)
+    if not (math.isfinite(g) and math.isfinite(e)):
+        raise DegenerateConstruction(f"measure {qname}", OUT_OF_RANGE, position_text(an.build, an.labels[i]))
+    if q.unit == "deg":
+        err = abs((g - e + 180.0) % 360.0 - 180.0) / 360.0
+        drawn_mm = None
+    else:
+        err = abs(g - e) / max(abs(e), characteristic(an.build.linkage, q.unit, an.size))
+        drawn_mm = drawn
+    return Row(display, q.unit, drawn_mm, scale, g, e, err, _ill(an, q.slot, i))
+
+
+# ---------------------------------------------------------------------------- exact values
+
+
+def exact_value(kin: Kinematics, spec: tuple, i: int) -> float:
+    """The exact value that a quantity's ``exact`` description names, at position i."""
+    kind = spec[0]
+    P, V, A = kin.point, kin.vel, kin.acc
+    if kind == "speed":
+        return float(np.hypot(*V[spec[1]][i]))
+    if kind == "acc":
+        return float(np.hypot(*A[spec[1]][i]))
+    if kind in ("slide_v", "slide_a"):
+        vec = (V if kind == "slide_v" else A)[spec[1]][i]
+        return float(vec[0] * spec[2] + vec[1] * spec[3])
+    if kind == "rel_v":
+        return float(np.hypot(*(V[spec[1]][i] - V[spec[2]][i])))
+    if kind == "rel_a":
+        return float(np.hypot(*(A[spec[1]][i] - A[spec[2]][i])))
+    if kind == "length":
+        return float(np.hypot(*(P[spec[1]][i] - P[spec[2]][i])))
+    if kind == "normal":
+        _, x, y, link = spec
+        return float(kin.omega[link][i] ** 2 * np.hypot(*(P[x][i] - P[y][i])))
+    if kind == "tangential":
+        _, x, y, link = spec
+        return float(abs(kin.alpha[link][i]) * np.hypot(*(P[x][i] - P[y][i])))
+    if kind == "omega":
+        return float(kin.omega[spec[1]][i])
+    if kind == "alpha":
+        return float(kin.alpha[spec[1]][i])
+    if kind == "angle":
+        return float(np.degrees(kin.angle[spec[1]][i]) % 360.0)
+    if kind in ("coriolis", "rel_slide_a"):
+        _, x, y, link = spec
+        vr = V[x][i] - V[y][i]
+        k = 2.0 * kin.omega[link][i] * np.array([-vr[1], vr[0]])
+        if kind == "coriolis":
+            return float(np.hypot(*k))
+        return float(np.hypot(*(A[x][i] - A[y][i] - k)))
+    raise ValueError(f"unknown exact quantity {spec!r}")
+
+
+# ---------------------------------------------------------------------------- conditioning
+
+
+def _deps(an: Analysis, slot: str) -> set[str]:
+    if slot not in an.dependencies:
+        an.dependencies[slot] = an.build.g.dependencies([slot])
+    return an.dependencies[slot]
+
+
+def _ill(an: Analysis, slot: str, i: int) -> bool:
+    sol = an.solutions[i]
+    texts = {an.plan.by_name[n].text for n in _deps(an, slot) if n in an.plan.by_name}
+    return any(c > T.COND_WARN for t, c in sol.conds.items() if t in texts)
+
+
+def _conditioning_warnings(an: Analysis, quantities: list[str]) -> list[str]:
+    """Name every intersection that is ill-conditioned (numerically) or shallow (for drafting)."""
+    out = []
+    shallow = 1.0 / math.sin(math.radians(T.SHALLOW_DEG))
+    relevant: dict[str, list[str]] = {}
+    for q in dict.fromkeys(quantities):
+        slot = an.build.quantities[q].slot
+        for n in _deps(an, slot):
+            if n in an.plan.by_name:
+                relevant.setdefault(an.plan.by_name[n].text, []).append(q)
+    for s in an.plan.steps:
+        if s.kind == "point" and s.panel in an.scene.show:
+            relevant.setdefault(s.text, [])
+    for i, sol in enumerate(an.solutions):
+        if sol is None:
+            continue
+        where = position_text(an.build, an.labels[i])
+        for text, c in sol.conds.items():
+            if text not in relevant:
+                continue
+            qs = ", ".join(relevant[text])
+            angle = math.degrees(math.asin(min(1.0, 1.0 / c))) if c > 0 else 90.0
+            if c > T.COND_WARN:
+                est = T.COND_SAFETY * c * c * T.EPS
+                out.append(f"{where}: ill-conditioned intersection '{text}': the loci meet at {angle:.3g}° "
+                           f"(condition number {c:.3g}); {qs or 'the drawing'} may be wrong by about "
+                           f"{est:.1g} relative or more")
+            elif c > shallow:
+                out.append(f"{where}: shallow intersection '{text}' at {angle:.3g}°: a hand construction "
+                           f"is unreliable here (a 0.5 mm error becomes about {0.5 * c:.2g} mm)")
+    return out
+
+
+# ---------------------------------------------------------------------------- hand measurements
+
+SEGMENT = re.compile(r"[a-z]\d*['′]*")
+
+
+def is_segment(name: str) -> bool:
+    """``pc``, ``p'c'``, ``n2'c'``: a drawn segment named by its end labels."""
+    tokens = SEGMENT.findall(name)
+    return "_" not in name and len(tokens) == 2 and "".join(tokens) == name
+
+
+def _measured_quantities(entries: list[tuple[str, str, float]], build: LinkageConstruction,
+                         labels: tuple[str, ...]) -> list[str]:
+    out = []
+    for key, name, _ in entries:
+        try:
+            q, _, _ = _resolve(name, build, labels)
+        except ValueError:
+            continue  # reported by judge()
+        out.append(q)
+    return out
+
+
+def measured_entries(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[tuple[str, str, float]]:
+    """(key path for messages, name, value) of the scene's [measured] table and the command line's."""
+    return [(f"measured.{n}", n, v) for n, v in scene.measured] + [(f"--measured {n}", n, v) for n, v in extra]
+
+
+def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> tuple[str, int | None, bool]:
+    """A measured name → (quantity name, position index, is a drawn segment)."""
+    base, at = split_name(name)
+    if at is not None and at not in labels:
+        raise ValueError(f"no position {at!r} (positions: {', '.join(labels)})")
+    idx = labels.index(at) if at is not None else (0 if len(labels) == 1 else None)
+    if idx is None:
+        raise ValueError(f"the scene has {len(labels)} positions: name one, e.g. {base}@{labels[0]}")
+    if base in build.quantities:
+        return base, idx, False
+    if not is_segment(base):
+        raise ValueError(f"unknown quantity or segment {base!r}{close_names(base, build.quantities)}")
+    t0, t1 = [t.replace("′", "'") for t in SEGMENT.findall(base)]
+    if t0 == t1:
+        raise ValueError(f"a drawn segment needs two different ends, not {base!r}")
+
+    def matches(token: str, lab: str) -> bool:
+        if token == lab:
+            return True
+        # "n'" stands for any n₂′, n₃′ … when only one of them fits the other end
+        return len(token.rstrip("'")) == 1 and lab[:1] == token[:1] and lab.rstrip("'")[1:].isdigit() \
+            and lab.count("'") == token.count("'")
+
+    found = [q.name for q in build.quantities.values() if len(q.segment) == 2 and (
+        (matches(t0, q.segment[0]) and matches(t1, q.segment[1])) or
+        (matches(t0, q.segment[1]) and matches(t1, q.segment[0])))]
+    # Prefer plain lengths (v_X, a_X, components) over ω/α, which share the segment.
+    found = sorted(found, key=lambda n: (n.startswith(("omega", "alpha")), n))
+    if not found:
+        raise ValueError(f"no drawn segment {base!r} in this construction")
+    # One drawn segment per pair of end steps, whichever way round it was named: the letters
+    # alone may name two (the pole p and the image p of a point P).
+    ends: dict[frozenset, str] = {}
+    for n in found:
+        ends.setdefault(frozenset(build.g.steps[build.quantities[n].slot].inputs[-2:]), n)
+    if len(ends) > 1:
+        segments = sorted({"".join(sorted(build.quantities[n].segment)) for n in ends.values()})
+        if len(segments) == len(ends):
+            segments = sorted("".join(build.quantities[n].segment) for n in ends.values())
+            raise ValueError(f"{base!r} could be any of {', '.join(segments)}: name the segment exactly")
+        raise ValueError(f"{base!r} could be any of {', '.join(sorted(ends.values()))}: write one of these instead of {base}")
+    return found[0], idx, True
+
+
+def _angle_tolerance(an: Analysis, q: Any, sol: Any, precision_mm: float) -> float:
+    """A link's direction read with a protractor along the drawn link: ±precision/length, in degrees."""
+    u, v = an.build.link_points[q.exact[1]][:2]
+    a, b = sol[an.build.mech[u]], sol[an.build.mech[v]]
+    return math.degrees(precision_mm / max(math.dist(a, b), precision_mm))
+
+
+def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
+    """Verdicts for the scene's ``[measured]`` values (and any given on the command line)."""
+    scene = an.scene
+    prec = precision_mm if precision_mm is not None else scene.precision_mm
+    problems = []
+    out = []
+    from graphmech.problems.instant_centres import check as ic_check
+
+    for key, name, value in measured_entries(scene, an.extra_measured):
+        if ic_check.claims(name):  # judged by graphmech.problems.instant_centres.check, below
+            continue
+        try:
+            qname, i, segment = _resolve(name, an.build, an.labels)
+        except ValueError as e:
+            problems.append((key, str(e)))
+            continue
+        q = an.build.quantities[qname]
+        sol = an.solutions[i]
+        if sol is None:
+            problems.append((key, f"position {an.labels[i]} could not be constructed"))
+            continue
+        if not an.exact.valid[i]:
+            problems.append((key, f"the exact value is undefined at {position_text(an.build, an.labels[i])} "
+                                  f"({an.exact.reason[i]}), so it cannot be judged"))
+            continue
+        drawn, scale = sol[q.slot]
+        e = exact_value(an.exact, q.exact, i)
+        panel_key = SCALE_KEYS[q.panel]
+        if segment:
+            if panel_key not in an.stated:
+                problems.append((key, f"the scene does not state μ{panel_key}, so a drawn length cannot be judged: "
+                                      f"state it in [scales] or give the value ({qname}) instead"))
+                continue
+            expected = abs(e) / float(scale)
+            out.append(Verdict(name, value, expected, prec, abs(abs(value) - expected) <= prec, "mm"))
+        else:
+            tol = _angle_tolerance(an, q, sol, prec) if q.unit == "deg" else prec * abs(float(scale))
+            out.append(Verdict(name, value, e, tol, abs(value - e) <= tol + 1e-12 * abs(e), q.unit))
+    if an.instant_centres is not None:
+        more, trouble = ic_check.judge(an, prec)
+        out += more
+        problems += trouble
+    if problems:
+        raise SceneError(problems, scene.source)
+    return out
