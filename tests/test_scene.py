@@ -16,7 +16,8 @@ from hypothesis import strategies as st
 from tests.conftest import reference_area
 from graphmech.errors import SceneError
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Guide, LinkPoint, SliderInput
-from graphmech.scene import MAX_BYTES, Page, Scene, load_scene, parse_scene
+from graphmech.problems.reader import Page
+from graphmech.scene import MAX_BYTES, Scene, load_scene, parse_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs" / "scene-format.md"

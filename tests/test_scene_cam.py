@@ -20,14 +20,9 @@ from graphmech.mechanisms.cam import (
     TranslatingFollower,
 )
 from graphmech.mechanisms.motion import displacement, maxima
-from graphmech.scene import (
-    CAM_STEP_DEFAULT,
-    CamScene,
-    Page,
-    Scene,
-    load_scene,
-    parse_scene,
-)
+from graphmech.problems.cam.scene import CAM_STEP_DEFAULT, CamScene
+from graphmech.problems.reader import Page
+from graphmech.scene import Scene, load_scene, parse_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs" / "scene-format.md"

@@ -24,15 +24,8 @@ from graphmech.mechanisms.machine import (
     SliderLoad,
     Table,
 )
-from graphmech.scene import (
-    Braking,
-    FlywheelScene,
-    Scene,
-    TrueMotionSpec,
-    load_scene,
-    parse_scene,
-)
-from graphmech.problems.flywheel.scene import FLYWHEEL_SHOW_DEFAULT
+from graphmech.problems.flywheel.scene import FLYWHEEL_SHOW_DEFAULT, Braking, FlywheelScene, TrueMotionSpec
+from graphmech.scene import Scene, load_scene, parse_scene
 from tests.conftest import reference_area, run_cli
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from graphmech.scene import _MISSING, _Reader, _say, _type_name
 from graphmech.mechanisms.rotor import RotorMass
+from graphmech.problems.reader import MISSING, Reader, say, type_name
 
 BALANCING_TYPES = ("static", "dynamic")
 #: What a balancing scene may show: the rotor (end view with the masses; the planes for a
@@ -44,7 +44,7 @@ class BalancingProblem:
     planes: tuple[float, float] | None = None
 
 
-def read_balancing(top: _Reader) -> BalancingProblem | None:
+def read_balancing(top: Reader) -> BalancingProblem | None:
     """[balancing] → :class:`BalancingProblem` (None after reporting when it is invalid).
 
     Examples
@@ -90,10 +90,10 @@ def read_balancing(top: _Reader) -> BalancingProblem | None:
     for k, s in enumerate(items):
         name = s.raw("name")
         label = str(k + 1)
-        if name is not _MISSING:
+        if name is not MISSING:
             if not isinstance(name, str) or not name.isalnum() or len(name) > 6:
                 s.problem(s.at("name"), f"must be a short label of letters and digits, not "
-                                        f"{_say(name) if isinstance(name, str) else _type_name(name)}")
+                                        f"{say(name) if isinstance(name, str) else type_name(name)}")
             else:
                 label = name
         if label in names:
@@ -122,7 +122,7 @@ def read_balancing(top: _Reader) -> BalancingProblem | None:
     return BalancingProblem(kind, tuple(masses), radii, planes)
 
 
-def _radii(r: _Reader, count: int) -> tuple[float, ...] | None:
+def _radii(r: Reader, count: int) -> tuple[float, ...] | None:
     given = r.quantity("correction_radius", "length", required=True)
     if given is None:
         return None

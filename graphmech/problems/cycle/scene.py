@@ -16,8 +16,9 @@ from typing import Any
 
 from graphmech.mechanisms.linkage import Crank, Linkage, Positions
 from graphmech.scales import phi_axis_problem
-from graphmech.scene import _MISSING, MAX_POSITIONS, _read_scales, _Reader, _say, _type_name
 from graphmech.tolerances import POLE_RANGE_MM
+from graphmech.problems.reader import pole_distances
+from graphmech.problems.reader import MAX_POSITIONS, MISSING, Reader, read_scales, say, type_name
 
 __all__ = ["CYCLE_SHOW_CHOICES", "CharacteristicsSpec", "CycleScene", "CycleSpec", "read_cycle"]
 
@@ -73,12 +74,12 @@ class CycleScene:
     start_angle: float
 
 
-def _names(r: _Reader, key: str, check: Any) -> tuple[str, ...]:
+def _names(r: Reader, key: str, check: Any) -> tuple[str, ...]:
     value = r.raw(key)
-    if value is _MISSING:
+    if value is MISSING:
         return ()
     if not isinstance(value, list):
-        r.problem(r.at(key), f"must be a list of names, not {_type_name(value)}")
+        r.problem(r.at(key), f"must be a list of names, not {type_name(value)}")
         return ()
     out: list[str] = []
     for i, item in enumerate(value):
@@ -86,21 +87,21 @@ def _names(r: _Reader, key: str, check: Any) -> tuple[str, ...]:
         if isinstance(item, int) and not isinstance(item, bool):
             item = str(item)
         if not isinstance(item, str):
-            r.problem(path, f"must be a name, not {_type_name(item)}")
+            r.problem(path, f"must be a name, not {type_name(item)}")
         elif item in out:
-            r.problem(path, f"{_say(item)} is listed twice")
+            r.problem(path, f"{say(item)} is listed twice")
         elif check(item, path):
             out.append(item)
     return tuple(out)
 
 
-def _read_count(r: _Reader) -> int | None:
+def _read_count(r: Reader) -> int | None:
     value = r.raw("positions")
-    if value is _MISSING:
+    if value is MISSING:
         return DEFAULT_CYCLE_POSITIONS
     bounds = f"{MIN_CYCLE_POSITIONS} … {MAX_POSITIONS}"
     if isinstance(value, bool) or not isinstance(value, int):
-        shown = _say(value) if isinstance(value, float) else _type_name(value)
+        shown = say(value) if isinstance(value, float) else type_name(value)
         r.problem(r.at("positions"), f"must be a whole number of positions ({bounds}), not {shown}")
         return None
     if not MIN_CYCLE_POSITIONS <= value <= MAX_POSITIONS:
@@ -109,8 +110,7 @@ def _read_count(r: _Reader) -> int | None:
     return value
 
 
-def _read_poles(r: _Reader) -> tuple[float, float] | None:
-    from graphmech.problems.flywheel.scene import pole_distances
+def _read_poles(r: Reader) -> tuple[float, float] | None:
 
     h = pole_distances(r, 2)
     return None if h is None else (h[0], h[1])
@@ -129,7 +129,7 @@ def _loop_problem(linkage: Linkage | None) -> str:
     return ""
 
 
-def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkage: Linkage | None,
+def read_cycle(top: Reader, data: dict[str, Any], show: tuple[str, ...], linkage: Linkage | None,
                positions: Positions | None) -> tuple[CycleScene | None, Positions | None]:
     """The [cycle] and [characteristics] tables; the scene's positions (N of them with a cycle).
 
@@ -163,10 +163,10 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
 
         def is_point(name: str, path: str) -> bool:
             if linkage is not None and name not in mech_points:
-                cy.problem(path, f"{_say(name)} is not a point of the linkage ({', '.join(sorted(mech_points))})")
+                cy.problem(path, f"{say(name)} is not a point of the linkage ({', '.join(sorted(mech_points))})")
                 return False
             if linkage is not None and name in linkage.frame_points:
-                cy.problem(path, f"{_say(name)} is a point of the frame: it does not move, it has no path")
+                cy.problem(path, f"{say(name)} is a point of the frame: it does not move, it has no path")
                 return False
             return True
 
@@ -174,14 +174,14 @@ def read_cycle(top: _Reader, data: dict[str, Any], show: tuple[str, ...], linkag
             if linkage is not None and name not in subjects:
                 what = {"point": "slider", "link": "link", "path": "point"}
                 choices = ", ".join(f"{k} ({what[v]})" for k, v in subjects.items())
-                cy.problem(path, f"{_say(name)} has no s–φ diagram: name a slider, a rotating link or a moving "
+                cy.problem(path, f"{say(name)} has no s–φ diagram: name a slider, a rotating link or a moving "
                                  f"point ({choices})")
                 return False
             return True
 
         paths = _names(cy, "paths", is_point)
         diagrams = _names(cy, "diagrams", is_subject)
-        scales = _read_scales(cy, entries=[("phi", "angle"), ("s", "length"), ("psi", "angle"), ("v", "velocity"),
+        scales = read_scales(cy, entries=[("phi", "angle"), ("s", "length"), ("psi", "angle"), ("v", "velocity"),
                                            ("a", "acceleration"), ("omega", "omega"), ("epsilon", "epsilon")])
         poles = _read_poles(cy)
         why = phi_axis_problem(scales["phi"]) if "phi" in scales else None  # a whole turn's φ axis must fit a drawing

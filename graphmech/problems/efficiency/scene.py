@@ -15,20 +15,20 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from typing import Any, Mapping
-
-from graphmech.scene import (
-    _LINKAGE_KEYS,
-    _MISSING,
+from graphmech.problems.linkage.scene import LINKAGE_KEYS
+from graphmech.problems.reader import (
+    MISSING,
+    Reader,
     Scene,
-    _raise_sorted,
-    _read_tail,
-    _read_header,
-    _read_measured,
-    _read_scales,
-    _Reader,
-    _say,
-    _type_name,
+    raise_sorted,
+    read_header,
+    read_measured,
+    read_scales,
+    read_tail,
+    say,
+    type_name,
 )
+
 
 EFFICIENCY_TYPES = ("incline", "wedge", "screw", "chain")
 DIRECTIONS = ("forward", "reverse")
@@ -106,7 +106,7 @@ class EfficiencyProblem:
 _FORCES_KEYS = ("title", "show", "find", "scales", "units", "measured", "check", "page", "efficiency", "balancing")
 
 
-def parse_efficiency_scene(data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]) -> Scene:
+def parse_efficiency_scene(data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene:
     """The rest of :func:`graphmech.scene.parse_scene` for an [efficiency] or [balancing] scene.
 
     Examples
@@ -121,7 +121,7 @@ def parse_efficiency_scene(data: dict[str, Any], source: str, top: _Reader, orde
     graphmech.errors.SceneError: x.toml: efficiency.angle_deg: must lie between 0° and 90° (exclusive; at least 0.01° from either)
     """
     problems = top.problems
-    for key in _LINKAGE_KEYS + ("cam", "flywheel"):
+    for key in LINKAGE_KEYS + ("cam", "flywheel"):
         if key in data:
             top.used.add(key)
             top.problem(key, f"a scene is one problem: [{key}] does not go with [efficiency] or [balancing]; "
@@ -134,12 +134,12 @@ def parse_efficiency_scene(data: dict[str, Any], source: str, top: _Reader, orde
     if balancing:
         from graphmech.problems.balancing.scene import BALANCING_SHOW_CHOICES, read_balancing
 
-        title, show, find = _read_header(top, BALANCING_SHOW_CHOICES, BALANCING_SHOW_CHOICES)
-        scales = _read_scales(top, entries=[("W", "mass_radius"), ("l", "length")])
+        title, show, find = read_header(top, BALANCING_SHOW_CHOICES, BALANCING_SHOW_CHOICES)
+        scales = read_scales(top, entries=[("W", "mass_radius"), ("l", "length")])
         problem: Any = read_balancing(top)
     else:
-        title, show, find = _read_header(top, EFFICIENCY_SHOW_CHOICES, EFFICIENCY_SHOW_CHOICES)
-        scales = _read_scales(top, entries=[("F", "force")])
+        title, show, find = read_header(top, EFFICIENCY_SHOW_CHOICES, EFFICIENCY_SHOW_CHOICES)
+        scales = read_scales(top, entries=[("F", "force")])
         problem = read_efficiency(top, find, show)
         if problem is not None and problem.type == "chain":  # a chain has its block diagram, no polygon
             if "show" not in data:
@@ -148,10 +148,10 @@ def parse_efficiency_scene(data: dict[str, Any], source: str, top: _Reader, orde
                 top.problem(f"show[{list(data['show']).index('polygon')}]",
                             "a chain of machines has no force polygon: show diagram")
     # names such as eta@reverse: the check validates the direction against the quantity
-    measured = _read_measured(top, None)
-    precision, page = _read_tail(top, _FORCES_KEYS)
+    measured = read_measured(top, None)
+    precision, page = read_tail(top, _FORCES_KEYS)
     if problems or problem is None:
-        _raise_sorted(problems, data, order, "balancing" if balancing else "efficiency", source)
+        raise_sorted(problems, data, order, "balancing" if balancing else "efficiency", source)
     return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
                  precision_mm=precision, page=page, efficiency=None if balancing else problem,
                  balancing=problem if balancing else None)
@@ -166,7 +166,7 @@ MAX_LOAD_N = 1e12
 MIN_CHAIN_ETA = 1e-12
 
 
-def _angle(r: _Reader, base: str, lo: float, hi: float, required: bool = True,
+def _angle(r: Reader, base: str, lo: float, hi: float, required: bool = True,
            hi_included: bool = False) -> float | None:
     """An angle in (lo, hi) at least ANGLE_MARGIN_DEG from either end; ``hi_included`` admits hi
     itself (a wedge's guide 1 at β = 90°: the wedge press)."""
@@ -182,7 +182,7 @@ def _angle(r: _Reader, base: str, lo: float, hi: float, required: bool = True,
     return v.si
 
 
-def _length(r: _Reader, base: str) -> float | None:
+def _length(r: Reader, base: str) -> float | None:
     """A thread's diameter or pitch: 1 µm … 100 m (beyond, squares underflow or overflow)."""
     v = r.value(base, "length", required=False, positive=True)
     if v is None:
@@ -193,7 +193,7 @@ def _length(r: _Reader, base: str) -> float | None:
     return v.si
 
 
-def _load(r: _Reader, base: str, kind: str, required: bool = True) -> float | None:
+def _load(r: Reader, base: str, kind: str, required: bool = True) -> float | None:
     v = r.value(base, kind, required=required, positive=True)
     if v is None:
         return None
@@ -203,7 +203,7 @@ def _load(r: _Reader, base: str, kind: str, required: bool = True) -> float | No
     return v.si
 
 
-def _fraction(r: _Reader, value: Any, path: str, what: str) -> float | None:
+def _fraction(r: Reader, value: Any, path: str, what: str) -> float | None:
     x = r.number(value, path)
     if x is None:
         return None
@@ -213,16 +213,16 @@ def _fraction(r: _Reader, value: Any, path: str, what: str) -> float | None:
     return x
 
 
-def _directions(r: _Reader) -> tuple[str, ...]:
+def _directions(r: Reader) -> tuple[str, ...]:
     value = r.raw("direction")
-    if value is _MISSING:
+    if value is MISSING:
         return DIRECTIONS
     items = value if isinstance(value, list) else [value]
     out: list[str] = []
     for i, item in enumerate(items):
         path = r.at("direction") + (f"[{i}]" if isinstance(value, list) else "")
         if not isinstance(item, str) or item not in DIRECTIONS:
-            r.problem(path, f"unknown value {_say(item) if isinstance(item, str) else _type_name(item)}: "
+            r.problem(path, f"unknown value {say(item) if isinstance(item, str) else type_name(item)}: "
                             'use "forward" (F drives: raising, tightening) or "reverse" (the load drives: '
                             "lowering, loosening)")
         elif item in out:
@@ -247,7 +247,7 @@ def _needs_load(kind: str, find: tuple[str, ...], show: tuple[str, ...]) -> bool
     return "polygon" in show or any(n in ("F", "F0", "eta", "R", "R12", "R32", "R31", "M", "sigma") for n in names)
 
 
-def read_efficiency(top: _Reader, find: tuple[str, ...], show: tuple[str, ...]) -> EfficiencyProblem | None:
+def read_efficiency(top: Reader, find: tuple[str, ...], show: tuple[str, ...]) -> EfficiencyProblem | None:
     """[efficiency] → :class:`EfficiencyProblem` (None after reporting when it is invalid)."""
     r = top.table_at("efficiency", required=True)
     if r is None:
@@ -301,11 +301,11 @@ def read_efficiency(top: _Reader, find: tuple[str, ...], show: tuple[str, ...]) 
     return EfficiencyProblem(kind, directions, f=f, load=load, f_is_equivalent=equivalent, **prob)
 
 
-def _has(r: _Reader, prefix: str) -> bool:
+def _has(r: Reader, prefix: str) -> bool:
     return any(p.startswith(prefix) for p, _ in r.problems)
 
 
-def _friction(r: _Reader, kind: str, needed: bool) -> tuple[float | None, bool]:
+def _friction(r: Reader, kind: str, needed: bool) -> tuple[float | None, bool]:
     has_f, has_fv = "f" in r.table, kind == "screw" and "f_v" in r.table
     r.known.update(["f", "f_v"] if kind == "screw" else ["f"])
     if has_f and has_fv:
@@ -329,7 +329,7 @@ def _friction(r: _Reader, kind: str, needed: bool) -> tuple[float | None, bool]:
     return x, has_fv
 
 
-def _read_screw(r: _Reader, prob: dict[str, Any], f: float | None, equivalent: bool) -> bool:
+def _read_screw(r: Reader, prob: dict[str, Any], f: float | None, equivalent: bool) -> bool:
     thread = r.string("thread", choices=THREADS, default="square") or "square"
     prob["thread"] = thread
     ok = True
@@ -347,14 +347,14 @@ def _read_screw(r: _Reader, prob: dict[str, Any], f: float | None, equivalent: b
     pitch = _length(r, "pitch")
     starts_raw = r.raw("starts")
     starts = 1
-    if starts_raw is not _MISSING:
+    if starts_raw is not MISSING:
         if isinstance(starts_raw, bool) or not isinstance(starts_raw, int) or not 1 <= starts_raw <= 12:
             r.problem(r.at("starts"), "must be a whole number of thread starts, 1 … 12")
             ok = False
         else:
             starts = starts_raw
     limit = r.flag("at_self_locking_limit")
-    if limit is None and r.raw("at_self_locking_limit") is not _MISSING:
+    if limit is None and r.raw("at_self_locking_limit") is not MISSING:
         ok = False  # said by flag()
     at_limit = limit is True
     lead_angle = _angle(r, "lead_angle", 0.0, 90.0, required=False)
@@ -400,7 +400,7 @@ def _read_screw(r: _Reader, prob: dict[str, Any], f: float | None, equivalent: b
     return ok
 
 
-def _read_stages(r: _Reader) -> tuple[Stage, ...]:
+def _read_stages(r: Reader) -> tuple[Stage, ...]:
     out = []
     for k, s in enumerate(r.tables_at("stage")):
         name = s.string("name", default=f"stage {k + 1}") or f"stage {k + 1}"
@@ -418,7 +418,7 @@ def _read_stages(r: _Reader) -> tuple[Stage, ...]:
             eta = _fraction(s, s.table["eta"], s.at("eta"), "an efficiency")
             count_raw = s.raw("count")
             count = 1
-            if count_raw is not _MISSING:
+            if count_raw is not MISSING:
                 if isinstance(count_raw, bool) or not isinstance(count_raw, int) or not 1 <= count_raw <= 100:
                     s.problem(s.at("count"), "must be a whole number 1 … 100 (identical machines in series)")
                     count = 0
@@ -431,10 +431,10 @@ def _read_stages(r: _Reader) -> tuple[Stage, ...]:
         branches = []
         for b in s.tables_at("branch"):
             share = b.raw("share", required=True, hint="the branch's share of the stage's input power")
-            sh = None if share is _MISSING else b.number(share, b.at("share"), positive=True)
+            sh = None if share is MISSING else b.number(share, b.at("share"), positive=True)
             etas = b.raw("eta", required=True, hint="the efficiencies in series along the branch, a list")
             es: list[float] = []
-            if etas is not _MISSING:
+            if etas is not MISSING:
                 items = etas if isinstance(etas, list) else [etas]
                 for i, e in enumerate(items):
                     x = _fraction(b, e, b.at("eta") + (f"[{i}]" if isinstance(etas, list) else ""), "an efficiency")

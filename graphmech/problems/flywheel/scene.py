@@ -18,10 +18,9 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
-from graphmech.tolerances import POLE_RANGE_MM
 from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, Positions
 from graphmech.mechanisms.machine import (
     TWO_PI,
@@ -34,31 +33,100 @@ from graphmech.mechanisms.machine import (
     SliderLoad,
     Table,
 )
-from graphmech.scene import (
-    _LINKAGE_KEYS,
-    _MISSING,
-    _QUANTITY_NAME,
-    _SUFFIXES,
+from graphmech.problems.linkage.scene import LINKAGE_KEYS, read_linkage
+from graphmech.problems.reader import MAX_TABLE_POINTS, pole_distances
+from graphmech.problems.reader import (
     MAX_POSITIONS,
-    MAX_TABLE_POINTS,
-    Braking,
-    FlywheelScene,
+    MISSING,
+    QUANTITY_NAME,
+    Reader,
+    SUFFIXES,
     Scene,
-    TrueMotionSpec,
-    _key_text,
-    _label,
-    _not_for,
-    _raise_sorted,
-    _read_tail,
-    _read_header,
-    _read_linkage,
-    _read_measured,
-    _read_scales,
-    _Reader,
-    _say,
-    _type_name,
-    _Value,
+    Value,
+    compact,
+    key_text,
+    not_for,
+    raise_sorted,
+    read_header,
+    read_measured,
+    read_scales,
+    read_tail,
+    say,
+    type_name,
 )
+
+
+@dataclass(frozen=True)
+class TrueMotionSpec:
+    """How to integrate the machine's equation of motion with the designed flywheel.
+
+    Parameters
+    ----------
+    solver : str
+        A ``scipy.integrate.solve_ivp`` method: "Radau", "BDF", "LSODA", "RK45" or "DOP853".
+    rtol : float
+        Its relative tolerance, 1e-14 … 1e-2.
+    """
+
+    solver: str = "Radau"
+    rtol: float = 1e-10
+
+
+@dataclass(frozen=True)
+class Braking:
+    """The run-down problem: the machine stopped by a brake on its main shaft.
+
+    Parameters
+    ----------
+    moment : float
+        The brake's moment, N·m (> 0).
+    time_limit : float or None
+        The required stopping time, s (> 0); None: the time is only reported.
+    moment_path : str
+        The moment's key path as written (``flywheel.braking.moment_Nm``), for a refusal.
+    """
+
+    moment: float
+    time_limit: float | None = None
+    moment_path: str = field(default="flywheel.braking.moment", compare=False)
+
+
+@dataclass(frozen=True)
+class FlywheelScene:
+    """The flywheel problem of a flywheel scene.
+
+    Parameters
+    ----------
+    machine : Machine
+        The machine in SI (:mod:`graphmech.mechanisms.machine`): its linkage or None, the
+        crank's angle at position 1, the cycle Φ, ω_m, δ, masses, loads, constant inertia,
+        which moment balances the work, and the motor for the true motion. A braking-only
+        scene that gives no δ has ``delta`` NaN: there is nothing to smooth.
+    positions : int
+        N, the positions the cycle is divided into (4 … 3600), labelled 1 … N.
+    method : str
+        Which method designs J_F: "wittenbauer" (the energy–mass diagram) or "indicator"
+        (the increment of kinetic energy with the inertia of the links reduced at the mean
+        speed).
+    tangents : str
+        How the Wittenbauer diagram's tangents are inclined: "exact", ω² ∝ (1 ± δ/2)², or
+        "book", (1 ± δ).
+    pole_distance : float or None
+        H, drawing mm (None: chosen by the method).
+    true_motion : TrueMotionSpec or None
+        Present: integrate the equation of motion with the designed J_F.
+    braking : Braking or None
+        Present: the run-down problem.
+    """
+
+    machine: Machine
+    positions: int = 12
+    method: str = "wittenbauer"
+    tangents: str = "exact"
+    pole_distance: float | None = None
+    true_motion: TrueMotionSpec | None = None
+    braking: Braking | None = None
+
 
 #: What a flywheel scene may show: the reduced moments, their work, the increment of kinetic
 #: energy, the reduced inertia, the Wittenbauer (energy–mass) diagram, the indicator diagram;
@@ -109,7 +177,7 @@ class _Series:
 
     def text(self, si: float) -> str:
         """An SI value of this series in the user's unit: ``"180°"``, ``"0.5 MPa"``."""
-        x = _label(float(f"{si * self.den / self.num:.6g}"))
+        x = compact(float(f"{si * self.den / self.num:.6g}"))
         return f"{x}°" if self.unit == "deg" else f"{x} {self.unit}".rstrip()
 
 
@@ -127,8 +195,8 @@ class _Machine:
 
 def _count_text(value: Any) -> str:
     if isinstance(value, (int, float)) and not isinstance(value, bool):
-        return _label(float(value)) if math.isfinite(value) else repr(value)
-    return _type_name(value)
+        return compact(float(value)) if math.isfinite(value) else repr(value)
+    return type_name(value)
 
 
 # --------------------------------------------------------------------------------------------
@@ -140,7 +208,7 @@ def _count_text(value: Any) -> str:
 MAX_TABLE_SI = 1e15
 
 
-def _series(r: _Reader, base: str, kind: str) -> _Series | None:
+def _series(r: Reader, base: str, kind: str) -> _Series | None:
     """A list of at least two numbers with a unit (``phi_deg = [0, 180, 360]``), in SI."""
     given = r.quantity(base, kind)
     if given is None:
@@ -152,7 +220,7 @@ def _series(r: _Reader, base: str, kind: str) -> _Series | None:
     if given.key == base:
         unit = r.units.get(kind) or ""
     else:
-        unit = _SUFFIXES[kind][given.key[len(base) + 1 :]]
+        unit = SUFFIXES[kind][given.key[len(base) + 1 :]]
     si = [given.si(x) for x in written]
     for i, x in enumerate(si):
         if not abs(x) <= MAX_TABLE_SI:  # a load of 1e300 Pa: its diagram's arrows collapse in round-off
@@ -162,9 +230,9 @@ def _series(r: _Reader, base: str, kind: str) -> _Series | None:
     return _Series(si, path, unit, given.num, given.den)
 
 
-def _number_list(r: _Reader, value: Any, path: str) -> list[float] | None:
+def _number_list(r: Reader, value: Any, path: str) -> list[float] | None:
     if not isinstance(value, list):
-        r.problem(path, f"must be a list of numbers, not {_type_name(value)}")
+        r.problem(path, f"must be a list of numbers, not {type_name(value)}")
         return None
     if len(value) < 2:
         r.problem(path, f"must have at least 2 points, not {len(value)}")
@@ -176,7 +244,7 @@ def _number_list(r: _Reader, value: Any, path: str) -> list[float] | None:
     return None if any(x is None for x in items) else items  # type: ignore[return-value]
 
 
-def _non_decreasing(r: _Reader, s: _Series, what: str) -> bool:
+def _non_decreasing(r: Reader, s: _Series, what: str) -> bool:
     for i in range(1, len(s.si)):
         if s.si[i] < s.si[i - 1]:
             r.problem(
@@ -188,7 +256,7 @@ def _non_decreasing(r: _Reader, s: _Series, what: str) -> bool:
     return True
 
 
-def _same_length(r: _Reader, x: _Series, y: _Series, x_key: str, what: str) -> bool:
+def _same_length(r: Reader, x: _Series, y: _Series, x_key: str, what: str) -> bool:
     """``y`` has one value for each of ``x`` (the key ``x_key``)."""
     if len(x.si) == len(y.si):
         return True
@@ -196,7 +264,7 @@ def _same_length(r: _Reader, x: _Series, y: _Series, x_key: str, what: str) -> b
     return False
 
 
-def _phi_table(r: _Reader, cycle: float | None) -> Table | None:
+def _phi_table(r: Reader, cycle: float | None) -> Table | None:
     """``phi`` (non-decreasing, within [0, Φ]) and ``moment``: a moment against φ."""
     phi = _series(r, "phi", "angle")
     moment = _series(r, "moment", "moment")
@@ -219,14 +287,14 @@ def _phi_table(r: _Reader, cycle: float | None) -> Table | None:
     return Table(angles, tuple(v + 0.0 for v in moment.si))
 
 
-def _fractions(r: _Reader) -> _Series | None:
+def _fractions(r: Reader) -> _Series | None:
     """``s_over_H``: the slider's displacement over its stroke, 0 first, 1 last, rising."""
     value = r.raw(
         "s_over_H",
         required=True,
         hint="the indicator diagram's abscissae s/H, from 0 to 1, e.g. s_over_H = [0, 0.5, 1]",
     )
-    if value is _MISSING:
+    if value is MISSING:
         return None
     path = r.at("s_over_H")
     written = _number_list(r, value, path)
@@ -237,25 +305,25 @@ def _fractions(r: _Reader) -> _Series | None:
         if not 0 <= x <= 1:
             r.problem(
                 f"{path}[{i}]",
-                f"must lie between 0 and 1, not {_label(x)}: s/H is the slider's displacement "
+                f"must lie between 0 and 1, not {compact(x)}: s/H is the slider's displacement "
                 "over its stroke",
             )
             return None
     if not _non_decreasing(r, s, "values"):
         return None
     if written[0] != 0:
-        r.problem(f"{path}[0]", f"must be 0, not {_label(written[0])}: s/H runs from 0 to 1")
+        r.problem(f"{path}[0]", f"must be 0, not {compact(written[0])}: s/H runs from 0 to 1")
         return None
     if written[-1] != 1:
         r.problem(
             f"{path}[{len(written) - 1}]",
-            f"must be 1, not {_label(written[-1])}: s/H runs from 0 to 1",
+            f"must be 1, not {compact(written[-1])}: s/H runs from 0 to 1",
         )
         return None
     return s
 
 
-def _non_negative(r: _Reader, s: _Series | None, why: str) -> _Series | None:
+def _non_negative(r: Reader, s: _Series | None, why: str) -> _Series | None:
     if s is None:
         return None
     for i, x in enumerate(s.si):
@@ -265,7 +333,7 @@ def _non_negative(r: _Reader, s: _Series | None, why: str) -> _Series | None:
     return s
 
 
-def _at_least_zero(r: _Reader, v: _Value | None) -> _Value | None:
+def _at_least_zero(r: Reader, v: Value | None) -> Value | None:
     if v is not None and v.si < 0:
         r.problem(v.path, f"must be ≥ 0, not {v.text()}")
         return None
@@ -277,10 +345,10 @@ def _at_least_zero(r: _Reader, v: _Value | None) -> _Value | None:
 # --------------------------------------------------------------------------------------------
 
 
-def _read_count(fw: _Reader) -> int | None:
+def _read_count(fw: Reader) -> int | None:
     """``positions``: N, a whole number 4 … 3600 (12 when absent)."""
     value = fw.raw("positions")
-    if value is _MISSING:
+    if value is MISSING:
         return DEFAULT_FLYWHEEL_POSITIONS
     bounds = f"{MIN_FLYWHEEL_POSITIONS} … {MAX_POSITIONS}"
     if isinstance(value, bool) or not isinstance(value, int):
@@ -299,7 +367,7 @@ def _read_count(fw: _Reader) -> int | None:
     return value
 
 
-def _read_delta(fw: _Reader, required: bool) -> float | None:
+def _read_delta(fw: Reader, required: bool) -> float | None:
     """``delta``: δ, a number or a fraction "1/25", 0 < δ < 2."""
     value = fw.raw(
         "delta",
@@ -307,22 +375,22 @@ def _read_delta(fw: _Reader, required: bool) -> float | None:
         hint='the coefficient of speed fluctuation δ = (ω_max − ω_min)/ω_m, e.g. delta = 0.04 '
         'or "1/25"',
     )
-    if value is _MISSING:
+    if value is MISSING:
         return None
     path = fw.at("delta")
     if isinstance(value, str):
         m = _FRACTION.fullmatch(value)
         if m is None or float(m.group(2)) == 0:
             fw.problem(
-                path, f'{_say(value)} is not a fraction: write a number (0.04) or "1/25"'
+                path, f'{say(value)} is not a fraction: write a number (0.04) or "1/25"'
             )
             return None
-        delta, text = float(m.group(1)) / float(m.group(2)), _say(value)
+        delta, text = float(m.group(1)) / float(m.group(2)), say(value)
     else:
         x = fw.number(value, path)
         if x is None:
             return None
-        delta, text = x, _label(x)
+        delta, text = x, compact(x)
     if not 0 < delta < 2:
         fw.problem(
             path,
@@ -332,7 +400,7 @@ def _read_delta(fw: _Reader, required: bool) -> float | None:
     return delta
 
 
-def _read_cycle(fw: _Reader) -> float | None:
+def _read_cycle(fw: Reader) -> float | None:
     """``cycle``: Φ, dividing one turn a whole number of times (360° when absent)."""
     v = fw.value("cycle", "angle", required=False, positive=True)
     if v is None:
@@ -347,48 +415,15 @@ def _read_cycle(fw: _Reader) -> float | None:
     return TWO_PI / round(k)
 
 
-def pole_distance_value(r: _Reader) -> Any:
-    """The raw ``pole_distance_mm`` of a table (or ``_MISSING``); ``pole_distance`` in other units
-    is refused: H is always millimetres of drawing."""
-    r.known.add("pole_distance_mm")
-    for key in list(r.table):
-        if key == "pole_distance" or (key.startswith("pole_distance_") and key != "pole_distance_mm"):
-            r.used.add(key)
-            r.problem(r.at(key), "H is a distance on the drawing: write pole_distance_mm")
-    return r.raw("pole_distance_mm")
 
 
-def pole_distances(r: _Reader, count: int = 1) -> tuple[float, ...] | None:
-    """``pole_distance_mm``: H in drawing mm, one number (for all ``count`` diagrams) or, when
-    ``count`` > 1, a list [H1, H2 …]; each within tolerances.POLE_RANGE_MM."""
-    value = pole_distance_value(r)
-    if value is _MISSING:
-        return None
-    path = r.at("pole_distance_mm")
-    if isinstance(value, list) and count > 1:
-        xs = r.numbers(value, path, count, positive=True, shape="[" + ", ".join(f"H{k + 1}" for k in range(count)) + "]")
-        where = [(f"{path}[{k}]", f"H{k + 1}") for k in range(count)]
-    else:
-        x = r.number(value, path, positive=True)
-        xs, where = (None if x is None else [x] * count), [(path, "H")] * count
-    if xs is None:
-        return None
-    lo, hi = POLE_RANGE_MM
-    for x, (key, name) in zip(xs, where):
-        if not lo <= x <= hi:
-            r.problem(key, f"{name} = {x:g} mm: a pole distance lies between {lo:g} and {hi:g} mm "
-                           "(closer, the rays cannot be drawn; farther, the pole leaves the page)")
-            return None
-    return tuple(xs)
-
-
-def _read_pole_distance(fw: _Reader) -> float | None:
+def _read_pole_distance(fw: Reader) -> float | None:
     """``pole_distance_mm``: H, drawing mm, always in millimetres of drawing."""
     h = pole_distances(fw)
     return None if h is None else h[0]
 
 
-def _read_masses(fw: _Reader, machine: _Machine) -> tuple[list[Mass], bool]:
+def _read_masses(fw: Reader, machine: _Machine) -> tuple[list[Mass], bool]:
     """[[flywheel.mass]]: the moving links' inertias; whether any was given."""
     if "mass" in fw.table and not machine.has_linkage:
         fw.used.add("mass")
@@ -408,9 +443,9 @@ def _read_masses(fw: _Reader, machine: _Machine) -> tuple[list[Mass], bool]:
     seen: dict[str, str] = {}
     for r in readers:
         value = r.raw("link", required=True, hint='the number of the link, e.g. link = "2"')
-        link = None if value is _MISSING else r.link_id(value, r.at("link"))
+        link = None if value is MISSING else r.link_id(value, r.at("link"))
         value = r.raw("point", required=True, hint='its centre of mass S, a point of that link')
-        point = None if value is _MISSING else r.point_name(value, r.at("point"))
+        point = None if value is MISSING else r.point_name(value, r.at("point"))
         mass = _at_least_zero(r, r.value("mass", "mass"))
         inertia = _at_least_zero(r, r.value("inertia", "inertia", required=False))
         r.finish()
@@ -443,7 +478,7 @@ def _read_masses(fw: _Reader, machine: _Machine) -> tuple[list[Mass], bool]:
     return masses, bool(readers)
 
 
-def _read_load(r: _Reader, machine: _Machine, cycle: float | None) -> Load | None:
+def _read_load(r: Reader, machine: _Machine, cycle: float | None) -> Load | None:
     """One [[flywheel.load]]: a slider's indicator diagram, a moment on a link, or on the crank."""
     kind = r.string("type", choices=LOAD_TYPES, required=True)
     if kind is None:  # nothing to judge the other keys by
@@ -461,13 +496,13 @@ def _read_load(r: _Reader, machine: _Machine, cycle: float | None) -> Load | Non
         return None
     if kind == "slider":
         return _read_slider_load(r, machine)
-    _not_for(r, _SLIDER_KEYS, f'only for type = "slider" (this load is {kind})')
+    not_for(r, _SLIDER_KEYS, f'only for type = "slider" (this load is {kind})')
     link: str | None = None
     if kind == "moment":
         value = r.raw("link", required=True, hint='the number of the link it acts on, e.g. link = "3"')
-        link = None if value is _MISSING else r.link_id(value, r.at("link"))
+        link = None if value is MISSING else r.link_id(value, r.at("link"))
     else:
-        _not_for(
+        not_for(
             r,
             ["link"],
             'a "crank" load acts on the crank itself: leave link out (or write type = "moment")',
@@ -488,11 +523,11 @@ def _read_load(r: _Reader, machine: _Machine, cycle: float | None) -> Load | Non
     return None if link is None or table is None else LinkMoment(link, table)
 
 
-def _read_slider_load(r: _Reader, machine: _Machine) -> SliderLoad | None:
+def _read_slider_load(r: Reader, machine: _Machine) -> SliderLoad | None:
     """A force on a slider along its guide, from its indicator diagram F(s/H) or p(s/H)·A."""
-    _not_for(r, _MOMENT_KEYS, 'only for type = "moment" or "crank" (this load is slider)')
+    not_for(r, _MOMENT_KEYS, 'only for type = "moment" or "crank" (this load is slider)')
     value = r.raw("point", required=True, hint='the slider\'s point, e.g. point = "C"')
-    point = None if value is _MISSING else r.point_name(value, r.at("point"))
+    point = None if value is MISSING else r.point_name(value, r.at("point"))
     during = r.string("during", choices=("forward", "backward", "both"), required=True)
     sense = r.string("sense", choices=("forward", "backward"), required=True)
     s = _fractions(r)
@@ -528,7 +563,7 @@ def _read_slider_load(r: _Reader, machine: _Machine) -> SliderLoad | None:
         elif given is not None:
             area = given.si
     elif has_force:
-        _not_for(r, ["piston_diameter", "area"], "only with pressure (force is already a force)")
+        not_for(r, ["piston_diameter", "area"], "only with pressure (force is already a force)")
     else:
         r.value("piston_diameter", "length", required=False, positive=True)
         r.value("area", "area", required=False, positive=True)
@@ -571,7 +606,7 @@ def _read_slider_load(r: _Reader, machine: _Machine) -> SliderLoad | None:
 
 
 def _read_motor(
-    fw: _Reader, balance: str | None, omega: float | None, braking_only: bool
+    fw: Reader, balance: str | None, omega: float | None, braking_only: bool
 ) -> tuple[Motor | None, bool]:
     """[flywheel.motor]: stiffness or synchronous speed; whether it was valid (or absent)."""
     m = fw.table_at("motor")
@@ -591,12 +626,12 @@ def _read_motor(
             "and here the constant moment is the resistance",
         )
     value = m.raw("stiffness")
-    stiffness = None if value is _MISSING else m.number(value, m.at("stiffness"), positive=True)
+    stiffness = None if value is MISSING else m.number(value, m.at("stiffness"), positive=True)
     synchronous = m.value("synchronous", "omega", required=False, positive=True)
     syn_key = m.present("synchronous")
-    if value is not _MISSING and syn_key is not None:
+    if value is not MISSING and syn_key is not None:
         m.problem(m.at(syn_key), "give stiffness or synchronous, not both")
-    elif value is _MISSING and syn_key is None:
+    elif value is MISSING and syn_key is None:
         m.problem(
             m.path,
             "give stiffness (e.g. stiffness = 1e5) or the synchronous speed (synchronous_rpm, "
@@ -618,7 +653,7 @@ def _read_motor(
     return None, False
 
 
-def _read_true_motion(fw: _Reader, braking_only: bool) -> tuple[TrueMotionSpec | None, bool]:
+def _read_true_motion(fw: Reader, braking_only: bool) -> tuple[TrueMotionSpec | None, bool]:
     """[flywheel.true_motion]: the solver and its rtol; whether it was valid (or absent)."""
     t = fw.table_at("true_motion")
     if t is None:
@@ -633,7 +668,7 @@ def _read_true_motion(fw: _Reader, braking_only: bool) -> tuple[TrueMotionSpec |
     solver = t.string("solver", choices=SOLVERS, default="Radau")
     value = t.raw("rtol")
     rtol = 1e-10
-    if value is not _MISSING:
+    if value is not MISSING:
         x = t.number(value, t.at("rtol"), positive=True)
         if x is not None and not RTOL_MIN <= x <= RTOL_MAX:
             t.problem(t.at("rtol"), f"must lie between {RTOL_MIN:g} and {RTOL_MAX:g}, not {x:g}")
@@ -645,7 +680,7 @@ def _read_true_motion(fw: _Reader, braking_only: bool) -> tuple[TrueMotionSpec |
     return TrueMotionSpec(solver, rtol), True
 
 
-def _read_braking(fw: _Reader) -> tuple[Braking | None, bool]:
+def _read_braking(fw: Reader) -> tuple[Braking | None, bool]:
     """[flywheel.braking]: the brake's moment (> 0) and the time limit (> 0, optional)."""
     b = fw.table_at("braking")
     if b is None:
@@ -659,20 +694,20 @@ def _read_braking(fw: _Reader) -> tuple[Braking | None, bool]:
 
 
 def _read_flywheel(
-    fw: _Reader, machine: _Machine, start: float | None
+    fw: Reader, machine: _Machine, start: float | None
 ) -> tuple[FlywheelScene | None, int | None]:
     """[flywheel]: the flywheel problem and N (None when invalid)."""
     problems = fw.problems
     before = len(problems)
-    loads_value = fw.table.get("load", _MISSING)
-    no_loads = loads_value is _MISSING or loads_value == []
+    loads_value = fw.table.get("load", MISSING)
+    no_loads = loads_value is MISSING or loads_value == []
     braking_only = _braking_only(fw.table)
 
     count = _read_count(fw)
     delta = _read_delta(fw, required=not braking_only)
     omega: float | None
     if machine.has_linkage:
-        _not_for(
+        not_for(
             fw,
             ["speed"],
             f"given twice: with a linkage the mean speed ω_m is the driver's omega "
@@ -757,7 +792,7 @@ def _read_flywheel(
 # --------------------------------------------------------------------------------------------
 
 
-def _driver_rules(top: _Reader) -> None:
+def _driver_rules(top: Reader) -> None:
     """A flywheel scene's driver is a crank, at one angle (position 1), with no epsilon."""
     driver = top.table.get("driver")
     if not isinstance(driver, dict) or driver.get("type") != "crank":
@@ -765,13 +800,13 @@ def _driver_rules(top: _Reader) -> None:
     for key, value in driver.items():
         if (key == "angle" or key.startswith("angle_")) and isinstance(value, (list, dict)):
             top.problem(
-                f"driver.{_key_text(key)}",
+                f"driver.{key_text(key)}",
                 "one number in a flywheel scene: the crank's angle at position 1 (the "
                 "[flywheel] positions divide the cycle from there)",
             )
         if key == "epsilon" or key.startswith("epsilon_"):
             top.problem(
-                f"driver.{_key_text(key)}",
+                f"driver.{key_text(key)}",
                 "not in a flywheel scene: the crank turns at the mean speed ω_m on average, "
                 "and how far it strays is what the flywheel limits; leave epsilon out",
             )
@@ -781,11 +816,11 @@ def _braking_only(table: Any) -> bool:
     """A [flywheel] with [flywheel.braking] and no [[flywheel.load]]: the run-down alone."""
     if not isinstance(table, dict):
         return False
-    loads = table.get("load", _MISSING)
-    return (loads is _MISSING or loads == []) and "braking" in table
+    loads = table.get("load", MISSING)
+    return (loads is MISSING or loads == []) and "braking" in table
 
 
-def _check_energy_scale(top: _Reader, scales: Mapping[str, float], pole: float | None) -> None:
+def _check_energy_scale(top: Reader, scales: Mapping[str, float], pole: float | None) -> None:
     """Graphical integration ties the scales: μT = μM·μφ·H. All four given must agree."""
     if pole is None or not all(k in scales for k in ("T", "M", "phi")):
         return
@@ -795,9 +830,9 @@ def _check_energy_scale(top: _Reader, scales: Mapping[str, float], pole: float |
     table = top.table.get("scales")
     key = next((k for k in table if k == "T" or k.startswith("T_")), "T") if isinstance(table, dict) else "T"
     top.problem(
-        f"scales.{_key_text(key)}",
+        f"scales.{key_text(key)}",
         f"μT = {scales['T']:.6g} J/mm contradicts μM·μφ·H = {tied:.6g} J/mm (H = pole_distance_mm "
-        f"= {_label(pole)}): graphical integration ties the four; give three of them",
+        f"= {compact(pole)}): graphical integration ties the four; give three of them",
     )
 
 
@@ -811,18 +846,18 @@ def _label_problem(key: str, count: int) -> str | None:
     return f"no position {label}: the positions are numbered 1 … {count}"
 
 
-def _check_find(top: _Reader, count: int | None) -> None:
+def _check_find(top: Reader, count: int | None) -> None:
     """``find``: quantity names, with ``@k`` for a position 1 … N."""
     value = top.table.get("find")
     if not isinstance(value, list):
         return
     for i, item in enumerate(value):
         if not isinstance(item, str) or not item.strip():
-            continue  # reported by _read_header
-        if not _QUANTITY_NAME.fullmatch(item):
+            continue  # reported by read_header
+        if not QUANTITY_NAME.fullmatch(item):
             top.problem(
                 f"find[{i}]",
-                f"{_say(item)} is not a quantity name: letters, digits and underscores, then "
+                f"{say(item)} is not a quantity name: letters, digits and underscores, then "
                 "@position if it is one position's (J_F, M_b, Jp@1)",
             )
         elif count is not None:
@@ -837,7 +872,7 @@ def _check_find(top: _Reader, count: int | None) -> None:
 
 
 def parse_flywheel_scene(
-    data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]
+    data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]
 ) -> Scene:
     """The rest of :func:`graphmech.scene.parse_scene` for a scene with a [flywheel] table.
 
@@ -847,7 +882,7 @@ def parse_flywheel_scene(
         The TOML document.
     source : str
         The name used in messages.
-    top : _Reader
+    top : Reader
         The top-level reader, with [units] already read (its problems are kept).
     order : mapping
         Top-level key → its place in the file, to put problems in file order.
@@ -883,10 +918,10 @@ def parse_flywheel_scene(
     graphmech.errors.SceneError: x.toml: flywheel.load: no [[flywheel.load]]: nothing for the flywheel to smooth
     """
     problems = top.problems
-    has_linkage = any(k in data for k in _LINKAGE_KEYS)
+    has_linkage = any(k in data for k in LINKAGE_KEYS)
     braking_only = _braking_only(data.get("flywheel"))
     choices = (("mechanism",) if has_linkage else ()) + FLYWHEEL_SHOW_CHOICES
-    title, show, find = _read_header(top, choices, BRAKING_SHOW_DEFAULT if braking_only else FLYWHEEL_SHOW_DEFAULT)
+    title, show, find = read_header(top, choices, BRAKING_SHOW_DEFAULT if braking_only else FLYWHEEL_SHOW_DEFAULT)
     fw_table = data.get("flywheel")
     has_braking = isinstance(fw_table, dict) and "braking" in fw_table
     if isinstance(data.get("show"), list):
@@ -905,7 +940,7 @@ def parse_flywheel_scene(
         (name, "only with a linkage: a flywheel scene without one has no mechanism to draw")
         for name, _ in _LINKAGE_SCALES
     )
-    scales = _read_scales(
+    scales = read_scales(
         top,
         entries=_FLYWHEEL_SCALES + (_LINKAGE_SCALES if has_linkage else ()),
         refuse=refuse,
@@ -914,13 +949,13 @@ def parse_flywheel_scene(
     machine = _Machine(has_linkage, None)
     start: float | None = None
     if has_linkage:
-        linkage, positions, driver = _read_linkage(top, _CRANK_ONLY)
+        linkage, positions, driver = read_linkage(top, _CRANK_ONLY)
         _driver_rules(top)
         machine.linkage = linkage
         raw = top.table.get("driver")
         if isinstance(raw, dict):
             key = next((k for k in raw if k == "omega" or k.startswith("omega_")), "omega")
-            machine.omega_path = f"driver.{_key_text(key)}"
+            machine.omega_path = f"driver.{key_text(key)}"
         if isinstance(driver.model, Crank):
             if driver.model.omega == 0:
                 top.problem(
@@ -938,15 +973,15 @@ def parse_flywheel_scene(
     if flywheel is not None:
         _check_energy_scale(top, scales, flywheel.pole_distance)
     _check_find(top, count)
-    measured = _read_measured(top, None)
+    measured = read_measured(top, None)
     if count is not None:
         for key, _ in measured:
             reason = _label_problem(key, count)
             if reason:
-                top.problem(f"measured.{_key_text(key)}", reason)
-    precision, page = _read_tail(top)
+                top.problem(f"measured.{key_text(key)}", reason)
+    precision, page = read_tail(top)
     if problems or flywheel is None:
-        _raise_sorted(problems, data, order, "flywheel", source)
+        raise_sorted(problems, data, order, "flywheel", source)
     model = flywheel.machine
     positions_out = None
     if model.linkage is not None:

@@ -27,18 +27,17 @@ from graphmech.mechanisms.forces import (
 )
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage
 from graphmech.scales import scale_out_of_range
-from graphmech.scene import (
-    _MISSING,
-    SHOW_CHOICES,
+from graphmech.problems.linkage.scene import SHOW_CHOICES, read_linkage
+from graphmech.problems.reader import (
+    MISSING,
+    Reader,
     Scene,
-    _raise_sorted,
-    _read_tail,
-    _read_header,
-    _read_linkage,
-    _read_measured,
-    _read_scales,
-    _Reader,
-    _say,
+    raise_sorted,
+    read_header,
+    read_measured,
+    read_scales,
+    read_tail,
+    say,
 )
 
 #: What a force scene may show: the kinematics' panels, then the loads and reactions on the
@@ -74,7 +73,7 @@ class ForceScene:
     mu_F_path: str = "forces.mu_F"
 
 
-def _non_negative(r: _Reader, base: str, kind: str, *, required: bool = True) -> float | None:
+def _non_negative(r: Reader, base: str, kind: str, *, required: bool = True) -> float | None:
     v = r.value(base, kind, required=required)
     if v is None:
         return None
@@ -84,7 +83,7 @@ def _non_negative(r: _Reader, base: str, kind: str, *, required: bool = True) ->
     return _sane(r, v)
 
 
-def _sane(r: _Reader, v: Any) -> float | None:
+def _sane(r: Reader, v: Any) -> float | None:
     """A load, mass or gravity of a machine: 0, or 1e-9 … 1e12 in SI units (beyond, the products
     of the analysis under- or overflow: a denormal mass made h = M_i/F_i infinite)."""
     if v.si != 0 and not ABSURD[0] <= abs(v.si) <= ABSURD[1]:
@@ -93,14 +92,14 @@ def _sane(r: _Reader, v: Any) -> float | None:
     return v.si
 
 
-def _name(r: _Reader, key: str, hint: str) -> str | None:
+def _name(r: Reader, key: str, hint: str) -> str | None:
     value = r.raw(key, required=True, hint=hint)
-    return None if value is _MISSING else r.point_name(value, r.at(key))
+    return None if value is MISSING else r.point_name(value, r.at(key))
 
 
-def _link(r: _Reader, links: dict[str, list[str]] | None, frame: str | None) -> str | None:
+def _link(r: Reader, links: dict[str, list[str]] | None, frame: str | None) -> str | None:
     value = r.raw("link", required=True, hint='the number of the link, e.g. link = "2"')
-    link = None if value is _MISSING else r.link_id(value, r.at("link"))
+    link = None if value is MISSING else r.link_id(value, r.at("link"))
     if link is None or links is None:
         return link
     if link == frame:
@@ -112,7 +111,7 @@ def _link(r: _Reader, links: dict[str, list[str]] | None, frame: str | None) -> 
     return link
 
 
-def _on_link(r: _Reader, point: str | None, link: str | None, links: dict[str, list[str]] | None) -> str | None:
+def _on_link(r: Reader, point: str | None, link: str | None, links: dict[str, list[str]] | None) -> str | None:
     if point is None or link is None or links is None:
         return point
     if point not in links[link]:
@@ -121,9 +120,9 @@ def _on_link(r: _Reader, point: str | None, link: str | None, links: dict[str, l
     return point
 
 
-def _label_text(r: _Reader, key: str, default: str) -> str:
+def _label_text(r: Reader, key: str, default: str) -> str:
     value = r.raw(key)
-    if value is _MISSING:
+    if value is MISSING:
         return default
     if not isinstance(value, str) or not value.strip() or len(value) > 16:
         r.problem(r.at(key), "must be a short label (1 … 16 characters), e.g. \"P_r\"")
@@ -131,15 +130,15 @@ def _label_text(r: _Reader, key: str, default: str) -> str:
     return value
 
 
-def _coefficient(r: _Reader, key: str) -> float | None:
+def _coefficient(r: Reader, key: str) -> float | None:
     value = r.raw(key, required=True, hint=f"the friction coefficient, e.g. {key} = 0.1")
-    if value is _MISSING:
+    if value is MISSING:
         return None
     x = r.number(value, r.at(key))
     if x is None:
         return None
     if not 0 <= x < 10:
-        r.problem(r.at(key), f"{_say(value)} is not a friction coefficient: 0 ≤ f < 10")
+        r.problem(r.at(key), f"{say(value)} is not a friction coefficient: 0 ≤ f < 10")
         return None
     return x
 
@@ -180,7 +179,7 @@ def _revolute_points(linkage: Linkage) -> set[str]:
     return out
 
 
-def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
+def _read_forces(fr: Reader, linkage: Linkage | None) -> ForceScene | None:
     links = None if linkage is None else {k: v for k, v in linkage.links().items() if k != linkage.frame_link}
     frame = None if linkage is None else linkage.frame_link
     before = len(fr.problems)
@@ -279,7 +278,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
         | {k for y in linkage.dyads if isinstance(y, RPP) for k in y.links})
     for r in fr.tables_at("guide")[:MAX_ITEMS]:
         value = r.raw("link", required=True, hint='the slider\'s link number, e.g. link = "3"')
-        link = None if value is _MISSING else r.link_id(value, r.at("link"))
+        link = None if value is MISSING else r.link_id(value, r.at("link"))
         f = _coefficient(r, "f")
         r.finish()
         if link is not None and sliders is not None and link not in sliders:
@@ -295,11 +294,11 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
 
     tolerance, iterations = 1e-10, 100
     value = fr.raw("tolerance_N")
-    if value is not _MISSING:
+    if value is not MISSING:
         x = fr.number(value, fr.at("tolerance_N"), positive=True)
         tolerance = x if x is not None else tolerance
     value = fr.raw("max_iterations")
-    if value is not _MISSING:
+    if value is not MISSING:
         if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_ITERATIONS:
             fr.problem(fr.at("max_iterations"), f"must be a whole number 1 … {MAX_ITERATIONS}")
         else:
@@ -316,7 +315,7 @@ def _read_forces(fr: _Reader, linkage: Linkage | None) -> ForceScene | None:
     return ForceScene(model, mu_F, mu_F_path)
 
 
-def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]) -> Scene:
+def parse_forces_scene(data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene:
     """The rest of :func:`graphmech.scene.parse_scene` for a linkage scene with a [forces] table.
 
     Returns
@@ -344,19 +343,19 @@ def parse_forces_scene(data: dict[str, Any], source: str, top: _Reader, order: M
     (50.0, ('forces', 'force_polygons'))
     """
     problems = top.problems
-    title, show, find = _read_header(top, FORCE_SHOW_CHOICES, FORCE_SHOW_DEFAULT)
+    title, show, find = read_header(top, FORCE_SHOW_CHOICES, FORCE_SHOW_DEFAULT)
     if "instant_centres" in show:  # a sheet of rows, one per position: not on the force sheet
         top.problem(f"show[{list(data['show']).index('instant_centres')}]",
                     "the instant centres are drawn on a linkage sheet: show them in a scene without [forces] "
                     "(find still takes P13, omega_3_ic … here)")
-    scales = _read_scales(top)
-    linkage, positions, _ = _read_linkage(top)
+    scales = read_scales(top)
+    linkage, positions, _ = read_linkage(top)
     fr = top.table_at("forces")
     forces = None if fr is None else _read_forces(fr, linkage)
-    measured = _read_measured(top, positions.labels if positions else None)
-    precision, page = _read_tail(top)
+    measured = read_measured(top, positions.labels if positions else None)
+    precision, page = read_tail(top)
     if problems or linkage is None or forces is None:
-        _raise_sorted(problems, data, order, "forces", source)
+        raise_sorted(problems, data, order, "forces", source)
     return Scene(
         source=source,
         title=title,

@@ -12,8 +12,18 @@ from dataclasses import dataclass
 from typing import Any, Mapping
 
 from graphmech.mechanisms.topology import Pair, Topology
-from graphmech.scene import (_LINKAGE_KEYS, _MISSING, Scene, _raise_sorted, _read_header,
-                             _read_measured, _read_scales, _read_tail, _Reader, _say)
+from graphmech.problems.linkage.scene import LINKAGE_KEYS
+from graphmech.problems.reader import (
+    MISSING,
+    Reader,
+    Scene,
+    raise_sorted,
+    read_header,
+    read_measured,
+    read_scales,
+    read_tail,
+    say,
+)
 
 #: What a structure scene may show.
 STRUCTURE_SHOW_CHOICES = ("structure",)
@@ -52,19 +62,19 @@ class StructureScene:
 MAX_COUNT = 10_000
 
 
-def _count(r: _Reader, key: str, *, required: bool = True, default: int = 0) -> int | None:
+def _count(r: Reader, key: str, *, required: bool = True, default: int = 0) -> int | None:
     value = r.raw(key, required=required, hint="a whole number ≥ 0")
-    if value is _MISSING:
+    if value is MISSING:
         return default
     if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value <= MAX_COUNT:
-        r.problem(r.at(key), f"must be a whole number from 0 to {MAX_COUNT}, not {_say(value)}")
+        r.problem(r.at(key), f"must be a whole number from 0 to {MAX_COUNT}, not {say(value)}")
         return None
     return value
 
 
-def _links(r: _Reader, key: str, *, required: bool = False) -> list[str] | None:
+def _links(r: Reader, key: str, *, required: bool = False) -> list[str] | None:
     value = r.raw(key, required=required, hint='a list of link numbers such as ["2", "3"]')
-    if value is _MISSING:
+    if value is MISSING:
         return None
     if not isinstance(value, list):
         r.problem(r.at(key), 'must be a list of link numbers such as ["2", "3"]')
@@ -77,7 +87,7 @@ def _links(r: _Reader, key: str, *, required: bool = False) -> list[str] | None:
     return None if any(x is None for x in out) else out  # type: ignore[return-value]
 
 
-def _read_structure(st: _Reader) -> StructureScene | None:
+def _read_structure(st: Reader) -> StructureScene | None:
     cases = []
     case_tables = st.tables_at("case")
     if len(case_tables) > MAX_PAIRS:
@@ -99,7 +109,7 @@ def _read_structure(st: _Reader) -> StructureScene | None:
         st.problem(st.at("case"), "a scene gives either printed counts ([[structure.case]]) or a topology "
                                   "([[structure.pair]]), not both")
     frame = st.raw("frame", required=not cases, hint='the fixed link\'s number, e.g. frame = "1"')
-    frame_id = None if frame is _MISSING else st.link_id(frame, st.at("frame"))
+    frame_id = None if frame is MISSING else st.link_id(frame, st.at("frame"))
     drivers = _links(st, "drivers") or []
     moving = _links(st, "links")
     redundant = _count(st, "redundant", required=False, default=-1)
@@ -109,9 +119,9 @@ def _read_structure(st: _Reader) -> StructureScene | None:
         kind = p.string("kind", choices=_PAIR_KINDS, required=True)
         links = _links(p, "links", required=True)
         name = p.raw("name")
-        if name is not _MISSING and not isinstance(name, str):
+        if name is not MISSING and not isinstance(name, str):
             p.problem(p.at("name"), "must be a string such as \"A\"")
-            name = _MISSING
+            name = MISSING
         at = p.pair("at", required=False)
         angle = p.scalar("angle", "angle", required=False)
         if angle is not None and not abs(angle) <= 1e6:  # a direction: keep its sine meaningful
@@ -173,7 +183,7 @@ def _read_structure(st: _Reader) -> StructureScene | None:
     return StructureScene(topo, with_at == len(pairs) and len(pairs) > 0)
 
 
-def parse_structure_scene(data: dict[str, Any], source: str, top: _Reader, order: Mapping[str, int]) -> Scene:
+def parse_structure_scene(data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene:
     """The rest of :func:`graphmech.scene.parse_scene` for a scene with a [structure] table.
 
     Examples
@@ -187,9 +197,9 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: _Reader, order
     (('2', '3', '4'), 3, 4, False)
     """
     problems = top.problems
-    title, show, find = _read_header(top, STRUCTURE_SHOW_CHOICES, ("structure",))
-    scales = _read_scales(top, entries=(("l", "length"),))
-    for key in (*_LINKAGE_KEYS, "cam", "flywheel"):
+    title, show, find = read_header(top, STRUCTURE_SHOW_CHOICES, ("structure",))
+    scales = read_scales(top, entries=(("l", "length"),))
+    for key in (*LINKAGE_KEYS, "cam", "flywheel"):
         if key in data:
             top.used.add(key)
             what = {"cam": "a cam scene", "flywheel": "a flywheel scene"}.get(key, "a linkage scene")
@@ -202,14 +212,14 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: _Reader, order
         if base not in STRUCTURE_QUANTITIES:
             top.problem(f"find[{i}]", f"unknown quantity {base!r}: a structure scene finds "
                                       f"{', '.join(STRUCTURE_QUANTITIES)}")
-    measured = _read_measured(top, None, cam=True)  # whole numbers, no positions (judged exactly)
+    measured = read_measured(top, None, cam=True)  # whole numbers, no positions (judged exactly)
     for name, _ in measured:
         if name not in STRUCTURE_QUANTITIES:
             top.problem(f"measured.{name}", f"unknown quantity {name!r}: a structure scene judges "
                                             f"{', '.join(STRUCTURE_QUANTITIES)}")
-    precision, page = _read_tail(top)
+    precision, page = read_tail(top)
     if problems or structure is None:
-        _raise_sorted(problems, data, order, "structure", source)
+        raise_sorted(problems, data, order, "structure", source)
     return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
                  precision_mm=precision, page=page, structure=structure)
 

@@ -1,0 +1,564 @@
+"""Reading a linkage scene: the frame points, the driver, Assur dyads in assembly order, extra
+points on links and the driver's positions (``[frame]``, ``[driver]``, ``[[dyad]]``, ``[[point]]``).
+
+Whether a linkage can be *assembled* at a position is not decided here: the construction does
+that, position by position.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Any, Mapping
+
+from graphmech.errors import SceneError
+from graphmech.mechanisms.linkage import (
+    RPP,
+    RPR,
+    RRP,
+    RRR,
+    Crank,
+    Driver,
+    Guide,
+    Linkage,
+    LinkPoint,
+    Positions,
+    SliderInput,
+)
+from graphmech.tolerances import PARALLEL_SIN
+from graphmech.problems.reader import (
+    LINK_ID,
+    MISSING,
+    POINT_NAME,
+    Reader,
+    Scene,
+    TOP_KEYS,
+    all_valid,
+    file_order,
+    read_header,
+    read_measured,
+    read_scales,
+    read_tail,
+    say,
+)
+
+
+#: What a scene may show, in the order a textbook draws them.
+SHOW_CHOICES = ("mechanism", "velocity", "acceleration", "instant_centres")
+
+
+#: The tables only a linkage scene has.
+LINKAGE_KEYS = ("frame", "driver", "dyad", "point")
+
+
+#: Frame point name → coordinates in m (None when they were invalid: the name still counts).
+_Frame = Mapping[str, "tuple[float, float] | None"]
+
+
+@dataclass
+class _Part:
+    """One element's names and links, with the key paths to blame."""
+
+    where: str  # "driver", "dyad[1]", "point[0]"
+    needs: list[tuple[str, str]] = field(default_factory=list)  # (name, path) used, must exist
+    defines: list[tuple[str, str]] = field(default_factory=list)  # (name, path) new points
+    links: list[tuple[str, str]] = field(default_factory=list)  # (link, path) new moving links
+    carries: list[tuple[str, list[str]]] = field(default_factory=list)  # link → its points
+    translating: list[str] = field(default_factory=list)  # links that only translate
+    on: tuple[str | None, str] | None = None  # a [[point]]'s link (None if invalid), its path
+    model: Any = None  # the model object, when its own values were valid
+    opaque: bool = False  # its type is unknown: names and links kept, nothing checked
+
+
+def _opaque(
+    r: Reader, where: str, name_keys: tuple[str, ...], link_keys: tuple[str, ...]
+) -> _Part:
+    """A driver or dyad of unknown type: keep whatever names and links it gives, silently,
+    so that the one wrong ``type`` does not bring a cascade of "not defined" after it."""
+
+    def valid(values: Any, pattern: re.Pattern[str]) -> list[str]:
+        items = values if isinstance(values, list) else [values]
+        return [str(v) for v in items if isinstance(v, (str, int)) and pattern.fullmatch(str(v))]
+
+    names = [n for key in name_keys for n in valid(r.table.get(key), POINT_NAME)]
+    links = [x for key in link_keys for x in valid(r.table.get(key), LINK_ID)]
+    return _Part(
+        where,
+        defines=[(n, where) for n in names],
+        links=[(x, where) for x in links],
+        carries=[(x, names) for x in links],
+        opaque=True,
+    )
+
+
+def _read_frame(top: Reader) -> tuple[dict[str, tuple[float, float] | None], str | None]:
+    """[frame]: point coordinates (m; None when invalid) and the optional frame link number."""
+    r = top.table_at("frame")
+    points: dict[str, tuple[float, float] | None] = {}
+    if r is None:
+        return points, None
+    link = None
+    value = r.raw("link")
+    if value is not MISSING:
+        link = r.link_id(value, r.at("link"))
+    for key in list(r.table):
+        if key in r.used or key == "link":
+            continue
+        name = key.split("_", 1)[0]
+        if not POINT_NAME.fullmatch(name) or len(name) > 8:
+            continue  # finish() reports it
+        points[name] = r.pair(name)  # the name counts even if its coordinates are wrong
+    r.finish("a frame point is named in capitals with its coordinates, e.g. A_mm = [0, 0]")
+    return points, link
+
+
+def _read_guide(parent: Reader, key: str, frame: _Frame) -> Guide | None:
+    """A frame guide {through = [x, y] or a frame point's name, angle (default 0)}."""
+    r = parent.table_at(
+        key, required=True, hint=f"write {key} = {{through_mm = [0, 0], angle_deg = 0}}"
+    )
+    if r is None:
+        return None
+    through: tuple[float, float] | None
+    if isinstance(r.table.get("through"), str):
+        name = r.raw("through")
+        through = frame.get(name)
+        if name not in frame:
+            r.problem(r.at("through"), f"{say(name)} is not a frame point")
+    else:
+        through = r.pair("through")
+    angle = r.scalar("angle", "angle", required=False, default=0.0)
+    r.finish()
+    return Guide(through, angle) if all_valid(through, angle) else None  # type: ignore[arg-type]
+
+
+def _read_driver(
+    top: Reader, frame: _Frame, crank_only: str = ""
+) -> tuple[_Part, Positions | None]:
+    """[driver]: a crank or a slider, and the positions it is drawn at.
+
+    ``crank_only``: the reason a slider is refused (a scene whose driver must be a crank).
+    """
+    part = _Part("driver")
+    r = top.table_at(
+        "driver", required=True, hint='add a [driver] table (type = "crank" or "slider")'
+    )
+    if r is None:
+        return part, None
+    kind = r.string("type", choices=("crank", "slider"), required=True)
+    if kind == "slider" and crank_only:
+        r.problem(r.at("type"), crank_only)
+        kind = None
+    if kind is None:
+        return _opaque(r, "driver", ("pivot", "tip", "point"), ("link",)), None
+    link_value = r.raw("link", required=True, hint='the driver\'s link number, e.g. link = "1"')
+    link = None if link_value is MISSING else r.link_id(link_value, r.at("link"))
+    if link is not None:
+        part.links.append((link, r.at("link")))
+
+    def name(key: str) -> str | None:
+        value = r.raw(key, required=True, hint='a point name such as "B"')
+        return None if value is MISSING else r.point_name(value, r.at(key))
+
+    model: Driver | None = None
+    if kind == "crank":
+        pivot, tip = name("pivot"), name("tip")
+        length = r.scalar("length", "length", positive=True)
+        positions = r.positions("angle", "angle")
+        omega = r.scalar("omega", "omega")
+        epsilon = r.scalar("epsilon", "epsilon", required=False, default=0.0)
+        direction = r.string("direction", choices=("ccw", "cw"), default="ccw")
+        if direction == "cw" and omega is not None and epsilon is not None:
+            if omega < 0:
+                r.problem(
+                    r.at("direction"), 'with direction = "cw" give omega as a magnitude (≥ 0)'
+                )
+                omega = None
+            else:  # both read positive clockwise; stored CCW-positive
+                omega, epsilon = -omega + 0.0, -epsilon + 0.0
+        if pivot is not None:
+            if pivot not in frame:
+                known = f"frame points: {', '.join(frame)}" if frame else "add it to [frame]"
+                r.problem(r.at("pivot"), f"{pivot} is not a frame point ({known})")
+            else:
+                part.needs.append((pivot, r.at("pivot")))
+        if tip is not None:
+            part.defines.append((tip, r.at("tip")))
+        if link is not None:
+            part.carries.append((link, [n for n in (pivot, tip) if n]))
+        if all_valid(link, pivot, tip, length, omega, epsilon, direction):
+            model = Crank(link, pivot, tip, length, omega, epsilon)  # type: ignore[arg-type]
+    else:
+        point = name("point")
+        guide = _read_guide(r, "guide", frame)
+        positions = r.positions("position", "length")
+        velocity = r.scalar("velocity", "velocity")
+        acceleration = r.scalar("acceleration", "acceleration", required=False, default=0.0)
+        if point is not None:
+            part.defines.append((point, r.at("point")))
+        if link is not None:
+            part.carries.append((link, [point] if point else []))
+            part.translating.append(link)
+        if all_valid(link, point, guide, velocity, acceleration):
+            model = SliderInput(link, point, guide, velocity, acceleration)  # type: ignore[arg-type]
+    r.finish()
+    part.model = model
+    return part, positions
+
+
+_DYAD_TYPES = ("RRR", "RRP", "RPR", "RPP")
+
+
+def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
+    """One [[dyad]]: its joints, links and dimensions, by type."""
+    where = f"dyad[{index}]"
+    part = _Part(where)
+    kind = r.string("type", choices=_DYAD_TYPES, required=True)
+    if kind is None:
+        return _opaque(r, where, ("joints",), ("links",))
+    count = 3 if kind == "RRR" else 2
+    joints = r.name_list("joints", count, r.point_name)
+    links = r.name_list("links", 2, r.link_id)
+    (i, i_path), (j, j_path) = links
+    part.links = [(x, p) for x, p in links if x is not None]
+    if i is not None and i == j:
+        r.problem(j_path, "a dyad's two links must differ")
+    names = [n for n, _ in joints]
+
+    def carry(link: str | None, *points: str | None) -> None:
+        if link is not None:
+            part.carries.append((link, [p for p in points if p]))
+
+    def new(k: int, name: str | None = None) -> None:
+        n = joints[k][0] if name is None else name
+        if n is not None:
+            part.defines.append((n, joints[k][1]))
+
+    def need(*ks: int) -> None:
+        for k in ks:
+            n, path = joints[k]
+            if n is not None:
+                part.needs.append((n, path))
+
+    if kind == "RRR":
+        p, c, q = names
+        lengths_given = r.quantity("lengths", "length")
+        lengths = None
+        if lengths_given is not None:
+            raw = r.numbers(
+                lengths_given.value,
+                r.at(lengths_given.key),
+                2,
+                positive=True,
+                shape=f"[l_{p or 'P'}{c or 'C'}, l_{q or 'Q'}{c or 'C'}]",
+            )
+            lengths = None if raw is None else tuple(lengths_given.si(x) for x in raw)
+        branch = r.string("branch", choices=("left", "right"), required=True)
+        need(0, 2)
+        new(1)
+        carry(i, p, c)
+        carry(j, q, c)
+        if all_valid(p, c, q, i, j, lengths, branch):
+            part.model = RRR(p, c, q, (i, j), lengths, branch)  # type: ignore[arg-type]
+        if p is not None and p == q:
+            r.problem(joints[2][1], f"the two outer joints must differ ({p} twice)")
+    elif kind == "RRP":
+        p, c = names
+        length = r.scalar("length", "length", positive=True)
+        guide = _read_guide(r, "guide", frame)
+        branch = r.string("branch", choices=("forward", "backward"), required=True)
+        need(0)
+        new(1)
+        carry(i, p, c)
+        carry(j, c)
+        if j is not None:
+            part.translating.append(j)
+        if all_valid(p, c, i, j, length, guide, branch):
+            part.model = RRP(p, c, (i, j), length, guide, branch)  # type: ignore[arg-type]
+    elif kind == "RPR":
+        p, q = names
+        bar = r.string("bar", choices=("first", "second"), required=True)
+        need(0, 1)
+        if p is not None and p == q:
+            r.problem(joints[1][1], f"the two pivots must differ ({p} twice)")
+        if all_valid(p, q, i, j, bar):
+            model = RPR(p, q, (i, j), bar)  # type: ignore[arg-type]
+            part.model = model
+            on_bar, on_block = model.coincident
+            k = 1 if bar == "first" else 0  # the sliding point is the block's pivot
+            new(k, on_bar)
+            new(k, on_block)
+            carry(model.bar_link, model.bar_pivot, on_bar)
+            carry(model.block_link, model.block_pivot, on_block)
+        else:
+            carry(i, p)
+            carry(j, q)
+    else:  # RPP
+        p, c = names
+        slot = r.scalar("slot_angle", "angle")
+        guide = _read_guide(r, "guide", frame)
+        need(0)
+        new(1)
+        if p is not None and i is not None and j is not None:
+            new(0, p + i)
+            new(0, p + j)
+        carry(i, p, p + i if p and i else None)
+        carry(j, c, p + j if p and j else None)
+        part.translating.extend(x for x in (i, j) if x is not None)
+        if (
+            slot is not None
+            and guide is not None
+            and abs(math.sin(slot - guide.angle)) < PARALLEL_SIN
+        ):
+            r.problem(r.at("slot_angle"), "the slot is parallel to the guide: the dyad cannot move")
+        elif all_valid(p, c, i, j, slot, guide):
+            part.model = RPP(p, c, (i, j), slot, guide)  # type: ignore[arg-type]
+    r.finish()
+    return part
+
+
+def _read_point(r: Reader, index: int) -> _Part:
+    """One [[point]]: a point fixed on a link, placed from one or two points of that link."""
+    part = _Part(f"point[{index}]")
+    value = r.raw("name", required=True, hint='a point name such as "E"')
+    name = None if value is MISSING else r.point_name(value, r.at("name"))
+    value = r.raw("link", required=True, hint="the number of the link that carries the point")
+    link = None if value is MISSING else r.link_id(value, r.at("link"))
+    bases: list[tuple[str, str]] = []
+    value = r.raw("base", required=True, hint='base = ["B", "C"] (or one point with offset)')
+    ok = value is not MISSING
+    if ok and (not isinstance(value, list) or len(value) not in (1, 2)):
+        r.problem(r.at("base"), "must be a list of 1 or 2 point names")
+        ok = False
+    elif ok:
+        for k, b in enumerate(value):
+            b_name = r.point_name(b, f"{r.at('base')}[{k}]")
+            ok = ok and b_name is not None
+            if b_name is not None:
+                bases.append((b_name, f"{r.at('base')}[{k}]"))
+        if len(bases) == 2 and bases[0][0] == bases[1][0]:
+            r.problem(bases[1][1], f"the two base points must differ ({bases[0][0]} twice)")
+            ok = False
+    along = left = None
+    if ok and len(bases) == 1:  # a translating link: offset [dx, dy] from the one point
+        offset = r.pair("offset", required=False)
+        if offset is None and r.present("offset") is None:
+            r.problem(r.at("offset"), "missing: with one base point give offset_mm = [dx, dy]")
+        for key in filter(None, (r.present("along"), r.present("left"))):
+            r.used.add(key)
+            r.problem(r.at(key), "with one base point give offset = [dx, dy] instead")
+        if offset is not None:
+            along, left = offset
+    elif ok:  # U + along·û + left·n̂
+        along = r.scalar("along", "length")
+        left = r.scalar("left", "length", required=False, default=0.0)
+        offset_key = r.present("offset")
+        if offset_key is not None:
+            r.used.add(offset_key)
+            r.problem(
+                r.at(offset_key), "offset needs a single base point; with two give along/left"
+            )
+    else:  # base is broken: still read the rest so that it is not reported as unknown
+        for extra in ("along", "left", "offset"):
+            r.quantity(extra, "length", required=False)
+    r.finish()
+    if name is not None:
+        part.defines.append((name, r.at("name")))
+    part.needs, part.on = bases, (link, r.at("link"))
+    if all_valid(name, link, along, left) and ok:
+        part.model = LinkPoint(name, link, tuple(b for b, _ in bases), along, left)  # type: ignore[arg-type]
+    return part
+
+
+def read_linkage(
+    top: Reader, crank_only: str = ""
+) -> tuple[Linkage | None, Positions | None, _Part]:
+    """[frame], [driver], [[dyad]] and [[point]], cross-checked.
+
+    Returns the linkage (None when anything in those tables was wrong), the driver's
+    positions and the driver as read. ``crank_only``: see :func:`_read_driver`.
+    """
+    data = top.table
+    before = len(top.problems)
+    frame, link_value = _read_frame(top)
+    frame_link_given = (
+        "frame" in data and isinstance(data["frame"], dict) and "link" in data["frame"]
+    )
+    driver, positions = _read_driver(top, frame, crank_only)
+    dyads = [_read_dyad(r, k, frame) for k, r in enumerate(top.tables_at("dyad"))]
+    points = [_read_point(r, k) for k, r in enumerate(top.tables_at("point"))]
+    frame_link = _check_structure(
+        top.problems, frame, (link_value, frame_link_given), driver, dyads, points
+    )
+    if len(top.problems) != before or any(p.model is None for p in (driver, *dyads, *points)):
+        return None, positions, driver
+    linkage = Linkage(
+        frame_points={name: xy for name, xy in frame.items() if xy is not None},
+        driver=driver.model,
+        dyads=tuple(d.model for d in dyads),
+        points=tuple(p.model for p in points),
+        frame_link=frame_link or "0",
+    )
+    return linkage, positions, driver
+
+
+def _check_structure(
+    problems: list[tuple[str, str]],
+    frame: _Frame,
+    frame_link: tuple[str | None, bool],
+    driver: _Part,
+    dyads: list[_Part],
+    points: list[_Part],
+) -> str | None:
+    """Check names and links across the scene; return the frame link (None if unknown)."""
+    origin: dict[str, str] = {n: "frame" for n in frame}  # name → who defines it
+    stage: dict[str, int] = {n: 0 for n in frame}  # name → first dyad index that may use it
+    owner: dict[str, str] = {}  # link → who introduced it
+    carried: dict[str, list[str]] = {}
+    translating: set[str] = set()
+
+    def define(part: _Part, level: int) -> None:
+        for name, path in part.defines:
+            if part.opaque and name in origin:
+                continue
+            if name in origin:
+                who = "a frame point" if origin[name] == "frame" else f"by {origin[name]}"
+                problems.append((path, f"{name} is already defined ({who})"))
+            else:
+                origin[name], stage[name] = part.where, level
+
+    def carry(part: _Part) -> None:
+        for link, names in part.carries:
+            lst = carried.setdefault(link, [])
+            lst.extend(n for n in names if n not in lst)
+        translating.update(part.translating)
+
+    # Driver and dyads: new links, new points, in assembly order.
+    for level, part in enumerate([driver, *dyads]):
+        for link, path in part.links:
+            if link in owner and owner[link] != part.where and not part.opaque:
+                problems.append(
+                    (
+                        path,
+                        f"link {link} is already used by {owner[link]}; "
+                        "each dyad adds two new links",
+                    )
+                )
+            owner.setdefault(link, part.where)
+        define(part, level)
+        carry(part)
+
+    # Points, in file order: on an existing moving link, placed from that link's points.
+    for part in points:
+        (on, on_path), bases = part.on or (None, ""), part.needs
+        level = 0
+        for base, path in bases:
+            if on is None or on not in carried:
+                continue
+            if base not in origin:
+                later = next(
+                    (
+                        p.where
+                        for p in points
+                        if p is not part and any(n == base for n, _ in p.defines)
+                    ),
+                    None,
+                )
+                tip = f" ({later} defines it: list that point first)" if later else ""
+                problems.append((path, f"{base} is not defined before {part.where}{tip}"))
+            elif base not in carried[on]:
+                problems.append(
+                    (
+                        path,
+                        f"{base} is not a point of link {on} (it carries {', '.join(carried[on])})",
+                    )
+                )
+            else:
+                level = max(level, stage[base])
+        if on is not None and on not in carried:
+            if on == frame_link[0]:
+                problems.append((on_path, "a point on the frame belongs in [frame]"))
+            else:
+                problems.append(
+                    (
+                        on_path,
+                        f"link {on} does not exist (links: {', '.join(carried) or 'none'})",
+                    )
+                )
+        elif on is not None and len(bases) == 1 and on not in translating:
+            problems.append(
+                (
+                    on_path,
+                    f"link {on} turns: an offset from one base point needs a translating "
+                    "link (a slider); give base = [U, V] with along/left",
+                )
+            )
+        define(part, level)
+        if on is not None and on in carried:
+            carry(_Part(part.where, carries=[(on, [n for n, _ in part.defines])]))
+
+    # Dyads' outer joints: defined by the frame, the driver or an earlier dyad (or a point
+    # placed from those).
+    for k, part in enumerate(dyads):
+        for name, path in part.needs:
+            if name in stage and stage[name] <= k:
+                continue
+            if name in origin:
+                tip = f" ({origin[name]} defines it: put that first)"
+            else:
+                tip = ""
+            problems.append((path, f"{name} is not defined before {part.where}{tip}"))
+
+    # The frame link.
+    fixed, explicit = frame_link
+    if explicit:
+        if fixed is not None and fixed in owner:
+            problems.append(("frame.link", f"link {fixed} is a moving link ({owner[fixed]})"))
+        return fixed
+    numeric = [int(x) for x in owner if x.isdigit()]
+    return str(max(numeric) + 1) if numeric else "0"
+
+
+def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene:
+    """The rest of :func:`graphmech.scene.parse_scene` for a linkage scene (with a full cycle or
+    the characteristics when it asks for them)."""
+    problems = top.problems
+    if not any(k in data for k in LINKAGE_KEYS):
+        top.problem(
+            "",
+            "nothing to draw: add a [driver] table (a linkage scene) or a [cam] table "
+            "(a disc cam scene)",
+        )
+        read_header(top, SHOW_CHOICES, SHOW_CHOICES)
+        read_scales(top)
+        read_measured(top, None)
+        read_tail(top)
+        problems.sort(key=lambda p: file_order(p, order))
+        raise SceneError(problems, source)
+    from graphmech.problems.cycle.scene import CYCLE_SHOW_CHOICES, read_cycle
+
+    default = ("cycle",) if "cycle" in data else ("characteristics",) if "characteristics" in data else SHOW_CHOICES
+    title, show, find = read_header(top, SHOW_CHOICES + CYCLE_SHOW_CHOICES, default)
+    scales = read_scales(top)
+    linkage, positions, _ = read_linkage(top)
+    cycle = None
+    if "cycle" in data or "characteristics" in data or any(s in CYCLE_SHOW_CHOICES for s in show):
+        cycle, positions = read_cycle(top, data, show, linkage, positions)
+    measured = read_measured(top, positions.labels if positions else None)
+    precision, page = read_tail(top, TOP_KEYS + ("cycle", "characteristics"))
+    if problems or linkage is None:
+        problems.sort(key=lambda p: file_order(p, order))
+        raise SceneError(problems or [("driver", "invalid")], source)
+    return Scene(
+        source=source,
+        title=title,
+        show=show,
+        find=find,
+        scales=scales,
+        linkage=linkage,
+        positions=positions,  # type: ignore[arg-type]
+        measured=measured,
+        precision_mm=precision,
+        page=page,
+        cycle=cycle,
+    )
