@@ -12,7 +12,7 @@ from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
 
 if TYPE_CHECKING:
-    from graphmech.methods.polygons import LinkageConstruction
+    from graphmech.methods.linkage_construction import LinkageConstruction
 
 PANEL = "mechanism"
 

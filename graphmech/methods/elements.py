@@ -3,7 +3,8 @@
 Step names carry the figure's initial (``v:`` velocity, ``a:`` acceleration) so one
 construction holds both polygons without clashes. Within a figure the images of the user's
 points are named by their letters (``v:c`` for C), and the construction's own points (the pole
-p, the normal-component point n₂′, the Coriolis point k′) by :func:`own`, in brackets that no
+p, the normal-component point n₂′, the Coriolis point k′) by :func:`own` (defined in
+:mod:`~graphmech.methods.linkage_construction` with the poles' names), in brackets that no
 point name can produce: a point named P, N2 or K has an image ``v:p``, ``a:n2'``, ``a:k'`` that
 never meets them. Lines name their points with a separator (``⟂B·CD``), so B + CD ≠ BC + D.
 """
@@ -11,8 +12,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from graphmech.methods.linkage_construction import own
+
 if TYPE_CHECKING:
-    from graphmech.methods.polygons import LinkageConstruction
+    from graphmech.methods.linkage_construction import LinkageConstruction
 
 
 def vector(b: "LinkageConstruction", panel: str, start: str, end: str, role: str = "result",
@@ -32,11 +35,6 @@ def image(b: "LinkageConstruction", panel: str, images: dict[str, str], point: s
     return images[point]
 
 
-def own(panel: str, tag: str) -> str:
-    """The step name of a point the construction adds itself (pole, n′, k′): apart from images."""
-    return f"{panel[0]}:({tag})"
-
-
 def line(b: "LinkageConstruction", panel: str, name: str, kernel: Any, inputs: tuple, text: str) -> str:
     """A construction line ("through b draw ⟂ BC"), drawn thin through the points it carries."""
     return b.g.add(f"{panel[0]}:{name}", "line", kernel, inputs, role="construction", text=text, panel=panel)
@@ -51,3 +49,6 @@ def direction(b: "LinkageConstruction", x: str, y: str) -> str:
     if not b.g.has(name):
         b.g.add(name, "scalar", unit, (a, c), role="hidden", text=f"direction {x}{y}", panel="mechanism")
     return name
+
+
+__all__ = ["direction", "image", "line", "own", "vector"]

@@ -28,8 +28,8 @@ import numpy as np
 
 from graphmech.errors import DegenerateConstruction
 from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, SliderInput
+from graphmech.methods.chords import frozen_array
 from graphmech.methods.graphical_differentiation import Differentiation, differentiate_cycle
-from graphmech.methods.graphical_integration import _frozen
 from graphmech.methods.polygons import LinkageConstruction, build_polygons
 
 __all__ = ["CycleDiagram", "FullCycle", "cycle_positions", "diagram_subjects", "evaluate_cycle", "sliders"]
@@ -173,8 +173,8 @@ class FullCycle:
 
 def _xy(values: dict[str, object], step: str, n: int) -> np.ndarray:
     x, y = values[step]  # type: ignore[misc]
-    return _frozen(np.column_stack([np.broadcast_to(np.asarray(x, dtype=float), (n,)),
-                                    np.broadcast_to(np.asarray(y, dtype=float), (n,))]))
+    return frozen_array(np.column_stack([np.broadcast_to(np.asarray(x, dtype=float), (n,)),
+                                         np.broadcast_to(np.asarray(y, dtype=float), (n,))]))
 
 
 def _unwrap_from_first(theta: np.ndarray, sense: float) -> np.ndarray:
@@ -281,7 +281,7 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
         mu_v = mu * w / (mu_phi * h1)
         adiff = differentiate_cycle(vdiff.mid_mm, vdiff.derivative_mm, period, h2)
         mu_a = mu_v * w / (mu_phi * h2)
-        out.append(CycleDiagram(subject, kind, _frozen(x), _frozen(s_mm), vdiff, adiff, mu, mu_v, mu_a, rise / mu))
+        out.append(CycleDiagram(subject, kind, frozen_array(x), frozen_array(s_mm), vdiff, adiff, mu, mu_v, mu_a, rise / mu))
     dense: dict[str, np.ndarray] = {}
     if paths:
         k = max(1, -(-PATH_POSITIONS // n))
@@ -296,5 +296,5 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
                 dense = {p: _xy(pb.values, b.mech[p], fine.size) for p in paths}
             else:  # a position between the N cannot be built: the path through the N only
                 dense = {p: mech[p] for p in paths}
-    return FullCycle(b, plan, _frozen(angles), mech, vel, acc, vals, tuple(out), mu_phi,
+    return FullCycle(b, plan, frozen_array(angles), mech, vel, acc, vals, tuple(out), mu_phi,
                      sense, dense, polygon_failures, conds)

@@ -21,13 +21,12 @@ Everything is vectorised: N may be thousands.
 """
 from __future__ import annotations
 
-import math  # noqa: F401  (the doctests use it)
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from graphmech.methods.graphical_integration import _frozen, divisions
+from graphmech.methods.chords import divisions, frozen_array
 
 __all__ = ["Differentiation", "derivative_scale", "differentiate_by_chords", "differentiate_cycle"]
 
@@ -71,6 +70,7 @@ class Differentiation:
 def derivative_scale(mu_x: float, mu_y: float, H_mm: float) -> float:
     """The scale of the derivative curve, μy/(μx·H) — the inverse of the integral's μy·μx·H.
 
+    >>> import math
     >>> round(derivative_scale(math.radians(2.0), 0.002, 20.0), 9)   # μφ = 2°/mm, μs = 2 mm/mm, H = 20 mm
     0.002864789
     """
@@ -115,7 +115,7 @@ def differentiate_by_chords(x_mm: ArrayLike, y_mm: ArrayLike, H_mm: float) -> Di
     x, y, H = divisions(x_mm, y_mm, H_mm)
     ray = H * np.diff(y) / np.diff(x)  # the ray from P ∥ the chord cuts the ordinate axis here
     mid = 0.5 * (x[:-1] + x[1:])
-    return Differentiation(_frozen(x), _frozen(y), H, (-H, 0.0), _frozen(mid), _frozen(ray))
+    return Differentiation(frozen_array(x), frozen_array(y), H, (-H, 0.0), frozen_array(mid), frozen_array(ray))
 
 
 def differentiate_cycle(x_mm: ArrayLike, y_mm: ArrayLike, period_mm: float, H_mm: float,

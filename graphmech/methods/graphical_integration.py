@@ -30,11 +30,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-
-def _frozen(a: np.ndarray) -> np.ndarray:
-    a = np.array(a, dtype=float)  # a copy the caller cannot change under us
-    a.setflags(write=False)
-    return a
+from graphmech.methods.chords import divisions, frozen_array
+from graphmech.methods.graphical_differentiation import differentiate_by_chords
 
 
 @dataclass(frozen=True, eq=False)
@@ -76,28 +73,6 @@ class Integration:
     def chords(self) -> np.ndarray:
         """The chords as an (N, 4) array of (x0, y0, x1, y1), mm."""
         return np.column_stack([self.x_mm[:-1], self.integral_mm[:-1], self.x_mm[1:], self.integral_mm[1:]])
-
-
-def divisions(x_mm: ArrayLike, y_mm: ArrayLike, H_mm: float) -> tuple[np.ndarray, np.ndarray, float]:
-    """The divisions, ordinates (mm) and pole distance of a construction by chords, checked.
-
-    Raises
-    ------
-    ValueError
-        Fewer than two divisions, arrays of different lengths, non-finite values, abscissae not
-        strictly increasing, or H not positive and finite.
-    """
-    x = np.asarray(x_mm, dtype=float)
-    y = np.asarray(y_mm, dtype=float)
-    if x.ndim != 1 or y.shape != x.shape or x.size < 2:
-        raise ValueError(f"x_mm and y_mm must be 1-D of the same length ≥ 2, got shapes {x.shape} and {y.shape}")
-    if not (np.isfinite(x).all() and np.isfinite(y).all()):
-        raise ValueError("the divisions and ordinates must be finite")
-    if not np.all(np.diff(x) > 0.0):
-        raise ValueError("the division abscissae must be strictly increasing")
-    if not (H_mm > 0.0 and math.isfinite(H_mm)):
-        raise ValueError(f"the pole distance H must be positive and finite, not {H_mm!r}")
-    return x, y, float(H_mm)
 
 
 def integral_scale(mu_x: float, mu_y: float, H_mm: float) -> float:
@@ -151,7 +126,7 @@ def integrate_by_chords(x_mm: ArrayLike, y_mm: ArrayLike, H_mm: float) -> Integr
     mean = 0.5 * (y[:-1] + y[1:])  # the step of equal area, projected on the ordinate axis
     rise = mean * np.diff(x) / H  # chord i ∥ ray P → (0, mean_i) over its interval
     integral = np.concatenate([[0.0], np.cumsum(rise)])
-    return Integration(_frozen(x), _frozen(y), _frozen(mean), H, (-H, 0.0), _frozen(integral))
+    return Integration(frozen_array(x), frozen_array(y), frozen_array(mean), H, (-H, 0.0), frozen_array(integral))
 
 
 def differentiate_by_ray(x_mm: float, y_end_mm: float, H_mm: float) -> float:
@@ -174,15 +149,13 @@ def differentiate_by_ray(x_mm: float, y_end_mm: float, H_mm: float) -> float:
     >>> differentiate_by_ray(160.0, -20.0, 40.0)   # a line falling 20 mm over 160 mm, H = 40 mm
     -5.0
     """
-    from graphmech.methods.graphical_differentiation import differentiate_by_chords  # the same ray
-
     if not (x_mm > 0.0 and math.isfinite(x_mm)):
         raise ValueError(f"the line's end abscissa must be positive and finite, not {x_mm!r}")
     if not (H_mm > 0.0 and math.isfinite(H_mm)):
         raise ValueError(f"the pole distance H must be positive and finite, not {H_mm!r}")
     if not math.isfinite(y_end_mm):
         raise ValueError(f"the line's end ordinate must be finite, not {y_end_mm!r}")
-    # a straight line is its own chord: the ray of its one interval
+    # a straight line is its own chord: the ray of its one interval, as differentiation by chords draws it
     return float(differentiate_by_chords([0.0, float(x_mm)], [0.0, float(y_end_mm)], float(H_mm)).derivative_mm[0])
 
 

@@ -85,7 +85,7 @@ class PolygonKinematics:
 def kinematics_from_construction(build: Any, values: dict[str, Any], valid: np.ndarray) -> PolygonKinematics:
     """Read positions, images and angular rates off an evaluated polygon construction.
 
-    ``build`` is a :class:`~graphmech.methods.polygons.LinkageConstruction`, ``values`` its
+    ``build`` is a :class:`~graphmech.methods.linkage_construction.LinkageConstruction`, ``values`` its
     (batch) step values, ``valid`` the positions that could be built. Drawn millimetres are
     multiplied by μ: the force analysis works in SI.
     """

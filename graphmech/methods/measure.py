@@ -10,10 +10,12 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from graphmech.geometry.kernels import cross
+from graphmech.methods.elements import direction
+from graphmech.methods.linkage_construction import ACCELERATION_POLE, VELOCITY_POLE
 from graphmech.methods.quantities import Quantity
 
 if TYPE_CHECKING:
-    from graphmech.methods.polygons import LinkageConstruction
+    from graphmech.methods.linkage_construction import LinkageConstruction
 
 
 def _add(b: "LinkageConstruction", name: str, unit: str, kernel: Any, inputs: tuple, exact: tuple,
@@ -44,8 +46,6 @@ def _segment(start: str, end: str, scale: float, name: str, b: "LinkageConstruct
 
 def omega(b: "LinkageConstruction", link: str, U: str, V: str) -> None:
     """ω of a link read off the polygon: ω = (UV × uv)/|UV|² · μv/μl (sense: uv turned about u)."""
-    from graphmech.methods.elements import direction
-
     mv, ml = b.scales["v"], b.mu_l
 
     def kern(ops: Any, d: tuple, iu: tuple, iv: tuple) -> tuple:
@@ -57,8 +57,6 @@ def omega(b: "LinkageConstruction", link: str, U: str, V: str) -> None:
 
 def alpha(b: "LinkageConstruction", link: str, U: str, V: str, n: str, end: str) -> None:
     """α of a link from its tangential component n→end: α = (UV × a^t)/|UV|² · μa/μl."""
-    from graphmech.methods.elements import direction
-
     ma, ml = b.scales["a"], b.mu_l
 
     def kern(ops: Any, d: tuple, s: tuple, e: tuple) -> tuple:
@@ -102,15 +100,11 @@ def _speed(b: "LinkageConstruction", x: str, img: str, pole: str, scale: float, 
 
 
 def point_speed(b: "LinkageConstruction", x: str) -> None:
-    from graphmech.methods.velocity import POLE
-
-    _speed(b, x, b.vel[x], POLE, b.scales["v"], "v", "m/s", "velocity")
+    _speed(b, x, b.vel[x], VELOCITY_POLE, b.scales["v"], "v", "m/s", "velocity")
 
 
 def point_acceleration(b: "LinkageConstruction", x: str) -> None:
-    from graphmech.methods.acceleration import POLE
-
-    _speed(b, x, b.acc[x], POLE, b.scales["a"], "a", "m/s²", "acceleration")
+    _speed(b, x, b.acc[x], ACCELERATION_POLE, b.scales["a"], "a", "m/s²", "acceleration")
 
 
 def relative(b: "LinkageConstruction", x: str, y: str) -> None:

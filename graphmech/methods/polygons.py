@@ -12,73 +12,21 @@ The construction is laid out the way the textbook does it, one figure after the 
 
 All drawing coordinates are millimetres. Every quantity a scene may ask for is a measurement
 step; :meth:`Construction.prune` later keeps only what is asked for.
+
+The construction itself, :class:`LinkageConstruction`, is defined in
+:mod:`graphmech.methods.linkage_construction` (the builders import it from there, not from
+here) and importable from here as before.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from typing import Any
 
-from graphmech.construction import Construction
 from graphmech.mechanisms.linkage import Crank, Linkage, RPP, RPR, RRP, RRR
-from graphmech.methods.quantities import Quantity
+from graphmech.methods import acceleration, diagram, measure, velocity
+from graphmech.methods.linkage_construction import LinkageConstruction
 
 PANELS = ("mechanism", "velocity", "acceleration")
-
-
-@dataclass
-class LinkageConstruction:
-    """A linkage's construction and what can be measured on it.
-
-    Attributes
-    ----------
-    g : Construction
-        The step graph (structure; evaluate a pruned plan of it).
-    param : str
-        The driver's position parameter: ``"phi"`` (crank angle, rad) or ``"s"`` (m).
-    scales : dict
-        μ in SI per mm: ``l``, ``v``, ``a``.
-    mech, vel, acc : dict
-        Point name → its step in the mechanism, velocity polygon, acceleration polygon.
-    quantities : dict
-        Quantity name → :class:`Quantity`.
-    """
-
-    linkage: Linkage
-    scales: dict[str, float]
-    g: Construction = field(default_factory=Construction)
-    param: str = "phi"
-    mech: dict[str, str] = field(default_factory=dict)
-    vel: dict[str, str] = field(default_factory=dict)
-    acc: dict[str, str] = field(default_factory=dict)
-    omega: dict[str, str] = field(default_factory=dict)  # link → measurement step (drawn, scale)
-    alpha: dict[str, str] = field(default_factory=dict)
-    slider_dir: dict[str, tuple[float, float]] = field(default_factory=dict)  # point → guide unit vector
-    quantities: dict[str, Quantity] = field(default_factory=dict)
-    link_points: dict[str, list[str]] = field(default_factory=dict)
-    translating: set[str] = field(default_factory=set)
-    coincident: list[tuple[str, str]] = field(default_factory=list)  # (moving, reference) pairs
-
-    origin: tuple[float, float] = (0.0, 0.0)  # m: the mechanism point drawn at (0, 0) mm
-
-    # ------------------------------------------------------------------ helpers
-    @property
-    def mu_l(self) -> float:
-        return self.scales["l"]
-
-    def to_drawing(self, xy: tuple[float, float]) -> tuple[float, float]:
-        """A point of the mechanism (m) on the kinematic diagram (mm at μl).
-
-        The drawing's origin is the first frame point: coordinates stay of the size of the
-        mechanism, so a linkage placed far from the scene's origin loses no digits.
-        """
-        return ((xy[0] - self.origin[0]) / self.mu_l, (xy[1] - self.origin[1]) / self.mu_l)
-
-    def quantity(self, q: Quantity) -> None:
-        self.quantities.setdefault(q.name, q)
-
-    def steps_of_panel(self, panel: str) -> list[str]:
-        """Every drawable step of a panel (what ``show`` asks for)."""
-        return [s.name for s in self.g.steps.values() if s.panel == panel and s.role != "hidden"]
 
 
 def build_polygons(linkage: Linkage, scales: dict[str, float]) -> LinkageConstruction:
@@ -91,8 +39,6 @@ def build_polygons(linkage: Linkage, scales: dict[str, float]) -> LinkageConstru
     scales : dict
         ``{"l": μl, "v": μv, "a": μa}`` in m/mm, (m/s)/mm, (m/s²)/mm.
     """
-    from graphmech.methods import acceleration, diagram, velocity
-
     b = LinkageConstruction(linkage, dict(scales))
     b.param = "phi" if isinstance(linkage.driver, Crank) else "s"
     b.g.param(b.param)
@@ -122,8 +68,6 @@ def build_polygons(linkage: Linkage, scales: dict[str, float]) -> LinkageConstru
 
 def add_point_quantities(b: LinkageConstruction) -> None:
     """v_X, a_X, relative v_XY, a_XY, l_XY and θ for every point and link."""
-    from graphmech.methods import measure
-
     for name in b.vel:
         measure.point_speed(b, name)
     for name in b.acc:

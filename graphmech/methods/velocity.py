@@ -16,12 +16,13 @@ from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
 from graphmech.methods import elements as E
 from graphmech.methods import measure
+from graphmech.methods.linkage_construction import VELOCITY_POLE
 
 if TYPE_CHECKING:
-    from graphmech.methods.polygons import LinkageConstruction
+    from graphmech.methods.linkage_construction import LinkageConstruction
 
 PANEL = "velocity"
-POLE = E.own(PANEL, "p")
+POLE = VELOCITY_POLE  # pole p, named in linkage_construction: measure reads it too
 
 
 def label(point: str) -> str:
