@@ -64,7 +64,8 @@ def closed_form_fourbar(phi: np.ndarray, a: float = 0.06, b: float = 0.12, c: fl
 
 def polygon_records(repeat: int = 7) -> list[dict[str, Any]]:
     """The four-bar's velocity and acceleration polygons at 1 and at 360 positions."""
-    from graphmech.problems.linkage.check import characteristic, exact_value
+    from graphmech.problems.linkage.sizes import characteristic
+    from graphmech.problems.linkage.check import exact_value
 
     lk = fourbar()
     b = build_polygons(lk, {"l": 0.002, "v": 0.01, "a": 0.1})

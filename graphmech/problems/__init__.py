@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 from graphmech.errors import SceneError
+from graphmech.problems.judging import refuse_non_finite
 
 Extra = tuple[tuple[str, float], ...]
 Footer = tuple[str, ...]
@@ -68,7 +69,7 @@ def _analysing(module: str, name: str) -> Callable[..., Any]:
 
     def call(*args: Any, **kwargs: Any) -> Any:
         an = analyse(*args, **kwargs)
-        _refuse_non_finite(an.rows)
+        refuse_non_finite(an.rows)
         return an
 
     return call
@@ -97,7 +98,7 @@ _judge_balancing = _judging("graphmech.problems.balancing.check", "judge_balanci
 
 
 def _page(scene: Any) -> tuple[float, float]:
-    from graphmech.problems.linkage.check import page_size
+    from graphmech.problems.reader import page_size
 
     return page_size(scene)
 
@@ -106,7 +107,7 @@ def _page(scene: Any) -> tuple[float, float]:
 
 
 def _linkage_sheet(scene: Any, footer: Footer, caption: str = "") -> tuple[Any, list[str]]:
-    from graphmech.problems.linkage.check import position_text
+    from graphmech.problems.linkage.sizes import position_text
     from graphmech.problems.linkage.figures import linkage_sheet
     from graphmech.methods.polygons import PANELS
 
@@ -295,22 +296,6 @@ def check(scene: Any, extra: Extra = ()) -> tuple[Any, list[Any], dict[str, Any]
     kind = kind_of(scene)
     an = kind.analyse(scene, tuple(extra))
     return an, kind.judge(an, tuple(extra)), kind.extras(an), kind.lines(an)
-
-
-def _refuse_non_finite(rows: list[Any]) -> None:
-    """A value that left double precision (J_F for δ = 5e-324) is refused in words, whatever the
-    kind: never an inf or NaN in the table or the JSON."""
-    import math
-
-    from graphmech.problems.linkage.check import OUT_OF_RANGE
-    from graphmech.errors import DegenerateConstruction
-
-    for r in rows:
-        if not all(math.isfinite(v) for v in (r.graphical, r.exact)):
-            raise DegenerateConstruction(r.name, OUT_OF_RANGE)
-        if r.error_estimate is not None and not math.isfinite(r.error_estimate):
-            raise DegenerateConstruction(r.name, "its error estimate left double precision: the same method "
-                                                 "at more positions or divisions breaks down")
 
 
 def sheet(scene: Any, footer: Footer = ()) -> tuple[Any, list[str]]:

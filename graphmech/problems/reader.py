@@ -1001,3 +1001,9 @@ def pole_distances(r: Reader, count: int = 1) -> tuple[float, ...] | None:
                            "(closer, the rays cannot be drawn; farther, the pole leaves the page)")
             return None
     return tuple(xs)
+
+
+def page_size(scene: Any) -> tuple[float, float]:
+    """The scene's sheet, (width, height) in mm."""
+    size = getattr(scene.page, "size", (297.0, 210.0))
+    return PAPER[size] if isinstance(size, str) else (float(size[0]), float(size[1]))

@@ -38,6 +38,7 @@ from typing import Sequence
 
 import numpy as np
 
+from graphmech.drawing.lettering import text_box_size
 from graphmech.drawing.primitives import XY, Label
 from graphmech.render.style import DEFAULT, Style
 
@@ -76,15 +77,6 @@ class PlacedLabel:
     label: Label
     center: XY
     box: Box
-
-
-def text_box_size(text: str, size: float) -> tuple[float, float]:
-    """Estimated width and height (mm) of a line of text at font size ``size`` mm.
-
-    >>> text_box_size("ab", 3.5)
-    (4.2, 3.5)
-    """
-    return (round(0.6 * size * max(len(text), 1), 12), float(size))
 
 
 def _support(d: np.ndarray, hw: float, hh: float) -> np.ndarray:

@@ -136,15 +136,3 @@ class Style:
 
 #: The textbook's style: links 0.7 mm, construction 0.18 mm grey, results 0.6 mm, serif italics.
 DEFAULT = Style()
-
-
-_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-
-
-def subscript(digits: str) -> str:
-    """Digits as the book sets them after a symbol: ``"φ" + subscript("1")`` → ``φ₁``.
-
-    >>> subscript("c2")
-    'c₂'
-    """
-    return digits.translate(_SUBSCRIPT)

@@ -42,7 +42,8 @@ def test_batch_equals_single_position_evaluation():
 
 
 def test_graphical_equals_exact_over_a_cycle():
-    from graphmech.problems.linkage.check import characteristic, exact_value
+    from graphmech.problems.linkage.sizes import characteristic
+    from graphmech.problems.linkage.check import exact_value
 
     lk = fourbar()
     b = build_polygons(lk, SCALES)

@@ -5,7 +5,9 @@ import math
 
 import pytest
 
-from graphmech.problems.linkage.check import analyse, page_size, position_text
+from graphmech.problems.linkage.check import analyse
+from graphmech.problems.reader import page_size
+from graphmech.problems.linkage.sizes import position_text
 from graphmech.problems.linkage.figures import display, linkage_sheet
 from graphmech.drawing.primitives import ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Segment, Slider
 from graphmech.render.recording import RecordingBackend

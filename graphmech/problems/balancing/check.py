@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from graphmech.problems.linkage.check import Row, Verdict, close_names, judge_value, measured_entries
+from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import SceneError
 from graphmech.exact import balancing as ex
 from graphmech.methods import balancing as gm

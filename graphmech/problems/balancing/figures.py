@@ -18,7 +18,7 @@ from typing import Any, Sequence
 
 from graphmech.methods.balancing import Correction, degrees_0_360
 from graphmech.drawing.primitives import Arrow, Circle, Label, Panel, Primitive, Segment, Sheet
-from graphmech.render.style import subscript
+from graphmech.drawing.lettering import subscript
 from graphmech.scales import format_scale, round_scale
 
 #: The rotor's end view radius on paper, about, mm.

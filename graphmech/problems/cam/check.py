@@ -15,7 +15,8 @@ from typing import Any
 import numpy as np
 
 from graphmech.accuracy import DISCRETISATION, READING, estimate_from_three, relative
-from graphmech.problems.linkage.check import Row, Verdict, close_names, in_double_precision, measured_entries, page_size
+from graphmech.problems.judging import Row, Verdict, close_names, in_double_precision, measured_entries
+from graphmech.problems.reader import page_size
 from graphmech.errors import SceneError
 from graphmech.exact import cam as exact_cam
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower

@@ -31,7 +31,7 @@ import numpy as np
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
 from graphmech.methods.cam_inversion import DrawnProfile, divisions
-from graphmech.render.labels import text_box_size
+from graphmech.drawing.lettering import text_box_size
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
                                          Polyline, Primitive, Segment, Sheet, angle_arc)
 from graphmech.scales import format_scale

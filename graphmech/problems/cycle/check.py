@@ -34,8 +34,10 @@ from typing import Any
 import numpy as np
 
 from graphmech.accuracy import DISCRETISATION, extrapolated, relative
-from graphmech.problems.linkage.check import (Row, Verdict, analyse, characteristic, in_double_precision, judge, measured_entries,
-                             mechanism_size, page_size)
+from graphmech.problems.judging import Row, Verdict, in_double_precision, measured_entries
+from graphmech.problems.linkage.check import analyse, judge
+from graphmech.problems.linkage.sizes import characteristic, mechanism_size
+from graphmech.problems.reader import page_size
 from graphmech.errors import SceneError
 from graphmech.problems.cycle.scene import MAX_POLE_MM, MIN_POLE_MM
 from graphmech.exact import characteristics as exact_ch
@@ -237,7 +239,7 @@ def _analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...]) ->
 def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
     """The polygons' warnings name a cycle's positions by number and angle ("position 3 (φ1 = 60°)"),
     and leave out what the cycle has said already (a polygon that cannot be drawn)."""
-    from graphmech.problems.linkage.check import position_text
+    from graphmech.problems.linkage.sizes import position_text
 
     if an.scene.cycle.cycle is None:
         return list(warnings)
@@ -284,7 +286,7 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
         raise SceneError([(where, f"the extreme positions' drawing runs {extent:.3g} mm across at μl = {mu_l:g} m/mm: "
                                   f"more than a page can show (at most {DRAWN_SIZE_RANGE_MM[1]:g} mm); {fix}")],
                          an.scene.source)
-    from graphmech.problems.linkage.check import offset_warning, refuse_far_from_origin
+    from graphmech.problems.linkage.sizes import offset_warning, refuse_far_from_origin
 
     size = mechanism_size(linkage)
     refuse_far_from_origin(an.scene, linkage, size)

@@ -34,7 +34,7 @@ from graphmech.problems.flywheel.figures import (AXIS_OVERRUN, NUMBER_SIZE, _mov
                                                 numbers_every)
 from graphmech.drawing.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
                                          Polyline, Primitive, Segment, Sheet, Slider, angle_arc)
-from graphmech.render.style import subscript
+from graphmech.drawing.lettering import subscript
 from graphmech.scales import format_scale
 
 __all__ = ["cycle_sheet", "cycle_items", "polygons_items", "diagram_items", "characteristics_items", "MOST_DRAWN"]

@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from graphmech.problems.linkage.check import Row, Verdict, close_names, judge_value, measured_entries
+from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact import efficiency as ex
 from graphmech.methods import efficiency as gm
@@ -335,7 +335,7 @@ MAX_CHAIN_BOXES = 120
 def _chain_fits(an: EfficiencyAnalysis, page: tuple[float, float], sheet: Any = None) -> None:
     """Refuse a chain whose diagram the page cannot show: too many machines to label legibly, or
     (given the sheet) boxes that run off the page — before any label is placed."""
-    from graphmech.render.labels import text_box_size
+    from graphmech.drawing.lettering import text_box_size
     from graphmech.render.layout import layout_sheet
     from graphmech.drawing.primitives import Label
 

@@ -24,7 +24,7 @@ from typing import Any, Sequence
 from graphmech.methods.efficiency import ForcePolygon, Stroke
 from graphmech.drawing.primitives import (XY, Arrow, GuideLine, Label, Panel, Polyline, Primitive, Segment,
                                          Sheet, Slider)
-from graphmech.render.style import subscript
+from graphmech.drawing.lettering import subscript
 from graphmech.scales import format_scale
 
 #: Length of a force arrow in a diagram (directions only), mm.

@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from graphmech.accuracy import DISCRETISATION, READING, estimate_from_three, relative
-from graphmech.problems.linkage.check import Row, Verdict, close_names, in_double_precision, measured_entries
+from graphmech.problems.judging import Row, Verdict, close_names, in_double_precision, measured_entries
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.mechanisms.machine import Machine
 from graphmech.tolerances import EPS
@@ -254,7 +254,7 @@ def _reduce(an: FlywheelAnalysis) -> None:
         an.warnings.append(f"flywheel.load[{k}]: a step of its table falls on position{'s' if len(at) > 1 else ''} "
                            f"{where}: Mп there is the mean of both sides of the step")
     if not (np.isfinite(an.reduction.J).all() and np.isfinite(an.reduction.M).all()):  # ω1 of 1e-300 rad/s
-        from graphmech.problems.linkage.check import OUT_OF_RANGE
+        from graphmech.problems.judging import OUT_OF_RANGE
 
         raise DegenerateConstruction("the reduction to the crank", OUT_OF_RANGE)
     bad = np.flatnonzero(~an.reduction.valid)

@@ -42,7 +42,7 @@ from typing import Sequence
 import numpy as np
 
 from graphmech.methods.flywheel import FlywheelDesign
-from graphmech.render.labels import text_box_size
+from graphmech.drawing.lettering import text_box_size
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, Circle, Label, Panel, Polyline, Primitive, Role,
                                          Segment, Sheet)
 from graphmech.render.style import DEFAULT

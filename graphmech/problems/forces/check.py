@@ -21,7 +21,10 @@ from typing import Any
 import numpy as np
 
 from graphmech.accuracy import DISCRETISATION, relative
-from graphmech.problems.linkage.check import Analysis, Row, Verdict, analyse, judge, page_size, position_text, split_name
+from graphmech.problems.linkage.check import Analysis, analyse, judge
+from graphmech.problems.judging import Row, Verdict, split_name
+from graphmech.problems.reader import page_size
+from graphmech.problems.linkage.sizes import position_text
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.kinetostatics import ExactForces, solve_forces
 from graphmech.methods.kinetostatics import (

@@ -135,7 +135,8 @@ def _carrier(linkage: Linkage, ic: InstantCentres, x: str) -> str | None:
 
 def add_rows(an: Any) -> ICAnalysis:
     """Compute the centres at every constructed position; append the asked rows and warnings to ``an``."""
-    from graphmech.problems.linkage.check import measured_entries, position_text, split_name
+    from graphmech.problems.judging import measured_entries, split_name
+    from graphmech.problems.linkage.sizes import position_text
 
     scene, linkage = an.scene, an.build.linkage
     ica = ICAnalysis([centres_at(an, s) if s is not None else None for s in an.solutions])
@@ -171,7 +172,8 @@ def add_rows(an: Any) -> ICAnalysis:
 def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows: list[Any],
              problems: list[tuple[str, str]], links: tuple[str, ...], names: set[str]) -> None:
     """Append the rows of one instant-centre name (at one position or at every position)."""
-    from graphmech.problems.linkage.check import Row, characteristic, position_text
+    from graphmech.problems.judging import Row
+    from graphmech.problems.linkage.sizes import characteristic, position_text
 
     build, linkage = an.build, an.build.linkage
     multi = len(an.labels) > 1
@@ -372,7 +374,8 @@ def judge(an: Any, precision_mm: float) -> tuple[list[Any], list[tuple[str, str]
     numerator) is good to ``precision_mm × μ``; a crank angle to the angle the precision
     subtends at the crank's length; a direction to the angle it subtends over the mechanism.
     """
-    from graphmech.problems.linkage.check import Verdict, characteristic, measured_entries, split_name
+    from graphmech.problems.judging import Verdict, measured_entries, split_name
+    from graphmech.problems.linkage.sizes import characteristic
 
     ica: ICAnalysis | None = an.instant_centres
     out, problems = [], []
@@ -468,7 +471,7 @@ def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str])
 
 def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
     """Crank angles at which v_X = 0: by the centres (sampled, refined by Brent), and exactly."""
-    from graphmech.problems.linkage.check import Row
+    from graphmech.problems.judging import Row
 
     linkage = an.build.linkage
     if not isinstance(linkage.driver, Crank):

@@ -18,7 +18,7 @@ from typing import Any, Sequence
 from graphmech.problems.linkage.figures import mechanism_items
 from graphmech.methods.instant_centres import Centre, InstantCentres, centre_name, direct_centres, pair
 from graphmech.drawing.primitives import ArcArrow, Arrow, Circle, Label, Panel, Primitive, Segment
-from graphmech.render.style import subscript
+from graphmech.drawing.lettering import subscript
 from graphmech.scales import format_scale, round_scale
 
 #: Radius of the polygon of links, mm.
@@ -192,7 +192,7 @@ def circle_panel(name: str, ic: InstantCentres, row: int | None = None) -> Panel
 
 def ic_panels(an: Any, page: tuple[float, float], first_row: int = 0) -> list[Panel]:
     """The instant-centre panels of every constructed position of a checked linkage scene."""
-    from graphmech.problems.linkage.check import position_text
+    from graphmech.problems.linkage.sizes import position_text
     from graphmech.problems.linkage.figures import _guide_spans
     from graphmech.methods.instant_centres import (common_link, least_speed_on_line, point_names, positions_mm,
                                                    split_line)

@@ -8,22 +8,36 @@ warnings.
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, field, replace
-from collections.abc import Iterator
-from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
 
-from graphmech.accuracy import CONSTRUCTION
 from graphmech import tolerances as T
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
-from graphmech.mechanisms.linkage import Crank, Linkage
+from graphmech.mechanisms.linkage import Linkage
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
-from graphmech.render.style import subscript
-from graphmech.scales import PAPER, drawn_size_problem, format_scale, round_scale
+from graphmech.scales import drawn_size_problem, format_scale, round_scale
+from graphmech.problems.judging import (
+    OUT_OF_RANGE,
+    Row,
+    SEGMENT,
+    Verdict,
+    close_names,
+    in_double_precision,
+    is_segment,
+    measured_entries,
+    split_name,
+)
+from graphmech.problems.linkage.sizes import (
+    characteristic,
+    mechanism_size,
+    offset_warning,
+    position_text,
+    refuse_far_from_origin,
+)
+from graphmech.problems.reader import page_size
 
 SCALE_KEYS = {"mechanism": "l", "velocity": "v", "acceleration": "a"}
 _PANEL_WORDS = {"mechanism": "the mechanism", "velocity": "the velocity polygon", "acceleration": "the acceleration polygon"}
@@ -38,60 +52,6 @@ def rows_that_fit(page: tuple[float, float]) -> int:
 
 
 # ---------------------------------------------------------------------------- results
-
-
-@dataclass(frozen=True)
-class Row:
-    """One line of the check table."""
-
-    name: str
-    unit: str
-    drawn_mm: float | None
-    scale: float
-    graphical: float
-    exact: float
-    rel_error: float
-    ill_conditioned: bool = False
-    # How accurate the method says it is (graphmech.accuracy): a construction is exact but for
-    # round-off; a discretised or read-off value carries its own relative error estimate and the
-    # basis it was found on ("12 positions", "15° divisions").
-    error_source: str = CONSTRUCTION
-    error_estimate: float | None = None
-    basis: str = ""
-
-    def as_dict(self) -> dict[str, Any]:
-        return {"name": self.name, "unit": self.unit, "drawn_mm": self.drawn_mm, "scale": self.scale,
-                "graphical": self.graphical, "exact": self.exact, "rel_error": self.rel_error,
-                "ill_conditioned": self.ill_conditioned, "error_source": self.error_source,
-                "error_estimate": self.error_estimate, "basis": self.basis}
-
-    def estimated(self, source: str, estimate: float, basis: str) -> "Row":
-        """This row as a discretised or read-off value with its own error estimate."""
-        return replace(self, error_source=source, error_estimate=float(estimate), basis=basis)
-
-
-@dataclass(frozen=True)
-class Verdict:
-    """A hand measurement judged against the exact value, within the drawing precision."""
-
-    name: str
-    measured: float
-    expected: float
-    tolerance: float
-    ok: bool
-    unit: str
-
-    def as_dict(self) -> dict[str, Any]:
-        return {"name": self.name, "measured": self.measured, "expected": self.expected,
-                "tolerance": self.tolerance, "ok": self.ok, "unit": self.unit}
-
-
-def judge_value(name: str, value: float, expected: float, drawn: float | None, scale: float,
-                precision_mm: float, unit: str) -> Verdict:
-    """A measured value against the expected one: a length read off the drawing within the
-    drawing precision × its μ, any other value (a computed one) within 0.1 %."""
-    tol = precision_mm * abs(scale) if drawn is not None else max(abs(expected) * 1e-3, T.EPS)
-    return Verdict(name, value, expected, tol, abs(value - expected) <= tol + 1e-12 * abs(expected), unit)
 
 
 @dataclass
@@ -123,18 +83,6 @@ class Analysis:
 # ---------------------------------------------------------------------------- names
 
 
-def position_text(build: LinkageConstruction, label: str) -> str:
-    driver = build.linkage.driver
-    sub = subscript(driver.link)
-    return f"φ{sub} = {label}°" if isinstance(driver, Crank) else f"s{sub} = {label}"
-
-
-def split_name(name: str) -> tuple[str, str | None]:
-    """``"v_C@50"`` → ``("v_C", "50")``."""
-    base, _, at = name.partition("@")
-    return base, (at or None)
-
-
 def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) -> list[tuple[str, str, int]]:
     """(display name, quantity name, position index) for every ``find`` entry; bad names → SceneError."""
     problems = []
@@ -164,19 +112,7 @@ def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) 
     return out
 
 
-def close_names(name: str, known: Any) -> str:
-    import difflib
-
-    m = difflib.get_close_matches(name, sorted(known), n=3)
-    return f"; did you mean {', '.join(m)}?" if m else ""
-
-
 # ---------------------------------------------------------------------------- scales
-
-
-def page_size(scene: Any) -> tuple[float, float]:
-    size = getattr(scene.page, "size", (297.0, 210.0))
-    return PAPER[size] if isinstance(size, str) else (float(size[0]), float(size[1]))
 
 
 def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[dict[str, float], set[str]]:
@@ -238,17 +174,6 @@ def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> A
     """
     with in_double_precision("the construction"):
         return _analyse(scene, extra_measured)
-
-
-@contextmanager
-def in_double_precision(step: str) -> Iterator[None]:
-    """Run an analysis whose numbers may leave double precision (a speed of 1e300, a scale of
-    5e-324): numpy stays quiet, and an overflow or a division by zero is said in one line."""
-    try:
-        with np.errstate(all="ignore"):
-            yield
-    except (OverflowError, ZeroDivisionError, FloatingPointError):
-        raise DegenerateConstruction(step, OUT_OF_RANGE) from None
 
 
 def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
@@ -319,57 +244,6 @@ def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analy
     return an
 
 
-def mechanism_size(linkage: Linkage, kin: Kinematics | None = None) -> float:
-    """A length typical of the mechanism: the diagonal of the box its points sweep (m).
-
-    Falls back on the links' and frame's own sizes where no solution is at hand.
-    """
-    if kin is not None and kin.valid.any():
-        pts = np.concatenate([p[kin.valid] for p in kin.point.values()])
-        size = float(np.hypot(*(pts.max(axis=0) - pts.min(axis=0))))
-        if size > 0.0:
-            return size
-    sizes = [abs(v) for y in linkage.dyads for v in (getattr(y, "lengths", None) or (getattr(y, "length", 0.0),))]
-    frame = list(linkage.frame_points.values())
-    sizes += [math.dist(a, b) for a in frame for b in frame]
-    if isinstance(linkage.driver, Crank):
-        sizes.append(linkage.driver.length)
-    return max(sizes + [0.0]) or 1.0
-
-
-OUT_OF_RANGE = "numbers out of the range of double precision (the scene's sizes or speeds are too extreme)"
-
-
-def offset_ratio(linkage: Linkage, size: float) -> float:
-    """How many times its own size the mechanism's given coordinates lie from the origin."""
-    coords = [abs(c) for p in linkage.frame_points.values() for c in p]
-    d = linkage.driver
-    coords += [abs(c) for g in [getattr(d, "guide", None)] + [getattr(y, "guide", None) for y in linkage.dyads]
-               if g is not None for c in g.through]
-    return max(coords + [0.0]) / size
-
-
-def refuse_far_from_origin(scene: Any, linkage: Linkage, size: float) -> None:
-    """Refuse a mechanism so far from the origin that its coordinates keep no digit of its
-    geometry (a guide through x = 1e300 m): nothing can be drawn or solved there (the friction
-    iteration of a force scene ran for minutes on it)."""
-    ratio = offset_ratio(linkage, size)
-    if T.EPS * ratio > 0.1:
-        raise SceneError([("frame", f"the mechanism lies {ratio:.2g} times its own size from the origin: its "
-                                    "coordinates keep no digit of its geometry; move the origin to a frame pivot")],
-                         scene.source)
-
-
-def offset_warning(linkage: Linkage, size: float) -> str:
-    """Coordinates far from the origin, compared with the mechanism's size, carry few digits of it."""
-    ratio = offset_ratio(linkage, size)
-    if T.COND_SAFETY * T.EPS * ratio <= T.REL_AGREEMENT:
-        return ""
-    return (f"the mechanism lies {ratio:.2g} times its own size from the origin: its coordinates keep "
-            f"only about {max(0.0, -math.log10(T.EPS * ratio)):.0f} significant digits of its geometry, "
-            "so no value can be checked to 1e-9; move the origin to a frame pivot")
-
-
 def _finite(values: Any) -> bool:
     """Whether every number in a solution's values is finite."""
     for v in values.values():
@@ -377,26 +251,6 @@ def _finite(values: Any) -> bool:
             if isinstance(x, float) and not math.isfinite(x):
                 return False
     return True
-
-
-def characteristic(linkage: Linkage, unit: str, size: float | None = None) -> float:
-    """The size of a quantity of this unit in this linkage (ω1·l_AB for velocities, …).
-
-    The relative error divides by max(|exact|, this), so a zero exact value does not blow it
-    up. ``size`` is the mechanism's typical length (:func:`mechanism_size`).
-    """
-    L = size if size is not None else mechanism_size(linkage)
-    d = linkage.driver
-    if isinstance(d, Crank):
-        w = abs(d.omega) + math.sqrt(abs(d.epsilon))
-        alpha = d.omega ** 2 + abs(d.epsilon)
-        v, a = w * d.length, alpha * d.length
-    else:
-        v = abs(d.velocity) + math.sqrt(abs(d.acceleration) * L)
-        a = abs(d.acceleration) + d.velocity ** 2 / L
-        w, alpha = v / L, a / L
-    chars = {"m/s": v, "m/s²": a, "rad/s": w, "rad/s²": alpha, "m": L, "deg": 360.0}
-    return max(chars.get(unit, 1.0), 1e-300)
 
 
 def _row(an: Analysis, display: str, qname: str, i: int) -> Row:
@@ -508,14 +362,6 @@ def _conditioning_warnings(an: Analysis, quantities: list[str]) -> list[str]:
 
 # ---------------------------------------------------------------------------- hand measurements
 
-SEGMENT = re.compile(r"[a-z]\d*['′]*")
-
-
-def is_segment(name: str) -> bool:
-    """``pc``, ``p'c'``, ``n2'c'``: a drawn segment named by its end labels."""
-    tokens = SEGMENT.findall(name)
-    return "_" not in name and len(tokens) == 2 and "".join(tokens) == name
-
 
 def _measured_quantities(entries: list[tuple[str, str, float]], build: LinkageConstruction,
                          labels: tuple[str, ...]) -> list[str]:
@@ -527,11 +373,6 @@ def _measured_quantities(entries: list[tuple[str, str, float]], build: LinkageCo
             continue  # reported by judge()
         out.append(q)
     return out
-
-
-def measured_entries(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[tuple[str, str, float]]:
-    """(key path for messages, name, value) of the scene's [measured] table and the command line's."""
-    return [(f"measured.{n}", n, v) for n, v in scene.measured] + [(f"--measured {n}", n, v) for n, v in extra]
 
 
 def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> tuple[str, int | None, bool]:

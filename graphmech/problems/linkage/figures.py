@@ -15,7 +15,7 @@ from typing import Any, Sequence
 from graphmech.mechanisms.linkage import Crank, Linkage, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
 from graphmech.drawing.primitives import (ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Primitive,
                                          Segment, Sheet, Slider)
-from graphmech.render.style import subscript
+from graphmech.drawing.lettering import subscript
 from graphmech.scales import format_scale
 
 TITLES = {"mechanism": "Kinematic diagram", "velocity": "Velocity polygon", "acceleration": "Acceleration polygon"}

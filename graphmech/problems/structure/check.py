@@ -77,7 +77,7 @@ def formula_text(n: int, pl: int, ph: int, p_redundant: int, F_local: int, F: in
 
 def analyse_structure(scene: Any) -> StructureAnalysis:
     """Count, rank and decompose what the scene asks for."""
-    from graphmech.problems.linkage.check import Row
+    from graphmech.problems.judging import Row
 
     ss = scene.structure
     an = StructureAnalysis(scene, None, None, scales=dict(scene.scales))
@@ -142,7 +142,7 @@ def judge_structure(an: StructureAnalysis, extra: tuple[tuple[str, float], ...] 
     SceneError
         For a name that is not a count of this scene (or cannot be found without coordinates).
     """
-    from graphmech.problems.linkage.check import Verdict
+    from graphmech.problems.judging import Verdict
     from graphmech.errors import SceneError
 
     doc = an.summary()

@@ -1,0 +1,129 @@
+"""Judging what a construction gives: the rows of a check table, the verdicts on a user's own
+measurements, and the rules every kind shares (a hand measurement's tolerance, numbers that leave
+double precision, names with a position ``v_C@50``).
+
+A row is ``drawn length × μ = graphical value`` against the exact value from the independent
+solution, with the relative error and how accurate the method says it is
+(:mod:`graphmech.accuracy`); a verdict is a measured value against the expected one, within the
+drawing precision × μ for a length read off the drawing.
+"""
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from graphmech import tolerances as T
+from graphmech.accuracy import CONSTRUCTION
+from graphmech.errors import DegenerateConstruction
+
+@dataclass(frozen=True)
+class Row:
+    """One line of the check table."""
+
+    name: str
+    unit: str
+    drawn_mm: float | None
+    scale: float
+    graphical: float
+    exact: float
+    rel_error: float
+    ill_conditioned: bool = False
+    # How accurate the method says it is (graphmech.accuracy): a construction is exact but for
+    # round-off; a discretised or read-off value carries its own relative error estimate and the
+    # basis it was found on ("12 positions", "15° divisions").
+    error_source: str = CONSTRUCTION
+    error_estimate: float | None = None
+    basis: str = ""
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"name": self.name, "unit": self.unit, "drawn_mm": self.drawn_mm, "scale": self.scale,
+                "graphical": self.graphical, "exact": self.exact, "rel_error": self.rel_error,
+                "ill_conditioned": self.ill_conditioned, "error_source": self.error_source,
+                "error_estimate": self.error_estimate, "basis": self.basis}
+
+    def estimated(self, source: str, estimate: float, basis: str) -> "Row":
+        """This row as a discretised or read-off value with its own error estimate."""
+        return replace(self, error_source=source, error_estimate=float(estimate), basis=basis)
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """A hand measurement judged against the exact value, within the drawing precision."""
+
+    name: str
+    measured: float
+    expected: float
+    tolerance: float
+    ok: bool
+    unit: str
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"name": self.name, "measured": self.measured, "expected": self.expected,
+                "tolerance": self.tolerance, "ok": self.ok, "unit": self.unit}
+
+
+def judge_value(name: str, value: float, expected: float, drawn: float | None, scale: float,
+                precision_mm: float, unit: str) -> Verdict:
+    """A measured value against the expected one: a length read off the drawing within the
+    drawing precision × its μ, any other value (a computed one) within 0.1 %."""
+    tol = precision_mm * abs(scale) if drawn is not None else max(abs(expected) * 1e-3, T.EPS)
+    return Verdict(name, value, expected, tol, abs(value - expected) <= tol + 1e-12 * abs(expected), unit)
+
+
+def split_name(name: str) -> tuple[str, str | None]:
+    """``"v_C@50"`` → ``("v_C", "50")``."""
+    base, _, at = name.partition("@")
+    return base, (at or None)
+
+
+def close_names(name: str, known: Any) -> str:
+    import difflib
+
+    m = difflib.get_close_matches(name, sorted(known), n=3)
+    return f"; did you mean {', '.join(m)}?" if m else ""
+
+
+@contextmanager
+def in_double_precision(step: str) -> Iterator[None]:
+    """Run an analysis whose numbers may leave double precision (a speed of 1e300, a scale of
+    5e-324): numpy stays quiet, and an overflow or a division by zero is said in one line."""
+    try:
+        with np.errstate(all="ignore"):
+            yield
+    except (OverflowError, ZeroDivisionError, FloatingPointError):
+        raise DegenerateConstruction(step, OUT_OF_RANGE) from None
+
+
+#: The reason given when a number leaves double precision.
+OUT_OF_RANGE = "numbers out of the range of double precision (the scene's sizes or speeds are too extreme)"
+
+
+SEGMENT = re.compile(r"[a-z]\d*['′]*")
+
+
+def is_segment(name: str) -> bool:
+    """``pc``, ``p'c'``, ``n2'c'``: a drawn segment named by its end labels."""
+    tokens = SEGMENT.findall(name)
+    return "_" not in name and len(tokens) == 2 and "".join(tokens) == name
+
+
+def measured_entries(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[tuple[str, str, float]]:
+    """(key path for messages, name, value) of the scene's [measured] table and the command line's."""
+    return [(f"measured.{n}", n, v) for n, v in scene.measured] + [(f"--measured {n}", n, v) for n, v in extra]
+
+
+def refuse_non_finite(rows: list[Any]) -> None:
+    """A value that left double precision (J_F for δ = 5e-324) is refused in words, whatever the
+    kind: never an inf or NaN in the table or the JSON."""
+    for r in rows:
+        if not all(math.isfinite(v) for v in (r.graphical, r.exact)):
+            raise DegenerateConstruction(r.name, OUT_OF_RANGE)
+        if r.error_estimate is not None and not math.isfinite(r.error_estimate):
+            raise DegenerateConstruction(r.name, "its error estimate left double precision: the same method "
+                                                 "at more positions or divisions breaks down")
