@@ -20,6 +20,9 @@ on N, 2N and 4N.
 from __future__ import annotations
 
 import math
+from typing import Any
+
+import numpy as np
 
 CONSTRUCTION, DISCRETISATION, READING = "construction", "discretisation", "reading"
 SOURCES = (CONSTRUCTION, DISCRETISATION, READING)
@@ -63,3 +66,22 @@ def relative(abs_error: float, denominator: float) -> float:
     if not math.isfinite(abs_error):
         return math.inf
     return abs_error / denominator if denominator > 0.0 else abs_error
+
+
+def convergence_order(records: list[dict[str, Any]], key: str = "max_rel_error") -> dict[str, Any]:
+    """Order of convergence of ``key`` over records of one case: −slope of log error against log n.
+
+    ``overall`` is the least-squares slope over all the records; ``asymptotic`` the least-squares
+    slope over the leading run where each doubling-or-more of n still divides the error by more
+    than 2^1.5 (pairwise order ≥ 1.5), with that run's n range — where the error stops falling
+    (a floor) is where the run ends.
+    """
+    rs = sorted(records, key=lambda r: r["n"])
+    n = np.log([r["n"] for r in rs])
+    e = np.log([max(r[key], 1e-300) for r in rs])
+    overall = -float(np.polyfit(n, e, 1)[0])
+    end = 1
+    while end < len(rs) and -(e[end] - e[end - 1]) / (n[end] - n[end - 1]) >= 1.5:
+        end += 1
+    asym = -float(np.polyfit(n[:end], e[:end], 1)[0]) if end >= 2 else math.nan
+    return {"overall": overall, "asymptotic": asym, "n_from": rs[0]["n"], "n_to": rs[end - 1]["n"]}

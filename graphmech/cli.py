@@ -8,7 +8,6 @@ untouched.
 from __future__ import annotations
 
 import argparse
-import hashlib
 import json
 import math
 import os
@@ -95,25 +94,9 @@ def _file_name(args: argparse.Namespace) -> str | None:
 # ---------------------------------------------------------------------------- render
 
 
-def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
-    """The SVG text of a scene and its warnings."""
-    import graphmech
-    from graphmech.problems import sheet
-    from graphmech.render.svg import render_svg
-    from graphmech.scene import load_scene
-
-    scene = load_scene(path)
-    drawing, warnings = sheet(scene, (f"graphmech {graphmech.__version__}",))
-    warnings = list(warnings)
-    return render_svg(drawing, _id_prefix(path), on_warning=warnings.append), warnings
-
-
-def _id_prefix(path: str | os.PathLike[str]) -> str:
-    """Element ids start with a hash of the scene, so two figures inline on one page don't clash."""
-    return "g" + hashlib.sha256(Path(path).read_bytes()).hexdigest()[:8]
-
-
 def _render(args: argparse.Namespace) -> int:
+    from graphmech.scene import render_scene
+
     if args.output and len(args.scenes) > 1:
         say("graphmech: -o takes one scene; use -d DIR for several")
         return EXIT_BAD_INPUT

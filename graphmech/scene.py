@@ -19,6 +19,7 @@ The format, with an example of every feature, is ``docs/scene-format.md``.
 
 from __future__ import annotations
 
+import hashlib
 import os
 import re
 import tomllib
@@ -26,8 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from graphmech.errors import SceneError
-from graphmech.problems.cam.scene import parse_cam_scene
-from graphmech.problems.linkage.scene import parse_linkage_scene
+from graphmech.problems import KINDS, sheet, tables
 from graphmech.problems.reader import Reader, Scene, read_units
 
 #: A scene file larger than this (bytes) is refused before it is parsed.
@@ -98,47 +98,14 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
         raise SceneError([("", "a scene must be a TOML table")], source)
     order = {k: n for n, k in enumerate(data)}
     top = Reader(data, "", problems, {})
-    units = read_units(top)
-    top.units = units
-    has_cam, has_driver = "cam" in data, "driver" in data
-    if "structure" in data:  # mobility and structure: graphmech.problems.structure.scene
-        from graphmech.problems.structure.scene import parse_structure_scene
-
-        return parse_structure_scene(data, source, top, order)
-    if has_cam and "flywheel" in data:  # one problem, as below
-        top.problem(
-            "flywheel",
-            "a scene is a disc cam ([cam]) or a flywheel problem ([flywheel]), not both: "
-            "put each in a scene of its own",
-        )
+    top.units = read_units(top)
+    top.known.update(tables())  # a misspelt kind's table gets a suggestion in any scene
+    kind = next(kind for kind in KINDS.values() if kind.posed_by(data))  # the linkage's, if no other
+    refusal = kind.mixture(data) if kind.mixture is not None else None
+    if refusal is not None:  # one problem: which of the two to read is anyone's guess
+        top.problem(*refusal)
         raise SceneError(problems, source)
-    if has_cam and has_driver:  # one problem: which of the two to read is anyone's guess
-        top.problem(
-            "cam",
-            "a scene is a linkage ([driver]) or a disc cam ([cam]), not both: "
-            "put the cam in a scene of its own",
-        )
-        raise SceneError(problems, source)
-    if "forces" in data and (has_cam or "flywheel" in data or "efficiency" in data or "balancing" in data):
-        other = "cam" if has_cam else "flywheel" if "flywheel" in data else "efficiency or balancing"
-        top.problem("forces", "[forces] belongs to a linkage scene (kinetostatics), not to a "
-                              f"{other} scene: put it in a scene of its own")
-        raise SceneError(problems, source)
-    if "forces" in data:
-        from graphmech.problems.forces.scene import parse_forces_scene
-
-        return parse_forces_scene(data, source, top, order)
-    if "efficiency" in data or "balancing" in data:  # a problem of forces alone: no mechanism
-        from graphmech.problems.efficiency.scene import parse_efficiency_scene
-
-        return parse_efficiency_scene(data, source, top, order)
-    if has_cam:
-        return parse_cam_scene(data, source, top, order)
-    if "flywheel" in data:
-        from graphmech.problems.flywheel.scene import parse_flywheel_scene
-
-        return parse_flywheel_scene(data, source, top, order)
-    return parse_linkage_scene(data, source, top, order)
+    return kind.read(data, source, top, order)
 
 
 def load_scene(path: str | os.PathLike[str]) -> Scene:
@@ -203,4 +170,20 @@ def load_scene(path: str | os.PathLike[str]) -> Scene:
     return parse_scene(data, source)
 
 
-__all__ = ["MAX_BYTES", "Scene", "load_scene", "parse_scene"]
+def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
+    """The SVG text of a scene file and the warnings found while making it."""
+    import graphmech
+    from graphmech.render.svg import render_svg  # svgwrite only when a drawing is made
+
+    scene = load_scene(path)
+    drawing, warnings = sheet(scene, (f"graphmech {graphmech.__version__}",))
+    warnings = list(warnings)
+    return render_svg(drawing, id_prefix(path), on_warning=warnings.append), warnings
+
+
+def id_prefix(path: str | os.PathLike[str]) -> str:
+    """Element ids start with a hash of the scene, so two figures inline on one page don't clash."""
+    return "g" + hashlib.sha256(Path(path).read_bytes()).hexdigest()[:8]
+
+
+__all__ = ["MAX_BYTES", "Scene", "id_prefix", "load_scene", "parse_scene", "render_scene"]

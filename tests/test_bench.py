@@ -35,7 +35,7 @@ def test_instant_centre_and_mobility_records():
 def test_the_flywheel_bench_sweep_estimates_its_own_error():
     """J_F of the compressor from N = 12 … 3600 positions: the pipeline's estimate of its own error
     (the same work at 2N and 4N) within a factor of ten of the true error (measured 0.92 … 1.41)."""
-    from graphmech.bench import wittenbauer_records
+    from graphmech.problems.flywheel.bench import wittenbauer_records
 
     records = wittenbauer_records(repeat=1)
     assert {r["n"] for r in records} == {12, 24, 36, 72, 360, 3600}

@@ -13,7 +13,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from graphmech.bench import CAM_DIVISIONS, cam_cases, convergence_order
+from graphmech.problems.cam.bench import CAM_DIVISIONS, cam_cases
+from graphmech.accuracy import convergence_order
 from graphmech.exact.cam import working_profile as exact_working_profile
 from tests.conftest import ROOT, SCENES, run_cli
 

@@ -1,8 +1,9 @@
 """The full cycle's benchmark records: graphical differentiation converges at order 2."""
 from __future__ import annotations
 
-from graphmech.bench import convergence_order
-from graphmech.problems.cycle.bench import cycle_notes, differentiation_records, sheet_record
+from graphmech.accuracy import convergence_order
+from graphmech.problems.cycle.bench import cycle_notes, differentiation_records
+from graphmech.bench import sheet_note, sheet_record
 
 
 def test_graphical_differentiation_converges_at_order_two():
@@ -28,5 +29,4 @@ def test_graphical_differentiation_converges_at_order_two():
 def test_the_sheet_record_has_no_error_and_the_notes_name_it():
     r = sheet_record(repeat=1)
     assert r["method"] == "full-cycle-sheet" and r["n"] == 12 and r["max_rel_error"] is None and r["seconds"] > 0
-    notes = cycle_notes([r])
-    assert notes and "12 positions" in notes[0]
+    assert "12 positions" in sheet_note(r) and "rendered in" in sheet_note(r)

@@ -65,7 +65,7 @@ def test_a_roller_equal_to_the_smallest_radius_of_curvature_is_reported(tmp_path
     from graphmech.scene import load_scene
 
     steep = dict(r0=30, h=30, rise=60)  # a steep rise: the pitch curve is sharpest near its top
-    rho, _ = min_convex_rho_pitch(load_scene(scene(tmp_path, rr=5, **steep)).cam.cam)
+    rho, _ = min_convex_rho_pitch(load_scene(scene(tmp_path, rr=5, **steep)).problem.cam)
     assert rho < 0.030
     at_limit = analyse_cam(load_scene(scene(tmp_path, rr=rho * 1000, name="eq.toml", **steep)))
     assert any("roller undercuts" in w for w in at_limit.warnings)
@@ -82,7 +82,7 @@ def test_a_zero_dwell_is_no_dwell(tmp_path):
     from graphmech.scene import load_scene
 
     p = scene(tmp_path, rise=180, find='["v_max", "a_max", "alpha_max"]')  # rise 180°, dwell 0°, return 150°
-    assert [seg.kind for seg in load_scene(p).cam.cam.program.segments] == ["rise", "return", "dwell"]
+    assert [seg.kind for seg in load_scene(p).problem.cam.program.segments] == ["rise", "return", "dwell"]
     doc = check_json(p)
     assert all(math.isfinite(r["graphical"]) for r in doc["quantities"])
     # sine into sine at the top: no impact there

@@ -159,7 +159,7 @@ def test_figures_match_their_scenes_within_tolerance():
 
     Compared parsed, not byte for byte, so another platform's last-digit rounding passes.
     """
-    from graphmech.cli import render_scene
+    from graphmech.scene import render_scene
 
     for s in sorted(SCENES.glob("*.toml")):
         svg, _ = render_scene(s)
@@ -218,7 +218,7 @@ def test_render_refuses_more_positions_than_fit_but_check_takes_them(tmp_path):
 
 
 def test_two_positions_stand_in_two_rows(tmp_path):
-    from graphmech.cli import render_scene
+    from graphmech.scene import render_scene
 
     svg, warnings = render_scene(SCENES / "linkage.slider_crank_offset.toml")
     assert not [w for w in warnings if "page" in w]

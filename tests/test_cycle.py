@@ -10,7 +10,7 @@ import sys
 
 import pytest
 
-from graphmech.cli import render_scene
+from graphmech.scene import render_scene
 from tests.conftest import ROOT, SCENES, assert_refused, check_json, run_cli, values
 
 SLIDER = """

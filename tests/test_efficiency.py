@@ -215,7 +215,7 @@ def test_near_collinear_forces_are_flagged(tmp_path):
 
 def test_a_lead_angle_scene_draws_no_polygon_and_needs_no_friction():
     sc = load_scene(SCENES / "thread.m20_lead_angles-coarse.toml")
-    assert sc.efficiency.f is None and sc.efficiency.load is None
+    assert sc.problem.f is None and sc.problem.load is None
     an = analyse_efficiency(sc)
     assert an.strokes == {} and [r.name for r in an.rows] == ["psi"]
     sheet = efficiency_figure(an, (297.0, 210.0))
@@ -357,8 +357,8 @@ def test_any_mutation_checks_or_is_refused_in_one_line(data):
         parent[path[-1]] = data.draw(_values_to_try)
     try:
         sc = parse_scene(mutated, "fuzz.toml")
-        an = analyse_efficiency(sc) if sc.efficiency is not None else analyse_balancing(sc) \
-            if sc.balancing is not None else None
+        an = analyse_efficiency(sc) if sc.kind == "efficiency" else analyse_balancing(sc) \
+            if sc.kind == "balancing" else None
     except GraphmechError as err:
         assert "\n" not in str(err)
         return
@@ -370,7 +370,7 @@ def test_any_mutation_checks_or_is_refused_in_one_line(data):
     from graphmech.render.svg import render_svg
 
     try:  # and its figure draws, or a stated scale that cannot draw it is refused in one line
-        sheet = efficiency_figure(an, (297.0, 210.0)) if sc.efficiency is not None else \
+        sheet = efficiency_figure(an, (297.0, 210.0)) if sc.kind == "efficiency" else \
             balancing_figure(an, (297.0, 210.0))
     except GraphmechError as err:
         assert "\n" not in str(err)

@@ -135,7 +135,7 @@ def test_a_load_with_a_step(tmp_path):
 
 def test_a_braking_scene_draws_its_rundown_and_reads_t_stop_off_it():
     """ω(t) from ω0 = 100 rad/s at μω = 2 (rad/s)/mm falls to 0 at 125 mm of t at μt = 0.02 s/mm: 2.5 s."""
-    from graphmech.cli import render_scene
+    from graphmech.scene import render_scene
     from graphmech.problems.flywheel.braking_figures import rundown_panel
     from graphmech.drawing.primitives import Segment
 
@@ -214,7 +214,7 @@ def test_unknown_flywheel_quantity_is_one_line(tmp_path):
 
 def test_a_flywheel_scene_draws_its_mechanism_at_position_1(tmp_path):
     """show = ["mechanism", …] draws the linkage where φ = 0 beside the diagrams (once an internal error)."""
-    from graphmech.cli import render_scene
+    from graphmech.scene import render_scene
 
     text = (SCENES / "fly.compressor_course_project.toml").read_text(encoding="utf-8")
     text = re.sub(r"show = \[.*\]", 'show = ["mechanism", "energy"]', text)

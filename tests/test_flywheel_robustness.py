@@ -193,8 +193,8 @@ def test_the_compressor_s_estimates_hold_over_an_n_sweep(n):
     from graphmech.scene import load_scene
 
     sc = load_scene(SCENES / "fly.compressor_course_project.toml")
-    fw = dataclasses.replace(sc.flywheel, positions=n, true_motion=None)
-    an = analyse_flywheel(dataclasses.replace(sc, flywheel=fw, find=SWEEP_FIND, measured=()))
+    fw = dataclasses.replace(sc.problem, positions=n, true_motion=None)
+    an = analyse_flywheel(dataclasses.replace(sc, problem=fw, find=SWEEP_FIND, measured=()))
     assert_honest(an.rows)
     assert {r.name: r.basis for r in an.rows}["J_F"] == f"{n} positions"
 

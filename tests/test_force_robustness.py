@@ -60,7 +60,7 @@ def float_corrections(text_path) -> tuple[complex, complex]:
     """W_I, W_II solved in rational arithmetic from the very floats the scene gives (no round-off)."""
     from graphmech.scene import load_scene
 
-    p = load_scene(text_path).balancing
+    p = load_scene(text_path).problem
     zI, zII = Fraction(p.planes[0]), Fraction(p.planes[1])
     out = []
     for other, sign in ((zII, -1), (zI, 1)):

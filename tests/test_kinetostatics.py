@@ -352,7 +352,7 @@ def test_value_objects_are_frozen():
 
 
 def test_force_sheet_panels_and_one_position_only(tmp_path):
-    from graphmech.cli import render_scene
+    from graphmech.scene import render_scene
 
     svg, warnings = render_scene(SCENES / "force.sixbar_kinetostatic.toml")
     for title in ("Free body, group 4–5", "Force polygon, group 2–3", "Zhukovsky", "μF = 25 N/mm"):
@@ -492,7 +492,7 @@ def test_a_driving_slider_gets_a_balancing_force(friction):
         ref = rows[f"F_b0@{lab}"].graphical if friction else rows[f"F_b@{lab}"].graphical
         assert rows[f"F_b_lever@{lab}"].graphical == pytest.approx(ref, rel=1e-12)
     assert rows["F_b@60"].graphical == pytest.approx(-86.8604612 if friction else -89.4518378, rel=1e-8)
-    assert _scene(text).forces is not None
+    assert _scene(text).kind == "forces"
     with pytest.raises(SceneError, match="the driver is a slider: its balancing force is F_b"):
         analyse_forces(_scene(text.replace('"F_b",', '"M_b",', 1)))
 
@@ -853,7 +853,7 @@ def test_friction_dissipates_exactly_the_extra_driving_power_over_the_cycle(tmp_
     ex, kin = fa.exact, fa.kinematics.exact
     om = {"0": 0.0, **{k: np.asarray(v) for k, v in kin.omega.items()}}
     lost = 0.0
-    for fr in fa.scene.forces.model.revolute_friction:
+    for fr in fa.scene.problem.model.revolute_friction:
         (a, b), = [(j.a, j.b) for j in fa.solution.joints if j.point == fr.point]
         lost = lost + np.hypot(*ex.reactions[(a, b)].T) * fr.rho * np.abs(om[b] - om[a])
     r05 = ex.reactions[("0", "5")]

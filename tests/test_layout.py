@@ -58,8 +58,8 @@ CONTRACTS: dict[str, tuple[str, str]] = {
     "render":       ("render",       "drawing base"),
     # the registry, judging, reader and one package per kind (kinds are found on disk)
     "problems":     ("problems",     "methods drawing render exact mechanisms construction geometry base"),
-    "scene":        ("scene",        "problems mechanisms base"),
-    "bench":        ("bench",        "problems methods drawing render exact mechanisms construction geometry base"),
+    "scene":        ("scene",        "problems render drawing mechanisms base"),
+    "bench":        ("bench",        "scene problems methods drawing render exact mechanisms construction geometry base"),
     "cli":          ("cli",          "bench scene problems methods drawing render exact mechanisms construction "
                                      "geometry base"),
     # `python -m graphmech`: the only module that may import cli

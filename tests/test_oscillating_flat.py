@@ -170,7 +170,7 @@ def test_the_scene_parser_accepts_it() -> None:
     import tomllib
 
     scene = parse_scene(tomllib.loads(SCENE), "cam.toml")
-    f = scene.cam.cam.follower
+    f = scene.problem.cam.follower
     assert (f.kind, f.contact, f.pivot_distance, f.sense) == ("oscillating", "flat", 0.08, "opposite")
     with pytest.raises(SceneError) as info:
         parse_scene(tomllib.loads(SCENE.replace("base_radius = 30", "base_radius = 80")), "cam.toml")

@@ -249,7 +249,7 @@ def test_offset_roller_round_trip_in_si(tmp_path: Path) -> None:
     assert scene.precision_mm == 0.5
     assert scene.page == Page((297.0, 210.0))
 
-    cs = scene.cam
+    cs = scene.problem
     assert isinstance(cs, CamScene)
     assert cs.step == pytest.approx(math.radians(15), rel=1e-15)
     assert cs.roller_circles is True
@@ -276,27 +276,27 @@ def test_offset_roller_round_trip_in_si(tmp_path: Path) -> None:
 def test_cam_scene_is_frozen_and_hashable_parts() -> None:
     scene = parse(GOOD)
     with pytest.raises(AttributeError):
-        scene.cam.step = 1.0  # type: ignore[misc]
+        scene.problem.step = 1.0  # type: ignore[misc]
     with pytest.raises(AttributeError):
-        scene.cam.cam.base_radius = 1.0  # type: ignore[misc]
-    hash(scene.cam)
+        scene.problem.cam.base_radius = 1.0  # type: ignore[misc]
+    hash(scene.problem)
 
 
 def test_negative_offset_and_clockwise_cam() -> None:
     text = replace(GOOD, "offset = 10", "offset = -10").replace('rotation = "ccw"', 'rotation = "cw"')
-    cam = parse(text).cam.cam
+    cam = parse(text).problem.cam
     assert cam.follower.offset == pytest.approx(-0.01)
     assert cam.rotation == -1
 
 
 def test_offset_defaults_to_a_centred_follower() -> None:
-    cam = parse(replace(GOOD, "offset = 10\n", "")).cam.cam
+    cam = parse(replace(GOOD, "offset = 10\n", "")).problem.cam
     assert cam.follower.offset == 0.0
 
 
 def test_knife_edge_with_suffixes() -> None:
     scene = parse(KNIFE)
-    cs = scene.cam
+    cs = scene.problem
     cam = cs.cam
     assert scene.show == ("displacement", "velocity", "acceleration")
     assert scene.scales == {}
@@ -314,9 +314,9 @@ def test_knife_edge_with_suffixes() -> None:
 
 def test_flat_face_in_cm_and_rad() -> None:
     scene = parse(FLAT)
-    cam = scene.cam.cam
+    cam = scene.problem.cam
     assert scene.show == ("profile",)  # the default
-    assert scene.cam.step == CAM_STEP_DEFAULT == pytest.approx(math.radians(15))
+    assert scene.problem.step == CAM_STEP_DEFAULT == pytest.approx(math.radians(15))
     assert cam.follower == TranslatingFollower(pytest.approx(-0.01), "flat", 0.0)
     assert cam.base_radius == pytest.approx(0.04)
     assert cam.omega == pytest.approx(4 * math.pi)  # 120 rpm
@@ -328,14 +328,14 @@ def test_flat_face_in_cm_and_rad() -> None:
 
 def test_oscillating_round_trip_in_si() -> None:
     scene = parse(OSCILLATING)
-    cam = scene.cam.cam
+    cam = scene.problem.cam
     assert cam.follower == OscillatingFollower(
         pytest.approx(0.055), pytest.approx(0.05), "roller", pytest.approx(0.008), "opposite"
     )
     assert cam.program.stroke == pytest.approx(math.radians(25), rel=1e-15)  # an angle: rad
     assert cam.base_radius == pytest.approx(0.025)
     assert cam.rotation == 1
-    assert scene.cam.roller_circles is True
+    assert scene.problem.roller_circles is True
     # an oscillating follower's scales are angular
     assert scene.scales == {
         "s": pytest.approx(math.radians(0.5)),
@@ -344,15 +344,15 @@ def test_oscillating_round_trip_in_si() -> None:
         "a": pytest.approx(0.5),
     }
     same = parse(replace(OSCILLATING, 'sense = "opposite"', 'sense = "same"'))
-    assert same.cam.cam.follower.sense == "same"
+    assert same.problem.cam.follower.sense == "same"
     knife = parse(replace(OSCILLATING, 'contact = "roller"', 'contact = "knife"').replace("roller_radius = 8\n", ""))
-    assert knife.cam.cam.follower.contact == "knife"
-    assert knife.cam.cam.follower.roller_radius == 0.0
+    assert knife.problem.cam.follower.contact == "knife"
+    assert knife.problem.cam.follower.roller_radius == 0.0
 
 
 def test_oscillating_stroke_by_suffix() -> None:
     text = replace(OSCILLATING, "stroke = 25", "stroke_rad = 0.4363323129985824")
-    assert parse(text).cam.cam.program.stroke == pytest.approx(math.radians(25))
+    assert parse(text).problem.cam.program.stroke == pytest.approx(math.radians(25))
 
 
 def test_units_by_suffix_equal_units_by_table() -> None:
@@ -370,12 +370,12 @@ def test_units_by_suffix_equal_units_by_table() -> None:
         .replace("angle = 120", "angle_deg = 120")
         .replace("angle = 60", "angle_deg = 60")
     )
-    a, b = by_table.cam.cam, by_suffix.cam.cam
+    a, b = by_table.problem.cam, by_suffix.problem.cam
     assert b.base_radius == pytest.approx(a.base_radius)
     assert b.follower.offset == pytest.approx(a.follower.offset)
     assert b.alpha_permissible == pytest.approx(a.alpha_permissible)
     assert [s.angle for s in b.program.segments] == pytest.approx([s.angle for s in a.program.segments])
-    assert by_suffix.cam.step == pytest.approx(by_table.cam.step)
+    assert by_suffix.problem.step == pytest.approx(by_table.problem.step)
 
 
 def test_table_law() -> None:
@@ -384,14 +384,14 @@ def test_table_law() -> None:
         'law = "uniform"',
         'law = "table"\ntable = [[0, 0], [0.3, 0.2], [0.7, 0.8], [1, 1]]',
     )
-    seg = parse(text).cam.cam.program.segments[0]
+    seg = parse(text).problem.cam.program.segments[0]
     assert seg.law == "table"
     assert seg.table == ((0.0, 0.0), (0.3, 0.2), (0.7, 0.8), (1.0, 1.0))
 
 
 def test_roller_circles_may_be_turned_off() -> None:
-    assert parse(replace(GOOD, "roller_circles = true", "roller_circles = false")).cam.roller_circles is False
-    assert parse(replace(GOOD, "roller_circles = true\n", "")).cam.roller_circles is True
+    assert parse(replace(GOOD, "roller_circles = true", "roller_circles = false")).problem.roller_circles is False
+    assert parse(replace(GOOD, "roller_circles = true\n", "")).problem.roller_circles is True
 
 
 def test_measured_check_and_page_work_for_cams() -> None:
@@ -412,9 +412,9 @@ def test_scene_keeps_its_positional_fields() -> None:
         }
     )
     again = Scene("s", "", ("mechanism",), (), {}, linkage_scene.linkage, linkage_scene.positions, ())
-    assert again.linkage is linkage_scene.linkage and again.cam is None
+    assert again.linkage is linkage_scene.linkage and again.kind != "cam"
     cam_scene = parse(GOOD)
-    assert Scene("s", "", ("profile",), (), {}, cam=cam_scene.cam).linkage is None
+    assert Scene("s", "", ("profile",), (), {}, kind="cam", problem=cam_scene.problem).linkage is None
 
 
 # ------------------------------------------------------------------------------------------
@@ -486,7 +486,7 @@ def test_oscillating_arm_must_reach_the_base_circle() -> None:
 
 def test_flat_face_oscillating_needs_the_base_circle_inside_the_pivot_distance() -> None:
     text = replace(OSCILLATING, 'contact = "roller"', 'contact = "flat"').replace("roller_radius = 8\n", "")
-    follower = parse(text).cam.cam.follower
+    follower = parse(text).problem.cam.follower
     assert (follower.kind, follower.contact, follower.pivot_distance) == ("oscillating", "flat", 0.055)
     assert only(replace(text, "base_radius = 25", "base_radius = 60")) == (
         "cam.follower.pivot_distance",
@@ -575,8 +575,8 @@ def test_segment_angles_must_add_up_to_a_turn() -> None:
 
 def test_a_zero_dwell_is_left_out() -> None:
     text = GOOD.replace("angle = 60", "angle = 0") + '\n[[cam.segment]]\nkind = "dwell"\nangle = 60\n'
-    with_zero = parse_scene(tomllib.loads(text), "z.toml").cam.cam.program
-    plain = parse_scene(tomllib.loads(GOOD), "g.toml").cam.cam.program
+    with_zero = parse_scene(tomllib.loads(text), "z.toml").problem.cam.program
+    plain = parse_scene(tomllib.loads(GOOD), "g.toml").problem.cam.program
     assert with_zero == plain  # a 0° dwell is no dwell
     assert only(replace(GOOD, "angle = 150", "angle = -150"))[1] == "must be > 0"
 
@@ -720,23 +720,23 @@ def test_all_problems_are_collected_in_file_order() -> None:
 def doc_cam_scenes() -> list[Scene]:
     blocks = re.findall(r"^```toml\n(.*?)^```", DOCS.read_text(encoding="utf-8"), re.S | re.M)
     scenes = [parse_scene(tomllib.loads(b), "scene-format.md") for b in blocks]
-    return [s for s in scenes if s.cam is not None]
+    return [s for s in scenes if s.kind == "cam"]
 
 
 def test_docs_have_a_cam_example_of_every_kind() -> None:
     scenes = doc_cam_scenes()
-    followers = {(type(s.cam.cam.follower).__name__, s.cam.cam.follower.contact) for s in scenes}
+    followers = {(type(s.problem.cam.follower).__name__, s.problem.cam.follower.contact) for s in scenes}
     assert followers >= {
         ("TranslatingFollower", "roller"),
         ("TranslatingFollower", "knife"),
         ("TranslatingFollower", "flat"),
         ("OscillatingFollower", "roller"),
     }
-    laws = {seg.law for s in scenes for seg in s.cam.cam.program.segments}
+    laws = {seg.law for s in scenes for seg in s.problem.cam.program.segments}
     assert laws >= {"uniform", "parabolic", "cosine", "sine", "poly345", "table"}
-    assert {s.cam.cam.rotation for s in scenes} == {1, -1}
-    assert any(s.cam.cam.follower.kind == "translating" and s.cam.cam.follower.offset == 0 for s in scenes)
-    assert any(s.cam.cam.follower.kind == "translating" and s.cam.cam.follower.offset < 0 for s in scenes)
+    assert {s.problem.cam.rotation for s in scenes} == {1, -1}
+    assert any(s.problem.cam.follower.kind == "translating" and s.problem.cam.follower.offset == 0 for s in scenes)
+    assert any(s.problem.cam.follower.kind == "translating" and s.problem.cam.follower.offset < 0 for s in scenes)
     shown = {v for s in scenes for v in s.show}
     assert shown == {"profile", "displacement", "velocity", "acceleration"}
     assert any(s.measured for s in scenes)
@@ -781,7 +781,7 @@ def test_offset_roller_translating_problem_both_senses() -> None:
         (+1, docs["Offset roller follower, e = +10 mm"]),
         (-1, parse(replace(GOOD, "offset = 10", "offset = -10"))),
     ):
-        cam = scene.cam.cam
+        cam = scene.problem.cam
         f = cam.follower
         assert isinstance(f, TranslatingFollower) and f.contact == "roller"
         assert f.offset == pytest.approx(sign * inputs["e_mm"] / 1000)
@@ -804,7 +804,7 @@ def test_oscillating_roller_problem() -> None:
     inputs = p["inputs"]
     docs = {s.title: s for s in doc_cam_scenes()}
     for scene in (docs["Oscillating roller follower"], parse(OSCILLATING)):
-        cam = scene.cam.cam
+        cam = scene.problem.cam
         f = cam.follower
         assert isinstance(f, OscillatingFollower) and f.contact == "roller"
         assert f.pivot_distance == pytest.approx(inputs["lOA_mm"] / 1000)
@@ -858,7 +858,7 @@ def test_law_maxima_problem(law: str, key: str) -> None:
         kind = "dwell"
         angle_deg = {rest!r}
     """
-    cam = parse(text).cam.cam
+    cam = parse(text).problem.cam
     rise = cam.program.segments[0]
     assert rise.angle == pytest.approx(inputs["delta0_rad"], rel=1e-15)
     assert cam.program.stroke == pytest.approx(inputs["h_mm"] / 1000)
@@ -925,7 +925,7 @@ def test_any_mutation_of_a_cam_scene_gives_a_scene_or_a_scene_error(data: st.Dat
         assert err.problems
         assert "\n" not in str(err)
         return
-    cam = scene.cam.cam
+    cam = scene.problem.cam
     assert cam.base_radius > 0 and cam.omega > 0 and cam.rotation in (1, -1)
     assert all(math.isfinite(s.angle) and s.angle > 0 for s in cam.program.segments)
     assert math.isclose(sum(s.angle for s in cam.program.segments), 2 * math.pi)

@@ -192,8 +192,8 @@ def test_compressor_round_trip_in_si(tmp_path: Path) -> None:
     assert scene.source == "compressor.toml"
     assert scene.show == ("moment", "work", "energy", "inertia", "wittenbauer", "indicator")
     assert scene.find == ("J_F", "M_b", "Jp@1")
-    assert scene.cam is None
-    fly = scene.flywheel
+    assert scene.kind != "cam"
+    fly = scene.problem
     assert isinstance(fly, FlywheelScene)
     assert (fly.positions, fly.method, fly.tangents, fly.pole_distance) == (12, "wittenbauer", "exact", 40.0)
     assert fly.true_motion == TrueMotionSpec("Radau", 1e-10)
@@ -238,17 +238,17 @@ def test_compressor_round_trip_in_si(tmp_path: Path) -> None:
 def test_flywheel_scene_is_frozen() -> None:
     scene = parse(COMPRESSOR)
     with pytest.raises(dataclasses.FrozenInstanceError):
-        scene.flywheel.positions = 24  # type: ignore[misc]
+        scene.problem.positions = 24  # type: ignore[misc]
     with pytest.raises(dataclasses.FrozenInstanceError):
-        scene.flywheel.machine.delta = 0.1  # type: ignore[misc]
+        scene.problem.machine.delta = 0.1  # type: ignore[misc]
     with pytest.raises(dataclasses.FrozenInstanceError):
-        scene.flywheel.braking.moment = 1.0  # type: ignore[misc]
+        scene.problem.braking.moment = 1.0  # type: ignore[misc]
 
 
 def test_engine_without_a_linkage() -> None:
     scene = parse(ENGINE)
-    assert scene.linkage is None and scene.positions is None and scene.cam is None
-    fly = scene.flywheel
+    assert scene.linkage is None and scene.positions is None and scene.kind != "cam"
+    fly = scene.problem
     assert (fly.positions, fly.method, fly.tangents, fly.pole_distance) == (12, "indicator", "exact", None)
     assert fly.true_motion is None and fly.braking is None
     m = fly.machine
@@ -267,7 +267,7 @@ def test_engine_without_a_linkage() -> None:
 
 def test_braking_only_needs_no_delta_nor_loads() -> None:
     scene = parse(BRAKING)
-    fly = scene.flywheel
+    fly = scene.problem
     assert fly.braking == Braking(20.0, 3.0)
     m = fly.machine
     assert m.loads == () and m.inertia == 0.5 and m.omega_m == 100.0
@@ -276,8 +276,8 @@ def test_braking_only_needs_no_delta_nor_loads() -> None:
     assert scene.show == ("rundown",)  # no cycle to draw: the run-down ω(t)
     # a time limit is optional; a δ, when given, is kept
     scene = parse(BRAKING.replace("time_limit_s = 3\n", "").replace("[flywheel]\n", "[flywheel]\ndelta = 0.05\n"))
-    assert scene.flywheel.braking == Braking(20.0, None)
-    assert scene.flywheel.machine.delta == 0.05
+    assert scene.problem.braking == Braking(20.0, None)
+    assert scene.problem.machine.delta == 0.05
 
 
 def test_defaults() -> None:
@@ -293,7 +293,7 @@ def test_defaults() -> None:
         .replace('show = ["moment", "work", "energy", "inertia", "wittenbauer", "indicator"]\n', "")
     )
     scene = parse(text)
-    fly = scene.flywheel
+    fly = scene.problem
     assert (fly.positions, fly.method, fly.tangents, fly.pole_distance) == (12, "wittenbauer", "exact", None)
     assert fly.true_motion == TrueMotionSpec()
     assert fly.machine.cycle == 2 * math.pi and fly.machine.inertia == 0.0
@@ -305,7 +305,7 @@ def test_defaults() -> None:
     ("written", "delta"), [("0.04", 0.04), ('"1/25"', 0.04), ('" 1 / 80 "', 0.0125), ('"3/100"', 0.03), ("1", 1.0)]
 )
 def test_delta_as_a_number_or_a_fraction(written: str, delta: float) -> None:
-    assert parse(replace(COMPRESSOR, "delta = 0.04", f"delta = {written}")).flywheel.machine.delta == delta
+    assert parse(replace(COMPRESSOR, "delta = 0.04", f"delta = {written}")).problem.machine.delta == delta
 
 
 def test_units_by_table_equal_units_by_suffix() -> None:
@@ -321,14 +321,14 @@ def test_units_by_table_equal_units_by_suffix() -> None:
         .replace("cycle_deg = 180", f"cycle_rad = {math.pi!r}")
         .replace("moment_Nm = [0, 200, 200, 0]", "moment_kNm = [0, 0.2, 0.2, 0]")
     )
-    a, b = by_table.flywheel.machine, by_suffix.flywheel.machine
+    a, b = by_table.problem.machine, by_suffix.problem.machine
     assert (a.omega_m, a.cycle) == pytest.approx((b.omega_m, b.cycle), rel=1e-15)
     assert a.loads[0].table.y == b.loads[0].table.y == (0.0, 200.0, 200.0, 0.0)
 
 
 def test_pressure_units_area_and_force() -> None:
     def slider(text: str) -> SliderLoad:
-        load = parse(text).flywheel.machine.loads[0]
+        load = parse(text).problem.machine.loads[0]
         assert isinstance(load, SliderLoad)
         return load
 
@@ -361,7 +361,7 @@ def test_clockwise_crank_and_a_pivot_mass() -> None:
         '[[flywheel.mass]]\nlink = "1"\npoint = "A"\nmass_kg = 0\ninertia_kgm2 = 0.05\n\n[[flywheel.mass]]',
     )
     scene = parse(text)
-    m = scene.flywheel.machine
+    m = scene.problem.machine
     assert m.sense == -1 and m.omega_m == pytest.approx(960 * math.pi / 30)
     assert m.masses[0] == Mass("1", "A", 0.0, 0.05)
     # positions go clockwise from position 1
@@ -369,7 +369,7 @@ def test_clockwise_crank_and_a_pivot_mass() -> None:
 
 
 def test_synchronous_motor() -> None:
-    motor = parse(replace(COMPRESSOR, "stiffness = 1e5", "synchronous_rpm = 960.001")).flywheel.machine.motor
+    motor = parse(replace(COMPRESSOR, "stiffness = 1e5", "synchronous_rpm = 960.001")).problem.machine.motor
     assert motor == Motor(synchronous=pytest.approx(960.001 * math.pi / 30, rel=1e-15))
 
 
@@ -404,7 +404,7 @@ def test_slider_load_on_an_rpp_dyad_takes_its_guide_axis() -> None:
     """
     scene = parse(text)
     assert isinstance(scene.linkage.dyads[0], RPP)
-    (load,) = scene.flywheel.machine.loads
+    (load,) = scene.problem.machine.loads
     assert load.axis == pytest.approx(math.radians(30)) and load.table.y == (100.0, 100.0)
 
 
@@ -732,7 +732,7 @@ def test_braking_only_scenes() -> None:
     linkage = load_block(C, 0).replace("inertia_kgm2 = 0.0\n", "").replace("delta = 0.04\n", "")
     linkage = re.sub(r"show = .*\n", 'show = ["mechanism", "rundown"]\n', linkage)
     scene = parse(linkage + "[flywheel.braking]\nmoment_Nm = 20\n")
-    assert scene.flywheel.machine.masses and scene.flywheel.machine.loads == ()
+    assert scene.problem.machine.masses and scene.problem.machine.loads == ()
     assert len(scene.positions.values) == 12
 
 
@@ -830,7 +830,7 @@ def test_check_of_a_bad_flywheel_scene_is_one_line_exit_2(tmp_path: Path) -> Non
 def doc_flywheel_scenes() -> dict[str, Scene]:
     blocks = re.findall(r"^```toml\n(.*?)^```", DOCS.read_text(encoding="utf-8"), re.DOTALL | re.MULTILINE)
     scenes = [parse_scene(tomllib.loads(b), "scene-format.md") for b in blocks]
-    return {s.title: s for s in scenes if s.flywheel is not None}
+    return {s.title: s for s in scenes if s.kind == "flywheel"}
 
 
 
@@ -838,11 +838,11 @@ def test_docs_have_the_three_flywheel_examples() -> None:
     scenes = doc_flywheel_scenes()
     assert len(scenes) == 3
     with_linkage = [s for s in scenes.values() if s.linkage is not None]
-    assert len(with_linkage) == 1 and with_linkage[0].flywheel.true_motion is not None
-    kinds = {load.kind for s in scenes.values() for load in s.flywheel.machine.loads}
+    assert len(with_linkage) == 1 and with_linkage[0].problem.true_motion is not None
+    kinds = {load.kind for s in scenes.values() for load in s.problem.machine.loads}
     assert kinds == {"slider", "crank"}
-    assert {s.flywheel.machine.balance for s in scenes.values() if s.flywheel.machine.loads} == {"driving", "resisting"}
-    assert any(s.flywheel.braking is not None and not s.flywheel.machine.loads for s in scenes.values())
+    assert {s.problem.machine.balance for s in scenes.values() if s.problem.machine.loads} == {"driving", "resisting"}
+    assert any(s.problem.braking is not None and not s.problem.machine.loads for s in scenes.values())
 
 
 def test_documented_error_messages_are_real() -> None:
@@ -878,7 +878,7 @@ def test_compressor_course_project() -> None:
     p = reference_area("flywheel")["fly.compressor_course_project"]
     inputs, exact = p["inputs"], p["exact"]
     scene = doc_flywheel_scenes()["Air compressor: flywheel by the Wittenbauer diagram"]
-    m = scene.flywheel.machine
+    m = scene.problem.machine
     crank, rod = m.linkage.driver, m.linkage.dyads[0]
     assert crank.length == pytest.approx(inputs["lAB_m"]) and rod.length == pytest.approx(inputs["lBC_m"])
     assert rod.guide.through[1] == pytest.approx(inputs["e_m"])
@@ -896,8 +896,8 @@ def test_compressor_course_project() -> None:
     area = exact["A_piston_m2"]
     assert load.table.y == pytest.approx([p * 1e6 * area for p in inputs["load_table_p_MPa"]], rel=1e-14)
     assert (load.axis, load.sense, load.during) == (0.0, -1, "forward")  # toward A, compressing
-    assert scene.flywheel.positions == inputs["positions_N"]
-    assert [math.degrees(phi) for phi in m.positions(scene.flywheel.positions)] == pytest.approx(
+    assert scene.problem.positions == inputs["positions_N"]
+    assert [math.degrees(phi) for phi in m.positions(scene.problem.positions)] == pytest.approx(
         exact["positions_phi_deg"]
     )
     # position 1 is the outer dead centre: A, B, C collinear
@@ -907,7 +907,7 @@ def test_compressor_course_project() -> None:
 def test_ic_engine_flywheel() -> None:
     p = reference_area("flywheel")["fly.ic_engine_flywheel"]
     inputs = p["inputs"]
-    m = doc_flywheel_scenes()["IC engine: flywheel on the crankshaft"].flywheel.machine
+    m = doc_flywheel_scenes()["IC engine: flywheel on the crankshaft"].problem.machine
     assert m.linkage is None and m.cycle == math.pi and m.balance == "resisting"
     assert m.omega_m == pytest.approx(inputs["nm_r_min"] * math.pi / 30, rel=1e-15)
     assert m.delta == inputs["delta"]
@@ -923,7 +923,7 @@ def test_ic_engine_flywheel() -> None:
 def test_brake_time() -> None:
     p = reference_area("flywheel")["fly.brake_time"]
     inputs = p["inputs"]
-    fly = doc_flywheel_scenes()["Run-down under a brake"].flywheel
+    fly = doc_flywheel_scenes()["Run-down under a brake"].problem
     assert fly.machine.omega_m == inputs["omega_rad_s"]
     assert fly.machine.inertia == inputs["Je_kgm2"]
     assert fly.braking == Braking(inputs["Mr_Nm"], inputs["t_required_s"])
@@ -980,9 +980,9 @@ def test_any_mutation_of_a_flywheel_scene_gives_a_scene_or_a_scene_error(data: s
         assert err.problems
         assert "\n" not in str(err)
         return
-    if scene.flywheel is None:  # the mutation removed [flywheel]: another kind of scene
+    if scene.kind != "flywheel":  # the mutation removed [flywheel]: another kind of scene
         return
-    fly = scene.flywheel
+    fly = scene.problem
     m = fly.machine
     assert 4 <= fly.positions <= 3600
     assert m.omega_m > 0 and math.isfinite(m.omega_m)

@@ -63,7 +63,7 @@ def test_roller_local_freedom_is_recognised(problems):
 
 def test_a_roller_whose_normal_misses_its_pin_has_no_local_freedom():
     scene = load_scene(SCENES / "dof.hfut_cases-3-2.toml")
-    topo = scene.structure.topology
+    topo = scene.problem.topology
     pairs = tuple(Pair(p.kind, p.links, p.name, p.at, 1.2 if p.kind == "higher" else p.angle) for p in topo.pairs)
     m = mobility(Topology(topo.frame, topo.links, pairs, topo.drivers), True)
     assert m.F_local == 1  # the count still says roller …
@@ -131,7 +131,7 @@ def test_only_what_is_asked_is_computed():
     data2.pop("show")
     scene = parse_scene(data2, "x.toml")
     assert scene.show == ("structure",)
-    topo = scene.structure.topology
+    topo = scene.problem.topology
     assert mobility(topo, False).rank is None
     s = structure(topo)
     assert s.grade == 2
@@ -163,7 +163,7 @@ def test_cli_exit_2_for_a_driver_off_the_frame(tmp_path):
 
 
 def test_structure_sheet_outlines_the_groups():
-    from graphmech.cli import render_scene
+    from graphmech.scene import render_scene
 
     svg, warnings = render_scene(SCENES / "dof.hfut_cases-ic_engine_EG.toml")
     assert "III (2,3,4,5)" in svg and "II (7,8)" in svg and "special construction" in svg
@@ -255,7 +255,7 @@ def test_a_link_listed_twice_among_the_drivers_or_links_is_refused(key):
 def test_every_structure_sheet_fits_its_page(name):
     """The class III message (IC engine from EG) made the block diagram's panel 403 mm wide on an
     A4 page; HFUT 3-2's diagram was drawn at μl = 0.005 (38 mm tall, labels on top of each other)."""
-    from graphmech.cli import render_scene
+    from graphmech.scene import render_scene
 
     svg, warnings = render_scene(SCENES / f"{name}.toml")
     assert not [w for w in warnings if "runs off the page" in w], warnings
@@ -283,7 +283,7 @@ def test_an_oscillating_follower_pivoted_on_the_frame_is_not_a_roller():
     data = {"structure": {"frame": "1", "drivers": ["2"], "pair": [
         {"kind": "R", "links": ["1", "2"]}, {"kind": "higher", "links": ["2", "3"]},
         {"kind": "R", "links": ["3", "1"]}]}}
-    topo = parse_scene(data, "cam.toml").structure.topology
+    topo = parse_scene(data, "cam.toml").problem.topology
     assert topo.rollers() == ()
     m = mobility(topo, False)
     assert (m.F_local, m.F) == (0, 1)
@@ -292,5 +292,5 @@ def test_an_oscillating_follower_pivoted_on_the_frame_is_not_a_roller():
     data["structure"]["pair"] = [
         {"kind": "R", "links": ["1", "2"]}, {"kind": "higher", "links": ["2", "3"]},
         {"kind": "R", "links": ["3", "4"]}, {"kind": "P", "links": ["4", "1"]}]
-    m = mobility(parse_scene(data, "roller.toml").structure.topology, False)
+    m = mobility(parse_scene(data, "roller.toml").problem.topology, False)
     assert (m.F_local, m.F) == (1, 1)

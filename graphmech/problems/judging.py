@@ -127,3 +127,9 @@ def refuse_non_finite(rows: list[Any]) -> None:
         if r.error_estimate is not None and not math.isfinite(r.error_estimate):
             raise DegenerateConstruction(r.name, "its error estimate left double precision: the same method "
                                                  "at more positions or divisions breaks down")
+
+
+def finite(an: Any) -> Any:
+    """The analysis ``an``, its rows all finite (else refused in words): for a drawing as for a table."""
+    refuse_non_finite(an.rows)
+    return an

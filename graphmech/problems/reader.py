@@ -13,14 +13,12 @@ import difflib
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Iterable, Mapping, NoReturn
+from typing import Any, Generic, TypeVar, Iterable, Mapping, NoReturn
 
 from graphmech.errors import SceneError
 from graphmech.scales import PAPER, scale_out_of_range
 from graphmech.mechanisms.linkage import Linkage, Positions
 from graphmech.tolerances import DRAWING_PRECISION_MM, MAX_PRECISION_MM, POLE_RANGE_MM
-
-
 #: The most driver positions one scene may ask for.
 MAX_POSITIONS = 3600
 
@@ -46,13 +44,13 @@ class Page:
     size: tuple[float, float] = (297.0, 210.0)
 
 
-@dataclass(frozen=True)
-class Scene:
-    """A validated scene, all in SI units.
+#: The part of a scene its kind reads from its own tables (a CamScene, a FlywheelScene …).
+P = TypeVar("P")
 
-    A scene is a linkage scene (``linkage`` and ``positions`` set, ``cam`` and ``flywheel``
-    None), a cam scene (``cam`` set, ``linkage`` and ``positions`` None) or a flywheel scene
-    (``flywheel`` set; ``linkage`` and ``positions`` set when it has a linkage, else None).
+
+@dataclass(frozen=True)
+class Scene(Generic[P]):
+    """A validated scene, all in SI units: what every kind shares, and its own ``problem``.
 
     Parameters
     ----------
@@ -61,24 +59,21 @@ class Scene:
     title : str
         Free text (the renderer escapes it).
     show : tuple of str
-        A subset of :data:`SHOW_CHOICES` (a cam scene: :data:`CAM_SHOW_CHOICES`; a flywheel
-        scene: :data:`graphmech.problems.flywheel.scene.FLYWHEEL_SHOW_CHOICES`, with a linkage also
-        "mechanism") in the user's order, no duplicates.
+        What to draw, from the kind's choices, in the user's order, no duplicates.
     find : tuple of str
         Quantity names as written (``"v_C"``, ``"omega_3"``, ``"alpha_max"``, ``"J_F"``);
         ``check`` validates them against the construction.
     scales : dict
-        Only the scales given: ``"l"`` m/mm, ``"v"`` (m/s)/mm, ``"a"`` (m/s²)/mm; a cam scene
-        also ``"s"`` m/mm and ``"phi"`` rad/mm, and for an oscillating follower ``"s"`` is
-        rad/mm, ``"v"`` (rad/s)/mm, ``"a"`` (rad/s²)/mm; a flywheel scene ``"phi"`` rad/mm,
-        ``"M"`` (N·m)/mm, ``"J"`` (kg·m²)/mm, ``"T"`` J/mm, and with a linkage ``"l"``, ``"v"``.
+        Only the scales given, SI per drawing mm: ``"l"`` m/mm, ``"v"`` (m/s)/mm, ``"a"``
+        (m/s²)/mm; a cam scene also ``"s"`` and ``"phi"``, a flywheel scene ``"phi"``, ``"M"``,
+        ``"J"``, ``"T"`` (docs/scene-format.md lists them all).
     linkage : Linkage or None
-        The mechanism, in m and rad (None in a cam scene and a flywheel scene without one).
+        The mechanism, in m and rad (None in a scene without one: a cam, a machine given by
+        its reduced moments, an efficiency or balancing problem).
     positions : Positions or None
         Driver values in SI (rad or m) and their labels as written in the scene's unit
-        (``"50"``), used as name suffixes such as ``v_C@50`` (None in a cam scene). In a
-        flywheel scene with a linkage, the crank's absolute angles at its N positions,
-        labelled ``"1"`` … ``"N"``.
+        (``"50"``), used as name suffixes such as ``v_C@50``. In a flywheel scene with a
+        linkage, the crank's absolute angles at its N positions, labelled ``"1"`` … ``"N"``.
     measured : tuple of (str, float)
         The ``[measured]`` table in file order, raw: quantity values in SI or drawn
         segment lengths in mm (``("p'c'", 40.5)``); ``check`` interprets them.
@@ -86,13 +81,13 @@ class Scene:
         Drawing precision for judging measured values, mm.
     page : Page
         The sheet.
-    cam : CamScene or None
-        The cam of a cam scene (None otherwise).
-    flywheel : FlywheelScene or None
-        The machine and the flywheel problem of a flywheel scene (None otherwise).
-    cycle : graphmech.problems.cycle.scene.CycleScene or None
-        A linkage scene's full cycle ([cycle]) and characteristics (None when it asks for
-        neither).
+    kind : str
+        The kind of problem the scene poses, a name in :data:`graphmech.problems.KINDS`.
+    problem : P or None
+        What the kind read from its own tables: a ``CamScene`` for a cam, a ``FlywheelScene``,
+        ``ForceScene``, ``CycleScene``, ``EfficiencyProblem``, ``BalancingProblem``,
+        ``StructureScene`` (each in ``graphmech/problems/<kind>/scene.py``); None for a plain
+        linkage, which has all it needs in ``linkage`` and ``positions``.
     """
 
     source: str
@@ -105,13 +100,8 @@ class Scene:
     measured: tuple[tuple[str, float], ...] = ()
     precision_mm: float = DRAWING_PRECISION_MM
     page: Page = Page()
-    cam: Any = None  # CamScene
-    flywheel: Any = None  # FlywheelScene
-    forces: Any = None  # a ForceScene (graphmech.problems.forces.scene) in a force scene
-    efficiency: Any = None  # graphmech.problems.efficiency.scene.EfficiencyProblem of an [efficiency] scene
-    balancing: Any = None  # graphmech.problems.balancing.scene.BalancingProblem of a [balancing] scene
-    cycle: Any = None  # graphmech.problems.cycle.scene.CycleScene: a full cycle and/or the characteristics
-    structure: Any = None  # graphmech.problems.structure.scene.StructureScene of a [structure] scene
+    kind: str = "linkage"
+    problem: P | None = None
 
 
 UNITS: dict[str, dict[str, tuple[float, float]]] = {
@@ -197,49 +187,26 @@ KIND_WORDS = {
     "area": "an area",
     "mass_radius": "a mass-radius product",
 }
-
-
 PER_MM = "_per_mm"
 
 
 ALL_SUFFIXES = {s for table in SUFFIXES.values() for s in table} | {
     s + PER_MM for table in SUFFIXES.values() for s in table
 }
-
-
 POINT_NAME = re.compile(r"[A-Z]+[0-9]*['′]*")
 
 
 LINK_ID = re.compile(r"[0-9A-Za-z]{1,8}")
-
-
 LABEL_SUFFIX = r"(?:@[0-9A-Za-z.+\-]{1,24})?"
 
 
 QUANTITY_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*" + LABEL_SUFFIX)
-
-
 SEGMENT_NAME = re.compile(r"(?:[a-zπ][0-9]*['′]*){2,8}" + LABEL_SUFFIX)
 
 
-TOP_KEYS = (
-    "title",
-    "show",
-    "find",
-    "scales",
-    "units",
-    "frame",
-    "driver",
-    "dyad",
-    "point",
-    "measured",
-    "check",
-    "page",
-    "cam",
-    "flywheel",
-    "forces",
-    "structure",
-)
+#: The tables and keys every scene may have, whatever its kind (each kind adds its own tables,
+#: graphmech.problems.tables()).
+COMMON_KEYS = ("title", "show", "find", "scales", "units", "measured", "check", "page")
 
 
 MISSING: Any = object()
@@ -903,10 +870,11 @@ def read_page(top: Reader) -> Page:
     return Page(size)
 
 
-def read_tail(top: Reader, known: Iterable[str] = TOP_KEYS) -> tuple[float, Page]:
+def read_tail(top: Reader, known: Iterable[str] = ()) -> tuple[float, Page]:
     """The end of every scene reader: [check] and [page], then any top-level key not in ``known``
     is an unknown key. Returns the drawing precision (mm) and the page."""
     precision, page = read_check(top), read_page(top)
+    top.known.update(COMMON_KEYS)
     top.known.update(known)
     top.finish()
     return precision, page

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from graphmech.bench import FOURBAR_QUANTITIES, fourbar
+from graphmech.problems.linkage.bench import FOURBAR_QUANTITIES, fourbar
 from graphmech.errors import DegenerateConstruction
 from graphmech.exact.linkage import solve
 from graphmech.mechanisms.linkage import Crank, Linkage, RRR

@@ -314,7 +314,7 @@ def test_bad_instant_centre_names_are_one_line_errors(name, reason):
 
 
 def test_the_sheet_draws_every_centre_and_the_polygon_of_links():
-    from graphmech.cli import render_scene
+    from graphmech.scene import render_scene
     from graphmech.problems.instant_centres.figures import ic_panels
     from graphmech.drawing.primitives import Sheet
     from graphmech.render.recording import RecordingBackend
@@ -565,7 +565,7 @@ def test_a_measured_centre_or_zero_angle_that_has_no_row_says_what_to_write(meas
 def test_a_negative_omega_on_the_sheet_has_a_minus_sign():
     """The coupler at the rocker's extreme turns at ω3 = −ω2·AB/BC = −5 rad/s; the note printed
     '-5' with a hyphen."""
-    from graphmech.cli import render_scene
+    from graphmech.scene import render_scene
 
     svg, _ = render_scene(SCENES / "ic.fourbar_dead_centre.toml")
     assert "= −5 rad/s" in svg and "= -5 rad/s" not in svg
@@ -573,7 +573,7 @@ def test_a_negative_omega_on_the_sheet_has_a_minus_sign():
 
 def test_a_velocity_that_never_vanishes_is_said_so_on_the_sheet(tmp_path):
     """The parallelogram's v_C = ω·CD never vanishes: the note read "vC = 0 at φ₂ = " and nothing."""
-    from graphmech.cli import render_scene
+    from graphmech.scene import render_scene
 
     text = (SCENES / "ic.parallelogram.toml").read_text(encoding="utf-8")
     p = tmp_path / "par.toml"

@@ -62,7 +62,7 @@ class BalancingAnalysis:
 
 
 def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
-    p: BalancingProblem = scene.balancing
+    p: BalancingProblem = scene.problem
     q = QUANTITIES[p.type]
     names = list(scene.find) or list(DEFAULT_FIND[p.type])
     problems = []
@@ -77,7 +77,7 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
 
 def analyse_balancing(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> BalancingAnalysis:
     """Draw the polygons the scene needs and build its check table."""
-    p: BalancingProblem = scene.balancing
+    p: BalancingProblem = scene.problem
     names = requested(scene, extra_measured)
     an = BalancingAnalysis(scene, p, extra_measured=tuple(extra_measured))
     masses = list(p.masses)

@@ -1,1 +1,58 @@
-"""cam"""
+"""A disc cam (``[cam]``) drawn by inversion (反转法): the pitch curve and the working profile as
+the rollers' envelope, the s–δ, v–δ, a–δ diagrams, the largest pressure angle and any undercut,
+checked against the exact envelope solution.
+"""
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from graphmech.problems.cam.scene import parse_cam_scene
+from graphmech.problems.kind import Bench, Extra, Footer, Kind
+
+
+def _analyse(scene: Any, extra: Extra) -> Any:
+    from graphmech.problems.cam.check import analyse_cam
+
+    return analyse_cam(scene, extra)
+
+
+def _judge(an: Any, extra: Extra) -> list[Any]:
+    from graphmech.problems.cam.check import judge_cam
+
+    return judge_cam(an)
+
+
+def _sheet(scene: Any, footer: Footer) -> Any:
+    from graphmech.problems.cam.check import analyse_cam
+    from graphmech.problems.cam.figures import cam_sheet
+    from graphmech.problems.judging import finite
+    from graphmech.problems.reader import page_size
+
+    an = finite(analyse_cam(scene, (), estimates=False))  # a drawing needs no error estimates
+    sheet = cam_sheet(scene.title, an.cam, an.drawn, an.scales, list(scene.show), page_size(scene),
+                      roller_circles=scene.problem.roller_circles, marks=an.marks, footer=footer)
+    return sheet, list(an.warnings)
+
+
+def _extras(an: Any) -> dict[str, Any]:
+    return {"impacts": an.impacts, **({"divisions": an.divisions} if an.divisions else {})}
+
+
+def _bench(quick: bool) -> Bench:
+    from graphmech.problems.cam.bench import bench
+
+    return bench(quick)
+
+
+def _mixture(data: Mapping[str, Any]) -> tuple[str, str] | None:
+    if "flywheel" in data:
+        return ("flywheel", "a scene is a disc cam ([cam]) or a flywheel problem ([flywheel]), not both: "
+                            "put each in a scene of its own")
+    if "driver" in data:  # which of the two to read is anyone's guess
+        return ("cam", "a scene is a linkage ([driver]) or a disc cam ([cam]), not both: "
+                       "put the cam in a scene of its own")
+    return None
+
+
+KIND = Kind("cam", ("cam",), parse_cam_scene, _analyse, _judge, _sheet, _extras, bench=_bench, mixture=_mixture)

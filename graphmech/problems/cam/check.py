@@ -141,7 +141,7 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), 
 
 def _analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...], estimates: bool) -> CamAnalysis:
     estimated = _estimated if estimates else (lambda an, row: row)
-    cs = scene.cam
+    cs = scene.problem
     cam: DiscCam = cs.cam
     names = _requested(scene)
     asked = names + [n for _, n, _ in measured_entries(scene, extra_measured)]
@@ -225,10 +225,10 @@ def _requested(scene: Any) -> list[str]:
             continue
         if name not in CAM_QUANTITIES:
             problems.append((f"find[{k}]", f"unknown cam quantity {name!r}{close_names(name, CAM_QUANTITIES)}"))
-        elif scene.cam.cam.follower.contact == "flat" and name in ("r0_min", "rho_min_pitch", "rho_min_pitch_at"):
+        elif scene.problem.cam.follower.contact == "flat" and name in ("r0_min", "rho_min_pitch", "rho_min_pitch_at"):
             problems.append((f"find[{k}]", f"{name} has no meaning for a flat face (its pressure angle is 0 at any "
                                            "r0; its curvature is the working profile's: ask for rho_min_actual)"))
-        elif name == "r0_min" and scene.cam.cam.alpha_permissible is None:
+        elif name == "r0_min" and scene.problem.cam.alpha_permissible is None:
             problems.append((f"find[{k}]", "r0_min needs the permissible pressure angle: set [cam] alpha_permissible"))
         else:
             names.append(name)

@@ -451,5 +451,6 @@ def parse_cam_scene(
         measured=measured,
         precision_mm=precision,
         page=page,
-        cam=cam,
+        kind="cam",
+        problem=cam,
     )

@@ -14,18 +14,17 @@ draw, write the SVG text), no error.
 from __future__ import annotations
 
 import math
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from graphmech.accuracy import extrapolated
+from graphmech.accuracy import convergence_order, extrapolated
 from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage
 from graphmech.methods.full_cycle import cycle_positions, evaluate_cycle, finer_positions
 from graphmech.timing import best_time
 
-__all__ = ["CYCLE_N", "differentiation_records", "sheet_record", "cycle_notes"]
+__all__ = ["CYCLE_N", "bench", "cycle_notes", "differentiation_records"]
 
 #: Positions of the graphical-differentiation benchmark.
 CYCLE_N = (12, 24, 36, 72, 360, 3600)
@@ -91,21 +90,7 @@ def _extrapolated(finer: list[Any], n: int, pick: str) -> np.ndarray:
     return extrapolated(v2, v4, order=2)
 
 
-def sheet_record(repeat: int = 3) -> dict[str, Any]:
-    """The time to render the 12-position full-cycle sheet of the offset slider-crank."""
-    from graphmech.cli import render_scene
-
-    scene = Path(__file__).resolve().parents[3] / "figures" / "scenes" / "linkage.slider_crank_offset-cycle.toml"
-    secs = best_time(lambda: render_scene(scene), repeat)[0] if scene.exists() else math.nan
-    return {"method": "full-cycle-sheet", "case": "slider-crank-offset-12", "n": 12,
-            "seconds": secs if math.isfinite(secs) else 0.0, "max_rel_error": None,
-            "note": "render of figures/scenes/linkage.slider_crank_offset-cycle.toml" if math.isfinite(secs)
-            else "scene not found (an installed copy without figures/)"}
-
-
 def cycle_notes(records: list[dict[str, Any]]) -> list[str]:
-    from graphmech.bench import convergence_order
-
     out = []
     for case in dict.fromkeys(r["case"] for r in records if r["method"] == "graphical-differentiation"):
         rs = [r for r in records if r["case"] == case]
@@ -113,7 +98,10 @@ def cycle_notes(records: list[dict[str, Any]]) -> list[str]:
         big = max(rs, key=lambda r: r["n"])
         out.append(f"graphical differentiation {case}: " + ", ".join(f"{r['max_rel_error']:.1e} (N={r['n']})" for r in rs)
                    + f"; order {o['overall']:.2f}; N = {big['n']} in {big['seconds'] * 1e3:.2f} ms")
-    for r in records:
-        if r["method"] == "full-cycle-sheet":
-            out.append(f"full-cycle sheet, 12 positions ({r['case']}): rendered in {r['seconds'] * 1e3:.0f} ms")
     return out
+
+
+def bench(quick: bool = False) -> tuple[list[dict[str, Any]], list[str]]:
+    """Graphical differentiation of the drawn cycle against N, and the notes on its convergence."""
+    records = differentiation_records(repeat=2 if quick else 5)
+    return records, cycle_notes(records)

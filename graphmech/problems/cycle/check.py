@@ -140,7 +140,7 @@ def _kind(scene: Any, name: str) -> str:
             k in base for k in ("crank_rocker", "double_crank", "double_rocker", "change_point")):
         return "ranges"
     m = _DIAGRAM_NAME.fullmatch(base)
-    cy = scene.cycle.cycle
+    cy = scene.problem.cycle
     if m and cy is not None and m.group(2) in cy.diagrams:
         if m.group(1) in ("s", "psi") and m.group(3) is None:
             return "diagram"
@@ -155,9 +155,9 @@ def _wants(scene: Any, names: list[str]) -> dict[str, bool]:
     kinds = {_kind(scene, n) for n in names}
     show = scene.show
     return {"characteristics": "characteristics" in show or bool(kinds & {"char", "timing"})
-            or (scene.cycle.cycle is not None and scene.cycle.cycle.start == "extreme"),
+            or (scene.problem.cycle is not None and scene.problem.cycle.start == "extreme"),
             "ranges": "ranges" in kinds,
-            "cycle": scene.cycle.cycle is not None and (bool({"cycle", "paths", "diagrams", "velocity", "acceleration"}
+            "cycle": scene.problem.cycle is not None and (bool({"cycle", "paths", "diagrams", "velocity", "acceleration"}
                                                              & set(show)) or "diagram" in kinds)}
 
 
@@ -195,7 +195,7 @@ def _analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...]) ->
     assert isinstance(d, Crank)
     if wants["characteristics"]:
         _characteristics(an, linkage, mu_l)
-    if wants["ranges"] or (scene.cycle.characteristics.ranges and "characteristics" in scene.show):
+    if wants["ranges"] or (scene.problem.characteristics.ranges and "characteristics" in scene.show):
         from graphmech.methods.characteristics import fourbar_lengths
 
         try:
@@ -241,7 +241,7 @@ def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
     and leave out what the cycle has said already (a polygon that cannot be drawn)."""
     from graphmech.problems.linkage.sizes import position_text
 
-    if an.scene.cycle.cycle is None:
+    if an.scene.problem.cycle is None:
         return list(warnings)
     build = an.polygons.build
     link = an.scene.linkage.driver.link
@@ -375,7 +375,7 @@ def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
 
 def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
     scene = an.scene
-    spec = scene.cycle.cycle
+    spec = scene.problem.cycle
     angles = np.asarray(scene.positions.values, dtype=float)
     d = linkage.driver
     assert isinstance(d, Crank)
@@ -605,7 +605,7 @@ def _ch_values(an: CycleAnalysis) -> tuple[dict[str, tuple[float, float, float |
         out["psi"] = (math.degrees(dr.psi), math.degrees(ex.psi), None)
     if dr.stroke_mm is not None and ex.stroke is not None:
         out["stroke"] = (dr.stroke_mm * dr.mu_l, ex.stroke, dr.stroke_mm)
-    t_work = an.scene.cycle.characteristics.t_work
+    t_work = an.scene.problem.characteristics.t_work
     if t_work is not None:
         g, e = exact_ch.timing(dr.theta, t_work), exact_ch.timing(ex.theta, t_work)
         for k in TIMING:
@@ -637,7 +637,7 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
         return [_row(an, base, unit, g, e, drawn, an.scales["l"] if drawn is not None else 1.0)]
     if kind == "no_diagram":
         subject = _DIAGRAM_NAME.fullmatch(base).group(2)  # type: ignore[union-attr]
-        if scene.cycle.cycle is None:
+        if scene.problem.cycle is None:
             raise KeyError(f"{base} is read off a diagram of the full cycle: add a [cycle] table with "
                            f"diagrams = [{subject!r}]".replace("'", '"'))
         raise KeyError(f"{base} is read off the diagram of {subject}: add {subject} to [cycle] diagrams")

@@ -30,8 +30,7 @@ import numpy as np
 
 from graphmech.construction.graph import values_at
 from graphmech.problems.linkage.figures import display, mechanism_items, polygon_items
-from graphmech.problems.flywheel.figures import (AXIS_OVERRUN, NUMBER_SIZE, _moved, _phi_axis_numbers, count_every,
-                                                numbers_every)
+from graphmech.drawing.diagrams import AXIS_OVERRUN, NUMBER_SIZE, count_every, moved, numbers_every, phi_axis_numbers
 from graphmech.drawing.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
                                          Polyline, Primitive, Segment, Sheet, Slider, angle_arc)
 from graphmech.drawing.lettering import subscript
@@ -195,7 +194,7 @@ def _axes(xe: float, lo: float, hi: float, name: str, n: int, every: int, period
     labels = [Label(name, (0.0, hi + AXIS_OVERRUN), ((0.0, -1.0),), 3.2),
               Label("φ", (xe + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2),
               Label("O", (0.0, 0.0), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), 3.0)]
-    return items, labels + _phi_axis_numbers(x, every)
+    return items, labels + phi_axis_numbers(x, every)
 
 
 def _differentiation_items(diff: Any, values_at: np.ndarray, name: str, n: int, every: int, period: float,
@@ -255,10 +254,10 @@ def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
     v_hi = max(0.0, float(np.max(dg.velocity.derivative_mm)))
     v_lo = min(0.0, float(np.min(dg.velocity.derivative_mm)))
     dy_v = y - v_hi - AXIS_OVERRUN
-    out += [_moved(i, 0.0, dy_v) for i in v_items]
+    out += [moved(i, 0.0, dy_v) for i in v_items]
     a_hi = max(0.0, float(np.max(dg.acceleration.derivative_mm)))
     dy_a = dy_v + v_lo - 5.0 - STACK_GAP - a_hi - AXIS_OVERRUN - 2.0
-    out += [_moved(i, 0.0, dy_a) for i in a_items]
+    out += [moved(i, 0.0, dy_a) for i in a_items]
     return out
 
 
@@ -407,7 +406,7 @@ def _characteristics_notes(an: Any) -> tuple[str, ...]:
         out.append("γ = 90° throughout: the block drives the bar at right angles")
     else:
         out.append(f"γmin = {math.degrees(dr.gamma_min):.4g}° at φ = {math.degrees(dr.gamma_min_at):.4g}°")
-    t_work = an.scene.cycle.characteristics.t_work
+    t_work = an.scene.problem.characteristics.t_work
     if t_work is not None:
         work, back = math.pi + dr.theta, math.pi - dr.theta
         period = t_work * 2.0 * math.pi / work
@@ -454,7 +453,7 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
     (``paths`` is drawn in the ``cycle`` panel, or alone when ``cycle`` is not shown)."""
     panels: list[Panel] = []
     cyc = an.cycle
-    paths = an.scene.cycle.cycle.paths if an.scene.cycle.cycle is not None else ()
+    paths = an.scene.problem.cycle.paths if an.scene.problem.cycle is not None else ()
     for entry in show:
         if entry == "characteristics":
             head = {"fourbar": "Extreme positions, θ, ψ and γmin", "slider_crank": "Extreme positions, θ, H and γmin",
@@ -472,7 +471,7 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
             items = cycle_items(cyc, paths if "paths" in show else ())
             notes = [format_scale("l", an.scales["l"]), f"{cyc.n} positions, 1 at φ = "
                      f"{math.degrees(float(cyc.angles[0])):.6g}°" + (" (an extreme position)"
-                                                                     if an.scene.cycle.cycle.start == "extreme" else "")]
+                                                                     if an.scene.problem.cycle.start == "extreme" else "")]
             if _which(cyc.n):
                 notes.append(_which(cyc.n) + "; the paths through all")
             head = "Kinematic diagram at all positions" + (", paths of " + ", ".join(paths) if "paths" in show else "")

@@ -78,3 +78,8 @@ def efficiency_records(repeat: int = 5, ns: tuple[int, ...] = (10, 100, 1000),
         records.append({"method": "mass-radius-polygon", "case": "dynamic-random", "n": n, "seconds": secs,
                         "max_rel_error": err})
     return records
+
+
+def bench(quick: bool = False) -> tuple[list[dict[str, Any]], list[str]]:
+    """The efficiency polygons' and the mass-radius polygons' records (no notes)."""
+    return efficiency_records(repeat=2 if quick else 5), []

@@ -66,7 +66,7 @@ class EfficiencyAnalysis:
 
 def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
     """The row names the scene asks for, expanded over its directions; bad names → SceneError."""
-    p: EfficiencyProblem = scene.efficiency
+    p: EfficiencyProblem = scene.problem
     q = p.quantities()
     names = list(scene.find) or list(DEFAULT_FIND[p.type])
     multi = len(p.directions) > 1
@@ -112,7 +112,7 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
 
 def analyse_efficiency(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> EfficiencyAnalysis:
     """Carry out what the efficiency scene asks for and build its check table."""
-    p: EfficiencyProblem = scene.efficiency
+    p: EfficiencyProblem = scene.problem
     names = requested(scene, extra_measured)
     an = EfficiencyAnalysis(scene, p, extra_measured=tuple(extra_measured))
     if p.type == "chain":

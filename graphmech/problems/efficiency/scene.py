@@ -113,7 +113,7 @@ def parse_efficiency_scene(data: dict[str, Any], source: str, top: Reader, order
     --------
     >>> from graphmech.scene import parse_scene
     >>> s = parse_scene({"efficiency": {"type": "incline", "angle_deg": 30, "f": 0.1, "load_N": 1000}}, "x.toml")
-    >>> s.efficiency.directions, round(s.efficiency.angle, 12)
+    >>> s.problem.directions, round(s.problem.angle, 12)
     (('forward', 'reverse'), 0.523598775598)
     >>> parse_scene({"efficiency": {"type": "incline", "angle_deg": 95, "f": 0.1, "load_N": 1}}, "x.toml")
     Traceback (most recent call last):
@@ -153,8 +153,8 @@ def parse_efficiency_scene(data: dict[str, Any], source: str, top: Reader, order
     if problems or problem is None:
         raise_sorted(problems, data, order, "balancing" if balancing else "efficiency", source)
     return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
-                 precision_mm=precision, page=page, efficiency=None if balancing else problem,
-                 balancing=problem if balancing else None)
+                 precision_mm=precision, page=page, kind="balancing" if balancing else "efficiency",
+                 problem=problem)
 
 
 #: How close an angle may come to the ends of its range, degrees: a wedge of 1e-300° has no

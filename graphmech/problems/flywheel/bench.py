@@ -24,10 +24,13 @@ import time
 from functools import partial
 from typing import Any
 
+import numpy as np
+
 from graphmech.exact.flywheel import ExactMachine
 from graphmech.exact.true_motion import integrate, true_motion
 from graphmech.mechanisms.linkage import RRP, Crank, Guide, Linkage, LinkPoint
 from graphmech.mechanisms.machine import Machine, Mass, Motor, SliderLoad, Table
+from graphmech.accuracy import convergence_order, estimate_from_three
 from graphmech.timing import best_time
 
 __all__ = ["RTOLS", "SOLVERS", "compressor_machine", "true_motion_records"]
@@ -139,3 +142,65 @@ def true_motion_notes(records: list[dict[str, Any]]) -> list[str]:
             notes.append(f"RK45 needs {rk[0]['n']} steps for one stiff cycle = {rk[0]['n'] / radau['n']:.0f}× "
                          f"Radau's ({rk[0]['note']})")
     return notes
+
+
+#: Positions of the Wittenbauer benchmark (the course project's 12, then finer).
+WITTENBAUER_N = (12, 24, 36, 72, 360, 3600)
+
+
+def wittenbauer_records(repeat: int = 5, ns: tuple[int, ...] = WITTENBAUER_N) -> list[dict[str, Any]]:
+    """J_F of the compressor by the whole graphical pipeline at N positions against the exact J_F.
+
+    One run = the velocity polygons at N positions (Jп, Mп), graphical integration, the balancing
+    moment, ΔT, the Wittenbauer diagram and its tangents (or the energy indicator). The exact J_F
+    takes the tangents to the continuous curve (:class:`graphmech.exact.flywheel.ExactMachine`).
+    """
+    from graphmech.exact.flywheel import ExactMachine
+    from graphmech.methods.flywheel import design_flywheel
+    from graphmech.methods.reduction import reduce_to_crank
+
+    m = compressor_machine()
+    ex = ExactMachine(m)
+    refs = {"exact": ex.wittenbauer("exact").J_F, "book": ex.wittenbauer("book").J_F, "indicator": ex.indicator().J_F}
+    dw_ref = ex.indicator().delta_W
+    records = []
+    for case, ref in refs.items():
+        need = ("indicator",) if case == "indicator" else ("wittenbauer",)
+        form = "book" if case == "book" else "exact"
+        def design(n: int) -> Any:
+            r = reduce_to_crank(m, np.asarray(m.positions(n)), {"l": 0.002, "v": 0.05})
+            return design_flywheel(r.phi, r.J, r.M, cycle=m.cycle, omega_m=m.omega_m, delta=m.delta,
+                                   balance=m.balance, form=form, H_mm=40.0, need=need)
+
+        def j_f(d: Any) -> float:
+            return d.J_F_indicator if case == "indicator" else d.J_F
+
+        for n in ns:
+            secs, d = best_time(lambda: design(n), repeat, 1)
+            got = j_f(d)
+            # what the method says of its own error: the same pipeline at 2N and 4N (not timed)
+            estimate = estimate_from_three(got, j_f(design(2 * n)), j_f(design(4 * n))) / abs(got)
+            records.append({"method": "wittenbauer" if case != "indicator" else "energy-indicator",
+                            "case": f"compressor-{case}", "n": n, "seconds": secs,
+                            "max_rel_error": abs(got - ref) / abs(ref), "error_estimate": estimate,
+                            "J_F": got, "J_F_exact": ref,
+                            "DeltaW_max_rel_error": abs(d.dT_max - d.dT_min - dw_ref) / dw_ref})
+    return records
+
+
+def _flywheel_notes(records: list[dict[str, Any]]) -> list[str]:
+    out = []
+    for case in dict.fromkeys(r["case"] for r in records if r["method"] in ("wittenbauer", "energy-indicator")):
+        rs = [r for r in records if r["case"] == case]
+        o = convergence_order(rs)
+        big = max(rs, key=lambda r: r["n"])
+        out.append(f"{rs[0]['method']} {case}: J_F error " + ", ".join(f"{r['max_rel_error']:.1e} (N={r['n']})" for r in rs)
+                   + f"; order {o['overall']:.2f}; N = {big['n']} in {big['seconds'] * 1e3:.1f} ms (target < 200 ms)")
+    return out
+
+
+def bench(quick: bool = False) -> tuple[list[dict[str, Any]], list[str]]:
+    """J_F by the Wittenbauer diagram and the energy indicator against N, and the true motion's
+    integrators; the notes on their convergence."""
+    records = wittenbauer_records(repeat=2 if quick else 5)
+    return records + true_motion_records(quick=quick), _flywheel_notes(records)

@@ -111,7 +111,7 @@ class FlywheelAnalysis:
 
     def braking_summary(self) -> dict[str, Any]:
         """The run-down: stopping time against the required one (``ok`` None when none is required)."""
-        limit = self.scene.flywheel.braking.time_limit
+        limit = self.scene.problem.braking.time_limit
         t = float(self.braking.t)
         return {"t_stop": t, "time_limit": limit, "ok": None if limit is None else bool(t <= limit)}
 
@@ -122,7 +122,7 @@ def split(name: str) -> tuple[str, str | None]:
 
 
 def _needs(scene: Any, names: list[str]) -> set[str]:
-    fw = scene.flywheel
+    fw = scene.problem
     needs: set[str] = set()
     for n in names:
         base, _ = split(n)
@@ -150,7 +150,7 @@ def _needs(scene: Any, names: list[str]) -> set[str]:
 
 def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
     """The quantity names the scene asks for, validated (problems raised as one SceneError)."""
-    fw = scene.flywheel
+    fw = scene.problem
     names = list(scene.find) or ([] if fw.braking is not None and not fw.machine.loads else list(DEFAULT_FIND))
     if fw.braking is not None and "t_stop" not in names:
         names.append("t_stop")
@@ -185,7 +185,7 @@ def analyse_flywheel(scene: Any, extra_measured: tuple[tuple[str, float], ...] =
 
 
 def _analyse(scene: Any, extra: tuple[tuple[str, float], ...], estimates: bool) -> FlywheelAnalysis:
-    fw = scene.flywheel
+    fw = scene.problem
     machine: Machine = fw.machine
     names = requested(scene, extra)
     asked = names + [x for _, x, _ in measured_entries(scene, extra)]
@@ -274,7 +274,7 @@ def _with_show(scene: Any) -> Any:
 def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
     from graphmech.methods.flywheel import WrongBalance, design_flywheel
 
-    fw, machine = an.scene.flywheel, an.machine
+    fw, machine = an.scene.problem, an.machine
     scales = {k: float(v) for k, v in an.scene.scales.items() if k in ("phi", "M", "J", "T")}
     an.stated |= set(scales)
     want = tuple(x for x in ("wittenbauer", "indicator") if x in needs)
@@ -306,7 +306,7 @@ def _wrong_balance(balance: str, work: float) -> str:
 
 def _design_J_F(an: FlywheelAnalysis) -> float:
     d = an.design
-    if an.scene.flywheel.method == "wittenbauer":
+    if an.scene.problem.method == "wittenbauer":
         return float(d.J_F)
     return float(d.J_F_indicator)
 
@@ -314,7 +314,7 @@ def _design_J_F(an: FlywheelAnalysis) -> float:
 def _motion(an: FlywheelAnalysis) -> None:
     from graphmech.exact.true_motion import true_motion
 
-    spec = an.scene.flywheel.true_motion
+    spec = an.scene.problem.true_motion
     solver = spec.solver if spec is not None else "Radau"
     rtol = spec.rtol if spec is not None else 1e-10
     ex = _exact(an)
@@ -337,7 +337,7 @@ def _motion(an: FlywheelAnalysis) -> None:
     got = an.motion.delta
     if got > d * (1 + 1e-3):
         an.warnings.append(
-            f"the flywheel designed from {an.scene.flywheel.positions} positions (J_F = {J_F:.6g} kg·m²) gives "
+            f"the flywheel designed from {an.scene.problem.positions} positions (J_F = {J_F:.6g} kg·m²) gives "
             f"δ = {got:.6g} in the true motion, above the required {d:g} ({(got / d - 1) * 100:+.2f} %): "
             "use more positions")
 
@@ -345,7 +345,7 @@ def _motion(an: FlywheelAnalysis) -> None:
 def _braking(an: FlywheelAnalysis) -> None:
     from graphmech.exact.true_motion import T_STOP_MIN, braking_time
 
-    fw = an.scene.flywheel
+    fw = an.scene.problem
     from graphmech.problems.flywheel.braking_figures import draw_rundown
 
     b, w0 = fw.braking, an.machine.omega_m
@@ -423,9 +423,9 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
             return math.degrees(float(an.phi[kk])), math.degrees(x.phi_max if top else x.phi_min), None, 1.0, False
         g = float(d.energy_mm[kk]) * mu_T
         return g, float(x.maximum if top else x.minimum), g / mu_T, mu_T, False
-    if base in ("k", "l", "psi_max", "psi_min", "J_F_wittenbauer") or (base == "J_F" and an.scene.flywheel.method == "wittenbauer"):
+    if base in ("k", "l", "psi_max", "psi_min", "J_F_wittenbauer") or (base == "J_F" and an.scene.problem.method == "wittenbauer"):
         w = d.wittenbauer
-        t = ex.wittenbauer(an.scene.flywheel.tangents)
+        t = ex.wittenbauer(an.scene.problem.tangents)
         ill = float(getattr(w, "angle_between_deg", 90.0)) < TANGENTS_APART_DEG
         if base in ("k", "l"):
             mm = float(w.k_mm if base == "k" else w.l_mm)
@@ -445,7 +445,7 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
         return float(d.J_F_indicator), float(ind.J_F), None, mu_T / (wm * wm * delta), False
     if base in ("omega_max", "omega_min", "n_max", "n_min"):
         hi = base.endswith("max")
-        if an.scene.flywheel.tangents == "book":
+        if an.scene.problem.tangents == "book":
             w = wm * math.sqrt(1 + delta if hi else 1 - delta)
         else:
             w = wm * (1 + delta / 2 if hi else 1 - delta / 2)
@@ -498,7 +498,7 @@ def _estimate(an: FlywheelAnalysis, needs: set[str]) -> None:
     rows = [(k, r) for k, r in enumerate(an.rows) if split(r.name)[0] not in CONSTRUCTED]
     if not rows:
         return
-    n = an.scene.flywheel.positions
+    n = an.scene.problem.positions
     basis = f"{n} positions"
     finer: dict[int, FlywheelAnalysis] = {}
 
@@ -582,7 +582,7 @@ def _between_positions(an: FlywheelAnalysis, base: str) -> float:
         return lo
     if base == "DeltaW_max":
         return hi - lo
-    if base == "J_F_indicator" or (base == "J_F" and an.scene.flywheel.method == "indicator"):
+    if base == "J_F_indicator" or (base == "J_F" and an.scene.problem.method == "indicator"):
         return (hi - lo) * per_J_F
     w = d.wittenbauer
     x, y = np.asarray(w.x_mm, dtype=float), np.asarray(w.y_mm, dtype=float)

@@ -35,7 +35,6 @@ ordinates and carried lines are thinned to a readable count.
 """
 from __future__ import annotations
 
-import dataclasses
 import math
 from typing import Sequence
 
@@ -47,13 +46,20 @@ from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, Circle, Label, Pa
                                          Segment, Sheet)
 from graphmech.render.style import DEFAULT
 from graphmech.scales import PAPER, format_scale, round_scale
+from graphmech.drawing.diagrams import (
+    AXIS_OVERRUN,
+    NUMBER_CLEARANCE,
+    NUMBER_SIZE,
+    count_every,
+    moved,
+    numbers_every,
+    phi_axis_numbers,
+)
 
 #: The panels a flywheel sheet can show, in their order on the sheet.
 PANELS = ("moment", "work", "energy", "inertia", "wittenbauer", "indicator")
 #: Drawn in one panel with the Wittenbauer diagram when it is shown.
 BESIDE_WITTENBAUER = ("energy", "inertia")
-#: Font size of the position numbers, and the least free distance between two of them, mm.
-NUMBER_SIZE, NUMBER_CLEARANCE = 2.8, 1.2
 #: At most this many numbered points on the Wittenbauer curve, rays from the pole, and lines
 #: carried across to the Wittenbauer diagram.
 MOST_NUMBERS, MOST_RAYS, MOST_CARRIED = 36, 24, 24
@@ -61,11 +67,6 @@ MOST_NUMBERS, MOST_RAYS, MOST_CARRIED = 36, 24, 24
 MOST_ORDINATES = 48
 #: Points of the Wittenbauer curve get a dot up to this many positions.
 MOST_DOTS = 360
-#: The steps numbering and thinning use: every k-th position, k one of these.
-NICE_STEPS = tuple(int(m * 10 ** e) for e in range(6) for m in (1, 2, 3, 4, 5, 6, 8)
-                   if float(m * 10 ** e).is_integer()) + (10 ** 6,)
-#: How far the axes run past what they carry, mm.
-AXIS_OVERRUN = 7.0
 #: Radius of a dot marking a point (drawn with the result pen: a solid dot), mm.
 DOT = 0.3
 #: The Jп(φ) diagram's φ axis is about this long, mm (its μφ′ a round number of °/mm).
@@ -94,40 +95,10 @@ TITLES = {
     "indicator": "Energy indicator diagram",
 }
 
-_BELOW = ((0.0, 1.0), (1.0, 0.0), (-1.0, 0.0))  # avoid: a number under a horizontal axis
 _LEFT = ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0))  # … left of a vertical one
 
 
 # ----------------------------------------------------------------------------- helpers
-def nice_step(least: float) -> int:
-    """The smallest of 1, 2, 3, 4, 5, 6, 8, 10, 20 … that is ≥ ``least``.
-
-    >>> nice_step(1.0), nice_step(2.5), nice_step(7), nice_step(99.5)
-    (1, 3, 8, 100)
-    """
-    for k in NICE_STEPS:
-        if k >= least - 1e-12:
-            return k
-    return NICE_STEPS[-1]
-
-
-def numbers_every(n: int, spacing_mm: float, size: float = NUMBER_SIZE) -> int:
-    """Number every k-th of ``n`` positions ``spacing_mm`` apart so the numbers stand clear.
-
-    >>> numbers_every(12, 12.0), numbers_every(36, 4.0), numbers_every(3600, 0.04)
-    (1, 2, 300)
-    """
-    need = text_box_size(str(n), size)[0] + 2.0 * NUMBER_CLEARANCE
-    return nice_step(need / spacing_mm) if spacing_mm > 0 else n
-
-
-def count_every(n: int, most: int) -> int:
-    """Every k-th of ``n`` so that at most ``most`` are taken (k a nice step).
-
-    >>> count_every(12, 36), count_every(48, 36), count_every(3600, 36)
-    (1, 2, 100)
-    """
-    return nice_step(n / most)
 
 
 def wittenbauer_every(x: np.ndarray, y: np.ndarray, size: float = NUMBER_SIZE) -> int:
@@ -158,32 +129,8 @@ def _pts(x: np.ndarray, y: np.ndarray) -> tuple[XY, ...]:
     return tuple(zip(np.asarray(x, dtype=float).tolist(), np.asarray(y, dtype=float).tolist()))
 
 
-def _moved(item: Primitive, dx: float, dy: float) -> Primitive:
-    """The item translated by (dx, dy) mm."""
-    def mv(p: XY) -> XY:
-        return (p[0] + dx, p[1] + dy)
-    if isinstance(item, (Segment, Arrow)):
-        return dataclasses.replace(item, p0=mv(item.p0), p1=mv(item.p1))
-    if isinstance(item, (ArcArrow, Circle)):
-        return dataclasses.replace(item, center=mv(item.center))
-    if isinstance(item, Polyline):
-        return dataclasses.replace(item, points=tuple(mv(p) for p in item.points))
-    if isinstance(item, Label):
-        return dataclasses.replace(item, anchor=mv(item.anchor))
-    raise TypeError(f"cannot move {item!r}")
-
-
 def _split(items: Sequence[Primitive]) -> tuple[list[Primitive], list[Label]]:
     return [i for i in items if not isinstance(i, Label)], [i for i in items if isinstance(i, Label)]
-
-
-def _phi_axis_numbers(x: np.ndarray, every: int, y: float = 0.0) -> list[Label]:
-    """Numbers 1 … N at the positions (every k-th) and 1 again at the cycle's end."""
-    n = x.size - 1
-    out = [Label(str(k + 1), (float(x[k]), y), _BELOW, NUMBER_SIZE, italic=False) for k in range(0, n, every)]
-    if n % every == 0:
-        out.append(Label("1", (float(x[n]), y), _BELOW, NUMBER_SIZE, italic=False))
-    return out
 
 
 def _ordinate_positions(n: int, every: int) -> range:
@@ -205,7 +152,7 @@ def _diagram(x: np.ndarray, y: np.ndarray, every: int, name: str, *, curve_role:
     labels = [Label(name, (0.0, hi + AXIS_OVERRUN), ((0.0, -1.0),), 3.2),
               Label("φ", (float(x[-1]) + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2),
               Label("O", (0.0, 0.0), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), 3.0)]
-    return items, labels + _phi_axis_numbers(x, every)
+    return items, labels + phi_axis_numbers(x, every)
 
 
 def _every(design: FlywheelDesign) -> int:
@@ -492,15 +439,15 @@ def _beside(design: FlywheelDesign, members: Sequence[str]) -> list[Primitive]:
         xe = design.moment.x_mm
         dx = -(GAP_LEFT + float(xe[-1]) + AXIS_OVERRUN)
         it, lb = _split(energy_items(design))
-        items += [_moved(i, dx, 0.0) for i in it]
-        labels += [_moved(i, dx, 0.0) for i in lb]  # type: ignore[misc]
+        items += [moved(i, dx, 0.0) for i in it]
+        labels += [moved(i, dx, 0.0) for i in lb]  # type: ignore[misc]
         items += [Segment((dx + float(xe[k]), float(y[k])), (float(x[k]), float(y[k])), "construction")
                   for k in carried if abs(float(x[k]) - dx - float(xe[k])) > 1e-9]
     if "inertia" in members:
         dy = _window(design)[2] - 2.0 - GAP_BELOW
         it, lb = _split(inertia_items(design))
-        items += [_moved(i, 0.0, dy) for i in it]
-        labels += [_moved(i, 0.0, dy) for i in lb]  # type: ignore[misc]
+        items += [moved(i, 0.0, dy) for i in it]
+        labels += [moved(i, 0.0, dy) for i in lb]  # type: ignore[misc]
         mu = inertia_phi_scale(design)
         items += [Segment((float(x[k]), dy - float(design.phi[k]) / mu), (float(x[k]), float(y[k])), "construction")
                   for k in carried]

@@ -907,8 +907,8 @@ def parse_flywheel_scene(
     ...                  "load": [{"type": "crank", "phi_deg": [0, 30, 60, 180],
     ...                            "moment_Nm": [0, 150, 150, 0]}]},
     ... }, "engine.toml")
-    >>> machine = scene.flywheel.machine
-    >>> machine.linkage is None, machine.delta, round(machine.cycle, 6), scene.flywheel.positions
+    >>> machine = scene.problem.machine
+    >>> machine.linkage is None, machine.delta, round(machine.cycle, 6), scene.problem.positions
     (True, 0.0125, 3.141593, 12)
     >>> machine.loads[0].table.y
     (0.0, 150.0, 150.0, 0.0)
@@ -1000,7 +1000,8 @@ def parse_flywheel_scene(
         measured=measured,
         precision_mm=precision,
         page=page,
-        flywheel=flywheel,
+        kind="flywheel",
+        problem=flywheel,
     )
 
 

@@ -115,3 +115,9 @@ def kinetostatic_notes(records: list[dict[str, Any]]) -> list[str]:
                        f"{r['polygon_vs_matrix']:.1e}{lever}"
                        + (f"; {r['rounds']} rounds of successive approximation" if r["rounds"] else ""))
     return out
+
+
+def bench(quick: bool = False) -> tuple[list[dict[str, Any]], list[str]]:
+    """The kinetostatics' records over a 360-position cycle and the notes comparing the methods."""
+    records = kinetostatic_records(quick=quick)
+    return records, kinetostatic_notes(records)

@@ -88,7 +88,7 @@ class ForceAnalysis:
 
     def friction_summary(self) -> dict[str, Any]:
         return {"iterations": self.solution.iterations,
-                "tolerance_N": self.scene.forces.model.tolerance}
+                "tolerance_N": self.scene.problem.model.tolerance}
 
 
 #: Factors by which the chosen scales are made coarser, in turn, until the force sheet fits its
@@ -154,7 +154,7 @@ def _spill(fa: ForceAnalysis) -> float:
 def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...],
                     forced: dict[str, float]) -> ForceAnalysis:
     """The analysis at the scene's scales, those in ``forced`` imposed (still reported as chosen)."""
-    model = scene.forces.model
+    model = scene.problem.model
     measured = [(n, v) for n, v in scene.measured if not is_force_name(n)]
     extra_kin = tuple((n, v) for n, v in extra_measured if not is_force_name(n))
     force_measured = [(f"measured.{n}", n, v) for n, v in scene.measured if is_force_name(n)] + [
@@ -162,7 +162,7 @@ def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...],
     kin_find = tuple(n for n in scene.find if not is_force_name(n))
     kin_show = tuple(p for p in scene.show if p in ("mechanism", "velocity", "acceleration")) or ("mechanism",)
     kin_forced = {k: v for k, v in forced.items() if k in ("l", "v")}
-    plain = replace(scene, find=kin_find, show=kin_show, measured=tuple(measured), forces=None,
+    plain = replace(scene, find=kin_find, show=kin_show, measured=tuple(measured), kind="linkage", problem=None,
                     scales={**scene.scales, **kin_forced})
     an = analyse(plain, extra_kin)
     an.stated = an.stated - set(kin_forced)  # imposed to fit the sheet, not stated by the scene
@@ -210,14 +210,14 @@ def _choose_force_scale(fa: ForceAnalysis, forced: float | None = None) -> None:
                   default=0.0)
     for il in fa.solution.inertia.values():
         largest = max(largest, float(np.max(np.abs(il.force[fa.kin.valid]), initial=0.0)))
-    mu = fa.scene.forces.mu_F
+    mu = fa.scene.problem.mu_F
     if mu is None:
         fa.scales["F"] = forced or (round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0)
         return
     fa.scales["F"], fa.stated = mu, fa.stated | {"F"}
     drawn = largest / mu
     if largest > 0 and not POLYGON_RANGE_MM[0] <= drawn <= POLYGON_RANGE_MM[1]:
-        raise SceneError([(fa.scene.forces.mu_F_path, f"μF = {mu:g} N/mm draws the largest force {drawn:.3g} mm long: choose "
+        raise SceneError([(fa.scene.problem.mu_F_path, f"μF = {mu:g} N/mm draws the largest force {drawn:.3g} mm long: choose "
                                           f"μF so that it is {POLYGON_RANGE_MM[0]:g} … {POLYGON_RANGE_MM[1]:g} mm "
                                           f"(about {round_scale(largest / POLYGON_ROOM_MM):g} N/mm)")],
                          fa.scene.source)
@@ -357,7 +357,7 @@ def _known(fa: ForceAnalysis, base: str) -> str | None:
     if m.group("gi") and not any(g.slider == m.group("gj") and g.frame == m.group("gi") for g in fa.solution.guides):
         guides = ", ".join(f"M_{g.frame}{g.slider}, e_{g.frame}{g.slider}" for g in fa.solution.guides) or "none"
         return f"no slider {m.group('gj')} on a guide of link {m.group('gi')} (guide moments: {guides})"
-    if base in ("eta", "M_b0", "F_b0") and not fa.scene.forces.model.has_friction:
+    if base in ("eta", "M_b0", "F_b0") and not fa.scene.problem.model.has_friction:
         return f"{base} compares with friction: this scene has none"
     slider_driven = fa.solution.balancing_force is not None
     if base.startswith("M_b") and slider_driven:
@@ -383,7 +383,7 @@ def _rows(fa: ForceAnalysis) -> None:
     # with friction, the same quantities one and two rounds earlier: how far the iteration still moves them
     before = None if sol.previous is None else replace(fa, solution=sol.previous)
     earlier = None if before is None else replace(fa, solution=sol.previous.previous)  # type: ignore[union-attr]
-    basis = f"friction: {sol.iterations} rounds to {fa.scene.forces.model.tolerance:g} N"
+    basis = f"friction: {sol.iterations} rounds to {fa.scene.problem.model.tolerance:g} N"
     for k, raw in enumerate(fa.scene.find):
         base, at = split_name(raw)
         if not is_force_name(base):
@@ -506,7 +506,7 @@ def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Any:
                              kin_show, page_size(scene)).panels
     if not drawn:
         return Sheet(scene.title, tuple(head), page_size(scene), footer)
-    return force_sheet(scene.title, b, fa.kin, fa.solution, scene.forces.model, fa.lever, fa.scales["F"],
+    return force_sheet(scene.title, b, fa.kin, fa.solution, scene.problem.model, fa.lever, fa.scales["F"],
                        drawn, 0, position_text(b, an.labels[0]), page_size(scene), head, footer)
 
 

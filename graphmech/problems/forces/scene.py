@@ -339,7 +339,7 @@ def parse_forces_scene(data: dict[str, Any], source: str, top: Reader, order: Ma
     ...                "angle": 0, "omega_rad_s": 10},
     ...     "forces": {"force": [{"link": "1", "point": "B", "force_N": 50, "angle": -90}]},
     ... }, "crank.toml")
-    >>> scene.forces.model.forces[0].magnitude, scene.show
+    >>> scene.problem.model.forces[0].magnitude, scene.show
     (50.0, ('forces', 'force_polygons'))
     """
     problems = top.problems
@@ -367,7 +367,8 @@ def parse_forces_scene(data: dict[str, Any], source: str, top: Reader, order: Ma
         measured=measured,
         precision_mm=precision,
         page=page,
-        forces=forces,
+        kind="forces",
+        problem=forces,
     )
 
 

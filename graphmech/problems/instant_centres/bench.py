@@ -31,7 +31,7 @@ def _best(fn: Callable[[], Any], repeat: int) -> float:
 
 
 def ic_records(quick: bool = False) -> list[dict[str, Any]]:
-    from graphmech.bench import fourbar
+    from graphmech.problems.linkage.bench import fourbar
     from graphmech.exact.linkage import solve
     from graphmech.mechanisms.topology import Pair, Topology, mobility, structure
     from graphmech.methods.instant_centres import instant_centres

@@ -193,13 +193,13 @@ def circle_panel(name: str, ic: InstantCentres, row: int | None = None) -> Panel
 def ic_panels(an: Any, page: tuple[float, float], first_row: int = 0) -> list[Panel]:
     """The instant-centre panels of every constructed position of a checked linkage scene."""
     from graphmech.problems.linkage.sizes import position_text
-    from graphmech.problems.linkage.figures import _guide_spans
+    from graphmech.problems.linkage.figures import guide_spans
     from graphmech.methods.instant_centres import (common_link, least_speed_on_line, point_names, positions_mm,
                                                    split_line)
 
     ica = an.instant_centres
     build = an.build
-    spans = _guide_spans(build.linkage, build, an.solutions)
+    spans = guide_spans(build.linkage, build, an.solutions)
     rows = max(1, sum(1 for s in an.solutions if s is not None))
     room = (page[0] * 0.5, max((page[1] - 40.0) / rows - 60.0, 30.0))  # less title, notes, gaps
     least = []

@@ -207,7 +207,7 @@ def linkage_sheet(title: str, linkage: Linkage, build: Any, plan: Any, solutions
                   show: Sequence[str], page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
     """The whole sheet: for each position, the panels the scene shows, side by side."""
     panels: list[Panel] = []
-    spans = _guide_spans(linkage, build, solutions)
+    spans = guide_spans(linkage, build, solutions)
     for i, sol in enumerate(solutions):
         if sol is None:
             continue
@@ -224,7 +224,7 @@ def linkage_sheet(title: str, linkage: Linkage, build: Any, plan: Any, solutions
     return Sheet(title, tuple(panels), page, footer)
 
 
-def _guide_spans(linkage: Linkage, build: Any, solutions: Sequence[Any]) -> dict[int, tuple[float, float]]:
+def guide_spans(linkage: Linkage, build: Any, solutions: Sequence[Any]) -> dict[int, tuple[float, float]]:
     """The stretch of each guide its slider covers over the drawn positions (mm along the guide)."""
     spans: dict[int, tuple[float, float]] = {}
     guides = [(-1, linkage.driver.guide, linkage.driver.point)] if isinstance(linkage.driver, SliderInput) else []

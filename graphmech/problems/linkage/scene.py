@@ -32,7 +32,6 @@ from graphmech.problems.reader import (
     POINT_NAME,
     Reader,
     Scene,
-    TOP_KEYS,
     all_valid,
     file_order,
     read_header,
@@ -545,7 +544,7 @@ def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order
     if "cycle" in data or "characteristics" in data or any(s in CYCLE_SHOW_CHOICES for s in show):
         cycle, positions = read_cycle(top, data, show, linkage, positions)
     measured = read_measured(top, positions.labels if positions else None)
-    precision, page = read_tail(top, TOP_KEYS + ("cycle", "characteristics"))
+    precision, page = read_tail(top)
     if problems or linkage is None:
         problems.sort(key=lambda p: file_order(p, order))
         raise SceneError(problems or [("driver", "invalid")], source)
@@ -560,5 +559,6 @@ def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order
         measured=measured,
         precision_mm=precision,
         page=page,
-        cycle=cycle,
+        kind="linkage" if cycle is None else "cycle",
+        problem=cycle,
     )

@@ -1,1 +1,42 @@
-"""structure"""
+"""Mobility and structure (``[structure]``): the Grübler–Kutzbach count against the rank of the
+constraints' Jacobian (redundant constraints), the split into drivers and Assur groups, the
+mechanism's class; the links, pairs and groups drawn.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from graphmech.problems.kind import Extra, Footer, Kind
+from graphmech.problems.structure.scene import parse_structure_scene
+
+
+def _analyse(scene: Any, extra: Extra) -> Any:
+    from graphmech.problems.structure.check import analyse_structure
+
+    return analyse_structure(scene)
+
+
+def _judge(an: Any, extra: Extra) -> list[Any]:
+    from graphmech.problems.structure.check import judge_structure
+
+    return judge_structure(an, extra)
+
+
+def _sheet(scene: Any, footer: Footer) -> Any:
+    from graphmech.problems.judging import finite
+    from graphmech.problems.reader import page_size
+    from graphmech.problems.structure.check import analyse_structure
+    from graphmech.problems.structure.figures import structure_sheet
+
+    an = finite(analyse_structure(scene))
+    return structure_sheet(scene.title, an, page_size(scene), footer), list(an.warnings)
+
+
+def _lines(an: Any) -> list[str]:
+    from graphmech.problems.structure.check import text_summary
+
+    return text_summary(an)
+
+
+KIND = Kind("structure", ("structure",), parse_structure_scene, _analyse, _judge, _sheet,
+            lambda an: {"structure": an.summary()}, _lines)

@@ -79,7 +79,7 @@ def analyse_structure(scene: Any) -> StructureAnalysis:
     """Count, rank and decompose what the scene asks for."""
     from graphmech.problems.judging import Row
 
-    ss = scene.structure
+    ss = scene.problem
     an = StructureAnalysis(scene, None, None, scales=dict(scene.scales))
     for c in ss.cases:
         f = grubler(c.n, c.pl, c.ph, c.p_redundant, c.F_local)

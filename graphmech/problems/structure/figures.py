@@ -134,7 +134,7 @@ def structure_sheet(title: str, an: Any, page: tuple[float, float], footer: tupl
     panels: list[Panel] = []
     if an.cases:
         panels.append(cases_panel(an.cases))
-    ss = an.scene.structure
+    ss = an.scene.problem
     m: Mobility | None = an.mobility
     if ss.topology is not None and m is not None:
         notes = [formula(m)]

@@ -192,8 +192,8 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: Reader, order:
     >>> s = parse_scene({"structure": {"frame": "1", "drivers": ["2"], "pair": [
     ...     {"kind": "R", "links": ["1", "2"]}, {"kind": "R", "links": ["2", "3"]},
     ...     {"kind": "R", "links": ["3", "4"]}, {"kind": "R", "links": ["4", "1"]}]}}, "fourbar.toml")
-    >>> t = s.structure.topology
-    >>> t.links, t.n, t.pl, s.structure.geometry
+    >>> t = s.problem.topology
+    >>> t.links, t.n, t.pl, s.problem.geometry
     (('2', '3', '4'), 3, 4, False)
     """
     problems = top.problems
@@ -221,7 +221,7 @@ def parse_structure_scene(data: dict[str, Any], source: str, top: Reader, order:
     if problems or structure is None:
         raise_sorted(problems, data, order, "structure", source)
     return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
-                 precision_mm=precision, page=page, structure=structure)
+                 precision_mm=precision, page=page, kind="structure", problem=structure)
 
 
 __all__ = ["Case", "STRUCTURE_QUANTITIES", "STRUCTURE_SHOW_CHOICES", "StructureScene", "parse_structure_scene"]
