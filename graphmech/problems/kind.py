@@ -6,19 +6,20 @@ A kind (a linkage, a disc cam, a flywheel …) lives in its own package
 ``KIND``; :mod:`graphmech.problems` lists the kinds once, and everything else — the scene
 loader, ``check``, ``render``, ``bench`` — goes through that list.
 
-A kind's ``__init__`` imports only its scene reader: the check, figures and bench are imported
-by the record's functions when first called, so that starting graphmech does not load the
-code (and scipy, shapely) of every kind.
+A kind's ``__init__`` imports nothing of the kind's own: its reader, check, figures and bench
+are imported by the record's functions when first called, so that starting graphmech does not
+load the code (and scipy, shapely) of every kind — only that of the scene at hand.
 """
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from graphmech.drawing.primitives import Sheet
-from graphmech.problems.judging import Verdict, refuse_non_finite
-from graphmech.problems.reader import Reader, Scene
+if TYPE_CHECKING:  # for the annotations only: the registry stays light at start-up
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.problems.judging import Verdict
+    from graphmech.problems.reader import Reader, Scene
 
 #: Measured values given on the command line: (name, value).
 Extra = tuple[tuple[str, float], ...]
@@ -74,6 +75,8 @@ class Kind:
     def check(self, scene: Scene[Any], extra: Extra = ()) -> tuple[Any, list[Verdict], dict[str, Any], list[str]]:
         """Analyse a scene and judge its measured values: (analysis, verdicts, JSON extras, text
         lines). Whatever the analysis finds is finite, or refused in words."""
+        from graphmech.problems.judging import refuse_non_finite
+
         an = self.analyse(scene, tuple(extra))
         refuse_non_finite(an.rows)
         return an, self.judge(an, tuple(extra)), self.extras(an), self.lines(an)

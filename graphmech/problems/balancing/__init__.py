@@ -6,8 +6,13 @@ from __future__ import annotations
 
 from typing import Any
 
-from graphmech.problems.efficiency.scene import parse_efficiency_scene
 from graphmech.problems.kind import Extra, Footer, Kind
+
+
+def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+    from graphmech.problems.efficiency.scene import parse_efficiency_scene
+
+    return parse_efficiency_scene(data, source, top, order)
 
 
 def _analyse(scene: Any, extra: Extra) -> Any:
@@ -32,4 +37,4 @@ def _sheet(scene: Any, footer: Footer) -> Any:
 
 
 # its records ("mass-radius-polygon") are timed with the efficiency kind's, as one bench of forces alone
-KIND = Kind("balancing", ("balancing",), parse_efficiency_scene, _analyse, _judge, _sheet)
+KIND = Kind("balancing", ("balancing",), _read, _analyse, _judge, _sheet)

@@ -7,8 +7,13 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from graphmech.problems.cam.scene import parse_cam_scene
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
+
+
+def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+    from graphmech.problems.cam.scene import parse_cam_scene
+
+    return parse_cam_scene(data, source, top, order)
 
 
 def _analyse(scene: Any, extra: Extra) -> Any:
@@ -55,4 +60,4 @@ def _mixture(data: Mapping[str, Any]) -> tuple[str, str] | None:
     return None
 
 
-KIND = Kind("cam", ("cam",), parse_cam_scene, _analyse, _judge, _sheet, _extras, bench=_bench, mixture=_mixture)
+KIND = Kind("cam", ("cam",), _read, _analyse, _judge, _sheet, _extras, bench=_bench, mixture=_mixture)

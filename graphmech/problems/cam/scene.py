@@ -15,9 +15,9 @@ from graphmech.mechanisms.cam import (
     Segment,
     TranslatingFollower,
 )
-from graphmech.problems.linkage.scene import LINKAGE_KEYS
 from graphmech.problems.reader import MAX_TABLE_POINTS
 from graphmech.problems.reader import (
+    LINKAGE_KEYS,
     MISSING,
     Reader,
     Scene,

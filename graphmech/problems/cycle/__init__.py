@@ -10,7 +10,12 @@ from __future__ import annotations
 from typing import Any
 
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
-from graphmech.problems.linkage.scene import parse_linkage_scene
+
+
+def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+    from graphmech.problems.linkage.scene import parse_linkage_scene
+
+    return parse_linkage_scene(data, source, top, order)
 
 
 def _analyse(scene: Any, extra: Extra) -> Any:
@@ -41,5 +46,5 @@ def _bench(quick: bool) -> Bench:
     return bench(quick)
 
 
-KIND = Kind("cycle", ("cycle", "characteristics"), parse_linkage_scene, _analyse, _judge, _sheet,
+KIND = Kind("cycle", ("cycle", "characteristics"), _read, _analyse, _judge, _sheet,
             lambda an: dict(an.summary), lambda an: an.summary_lines(), bench=_bench)

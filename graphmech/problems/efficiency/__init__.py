@@ -6,8 +6,13 @@ from __future__ import annotations
 
 from typing import Any
 
-from graphmech.problems.efficiency.scene import parse_efficiency_scene
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
+
+
+def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+    from graphmech.problems.efficiency.scene import parse_efficiency_scene
+
+    return parse_efficiency_scene(data, source, top, order)
 
 
 def _analyse(scene: Any, extra: Extra) -> Any:
@@ -37,4 +42,4 @@ def _bench(quick: bool) -> Bench:
     return bench(quick)
 
 
-KIND = Kind("efficiency", ("efficiency",), parse_efficiency_scene, _analyse, _judge, _sheet, bench=_bench)
+KIND = Kind("efficiency", ("efficiency",), _read, _analyse, _judge, _sheet, bench=_bench)

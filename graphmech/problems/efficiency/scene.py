@@ -15,8 +15,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from typing import Any, Mapping
-from graphmech.problems.linkage.scene import LINKAGE_KEYS
 from graphmech.problems.reader import (
+    LINKAGE_KEYS,
     MISSING,
     Reader,
     Scene,

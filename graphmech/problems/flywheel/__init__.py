@@ -6,8 +6,13 @@ from __future__ import annotations
 
 from typing import Any
 
-from graphmech.problems.flywheel.scene import parse_flywheel_scene
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
+
+
+def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+    from graphmech.problems.flywheel.scene import parse_flywheel_scene
+
+    return parse_flywheel_scene(data, source, top, order)
 
 
 def _analyse(scene: Any, extra: Extra) -> Any:
@@ -52,4 +57,4 @@ def _bench(quick: bool) -> Bench:
     return bench(quick)
 
 
-KIND = Kind("flywheel", ("flywheel",), parse_flywheel_scene, _analyse, _judge, _sheet, _extras, _lines, bench=_bench)
+KIND = Kind("flywheel", ("flywheel",), _read, _analyse, _judge, _sheet, _extras, _lines, bench=_bench)

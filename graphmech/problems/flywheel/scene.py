@@ -33,9 +33,10 @@ from graphmech.mechanisms.machine import (
     SliderLoad,
     Table,
 )
-from graphmech.problems.linkage.scene import LINKAGE_KEYS, read_linkage
+from graphmech.problems.linkage.scene import read_linkage
 from graphmech.problems.reader import MAX_TABLE_POINTS, pole_distances
 from graphmech.problems.reader import (
+    LINKAGE_KEYS,
     MAX_POSITIONS,
     MISSING,
     QUANTITY_NAME,

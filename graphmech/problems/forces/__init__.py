@@ -7,8 +7,13 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from graphmech.problems.forces.scene import parse_forces_scene
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
+
+
+def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+    from graphmech.problems.forces.scene import parse_forces_scene
+
+    return parse_forces_scene(data, source, top, order)
 
 
 def _analyse(scene: Any, extra: Extra) -> Any:
@@ -42,5 +47,5 @@ def _mixture(data: Mapping[str, Any]) -> tuple[str, str] | None:
                       f"{other} scene: put it in a scene of its own")
 
 
-KIND = Kind("forces", ("forces",), parse_forces_scene, _analyse, lambda an, extra: an.verdicts, _sheet, _extras,
+KIND = Kind("forces", ("forces",), _read, _analyse, lambda an, extra: an.verdicts, _sheet, _extras,
             bench=_bench, mixture=_mixture)

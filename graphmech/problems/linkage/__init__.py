@@ -11,7 +11,13 @@ from __future__ import annotations
 from typing import Any
 
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
-from graphmech.problems.linkage.scene import LINKAGE_KEYS, parse_linkage_scene
+from graphmech.problems.reader import LINKAGE_KEYS
+
+
+def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+    from graphmech.problems.linkage.scene import parse_linkage_scene
+
+    return parse_linkage_scene(data, source, top, order)
 
 
 def _analyse(scene: Any, extra: Extra) -> Any:
@@ -48,5 +54,5 @@ def _bench(quick: bool) -> Bench:
     return records + ic_records(quick=quick), notes
 
 
-KIND = Kind("linkage", LINKAGE_KEYS, parse_linkage_scene, _analyse, _judge, _sheet, _extras, bench=_bench,
+KIND = Kind("linkage", LINKAGE_KEYS, _read, _analyse, _judge, _sheet, _extras, bench=_bench,
             poses=lambda data: True)  # the last one asked: a scene that poses nothing else is a linkage's

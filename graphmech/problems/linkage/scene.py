@@ -27,6 +27,7 @@ from graphmech.mechanisms.linkage import (
 )
 from graphmech.tolerances import PARALLEL_SIN
 from graphmech.problems.reader import (
+    LINKAGE_KEYS,
     LINK_ID,
     MISSING,
     POINT_NAME,
@@ -46,8 +47,6 @@ from graphmech.problems.reader import (
 SHOW_CHOICES = ("mechanism", "velocity", "acceleration", "instant_centres")
 
 
-#: The tables only a linkage scene has.
-LINKAGE_KEYS = ("frame", "driver", "dyad", "point")
 
 
 #: Frame point name → coordinates in m (None when they were invalid: the name still counts).

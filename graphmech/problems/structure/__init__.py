@@ -7,7 +7,12 @@ from __future__ import annotations
 from typing import Any
 
 from graphmech.problems.kind import Extra, Footer, Kind
-from graphmech.problems.structure.scene import parse_structure_scene
+
+
+def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+    from graphmech.problems.structure.scene import parse_structure_scene
+
+    return parse_structure_scene(data, source, top, order)
 
 
 def _analyse(scene: Any, extra: Extra) -> Any:
@@ -38,5 +43,5 @@ def _lines(an: Any) -> list[str]:
     return text_summary(an)
 
 
-KIND = Kind("structure", ("structure",), parse_structure_scene, _analyse, _judge, _sheet,
+KIND = Kind("structure", ("structure",), _read, _analyse, _judge, _sheet,
             lambda an: {"structure": an.summary()}, _lines)

@@ -12,8 +12,8 @@ from dataclasses import dataclass
 from typing import Any, Mapping
 
 from graphmech.mechanisms.topology import Pair, Topology
-from graphmech.problems.linkage.scene import LINKAGE_KEYS
 from graphmech.problems.reader import (
+    LINKAGE_KEYS,
     MISSING,
     Reader,
     Scene,
