@@ -1,18 +1,16 @@
-"""Read a scene file: the TOML that says what to construct, draw and check.
+"""Load a scene file — the TOML that says what to construct, draw and check — and hand it to
+its kind of problem.
 
-A scene describes either a linkage (frame points, a driver, Assur dyads in assembly order,
-extra points on links, and the driver's positions), a disc cam (its base circle, follower
-and motion program, table ``[cam]``) or a flywheel problem (a machine — a linkage or none —
-with its masses and loads, table ``[flywheel]``, read by :mod:`graphmech.problems.flywheel.scene`),
-together with the drawing scales, what to show and find, and the values a draughtsman
-measured on paper. Every number is converted to SI on load.
+:func:`load_scene` reads the file (UTF-8, at most :data:`MAX_BYTES`, valid TOML);
+:func:`parse_scene` reads the tables every scene shares and asks the registry
+(:data:`graphmech.problems.KINDS`) which kind the file poses — the first whose tables it has —
+and that kind's reader reads the rest (``graphmech/problems/<kind>/scene.py``). Every number is
+converted to SI on load. :func:`render_scene` is the whole way from a file to its SVG.
 
 Validation collects *every* problem and raises one :class:`~graphmech.errors.SceneError`;
 its key paths read the way the user wrote the file (``dyad[0].lengths[1]``,
 ``driver.angle_deg[2]``, ``frame.D``, ``cam.segment[2].angle``), and its message is the first
 problem in file order.
-Whether a linkage can be *assembled* at a position is not decided here: the construction
-does that, position by position.
 
 The format, with an example of every feature, is ``docs/scene-format.md``.
 """

@@ -746,3 +746,48 @@ def test_checker_sees_what_the_registry_loads(tmp_path):
     assert loaded_by_the_registry(tmp_path) == []
     make_package(tmp_path, {"problems/__init__.py": "from graphmech.problems.cam import check, scene\n"})
     assert loaded_by_the_registry(tmp_path) == ["graphmech.problems.cam.check"]
+
+
+# ---------------------------------------------------------------------------- the registry
+
+
+def test_every_kind_package_is_registered_once_and_nothing_else_lists_the_kinds():
+    """Each package under problems/ that states a KIND is in graphmech.problems.KINDS, under its
+    own name; the Scene record has one ``problem`` field, none per kind."""
+    import dataclasses
+    import importlib
+
+    from graphmech.problems import KINDS
+    from graphmech.problems.reader import Scene
+
+    stated = {}
+    for pkg in sorted(p.parent.name for p in (ROOT / "graphmech" / "problems").glob("*/__init__.py")):
+        module = importlib.import_module(f"graphmech.problems.{pkg}")
+        if hasattr(module, "KIND"):
+            stated[module.KIND.name] = module.KIND
+    assert stated and stated.keys() == KINDS.keys()
+    assert all(KINDS[name] is kind for name, kind in stated.items())
+    fields = {f.name for f in dataclasses.fields(Scene)}
+    # (``linkage`` is the mechanism several kinds share — forces, a flywheel's machine — not a kind's part)
+    assert {"kind", "problem"} <= fields and not fields & (set(KINDS) - {"linkage"})
+    tables = [t for k in KINDS.values() for t in k.tables]
+    assert len(tables) == len(set(tables))  # a table poses one kind
+
+
+def test_a_scene_of_each_kind_reads_as_that_kind():
+    """Each reference scene's kind is the one its file name says (fly.* a flywheel …)."""
+    from graphmech.scene import load_scene
+
+    expect = {"cam": "cam", "fly": "flywheel", "force": "forces", "bal": "balancing", "eff": "efficiency",
+              "thread": "efficiency", "dof": "structure", "structure": "structure"}
+    seen = set()
+    for path in sorted((ROOT / "figures" / "scenes").glob("*.toml")):
+        scene = load_scene(path)
+        prefix = path.name.split(".")[0]
+        if prefix in expect and not (prefix == "fly" and scene.kind == "cycle"):
+            want = "efficiency" if prefix == "force" and scene.kind == "efficiency" else expect[prefix]
+            assert scene.kind == want, path.name
+        seen.add(scene.kind)
+    from graphmech.problems import KINDS
+
+    assert seen == set(KINDS)  # the reference scenes cover every kind

@@ -102,8 +102,6 @@ def in_double_precision(step: str) -> Iterator[None]:
 
 #: The reason given when a number leaves double precision.
 OUT_OF_RANGE = "numbers out of the range of double precision (the scene's sizes or speeds are too extreme)"
-
-
 SEGMENT = re.compile(r"[a-z]\d*['′]*")
 
 

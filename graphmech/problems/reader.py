@@ -1,7 +1,7 @@
 """Reading a scene file, whatever its kind: the toolkit every kind's reader uses.
 
 A :class:`Reader` is a view of one TOML table that tracks its key path and collects problems;
-its typed methods (``value``, ``quantity``, ``choice``, ``point_name`` …) convert to SI and say
+its typed methods (``value``, ``quantity``, ``string``, ``point_name`` …) convert to SI and say
 what is wrong in the user's words. The common tables — ``title``/``show``/``find``, ``[units]``,
 ``[scales]``, ``[measured]``, ``[check]``, ``[page]`` — are read here once for every kind, and
 :class:`Scene` is what every reader returns. A kind's own tables are read in
@@ -13,20 +13,17 @@ import difflib
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Generic, TypeVar, Iterable, Mapping, NoReturn
+from typing import Any, Generic, Iterable, Mapping, NoReturn, TypeVar
 
 from graphmech.errors import SceneError
 from graphmech.scales import PAPER, scale_out_of_range
 from graphmech.mechanisms.linkage import Linkage, Positions
 from graphmech.tolerances import DRAWING_PRECISION_MM, MAX_PRECISION_MM, POLE_RANGE_MM
+
 #: The most driver positions one scene may ask for.
 MAX_POSITIONS = 3600
-
-
 #: The longest title, in characters.
 MAX_TITLE = 200
-
-
 #: Named paper sizes, (width, height) in mm: one table for the whole package.
 PAPER_SIZES = PAPER
 
@@ -104,6 +101,12 @@ class Scene(Generic[P]):
     problem: P | None = None
 
 
+# --------------------------------------------------------------------------------------------
+# Units: each kind of quantity, the units a [units] table may name, and the key suffixes.
+# A conversion is (numerator, denominator): SI value = written value · num / den, so that
+# 60 mm becomes exactly 0.06 m.
+# --------------------------------------------------------------------------------------------
+
 UNITS: dict[str, dict[str, tuple[float, float]]] = {
     "length": {"mm": (1.0, 1000.0), "cm": (1.0, 100.0), "m": (1.0, 1.0)},
     "angle": {"deg": (math.pi, 180.0), "rad": (1.0, 1.0)},
@@ -149,7 +152,6 @@ UNITS: dict[str, dict[str, tuple[float, float]]] = {
                     "kgmm": (1.0, 1000.0), "kg·mm": (1.0, 1000.0)},
 }
 
-
 #: Key suffix (after ``base_``) → unit, per kind; the first is the one messages suggest.
 SUFFIXES: dict[str, dict[str, str]] = {
     "length": {"mm": "mm", "cm": "cm", "m": "m"},
@@ -169,7 +171,6 @@ SUFFIXES: dict[str, dict[str, str]] = {
     "mass_radius": {"kgm": "kgm", "kgcm": "kgcm", "kgmm": "kgmm"},
 }
 
-
 KIND_WORDS = {
     "length": "a length",
     "angle": "an angle",
@@ -187,30 +188,24 @@ KIND_WORDS = {
     "area": "an area",
     "mass_radius": "a mass-radius product",
 }
+
 PER_MM = "_per_mm"
-
-
 ALL_SUFFIXES = {s for table in SUFFIXES.values() for s in table} | {
     s + PER_MM for table in SUFFIXES.values() for s in table
 }
+
+# Names. fullmatch() everywhere: "$" would let a trailing newline through.
 POINT_NAME = re.compile(r"[A-Z]+[0-9]*['′]*")
-
-
 LINK_ID = re.compile(r"[0-9A-Za-z]{1,8}")
 LABEL_SUFFIX = r"(?:@[0-9A-Za-z.+\-]{1,24})?"
-
-
 QUANTITY_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*" + LABEL_SUFFIX)
 SEGMENT_NAME = re.compile(r"(?:[a-zπ][0-9]*['′]*){2,8}" + LABEL_SUFFIX)
-
-
 #: The tables and keys every scene may have, whatever its kind (each kind adds its own tables,
 #: graphmech.problems.tables()).
 COMMON_KEYS = ("title", "show", "find", "scales", "units", "measured", "check", "page")
 #: The tables of a linkage: a linkage scene's own, and read by the kinds built on a linkage
 #: (forces, a flywheel's machine).
 LINKAGE_KEYS = ("frame", "driver", "dyad", "point")
-
 
 MISSING: Any = object()
 
@@ -267,6 +262,11 @@ def maybe(word: str, candidates: Iterable[str]) -> str:
     """``" (did you mean X?)"`` for the nearest candidate, or ``""``."""
     tip = did_you_mean(word, candidates)
     return f" ({tip[2:]})" if tip else ""
+
+
+# --------------------------------------------------------------------------------------------
+# The reader: one TOML table, its key path, the keys it has read; problems go to one list.
+# --------------------------------------------------------------------------------------------
 
 
 @dataclass
@@ -663,6 +663,11 @@ def all_valid(*values: Any) -> bool:
     return all(v is not None for v in values)
 
 
+# --------------------------------------------------------------------------------------------
+# The tables every scene may have, one function each.
+# --------------------------------------------------------------------------------------------
+
+
 def read_units(top: Reader) -> dict[str, str | None]:
     """[units]: kind → unit name (None when the entry is wrong: no cascade of 'not stated')."""
     r = top.table_at("units")
@@ -825,7 +830,7 @@ def read_measured(
             continue
         if "@" in key and labels is not None:
             label = key.split("@", 1)[1]
-            if label not in labels and label != "ic":  # omega_3@ic: by instant centres (ic_check)
+            if label not in labels and label != "ic":  # omega_3@ic: by instant centres (graphmech.problems.instant_centres)
                 r.problem(path, f"no position is labelled {label} (positions: {', '.join(labels)})")
                 continue
         out.append((key, x))

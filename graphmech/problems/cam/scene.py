@@ -36,28 +36,16 @@ from graphmech.problems.reader import (
 
 #: What a cam scene may show: the profile by inversion and the s–δ, v–δ, a–δ diagrams.
 CAM_SHOW_CHOICES = ("profile", "displacement", "velocity", "acceleration")
-
-
 #: What a cam scene shows when it does not say.
 CAM_SHOW_DEFAULT = ("profile",)
-
-
 #: The inversion's division step when a cam scene does not give one, rad (15°).
 CAM_STEP_DEFAULT = math.radians(15.0)
-
-
 #: The finest division step, rad (0.1°: at most 3600 divisions).
 CAM_STEP_MIN = math.radians(0.1)
-
-
 #: The coarsest division step, rad (90°).
 CAM_STEP_MAX = math.radians(90.0)
-
-
 #: The most segments a cam's motion program may have.
 MAX_SEGMENTS = 100
-
-
 
 
 @dataclass(frozen=True)
@@ -81,18 +69,10 @@ class CamScene:
 
 
 _FOLLOWER_TYPES = ("translating", "oscillating")
-
-
 _CONTACTS = ("knife", "roller", "flat")
-
-
 _SEGMENT_KINDS = ("rise", "return", "dwell")
-
-
 #: The keys only one type of follower has.
 _TRANSLATING_ONLY = ("offset",)
-
-
 _OSCILLATING_ONLY = ("pivot_distance", "arm", "sense")
 
 

@@ -19,6 +19,7 @@ from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Linkage
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
 from graphmech.scales import drawn_size_problem, format_scale, round_scale
+from graphmech.problems.instant_centres import check as ic_check
 from graphmech.problems.judging import (
     OUT_OF_RANGE,
     Row,
@@ -88,8 +89,6 @@ def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) 
     problems = []
     out = []
     multi = len(labels) > 1
-    from graphmech.problems.instant_centres import check as ic_check
-
     for k, raw in enumerate(scene.find):
         base, at = split_name(raw)
         if ic_check.claims(raw):  # the instant-centre method's names (graphmech.problems.instant_centres.check)
@@ -189,8 +188,6 @@ def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analy
     for panel in PANELS:
         if panel in scene.show:
             targets += build.steps_of_panel(panel)
-    from graphmech.problems.instant_centres import check as ic_check
-
     ic = ic_check.asked(scene, extra_measured)
     if ic:  # the instant centres are found on the kinematic diagram: every point of it
         targets += list(build.mech.values())
@@ -432,8 +429,6 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
     prec = precision_mm if precision_mm is not None else scene.precision_mm
     problems = []
     out = []
-    from graphmech.problems.instant_centres import check as ic_check
-
     for key, name, value in measured_entries(scene, an.extra_measured):
         if ic_check.claims(name):  # judged by graphmech.problems.instant_centres.check, below
             continue

@@ -45,10 +45,6 @@ from graphmech.problems.reader import (
 
 #: What a scene may show, in the order a textbook draws them.
 SHOW_CHOICES = ("mechanism", "velocity", "acceleration", "instant_centres")
-
-
-
-
 #: Frame point name → coordinates in m (None when they were invalid: the name still counts).
 _Frame = Mapping[str, "tuple[float, float] | None"]
 
