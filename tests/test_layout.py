@@ -479,14 +479,14 @@ def test_imports_are_direct(graph):
 
 def loaded_by_the_registry(root: Path) -> list[str]:
     """What ``import graphmech.problems`` (in a fresh interpreter, from ``root``) loads that it must not:
-    scipy, matplotlib, shapely, or any kind's check, figures or bench."""
+    scipy, matplotlib, shapely, or any module of a kind's own (its reader, check, figures, bench):
+    those load when a scene of that kind is read, checked or drawn."""
     r = subprocess.run([sys.executable, "-c", "import graphmech.problems, sys; print(sorted(sys.modules))"],
                        cwd=root, capture_output=True, text=True, timeout=60, env={**os.environ, "PYTHONPATH": str(root)})
     assert r.returncode == 0, r.stderr
     loaded = ast.literal_eval(r.stdout.strip())
     heavy = [m for m in loaded if m.split(".")[0] in ("scipy", "matplotlib", "shapely")]
-    kind_code = [m for m in loaded for k in kinds(root / "graphmech") for part in ("check", "figures", "bench")
-                 if _within(m, f"graphmech.problems.{k}.{part}")]
+    kind_code = [m for m in loaded for k in kinds(root / "graphmech") if m.startswith(f"graphmech.problems.{k}.")]
     return sorted(heavy + kind_code)
 
 
@@ -745,7 +745,7 @@ def test_checker_sees_what_the_registry_loads(tmp_path):
     make_package(tmp_path, {**CLEAN, "problems/cam/check.py": "", "problems/cam/scene.py": ""})
     assert loaded_by_the_registry(tmp_path) == []
     make_package(tmp_path, {"problems/__init__.py": "from graphmech.problems.cam import check, scene\n"})
-    assert loaded_by_the_registry(tmp_path) == ["graphmech.problems.cam.check"]
+    assert loaded_by_the_registry(tmp_path) == ["graphmech.problems.cam.check", "graphmech.problems.cam.scene"]
 
 
 # ---------------------------------------------------------------------------- the registry

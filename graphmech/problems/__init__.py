@@ -14,13 +14,15 @@ imported when a scene of that kind is checked or drawn), and never matplotlib.
 from __future__ import annotations
 
 import dataclasses
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from graphmech.drawing.primitives import Sheet
 from graphmech.problems import balancing, cam, cycle, efficiency, flywheel, forces, linkage, structure
-from graphmech.problems.judging import Verdict
 from graphmech.problems.kind import Extra, Footer, Kind
-from graphmech.problems.reader import Scene
+
+if TYPE_CHECKING:  # annotations only: importing the registry stays light
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.problems.judging import Verdict
+    from graphmech.problems.reader import Scene
 
 #: Every kind, by name, in the order a scene file is matched against them: the first whose
 #: tables the file has reads it (a structure scene may hold a linkage's tables too; a scene
