@@ -97,7 +97,9 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     order = {k: n for n, k in enumerate(data)}
     top = Reader(data, "", problems, {})
     top.units = read_units(top)
-    top.known.update(tables())  # a misspelt kind's table gets a suggestion in any scene
+    # a misspelt kind's table gets a suggestion in any scene; a table the file has is no
+    # misspelling of itself (not "cycle: unknown key; did you mean cycle?")
+    top.known.update(t for t in tables() if t not in data)
     kind = next(kind for kind in KINDS.values() if kind.posed_by(data))  # the linkage's, if no other
     refusal = kind.mixture(data) if kind.mixture is not None else None
     if refusal is not None:  # one problem: which of the two to read is anyone's guess

@@ -344,6 +344,30 @@ def test_unknown_key_suggests_the_nearest() -> None:
     )
 
 
+def test_a_misspelt_kinds_table_gets_a_suggestion_in_any_scene() -> None:
+    assert message_of(GOOD + "\n[efficency]\ntype = 'incline'\n") == (
+        "scene.toml: efficency: unknown key; did you mean efficiency?"
+    )
+
+
+def test_a_table_of_another_kind_is_not_called_a_misspelling_of_itself() -> None:
+    """Two kinds' tables in one file: one kind reads it and refuses the other's table in one line,
+    never with "cycle: unknown key; did you mean cycle?" (the registry's tables are suggestions
+    for a misspelt key only)."""
+    from graphmech.problems import tables
+
+    for a in tables():
+        for b in tables():
+            if a == b:
+                continue
+            with pytest.raises(SceneError) as info:
+                parse_scene({a: {}, b: {}}, "mix.toml")
+            err = info.value
+            assert "\n" not in str(err)
+            for path, reason in err.problems:
+                assert not reason.endswith(f"did you mean {path}?"), (a, b, path, reason)
+
+
 def test_unknown_choice_suggests_the_nearest() -> None:
     assert message_of(GOOD.replace('type = "RRR"', 'type = "rrr"')) == (
         "scene.toml: dyad[0].type: unknown value 'rrr': use RRR, RRP, RPR or RPP "
