@@ -1,9 +1,11 @@
 """Backend-neutral draw primitives.
 
-A method's construction is turned into these by ``graphmech.render.frontend``; a backend (SVG,
-recording) turns them into output. Coordinates are **drawing millimetres, y up**, in the
-coordinate frame of the panel that holds them (a panel is one figure on the sheet: the
-mechanism at μl, the velocity polygon at μv, …). Flipping y for SVG is the backend's business.
+A method's construction is turned into these by a kind's figures
+(``graphmech/problems/<kind>/figures.py``); the frontend (:mod:`graphmech.render.sheet`) lays
+them out and a backend (SVG, recording) turns them into output. Coordinates are **drawing
+millimetres, y up**, in the coordinate frame of the panel that holds them (a panel is one figure
+on the sheet: the mechanism at μl, the velocity polygon at μv, …). Flipping y for SVG is the
+backend's business.
 
 Roles
 -----

@@ -8,8 +8,9 @@ Each kind lives in its own package ``graphmech/problems/<kind>/`` and states its
 :data:`KINDS` below is the only place that lists them, so the scene loader, ``check``,
 ``render`` and ``bench`` treat every kind alike. Adding a kind: docs/adding-a-kind.md.
 
-Importing this module imports each kind's scene reader, not its check or figures (those are
-imported when a scene of that kind is checked or drawn), and never matplotlib.
+Importing this module imports each kind's ``__init__`` (its Kind record) and the reading toolkit,
+nothing of a kind's own: its reader, check, figures and bench are imported when a scene of that
+kind is read, checked or drawn; never scipy, shapely or matplotlib (tests/test_layout.py).
 """
 from __future__ import annotations
 

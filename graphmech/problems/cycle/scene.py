@@ -1,13 +1,13 @@
 """Read a linkage scene's full-cycle and characteristics parts: ``[cycle]``, ``[characteristics]``
 and the ``show`` entries ``"cycle"``, ``"paths"``, ``"diagrams"``, ``"characteristics"``.
 
-:func:`read_cycle` is called by :func:`graphmech.scene.parse_scene` for a linkage scene that
-has either table or shows one of these entries; it uses the same reader, key paths and
-messages (every problem collected, raised once). A ``[cycle]`` divides the crank's turn into N
-positions numbered 1 … N from its ``start`` — the crank's stated angle, or the extreme position
-where the working stroke begins — and the scene's positions become those N, labelled
-``"1"`` … ``"N"`` (``v_C@3``). The format is the "Full cycle and characteristics" section of
-``docs/scene-format.md``.
+:func:`read_cycle` is called by :func:`graphmech.problems.linkage.scene.parse_linkage_scene`
+for a linkage scene that has either table or shows one of these entries; it uses the same
+reader, key paths and messages (every problem collected, raised once). A ``[cycle]`` divides
+the crank's turn into N positions numbered 1 … N from its ``start`` — the crank's stated angle,
+or the extreme position where the working stroke begins — and the scene's positions become
+those N, labelled ``"1"`` … ``"N"`` (``v_C@3``). The format is the "Full cycle and
+characteristics" section of ``docs/scene-format.md``.
 """
 from __future__ import annotations
 

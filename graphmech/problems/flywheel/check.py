@@ -77,7 +77,7 @@ class FlywheelAnalysis:
     stated: set[str] = field(default_factory=set)
     extra_measured: tuple[tuple[str, float], ...] = ()
     braking: Any = None
-    rundown: Any = None  # the run-down diagram ω(t) as drawn (methods.braking_figures.Rundown)
+    rundown: Any = None  # the run-down diagram ω(t) as drawn (problems.flywheel.braking_figures.Rundown)
 
     def scale_notes(self) -> list[str]:
         from graphmech.scales import format_scale

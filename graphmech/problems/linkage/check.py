@@ -1,7 +1,7 @@
 """From a scene to checked values: choose μ, build and prune the construction, evaluate it at
 every position, measure, compare with the independent exact solution, judge hand measurements.
 
-This is one of the three modules (with ``scene`` and ``cli``) that know about users: it turns
+Like every kind's check (and the scene readers, and ``cli``) it knows about users: it turns
 problems into :class:`~graphmech.errors.SceneError` with key paths, and conditioning into
 warnings.
 """
