@@ -42,8 +42,8 @@ def _mixture(data: Mapping[str, Any]) -> tuple[str, str] | None:
     others = [t for t in ("cam", "flywheel", "efficiency", "balancing") if t in data]
     if not others:
         return None
-    other = others[0] if others[0] in ("cam", "flywheel") else "efficiency or balancing"
-    return ("forces", "[forces] belongs to a linkage scene (kinetostatics), not to a "
+    other = {"cam": "a cam", "flywheel": "a flywheel"}.get(others[0], "an efficiency or balancing")
+    return ("forces", "[forces] belongs to a linkage scene (kinetostatics), not to "
                       f"{other} scene: put it in a scene of its own")
 
 
