@@ -16,6 +16,8 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from graphmech.problems.judging import finite
+
 if TYPE_CHECKING:  # for the annotations only: the registry stays light at start-up
     from graphmech.drawing.primitives import Sheet
     from graphmech.problems.judging import Verdict
@@ -75,10 +77,7 @@ class Kind:
     def check(self, scene: Scene[Any], extra: Extra = ()) -> tuple[Any, list[Verdict], dict[str, Any], list[str]]:
         """Analyse a scene and judge its measured values: (analysis, verdicts, JSON extras, text
         lines). Whatever the analysis finds is finite, or refused in words."""
-        from graphmech.problems.judging import refuse_non_finite
-
-        an = self.analyse(scene, tuple(extra))
-        refuse_non_finite(an.rows)
+        an = finite(self.analyse(scene, tuple(extra)))
         return an, self.judge(an, tuple(extra)), self.extras(an), self.lines(an)
 
 

@@ -7,6 +7,7 @@ from typing import Any
 
 from graphmech.drawing.primitives import Sheet
 from graphmech.errors import SceneError
+from graphmech.mechanisms.linkage import Positions
 from graphmech.methods.polygons import PANELS
 from graphmech.problems.instant_centres.figures import ic_panels
 from graphmech.problems.judging import finite
@@ -45,8 +46,6 @@ def _fits(scene: Scene[Any]) -> None:
 def mechanism_at_position_1(scene: Scene[Any], footer: tuple[str, ...]) -> list[Any]:
     """A scene's mechanism drawn at position 1 (where φ = 0) as a linkage scene would draw it
     (the first panel of a flywheel sheet)."""
-    from graphmech.mechanisms.linkage import Positions
-
     assert scene.positions is not None
     first = Positions(scene.positions.values[:1], scene.positions.labels[:1])
     lscene = dataclasses.replace(scene, show=("mechanism",), find=(), measured=(), kind="linkage", problem=None,
