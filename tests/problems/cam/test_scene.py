@@ -24,7 +24,7 @@ from graphmech.problems.cam.scene import CAM_STEP_DEFAULT, CamScene
 from graphmech.problems.reader import Page
 from graphmech.scene import Scene, load_scene, parse_scene
 
-ROOT = Path(__file__).resolve().parents[1]
+from tests.conftest import ROOT
 DOCS = ROOT / "docs" / "scene-format.md"
 
 #: cam.offset_roller_translating, follower axis at x = +e.

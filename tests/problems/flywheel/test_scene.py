@@ -28,7 +28,7 @@ from graphmech.problems.flywheel.scene import FLYWHEEL_SHOW_DEFAULT, Braking, Fl
 from graphmech.scene import Scene, load_scene, parse_scene
 from tests.conftest import reference_area, run_cli
 
-ROOT = Path(__file__).resolve().parents[1]
+from tests.conftest import ROOT
 DOCS = ROOT / "docs" / "scene-format.md"
 
 #: Every feature at once: an offset slider-crank compressor with an indicator diagram, a moment
