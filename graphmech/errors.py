@@ -81,3 +81,51 @@ class AssemblyError(DegenerateConstruction):
         super().__init__(step, reason, position)
         at = f" at {position}" if position else ""
         self.args = (f"{step}: cannot be assembled{at}: {reason}",)
+
+
+# The refusals of the methods (methods/, exact/) and the library's other public functions. Each is
+# also the built-in it replaced (as ezdxf's DXFValueError is a ValueError), so every caller's
+# ``except ValueError`` still catches it, while the command maps it, as a GraphmechError, to a
+# one-line refusal (exit 2) instead of an internal error.
+
+
+class OutOfDomain(GraphmechError, ValueError):
+    """An argument outside the domain of the method asked, or data for which it has no answer.
+
+    A scale, a length or a speed that is not positive and finite; δ outside (0, 2); arrays of
+    different lengths; an option or a name the method does not offer ('forward' or 'reverse', a
+    panel, a position label); data that admit no result (coinciding correction planes, an arm that
+    cannot reach the base circle, a flywheel too small to keep the mean speed).
+    """
+
+
+class NotApplicable(GraphmechError, ValueError):
+    """The method does not apply to this mechanism, whatever the numbers.
+
+    Extreme positions of a crank that does not turn fully, Grashof's rule for a loop that is not a
+    hinged four-bar, the matrix method of kinetostatics for a group it does not take, crank angles
+    asked of a linkage driven by a slider.
+    """
+
+
+class UnknownName(GraphmechError, KeyError):
+    """A name that is not in the mechanism or its construction: a point, a link, a quantity to read.
+
+    Printed as its message: a KeyError's ``str`` would quote it (``'no point X'``).
+    """
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if len(self.args) == 1 else super().__str__()
+
+
+class NoSolution(GraphmechError, ArithmeticError):
+    """A calculation that found no (finite, unique) result for these data, or did not converge.
+
+    The exact working profile folding over itself (an undercut), a profile vertex not found, a pitch
+    curve with no convex arc, an inversion not drawable at some divisions. A construction step
+    with no result is a :class:`DegenerateConstruction` instead.
+    """
+
+
+class WrongKind(GraphmechError, TypeError):
+    """An object of another kind than the method takes: the rocker angle of a translating follower."""

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 
+from graphmech.errors import OutOfDomain
 from graphmech.tolerances import SCALE_RANGE_SI
 
 #: Paper sizes in mm (width, height), landscape unless named "-portrait".
@@ -44,7 +45,7 @@ SCALE_INFO = {
 def round_scale(minimum: float) -> float:
     """The smallest round scale (1, 2, 2.5, 5 × 10^k) that is ≥ ``minimum`` (> 0)."""
     if not (minimum > 0.0 and math.isfinite(minimum)):
-        raise ValueError(f"a scale must be positive and finite, not {minimum!r}")
+        raise OutOfDomain(f"a scale must be positive and finite, not {minimum!r}")
     k = math.floor(math.log10(minimum))
     for m in ROUND_MANTISSAS:
         value = float(f"{m}e{k}")  # exact decimal, no 0.30000000000000004

@@ -20,6 +20,8 @@ import math  # noqa: F401  (the doctests use it)
 from dataclasses import dataclass
 from typing import Sequence
 
+from graphmech.errors import OutOfDomain
+
 
 @dataclass(frozen=True)
 class Unbalance:
@@ -60,7 +62,7 @@ def dynamic_correction(masses: Sequence[Unbalance], z_I: float, z_II: float) -> 
     (-0.075, -0.025)
     """
     if z_I == z_II:
-        raise ValueError("the correction planes coincide")
+        raise OutOfDomain("the correction planes coincide")
     # Cramer's rule with the moments taken about each correction plane in turn (about plane II
     # for W_I, about plane I for W_II): the same solution as about z = 0, without the round-off
     # of Σ mᵢrᵢzᵢ − U·z_II cancelling when the planes are close together far from z = 0.

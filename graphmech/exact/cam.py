@@ -128,6 +128,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 from scipy.optimize import brentq
 
+from graphmech.errors import NoSolution, NotApplicable, OutOfDomain, WrongKind
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
 from graphmech.tolerances import EPS, TANGENT_REL
@@ -256,9 +257,9 @@ class _Path:
 
 def _check_rotation(cam: DiscCam) -> float:
     if cam.rotation not in (1, -1):
-        raise ValueError(f"cam rotation must be +1 (CCW) or -1 (CW), not {cam.rotation!r}")
+        raise OutOfDomain(f"cam rotation must be +1 (CCW) or -1 (CW), not {cam.rotation!r}")
     if not cam.base_radius > 0.0:
-        raise ValueError(f"the base radius must be > 0, not {cam.base_radius!r} m")
+        raise OutOfDomain(f"the base radius must be > 0, not {cam.base_radius!r} m")
     return float(cam.rotation)
 
 
@@ -282,22 +283,22 @@ def initial_rocker_angle(cam: DiscCam) -> float:
     """
     f = cam.follower
     if not isinstance(f, OscillatingFollower):
-        raise TypeError("the rocker angle belongs to an oscillating follower")
+        raise WrongKind("the rocker angle belongs to an oscillating follower")
     if f.contact == "flat":
         a, r0 = f.pivot_distance, cam.base_radius
         if not a > 0.0:
-            raise ValueError(f"the pivot distance must be > 0, not {a!r} m")
+            raise OutOfDomain(f"the pivot distance must be > 0, not {a!r} m")
         if not 0.0 < r0 < a:
-            raise ValueError(
+            raise OutOfDomain(
                 f"a flat face through the pivot can touch the base circle only if r0 < a "
                 f"(r0 = {r0 * 1e3:g} mm, a = {a * 1e3:g} mm)")
         return math.asin(r0 / a)
     a, l, r0 = f.pivot_distance, f.arm, cam.base_radius
     if not (a > 0.0 and l > 0.0):
-        raise ValueError(f"pivot distance and arm must be > 0 (a = {a!r} m, l = {l!r} m)")
+        raise OutOfDomain(f"pivot distance and arm must be > 0 (a = {a!r} m, l = {l!r} m)")
     c = (a * a + l * l - r0 * r0) / (2.0 * a * l)
     if not -1.0 < c < 1.0:
-        raise ValueError(
+        raise OutOfDomain(
             f"the arm cannot reach the base circle: need |a − l| < r0 < a + l "
             f"(a = {a * 1e3:g} mm, l = {l * 1e3:g} mm, r0 = {r0 * 1e3:g} mm)")
     return math.acos(c)
@@ -315,7 +316,7 @@ def _path(cam: DiscCam, delta: np.ndarray) -> _Path:
             y0 = r0
         else:
             if abs(e) >= r0:
-                raise ValueError(
+                raise OutOfDomain(
                     f"the offset must be smaller than the base radius: |e| = {abs(e) * 1e3:g} mm "
                     f"≥ r0 = {r0 * 1e3:g} mm")
             y0 = math.sqrt(r0 * r0 - e * e)
@@ -346,7 +347,7 @@ def _path(cam: DiscCam, delta: np.ndarray) -> _Path:
             B3 = l * (up * (s3 - s1**3)[..., None] - u * (3.0 * s1 * s2)[..., None])
         m, m1 = up, -u * s1[..., None]
     else:  # pragma: no cover - the model has only these two
-        raise TypeError(f"unknown follower {f!r}")
+        raise WrongKind(f"unknown follower {f!r}")
     JB, JB1, JB2 = _quarter(B), _quarter(B1), _quarter(B2)
     T = B1 - rot * JB
     T1 = B2 - rot * JB1
@@ -458,7 +459,7 @@ def profile(cam: DiscCam, delta: ArrayLike) -> CamProfile:
     """
     d = np.asarray(delta, dtype=float)
     if d.ndim != 1:
-        raise ValueError(f"delta must be a 1-D array of cam angles, not shape {d.shape}")
+        raise OutOfDomain(f"delta must be a 1-D array of cam angles, not shape {d.shape}")
     rot = _check_rotation(cam)
     p = _path(cam, d)
     turn = -rot * d
@@ -497,14 +498,14 @@ def _segments(cam: DiscCam) -> list[tuple[str, float, float]]:
         out.append((seg.kind, start, start + seg.angle))
         start += seg.angle
     if abs(start - _TWO_PI) > 1e-9:
-        raise ValueError(f"the program's segments add up to {math.degrees(start):.6f}°, not 360°")
+        raise OutOfDomain(f"the program's segments add up to {math.degrees(start):.6f}°, not 360°")
     return out
 
 
 def _pieces(cam: DiscCam, where: str) -> list[tuple[float, float]]:
     """The smooth pieces [joint, next joint) of the law lying in segments of kind ``where``."""
     if where not in ("rise", "return", "all"):
-        raise ValueError(f'where must be "rise", "return" or "all", not {where!r}')
+        raise OutOfDomain(f'where must be "rise", "return" or "all", not {where!r}')
     segs = _segments(cam)
     joints = [a for _, a, _ in segs] + [float(x) % _TWO_PI for x in np.atleast_1d(breakpoints(cam.program))]
     joints += [imp.angle % _TWO_PI for imp in impacts(cam.program)]  # the laws' own jumps too
@@ -526,7 +527,7 @@ def _pieces(cam: DiscCam, where: str) -> list[tuple[float, float]]:
         if where == "all" or kind == where:
             pieces.append((lo, hi))
     if not pieces:
-        raise ValueError(f"the program has no {where} segment")
+        raise NotApplicable(f"the program has no {where} segment")
     return pieces
 
 
@@ -563,7 +564,7 @@ def _maximise(
         cand_at += roots
     ok = np.isfinite(cand_values)
     if not ok.any():
-        raise ArithmeticError("no finite value to maximise")
+        raise NoSolution("no finite value to maximise")
     order = np.argsort(np.asarray(cand_at) % _TWO_PI, kind="stable")  # ties: the first angle wins
     best_i = int(order[np.argmax(np.where(ok, cand_values, -np.inf)[order])])
     best, at = cand_values[best_i], cand_at[best_i]
@@ -654,7 +655,7 @@ def min_convex_rho_pitch(cam: DiscCam) -> tuple[float, float]:
     """
     c, at = _maximise(_pieces(cam, "all"), lambda d: _convexity(cam, _path(cam, d)))
     if not c > 0.0:
-        raise ArithmeticError("the pitch curve has no convex arc")
+        raise NoSolution("the pitch curve has no convex arc")
     return 1.0 / c, at
 
 
@@ -799,9 +800,9 @@ def min_base_radius(cam: DiscCam, alpha_permissible: float) -> float:
     (8.0, 30.0)
     """
     if not 0.0 < alpha_permissible < 0.5 * math.pi:
-        raise ValueError(f"[α] must lie in (0°, 90°), not {math.degrees(alpha_permissible):g}°")
+        raise OutOfDomain(f"[α] must lie in (0°, 90°), not {math.degrees(alpha_permissible):g}°")
     if _flat(cam):
-        raise ValueError(
+        raise NotApplicable(
             "a flat face ⟂ its axis has pressure angle 0 at any base radius; size r0 by "
             "r0 + s + s″ > 0 (see undercut) instead")
     f = cam.follower
@@ -815,7 +816,7 @@ def min_base_radius(cam: DiscCam, alpha_permissible: float) -> float:
         lo, hi = abs(a - l) * (1.0 + 1e-9) + 1e-12 * (a + l), (a + l) * (1.0 - 1e-9)
         limit = f"a + l = {(a + l) * 1e3:g} mm (the arm's reach)"
     if not hi > lo:
-        raise ValueError(f"no base radius is possible below {limit}")
+        raise OutOfDomain(f"no base radius is possible below {limit}")
 
     def excess(r0: float) -> float:
         return max_pressure_angle(dataclasses.replace(cam, base_radius=r0))[0] - alpha_permissible
@@ -829,7 +830,7 @@ def min_base_radius(cam: DiscCam, alpha_permissible: float) -> float:
                 return float(r0)
             return float(brentq(excess, prev, float(r0), xtol=1e-15, rtol=4.0 * EPS))
         prev = float(r0)
-    raise ValueError(
+    raise OutOfDomain(
         f"no base radius up to {limit} keeps the pressure angle ≤ [α] = "
         f"{math.degrees(alpha_permissible):g}° (it is still "
         f"{math.degrees(excess(hi) + alpha_permissible):.3f}° there)")
@@ -856,7 +857,7 @@ def _convex_vertex(cam: DiscCam, c: float, w: float) -> tuple[float, float]:
     al, ar = _actual(cam, dl), _actual(cam, dr)
     x = shapely.LineString(al).intersection(shapely.LineString(ar))
     if x.geom_type != "Point":
-        raise ArithmeticError(f"the roller's offsets at the corner δ = {math.degrees(c):.6g}° do not cross once")
+        raise NoSolution(f"the roller's offsets at the corner δ = {math.degrees(c):.6g}° do not cross once")
     q = np.asarray(x.coords[0])
     guess = [dl[np.argmin(np.hypot(*(al - q).T))], dr[np.argmin(np.hypot(*(ar - q).T))]]
     sol = root(lambda t: _actual(cam, [min(t[0], c - _LEFT)])[0] - _actual(cam, [max(t[1], c)])[0], guess,
@@ -864,7 +865,7 @@ def _convex_vertex(cam: DiscCam, c: float, w: float) -> tuple[float, float]:
     d1, d2 = float(sol.x[0]), float(sol.x[1])
     gap = float(np.hypot(*(_actual(cam, [d1])[0] - _actual(cam, [d2])[0])))
     if not (c - w < d1 < c <= d2 < c + w) or gap > 1e-12 * cam.base_radius:
-        raise ArithmeticError(f"the profile's vertex at δ = {math.degrees(c):.6g}° was not found")
+        raise NoSolution(f"the profile's vertex at δ = {math.degrees(c):.6g}° was not found")
     return d1, d2
 
 
@@ -883,7 +884,7 @@ def working_profile(cam: DiscCam, samples: int = 20_000) -> tuple[np.ndarray, np
     f = cam.follower
     corners = np.array(sorted({i.angle % math.tau for i in impacts(cam.program) if i.kind == "rigid"}))
     if f.contact == "flat" and corners.size:
-        raise ValueError("a flat face cannot follow a velocity jump: no working profile to compare with")
+        raise NotApplicable("a flat face cannot follow a velocity jump: no working profile to compare with")
     if f.contact != "roller" or corners.size == 0:
         d = np.union1d(np.linspace(0.0, math.tau, samples, endpoint=False), corners)
         pts, ang = _actual(cam, d), d
@@ -925,7 +926,7 @@ def working_profile(cam: DiscCam, samples: int = 20_000) -> tuple[np.ndarray, np
     import shapely
 
     if not shapely.LinearRing(pts).is_simple:  # an offset beyond a vertex, or an undercut's loop
-        raise ArithmeticError("the exact working profile crosses itself: the envelope folds over (undercut)")
+        raise NoSolution("the exact working profile crosses itself: the envelope folds over (undercut)")
     return pts, ang
 
 

@@ -30,6 +30,8 @@ import cmath
 import math
 from dataclasses import dataclass
 
+from graphmech.errors import NotApplicable
+
 __all__ = [
     "ExactCharacteristics",
     "fourbar",
@@ -236,7 +238,7 @@ def fourbar(A: complex, D: complex, a: float, b: float, c: float, branch: str,
     d = abs(D - A)
     kind = fourbar_class(a, b, c, d)
     if kind not in ("crank_rocker_AB", "double_crank", "change_point") or not _turns(a, b, c, d):
-        raise ValueError(f"the crank does not turn fully ({kind.replace('_', ' ')}): no extreme positions")
+        raise NotApplicable(f"the crank does not turn fully ({kind.replace('_', ' ')}): no extreme positions")
     side = 1.0 if branch == "left" else -1.0
     # Coincident frame pivots (d = 0): B and C both turn about A, the triangle ABC is rigid and γ
     # the same everywhere; the x axis stands in for the undefined frame line.
@@ -257,7 +259,7 @@ def fourbar(A: complex, D: complex, a: float, b: float, c: float, branch: str,
         return _pick(cands, on_branch)
 
     if _equal(a, b, a + b + c + d):  # a deltoid: the folded position puts C on A, B anywhere
-        raise ValueError("AB = BC (a deltoid): at the folded position C falls on A, so the crank's angle "
+        raise NotApplicable("AB = BC (a deltoid): at the folded position C falls on A, so the crank's angle "
                          "there is undetermined: no extreme positions")
     C1, C2 = c_at(b - a, -1.0), c_at(b + a, 1.0)
     start, end, theta = _extremes(A, C1, C2, sense)
@@ -304,7 +306,7 @@ def slider_crank(A: complex, G: complex, guide_angle: float, a: float, b: float,
     rel = (A - G) / g  # A in the guide's frame: along, offset
     t_a, e = rel.real, rel.imag
     if a + abs(e) > b * (1.0 + EQUAL_REL):
-        raise ValueError(f"the crank does not turn fully: a + |e| = {a + abs(e):.6g} > b = {b:.6g}")
+        raise NotApplicable(f"the crank does not turn fully: a + |e| = {a + abs(e):.6g} > b = {b:.6g}")
     sgn = 1.0 if branch == "forward" else -1.0
 
     def c_at(ac: float) -> complex:
@@ -332,7 +334,7 @@ def guide_bar(A: complex, C: complex, a: float, sense: float = 1.0) -> ExactChar
     """
     d = abs(C - A)
     if a >= d * (1.0 - EQUAL_REL):
-        raise ValueError(f"the bar turns fully (crank {a:.6g} ≥ frame {d:.6g}): a rotating guide bar "
+        raise NotApplicable(f"the bar turns fully (crank {a:.6g} ≥ frame {d:.6g}): a rotating guide bar "
                          "has no extreme positions")
     beta = math.acos(a / d)  # at an extreme the bar is tangent to the crank circle: ∠CAB
     base = cmath.phase(C - A)

@@ -21,13 +21,15 @@ import math
 from dataclasses import dataclass
 from typing import Literal, Sequence
 
+from graphmech.errors import OutOfDomain
+
 Direction = Literal["forward", "reverse"]
 
 
 def _sign(direction: Direction) -> float:
     """+1 forward, −1 reverse: reversing the motion turns every total reaction the other way by φ."""
     if direction not in ("forward", "reverse"):
-        raise ValueError(f"direction must be 'forward' or 'reverse', not {direction!r}")
+        raise OutOfDomain(f"direction must be 'forward' or 'reverse', not {direction!r}")
     return 1.0 if direction == "forward" else -1.0
 
 

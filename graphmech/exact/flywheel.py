@@ -29,7 +29,7 @@ from typing import Literal
 import numpy as np
 from scipy.optimize import brentq
 
-from graphmech.errors import SceneError
+from graphmech.errors import NotApplicable, OutOfDomain, SceneError
 from graphmech.exact.linkage import Kinematics, solve
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.mechanisms.machine import (
@@ -530,7 +530,7 @@ class ExactMachine:
         """
         ld, st = self.machine.loads[k], self.strokes[k]
         if not isinstance(ld, SliderLoad) or st is None:
-            raise ValueError(f"load {k} is not a slider load")
+            raise NotApplicable(f"load {k} is not a slider load")
         phi = np.asarray(phi, dtype=float)
         kin = self._kinematics(phi)
         ux, uy = math.cos(ld.axis), math.sin(ld.axis)
@@ -737,7 +737,7 @@ class ExactMachine:
             return wm * (1.0 + 0.5 * de), wm * (1.0 - 0.5 * de)
         if form == "book":
             return wm * math.sqrt(1.0 + de), wm * math.sqrt(1.0 - de)
-        raise ValueError(f"form must be 'exact' or 'book', got {form!r}")
+        raise OutOfDomain(f"form must be 'exact' or 'book', got {form!r}")
 
     def wittenbauer(self, form: Literal["exact", "book"] = "exact") -> Tangents:
         """The energy-mass diagram's tangents k, l and the flywheel ``(k − l)/(ω_m²δ)``.
@@ -796,7 +796,7 @@ class ExactMachine:
         wm = self.machine.omega_m
         jmin = self.inertia_extremes().minimum
         if not J_F + jmin > 0:
-            raise ValueError(f"J_F + Jп must be > 0 everywhere (J_F = {J_F:.6g}, "
+            raise OutOfDomain(f"J_F + Jп must be > 0 everywhere (J_F = {J_F:.6g}, "
                              f"min Jп = {jmin:.6g} kg·m²)")
         dt_s = self._samples_dt()
         jt_s = J_F + self._s_j
@@ -821,7 +821,7 @@ class ExactMachine:
 
         t_lo = -ex.minimum  # ω reaches 0 at the lowest energy
         if excess(t_lo) > 0:
-            raise ValueError(f"J_F = {J_F:.6g} kg·m² is too small: the speed would fall to 0 before "
+            raise OutOfDomain(f"J_F = {J_F:.6g} kg·m² is too small: the speed would fall to 0 before "
                              f"the mean speed could be ω_m")
         t_hi = 0.5 * (J_F + self._j_mean) * wm * wm + abs(ex.minimum) + abs(ex.maximum)
         while excess(t_hi) < 0:

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphmech.errors import NotApplicable
 from graphmech.exact.linkage import Kinematics, solve as solve_kinematics
 from graphmech.mechanisms.forces import ForceModel
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, SliderInput
@@ -103,7 +104,7 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
             slides += [(y.links[1], y.links[0], y.p, "slot"), (frame, y.links[1], y.c, "frame")]
             on.setdefault(y.c, y.links[1])
         else:
-            raise ValueError(f"the matrix method here takes RRR, RRP and RPR groups, not {y.kind}")
+            raise NotApplicable(f"the matrix method here takes RRR, RRP and RPR groups, not {y.kind}")
     return revolutes, slides
 
 
@@ -139,7 +140,7 @@ def solve_forces(linkage: Linkage, model: ForceModel, positions: np.ndarray,
     ref = {k: kin.point[pts[k][0]] for k in links}  # moments of link k about its first point
     m = 2 * len(revolutes) + 2 * len(sliders) + 1
     if m != 3 * len(links):
-        raise ValueError(f"{m} unknowns for {3 * len(links)} equations: not a class-II linkage")
+        raise NotApplicable(f"{m} unknowns for {3 * len(links)} equations: not a class-II linkage")
     A = np.zeros((n, m, m))
     rhs = np.zeros((n, m))
 

@@ -28,7 +28,7 @@ from typing import Union
 
 import numpy as np
 
-from graphmech.errors import SceneError
+from graphmech.errors import OutOfDomain, SceneError
 from graphmech.tolerances import PARALLEL_SIN, TANGENT_REL
 from graphmech.mechanisms.linkage import (
     RPP,
@@ -517,7 +517,7 @@ def solve(linkage: Linkage, positions: np.ndarray) -> Kinematics:
     plan = _plan(linkage)
     q = np.atleast_1d(np.asarray(positions, dtype=float))
     if q.ndim != 1:
-        raise ValueError(f"positions must be one-dimensional, got shape {q.shape}")
+        raise OutOfDomain(f"positions must be one-dimensional, got shape {q.shape}")
     n = q.shape[0]
     st = _State(n)
     finite = np.isfinite(q)

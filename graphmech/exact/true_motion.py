@@ -36,7 +36,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
-from graphmech.errors import GraphmechError
+from graphmech.errors import GraphmechError, OutOfDomain
 from graphmech.exact.flywheel import ExactMachine, table_line
 from graphmech.mechanisms.machine import CrankMoment, LinkMoment, Machine, SliderLoad
 
@@ -361,7 +361,7 @@ class _Integrator:
     def __init__(self, model: _Model, solver: str, rtol: float, atol: float, max_steps: int,
                  omega_m: float) -> None:
         if solver not in IMPLICIT + EXPLICIT:
-            raise ValueError(f"solver must be one of {IMPLICIT + EXPLICIT}, got {solver!r}")
+            raise OutOfDomain(f"solver must be one of {IMPLICIT + EXPLICIT}, got {solver!r}")
         self.model, self.solver, self.rtol = model, solver, rtol
         # One atol for ω, t and q: t (~Φ/ω_m) then has an accuracy like ω's. A much tighter one
         # for t, however scaled, keeps LSODA in Adams mode on the stiff case (stability-limited
@@ -467,10 +467,10 @@ class _Integrator:
 
 def _tolerances(machine: Machine, rtol: float, atol: float | None) -> tuple[float, float]:
     if not (0 < rtol < 1):
-        raise ValueError(f"rtol must lie in (0, 1), got {rtol}")
+        raise OutOfDomain(f"rtol must lie in (0, 1), got {rtol}")
     a = 1e-3 * rtol * machine.omega_m if atol is None else float(atol)
     if not a > 0:
-        raise ValueError(f"atol must be > 0, got {atol}")
+        raise OutOfDomain(f"atol must be > 0, got {atol}")
     return rtol, a
 
 
@@ -510,7 +510,7 @@ def integrate(machine: Machine, exact: ExactMachine, J_F: float, phi_span: tuple
     drive, _ = _drive(machine, exact, J_F)
     lo, hi = float(phi_span[0]), float(phi_span[1])
     if not 0.0 <= lo < hi <= exact.cycle:
-        raise ValueError(f"phi_span must lie within [0, Φ] with φ_a < φ_b, got {phi_span}")
+        raise OutOfDomain(f"phi_span must lie within [0, Φ] with φ_a < φ_b, got {phi_span}")
     ig = _Integrator(_Model(machine, exact, J_F, drive), solver, rtol, a, max_steps,
                      machine.omega_m)
     cy = ig.run(lo, hi, float(omega0), dense=False)
@@ -573,7 +573,7 @@ def true_motion(machine: Machine, exact: ExactMachine, J_F: float, *, solver: st
     """
     rtol, a = _tolerances(machine, rtol, atol)
     if max_cycles < 1:
-        raise ValueError("max_cycles must be ≥ 1")
+        raise OutOfDomain("max_cycles must be ≥ 1")
     drive, ws = _drive(machine, exact, J_F)
     model = _Model(machine, exact, J_F, drive)
     ig = _Integrator(model, solver, rtol, a, max_steps, machine.omega_m)
@@ -656,10 +656,10 @@ def braking_time(J: float, omega0: float, M_brake: float) -> Braking:
     (2.5, 2.5)
     """
     if not (J > 0 and omega0 > 0 and M_brake > 0):
-        raise ValueError("J, ω0 and the braking moment must all be > 0")
+        raise OutOfDomain("J, ω0 and the braking moment must all be > 0")
     t = J * omega0 / M_brake
     if not (math.isfinite(t) and t >= T_STOP_MIN):
-        raise ValueError(f"the stopping time J·ω0/M = {J:.6g}·{omega0:.6g}/{M_brake:.6g} s is out of range")
+        raise OutOfDomain(f"the stopping time J·ω0/M = {J:.6g}·{omega0:.6g}/{M_brake:.6g} s is out of range")
 
     def stopped(tau: float, y: np.ndarray) -> float:
         return float(y[0])

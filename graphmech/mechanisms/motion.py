@@ -33,7 +33,7 @@ from typing import Any
 
 import numpy as np
 
-from graphmech.errors import SceneError
+from graphmech.errors import OutOfDomain, SceneError
 from graphmech.mechanisms.cam import MotionProgram
 
 __all__ = ["LAWS", "Extremum", "Impact", "breakpoints", "displacement", "impacts", "maxima", "validate"]
@@ -410,11 +410,11 @@ def displacement(program: MotionProgram, delta: np.ndarray | float, order: int =
     (3600,)
     """
     if isinstance(order, bool) or order not in (0, 1, 2, 3):
-        raise ValueError(f"order must be 0, 1, 2 or 3, got {order!r}")
+        raise OutOfDomain(f"order must be 0, 1, 2 or 3, got {order!r}")
     c = _compile(program)
     d = np.asarray(delta, dtype=float)
     if not np.all(np.isfinite(d)):
-        raise ValueError("cam angles δ must be finite")
+        raise OutOfDomain("cam angles δ must be finite")
     flat = d.ravel()
     seg, x = _locate(c, flat)
     out = np.empty(flat.shape)
@@ -620,7 +620,7 @@ def maxima(program: MotionProgram, omega: float) -> dict[str, Extremum]:
     (12.732, 0.125)
     """
     if not _finite_number(omega):
-        raise ValueError(f"omega must be a finite number of rad/s, got {omega!r}")
+        raise OutOfDomain(f"omega must be a finite number of rad/s, got {omega!r}")
     c = _compile(program)
     result: dict[str, Extremum] = {}
     for k, key in ((1, "v"), (2, "a"), (3, "j")):

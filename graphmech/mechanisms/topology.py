@@ -27,6 +27,8 @@ from typing import Literal
 
 import numpy as np
 
+from graphmech.errors import OutOfDomain
+
 PairKind = Literal["R", "P", "higher"]
 
 #: The largest Assur group searched for (links): class II–IV groups of the books have 2, 4 or 6.
@@ -162,7 +164,7 @@ def constraint_jacobian(topo: Topology) -> np.ndarray:
     pts = [p.at for p in topo.pairs if p.at is not None]
     if len(pts) < len(topo.pairs):
         missing = [p.name or "+".join(p.links) for p in topo.pairs if p.at is None]
-        raise ValueError(f"pairs without coordinates: {', '.join(missing)}")
+        raise OutOfDomain(f"pairs without coordinates: {', '.join(missing)}")
     cx, cy, size = _reference(topo)
     rows: list[np.ndarray] = []
 

@@ -16,6 +16,7 @@ The balance conditions that check them are solved independently in
 from __future__ import annotations
 
 import math
+from graphmech.errors import OutOfDomain
 from graphmech.mechanisms.rotor import RotorMass
 from dataclasses import dataclass
 from typing import Sequence
@@ -79,7 +80,7 @@ def close_mass_radius_polygon(plane: str, vectors: Sequence[tuple[str, float, fl
         When μW or the correction radius r_b is not a positive finite number (it is divided by).
     """
     if not (0 < mu_W < math.inf and 0 < r_b < math.inf):
-        raise ValueError(f"μW and r_b must be positive and finite, not μW = {mu_W!r}, r_b = {r_b!r}")
+        raise OutOfDomain(f"μW and r_b must be positive and finite, not μW = {mu_W!r}, r_b = {r_b!r}")
     sides = []
     p = (0.0, 0.0)
     total = 0.0
@@ -114,7 +115,7 @@ def dynamic_balance(masses: Sequence[RotorMass], z_I: float, z_II: float, r_b: t
     """
     span = z_II - z_I
     if span == 0.0:
-        raise ValueError("the correction planes coincide")
+        raise OutOfDomain("the correction planes coincide")
     out = []
     for plane, r, lever in (("I", r_b[0], lambda z: (z_II - z) / span), ("II", r_b[1], lambda z: (z - z_I) / span)):
         vecs = []

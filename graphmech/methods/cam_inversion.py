@@ -29,6 +29,7 @@ from typing import Any
 import numpy as np
 
 from graphmech.construction import Construction
+from graphmech.errors import NoSolution
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.cam import DiscCam, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
@@ -261,7 +262,7 @@ def read_drawing(cam: DiscCam, drawn: DrawnProfile) -> CamReading:
     """What the textbook reads off a drawn profile (see :func:`read_cam`)."""
     delta = drawn.delta
     if not drawn.valid.all():
-        raise ArithmeticError(f"the inversion is not drawable at {int(np.sum(~drawn.valid))} divisions")
+        raise NoSolution(f"the inversion is not drawable at {int(np.sum(~drawn.valid))} divisions")
     f = cam.follower
     if f.contact == "flat":
         act = drawn.actual

@@ -26,6 +26,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from typing import Callable
+from graphmech.errors import NotApplicable
 from graphmech.geometry.kernels import ScalarOps, intersect_circle_line, intersect_circles
 from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage
 
@@ -61,9 +62,9 @@ def basic_loop(linkage: Linkage) -> Loop:
     """The basic loop of ``linkage``, or ValueError saying why it has none we can characterise."""
     d = linkage.driver
     if not isinstance(d, Crank):
-        raise ValueError("the characteristics are those of a crank-driven loop; this linkage is driven by a slider")
+        raise NotApplicable("the characteristics are those of a crank-driven loop; this linkage is driven by a slider")
     if not linkage.dyads:
-        raise ValueError("the linkage has no dyad after its crank: nothing swings or slides")
+        raise NotApplicable("the linkage has no dyad after its crank: nothing swings or slides")
     y = linkage.dyads[0]
     sense = -1.0 if d.omega < 0 else 1.0
     names = {"A": d.pivot, "B": d.tip}
@@ -79,7 +80,7 @@ def basic_loop(linkage: Linkage) -> Loop:
     if isinstance(y, RPR) and y.bar == "second" and y.p == d.tip and y.q in linkage.frame_points:
         names.update(C=y.q)
         return Loop("guide_bar", names, (d.link, y.links[0], y.links[1]), d.length, 0.0, 0.0, sense)
-    raise ValueError("the first dyad does not close a four-bar (RRR to a frame point), a slider-crank (RRP on the "
+    raise NotApplicable("the first dyad does not close a four-bar (RRR to a frame point), a slider-crank (RRP on the "
                      "crank pin) or a guide bar (RPR with the bar pivoted on the frame, bar = \"second\") with "
                      "the crank")
 
@@ -243,7 +244,7 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
         d = math.hypot(D[0], D[1])
         kind = grashof_class(a, b, c, d)
         if kind not in ("crank_rocker_AB", "double_crank", "change_point"):
-            raise ValueError(f"{no_turn} ({kind.replace('_', ' ')} by Grashof's rule): no extreme positions")
+            raise NotApplicable(f"{no_turn} ({kind.replace('_', ' ')} by Grashof's rule): no extreme positions")
         y = linkage.dyads[0]
         branch = y.branch if isinstance(y, RRR) and y.q == n["D"] else ("right" if y.branch == "left" else "left")  # type: ignore[union-attr]
         side = 1.0 if branch == "left" else -1.0
@@ -271,7 +272,7 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
             return DrawnCharacteristics(loop, kind, mu_l, pts, None, None, None, None, None, g_best[0],
                                         _wrap(math.atan2(g_best[1][1], g_best[1][0])))
         if b - a <= 1e-12 * (a + b + c + d):  # a deltoid AB = BC: folded, C falls on A
-            raise ValueError(f"{n['A']}{n['B']} = {n['B']}{n['C']} (a deltoid): at the folded position "
+            raise NotApplicable(f"{n['A']}{n['B']} = {n['B']}{n['C']} (a deltoid): at the folded position "
                              f"{n['C']} falls on {n['A']}, so the crank's angle there is undetermined: "
                              "no extreme positions")
         B1, C1 = rocker_pin(b - a, True)  # folded: AC₁ = BC − AB
@@ -311,7 +312,7 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
         kind = "crank"
         Cp = mm(linkage.frame_points[n["C"]])
         if a >= math.hypot(*Cp) * (1.0 - 1e-12):
-            raise ValueError("the bar turns fully (a rotating guide bar): no extreme positions")
+            raise NotApplicable("the bar turns fully (a rotating guide bar): no extreme positions")
         M = (Cp[0] / 2.0, Cp[1] / 2.0)  # the circle on AC as diameter: the bar ⟂ the crank there
         ops.step = f"{n['B']}₁, {n['B']}₂ = crank circle ∩ circle on {n['A']}{n['C']} as diameter"
         r = math.hypot(*Cp) / 2.0
@@ -355,6 +356,6 @@ def fourbar_lengths(linkage: Linkage) -> dict[str, float]:
     """The four links of a four-bar loop by their ends (m): AB, BC, CD, AD."""
     loop = basic_loop(linkage)
     if loop.kind != "fourbar":
-        raise ValueError("Grashof's rule is for a hinged four-bar")
+        raise NotApplicable("Grashof's rule is for a hinged four-bar")
     A, D = linkage.frame_points[loop.names["A"]], linkage.frame_points[loop.names["D"]]
     return {"AB": loop.a, "BC": loop.b, "CD": loop.c, "AD": math.dist(A, D)}

@@ -12,6 +12,8 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike
 
+from graphmech.errors import OutOfDomain
+
 
 def frozen_array(a: ArrayLike) -> np.ndarray:
     """A read-only float copy of ``a``."""
@@ -32,13 +34,13 @@ def divisions(x_mm: ArrayLike, y_mm: ArrayLike, H_mm: float) -> tuple[np.ndarray
     x = np.asarray(x_mm, dtype=float)
     y = np.asarray(y_mm, dtype=float)
     if x.ndim != 1 or y.shape != x.shape or x.size < 2:
-        raise ValueError(f"x_mm and y_mm must be 1-D of the same length ≥ 2, got shapes {x.shape} and {y.shape}")
+        raise OutOfDomain(f"x_mm and y_mm must be 1-D of the same length ≥ 2, got shapes {x.shape} and {y.shape}")
     if not (np.isfinite(x).all() and np.isfinite(y).all()):
-        raise ValueError("the divisions and ordinates must be finite")
+        raise OutOfDomain("the divisions and ordinates must be finite")
     if not np.all(np.diff(x) > 0.0):
-        raise ValueError("the division abscissae must be strictly increasing")
+        raise OutOfDomain("the division abscissae must be strictly increasing")
     if not (H_mm > 0.0 and math.isfinite(H_mm)):
-        raise ValueError(f"the pole distance H must be positive and finite, not {H_mm!r}")
+        raise OutOfDomain(f"the pole distance H must be positive and finite, not {H_mm!r}")
     return x, y, float(H_mm)
 
 

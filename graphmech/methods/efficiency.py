@@ -22,7 +22,7 @@ import math
 from dataclasses import dataclass
 from typing import Literal, Sequence
 
-from graphmech.errors import DegenerateConstruction
+from graphmech.errors import DegenerateConstruction, OutOfDomain
 from graphmech.geometry.kernels import ScalarOps, intersect_lines
 
 XY = tuple[float, float]
@@ -175,7 +175,7 @@ def _eta(direction: Direction, F0: float, F: float | None) -> float:
 def _sense(direction: str) -> float:
     """+1 forward, −1 reverse; anything else is a caller's mistake, not a reverse stroke."""
     if direction not in ("forward", "reverse"):
-        raise ValueError(f"direction must be 'forward' or 'reverse', not {direction!r}")
+        raise OutOfDomain(f"direction must be 'forward' or 'reverse', not {direction!r}")
     return 1.0 if direction == "forward" else -1.0
 
 
@@ -206,7 +206,7 @@ def incline(Q: float, alpha: float, phi: float, direction: Direction, mu_F: floa
     fname, rname = names
     up = (math.cos(alpha), math.sin(alpha))
     if push not in ("horizontal", "parallel"):
-        raise ValueError(f"push must be 'horizontal' or 'parallel', not {push!r}")
+        raise OutOfDomain(f"push must be 'horizontal' or 'parallel', not {push!r}")
     v = up if _sense(direction) > 0 else (-up[0], -up[1])
     normal = (-math.sin(alpha), math.cos(alpha))  # the incline pushes the block up-and-out
     f_dir = (1.0, 0.0) if push == "horizontal" else up

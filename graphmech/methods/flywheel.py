@@ -33,6 +33,7 @@ from typing import Literal, Mapping, Sequence
 import numpy as np
 from numpy.typing import ArrayLike
 
+from graphmech.errors import OutOfDomain
 from graphmech.methods.graphical_integration import Integration, differentiate_by_ray, integrate_by_chords
 from graphmech.methods.wittenbauer import (EnergyIndicator, TangentForm, WittenbauerDiagram, energy_indicator,
                                            flywheel_inertia, tangent_slopes, wittenbauer)
@@ -52,8 +53,8 @@ NEEDS = ("wittenbauer", "indicator")
 SIGN_SLACK = 1e-12
 
 
-class WrongBalance(ValueError):
-    """The loads' work over a cycle has the sign the constant moment cannot balance.
+class WrongBalance(OutOfDomain):
+    """The loads' work over a cycle has the sign the constant moment cannot balance (a ValueError).
 
     ``work`` is Aп(Φ), J: > 0 when the loads deliver work (no constant *driving* moment balances
     them), < 0 when a driving torque absorbs it (no constant *resistance* does)."""
@@ -164,9 +165,9 @@ def _positive(name: str, v: object) -> float:
     try:
         x = float(v)  # type: ignore[arg-type]
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number, not {v!r}") from None
+        raise OutOfDomain(f"{name} must be a number, not {v!r}") from None
     if not (x > 0.0 and math.isfinite(x)):
-        raise ValueError(f"{name} must be positive and finite, not {v!r}")
+        raise OutOfDomain(f"{name} must be positive and finite, not {v!r}")
     return x
 
 
@@ -174,7 +175,7 @@ def _inputs(phi: ArrayLike, J: ArrayLike, M: ArrayLike, cycle: float) -> tuple[n
     p, j, m = (np.asarray(a, dtype=float) for a in (phi, J, M))
     problems = []
     if p.ndim != 1 or p.size < 2 or j.shape != p.shape or m.shape != p.shape:
-        raise ValueError(f"phi, J and M must be 1-D arrays of one length N ≥ 2, got shapes {p.shape}, {j.shape}, "
+        raise OutOfDomain(f"phi, J and M must be 1-D arrays of one length N ≥ 2, got shapes {p.shape}, {j.shape}, "
                          f"{m.shape}")
     if not (np.isfinite(p).all() and np.isfinite(j).all() and np.isfinite(m).all()):
         problems.append("phi, J and M must be finite")
@@ -185,7 +186,7 @@ def _inputs(phi: ArrayLike, J: ArrayLike, M: ArrayLike, cycle: float) -> tuple[n
     if np.isfinite(j).all() and (j < 0.0).any():
         problems.append("a reduced moment of inertia cannot be negative")
     if problems:
-        raise ValueError("; ".join(problems))
+        raise OutOfDomain("; ".join(problems))
     return p, j, m
 
 
@@ -204,7 +205,7 @@ def _choose_scales(phi_c: np.ndarray, J: np.ndarray, M_c: np.ndarray, omega_m: f
     """Round scales for what ``given`` lacks, and H (see :func:`design_flywheel`)."""
     bad = sorted(set(given) - {"phi", "M", "J", "T"})
     if bad:
-        raise ValueError(f"unknown scale(s) {', '.join(map(repr, bad))}; a flywheel uses phi, M, J, T")
+        raise OutOfDomain(f"unknown scale(s) {', '.join(map(repr, bad))}; a flywheel uses phi, M, J, T")
     scales = {k: _positive(f"the scale μ{k}", v) for k, v in given.items()}
     sources = {k: "given" for k in scales}
     cycle = float(phi_c[-1])
@@ -222,7 +223,7 @@ def _choose_scales(phi_c: np.ndarray, J: np.ndarray, M_c: np.ndarray, omega_m: f
         H = _positive("the pole distance H", H_mm)
         sources["H"] = "given"
         if "T" in scales and abs(scales["T"] - per_H * H) > 1e-9 * scales["T"]:
-            raise ValueError(f"μT = {scales['T']:g} J/mm contradicts μM·μφ·H = {per_H * H:g} J/mm")
+            raise OutOfDomain(f"μT = {scales['T']:g} J/mm contradicts μM·μφ·H = {per_H * H:g} J/mm")
     elif "T" in scales:
         H = scales["T"] / per_H
         sources["H"] = "μT/(μM·μφ)"
@@ -300,13 +301,13 @@ def design_flywheel(phi: ArrayLike, J: ArrayLike, M: ArrayLike, *, cycle: float,
     omega_m = _positive("ω_m", omega_m)
     delta = _positive("δ", delta)
     if balance not in ("driving", "resisting"):
-        raise ValueError(f"balance must be 'driving' or 'resisting', not {balance!r}")
+        raise OutOfDomain(f"balance must be 'driving' or 'resisting', not {balance!r}")
     if form not in ("exact", "book"):
-        raise ValueError(f"form must be 'exact' or 'book', not {form!r}")
+        raise OutOfDomain(f"form must be 'exact' or 'book', not {form!r}")
     need = tuple(need)
     bad = [x for x in need if x not in NEEDS]
     if bad:
-        raise ValueError(f"need may hold {' and '.join(NEEDS)}, not {', '.join(map(repr, bad))}")
+        raise OutOfDomain(f"need may hold {' and '.join(NEEDS)}, not {', '.join(map(repr, bad))}")
     p, j, m = _inputs(phi, J, M, cycle)
     if "wittenbauer" in need:  # the tangents' δ range, before any drawing
         tangent_slopes(omega_m, delta, 1.0, 1.0, form)

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
+from graphmech.errors import OutOfDomain
 from graphmech.methods.chords import divisions, frozen_array
 
 __all__ = ["Differentiation", "derivative_scale", "differentiate_by_chords", "differentiate_cycle"]
@@ -134,7 +135,7 @@ def differentiate_cycle(x_mm: ArrayLike, y_mm: ArrayLike, period_mm: float, H_mm
     x = np.asarray(x_mm, dtype=float)
     y = np.asarray(y_mm, dtype=float)
     if x.ndim != 1 or x.size < 2 or y.shape != x.shape:
-        raise ValueError("a cycle needs at least two divisions, with one ordinate each")
+        raise OutOfDomain("a cycle needs at least two divisions, with one ordinate each")
     if not (period_mm > x[-1] - x[0]):
-        raise ValueError("the period must be longer than the span of the divisions")
+        raise OutOfDomain("the period must be longer than the span of the divisions")
     return differentiate_by_chords(np.append(x, x[0] + period_mm), np.append(y, y[0] + rise_mm), H_mm)

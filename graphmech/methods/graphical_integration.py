@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
+from graphmech.errors import OutOfDomain
 from graphmech.methods.chords import divisions, frozen_array
 from graphmech.methods.graphical_differentiation import differentiate_by_chords
 
@@ -150,11 +151,11 @@ def differentiate_by_ray(x_mm: float, y_end_mm: float, H_mm: float) -> float:
     -5.0
     """
     if not (x_mm > 0.0 and math.isfinite(x_mm)):
-        raise ValueError(f"the line's end abscissa must be positive and finite, not {x_mm!r}")
+        raise OutOfDomain(f"the line's end abscissa must be positive and finite, not {x_mm!r}")
     if not (H_mm > 0.0 and math.isfinite(H_mm)):
-        raise ValueError(f"the pole distance H must be positive and finite, not {H_mm!r}")
+        raise OutOfDomain(f"the pole distance H must be positive and finite, not {H_mm!r}")
     if not math.isfinite(y_end_mm):
-        raise ValueError(f"the line's end ordinate must be finite, not {y_end_mm!r}")
+        raise OutOfDomain(f"the line's end ordinate must be finite, not {y_end_mm!r}")
     # a straight line is its own chord: the ray of its one interval, as differentiation by chords draws it
     return float(differentiate_by_chords([0.0, float(x_mm)], [0.0, float(y_end_mm)], float(H_mm)).derivative_mm[0])
 

@@ -31,6 +31,7 @@ from typing import Any, Literal, Mapping
 
 import numpy as np
 
+from graphmech.errors import NotApplicable, OutOfDomain
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, Linkage, SliderInput
 from graphmech.tolerances import COND_WARN, PARALLEL_SIN
 
@@ -507,7 +508,7 @@ def signed_rate(linkage: Linkage, x: str) -> tuple[str, str, tuple[float, float]
     frame = linkage.frame_link
     carriers = [lid for lid, pts in linkage.links().items() if x in pts and lid != frame]
     if x in linkage.frame_points or not carriers:
-        raise ValueError(f"{x} is a point of the frame: its velocity is always 0" if x in linkage.frame_points
+        raise OutOfDomain(f"{x} is a point of the frame: its velocity is always 0" if x in linkage.frame_points
                          else f"no point {x!r} in the linkage")
     for dc in direct_centres(linkage):
         if frame not in dc.links:
@@ -519,7 +520,7 @@ def signed_rate(linkage: Linkage, x: str) -> tuple[str, str, tuple[float, float]
             return "omega", lid, None
         assert dc.normal is not None
         return "slide", lid, (math.sin(dc.normal), -math.cos(dc.normal))
-    raise ValueError(f"v_{x} vanishes only where {x} happens to be the instant centre of its link with the frame, "
+    raise NotApplicable(f"v_{x} vanishes only where {x} happens to be the instant centre of its link with the frame, "
                      f"which moves: choose a point of a link pivoted on the frame or of a slider on a frame guide")
 
 

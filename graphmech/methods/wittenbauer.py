@@ -37,6 +37,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
+from graphmech.errors import OutOfDomain
 from graphmech.tolerances import SHALLOW_DEG
 
 TangentForm = Literal["exact", "book"]
@@ -128,14 +129,14 @@ def tangent_slopes(omega_m: float, delta: float, mu_J: float, mu_T: float,
     [0.10616, 0.07078]
     """
     if form not in ("exact", "book"):
-        raise ValueError(f"form must be 'exact' or 'book', not {form!r}")
+        raise OutOfDomain(f"form must be 'exact' or 'book', not {form!r}")
     limit = 2.0 if form == "exact" else 1.0
     if not (omega_m > 0.0 and math.isfinite(omega_m)):
-        raise ValueError(f"ω_m must be positive and finite, not {omega_m!r}")
+        raise OutOfDomain(f"ω_m must be positive and finite, not {omega_m!r}")
     if not (0.0 < delta < limit):
-        raise ValueError(f"δ must lie in (0, {limit:g}) for the {form} tangents, not {delta!r}")
+        raise OutOfDomain(f"δ must lie in (0, {limit:g}) for the {form} tangents, not {delta!r}")
     if not (mu_J > 0.0 and mu_T > 0.0 and math.isfinite(mu_J) and math.isfinite(mu_T)):
-        raise ValueError(f"the scales μJ and μT must be positive and finite, not {mu_J!r}, {mu_T!r}")
+        raise OutOfDomain(f"the scales μJ and μT must be positive and finite, not {mu_J!r}, {mu_T!r}")
     c = mu_J * omega_m * omega_m / (2.0 * mu_T)
     if form == "exact":
         return c * (1.0 + delta / 2.0) ** 2, c * (1.0 - delta / 2.0) ** 2
@@ -177,11 +178,11 @@ def wittenbauer(J_mm: ArrayLike, T_mm: ArrayLike, tan_psi_max: float, tan_psi_mi
     x = np.asarray(J_mm, dtype=float)
     y = np.asarray(T_mm, dtype=float)
     if x.ndim != 1 or x.shape != y.shape or x.size == 0:
-        raise ValueError(f"J_mm and T_mm must be 1-D of one length ≥ 1, got shapes {x.shape} and {y.shape}")
+        raise OutOfDomain(f"J_mm and T_mm must be 1-D of one length ≥ 1, got shapes {x.shape} and {y.shape}")
     if not (np.isfinite(x).all() and np.isfinite(y).all()):
-        raise ValueError("the diagram's points must be finite")
+        raise OutOfDomain("the diagram's points must be finite")
     if not (math.isfinite(tan_psi_max) and math.isfinite(tan_psi_min) and tan_psi_max > tan_psi_min):
-        raise ValueError(f"tan ψmax must exceed tan ψmin, got {tan_psi_max!r} and {tan_psi_min!r}")
+        raise OutOfDomain(f"tan ψmax must exceed tan ψmin, got {tan_psi_max!r} and {tan_psi_min!r}")
     tmax, tmin = float(tan_psi_max), float(tan_psi_min)
     upper = y - x * tmax  # each point's tangent of slope tan ψmax, cut on the ΔT axis
     lower = y - x * tmin
@@ -234,7 +235,7 @@ def energy_indicator(T_mm: ArrayLike) -> EnergyIndicator:
     """
     t = np.asarray(T_mm, dtype=float)
     if t.ndim != 1 or t.size == 0 or not np.isfinite(t).all():
-        raise ValueError("ΔT must be a non-empty 1-D array of finite values")
+        raise OutOfDomain("ΔT must be a non-empty 1-D array of finite values")
     n = t.size
     closed = np.append(t, t[0])
     d = np.diff(closed)

@@ -17,7 +17,7 @@ import numpy as np
 from graphmech.accuracy import DISCRETISATION, READING, estimate_from_three, relative
 from graphmech.problems.judging import Row, Verdict, close_names, in_double_precision, measured_entries
 from graphmech.problems.reader import page_size
-from graphmech.errors import SceneError
+from graphmech.errors import NoSolution, SceneError
 from graphmech.exact import cam as exact_cam
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxima
@@ -77,7 +77,7 @@ def profile_deviation(cam: DiscCam, actual: np.ndarray, samples: int = EXACT_SAM
     try:
         exact, _ = exact_cam.working_profile(cam, samples)
     except ValueError as e:  # a flat face cannot follow a velocity jump
-        raise ArithmeticError(str(e)) from None
+        raise NoSolution(str(e)) from None
     return float(np.max(shapely.distance(shapely.points(exact), shapely.LinearRing(actual))))
 
 

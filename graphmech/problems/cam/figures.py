@@ -34,6 +34,7 @@ from graphmech.methods.cam_inversion import DrawnProfile, divisions
 from graphmech.drawing.lettering import text_box_size
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
                                          Polyline, Primitive, Segment, Sheet, angle_arc)
+from graphmech.errors import OutOfDomain
 from graphmech.scales import format_scale
 
 #: The panels a cam sheet can show, in the order they stand in the row.
@@ -540,15 +541,15 @@ def cam_sheet(title: str, cam: DiscCam, drawn: DrawnProfile | None, scales: dict
     """
     bad = [p for p in show if p not in PANELS]
     if bad:
-        raise ValueError(f"unknown panel(s) {', '.join(map(repr, bad))}; use {', '.join(PANELS)}")
+        raise OutOfDomain(f"unknown panel(s) {', '.join(map(repr, bad))}; use {', '.join(PANELS)}")
     wanted = [p for p in PANELS if p in show]
     keys = {"l"} if "profile" in wanted else set()
     keys |= {SCALE_KEY[p] for p in wanted if p != "profile"} | ({"phi"} if set(wanted) - {"profile"} else set())
     missing = sorted(k for k in keys if not (k in scales and scales[k] > 0.0 and math.isfinite(scales[k])))
     if missing:
-        raise ValueError(f"the scale(s) {', '.join(missing)} must be given, finite and > 0")
+        raise OutOfDomain(f"the scale(s) {', '.join(missing)} must be given, finite and > 0")
     if "profile" in wanted and drawn is None:
-        raise ValueError("the profile panel needs the inversion's drawing (draw_profile)")
+        raise OutOfDomain("the profile panel needs the inversion's drawing (draw_profile)")
 
     if drawn is not None:
         delta = np.asarray(drawn.delta, dtype=float)

@@ -38,7 +38,7 @@ from graphmech.problems.judging import Row, Verdict, in_double_precision, measur
 from graphmech.problems.linkage.check import analyse, judge
 from graphmech.problems.linkage.sizes import characteristic, mechanism_size
 from graphmech.problems.reader import page_size
-from graphmech.errors import SceneError
+from graphmech.errors import SceneError, UnknownName
 from graphmech.problems.cycle.scene import MAX_POLE_MM, MIN_POLE_MM
 from graphmech.exact import characteristics as exact_ch
 from graphmech.exact.linkage import solve as solve_exact
@@ -619,7 +619,7 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
     base, _, at = raw.partition("@")
     if kind in ("char", "timing"):
         if at:
-            raise KeyError(f"{base} is a property of the whole cycle: write {base!r} without @")
+            raise UnknownName(f"{base} is a property of the whole cycle: write {base!r} without @")
         values, units = _ch_values(an)
         if base not in values:
             dr = an.drawn
@@ -631,23 +631,23 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
                 why = "the timing needs [characteristics] t_work"
             else:
                 why = f"{base} is not a characteristic of a {dr.loop.kind.replace('_', '-')}"
-            raise KeyError(why)
+            raise UnknownName(why)
         g, e, drawn = values[base]
         unit = units[base]
         return [_row(an, base, unit, g, e, drawn, an.scales["l"] if drawn is not None else 1.0)]
     if kind == "no_diagram":
         subject = _DIAGRAM_NAME.fullmatch(base).group(2)  # type: ignore[union-attr]
         if scene.problem.cycle is None:
-            raise KeyError(f"{base} is read off a diagram of the full cycle: add a [cycle] table with "
+            raise UnknownName(f"{base} is read off a diagram of the full cycle: add a [cycle] table with "
                            f"diagrams = [{subject!r}]".replace("'", '"'))
-        raise KeyError(f"{base} is read off the diagram of {subject}: add {subject} to [cycle] diagrams")
+        raise UnknownName(f"{base} is read off the diagram of {subject}: add {subject} to [cycle] diagrams")
     if kind == "ranges":
         if an.ranges is None or an.ranges_exact is None:
-            raise KeyError(f"{base}: the Grashof ranges need [characteristics] ranges = true")
+            raise UnknownName(f"{base}: the Grashof ranges need [characteristics] ranges = true")
         names = _range_names(an.ranges, scene.linkage)
         names_exact = _range_names(an.ranges_exact, scene.linkage)
         if base not in names or base not in names_exact:
-            raise KeyError(f"unknown Grashof range limit {base!r}; the ranges give "
+            raise UnknownName(f"unknown Grashof range limit {base!r}; the ranges give "
                            f"{', '.join(sorted(names))}")
         return [_row(an, base, "m", names[base], names_exact[base], None, 1.0)]
     # a diagram's value
@@ -656,13 +656,13 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
     what, subject = m.group(1), m.group(2)
     dg = next(g for g in an.cycle.diagrams if g.subject == subject)
     if (what in ("s", "v", "a")) != (dg.kind != "link"):
-        raise KeyError(f"{base}: {subject} is a {'link' if dg.kind == 'link' else 'point'}; write "
+        raise UnknownName(f"{base}: {subject} is a {'link' if dg.kind == 'link' else 'point'}; write "
                        + ("psi_, omega_…_diagram, alpha_…_diagram" if dg.kind == "link" else "s_, v_…_diagram, a_…_diagram"))
     n = an.cycle.n
     mid = what in ("v", "omega")
     labels = [f"{k}.5" for k in range(1, n + 1)] if mid else [str(k) for k in range(1, n + 1)]
     if at and at not in labels:
-        raise KeyError(f"no {'interval middle' if mid else 'position'} {at!r} "
+        raise UnknownName(f"no {'interval middle' if mid else 'position'} {at!r} "
                        f"({labels[0]} … {labels[-1]})")
     idx = [labels.index(at)] if at else range(n)
     ex = _exact_series(an, subject)

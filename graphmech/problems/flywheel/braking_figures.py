@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from graphmech.drawing.primitives import Arrow, Label, Panel, Primitive, Segment
+from graphmech.errors import OutOfDomain
 from graphmech.scales import format_scale, round_scale
 
 #: The longest the t axis and the ω axis are drawn, mm (before rounding the scales up).
@@ -53,7 +54,7 @@ def draw_rundown(J: float, omega0: float, M_brake: float, t_limit: float | None 
     (0.02, 2.0, 2.5)
     """
     if not (J > 0.0 and omega0 > 0.0 and M_brake > 0.0):
-        raise ValueError("J, ω0 and the braking moment must all be > 0")
+        raise OutOfDomain("J, ω0 and the braking moment must all be > 0")
     eps = M_brake / J
     t_span = max(omega0 / eps, t_limit or 0.0)
     mu_t, mu_omega = round_scale(t_span / T_AXIS_MM), round_scale(omega0 / OMEGA_AXIS_MM)

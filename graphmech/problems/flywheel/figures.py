@@ -55,6 +55,7 @@ from graphmech.drawing.diagrams import (
     numbers_every,
     phi_axis_numbers,
 )
+from graphmech.errors import OutOfDomain
 
 #: The panels a flywheel sheet can show, in their order on the sheet.
 PANELS = ("moment", "work", "energy", "inertia", "wittenbauer", "indicator")
@@ -298,7 +299,7 @@ def wittenbauer_items(design: FlywheelDesign) -> list[Primitive]:
     """The Wittenbauer diagram at μJ, μT (O, Jп = 0 and ΔT = 0, at the origin)."""
     w = design.wittenbauer
     if w is None:
-        raise ValueError("the design has no Wittenbauer diagram: design it with need=('wittenbauer', …)")
+        raise OutOfDomain("the design has no Wittenbauer diagram: design it with need=('wittenbauer', …)")
     x, y, n = w.x_mm, w.y_mm, design.n
     box = _window(design)
     x0, x1, y0, y1, far = box
@@ -348,7 +349,7 @@ def indicator_items(design: FlywheelDesign) -> list[Primitive]:
     """The energy-indicator chain at μT: vertical vectors from a to a′, ΔW_max dimensioned."""
     e = design.indicator
     if e is None:
-        raise ValueError("the design has no energy indicator: design it with need=(…, 'indicator')")
+        raise OutOfDomain("the design has no energy indicator: design it with need=(…, 'indicator')")
     lv = [float(v) for v in e.levels_mm]
     m = len(lv) - 1
     step = min(INDICATOR_STEP, INDICATOR_WIDTH / max(m - 1, 1))
@@ -463,7 +464,7 @@ def panel_members(show: Sequence[str]) -> list[tuple[str, ...]]:
     """
     bad = [p for p in show if p not in PANELS]
     if bad:
-        raise ValueError(f"unknown panel(s) {', '.join(map(repr, bad))}; use {', '.join(PANELS)}")
+        raise OutOfDomain(f"unknown panel(s) {', '.join(map(repr, bad))}; use {', '.join(PANELS)}")
     wanted = [p for p in PANELS if p in show]
     if "wittenbauer" not in wanted:
         return [(p,) for p in wanted]
@@ -513,12 +514,12 @@ def flywheel_sheet(title: str, design: FlywheelDesign, show: Sequence[str],
     ['moment', 'energy+wittenbauer']
     """
     if not show:
-        raise ValueError(f"show at least one of {', '.join(PANELS)}")
+        raise OutOfDomain(f"show at least one of {', '.join(PANELS)}")
     members = panel_members(show)
     if "wittenbauer" in show and design.wittenbauer is None:
-        raise ValueError("the Wittenbauer diagram is shown but the design has none (need=('wittenbauer',))")
+        raise OutOfDomain("the Wittenbauer diagram is shown but the design has none (need=('wittenbauer',))")
     if "indicator" in show and design.indicator is None:
-        raise ValueError("the energy indicator is shown but the design has none (need=('indicator',))")
+        raise OutOfDomain("the energy indicator is shown but the design has none (need=('indicator',))")
     every = _every(design)
     build = {"moment": lambda: moment_items(design, every), "work": lambda: work_items(design, every),
              "energy": lambda: energy_items(design, every), "inertia": lambda: inertia_items(design),

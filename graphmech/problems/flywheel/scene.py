@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import re
+import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -337,6 +338,9 @@ def _non_negative(r: Reader, s: _Series | None, why: str) -> _Series | None:
 def _at_least_zero(r: Reader, v: Value | None) -> Value | None:
     if v is not None and v.si < 0:
         r.problem(v.path, f"must be ≥ 0, not {v.text()}")
+        return None
+    if v is not None and 0.0 < v.si < sys.float_info.min:  # subnormal: at a drawing's scale it is 0
+        r.problem(v.path, f"must be 0 or at least {sys.float_info.min:.3g}, not {v.text()}")
         return None
     return v
 

@@ -27,7 +27,7 @@ from typing import Any, Callable
 import numpy as np
 
 from graphmech import tolerances as T
-from graphmech.errors import SceneError
+from graphmech.errors import NotApplicable, OutOfDomain, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.instant_centres import (InstantCentres, centre_name, common_link, instant_centres,
@@ -475,11 +475,11 @@ def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
 
     linkage = an.build.linkage
     if not isinstance(linkage.driver, Crank):
-        raise ValueError("crank angles with a vanishing velocity need a crank as the driver")
+        raise NotApplicable("crank angles with a vanishing velocity need a crank as the driver")
     if linkage.driver.omega == 0.0:  # every angle would be a root: nothing to single out
-        raise ValueError(f"the crank stands still (ω = 0): v_{x} is zero at every crank angle")
+        raise NotApplicable(f"the crank stands still (ω = 0): v_{x} is zero at every crank angle")
     if not abs(linkage.driver.omega) * an.size > 1e-250:  # ω = 5e-324: every velocity underflows to 0
-        raise ValueError(f"ω = {linkage.driver.omega:g} rad/s makes every velocity underflow double precision; "
+        raise OutOfDomain(f"ω = {linkage.driver.omega:g} rad/s makes every velocity underflow double precision; "
                          f"the angles where v_{x} vanishes do not depend on ω: give ω = 1")
     kind, lid, u = signed_rate(linkage, x)
     plan, build = an.plan, an.build
@@ -515,7 +515,7 @@ def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
             assert u is not None
             values.append((ic.motions[lid].v0[0] * u[0] + ic.motions[lid].v0[1] * u[1]) * mu)
     if not np.any(np.nan_to_num(values)):  # a point at rest (on the frame): no angles to single out
-        raise ValueError(f"v_{x} is zero at every crank angle: it has no crank angles of its own where it vanishes")
+        raise NotApplicable(f"v_{x} is zero at every crank angle: it has no crank angles of its own where it vanishes")
     graphical = _roots(grid, np.array(values), by_centres)
 
     kin = solve_exact(linkage, grid)

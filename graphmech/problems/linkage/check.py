@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from graphmech import tolerances as T
-from graphmech.errors import DegenerateConstruction, SceneError
+from graphmech.errors import DegenerateConstruction, OutOfDomain, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Linkage
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
@@ -376,17 +376,17 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
     """A measured name → (quantity name, position index, is a drawn segment)."""
     base, at = split_name(name)
     if at is not None and at not in labels:
-        raise ValueError(f"no position {at!r} (positions: {', '.join(labels)})")
+        raise OutOfDomain(f"no position {at!r} (positions: {', '.join(labels)})")
     idx = labels.index(at) if at is not None else (0 if len(labels) == 1 else None)
     if idx is None:
-        raise ValueError(f"the scene has {len(labels)} positions: name one, e.g. {base}@{labels[0]}")
+        raise OutOfDomain(f"the scene has {len(labels)} positions: name one, e.g. {base}@{labels[0]}")
     if base in build.quantities:
         return base, idx, False
     if not is_segment(base):
-        raise ValueError(f"unknown quantity or segment {base!r}{close_names(base, build.quantities)}")
+        raise OutOfDomain(f"unknown quantity or segment {base!r}{close_names(base, build.quantities)}")
     t0, t1 = [t.replace("′", "'") for t in SEGMENT.findall(base)]
     if t0 == t1:
-        raise ValueError(f"a drawn segment needs two different ends, not {base!r}")
+        raise OutOfDomain(f"a drawn segment needs two different ends, not {base!r}")
 
     def matches(token: str, lab: str) -> bool:
         if token == lab:
@@ -401,7 +401,7 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
     # Prefer plain lengths (v_X, a_X, components) over ω/α, which share the segment.
     found = sorted(found, key=lambda n: (n.startswith(("omega", "alpha")), n))
     if not found:
-        raise ValueError(f"no drawn segment {base!r} in this construction")
+        raise OutOfDomain(f"no drawn segment {base!r} in this construction")
     # One drawn segment per pair of end steps, whichever way round it was named: the letters
     # alone may name two (the pole p and the image p of a point P).
     ends: dict[frozenset, str] = {}
@@ -411,8 +411,8 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
         segments = sorted({"".join(sorted(build.quantities[n].segment)) for n in ends.values()})
         if len(segments) == len(ends):
             segments = sorted("".join(build.quantities[n].segment) for n in ends.values())
-            raise ValueError(f"{base!r} could be any of {', '.join(segments)}: name the segment exactly")
-        raise ValueError(f"{base!r} could be any of {', '.join(sorted(ends.values()))}: write one of these instead of {base}")
+            raise OutOfDomain(f"{base!r} could be any of {', '.join(segments)}: name the segment exactly")
+        raise OutOfDomain(f"{base!r} could be any of {', '.join(sorted(ends.values()))}: write one of these instead of {base}")
     return found[0], idx, True
 
 
