@@ -1,0 +1,75 @@
+"""Reading the [balancing] table: each bad scene refused in one line naming its key."""
+from __future__ import annotations
+
+
+import pytest
+
+from graphmech.errors import SceneError
+from graphmech.scene import load_scene
+from tests.conftest import run_cli
+
+
+def write(tmp_path, text, name="r.toml"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def test_coinciding_correction_planes_are_refused_in_one_line(tmp_path):
+    p = write(tmp_path, """
+[balancing]
+type = "dynamic"
+planes_mm = [120, 120]
+correction_radius_mm = 80
+[[balancing.mass]]
+m_kg = 1
+r_mm = 50
+angle_deg = 0
+z_mm = 40
+""")
+    code, out, err = run_cli("check", str(p))
+    assert code == 2 and err == ("r.toml: balancing.planes_mm: the correction planes coincide (z = 0.12 m): "
+                                 "dynamic balancing needs two distinct planes\n")
+
+
+@pytest.mark.parametrize("body, where, words", [
+    ('[balancing]\ntype = "static"\ncorrection_radius_mm = 10\n', "balancing.mass", "nothing to balance"),
+    ('[balancing]\ntype = "dynamic"\ncorrection_radius_mm = 10\n[[balancing.mass]]\nm_kg = 1\nr_mm = 1\n'
+     'angle_deg = 0\nz_mm = 0\n', "balancing.planes", "missing"),
+    ('[balancing]\ntype = "static"\ncorrection_radius_mm = 10\n[[balancing.mass]]\nm_kg = 1\nr_mm = 1\n'
+     'angle_deg = 0\nz_mm = 3\n', "balancing.mass[0].z_mm", "one plane"),
+    ('[balancing]\ntype = "static"\ncorrection_radius_mm = 10\n[[balancing.mass]]\nm_kg = -1\nr_mm = 1\n'
+     'angle_deg = 0\n', "balancing.mass[0].m_kg", "> 0"),
+    ('[balancing]\ntype = "static"\ncorrection_radius_mm = 10\n[[balancing.mass]]\nm = 1\nr_mm = 1\nangle_deg = 0\n',
+     "balancing.mass[0].m", "unit not stated"),
+    ('[scales]\nW_kgm = 3\n[balancing]\ntype = "static"\ncorrection_radius_mm = 10\n[[balancing.mass]]\nm_kg = 1\n'
+     'r_mm = 1\nangle_deg = 0\n', "scales.W_kgm", "not a unit of a mass-radius product"),
+])
+def test_bad_balancing_scenes(body, where, words, tmp_path):
+    p = write(tmp_path, body)
+    with pytest.raises(SceneError) as e:
+        load_scene(p)
+    assert e.value.problems[0][0] == where, e.value.problems
+    assert words in e.value.problems[0][1], e.value.problems
+    code, out, err = run_cli("check", str(p))
+    assert code == 2 and err.count("\n") == 1
+
+
+def test_a_stated_scale_that_underflows_in_si_is_refused_in_one_line(tmp_path):
+    # 5e-324 kg·cm/mm is a positive number in the file but 0 kg·m/mm once converted: it used to
+    # divide by zero (exit 3, internal error)
+    p = write(tmp_path, """
+[scales]
+W_kgcm_per_mm = 5e-324
+[balancing]
+type = "static"
+correction_radius_cm = 15
+[[balancing.mass]]
+m_kg = 5
+r_cm = 10
+angle_deg = 90
+""")
+    code, out, err = run_cli("check", str(p))
+    assert (code, out) == (2, "")
+    assert err == ("r.toml: scales.W_kgcm_per_mm: 4.94066e-324: under 1e-15 SI units per mm once converted: "
+                   "no page shows a figure at that scale\n")
