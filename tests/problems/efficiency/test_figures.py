@@ -72,3 +72,47 @@ def test_a_long_chain_of_machines_wraps_on_its_page(tmp_path):
     xs = [q[0] for item in panel.items if hasattr(item, "points") for q in item.points]
     assert max(xs) - min(xs) < 277.0 and len({round(q[1]) for item in panel.items if hasattr(item, "points")
                                                for q in item.points}) > 4  # two rows of boxes
+
+
+# ---------------------------------------------------------------------------- the module's own pieces
+
+
+def test_force_names_take_their_numbers_as_subscripts():
+    from graphmech.problems.efficiency.figures import force_name
+
+    assert (force_name("R12"), force_name("F0"), force_name("R31"), force_name("Q")) == ("R₁₂", "F₀", "R₃₁", "Q")
+
+
+def test_polygon_items_draw_the_real_sides_once_and_the_ideal_ones_dashed():
+    from graphmech.drawing.primitives import Label
+    from graphmech.methods import efficiency as gm
+    from graphmech.problems.efficiency.figures import polygon_items
+
+    s = gm.wedge(1000.0, math.radians(60), math.radians(60), math.atan(0.15), "forward", 25.0)
+    items = polygon_items(s.polygons)
+    arrows = [i for i in items if isinstance(i, Arrow)]
+    labels = {i.text for i in items if isinstance(i, Label)}
+    assert len(arrows) == 5 and labels == {"Q", "F", "R₁₂", "R₃₂", "R₃₁"}  # R21 is R12 reversed: not again
+    assert sum(isinstance(i, Segment) and i.dashed for i in items) == 6  # the two ideal triangles
+    forces = {"F": s.F, **dict(s.reactions)}
+    for a in arrows:
+        name = next(i.text for i in items if isinstance(i, Label) and
+                    i.anchor == ((a.p0[0] + a.p1[0]) / 2, (a.p0[1] + a.p1[1]) / 2))
+        if name != "Q":
+            assert a.role == "result"
+            assert math.dist(a.p0, a.p1) * 25.0 == pytest.approx(forces[name.translate(str.maketrans("₁₂₃", "123"))],
+                                                                 rel=1e-12)
+        else:
+            assert a.role == "given" and math.dist(a.p0, a.p1) * 25.0 == pytest.approx(1000.0, rel=1e-12)
+
+
+def test_recorded_draw_calls_of_the_wedge_sheet():
+    from graphmech.render.recording import RecordingBackend
+    from graphmech.render.sheet import draw_sheet
+
+    an = analyse_efficiency(load_scene(SCENES / "force.wedge_F1430.toml"))
+    calls = draw_sheet(efficiency_figure(an, (297.0, 210.0)), RecordingBackend())
+    dashed = [c for c in calls if c[0] == "line" and c[4]]
+    assert len(dashed) == 6 + 6 + 3  # each stroke's two ideal triangles, and the diagram's three dashes
+    texts = [c[1] for c in calls if c[0] == "text"]
+    assert texts.count("μF = 25 N/mm") == 2 and "F" in texts and "R₁₂" in texts

@@ -147,3 +147,52 @@ def test_a_sheet_that_fits_no_round_scale_keeps_readable_drawings_and_says_so(tm
     a3 = scene_text("forces/double_slider").replace("[units]", '[page]\nsize = "A3"\n[units]')
     code, _, err = run_cli("render", str(_write(tmp_path, a3, "a3.toml")), "-o", str(tmp_path / "a3.svg"))
     assert code == 0 and "run off the page" not in err and "A3" not in err
+
+
+# ----------------------------------------------------------------------------- the module's own pieces
+
+
+@pytest.mark.parametrize("name, printed", [
+    ("R^t_12", "Rᵗ₁₂"), ("R^n_43", "Rⁿ₄₃"), ("F_i2", "Fᵢ₂"), ("P_r", "Pᵣ"), ("G_5", "G₅"),
+    ("M_b", "M_b"), ("Q", "Q"), ("R^x_12", "R^x₁₂"),
+])
+def test_force_names_as_the_book_prints_them(name, printed):
+    from graphmech.problems.forces.figures import force_label
+
+    assert force_label(name) == printed
+
+
+def test_a_group_polygon_is_laid_off_head_to_tail_at_muF_and_closes_at_o():
+    from graphmech.drawing.primitives import Arrow, Segment
+    from graphmech.problems.forces.figures import CLOSING_OVERRUN, polygon_items
+
+    fa = analyse_forces(load_scene(SCENES / "force.sixbar_kinetostatic.toml"))
+    group = next(g for g in fa.solution.groups if g.name == "group 2–3")
+    items = polygon_items(group, 25.0, 0)
+    arrows = [x for x in items if isinstance(x, Arrow)]
+    drawn = [(n, complex(v[0]) / 25.0) for n, v in group.chain if abs(complex(v[0])) / 25.0 > 1e-9]
+    assert len(arrows) == len(drawn)
+    for (name, v), a, b in zip(drawn, arrows, arrows[1:] + arrows[:1]):
+        assert math.dist(a.p0, a.p1) == pytest.approx(abs(v), rel=1e-12)  # |F| / μF, mm
+        assert a.p1 == pytest.approx(b.p0, abs=1e-9)  # head to tail, the last back to o
+        assert a.role == ("result" if name in group.unknown else "given")
+    closing = [x for x in items if isinstance(x, Segment)]
+    assert len(closing) == 2  # through the chain's end and its start, along the two unknowns
+    assert {round(math.dist(s.p0, s.p1) - 2 * CLOSING_OVERRUN, 9) for s in closing} == {
+        round(abs(v), 9) for n, v in drawn if n in group.unknown}
+
+
+def test_recorded_draw_calls_of_the_six_bar_force_sheet():
+    from graphmech.problems.forces.check import render_forces
+    from graphmech.render.recording import RecordingBackend
+    from graphmech.render.sheet import draw_sheet
+
+    scene = load_scene(SCENES / "force.sixbar_kinetostatic.toml")
+    sheet, _ = render_forces(scene)
+    assert [p.name for p in sheet.panels] == ["forces", "free-4-5", "polygon-4-5", "free-2-3", "polygon-2-3",
+                                              "free-1", "polygon-1", "lever"]
+    texts = [c[1] for c in draw_sheet(sheet, RecordingBackend()) if c[0] == "text"]
+    assert texts.count("μF = 25 N/mm") == 3  # one per force polygon
+    lever = analyse_forces(scene).lever
+    assert f"M_b = μv·ΣM_p/ω1 = {float(lever.balancing_moment[0]):.6g} N·m" in texts
+    assert {"Rᵗ₃₄", "Rⁿ₁₂", "Pᵣ", "o", "p"} <= set(texts)
