@@ -1,12 +1,13 @@
-"""Reading the [balancing] table: each bad scene refused in one line naming its key."""
+"""Reading the [balancing] table: the rotor in SI; each bad scene refused in one line naming its key."""
 from __future__ import annotations
 
+import math
 
 import pytest
 
 from graphmech.errors import SceneError
-from graphmech.scene import load_scene
-from tests.conftest import run_cli
+from graphmech.scene import load_scene, parse_scene
+from tests.conftest import SCENES, run_cli
 
 
 def write(tmp_path, text, name="r.toml"):
@@ -73,3 +74,26 @@ angle_deg = 90
     assert (code, out) == (2, "")
     assert err == ("r.toml: scales.W_kgcm_per_mm: 4.94066e-324: under 1e-15 SI units per mm once converted: "
                    "no page shows a figure at that scale\n")
+
+
+def test_a_dynamic_rotor_is_read_in_si():
+    """bal.rotor_dynamic: masses in kg at cm and degrees → m and rad; one correction radius for both planes."""
+    p = load_scene(SCENES / "bal.rotor_dynamic.toml").problem
+    assert (p.type, p.planes, p.r_b) == ("dynamic", (0.0, 0.9), (0.5, 0.5))
+    assert [(u.name, u.m, u.r, u.z) for u in p.masses] == [("1", 10.0, 0.4, 0.0), ("2", 15.0, 0.3, 0.3),
+                                                            ("3", 20.0, 0.2, 0.6), ("4", 10.0, 0.3, 0.9)]
+    assert [math.degrees(u.theta) for u in p.masses] == pytest.approx([155.0, 270.0, 50.0, 295.0], rel=1e-14)
+
+
+def test_a_static_disc_has_one_plane_and_one_radius():
+    p = load_scene(SCENES / "bal.disc_static.toml").problem
+    assert (p.type, p.planes, p.r_b) == ("static", None, (0.15,))
+    assert all(u.z == 0.0 for u in p.masses) and len(p.masses) == 4
+
+
+def test_two_correction_radii_are_one_per_plane():
+    data = {"balancing": {"type": "dynamic", "planes_mm": [0, 100], "correction_radius_mm": [50, 60],
+                          "mass": [{"m_kg": 1, "r_mm": 100, "angle_deg": 0, "z_mm": 150}]}}
+    p = parse_scene(data, "r.toml").problem
+    assert p.r_b == pytest.approx((0.05, 0.06), rel=1e-15) and p.planes == pytest.approx((0.0, 0.1), rel=1e-15)
+    assert p.masses[0].z == pytest.approx(0.15, rel=1e-15)

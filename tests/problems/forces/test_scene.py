@@ -7,7 +7,7 @@ import tomllib
 import pytest
 
 from graphmech.errors import SceneError
-from graphmech.scene import parse_scene
+from graphmech.scene import load_scene, parse_scene
 from tests.scenes import scene_text
 from tests.conftest import SCENES, fourbar_scene, run_cli
 
@@ -87,3 +87,23 @@ def test_a_force_scene_refuses_to_show_instant_centres_it_would_not_draw():
     with pytest.raises(SceneError) as e:
         parse_scene(tomllib.loads(text), "f.toml")
     assert str(e.value).startswith("f.toml: show[1]: the instant centres are drawn on a linkage sheet")
+
+
+def test_the_six_bar_loads_are_read_in_si():
+    from graphmech.mechanisms.forces import PointForce
+
+    fs = load_scene(SCENES / "force.sixbar_kinetostatic.toml").problem
+    m = fs.model
+    assert [(x.link, x.point, x.mass, x.inertia) for x in m.masses] == [
+        ("1", "A", 2.0, 0.0), ("2", "S2", 4.0, 0.03), ("3", "S3", 6.0, 0.09), ("4", "S4", 3.5, 0.036), ("5", "F", 12.0, 0.0)]
+    assert m.forces == (PointForce("5", "K", 1000.0, 0.0, True, "P_r"),) and m.gravity == 9.81
+    assert not m.has_friction and (fs.mu_F, fs.mu_F_path) == (25.0, "forces.mu_F_N_per_mm")
+
+
+def test_friction_tables_are_read_into_the_model():
+    fs = _scene(_slider_crank(extra='[[forces.journal]]\npoint = "B"\nf_v = 0.2\nradius = 10\n'
+                                    '[[forces.guide]]\nlink = "3"\nf = 0.15\n')).problem
+    (j,), (g,) = fs.model.revolute_friction, fs.model.sliding_friction
+    assert (j.point, j.f_v, j.radius) == ("B", 0.2, pytest.approx(0.01, rel=1e-15))  # mm → m
+    assert j.rho == pytest.approx(0.002, rel=1e-15) and (g.link, g.f) == ("3", 0.15)
+    assert fs.mu_F is None  # not stated: the check chooses it

@@ -7,7 +7,7 @@ import tomllib
 import pytest
 
 from graphmech.mechanisms.topology import mobility, structure
-from graphmech.scene import parse_scene
+from graphmech.scene import load_scene, parse_scene
 from graphmech.problems.structure.check import analyse_structure
 from tests.conftest import SCENES, check_json, run_cli
 
@@ -163,3 +163,13 @@ def test_precision_press_symmetric_half_is_found_redundant_only_when_symmetric(p
     assert any("cannot move" in w for w in an.warnings)
 
 
+
+
+def test_the_count_is_written_out_as_the_book_does():
+    from graphmech.problems.structure.check import case_formula, formula, formula_text
+
+    assert formula_text(3, 4, 0, 0, 0, 1) == "F = 3·3 − (2·4 + 0 − 0) − 0 = 1"
+    assert case_formula({"n": 8, "pl": 11, "ph": 1, "p_redundant": 0, "F_local": 1, "F": 1}) == \
+        "F = 3·8 − (2·11 + 1 − 0) − 1 = 1"
+    an = analyse_structure(load_scene(SCENES / "structure.parallelogram_redundant.toml"))
+    assert formula(an.mobility) == "F = 3·4 − (2·6 + 0 − 1) − 0 = 1"

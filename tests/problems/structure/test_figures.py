@@ -56,3 +56,67 @@ def test_a_stated_scale_that_cannot_draw_the_pairs_is_refused(tmp_path):
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
     assert code == 2 and err.startswith("tiny.toml: scales: μl = 1e-12 m/mm draws the mechanism 1.3e+11 mm"), err
     assert not (tmp_path / "x.svg").exists()
+
+
+# ----------------------------------------------------------------------------- the module's own pieces
+
+
+def _five_bar(drivers=("2", "5")):
+    from graphmech.mechanisms.topology import Pair, Topology
+
+    pairs = (Pair("R", ("1", "2"), "A", (0.0, 0.0)), Pair("R", ("2", "3"), "B", (0.02, 0.05)),
+             Pair("R", ("3", "4"), "C", (0.08, 0.09)), Pair("R", ("4", "5"), "D", (0.13, 0.04)),
+             Pair("R", ("5", "1"), "E", (0.15, 0.0)))
+    return Topology("1", ("2", "3", "4", "5"), pairs, drivers)
+
+
+def test_the_scale_is_the_round_one_that_fits_the_pairs_in_the_room():
+    from graphmech.problems.structure.figures import choose_scale
+
+    # 0.15 m × 0.09 m in 100 × 100 mm: at least 0.0015 m/mm, the round 0.002
+    assert choose_scale(_five_bar(), (100.0, 100.0)) == 0.002
+    assert choose_scale(_five_bar(), (30.0, 100.0)) == 0.005  # 0.15 m in 30 mm
+
+
+def test_the_block_diagram_holds_class_I_then_each_group():
+    from graphmech.drawing.primitives import Arrow, Label
+    from graphmech.mechanisms.topology import structure
+    from graphmech.problems.structure.figures import block_panel
+
+    topo = _five_bar()
+    panel = block_panel(structure(topo), topo)
+    assert [i.text for i in panel.items if isinstance(i, Label)] == ["I: 1 + 2, 5", "II: 3, 4"]
+    assert sum(isinstance(i, Arrow) for i in panel.items) == 1 and panel.notes == ("a class II mechanism",)
+
+
+def test_the_cases_panel_writes_each_count_out():
+    from graphmech.problems.structure.figures import cases_panel
+
+    panel = cases_panel([{"label": "3-1", "n": 7, "pl": 10, "ph": 0, "p_redundant": 0, "F_local": 0, "F": 1}])
+    assert [i.text for i in panel.items] == ["3-1:  F = 3·7 − (2·10 + 0 − 0) − 0 = 1"]
+
+
+def test_a_links_outline_is_the_hull_of_its_pairs():
+    from graphmech.problems.structure.figures import _hull
+
+    square = _hull([(0.0, 0.0), (1.0, 1.0), (1.0, 0.0), (0.5, 0.5), (0.0, 1.0)])
+    assert sorted(square) == [(0.0, 0.0), (0.0, 1.0), (1.0, 0.0), (1.0, 1.0)]  # the inner pair is no corner
+    assert _hull([(0.0, 0.0), (2.0, 0.0), (1.0, 0.0)]) == [(0.0, 0.0), (2.0, 0.0)]  # a binary link: its line
+
+
+def test_recorded_draw_calls_of_the_ic_engine_sheet():
+    from graphmech.drawing.primitives import Polyline
+    from graphmech.problems.structure.check import analyse_structure
+    from graphmech.problems.structure.figures import structure_sheet
+    from graphmech.render.recording import RecordingBackend
+    from graphmech.render.sheet import draw_sheet
+    from graphmech.scene import load_scene
+
+    an = analyse_structure(load_scene(SCENES / "dof.hfut_cases-ic_engine_EG.toml"))
+    calls = draw_sheet(structure_sheet("IC engine", an, (297.0, 210.0)), RecordingBackend())
+    texts = [c[1] for c in calls if c[0] == "text"]
+    assert "III: 2, 3, 4, 5" in texts and "II: 7, 8" in texts and "a class III mechanism" in texts
+    # each group outlined by a dashed contour on the mechanism
+    mechanism = next(p for p in structure_sheet("IC engine", an, (297.0, 210.0)).panels if p.name == "structure")
+    outlines = [i for i in mechanism.items if isinstance(i, Polyline) and i.dashed]
+    assert len(outlines) == len(an.structure.groups) == 2
