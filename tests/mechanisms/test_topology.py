@@ -2,9 +2,11 @@
 freedoms of rollers, Assur groups."""
 from __future__ import annotations
 
+import pytest
 
 
-from graphmech.mechanisms.topology import Pair, Topology, mobility, structure
+
+from graphmech.mechanisms.topology import Pair, Topology, grubler, mobility, structure
 from graphmech.scene import load_scene, parse_scene
 from tests.conftest import SCENES
 
@@ -50,3 +52,27 @@ def test_an_oscillating_follower_pivoted_on_the_frame_is_not_a_roller():
         {"kind": "R", "links": ["3", "4"]}, {"kind": "P", "links": ["4", "1"]}]
     m = mobility(parse_scene(data, "roller.toml").problem.topology, False)
     assert (m.F_local, m.F) == (1, 1)
+
+
+@pytest.mark.parametrize("n, pl, ph, p_redundant, F_local, F", [
+    (3, 4, 0, 0, 0, 1),   # four-bar
+    (4, 5, 0, 0, 0, 2),   # five-bar
+    (2, 2, 1, 0, 0, 1),   # cam and flat-faced follower
+    (3, 3, 1, 0, 1, 1),   # cam and roller follower: the roller's spin is local
+    (4, 6, 0, 1, 0, 1),   # parallelogram with a redundant parallel link
+    (3, 4, 1, 0, 0, 0),   # the punch press's first design: cannot move
+])
+def test_grubler_kutzbach(n, pl, ph, p_redundant, F_local, F):
+    assert grubler(n, pl, ph, p_redundant, F_local) == F
+
+
+def test_a_four_bar_by_count_and_by_rank():
+    pairs = (Pair("R", ("1", "2"), "A", (0.0, 0.0)), Pair("R", ("2", "3"), "B", (0.02, 0.05)),
+             Pair("R", ("3", "4"), "C", (0.1, 0.06)), Pair("R", ("4", "1"), "D", (0.12, 0.0)))
+    four = Topology("1", ("2", "3", "4"), pairs, ("2",))
+    counted = mobility(four, False)
+    assert (counted.n, counted.pl, counted.ph, counted.F, counted.rank) == (3, 4, 0, 1, None)
+    m = mobility(four, True)
+    assert (m.rank, m.F_actual, m.p_redundant_actual) == (8, 1, 0)  # 8 equations, 9 coordinates
+    s = structure(four)
+    assert s.drivers == ("2",) and [(g.links, g.grade) for g in s.groups] == [(("3", "4"), 2)] and s.grade == 2
