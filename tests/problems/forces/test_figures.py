@@ -10,15 +10,11 @@ import pytest
 from graphmech.problems.forces.check import analyse_forces
 from graphmech.scene import load_scene, parse_scene
 from tests.scenes import scene_text
-from tests.conftest import ROOT, SCENES, fourbar_scene, run_cli
+from tests.conftest import ROOT, SCENES, run_cli
 
 
 def _scene(text: str):
     return parse_scene(tomllib.loads(text), "t.toml")
-
-
-def _fourbar(c: float, find: str = '["R_23", "M_b"]', show: str = '["mechanism"]', extra: str = "") -> str:
-    return fourbar_scene(a=60, b=100, c=c, d=120, angle="180", find=find, show=show) + scene_text("forces/fourbar_loads") + extra
 
 
 def _write(tmp_path, text: str, name: str = "s.toml"):
@@ -33,7 +29,7 @@ def test_force_sheet_panels_and_one_position_only(tmp_path):
     svg, warnings = render_scene(SCENES / "force.sixbar_kinetostatic.toml")
     for title in ("Free body, group 4–5", "Force polygon, group 2–3", "Zhukovsky", "μF = 25 N/mm"):
         assert title in svg
-    text = _fourbar(90, show='["force_polygons"]').replace('angle = 180', 'angle = [170, 180]')
+    text = scene_text("forces/fourbar_loaded").replace('show = ["mechanism"]', 'show = ["force_polygons"]').replace('angle = 180', 'angle = [170, 180]')
     code, _, err = run_cli("render", str(_write(tmp_path, text)), "-o", str(tmp_path / "x.svg"))
     assert code == 2 and "draw one position" in err and not (tmp_path / "x.svg").exists()
 

@@ -9,20 +9,11 @@ import pytest
 from graphmech.errors import SceneError
 from graphmech.scene import load_scene, parse_scene
 from tests.scenes import scene_text
-from tests.conftest import SCENES, fourbar_scene, run_cli
-
-
-def _slider_crank(length: float = 150, extra: str = "") -> str:
-    """The shared slider-crank with BC = ``length`` mm and ``extra`` tables added at the end."""
-    return scene_text("forces/slider_crank").replace("length = 150\n", f"length = {length}\n", 1) + extra
+from tests.conftest import SCENES, run_cli
 
 
 def _scene(text: str):
     return parse_scene(tomllib.loads(text), "t.toml")
-
-
-def _fourbar(c: float, find: str = '["R_23", "M_b"]', show: str = '["mechanism"]', extra: str = "") -> str:
-    return fourbar_scene(a=60, b=100, c=c, d=120, angle="180", find=find, show=show) + scene_text("forces/fourbar_loads") + extra
 
 
 def _write(tmp_path, text: str, name: str = "s.toml"):
@@ -32,7 +23,7 @@ def _write(tmp_path, text: str, name: str = "s.toml"):
 
 
 def test_friction_circle_larger_than_the_geometry_allows(tmp_path):
-    text = _fourbar(90, extra='[[forces.journal]]\npoint = "B"\nf_v = 0.2\nradius = 60\n')
+    text = scene_text("forces/fourbar_loaded") + '[[forces.journal]]\npoint = "B"\nf_v = 0.2\nradius = 60\n'
     code, out, err = run_cli("check", str(_write(tmp_path, text)))
     assert code == 2 and out == ""
     assert err == ("s.toml: forces.journal[0]: the journal at B (r = 60 mm, friction circle ρ = 12 mm) is "
@@ -40,11 +31,11 @@ def test_friction_circle_larger_than_the_geometry_allows(tmp_path):
 
 
 def test_forces_scene_keys_are_checked(tmp_path):
-    text = _fourbar(90).replace("mass_kg = 1", "mass_kg = -1\ncolour = 3")
+    text = scene_text("forces/fourbar_loaded").replace("mass_kg = 1", "mass_kg = -1\ncolour = 3")
     code, _, err = run_cli("check", str(_write(tmp_path, text)))
     assert code == 2 and err.startswith("s.toml: forces.mass[0].")
     with pytest.raises(SceneError, match="not a point of link 2"):
-        _scene(_fourbar(90).replace('point = "B"', 'point = "D"'))
+        _scene(scene_text("forces/fourbar_loaded").replace('point = "B"', 'point = "D"'))
 
 
 @pytest.mark.parametrize("old, new, message", [
@@ -73,7 +64,7 @@ def test_forces_scene_keys_are_checked(tmp_path):
      "is 1 … 100000 mm (about 2 N/mm)"),
 ])
 def test_hostile_force_inputs_are_one_line_errors(tmp_path, old, new, message):
-    text = _slider_crank(300)
+    text = scene_text("forces/slider_crank").replace("length = 150\n", "length = 300\n", 1)
     assert old in text
     code, out, err = run_cli("check", str(_write(tmp_path, text.replace(old, new, 1))))
     assert (code, out) == (2, "")
@@ -101,7 +92,7 @@ def test_the_six_bar_loads_are_read_in_si():
 
 
 def test_friction_tables_are_read_into_the_model():
-    fs = _scene(_slider_crank(extra='[[forces.journal]]\npoint = "B"\nf_v = 0.2\nradius = 10\n'
+    fs = _scene(scene_text("forces/slider_crank") + ('[[forces.journal]]\npoint = "B"\nf_v = 0.2\nradius = 10\n'
                                     '[[forces.guide]]\nlink = "3"\nf = 0.15\n')).problem
     (j,), (g,) = fs.model.revolute_friction, fs.model.sliding_friction
     assert (j.point, j.f_v, j.radius) == ("B", 0.2, pytest.approx(0.01, rel=1e-15))  # mm → m
