@@ -3,7 +3,6 @@ or warned of in one line; a page that cannot hold a drawing refuses it in one li
 from __future__ import annotations
 
 import cmath
-import json
 import math
 from fractions import Fraction
 

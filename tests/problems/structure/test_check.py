@@ -1,13 +1,12 @@
-"""Mobility and structure: the bank's printed counts, topologies with compound hinges, a roller,
-redundant constraints exposed by the Jacobian's rank, Assur groups and the mechanism's class."""
+"""The structure check on scenes: the bank's printed counts, compound hinges, a roller, redundant
+constraints exposed by the Jacobian's rank, Assur groups and the class, measured counts judged."""
 from __future__ import annotations
 
 import tomllib
 
 import pytest
 
-from graphmech.errors import SceneError
-from graphmech.mechanisms.topology import Pair, Topology, mobility, structure
+from graphmech.mechanisms.topology import mobility, structure
 from graphmech.scene import load_scene, parse_scene
 from graphmech.problems.structure.check import analyse_structure
 from tests.conftest import SCENES, check_json, run_cli
@@ -59,17 +58,6 @@ def test_roller_local_freedom_is_recognised(problems):
     assert s["jacobian"]["F_actual"] == 1  # the spin is a free motion of the Jacobian too
     assert s["higher_pairs_replaced"] == ["K"] and s["class"] == 2
     assert ["4", "hK"] in [g["links"] for g in s["groups"]]
-
-
-def test_a_roller_whose_normal_misses_its_pin_has_no_local_freedom():
-    scene = load_scene(SCENES / "dof.hfut_cases-3-2.toml")
-    topo = scene.problem.topology
-    pairs = tuple(Pair(p.kind, p.links, p.name, p.at, 1.2 if p.kind == "higher" else p.angle) for p in topo.pairs)
-    m = mobility(Topology(topo.frame, topo.links, pairs, topo.drivers), True)
-    assert m.F_local == 1  # the count still says roller …
-    # … but a "roller" whose contact normal misses its pin is no round roller: turning it moves the
-    # follower, so its turn is a second freedom of the mechanism, not a local one
-    assert m.rank == 25 and m.F_actual == 2
 
 
 def test_ic_engine_is_class_ii_from_ab_and_class_iii_from_eg():
@@ -137,39 +125,6 @@ def test_only_what_is_asked_is_computed():
     assert s.grade == 2
 
 
-@pytest.mark.parametrize("pair,reason", [
-    ({"kind": "P", "links": ["1", "2", "3"]}, "joins exactly two links"),
-    ({"kind": "Q", "links": ["1", "2"]}, "unknown value"),
-    ({"kind": "R", "links": ["2", "2"]}, "listed twice"),
-    ({"kind": "R", "links": ["1", "2"], "at_mm": [0, 0]}, "coordinates or none"),
-    ({"kind": "R", "links": ["1", "2"], "angle_deg": 10}, "a revolute (R) has no direction: drop angle"),  # was ignored
-])
-def test_bad_pairs_are_one_line_errors(pair, reason):
-    data = {"structure": {"frame": "1", "drivers": ["2"], "pair": [
-        pair, {"kind": "R", "links": ["2", "3"]}, {"kind": "R", "links": ["3", "1"]}]}}
-    with pytest.raises(SceneError) as e:
-        parse_scene(data, "bad.toml")
-    assert reason in str(e.value)
-
-
-def test_cli_exit_2_for_a_driver_off_the_frame(tmp_path):
-    p = tmp_path / "s.toml"
-    p.write_text('[structure]\nframe = "1"\ndrivers = ["3"]\npair = [{kind = "R", links = ["1", "2"]}, '
-                 '{kind = "R", links = ["2", "3"]}, {kind = "R", links = ["3", "4"]}, {kind = "R", links = ["4", "1"]}]\n')
-    code, out, err = run_cli("check", str(p))
-    assert code == 2 and err.count("\n") == 1 and "structure.drivers[0]" in err and "joined to the frame" in err
-    code, out, err = run_cli("render", str(p), "-o", str(tmp_path / "s.svg"))
-    assert code == 2 and not (tmp_path / "s.svg").exists()
-
-
-def test_structure_sheet_outlines_the_groups():
-    from graphmech.scene import render_scene
-
-    svg, warnings = render_scene(SCENES / "dof.hfut_cases-ic_engine_EG.toml")
-    assert "III (2,3,4,5)" in svg and "II (7,8)" in svg and "special construction" in svg
-    assert "I: 1 + 6" in svg and "rank J = 20 of 20" in svg
-
-
 def test_measured_counts_are_judged_exactly_and_mixed_scenes_refused(tmp_path):
     code, out, err = run_cli("check", str(SCENES / "dof.hfut_cases-ic_engine_EG.toml"), "--json",
                              "--measured", "F=1,class=2,rank=20")
@@ -186,22 +141,6 @@ def test_measured_counts_are_judged_exactly_and_mixed_scenes_refused(tmp_path):
     p.write_text('[cam]\nbase_radius_mm = 30\n[structure]\nframe = "1"\n')
     code, _, err = run_cli("check", str(p))
     assert code == 2 and "cam: belongs to a cam scene; this is a structure scene" in err
-
-
-def test_rendering_instant_centres_and_structure_never_imports_matplotlib(tmp_path):
-    import subprocess
-    import sys
-
-    from tests.conftest import ROOT
-
-    scenes = [SCENES / "kin.fourbar_instant_centres.toml", SCENES / "dof.hfut_cases-3-2.toml"]
-    code = ("import sys; from graphmech.cli import main; "
-            f"rc = main(['render', *{[str(s) for s in scenes]!r}, '-d', r'{tmp_path}']); "
-            "assert not any(m.split('.')[0] == 'matplotlib' for m in sys.modules), 'matplotlib imported'; "
-            "sys.exit(rc)")
-    r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    assert (tmp_path / "dof.hfut_cases-3-2.svg").read_text().startswith("<svg")
 
 
 def test_precision_press_symmetric_half_is_found_redundant_only_when_symmetric(problems):
@@ -224,73 +163,13 @@ def test_precision_press_symmetric_half_is_found_redundant_only_when_symmetric(p
     assert any("cannot move" in w for w in an.warnings)
 
 
-def test_a_five_bar_with_two_drivers_is_one_dyad():
-    pairs = (Pair("R", ("1", "2"), "A", (0.0, 0.0)), Pair("R", ("2", "3"), "B", (0.02, 0.05)),
-             Pair("R", ("3", "4"), "C", (0.08, 0.09)), Pair("R", ("4", "5"), "D", (0.13, 0.04)),
-             Pair("R", ("5", "1"), "E", (0.15, 0.0)))
-    five = Topology("1", ("2", "3", "4", "5"), pairs, ("2", "5"))
-    m = mobility(five, True)
-    assert (m.F, m.F_actual, m.rank) == (2, 2, 10)
-    s = structure(five)
-    assert [(g.links, g.grade) for g in s.groups] == [(("3", "4"), 2)] and not s.messages
-    one = structure(Topology("1", ("2", "3", "4", "5"), pairs, ("2",)))
-    assert one.leftover == ("3", "4", "5") and "drivers differs from the mobility" in one.messages[0]
 
 
-@pytest.mark.parametrize("key", ["drivers", "links"])
-def test_a_link_listed_twice_among_the_drivers_or_links_is_refused(key):
-    """drivers = ["2", "2"] was taken as two drivers ("F = 1 but 2 driver(s): over-constrained")."""
-    data = {"structure": {"frame": "1", "drivers": ["2"], "pair": [
-        {"kind": "R", "links": ["1", "2"]}, {"kind": "R", "links": ["2", "3"]}, {"kind": "R", "links": ["3", "4"]},
-        {"kind": "R", "links": ["4", "1"]}]}}
-    data["structure"][key] = ["2", "2"] if key == "drivers" else ["2", "3", "4", "2"]
-    with pytest.raises(SceneError) as e:
-        parse_scene(data, "twice.toml")
-    where = f"structure.{key}[1]" if key == "drivers" else f"structure.{key}[3]"
-    assert e.value.one_line() == f"twice.toml: {where}: link '2' is listed twice"
+def test_the_count_is_written_out_as_the_book_does():
+    from graphmech.problems.structure.check import case_formula, formula, formula_text
 
-
-@pytest.mark.parametrize("name", sorted(p.stem for p in SCENES.glob("*.toml")
-                                        if p.stem.startswith(("dof.", "structure."))))
-def test_every_structure_sheet_fits_its_page(name):
-    """The class III message (IC engine from EG) made the block diagram's panel 403 mm wide on an
-    A4 page; HFUT 3-2's diagram was drawn at μl = 0.005 (38 mm tall, labels on top of each other)."""
-    from graphmech.scene import render_scene
-
-    svg, warnings = render_scene(SCENES / f"{name}.toml")
-    assert not [w for w in warnings if "runs off the page" in w], warnings
-    if name == "dof.hfut_cases-3-2":
-        assert "μl = 0.0025 m/mm" in svg
-
-
-def test_a_stated_scale_that_cannot_draw_the_pairs_is_refused(tmp_path):
-    """μl = 1e-300 m/mm drew the parallelogram 1e299 mm across: render exit 3. Now refused where
-    every scale is read; within that range the structure sheet bounds the drawing itself."""
-    text = (SCENES / "structure.parallelogram_redundant.toml").read_text(encoding="utf-8")
-    p = tmp_path / "tiny.toml"
-    p.write_text(text.replace('[units]', '[scales]\nl_m_per_mm = 1e-300\n\n[units]'), encoding="utf-8")
-    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
-    assert code == 2 and err.startswith("tiny.toml: scales.l_m_per_mm: 1e-300: under 1e-15 SI units per mm"), err
-    p.write_text(text.replace('[units]', '[scales]\nl_m_per_mm = 1e-12\n\n[units]'), encoding="utf-8")
-    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
-    assert code == 2 and err.startswith("tiny.toml: scales: μl = 1e-12 m/mm draws the mechanism 1.3e+11 mm"), err
-    assert not (tmp_path / "x.svg").exists()
-
-
-def test_an_oscillating_follower_pivoted_on_the_frame_is_not_a_roller():
-    """Cam 2 and a follower 3 pinned to the frame and touching the cam: F = 3·2 − (2·2 + 1) = 1.
-    The follower (one R, one higher pair) was taken for a roller: F′ = 1, F = 0, "cannot move"."""
-    data = {"structure": {"frame": "1", "drivers": ["2"], "pair": [
-        {"kind": "R", "links": ["1", "2"]}, {"kind": "higher", "links": ["2", "3"]},
-        {"kind": "R", "links": ["3", "1"]}]}}
-    topo = parse_scene(data, "cam.toml").problem.topology
-    assert topo.rollers() == ()
-    m = mobility(topo, False)
-    assert (m.F_local, m.F) == (0, 1)
-    assert structure(topo).grade == 2  # the contact replaced by a link and two revolutes: one dyad
-    # with the roller on a translating follower it is still recognised (HFUT 3-2 has one)
-    data["structure"]["pair"] = [
-        {"kind": "R", "links": ["1", "2"]}, {"kind": "higher", "links": ["2", "3"]},
-        {"kind": "R", "links": ["3", "4"]}, {"kind": "P", "links": ["4", "1"]}]
-    m = mobility(parse_scene(data, "roller.toml").problem.topology, False)
-    assert (m.F_local, m.F) == (1, 1)
+    assert formula_text(3, 4, 0, 0, 0, 1) == "F = 3·3 − (2·4 + 0 − 0) − 0 = 1"
+    assert case_formula({"n": 8, "pl": 11, "ph": 1, "p_redundant": 0, "F_local": 1, "F": 1}) == \
+        "F = 3·8 − (2·11 + 1 − 0) − 1 = 1"
+    an = analyse_structure(load_scene(SCENES / "structure.parallelogram_redundant.toml"))
+    assert formula(an.mobility) == "F = 3·4 − (2·6 + 0 − 1) − 0 = 1"

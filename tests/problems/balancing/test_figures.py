@@ -1,0 +1,52 @@
+"""The balancing sheet: the closing side bold at μW, only the asked panels, the recorded draw calls."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from graphmech.problems.balancing.check import analyse_balancing, balancing_figure
+from graphmech.drawing.primitives import Arrow
+from graphmech.scene import load_scene
+from tests.conftest import SCENES
+
+
+def write(tmp_path, text, name="r.toml"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def test_the_figure_draws_the_closing_side_bold_at_muW():
+    an = analyse_balancing(load_scene(SCENES / "bal.disc_static.toml"))
+    sheet = balancing_figure(an, (297.0, 210.0))
+    assert [p.name for p in sheet.panels] == ["rotor", "polygon"]
+    poly = sheet.panels[1]
+    bold = [i for i in poly.items if isinstance(i, Arrow) and i.role == "result"]
+    thin = [i for i in poly.items if isinstance(i, Arrow) and i.role == "given"]
+    assert len(bold) == 1 and len(thin) == 4
+    assert math.dist(bold[0].p0, bold[0].p1) * 0.05 == pytest.approx(0.8062257748298549, rel=1e-13)
+    assert bold[0].p1 == (0.0, 0.0)  # closes back on the start
+
+
+def test_only_the_asked_panels(tmp_path):
+    text = (SCENES / "bal.rotor_dynamic.toml").read_text(encoding="utf-8").replace(
+        'show = ["rotor", "polygon"]', 'show = ["polygon"]')
+    an = analyse_balancing(load_scene(write(tmp_path, text)))
+    assert [p.name for p in balancing_figure(an, (297.0, 210.0)).panels] == ["polygonI", "polygonII"]
+
+
+def test_recorded_draw_calls_of_a_polygon_panel():
+    """Each mass-radius product is a shaft and a filled triangle (never a marker); labels are text."""
+    from graphmech.render.recording import RecordingBackend
+    from graphmech.render.sheet import draw_sheet
+
+    an = analyse_balancing(load_scene(SCENES / "bal.disc_static.toml"))
+    sheet = balancing_figure(an, (297.0, 210.0))
+    only_polygon = type(sheet)(sheet.title, (sheet.panels[1],), sheet.page, sheet.footer)
+    calls = draw_sheet(only_polygon, RecordingBackend())
+    heads = [c for c in calls if c[0] == "polyline" and c[4] and len(c[1]) == 3]
+    assert len(heads) == 5  # W1 … W4 and the closing W_b
+    texts = {c[1] for c in calls if c[0] == "text"}
+    assert {"W₁", "W₂", "W₃", "W₄", "Wb"} <= texts
+    assert any("μW = 0.05 (kg·m)/mm" in t for t in texts)
