@@ -74,7 +74,8 @@ def test_a_four_bar_with_no_quick_return() -> None:
     c = math.sqrt(d * d - b * b + a * a)
     ch = draw_characteristics(fourbar(a, b, c, d), MU)
     assert ch.grashof == "crank_rocker_AB"
-    assert ch.theta == pytest.approx(0.0, abs=1e-7)
+    assert ch.theta == pytest.approx(0.0, abs=1e-12)
+    assert (ch.phi_end - ch.phi_start) % (2 * math.pi) == pytest.approx(math.pi, abs=1e-12)
     assert ch.psi == pytest.approx(2.0 * math.asin(a / c), abs=1e-12)
     assert ch.stroke_mm is None
     p = ch.points
