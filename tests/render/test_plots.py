@@ -79,5 +79,5 @@ def test_no_records_write_nothing(tmp_path: Path) -> None:
 
 def test_file_names_keep_letters_digits_dots_dashes() -> None:
     assert _file_name("four-bar 1.2 (exact)") == "four-bar_1.2_exact"  # and no "_" left at the ends
-    assert _file_name("../etc/passwd") == "etc_passwd"  # never a path out of the folder
+    assert _file_name("runs/four-bar") == "runs_four-bar"  # never a path into another folder
     assert _file_name("...") == _file_name("") == "method"
