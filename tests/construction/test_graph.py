@@ -87,3 +87,58 @@ def test_single_position_failure_names_the_step_and_position():
     msg = str(e.value)
     assert msg == ("C = circle(B, l2) ∩ circle(D, l3), left of B→D: cannot be assembled at φ₁ = 170°: "
                    "|BD| = 0.1395 m > l2 + l3 = 0.07 m")
+
+
+def test_a_step_is_defined_once_and_only_after_what_it_reads():
+    from graphmech.construction import Construction
+
+    g = Construction()
+    g.add("P", "point", lambda ops: (0.0, 0.0), ())
+    with pytest.raises(KeyError, match="defined twice"):
+        g.add("P", "point", lambda ops: (1.0, 0.0), ())
+    with pytest.raises(KeyError, match="'Q', which is not defined before it"):
+        g.add("R", "point", lambda ops, q: q, ("Q",))
+    with pytest.raises(KeyError, match="no step named 'Z'"):
+        g.prune(["Z"])
+    assert g.steps["P"].text == "P"  # a step without words is named by its name
+
+
+def test_a_lines_drawn_extent_keeps_only_the_points_the_plan_holds():
+    from graphmech.construction import Construction
+    from graphmech.geometry import kernels as K
+
+    g = Construction()
+    g.add("p", "point", lambda ops: (0.0, 0.0), ())
+    g.add("l", "line", lambda ops, p: (p[0], p[1], 1.0, 0.0), ("p",))
+    g.add("m", "line", lambda ops: (3.0, 0.0, 0.0, 1.0), ())
+    g.add("x", "point", K.intersect_lines, ("l", "m"))
+    g.add("far", "point", lambda ops: (9.0, 0.0), ())
+    g.extend_line("l", "x", "far")
+    assert g.extent["l"] == ["p", "x", "far"] and g.extent["m"] == []
+    plan = g.prune(["x"])
+    assert plan.extent == {"l": ["p", "x"], "m": []}
+    assert "far" not in plan and "x" in plan
+    assert plan.evaluate({})["x"] == (3.0, 0.0)
+
+
+def test_steps_without_inputs_are_evaluated_once_when_pruned():
+    from graphmech.construction import Construction
+
+    calls = []
+    g = Construction()
+    g.param("t")
+    g.add("O", "point", lambda ops: calls.append(1) or (1.0, 2.0), ())
+    g.add("P", "point", lambda ops, t, o: (o[0] + t, o[1]), ("t", "O"))
+    plan = g.prune(["P"])
+    assert [plan.evaluate({"t": t})["P"] for t in (0.0, 1.0, 2.0)] == [(1.0, 2.0), (2.0, 2.0), (3.0, 2.0)]
+    assert plan.evaluate_batch({"t": np.array([0.0, 5.0])})["P"][0].tolist() == [1.0, 6.0]
+    assert calls == [1]
+
+
+def test_values_at_one_position_of_a_batch():
+    from graphmech.construction.graph import values_at
+
+    vals = {"x": np.array([1.0, 2.0]), "p": (np.array([3.0, 4.0]), 7.0), "c": np.float64(5.0), "n": "name"}
+    got = values_at(vals, 1)
+    assert got == {"x": 2.0, "p": (4.0, 7.0), "c": 5.0, "n": "name"}
+    assert type(got["x"]) is float and type(got["p"][0]) is float

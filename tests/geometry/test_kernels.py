@@ -96,3 +96,72 @@ def test_value_objects_are_frozen():
         p.x = 3.0  # type: ignore[misc]
     with pytest.raises(dataclasses.FrozenInstanceError):
         Vector(1.0, 0.0).y = 2.0  # type: ignore[misc]
+
+
+def test_circle_meets_line_ahead_or_behind_the_foot():
+    ops = K.ScalarOps()
+    line = (-10.0, 3.0, 1.0, 0.0)  # y = 3, along +x
+    assert K.intersect_circle_line(ops, (0.0, 0.0), 5.0, line, 1.0, str) == pytest.approx((4.0, 3.0))
+    assert ops.conds["?"] == pytest.approx(5.0 / 4.0)  # r / half chord
+    assert K.intersect_circle_line(ops, (0.0, 0.0), 5.0, line, -1.0, str) == pytest.approx((-4.0, 3.0))
+    # the same line drawn the other way round: "ahead" follows its direction
+    back = (10.0, 3.0, -1.0, 0.0)
+    assert K.intersect_circle_line(ops, (0.0, 0.0), 5.0, back, 1.0, str) == pytest.approx((-4.0, 3.0))
+
+
+def test_circle_and_line_that_touch_or_miss():
+    ops = K.ScalarOps()
+    assert K.intersect_circle_line(ops, (0.0, 0.0), 5.0, (0.0, 5.0, 1.0, 0.0), 1.0, str) == pytest.approx((0.0, 5.0))
+    assert ops.conds["?"] >= 1e299
+    with pytest.raises(AssemblyError, match="6.0 from the line"):
+        K.intersect_circle_line(ops, (0.0, 0.0), 5.0, (0.0, -6.0, 1.0, 0.0), 1.0, lambda e: f"{e} from the line")
+    batch = K.ArrayOps(2)
+    x, y = K.intersect_circle_line(batch, (0.0, 0.0), 5.0, (0.0, np.array([3.0, 6.0]), 1.0, 0.0), 1.0, str)
+    assert batch.bad.tolist() == [False, True] and (x[0], y[0]) == pytest.approx((4.0, 3.0))
+    assert np.isfinite(x).all() and np.isfinite(y).all()
+
+
+def test_unit_direction_and_coincident_points():
+    assert K.unit(K.ScalarOps(), (1.0, 1.0), (4.0, 5.0)) == (0.6, 0.8, 5.0)
+    with pytest.raises(DegenerateConstruction, match="coincide"):
+        K.unit(K.ScalarOps(), (2.0, 2.0), (2.0, 2.0))
+    # coincidence is relative to the points' size: 1e-11 mm is rounding at 100 mm, not near 0
+    with pytest.raises(DegenerateConstruction):
+        K.unit(K.ScalarOps(), (100.0, 100.0), (100.0 + 1e-11, 100.0))
+    assert K.unit(K.ScalarOps(), (0.0, 0.0), (1e-11, 0.0)) == pytest.approx((1.0, 0.0, 1e-11))
+
+
+def test_lines_perpendicular_parallel_and_fixed():
+    u = (0.6, 0.8, 5.0)
+    assert K.line_perpendicular_to(K.ScalarOps(), (1.0, 2.0), u) == (1.0, 2.0, -0.8, 0.6)
+    assert K.line_parallel_to(K.ScalarOps(), (1.0, 2.0), u) == (1.0, 2.0, 0.6, 0.8)
+    # a fixed direction through points that move takes the points' shape
+    px, py, dx, dy = K.line_fixed(K.ArrayOps(3), (np.zeros(3), np.ones(3)), 0.0, 1.0)
+    assert dx.shape == dy.shape == (3,) and dy.tolist() == [1.0, 1.0, 1.0]
+
+
+def test_line_intersection_condition_is_one_over_the_sine():
+    ops = K.ScalarOps()
+    a = math.radians(30.0)
+    x, y = K.intersect_lines(ops, (0.0, 0.0, 1.0, 0.0), (1.0, 0.0, math.cos(a), math.sin(a)))
+    assert (x, y) == pytest.approx((1.0, 0.0)) and ops.conds["?"] == pytest.approx(2.0)
+
+
+def test_similar_point_keeps_the_orientation_not_a_mirror_image():
+    # UVE is turned 90° CCW and doubled into uve: E above U goes to the left of u
+    e = K.similar_point(K.ScalarOps(), (0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (5.0, 5.0), (5.0, 7.0))
+    assert e == pytest.approx((3.0, 5.0))
+    with pytest.raises(DegenerateConstruction, match="base points coincide"):
+        K.similar_point(K.ScalarOps(), (1.0, 1.0), (1.0, 1.0), (0.0, 1.0), (0.0, 0.0), (1.0, 0.0))
+
+
+def test_a_batch_keeps_the_first_reason_of_each_position():
+    ops = K.ArrayOps(3)
+    ops.step = "first"
+    got = ops.fix(np.array([True, False, False]), np.array([1.0, 2.0, 3.0]), 0.0, "one")
+    ops.step = "second"
+    ops.fix(np.array([True, True, False]), np.zeros(3), 0.0, "two")
+    assert got.tolist() == [0.0, 2.0, 3.0]
+    assert ops.bad.tolist() == [True, True, False]
+    assert ops.failures["first"][0].tolist() == [True, False, False]
+    assert ops.failures["second"][0].tolist() == [False, True, False]  # position 0 failed first at "first"
