@@ -264,34 +264,7 @@ def test_synchronous_motor() -> None:
 
 
 def test_slider_load_on_an_rpp_dyad_takes_its_guide_axis() -> None:
-    text = """
-        [frame]
-        A_mm = [0, 0]
-        [driver]
-        type = "crank"
-        link = "1"
-        pivot = "A"
-        tip = "B"
-        length_mm = 40
-        angle_deg = 45
-        omega_rad_s = 100
-        [[dyad]]
-        type = "RPP"
-        joints = ["B", "C"]
-        links = ["2", "3"]
-        slot_angle_deg = 60
-        guide = { through = "A", angle_deg = 30 }
-        [flywheel]
-        delta = 0.05
-        balance = "driving"
-        [[flywheel.load]]
-        type = "slider"
-        point = "C"
-        during = "both"
-        sense = "backward"
-        s_over_H = [0, 1]
-        force_N = [100, 100]
-    """
+    text = scene_text("flywheel/rpp_slider_load")
     scene = parse(text)
     assert isinstance(scene.linkage.dyads[0], RPP)
     (load,) = scene.problem.machine.loads
