@@ -566,3 +566,84 @@ def test_invalid_cams_are_refused():
         profile(offset_cam("pos"), np.zeros((2, 2)))
     with pytest.raises(TypeError, match="oscillating follower"):
         initial_rocker_angle(offset_cam("pos"))
+
+
+# --------------------------------------------------------------------------------------------
+# An oscillating follower with a flat face (摆动平底从动件): the face is the line through the pivot A
+# along the rocker, tangent to the base circle at the start (ψ0 = asin(r0/a)); its contact with the
+# cam is the envelope of the inverted face lines.
+
+A, R0 = 0.080, 0.030
+PROGRAM = MotionProgram(math.radians(20), (
+    Segment("rise", math.radians(150), "poly345"), Segment("dwell", math.radians(30)),
+    Segment("return", math.radians(120), "cosine"), Segment("dwell", math.radians(60))))
+CASES = [(sense, rot) for sense in ("opposite", "same") for rot in (1, -1)]
+
+
+def cam_of(sense: str, rot: int, r0: float = R0, program: MotionProgram = PROGRAM) -> DiscCam:
+    return DiscCam(r0, OscillatingFollower(A, 0.1, "flat", 0.0, sense), program, rotation=rot)  # type: ignore[arg-type]
+
+
+def face(cam: DiscCam, d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The inverted pivot A(δ) and face direction u(δ) in the cam frame, worked out here afresh."""
+    f, rot = cam.follower, cam.rotation
+    sigma = rot * (1 if f.sense == "opposite" else -1)
+    psi = math.asin(cam.base_radius / f.pivot_distance) + displacement(cam.program, d)
+    ang = -rot * d
+    c, s = np.cos(ang), np.sin(ang)
+    pivot = f.pivot_distance * np.column_stack([c, s])
+    ux, uy = -np.cos(psi), sigma * np.sin(psi)
+    return pivot, np.column_stack([c * ux - s * uy, s * ux + c * uy])
+
+
+def cross(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    return p[:, 0] * q[:, 1] - p[:, 1] * q[:, 0]
+
+
+# interior angles of the smooth pieces (away from the law's joints)
+D = np.concatenate([np.linspace(0.05, 2.55, 40), np.linspace(3.2, 5.1, 30), np.linspace(5.3, 6.2, 10)])
+
+
+def test_start_angle_and_start_tangency() -> None:
+    cam = cam_of("opposite", 1)
+    assert initial_rocker_angle(cam) == pytest.approx(math.asin(R0 / A), abs=1e-15)
+    p = profile(cam, np.array([0.0, 5.5]))  # the dwell at the bottom: the profile is the base circle
+    assert np.hypot(*p.actual.T) == pytest.approx(R0, abs=1e-15)
+    assert np.hypot(*p.pitch.T) == pytest.approx(R0, abs=1e-15)  # the foot of the perpendicular
+
+
+@pytest.mark.parametrize("sense, rot", CASES)
+def test_envelope_points_lie_on_their_faces_and_the_faces_touch_there(sense: str, rot: int) -> None:
+    cam = cam_of(sense, rot)
+    p = profile(cam, D)
+    pivot, u = face(cam, D)
+    assert np.abs(cross(p.actual - pivot, u)).max() < 1e-15  # on face δ
+    # the pitch point is the foot of the perpendicular from O
+    assert np.abs(cross(p.pitch - pivot, u)).max() < 1e-15
+    assert np.abs(np.einsum("ij,ij->i", p.pitch, u)).max() < 1e-15
+    h = 1e-5
+    ahead, behind = profile(cam, D + h).actual, profile(cam, D - h).actual
+    tangent = (ahead - behind) / (2 * h)
+    speed = np.hypot(*tangent.T)
+    assert np.abs(cross(tangent, u)).max() < 1e-8 * speed.max()  # face δ is tangent to the envelope
+    # t = (A′ × u)/(u × u′), with A′ and u′ by finite differences
+    (pa, ua), (pb, ub) = face(cam, D + h), face(cam, D - h)
+    dA, du = (pa - pb) / (2 * h), (ua - ub) / (2 * h)
+    t = cross(dA, u) / cross(u, du)
+    assert np.abs(pivot + t[:, None] * u - p.actual).max() < 1e-9
+    # ρ of the envelope against the parametric formula −rot·|C′|³/(C′ × C″) by finite differences
+    second = (ahead - 2 * p.actual + behind) / h**2
+    rho_fd = -rot * speed**3 / cross(tangent, second)
+    assert np.all(p.rho_actual > 0)
+    assert np.abs(rho_fd / p.rho_actual - 1).max() < 1e-4
+
+
+def test_a_cusp_is_reported() -> None:
+    steep = MotionProgram(math.radians(40), PROGRAM.segments)
+    found = undercut(cam_of("same", 1, r0=0.010, program=steep))
+    assert len(found) == 1 and found[0].startswith("the flat face's profile has a cusp")
+
+
+def test_the_base_circle_must_lie_inside_the_pivot_distance() -> None:
+    with pytest.raises(ValueError, match="r0 < a"):
+        profile(cam_of("opposite", 1, r0=A), D)

@@ -2,14 +2,19 @@
 from __future__ import annotations
 
 import math
+import tomllib
 
 import numpy as np
 import pytest
+import shapely
 
 from graphmech.mechanisms.cam import (DiscCam, MotionProgram, OscillatingFollower, Segment,
                                       TranslatingFollower)
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
-from graphmech.methods.cam_inversion import divisions, draw_profile
+from graphmech.exact.cam import max_pressure_angle, profile, undercut
+from graphmech.methods.cam_inversion import divisions, draw_profile, read_cam
+from graphmech.scene import parse_scene
+from tests.scenes import scene_text
 
 
 def offset_roller(e: float) -> DiscCam:
@@ -76,3 +81,44 @@ def test_pressure_angle_read_off_the_drawing_converges_to_the_exact_one(cam):
     assert errors[1] < errors[0] / 3 and errors[2] < errors[1] / 3  # second order: ×4 per halving
     amax, _ = max_pressure_angle(cam)
     assert amax >= np.max(d.pressure_angle[far]) - 1e-3
+
+
+# ----------------------------------------------------------------------------- an oscillating flat face
+#: The oscillating flat-faced follower (tests/scenes/cam/oscillating_flat.toml): a = 80, r0 = 30 mm.
+R0 = 0.030
+CASES = [(sense, rot) for sense in ("opposite", "same") for rot in (1, -1)]
+# interior angles of the smooth pieces (away from the law's joints)
+D = np.concatenate([np.linspace(0.05, 2.55, 40), np.linspace(3.2, 5.1, 30), np.linspace(5.3, 6.2, 10)])
+
+
+def cam_of(sense: str, rot: int) -> DiscCam:
+    text = scene_text("cam/oscillating_flat").replace('sense = "opposite"', f'sense = "{sense}"')
+    text = text.replace('rotation = "ccw"', f'rotation = "{"ccw" if rot == 1 else "cw"}"')
+    return parse_scene(tomllib.loads(text), "oscillating_flat.toml").problem.cam
+
+
+@pytest.mark.parametrize("sense, rot", CASES)
+def test_the_drawn_profile_converges_at_second_order(sense: str, rot: int) -> None:
+    cam = cam_of(sense, rot)
+    exact = shapely.LineString(profile(cam, np.linspace(0.0, math.tau, 200_001)).actual)
+    errors = []
+    for n in (72, 144, 288):
+        delta = divisions(cam, math.tau / n, breakpoints(cam.program))
+        drawn = draw_profile(cam, delta, displacement(cam.program, delta))
+        assert drawn.valid.all() and len(drawn.actual) == len(delta)
+        errors.append(max(exact.distance(shapely.Point(q)) for q in drawn.actual))
+    ratios = [errors[0] / errors[1], errors[1] / errors[2]]
+    assert errors[0] < 5e-3 * R0
+    assert all(3.5 < r < 4.5 for r in ratios), (errors, ratios)
+
+
+@pytest.mark.parametrize("sense, rot", CASES)
+def test_pressure_angle_is_zero_and_readings_agree(sense: str, rot: int) -> None:
+    cam = cam_of(sense, rot)
+    assert np.all(profile(cam, D).pressure_angle == 0.0)
+    assert max_pressure_angle(cam)[0] == 0.0
+    reading = read_cam(cam, 288)
+    assert reading.alpha_max == 0.0
+    rho = profile(cam, np.linspace(0.0, math.tau, 20_001)).rho_actual.min()
+    assert reading.rho_min == pytest.approx(rho, rel=2e-2)
+    assert not reading.undercut and undercut(cam) == []

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from tests.conftest import SCENES, check_json, run_cli, values
+from tests.scenes import scene_text
 
 ENGINE = """\
 title = "Engine"
@@ -133,31 +134,10 @@ def test_a_load_with_a_step(tmp_path):
     assert q["delta_achieved"]["rel_error"] <= 1e-7
 
 
-def test_a_braking_scene_draws_its_rundown_and_reads_t_stop_off_it():
-    """ω(t) from ω0 = 100 rad/s at μω = 2 (rad/s)/mm falls to 0 at 125 mm of t at μt = 0.02 s/mm: 2.5 s."""
-    from graphmech.scene import render_scene
-    from graphmech.problems.flywheel.braking_figures import rundown_panel
-    from graphmech.drawing.primitives import Segment
-
-    doc = check_json(SCENES / "fly.brake_time.toml")
-    q = values(doc)["t_stop"]
-    assert (q["drawn_mm"], q["scale"], q["graphical"]) == (125.0, 0.02, 2.5)
-    assert doc["scales"] == {"t": 0.02, "omega": 2.0}
-    panel = rundown_panel(0.5, 100.0, 20.0, 3.0)
-    bold = [i for i in panel.items if isinstance(i, Segment) and i.role == "result"]
-    assert [(b.p0, b.p1) for b in bold] == [((0.0, 50.0), (125.0, 0.0))]
-    required = [i for i in panel.items if isinstance(i, Segment) and i.dashed]
-    assert required[0].p0 == (150.0, 0.0)  # t ≤ 3 s at 0.02 s/mm
-    assert "stops in time" in panel.notes[-1]
-    assert "does NOT stop in time" in rundown_panel(0.5, 100.0, 20.0, 2.0).notes[-1]
-    svg, _ = render_scene(SCENES / "fly.brake_time.toml")
-    assert "μt = 0.02 s/mm" in svg and "Run-down" in svg
-
-
 def test_a_braking_scene_with_masses_stops_their_mean_reduced_inertia(tmp_path):
     """A slider-crank's piston (4.5 kg) adds its reduced inertia, averaged over a turn, to J."""
     scene = tmp_path / "b.toml"
-    scene.write_text(BRAKING_WITH_MASSES, encoding="utf-8")
+    scene.write_text(scene_text("flywheel/braking_with_masses"), encoding="utf-8")
     q = values(check_json(scene))["t_stop"]
     # v_C of a centred slider-crank r = 75, l = 300 mm: mean of (v_C/ω)² over a turn, by quadrature
     phi = np.linspace(0.0, 2 * np.pi, 20000, endpoint=False)
@@ -166,38 +146,6 @@ def test_a_braking_scene_with_masses_stops_their_mean_reduced_inertia(tmp_path):
     J = 0.1 + 4.5 * float(np.mean(ds ** 2))
     assert q["exact"] == pytest.approx(J * 100.0 / 20.0, rel=1e-9)
     assert q["graphical"] == pytest.approx(q["exact"], rel=1e-12)
-
-
-BRAKING_WITH_MASSES = """title = "braking with masses"
-[units]
-length = "mm"
-angle = "deg"
-[frame]
-A = [0, 0]
-[driver]
-type = "crank"
-link = "1"
-pivot = "A"
-tip = "B"
-length = 75
-angle = 0
-omega_rad_s = 100
-[[dyad]]
-type = "RRP"
-joints = ["B", "C"]
-links = ["2", "3"]
-length = 300
-guide = { through = [0, 0], angle = 0 }
-branch = "forward"
-[flywheel]
-inertia_kgm2 = 0.1
-[[flywheel.mass]]
-link = "3"
-point = "C"
-mass_kg = 4.5
-[flywheel.braking]
-moment_Nm = 20
-"""
 
 
 def test_measured_flywheel_values_are_judged_against_the_same_positions(tmp_path):

@@ -2,11 +2,18 @@
 no hang, one rule at a table's step, angles compared modulo the cycle."""
 from __future__ import annotations
 
+import copy
 import math
+import tomllib
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
+from graphmech.errors import SceneError
+from graphmech.scene import parse_scene
 from tests.conftest import SCENES, assert_refused, check_json, run_cli, values
+from tests.scenes import scene_text
 
 BRAKE = (SCENES / "fly.brake_time.toml").read_text(encoding="utf-8")
 ENGINE = (SCENES / "fly.ic_engine_flywheel.toml").read_text(encoding="utf-8")
@@ -216,3 +223,74 @@ def test_the_text_table_prints_each_estimate_with_its_basis():
     assert "±" not in line
     code, out, err = run_cli("check", str(SCENES / "fly.ic_engine_flywheel.toml"))
     assert "(36 positions, read at a position)" in next(x for x in out.splitlines() if x.startswith("phi_DeltaT_max"))
+
+
+# ------------------------------------------------------------------------------------------
+# Whatever the data, a flywheel scene or a SceneError
+# ------------------------------------------------------------------------------------------
+
+#: The shared flywheel scenes mutated (tests/scenes/flywheel/).
+SHARED = ("compressor", "engine", "braking")
+
+fly_values = st.recursive(
+    st.booleans()
+    | st.integers(-(2**63), 2**63 - 1)
+    | st.floats(allow_nan=True, allow_infinity=True)
+    | st.text(max_size=8)
+    | st.sampled_from(
+        ["slider", "moment", "crank", "driving", "resisting", "forward", "backward", "both", "1/25",
+         "Radau", "C", "S2", "A", "2", "3", 0, 1, 4, 12, 180, 360, 1e-300]
+    )
+    | st.sampled_from([(0, 1), (0, 0.5, 1), (0, 90, 90, 180)]).map(list),  # a fresh list each time
+    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=6), inner, max_size=4),
+    max_leaves=10,
+)
+
+
+def _leaves(data: object, path: tuple = ()) -> list[tuple]:
+    if isinstance(data, dict):
+        return [path] + [q for k, v in data.items() for q in _leaves(v, path + (k,))]
+    if isinstance(data, list):
+        return [path] + [q for i, v in enumerate(data) for q in _leaves(v, path + (i,))]
+    return [path]
+
+
+@settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.data())
+def test_any_mutation_of_a_flywheel_scene_gives_a_scene_or_a_scene_error(data: st.DataObject) -> None:
+    base = tomllib.loads(data.draw(st.sampled_from([scene_text(f"flywheel/{name}") for name in SHARED])))
+    mutated = copy.deepcopy(base)
+    for _ in range(data.draw(st.integers(1, 2))):
+        paths = _leaves(mutated)[1:]
+        if not paths:
+            break
+        path = data.draw(st.sampled_from(paths))
+        parent = mutated
+        for step in path[:-1]:
+            parent = parent[step]
+        if data.draw(st.booleans()) and isinstance(parent, dict):
+            del parent[path[-1]]
+        else:
+            parent[path[-1]] = data.draw(fly_values)
+    try:
+        scene = parse_scene(mutated, "fuzz.toml")
+    except SceneError as err:
+        assert err.problems
+        assert "\n" not in str(err)
+        return
+    if scene.kind != "flywheel":  # the mutation removed [flywheel]: another kind of scene
+        return
+    fly = scene.problem
+    m = fly.machine
+    assert 4 <= fly.positions <= 3600
+    assert m.omega_m > 0 and math.isfinite(m.omega_m)
+    assert 0 < m.cycle <= 2 * math.pi and math.isclose(2 * math.pi / m.cycle, round(2 * math.pi / m.cycle))
+    assert (0 < m.delta < 2) or (math.isnan(m.delta) and not m.loads and fly.braking is not None)
+    assert m.loads or fly.braking is not None
+    for load in m.loads:
+        assert len(load.table.x) == len(load.table.y) >= 2
+        assert all(a <= b for a, b in zip(load.table.x, load.table.x[1:]))
+        assert all(math.isfinite(v) for v in load.table.x + load.table.y)
+    assert m.inertia >= 0 and all(mass.mass >= 0 and mass.inertia >= 0 for mass in m.masses)
+    if m.linkage is not None:
+        assert len(scene.positions.values) == fly.positions

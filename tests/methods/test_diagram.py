@@ -1,0 +1,133 @@
+"""The kinematic diagram at μl (methods/diagram.py): each point as the draftsman finds it, against
+closed forms, in drawing millimetres from the first frame point."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from graphmech.errors import AssemblyError
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Guide, Linkage, LinkPoint, SliderInput
+from graphmech.methods import diagram
+from graphmech.methods.linkage_construction import LinkageConstruction
+
+MU = 0.002  # m/mm
+
+
+def build(linkage: Linkage, param: str = "phi") -> LinkageConstruction:
+    b = LinkageConstruction(linkage, {"l": MU}, param=param)
+    b.g.param(param)
+    diagram.add_frame(b)
+    for part in (linkage.driver, *linkage.dyads, *linkage.points):
+        diagram.add(b, part)
+    return b
+
+
+def drawn(b: LinkageConstruction, value: float, position: str | None = None) -> dict[str, np.ndarray]:
+    """Every mechanism point, mm, with the driver at ``value`` (φ in rad or s in m)."""
+    got = b.g.prune(list(b.mech.values())).evaluate({b.param: value}, position)
+    return {name: np.array(got[step]) for name, step in b.mech.items()}
+
+
+def fourbar(branch: str = "left", d: float = 0.1) -> Linkage:
+    return Linkage({"A": (0.0, 0.0), "D": (d, 0.0)}, Crank("1", "A", "B", 0.04, 10.0),
+                   (RRR("B", "C", "D", ("2", "3"), (0.12, 0.09), branch),),  # type: ignore[arg-type]
+                   (LinkPoint("E", "2", ("B", "C"), 0.06, 0.02), LinkPoint("F", "1", ("B",), 0.01, -0.005)))
+
+
+def cross(u: np.ndarray, v: np.ndarray) -> float:
+    return float(u[0] * v[1] - u[1] * v[0])
+
+
+@pytest.mark.parametrize("phi_deg", [0.0, 60.0, 135.0, 250.0])
+def test_the_crank_tip_and_the_rrr_joint_keep_their_lengths(phi_deg):
+    phi = math.radians(phi_deg)
+    p = drawn(build(fourbar()), phi)
+    assert p["A"] == pytest.approx([0.0, 0.0]) and p["D"] == pytest.approx([50.0, 0.0])
+    assert p["B"] == pytest.approx([20.0 * math.cos(phi), 20.0 * math.sin(phi)], abs=1e-12)  # 40 mm at μl
+    assert np.hypot(*(p["C"] - p["B"])) == pytest.approx(60.0, rel=1e-13)
+    assert np.hypot(*(p["C"] - p["D"])) == pytest.approx(45.0, rel=1e-13)
+    assert cross(p["D"] - p["B"], p["C"] - p["B"]) > 0.0  # left of B→D
+
+
+def test_the_right_branch_is_the_mirror_image_in_bd():
+    left, right = drawn(build(fourbar("left")), 1.0), drawn(build(fourbar("right")), 1.0)
+    b, d = left["B"], left["D"]
+    u = (d - b) / np.hypot(*(d - b))
+    c = left["C"] - b
+    mirrored = b + 2 * np.dot(c, u) * u - c
+    assert right["C"] == pytest.approx(mirrored, abs=1e-12)
+
+
+def test_extra_points_along_and_left_of_their_base():
+    p = drawn(build(fourbar()), math.radians(60.0))
+    u = (p["C"] - p["B"]) / 60.0
+    n = np.array([-u[1], u[0]])
+    assert p["E"] == pytest.approx(p["B"] + 30.0 * u + 10.0 * n, abs=1e-12)  # 60 mm along BC, 20 mm left
+    assert p["F"] == pytest.approx(p["B"] + [5.0, -2.5], abs=1e-12)  # one base point: a fixed offset
+
+
+@pytest.mark.parametrize("branch, sign", [("forward", 1.0), ("backward", -1.0)])
+def test_the_rrp_slider_on_its_offset_guide(branch, sign):
+    """x_C = r cos φ ± √(l² − (r sin φ − e)²) on the guide y = e."""
+    r, l, e, phi = 0.05, 0.2, 0.01, math.radians(40.0)
+    link = Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", r, 1.0),
+                   (RRP("B", "C", ("2", "3"), l, Guide((0.0, e), 0.0), branch),))  # type: ignore[arg-type]
+    b = build(link)
+    x = r * math.cos(phi) + sign * math.sqrt(l * l - (r * math.sin(phi) - e) ** 2)
+    assert drawn(b, phi)["C"] == pytest.approx([x / MU, e / MU], rel=1e-13)
+    assert b.slider_dir["C"] == (1.0, 0.0) and "3" in b.translating
+
+
+def test_the_rpp_joint_is_the_slot_through_b_on_the_guide():
+    phi, slot, guide = math.radians(70.0), math.radians(60.0), math.radians(30.0)
+    link = Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.04, 1.0),
+                   (RPP("B", "C", ("2", "3"), slot, Guide((0.0, 0.0), guide)),))
+    b = build(link)
+    p = drawn(b, phi)
+    # B + t (cos 60°, sin 60°) = u (cos 30°, sin 30°)
+    bx, by = 20.0 * math.cos(phi), 20.0 * math.sin(phi)
+    t, u = np.linalg.solve([[math.cos(slot), -math.cos(guide)], [math.sin(slot), -math.sin(guide)]], [-bx, -by])
+    assert p["C"] == pytest.approx([u * math.cos(guide), u * math.sin(guide)], abs=1e-12)
+    assert p["B2"] == pytest.approx(p["B"]) and p["B3"] == pytest.approx(p["B"])  # B on the block and on the slot
+    assert b.translating >= {"2", "3"}
+
+
+def test_a_slider_driver_and_an_rpr_block_name_their_coincident_points():
+    """A slider driven along a 30° guide: no frame point, so the guide's point is the drawing's origin."""
+    guide = Guide((1.0, 2.0), math.radians(30.0))
+    link = Linkage({}, SliderInput("1", "B", guide, 1.0), ())
+    p = drawn(build(link, "s"), 0.05)
+    assert p["B"] == pytest.approx([12.5 * math.sqrt(3.0), 12.5], rel=1e-14)  # 50 mm along at μl
+    quick = Linkage({"A": (0.0, 0.0), "C": (0.0, 0.1)}, Crank("1", "A", "B", 0.03, 1.0),
+                    (RPR("C", "B", ("3", "2")),))
+    b = build(quick)
+    assert b.mech["B3"] == b.mech["B2"] == b.mech["B"]  # the block's pivot B, on the bar 3 and on the block 2
+
+
+def test_a_mechanism_far_from_the_origin_is_drawn_from_its_first_frame_point():
+    far = Linkage({"A": (1.0e6, -2.0e6), "D": (1.0e6 + 0.1, -2.0e6)}, Crank("1", "A", "B", 0.04, 10.0),
+                  (RRR("B", "C", "D", ("2", "3"), (0.12, 0.09), "left"),))
+    near = drawn(build(fourbar()), 0.7)
+    got = drawn(build(far), 0.7)
+    assert got["B"] == pytest.approx(near["B"], abs=1e-12)  # no digits lost to the offset
+    assert got["C"] == pytest.approx(near["C"], abs=1e-6)  # D itself is 1e6 + 0.1 m, rounded at 1e-10 m
+
+
+def test_each_joint_step_says_how_it_is_found():
+    b = build(fourbar())
+    c = b.g.steps[b.mech["C"]]
+    assert c.text == "C = circle(B, l2) ∩ circle(D, l3), left of B→D"
+    assert (c.kind, c.role, c.panel, c.label, c.inputs) == ("point", "given", "mechanism", "C", ("B", "D"))
+    assert b.g.steps[b.mech["B"]].text == "B on the crank circle about A at φ"
+    assert b.g.steps[b.mech["A"]].text == "frame point A"
+
+
+def test_a_linkage_that_cannot_close_names_the_step_and_the_lengths():
+    b = build(fourbar(d=0.3))  # |BD| ≥ 0.26 m > l2 + l3 = 0.21 m
+    with pytest.raises(AssemblyError) as info:
+        drawn(b, 0.0, "3")
+    assert str(info.value) == ("C = circle(B, l2) ∩ circle(D, l3), left of B→D: cannot be assembled at 3: "
+                               "|BD| = 0.26 m > l2 + l3 = 0.21 m")
+    assert isinstance(info.value, ArithmeticError)
