@@ -6,6 +6,7 @@ tests/problems/test_reader.py."""
 from __future__ import annotations
 
 import copy
+import hashlib
 import math
 import re
 import tomllib
@@ -16,8 +17,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from graphmech.errors import SceneError
-from graphmech.scene import MAX_BYTES, load_scene, parse_scene
-from tests.conftest import ROOT
+from graphmech.scene import MAX_BYTES, id_prefix, load_scene, parse_scene, render_scene
+from tests.conftest import ROOT, SCENES
 from tests.scenes import scene_text
 
 DOCS = ROOT / "docs" / "scene-format.md"
@@ -119,6 +120,81 @@ def test_each_doc_example_parses(index: int, tmp_path: Path) -> None:
         assert scene.linkage is None and scene.positions is None
         return
     assert scene.linkage.frame_link not in scene.linkage.links()
+
+
+# ------------------------------------------------------------------------------------------
+# Which kind reads a scene
+# ------------------------------------------------------------------------------------------
+
+
+def test_a_scene_without_any_kinds_table_is_a_linkage() -> None:
+    scene = parse_scene(tomllib.loads(GOOD), "fourbar.toml")
+    assert scene.kind == "linkage"
+    assert scene.linkage is not None and scene.linkage.frame_points["D"] == (pytest.approx(0.12), 0.0)
+
+
+def test_the_first_kind_whose_table_the_file_has_reads_it() -> None:
+    """[structure] comes first in the registry: with a linkage's tables beside it, the structure
+    reader reads the file (and refuses the linkage's show), not the linkage reader."""
+    with pytest.raises(SceneError) as info:
+        parse_scene({**tomllib.loads(GOOD), "structure": {}}, "mix.toml")
+    assert info.value.problems[:2] == [
+        ("show[0]", "unknown value 'mechanism': use structure"),
+        ("show[1]", "unknown value 'velocity': use structure"),
+    ]
+    forces = parse_scene({**tomllib.loads(GOOD), "forces": {}}, "forces.toml")
+    assert forces.kind == "forces"
+
+
+def test_a_kinds_mixture_rule_refuses_in_one_problem() -> None:
+    with pytest.raises(SceneError) as info:
+        parse_scene({**tomllib.loads(GOOD), "cam": {}}, "mix.toml")
+    assert info.value.problems == [
+        ("cam", "a scene is a linkage ([driver]) or a disc cam ([cam]), not both: "
+                "put the cam in a scene of its own"),
+    ]
+
+
+@pytest.mark.parametrize("data", [[], "title", 5, None])
+def test_a_scene_must_be_a_table(data: object) -> None:
+    with pytest.raises(SceneError) as info:
+        parse_scene(data, "odd.toml")  # type: ignore[arg-type]
+    assert str(info.value) == "odd.toml: a scene must be a TOML table"
+
+
+# ------------------------------------------------------------------------------------------
+# render_scene and id_prefix
+# ------------------------------------------------------------------------------------------
+
+
+def test_render_scene_makes_the_reference_figure() -> None:
+    svg, warnings = render_scene(SCENES / "kin.fourbar_instant_centres.toml")
+    assert warnings == []
+    assert svg == (ROOT / "figures" / "kin.fourbar_instant_centres.svg").read_text(encoding="utf-8")
+
+
+def test_every_element_id_starts_with_the_scenes_prefix(tmp_path: Path) -> None:
+    path = write(tmp_path, GOOD)
+    svg, _ = render_scene(path)
+    prefix = id_prefix(path)
+    ids = re.findall(r' id="([^"]+)"', svg)
+    assert len(ids) > 3
+    assert all(i.startswith(prefix + "-") for i in ids), [i for i in ids if not i.startswith(prefix)]
+
+
+def test_id_prefix_is_a_hash_of_the_bytes_not_of_the_name(tmp_path: Path) -> None:
+    a = write(tmp_path, GOOD, "a.toml")
+    b = write(tmp_path, GOOD, "b.toml")
+    c = write(tmp_path, GOOD.replace("angle = 30", "angle = 31"), "c.toml")
+    assert id_prefix(a) == id_prefix(b) == "g" + hashlib.sha256(GOOD.encode()).hexdigest()[:8]
+    assert id_prefix(c) != id_prefix(a)
+    assert re.fullmatch(r"g[0-9a-f]{8}", id_prefix(c))
+
+
+def test_render_scene_refuses_a_bad_scene_before_drawing(tmp_path: Path) -> None:
+    with pytest.raises(SceneError, match=r"^scene\.toml: dyad\[0\]\.lengths\[1\]: must be > 0$"):
+        render_scene(write(tmp_path, GOOD.replace("lengths = [120, 90]", "lengths = [120, 0]")))
+
 
 
 # ------------------------------------------------------------------------------------------
