@@ -9,13 +9,16 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 import tomllib
 
 import pytest
 
 from graphmech.errors import SceneError
-from graphmech.problems.reader import Page
+from graphmech.problems.reader import (Page, Reader, compact, did_you_mean, file_order, key_text, maybe, one_of,
+                                       page_size, pole_distances, raise_sorted, read_units, say, type_name)
 from graphmech.scene import load_scene, parse_scene
+from tests.conftest import SCENES, assert_refused, run_cli
 from tests.scenes import scene_path, scene_text
 
 #: The four-bar at φ = 30° with a coupler point E, valid; each test varies it.
@@ -290,3 +293,141 @@ def test_problems_come_in_file_order() -> None:
     )
     err = problems_of(text)
     assert [p for p, _ in err.problems] == ["page.size", "driver.length"]
+
+
+@pytest.mark.parametrize("scene_id, h", [("linkage.slider_crank_offset-cycle", "5e-324"),
+                                         ("linkage.slider_crank_offset-cycle", "1e-300"),
+                                         ("linkage.slider_crank_offset-cycle", "[20, 0.5]"),
+                                         ("fly.compressor_course_project", "5e-324"),
+                                         ("fly.compressor_course_project", "2000")])
+def test_a_pole_distance_that_cannot_be_drawn_is_refused_where_it_is_read(tmp_path, scene_id, h):
+    """H = 5e-324 mm divided by zero (cycle) or made an infinite ordinate (flywheel): exit 3."""
+    text = (SCENES / f"{scene_id}.toml").read_text(encoding="utf-8")
+    p = tmp_path / "h.toml"
+    if "pole_distance_mm" not in text:
+        text = text.replace("[flywheel]\n", "[flywheel]\npole_distance_mm = 30\n")
+    p.write_text(re.sub(r"pole_distance_mm = .*", f"pole_distance_mm = {h}", text), encoding="utf-8")
+    for argv in (("render", str(p), "-o", str(tmp_path / "x.svg")), ("check", str(p), "--json")):
+        assert_refused(run_cli(*argv), "h.toml", "pole_distance_mm", "a pole distance lies between 1 and 1000 mm")
+
+
+# ------------------------------------------------------------------------------------------
+# The toolkit's functions, directly
+# ------------------------------------------------------------------------------------------
+
+
+def reader(table, units=None):
+    """A reader of ``table`` at key path "t", with its own list of problems."""
+    return Reader(table, "t", [], units or {})
+
+
+def test_a_key_path_quotes_what_is_not_a_plain_key():
+    assert key_text("omega_rpm") == "omega_rpm" and key_text("p'c'@3") == "p'c'@3"
+    assert key_text("a b") == "'a b'" and key_text("a\nb") == "'a\\nb'"
+    r = reader({})
+    assert (r.at("x"), r.at(2), Reader({}, "", [], {}).at("x")) == ("t.x", "t[2]", "x")
+
+
+def test_messages_say_values_short_and_on_one_line():
+    assert say("x" * 50) == repr("x" * 39 + "…")
+    assert say("A\nB") == "'A\\nB'"
+    assert [type_name(v) for v in (True, 3, 2.5, "s", [], {})] == [
+        "true/false", "a number", "a number", "a string", "a list", "a table"]
+    assert (compact(50.0), compact(12.5), compact(-0.0), compact(0.1 + 0.2)) == ("50", "12.5", "0", "0.3")
+    assert (one_of(["A4"]), one_of(["deg", "rad"]), one_of("abc")) == ("A4", "deg or rad", "a, b or c")
+
+
+def test_the_nearest_word_is_suggested_letters_swapped_first():
+    assert did_you_mean("stpe", ["step", "stop", "start"]) == "; did you mean step?"
+    assert did_you_mean("RRR", ["rrr", "RRP"]) == "; did you mean rrr?"  # the same letters in another case
+    assert did_you_mean("zzz", ["step", "stop"]) == ""
+    assert maybe("degree", ["deg", "rad"]) == " (did you mean deg?)" and maybe("x", ["deg"]) == ""
+
+
+def test_a_number_is_finite_and_not_a_boolean():
+    r = reader({})
+    assert r.number(3, "t.a") == 3.0 and r.number(2.5, "t.b", positive=True) == 2.5
+    assert r.number(True, "t.c") is None
+    assert r.number(0, "t.d", positive=True) is None
+    assert r.number(10**400, "t.e") is None
+    assert r.problems == [("t.c", "must be a number, not true/false"), ("t.d", "must be > 0"),
+                          ("t.e", "number too large")]
+
+
+def test_numbers_are_exactly_count_and_each_checked():
+    r = reader({})
+    assert r.numbers([1, 2], "t.p", 2) == [1.0, 2.0]
+    assert r.numbers([1, 2, 3], "t.q", 2) is None
+    assert r.numbers([1, -2], "t.r", 2, positive=True) is None
+    assert r.problems == [("t.q", "must be [x, y]: a list of 2 numbers, not a list of 3"), ("t.r[1]", "must be > 0")]
+
+
+def test_a_quantity_by_its_suffix_or_the_units_table_in_si():
+    assert reader({"length_cm": 5}).scalar("length", "length") == pytest.approx(0.05)
+    assert reader({"length": 5}, {"length": "mm"}).scalar("length", "length") == pytest.approx(0.005)
+    assert reader({"angle_deg": 90}).scalar("angle", "angle") == pytest.approx(math.pi / 2)
+    assert reader({"omega_rpm": 60}).scalar("omega", "omega") == pytest.approx(2 * math.pi)
+    value = reader({"offset_mm": 35}).value("offset", "length")
+    assert (value.si, value.text(), value.text(0.02)) == (pytest.approx(0.035), "35 mm", "20 mm")
+    r = reader({"length": 5})
+    assert r.scalar("length", "length") is None
+    assert r.problems == [("t.length", "unit not stated: write length_mm or set [units] length")]
+
+
+def test_an_unread_key_is_unknown_and_a_near_one_suggested():
+    r = reader({"lenght": 1, "angle": 2})
+    r.raw("angle")
+    r.raw("length")
+    r.finish()
+    assert r.problems == [("t.lenght", "unknown key; did you mean length?")]
+
+
+def test_a_string_choice_and_a_flag():
+    r = reader({"branch": "lft", "ranges": "yes", "start": "extreme"})
+    assert r.string("start", choices=("driver", "extreme")) == "extreme"
+    assert r.string("branch", choices=("left", "right")) is None
+    assert r.string("sense", default="ccw") == "ccw"
+    assert r.flag("ranges") is None and r.flag("absent") is None
+    assert r.problems == [("t.branch", "unknown value 'lft': use left or right (did you mean left?)"),
+                          ("t.ranges", "must be true or false, not a string")]
+
+
+def test_the_units_table_refuses_an_unknown_unit_without_a_cascade():
+    top = Reader({"units": {"length": "inch", "angle": "rad"}}, "", [], {})
+    units = read_units(top)
+    assert units["angle"] == "rad" and units["length"] is None
+    assert top.problems == [("units.length", "unknown unit 'inch': use mm, cm or m")]
+
+
+def test_a_pole_distance_is_millimetres_of_drawing_within_range():
+    assert pole_distances(reader({})) is None
+    assert pole_distances(reader({"pole_distance_mm": 25}), 2) == (25.0, 25.0)
+    assert pole_distances(reader({"pole_distance_mm": [30, 20]}), 2) == (30.0, 20.0)
+    r = reader({"pole_distance_m": 0.02})
+    assert pole_distances(r) is None
+    assert r.problems == [("t.pole_distance_m", "H is a distance on the drawing: write pole_distance_mm")]
+    r = reader({"pole_distance_mm": [30, 0.5]})
+    assert pole_distances(r, 2) is None
+    assert r.problems[0][0] == "t.pole_distance_mm[1]" and r.problems[0][1].startswith("H2 = 0.5 mm: a pole distance lies between 1 and 1000 mm")
+
+
+def test_problems_sort_in_file_order_an_unknown_key_before_a_missing_one():
+    """Top-level tables by ``order``, then the section's keys as written, an array's items before
+    the whole array; a misspelt key (often why another is missing) before the missing one."""
+    order = {"title": 0, "cam": 1, "page": 2}
+    sub = {"follower": 0, "segment": 1}
+    problems = [("page.size", "must be > 0"), ("cam.segment[1].angle", "must be > 0"), ("cam.segment", "the angles"),
+                ("cam.base_radius", "missing"), ("cam.base_radus", "unknown key; did you mean base_radius?"),
+                ("cam.follower.offset", "missing"), ("cam.segment[0].law", "unknown value")]
+    got = sorted(problems, key=lambda p: file_order(p, order, sub, "cam"))
+    assert [p for p, _ in got] == ["cam.follower.offset", "cam.segment[0].law", "cam.segment[1].angle",
+                                   "cam.segment", "cam.base_radus", "cam.base_radius", "page.size"]
+    with pytest.raises(SceneError) as info:
+        raise_sorted(problems, {"cam": {"follower": {}, "segment": []}}, order, "cam", "c.toml")
+    assert str(info.value) == "c.toml: cam.follower.offset: missing (and 6 more)"
+
+
+def test_a_scenes_page_size_in_mm():
+    assert page_size(parse_scene(tomllib.loads(GOOD))) == (297.0, 210.0)
+    assert page_size(parse_scene(tomllib.loads(GOOD + '\n[page]\nsize = "A3-portrait"\n'))) == (297.0, 420.0)
+    assert page_size(parse_scene(tomllib.loads(GOOD + "\n[page]\nsize = [200, 150]\n"))) == (200.0, 150.0)
