@@ -53,25 +53,7 @@ branch = "{branch}"
 SLIDER_CRANK = scene_text("linkage/ic_slider_crank")
 SIXBAR = scene_text("linkage/ic_sixbar")
 
-OSCILLATING_BLOCK = HEAD + """
-[frame]
-link = "1"
-A = [0, 0]
-C = [-100, 0]
-[driver]
-type = "crank"
-link = "2"
-pivot = "A"
-tip = "B"
-length = 30
-angle = [45, 200]
-omega = 10
-[[dyad]]
-type = "RPR"
-joints = ["B", "C"]
-links = ["3", "4"]
-bar = "first"
-"""
+OSCILLATING_BLOCK = scene_text("linkage/ic_oscillating_block")
 
 def scene_of(text: str, show=("instant_centres",), find=()):
     data = tomllib.loads(text)
@@ -243,24 +225,7 @@ def test_rocker_driven_dead_centre_leaves_the_crank_undetermined():
     assert ic.motions["4"].omega == 10.0
 
 
-SLIDER_DRIVEN = HEAD + """
-[frame]
-link = "1"
-A = [0, 0]
-[driver]
-type = "slider"
-link = "4"
-point = "C"
-guide = { through = [0, 20], angle = 0 }
-position = [250, 320]
-velocity = 1.5
-[[dyad]]
-type = "RRR"
-joints = ["C", "B", "A"]
-links = ["3", "2"]
-lengths = [300, 100]
-branch = "right"
-"""
+SLIDER_DRIVEN = scene_text("linkage/ic_slider_driven")
 
 
 def test_rpp_three_centres_at_infinity_and_the_line_at_infinity():
@@ -338,33 +303,7 @@ def test_kennedy_any_three_centres_are_in_line_and_agree_with_the_exact_ones(a, 
         assert r.rel_error <= 1e-9 or r.ill_conditioned, r
 
 
-COMPOUND = HEAD + """
-[frame]
-link = "1"
-A = [0, 0]
-D = [120, 0]
-G = [200, 100]
-[driver]
-type = "crank"
-link = "2"
-pivot = "A"
-tip = "B"
-length = 60
-angle = [60, 150]
-omega = 10
-[[dyad]]
-type = "RRR"
-joints = ["B", "C", "D"]
-links = ["3", "4"]
-lengths = [120, 90]
-branch = "left"
-[[dyad]]
-type = "RRR"
-joints = ["C", "E", "G"]
-links = ["5", "6"]
-lengths = [110, 80]
-branch = "left"
-"""
+COMPOUND = scene_text("linkage/ic_compound_hinge")
 
 
 def test_a_compound_hinge_is_the_centre_of_every_two_of_its_links():

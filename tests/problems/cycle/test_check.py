@@ -153,30 +153,7 @@ def test_ill_conditioned_positions_are_one_line_however_many(tmp_path):
     """A crank-rocker a hair from its change point (20 + 80 vs 60 + 40.02): near the folded position the
     coupler and rocker almost align; 360 positions give one summary line per kind, not hundreds."""
     p = tmp_path / "near.toml"
-    p.write_text("""
-title = "Near a change point"
-show = ["cycle", "velocity"]
-find = ["omega_3@1"]
-[frame]
-A_mm = [0, 0]
-D_mm = [80, 0]
-[driver]
-type = "crank"
-link = "1"
-pivot = "A"
-tip = "B"
-length_mm = 20
-angle_deg = 0
-omega_rad_s = 10
-[[dyad]]
-type = "RRR"
-joints = ["B", "C", "D"]
-links = ["2", "3"]
-lengths_mm = [60, 40.02]
-branch = "left"
-[cycle]
-positions = 360
-""", encoding="utf-8")
+    p.write_text(scene_text("cycle/near_change_point"), encoding="utf-8")
     doc = check_json(p)
     summary = [w for w in doc["warnings"] if w.startswith(("ill-conditioned intersections", "shallow intersections"))]
     assert summary and len(summary) <= 2
@@ -259,27 +236,7 @@ def test_the_text_table_tells_the_class_the_ranges_and_the_diagrams_errors():
 
 def test_a_slider_crank_whose_crank_cannot_turn_names_the_construction_step(tmp_path):
     p = tmp_path / "sc.toml"
-    p.write_text("""
-show = ["characteristics"]
-find = ["theta"]
-[frame]
-A_mm = [0, 0]
-[driver]
-type = "crank"
-link = "1"
-pivot = "A"
-tip = "B"
-length_mm = 100
-angle_deg = 90
-omega_rad_s = 10
-[[dyad]]
-type = "RRP"
-joints = ["B", "C"]
-links = ["2", "3"]
-length_mm = 150
-guide = { through_mm = [0, 60], angle_deg = 0 }
-branch = "forward"
-""", encoding="utf-8")
+    p.write_text(scene_text("cycle/slider_crank_cannot_turn"), encoding="utf-8")
     code, out, err = run_cli("check", str(p))  # a + e = 160 mm > b = 150 mm
     assert code == 2 and err.count("\n") == 1 and "C₁ = arc(A, BC − AB) ∩ guide" in err and "does not turn fully" in err
 

@@ -173,27 +173,7 @@ def test_unknown_find_names_are_refused(tmp_path):
 
 def test_a_slider_driven_linkage_has_no_cycle(tmp_path):
     p = tmp_path / "sl.toml"
-    p.write_text("""
-show = ["cycle"]
-[cycle]
-positions = 12
-[frame]
-O_mm = [0, 0]
-D_mm = [100, 60]
-[driver]
-type = "slider"
-link = "1"
-point = "B"
-guide = { through = "O", angle_deg = 0 }
-position_mm = 40
-velocity_m_s = 0.5
-[[dyad]]
-type = "RRR"
-joints = ["B", "C", "D"]
-links = ["2", "3"]
-lengths_mm = [80, 50]
-branch = "right"
-""", encoding="utf-8")
+    p.write_text(scene_text("cycle/slider_driven"), encoding="utf-8")
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
     assert code == 2 and err.count("\n") == 1 and ": driver.type:" in err and "crank" in err, err
 

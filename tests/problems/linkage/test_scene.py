@@ -106,22 +106,7 @@ def test_units_by_suffix_equal_units_by_table() -> None:
 def test_other_units_convert() -> None:
     scene = parse_scene(
         tomllib.loads(
-            """
-            [units]
-            omega = "deg/s"
-            epsilon = "deg/s2"
-            [frame]
-            A_mm = [0, 0]
-            [driver]
-            type = "crank"
-            link = 1
-            pivot = "A"
-            tip = "B"
-            length_cm = 5
-            angle_deg = 90
-            omega = 180
-            epsilon = -90
-            """
+            scene_text("linkage/crank_other_units")
         )
     )
     assert scene.linkage.driver.length == pytest.approx(0.05)
@@ -142,52 +127,7 @@ def test_clockwise_crank_is_stored_negative() -> None:
 def test_slider_driver_and_each_dyad_type() -> None:
     scene = parse_scene(
         tomllib.loads(
-            """
-            [units]
-            length = "mm"
-            angle = "deg"
-            velocity = "mm/s"
-            acceleration = "m/s2"
-            [frame]
-            O = [0, 0]
-            D = [100, 60]
-            [driver]
-            type = "slider"
-            link = "1"
-            point = "B"
-            guide = { through = "O", angle = 90 }
-            position = [40, 60]
-            velocity = 500
-            [[dyad]]
-            type = "RRR"
-            joints = ["B", "C", "D"]
-            links = ["2", "3"]
-            lengths = [80, 50]
-            branch = "right"
-            [[dyad]]
-            type = "RRP"
-            joints = ["C", "F"]
-            links = ["4", "5"]
-            length = 70
-            guide = { through = [0, 120] }
-            branch = "backward"
-            [[dyad]]
-            type = "RPR"
-            joints = ["F", "D"]
-            links = ["6", "7"]
-            bar = "second"
-            [[dyad]]
-            type = "RPP"
-            joints = ["C", "G"]
-            links = ["8", "9"]
-            slot_angle = 60
-            guide = { through = [0, -50], angle = 0 }
-            [[point]]
-            name = "K"
-            link = "9"
-            base = ["G"]
-            offset = [5, 10]
-            """
+            scene_text("linkage/slider_every_dyad")
         )
     )
     link = scene.linkage
@@ -213,42 +153,7 @@ def test_points_may_use_coincident_points_and_carry_later_dyads() -> None:
     """The six-bar pattern: E on link 3 (from D, C) is the outer joint of the next dyad."""
     scene = parse_scene(
         tomllib.loads(
-            """
-            [units]
-            length = "m"
-            angle = "deg"
-            omega = "rad/s"
-            [frame]
-            link = "0"
-            A = [0, 0]
-            C = [-0.1, 0]
-            D = [0.3, -0.06]
-            [driver]
-            type = "crank"
-            link = "1"
-            pivot = "A"
-            tip = "B"
-            length = 0.03
-            angle = 45
-            omega = 10
-            [[dyad]]
-            type = "RPR"
-            joints = ["B", "C"]
-            links = ["2", "3"]
-            bar = "first"
-            [[point]]
-            name = "E"
-            link = "2"
-            base = ["B", "C2"]
-            along = 0.05
-            left = 0.04
-            [[dyad]]
-            type = "RRR"
-            joints = ["E", "F", "D"]
-            links = ["4", "5"]
-            lengths = [0.2, 0.2]
-            branch = "left"
-            """
+            scene_text("linkage/rpr_sixbar")
         )
     )
     assert scene.linkage.frame_link == "0"
