@@ -22,10 +22,8 @@ SLIDER_CRANK = scene_text("linkage/ic_slider_crank")
 
 
 def scene_of(text: str, show=("instant_centres",), find=()):
-    data = tomllib.loads(text)
-    data["show"] = list(show)
-    data["find"] = list(find)
-    return parse_scene(data, "test.toml")
+    """The scene ``text`` with its own show and find."""
+    return parse_scene({**tomllib.loads(text), "show": list(show), "find": list(find)}, "test.toml")
 
 
 def intersection(p, q, r, s):

@@ -14,15 +14,8 @@ from graphmech.scene import load_scene, parse_scene
 from tests.conftest import SCENES
 from tests.scenes import scene_text
 
-#: A six-bar at φ = 40° and 165°: 15 centres, 6 links.
+#: A six-bar at φ = 40° and 165° showing its instant centres: 15 centres, 6 links.
 SIXBAR = scene_text("linkage/ic_sixbar")
-
-
-def scene_of(text: str, show=("instant_centres",), find=()):
-    data = tomllib.loads(text)
-    data["show"] = list(show)
-    data["find"] = list(find)
-    return parse_scene(data, "test.toml")
 
 
 @pytest.fixture(scope="module")
@@ -76,7 +69,7 @@ def test_the_sheet_draws_every_centre_and_the_polygon_of_links():
     assert zero.name == "ic-zero-C"  # the mechanism where v_C = 0: P24 on P12 = A, twice
     marks = [it.anchor for it in zero.items if type(it).__name__ == "Label" and it.text == "P₂₄"]
     assert marks == [pytest.approx((0.0, 0.0), abs=1e-9)]
-    an = analyse(scene_of(SIXBAR))
+    an = analyse(parse_scene(tomllib.loads(SIXBAR), "test.toml"))
     panels = ic_panels(an, (420.0, 297.0))
     assert [p.name for p in panels] == ["ic-40", "ic-circle-40", "ic-165", "ic-circle-165"]
     circle = panels[1]

@@ -20,6 +20,15 @@ from tests.scenes import scene_path, scene_text
 DOCS = ROOT / "docs" / "scene-format.md"
 #: The four-bar at φ = 30° with a coupler point E, valid; each test varies it.
 GOOD = scene_text("linkage/fourbar_phi30")
+#: A second dyad, to append to it, whose first joint G nothing defines.
+DYAD_FROM_G = """
+[[dyad]]
+type = "RRR"
+joints = ["G", "H", "D"]
+links = ["5", "6"]
+lengths = [50, 50]
+branch = "right"
+"""
 
 
 def problems_of(text: str) -> SceneError:
@@ -182,31 +191,15 @@ def test_negative_crank_length() -> None:
 
 
 def test_undefined_joint() -> None:
-    text = (
-        GOOD
-        + """
-[[dyad]]
-type = "RRR"
-joints = ["G", "H", "D"]
-links = ["5", "6"]
-lengths = [50, 50]
-branch = "right"
-"""
-    )
+    text = GOOD + DYAD_FROM_G
     assert message_of(text) == "scene.toml: dyad[1].joints[0]: G is not defined before dyad[1]"
 
 
 def test_joint_defined_by_a_later_dyad_is_named() -> None:
     text = (
         GOOD
+        + DYAD_FROM_G.replace('"G"', '"F"')
         + """
-[[dyad]]
-type = "RRR"
-joints = ["F", "H", "D"]
-links = ["5", "6"]
-lengths = [50, 50]
-branch = "right"
-
 [[dyad]]
 type = "RRP"
 joints = ["C", "F"]
