@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from graphmech.accuracy import convergence_order
-from graphmech.problems.cycle.bench import cycle_notes, differentiation_records
+from graphmech.problems.cycle.bench import differentiation_records
 from graphmech.bench import sheet_note, sheet_record
 
 

@@ -11,6 +11,7 @@ import math
 import pytest
 
 from tests.conftest import check_json, fourbar_scene, run_cli, values
+from tests.scenes import scene_text
 
 def non_grashof(angle: float) -> str:
     """AB 60, BC 30, CD 40, AD 80: a double rocker whose crank stops where C lies on BD."""
@@ -101,32 +102,7 @@ def test_slider_driven_near_dead_centre_warns(tmp_path):
         assert row["rel_error"] <= 1e-9 or row["ill_conditioned"], row
 
 
-CRANK_SLIDER = """
-title = "centred slider-crank"
-show = ["mechanism", "velocity", "acceleration"]
-find = ["v_C", "omega_2", "a_C", "alpha_2"]
-[units]
-length = "mm"
-angle = "deg"
-omega = "rad/s"
-[frame]
-A = [0, 0]
-[driver]
-type = "crank"
-link = "1"
-pivot = "A"
-tip = "B"
-length = 40
-angle = [0, 180]
-omega = 10
-[[dyad]]
-type = "RRP"
-joints = ["B", "C"]
-links = ["2", "3"]
-length = 100
-guide = { through = [0, 0], angle = 0 }
-branch = "forward"
-"""
+CRANK_SLIDER = scene_text("linkage/slider_crank_centred")
 
 
 def test_crank_driven_slider_crank_dead_centres_are_normal_results(tmp_path):
@@ -190,30 +166,7 @@ def test_a_mechanism_far_from_the_origin_is_flagged_not_trusted(tmp_path):
 
 
 def test_a_guide_bar_through_its_own_crank_pin_is_refused_not_drawn(tmp_path):
-    text = """
-title = "guide bar whose pivot C lies on the crank circle"
-show = ["mechanism", "velocity", "acceleration"]
-find = ["omega_3", "v_B3B2"]
-[units]
-length = "mm"
-angle = "deg"
-omega = "rad/s"
-[frame]
-A = [0, 0]
-C = [0, -100]
-[driver]
-type = "crank"
-link = "1"
-pivot = "A"
-tip = "B"
-length = 100
-angle = 270
-omega = 10
-[[dyad]]
-type = "RPR"
-joints = ["B", "C"]
-links = ["2", "3"]
-bar = "second"
-"""
+    """AB = AC = 100 mm at φ = −90°: the crank pin B lies on the bar's pivot C."""
+    text = scene_text("linkage/guide_bar_pin_near_pivot").replace("length = 99.9998", "length = 100")
     code, out, err = run_cli("check", str(write(tmp_path, text)))
     assert code == 2 and "coincide" in err and err.count("\n") == 1

@@ -8,6 +8,7 @@ import re
 import pytest
 
 from tests.conftest import SCENES, assert_refused, run_cli
+from tests.scenes import scene_text
 
 BLOCK = (SCENES / "kin.oscillating_block.toml").read_text()
 
@@ -178,32 +179,7 @@ def test_chord_diagrams_estimate_their_own_error(path, n, tmp_path):
 
 # ---------------------------------------------------------------------------- item 6: no silent inaccuracy
 
-GUIDE_BAR_POLYGONS = """
-title = "Guide bar, the crank pin 2e-4 mm from the bar's pivot"
-show = ["mechanism", "velocity", "acceleration"]
-find = ["omega_3", "alpha_3", "a_k_B3B2"]
-[units]
-length = "mm"
-angle = "deg"
-omega = "rad/s"
-[frame]
-link = "4"
-A = [0, 0]
-C = [0, -100]
-[driver]
-type = "crank"
-link = "1"
-pivot = "A"
-tip = "B"
-length = 99.9998
-angle = -90
-omega = 10
-[[dyad]]
-type = "RPR"
-joints = ["B", "C"]
-links = ["2", "3"]
-bar = "second"
-"""
+GUIDE_BAR_POLYGONS = scene_text("linkage/guide_bar_pin_near_pivot")
 
 
 def _alpha_3_in_rationals() -> float:

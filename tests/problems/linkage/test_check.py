@@ -1,0 +1,102 @@
+"""The linkage's check (graphmech/problems/linkage/check.py): the polygons' values against the
+closed-form four-bar and textbook formulas, the scales chosen or kept, the exact value of each
+quantity, and hand measurements judged within the drawing precision."""
+from __future__ import annotations
+
+import math
+import tomllib
+
+import numpy as np
+import pytest
+
+from graphmech.errors import SceneError
+from graphmech.problems.linkage.bench import closed_form_fourbar
+from graphmech.problems.linkage.check import analyse, exact_value, judge, rows_that_fit
+from graphmech.scene import parse_scene
+from tests.scenes import scene_text
+
+#: AD 120, AB 60 (link 2) at 30°, BC 120 (3), CD 90 mm (4); 100 rpm, ε = 4 rad/s²; μl, μv stated.
+FOURBAR = scene_text("linkage/fourbar_phi30")
+OMEGA = 100 * 2 * math.pi / 60
+
+
+def scene(find="[]", measured=""):
+    text = FOURBAR.replace('find = ["v_C", "omega_3"]', f"find = {find}")
+    return parse_scene(tomllib.loads(text + (f"\n[measured]\n{measured}\n" if measured else "")), "fourbar.toml")
+
+
+def rows(find):
+    return {r.name: r for r in analyse(scene(find)).rows}
+
+
+def test_the_cranks_pin_by_the_textbook_formulas():
+    """v_B = ω₁·AB, a_B = AB·√(ω₁⁴ + ε₁²) (normal ω₁²·AB, tangential ε₁·AB)."""
+    got = rows('["v_B", "a_B", "a_B_n", "a_B_t"]')
+    assert got["v_B"].graphical == pytest.approx(OMEGA * 0.06, rel=1e-14)
+    assert got["a_B"].graphical == pytest.approx(0.06 * math.hypot(OMEGA ** 2, 4.0), rel=1e-14)
+    assert got["a_B_n"].graphical == pytest.approx(OMEGA ** 2 * 0.06, rel=1e-14)
+    assert got["a_B_t"].graphical == pytest.approx(4.0 * 0.06, rel=1e-14)
+    assert got["v_B"].drawn_mm == pytest.approx(OMEGA * 0.06 / 0.01)  # pb at the stated μv
+    assert all(r.rel_error < 1e-14 and r.error_source == "construction" for r in got.values())
+
+
+def test_the_polygons_agree_with_the_closed_form_four_bar():
+    """The coupler BC is link 3 (θ2 of the closed form), the rocker CD link 4 (θ3)."""
+    ref = closed_form_fourbar(np.radians([30.0]), w1=OMEGA)
+    got = rows('["v_C", "v_CB", "omega_3", "omega_4"]')
+    assert got["omega_3"].graphical == pytest.approx(float(ref["omega_2"][0]), rel=1e-12)
+    assert got["omega_4"].graphical == pytest.approx(float(ref["omega_3"][0]), rel=1e-12)
+    assert got["v_C"].graphical == pytest.approx(float(ref["v_C"][0]), rel=1e-12)
+    assert got["v_CB"].graphical == pytest.approx(float(ref["v_CB"][0]), rel=1e-12)
+
+
+def test_stated_scales_are_kept_and_the_others_chosen_round():
+    an = analyse(scene())
+    assert an.scales == {"l": 0.002, "v": 0.01, "a": 0.2} and an.stated == {"l", "v"}
+    assert an.scale_notes() == ["μl = 0.002 m/mm", "μv = 0.01 (m/s)/mm", "μa = 0.2 (m/s²)/mm (chosen)"]
+    assert an.labels == ("30",) and an.warnings == []
+
+
+def test_the_exact_value_of_each_kind_of_quantity():
+    kin = analyse(scene()).exact
+    assert exact_value(kin, ("speed", "B"), 0) == pytest.approx(OMEGA * 0.06, rel=1e-14)
+    assert exact_value(kin, ("length", "B", "C"), 0) == pytest.approx(0.12, rel=1e-14)
+    assert exact_value(kin, ("angle", "2"), 0) == pytest.approx(30.0, rel=1e-14)
+    assert exact_value(kin, ("omega", "2"), 0) == pytest.approx(OMEGA, rel=1e-14)
+    assert exact_value(kin, ("normal", "B", "A", "2"), 0) == pytest.approx(OMEGA ** 2 * 0.06, rel=1e-14)
+    with pytest.raises(ValueError, match="unknown exact quantity"):
+        exact_value(kin, ("jerk", "B"), 0)
+
+
+def test_one_row_of_panels_per_position_fits_the_page():
+    assert [rows_that_fit(p) for p in [(297, 210), (420, 297), (210, 297), (100, 50)]] == [2, 4, 4, 1]
+
+
+def test_a_drawn_length_is_judged_in_mm_a_value_within_precision_times_mu():
+    v_c = rows('["v_C"]')["v_C"]
+    pc = v_c.graphical / 0.01  # mm at μv = 0.01
+    an = analyse(scene(measured=f'pc = {pc + 0.4}\nv_C = {v_c.graphical + 0.006}\nomega_4 = 2'))
+    drawn, value, omega = judge(an)
+    assert (drawn.unit, drawn.expected, drawn.tolerance, drawn.ok) == ("mm", pytest.approx(pc), 0.5, True)
+    assert (value.tolerance, value.ok) == (pytest.approx(0.005), False)  # 0.5 mm × 0.01 (m/s)/mm
+    assert not omega.ok  # ω4 = 1.04 rad/s
+    assert [v.ok for v in judge(an, precision_mm=0.7)] == [True, True, False]  # a coarser precision given
+
+
+@pytest.mark.parametrize("measured, reason", [
+    ("\"b'c'\" = 3", "the scene does not state μa, so a drawn length cannot be judged: state it in [scales] or "
+                     "give the value (a_BC) instead"),
+    ('xx = 1', "a drawn segment needs two different ends, not 'xx'"),
+    ('phi_3 = 10', "unknown quantity or segment 'phi_3'; did you mean alpha_3?"),
+])
+def test_a_measured_value_that_cannot_be_judged_says_why(measured, reason):
+    with pytest.raises(SceneError) as info:
+        judge(analyse(scene(measured=measured)))
+    assert info.value.problems == [(f"measured.{measured.split(' =')[0].strip(chr(34))}", reason)]
+
+
+def test_unknown_find_names_are_refused_with_suggestions():
+    with pytest.raises(SceneError) as info:
+        analyse(scene('["v_X", "v_C@45"]'))
+    assert info.value.problems == [("find[0]", "unknown quantity 'v_X'; did you mean v_E, v_D, v_C?"),
+                                   ("find[1]", "no position '45' (positions: 30)")]

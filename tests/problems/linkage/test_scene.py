@@ -1,0 +1,363 @@
+"""Reading a linkage scene (graphmech/problems/linkage/scene.py): [frame], [driver], [[dyad]] and
+[[point]] in SI, and the refusals of a linkage that is not well made, by the key path written."""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from graphmech.errors import SceneError
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Guide, LinkPoint, SliderInput
+from graphmech.problems.reader import Page
+from graphmech.scene import Scene, load_scene, parse_scene
+from tests.conftest import ROOT, reference_area
+from tests.scenes import scene_path, scene_text
+
+DOCS = ROOT / "docs" / "scene-format.md"
+#: The four-bar at φ = 30° with a coupler point E, valid; each test varies it.
+GOOD = scene_text("linkage/fourbar_phi30")
+#: A second dyad, to append to it, whose first joint G nothing defines.
+DYAD_FROM_G = """
+[[dyad]]
+type = "RRR"
+joints = ["G", "H", "D"]
+links = ["5", "6"]
+lengths = [50, 50]
+branch = "right"
+"""
+
+
+def problems_of(text: str) -> SceneError:
+    with pytest.raises(SceneError) as info:
+        parse_scene(tomllib.loads(text), "scene.toml")
+    return info.value
+
+
+def message_of(text: str) -> str:
+    return str(problems_of(text))
+
+
+def scene_file(tmp_path: Path, text: str) -> Path:
+    path = tmp_path / "scene.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def doc_blocks() -> list[str]:
+    return re.findall(r"^```toml\n(.*?)^```", DOCS.read_text(encoding="utf-8"), re.S | re.M)
+
+
+# ------------------------------------------------------------------------------------------
+# A linkage in SI
+# ------------------------------------------------------------------------------------------
+
+
+def test_fourbar_round_trip_in_si() -> None:
+    scene = load_scene(scene_path("linkage/fourbar_phi30"))
+    assert isinstance(scene, Scene)
+    assert scene.source == "fourbar_phi30.toml"
+    assert scene.title == "Four-bar, φ = 30°"
+    assert scene.show == ("mechanism", "velocity")
+    assert scene.find == ("v_C", "omega_3")
+    assert scene.scales == {"l": pytest.approx(0.002), "v": pytest.approx(0.01)}
+
+    link = scene.linkage
+    assert link.frame_points == {"A": (0.0, 0.0), "D": (pytest.approx(0.12), 0.0)}
+    assert link.frame_link == "5"  # one more than the largest moving link, 4
+    crank = link.driver
+    assert isinstance(crank, Crank)
+    assert (crank.link, crank.pivot, crank.tip) == ("2", "A", "B")
+    assert crank.length == pytest.approx(0.06, rel=1e-15)  # 60 mm
+    assert crank.omega == pytest.approx(10.471975511965976, rel=1e-12)  # 100 rpm
+    assert crank.omega == pytest.approx(100 * 2 * math.pi / 60)
+    assert crank.epsilon == 4.0
+    (dyad,) = link.dyads
+    assert dyad == RRR(
+        "B", "C", "D", ("3", "4"), (pytest.approx(0.12), pytest.approx(0.09)), "left"
+    )
+    (point,) = link.points
+    assert point == LinkPoint("E", "3", ("B", "C"), pytest.approx(0.1888), pytest.approx(-0.005))
+    assert link.links() == {"2": ["A", "B"], "3": ["B", "C", "E"], "4": ["D", "C"]}
+
+    assert scene.positions.values == (pytest.approx(math.radians(30), rel=1e-15),)
+    assert scene.positions.labels == ("30",)
+    assert scene.measured == ()
+    assert scene.precision_mm == 0.5
+    assert scene.page == Page((297.0, 210.0))
+
+
+def test_units_by_suffix_equal_units_by_table() -> None:
+    by_table = parse_scene(tomllib.loads(GOOD))
+    by_suffix = parse_scene(
+        tomllib.loads(
+            GOOD.replace('length = "mm"\nangle = "deg"\n', "")
+            .replace("A = [0, 0]", "A_cm = [0, 0]")
+            .replace("D = [120, 0]", "D_m = [0.12, 0]")
+            .replace("length = 60", "length_mm = 60")
+            .replace("angle = 30", f"angle_rad = {math.radians(30)!r}")
+            .replace("lengths = [120, 90]", "lengths_mm = [120, 90]")
+            .replace("along = 188.8", "along_mm = 188.8")
+            .replace("left = -5", "left_cm = -0.5")
+        )
+    )
+    assert by_suffix.linkage.frame_points == by_table.linkage.frame_points
+    assert by_suffix.linkage.driver == by_table.linkage.driver
+    assert by_suffix.linkage.dyads == by_table.linkage.dyads
+    assert by_suffix.linkage.points[0].left == pytest.approx(by_table.linkage.points[0].left)
+    assert by_suffix.positions.values == pytest.approx(by_table.positions.values)
+    assert by_suffix.positions.labels == (repr(math.radians(30))[:14],)  # compact, as written
+
+
+def test_other_units_convert() -> None:
+    scene = parse_scene(
+        tomllib.loads(
+            scene_text("linkage/crank_other_units")
+        )
+    )
+    assert scene.linkage.driver.length == pytest.approx(0.05)
+    assert scene.linkage.driver.link == "1"  # an integer link number becomes its text
+    assert scene.linkage.driver.omega == pytest.approx(math.pi)
+    assert scene.linkage.driver.epsilon == pytest.approx(-math.pi / 2)
+
+
+def test_clockwise_crank_is_stored_negative() -> None:
+    text = GOOD.replace("epsilon_rad_s2 = 4", 'epsilon_rad_s2 = 4\ndirection = "cw"')
+    crank = parse_scene(tomllib.loads(text)).linkage.driver
+    assert crank.omega == pytest.approx(-100 * math.pi / 30)
+    assert crank.epsilon == -4.0
+    negative = text.replace("omega_rpm = 100", "omega_rpm = -100")
+    assert "give omega as a magnitude" in message_of(negative)
+
+
+def test_slider_driver_and_each_dyad_type() -> None:
+    scene = parse_scene(
+        tomllib.loads(
+            scene_text("linkage/slider_every_dyad")
+        )
+    )
+    link = scene.linkage
+    assert link.driver == SliderInput(
+        "1", "B", Guide((0.0, 0.0), pytest.approx(math.pi / 2)), 0.5, 0.0
+    )
+    assert scene.positions.values == (pytest.approx(0.04), pytest.approx(0.06))
+    rrr, rrp, rpr, rpp = link.dyads
+    assert isinstance(rrr, RRR) and rrr.branch == "right"
+    assert rrp == RRP(
+        "C", "F", ("4", "5"), pytest.approx(0.07), Guide((0.0, 0.12), 0.0), "backward"
+    )
+    assert rpr == RPR("F", "D", ("6", "7"), "second")
+    assert rpr.coincident == ("F7", "F6")
+    assert rpp == RPP(
+        "C", "G", ("8", "9"), pytest.approx(math.radians(60)), Guide((0.0, -0.05), 0.0)
+    )
+    assert link.points == (LinkPoint("K", "9", ("G",), pytest.approx(0.005), pytest.approx(0.01)),)
+    assert link.frame_link == "10"
+
+
+def test_points_may_use_coincident_points_and_carry_later_dyads() -> None:
+    """The six-bar pattern: E on link 3 (from D, C) is the outer joint of the next dyad."""
+    scene = parse_scene(
+        tomllib.loads(
+            scene_text("linkage/rpr_sixbar")
+        )
+    )
+    assert scene.linkage.frame_link == "0"
+    assert scene.linkage.points[0].base == ("B", "C2")
+    assert [type(d) for d in scene.linkage.dyads] == [RPR, RRR]
+
+
+# ------------------------------------------------------------------------------------------
+# A linkage that is not well made
+# ------------------------------------------------------------------------------------------
+
+
+def test_bad_length_names_the_list_item(tmp_path: Path) -> None:
+    path = scene_file(tmp_path, GOOD.replace("lengths = [120, 90]", "lengths = [120, 0]"))
+    with pytest.raises(SceneError) as info:
+        load_scene(path)
+    assert str(info.value) == "scene.toml: dyad[0].lengths[1]: must be > 0"
+    assert info.value.problems == [("dyad[0].lengths[1]", "must be > 0")]
+    assert isinstance(info.value, ValueError)
+
+
+def test_negative_crank_length() -> None:
+    assert message_of(GOOD.replace("length = 60", "length = -60")) == (
+        "scene.toml: driver.length: must be > 0"
+    )
+
+
+def test_undefined_joint() -> None:
+    text = GOOD + DYAD_FROM_G
+    assert message_of(text) == "scene.toml: dyad[1].joints[0]: G is not defined before dyad[1]"
+
+
+def test_joint_defined_by_a_later_dyad_is_named() -> None:
+    text = (
+        GOOD
+        + DYAD_FROM_G.replace('"G"', '"F"')
+        + """
+[[dyad]]
+type = "RRP"
+joints = ["C", "F"]
+links = ["7", "8"]
+length = 30
+guide = { through = [0, 0] }
+branch = "forward"
+"""
+    )
+    assert message_of(text) == (
+        "scene.toml: dyad[1].joints[0]: F is not defined before dyad[1] "
+        "(dyad[2] defines it: put that first)"
+    )
+
+
+def test_redefined_point_and_reused_link() -> None:
+    err = problems_of(
+        GOOD.replace('joints = ["B", "C", "D"]', 'joints = ["B", "A", "D"]').replace(
+            'links = ["3", "4"]', 'links = ["2", "3"]'
+        )
+    )
+    assert ("dyad[0].joints[1]", "A is already defined (a frame point)") in err.problems
+    assert (
+        "dyad[0].links[0]",
+        "link 2 is already used by driver; each dyad adds two new links",
+    ) in err.problems
+
+
+def test_point_base_must_be_on_its_link() -> None:
+    err = problems_of(GOOD.replace('base = ["B", "C"]', 'base = ["B", "D"]'))
+    assert err.problems == [("point[0].base[1]", "D is not a point of link 3 (it carries B, C)")]
+
+
+def test_offset_needs_a_translating_link() -> None:
+    text = GOOD.replace(
+        'base = ["B", "C"]\nalong = 188.8\nleft = -5', 'base = ["B"]\noffset = [1, 2]'
+    )
+    assert "link 3 turns" in message_of(text)
+
+
+def test_missing_unit(tmp_path: Path) -> None:
+    with pytest.raises(SceneError) as info:
+        load_scene(scene_file(tmp_path, GOOD.replace("v_m_s_per_mm = 0.01", "v = 0.01")))
+    assert str(info.value) == (
+        "scene.toml: scales.v: unit not stated: write v_m_s_per_mm or set [units] velocity"
+    )
+    err = problems_of(GOOD.replace('length = "mm"\n', ""))
+    assert (
+        "driver.length",
+        "unit not stated: write length_mm or set [units] length",
+    ) in err.problems
+    assert ("frame.D", "unit not stated: write D_mm or set [units] length") in err.problems
+    # no cascade: the frame points still count as defined
+    assert not any(
+        "not defined" in reason or "not a frame point" in reason for _, reason in err.problems
+    )
+
+
+def test_rpp_slot_parallel_to_guide() -> None:
+    text = (
+        GOOD
+        + """
+[[dyad]]
+type = "RPP"
+joints = ["C", "G"]
+links = ["5", "6"]
+slot_angle = 180
+guide = { through = [0, 0], angle = 0 }
+"""
+    )
+    assert message_of(text) == (
+        "scene.toml: dyad[1].slot_angle: the slot is parallel to the guide: the dyad cannot move"
+    )
+
+
+def test_dyad_branch_is_required() -> None:
+    assert message_of(GOOD.replace('branch = "left"\n', "")) == (
+        'scene.toml: dyad[0].branch: missing: write branch = "left" or "right"'
+    )
+
+
+def test_frame_link_default_and_explicit() -> None:
+    assert parse_scene(tomllib.loads(GOOD)).linkage.frame_link == "5"
+    explicit = GOOD.replace("[frame]", '[frame]\nlink = "1"')
+    assert parse_scene(tomllib.loads(explicit)).linkage.frame_link == "1"
+    lettered = (
+        GOOD.replace('link = "2"', 'link = "a"')
+        .replace('["3", "4"]', '["b", "c"]')
+        .replace('link = "3"', 'link = "b"')
+    )
+    assert parse_scene(tomllib.loads(lettered)).linkage.frame_link == "0"
+    clash = GOOD.replace("[frame]", '[frame]\nlink = "3"')
+    assert message_of(clash) == "scene.toml: frame.link: link 3 is a moving link (dyad[0])"
+
+
+# ------------------------------------------------------------------------------------------
+# The documentation and the reference problems
+# ------------------------------------------------------------------------------------------
+
+
+def test_docs_have_an_example_of_every_feature() -> None:
+    blocks = doc_blocks()
+    scenes = [parse_scene(tomllib.loads(b), "scene-format.md") for b in blocks]
+    # the cam, flywheel, force and structure scenes have tests of their own
+    scenes = [s for s in scenes if s.kind != "cam" and s.kind != "flywheel" and s.linkage is not None]
+    dyad_types = {type(d) for s in scenes for d in s.linkage.dyads}
+    assert dyad_types == {RRR, RRP, RPR, RPP}
+    assert {type(s.linkage.driver) for s in scenes} == {Crank, SliderInput}
+    assert {d.bar for s in scenes for d in s.linkage.dyads if isinstance(d, RPR)} == {
+        "first",
+        "second",
+    }
+    assert any(len(s.positions.values) == 12 for s in scenes)  # a range
+    assert any(
+        len(s.positions.values) > 1 for s in scenes if isinstance(s.linkage.driver, SliderInput)
+    )
+    assert any(s.measured for s in scenes)
+    assert any(s.linkage.points for s in scenes)
+    assert any(len(p.base) == 1 for s in scenes for p in s.linkage.points)  # an offset point
+    assert {s.page.size for s in scenes} >= {(297.0, 210.0), (420.0, 297.0), (200.0, 200.0)}
+    assert any(s.scales for s in scenes)
+    assert any(s.linkage.driver.omega < 0 for s in scenes if isinstance(s.linkage.driver, Crank))
+
+
+def test_the_reference_kinematics_problems_can_be_written() -> None:
+    """Each `kinematics` problem's inputs, written as a scene, come back in SI."""
+    problems = {pid: p["inputs"] for pid, p in reference_area("kinematics").items()}
+    docs = {s.title: s for s in (parse_scene(tomllib.loads(b)) for b in doc_blocks())}
+
+    p = problems["linkage.slider_crank_offset"]
+    s = docs["Offset slider-crank (e = 30 mm)"]
+    assert s.linkage.driver.length == pytest.approx(p["lAB_mm"] / 1000)
+    assert s.linkage.driver.omega == p["omega1_rad_s"]
+    assert s.positions.values == pytest.approx([math.radians(a) for a in p["theta1_deg"]])
+    assert s.linkage.dyads[0].length == pytest.approx(p["lBC_mm"] / 1000)
+    assert s.linkage.dyads[0].guide.through[1] == pytest.approx(p["e_mm"] / 1000)
+
+    p = problems["linkage.slider_fixed_angle_guide"]
+    s = docs["Slot at a fixed angle"]
+    assert s.linkage.driver.length == pytest.approx(p["lAB_mm"] / 1000)
+    assert s.linkage.driver.omega == p["omega1_rad_s"]
+    assert s.positions.values == pytest.approx([math.radians(p["phi1_deg"])])
+    assert s.linkage.dyads[0].slot_angle == pytest.approx(math.radians(p["theta_deg"]))
+
+    p = problems["kin.fourbar_instant_centres"]
+    s = docs["Four-bar linkage, φ = 165°"]
+    assert s.linkage.driver.length == pytest.approx(p["lAB_mm"] / 1000)
+    assert s.linkage.driver.omega == p["omega2_rad_s"]
+    assert s.linkage.dyads[0].lengths == pytest.approx((p["lBC_mm"] / 1000, p["lCD_mm"] / 1000))
+    assert s.linkage.frame_points["D"][0] == pytest.approx(p["lAD_mm"] / 1000)
+    assert s.positions.values == pytest.approx([math.radians(p["phi_deg"])])
+
+    p = problems["kin.oscillating_block"]
+    s = docs["Oscillating block"]
+    assert s.linkage.driver.length == pytest.approx(p["lAB_mm"] / 1000)
+    assert math.dist(s.linkage.frame_points["A"], s.linkage.frame_points["C"]) == pytest.approx(
+        p["lAC_mm"] / 1000
+    )
+    d, e = s.linkage.points
+    assert d.along == pytest.approx(p["lBD_mm"] / 1000)
+    assert (e.along, e.left) == pytest.approx((p["lBD_mm"] / 1000, p["lDE_mm"] / 1000))

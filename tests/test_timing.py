@@ -1,0 +1,28 @@
+"""Timing for the benchmarks (graphmech/timing.py): the best of the runs, per call, and the last
+result. No assertion on speed: a fake clock gives the times."""
+from __future__ import annotations
+
+import itertools
+
+import graphmech.timing as timing
+from graphmech.timing import best_time
+
+
+def test_the_best_run_divided_by_the_calls_is_the_time(monkeypatch):
+    # three runs of two calls: 5 s, 2 s, 3 s → the best is 2 s, 1 s per call
+    ticks = iter([0.0, 5.0, 10.0, 12.0, 20.0, 23.0])
+    monkeypatch.setattr(timing.time, "perf_counter", lambda: next(ticks))
+    seconds, _ = best_time(lambda: None, repeat=3, number=2)
+    assert seconds == 1.0
+
+
+def test_the_function_runs_repeat_times_number_and_its_last_result_is_kept():
+    counter = itertools.count(1)
+    seconds, last = best_time(lambda: next(counter), repeat=4, number=5)
+    assert last == 20 and next(counter) == 21
+    assert seconds >= 0.0
+
+
+def test_no_runs_give_an_infinite_time_and_no_result():
+    seconds, last = best_time(lambda: 1 / 0, repeat=0)
+    assert seconds == float("inf") and last is None
