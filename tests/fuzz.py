@@ -23,6 +23,8 @@ import xml.etree.ElementTree as ET
 from collections import Counter
 from pathlib import Path
 
+from tests.mutation import paths as key_paths
+
 ROOT = Path(__file__).resolve().parents[1]
 SCENES = ROOT / "figures" / "scenes"
 DOCS = ROOT / "docs" / "scene-format.md"
@@ -97,14 +99,6 @@ def bases() -> list[tuple[str, dict]]:
     return out
 
 
-def _paths(data: object, path: tuple = ()) -> list[tuple]:
-    if isinstance(data, dict):
-        return [path] + [q for k, v in data.items() for q in _paths(v, path + (k,))]
-    if isinstance(data, list):
-        return [path] + [q for i, v in enumerate(data) for q in _paths(v, path + (i,))]
-    return [path]
-
-
 def _points(data: object, path: tuple = ()) -> list[tuple]:
     """Paths of [x, y] coordinate pairs (to make two of them coincide)."""
     if isinstance(data, dict):
@@ -125,7 +119,7 @@ def _get(doc: object, path: tuple) -> object:
 def mutate(doc: dict, rng: random.Random) -> tuple[dict, str]:
     """One mutation of ``doc``: (the mutant, the kind of mutation)."""
     m = copy.deepcopy(doc)
-    paths = _paths(m)[1:]
+    paths = key_paths(m)[1:]
     leaves = [p for p in paths if not isinstance(_get(m, p), (dict, list))]
     kind = rng.choice(["extreme", "extreme", "extreme", "type", "delete", "unknown", "array", "text",
                        "coincide", "scale"])

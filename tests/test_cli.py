@@ -9,7 +9,15 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from tests.conftest import ROOT, SCENES, assert_refused, check_json, fourbar_scene, run_cli, values
+from tests.conftest import (
+    ROOT,
+    SCENES,
+    assert_refused,
+    check_json,
+    fourbar_scene,
+    run_cli,
+    values,
+)
 
 STATED = "[scales]\nl_m_per_mm = 0.002\nv_m_s_per_mm = 0.01\na_m_s2_per_mm = 0.1"
 
@@ -260,7 +268,7 @@ def test_a_problem_found_below_the_scene_reader_names_the_scene_file(tmp_path):
     scene = tmp_path / "no-work.toml"
     scene.write_text(text.replace("moment_Nm = [0, 200, 200, 0]", "moment_Nm = [0, 0, 0, 0]"), encoding="utf-8")
     for argv in (("check", str(scene)), ("render", str(scene), "-o", str(tmp_path / "x.svg"))):
-        err = assert_refused(run_cli(*argv), "no-work.toml", "machine: loads: the loads do no work")
+        assert_refused(run_cli(*argv), "no-work.toml", "machine: loads: the loads do no work")
     assert not (tmp_path / "x.svg").exists()
 
 

@@ -5,7 +5,6 @@ tests/problems/test_reader.py."""
 
 from __future__ import annotations
 
-import copy
 import hashlib
 import math
 import re
@@ -19,30 +18,19 @@ from hypothesis import strategies as st
 from graphmech.errors import SceneError
 from graphmech.scene import MAX_BYTES, id_prefix, load_scene, parse_scene, render_scene
 from tests.conftest import ROOT, SCENES
-from tests.scenes import scene_text
+from tests.mutation import mutate, toml_values
+from tests.scenes import doc_blocks, refusal, scene_text, write_scene
 
 DOCS = ROOT / "docs" / "scene-format.md"
 #: The four-bar at φ = 30° with a coupler point E, valid.
 GOOD = scene_text("linkage/fourbar_phi30")
 
 
-def write(tmp_path: Path, text: str | bytes, name: str = "scene.toml") -> Path:
-    path = tmp_path / name
-    if isinstance(text, bytes):
-        path.write_bytes(text)
-    else:
-        path.write_text(text, encoding="utf-8")
-    return path
+write = write_scene
 
 
 def message_of(text: str) -> str:
-    with pytest.raises(SceneError) as info:
-        parse_scene(tomllib.loads(text), "scene.toml")
-    return str(info.value)
-
-
-def doc_blocks() -> list[str]:
-    return re.findall(r"^```toml\n(.*?)^```", DOCS.read_text(encoding="utf-8"), re.S | re.M)
+    return str(refusal(text))
 
 
 def test_a_misspelt_kinds_table_gets_a_suggestion_in_any_scene() -> None:
@@ -201,40 +189,14 @@ def test_render_scene_refuses_a_bad_scene_before_drawing(tmp_path: Path) -> None
 # Robustness: whatever the data, the answer is a Scene or a SceneError
 # ------------------------------------------------------------------------------------------
 
-toml_values = st.recursive(
-    st.booleans()
-    | st.integers(-(2**63), 2**63 - 1)
-    | st.floats(allow_nan=True, allow_infinity=True)
-    | st.text(max_size=8)
-    | st.sampled_from(["A", "B", "C", "D", "2", "mm", "deg", "RRR", "left", "crank", "slider"]),
-    lambda inner: (
-        st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=6), inner, max_size=4)
-    ),
-    max_leaves=12,
-)
-
-
-def leaves(data: object, path: tuple = ()) -> list[tuple]:
-    if isinstance(data, dict):
-        return [path] + [q for k, v in data.items() for q in leaves(v, path + (k,))]
-    if isinstance(data, list):
-        return [path] + [q for i, v in enumerate(data) for q in leaves(v, path + (i,))]
-    return [path]
+scene_values = toml_values(["A", "B", "C", "D", "2", "mm", "deg", "RRR", "left", "crank", "slider"])
 
 
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data())
 def test_any_mutation_gives_a_scene_or_a_scene_error(data: st.DataObject) -> None:
     base = tomllib.loads(data.draw(st.sampled_from([GOOD, *doc_blocks()])))
-    mutated = copy.deepcopy(base)
-    path = data.draw(st.sampled_from(leaves(mutated)[1:]))
-    parent = mutated
-    for step in path[:-1]:
-        parent = parent[step]
-    if data.draw(st.booleans()) and isinstance(parent, dict):
-        del parent[path[-1]]
-    else:
-        parent[path[-1]] = data.draw(toml_values)
+    mutated = mutate(data, base, scene_values)
     try:
         scene = parse_scene(mutated, "fuzz.toml")
     except SceneError as err:

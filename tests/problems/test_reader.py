@@ -15,24 +15,35 @@ import tomllib
 import pytest
 
 from graphmech.errors import SceneError
-from graphmech.problems.reader import (Page, Reader, compact, did_you_mean, file_order, key_text, maybe, one_of,
-                                       page_size, pole_distances, raise_sorted, read_units, say, type_name)
+from graphmech.problems.reader import (
+    Page,
+    Reader,
+    compact,
+    did_you_mean,
+    file_order,
+    key_text,
+    maybe,
+    one_of,
+    page_size,
+    pole_distances,
+    raise_sorted,
+    read_units,
+    say,
+    type_name,
+)
 from graphmech.scene import load_scene, parse_scene
 from tests.conftest import SCENES, assert_refused, run_cli
-from tests.scenes import scene_path, scene_text
+from tests.scenes import refusal, scene_path, scene_text
 
 #: The four-bar at φ = 30° with a coupler point E, valid; each test varies it.
 GOOD = scene_text("linkage/fourbar_phi30")
 
 
-def problems_of(text: str) -> SceneError:
-    with pytest.raises(SceneError) as info:
-        parse_scene(tomllib.loads(text), "scene.toml")
-    return info.value
+problems_of = refusal
 
 
 def message_of(text: str) -> str:
-    return str(problems_of(text))
+    return str(refusal(text))
 
 
 # ------------------------------------------------------------------------------------------

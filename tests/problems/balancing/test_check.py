@@ -2,16 +2,14 @@
 from __future__ import annotations
 
 import json
+from functools import partial
 
 import pytest
 
 from tests.conftest import SCENES, check_json, run_cli, values
+from tests.scenes import write_scene
 
-
-def write(tmp_path, text, name="r.toml"):
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return p
+write = partial(write_scene, name="r.toml")
 
 
 BALANCED = """

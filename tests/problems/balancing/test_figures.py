@@ -2,19 +2,17 @@
 from __future__ import annotations
 
 import math
+from functools import partial
 
 import pytest
 
-from graphmech.problems.balancing.check import analyse_balancing, balancing_figure
 from graphmech.drawing.primitives import Arrow
+from graphmech.problems.balancing.check import analyse_balancing, balancing_figure
 from graphmech.scene import load_scene
 from tests.conftest import SCENES
+from tests.scenes import write_scene
 
-
-def write(tmp_path, text, name="r.toml"):
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return p
+write = partial(write_scene, name="r.toml")
 
 
 def test_the_figure_draws_the_closing_side_bold_at_muW():

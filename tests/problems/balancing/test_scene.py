@@ -2,18 +2,16 @@
 from __future__ import annotations
 
 import math
+from functools import partial
 
 import pytest
 
 from graphmech.errors import SceneError
 from graphmech.scene import load_scene, parse_scene
 from tests.conftest import SCENES, run_cli
+from tests.scenes import write_scene
 
-
-def write(tmp_path, text, name="r.toml"):
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return p
+write = partial(write_scene, name="r.toml")
 
 
 def test_coinciding_correction_planes_are_refused_in_one_line(tmp_path):

@@ -3,7 +3,6 @@ cannot hold them, warned of where the drawing does not resolve them, and every r
 estimate against the true error on the reference scenes and a divisions sweep."""
 from __future__ import annotations
 
-import copy
 import math
 import re
 import tomllib
@@ -18,6 +17,7 @@ from graphmech.mechanisms.cam import TranslatingFollower
 from graphmech.problems.cam.check import PROFILE_DEVIATION
 from graphmech.scene import parse_scene
 from tests.conftest import SCENES, assert_refused, check_json, run_cli, values
+from tests.mutation import mutate, toml_values
 from tests.scenes import scene_text
 
 CAM = """
@@ -242,45 +242,16 @@ def test_a_step_that_does_not_divide_a_turn_is_named_as_drawn(tmp_path):
 #: The shared cam scenes mutated (tests/scenes/cam/).
 SHARED = ("offset_roller", "oscillating_roller", "knife_sine", "flat_translating")
 
-cam_values = st.recursive(
-    st.booleans()
-    | st.integers(-(2**63), 2**63 - 1)
-    | st.floats(allow_nan=True, allow_infinity=True)
-    | st.text(max_size=8)
-    | st.sampled_from(
-        ["rise", "return", "dwell", "table", "sine", "roller", "flat", "knife", "oscillating",
-         "translating", "same", "ccw", "cw", "mm", "deg", 0, 1, 30, 360, 1e-300]
-    ),
-    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=6), inner, max_size=4),
-    max_leaves=10,
-)
-
-
-def _leaves(data: object, path: tuple = ()) -> list[tuple]:
-    if isinstance(data, dict):
-        return [path] + [q for k, v in data.items() for q in _leaves(v, path + (k,))]
-    if isinstance(data, list):
-        return [path] + [q for i, v in enumerate(data) for q in _leaves(v, path + (i,))]
-    return [path]
+cam_values = toml_values(
+    ["rise", "return", "dwell", "table", "sine", "roller", "flat", "knife", "oscillating",
+     "translating", "same", "ccw", "cw", "mm", "deg", 0, 1, 30, 360, 1e-300], max_leaves=10)
 
 
 @settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data())
 def test_any_mutation_of_a_cam_scene_gives_a_scene_or_a_scene_error(data: st.DataObject) -> None:
     base = tomllib.loads(data.draw(st.sampled_from([scene_text(f"cam/{name}") for name in SHARED])))
-    mutated = copy.deepcopy(base)
-    for _ in range(data.draw(st.integers(1, 2))):
-        paths = _leaves(mutated)[1:]
-        if not paths:
-            break
-        path = data.draw(st.sampled_from(paths))
-        parent = mutated
-        for step in path[:-1]:
-            parent = parent[step]
-        if data.draw(st.booleans()) and isinstance(parent, dict):
-            del parent[path[-1]]
-        else:
-            parent[path[-1]] = data.draw(cam_values)
+    mutated = mutate(data, base, cam_values, most=2)
     try:
         scene = parse_scene(mutated, "fuzz.toml")
     except SceneError as err:

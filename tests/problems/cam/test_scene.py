@@ -5,12 +5,12 @@ from __future__ import annotations
 import math
 import re
 import tomllib
+from functools import partial
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from tests.conftest import reference_area
 from graphmech.errors import SceneError
 from graphmech.mechanisms.cam import (
     DiscCam,
@@ -23,9 +23,9 @@ from graphmech.mechanisms.motion import displacement, maxima
 from graphmech.problems.cam.scene import CAM_STEP_DEFAULT, CamScene
 from graphmech.problems.reader import Page
 from graphmech.scene import Scene, load_scene, parse_scene
+from tests.conftest import ROOT, reference_area
+from tests.scenes import only_problem, parse_text, refusal, replace_once, scene_text
 
-from tests.conftest import ROOT
-from tests.scenes import scene_text
 DOCS = ROOT / "docs" / "scene-format.md"
 
 #: cam.offset_roller_translating, follower axis at x = +e, omega_rad_s given.
@@ -42,27 +42,11 @@ FLAT = scene_text("cam/flat_translating")
 OSCILLATING_FLAT = scene_text("cam/oscillating_flat")
 
 
-def parse(text: str, source: str = "cam.toml") -> Scene:
-    return parse_scene(tomllib.loads(text), source)
-
-
-def problems_of(text: str) -> SceneError:
-    with pytest.raises(SceneError) as info:
-        parse(text)
-    return info.value
-
-
-def only(text: str) -> tuple[str, str]:
-    """The one problem of a scene with one mistake."""
-    err = problems_of(text)
-    assert len(err.problems) == 1, err.problems
-    assert "\n" not in str(err)
-    return err.problems[0]
-
-
-def replace(text: str, old: str, new: str) -> str:
-    assert text.count(old) >= 1, old
-    return text.replace(old, new, 1)
+# Messages name the file cam.toml.
+parse = partial(parse_text, source="cam.toml")
+problems_of = partial(refusal, source="cam.toml")
+only = partial(only_problem, source="cam.toml")
+replace = replace_once
 
 
 def segment_block(index: int, text: str) -> str:

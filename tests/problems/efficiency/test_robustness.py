@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 from graphmech.problems.efficiency.check import efficiency_figure
 from graphmech.scene import parse_scene
 from tests.conftest import ROOT, SCENES
-from tests.fuzz import _paths as leaves
+from tests.mutation import mutate
 
 
 def _forces_blocks() -> list[str]:
@@ -33,22 +33,12 @@ _values_to_try = st.one_of(st.booleans(), st.integers(-5, 400), st.floats(allow_
 def test_any_mutation_checks_or_is_refused_in_one_line(data):
     """Whatever a mutated efficiency or balancing scene holds: a table without NaN and its figure, or
     a refusal in one line — never an internal error."""
-    import copy
-
+    from graphmech.errors import GraphmechError
     from graphmech.problems.balancing.check import analyse_balancing
     from graphmech.problems.efficiency.check import analyse_efficiency
-    from graphmech.errors import GraphmechError
 
     base = tomllib.loads(data.draw(st.sampled_from(_forces_blocks())))
-    mutated = copy.deepcopy(base)
-    path = data.draw(st.sampled_from(leaves(mutated)[1:]))
-    parent = mutated
-    for step in path[:-1]:
-        parent = parent[step]
-    if data.draw(st.booleans()) and isinstance(parent, dict):
-        del parent[path[-1]]
-    else:
-        parent[path[-1]] = data.draw(_values_to_try)
+    mutated = mutate(data, base, _values_to_try)
     try:
         sc = parse_scene(mutated, "fuzz.toml")
         an = analyse_efficiency(sc) if sc.kind == "efficiency" else analyse_balancing(sc) \

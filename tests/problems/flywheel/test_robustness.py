@@ -2,7 +2,6 @@
 no hang, one rule at a table's step, angles compared modulo the cycle."""
 from __future__ import annotations
 
-import copy
 import math
 import tomllib
 
@@ -13,6 +12,7 @@ from hypothesis import strategies as st
 from graphmech.errors import SceneError
 from graphmech.scene import parse_scene
 from tests.conftest import SCENES, assert_refused, check_json, run_cli, values
+from tests.mutation import mutate, toml_values
 from tests.scenes import scene_text
 
 BRAKE = (SCENES / "fly.brake_time.toml").read_text(encoding="utf-8")
@@ -232,46 +232,18 @@ def test_the_text_table_prints_each_estimate_with_its_basis():
 #: The shared flywheel scenes mutated (tests/scenes/flywheel/).
 SHARED = ("compressor", "engine", "braking")
 
-fly_values = st.recursive(
-    st.booleans()
-    | st.integers(-(2**63), 2**63 - 1)
-    | st.floats(allow_nan=True, allow_infinity=True)
-    | st.text(max_size=8)
-    | st.sampled_from(
-        ["slider", "moment", "crank", "driving", "resisting", "forward", "backward", "both", "1/25",
-         "Radau", "C", "S2", "A", "2", "3", 0, 1, 4, 12, 180, 360, 1e-300]
-    )
-    | st.sampled_from([(0, 1), (0, 0.5, 1), (0, 90, 90, 180)]).map(list),  # a fresh list each time
-    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=6), inner, max_size=4),
+fly_values = toml_values(
+    ["slider", "moment", "crank", "driving", "resisting", "forward", "backward", "both", "1/25",
+     "Radau", "C", "S2", "A", "2", "3", 0, 1, 4, 12, 180, 360, 1e-300],
     max_leaves=10,
-)
-
-
-def _leaves(data: object, path: tuple = ()) -> list[tuple]:
-    if isinstance(data, dict):
-        return [path] + [q for k, v in data.items() for q in _leaves(v, path + (k,))]
-    if isinstance(data, list):
-        return [path] + [q for i, v in enumerate(data) for q in _leaves(v, path + (i,))]
-    return [path]
+    extra=st.sampled_from([(0, 1), (0, 0.5, 1), (0, 90, 90, 180)]).map(list))  # a fresh list each time
 
 
 @settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data())
 def test_any_mutation_of_a_flywheel_scene_gives_a_scene_or_a_scene_error(data: st.DataObject) -> None:
     base = tomllib.loads(data.draw(st.sampled_from([scene_text(f"flywheel/{name}") for name in SHARED])))
-    mutated = copy.deepcopy(base)
-    for _ in range(data.draw(st.integers(1, 2))):
-        paths = _leaves(mutated)[1:]
-        if not paths:
-            break
-        path = data.draw(st.sampled_from(paths))
-        parent = mutated
-        for step in path[:-1]:
-            parent = parent[step]
-        if data.draw(st.booleans()) and isinstance(parent, dict):
-            del parent[path[-1]]
-        else:
-            parent[path[-1]] = data.draw(fly_values)
+    mutated = mutate(data, base, fly_values, most=2)
     try:
         scene = parse_scene(mutated, "fuzz.toml")
     except SceneError as err:

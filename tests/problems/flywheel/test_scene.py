@@ -6,11 +6,11 @@ import dataclasses
 import math
 import re
 import tomllib
+from functools import partial
 from pathlib import Path
 
 import pytest
 
-from graphmech.errors import SceneError
 from graphmech.mechanisms.linkage import RPP, Crank, LinkPoint
 from graphmech.mechanisms.machine import (
     CrankMoment,
@@ -21,12 +21,16 @@ from graphmech.mechanisms.machine import (
     SliderLoad,
     Table,
 )
-from graphmech.problems.flywheel.scene import FLYWHEEL_SHOW_DEFAULT, Braking, FlywheelScene, TrueMotionSpec
+from graphmech.problems.flywheel.scene import (
+    FLYWHEEL_SHOW_DEFAULT,
+    Braking,
+    FlywheelScene,
+    TrueMotionSpec,
+)
 from graphmech.scene import Scene, load_scene, parse_scene
-from tests.conftest import reference_area, run_cli
+from tests.conftest import ROOT, reference_area, run_cli
+from tests.scenes import only_problem, parse_text, refusal, replace_once, scene_text
 
-from tests.conftest import ROOT
-from tests.scenes import scene_text
 DOCS = ROOT / "docs" / "scene-format.md"
 
 #: Every feature at once: an offset slider-crank compressor with an indicator diagram, a moment
@@ -42,26 +46,11 @@ S_OVER_H = (0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1)
 PISTON_AREA = math.pi * 0.12**2 / 4
 
 
-def parse(text: str, source: str = "fly.toml") -> Scene:
-    return parse_scene(tomllib.loads(text), source)
-
-
-def problems_of(text: str) -> SceneError:
-    with pytest.raises(SceneError) as info:
-        parse(text)
-    return info.value
-
-
-def only(text: str) -> tuple[str, str]:
-    """The one problem of ``text``."""
-    err = problems_of(text)
-    assert len(err.problems) == 1, err.problems
-    return err.problems[0]
-
-
-def replace(text: str, old: str, new: str) -> str:
-    assert old in text, old
-    return text.replace(old, new, 1)
+# Messages name the file fly.toml.
+parse = partial(parse_text, source="fly.toml")
+problems_of = partial(refusal, source="fly.toml")
+only = partial(only_problem, source="fly.toml")
+replace = replace_once
 
 
 def load_block(text: str, k: int) -> str:

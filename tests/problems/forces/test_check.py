@@ -6,6 +6,7 @@ import re
 import subprocess
 import sys
 import tomllib
+from functools import partial
 
 import numpy as np
 import pytest
@@ -14,8 +15,8 @@ import graphmech.methods.kinetostatics as K
 from graphmech.errors import SceneError
 from graphmech.problems.forces.check import analyse_forces
 from graphmech.scene import load_scene, parse_scene
-from tests.scenes import scene_text
 from tests.conftest import ROOT, SCENES, check_json, fourbar_scene, run_cli
+from tests.scenes import scene_text, write_scene
 
 
 def _slider_crank(length: float = 150, extra: str = "") -> str:
@@ -31,10 +32,7 @@ def _fourbar(c: float, find: str = '["R_23", "M_b"]', show: str = '["mechanism"]
     return fourbar_scene(a=60, b=100, c=c, d=120, angle="180", find=find, show=show) + scene_text("forces/fourbar_loads") + extra
 
 
-def _write(tmp_path, text: str, name: str = "s.toml"):
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return p
+_write = partial(write_scene, name="s.toml")
 
 
 # ----------------------------------------------------------------------------- extreme cases

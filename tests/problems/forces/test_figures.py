@@ -4,23 +4,21 @@ from __future__ import annotations
 import math
 import re
 import tomllib
+from functools import partial
 
 import pytest
 
 from graphmech.problems.forces.check import analyse_forces
 from graphmech.scene import load_scene, parse_scene
-from tests.scenes import scene_text
 from tests.conftest import ROOT, SCENES, run_cli
+from tests.scenes import scene_text, write_scene
 
 
 def _scene(text: str):
     return parse_scene(tomllib.loads(text), "t.toml")
 
 
-def _write(tmp_path, text: str, name: str = "s.toml"):
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return p
+_write = partial(write_scene, name="s.toml")
 
 
 def test_force_sheet_panels_and_one_position_only(tmp_path):
@@ -88,7 +86,7 @@ def test_a_scene_couple_is_drawn_on_the_loads_and_on_its_free_body(tmp_path):
     assert code == 0 and svg.count(">Mᵣ<") == 4
     no_lever = _doc_scene("Slider-driven rocker: balancing force").replace(
         'show = ["forces", "force_polygons", "lever"]', 'show = ["force_polygons"]')
-    code, _, _ = run_cli("render", str(_write(tmp_path, no_lever, "t.toml")), "-o", str(tmp_path / "t.svg"))
+    code, _, _ = run_cli("render", str(_write(tmp_path, no_lever, name="t.toml")), "-o", str(tmp_path / "t.svg"))
     assert code == 0 and (tmp_path / "t.svg").read_text(encoding="utf-8").count(">Mᵣ<") == 1
 
 
@@ -107,8 +105,8 @@ def test_the_fit_counts_the_footer_of_the_rendered_sheet(tmp_path):
 def test_a_guide_reaction_whose_line_crosses_far_off_is_drawn_at_the_slider_with_its_moment():
     # RPP, slot ⟂ guide, friction: the guide's reaction on slot 3 is nearly along the guide and its
     # line of action crossed the guide 0.55 m from C — its arrow floated 270 mm off the free body
-    from graphmech.problems.forces.figures import free_body_items
     from graphmech.drawing.primitives import Arrow, Label
+    from graphmech.problems.forces.figures import free_body_items
 
     text = scene_text("forces/rpp_loaded").replace("slot_angle_deg = 60", "slot_angle_deg = 90").replace(
         "angle_deg = { start = 0, stop = 360, step = 60 }", "angle_deg = 45")
@@ -141,7 +139,7 @@ def test_a_sheet_that_fits_no_round_scale_keeps_readable_drawings_and_says_so(tm
     assert rows["F_b0"].exact == pytest.approx(-46.921582, rel=1e-7)
     assert rows["eta"].exact == pytest.approx(rows["F_b"].exact / rows["F_b0"].exact, rel=1e-14)
     a3 = scene_text("forces/double_slider").replace("[units]", '[page]\nsize = "A3"\n[units]')
-    code, _, err = run_cli("render", str(_write(tmp_path, a3, "a3.toml")), "-o", str(tmp_path / "a3.svg"))
+    code, _, err = run_cli("render", str(_write(tmp_path, a3, name="a3.toml")), "-o", str(tmp_path / "a3.svg"))
     assert code == 0 and "run off the page" not in err and "A3" not in err
 
 

@@ -5,17 +5,15 @@ from __future__ import annotations
 import cmath
 import math
 from fractions import Fraction
+from functools import partial
 
 import pytest
 
 from graphmech.exact import balancing as ex_bal
 from tests.conftest import SCENES, assert_refused, check_json, run_cli, values
+from tests.scenes import write_scene
 
-
-def write(tmp_path, text, name="r.toml"):
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return p
+write = partial(write_scene, name="r.toml")
 
 
 # ---------------------------------------------------------------------------- balancing
@@ -178,7 +176,7 @@ def test_a_chain_of_3601_branches_is_refused_before_its_labels_are_placed(tmp_pa
 def test_a_chain_that_runs_off_its_page_is_refused_and_one_that_fits_is_drawn(tmp_path):
     assert_refused(run_cli("render", str(write(tmp_path, chain(8))), "-o", str(tmp_path / "c.svg")), "r.toml",
                    "efficiency.stage", "1 stage, 8 machines", "does not fit a page of 297 × 210 mm")
-    wide = write(tmp_path, chain(2, etas="[" + ", ".join(["0.9999"] * 300) + "]"), "wide.toml")
+    wide = write(tmp_path, chain(2, etas="[" + ", ".join(["0.9999"] * 300) + "]"), name="wide.toml")
     assert_refused(run_cli("render", str(wide), "-o", str(tmp_path / "c.svg")), "wide.toml", "does not fit")
     for body in (chain(7), chain(8, page='[page]\nsize = "A3"')):
         code, out, err = run_cli("render", str(write(tmp_path, body)), "-o", str(tmp_path / "c.svg"))

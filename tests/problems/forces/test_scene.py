@@ -3,23 +3,21 @@ from __future__ import annotations
 
 import re
 import tomllib
+from functools import partial
 
 import pytest
 
 from graphmech.errors import SceneError
 from graphmech.scene import load_scene, parse_scene
-from tests.scenes import scene_text
 from tests.conftest import SCENES, run_cli
+from tests.scenes import scene_text, write_scene
 
 
 def _scene(text: str):
     return parse_scene(tomllib.loads(text), "t.toml")
 
 
-def _write(tmp_path, text: str, name: str = "s.toml"):
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return p
+_write = partial(write_scene, name="s.toml")
 
 
 def test_friction_circle_larger_than_the_geometry_allows(tmp_path):

@@ -11,7 +11,8 @@ import math
 import pytest
 
 from tests.conftest import check_json, fourbar_scene, run_cli, values
-from tests.scenes import scene_text
+from tests.scenes import scene_text, write_scene
+
 
 def non_grashof(angle: float) -> str:
     """AB 60, BC 30, CD 40, AD 80: a double rocker whose crank stops where C lies on BD."""
@@ -22,10 +23,7 @@ def non_grashof(angle: float) -> str:
 PHI_TOGGLE = math.degrees(math.acos((60 ** 2 + 80 ** 2 - 70 ** 2) / (2 * 60 * 80)))
 
 
-def write(tmp_path, text: str, name: str = "scene.toml"):
-    p = tmp_path / name
-    p.write_text(text, encoding="utf-8")
-    return p
+write = write_scene
 
 
 def test_four_bar_exactly_at_the_toggle_is_refused_naming_the_step(tmp_path):

@@ -4,18 +4,26 @@
 from __future__ import annotations
 
 import math
-import re
 import tomllib
 from pathlib import Path
 
 import pytest
 
 from graphmech.errors import SceneError
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Guide, LinkPoint, SliderInput
+from graphmech.mechanisms.linkage import (
+    RPP,
+    RPR,
+    RRP,
+    RRR,
+    Crank,
+    Guide,
+    LinkPoint,
+    SliderInput,
+)
 from graphmech.problems.reader import Page
 from graphmech.scene import Scene, load_scene, parse_scene
 from tests.conftest import ROOT, reference_area
-from tests.scenes import scene_path, scene_text
+from tests.scenes import doc_blocks, refusal, scene_path, scene_text, write_scene
 
 DOCS = ROOT / "docs" / "scene-format.md"
 #: The four-bar at φ = 30° with a coupler point E, valid; each test varies it.
@@ -31,24 +39,12 @@ branch = "right"
 """
 
 
-def problems_of(text: str) -> SceneError:
-    with pytest.raises(SceneError) as info:
-        parse_scene(tomllib.loads(text), "scene.toml")
-    return info.value
+problems_of = refusal
+scene_file = write_scene
 
 
 def message_of(text: str) -> str:
-    return str(problems_of(text))
-
-
-def scene_file(tmp_path: Path, text: str) -> Path:
-    path = tmp_path / "scene.toml"
-    path.write_text(text, encoding="utf-8")
-    return path
-
-
-def doc_blocks() -> list[str]:
-    return re.findall(r"^```toml\n(.*?)^```", DOCS.read_text(encoding="utf-8"), re.S | re.M)
+    return str(refusal(text))
 
 
 # ------------------------------------------------------------------------------------------
