@@ -41,6 +41,9 @@ def problems() -> dict:
 # A command still running after this many seconds fails its test: the hang guard. Bounded time
 # is shown this way, never by a speed assertion.
 HANG_GUARD_S = 60.0
+# The whole quick bench (every kind's sweeps and plots) is work, not a hang: it takes ≈ 25 s alone
+# and twice that on a shared machine, so it gets a guard of its own.
+BENCH_GUARD_S = 300.0
 
 
 class Hang(BaseException):  # not an Exception: the command's own "except Exception" must not swallow it

@@ -11,6 +11,10 @@ from typing import Any
 
 from hypothesis import strategies as st
 
+from graphmech.errors import SceneError
+from graphmech.problems.reader import Scene
+from graphmech.scene import parse_scene
+
 
 def paths(data: object, path: tuple = ()) -> list[tuple]:
     """Every key path in ``data`` (dicts and lists), the root ``()`` first."""
@@ -50,3 +54,14 @@ def mutate(data: st.DataObject, base: dict, values: st.SearchStrategy, *, most: 
         else:
             parent[path[-1]] = data.draw(values)
     return mutated
+
+
+def scene_or_refusal(mutated: dict) -> Scene | None:
+    """The scene a mutated table reads as, or None when the reader refused it — in one line, with
+    at least one problem named (the promise every mutation is held to)."""
+    try:
+        return parse_scene(mutated, "fuzz.toml")
+    except SceneError as err:
+        assert err.problems
+        assert "\n" not in str(err)
+        return None

@@ -3,11 +3,11 @@ from __future__ import annotations
 
 import json
 
-from tests.conftest import run_cli
+from tests.conftest import BENCH_GUARD_S, run_cli
 
 
 def test_bench_records_and_agreement(tmp_path):
-    code, out, err = run_cli("bench", "--json", "--quick", "-o", str(tmp_path))
+    code, out, err = run_cli("bench", "--json", "--quick", "-o", str(tmp_path), limit=BENCH_GUARD_S)
     assert code == 0, err
     doc = json.loads(out)
     saved = json.loads((tmp_path / "bench.json").read_text())
