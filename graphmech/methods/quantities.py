@@ -9,6 +9,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+#: What a quantity equals, read by the exact solution: a kind and its arguments, e.g.
+#: ``("speed", "C")``, ``("slide_v", "C", gx, gy)``.
+Exact = tuple[str | float, ...]
+
 #: Units of the kinematic quantities, by the name's prefix.
 UNITS = {
     "v": "m/s",
@@ -44,6 +48,6 @@ class Quantity:
     name: str
     unit: str
     slot: str
-    exact: tuple
+    exact: Exact
     panel: str
     segment: tuple[str, ...] = ()
