@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from graphmech.mechanisms.rotor import RotorMass
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Callable, Sequence
 
 XY = tuple[float, float]
 #: A closing side shorter than this fraction of the polygon's total length is no correction:
@@ -116,6 +116,7 @@ def dynamic_balance(masses: Sequence[RotorMass], z_I: float, z_II: float, r_b: t
     if span == 0.0:
         raise ValueError("the correction planes coincide")
     out = []
+    lever: Callable[[float], float]
     for plane, r, lever in (("I", r_b[0], lambda z: (z_II - z) / span), ("II", r_b[1], lambda z: (z - z_I) / span)):
         vecs = []
         shares = []
