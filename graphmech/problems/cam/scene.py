@@ -402,8 +402,8 @@ def _read_cam(top: Reader) -> CamScene | None:
 
 
 def parse_cam_scene(
-    data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]
-) -> Scene:
+    data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
+) -> Scene[CamScene]:
     """The rest of :func:`graphmech.scene.parse_scene` for a scene with a [cam] table."""
     problems = top.problems
     title, show, find = read_header(top, CAM_SHOW_CHOICES, CAM_SHOW_DEFAULT)

@@ -315,7 +315,8 @@ def _read_forces(fr: Reader, linkage: Linkage | None) -> ForceScene | None:
     return ForceScene(model, mu_F, mu_F_path)
 
 
-def parse_forces_scene(data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene:
+def parse_forces_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
+                       ) -> Scene[ForceScene]:
     """The rest of :func:`graphmech.scene.parse_scene` for a linkage scene with a [forces] table.
 
     Returns
