@@ -114,7 +114,7 @@ def is_segment(name: str) -> bool:
     return "_" not in name and len(tokens) == 2 and "".join(tokens) == name
 
 
-def measured_entries(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[tuple[str, str, float]]:
+def measured_entries(scene: Scene[object], extra: tuple[tuple[str, float], ...] = ()) -> list[tuple[str, str, float]]:
     """(key path for messages, name, value) of the scene's [measured] table and the command line's."""
     return [(f"measured.{n}", n, v) for n, v in scene.measured] + [(f"--measured {n}", n, v) for n, v in extra]
 

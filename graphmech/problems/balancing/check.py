@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import SceneError
@@ -21,6 +21,9 @@ from graphmech.methods import balancing as gm
 from graphmech.scales import format_scale, round_scale
 from graphmech.problems.balancing.scene import DEFAULT_FIND, QUANTITIES, BalancingProblem
 from graphmech.tolerances import EPS
+
+if TYPE_CHECKING:
+    from graphmech.problems.reader import Scene
 
 #: The longest polygon side when graphmech chooses μW, mm.
 POLYGON_MM = 60.0
@@ -33,7 +36,7 @@ ILL_SPLIT = 1e6
 class BalancingAnalysis:
     """What one balancing scene produced: the corrections (one per plane), rows, warnings."""
 
-    scene: Any
+    scene: Scene[BalancingProblem]
     problem: BalancingProblem
     corrections: tuple[gm.Correction, ...] = ()
     rows: list[Row] = field(default_factory=list)
@@ -61,7 +64,7 @@ class BalancingAnalysis:
         return max([abs(u.z) for u in p.masses] + [abs(z) for z in p.planes]) / span
 
 
-def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
+def requested(scene: Scene[BalancingProblem], extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
     p: BalancingProblem = scene.problem
     q = QUANTITIES[p.type]
     names = list(scene.find) or list(DEFAULT_FIND[p.type])
@@ -75,7 +78,7 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
     return names
 
 
-def analyse_balancing(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> BalancingAnalysis:
+def analyse_balancing(scene: Scene[BalancingProblem], extra_measured: tuple[tuple[str, float], ...] = ()) -> BalancingAnalysis:
     """Draw the polygons the scene needs and build its check table."""
     p: BalancingProblem = scene.problem
     names = requested(scene, extra_measured)

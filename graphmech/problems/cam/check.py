@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -24,6 +24,10 @@ from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxi
 from graphmech.problems.cam.figures import panel_rows, scale_note
 from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile, read_drawing, whole_turn_step
 from graphmech.scales import drawn_size_problem, round_scale
+
+if TYPE_CHECKING:
+    from graphmech.problems.cam.scene import CamScene
+    from graphmech.problems.reader import Scene
 
 #: What a cam scene can ask for, with the unit each is reported in.
 CAM_QUANTITIES = {
@@ -42,7 +46,7 @@ PROFILE_QUANTITIES = {"alpha_max", "alpha_max_at", "rho_min_pitch", "rho_min_pit
 
 @dataclass
 class CamAnalysis:
-    scene: Any
+    scene: Scene[CamScene]
     cam: DiscCam
     delta: np.ndarray
     s: np.ndarray
@@ -81,7 +85,7 @@ def profile_deviation(cam: DiscCam, actual: np.ndarray, samples: int = EXACT_SAM
     return float(np.max(shapely.distance(shapely.points(exact), shapely.LinearRing(actual))))
 
 
-def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> tuple[dict[str, float], set[str]]:
+def choose_cam_scales(scene: Scene[CamScene], cam: DiscCam, drawn: DrawnProfile | None) -> tuple[dict[str, float], set[str]]:
     """μ from the scene where stated; otherwise round values that fit one row of panels."""
     stated = {k for k in ("l", "s", "phi", "v", "a") if k in scene.scales}
     # in the book's order, never a set's: the table and the JSON list them the same way every run
@@ -117,7 +121,7 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
     return scales, stated
 
 
-def _legible(scene: Any, cam: DiscCam, stated: dict[str, float], across: float) -> None:
+def _legible(scene: Scene[CamScene], cam: DiscCam, stated: dict[str, float], across: float) -> None:
     """Refuse a stated μ that draws what is shown beyond a page (graphmech.scales.DRAWN_SIZE_RANGE_MM,
     the rule a linkage's μl keeps): a 16 km stroke at μs = 0.0005 m/mm would be dashed for hours."""
     ext = maxima(cam.program, cam.omega)
@@ -130,7 +134,7 @@ def _legible(scene: Any, cam: DiscCam, stated: dict[str, float], across: float) 
                 raise SceneError([("scales", why)], scene.source)
 
 
-def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), *,
+def analyse_cam(scene: Scene[CamScene], extra_measured: tuple[tuple[str, float], ...] = (), *,
                 estimates: bool = True) -> CamAnalysis:
     """The inversion at the scene's divisions, its readings, and the check table
     (``extra_measured``: hand readings from the command line, which may need the profile; each
@@ -139,7 +143,7 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), 
         return _analyse_cam(scene, extra_measured, estimates)
 
 
-def _analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...], estimates: bool) -> CamAnalysis:
+def _analyse_cam(scene: Scene[CamScene], extra_measured: tuple[tuple[str, float], ...], estimates: bool) -> CamAnalysis:
     estimated = _estimated if estimates else (lambda an, row: row)
     cs = scene.problem
     cam: DiscCam = cs.cam
@@ -211,7 +215,7 @@ def division_table(an: CamAnalysis) -> list[dict[str, Any]]:
     return out
 
 
-def _requested(scene: Any) -> list[str]:
+def _requested(scene: Scene[CamScene]) -> list[str]:
     problems: list[tuple[str, str]] = []
     names: list[str] = []
     for k, name in enumerate(scene.find):

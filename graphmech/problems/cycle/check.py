@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -46,6 +46,10 @@ from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.characteristics import DrawnCharacteristics, draw_characteristics, grashof_ranges
 from graphmech.methods.full_cycle import CycleDiagram, FullCycle, evaluate_cycle, finer_positions, sliders
 from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
+
+if TYPE_CHECKING:
+    from graphmech.problems.cycle.scene import CycleScene
+    from graphmech.problems.reader import Scene
 
 __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "nice_pole"]
 
@@ -76,7 +80,7 @@ def nice_pole(max_slope: float, height_mm: float = DIAGRAM_MM) -> float:
 class CycleAnalysis:
     """What one full-cycle or characteristics scene produced."""
 
-    scene: Any
+    scene: Scene[CycleScene]
     scales: dict[str, float]
     stated: set[str]
     cycle: FullCycle | None = None
@@ -129,7 +133,7 @@ class CycleAnalysis:
         return out
 
 
-def _kind(scene: Any, name: str) -> str:
+def _kind(scene: Scene[CycleScene], name: str) -> str:
     """"char", "timing", "ranges", "diagram" or "polygon"."""
     base = name.partition("@")[0]
     if base in CHARACTERISTICS:
@@ -151,7 +155,7 @@ def _kind(scene: Any, name: str) -> str:
     return "polygon"
 
 
-def _wants(scene: Any, names: list[str]) -> dict[str, bool]:
+def _wants(scene: Scene[CycleScene], names: list[str]) -> dict[str, bool]:
     kinds = {_kind(scene, n) for n in names}
     show = scene.show
     return {"characteristics": "characteristics" in show or bool(kinds & {"char", "timing"})
@@ -161,7 +165,7 @@ def _wants(scene: Any, names: list[str]) -> dict[str, bool]:
                                                              & set(show)) or "diagram" in kinds)}
 
 
-def _mech_scale(scene: Any, linkage: Linkage) -> float:
+def _mech_scale(scene: Scene[CycleScene], linkage: Linkage) -> float:
     """μl: stated, or a round value that fits the mechanism's sweep into about 130 mm (or 45 % of the page)."""
     if "l" in scene.scales:
         why = drawn_size_problem(mechanism_size(linkage), float(scene.scales["l"]))
@@ -173,7 +177,7 @@ def _mech_scale(scene: Any, linkage: Linkage) -> float:
     return round_scale(size / min(0.45 * w, 0.45 * h, 130.0))
 
 
-def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> CycleAnalysis:
+def analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, float], ...] = ()) -> CycleAnalysis:
     """Evaluate what the scene shows and finds, and check it.
 
     As for one position (:func:`graphmech.problems.linkage.check.analyse`), numbers beyond double precision (ω of
@@ -183,7 +187,7 @@ def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()
         return _analyse_cycle(scene, extra_measured)
 
 
-def _analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> CycleAnalysis:
+def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, float], ...]) -> CycleAnalysis:
     linkage: Linkage = scene.linkage
     measured = [n for _, n, _ in measured_entries(scene, extra_measured)]
     names = list(scene.find)

@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -27,6 +27,10 @@ from graphmech.problems.judging import Row, Verdict, close_names, in_double_prec
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.mechanisms.machine import Machine
 from graphmech.tolerances import EPS
+
+if TYPE_CHECKING:
+    from graphmech.problems.flywheel.scene import FlywheelScene
+    from graphmech.problems.reader import Scene
 
 #: Quantities a flywheel scene can ask for: name → (unit, what it needs).
 #: "design": the graphical construction; "wittenbauer"/"indicator": that method's diagram;
@@ -62,7 +66,7 @@ TANGENTS_APART_DEG = 0.1
 
 @dataclass
 class FlywheelAnalysis:
-    scene: Any
+    scene: Scene[FlywheelScene]
     machine: Machine
     phi: np.ndarray
     labels: tuple[str, ...]
@@ -121,7 +125,7 @@ def split(name: str) -> tuple[str, str | None]:
     return base, (at if sep else None)
 
 
-def _needs(scene: Any, names: list[str]) -> set[str]:
+def _needs(scene: Scene[FlywheelScene], names: list[str]) -> set[str]:
     fw = scene.problem
     needs: set[str] = set()
     for n in names:
@@ -148,7 +152,7 @@ def _needs(scene: Any, names: list[str]) -> set[str]:
     return needs
 
 
-def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
+def requested(scene: Scene[FlywheelScene], extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
     """The quantity names the scene asks for, validated (problems raised as one SceneError)."""
     fw = scene.problem
     names = list(scene.find) or ([] if fw.braking is not None and not fw.machine.loads else list(DEFAULT_FIND))
@@ -176,7 +180,7 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
     return names
 
 
-def analyse_flywheel(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), *,
+def analyse_flywheel(scene: Scene[FlywheelScene], extra_measured: tuple[tuple[str, float], ...] = (), *,
                      estimates: bool = True) -> FlywheelAnalysis:
     """Carry out what the flywheel scene asks for and build its check table (with each row's own
     error estimate, which redoes the work at 2N and 4N positions: only a check needs it)."""
@@ -184,7 +188,7 @@ def analyse_flywheel(scene: Any, extra_measured: tuple[tuple[str, float], ...] =
         return _analyse(scene, extra_measured, estimates)
 
 
-def _analyse(scene: Any, extra: tuple[tuple[str, float], ...], estimates: bool) -> FlywheelAnalysis:
+def _analyse(scene: Scene[FlywheelScene], extra: tuple[tuple[str, float], ...], estimates: bool) -> FlywheelAnalysis:
     fw = scene.problem
     machine: Machine = fw.machine
     names = requested(scene, extra)
@@ -264,7 +268,7 @@ def _reduce(an: FlywheelAnalysis) -> None:
                                      f"position {k + 1} (φ = {math.degrees(an.phi[k]):.6g}°)")
 
 
-def _with_show(scene: Any) -> Any:
+def _with_show(scene: Scene[FlywheelScene]) -> Scene[FlywheelScene]:
     """The linkage scales are chosen as for a sheet showing the mechanism and its velocity polygon."""
     import dataclasses
 

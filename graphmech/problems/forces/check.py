@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -41,6 +41,10 @@ from graphmech.methods.kinetostatics import (
 from graphmech.scales import round_scale
 from graphmech.tolerances import COND_WARN
 
+if TYPE_CHECKING:
+    from graphmech.problems.forces.scene import ForceScene
+    from graphmech.problems.reader import Scene
+
 #: The force quantities a scene may ask for (links are one character: R_12, F_i2, h_2).
 FORCE_NAME = re.compile(
     r"(?:M_b|M_b_lever|M_b0|F_b|F_b_lever|F_b0|eta|F_i(?P<fi>\w)(?P<fic>_x|_y)?|M_i(?P<mi>\w)|h_(?P<h>\w)"
@@ -59,7 +63,7 @@ def is_force_name(name: str) -> bool:
 class ForceAnalysis:
     """Everything a force scene produced."""
 
-    scene: Any
+    scene: Scene[ForceScene]
     kinematics: Analysis  # the linkage check (its build, plan, solutions, exact kinematics)
     kin: PolygonKinematics
     solution: KinetostaticSolution
@@ -99,7 +103,7 @@ FIT_COARSER = (1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0)
 FIT_GAIN_MM = 2.0
 
 
-def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> ForceAnalysis:
+def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, float], ...] = ()) -> ForceAnalysis:
     """Build and check a force scene (``extra_measured``: values from the command line).
 
     The scales a scene does not state are chosen so that the sheet it draws fits its page: μl
@@ -151,7 +155,7 @@ def _spill(fa: ForceAnalysis) -> float:
     return max([0.0, *over]) + 1e-6  # (a sheet that warns never ranks with one that fits)
 
 
-def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...],
+def _analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, float], ...],
                     forced: dict[str, float]) -> ForceAnalysis:
     """The analysis at the scene's scales, those in ``forced`` imposed (still reported as chosen)."""
     model = scene.problem.model
@@ -470,7 +474,7 @@ def _judge_forces(fa: ForceAnalysis, entries: list[tuple[str, str, float]]) -> l
 FORCE_PANELS = ("forces", "force_polygons", "lever")
 
 
-def render_forces(scene: Any, footer: tuple[str, ...] = ()) -> tuple[Any, list[str]]:
+def render_forces(scene: Scene[ForceScene], footer: tuple[str, ...] = ()) -> tuple[Any, list[str]]:
     """The sheet of a force scene and its warnings: the kinematic panels it shows, then the
     loads, each group's free body and force polygon and Zhukovsky's lever, at one position."""
     drawn = [p for p in scene.show if p in FORCE_PANELS]

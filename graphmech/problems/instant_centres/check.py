@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
@@ -33,6 +33,9 @@ from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.instant_centres import (InstantCentres, centre_name, common_link, instant_centres,
                                                least_speed_on_line, pair, point_names, polygon_of_links,
                                                positions_mm, signed_rate, split_line)
+
+if TYPE_CHECKING:
+    from graphmech.problems.reader import Scene
 
 #: The ``show`` entry that draws the instant centres.
 SHOW = "instant_centres"
@@ -61,7 +64,7 @@ def claims(name: str) -> bool:
     return any(p.fullmatch(base) for p in (_CENTRE, _OMEGA, _SPEED, _LEAST, _ZERO, _ZERO_ROW))
 
 
-def asked(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> bool:
+def asked(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...] = ()) -> bool:
     """Whether the scene shows, finds or judges anything by instant centres."""
     return (SHOW in scene.show or any(claims(n) for n in scene.find)
             or any(claims(n) for n, _ in tuple(scene.measured) + tuple(extra_measured)))

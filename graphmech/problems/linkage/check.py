@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -40,6 +40,10 @@ from graphmech.problems.linkage.sizes import (
 )
 from graphmech.problems.reader import page_size
 
+if TYPE_CHECKING:
+    from graphmech.problems.cycle.scene import CycleScene
+    from graphmech.problems.reader import Scene
+
 SCALE_KEYS = {"mechanism": "l", "velocity": "v", "acceleration": "a"}
 _PANEL_WORDS = {"mechanism": "the mechanism", "velocity": "the velocity polygon", "acceleration": "the acceleration polygon"}
 
@@ -59,7 +63,7 @@ def rows_that_fit(page: tuple[float, float]) -> int:
 class Analysis:
     """Everything one scene produced: the construction, its solutions, the exact solution."""
 
-    scene: Any
+    scene: Scene[CycleScene | None]
     build: LinkageConstruction
     plan: Any
     scales: dict[str, float]
@@ -84,7 +88,7 @@ class Analysis:
 # ---------------------------------------------------------------------------- names
 
 
-def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) -> list[tuple[str, str, int]]:
+def _requested(scene: Scene[CycleScene | None], build: LinkageConstruction, labels: tuple[str, ...]) -> list[tuple[str, str, int]]:
     """(display name, quantity name, position index) for every ``find`` entry; bad names → SceneError."""
     problems = []
     out = []
@@ -114,7 +118,7 @@ def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) 
 # ---------------------------------------------------------------------------- scales
 
 
-def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[dict[str, float], set[str]]:
+def choose_scales(scene: Scene[CycleScene | None], linkage: Linkage, positions: np.ndarray) -> tuple[dict[str, float], set[str]]:
     """μ from the scene where stated; otherwise the round value that fits the panel on the page.
 
     The construction is linear in 1/μ, so one provisional evaluation at μ = 1 gives every
@@ -165,7 +169,7 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
 # ---------------------------------------------------------------------------- analysis
 
 
-def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> Analysis:
+def analyse(scene: Scene[CycleScene | None], extra_measured: tuple[tuple[str, float], ...] = ()) -> Analysis:
     """Build, prune, evaluate and check one scene (``extra_measured``: values from the command line).
 
     Numbers beyond double precision (an ω of 1e155 rad/s squared) are a one-line
@@ -175,7 +179,7 @@ def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> A
         return _analyse(scene, extra_measured)
 
 
-def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
+def _analyse(scene: Scene[CycleScene | None], extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
     linkage: Linkage = scene.linkage
     refuse_far_from_origin(scene, linkage, mechanism_size(linkage))
     positions = np.asarray(scene.positions.values, dtype=float)
