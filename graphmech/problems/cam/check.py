@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -105,7 +105,7 @@ def choose_cam_scales(scene: Scene[CamScene], cam: DiscCam, drawn: DrawnProfile 
         cam.base_radius + (0.0 if _angular(cam) else cam.program.stroke)
     reach = pitch_r + getattr(f, "roller_radius", 0.0)
     if _angular(cam):
-        reach = max(reach, f.pivot_distance + getattr(f, "roller_radius", 0.0))
+        reach = max(reach, cast("OscillatingFollower", f).pivot_distance + getattr(f, "roller_radius", 0.0))
     _legible(scene, cam, scales, 2.0 * reach)
     if "l" not in scales:
         scales["l"] = round_scale(2.0 * reach / min(room_profile, room_h))
@@ -207,9 +207,9 @@ def division_table(an: CamAnalysis) -> list[dict[str, Any]]:
         out.append({
             "division": k, "delta_deg": math.degrees(float(d)),
             "s": math.degrees(float(an.s[k])) if ang else float(an.s[k]), "s_unit": "deg" if ang else "m",
-            "alpha_deg": 0.0 if cam.follower.contact == "flat" else math.degrees(float(drawn.pressure_angle[k])),
+            "alpha_deg": 0.0 if cam.follower.contact == "flat" else math.degrees(float(cast("DrawnProfile", drawn).pressure_angle[k])),
             "alpha_exact_deg": math.degrees(float(ex.pressure_angle[k])),
-            "rho_pitch": float(drawn.rho_pitch[k]) if abs(drawn.rho_pitch[k]) < 1e299 else None,
+            "rho_pitch": float(cast("DrawnProfile", drawn).rho_pitch[k]) if abs(cast("DrawnProfile", drawn).rho_pitch[k]) < 1e299 else None,
             "rho_pitch_exact": float(ex.rho_pitch[k]) if np.isfinite(ex.rho_pitch[k]) and abs(ex.rho_pitch[k]) < 1e299 else None,
         })
     return out
@@ -253,7 +253,7 @@ def _graphical_r0_min(cam: DiscCam, alpha: float, step: float) -> float:
     f = cam.follower
     lo = abs(getattr(f, "offset", 0.0)) * (1 + 1e-9) + 1e-12
     if _angular(cam):
-        lo = abs(f.pivot_distance - f.arm) * (1 + 1e-9) + 1e-12
+        lo = abs(cast("OscillatingFollower", f).pivot_distance - cast("OscillatingFollower", f).arm) * (1 + 1e-9) + 1e-12
     hi = max(cam.base_radius, lo * 2, 1e-6)
     while worst(hi) > alpha and hi < 1e3:
         hi *= 2.0
@@ -282,7 +282,7 @@ def _row(an: CamAnalysis, name: str) -> Row:
                                     f"(every {deg(an.step):.6g}° and at the laws' joints)")], an.scene.source)
         if name.startswith("alpha@"):
             e = float(exact_cam.profile(cam, np.array([delta[k]])).pressure_angle[0])
-            g = 0.0 if cam.follower.contact == "flat" else deg(drawn.pressure_angle[k])  # the face's normal is the axis
+            g = 0.0 if cam.follower.contact == "flat" else deg(cast("DrawnProfile", drawn).pressure_angle[k])  # the face's normal is the axis
             return _angle_row(name, g, deg(e), 90.0)
         e = float(displacement(cam.program, delta[k]))
         if ang:  # an angular displacement is reported in degrees
@@ -313,7 +313,7 @@ def _row(an: CamAnalysis, name: str) -> Row:
             e = exact_cam.min_convex_rho_pitch(cam)[0] - r_r
         return _plain(name, unit, (rd.rho_min - r_r) / an.scales["l"], an.scales["l"], e, size)
     if name == "profile_deviation":
-        dev = profile_deviation(cam, drawn.actual)
+        dev = profile_deviation(cam, cast("DrawnProfile", drawn).actual)
         return Row(name, unit, dev / an.scales["l"], an.scales["l"], dev, 0.0, dev / size)
     if name == "h":
         return _plain(name, "rad" if ang else "m", float(np.max(an.s)) / an.scales["s"], an.scales["s"],

@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -48,6 +48,7 @@ from graphmech.methods.full_cycle import CycleDiagram, FullCycle, evaluate_cycle
 from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
 
 if TYPE_CHECKING:
+    from graphmech.problems.cycle.scene import CycleSpec
     from graphmech.problems.cycle.scene import CycleScene
     from graphmech.problems.reader import Scene
 
@@ -188,7 +189,7 @@ def analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, flo
 
 
 def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, float], ...]) -> CycleAnalysis:
-    linkage: Linkage = scene.linkage
+    linkage: Linkage = cast("Linkage", scene.linkage)  # a linkage scene has one: the reader refuses it otherwise
     measured = [n for _, n, _ in measured_entries(scene, extra_measured)]
     names = list(scene.find)
     wants = _wants(scene, names + measured)
@@ -248,9 +249,9 @@ def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
     if an.scene.problem.cycle is None:
         return list(warnings)
     build = an.polygons.build
-    link = an.scene.linkage.driver.link
+    link = cast("Linkage", an.scene.linkage).driver.link
     said = set(an.cycle.polygon_failures) if an.cycle is not None else set()
-    labels = an.scene.positions.labels
+    labels = cast("Positions", an.scene.positions).labels
     prefixes = {position_text(build, lab) + ":": i for i, lab in enumerate(labels)}
     asked = {labels.index(r.name.partition("@")[2]) for r in an.polygons.rows if r.name.partition("@")[2] in labels}
     out = []
@@ -263,7 +264,7 @@ def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
                 and (i not in asked or rest.startswith("shallow")):
             continue  # the cycle's one-line summary says it for every position
         elif not (i in said and rest.startswith("construction impossible")):
-            angle = math.degrees(an.scene.positions.values[i])
+            angle = math.degrees(cast("Positions", an.scene.positions).values[i])
             out.append(f"position {i + 1} (φ{link} = {angle:.6g}°): {rest}")
     return out
 
@@ -379,8 +380,8 @@ def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
 
 def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
     scene = an.scene
-    spec = scene.problem.cycle
-    angles = np.asarray(scene.positions.values, dtype=float)
+    spec = cast("CycleSpec", scene.problem.cycle)  # analysed as a cycle: the scene has [cycle]
+    angles = np.asarray(cast("Positions", scene.positions).values, dtype=float)
     d = linkage.driver
     assert isinstance(d, Crank)
     polygons = [p for p in ("velocity", "acceleration") if p in scene.show]
@@ -526,7 +527,7 @@ def _exact_series(an: CycleAnalysis, subject: str) -> dict[str, np.ndarray]:
     cache = an.exact_series
     if subject in cache:
         return cache[subject]
-    linkage = an.scene.linkage
+    linkage = cast("Linkage", an.scene.linkage)
     cyc = an.cycle
     assert cyc is not None
     n = cyc.n
@@ -563,12 +564,12 @@ def _exact_path(linkage: Linkage, point: str, angles: np.ndarray, sense: float, 
     q = solve_exact(linkage, nodes)
     speed = np.hypot(*q.vel[point].T).reshape(n, ARC_NODES)
     # ds/dφ = |v|/|ω1|; each interval is Δφ long
-    piece = (speed @ wts) * (step / 2.0) / abs(d.omega)
+    piece = (speed @ wts) * (step / 2.0) / abs(cast("Crank", d).omega)
     s = np.concatenate([[0.0], np.cumsum(piece[:-1])])
     v = np.hypot(*mid.vel[point].T)
     V, A = at.vel[point], at.acc[point]
     vs = np.hypot(*V.T)
-    moving = vs > 1e-9 * abs(d.omega) * max(math.hypot(*p) for p in (at.point[point][0], (1e-300, 0.0)))
+    moving = vs > 1e-9 * abs(cast("Crank", d).omega) * max(math.hypot(*p) for p in (at.point[point][0], (1e-300, 0.0)))
     a = np.where(moving, np.einsum("ij,ij->i", V, A) / np.where(moving, vs, 1.0), 0.0)
     valid = at.valid & mid.valid & moving & q.valid.reshape(n, ARC_NODES).all(axis=1)
     return {"s": s, "v": v, "a": a, "valid": valid}
@@ -576,7 +577,7 @@ def _exact_path(linkage: Linkage, point: str, angles: np.ndarray, sense: float, 
 
 def _diagram_errors(an: CycleAnalysis, dg: Any) -> dict[str, float]:
     ex = _exact_series(an, dg.subject)
-    linkage = an.scene.linkage
+    linkage = cast("Linkage", an.scene.linkage)
     unit_v, unit_a = ("rad/s", "rad/s²") if dg.kind == "link" else ("m/s", "m/s²")
     size = mechanism_size(linkage)
     v = dg.velocity.derivative_mm * dg.mu_v
@@ -648,8 +649,8 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
     if kind == "ranges":
         if an.ranges is None or an.ranges_exact is None:
             raise KeyError(f"{base}: the Grashof ranges need [characteristics] ranges = true")
-        names = _range_names(an.ranges, scene.linkage)
-        names_exact = _range_names(an.ranges_exact, scene.linkage)
+        names = _range_names(an.ranges, cast("Linkage", scene.linkage))
+        names_exact = _range_names(an.ranges_exact, cast("Linkage", scene.linkage))
         if base not in names or base not in names_exact:
             raise KeyError(f"unknown Grashof range limit {base!r}; the ranges give "
                            f"{', '.join(sorted(names))}")
@@ -701,7 +702,7 @@ def _diagram_at(an: CycleAnalysis, dg: CycleDiagram, m: int, mid: bool) -> Cycle
     if key not in an.refined:
         cyc = an.cycle
         assert cyc is not None
-        fine = evaluate_cycle(an.scene.linkage, {"l": an.scales["l"], "v": 1.0, "a": 1.0},
+        fine = evaluate_cycle(cast("Linkage", an.scene.linkage), {"l": an.scales["l"], "v": 1.0, "a": 1.0},
                               finer_positions(float(cyc.angles[0]), cyc.n, cyc.sense, m, mid), diagrams=[dg.subject],
                               mu_phi=cyc.mu_phi, mu_s={dg.subject: dg.mu_s},
                               H_mm=(dg.velocity.H_mm, dg.acceleration.H_mm))
@@ -725,7 +726,7 @@ def _chord_estimate(an: CycleAnalysis, dg: CycleDiagram, what: str, i: int, g: f
             vals.append(float(f.a_mm[m * i] * f.mu_a))
     limit = extrapolated(*vals, order=2)
     unit = {"s": "m", "v": "m/s", "a": "m/s²", "omega": "rad/s", "alpha": "rad/s²"}[what]
-    linkage = an.scene.linkage
+    linkage = cast("Linkage", an.scene.linkage)
     return relative(abs(g - limit), max(abs(limit), characteristic(linkage, unit, mechanism_size(linkage))))
 
 
@@ -752,7 +753,7 @@ def _row(an: CycleAnalysis, name: str, unit: str, g: float, e: float, drawn: flo
     elif unit in ("", "s", "rpm"):
         err = abs(g - e) / max(abs(e), 1e-300)
     else:
-        err = abs(g - e) / max(abs(e), characteristic(an.scene.linkage, unit, mechanism_size(an.scene.linkage)))
+        err = abs(g - e) / max(abs(e), characteristic(cast("Linkage", an.scene.linkage), unit, mechanism_size(cast("Linkage", an.scene.linkage))))
     return Row(name, unit, drawn, scale, g, e, err, an.far or name in an.ill)
 
 

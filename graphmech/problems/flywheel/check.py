@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -29,6 +29,7 @@ from graphmech.mechanisms.machine import Machine
 from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
+    from graphmech.problems.flywheel.scene import Braking
     from graphmech.problems.flywheel.scene import FlywheelScene
     from graphmech.problems.reader import Scene
 
@@ -115,7 +116,7 @@ class FlywheelAnalysis:
 
     def braking_summary(self) -> dict[str, Any]:
         """The run-down: stopping time against the required one (``ok`` None when none is required)."""
-        limit = self.scene.problem.braking.time_limit
+        limit = cast("Braking", self.scene.problem.braking).time_limit
         t = float(self.braking.t)
         return {"t_stop": t, "time_limit": limit, "ok": None if limit is None else bool(t <= limit)}
 
@@ -352,7 +353,7 @@ def _braking(an: FlywheelAnalysis) -> None:
     fw = an.scene.problem
     from graphmech.problems.flywheel.braking_figures import draw_rundown
 
-    b, w0 = fw.braking, an.machine.omega_m
+    b, w0 = cast("Braking", fw.braking), an.machine.omega_m  # asked only of a scene with [flywheel.braking]
     J = an.braking_inertia
     if not J > 0.0:
         raise SceneError([("flywheel.braking", "nothing to stop: the machine's reduced inertia is 0; give its "

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -42,6 +42,7 @@ from graphmech.scales import round_scale
 from graphmech.tolerances import COND_WARN
 
 if TYPE_CHECKING:
+    from graphmech.mechanisms.linkage import Positions
     from graphmech.problems.forces.scene import ForceScene
     from graphmech.problems.reader import Scene
 
@@ -113,7 +114,7 @@ def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, fl
     # a value that overflows is reported once, in one line, as "not finite" (no numpy warnings)
     with np.errstate(all="ignore"):
         fa = _analyse_forces(scene, extra_measured, {})
-        drawn = any(p in FORCE_PANELS for p in scene.show) and len(scene.positions.values) == 1
+        drawn = any(p in FORCE_PANELS for p in scene.show) and len(cast("Positions", scene.positions).values) == 1
         if not (drawn and _ok(fa, 0)):
             return fa
         best, spill, forced = fa, _spill(fa), {}
@@ -478,9 +479,9 @@ def render_forces(scene: Scene[ForceScene], footer: tuple[str, ...] = ()) -> tup
     """The sheet of a force scene and its warnings: the kinematic panels it shows, then the
     loads, each group's free body and force polygon and Zhukovsky's lever, at one position."""
     drawn = [p for p in scene.show if p in FORCE_PANELS]
-    if drawn and len(scene.positions.values) > 1:
+    if drawn and len(cast("Positions", scene.positions).values) > 1:
         raise SceneError([("show", f"{', '.join(drawn)} draw one position and this scene has "
-                                   f"{len(scene.positions.values)}: give the driver one angle "
+                                   f"{len(cast('Positions', scene.positions).values)}: give the driver one angle "
                                    "(graphmech check takes them all)")], scene.source)
     fa = analyse_forces(scene)
     if drawn and not _ok(fa, 0):

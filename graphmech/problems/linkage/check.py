@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -180,10 +180,10 @@ def analyse(scene: Scene[CycleScene | None], extra_measured: tuple[tuple[str, fl
 
 
 def _analyse(scene: Scene[CycleScene | None], extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
-    linkage: Linkage = scene.linkage
+    linkage: Linkage = cast("Linkage", scene.linkage)  # a linkage scene has one: the reader refuses it otherwise
     refuse_far_from_origin(scene, linkage, mechanism_size(linkage))
-    positions = np.asarray(scene.positions.values, dtype=float)
-    labels = tuple(scene.positions.labels) or tuple(f"{v:g}" for v in positions)
+    positions = np.asarray(cast("Positions", scene.positions).values, dtype=float)
+    labels = tuple(cast("Positions", scene.positions).labels) or tuple(f"{v:g}" for v in positions)
     scales, stated = choose_scales(scene, linkage, positions)
     build = build_polygons(linkage, scales)
     wanted = _requested(scene, build, labels)
