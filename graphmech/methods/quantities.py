@@ -8,10 +8,11 @@ check understands, which exact value it must equal (it never says *how* to compu
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 #: What a quantity equals, read by the exact solution: a kind and its arguments, e.g.
 #: ``("speed", "C")``, ``("slide_v", "C", gx, gy)``.
-Exact = tuple[str | float, ...]
+Exact = tuple[Any, ...]  # names (str) and, for a slide, the guide's direction (float)
 
 #: Units of the kinematic quantities, by the name's prefix.
 UNITS = {

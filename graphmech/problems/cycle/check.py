@@ -48,8 +48,8 @@ from graphmech.methods.full_cycle import CycleDiagram, FullCycle, evaluate_cycle
 from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
 
 if TYPE_CHECKING:
-    from graphmech.problems.cycle.scene import CycleSpec
-    from graphmech.problems.cycle.scene import CycleScene
+    from graphmech.mechanisms.linkage import Positions
+    from graphmech.problems.cycle.scene import CycleScene, CycleSpec
     from graphmech.problems.reader import Scene
 
 __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "nice_pole"]
@@ -791,7 +791,7 @@ def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Ve
         if name not in values or name in ("gamma_min_at", "phi_start", "phi_end"):
             problems.append((key, f"{name!r} cannot be judged here"))
             continue
-        g, e, drawn = values[name]
+        g, exact_v, drawn = values[name]
         p = an.drawn.points
         A = p["A"]
         arm = min(math.dist(A, p["C1"]), math.dist(A, p["C2"])) if name in ("theta", "K") else (
@@ -805,7 +805,7 @@ def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Ve
             tol = 2.0 * math.pi / (math.pi - th) ** 2 * tol_rad
         else:
             tol = math.degrees(tol_rad)
-        out.append(Verdict(name, value, e, tol, abs(value - e) <= tol, units[name]))
+        out.append(Verdict(name, value, exact_v, tol, abs(value - exact_v) <= tol, units[name]))
     if problems:
         raise SceneError(problems, scene.source)
     if an.polygons is not None:

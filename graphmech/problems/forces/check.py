@@ -29,6 +29,7 @@ from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.kinetostatics import ExactForces, solve_forces
 from graphmech.methods.kinetostatics import (
     SHALLOW_SIN,
+    GuideReaction,
     KinetostaticSolution,
     Lever,
     PolygonKinematics,
@@ -117,8 +118,10 @@ def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, fl
         drawn = any(p in FORCE_PANELS for p in scene.show) and len(cast("Positions", scene.positions).values) == 1
         if not (drawn and _ok(fa, 0)):
             return fa
+        forced: dict[str, float]
         best, spill, forced = fa, _spill(fa), {}
         tried: set[tuple[tuple[str, float], ...]] = set()
+        keys: tuple[str, ...]
         for keys in (("l", "v"), ("F",)):  # the drawings of the mechanism first, then the polygons
             keys = tuple(k for k in keys if k not in fa.stated)
             for factor in FIT_COARSER:
@@ -153,7 +156,7 @@ def _spill(fa: ForceAnalysis) -> float:
     bottom = sheet.page[1] - m - (DEFAULT.note_size * DEFAULT.line_gap * len(sheet.footer) + DEFAULT.note_size)
     right = sheet.page[0] - m
     over = [max(p.frame[3] - bottom, p.frame[2] - right, m - p.frame[0]) for p in layout.panels]
-    return max([0.0, *over]) + 1e-6  # (a sheet that warns never ranks with one that fits)
+    return cast(float, max([0.0, *over])) + 1e-6  # (a sheet that warns never ranks with one that fits)
 
 
 def _analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, float], ...],
@@ -292,6 +295,7 @@ def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, f
     if m.group("ri"):
         key = (m.group("ri"), m.group("rj"))
         return vector(complex(sol.reactions[key][i]), ex.reactions[key][i], m.group("rc"))
+    g: GuideReaction | float
     if m.group("gi"):
         slider = m.group("gj")
         g = next(gr for gr in sol.guides if gr.slider == slider)
@@ -387,7 +391,7 @@ def _rows(fa: ForceAnalysis) -> None:
     sol = fa.solution
     # with friction, the same quantities one and two rounds earlier: how far the iteration still moves them
     before = None if sol.previous is None else replace(fa, solution=sol.previous)
-    earlier = None if before is None else replace(fa, solution=sol.previous.previous)  # type: ignore[union-attr]
+    earlier = None if before is None else replace(fa, solution=cast("KinetostaticSolution", sol.previous.previous))
     basis = f"friction: {sol.iterations} rounds to {fa.scene.problem.model.tolerance:g} N"
     for k, raw in enumerate(fa.scene.find):
         base, at = split_name(raw)
@@ -397,6 +401,7 @@ def _rows(fa: ForceAnalysis) -> None:
         if why:
             problems.append((f"find[{k}]", why))
             continue
+        idx: range | list[int]
         if at is None:
             idx = range(len(fa.labels))
         elif at in fa.labels:
@@ -504,7 +509,7 @@ def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Any:
     b = an.build
     drawn = [p for p in scene.show if p in FORCE_PANELS]
     kin_show = [p for p in scene.show if p in ("mechanism", "velocity", "acceleration")]
-    head: tuple = ()
+    head: tuple[str, ...] = ()
     if kin_show:
         texts = [position_text(b, lab) for lab in an.labels]
         head = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,

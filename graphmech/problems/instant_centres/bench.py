@@ -14,9 +14,12 @@ from __future__ import annotations
 
 import math
 import time
-from typing import Any, Callable, cast
+from typing import TYPE_CHECKING, Any, Callable, cast
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from graphmech.mechanisms.linkage import Crank
 
 __all__ = ["ic_records"]
 

@@ -244,8 +244,8 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                                        f"{_deg(c.direction):.6g}°): it has no {coord[0]} coordinate")
                     continue
                 g = _deg(c.direction)
-                e = _deg(ev)  # a huge exact point lies in (nearly) the same direction
-                rows.append(Row(f"dir_{nm}{suffix}", "deg", None, 1.0, g, e, rel(g, e, "deg"),
+                exact_v = _deg(ev)  # a huge exact point lies in (nearly) the same direction
+                rows.append(Row(f"dir_{nm}{suffix}", "deg", None, 1.0, g, exact_v, rel(g, exact_v, "deg"),
                                 ill(ic, sol, [c.links]) or shaky))
                 continue
             if coord == "dir_":
@@ -255,12 +255,12 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                 if coord in ("", f"{axis}_"):
                     drawn = c.point[n] + (ox, oy)[n] / mu
                     g = drawn * mu
-                    e = ev[n] if ek == "point" else math.copysign(math.inf, 1.0)
-                    if not math.isfinite(e):
+                    exact_v = ev[n] if ek == "point" else math.copysign(math.inf, 1.0)
+                    if not math.isfinite(exact_v):
                         an.warnings.append(f"{where}: the exact {nm} is at infinity; the construction "
                                            f"put it at {g:.6g} m (ill-conditioned)")
                         continue
-                    rows.append(Row(f"{axis}_{nm}{suffix}", "m", drawn, mu, g, e, rel(g, e, "m"),
+                    rows.append(Row(f"{axis}_{nm}{suffix}", "m", drawn, mu, g, exact_v, rel(g, exact_v, "m"),
                                     ill(ic, sol, [c.links]) or shaky))
         elif kind == "omega":
             lid = spec[1]
@@ -268,12 +268,12 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                 an.warnings.append(f"{where}: ω{lid} cannot be found from the centres — {ic.undetermined[lid]}")
                 continue
             mo = ic.motions[lid]
-            e = float(an.exact.omega[lid][i]) if lid != linkage.frame_link else 0.0
+            exact_v = float(an.exact.omega[lid][i]) if lid != linkage.frame_link else 0.0
             drawn, scale = (mo.drawn, mo.scale) if mo.drawn is not None else (None, 1.0)
             g = mo.omega if drawn is None else drawn * scale
             keys = [ic.absolute(lid).links] + ([pair(links, mo.found[0], lid)] if len(mo.found) == 4 else [])
-            rows.append(Row(f"omega_{lid}_ic{suffix}", "rad/s", drawn, scale if drawn is not None else 1.0, g, e,
-                            rel(g, e, "rad/s"), ill(ic, sol, keys)))
+            rows.append(Row(f"omega_{lid}_ic{suffix}", "rad/s", drawn, scale if drawn is not None else 1.0, g, exact_v,
+                            rel(g, exact_v, "rad/s"), ill(ic, sol, keys)))
         elif kind == "speed":
             x = spec[1]
             lid = _carrier(linkage, ic, x)
@@ -290,8 +290,8 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
             else:  # a translating link: the velocity found at its common centre
                 drawn, scale = math.hypot(*mo.velocity(p)), mu
             g = drawn * scale
-            e = float(np.hypot(*an.exact.vel[x][i]))
-            rows.append(Row(f"v_{x}_ic{suffix}", "m/s", drawn, scale, g, e, rel(g, e, "m/s"),
+            exact_v = float(np.hypot(*an.exact.vel[x][i]))
+            rows.append(Row(f"v_{x}_ic{suffix}", "m/s", drawn, scale, g, exact_v, rel(g, exact_v, "m/s"),
                             ill(ic, sol, [p1.links])))
         elif kind == "least":
             _, what, a, b, lid = spec

@@ -41,6 +41,9 @@ from graphmech.problems.linkage.sizes import (
 from graphmech.problems.reader import page_size
 
 if TYPE_CHECKING:
+    from graphmech.construction.graph import Solution
+    from graphmech.mechanisms.linkage import Positions
+    from graphmech.methods.quantities import Exact
     from graphmech.problems.cycle.scene import CycleScene
     from graphmech.problems.reader import Scene
 
@@ -70,7 +73,7 @@ class Analysis:
     stated: set[str]  # which μ the scene stated (the others were chosen)
     positions: np.ndarray
     labels: tuple[str, ...]
-    solutions: list[Any]  # per position: a Solution, or None where it failed
+    solutions: list[Solution | None]  # per position: None where it failed
     failures: list[str]  # per position: "" or the reason
     exact: Kinematics
     warnings: list[str] = field(default_factory=list)
@@ -101,6 +104,7 @@ def _requested(scene: Scene[CycleScene | None], build: LinkageConstruction, labe
             close = close_names(base, build.quantities)
             problems.append((f"find[{k}]", f"unknown quantity {base!r}{close}"))
             continue
+        idx: range | list[int]
         if at is None:
             idx = range(len(labels))
         elif at in labels:
@@ -125,8 +129,8 @@ def choose_scales(scene: Scene[CycleScene | None], linkage: Linkage, positions: 
     panel's extent in real units; each μ is then the smallest round number that fits that
     extent into the room one panel has (the panels stand side by side, one row per position).
     """
-    stated = {k for k in ("l", "v", "a") if k in scene.scales}
-    scales = {k: float(scene.scales[k]) for k in ("l", "v", "a") if k in stated}
+    stated: set[str] = {k for k in ("l", "v", "a") if k in scene.scales}
+    scales: dict[str, float] = {k: float(scene.scales[k]) for k in ("l", "v", "a") if k in stated}
     provisional = {k: scales.get(k, 1.0) for k in ("l", "v", "a")}
     b = build_polygons(linkage, provisional)
     steps = [s for s in b.g.steps.values() if s.kind == "point"]
@@ -184,6 +188,8 @@ def _analyse(scene: Scene[CycleScene | None], extra_measured: tuple[tuple[str, f
     refuse_far_from_origin(scene, linkage, mechanism_size(linkage))
     positions = np.asarray(cast("Positions", scene.positions).values, dtype=float)
     labels = tuple(cast("Positions", scene.positions).labels) or tuple(f"{v:g}" for v in positions)
+    i: int | np.intp
+    sol: Solution | None
     scales, stated = choose_scales(scene, linkage, positions)
     build = build_polygons(linkage, scales)
     wanted = _requested(scene, build, labels)
@@ -274,7 +280,7 @@ def _row(an: Analysis, display: str, qname: str, i: int) -> Row:
 # ---------------------------------------------------------------------------- exact values
 
 
-def exact_value(kin: Kinematics, spec: tuple, i: int) -> float:
+def exact_value(kin: Kinematics, spec: Exact, i: int) -> float:
     """The exact value that a quantity's ``exact`` description names, at position i."""
     kind = spec[0]
     P, V, A = kin.point, kin.vel, kin.acc
@@ -376,7 +382,7 @@ def _measured_quantities(entries: list[tuple[str, str, float]], build: LinkageCo
     return out
 
 
-def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> tuple[str, int | None, bool]:
+def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> tuple[str, int, bool]:
     """A measured name → (quantity name, position index, is a drawn segment)."""
     base, at = split_name(name)
     if at is not None and at not in labels:
@@ -408,7 +414,7 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
         raise ValueError(f"no drawn segment {base!r} in this construction")
     # One drawn segment per pair of end steps, whichever way round it was named: the letters
     # alone may name two (the pole p and the image p of a point P).
-    ends: dict[frozenset, str] = {}
+    ends: dict[frozenset[str], str] = {}
     for n in found:
         ends.setdefault(frozenset(build.g.steps[build.quantities[n].slot].inputs[-2:]), n)
     if len(ends) > 1:
@@ -451,18 +457,18 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
                                   f"({an.exact.reason[i]}), so it cannot be judged"))
             continue
         drawn, scale = sol[q.slot]
-        e = exact_value(an.exact, q.exact, i)
+        exact_v = exact_value(an.exact, q.exact, i)
         panel_key = SCALE_KEYS[q.panel]
         if segment:
             if panel_key not in an.stated:
                 problems.append((key, f"the scene does not state μ{panel_key}, so a drawn length cannot be judged: "
                                       f"state it in [scales] or give the value ({qname}) instead"))
                 continue
-            expected = abs(e) / float(scale)
+            expected = abs(exact_v) / float(scale)
             out.append(Verdict(name, value, expected, prec, abs(abs(value) - expected) <= prec, "mm"))
         else:
             tol = _angle_tolerance(an, q, sol, prec) if q.unit == "deg" else prec * abs(float(scale))
-            out.append(Verdict(name, value, e, tol, abs(value - e) <= tol + 1e-12 * abs(e), q.unit))
+            out.append(Verdict(name, value, exact_v, tol, abs(value - exact_v) <= tol + 1e-12 * abs(exact_v), q.unit))
     if an.instant_centres is not None:
         more, trouble = ic_check.judge(an, prec)
         out += more
