@@ -61,7 +61,7 @@ class CamAnalysis:
     divisions: list[dict[str, Any]] = field(default_factory=list)  # the book's table, one row a division
     extra_measured: tuple[tuple[str, float], ...] = ()
     step: float = 0.0  # rad, the divisions' step as drawn (2π/N)
-    finer: tuple = ()  # the same drawing at 2N, 4N and 8N divisions, for the rows' error estimates
+    finer: tuple[DrawnProfile, ...] = ()  # the same drawing at 2N, 4N and 8N divisions, for the rows' error estimates
 
     def scale_notes(self) -> list[str]:
         """μ as written on the drawing (an oscillating follower's μs is an angle per mm)."""
@@ -87,9 +87,9 @@ def profile_deviation(cam: DiscCam, actual: np.ndarray, samples: int = EXACT_SAM
 
 def choose_cam_scales(scene: Scene[CamScene], cam: DiscCam, drawn: DrawnProfile | None) -> tuple[dict[str, float], set[str]]:
     """μ from the scene where stated; otherwise round values that fit one row of panels."""
-    stated = {k for k in ("l", "s", "phi", "v", "a") if k in scene.scales}
+    stated: set[str] = {k for k in ("l", "s", "phi", "v", "a") if k in scene.scales}
     # in the book's order, never a set's: the table and the JSON list them the same way every run
-    scales = {k: float(scene.scales[k]) for k in ("l", "s", "phi", "v", "a") if k in stated}
+    scales: dict[str, float] = {k: float(scene.scales[k]) for k in ("l", "s", "phi", "v", "a") if k in stated}
     w, h = page_size(scene)
     rows = panel_rows(scene.show)
     n_rows = max(rows.values(), default=0) + 1
@@ -319,8 +319,8 @@ def _row(an: CamAnalysis, name: str) -> Row:
         return _plain(name, "rad" if ang else "m", float(np.max(an.s)) / an.scales["s"], an.scales["s"],
                       cam.program.stroke, cam.program.stroke)
     if name == "r0_min":
-        e = exact_cam.min_base_radius(cam, cam.alpha_permissible)
-        g = _graphical_r0_min(cam, cam.alpha_permissible, an.step)
+        e = exact_cam.min_base_radius(cam, cast(float, cam.alpha_permissible))  # asked for only with it (scene)
+        g = _graphical_r0_min(cam, cast(float, cam.alpha_permissible), an.step)
         return _plain(name, unit, g / an.scales["l"], an.scales["l"], e, size)
     # v_max, a_max, j_max and where: read off the diagrams at the divisions vs the exact law
     q = name.split("_")[0]

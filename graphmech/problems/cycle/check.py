@@ -195,7 +195,7 @@ def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, fl
     wants = _wants(scene, names + measured)
     stated = {k for k in ("l", "v", "a") if k in scene.scales}
     mu_l = _mech_scale(scene, linkage)
-    an = CycleAnalysis(scene, {"l": mu_l}, stated, extra_measured=tuple(extra_measured))
+    an = CycleAnalysis(scene, {"l": mu_l}, cast("set[str]", stated), extra_measured=tuple(extra_measured))
     d = linkage.driver
     assert isinstance(d, Crank)
     if wants["characteristics"]:
@@ -230,7 +230,7 @@ def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, fl
     poly_measured = [(n, v) for n, v in scene.measured if _kind(scene, n) == "polygon"]
     if poly or poly_measured or any(_kind(scene, n) == "polygon" for n, _ in extra_measured):
         # the polygons at the sheet's own μ, so a drawn length means the same everywhere
-        same = {k: an.scales[k] for k in ("l", "v", "a") if k in an.scales}
+        same: dict[str, float] = {k: an.scales[k] for k in ("l", "v", "a") if k in an.scales}
         sub = replace(scene, find=tuple(poly), show=(), measured=tuple(poly_measured),
                       scales={**scene.scales, **same})
         extra = tuple((n, v) for n, v in extra_measured if _kind(scene, n) == "polygon")
@@ -380,6 +380,8 @@ def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
 
 def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
     scene = an.scene
+    k: int | str
+    mu: str | float
     spec = cast("CycleSpec", scene.problem.cycle)  # analysed as a cycle: the scene has [cycle]
     angles = np.asarray(cast("Positions", scene.positions).values, dtype=float)
     d = linkage.driver
@@ -575,7 +577,7 @@ def _exact_path(linkage: Linkage, point: str, angles: np.ndarray, sense: float, 
     return {"s": s, "v": v, "a": a, "valid": valid}
 
 
-def _diagram_errors(an: CycleAnalysis, dg: Any) -> dict[str, float]:
+def _diagram_errors(an: CycleAnalysis, dg: Any) -> dict[str, float | None]:
     ex = _exact_series(an, dg.subject)
     linkage = cast("Linkage", an.scene.linkage)
     unit_v, unit_a = ("rad/s", "rad/s²") if dg.kind == "link" else ("m/s", "m/s²")
@@ -621,6 +623,7 @@ def _ch_values(an: CycleAnalysis) -> tuple[dict[str, tuple[float, float, float |
 
 def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
     scene = an.scene
+    drawn: float | np.ndarray | None
     base, _, at = raw.partition("@")
     if kind in ("char", "timing"):
         if at:
@@ -724,7 +727,7 @@ def _chord_estimate(an: CycleAnalysis, dg: CycleDiagram, what: str, i: int, g: f
             vals.append(float(f.velocity.derivative_mm[m * i] * f.mu_v))
         else:
             vals.append(float(f.a_mm[m * i] * f.mu_a))
-    limit = extrapolated(*vals, order=2)
+    limit = extrapolated(*cast("tuple[float, float]", vals), order=2)  # the values at 2N and 4N
     unit = {"s": "m", "v": "m/s", "a": "m/s²", "omega": "rad/s", "alpha": "rad/s²"}[what]
     linkage = cast("Linkage", an.scene.linkage)
     return relative(abs(g - limit), max(abs(limit), characteristic(linkage, unit, mechanism_size(linkage))))
@@ -802,7 +805,7 @@ def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Ve
             tol = 2.0 * prec * an.drawn.mu_l
         elif name == "K":
             th = an.exact.theta  # type: ignore[union-attr]
-            tol = 2.0 * math.pi / (math.pi - th) ** 2 * tol_rad
+            tol = 2.0 * math.pi / (math.pi - cast(float, th)) ** 2 * tol_rad
         else:
             tol = math.degrees(tol_rad)
         out.append(Verdict(name, value, exact_v, tol, abs(value - exact_v) <= tol, units[name]))

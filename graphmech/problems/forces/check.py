@@ -170,7 +170,7 @@ def _analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, f
     kin_find = tuple(n for n in scene.find if not is_force_name(n))
     kin_show = tuple(p for p in scene.show if p in ("mechanism", "velocity", "acceleration")) or ("mechanism",)
     kin_forced = {k: v for k, v in forced.items() if k in ("l", "v")}
-    plain = replace(scene, find=kin_find, show=kin_show, measured=tuple(measured), kind="linkage", problem=None,
+    plain = replace(cast("Scene[ForceScene | None]", scene), find=kin_find, show=kin_show, measured=tuple(measured), kind="linkage", problem=None,
                     scales={**scene.scales, **kin_forced})
     an = analyse(plain, extra_kin)
     an.stated = an.stated - set(kin_forced)  # imposed to fit the sheet, not stated by the scene
@@ -391,7 +391,7 @@ def _rows(fa: ForceAnalysis) -> None:
     sol = fa.solution
     # with friction, the same quantities one and two rounds earlier: how far the iteration still moves them
     before = None if sol.previous is None else replace(fa, solution=sol.previous)
-    earlier = None if before is None else replace(fa, solution=cast("KinetostaticSolution", sol.previous.previous))
+    earlier = None if before is None else replace(fa, solution=cast("KinetostaticSolution", cast("KinetostaticSolution", sol.previous).previous))
     basis = f"friction: {sol.iterations} rounds to {fa.scene.problem.model.tolerance:g} N"
     for k, raw in enumerate(fa.scene.find):
         base, at = split_name(raw)
@@ -509,7 +509,7 @@ def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Any:
     b = an.build
     drawn = [p for p in scene.show if p in FORCE_PANELS]
     kin_show = [p for p in scene.show if p in ("mechanism", "velocity", "acceleration")]
-    head: tuple[str, ...] = ()
+    head: tuple[Panel, ...] = ()
     if kin_show:
         texts = [position_text(b, lab) for lab in an.labels]
         head = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,

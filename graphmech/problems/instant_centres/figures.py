@@ -275,7 +275,7 @@ def zero_panel(an: Any, x: str, zeros: Sequence[float], spans: dict[int, tuple[f
             c = ic.centre(driver, carrier)
             key = ("P", round(c.point[0], 6), round(c.point[1], 6)) if c.point is not None else None
             if c.point is not None and key not in seen:
-                seen.add(key)  # type: ignore[arg-type]
+                seen.add(key)
                 items.append(Circle(c.point, 1.4, "result"))
                 items.append(Label(label(driver, carrier), c.point, (), 3.0))
     ang = ", ".join(f"{math.degrees(z):.2f}°" for z in zeros)

@@ -262,7 +262,7 @@ def _finite(values: Any) -> bool:
 
 def _row(an: Analysis, display: str, qname: str, i: int) -> Row:
     q = an.build.quantities[qname]
-    drawn, scale = an.solutions[i][q.slot]
+    drawn, scale = cast("Solution", an.solutions[i])[q.slot]  # a row is made only where it was constructed
     drawn, scale = float(drawn), float(scale)
     g = drawn * scale
     e = exact_value(an.exact, q.exact, i)
@@ -329,7 +329,7 @@ def _deps(an: Analysis, slot: str) -> set[str]:
 
 
 def _ill(an: Analysis, slot: str, i: int) -> bool:
-    sol = an.solutions[i]
+    sol = cast("Solution", an.solutions[i])
     texts = {an.plan.by_name[n].text for n in _deps(an, slot) if n in an.plan.by_name}
     return any(c > T.COND_WARN for t, c in sol.conds.items() if t in texts)
 

@@ -554,7 +554,7 @@ def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order
         find=find,
         scales=scales,
         linkage=linkage,
-        positions=positions,  # type: ignore[arg-type]
+        positions=positions,
         measured=measured,
         precision_mm=precision,
         page=page,

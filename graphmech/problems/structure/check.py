@@ -150,7 +150,7 @@ def judge_structure(an: StructureAnalysis, extra: tuple[tuple[str, float], ...] 
     from graphmech.errors import SceneError
 
     doc = an.summary()
-    values = {k: doc[k] for k in ("n", "pl", "ph", "F_local", "p_redundant", "F_count", "F", "class") if k in doc}
+    values: dict[str, Any] = {k: doc[k] for k in ("n", "pl", "ph", "F_local", "p_redundant", "F_count", "F", "class") if k in doc}
     if "jacobian" in doc:
         j = doc["jacobian"]
         values.update({"F_actual": j["F_actual"], "rank": j["rank"], "p_redundant_actual": j["p_redundant"]})
