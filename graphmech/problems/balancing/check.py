@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import SceneError
@@ -24,6 +24,7 @@ from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
+    from graphmech.mechanisms.rotor import RotorMass
 
 #: The longest polygon side when graphmech chooses μW, mm.
 POLYGON_MM = 60.0
@@ -123,7 +124,7 @@ def analyse_balancing(scene: Scene[BalancingProblem], extra_measured: tuple[tupl
     return an
 
 
-def _balance(p: BalancingProblem, masses: list[gm.Mass], mu_W: float) -> tuple[gm.Correction, ...]:
+def _balance(p: BalancingProblem, masses: list[RotorMass], mu_W: float) -> tuple[gm.Correction, ...]:
     if p.type == "static":
         return (gm.static_balance(masses, p.r_b[0], mu_W),)
     return gm.dynamic_balance(masses, p.planes[0], p.planes[1], (p.r_b[0], p.r_b[1]), mu_W)  # type: ignore[index]
@@ -153,7 +154,7 @@ def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | Non
     mu = an.scales["W"]
     if name.startswith("residual"):
         us = [ex.Unbalance(u.m, u.r, u.theta, u.z) for u in p.masses]
-        planes = (0.0,) if p.type == "static" else p.planes
+        planes = (0.0,) if p.type == "static" else cast("tuple[float, float]", p.planes)  # a dynamic problem has two
         drawn = [(0j if c.balanced else cmath.rect(c.W, c.theta), z) for c, z in zip(an.corrections, planes)]  # type: ignore[arg-type]
         force, moment = ex.residuals(us, drawn, planes[0])  # about plane I: no far-off lever to cancel
         span = 1.0 if p.type == "static" else abs(p.planes[1] - p.planes[0])  # type: ignore[index]

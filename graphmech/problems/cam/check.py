@@ -61,7 +61,7 @@ class CamAnalysis:
     divisions: list[dict[str, Any]] = field(default_factory=list)  # the book's table, one row a division
     extra_measured: tuple[tuple[str, float], ...] = ()
     step: float = 0.0  # rad, the divisions' step as drawn (2π/N)
-    finer: tuple[DrawnProfile, ...] = ()  # the same drawing at 2N, 4N and 8N divisions, for the rows' error estimates
+    finer: tuple[CamAnalysis, ...] = ()  # the same drawing at 2N, 4N and 8N divisions, for the rows' error estimates
 
     def scale_notes(self) -> list[str]:
         """μ as written on the drawing (an oscillating follower's μs is an angle per mm)."""
@@ -265,7 +265,7 @@ def _graphical_r0_min(cam: DiscCam, alpha: float, step: float) -> float:
             hi = mid
         if hi - lo <= 1e-12 * hi:
             break
-    return hi
+    return cast(float, hi)
 
 
 def _row(an: CamAnalysis, name: str) -> Row:

@@ -14,7 +14,7 @@ draw, write the SVG text), no error.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 

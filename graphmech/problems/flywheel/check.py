@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any, Literal, cast
 
 import numpy as np
 
@@ -286,7 +286,7 @@ def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
     r = an.reduction
     try:
         an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
-                                    delta=machine.delta, balance=machine.balance, form=fw.tangents,
+                                    delta=machine.delta, balance=machine.balance, form=cast("Literal['exact', 'book']", fw.tangents),
                                     H_mm=fw.pole_distance, scales=scales, need=want)
     except WrongBalance as e:
         raise SceneError([("flywheel.balance", _wrong_balance(machine.balance, e.work))], an.scene.source) from None
@@ -404,7 +404,7 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
         return r.t_stop, an.braking.t, r.t_stop_mm, r.mu_t, False
     if base in ("Jp", "Mp"):
         ex = _exact(an)
-        phi = an.phi[i : i + 1]
+        phi = an.phi[cast(int, i) : cast(int, i) + 1]  # a quantity at a position has one
         if base == "Jp":
             return float(an.reduction.J[i]), float(ex.inertia(phi)[0]), None, an.scales.get("v", 1.0), False
         return float(an.reduction.M[i]), float(ex.load_moment(phi, mean_at_steps=True)[0]), None, \
@@ -413,7 +413,7 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
     mu_T = float(d.scales["T"]) if d is not None else 1.0
     if base in ("DeltaT", "A_p"):
         g = float(d.energy_mm[i] if base == "DeltaT" else d.work_mm[i]) * mu_T
-        e = float(ex.energy(an.phi[i : i + 1])[0])
+        e = float(ex.energy(an.phi[cast(int, i) : cast(int, i) + 1])[0])
         if base == "A_p":
             e -= ex.balancing_moment() * float(an.phi[i])
         return g, e, g / mu_T, mu_T, False
@@ -555,7 +555,7 @@ def _denominator(an: FlywheelAnalysis, r: Row) -> float:
         return math.degrees(an.machine.cycle)
     if r.unit == "J":
         x = _exact(an).extremes()
-        return max(abs(r.exact), x.maximum - x.minimum, 1e-300)
+        return cast(float, max(abs(r.exact), x.maximum - x.minimum, 1e-300))
     return max(abs(r.exact), abs(r.scale) * 1e-3, 1e-300)
 
 
@@ -621,9 +621,9 @@ def _tighter_motion(an: FlywheelAnalysis) -> tuple[Any, float]:
 
 
 def _motion_value(mo: Any, base: str) -> float:
-    return {"omega_max_true": mo.omega_max, "omega_min_true": mo.omega_min,
+    return cast(float, {"omega_max_true": mo.omega_max, "omega_min_true": mo.omega_min,
             "phi_omega_max": math.degrees(mo.phi_omega_max), "phi_omega_min": math.degrees(mo.phi_omega_min),
-            "delta_achieved": mo.delta, "omega_mean_time": mo.omega_time_mean}[base]
+            "delta_achieved": mo.delta, "omega_mean_time": mo.omega_time_mean}[base])
 
 
 # ---------------------------------------------------------------------------- verdicts

@@ -43,6 +43,7 @@ from graphmech.scales import round_scale
 from graphmech.tolerances import COND_WARN
 
 if TYPE_CHECKING:
+    from graphmech.drawing.primitives import Panel
     from graphmech.mechanisms.linkage import Positions
     from graphmech.problems.forces.scene import ForceScene
     from graphmech.problems.reader import Scene

@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Callable
+from typing import TYPE_CHECKING, Any, Callable, cast
 
 import numpy as np
 
@@ -192,6 +192,7 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
 
     mu = an.scales["l"]
     ox, oy = build.origin
+    lid: str | None
     m_zero = _ZERO.fullmatch(base)
     if m_zero:
         if at is not None:
@@ -244,7 +245,7 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                                        f"{_deg(c.direction):.6g}°): it has no {coord[0]} coordinate")
                     continue
                 g = _deg(c.direction)
-                exact_v = _deg(ev)  # a huge exact point lies in (nearly) the same direction
+                exact_v = _deg(cast("tuple[float, float]", ev))  # a huge exact point lies in (nearly) the same direction
                 rows.append(Row(f"dir_{nm}{suffix}", "deg", None, 1.0, g, exact_v, rel(g, exact_v, "deg"),
                                 ill(ic, sol, [c.links]) or shaky))
                 continue
@@ -253,7 +254,7 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                 continue
             for axis, n in (("x", 0), ("y", 1)):
                 if coord in ("", f"{axis}_"):
-                    drawn = c.point[n] + (ox, oy)[n] / mu
+                    drawn = cast("tuple[float, float]", c.point)[n] + (ox, oy)[n] / mu
                     g = drawn * mu
                     exact_v = ev[n] if ek == "point" else math.copysign(math.inf, 1.0)
                     if not math.isfinite(exact_v):
@@ -270,9 +271,9 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
             mo = ic.motions[lid]
             exact_v = float(an.exact.omega[lid][i]) if lid != linkage.frame_link else 0.0
             drawn, scale = (mo.drawn, mo.scale) if mo.drawn is not None else (None, 1.0)
-            g = mo.omega if drawn is None else drawn * scale
+            g = mo.omega if drawn is None else drawn * cast(float, scale)  # measured: both given
             keys = [ic.absolute(lid).links] + ([pair(links, mo.found[0], lid)] if len(mo.found) == 4 else [])
-            rows.append(Row(f"omega_{lid}_ic{suffix}", "rad/s", drawn, scale if drawn is not None else 1.0, g, exact_v,
+            rows.append(Row(f"omega_{lid}_ic{suffix}", "rad/s", drawn, cast(float, scale) if drawn is not None else 1.0, g, exact_v,
                             rel(g, exact_v, "rad/s"), ill(ic, sol, keys)))
         elif kind == "speed":
             x = spec[1]
@@ -431,7 +432,7 @@ def _exact_least(linkage: Linkage, kin: Kinematics, lid: str, a: str, b: str, i:
     return float(r @ u), float(abs(w) * abs(r[0] * u[1] - r[1] * u[0]))
 
 
-def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str]) -> tuple | str:
+def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str]) -> tuple[str, ...] | str:
     """A name → what to compute, or the reason it names nothing."""
     m = _CENTRE.fullmatch(base)
     if m:
@@ -501,7 +502,7 @@ def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
         if kind == "omega":
             return mo.omega
         assert u is not None
-        return (mo.v0[0] * u[0] + mo.v0[1] * u[1]) * mu
+        return cast(float, (mo.v0[0] * u[0] + mo.v0[1] * u[1]) * mu)
 
     batch = plan.evaluate_batch({build.param: grid})
     values = []

@@ -66,7 +66,7 @@ def rows_that_fit(page: tuple[float, float]) -> int:
 class Analysis:
     """Everything one scene produced: the construction, its solutions, the exact solution."""
 
-    scene: Scene[CycleScene | None]
+    scene: Scene[object]
     build: LinkageConstruction
     plan: Any
     scales: dict[str, float]
@@ -91,7 +91,7 @@ class Analysis:
 # ---------------------------------------------------------------------------- names
 
 
-def _requested(scene: Scene[CycleScene | None], build: LinkageConstruction, labels: tuple[str, ...]) -> list[tuple[str, str, int]]:
+def _requested(scene: Scene[object], build: LinkageConstruction, labels: tuple[str, ...]) -> list[tuple[str, str, int]]:
     """(display name, quantity name, position index) for every ``find`` entry; bad names → SceneError."""
     problems = []
     out = []
@@ -122,7 +122,7 @@ def _requested(scene: Scene[CycleScene | None], build: LinkageConstruction, labe
 # ---------------------------------------------------------------------------- scales
 
 
-def choose_scales(scene: Scene[CycleScene | None], linkage: Linkage, positions: np.ndarray) -> tuple[dict[str, float], set[str]]:
+def choose_scales(scene: Scene[object], linkage: Linkage, positions: np.ndarray) -> tuple[dict[str, float], set[str]]:
     """μ from the scene where stated; otherwise the round value that fits the panel on the page.
 
     The construction is linear in 1/μ, so one provisional evaluation at μ = 1 gives every
@@ -173,7 +173,7 @@ def choose_scales(scene: Scene[CycleScene | None], linkage: Linkage, positions: 
 # ---------------------------------------------------------------------------- analysis
 
 
-def analyse(scene: Scene[CycleScene | None], extra_measured: tuple[tuple[str, float], ...] = ()) -> Analysis:
+def analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...] = ()) -> Analysis:
     """Build, prune, evaluate and check one scene (``extra_measured``: values from the command line).
 
     Numbers beyond double precision (an ω of 1e155 rad/s squared) are a one-line
@@ -183,7 +183,7 @@ def analyse(scene: Scene[CycleScene | None], extra_measured: tuple[tuple[str, fl
         return _analyse(scene, extra_measured)
 
 
-def _analyse(scene: Scene[CycleScene | None], extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
+def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
     linkage: Linkage = cast("Linkage", scene.linkage)  # a linkage scene has one: the reader refuses it otherwise
     refuse_far_from_origin(scene, linkage, mechanism_size(linkage))
     positions = np.asarray(cast("Positions", scene.positions).values, dtype=float)
