@@ -32,7 +32,7 @@ from graphmech.problems.reader import Reader, Scene, read_units
 MAX_BYTES = 1 << 20
 
 
-def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
+def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene[Any]:
     """Validate parsed TOML data and build the :class:`Scene`, in SI units.
 
     Parameters
@@ -108,7 +108,7 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene:
     return kind.read(data, source, top, order)
 
 
-def load_scene(path: str | os.PathLike[str]) -> Scene:
+def load_scene(path: str | os.PathLike[str]) -> Scene[Any]:
     """Read a scene file and validate it.
 
     Parameters

@@ -23,7 +23,7 @@ angle) are named inputs of the evaluation.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Callable, Iterable, Literal, Mapping
+from typing import Any, Callable, Iterable, Literal, Mapping, cast
 
 import numpy as np
 
@@ -181,7 +181,13 @@ def values_at(values: dict[str, Any], i: int) -> dict[str, Any]:
     return {k: pick(v) for k, v in values.items()}
 
 
-def _compile(program: tuple, constants: dict[str, Any], params: list[str]) -> Any:
+#: A compiled step: (name, text, kernel, inputs).
+_Compiled = tuple[str, str, Callable[..., Any], tuple[str, ...]]
+#: The compiled plan: ``run(ops, params) -> {step name: value}``.
+_Run = Callable[[ScalarOps | ArrayOps, Mapping[str, Any]], dict[str, Any]]
+
+
+def _compile(program: tuple[_Compiled, ...], constants: dict[str, Any], params: list[str]) -> _Run:
     """Turn the ordered steps into one straight-line Python function.
 
     The function body is ``ops.step = text; v3 = kernel3(ops, v1, v2)`` per step: no dictionary
@@ -204,7 +210,7 @@ def _compile(program: tuple, constants: dict[str, Any], params: list[str]) -> An
     namespace: dict[str, Any] = {"K": tuple(kernels), "T": tuple(texts)}
     namespace.update({f"c{i}": v for i, v in enumerate(constants.values())})
     exec(compile("\n".join(body), "<construction plan>", "exec"), namespace)  # noqa: S102 — our own code
-    return namespace["run"]
+    return cast(_Run, namespace["run"])
 
 
 class Plan:

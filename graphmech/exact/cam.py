@@ -122,7 +122,7 @@ import dataclasses
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any, Literal, cast
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -218,11 +218,11 @@ def _vec(x: np.ndarray | float, y: np.ndarray | float) -> np.ndarray:
 
 
 def _dot(u: np.ndarray, w: np.ndarray) -> np.ndarray:
-    return u[..., 0] * w[..., 0] + u[..., 1] * w[..., 1]
+    return cast(np.ndarray, u[..., 0] * w[..., 0] + u[..., 1] * w[..., 1])
 
 
 def _cross(u: np.ndarray, w: np.ndarray) -> np.ndarray:
-    return u[..., 0] * w[..., 1] - u[..., 1] * w[..., 0]
+    return cast(np.ndarray, u[..., 0] * w[..., 1] - u[..., 1] * w[..., 0])
 
 
 def _quarter(u: np.ndarray) -> np.ndarray:
@@ -367,7 +367,7 @@ def _rocker_face(cam: DiscCam, p: _Path) -> tuple[np.ndarray, np.ndarray, np.nda
     See the module Notes (*Oscillating flat face*): t = a·cos ψ/q, q = 1 + k·φ′,
     ρ = p + (p″·q − k·p′·φ″)/q³ with p = a·sin ψ.
     """
-    f = cam.follower
+    f = cast(OscillatingFollower, cam.follower)  # a rocker's face: called for an oscillating follower
     a = f.pivot_distance
     k = 1.0 if f.sense == "opposite" else -1.0
     sigma = float(cam.rotation) * k

@@ -24,7 +24,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from itertools import pairwise
-from typing import Literal
+from typing import Literal, cast
 
 import numpy as np
 from scipy.optimize import brentq
@@ -216,7 +216,7 @@ def table_value(table: Table, x: np.ndarray | float) -> np.ndarray:
     width = np.where(x1 > x0, x1 - x0, 1.0)  # x0 ≤ x < x1 inside, so width > 0 where it is used
     out = y0 + (y1 - y0) * (x - x0) / width
     out = np.where(x < xs[0], ys[0], out)
-    return np.where(x >= xs[-1], ys[-1], out)
+    return cast(np.ndarray, np.where(x >= xs[-1], ys[-1], out))
 
 
 def table_line(table: Table, x: float) -> tuple[float, float]:

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import cast
 
 import numpy as np
 
@@ -161,6 +162,7 @@ def solve_forces(linkage: Linkage, model: ForceModel, positions: np.ndarray,
     base = 2 * len(revolutes)
     # A sliding pair: the force of a on b is N·n at the point (n ⟂ the guide) plus a couple M.
     tangents = [_guide_tangent(linkage, kin, slide) for slide in sliders]
+    t: np.ndarray | tuple[float, float]  # a slide's tangents, then the driving slider's guide
     for s, (a, b, p, _) in enumerate(sliders):
         t = tangents[s]
         nrm = np.stack([-t[:, 1], t[:, 0]], axis=1)
@@ -257,7 +259,7 @@ def _sense(x: np.ndarray | float, scale: np.ndarray | float) -> np.ndarray:
 
 
 def _speed_scale(kin: Kinematics) -> np.ndarray:
-    return np.max(np.stack([np.hypot(v[:, 0], v[:, 1]) for v in kin.vel.values()]), axis=0)
+    return cast(np.ndarray, np.max(np.stack([np.hypot(v[:, 0], v[:, 1]) for v in kin.vel.values()]), axis=0))
 
 
 def _guide_tangent(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str, str]) -> np.ndarray:
@@ -275,7 +277,7 @@ def _guide_tangent(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str
         return np.tile([math.cos(angle), math.sin(angle)], (n, 1))
     d = kin.point[p] - kin.point[guide]
     length = np.hypot(d[:, 0], d[:, 1])
-    return d / np.where(length > 0, length, 1.0)[:, None]
+    return cast(np.ndarray, d / np.where(length > 0, length, 1.0)[:, None])
 
 
 def _sliding_velocity(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str, str]) -> np.ndarray:
@@ -283,12 +285,12 @@ def _sliding_velocity(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, 
     a, b, p, guide = slide
     if guide == "frame":
         return kin.vel[p]
-    return kin.vel[p + b] - kin.vel[p + a]  # the coincident points of b and a (block, bar or slot)
+    return cast(np.ndarray, kin.vel[p + b] - kin.vel[p + a])  # the coincident points of b and a (block, bar or slot)
 
 
 def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.ndarray, rhs: np.ndarray,
-                   x0: np.ndarray, valid: np.ndarray, revolutes: list, sliders: list,
-                   tangents: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                   x0: np.ndarray, valid: np.ndarray, revolutes: list[tuple[str, str, str]],
+                   sliders: list[tuple[str, str, str, str]], tangents: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Solve A·x + g(x) = b, g the friction couples and forces, position by position (scipy root)."""
     from scipy.optimize import root
 
@@ -310,14 +312,15 @@ def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.n
         # Per position: which way each joint turns relatively, and the geometry of the slides.
         rel = [float(_sense(kin.omega.get(b, zero)[i] - kin.omega.get(a, zero)[i], w_scale[i]))
                for a, b, _ in revolutes]
-        slide = []
+        slide: list[tuple[list[tuple[int, float, np.ndarray]], np.ndarray, float, float]] = []
         for s, (a, b, p, _) in enumerate(sliders):
             t = tangents[s][i]
             arms = [(row[k], sign, kin.point[p][i] - kin.point[pts[k][0]][i]) for k, sign in ((b, 1.0), (a, -1.0))
                     if k in row]
             slide.append((arms, t, float(_sense(rel_v[s][i], v_scale[i])), fric.get(b, 0.0)))
 
-        def residual(z: np.ndarray, i: int = i, rel: list = rel, slide: list = slide) -> np.ndarray:
+        def residual(z: np.ndarray, i: np.intp = i, rel: list[float] = rel,
+                     slide: list[tuple[list[tuple[int, float, np.ndarray]], np.ndarray, float, float]] = slide) -> np.ndarray:
             res = A[i] @ z - rhs[i]
             for u, (a, b, p) in enumerate(revolutes):
                 r = rho.get(p, 0.0)
@@ -336,7 +339,7 @@ def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.n
                     res[r0] += sign * tang * t[0]
                     res[r0 + 1] += sign * tang * t[1]
                     res[r0 + 2] += sign * tang * (arm[0] * t[1] - arm[1] * t[0])
-            return res
+            return cast(np.ndarray, res)
 
         sol = root(residual, x0[i], method="hybr", options={"xtol": 1e-14, "maxfev": 2000})
         scale = max(1.0, float(np.max(np.abs(sol.x))))

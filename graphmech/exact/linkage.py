@@ -24,7 +24,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass
-from typing import Union
+from typing import Union, cast
 
 import numpy as np
 
@@ -107,7 +107,7 @@ class Kinematics:
 
 def _cross(u: _Vec, w: _Vec) -> _Array:
     """``u × w = u_x·w_y − u_y·w_x`` (the z-component of the cross product)."""
-    return u.real * w.imag - u.imag * w.real
+    return cast(_Array, u.real * w.imag - u.imag * w.real)
 
 
 def _cramer(a: _Vec, b: _Vec, c: _Vec, det: _Vec) -> tuple[_Array, _Array]:
@@ -455,7 +455,7 @@ def _wrap(theta: _Array) -> _Array:
     """Angle in [0, 2π)."""
     out = np.mod(theta, _TWO_PI)
     out[out >= _TWO_PI] = 0.0  # np.mod(-1e-17, 2π) rounds to 2π
-    return out
+    return cast(np.ndarray, out)
 
 
 def solve(linkage: Linkage, positions: np.ndarray) -> Kinematics:

@@ -270,7 +270,9 @@ class _Model:
                                 *self.tables[f"ds{k}"]))
         return _Piece(lo, hi, *self._functions(c0, c1, tuple(sliders), tuple(links)))
 
-    def _functions(self, c0: float, c1: float, sliders: tuple, links: tuple
+    def _functions(self, c0: float, c1: float,
+                   sliders: tuple[tuple[float, float, list[float], list[float], list[float], list[float]], ...],
+                   links: tuple[tuple[float, float, list[float], list[float]], ...]
                    ) -> tuple[Callable[[float, np.ndarray], list[float]],
                               Callable[[float, np.ndarray], np.ndarray]]:
         """f and its Jacobian for one piece, with every constant bound as a local (speed)."""

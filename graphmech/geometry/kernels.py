@@ -23,7 +23,7 @@ through ``ops.cond`` so callers can warn where the result is ill-conditioned.
 from __future__ import annotations
 
 import math
-from typing import Any, Callable
+from typing import Any, Callable, Protocol
 
 import numpy as np
 
@@ -31,6 +31,11 @@ from graphmech.errors import AssemblyError, DegenerateConstruction
 from graphmech.tolerances import COINCIDENT_REL, PARALLEL_SIN, TANGENT_REL
 
 Reason = str | Callable[[], str]
+#: One component: a float on the scalar path, an array (one entry per position) on the batch path.
+#: The kernels are written once for both, so a component stays open (Any) to the type checker.
+Value = Any
+#: A point (x, y), a line (px, py, dx, dy), a circle (cx, cy, r), a direction (ux, uy, length).
+Components = tuple[Value, ...]
 
 #: Condition numbers are capped here so that "infinite" stays a finite, printable number.
 COND_CAP = 1e300
@@ -123,7 +128,23 @@ class ArrayOps:
         self.conds[self.step] = c  # capped (and broadcast) when read: BatchSolution.conds
 
 
-Ops = ScalarOps | ArrayOps
+class Ops(Protocol):
+    """What a kernel asks of its ops: :class:`ScalarOps` or :class:`ArrayOps`."""
+
+    batch: bool
+    step: str
+    conds: dict[str, Any]
+
+    def sqrt(self, x: Value, /) -> Value: ...
+    def cos(self, x: Value, /) -> Value: ...
+    def sin(self, x: Value, /) -> Value: ...
+    def hypot(self, x: Value, y: Value, /) -> Value: ...
+    def where(self, bad: Value, fallback: Value, value: Value, /) -> Value: ...
+    def maximum(self, a: Value, b: Value, /) -> Value: ...
+    def absolute(self, a: Value, /) -> Value: ...
+    def guard(self, bad: Value, reason: Reason, assembly: bool = False) -> Value: ...
+    def fix(self, bad: Value, value: Value, fallback: Value, reason: Reason, assembly: bool = False) -> Value: ...
+    def cond(self, c: Value) -> None: ...
 
 # --------------------------------------------------------------------------- directions
 
@@ -138,7 +159,7 @@ def coincident(ops: Ops, n: Any, ax: Any, ay: Any, bx: Any, by: Any) -> Any:
     return n <= COINCIDENT_REL * size
 
 
-def unit(ops: Ops, a: tuple, b: tuple) -> tuple:
+def unit(ops: Ops, a: Components, b: Components) -> Components:
     """The direction a→b as ``(ux, uy, length)`` — a set square laid along AB, used by every
     line drawn ⟂ or ∥ to it and by every reading of ω or α along it."""
     dx = b[0] - a[0]
@@ -149,17 +170,17 @@ def unit(ops: Ops, a: tuple, b: tuple) -> tuple:
     return (dx / n, dy / n, n)
 
 
-def line_perpendicular_to(ops: Ops, through: tuple, u: tuple) -> tuple:
+def line_perpendicular_to(ops: Ops, through: Components, u: Components) -> Components:
     """The line through ``through`` perpendicular to the direction ``u`` (from :func:`unit`)."""
     return (through[0], through[1], -u[1], u[0])
 
 
-def line_parallel_to(ops: Ops, through: tuple, u: tuple) -> tuple:
+def line_parallel_to(ops: Ops, through: Components, u: Components) -> Components:
     """The line through ``through`` parallel to the direction ``u`` (from :func:`unit`)."""
     return (through[0], through[1], u[0], u[1])
 
 
-def line_fixed(ops: Ops, through: tuple, dx: float, dy: float) -> tuple:
+def line_fixed(ops: Ops, through: Components, dx: float, dy: float) -> Components:
     """The line through ``through`` along the fixed unit direction (dx, dy) ("∥ the guide")."""
     return (through[0], through[1], dx + 0.0 * through[0], dy + 0.0 * through[0])
 
@@ -167,7 +188,7 @@ def line_fixed(ops: Ops, through: tuple, dx: float, dy: float) -> tuple:
 # --------------------------------------------------------------------------- intersections
 
 
-def intersect_lines(ops: Ops, l1: tuple, l2: tuple) -> tuple:
+def intersect_lines(ops: Ops, l1: Components, l2: Components) -> Components:
     """Intersection of two lines; condition number 1/|sin θ| (θ the angle between them).
 
     Notes
@@ -189,8 +210,8 @@ def intersect_lines(ops: Ops, l1: tuple, l2: tuple) -> tuple:
 
 
 def intersect_circles(
-    ops: Ops, c1: tuple, r1: Any, c2: tuple, r2: Any, side: float, explain: Callable[[Any], str]
-) -> tuple:
+    ops: Ops, c1: Components, r1: Any, c2: Components, r2: Any, side: float, explain: Callable[[Any], str]
+) -> Components:
     """Intersection of circles (c1, r1) and (c2, r2) on the given side of c1→c2 (+1 left, −1 right).
 
     Two circles that just touch (within a relative ``TANGENT_REL``) meet at their tangent
@@ -223,8 +244,8 @@ def intersect_circles(
 
 
 def intersect_circle_line(
-    ops: Ops, c: tuple, r: Any, line: tuple, side: float, explain: Callable[[Any], str]
-) -> tuple:
+    ops: Ops, c: Components, r: Any, line: Components, side: float, explain: Callable[[Any], str]
+) -> Components:
     """Intersection of circle (c, r) and a line, ahead (+1) or behind (−1) the foot of c.
 
     Notes
@@ -248,7 +269,7 @@ def intersect_circle_line(
 # --------------------------------------------------------------------------- laying off
 
 
-def similar_point(ops: Ops, U: tuple, V: tuple, E: tuple, u: tuple, v: tuple) -> tuple:
+def similar_point(ops: Ops, U: Components, V: Components, E: Components, u: Components, v: Components) -> Components:
     """Image e of E such that triangle u v e is similar to U V E, same letter order.
 
     Notes

@@ -182,6 +182,10 @@ class LinkPoint:
     left: float
 
 
+#: Any part of a linkage in its order of assembly: the driver, a dyad or a point on a link.
+Part = Union[Driver, Dyad, LinkPoint]
+
+
 @dataclass(frozen=True)
 class Linkage:
     """A class-II linkage: frame points, a driver, dyads in assembly order, extra points."""

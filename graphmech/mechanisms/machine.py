@@ -24,11 +24,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Literal, Union
+from typing import Literal, Union, cast
 
 import numpy as np
 
-from graphmech.mechanisms.linkage import Linkage
+from graphmech.mechanisms.linkage import Crank, Linkage
 
 TWO_PI = 2.0 * math.pi
 #: A table's argument within this fraction of the table's span of a step is on the step.
@@ -245,7 +245,7 @@ class Machine:
         """+1 if the crank turns CCW, −1 if CW (+1 without a linkage)."""
         if self.linkage is None:
             return 1
-        return 1 if self.linkage.driver.omega >= 0 else -1
+        return 1 if cast(Crank, self.linkage.driver).omega >= 0 else -1  # a machine's linkage is driven by a crank
 
     def crank_angle(self, phi: float) -> float:
         """The crank's absolute angle (rad) at φ from position 1."""

@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -350,7 +350,7 @@ def _segment_values(c: _Compiled, i: int, x: np.ndarray, order: int, left: bool 
     if order == 0:
         return h * f if kind == "rise" else h * (1.0 - f)
     scale = h / c.angles[i] ** order
-    return scale * f if kind == "rise" else -scale * f
+    return cast(np.ndarray, scale * f if kind == "rise" else -scale * f)
 
 
 # --------------------------------------------------------------------------------------------

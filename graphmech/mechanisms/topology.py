@@ -328,7 +328,7 @@ def _grade(links: tuple[str, ...], pairs: list[Pair]) -> int:
     if len(links) == 2:
         return 2
     inner = [p for p in pairs if all(x in links for x in p.links)]
-    adj = {x: set() for x in links}
+    adj: dict[str, set[str]] = {x: set() for x in links}
     for p in inner:
         for a, b in combinations(p.links, 2):
             adj[a].add(b)

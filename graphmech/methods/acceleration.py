@@ -12,7 +12,8 @@ and for coincident points on a sliding pair the Coriolis component a^k = 2ω×v_
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, cast
 
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
@@ -22,7 +23,9 @@ from graphmech.methods.linkage_construction import ACCELERATION_POLE
 from graphmech.methods.quantities import Quantity
 
 if TYPE_CHECKING:
+    from graphmech.geometry.kernels import Components, Ops
     from graphmech.methods.linkage_construction import LinkageConstruction
+    from graphmech.mechanisms.linkage import Part
 
 PANEL = "acceleration"
 POLE = ACCELERATION_POLE  # pole p′, named in linkage_construction: measure reads it too
@@ -40,9 +43,10 @@ def add_pole(b: "LinkageConstruction") -> None:
         b.acc[name] = POLE
 
 
-def add(b: "LinkageConstruction", part: Any) -> None:
-    {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp, RPR: _rpr, RPP: _rpp,
-     LinkPoint: _point}[type(part)](b, part)
+def add(b: "LinkageConstruction", part: Part) -> None:
+    cast("dict[type, Callable[[LinkageConstruction, Part], None]]",
+         {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp, RPR: _rpr, RPP: _rpp,
+          LinkPoint: _point})[type(part)](b, part)
 
 
 def _lbl(b: "LinkageConstruction", slot: str) -> str:
@@ -59,7 +63,7 @@ def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
     while b.g.has(E.own(PANEL, tag)):
         tag += "'"
 
-    def kern(ops: Any, start: tuple, x: tuple, y: tuple, om: tuple) -> tuple:
+    def kern(ops: Ops, start: Components, x: Components, y: Components, om: Components) -> Components:
         w2 = (om[0] * om[1]) ** 2
         return (start[0] + w2 * k * (y[0] - x[0]), start[1] + w2 * k * (y[1] - x[1]))
 
@@ -88,7 +92,7 @@ def _crank(b: "LinkageConstruction", d: Crank) -> None:
     A, B = d.pivot, d.tip
     w2, eps = d.omega ** 2, d.epsilon
 
-    def tip(ops: Any, p: tuple, a: tuple, t: tuple) -> tuple:
+    def tip(ops: Ops, p: Components, a: Components, t: Components) -> Components:
         # a_B = ω²·(A − B) + ε·(B − A) turned 90° CCW
         rx, ry = t[0] - a[0], t[1] - a[1]
         return (p[0] + k * (-w2 * rx - eps * ry), p[1] + k * (-w2 * ry + eps * rx))
@@ -157,7 +161,7 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     n = _normal(b, bar, xbar, Bp)
     lt = _tangential_line(b, n, xbar, Bp)
 
-    def coriolis(ops: Any, start: tuple, vbar: tuple, vblock: tuple, om: tuple) -> tuple:
+    def coriolis(ops: Ops, start: Components, vbar: Components, vblock: Components, om: Components) -> Components:
         w = om[0] * om[1]
         rx, ry = vbar[0] - vblock[0], vbar[1] - vblock[1]
         return (start[0] - kk * w * ry, start[1] + kk * w * rx)

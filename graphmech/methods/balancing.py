@@ -19,7 +19,7 @@ import math
 from graphmech.errors import OutOfDomain
 from graphmech.mechanisms.rotor import RotorMass
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Callable, Sequence
 
 XY = tuple[float, float]
 #: A closing side shorter than this fraction of the polygon's total length is no correction:
@@ -117,6 +117,7 @@ def dynamic_balance(masses: Sequence[RotorMass], z_I: float, z_II: float, r_b: t
     if span == 0.0:
         raise OutOfDomain("the correction planes coincide")
     out = []
+    lever: Callable[[float], float]
     for plane, r, lever in (("I", r_b[0], lambda z: (z_II - z) / span), ("II", r_b[1], lambda z: (z - z_I) / span)):
         vecs = []
         shares = []

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -33,6 +33,9 @@ from graphmech.errors import NoSolution
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.cam import DiscCam, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
+
+if TYPE_CHECKING:
+    from graphmech.geometry.kernels import Components, Ops, Value
 
 PANEL = "profile"
 
@@ -68,12 +71,12 @@ def build_inversion(cam: DiscCam) -> Construction:
     if isinstance(f, TranslatingFollower):
         e = f.offset
 
-        def foot(ops: Any, delta: Any) -> tuple:
+        def foot(ops: Ops, delta: Value) -> Components:
             # K_k: the start foot (e, 0) turned by −rot·δ (the follower turns against the cam)
             c, sn = ops.cos(delta), ops.sin(delta)
             return (e * c + 0.0 * delta, -rot * e * sn)
 
-        def axis(ops: Any, k: tuple, delta: Any) -> tuple:
+        def axis(ops: Ops, k: Components, delta: Value) -> Components:
             c, sn = ops.cos(delta), ops.sin(delta)
             return (k[0], k[1], rot * sn, c)  # the start axis direction (0, 1) turned by −rot·δ
 
@@ -97,10 +100,10 @@ def build_inversion(cam: DiscCam) -> Construction:
         # starts turned ψ0 clockwise from A→O (B above OA) and turns further clockwise.
         turn = -rot if f.sense == "opposite" else rot
 
-        def pivot(ops: Any, delta: Any) -> tuple:
+        def pivot(ops: Ops, delta: Value) -> Components:
             return (a * ops.cos(delta), -rot * a * ops.sin(delta))
 
-        def rocker(ops: Any, ap: tuple, s: Any) -> tuple:
+        def rocker(ops: Ops, ap: Components, s: Value) -> Components:
             ux, uy = -ap[0] / a, -ap[1] / a  # A_k → O
             psi = turn * (psi0 + s)
             c, sn = ops.cos(psi), ops.sin(psi)
@@ -112,14 +115,14 @@ def build_inversion(cam: DiscCam) -> Construction:
                   text="the face: the line through A_k at ∠OA_k(face) = ψ0 ± φ_k, ψ0 = asin(r0/a)",
                   panel=PANEL)
 
-            def foot(ops: Any, line: tuple) -> tuple:
+            def face_foot(ops: Ops, line: Components) -> Components:
                 t = -(line[0] * line[2] + line[1] * line[3])  # (O − A_k)·u
                 return (line[0] + t * line[2], line[1] + t * line[3])
 
-            g.add("B", "point", foot, ("face",), role="result",
+            g.add("B", "point", face_foot, ("face",), role="result",
                   text="B_k: the foot of the perpendicular from O on the face", panel=PANEL, label="B")
         else:
-            def arm(ops: Any, ap: tuple, s: Any) -> tuple:
+            def arm(ops: Ops, ap: Components, s: Value) -> Components:
                 ux, uy = rocker(ops, ap, s)
                 return (ap[0] + l * ux, ap[1] + l * uy)
 
@@ -236,7 +239,7 @@ def near(delta: np.ndarray, angles: np.ndarray, tol: float) -> np.ndarray:
     if angles.size == 0:
         return np.zeros(delta.shape, dtype=bool)
     d = np.abs((delta[:, None] - angles[None, :] + math.pi) % math.tau - math.pi)
-    return (d <= tol).any(axis=1)
+    return cast(np.ndarray, (d <= tol).any(axis=1))
 
 
 def rigid_corners(cam: DiscCam) -> np.ndarray:

@@ -119,7 +119,7 @@ def grashof_ranges(b: float, c: float, d: float) -> list[tuple[str, float, float
     s, m, l = others
     limit = s + m + l
     # a shortest, a longest, a in the middle; and below l − s − m the links cannot close at all
-    cuts = {0.0, limit, s + m - l, m + l - s, s + l - m, l - s - m}
+    cuts: set[float] | list[float] = {0.0, limit, s + m - l, m + l - s, s + l - m, l - s - m}
     cuts = sorted(x for x in cuts if 0.0 <= x <= limit)
     out: list[tuple[str, float, float]] = []
     for lo, hi in zip(cuts[:-1], cuts[1:]):

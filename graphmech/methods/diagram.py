@@ -6,13 +6,16 @@ Each dyad's middle joint is found the draftsman's way: as the intersection of tw
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, cast
 
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
 
 if TYPE_CHECKING:
+    from graphmech.geometry.kernels import Components, Ops
     from graphmech.methods.linkage_construction import LinkageConstruction
+    from graphmech.mechanisms.linkage import Part
 
 PANEL = "mechanism"
 
@@ -27,15 +30,16 @@ def add_frame(b: "LinkageConstruction") -> None:
                                text=f"frame point {name}", panel=PANEL, label=name)
 
 
-def add(b: "LinkageConstruction", part: Any) -> None:
-    {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp, RPR: _rpr, RPP: _rpp,
-     LinkPoint: _point}[type(part)](b, part)
+def add(b: "LinkageConstruction", part: Part) -> None:
+    cast("dict[type, Callable[[LinkageConstruction, Part], None]]",
+         {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp, RPR: _rpr, RPP: _rpp,
+          LinkPoint: _point})[type(part)](b, part)
 
 
 def _crank(b: "LinkageConstruction", d: Crank) -> None:
     r = d.length / b.mu_l
 
-    def tip(ops: Any, phi: Any, a: tuple) -> tuple:
+    def tip(ops: Ops, phi: Any, a: Components) -> Components:
         return (a[0] + r * ops.cos(phi), a[1] + r * ops.sin(phi))
 
     b.mech[d.tip] = b.g.add(d.tip, "point", tip, (b.param, b.mech[d.pivot]), role="given",
@@ -50,7 +54,7 @@ def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
     b.slider_dir[d.point] = (gx, gy)
     b.translating.add(d.link)
 
-    def point(ops: Any, s: Any) -> tuple:
+    def point(ops: Ops, s: Any) -> Components:
         return (ox + s / mu * gx, oy + s / mu * gy)
 
     b.mech[d.point] = b.g.add(d.point, "point", point, (b.param,), role="given",
@@ -71,7 +75,7 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
             return f"{dd} < |l{i} − l{j}| = {abs(r1 - r2) * mu:.4g} m"
         return f"{dd} > {s}" if not hasattr(d, "shape") else f"{dd} is not between |l{i} − l{j}| and {s}"
 
-    def joint(ops: Any, p: tuple, q: tuple) -> tuple:
+    def joint(ops: Ops, p: Components, q: Components) -> Components:
         return K.intersect_circles(ops, p, r1, q, r2, side, explain)
 
     b.mech[C] = b.g.add(C, "point", joint, (b.mech[P], b.mech[Q]), role="given",
@@ -79,7 +83,7 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
                         panel=PANEL, label=C)
 
 
-def _guide_line(b: "LinkageConstruction", guide: Any) -> tuple:
+def _guide_line(b: "LinkageConstruction", guide: Any) -> Components:
     gx, gy = guide.direction
     return (*b.to_drawing(guide.through), gx, gy)
 
@@ -98,7 +102,7 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
             return f"{P} is farther than l{y.links[0]} from the guide"
         return f"{P} is {e * mu:.4g} m from the guide > l{y.links[0]} = {y.length:.4g} m"
 
-    def joint(ops: Any, p: tuple) -> tuple:
+    def joint(ops: Ops, p: Components) -> Components:
         return K.intersect_circle_line(ops, p, r, line, side, explain)
 
     b.mech[C] = b.g.add(C, "point", joint, (b.mech[P],), role="given",
@@ -121,7 +125,7 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     b.slider_dir[C] = y.guide.direction
     b.translating.update(y.links)
 
-    def joint(ops: Any, p: tuple) -> tuple:
+    def joint(ops: Ops, p: Components) -> Components:
         return K.intersect_lines(ops, K.line_fixed(ops, p, sx, sy), line)
 
     b.mech[C] = b.g.add(C, "point", joint, (b.mech[P],), role="given",
@@ -134,7 +138,7 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
     mu = b.mu_l
     along, left = pt.along / mu, pt.left / mu
     if len(pt.base) == 1:
-        def fixed(ops: Any, u: tuple) -> tuple:
+        def fixed(ops: Ops, u: Components) -> Components:
             return (u[0] + along, u[1] + left)
 
         b.mech[pt.name] = b.g.add(pt.name, "point", fixed, (b.mech[pt.base[0]],), role="given",
@@ -142,7 +146,7 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
         return
     U, V = pt.base
 
-    def placed(ops: Any, u: tuple, v: tuple) -> tuple:
+    def placed(ops: Ops, u: Components, v: Components) -> Components:
         ux, uy, _ = K.unit(ops, u, v)
         return (u[0] + along * ux - left * uy, u[1] + along * uy + left * ux)
 

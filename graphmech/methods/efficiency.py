@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from collections.abc import Callable
 from typing import Literal, Sequence
 
 from graphmech.errors import DegenerateConstruction, OutOfDomain
@@ -321,7 +322,7 @@ def wedge_locking_angle(beta: float, phi: float) -> float:
 # ---------------------------------------------------------------------------- limiting angles
 
 
-def limiting_angle(eta_of: "callable[[float], float]", lo: float, hi: float) -> float:
+def limiting_angle(eta_of: Callable[[float], float], lo: float, hi: float) -> float:
     """The angle in (lo, hi) where η(angle) changes sign, by bisection on the construction.
 
     The textbook gives the self-locking limit in closed form (α = φ for the incline, ψ = φv for

@@ -10,16 +10,19 @@ never meets them. Lines name their points with a separator (``⟂B·CD``), so B 
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from graphmech.methods.linkage_construction import own
 
 if TYPE_CHECKING:
+    from graphmech.construction.graph import Kind, Role
+    from graphmech.geometry.kernels import Components
     from graphmech.methods.linkage_construction import LinkageConstruction
 
 
-def vector(b: "LinkageConstruction", panel: str, start: str, end: str, role: str = "result",
-           kind: str = "vector") -> None:
+def vector(b: "LinkageConstruction", panel: str, start: str, end: str, role: Role = "result",
+           kind: Kind = "vector") -> None:
     """A vector start→end drawn with an arrowhead (``kind="segment"``: a plain thin segment,
     e.g. the sides of an image triangle)."""
     name = f"{panel[0]}:{start}->{end}"
@@ -27,15 +30,15 @@ def vector(b: "LinkageConstruction", panel: str, start: str, end: str, role: str
         b.g.add(name, kind, None, (start, end), role=role, text=f"{kind} {start}{end}", panel=panel)
 
 
-def image(b: "LinkageConstruction", panel: str, images: dict[str, str], point: str, lab: str, kernel: Any,
-          inputs: tuple, text: str) -> str:
+def image(b: "LinkageConstruction", panel: str, images: dict[str, str], point: str, lab: str, kernel: Callable[..., Components],
+          inputs: tuple[str, ...], text: str) -> str:
     """The image of a point in a polygon (its letter ``lab``: b, c′ …), found by ``kernel``."""
     images[point] = b.g.add(f"{panel[0]}:{lab}", "point", kernel, inputs, role="result", text=text,
                             panel=panel, label=lab)
     return images[point]
 
 
-def line(b: "LinkageConstruction", panel: str, name: str, kernel: Any, inputs: tuple, text: str) -> str:
+def line(b: "LinkageConstruction", panel: str, name: str, kernel: Callable[..., Components], inputs: tuple[str, ...], text: str) -> str:
     """A construction line ("through b draw ⟂ BC"), drawn thin through the points it carries."""
     return b.g.add(f"{panel[0]}:{name}", "line", kernel, inputs, role="construction", text=text, panel=panel)
 

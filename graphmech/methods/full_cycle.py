@@ -27,6 +27,7 @@ from typing import Sequence
 import numpy as np
 
 from graphmech.errors import DegenerateConstruction
+from graphmech.geometry.kernels import Components
 from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, SliderInput
 from graphmech.methods.chords import frozen_array
 from graphmech.methods.graphical_differentiation import Differentiation, differentiate_cycle
@@ -171,8 +172,8 @@ class FullCycle:
         return int(self.angles.size)
 
 
-def _xy(values: dict[str, object], step: str, n: int) -> np.ndarray:
-    x, y = values[step]  # type: ignore[misc]
+def _xy(values: dict[str, Components], step: str, n: int) -> np.ndarray:
+    x, y = values[step]
     return frozen_array(np.column_stack([np.broadcast_to(np.asarray(x, dtype=float), (n,)),
                                          np.broadcast_to(np.asarray(y, dtype=float), (n,))]))
 
@@ -234,6 +235,7 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
     # position (a change point: two of its lines parallel) only leaves that polygon out.
     panel_of = {st.text: st.panel for st in plan.steps}
     polygon_failures: dict[int, str] = {}
+    i: int | np.intp
     for step, (mask, why) in batch.failures.items():
         for i in np.flatnonzero(mask):
             i = int(i)

@@ -32,8 +32,9 @@ reaction ``R_ij`` is the force of link i on link j.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -217,7 +218,7 @@ class Couple:
 
 
 def _cross(u: np.ndarray, w: np.ndarray) -> np.ndarray:
-    return (np.conj(u) * w).imag
+    return cast(np.ndarray, (np.conj(u) * w).imag)
 
 
 #: A relative rotation or sliding speed below this fraction of the mechanism's largest is no
@@ -232,7 +233,7 @@ def _sign(x: np.ndarray, scale: Any = 0.0) -> np.ndarray:
 
 def _largest(rates: dict[str, np.ndarray], n: int) -> np.ndarray:
     """The largest |value| among the links (or points) at each position."""
-    return np.max(np.abs(np.stack(list(rates.values()) or [np.zeros(n)])), axis=0)
+    return cast(np.ndarray, np.max(np.abs(np.stack(list(rates.values()) or [np.zeros(n)])), axis=0))
 
 
 @dataclass
@@ -441,7 +442,7 @@ class _Friction:
             return np.zeros(n)
         r = np.abs(self.previous.reactions[(joint.a, joint.b)])
         rel = omega.get(joint.b, np.zeros(n)) - omega.get(joint.a, np.zeros(n))
-        return -rho * r * _sign(rel, _largest(omega, n))
+        return cast(np.ndarray, -rho * r * _sign(rel, _largest(omega, n)))
 
 
 def _tangential(loads: _Loads, link: str, c: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -452,6 +453,10 @@ def _tangential(loads: _Loads, link: str, c: np.ndarray, end: np.ndarray) -> tup
     safe = np.where(length > 0, length, 1.0)
     e = d / safe
     return loads.moment_about(link, c) / safe * (1j * e), e
+
+
+#: Reactions (or friction moments) by joint: (a, b) → the force of a on b at each position.
+_Reactions = dict[tuple[str, str], np.ndarray]
 
 
 def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia: dict[str, InertiaLoad],
@@ -514,10 +519,10 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
         s = rt_p + known_i + known_k
         if isinstance(y, RRR):
             rt_q, e_q = _tangential(loads, k, C, P[y.q])
-            chain.append((f"R^t_{jq.a}{k}", rt_q))
+            chain.append((f"R^t_{cast(Joint, jq).a}{k}", rt_q))
             s = s + rt_q
             u_close = e_q  # through the end: ∥ QC
-            close_name = f"R^n_{jq.a}{k}"
+            close_name = f"R^n_{cast(Joint, jq).a}{k}"
         else:
             # The guide's reaction: ⟂ guide, tilted by φ against the sliding velocity.
             t = complex(math.cos(y.guide.angle), math.sin(y.guide.angle))
@@ -533,7 +538,7 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
         closing_sin = np.abs(det)
         closing[f"group {i}–{k}"] = closing_sin
         _guard_parallel(closing_sin, kin.valid, f"group {i}–{k}: the force polygon's closing lines "
-                        f"(∥ {y.p}{y.c} and {'∥ ' + y.q + y.c if jq else '⟂ guide'}) are parallel")
+                        f"(∥ {y.p}{y.c} and {'∥ ' + cast(RRR, y).q + y.c if jq else '⟂ guide'}) are parallel")
         safe = np.where(closing_sin > PARALLEL_SIN, det, 1.0)
         x = _cross(-s, u_close) / safe
         yv = _cross(e_p, -s) / safe
@@ -551,8 +556,8 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
         couples = [*loads.couples.get(i, []), *loads.couples.get(k, [])]
         if isinstance(y, RRR):
             r_q = rt_q + r_close
-            found(jq, r_q)
-            body += [Force(f"R_{jp.a}{i}", r_p, P[y.p], y.p), Force(f"R_{jq.a}{k}", r_q, P[y.q], y.q)]
+            found(cast(Joint, jq), r_q)  # an RRR group has its third joint Q
+            body += [Force(f"R_{jp.a}{i}", r_p, P[y.p], y.p), Force(f"R_{cast(Joint, jq).a}{k}", r_q, P[y.q], y.q)]
         else:
             # Line of action of the guide's reaction: the slider's moments about C.
             m_guide = -loads.moment_about(k, C)  # R_ik acts at C itself
@@ -586,8 +591,9 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
                                 0, fmoments, closing)
 
 
-def _slider_driver(d: SliderInput, linkage: Linkage, kin: PolygonKinematics, loads: _Loads, reactions: dict,
-                   joints: list, guides: list, groups: list, inertia: dict, fmoments: dict, closing: dict,
+def _slider_driver(d: SliderInput, linkage: Linkage, kin: PolygonKinematics, loads: _Loads, reactions: _Reactions,
+                   joints: list[Joint], guides: list[GuideReaction], groups: list[GroupPolygon],
+                   inertia: dict[str, InertiaLoad], fmoments: _Reactions, closing: dict[str, np.ndarray],
                    fr: _Friction, keep_groups: bool) -> KinetostaticSolution:
     """A driving slider: the balancing force F_b along its guide and the guide's reaction ⟂ it
     (tilted by φ with friction) close its polygon; the guide reaction's line of action from the
@@ -618,8 +624,9 @@ def _slider_driver(d: SliderInput, linkage: Linkage, kin: PolygonKinematics, loa
                                 0, fmoments, closing, f_b)
 
 
-def _rpr_group(y: RPR, kin: PolygonKinematics, loads: _Loads, owner: dict[str, str], friction: Any,
-               found: Any, reactions: dict, joints: list, groups: list, closing: dict, fr: _Friction,
+def _rpr_group(y: RPR, kin: PolygonKinematics, loads: _Loads, owner: dict[str, str], friction: Callable[[Joint], None],
+               found: Callable[[Joint, np.ndarray], None], reactions: _Reactions, joints: list[Joint],
+               groups: list[GroupPolygon], closing: dict[str, np.ndarray], fr: _Friction,
                keep_groups: bool) -> None:
     """A guide bar b pivoted at P and a block k pivoted at X sliding on it (导杆, 摇块).
 
@@ -668,8 +675,9 @@ def _rpr_group(y: RPR, kin: PolygonKinematics, loads: _Loads, owner: dict[str, s
                                    (f"R_{jb.a}{b}",), np.ones(n)))
 
 
-def _rpp_group(y: RPP, kin: PolygonKinematics, loads: _Loads, owner: dict[str, str], friction: Any,
-               found: Any, reactions: dict, joints: list, guides: list, groups: list, closing: dict,
+def _rpp_group(y: RPP, kin: PolygonKinematics, loads: _Loads, owner: dict[str, str], friction: Callable[[Joint], None],
+               found: Callable[[Joint, np.ndarray], None], reactions: _Reactions, joints: list[Joint],
+               guides: list[GuideReaction], groups: list[GroupPolygon], closing: dict[str, np.ndarray],
                fr: _Friction, frame: str, keep_groups: bool) -> None:
     """A block i pivoted at P slides in the straight slot of j, which slides on a frame guide.
 
@@ -691,7 +699,7 @@ def _rpp_group(y: RPP, kin: PolygonKinematics, loads: _Loads, owner: dict[str, s
         f = fr.f.get(link, 0.0) if fr.previous is not None else 0.0
         sigma = np.where(fr.normal.get(link, np.ones(n)) >= 0, 1.0, -1.0)
         u = 1j * t - f * sigma * _sign(v_rel, speed) * t
-        return u / np.abs(u)
+        return cast(np.ndarray, u / np.abs(u))
 
     # the slot on the block (against the block's sliding in the slot), the guide on j
     u1 = tilted(t1, i, (np.conj(t1) * (kin.vel[y.coincident[0]] - kin.vel[y.coincident[1]])).real)

@@ -7,7 +7,8 @@ the relative vector turns about its base point), a slider's velocity along its g
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from graphmech.geometry.kernels import cross
 from graphmech.methods.elements import direction
@@ -15,11 +16,13 @@ from graphmech.methods.linkage_construction import ACCELERATION_POLE, VELOCITY_P
 from graphmech.methods.quantities import Quantity
 
 if TYPE_CHECKING:
+    from graphmech.geometry.kernels import Components, Ops
     from graphmech.methods.linkage_construction import LinkageConstruction
+    from graphmech.methods.quantities import Exact
 
 
-def _add(b: "LinkageConstruction", name: str, unit: str, kernel: Any, inputs: tuple, exact: tuple,
-         panel: str, segment: tuple = ()) -> str:
+def _add(b: "LinkageConstruction", name: str, unit: str, kernel: Callable[..., Components], inputs: tuple[str, ...],
+         exact: Exact, panel: str, segment: tuple[str, ...] = ()) -> str:
     slot = f"m:{name}"
     if not b.g.has(slot):
         b.g.add(slot, "scalar", kernel, inputs, role="hidden", text=f"measure {name}", panel=panel)
@@ -32,10 +35,10 @@ def _label(b: "LinkageConstruction", slot: str) -> str:
 
 
 def _segment(start: str, end: str, scale: float, name: str, b: "LinkageConstruction",
-             unit: str, exact: tuple, panel: str) -> str:
+             unit: str, exact: Exact, panel: str) -> str:
     """A plain drawn length |start end| × scale."""
 
-    def kern(ops: Any, s: tuple, e: tuple) -> tuple:
+    def kern(ops: Ops, s: Components, e: Components) -> Components:
         return (ops.hypot(e[0] - s[0], e[1] - s[1]), scale)
 
     return _add(b, name, unit, kern, (start, end), exact, panel, (_label(b, start), _label(b, end)))
@@ -48,7 +51,7 @@ def omega(b: "LinkageConstruction", link: str, U: str, V: str) -> None:
     """ω of a link read off the polygon: ω = (UV × uv)/|UV|² · μv/μl (sense: uv turned about u)."""
     mv, ml = b.scales["v"], b.mu_l
 
-    def kern(ops: Any, d: tuple, iu: tuple, iv: tuple) -> tuple:
+    def kern(ops: Ops, d: Components, iu: Components, iv: Components) -> Components:
         return (cross(d[0], d[1], iv[0] - iu[0], iv[1] - iu[1]), mv / (d[2] * ml))
 
     b.omega[link] = _add(b, f"omega_{link}", "rad/s", kern, (direction(b, U, V), b.vel[U], b.vel[V]),
@@ -59,7 +62,7 @@ def alpha(b: "LinkageConstruction", link: str, U: str, V: str, n: str, end: str)
     """α of a link from its tangential component n→end: α = (UV × a^t)/|UV|² · μa/μl."""
     ma, ml = b.scales["a"], b.mu_l
 
-    def kern(ops: Any, d: tuple, s: tuple, e: tuple) -> tuple:
+    def kern(ops: Ops, d: Components, s: Components, e: Components) -> Components:
         return (cross(d[0], d[1], e[0] - s[0], e[1] - s[1]), ma / (d[2] * ml))
 
     b.alpha[link] = _add(b, f"alpha_{link}", "rad/s²", kern, (direction(b, U, V), n, end),
@@ -91,7 +94,7 @@ def _speed(b: "LinkageConstruction", x: str, img: str, pole: str, scale: float, 
         return
     gx, gy = g
 
-    def kern(ops: Any, p: tuple, e: tuple) -> tuple:
+    def kern(ops: Ops, p: Components, e: Components) -> Components:
         return ((e[0] - p[0]) * gx + (e[1] - p[1]) * gy, scale)
 
     kind = "slide_v" if prefix == "v" else "slide_a"
@@ -128,7 +131,7 @@ def link_angle(b: "LinkageConstruction", link: str) -> None:
         return
     U, V = pts[0], pts[1]
 
-    def kern(ops: Any, u: tuple, v: tuple) -> tuple:
+    def kern(ops: Ops, u: Components, v: Components) -> Components:
         if ops.batch:
             import numpy as np
 
@@ -138,6 +141,6 @@ def link_angle(b: "LinkageConstruction", link: str) -> None:
     _add(b, f"theta_{link}", "deg", kern, (b.mech[U], b.mech[V]), ("angle", link), "mechanism")
 
 
-def component(b: "LinkageConstruction", name: str, start: str, end: str, exact: tuple) -> None:
+def component(b: "LinkageConstruction", name: str, start: str, end: str, exact: Exact) -> None:
     """A laid-off or found component (normal, tangential, Coriolis, relative) in the acceleration polygon."""
     _segment(start, end, b.scales["a"], name, b, "m/s²", exact, "acceleration")

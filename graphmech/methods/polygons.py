@@ -85,10 +85,10 @@ def add_point_quantities(b: LinkageConstruction) -> None:
     for name, q in list(b.quantities.items()):  # many books write ε for angular acceleration
         if name.startswith("alpha_"):
             b.quantity(replace(q, name="epsilon_" + name[len("alpha_"):]))
-    for y in b.linkage.dyads:
-        if isinstance(y, RPR):  # the bar's length between the pivots, l_BC, as the book reads it
-            measure.length(b, y.bar_pivot, y.block_pivot)
-            measure.length(b, y.block_pivot, y.bar_pivot)
+    for dyad in b.linkage.dyads:
+        if isinstance(dyad, RPR):  # the bar's length between the pivots, l_BC, as the book reads it
+            measure.length(b, dyad.bar_pivot, dyad.block_pivot)
+            measure.length(b, dyad.block_pivot, dyad.bar_pivot)
 
 
 __all__ = ["LinkageConstruction", "build_polygons", "PANELS", "RRR", "RRP", "RPR", "RPP"]

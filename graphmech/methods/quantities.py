@@ -8,6 +8,11 @@ check understands, which exact value it must equal (it never says *how* to compu
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
+
+#: What a quantity equals, read by the exact solution: a kind and its arguments, e.g.
+#: ``("speed", "C")``, ``("slide_v", "C", gx, gy)``.
+Exact = tuple[Any, ...]  # names (str) and, for a slide, the guide's direction (float)
 
 #: Units of the kinematic quantities, by the name's prefix.
 UNITS = {
@@ -44,6 +49,6 @@ class Quantity:
     name: str
     unit: str
     slot: str
-    exact: tuple
+    exact: Exact
     panel: str
     segment: tuple[str, ...] = ()

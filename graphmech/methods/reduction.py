@@ -16,10 +16,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import cast
 
 import numpy as np
 
 from graphmech.errors import DegenerateConstruction
+from graphmech.mechanisms.linkage import Crank
 from graphmech.mechanisms.machine import CrankMoment, LinkMoment, Machine, SliderLoad, Table
 from graphmech.methods.polygons import LinkageConstruction, build_polygons
 from graphmech.methods.velocity import POLE
@@ -162,7 +164,7 @@ def reduce_to_crank(machine: Machine, phi: np.ndarray, scales: dict[str, float])
         return Reduction(phi, J, M, valid, tuple(reasons), strokes, tuple(sorted(on_steps)))
 
     b = build_polygons(link, {"l": scales["l"], "v": scales["v"], "a": scales.get("a", 1.0)})
-    w1 = abs(link.driver.omega)
+    w1 = abs(cast(Crank, link.driver).omega)  # a machine's linkage is driven by a crank
     mv = b.scales["v"]
     targets = [POLE]
     for mass in machine.masses:

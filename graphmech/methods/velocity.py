@@ -10,7 +10,8 @@ Points fixed on a link get their image by similarity (the velocity image, 速度
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, cast
 
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
@@ -19,7 +20,9 @@ from graphmech.methods import measure
 from graphmech.methods.linkage_construction import VELOCITY_POLE
 
 if TYPE_CHECKING:
+    from graphmech.geometry.kernels import Components, Ops
     from graphmech.methods.linkage_construction import LinkageConstruction
+    from graphmech.mechanisms.linkage import Part
 
 PANEL = "velocity"
 POLE = VELOCITY_POLE  # pole p, named in linkage_construction: measure reads it too
@@ -37,9 +40,10 @@ def add_pole(b: "LinkageConstruction") -> None:
         b.vel[name] = POLE  # fixed points have zero velocity: their image is the pole
 
 
-def add(b: "LinkageConstruction", part: Any) -> None:
-    {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp, RPR: _rpr, RPP: _rpp,
-     LinkPoint: _point}[type(part)](b, part)
+def add(b: "LinkageConstruction", part: Part) -> None:
+    cast("dict[type, Callable[[LinkageConstruction, Part], None]]",
+         {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp, RPR: _rpr, RPP: _rpp,
+          LinkPoint: _point})[type(part)](b, part)
 
 
 def _img_label(b: "LinkageConstruction", point: str) -> str:
@@ -49,7 +53,7 @@ def _img_label(b: "LinkageConstruction", point: str) -> str:
 def _crank(b: "LinkageConstruction", d: Crank) -> None:
     k = d.omega * b.mu_l / b.scales["v"]  # drawing mm of pb per drawing mm of AB
 
-    def tip(ops: Any, p: tuple, a: tuple, t: tuple) -> tuple:
+    def tip(ops: Ops, p: Components, a: Components, t: Components) -> Components:
         return (p[0] - k * (t[1] - a[1]), p[1] + k * (t[0] - a[0]))
 
     img = E.image(b, PANEL, b.vel, d.tip, label(d.tip), tip, (POLE, b.mech[d.pivot], b.mech[d.tip]),

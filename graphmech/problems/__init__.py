@@ -18,7 +18,7 @@ import dataclasses
 from typing import TYPE_CHECKING, Any
 
 from graphmech.problems import balancing, cam, cycle, efficiency, flywheel, forces, linkage, structure
-from graphmech.problems.kind import Extra, Footer, Kind
+from graphmech.problems.kind import Analysis, Extra, Footer, Kind
 
 if TYPE_CHECKING:  # annotations only: importing the registry stays light
     from graphmech.drawing.primitives import Sheet
@@ -28,13 +28,14 @@ if TYPE_CHECKING:  # annotations only: importing the registry stays light
 #: Every kind, by name, in the order a scene file is matched against them: the first whose
 #: tables the file has reads it (a structure scene may hold a linkage's tables too; a scene
 #: that poses nothing else is a linkage).
-KINDS: dict[str, Kind] = {k.name: k for k in (
+#: (Each kind has its own problem and analysis types; the registry holds them side by side.)
+KINDS: dict[str, Kind[Any, Any]] = {k.name: k for k in (
     structure.KIND, forces.KIND, efficiency.KIND, balancing.KIND, cam.KIND, flywheel.KIND, cycle.KIND,
     linkage.KIND,
 )}
 
 
-def kind_of(scene: Scene[Any]) -> Kind:
+def kind_of(scene: Scene[Any]) -> Kind[Any, Any]:
     """The kind of problem ``scene`` poses (exactly one: the scene reader refuses mixtures)."""
     return KINDS[scene.kind]
 
@@ -49,7 +50,7 @@ def with_precision(scene: Scene[Any], precision_mm: float | None) -> Scene[Any]:
     return scene if precision_mm is None else dataclasses.replace(scene, precision_mm=precision_mm)
 
 
-def check(scene: Scene[Any], extra: Extra = ()) -> tuple[Any, list[Verdict], dict[str, Any], list[str]]:
+def check(scene: Scene[Any], extra: Extra = ()) -> tuple[Analysis, list[Verdict], dict[str, Any], list[str]]:
     """Analyse a scene and judge its measured values: (analysis, verdicts, JSON extras, text lines)."""
     return kind_of(scene).check(scene, extra)
 

@@ -11,16 +11,19 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 import numpy as np
 
 from graphmech import tolerances as T
 from graphmech.accuracy import CONSTRUCTION
 from graphmech.errors import DegenerateConstruction
+
+if TYPE_CHECKING:
+    from graphmech.problems.reader import Scene
 
 @dataclass(frozen=True)
 class Row:
@@ -111,12 +114,31 @@ def is_segment(name: str) -> bool:
     return "_" not in name and len(tokens) == 2 and "".join(tokens) == name
 
 
-def measured_entries(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[tuple[str, str, float]]:
+def measured_entries(scene: Scene[object], extra: tuple[tuple[str, float], ...] = ()) -> list[tuple[str, str, float]]:
     """(key path for messages, name, value) of the scene's [measured] table and the command line's."""
     return [(f"measured.{n}", n, v) for n, v in scene.measured] + [(f"--measured {n}", n, v) for n, v in extra]
 
 
-def refuse_non_finite(rows: list[Any]) -> None:
+class Analysis(Protocol):
+    """What a kind's check returns (a CamAnalysis, a FlywheelAnalysis …), as the command line and
+    the JSON read it: the scene, the table's rows, the warnings and the scales μ."""
+
+    @property
+    def scene(self) -> Scene[Any]: ...
+    @property
+    def rows(self) -> Sequence[Row]: ...
+    @property
+    def warnings(self) -> Sequence[str]: ...
+    @property
+    def scales(self) -> dict[str, float]: ...
+    def scale_notes(self) -> list[str]: ...
+
+
+#: A kind's own analysis.
+A = TypeVar("A", bound=Analysis)
+
+
+def refuse_non_finite(rows: Sequence[Row]) -> None:
     """A value that left double precision (J_F for δ = 5e-324) is refused in words, whatever the
     kind: never an inf or NaN in the table or the JSON."""
     for r in rows:
@@ -127,7 +149,7 @@ def refuse_non_finite(rows: list[Any]) -> None:
                                                  "at more positions or divisions breaks down")
 
 
-def finite(an: Any) -> Any:
+def finite(an: A) -> A:
     """The analysis ``an``, its rows all finite (else refused in words): for a drawing as for a table."""
     refuse_non_finite(an.rows)
     return an

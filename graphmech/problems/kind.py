@@ -14,9 +14,9 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
-from graphmech.problems.judging import finite
+from graphmech.problems.judging import A, Analysis, finite
 
 if TYPE_CHECKING:  # for the annotations only: the registry stays light at start-up
     from graphmech.drawing.primitives import Sheet
@@ -31,16 +31,20 @@ Footer = tuple[str, ...]
 Bench = tuple[list[dict[str, Any]], list[str]]
 
 
-def _no_extras(an: Any) -> dict[str, Any]:
+#: A kind's problem, ``Scene.problem`` (a CamScene, a FlywheelScene …).
+P = TypeVar("P")
+
+
+def _no_extras(an: Analysis) -> dict[str, Any]:
     return {}
 
 
-def _no_lines(an: Any) -> list[str]:
+def _no_lines(an: Analysis) -> list[str]:
     return []
 
 
 @dataclass(frozen=True)
-class Kind:
+class Kind(Generic[P, A]):
     """One kind of problem: how a scene poses it, how it is read, checked, drawn and timed.
 
     name : the kind's name, ``Scene.kind`` (``"cam"``).
@@ -60,12 +64,12 @@ class Kind:
 
     name: str
     tables: tuple[str, ...]
-    read: Callable[[Mapping[str, Any], str, Reader, Mapping[str, int]], Scene[Any]]
-    analyse: Callable[[Scene[Any], Extra], Any]
-    judge: Callable[[Any, Extra], list[Verdict]]
-    sheet: Callable[[Scene[Any], Footer], tuple[Sheet, list[str]]]
-    extras: Callable[[Any], dict[str, Any]] = _no_extras
-    lines: Callable[[Any], list[str]] = _no_lines
+    read: Callable[[Mapping[str, Any], str, Reader, Mapping[str, int]], Scene[P]]
+    analyse: Callable[[Scene[P], Extra], A]
+    judge: Callable[[A, Extra], list[Verdict]]
+    sheet: Callable[[Scene[P], Footer], tuple[Sheet, list[str]]]
+    extras: Callable[[A], dict[str, Any]] = _no_extras
+    lines: Callable[[A], list[str]] = _no_lines
     bench: Callable[[bool], Bench] | None = None
     poses: Callable[[Mapping[str, Any]], bool] | None = None
     mixture: Callable[[Mapping[str, Any]], tuple[str, str] | None] | None = None
@@ -74,11 +78,11 @@ class Kind:
         """Whether the scene file ``data`` poses this kind of problem."""
         return self.poses(data) if self.poses is not None else any(t in data for t in self.tables)
 
-    def check(self, scene: Scene[Any], extra: Extra = ()) -> tuple[Any, list[Verdict], dict[str, Any], list[str]]:
+    def check(self, scene: Scene[P], extra: Extra = ()) -> tuple[A, list[Verdict], dict[str, Any], list[str]]:
         """Analyse a scene and judge its measured values: (analysis, verdicts, JSON extras, text
         lines). Whatever the analysis finds is finite, or refused in words."""
         an = finite(self.analyse(scene, tuple(extra)))
         return an, self.judge(an, tuple(extra)), self.extras(an), self.lines(an)
 
 
-__all__ = ["Bench", "Extra", "Footer", "Kind"]
+__all__ = ["Analysis", "Bench", "Extra", "Footer", "Kind"]

@@ -13,7 +13,7 @@ import difflib
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Generic, Iterable, Mapping, NoReturn, TypeVar
+from typing import Any, Generic, Iterable, Mapping, NoReturn, TypeVar, cast
 
 from graphmech.errors import SceneError
 from graphmech.scales import PAPER, scale_out_of_range
@@ -42,7 +42,7 @@ class Page:
 
 
 #: The part of a scene its kind reads from its own tables (a CamScene, a FlywheelScene …).
-P = TypeVar("P")
+P = TypeVar("P", covariant=True)  # a Scene[CamScene] is a Scene[object]: the scene is frozen
 
 
 @dataclass(frozen=True)
@@ -80,7 +80,7 @@ class Scene(Generic[P]):
         The sheet.
     kind : str
         The kind of problem the scene poses, a name in :data:`graphmech.problems.KINDS`.
-    problem : P or None
+    problem : P
         What the kind read from its own tables: a ``CamScene`` for a cam, a ``FlywheelScene``,
         ``ForceScene``, ``CycleScene``, ``EfficiencyProblem``, ``BalancingProblem``,
         ``StructureScene`` (each in ``graphmech/problems/<kind>/scene.py``); None for a plain
@@ -98,7 +98,7 @@ class Scene(Generic[P]):
     precision_mm: float = DRAWING_PRECISION_MM
     page: Page = Page()
     kind: str = "linkage"
-    problem: P | None = None
+    problem: P = cast(P, None)  # None for a plain linkage, a Scene[None]
 
 
 # --------------------------------------------------------------------------------------------
@@ -979,7 +979,7 @@ def pole_distances(r: Reader, count: int = 1) -> tuple[float, ...] | None:
     return tuple(xs)
 
 
-def page_size(scene: Any) -> tuple[float, float]:
+def page_size(scene: Scene[object]) -> tuple[float, float]:
     """The scene's sheet, (width, height) in mm."""
     size = getattr(scene.page, "size", (297.0, 210.0))
     return PAPER[size] if isinstance(size, str) else (float(size[0]), float(size[1]))

@@ -27,7 +27,8 @@ import math
 from dataclasses import dataclass
 from typing import Sequence
 
-from graphmech.render.labels import Box, text_box_size
+from graphmech.drawing.lettering import text_box_size
+from graphmech.render.labels import Box
 from graphmech.drawing.primitives import (
     XY,
     ArcArrow,
@@ -280,9 +281,10 @@ def layout_sheet(
         if panel.row is not None:
             explicit.setdefault(panel.row, []).append(i)
     for i, (_, _, fw, _) in enumerate(sizes):
-        if sheet.panels[i].row is not None:
-            if i == explicit[sheet.panels[i].row][0]:
-                rows.append(explicit[sheet.panels[i].row])
+        row = sheet.panels[i].row
+        if row is not None:
+            if i == explicit[row][0]:
+                rows.append(explicit[row])
             continue
         if rows and width + style.panel_gap + fw <= avail_w + 1e-9:
             rows[-1].append(i)
@@ -318,7 +320,7 @@ def layout_sheet(
             dy = ftop + draw[3]
             cx = x + fw / 2.0
             base = ftop + dh + CAPTION_GAP
-            caption = []
+            caption: list[CaptionLine] = []
             for text, size in lines:
                 base += size * (style.line_gap - 1.0) if caption else 0.0
                 base += size

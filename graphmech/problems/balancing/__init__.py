@@ -4,30 +4,38 @@ of balance. Read by the efficiency kind's reader (both are problems of forces al
 """
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, cast
 
 from graphmech.problems.kind import Extra, Footer, Kind
 
+if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.problems.balancing.check import BalancingAnalysis
+    from graphmech.problems.balancing.scene import BalancingProblem
+    from graphmech.problems.judging import Verdict
+    from graphmech.problems.reader import Reader, Scene
 
-def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+
+def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[BalancingProblem]:
     from graphmech.problems.efficiency.scene import parse_efficiency_scene
 
-    return parse_efficiency_scene(data, source, top, order)
+    return cast("Scene[BalancingProblem]", parse_efficiency_scene(data, source, top, order))  # a balancing scene: its kind says so
 
 
-def _analyse(scene: Any, extra: Extra) -> Any:
+def _analyse(scene: Scene[BalancingProblem], extra: Extra) -> BalancingAnalysis:
     from graphmech.problems.balancing.check import analyse_balancing
 
     return analyse_balancing(scene, extra)
 
 
-def _judge(an: Any, extra: Extra) -> list[Any]:
+def _judge(an: BalancingAnalysis, extra: Extra) -> list[Verdict]:
     from graphmech.problems.balancing.check import judge_balancing
 
     return judge_balancing(an)
 
 
-def _sheet(scene: Any, footer: Footer) -> Any:
+def _sheet(scene: Scene[BalancingProblem], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.balancing.check import analyse_balancing, balancing_figure
     from graphmech.problems.judging import finite
     from graphmech.problems.reader import page_size

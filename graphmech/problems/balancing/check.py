@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import SceneError
@@ -21,6 +21,10 @@ from graphmech.methods import balancing as gm
 from graphmech.scales import format_scale, round_scale
 from graphmech.problems.balancing.scene import DEFAULT_FIND, QUANTITIES, BalancingProblem
 from graphmech.tolerances import EPS
+
+if TYPE_CHECKING:
+    from graphmech.problems.reader import Scene
+    from graphmech.mechanisms.rotor import RotorMass
 
 #: The longest polygon side when graphmech chooses μW, mm.
 POLYGON_MM = 60.0
@@ -33,7 +37,7 @@ ILL_SPLIT = 1e6
 class BalancingAnalysis:
     """What one balancing scene produced: the corrections (one per plane), rows, warnings."""
 
-    scene: Any
+    scene: Scene[BalancingProblem]
     problem: BalancingProblem
     corrections: tuple[gm.Correction, ...] = ()
     rows: list[Row] = field(default_factory=list)
@@ -61,7 +65,7 @@ class BalancingAnalysis:
         return max([abs(u.z) for u in p.masses] + [abs(z) for z in p.planes]) / span
 
 
-def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
+def requested(scene: Scene[BalancingProblem], extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
     p: BalancingProblem = scene.problem
     q = QUANTITIES[p.type]
     names = list(scene.find) or list(DEFAULT_FIND[p.type])
@@ -75,7 +79,7 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
     return names
 
 
-def analyse_balancing(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> BalancingAnalysis:
+def analyse_balancing(scene: Scene[BalancingProblem], extra_measured: tuple[tuple[str, float], ...] = ()) -> BalancingAnalysis:
     """Draw the polygons the scene needs and build its check table."""
     p: BalancingProblem = scene.problem
     names = requested(scene, extra_measured)
@@ -120,7 +124,7 @@ def analyse_balancing(scene: Any, extra_measured: tuple[tuple[str, float], ...] 
     return an
 
 
-def _balance(p: BalancingProblem, masses: list[gm.Mass], mu_W: float) -> tuple[gm.Correction, ...]:
+def _balance(p: BalancingProblem, masses: list[RotorMass], mu_W: float) -> tuple[gm.Correction, ...]:
     if p.type == "static":
         return (gm.static_balance(masses, p.r_b[0], mu_W),)
     return gm.dynamic_balance(masses, p.planes[0], p.planes[1], (p.r_b[0], p.r_b[1]), mu_W)  # type: ignore[index]
@@ -150,7 +154,7 @@ def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | Non
     mu = an.scales["W"]
     if name.startswith("residual"):
         us = [ex.Unbalance(u.m, u.r, u.theta, u.z) for u in p.masses]
-        planes = (0.0,) if p.type == "static" else p.planes
+        planes = (0.0,) if p.type == "static" else cast("tuple[float, float]", p.planes)  # a dynamic problem has two
         drawn = [(0j if c.balanced else cmath.rect(c.W, c.theta), z) for c, z in zip(an.corrections, planes)]  # type: ignore[arg-type]
         force, moment = ex.residuals(us, drawn, planes[0])  # about plane I: no far-off lever to cancel
         span = 1.0 if p.type == "static" else abs(p.planes[1] - p.planes[0])  # type: ignore[index]

@@ -5,30 +5,37 @@ checked against the exact envelope solution.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
 
+if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.problems.cam.check import CamAnalysis
+    from graphmech.problems.cam.scene import CamScene
+    from graphmech.problems.judging import Verdict
+    from graphmech.problems.reader import Reader, Scene
 
-def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+
+def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[CamScene]:
     from graphmech.problems.cam.scene import parse_cam_scene
 
     return parse_cam_scene(data, source, top, order)
 
 
-def _analyse(scene: Any, extra: Extra) -> Any:
+def _analyse(scene: Scene[CamScene], extra: Extra) -> CamAnalysis:
     from graphmech.problems.cam.check import analyse_cam
 
     return analyse_cam(scene, extra)
 
 
-def _judge(an: Any, extra: Extra) -> list[Any]:
+def _judge(an: CamAnalysis, extra: Extra) -> list[Verdict]:
     from graphmech.problems.cam.check import judge_cam
 
     return judge_cam(an)
 
 
-def _sheet(scene: Any, footer: Footer) -> Any:
+def _sheet(scene: Scene[CamScene], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.cam.check import analyse_cam
     from graphmech.problems.cam.figures import cam_sheet
     from graphmech.problems.judging import finite
@@ -40,7 +47,7 @@ def _sheet(scene: Any, footer: Footer) -> Any:
     return sheet, list(an.warnings)
 
 
-def _extras(an: Any) -> dict[str, Any]:
+def _extras(an: CamAnalysis) -> dict[str, Any]:
     return {"impacts": an.impacts, **({"divisions": an.divisions} if an.divisions else {})}
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -24,6 +24,10 @@ from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxi
 from graphmech.problems.cam.figures import panel_rows, scale_note
 from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile, read_drawing, whole_turn_step
 from graphmech.scales import drawn_size_problem, round_scale
+
+if TYPE_CHECKING:
+    from graphmech.problems.cam.scene import CamScene
+    from graphmech.problems.reader import Scene
 
 #: What a cam scene can ask for, with the unit each is reported in.
 CAM_QUANTITIES = {
@@ -42,7 +46,7 @@ PROFILE_QUANTITIES = {"alpha_max", "alpha_max_at", "rho_min_pitch", "rho_min_pit
 
 @dataclass
 class CamAnalysis:
-    scene: Any
+    scene: Scene[CamScene]
     cam: DiscCam
     delta: np.ndarray
     s: np.ndarray
@@ -57,7 +61,7 @@ class CamAnalysis:
     divisions: list[dict[str, Any]] = field(default_factory=list)  # the book's table, one row a division
     extra_measured: tuple[tuple[str, float], ...] = ()
     step: float = 0.0  # rad, the divisions' step as drawn (2π/N)
-    finer: tuple = ()  # the same drawing at 2N, 4N and 8N divisions, for the rows' error estimates
+    finer: tuple[CamAnalysis, ...] = ()  # the same drawing at 2N, 4N and 8N divisions, for the rows' error estimates
 
     def scale_notes(self) -> list[str]:
         """μ as written on the drawing (an oscillating follower's μs is an angle per mm)."""
@@ -81,11 +85,11 @@ def profile_deviation(cam: DiscCam, actual: np.ndarray, samples: int = EXACT_SAM
     return float(np.max(shapely.distance(shapely.points(exact), shapely.LinearRing(actual))))
 
 
-def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> tuple[dict[str, float], set[str]]:
+def choose_cam_scales(scene: Scene[CamScene], cam: DiscCam, drawn: DrawnProfile | None) -> tuple[dict[str, float], set[str]]:
     """μ from the scene where stated; otherwise round values that fit one row of panels."""
-    stated = {k for k in ("l", "s", "phi", "v", "a") if k in scene.scales}
+    stated: set[str] = {k for k in ("l", "s", "phi", "v", "a") if k in scene.scales}
     # in the book's order, never a set's: the table and the JSON list them the same way every run
-    scales = {k: float(scene.scales[k]) for k in ("l", "s", "phi", "v", "a") if k in stated}
+    scales: dict[str, float] = {k: float(scene.scales[k]) for k in ("l", "s", "phi", "v", "a") if k in stated}
     w, h = page_size(scene)
     rows = panel_rows(scene.show)
     n_rows = max(rows.values(), default=0) + 1
@@ -101,7 +105,7 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
         cam.base_radius + (0.0 if _angular(cam) else cam.program.stroke)
     reach = pitch_r + getattr(f, "roller_radius", 0.0)
     if _angular(cam):
-        reach = max(reach, f.pivot_distance + getattr(f, "roller_radius", 0.0))
+        reach = max(reach, cast("OscillatingFollower", f).pivot_distance + getattr(f, "roller_radius", 0.0))
     _legible(scene, cam, scales, 2.0 * reach)
     if "l" not in scales:
         scales["l"] = round_scale(2.0 * reach / min(room_profile, room_h))
@@ -117,7 +121,7 @@ def choose_cam_scales(scene: Any, cam: DiscCam, drawn: DrawnProfile | None) -> t
     return scales, stated
 
 
-def _legible(scene: Any, cam: DiscCam, stated: dict[str, float], across: float) -> None:
+def _legible(scene: Scene[CamScene], cam: DiscCam, stated: dict[str, float], across: float) -> None:
     """Refuse a stated μ that draws what is shown beyond a page (graphmech.scales.DRAWN_SIZE_RANGE_MM,
     the rule a linkage's μl keeps): a 16 km stroke at μs = 0.0005 m/mm would be dashed for hours."""
     ext = maxima(cam.program, cam.omega)
@@ -130,7 +134,7 @@ def _legible(scene: Any, cam: DiscCam, stated: dict[str, float], across: float) 
                 raise SceneError([("scales", why)], scene.source)
 
 
-def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), *,
+def analyse_cam(scene: Scene[CamScene], extra_measured: tuple[tuple[str, float], ...] = (), *,
                 estimates: bool = True) -> CamAnalysis:
     """The inversion at the scene's divisions, its readings, and the check table
     (``extra_measured``: hand readings from the command line, which may need the profile; each
@@ -139,7 +143,7 @@ def analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), 
         return _analyse_cam(scene, extra_measured, estimates)
 
 
-def _analyse_cam(scene: Any, extra_measured: tuple[tuple[str, float], ...], estimates: bool) -> CamAnalysis:
+def _analyse_cam(scene: Scene[CamScene], extra_measured: tuple[tuple[str, float], ...], estimates: bool) -> CamAnalysis:
     estimated = _estimated if estimates else (lambda an, row: row)
     cs = scene.problem
     cam: DiscCam = cs.cam
@@ -203,15 +207,15 @@ def division_table(an: CamAnalysis) -> list[dict[str, Any]]:
         out.append({
             "division": k, "delta_deg": math.degrees(float(d)),
             "s": math.degrees(float(an.s[k])) if ang else float(an.s[k]), "s_unit": "deg" if ang else "m",
-            "alpha_deg": 0.0 if cam.follower.contact == "flat" else math.degrees(float(drawn.pressure_angle[k])),
+            "alpha_deg": 0.0 if cam.follower.contact == "flat" else math.degrees(float(cast("DrawnProfile", drawn).pressure_angle[k])),
             "alpha_exact_deg": math.degrees(float(ex.pressure_angle[k])),
-            "rho_pitch": float(drawn.rho_pitch[k]) if abs(drawn.rho_pitch[k]) < 1e299 else None,
+            "rho_pitch": float(cast("DrawnProfile", drawn).rho_pitch[k]) if abs(cast("DrawnProfile", drawn).rho_pitch[k]) < 1e299 else None,
             "rho_pitch_exact": float(ex.rho_pitch[k]) if np.isfinite(ex.rho_pitch[k]) and abs(ex.rho_pitch[k]) < 1e299 else None,
         })
     return out
 
 
-def _requested(scene: Any) -> list[str]:
+def _requested(scene: Scene[CamScene]) -> list[str]:
     problems: list[tuple[str, str]] = []
     names: list[str] = []
     for k, name in enumerate(scene.find):
@@ -249,7 +253,7 @@ def _graphical_r0_min(cam: DiscCam, alpha: float, step: float) -> float:
     f = cam.follower
     lo = abs(getattr(f, "offset", 0.0)) * (1 + 1e-9) + 1e-12
     if _angular(cam):
-        lo = abs(f.pivot_distance - f.arm) * (1 + 1e-9) + 1e-12
+        lo = abs(cast("OscillatingFollower", f).pivot_distance - cast("OscillatingFollower", f).arm) * (1 + 1e-9) + 1e-12
     hi = max(cam.base_radius, lo * 2, 1e-6)
     while worst(hi) > alpha and hi < 1e3:
         hi *= 2.0
@@ -261,7 +265,7 @@ def _graphical_r0_min(cam: DiscCam, alpha: float, step: float) -> float:
             hi = mid
         if hi - lo <= 1e-12 * hi:
             break
-    return hi
+    return cast(float, hi)
 
 
 def _row(an: CamAnalysis, name: str) -> Row:
@@ -278,7 +282,7 @@ def _row(an: CamAnalysis, name: str) -> Row:
                                     f"(every {deg(an.step):.6g}° and at the laws' joints)")], an.scene.source)
         if name.startswith("alpha@"):
             e = float(exact_cam.profile(cam, np.array([delta[k]])).pressure_angle[0])
-            g = 0.0 if cam.follower.contact == "flat" else deg(drawn.pressure_angle[k])  # the face's normal is the axis
+            g = 0.0 if cam.follower.contact == "flat" else deg(cast("DrawnProfile", drawn).pressure_angle[k])  # the face's normal is the axis
             return _angle_row(name, g, deg(e), 90.0)
         e = float(displacement(cam.program, delta[k]))
         if ang:  # an angular displacement is reported in degrees
@@ -309,14 +313,14 @@ def _row(an: CamAnalysis, name: str) -> Row:
             e = exact_cam.min_convex_rho_pitch(cam)[0] - r_r
         return _plain(name, unit, (rd.rho_min - r_r) / an.scales["l"], an.scales["l"], e, size)
     if name == "profile_deviation":
-        dev = profile_deviation(cam, drawn.actual)
+        dev = profile_deviation(cam, cast("DrawnProfile", drawn).actual)
         return Row(name, unit, dev / an.scales["l"], an.scales["l"], dev, 0.0, dev / size)
     if name == "h":
         return _plain(name, "rad" if ang else "m", float(np.max(an.s)) / an.scales["s"], an.scales["s"],
                       cam.program.stroke, cam.program.stroke)
     if name == "r0_min":
-        e = exact_cam.min_base_radius(cam, cam.alpha_permissible)
-        g = _graphical_r0_min(cam, cam.alpha_permissible, an.step)
+        e = exact_cam.min_base_radius(cam, cast(float, cam.alpha_permissible))  # asked for only with it (scene)
+        g = _graphical_r0_min(cam, cast(float, cam.alpha_permissible), an.step)
         return _plain(name, unit, g / an.scales["l"], an.scales["l"], e, size)
     # v_max, a_max, j_max and where: read off the diagrams at the divisions vs the exact law
     q = name.split("_")[0]

@@ -24,7 +24,7 @@ Every size fixed here is paper millimetres; every quantity is laid off at its pa
 from __future__ import annotations
 
 import math
-from typing import Any, Sequence
+from typing import Any, Sequence, cast
 
 import numpy as np
 
@@ -224,7 +224,7 @@ def _point_on(pitch: np.ndarray, delta: np.ndarray, at: float) -> np.ndarray:
         at += math.tau
     i = int(np.clip(np.searchsorted(d, at, side="right") - 1, 0, len(delta) - 1))
     t = (at - d[i]) / (d[i + 1] - d[i]) if d[i + 1] > d[i] else 0.0
-    return p[i] + t * (p[i + 1] - p[i])
+    return cast(np.ndarray, p[i] + t * (p[i + 1] - p[i]))
 
 
 def _mark_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, ok: np.ndarray,

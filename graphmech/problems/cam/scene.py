@@ -4,7 +4,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from typing import Any, Mapping
+from typing import Any, Mapping, cast
 
 from graphmech.scales import phi_axis_problem
 from graphmech.mechanisms.cam import (
@@ -189,6 +189,7 @@ def _motion_path(
 def _read_program(cam: Reader, follower: str | None) -> tuple[MotionProgram | None, bool]:
     """[cam.program] (the stroke) and [[cam.segment]]: the motion program; whether it had
     problems."""
+    kind: str | None
     from graphmech.mechanisms.motion import LAWS, validate
 
     before = len(cam.problems)
@@ -298,9 +299,9 @@ def _read_program(cam: Reader, follower: str | None) -> tuple[MotionProgram | No
             cam.problem(_motion_path(path, where, stroke_path), reason)
 
     if intact and all(a is not None for a in angles):
-        total = sum(a.si for a in angles)  # type: ignore[union-attr]
+        total = sum(a.si for a in cast("list[Value]", angles))  # all given (above)
         if abs(total - 2.0 * math.pi) > 1e-9:
-            in_rad = any(a.unit == "rad" for a in angles)  # type: ignore[union-attr]
+            in_rad = any(a.unit == "rad" for a in cast("list[Value]", angles))
             rad = f" ({total:.9g} rad, not 2π = {2.0 * math.pi:.9g})" if in_rad else ""
             cam.problem(
                 cam.at("segment"),
@@ -402,8 +403,8 @@ def _read_cam(top: Reader) -> CamScene | None:
 
 
 def parse_cam_scene(
-    data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]
-) -> Scene:
+    data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
+) -> Scene[CamScene]:
     """The rest of :func:`graphmech.scene.parse_scene` for a scene with a [cam] table."""
     problems = top.problems
     title, show, find = read_header(top, CAM_SHOW_CHOICES, CAM_SHOW_DEFAULT)
@@ -411,7 +412,7 @@ def parse_cam_scene(
     why = phi_axis_problem(scales["phi"]) if "phi" in scales else None  # the diagrams' φ axis, as a cycle's
     if why:
         tab = data.get("scales")
-        top.problem("scales." + next((k for k in tab if k.startswith("phi")), "phi"), why)
+        top.problem("scales." + next((k for k in cast("Mapping[str, Any]", tab) if k.startswith("phi")), "phi"), why)
     for key in LINKAGE_KEYS:
         if key in data:
             top.used.add(key)

@@ -7,30 +7,38 @@ check.py, figures.py and bench.py are this kind's own.
 """
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, cast
 
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
 
+if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.problems.cycle.check import CycleAnalysis
+    from graphmech.problems.cycle.scene import CycleScene
+    from graphmech.problems.judging import Verdict
+    from graphmech.problems.reader import Reader, Scene
 
-def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+
+def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[CycleScene]:
     from graphmech.problems.linkage.scene import parse_linkage_scene
 
-    return parse_linkage_scene(data, source, top, order)
+    return cast("Scene[CycleScene]", parse_linkage_scene(data, source, top, order))  # a cycle scene: its kind says so
 
 
-def _analyse(scene: Any, extra: Extra) -> Any:
+def _analyse(scene: Scene[CycleScene], extra: Extra) -> CycleAnalysis:
     from graphmech.problems.cycle.check import analyse_cycle
 
     return analyse_cycle(scene, extra)
 
 
-def _judge(an: Any, extra: Extra) -> list[Any]:
+def _judge(an: CycleAnalysis, extra: Extra) -> list[Verdict]:
     from graphmech.problems.cycle.check import judge_cycle
 
     return judge_cycle(an)
 
 
-def _sheet(scene: Any, footer: Footer) -> Any:
+def _sheet(scene: Scene[CycleScene], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.cycle.check import analyse_cycle
     from graphmech.problems.cycle.figures import cycle_sheet
     from graphmech.problems.judging import finite

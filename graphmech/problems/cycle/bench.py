@@ -14,7 +14,7 @@ draw, write the SVG text), no error.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -87,7 +87,7 @@ def _extrapolated(finer: list[Any], n: int, pick: str) -> np.ndarray:
     v2, v4 = ((f.velocity.derivative_mm * f.mu_v if pick == "v" else f.a_mm * f.mu_a)[::m]
               for f, m in zip(finer, (2, 4)))
     assert len(v2) == len(v4) == n
-    return extrapolated(v2, v4, order=2)
+    return cast(np.ndarray, extrapolated(v2, v4, order=2))  # on arrays too
 
 
 def cycle_notes(records: list[dict[str, Any]]) -> list[str]:

@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -46,6 +46,11 @@ from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.characteristics import DrawnCharacteristics, draw_characteristics, grashof_ranges
 from graphmech.methods.full_cycle import CycleDiagram, FullCycle, evaluate_cycle, finer_positions, sliders
 from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
+
+if TYPE_CHECKING:
+    from graphmech.mechanisms.linkage import Positions
+    from graphmech.problems.cycle.scene import CycleScene, CycleSpec
+    from graphmech.problems.reader import Scene
 
 __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "nice_pole"]
 
@@ -76,7 +81,7 @@ def nice_pole(max_slope: float, height_mm: float = DIAGRAM_MM) -> float:
 class CycleAnalysis:
     """What one full-cycle or characteristics scene produced."""
 
-    scene: Any
+    scene: Scene[CycleScene]
     scales: dict[str, float]
     stated: set[str]
     cycle: FullCycle | None = None
@@ -129,7 +134,7 @@ class CycleAnalysis:
         return out
 
 
-def _kind(scene: Any, name: str) -> str:
+def _kind(scene: Scene[CycleScene], name: str) -> str:
     """"char", "timing", "ranges", "diagram" or "polygon"."""
     base = name.partition("@")[0]
     if base in CHARACTERISTICS:
@@ -151,7 +156,7 @@ def _kind(scene: Any, name: str) -> str:
     return "polygon"
 
 
-def _wants(scene: Any, names: list[str]) -> dict[str, bool]:
+def _wants(scene: Scene[CycleScene], names: list[str]) -> dict[str, bool]:
     kinds = {_kind(scene, n) for n in names}
     show = scene.show
     return {"characteristics": "characteristics" in show or bool(kinds & {"char", "timing"})
@@ -161,7 +166,7 @@ def _wants(scene: Any, names: list[str]) -> dict[str, bool]:
                                                              & set(show)) or "diagram" in kinds)}
 
 
-def _mech_scale(scene: Any, linkage: Linkage) -> float:
+def _mech_scale(scene: Scene[CycleScene], linkage: Linkage) -> float:
     """μl: stated, or a round value that fits the mechanism's sweep into about 130 mm (or 45 % of the page)."""
     if "l" in scene.scales:
         why = drawn_size_problem(mechanism_size(linkage), float(scene.scales["l"]))
@@ -173,7 +178,7 @@ def _mech_scale(scene: Any, linkage: Linkage) -> float:
     return round_scale(size / min(0.45 * w, 0.45 * h, 130.0))
 
 
-def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> CycleAnalysis:
+def analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, float], ...] = ()) -> CycleAnalysis:
     """Evaluate what the scene shows and finds, and check it.
 
     As for one position (:func:`graphmech.problems.linkage.check.analyse`), numbers beyond double precision (ω of
@@ -183,14 +188,14 @@ def analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()
         return _analyse_cycle(scene, extra_measured)
 
 
-def _analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> CycleAnalysis:
-    linkage: Linkage = scene.linkage
+def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, float], ...]) -> CycleAnalysis:
+    linkage: Linkage = cast("Linkage", scene.linkage)  # a linkage scene has one: the reader refuses it otherwise
     measured = [n for _, n, _ in measured_entries(scene, extra_measured)]
     names = list(scene.find)
     wants = _wants(scene, names + measured)
     stated = {k for k in ("l", "v", "a") if k in scene.scales}
     mu_l = _mech_scale(scene, linkage)
-    an = CycleAnalysis(scene, {"l": mu_l}, stated, extra_measured=tuple(extra_measured))
+    an = CycleAnalysis(scene, {"l": mu_l}, cast("set[str]", stated), extra_measured=tuple(extra_measured))
     d = linkage.driver
     assert isinstance(d, Crank)
     if wants["characteristics"]:
@@ -225,7 +230,7 @@ def _analyse_cycle(scene: Any, extra_measured: tuple[tuple[str, float], ...]) ->
     poly_measured = [(n, v) for n, v in scene.measured if _kind(scene, n) == "polygon"]
     if poly or poly_measured or any(_kind(scene, n) == "polygon" for n, _ in extra_measured):
         # the polygons at the sheet's own μ, so a drawn length means the same everywhere
-        same = {k: an.scales[k] for k in ("l", "v", "a") if k in an.scales}
+        same: dict[str, float] = {k: an.scales[k] for k in ("l", "v", "a") if k in an.scales}
         sub = replace(scene, find=tuple(poly), show=(), measured=tuple(poly_measured),
                       scales={**scene.scales, **same})
         extra = tuple((n, v) for n, v in extra_measured if _kind(scene, n) == "polygon")
@@ -244,9 +249,9 @@ def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
     if an.scene.problem.cycle is None:
         return list(warnings)
     build = an.polygons.build
-    link = an.scene.linkage.driver.link
+    link = cast("Linkage", an.scene.linkage).driver.link
     said = set(an.cycle.polygon_failures) if an.cycle is not None else set()
-    labels = an.scene.positions.labels
+    labels = cast("Positions", an.scene.positions).labels
     prefixes = {position_text(build, lab) + ":": i for i, lab in enumerate(labels)}
     asked = {labels.index(r.name.partition("@")[2]) for r in an.polygons.rows if r.name.partition("@")[2] in labels}
     out = []
@@ -259,7 +264,7 @@ def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
                 and (i not in asked or rest.startswith("shallow")):
             continue  # the cycle's one-line summary says it for every position
         elif not (i in said and rest.startswith("construction impossible")):
-            angle = math.degrees(an.scene.positions.values[i])
+            angle = math.degrees(cast("Positions", an.scene.positions).values[i])
             out.append(f"position {i + 1} (φ{link} = {angle:.6g}°): {rest}")
     return out
 
@@ -375,8 +380,10 @@ def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
 
 def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
     scene = an.scene
-    spec = scene.problem.cycle
-    angles = np.asarray(scene.positions.values, dtype=float)
+    k: int | str
+    mu: str | float
+    spec = cast("CycleSpec", scene.problem.cycle)  # analysed as a cycle: the scene has [cycle]
+    angles = np.asarray(cast("Positions", scene.positions).values, dtype=float)
     d = linkage.driver
     assert isinstance(d, Crank)
     polygons = [p for p in ("velocity", "acceleration") if p in scene.show]
@@ -522,7 +529,7 @@ def _exact_series(an: CycleAnalysis, subject: str) -> dict[str, np.ndarray]:
     cache = an.exact_series
     if subject in cache:
         return cache[subject]
-    linkage = an.scene.linkage
+    linkage = cast("Linkage", an.scene.linkage)
     cyc = an.cycle
     assert cyc is not None
     n = cyc.n
@@ -559,20 +566,20 @@ def _exact_path(linkage: Linkage, point: str, angles: np.ndarray, sense: float, 
     q = solve_exact(linkage, nodes)
     speed = np.hypot(*q.vel[point].T).reshape(n, ARC_NODES)
     # ds/dφ = |v|/|ω1|; each interval is Δφ long
-    piece = (speed @ wts) * (step / 2.0) / abs(d.omega)
+    piece = (speed @ wts) * (step / 2.0) / abs(cast("Crank", d).omega)
     s = np.concatenate([[0.0], np.cumsum(piece[:-1])])
     v = np.hypot(*mid.vel[point].T)
     V, A = at.vel[point], at.acc[point]
     vs = np.hypot(*V.T)
-    moving = vs > 1e-9 * abs(d.omega) * max(math.hypot(*p) for p in (at.point[point][0], (1e-300, 0.0)))
+    moving = vs > 1e-9 * abs(cast("Crank", d).omega) * max(math.hypot(*p) for p in (at.point[point][0], (1e-300, 0.0)))
     a = np.where(moving, np.einsum("ij,ij->i", V, A) / np.where(moving, vs, 1.0), 0.0)
     valid = at.valid & mid.valid & moving & q.valid.reshape(n, ARC_NODES).all(axis=1)
     return {"s": s, "v": v, "a": a, "valid": valid}
 
 
-def _diagram_errors(an: CycleAnalysis, dg: Any) -> dict[str, float]:
+def _diagram_errors(an: CycleAnalysis, dg: Any) -> dict[str, float | None]:
     ex = _exact_series(an, dg.subject)
-    linkage = an.scene.linkage
+    linkage = cast("Linkage", an.scene.linkage)
     unit_v, unit_a = ("rad/s", "rad/s²") if dg.kind == "link" else ("m/s", "m/s²")
     size = mechanism_size(linkage)
     v = dg.velocity.derivative_mm * dg.mu_v
@@ -616,6 +623,7 @@ def _ch_values(an: CycleAnalysis) -> tuple[dict[str, tuple[float, float, float |
 
 def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
     scene = an.scene
+    drawn: float | np.ndarray | None
     base, _, at = raw.partition("@")
     if kind in ("char", "timing"):
         if at:
@@ -644,8 +652,8 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
     if kind == "ranges":
         if an.ranges is None or an.ranges_exact is None:
             raise UnknownName(f"{base}: the Grashof ranges need [characteristics] ranges = true")
-        names = _range_names(an.ranges, scene.linkage)
-        names_exact = _range_names(an.ranges_exact, scene.linkage)
+        names = _range_names(an.ranges, cast("Linkage", scene.linkage))
+        names_exact = _range_names(an.ranges_exact, cast("Linkage", scene.linkage))
         if base not in names or base not in names_exact:
             raise UnknownName(f"unknown Grashof range limit {base!r}; the ranges give "
                            f"{', '.join(sorted(names))}")
@@ -697,7 +705,7 @@ def _diagram_at(an: CycleAnalysis, dg: CycleDiagram, m: int, mid: bool) -> Cycle
     if key not in an.refined:
         cyc = an.cycle
         assert cyc is not None
-        fine = evaluate_cycle(an.scene.linkage, {"l": an.scales["l"], "v": 1.0, "a": 1.0},
+        fine = evaluate_cycle(cast("Linkage", an.scene.linkage), {"l": an.scales["l"], "v": 1.0, "a": 1.0},
                               finer_positions(float(cyc.angles[0]), cyc.n, cyc.sense, m, mid), diagrams=[dg.subject],
                               mu_phi=cyc.mu_phi, mu_s={dg.subject: dg.mu_s},
                               H_mm=(dg.velocity.H_mm, dg.acceleration.H_mm))
@@ -719,9 +727,9 @@ def _chord_estimate(an: CycleAnalysis, dg: CycleDiagram, what: str, i: int, g: f
             vals.append(float(f.velocity.derivative_mm[m * i] * f.mu_v))
         else:
             vals.append(float(f.a_mm[m * i] * f.mu_a))
-    limit = extrapolated(*vals, order=2)
+    limit = extrapolated(*cast("tuple[float, float]", vals), order=2)  # the values at 2N and 4N
     unit = {"s": "m", "v": "m/s", "a": "m/s²", "omega": "rad/s", "alpha": "rad/s²"}[what]
-    linkage = an.scene.linkage
+    linkage = cast("Linkage", an.scene.linkage)
     return relative(abs(g - limit), max(abs(limit), characteristic(linkage, unit, mechanism_size(linkage))))
 
 
@@ -748,7 +756,7 @@ def _row(an: CycleAnalysis, name: str, unit: str, g: float, e: float, drawn: flo
     elif unit in ("", "s", "rpm"):
         err = abs(g - e) / max(abs(e), 1e-300)
     else:
-        err = abs(g - e) / max(abs(e), characteristic(an.scene.linkage, unit, mechanism_size(an.scene.linkage)))
+        err = abs(g - e) / max(abs(e), characteristic(cast("Linkage", an.scene.linkage), unit, mechanism_size(cast("Linkage", an.scene.linkage))))
     return Row(name, unit, drawn, scale, g, e, err, an.far or name in an.ill)
 
 
@@ -786,7 +794,7 @@ def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Ve
         if name not in values or name in ("gamma_min_at", "phi_start", "phi_end"):
             problems.append((key, f"{name!r} cannot be judged here"))
             continue
-        g, e, drawn = values[name]
+        g, exact_v, drawn = values[name]
         p = an.drawn.points
         A = p["A"]
         arm = min(math.dist(A, p["C1"]), math.dist(A, p["C2"])) if name in ("theta", "K") else (
@@ -797,10 +805,10 @@ def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Ve
             tol = 2.0 * prec * an.drawn.mu_l
         elif name == "K":
             th = an.exact.theta  # type: ignore[union-attr]
-            tol = 2.0 * math.pi / (math.pi - th) ** 2 * tol_rad
+            tol = 2.0 * math.pi / (math.pi - cast(float, th)) ** 2 * tol_rad
         else:
             tol = math.degrees(tol_rad)
-        out.append(Verdict(name, value, e, tol, abs(value - e) <= tol, units[name]))
+        out.append(Verdict(name, value, exact_v, tol, abs(value - exact_v) <= tol, units[name]))
     if problems:
         raise SceneError(problems, scene.source)
     if an.polygons is not None:

@@ -24,7 +24,7 @@ says which positions are drawn.
 from __future__ import annotations
 
 import math
-from typing import Any, Sequence
+from typing import Any, Sequence, cast
 
 import numpy as np
 
@@ -246,7 +246,7 @@ def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
         top += [Circle((float(a), float(b)), DOT, "result") for a, b in zip(dg.x_mm, dg.s_mm)]
         top += [Segment((float(a), 0.0), (float(a), float(b)), "construction") for a, b in zip(dg.x_mm, dg.s_mm)
                 if abs(b) > 1e-9]
-    out: list[Primitive] = items + top + labels
+    out: list[Primitive] = items + top + cast("list[Primitive]", labels)
     v_name, a_name = sub(names[1]), sub(names[2])
     v_items = _differentiation_items(dg.velocity, dg.velocity.derivative_mm, v_name, n, every, period, "P₁")
     a_items = _differentiation_items(dg.acceleration, dg.a_mm, a_name, n, every, period, "P₂")

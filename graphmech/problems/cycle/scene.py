@@ -12,6 +12,7 @@ characteristics" section of ``docs/scene-format.md``.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from collections.abc import Mapping
 from typing import Any
 
 from graphmech.mechanisms.linkage import Crank, Linkage, Positions
@@ -129,7 +130,7 @@ def _loop_problem(linkage: Linkage | None) -> str:
     return ""
 
 
-def read_cycle(top: Reader, data: dict[str, Any], show: tuple[str, ...], linkage: Linkage | None,
+def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], linkage: Linkage | None,
                positions: Positions | None) -> tuple[CycleScene | None, Positions | None]:
     """The [cycle] and [characteristics] tables; the scene's positions (N of them with a cycle).
 

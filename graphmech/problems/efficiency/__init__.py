@@ -4,30 +4,38 @@ checked against the closed-form trigonometric answers.
 """
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, cast
 
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
 
+if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.problems.efficiency.check import EfficiencyAnalysis
+    from graphmech.problems.efficiency.scene import EfficiencyProblem
+    from graphmech.problems.judging import Verdict
+    from graphmech.problems.reader import Reader, Scene
 
-def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+
+def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[EfficiencyProblem]:
     from graphmech.problems.efficiency.scene import parse_efficiency_scene
 
-    return parse_efficiency_scene(data, source, top, order)
+    return cast("Scene[EfficiencyProblem]", parse_efficiency_scene(data, source, top, order))  # a efficiency scene: its kind says so
 
 
-def _analyse(scene: Any, extra: Extra) -> Any:
+def _analyse(scene: Scene[EfficiencyProblem], extra: Extra) -> EfficiencyAnalysis:
     from graphmech.problems.efficiency.check import analyse_efficiency
 
     return analyse_efficiency(scene, extra)
 
 
-def _judge(an: Any, extra: Extra) -> list[Any]:
+def _judge(an: EfficiencyAnalysis, extra: Extra) -> list[Verdict]:
     from graphmech.problems.efficiency.check import judge_efficiency
 
     return judge_efficiency(an)
 
 
-def _sheet(scene: Any, footer: Footer) -> Any:
+def _sheet(scene: Scene[EfficiencyProblem], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.efficiency.check import analyse_efficiency, efficiency_figure
     from graphmech.problems.judging import finite
     from graphmech.problems.reader import page_size

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import DegenerateConstruction, SceneError
@@ -21,6 +21,9 @@ from graphmech.methods import efficiency as gm
 from graphmech.scales import format_scale, round_scale
 from graphmech.problems.efficiency.scene import DEFAULT_FIND, EfficiencyProblem
 from graphmech.tolerances import EPS, SHALLOW_DEG
+
+if TYPE_CHECKING:
+    from graphmech.problems.reader import Scene
 
 #: The longest side of a force polygon when graphmech chooses μF, mm.
 POLYGON_MM = 80.0
@@ -35,7 +38,7 @@ COND_HAND = 1.0 / math.sin(math.radians(SHALLOW_DEG))
 class EfficiencyAnalysis:
     """What one efficiency scene produced: the strokes (per direction), the rows, the warnings."""
 
-    scene: Any
+    scene: Scene[EfficiencyProblem]
     problem: EfficiencyProblem
     strokes: dict[str, gm.Stroke] = field(default_factory=dict)
     chain: Any = None
@@ -64,7 +67,7 @@ class EfficiencyAnalysis:
         return self.phi if p.at_limit else float(p.lead_angle)  # type: ignore[arg-type]
 
 
-def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
+def requested(scene: Scene[EfficiencyProblem], extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
     """The row names the scene asks for, expanded over its directions; bad names → SceneError."""
     p: EfficiencyProblem = scene.problem
     q = p.quantities()
@@ -110,7 +113,7 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
     return list(dict.fromkeys(out))
 
 
-def analyse_efficiency(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> EfficiencyAnalysis:
+def analyse_efficiency(scene: Scene[EfficiencyProblem], extra_measured: tuple[tuple[str, float], ...] = ()) -> EfficiencyAnalysis:
     """Carry out what the efficiency scene asks for and build its check table."""
     p: EfficiencyProblem = scene.problem
     names = requested(scene, extra_measured)

@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Mapping
+from typing import TYPE_CHECKING, Any, Mapping
+
 from graphmech.problems.reader import (
     LINKAGE_KEYS,
     MISSING,
@@ -28,6 +29,9 @@ from graphmech.problems.reader import (
     say,
     type_name,
 )
+
+if TYPE_CHECKING:
+    from graphmech.problems.balancing.scene import BalancingProblem
 
 
 EFFICIENCY_TYPES = ("incline", "wedge", "screw", "chain")
@@ -106,7 +110,8 @@ class EfficiencyProblem:
 _FORCES_KEYS = ("title", "show", "find", "scales", "units", "measured", "check", "page", "efficiency", "balancing")
 
 
-def parse_efficiency_scene(data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene:
+def parse_efficiency_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
+                           ) -> Scene[EfficiencyProblem | BalancingProblem]:
     """The rest of :func:`graphmech.scene.parse_scene` for an [efficiency] or [balancing] scene.
 
     Examples

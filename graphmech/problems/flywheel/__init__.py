@@ -4,36 +4,44 @@ flywheel just designed, and a braking check.
 """
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any
 
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
 
+if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.problems.flywheel.check import FlywheelAnalysis
+    from graphmech.problems.flywheel.scene import FlywheelScene
+    from graphmech.problems.judging import Verdict
+    from graphmech.problems.reader import Reader, Scene
 
-def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+
+def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[FlywheelScene]:
     from graphmech.problems.flywheel.scene import parse_flywheel_scene
 
     return parse_flywheel_scene(data, source, top, order)
 
 
-def _analyse(scene: Any, extra: Extra) -> Any:
+def _analyse(scene: Scene[FlywheelScene], extra: Extra) -> FlywheelAnalysis:
     from graphmech.problems.flywheel.check import analyse_flywheel
 
     return analyse_flywheel(scene, extra)
 
 
-def _judge(an: Any, extra: Extra) -> list[Any]:
+def _judge(an: FlywheelAnalysis, extra: Extra) -> list[Verdict]:
     from graphmech.problems.flywheel.check import judge_flywheel
 
     return judge_flywheel(an)
 
 
-def _sheet(scene: Any, footer: Footer) -> Any:
+def _sheet(scene: Scene[FlywheelScene], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.flywheel.sheet import scene_sheet
 
     return scene_sheet(scene, footer)
 
 
-def _extras(an: Any) -> dict[str, Any]:
+def _extras(an: FlywheelAnalysis) -> dict[str, Any]:
     out = {}
     if an.motion is not None:
         out["true_motion"] = an.motion_summary()
@@ -42,7 +50,7 @@ def _extras(an: Any) -> dict[str, Any]:
     return out
 
 
-def _lines(an: Any) -> list[str]:
+def _lines(an: FlywheelAnalysis) -> list[str]:
     if an.braking is None:
         return []
     br = an.braking_summary()

@@ -22,7 +22,7 @@ import dataclasses
 import math
 import time
 from functools import partial
-from typing import Any
+from typing import Any, Literal, cast
 
 import numpy as np
 
@@ -166,14 +166,14 @@ def wittenbauer_records(repeat: int = 5, ns: tuple[int, ...] = WITTENBAUER_N) ->
     records = []
     for case, ref in refs.items():
         need = ("indicator",) if case == "indicator" else ("wittenbauer",)
-        form = "book" if case == "book" else "exact"
+        form: Literal["exact", "book"] = "book" if case == "book" else "exact"
         def design(n: int) -> Any:
             r = reduce_to_crank(m, np.asarray(m.positions(n)), {"l": 0.002, "v": 0.05})
             return design_flywheel(r.phi, r.J, r.M, cycle=m.cycle, omega_m=m.omega_m, delta=m.delta,
                                    balance=m.balance, form=form, H_mm=40.0, need=need)
 
         def j_f(d: Any) -> float:
-            return d.J_F_indicator if case == "indicator" else d.J_F
+            return cast(float, d.J_F_indicator if case == "indicator" else d.J_F)
 
         for n in ns:
             secs, d = best_time(lambda: design(n), repeat, 1)

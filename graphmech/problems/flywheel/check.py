@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any
+from typing import TYPE_CHECKING, Any, Literal, cast
 
 import numpy as np
 
@@ -27,6 +27,11 @@ from graphmech.problems.judging import Row, Verdict, close_names, in_double_prec
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.mechanisms.machine import Machine
 from graphmech.tolerances import EPS
+
+if TYPE_CHECKING:
+    from graphmech.problems.flywheel.scene import Braking
+    from graphmech.problems.flywheel.scene import FlywheelScene
+    from graphmech.problems.reader import Scene
 
 #: Quantities a flywheel scene can ask for: name → (unit, what it needs).
 #: "design": the graphical construction; "wittenbauer"/"indicator": that method's diagram;
@@ -62,7 +67,7 @@ TANGENTS_APART_DEG = 0.1
 
 @dataclass
 class FlywheelAnalysis:
-    scene: Any
+    scene: Scene[FlywheelScene]
     machine: Machine
     phi: np.ndarray
     labels: tuple[str, ...]
@@ -111,7 +116,7 @@ class FlywheelAnalysis:
 
     def braking_summary(self) -> dict[str, Any]:
         """The run-down: stopping time against the required one (``ok`` None when none is required)."""
-        limit = self.scene.problem.braking.time_limit
+        limit = cast("Braking", self.scene.problem.braking).time_limit
         t = float(self.braking.t)
         return {"t_stop": t, "time_limit": limit, "ok": None if limit is None else bool(t <= limit)}
 
@@ -121,7 +126,7 @@ def split(name: str) -> tuple[str, str | None]:
     return base, (at if sep else None)
 
 
-def _needs(scene: Any, names: list[str]) -> set[str]:
+def _needs(scene: Scene[FlywheelScene], names: list[str]) -> set[str]:
     fw = scene.problem
     needs: set[str] = set()
     for n in names:
@@ -148,7 +153,7 @@ def _needs(scene: Any, names: list[str]) -> set[str]:
     return needs
 
 
-def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
+def requested(scene: Scene[FlywheelScene], extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
     """The quantity names the scene asks for, validated (problems raised as one SceneError)."""
     fw = scene.problem
     names = list(scene.find) or ([] if fw.braking is not None and not fw.machine.loads else list(DEFAULT_FIND))
@@ -176,7 +181,7 @@ def requested(scene: Any, extra: tuple[tuple[str, float], ...] = ()) -> list[str
     return names
 
 
-def analyse_flywheel(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (), *,
+def analyse_flywheel(scene: Scene[FlywheelScene], extra_measured: tuple[tuple[str, float], ...] = (), *,
                      estimates: bool = True) -> FlywheelAnalysis:
     """Carry out what the flywheel scene asks for and build its check table (with each row's own
     error estimate, which redoes the work at 2N and 4N positions: only a check needs it)."""
@@ -184,7 +189,7 @@ def analyse_flywheel(scene: Any, extra_measured: tuple[tuple[str, float], ...] =
         return _analyse(scene, extra_measured, estimates)
 
 
-def _analyse(scene: Any, extra: tuple[tuple[str, float], ...], estimates: bool) -> FlywheelAnalysis:
+def _analyse(scene: Scene[FlywheelScene], extra: tuple[tuple[str, float], ...], estimates: bool) -> FlywheelAnalysis:
     fw = scene.problem
     machine: Machine = fw.machine
     names = requested(scene, extra)
@@ -264,7 +269,7 @@ def _reduce(an: FlywheelAnalysis) -> None:
                                      f"position {k + 1} (φ = {math.degrees(an.phi[k]):.6g}°)")
 
 
-def _with_show(scene: Any) -> Any:
+def _with_show(scene: Scene[FlywheelScene]) -> Scene[FlywheelScene]:
     """The linkage scales are chosen as for a sheet showing the mechanism and its velocity polygon."""
     import dataclasses
 
@@ -281,7 +286,7 @@ def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
     r = an.reduction
     try:
         an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
-                                    delta=machine.delta, balance=machine.balance, form=fw.tangents,
+                                    delta=machine.delta, balance=machine.balance, form=cast("Literal['exact', 'book']", fw.tangents),
                                     H_mm=fw.pole_distance, scales=scales, need=want)
     except WrongBalance as e:
         raise SceneError([("flywheel.balance", _wrong_balance(machine.balance, e.work))], an.scene.source) from None
@@ -348,7 +353,7 @@ def _braking(an: FlywheelAnalysis) -> None:
     fw = an.scene.problem
     from graphmech.problems.flywheel.braking_figures import draw_rundown
 
-    b, w0 = fw.braking, an.machine.omega_m
+    b, w0 = cast("Braking", fw.braking), an.machine.omega_m  # asked only of a scene with [flywheel.braking]
     J = an.braking_inertia
     if not J > 0.0:
         raise SceneError([("flywheel.braking", "nothing to stop: the machine's reduced inertia is 0; give its "
@@ -399,7 +404,7 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
         return r.t_stop, an.braking.t, r.t_stop_mm, r.mu_t, False
     if base in ("Jp", "Mp"):
         ex = _exact(an)
-        phi = an.phi[i : i + 1]
+        phi = an.phi[cast(int, i) : cast(int, i) + 1]  # a quantity at a position has one
         if base == "Jp":
             return float(an.reduction.J[i]), float(ex.inertia(phi)[0]), None, an.scales.get("v", 1.0), False
         return float(an.reduction.M[i]), float(ex.load_moment(phi, mean_at_steps=True)[0]), None, \
@@ -408,7 +413,7 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
     mu_T = float(d.scales["T"]) if d is not None else 1.0
     if base in ("DeltaT", "A_p"):
         g = float(d.energy_mm[i] if base == "DeltaT" else d.work_mm[i]) * mu_T
-        e = float(ex.energy(an.phi[i : i + 1])[0])
+        e = float(ex.energy(an.phi[cast(int, i) : cast(int, i) + 1])[0])
         if base == "A_p":
             e -= ex.balancing_moment() * float(an.phi[i])
         return g, e, g / mu_T, mu_T, False
@@ -550,7 +555,7 @@ def _denominator(an: FlywheelAnalysis, r: Row) -> float:
         return math.degrees(an.machine.cycle)
     if r.unit == "J":
         x = _exact(an).extremes()
-        return max(abs(r.exact), x.maximum - x.minimum, 1e-300)
+        return cast(float, max(abs(r.exact), x.maximum - x.minimum, 1e-300))
     return max(abs(r.exact), abs(r.scale) * 1e-3, 1e-300)
 
 
@@ -616,9 +621,9 @@ def _tighter_motion(an: FlywheelAnalysis) -> tuple[Any, float]:
 
 
 def _motion_value(mo: Any, base: str) -> float:
-    return {"omega_max_true": mo.omega_max, "omega_min_true": mo.omega_min,
+    return cast(float, {"omega_max_true": mo.omega_max, "omega_min_true": mo.omega_min,
             "phi_omega_max": math.degrees(mo.phi_omega_max), "phi_omega_min": math.degrees(mo.phi_omega_min),
-            "delta_achieved": mo.delta, "omega_mean_time": mo.omega_time_mean}[base]
+            "delta_achieved": mo.delta, "omega_mean_time": mo.omega_time_mean}[base])
 
 
 # ---------------------------------------------------------------------------- verdicts

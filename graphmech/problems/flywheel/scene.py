@@ -877,8 +877,8 @@ def _check_find(top: Reader, count: int | None) -> None:
 
 
 def parse_flywheel_scene(
-    data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]
-) -> Scene:
+    data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
+) -> Scene[FlywheelScene]:
     """The rest of :func:`graphmech.scene.parse_scene` for a scene with a [flywheel] table.
 
     Parameters

@@ -5,30 +5,37 @@ friction circles and angles by successive approximation — checked against the 
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
 
+if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.problems.forces.check import ForceAnalysis
+    from graphmech.problems.forces.scene import ForceScene
+    from graphmech.problems.judging import Verdict
+    from graphmech.problems.reader import Reader, Scene
 
-def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+
+def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[ForceScene]:
     from graphmech.problems.forces.scene import parse_forces_scene
 
     return parse_forces_scene(data, source, top, order)
 
 
-def _analyse(scene: Any, extra: Extra) -> Any:
+def _analyse(scene: Scene[ForceScene], extra: Extra) -> ForceAnalysis:
     from graphmech.problems.forces.check import analyse_forces
 
     return analyse_forces(scene, extra)
 
 
-def _sheet(scene: Any, footer: Footer) -> Any:
+def _sheet(scene: Scene[ForceScene], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.forces.check import render_forces
 
     return render_forces(scene, footer)
 
 
-def _extras(an: Any) -> dict[str, Any]:
+def _extras(an: ForceAnalysis) -> dict[str, Any]:
     return {"friction": an.friction_summary()} if an.scene.problem.model.has_friction else {}
 
 

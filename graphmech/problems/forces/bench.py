@@ -14,7 +14,7 @@ scipy's ``root`` position by position; ``rounds`` is how many rounds it took).
 """
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -98,7 +98,7 @@ def kinetostatic_records(quick: bool = False) -> list[dict[str, Any]]:
             secs, (sol, lever) = best_time(run, repeat)
             kin_exact = solve_exact(lk, phi)
             m_secs, ex = best_time(lambda: solve_forces(lk, model, phi, kin_exact), 1 if friction else repeat)
-            d = _disagreement(sol, lever, ex, lk.driver.length)
+            d = _disagreement(sol, lever, ex, cast("Crank", lk.driver).length)
             records.append({"method": "kinetostatics", "case": case, "n": n, "seconds": secs,
                             "max_rel_error": max(d.values()), **d, "matrix_seconds": m_secs,
                             "rounds": sol.iterations})

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -29,6 +29,7 @@ from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.kinetostatics import ExactForces, solve_forces
 from graphmech.methods.kinetostatics import (
     SHALLOW_SIN,
+    GuideReaction,
     KinetostaticSolution,
     Lever,
     PolygonKinematics,
@@ -40,6 +41,12 @@ from graphmech.methods.kinetostatics import (
 )
 from graphmech.scales import round_scale
 from graphmech.tolerances import COND_WARN
+
+if TYPE_CHECKING:
+    from graphmech.drawing.primitives import Panel
+    from graphmech.mechanisms.linkage import Positions
+    from graphmech.problems.forces.scene import ForceScene
+    from graphmech.problems.reader import Scene
 
 #: The force quantities a scene may ask for (links are one character: R_12, F_i2, h_2).
 FORCE_NAME = re.compile(
@@ -59,7 +66,7 @@ def is_force_name(name: str) -> bool:
 class ForceAnalysis:
     """Everything a force scene produced."""
 
-    scene: Any
+    scene: Scene[ForceScene]
     kinematics: Analysis  # the linkage check (its build, plan, solutions, exact kinematics)
     kin: PolygonKinematics
     solution: KinetostaticSolution
@@ -99,7 +106,7 @@ FIT_COARSER = (1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0)
 FIT_GAIN_MM = 2.0
 
 
-def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> ForceAnalysis:
+def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, float], ...] = ()) -> ForceAnalysis:
     """Build and check a force scene (``extra_measured``: values from the command line).
 
     The scales a scene does not state are chosen so that the sheet it draws fits its page: μl
@@ -109,11 +116,13 @@ def analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...] = (
     # a value that overflows is reported once, in one line, as "not finite" (no numpy warnings)
     with np.errstate(all="ignore"):
         fa = _analyse_forces(scene, extra_measured, {})
-        drawn = any(p in FORCE_PANELS for p in scene.show) and len(scene.positions.values) == 1
+        drawn = any(p in FORCE_PANELS for p in scene.show) and len(cast("Positions", scene.positions).values) == 1
         if not (drawn and _ok(fa, 0)):
             return fa
+        forced: dict[str, float]
         best, spill, forced = fa, _spill(fa), {}
         tried: set[tuple[tuple[str, float], ...]] = set()
+        keys: tuple[str, ...]
         for keys in (("l", "v"), ("F",)):  # the drawings of the mechanism first, then the polygons
             keys = tuple(k for k in keys if k not in fa.stated)
             for factor in FIT_COARSER:
@@ -148,10 +157,10 @@ def _spill(fa: ForceAnalysis) -> float:
     bottom = sheet.page[1] - m - (DEFAULT.note_size * DEFAULT.line_gap * len(sheet.footer) + DEFAULT.note_size)
     right = sheet.page[0] - m
     over = [max(p.frame[3] - bottom, p.frame[2] - right, m - p.frame[0]) for p in layout.panels]
-    return max([0.0, *over]) + 1e-6  # (a sheet that warns never ranks with one that fits)
+    return cast(float, max([0.0, *over])) + 1e-6  # (a sheet that warns never ranks with one that fits)
 
 
-def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...],
+def _analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, float], ...],
                     forced: dict[str, float]) -> ForceAnalysis:
     """The analysis at the scene's scales, those in ``forced`` imposed (still reported as chosen)."""
     model = scene.problem.model
@@ -162,7 +171,7 @@ def _analyse_forces(scene: Any, extra_measured: tuple[tuple[str, float], ...],
     kin_find = tuple(n for n in scene.find if not is_force_name(n))
     kin_show = tuple(p for p in scene.show if p in ("mechanism", "velocity", "acceleration")) or ("mechanism",)
     kin_forced = {k: v for k, v in forced.items() if k in ("l", "v")}
-    plain = replace(scene, find=kin_find, show=kin_show, measured=tuple(measured), kind="linkage", problem=None,
+    plain = replace(cast("Scene[ForceScene | None]", scene), find=kin_find, show=kin_show, measured=tuple(measured), kind="linkage", problem=None,
                     scales={**scene.scales, **kin_forced})
     an = analyse(plain, extra_kin)
     an.stated = an.stated - set(kin_forced)  # imposed to fit the sheet, not stated by the scene
@@ -287,6 +296,7 @@ def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, f
     if m.group("ri"):
         key = (m.group("ri"), m.group("rj"))
         return vector(complex(sol.reactions[key][i]), ex.reactions[key][i], m.group("rc"))
+    g: GuideReaction | float
     if m.group("gi"):
         slider = m.group("gj")
         g = next(gr for gr in sol.guides if gr.slider == slider)
@@ -382,7 +392,7 @@ def _rows(fa: ForceAnalysis) -> None:
     sol = fa.solution
     # with friction, the same quantities one and two rounds earlier: how far the iteration still moves them
     before = None if sol.previous is None else replace(fa, solution=sol.previous)
-    earlier = None if before is None else replace(fa, solution=sol.previous.previous)  # type: ignore[union-attr]
+    earlier = None if before is None else replace(fa, solution=cast("KinetostaticSolution", cast("KinetostaticSolution", sol.previous).previous))
     basis = f"friction: {sol.iterations} rounds to {fa.scene.problem.model.tolerance:g} N"
     for k, raw in enumerate(fa.scene.find):
         base, at = split_name(raw)
@@ -392,6 +402,7 @@ def _rows(fa: ForceAnalysis) -> None:
         if why:
             problems.append((f"find[{k}]", why))
             continue
+        idx: range | list[int]
         if at is None:
             idx = range(len(fa.labels))
         elif at in fa.labels:
@@ -470,13 +481,13 @@ def _judge_forces(fa: ForceAnalysis, entries: list[tuple[str, str, float]]) -> l
 FORCE_PANELS = ("forces", "force_polygons", "lever")
 
 
-def render_forces(scene: Any, footer: tuple[str, ...] = ()) -> tuple[Any, list[str]]:
+def render_forces(scene: Scene[ForceScene], footer: tuple[str, ...] = ()) -> tuple[Any, list[str]]:
     """The sheet of a force scene and its warnings: the kinematic panels it shows, then the
     loads, each group's free body and force polygon and Zhukovsky's lever, at one position."""
     drawn = [p for p in scene.show if p in FORCE_PANELS]
-    if drawn and len(scene.positions.values) > 1:
+    if drawn and len(cast("Positions", scene.positions).values) > 1:
         raise SceneError([("show", f"{', '.join(drawn)} draw one position and this scene has "
-                                   f"{len(scene.positions.values)}: give the driver one angle "
+                                   f"{len(cast('Positions', scene.positions).values)}: give the driver one angle "
                                    "(graphmech check takes them all)")], scene.source)
     fa = analyse_forces(scene)
     if drawn and not _ok(fa, 0):
@@ -499,7 +510,7 @@ def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Any:
     b = an.build
     drawn = [p for p in scene.show if p in FORCE_PANELS]
     kin_show = [p for p in scene.show if p in ("mechanism", "velocity", "acceleration")]
-    head: tuple = ()
+    head: tuple[Panel, ...] = ()
     if kin_show:
         texts = [position_text(b, lab) for lab in an.labels]
         head = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,

@@ -15,7 +15,8 @@ polygon, Zhukovsky's lever — draw primitives on panels (the renderer knows not
 from __future__ import annotations
 
 import math
-from typing import Any, Sequence
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, Sequence
 
 import numpy as np
 
@@ -25,6 +26,13 @@ from graphmech.methods.kinetostatics import (GroupPolygon, GuideReaction, Kineto
                                             PolygonKinematics)
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Segment, Sheet,
                                          Slider)
+
+if TYPE_CHECKING:
+    from graphmech.mechanisms.forces import ForceModel
+    from graphmech.methods.linkage_construction import LinkageConstruction
+
+#: Mechanism point (m, as a complex number) → drawing (mm).
+ToMm = Callable[[complex], tuple[float, float]]
 
 #: Longest and shortest arrow of a free body or of the loads on the mechanism, mm (not to scale).
 ARROW_LONG, ARROW_SHORT = 16.0, 5.0
@@ -70,7 +78,7 @@ def _arrow_length(mag: float, largest: float) -> float:
     return ARROW_SHORT + (ARROW_LONG - ARROW_SHORT) * math.sqrt(mag / largest)
 
 
-def _arrows(forces: Sequence[tuple[str, complex, complex]], to_mm: Any, largest: float,
+def _arrows(forces: Sequence[tuple[str, complex, complex]], to_mm: ToMm, largest: float,
             role: str = "result") -> list[Primitive]:
     """Arrows from each force's point of application along the force, labelled at the head."""
     items: list[Primitive] = []
@@ -95,7 +103,7 @@ def _moment_arc(at: tuple[float, float], moment: float, name: str, r: float = 5.
     return [arc, Label(force_label(name), end, (), 3.0)]
 
 
-def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, model: Any,
+def loads_items(build: LinkageConstruction, kin: PolygonKinematics, sol: KinetostaticSolution, model: ForceModel,
                 i: int) -> list[Primitive]:
     """The kinematic diagram with the known loads, inertia resultants, M_b and friction circles."""
     linkage: Linkage = build.linkage
@@ -158,7 +166,7 @@ def loads_items(build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, m
     return items
 
 
-def free_body_items(build: Any, kin: PolygonKinematics, group: GroupPolygon, rho: dict[str, float],
+def free_body_items(build: LinkageConstruction, kin: PolygonKinematics, group: GroupPolygon, rho: dict[str, float],
                     joints: set[str], i: int, guides: Sequence[GuideReaction] = ()) -> list[Primitive]:
     """One group cut free: its links, hinges, slider, and every force on it (arrows not to scale).
 
@@ -220,16 +228,16 @@ def free_body_items(build: Any, kin: PolygonKinematics, group: GroupPolygon, rho
         forces.append((f.name, vec, at))
     largest = max([abs(v) for _, v, _ in forces], default=0.0)
     items += _arrows(forces, to_mm, largest)
-    for c in group.couples:  # M_i, M_b and the scene's own couples; friction couples moved the reactions
-        m = float(c.moment[i])
-        if m != 0 and c.name not in friction:
-            items += _moment_arc(_middle(kin, pts[c.link or group.links[0]], i, to_mm), m, c.name, 4.0)
+    for couple in group.couples:  # M_i, M_b and the scene's own couples; friction couples moved the reactions
+        m = float(couple.moment[i])
+        if m != 0 and couple.name not in friction:
+            items += _moment_arc(_middle(kin, pts[couple.link or group.links[0]], i, to_mm), m, couple.name, 4.0)
     for name, m, at in guide_moments:
         items += _moment_arc(to_mm(at), m, name, 6.0)
     return items
 
 
-def _middle(kin: PolygonKinematics, names: Sequence[str], i: int, to_mm: Any) -> tuple[float, float]:
+def _middle(kin: PolygonKinematics, names: Sequence[str], i: int, to_mm: ToMm) -> tuple[float, float]:
     """Where a couple on a link is drawn: halfway between its first and last points."""
     return to_mm(complex(kin.point[names[0]][i] + kin.point[names[-1]][i]) / 2)
 
@@ -286,7 +294,7 @@ def lever_items(linkage: Linkage, kin: PolygonKinematics, lever: Lever, i: int) 
     return items
 
 
-def force_sheet(title: str, build: Any, kin: PolygonKinematics, sol: KinetostaticSolution, model: Any,
+def force_sheet(title: str, build: LinkageConstruction, kin: PolygonKinematics, sol: KinetostaticSolution, model: ForceModel,
                 lever: Lever | None, mu_F: float, show: Sequence[str], i: int, position: str,
                 page: tuple[float, float], head: Sequence[Panel] = (), footer: tuple[str, ...] = ()) -> Sheet:
     """The force sheet of one position: the panels of ``show`` after the kinematic ``head`` panels."""

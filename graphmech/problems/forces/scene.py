@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 from graphmech.mechanisms.forces import (
     ForceModel,
@@ -89,7 +89,7 @@ def _sane(r: Reader, v: Any) -> float | None:
     if v.si != 0 and not ABSURD[0] <= abs(v.si) <= ABSURD[1]:
         r.problem(v.path, f"{v.text()} is absurd for a machine (0, or {ABSURD[0]:g} … {ABSURD[1]:g} in SI units)")
         return None
-    return v.si
+    return cast("float | None", v.si)
 
 
 def _name(r: Reader, key: str, hint: str) -> str | None:
@@ -201,7 +201,7 @@ def _read_forces(fr: Reader, linkage: Linkage | None) -> ForceScene | None:
         point = _on_link(r, _name(r, "point", "its centre of mass S, a point of that link"), link, links)
         by_weight = bool(r.present("weight"))
         if r.present("mass") and by_weight:
-            r.problem(r.at(r.present("weight")), "give mass or weight, not both")
+            r.problem(r.at(cast(str, r.present("weight"))), "give mass or weight, not both")
             r.ignore("weight")
             by_weight = False
         if by_weight:
@@ -315,7 +315,8 @@ def _read_forces(fr: Reader, linkage: Linkage | None) -> ForceScene | None:
     return ForceScene(model, mu_F, mu_F_path)
 
 
-def parse_forces_scene(data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene:
+def parse_forces_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
+                       ) -> Scene[ForceScene]:
     """The rest of :func:`graphmech.scene.parse_scene` for a linkage scene with a [forces] table.
 
     Returns

@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable, cast
 
 import numpy as np
 
@@ -33,6 +33,9 @@ from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.instant_centres import (InstantCentres, centre_name, common_link, instant_centres,
                                                least_speed_on_line, pair, point_names, polygon_of_links,
                                                positions_mm, signed_rate, split_line)
+
+if TYPE_CHECKING:
+    from graphmech.problems.reader import Scene
 
 #: The ``show`` entry that draws the instant centres.
 SHOW = "instant_centres"
@@ -61,7 +64,7 @@ def claims(name: str) -> bool:
     return any(p.fullmatch(base) for p in (_CENTRE, _OMEGA, _SPEED, _LEAST, _ZERO, _ZERO_ROW))
 
 
-def asked(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> bool:
+def asked(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...] = ()) -> bool:
     """Whether the scene shows, finds or judges anything by instant centres."""
     return (SHOW in scene.show or any(claims(n) for n in scene.find)
             or any(claims(n) for n, _ in tuple(scene.measured) + tuple(extra_measured)))
@@ -189,6 +192,7 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
 
     mu = an.scales["l"]
     ox, oy = build.origin
+    lid: str | None
     m_zero = _ZERO.fullmatch(base)
     if m_zero:
         if at is not None:
@@ -241,8 +245,8 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                                        f"{_deg(c.direction):.6g}°): it has no {coord[0]} coordinate")
                     continue
                 g = _deg(c.direction)
-                e = _deg(ev)  # a huge exact point lies in (nearly) the same direction
-                rows.append(Row(f"dir_{nm}{suffix}", "deg", None, 1.0, g, e, rel(g, e, "deg"),
+                exact_v = _deg(cast("tuple[float, float]", ev))  # a huge exact point lies in (nearly) the same direction
+                rows.append(Row(f"dir_{nm}{suffix}", "deg", None, 1.0, g, exact_v, rel(g, exact_v, "deg"),
                                 ill(ic, sol, [c.links]) or shaky))
                 continue
             if coord == "dir_":
@@ -250,14 +254,14 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                 continue
             for axis, n in (("x", 0), ("y", 1)):
                 if coord in ("", f"{axis}_"):
-                    drawn = c.point[n] + (ox, oy)[n] / mu
+                    drawn = cast("tuple[float, float]", c.point)[n] + (ox, oy)[n] / mu
                     g = drawn * mu
-                    e = ev[n] if ek == "point" else math.copysign(math.inf, 1.0)
-                    if not math.isfinite(e):
+                    exact_v = ev[n] if ek == "point" else math.copysign(math.inf, 1.0)
+                    if not math.isfinite(exact_v):
                         an.warnings.append(f"{where}: the exact {nm} is at infinity; the construction "
                                            f"put it at {g:.6g} m (ill-conditioned)")
                         continue
-                    rows.append(Row(f"{axis}_{nm}{suffix}", "m", drawn, mu, g, e, rel(g, e, "m"),
+                    rows.append(Row(f"{axis}_{nm}{suffix}", "m", drawn, mu, g, exact_v, rel(g, exact_v, "m"),
                                     ill(ic, sol, [c.links]) or shaky))
         elif kind == "omega":
             lid = spec[1]
@@ -265,12 +269,12 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
                 an.warnings.append(f"{where}: ω{lid} cannot be found from the centres — {ic.undetermined[lid]}")
                 continue
             mo = ic.motions[lid]
-            e = float(an.exact.omega[lid][i]) if lid != linkage.frame_link else 0.0
+            exact_v = float(an.exact.omega[lid][i]) if lid != linkage.frame_link else 0.0
             drawn, scale = (mo.drawn, mo.scale) if mo.drawn is not None else (None, 1.0)
-            g = mo.omega if drawn is None else drawn * scale
+            g = mo.omega if drawn is None else drawn * cast(float, scale)  # measured: both given
             keys = [ic.absolute(lid).links] + ([pair(links, mo.found[0], lid)] if len(mo.found) == 4 else [])
-            rows.append(Row(f"omega_{lid}_ic{suffix}", "rad/s", drawn, scale if drawn is not None else 1.0, g, e,
-                            rel(g, e, "rad/s"), ill(ic, sol, keys)))
+            rows.append(Row(f"omega_{lid}_ic{suffix}", "rad/s", drawn, cast(float, scale) if drawn is not None else 1.0, g, exact_v,
+                            rel(g, exact_v, "rad/s"), ill(ic, sol, keys)))
         elif kind == "speed":
             x = spec[1]
             lid = _carrier(linkage, ic, x)
@@ -287,8 +291,8 @@ def _collect(an: Any, ica: ICAnalysis, key: str, base: str, at: str | None, rows
             else:  # a translating link: the velocity found at its common centre
                 drawn, scale = math.hypot(*mo.velocity(p)), mu
             g = drawn * scale
-            e = float(np.hypot(*an.exact.vel[x][i]))
-            rows.append(Row(f"v_{x}_ic{suffix}", "m/s", drawn, scale, g, e, rel(g, e, "m/s"),
+            exact_v = float(np.hypot(*an.exact.vel[x][i]))
+            rows.append(Row(f"v_{x}_ic{suffix}", "m/s", drawn, scale, g, exact_v, rel(g, exact_v, "m/s"),
                             ill(ic, sol, [p1.links])))
         elif kind == "least":
             _, what, a, b, lid = spec
@@ -428,7 +432,7 @@ def _exact_least(linkage: Linkage, kin: Kinematics, lid: str, a: str, b: str, i:
     return float(r @ u), float(abs(w) * abs(r[0] * u[1] - r[1] * u[0]))
 
 
-def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str]) -> tuple | str:
+def _parse(base: str, linkage: Linkage, links: tuple[str, ...], names: set[str]) -> tuple[str, ...] | str:
     """A name → what to compute, or the reason it names nothing."""
     m = _CENTRE.fullmatch(base)
     if m:
@@ -498,7 +502,7 @@ def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
         if kind == "omega":
             return mo.omega
         assert u is not None
-        return (mo.v0[0] * u[0] + mo.v0[1] * u[1]) * mu
+        return cast(float, (mo.v0[0] * u[0] + mo.v0[1] * u[1]) * mu)
 
     batch = plan.evaluate_batch({build.param: grid})
     values = []

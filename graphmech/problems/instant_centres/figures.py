@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
-from typing import Any, Sequence
+from typing import Any, Sequence, cast
 
 from graphmech.problems.linkage.figures import mechanism_items
 from graphmech.methods.instant_centres import Centre, InstantCentres, centre_name, direct_centres, pair
@@ -133,9 +133,14 @@ def ic_panel(name: str, head: str, build: Any, pos: dict[str, tuple[float, float
     return Panel(name, head, tuple(items), (format_scale("l", mu_panel),) + tuple(notes), row=row)
 
 
-def _line(on: list[tuple[str, str]], ic: InstantCentres, pts: dict, near: set) -> list[Primitive]:
+#: The drawn centres, by pair of links (None: at infinity).
+_Points = dict[tuple[str, str], 'tuple[float, float] | None']
+
+
+def _line(on: list[tuple[str, str]], ic: InstantCentres, pts: _Points, near: set[tuple[str, str]]) -> list[Primitive]:
     """A Kennedy line through the finite near centres on it, overrunning, or toward a direction."""
-    finite = [pts[key] for key in on if key in near]
+    u: tuple[float, float] | None
+    finite = cast("list[tuple[float, float]]", [pts[key] for key in on if key in near])  # near ones are drawn
     dirs = [ic.centres[key].direction for key in on if ic.centres[key].at_infinity]
     spread = len(finite) >= 2 and max(math.dist(p, finite[0]) for p in finite) > 1e-9
     if spread:
@@ -157,7 +162,7 @@ def _line(on: list[tuple[str, str]], ic: InstantCentres, pts: dict, near: set) -
     return []
 
 
-def _on_line_base(c: Centre, ic: InstantCentres, pts: dict, near: set, centre: tuple[float, float]) -> tuple[float, float]:
+def _on_line_base(c: Centre, ic: InstantCentres, pts: _Points, near: set[tuple[str, str]], centre: tuple[float, float]) -> tuple[float, float]:
     """Where to start the arrow of a Kennedy centre at infinity: a known centre on its lines."""
     i, j = c.links
     for m in c.via:
@@ -273,9 +278,9 @@ def zero_panel(an: Any, x: str, zeros: Sequence[float], spans: dict[int, tuple[f
         ic = instant_centres(linkage, pos, mu_l=build.mu_l)
         if carrier is not None and carrier != driver:
             c = ic.centre(driver, carrier)
-            key = ("P", round(c.point[0], 6), round(c.point[1], 6)) if c.point is not None else None
-            if c.point is not None and key not in seen:
-                seen.add(key)  # type: ignore[arg-type]
+            key2 = ("P", round(c.point[0], 6), round(c.point[1], 6)) if c.point is not None else None
+            if c.point is not None and key2 not in seen:
+                seen.add(cast("tuple[str, float, float]", key2))
                 items.append(Circle(c.point, 1.4, "result"))
                 items.append(Label(label(driver, carrier), c.point, (), 3.0))
     ang = ", ".join(f"{math.degrees(z):.2f}°" for z in zeros)

@@ -8,37 +8,44 @@ bench.py times the polygons against a plain numpy closed form.
 """
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, cast
 
 from graphmech.problems.kind import Bench, Extra, Footer, Kind
 from graphmech.problems.reader import LINKAGE_KEYS
 
+if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.problems.judging import Verdict
+    from graphmech.problems.linkage.check import Analysis as LinkageAnalysis
+    from graphmech.problems.reader import Reader, Scene
 
-def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+
+def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[None]:
     from graphmech.problems.linkage.scene import parse_linkage_scene
 
-    return parse_linkage_scene(data, source, top, order)
+    return cast("Scene[None]", parse_linkage_scene(data, source, top, order))  # a linkage scene: its kind says so
 
 
-def _analyse(scene: Any, extra: Extra) -> Any:
+def _analyse(scene: Scene[None], extra: Extra) -> LinkageAnalysis:
     from graphmech.problems.linkage.check import analyse
 
     return analyse(scene, extra)
 
 
-def _judge(an: Any, extra: Extra) -> list[Any]:
+def _judge(an: LinkageAnalysis, extra: Extra) -> list[Verdict]:
     from graphmech.problems.linkage.check import judge
 
     return judge(an)
 
 
-def _sheet(scene: Any, footer: Footer) -> Any:
+def _sheet(scene: Scene[None], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.linkage.sheet import scene_sheet
 
     return scene_sheet(scene, footer)
 
 
-def _extras(an: Any) -> dict[str, Any]:
+def _extras(an: LinkageAnalysis) -> dict[str, Any]:
     if an.instant_centres is None:
         return {}
     from graphmech.problems.instant_centres.check import summary

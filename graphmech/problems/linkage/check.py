@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -40,6 +40,13 @@ from graphmech.problems.linkage.sizes import (
 )
 from graphmech.problems.reader import page_size
 
+if TYPE_CHECKING:
+    from graphmech.construction.graph import Solution
+    from graphmech.mechanisms.linkage import Positions
+    from graphmech.methods.quantities import Exact
+    from graphmech.problems.cycle.scene import CycleScene
+    from graphmech.problems.reader import Scene
+
 SCALE_KEYS = {"mechanism": "l", "velocity": "v", "acceleration": "a"}
 _PANEL_WORDS = {"mechanism": "the mechanism", "velocity": "the velocity polygon", "acceleration": "the acceleration polygon"}
 
@@ -59,14 +66,14 @@ def rows_that_fit(page: tuple[float, float]) -> int:
 class Analysis:
     """Everything one scene produced: the construction, its solutions, the exact solution."""
 
-    scene: Any
+    scene: Scene[object]
     build: LinkageConstruction
     plan: Any
     scales: dict[str, float]
     stated: set[str]  # which μ the scene stated (the others were chosen)
     positions: np.ndarray
     labels: tuple[str, ...]
-    solutions: list[Any]  # per position: a Solution, or None where it failed
+    solutions: list[Solution | None]  # per position: None where it failed
     failures: list[str]  # per position: "" or the reason
     exact: Kinematics
     warnings: list[str] = field(default_factory=list)
@@ -84,7 +91,7 @@ class Analysis:
 # ---------------------------------------------------------------------------- names
 
 
-def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) -> list[tuple[str, str, int]]:
+def _requested(scene: Scene[object], build: LinkageConstruction, labels: tuple[str, ...]) -> list[tuple[str, str, int]]:
     """(display name, quantity name, position index) for every ``find`` entry; bad names → SceneError."""
     problems = []
     out = []
@@ -97,6 +104,7 @@ def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) 
             close = close_names(base, build.quantities)
             problems.append((f"find[{k}]", f"unknown quantity {base!r}{close}"))
             continue
+        idx: range | list[int]
         if at is None:
             idx = range(len(labels))
         elif at in labels:
@@ -114,15 +122,15 @@ def _requested(scene: Any, build: LinkageConstruction, labels: tuple[str, ...]) 
 # ---------------------------------------------------------------------------- scales
 
 
-def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[dict[str, float], set[str]]:
+def choose_scales(scene: Scene[object], linkage: Linkage, positions: np.ndarray) -> tuple[dict[str, float], set[str]]:
     """μ from the scene where stated; otherwise the round value that fits the panel on the page.
 
     The construction is linear in 1/μ, so one provisional evaluation at μ = 1 gives every
     panel's extent in real units; each μ is then the smallest round number that fits that
     extent into the room one panel has (the panels stand side by side, one row per position).
     """
-    stated = {k for k in ("l", "v", "a") if k in scene.scales}
-    scales = {k: float(scene.scales[k]) for k in ("l", "v", "a") if k in stated}
+    stated: set[str] = {k for k in ("l", "v", "a") if k in scene.scales}
+    scales: dict[str, float] = {k: float(scene.scales[k]) for k in ("l", "v", "a") if k in stated}
     provisional = {k: scales.get(k, 1.0) for k in ("l", "v", "a")}
     b = build_polygons(linkage, provisional)
     steps = [s for s in b.g.steps.values() if s.kind == "point"]
@@ -165,7 +173,7 @@ def choose_scales(scene: Any, linkage: Linkage, positions: np.ndarray) -> tuple[
 # ---------------------------------------------------------------------------- analysis
 
 
-def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> Analysis:
+def analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...] = ()) -> Analysis:
     """Build, prune, evaluate and check one scene (``extra_measured``: values from the command line).
 
     Numbers beyond double precision (an ω of 1e155 rad/s squared) are a one-line
@@ -175,11 +183,13 @@ def analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...] = ()) -> A
         return _analyse(scene, extra_measured)
 
 
-def _analyse(scene: Any, extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
-    linkage: Linkage = scene.linkage
+def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
+    linkage: Linkage = cast("Linkage", scene.linkage)  # a linkage scene has one: the reader refuses it otherwise
     refuse_far_from_origin(scene, linkage, mechanism_size(linkage))
-    positions = np.asarray(scene.positions.values, dtype=float)
-    labels = tuple(scene.positions.labels) or tuple(f"{v:g}" for v in positions)
+    positions = np.asarray(cast("Positions", scene.positions).values, dtype=float)
+    labels = tuple(cast("Positions", scene.positions).labels) or tuple(f"{v:g}" for v in positions)
+    i: int | np.intp
+    sol: Solution | None
     scales, stated = choose_scales(scene, linkage, positions)
     build = build_polygons(linkage, scales)
     wanted = _requested(scene, build, labels)
@@ -252,7 +262,7 @@ def _finite(values: Any) -> bool:
 
 def _row(an: Analysis, display: str, qname: str, i: int) -> Row:
     q = an.build.quantities[qname]
-    drawn, scale = an.solutions[i][q.slot]
+    drawn, scale = cast("Solution", an.solutions[i])[q.slot]  # a row is made only where it was constructed
     drawn, scale = float(drawn), float(scale)
     g = drawn * scale
     e = exact_value(an.exact, q.exact, i)
@@ -270,7 +280,7 @@ def _row(an: Analysis, display: str, qname: str, i: int) -> Row:
 # ---------------------------------------------------------------------------- exact values
 
 
-def exact_value(kin: Kinematics, spec: tuple, i: int) -> float:
+def exact_value(kin: Kinematics, spec: Exact, i: int) -> float:
     """The exact value that a quantity's ``exact`` description names, at position i."""
     kind = spec[0]
     P, V, A = kin.point, kin.vel, kin.acc
@@ -319,7 +329,7 @@ def _deps(an: Analysis, slot: str) -> set[str]:
 
 
 def _ill(an: Analysis, slot: str, i: int) -> bool:
-    sol = an.solutions[i]
+    sol = cast("Solution", an.solutions[i])
     texts = {an.plan.by_name[n].text for n in _deps(an, slot) if n in an.plan.by_name}
     return any(c > T.COND_WARN for t, c in sol.conds.items() if t in texts)
 
@@ -372,7 +382,7 @@ def _measured_quantities(entries: list[tuple[str, str, float]], build: LinkageCo
     return out
 
 
-def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> tuple[str, int | None, bool]:
+def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> tuple[str, int, bool]:
     """A measured name → (quantity name, position index, is a drawn segment)."""
     base, at = split_name(name)
     if at is not None and at not in labels:
@@ -404,7 +414,7 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
         raise OutOfDomain(f"no drawn segment {base!r} in this construction")
     # One drawn segment per pair of end steps, whichever way round it was named: the letters
     # alone may name two (the pole p and the image p of a point P).
-    ends: dict[frozenset, str] = {}
+    ends: dict[frozenset[str], str] = {}
     for n in found:
         ends.setdefault(frozenset(build.g.steps[build.quantities[n].slot].inputs[-2:]), n)
     if len(ends) > 1:
@@ -447,18 +457,18 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
                                   f"({an.exact.reason[i]}), so it cannot be judged"))
             continue
         drawn, scale = sol[q.slot]
-        e = exact_value(an.exact, q.exact, i)
+        exact_v = exact_value(an.exact, q.exact, i)
         panel_key = SCALE_KEYS[q.panel]
         if segment:
             if panel_key not in an.stated:
                 problems.append((key, f"the scene does not state μ{panel_key}, so a drawn length cannot be judged: "
                                       f"state it in [scales] or give the value ({qname}) instead"))
                 continue
-            expected = abs(e) / float(scale)
+            expected = abs(exact_v) / float(scale)
             out.append(Verdict(name, value, expected, prec, abs(abs(value) - expected) <= prec, "mm"))
         else:
             tol = _angle_tolerance(an, q, sol, prec) if q.unit == "deg" else prec * abs(float(scale))
-            out.append(Verdict(name, value, e, tol, abs(value - e) <= tol + 1e-12 * abs(e), q.unit))
+            out.append(Verdict(name, value, exact_v, tol, abs(value - exact_v) <= tol + 1e-12 * abs(exact_v), q.unit))
     if an.instant_centres is not None:
         more, trouble = ic_check.judge(an, prec)
         out += more

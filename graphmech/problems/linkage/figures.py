@@ -34,7 +34,7 @@ def _pt(v: Any) -> tuple[float, float]:
     return (float(v[0]), float(v[1]))
 
 
-def _unit(a: tuple, b: tuple) -> tuple[float, float]:
+def _unit(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float]:
     dx, dy = b[0] - a[0], b[1] - a[1]
     n = math.hypot(dx, dy)
     return (dx / n, dy / n) if n > 0 else (0.0, 0.0)
@@ -138,8 +138,8 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
         elif isinstance(y, RPP):
             sx, sy = math.cos(y.slot_angle), math.sin(y.slot_angle)
             c, p = pos[y.c], pos[y.p]
-            t = (p[0] - c[0]) * sx + (p[1] - c[1]) * sy
-            t_end = t + (10.0 if t >= 0 else -10.0)
+            t_c = (p[0] - c[0]) * sx + (p[1] - c[1]) * sy
+            t_end = t_c + (10.0 if t_c >= 0 else -10.0)
             items.append(Segment(c, (c[0] + t_end * sx, c[1] + t_end * sy), "given"))
             guide(k, y.guide, y.c)
             items.append(Slider(c, y.guide.angle))
@@ -173,7 +173,7 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
 def polygon_items(plan: Any, values: dict[str, Any], panel: str) -> list[Primitive]:
     """A polygon panel: construction lines, vectors, image letters, from the construction's steps."""
     items: list[Primitive] = []
-    labels: dict[tuple, Label] = {}
+    labels: dict[tuple[float, float], Label] = {}
     leaving: dict[str, list[tuple[float, float]]] = {}
     for s in plan.steps:
         if s.panel != panel or s.role == "hidden":

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Mapping
+from typing import TYPE_CHECKING, Any, Mapping
 
 from graphmech.errors import SceneError
 from graphmech.mechanisms.linkage import (
@@ -26,6 +26,9 @@ from graphmech.mechanisms.linkage import (
     SliderInput,
 )
 from graphmech.tolerances import PARALLEL_SIN
+
+if TYPE_CHECKING:
+    from graphmech.problems.cycle.scene import CycleScene
 from graphmech.problems.reader import (
     LINKAGE_KEYS,
     LINK_ID,
@@ -513,7 +516,8 @@ def _check_structure(
     return str(max(numeric) + 1) if numeric else "0"
 
 
-def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene:
+def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
+                        ) -> Scene[CycleScene | None]:
     """The rest of :func:`graphmech.scene.parse_scene` for a linkage scene (with a full cycle or
     the characteristics when it asks for them)."""
     problems = top.problems
@@ -550,7 +554,7 @@ def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order
         find=find,
         scales=scales,
         linkage=linkage,
-        positions=positions,  # type: ignore[arg-type]
+        positions=positions,
         measured=measured,
         precision_mm=precision,
         page=page,

@@ -7,7 +7,7 @@ Shared by the linkage's check and the checks built on it (instant centres, full 
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -17,6 +17,9 @@ from graphmech.errors import SceneError
 from graphmech.exact.linkage import Kinematics
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.linkage_construction import LinkageConstruction
+
+if TYPE_CHECKING:
+    from graphmech.problems.reader import Scene
 
 
 def position_text(build: LinkageConstruction, label: str) -> str:
@@ -52,7 +55,7 @@ def offset_ratio(linkage: Linkage, size: float) -> float:
     return max(coords + [0.0]) / size
 
 
-def refuse_far_from_origin(scene: Any, linkage: Linkage, size: float) -> None:
+def refuse_far_from_origin(scene: Scene[object], linkage: Linkage, size: float) -> None:
     """Refuse a mechanism so far from the origin that its coordinates keep no digit of its
     geometry (a guide through x = 1e300 m): nothing can be drawn or solved there (the friction
     iteration of a force scene ran for minutes on it)."""

@@ -4,30 +4,38 @@ mechanism's class; the links, pairs and groups drawn.
 """
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any
 
 from graphmech.problems.kind import Extra, Footer, Kind
 
+if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.problems.judging import Verdict
+    from graphmech.problems.reader import Reader, Scene
+    from graphmech.problems.structure.check import StructureAnalysis
+    from graphmech.problems.structure.scene import StructureScene
 
-def _read(data: Any, source: str, top: Any, order: Any) -> Any:
+
+def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[StructureScene]:
     from graphmech.problems.structure.scene import parse_structure_scene
 
     return parse_structure_scene(data, source, top, order)
 
 
-def _analyse(scene: Any, extra: Extra) -> Any:
+def _analyse(scene: Scene[StructureScene], extra: Extra) -> StructureAnalysis:
     from graphmech.problems.structure.check import analyse_structure
 
     return analyse_structure(scene)
 
 
-def _judge(an: Any, extra: Extra) -> list[Any]:
+def _judge(an: StructureAnalysis, extra: Extra) -> list[Verdict]:
     from graphmech.problems.structure.check import judge_structure
 
     return judge_structure(an, extra)
 
 
-def _sheet(scene: Any, footer: Footer) -> Any:
+def _sheet(scene: Scene[StructureScene], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.judging import finite
     from graphmech.problems.reader import page_size
     from graphmech.problems.structure.check import analyse_structure
@@ -37,7 +45,7 @@ def _sheet(scene: Any, footer: Footer) -> Any:
     return structure_sheet(scene.title, an, page_size(scene), footer), list(an.warnings)
 
 
-def _lines(an: Any) -> list[str]:
+def _lines(an: StructureAnalysis) -> list[str]:
     from graphmech.problems.structure.check import text_summary
 
     return text_summary(an)

@@ -12,10 +12,14 @@ the rank, the groups and the class.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from graphmech.mechanisms.topology import Mobility, Structure, grubler, mobility, roman, structure
 from graphmech.scales import drawn_size_problem
+
+if TYPE_CHECKING:
+    from graphmech.problems.reader import Scene
+    from graphmech.problems.structure.scene import StructureScene
 
 #: find names that need the Jacobian (the others are counts or the decomposition).
 _NEEDS_RANK = {"F", "F_actual", "rank", "p_redundant", "p_redundant_actual"}
@@ -23,7 +27,7 @@ _NEEDS_RANK = {"F", "F_actual", "rank", "p_redundant", "p_redundant_actual"}
 
 @dataclass
 class StructureAnalysis:
-    scene: Any
+    scene: Scene[StructureScene]
     mobility: Mobility | None
     structure: Structure | None
     rows: list[Any] = field(default_factory=list)
@@ -75,7 +79,7 @@ def formula_text(n: int, pl: int, ph: int, p_redundant: int, F_local: int, F: in
     return f"F = 3·{n} − (2·{pl} + {ph} − {p_redundant}) − {F_local} = {F}"
 
 
-def analyse_structure(scene: Any) -> StructureAnalysis:
+def analyse_structure(scene: Scene[StructureScene]) -> StructureAnalysis:
     """Count, rank and decompose what the scene asks for."""
     from graphmech.problems.judging import Row
 
@@ -146,7 +150,7 @@ def judge_structure(an: StructureAnalysis, extra: tuple[tuple[str, float], ...] 
     from graphmech.errors import SceneError
 
     doc = an.summary()
-    values = {k: doc[k] for k in ("n", "pl", "ph", "F_local", "p_redundant", "F_count", "F", "class") if k in doc}
+    values: dict[str, Any] = {k: doc[k] for k in ("n", "pl", "ph", "F_local", "p_redundant", "F_count", "F", "class") if k in doc}
     if "jacobian" in doc:
         j = doc["jacobian"]
         values.update({"F_actual": j["F_actual"], "rank": j["rank"], "p_redundant_actual": j["p_redundant"]})

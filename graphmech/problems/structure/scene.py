@@ -183,7 +183,8 @@ def _read_structure(st: Reader) -> StructureScene | None:
     return StructureScene(topo, with_at == len(pairs) and len(pairs) > 0)
 
 
-def parse_structure_scene(data: dict[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene:
+def parse_structure_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
+                          ) -> Scene[StructureScene]:
     """The rest of :func:`graphmech.scene.parse_scene` for a scene with a [structure] table.
 
     Examples
