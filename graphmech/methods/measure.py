@@ -131,12 +131,15 @@ def link_angle(b: "LinkageConstruction", link: str) -> None:
         return
     U, V = pts[0], pts[1]
 
+    # x % 360 is 360.0 itself for a tiny negative x (sin 2π ≈ -2.4e-16): folded back to 0.
     def kern(ops: Ops, u: Components, v: Components) -> Components:
         if ops.batch:
             import numpy as np
 
-            return (np.degrees(np.arctan2(v[1] - u[1], v[0] - u[0])) % 360.0, 1.0)
-        return (math.degrees(math.atan2(v[1] - u[1], v[0] - u[0])) % 360.0, 1.0)
+            d = np.degrees(np.arctan2(v[1] - u[1], v[0] - u[0])) % 360.0
+            return (np.where(d == 360.0, 0.0, d), 1.0)
+        g = math.degrees(math.atan2(v[1] - u[1], v[0] - u[0])) % 360.0
+        return (0.0 if g == 360.0 else g, 1.0)
 
     _add(b, f"theta_{link}", "deg", kern, (b.mech[U], b.mech[V]), ("angle", link), "mechanism")
 

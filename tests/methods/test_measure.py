@@ -23,7 +23,7 @@ def test_omega_is_signed_counter_clockwise() -> None:
 @pytest.mark.parametrize("deg, want", [
     (30.0, 30.0), (225.0, 225.0), (-90.0, 270.0),
     # sin(2π) = −2.4e-16: atan2 gives −1e-16 rad, and −1.4e-14 % 360.0 rounds to 360.0
-    pytest.param(360.0, 0.0, marks=pytest.mark.xfail(strict=True, reason="θ = 360.0 at φ = 2π, outside [0, 360)")),
+    (360.0, 0.0),
 ])
 def test_link_angle_is_degrees_in_0_360(deg: float, want: float) -> None:
     b = build_polygons(RIGHT_FOURBAR, SCALES)
