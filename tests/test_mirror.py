@@ -1,7 +1,11 @@
 """The tests mirror the package: each module that holds logic (it defines a function or a method)
 has its own test module at the same place below tests/ (graphmech/problems/cam/scene.py →
 tests/problems/cam/test_scene.py), and every test module below a mirrored folder tests a module
-that exists — or is one of the few kinds of test that span a kind's modules (EXTRAS)."""
+that exists — or is one of the few kinds of test that span a kind's modules (EXTRAS).
+
+A package's ``__init__.py`` is wiring, not logic: the registry (problems/__init__.py: KINDS and
+its one-line dispatchers) and each kind's lazy wrappers are tested through every registered kind
+(tests/problems/test_kind.py) and the scene loader's dispatch (tests/test_scene.py)."""
 from __future__ import annotations
 
 import ast
