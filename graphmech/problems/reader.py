@@ -674,10 +674,6 @@ class Reader:
         return [start + i * step for i in range(count)]
 
 
-def all_valid(*values: Any) -> bool:
-    return all(v is not None for v in values)
-
-
 # --------------------------------------------------------------------------------------------
 # The tables every scene may have, one function each.
 # --------------------------------------------------------------------------------------------

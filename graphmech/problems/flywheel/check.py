@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import TYPE_CHECKING, Any, Literal, cast
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -286,7 +286,7 @@ def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
     r = an.reduction
     try:
         an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
-                                    delta=machine.delta, balance=machine.balance, form=cast("Literal['exact', 'book']", fw.tangents),
+                                    delta=machine.delta, balance=machine.balance, form=fw.tangents,
                                     H_mm=fw.pole_distance, scales=scales, need=want)
     except WrongBalance as e:
         raise SceneError([("flywheel.balance", _wrong_balance(machine.balance, e.work))], an.scene.source) from None
