@@ -13,7 +13,7 @@ import difflib
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Generic, Iterable, Mapping, NoReturn, TypeVar, cast, overload
+from typing import Any, Generic, Iterable, Mapping, NoReturn, TypeGuard, TypeVar, cast, overload
 
 from graphmech.errors import SceneError
 from graphmech.scales import PAPER, scale_out_of_range
@@ -237,6 +237,11 @@ def type_name(value: Any) -> str:
     if isinstance(value, dict):
         return "a table"
     return "a date/time" if hasattr(value, "isoformat") else type(value).__name__
+
+
+def is_choice(value: object, choices: tuple[S, ...]) -> TypeGuard[S]:
+    """Whether ``value`` is one of the string ``choices``: narrows it to their Literal."""
+    return isinstance(value, str) and value in choices
 
 
 def compact(value: float) -> str:
