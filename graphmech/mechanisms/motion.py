@@ -199,9 +199,9 @@ def validate(program: MotionProgram) -> list[tuple[str, str]]:
     stroke: Any = getattr(program, "stroke", None)
     if not _finite_number(stroke) or not stroke > 0:
         problems.append(("program.stroke", f"must be a finite number > 0 (m, or rad), got {stroke!r}"))
-    segments = getattr(program, "segments", None)
+    segments: Any = getattr(program, "segments", None)  # like stroke: whatever was passed, checked here
     try:
-        segments = tuple(segments)  # type: ignore[arg-type]
+        segments = tuple(segments)
     except TypeError:
         return problems + [("program.segments", "must be a sequence of segments")]
     if not segments:
