@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, cast
 
 from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import SceneError
@@ -23,6 +23,7 @@ from graphmech.problems.balancing.scene import DEFAULT_FIND, QUANTITIES, Balanci
 from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
+    from graphmech.drawing.primitives import Sheet
     from graphmech.problems.reader import Scene
     from graphmech.mechanisms.rotor import RotorMass
 
@@ -215,7 +216,7 @@ def judge_balancing(an: BalancingAnalysis, precision_mm: float | None = None) ->
 __all__ = ["BalancingAnalysis", "analyse_balancing", "judge_balancing", "requested"]
 
 
-def balancing_figure(an: BalancingAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Any:
+def balancing_figure(an: BalancingAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
     """The sheet of the scene's ``show``: the rotor and the mass-radius polygons."""
     from graphmech.problems.balancing.figures import balancing_sheet
 
