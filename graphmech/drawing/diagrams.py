@@ -8,6 +8,7 @@ against φ).
 from __future__ import annotations
 
 import dataclasses
+from typing import overload
 
 import numpy as np
 
@@ -61,8 +62,12 @@ def count_every(n: int, most: int) -> int:
     return nice_step(n / most)
 
 
+@overload
+def moved(item: Label, dx: float, dy: float) -> Label: ...
+@overload
+def moved(item: Primitive, dx: float, dy: float) -> Primitive: ...
 def moved(item: Primitive, dx: float, dy: float) -> Primitive:
-    """The item translated by (dx, dy) mm."""
+    """The item translated by (dx, dy) mm (a label stays a label)."""
     def mv(p: XY) -> XY:
         return (p[0] + dx, p[1] + dy)
     if isinstance(item, (Segment, Arrow)):

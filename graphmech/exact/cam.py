@@ -307,8 +307,8 @@ def initial_rocker_angle(cam: DiscCam) -> float:
 def _path(cam: DiscCam, delta: np.ndarray) -> _Path:
     rot = _check_rotation(cam)
     f = cam.follower
-    s = tuple(np.asarray(displacement(cam.program, delta, k), dtype=float) for k in range(4))
-    s0, s1, s2, s3 = s
+    s0, s1, s2, s3 = (np.asarray(displacement(cam.program, delta, k), dtype=float) for k in range(4))
+    s = (s0, s1, s2, s3)
     zero = np.zeros_like(s0)
     if isinstance(f, TranslatingFollower):
         e, r0 = f.offset, cam.base_radius
@@ -354,7 +354,7 @@ def _path(cam: DiscCam, delta: np.ndarray) -> _Path:
     Q = B2 - 2.0 * rot * JB1 - B
     Q1 = B3 - 2.0 * rot * JB2 - B1
     P3 = Q1 - rot * _quarter(Q)
-    return _Path(delta, s, B, T, T1, Q, P3, m, m1)  # type: ignore[arg-type]
+    return _Path(delta, s, B, T, T1, Q, P3, m, m1)
 
 
 def _flat(cam: DiscCam) -> bool:

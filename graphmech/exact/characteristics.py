@@ -29,6 +29,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass
+from typing import Callable
 
 from graphmech.errors import NotApplicable
 
@@ -190,7 +191,7 @@ def grashof_ranges(b: float, c: float, d: float) -> list[tuple[str, float, float
     return out
 
 
-def _pick(cands: list[complex], keep) -> complex:  # type: ignore[no-untyped-def]
+def _pick(cands: list[complex], keep: Callable[[complex], bool]) -> complex:
     for z in cands:
         if keep(z):
             return z

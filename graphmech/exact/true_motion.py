@@ -237,6 +237,7 @@ class _Model:
         def stalled(phi: float, y: np.ndarray) -> float:
             return float(y[0]) - stall
 
+        # scipy's solve_ivp reads an event's options off the function itself (untyped scipy)
         stalled.terminal = True  # type: ignore[attr-defined]
         stalled.direction = -1  # type: ignore[attr-defined]
         self.stalled = stalled
@@ -666,6 +667,7 @@ def braking_time(J: float, omega0: float, M_brake: float) -> Braking:
     def stopped(tau: float, y: np.ndarray) -> float:
         return float(y[0])
 
+    # solve_ivp reads an event's options off the function itself (untyped scipy)
     stopped.terminal = True  # type: ignore[attr-defined]
     stopped.direction = -1  # type: ignore[attr-defined]
     # In units of ω0 and of J·ω0/M the run-down is dω/dτ = −1 from 1: the solver (and its event

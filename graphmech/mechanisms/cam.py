@@ -27,6 +27,9 @@ from typing import Literal, Union
 
 Law = Literal["uniform", "parabolic", "cosine", "sine", "poly345", "table"]
 Contact = Literal["knife", "roller", "flat"]
+SegmentKind = Literal["rise", "return", "dwell"]
+#: Which way the rocker turns during the rise, against the cam's turning.
+Sense = Literal["opposite", "same"]
 
 
 @dataclass(frozen=True)
@@ -45,7 +48,7 @@ class Segment:
         stroke 0…1), first (0, 0) and last (1, 1); interpolated by a monotone cubic.
     """
 
-    kind: Literal["rise", "return", "dwell"]
+    kind: SegmentKind
     angle: float
     law: Law | None = None
     table: tuple[tuple[float, float], ...] = ()
@@ -74,7 +77,7 @@ class OscillatingFollower:
     arm: float  # |AB|, m
     contact: Contact = "roller"
     roller_radius: float = 0.0
-    sense: Literal["opposite", "same"] = "opposite"
+    sense: Sense = "opposite"
     kind: Literal["oscillating"] = "oscillating"
 
 

@@ -34,12 +34,12 @@ from typing import Any, cast
 import numpy as np
 
 from graphmech.errors import OutOfDomain, SceneError
-from graphmech.mechanisms.cam import MotionProgram
+from graphmech.mechanisms.cam import Law, MotionProgram
 
 __all__ = ["LAWS", "Extremum", "Impact", "breakpoints", "displacement", "impacts", "maxima", "validate"]
 
 #: The motion laws a rise or return may follow.
-LAWS: tuple[str, ...] = ("uniform", "parabolic", "cosine", "sine", "poly345", "table")
+LAWS: tuple[Law, ...] = ("uniform", "parabolic", "cosine", "sine", "poly345", "table")
 
 TWO_PI = 2.0 * math.pi
 
@@ -82,7 +82,7 @@ def _ppoly_eval(pp: Any, x: np.ndarray, k: int, left: bool) -> np.ndarray:
     return out
 
 
-def _f(law: str, x: np.ndarray, k: int, table: Any = None, left: bool = False) -> np.ndarray:
+def _f(law: str | None, x: np.ndarray, k: int, table: Any = None, left: bool = False) -> np.ndarray:
     """d^k f/dx^k of a law at x ∈ [0, 1] (right-hand values; left-hand limits with ``left``)."""
     x = np.asarray(x, dtype=float)
     if law == "uniform":
@@ -199,9 +199,9 @@ def validate(program: MotionProgram) -> list[tuple[str, str]]:
     stroke: Any = getattr(program, "stroke", None)
     if not _finite_number(stroke) or not stroke > 0:
         problems.append(("program.stroke", f"must be a finite number > 0 (m, or rad), got {stroke!r}"))
-    segments = getattr(program, "segments", None)
+    segments: Any = getattr(program, "segments", None)  # like stroke: whatever was passed, checked here
     try:
-        segments = tuple(segments)  # type: ignore[arg-type]
+        segments = tuple(segments)
     except TypeError:
         return problems + [("program.segments", "must be a sequence of segments")]
     if not segments:
@@ -345,7 +345,7 @@ def _segment_values(c: _Compiled, i: int, x: np.ndarray, order: int, left: bool 
     kind = c.kinds[i]
     if kind == "dwell":
         return np.full_like(x, c.levels[i] if order == 0 else 0.0, dtype=float)
-    f = _f(c.laws[i], x, order, c.tables[i], left)  # type: ignore[arg-type]
+    f = _f(c.laws[i], x, order, c.tables[i], left)
     h = c.stroke
     if order == 0:
         return h * f if kind == "rise" else h * (1.0 - f)

@@ -15,6 +15,7 @@ The balance conditions that check them are solved independently in
 """
 from __future__ import annotations
 
+import cmath
 import math
 from graphmech.errors import OutOfDomain
 from graphmech.mechanisms.rotor import RotorMass
@@ -54,6 +55,11 @@ class Correction:
     @property
     def balanced(self) -> bool:
         return self.theta is None
+
+    @property
+    def vector(self) -> complex:
+        """W·e^{iθ}, the correction as a complex number (0 when the plane is already balanced)."""
+        return 0j if self.theta is None else cmath.rect(self.W, self.theta)
 
 
 def degrees_0_360(theta: float) -> float:

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Callable, cast
 from graphmech.errors import NotApplicable
 from graphmech.geometry.kernels import ScalarOps, intersect_circle_line, intersect_circles
 from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage
@@ -245,8 +245,8 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
         kind = grashof_class(a, b, c, d)
         if kind not in ("crank_rocker_AB", "double_crank", "change_point"):
             raise NotApplicable(f"{no_turn} ({kind.replace('_', ' ')} by Grashof's rule): no extreme positions")
-        y = linkage.dyads[0]
-        branch = y.branch if isinstance(y, RRR) and y.q == n["D"] else ("right" if y.branch == "left" else "left")  # type: ignore[union-attr]
+        rrr = cast(RRR, linkage.dyads[0])  # a hinged four-bar's dyad
+        branch = rrr.branch if isinstance(rrr, RRR) and rrr.q == n["D"] else ("right" if rrr.branch == "left" else "left")
         side = 1.0 if branch == "left" else -1.0
 
         def on_branch(B: _XY, C: _XY) -> bool:

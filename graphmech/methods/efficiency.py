@@ -275,11 +275,12 @@ def wedge(Q: float, gamma: float, beta: float, phi: float, direction: Direction,
 
     # frictionless: which side each contact bears on (the signs of the normal forces)
     q2, q1 = solve(0.0, None, True)
-    sides = tuple(1.0 if _value(p, n) >= 0 else -1.0 for p, n in ((q2, "R12"), (q2, "R32"), (q1, "R31")))
+    s12, s32, s31 = (1.0 if _value(p, n) >= 0 else -1.0 for p, n in ((q2, "R12"), (q2, "R32"), (q1, "R31")))
+    sides = (s12, s32, s31)
     F0 = _value(q1, "F")
-    ideal_polys = (q2, q1) if sides == (1.0, 1.0, 1.0) else solve(0.0, sides, True)  # type: ignore[arg-type]
+    ideal_polys = (q2, q1) if sides == (1.0, 1.0, 1.0) else solve(0.0, sides, True)
     try:
-        p2, p1 = solve(phi, sides, False)  # type: ignore[arg-type]
+        p2, p1 = solve(phi, sides, False)
     except DegenerateConstruction:
         return Stroke(direction, ideal_polys, None, F0, 0.0, (), math.inf, (("v1", v1), ("v2", v2)))
     # friction turning the two unknowns of a triangle past parallel is self-locking (F changes sign

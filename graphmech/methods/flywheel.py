@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Literal, Mapping, Sequence
+from typing import Literal, Mapping, Sequence, SupportsFloat
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -161,9 +161,9 @@ def _frozen(a: ArrayLike) -> np.ndarray:
     return out
 
 
-def _positive(name: str, v: object) -> float:
+def _positive(name: str, v: SupportsFloat | str) -> float:
     try:
-        x = float(v)  # type: ignore[arg-type]
+        x = float(v)  # a caller without types may pass anything: float() refuses it below
     except (TypeError, ValueError):
         raise OutOfDomain(f"{name} must be a number, not {v!r}") from None
     if not (x > 0.0 and math.isfinite(x)):

@@ -20,6 +20,7 @@ from typing import cast
 
 import numpy as np
 
+from graphmech.construction.graph import Plan
 from graphmech.errors import DegenerateConstruction
 from graphmech.mechanisms.linkage import Crank
 from graphmech.mechanisms.machine import CrankMoment, LinkMoment, Machine, SliderLoad, Table
@@ -77,9 +78,9 @@ def _axis_of(b: LinkageConstruction, point: str, load: SliderLoad) -> tuple[floa
     return (math.cos(load.axis), math.sin(load.axis))
 
 
-def _projection(b: LinkageConstruction, plan: object, point: str, u: tuple[float, float],
+def _projection(b: LinkageConstruction, plan: Plan, point: str, u: tuple[float, float],
                 theta: np.ndarray) -> np.ndarray:
-    batch = plan.evaluate_batch({b.param: theta})  # type: ignore[attr-defined]
+    batch = plan.evaluate_batch({b.param: theta})
     x, y = batch[b.mech[point]]
     return (np.asarray(x) * u[0] + np.asarray(y) * u[1]) * b.mu_l
 

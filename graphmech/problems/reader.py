@@ -13,7 +13,7 @@ import difflib
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Generic, Iterable, Mapping, NoReturn, TypeVar, cast
+from typing import Any, Generic, Iterable, Mapping, NoReturn, TypeGuard, TypeVar, cast, overload
 
 from graphmech.errors import SceneError
 from graphmech.scales import PAPER, scale_out_of_range
@@ -41,6 +41,8 @@ class Page:
     size: tuple[float, float] = (297.0, 210.0)
 
 
+#: The choices of a string key, such as Literal["left", "right"]: what Reader.string returns.
+S = TypeVar("S", bound=str)
 #: The part of a scene its kind reads from its own tables (a CamScene, a FlywheelScene …).
 P = TypeVar("P", covariant=True)  # a Scene[CamScene] is a Scene[object]: the scene is frozen
 
@@ -237,6 +239,11 @@ def type_name(value: Any) -> str:
     return "a date/time" if hasattr(value, "isoformat") else type(value).__name__
 
 
+def is_choice(value: object, choices: tuple[S, ...]) -> TypeGuard[S]:
+    """Whether ``value`` is one of the string ``choices``: narrows it to their Literal."""
+    return isinstance(value, str) and value in choices
+
+
 def compact(value: float) -> str:
     """Compact text of a number as the user wrote it: 50.0 → "50", 12.5 → "12.5"."""
     text = f"{value:.12g}"
@@ -335,7 +342,7 @@ class Reader:
         return Reader(table, path, self.problems, self.units)
 
     # -- raw access ----------------------------------------------------------------------------
-    def raw(self, key: str, *, required: bool = False, hint: str = "") -> Any:
+    def raw(self, key: str, *, required: bool = False, hint: str = "") -> object:
         """The value under ``key`` (marked used), or ``MISSING``."""
         self.known.add(key)
         if key not in self.table:
@@ -380,7 +387,18 @@ class Reader:
             self.problem(path, f"must be {shape}, not {got}")
             return None
         out = [self.number(v, f"{path}[{i}]", positive=positive) for i, v in enumerate(value)]
-        return None if any(x is None for x in out) else out  # type: ignore[return-value]
+        valid = [x for x in out if x is not None]
+        return valid if len(valid) == len(out) else None
+
+    @overload
+    def string(
+        self, key: str, *, choices: Iterable[S], required: bool = False, default: S | None = None
+    ) -> S | None: ...
+
+    @overload
+    def string(
+        self, key: str, *, choices: None = None, required: bool = False, default: str | None = None
+    ) -> str | None: ...
 
     def string(
         self,
@@ -390,6 +408,8 @@ class Reader:
         required: bool = False,
         default: str | None = None,
     ) -> str | None:
+        """A string under ``key``; with ``choices``, one of them (typed as the choices are: a
+        tuple of Literal names gives that Literal)."""
         options = tuple(choices) if choices is not None else None
         hint = f"write {key} = {one_of(repr(c) for c in options)}" if options else ""
         value = self.raw(key, required=required, hint=hint.replace("'", '"'))
@@ -657,10 +677,6 @@ class Reader:
             )
             return None
         return [start + i * step for i in range(count)]
-
-
-def all_valid(*values: Any) -> bool:
-    return all(v is not None for v in values)
 
 
 # --------------------------------------------------------------------------------------------
@@ -944,7 +960,7 @@ def file_order(
 MAX_TABLE_POINTS = 1000
 
 
-def pole_distance_value(r: Reader) -> Any:
+def pole_distance_value(r: Reader) -> object:
     """The raw ``pole_distance_mm`` of a table (or ``MISSING``); ``pole_distance`` in other units
     is refused: H is always millimetres of drawing."""
     r.known.add("pole_distance_mm")

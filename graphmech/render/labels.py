@@ -237,10 +237,11 @@ def place_labels(
             if overlap[best] <= 0.0 or len(gaps) > len(base_gaps):
                 break
             gaps = base_gaps + fallback
-        box = tuple(float(v) for v in boxes[best])
+        row = boxes[best]
+        box = (float(row[0]), float(row[1]), float(row[2]), float(row[3]))
         centre = (float(centres[best, 0]), float(centres[best, 1]))
-        placed_boxes.append(box)  # type: ignore[arg-type]
-        out.append(PlacedLabel(label, centre, box))  # type: ignore[arg-type]
+        placed_boxes.append(box)
+        out.append(PlacedLabel(label, centre, box))
     return tuple(out)
 
 

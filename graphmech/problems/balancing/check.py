@@ -12,7 +12,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, cast
 
 from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import SceneError
@@ -23,6 +23,7 @@ from graphmech.problems.balancing.scene import DEFAULT_FIND, QUANTITIES, Balanci
 from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
+    from graphmech.drawing.primitives import Sheet
     from graphmech.problems.reader import Scene
     from graphmech.mechanisms.rotor import RotorMass
 
@@ -112,7 +113,8 @@ def analyse_balancing(scene: Scene[BalancingProblem], extra_measured: tuple[tupl
                                "itself, so there is no angle)")
     kappa = an.split_condition
     if kappa > ILL_SPLIT:
-        span = abs(p.planes[1] - p.planes[0])  # type: ignore[index]
+        z1, z2 = _planes(p)  # only a dynamic problem has a split to condition
+        span = abs(z2 - z1)
         an.warnings.append(f"the correction planes are only {span * 1000:.3g} mm apart against z up to "
                            f"{kappa * span * 1000:.4g} mm: the two-plane split amplifies round-off by z/Δ = "
                            f"{kappa:.2g} (ill-conditioned; the corrections are good to about {kappa * 2e-16:.0e} "
@@ -124,10 +126,15 @@ def analyse_balancing(scene: Scene[BalancingProblem], extra_measured: tuple[tupl
     return an
 
 
+def _planes(p: BalancingProblem) -> tuple[float, float]:
+    """z_I, z_II of a dynamic problem: read_balancing refuses one without them."""
+    return cast("tuple[float, float]", p.planes)
+
+
 def _balance(p: BalancingProblem, masses: list[RotorMass], mu_W: float) -> tuple[gm.Correction, ...]:
     if p.type == "static":
         return (gm.static_balance(masses, p.r_b[0], mu_W),)
-    return gm.dynamic_balance(masses, p.planes[0], p.planes[1], (p.r_b[0], p.r_b[1]), mu_W)  # type: ignore[index]
+    return gm.dynamic_balance(masses, *_planes(p), (p.r_b[0], p.r_b[1]), mu_W)
 
 
 def _exact(an: BalancingAnalysis) -> tuple[complex, ...]:
@@ -135,7 +142,7 @@ def _exact(an: BalancingAnalysis) -> tuple[complex, ...]:
     us = [ex.Unbalance(u.m, u.r, u.theta, u.z) for u in p.masses]
     if p.type == "static":
         return (ex.static_correction(us),)
-    return ex.dynamic_correction(us, p.planes[0], p.planes[1])  # type: ignore[index]
+    return ex.dynamic_correction(us, *_planes(p))
 
 
 def _deg360(theta: float) -> float:
@@ -154,10 +161,10 @@ def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | Non
     mu = an.scales["W"]
     if name.startswith("residual"):
         us = [ex.Unbalance(u.m, u.r, u.theta, u.z) for u in p.masses]
-        planes = (0.0,) if p.type == "static" else cast("tuple[float, float]", p.planes)  # a dynamic problem has two
-        drawn = [(0j if c.balanced else cmath.rect(c.W, c.theta), z) for c, z in zip(an.corrections, planes)]  # type: ignore[arg-type]
+        planes = (0.0,) if p.type == "static" else _planes(p)
+        drawn = [(c.vector, z) for c, z in zip(an.corrections, planes)]
         force, moment = ex.residuals(us, drawn, planes[0])  # about plane I: no far-off lever to cancel
-        span = 1.0 if p.type == "static" else abs(p.planes[1] - p.planes[0])  # type: ignore[index]
+        span = 1.0 if p.type == "static" else abs(_planes(p)[1] - _planes(p)[0])
         if name == "residual_force":
             return force, 0.0, None, 1.0, an.size
         return moment, 0.0, None, 1.0, an.size * span
@@ -168,9 +175,9 @@ def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | Non
         return c.W, abs(w), c.drawn_mm, mu, an.size
     if name.startswith("m"):
         return c.m_b, abs(w) / c.r_b, c.drawn_mm, mu / c.r_b, an.size / c.r_b
-    if c.balanced:
+    if c.theta is None:  # balanced
         return None
-    g = gm.degrees_0_360(float(c.theta))  # type: ignore[arg-type]
+    g = gm.degrees_0_360(float(c.theta))
     e = _deg360(cmath.phase(w))
     return g, g - _angle_diff_deg(g, e), None, 1.0, 360.0
 
@@ -209,7 +216,7 @@ def judge_balancing(an: BalancingAnalysis, precision_mm: float | None = None) ->
 __all__ = ["BalancingAnalysis", "analyse_balancing", "judge_balancing", "requested"]
 
 
-def balancing_figure(an: BalancingAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Any:
+def balancing_figure(an: BalancingAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
     """The sheet of the scene's ``show``: the rotor and the mass-radius polygons."""
     from graphmech.problems.balancing.figures import balancing_sheet
 

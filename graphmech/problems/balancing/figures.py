@@ -66,9 +66,9 @@ def rotor_items(masses: Sequence[Any], corrections: Sequence[Correction], mu_l: 
                   Label("m" + subscript(u.name) if u.name.isdigit() else f"m {u.name}", p,
                         ((-math.cos(u.theta), -math.sin(u.theta)),), 3.0)]
     for c in corrections:
-        if c.balanced:
+        if c.theta is None:  # balanced
             continue
-        th = float(c.theta)  # type: ignore[arg-type]
+        th = float(c.theta)
         p = (c.r_b / mu_l * math.cos(th), c.r_b / mu_l * math.sin(th))
         items += [Segment((0.0, 0.0), p, "result"), Circle(p, 2.2, "result"),
                   Label("mb" + (" " + c.plane if c.plane else ""), p, ((-math.cos(th), -math.sin(th)),), 3.2)]
@@ -110,11 +110,11 @@ def balancing_sheet(title: str, kind: str, masses: Sequence[Any], planes: tuple[
             name = "mass-radius polygon" + (f", plane {c.plane}" if c.plane else "")
             if c.balanced and c.plane and not any(share for _, share in c.shares):
                 notes = (format_scale("W", mu_W), f"no mass acts in plane {c.plane}: no correction mass needed")
-            elif c.balanced:
+            elif c.theta is None:  # balanced
                 notes = (format_scale("W", mu_W), "closes by itself: no correction mass needed")
             else:
                 notes = (format_scale("W", mu_W),
-                         f"mb·rb = {c.W:.5g} kg·m, θb = {degrees_0_360(float(c.theta)):.4g}°, "  # type: ignore[arg-type]
+                         f"mb·rb = {c.W:.5g} kg·m, θb = {degrees_0_360(float(c.theta)):.4g}°, "
                          f"mb = {c.m_b:.4g} kg")
             panels.append(Panel(f"polygon{c.plane}", name, tuple(polygon_items(c)), notes, row=1))
     return Sheet(title, tuple(panels), page, footer)

@@ -114,8 +114,8 @@ def read_balancing(top: Reader) -> BalancingProblem | None:
             if value is not None and (abs(value) > MAX_SIZE or 0 < abs(value) < 1e-9):
                 s.problem(s.at(s.present(base) or base), f"{value:g} (SI) is absurd for a rotor")
                 m = None
-        if None not in (m, rad, th, z):
-            masses.append(RotorMass(label, m, rad, th, z))  # type: ignore[arg-type]
+        if m is not None and rad is not None and th is not None and z is not None:
+            masses.append(RotorMass(label, m, rad, th, z))
     r.finish()
     if kind is None or radii is None or (dynamic and planes is None) or len(masses) != len(items) or not masses:
         return None

@@ -8,11 +8,15 @@ from typing import Any, Mapping, cast
 
 from graphmech.scales import phi_axis_problem
 from graphmech.mechanisms.cam import (
+    Contact,
     DiscCam,
     Follower,
     MotionProgram,
     OscillatingFollower,
+    Law,
     Segment,
+    SegmentKind,
+    Sense,
     TranslatingFollower,
 )
 from graphmech.problems.reader import MAX_TABLE_POINTS
@@ -22,7 +26,6 @@ from graphmech.problems.reader import (
     Reader,
     Scene,
     Value,
-    all_valid,
     compact,
     not_for,
     raise_sorted,
@@ -69,8 +72,9 @@ class CamScene:
 
 
 _FOLLOWER_TYPES = ("translating", "oscillating")
-_CONTACTS = ("knife", "roller", "flat")
-_SEGMENT_KINDS = ("rise", "return", "dwell")
+_CONTACTS: tuple[Contact, ...] = ("knife", "roller", "flat")
+_SEGMENT_KINDS: tuple[SegmentKind, ...] = ("rise", "return", "dwell")
+_SENSES: tuple[Sense, ...] = ("opposite", "same")
 #: The keys only one type of follower has.
 _TRANSLATING_ONLY = ("offset",)
 _OSCILLATING_ONLY = ("pivot_distance", "arm", "sense")
@@ -133,13 +137,13 @@ def _read_follower(
             )
         e = 0.0 if offset is None else offset.si + 0.0
         complete = complete and (offset is not None or r.present("offset") is None)
-        if complete and len(r.problems) == before:
-            model = TranslatingFollower(e, contact, roller.si if roller else 0.0)  # type: ignore[arg-type]
+        if complete and contact is not None and len(r.problems) == before:  # complete: contact given
+            model = TranslatingFollower(e, contact, roller.si if roller else 0.0)
     else:
         a = r.value("pivot_distance", "length", positive=True)
         # a flat face lies along the rocker through A: it has no arm length (docs: not used)
         arm = r.value("arm", "length", positive=True, required=contact != "flat")
-        sense = r.string("sense", choices=("opposite", "same"), required=True)
+        sense = r.string("sense", choices=_SENSES, required=True)
         not_for(r, _TRANSLATING_ONLY, f"only for a translating follower (this one is {kind})")
         if contact == "flat":
             # the face is the line through the pivot A along the rocker, tangent to the base
@@ -160,10 +164,8 @@ def _read_follower(
                     f"(pivot_distance a = {a.text()}, arm l = {arm.text()})",
                 )
         complete = complete and (arm is not None or (contact == "flat" and r.present("arm") is None))
-        if complete and all_valid(a, sense) and len(r.problems) == before:
-            model = OscillatingFollower(
-                a.si, arm.si if arm else 0.0, contact, roller.si if roller else 0.0, sense  # type: ignore[arg-type, union-attr]
-            )
+        if complete and contact is not None and a is not None and sense is not None and len(r.problems) == before:
+            model = OscillatingFollower(a.si, arm.si if arm else 0.0, contact, roller.si if roller else 0.0, sense)
     r.finish()
     return model, kind, contact, len(r.problems) != before
 
@@ -252,7 +254,7 @@ def _read_program(cam: Reader, follower: str | None) -> tuple[MotionProgram | No
             s.problem(angle.path, "must be > 0")
             angle = None
         angles.append(angle)
-        law: str | None = None
+        law: Law | None = None
         table: tuple[tuple[float, float], ...] = ()
         if kind in ("rise", "return"):
             law = s.string("law", choices=LAWS, required=True)
@@ -276,9 +278,9 @@ def _read_program(cam: Reader, follower: str | None) -> tuple[MotionProgram | No
         s.finish()
         segments.append(
             Segment(
-                kind or "dwell",  # type: ignore[arg-type]
+                kind or "dwell",
                 angle.si if angle is not None else 1.0,
-                (law or "uniform") if kind in ("rise", "return") else None,  # type: ignore[arg-type]
+                (law or "uniform") if kind in ("rise", "return") else None,
                 table,
             )
         )
@@ -322,9 +324,10 @@ def _read_table(s: Reader, value: Any) -> tuple[tuple[float, float], ...] | None
         s.problem(path, f"too many points ({len(value)} > {MAX_TABLE_POINTS})")
         return None
     points = [s.numbers(v, f"{path}[{j}]", 2, shape="[x, y]") for j, v in enumerate(value)]
-    if any(pt is None for pt in points):
+    valid = [pt for pt in points if pt is not None]
+    if len(valid) < len(points):
         return None
-    return tuple((pt[0], pt[1]) for pt in points)  # type: ignore[index]
+    return tuple((pt[0], pt[1]) for pt in valid)
 
 
 #: A base radius below this fraction of the cam's size is lost in round-off (r0 + s == s).

@@ -21,7 +21,7 @@ import numpy as np
 from graphmech.accuracy import convergence_order, extrapolated
 from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage
-from graphmech.methods.full_cycle import cycle_positions, evaluate_cycle, finer_positions
+from graphmech.methods.full_cycle import CycleDiagram, cycle_positions, evaluate_cycle, finer_positions
 from graphmech.timing import best_time
 
 __all__ = ["CYCLE_N", "bench", "cycle_notes", "differentiation_records"]
@@ -49,7 +49,7 @@ def differentiation_records(repeat: int = 5, ns: tuple[int, ...] = CYCLE_N) -> l
         mu_s = 0.002 if point else math.radians(2.0)
         mu_phi = math.radians(360.0 / 120.0)
 
-        def diagram(positions: np.ndarray) -> Any:
+        def diagram(positions: np.ndarray) -> CycleDiagram:
             return evaluate_cycle(linkage, {"l": 0.002, "v": 0.05, "a": 0.5}, positions, diagrams=[subject],
                                   mu_phi=mu_phi, mu_s={subject: mu_s}, H_mm=(20.0, 20.0)).diagrams[0]
 

@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any, Callable, cast
 
 import numpy as np
 
@@ -42,8 +42,8 @@ from graphmech.errors import SceneError, UnknownName
 from graphmech.problems.cycle.scene import MAX_POLE_MM, MIN_POLE_MM
 from graphmech.exact import characteristics as exact_ch
 from graphmech.exact.linkage import solve as solve_exact
-from graphmech.mechanisms.linkage import Crank, Linkage
-from graphmech.methods.characteristics import DrawnCharacteristics, draw_characteristics, grashof_ranges
+from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage
+from graphmech.methods.characteristics import DrawnCharacteristics, Loop, draw_characteristics, grashof_ranges
 from graphmech.methods.full_cycle import CycleDiagram, FullCycle, evaluate_cycle, finer_positions, sliders
 from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
 
@@ -276,7 +276,7 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
         raise SceneError([("characteristics", str(e))], an.scene.source) from None
     except (ZeroDivisionError, OverflowError):
         # a crank of 26 mm beside a frame of 1e300 mm: their squares leave double precision
-        crank = linkage.driver.length  # type: ignore[union-attr]
+        crank = cast(Crank, linkage.driver).length  # a cycle's driver is a crank (its reader refuses a slider)
         raise SceneError([("characteristics", f"the crank ({crank:.3g} m) is {crank / mechanism_size(linkage):.2g} "
                            "of the mechanism's size: too small beside it to be constructed on one drawing")],
                          an.scene.source) from None
@@ -304,17 +304,16 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
     def closed_form(a: float, b: float, c: float) -> exact_ch.ExactCharacteristics:
         if loop.kind == "fourbar":
             D = complex(*linkage.frame_points[n["D"]])
-            y = linkage.dyads[0]
-            branch = y.branch if getattr(y, "q", None) == n["D"] else ("right" if y.branch == "left" else "left")  # type: ignore[union-attr]
+            y = cast(RRR, linkage.dyads[0])  # a hinged four-bar's dyad
+            branch = y.branch if getattr(y, "q", None) == n["D"] else ("right" if y.branch == "left" else "left")
             return exact_ch.fourbar(A, D, a, b, c, branch, loop.sense)
         if loop.kind == "slider_crank":
-            y = linkage.dyads[0]
-            return exact_ch.slider_crank(A, complex(*y.guide.through), y.guide.angle, a, b,  # type: ignore[union-attr]
-                                         y.branch, loop.sense)  # type: ignore[union-attr]
+            s = cast(RRP, linkage.dyads[0])  # a slider-crank's dyad
+            return exact_ch.slider_crank(A, complex(*s.guide.through), s.guide.angle, a, b, s.branch, loop.sense)
         return exact_ch.guide_bar(A, complex(*linkage.frame_points[n["C"]]), a, loop.sense)
 
     an.exact = closed_form(loop.a, loop.b, loop.c)
-    _characteristics_conditioning(an, closed_form)
+    _characteristics_conditioning(an, loop, closed_form)
     if loop.kind == "fourbar":
         L = [loop.a, loop.b, loop.c, abs(complex(*linkage.frame_points[n["D"]]) - A)]
         exact_class = exact_ch.fourbar_class(*L)
@@ -331,7 +330,8 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
 _NUDGE = 1e-12
 
 
-def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
+def _characteristics_conditioning(an: CycleAnalysis, loop: Loop,
+                                  closed_form: Callable[[float, float, float], exact_ch.ExactCharacteristics]) -> None:
     """Name the characteristics that the last bit of a length moves by more than 1e-9.
 
     Each value's condition number κ = |Δv/v| / |Δl/l| is measured on the closed form with one
@@ -341,7 +341,6 @@ def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
     """
     from graphmech import tolerances as T
 
-    loop = an.drawn.loop  # type: ignore[union-attr]
     base = {k: v[1] for k, v in _ch_values(an)[0].items()}
     exact = an.exact
     kappa = dict.fromkeys(base, 0.0)
@@ -370,7 +369,7 @@ def _characteristics_conditioning(an: CycleAnalysis, closed_form: Any) -> None:
     bad = {name: c for name, c in kappa.items() if T.COND_SAFETY * c * T.EPS > T.REL_AGREEMENT}
     if bad:
         an.ill = set(bad)
-        worst = max(bad, key=bad.get)  # type: ignore[arg-type]
+        worst = max(bad, key=lambda k: bad[k])
         names = ", ".join(f"{k} = {base[k]:.6g}" for k in bad)
         how = ("changes the linkage's type (the crank no longer turns)" if math.isinf(bad[worst]) else
                f"moves {worst} by {bad[worst] * T.EPS:.1g} relative (condition number {bad[worst]:.2g})")
@@ -600,13 +599,14 @@ def _ch_values(an: CycleAnalysis) -> tuple[dict[str, tuple[float, float, float |
         "gamma_min": (math.degrees(dr.gamma_min), math.degrees(ex.gamma_min), None),
         "gamma_min_at": (math.degrees(dr.gamma_min_at), math.degrees(ex.gamma_min_at), None),
     }
-    if dr.theta is None or ex.theta is None:  # the output turns fully: no extreme positions
+    if (dr.theta is None or ex.theta is None  # the output turns fully: no extreme positions
+            or dr.phi_start is None or dr.phi_end is None or ex.phi_start is None or ex.phi_end is None):
         return out, {**CHARACTERISTICS, **TIMING}
     out.update({
         "theta": (math.degrees(dr.theta), math.degrees(ex.theta), None),
         "K": (exact_ch.time_ratio(dr.theta), exact_ch.time_ratio(ex.theta), None),
-        "phi_start": (math.degrees(dr.phi_start), math.degrees(ex.phi_start), None),  # type: ignore[arg-type]
-        "phi_end": (math.degrees(dr.phi_end), math.degrees(ex.phi_end), None),  # type: ignore[arg-type]
+        "phi_start": (math.degrees(dr.phi_start), math.degrees(ex.phi_start), None),
+        "phi_end": (math.degrees(dr.phi_end), math.degrees(ex.phi_end), None),
     })
     if dr.psi is not None and ex.psi is not None:
         out["psi"] = (math.degrees(dr.psi), math.degrees(ex.psi), None)
@@ -644,7 +644,7 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
         unit = units[base]
         return [_row(an, base, unit, g, e, drawn, an.scales["l"] if drawn is not None else 1.0)]
     if kind == "no_diagram":
-        subject = _DIAGRAM_NAME.fullmatch(base).group(2)  # type: ignore[union-attr]
+        subject = cast("re.Match[str]", _DIAGRAM_NAME.fullmatch(base)).group(2)  # _kind matched it
         if scene.problem.cycle is None:
             raise UnknownName(f"{base} is read off a diagram of the full cycle: add a [cycle] table with "
                            f"diagrams = [{subject!r}]".replace("'", '"'))
@@ -804,7 +804,7 @@ def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Ve
         if name == "stroke":
             tol = 2.0 * prec * an.drawn.mu_l
         elif name == "K":
-            th = an.exact.theta  # type: ignore[union-attr]
+            th = cast("exact_ch.ExactCharacteristics", an.exact).theta  # _ch_values above needs it
             tol = 2.0 * math.pi / (math.pi - cast(float, th)) ** 2 * tol_rad
         else:
             tol = math.degrees(tol_rad)

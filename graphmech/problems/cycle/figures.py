@@ -32,7 +32,7 @@ from graphmech.construction.graph import values_at
 from graphmech.problems.linkage.figures import display, mechanism_items, polygon_items
 from graphmech.drawing.diagrams import AXIS_OVERRUN, NUMBER_SIZE, count_every, moved, numbers_every, phi_axis_numbers
 from graphmech.drawing.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
-                                         Polyline, Primitive, Segment, Sheet, Slider, angle_arc)
+                                         Polyline, Primitive, Role, Segment, Sheet, Slider, angle_arc)
 from graphmech.drawing.lettering import subscript
 from graphmech.scales import format_scale
 
@@ -287,9 +287,9 @@ def _mark(at: XY, d1: XY, d2: XY, r: float, text: str) -> list[Primitive]:
     return [arc, Label(text, mid, (_unit(mid, at),), 3.2)]
 
 
-def _arc_between(centre: XY, p: XY, q: XY, role: str = "construction") -> Polyline | None:
+def _arc_between(centre: XY, p: XY, q: XY, role: Role = "construction") -> Polyline | None:
     r = math.dist(centre, p)
-    return angle_arc(centre, _unit(centre, p), _unit(centre, q), r, role)  # type: ignore[arg-type]
+    return angle_arc(centre, _unit(centre, p), _unit(centre, q), r, role)
 
 
 def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
@@ -366,10 +366,11 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
         r = math.dist(A, B1)
         items.append(Circle(A, r, "construction"))
         reach = max(math.dist(C, B1), math.dist(C, B2)) + 12.0
-        for B, role, dashed in ((B1, "result", False), (B2, "given", True)):
+        extremes: tuple[tuple[XY, Role, bool], ...] = ((B1, "result", False), (B2, "given", True))
+        for B, role, dashed in extremes:
             u = _unit(C, B)
-            items += [Segment(A, B, role, dashed=dashed),  # type: ignore[arg-type]
-                      Segment(C, (C[0] + reach * u[0], C[1] + reach * u[1]), role, dashed=dashed),  # type: ignore[arg-type]
+            items += [Segment(A, B, role, dashed=dashed),
+                      Segment(C, (C[0] + reach * u[0], C[1] + reach * u[1]), role, dashed=dashed),
                       Slider(B, math.atan2(u[1], u[0]))]
         items.append(Segment(A, C, "given"))
         labels += _mark(C, _unit(C, B1), _unit(C, B2), MARK_R * 1.5, "ψ")
@@ -493,5 +494,5 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
                 head = ("ψ–φ, ω–φ, ε–φ" if dg.kind == "link" else "s–φ, v–φ, aτ–φ" if dg.kind == "path" else "s–φ, v–φ, a–φ") + f" of {what}, by chords"
                 panels.append(Panel(f"diagrams-{dg.subject}", head, tuple(diagram_items(dg, cyc.n, period)),
                                     _diagram_notes(dg, cyc.mu_phi)))
-    return Sheet(title, tuple(panels), tuple(page), tuple(footer))  # type: ignore[arg-type]
+    return Sheet(title, tuple(panels), (page[0], page[1]), tuple(footer))
 

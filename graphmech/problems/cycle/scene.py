@@ -201,10 +201,10 @@ def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], link
             if s == "diagrams" and "diagrams" not in cy.table:
                 top.problem(f"show[{i}]", '"diagrams" needs what to plot: [cycle] diagrams = ["C", "3"] '
                                           "(sliders, rotating links)")
-        if diagrams and crank and linkage is not None and linkage.driver.omega == 0.0:  # type: ignore[union-attr]
+        if diagrams and linkage is not None and isinstance(linkage.driver, Crank) and linkage.driver.omega == 0.0:
             top.problem("driver.omega", "the s–φ, v–φ, a–φ diagrams need a turning crank (ω ≠ 0): at ω = 0 their "
                                         "φ axis is no time axis and every v, a is 0")
-        if diagrams and crank and linkage is not None and linkage.driver.epsilon != 0.0:  # type: ignore[union-attr]
+        if diagrams and linkage is not None and isinstance(linkage.driver, Crank) and linkage.driver.epsilon != 0.0:
             top.problem("driver.epsilon", "the s–φ, v–φ, a–φ diagrams need a crank turning uniformly (ε = 0): "
                                           "their φ axis is a time axis only then")
         if positions is not None and len(positions.values) != 1:
@@ -229,7 +229,7 @@ def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], link
 
         if basic_loop(linkage).kind != "fourbar":
             top.problem("characteristics.ranges", "the Grashof ranges are those of a hinged four-bar")
-    if linkage is None or not crank or positions is None or top.problems:
+    if linkage is None or not isinstance(linkage.driver, Crank) or positions is None or top.problems:
         return None, positions
     start_angle = positions.values[0]
     if spec is not None and spec.start == "extreme":
@@ -248,7 +248,7 @@ def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], link
     if spec is not None:
         from graphmech.methods.full_cycle import cycle_positions
 
-        sense = -1.0 if linkage.driver.omega < 0 else 1.0  # type: ignore[union-attr]
+        sense = -1.0 if linkage.driver.omega < 0 else 1.0
         angles = cycle_positions(start_angle, spec.positions, sense)
         positions = Positions(tuple(float(a) for a in angles), tuple(str(k) for k in range(1, spec.positions + 1)))
     return CycleScene(spec, CharacteristicsSpec(t_work, ranges), start_angle), positions

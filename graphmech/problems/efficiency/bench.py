@@ -14,10 +14,9 @@ Speed is measured here, never in timed tests.
 """
 from __future__ import annotations
 
-import cmath
 import math
 import random
-from typing import Any
+from typing import Any, cast
 
 from graphmech.exact import balancing as exb
 from graphmech.exact import efficiency as exe
@@ -44,7 +43,7 @@ def efficiency_records(repeat: int = 5, ns: tuple[int, ...] = (10, 100, 1000),
                 for d in ("forward", "reverse"):
                     s = gme.incline(1000.0, a, phi, d, 10.0)
                     e = exe.incline_force(1000.0, a, phi, d)
-                    err = max(err, abs(s.F - e) / max(abs(e), 1000.0))  # type: ignore[operator]
+                    err = max(err, abs(cast(float, s.F) - e) / max(abs(e), 1000.0))  # none self-locks (α ≤ 80°)
             return err
 
         secs, err = best_time(sweep, repeat)
@@ -57,7 +56,7 @@ def efficiency_records(repeat: int = 5, ns: tuple[int, ...] = (10, 100, 1000),
         for d in ("forward", "reverse"):
             s = gme.wedge(1000.0, g, b, phi, d, 25.0)
             e = exe.wedge_forces(1000.0, g, b, phi, d).F
-            err = max(err, abs(s.F - e) / abs(e))  # type: ignore[operator]
+            err = max(err, abs(cast(float, s.F) - e) / abs(e))  # F1430's wedge moves both ways
         return err
 
     secs, err = best_time(wedge, repeat)
@@ -71,7 +70,7 @@ def efficiency_records(repeat: int = 5, ns: tuple[int, ...] = (10, 100, 1000),
         def balance() -> float:
             I, II = gmb.dynamic_balance(rotor, 0.0, 1.0, (0.3, 0.3), 0.01)
             WI, WII = exb.dynamic_correction([exb.Unbalance(u.m, u.r, u.theta, u.z) for u in rotor], 0.0, 1.0)
-            return max(abs((0j if c.balanced else cmath.rect(c.W, c.theta)) - w)  # type: ignore[arg-type]
+            return max(abs(c.vector - w)
                        for c, w in ((I, WI), (II, WII))) / size
 
         secs, err = best_time(balance, repeat)

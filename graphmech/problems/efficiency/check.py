@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, cast
 
 from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import DegenerateConstruction, SceneError
@@ -23,6 +23,8 @@ from graphmech.problems.efficiency.scene import DEFAULT_FIND, EfficiencyProblem
 from graphmech.tolerances import EPS, SHALLOW_DEG
 
 if TYPE_CHECKING:
+    from graphmech.drawing.primitives import Sheet
+    from graphmech.methods.efficiency import Direction
     from graphmech.problems.reader import Scene
 
 #: The longest side of a force polygon when graphmech chooses μF, mm.
@@ -40,8 +42,8 @@ class EfficiencyAnalysis:
 
     scene: Scene[EfficiencyProblem]
     problem: EfficiencyProblem
-    strokes: dict[str, gm.Stroke] = field(default_factory=dict)
-    chain: Any = None
+    strokes: dict[Direction, gm.Stroke] = field(default_factory=dict)
+    chain: tuple[float, tuple[gm.StageResult, ...]] | None = None  # η and the stages, of a chain
     rows: list[Row] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
     scales: dict[str, float] = field(default_factory=dict)
@@ -62,9 +64,10 @@ class EfficiencyAnalysis:
     def angle(self) -> float:
         """The incline's α or the screw's lead angle ψ (φv at the self-locking limit), rad."""
         p = self.problem
+        # read_efficiency refuses an incline without α, and a screw without ψ off the limit
         if p.type == "incline":
-            return float(p.angle)  # type: ignore[arg-type]
-        return self.phi if p.at_limit else float(p.lead_angle)  # type: ignore[arg-type]
+            return float(cast(float, p.angle))
+        return self.phi if p.at_limit else float(cast(float, p.lead_angle))
 
 
 def requested(scene: Scene[EfficiencyProblem], extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
@@ -119,7 +122,7 @@ def analyse_efficiency(scene: Scene[EfficiencyProblem], extra_measured: tuple[tu
     names = requested(scene, extra_measured)
     an = EfficiencyAnalysis(scene, p, extra_measured=tuple(extra_measured))
     if p.type == "chain":
-        an.chain = gm.chain([(s.name, s.branches) for s in p.stages], p.load * p.speed)  # type: ignore[operator]
+        an.chain = gm.chain([(s.name, s.branches) for s in p.stages], _chain_power(p))
     else:
         bases = {n.partition("@")[0] for n in names} | {
             m.partition("@")[0] for _, m, _ in measured_entries(scene, extra_measured)}
@@ -131,13 +134,24 @@ def analyse_efficiency(scene: Scene[EfficiencyProblem], extra_measured: tuple[tu
     return an
 
 
-def _stroke(an: EfficiencyAnalysis, direction: str, mu_F: float) -> gm.Stroke:
+def _chain_power(p: EfficiencyProblem) -> float:
+    """The chain's output power Q·v, W (read_efficiency refuses a chain without both)."""
+    return cast(float, p.load) * cast(float, p.speed)
+
+
+def _wedge_angles(p: EfficiencyProblem) -> tuple[float, float]:
+    """γ and β of a wedge (read_efficiency refuses a wedge without both)."""
+    return cast(float, p.gamma), cast(float, p.beta)
+
+
+def _stroke(an: EfficiencyAnalysis, direction: Direction, mu_F: float) -> gm.Stroke:
     p = an.problem
+    load = cast(float, p.load)  # drawn only for what needs Q: read_efficiency then requires it
     if p.type == "wedge":
-        return gm.wedge(p.load, p.gamma, p.beta, an.phi, direction, mu_F)  # type: ignore[arg-type]
+        return gm.wedge(load, *_wedge_angles(p), an.phi, direction, mu_F)
     names = ("F", "R")
     push = p.push if p.type == "incline" else "horizontal"
-    return gm.incline(p.load, an.angle, an.phi if p.f is not None else 0.0, direction, mu_F, push,  # type: ignore[arg-type]
+    return gm.incline(load, an.angle, an.phi if p.f is not None else 0.0, direction, mu_F, push,
                       names=names)
 
 
@@ -190,9 +204,14 @@ def _rel(g: float, e: float, char: float) -> float:
 def _row(an: EfficiencyAnalysis, name: str) -> Row:
     base, _, at = name.partition("@")
     unit = an.problem.quantities()[base][0]
-    direction = at or (an.problem.directions[0] if an.problem.directions else "forward")
-    g, e, drawn, scale, ill, char = _values(an, base, direction)
+    g, e, drawn, scale, ill, char = _values(an, base, _direction(an, at))
     return Row(name, unit, drawn, scale, g, e, _rel(g, e, char), ill)
+
+
+def _direction(an: EfficiencyAnalysis, at: str) -> Direction:
+    """The direction a name gives after its @ (requested() has checked it), else the scene's first."""
+    named = [d for d in an.problem.directions if d == at]
+    return named[0] if named else (an.problem.directions[0] if an.problem.directions else "forward")
 
 
 def _eta_reverse_at(an: EfficiencyAnalysis, angle: float) -> float:
@@ -207,15 +226,15 @@ def _eta_reverse_at(an: EfficiencyAnalysis, angle: float) -> float:
     return 0.0 if st.F is None else st.F / st.F0
 
 
-def _values(an: EfficiencyAnalysis, base: str, d: str) -> tuple[float, float, float | None, float, bool, float]:
+def _values(an: EfficiencyAnalysis, base: str, d: Direction) -> tuple[float, float, float | None, float, bool, float]:
     """(graphical, exact, drawn mm or None, μ, ill-conditioned, characteristic size)."""
     p = an.problem
     if p.type == "chain":
-        eta_g, stages = an.chain
+        eta_g, stages = cast("tuple[float, tuple[gm.StageResult, ...]]", an.chain)  # walked by analyse_efficiency
         branches = [[ex.series_efficiency(series) for _, series in s.branches] for s in p.stages]
         eta_e = ex.series_efficiency([ex.parallel_efficiency([sh for sh, _ in s.branches], b)
                                       for s, b in zip(p.stages, branches)])
-        p_out = p.load * p.speed  # type: ignore[operator]
+        p_out = _chain_power(p)
         if base == "eta":
             return eta_g, eta_e, None, 1.0, False, 1.0
         if base == "P_in":
@@ -230,14 +249,16 @@ def _values(an: EfficiencyAnalysis, base: str, d: str) -> tuple[float, float, fl
             return math.degrees(an.angle), math.degrees(ex.equivalent_friction_angle(p.f or 0.0, p.half_angle)), \
                 None, 1.0, False, 1.0
         if p.lead is not None:  # the unrolled thread: the hypotenuse over π·d2 and L, its slope read off
-            g = math.degrees(math.atan2(p.lead, math.pi * p.d2))  # type: ignore[operator]
-            return g, math.degrees(ex.lead_angle(p.lead, p.d2)), None, 1.0, False, 1.0  # type: ignore[arg-type]
-        return math.degrees(an.angle), math.degrees(float(p.lead_angle)), None, 1.0, False, 1.0  # type: ignore[arg-type]
+            d2 = cast(float, p.d2)  # read_efficiency refuses a pitch without d2
+            g = math.degrees(math.atan2(p.lead, math.pi * d2))
+            return g, math.degrees(ex.lead_angle(p.lead, d2)), None, 1.0, False, 1.0
+        return math.degrees(an.angle), math.degrees(float(cast(float, p.lead_angle))), None, 1.0, False, 1.0
+    # requested() refuses r_f without the collar, sigma without d1, M without d2
     if base == "r_f":
-        d0, dw = p.collar  # type: ignore[misc]
+        d0, dw = cast("tuple[float, float]", p.collar)
         return (d0 + dw) / 4.0, 0.5 * (0.5 * d0 + 0.5 * dw), None, 1.0, False, dw
     if base == "sigma":
-        d1 = float(p.d1)  # type: ignore[arg-type]
+        d1 = float(cast(float, p.d1))
         area = math.pi * d1 * d1 / 4.0
         return Q / area, 4.0 * Q / (math.pi * d1 ** 2), None, 1.0, False, 1.0
     if base in ("self_locking_angle", "gamma_limit", "eta_self_locking_max"):
@@ -250,27 +271,28 @@ def _values(an: EfficiencyAnalysis, base: str, d: str) -> tuple[float, float, fl
     st = an.strokes[d]
     ill = st.F is not None and st.cond > COND_HAND
     if p.type == "wedge":
-        exact = ex.wedge_forces(Q, p.gamma, p.beta, phi, d)  # type: ignore[arg-type]
-        F0e = ex.wedge_ideal_force(Q, p.gamma, p.beta)  # type: ignore[arg-type]
+        exact = ex.wedge_forces(Q, *_wedge_angles(p), phi, d)
+        F0e = ex.wedge_ideal_force(Q, *_wedge_angles(p))
         exact_R = {"R12": exact.R12, "R32": exact.R32, "R31": exact.R31}
         Fe = exact.F
     else:
         push = p.push if p.type == "incline" else "horizontal"
-        Fe = ex.incline_force(Q, an.angle, phi, d, push)  # type: ignore[arg-type]
-        F0e = ex.incline_force(Q, an.angle, 0.0, d, push)  # type: ignore[arg-type]
-        exact_R = {"R": ex.incline_reaction(Q, an.angle, phi, d, push)}  # type: ignore[arg-type]
+        Fe = ex.incline_force(Q, an.angle, phi, d, push)
+        F0e = ex.incline_force(Q, an.angle, 0.0, d, push)
+        exact_R = {"R": ex.incline_reaction(Q, an.angle, phi, d, push)}
     if base == "F0":
         return st.F0, F0e, st.F0 / mu, mu, False, Q
     if base == "eta":
-        eta_e = ex.efficiency(d, F0e, Fe)  # type: ignore[arg-type]
+        eta_e = ex.efficiency(d, F0e, Fe)
         return st.eta, 0.0 if abs(eta_e) <= gm.ETA_ZERO else eta_e, None, 1.0, ill, 1.0
     if st.F is None:
         raise SceneError([("find", f"{base}@{d}: no finite force moves the {d} stroke (self-locked)")], an.scene.source)
     if base == "F":
         return st.F, Fe, st.F / mu, mu, ill, Q
     if base == "M":
-        r2 = float(p.d2) / 2.0  # type: ignore[arg-type]
-        Me = ex.screw_torque(Q, float(p.d2), an.angle, phi, d)  # type: ignore[arg-type]
+        d2 = float(cast(float, p.d2))
+        r2 = d2 / 2.0
+        Me = ex.screw_torque(Q, d2, an.angle, phi, d)
         return st.F * r2, Me, st.F / mu, mu * r2, ill, Q * r2
     value = dict(st.reactions)[base]
     return value, exact_R[base], value / mu, mu, ill, Q
@@ -280,7 +302,7 @@ def _limits(an: EfficiencyAnalysis, base: str, phi: float) -> tuple[float, float
     """The self-locking limits, found on the construction by redrawing it until η = 0."""
     p = an.problem
     if base == "gamma_limit":
-        g = gm.wedge_locking_angle(float(p.beta), phi)  # type: ignore[arg-type]
+        g = gm.wedge_locking_angle(float(_wedge_angles(p)[1]), phi)
         return math.degrees(g), math.degrees(2.0 * phi), None, 1.0, False, 1.0
     g = gm.limiting_angle(lambda x: _eta_reverse_at(an, x), *gm.INCLINE_LIMIT_RANGE)
     if base == "self_locking_angle":
@@ -296,7 +318,7 @@ def judge_efficiency(an: EfficiencyAnalysis, precision_mm: float | None = None) 
     out = []
     for _key, name, value in measured_entries(an.scene, an.extra_measured):
         base, _, at = name.partition("@")
-        d = at or (an.problem.directions[0] if an.problem.directions else "forward")
+        d = _direction(an, at)
         g, _e, drawn, scale, _ill, _c = _values(an, base, d)
         unit = an.problem.quantities()[base][0]
         st = an.strokes.get(d) if base == "eta" and an.problem.type != "chain" else None
@@ -313,7 +335,7 @@ def judge_efficiency(an: EfficiencyAnalysis, precision_mm: float | None = None) 
 __all__ = ["EfficiencyAnalysis", "analyse_efficiency", "judge_efficiency", "requested"]
 
 
-def efficiency_figure(an: EfficiencyAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Any:
+def efficiency_figure(an: EfficiencyAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
     """The sheet of the scene's ``show``: the diagram and the force polygons."""
     from graphmech.problems.efficiency.figures import efficiency_sheet
 
@@ -335,7 +357,7 @@ def efficiency_figure(an: EfficiencyAnalysis, page: tuple[float, float], footer:
 MAX_CHAIN_BOXES = 120
 
 
-def _chain_fits(an: EfficiencyAnalysis, page: tuple[float, float], sheet: Any = None) -> None:
+def _chain_fits(an: EfficiencyAnalysis, page: tuple[float, float], sheet: Sheet | None = None) -> None:
     """Refuse a chain whose diagram the page cannot show: too many machines to label legibly, or
     (given the sheet) boxes that run off the page — before any label is placed."""
     from graphmech.drawing.lettering import text_box_size

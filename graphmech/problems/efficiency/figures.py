@@ -19,13 +19,16 @@ polygon
 from __future__ import annotations
 
 import math
-from typing import Any, Sequence
+from typing import TYPE_CHECKING, Sequence, cast
 
-from graphmech.methods.efficiency import ForcePolygon, Stroke
+from graphmech.methods.efficiency import Direction, ForcePolygon, StageResult, Stroke
 from graphmech.drawing.primitives import (XY, Arrow, GuideLine, Label, Panel, Polyline, Primitive, Segment,
                                          Sheet, Slider)
 from graphmech.drawing.lettering import subscript
 from graphmech.scales import format_scale
+
+if TYPE_CHECKING:
+    from graphmech.problems.efficiency.scene import EfficiencyProblem, Stage
 
 #: Length of a force arrow in a diagram (directions only), mm.
 ARROW_MM = 16.0
@@ -154,14 +157,14 @@ def _wedge_diagram(gamma: float, beta: float, stroke: Stroke | None = None) -> l
     return items
 
 
-def _chain_diagram(stages: Sequence[Any], powers: Sequence[Any], width: float = math.inf) -> list[Primitive]:
+def _chain_diagram(stages: Sequence[Stage], powers: Sequence[StageResult], width: float = math.inf) -> list[Primitive]:
     """The machines as boxes, the power on the arrows between them, in rows no wider than
     ``width`` mm (a long chain wraps: the power line runs down to the start of the next row)."""
     items: list[Primitive] = []
     box_w, gap = 36.0, 24.0
     per_row = max(1, int((width - 8.0 - gap - 14.0) // (gap + box_w))) if math.isfinite(width) else len(stages)
 
-    def height(stage: Any) -> float:
+    def height(stage: Stage) -> float:
         return 17.0 if len(stage.branches) == 1 else 22.0 * len(stage.branches) - 4.0
 
     def box(cx: float, cy: float, text: str, eta: str) -> None:
@@ -238,7 +241,8 @@ def polygon_items(polygons: Sequence[ForcePolygon]) -> list[Primitive]:
     return items
 
 
-def efficiency_sheet(title: str, problem: Any, strokes: dict[str, Stroke], chain: Any, phi: float, angle: float | None,
+def efficiency_sheet(title: str, problem: EfficiencyProblem, strokes: dict[Direction, Stroke],
+                     chain: tuple[float, tuple[StageResult, ...]] | None, phi: float, angle: float | None,
                      scales: dict[str, float], show: Sequence[str], page: tuple[float, float],
                      footer: tuple[str, ...] = ()) -> Sheet:
     """The sheet of an efficiency problem: the diagram and a polygon per direction, as shown."""
@@ -248,20 +252,23 @@ def efficiency_sheet(title: str, problem: Any, strokes: dict[str, Stroke], chain
         kind = problem.type
         notes: tuple[str, ...] = ()
         if kind == "chain":
-            items = _chain_diagram(problem.stages, chain[1], page[0] - 40.0)
+            eta, powers = cast("tuple[float, tuple[StageResult, ...]]", chain)  # walked for every chain
+            items = _chain_diagram(problem.stages, powers, page[0] - 40.0)
             parallel = any(len(st.branches) > 1 for st in problem.stages)
             head = "machines in series" + (" and in parallel" if parallel else "")
-            notes = (f"η = {chain[0]:.6g}",)
+            notes = (f"η = {eta:.6g}",)
         elif kind == "wedge":
-            items = _wedge_diagram(problem.gamma, problem.beta, first)
-            head = f"wedge: γ = {math.degrees(problem.gamma):g}°, β = {math.degrees(problem.beta):g}°"
+            gamma, beta = cast(float, problem.gamma), cast(float, problem.beta)  # a wedge has both (its reader)
+            items = _wedge_diagram(gamma, beta, first)
+            head = f"wedge: γ = {math.degrees(gamma):g}°, β = {math.degrees(beta):g}°"
             notes = (f"φ = arctan f = {math.degrees(phi):.4g}°",) if problem.f is not None else ()
         else:
             thread = ("π·d₂", "L = n·P") if kind == "screw" else None
             push = problem.push if kind == "incline" else "horizontal"
-            items = _incline_diagram(float(angle), phi, first, push, ("F", "R"), thread)  # type: ignore[arg-type]
+            alpha = float(cast(float, angle))  # given for an incline and a screw (efficiency_figure)
+            items = _incline_diagram(alpha, phi, first, push, ("F", "R"), thread)
             head = ("screw thread unrolled: ψ = " if kind == "screw" else "inclined plane: α = ") + \
-                f"{math.degrees(float(angle)):.4g}°"  # type: ignore[arg-type]
+                f"{math.degrees(alpha):.4g}°"
             if problem.f is not None:
                 sym = "φv" if kind == "screw" else "φ"
                 notes = (f"{sym} = {math.degrees(phi):.4g}°",)

@@ -27,15 +27,17 @@ from graphmech.problems.reader import (
     read_scales,
     read_tail,
     say,
+    is_choice,
     type_name,
 )
 
 if TYPE_CHECKING:
+    from graphmech.methods.efficiency import Direction
     from graphmech.problems.balancing.scene import BalancingProblem
 
 
 EFFICIENCY_TYPES = ("incline", "wedge", "screw", "chain")
-DIRECTIONS = ("forward", "reverse")
+DIRECTIONS: tuple[Direction, ...] = ("forward", "reverse")
 THREADS = ("square", "V")
 PUSHES = ("horizontal", "parallel")
 #: What an efficiency scene may show: the sketch of the bodies with their forces (the unrolled
@@ -84,7 +86,7 @@ class EfficiencyProblem:
     """
 
     type: str
-    directions: tuple[str, ...] = DIRECTIONS
+    directions: tuple[Direction, ...] = DIRECTIONS
     f: float | None = None
     load: float | None = None
     angle: float | None = None  # incline α
@@ -218,15 +220,15 @@ def _fraction(r: Reader, value: Any, path: str, what: str) -> float | None:
     return x
 
 
-def _directions(r: Reader) -> tuple[str, ...]:
+def _directions(r: Reader) -> tuple[Direction, ...]:
     value = r.raw("direction")
     if value is MISSING:
         return DIRECTIONS
     items = value if isinstance(value, list) else [value]
-    out: list[str] = []
+    out: list[Direction] = []
     for i, item in enumerate(items):
         path = r.at("direction") + (f"[{i}]" if isinstance(value, list) else "")
-        if not isinstance(item, str) or item not in DIRECTIONS:
+        if not is_choice(item, DIRECTIONS):
             r.problem(path, f"unknown value {say(item) if isinstance(item, str) else type_name(item)}: "
                             'use "forward" (F drives: raising, tightening) or "reverse" (the load drives: '
                             "lowering, loosening)")

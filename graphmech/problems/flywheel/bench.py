@@ -156,7 +156,7 @@ def wittenbauer_records(repeat: int = 5, ns: tuple[int, ...] = WITTENBAUER_N) ->
     takes the tangents to the continuous curve (:class:`graphmech.exact.flywheel.ExactMachine`).
     """
     from graphmech.exact.flywheel import ExactMachine
-    from graphmech.methods.flywheel import design_flywheel
+    from graphmech.methods.flywheel import FlywheelDesign, design_flywheel
     from graphmech.methods.reduction import reduce_to_crank
 
     m = compressor_machine()
@@ -167,13 +167,13 @@ def wittenbauer_records(repeat: int = 5, ns: tuple[int, ...] = WITTENBAUER_N) ->
     for case, ref in refs.items():
         need = ("indicator",) if case == "indicator" else ("wittenbauer",)
         form: Literal["exact", "book"] = "book" if case == "book" else "exact"
-        def design(n: int) -> Any:
+        def design(n: int) -> FlywheelDesign:
             r = reduce_to_crank(m, np.asarray(m.positions(n)), {"l": 0.002, "v": 0.05})
             return design_flywheel(r.phi, r.J, r.M, cycle=m.cycle, omega_m=m.omega_m, delta=m.delta,
                                    balance=m.balance, form=form, H_mm=40.0, need=need)
 
-        def j_f(d: Any) -> float:
-            return cast(float, d.J_F_indicator if case == "indicator" else d.J_F)
+        def j_f(d: FlywheelDesign) -> float:
+            return cast(float, d.J_F_indicator if case == "indicator" else d.J_F)  # the one asked for (need)
 
         for n in ns:
             secs, d = best_time(lambda: design(n), repeat, 1)

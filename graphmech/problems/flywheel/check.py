@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import TYPE_CHECKING, Any, Literal, cast
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -29,6 +29,7 @@ from graphmech.mechanisms.machine import Machine
 from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
+    from graphmech.exact.flywheel import ExactMachine
     from graphmech.problems.flywheel.scene import Braking
     from graphmech.problems.flywheel.scene import FlywheelScene
     from graphmech.problems.reader import Scene
@@ -73,7 +74,7 @@ class FlywheelAnalysis:
     labels: tuple[str, ...]
     reduction: Any = None
     design: Any = None
-    exact: Any = None
+    exact: ExactMachine | None = None
     motion: Any = None  # TrueMotion (solve_ivp)
     motion_ref: Any = None  # the energy equation's motion with the same flywheel (or a tight reference)
     rows: list[Row] = field(default_factory=list)
@@ -218,7 +219,7 @@ def _analyse(scene: Scene[FlywheelScene], extra: tuple[tuple[str, float], ...], 
 # ---------------------------------------------------------------------------- the steps
 
 
-def _exact(an: FlywheelAnalysis) -> Any:
+def _exact(an: FlywheelAnalysis) -> ExactMachine:
     if an.exact is None:
         from graphmech.exact.flywheel import ExactMachine
 
@@ -286,7 +287,7 @@ def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
     r = an.reduction
     try:
         an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
-                                    delta=machine.delta, balance=machine.balance, form=cast("Literal['exact', 'book']", fw.tangents),
+                                    delta=machine.delta, balance=machine.balance, form=fw.tangents,
                                     H_mm=fw.pole_distance, scales=scales, need=want)
     except WrongBalance as e:
         raise SceneError([("flywheel.balance", _wrong_balance(machine.balance, e.work))], an.scene.source) from None
@@ -555,7 +556,7 @@ def _denominator(an: FlywheelAnalysis, r: Row) -> float:
         return math.degrees(an.machine.cycle)
     if r.unit == "J":
         x = _exact(an).extremes()
-        return cast(float, max(abs(r.exact), x.maximum - x.minimum, 1e-300))
+        return max(abs(r.exact), x.maximum - x.minimum, 1e-300)
     return max(abs(r.exact), abs(r.scale) * 1e-3, 1e-300)
 
 

@@ -441,14 +441,14 @@ def _beside(design: FlywheelDesign, members: Sequence[str]) -> list[Primitive]:
         dx = -(GAP_LEFT + float(xe[-1]) + AXIS_OVERRUN)
         it, lb = _split(energy_items(design))
         items += [moved(i, dx, 0.0) for i in it]
-        labels += [moved(i, dx, 0.0) for i in lb]  # type: ignore[misc]
+        labels += [moved(i, dx, 0.0) for i in lb]
         items += [Segment((dx + float(xe[k]), float(y[k])), (float(x[k]), float(y[k])), "construction")
                   for k in carried if abs(float(x[k]) - dx - float(xe[k])) > 1e-9]
     if "inertia" in members:
         dy = _window(design)[2] - 2.0 - GAP_BELOW
         it, lb = _split(inertia_items(design))
         items += [moved(i, 0.0, dy) for i in it]
-        labels += [moved(i, 0.0, dy) for i in lb]  # type: ignore[misc]
+        labels += [moved(i, 0.0, dy) for i in lb]
         mu = inertia_phi_scale(design)
         items += [Segment((float(x[k]), dy - float(design.phi[k]) / mu), (float(x[k]), float(y[k])), "construction")
                   for k in carried]
@@ -537,7 +537,7 @@ def flywheel_sheet(title: str, design: FlywheelDesign, show: Sequence[str],
                 head += f": Aп (chords), {_constant_names(design)[1]} (dashed)"
         row = 0 if group[0] in ("moment", "work") else 1
         panels.append(Panel("+".join(group), head, tuple(items), _notes(design, group), row=row))
-    return Sheet(title, tuple(panels), tuple(page_size), tuple(footer))  # type: ignore[arg-type]
+    return Sheet(title, tuple(panels), (page_size[0], page_size[1]), tuple(footer))
 
 
 __all__ = ["PANELS", "energy_items", "flywheel_sheet", "indicator_items", "inertia_items", "moment_items",

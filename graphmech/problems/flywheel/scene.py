@@ -20,7 +20,7 @@ import re
 import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any, Literal
 
 from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, Positions
 from graphmech.mechanisms.machine import (
@@ -57,6 +57,15 @@ from graphmech.problems.reader import (
     type_name,
 )
 
+if TYPE_CHECKING:
+    from graphmech.methods.flywheel import Balance
+    from graphmech.methods.wittenbauer import TangentForm
+
+#: The methods that design J_F.
+FlywheelMethod = Literal["wittenbauer", "indicator"]
+#: The stroke a slider load acts on, and the sense it acts in along the guide.
+During = Literal["forward", "backward", "both"]
+Stroke = Literal["forward", "backward"]
 
 @dataclass(frozen=True)
 class TrueMotionSpec:
@@ -123,8 +132,8 @@ class FlywheelScene:
 
     machine: Machine
     positions: int = 12
-    method: str = "wittenbauer"
-    tangents: str = "exact"
+    method: FlywheelMethod = "wittenbauer"
+    tangents: TangentForm = "exact"
     pole_distance: float | None = None
     true_motion: TrueMotionSpec | None = None
     braking: Braking | None = None
@@ -141,10 +150,10 @@ BRAKING_SHOW_DEFAULT = ("rundown",)
 MIN_FLYWHEEL_POSITIONS = 4
 DEFAULT_FLYWHEEL_POSITIONS = 12
 #: The methods that design J_F, and how the Wittenbauer diagram's tangents are inclined.
-FLYWHEEL_METHODS = ("wittenbauer", "indicator")
-FLYWHEEL_TANGENTS = ("exact", "book")
+FLYWHEEL_METHODS: tuple[FlywheelMethod, ...] = ("wittenbauer", "indicator")
+FLYWHEEL_TANGENTS: tuple[TangentForm, ...] = ("exact", "book")
 #: Which moment is constant, found from the balance of work over a cycle.
-BALANCES = ("driving", "resisting")
+BALANCES: tuple[Balance, ...] = ("driving", "resisting")
 #: The ``solve_ivp`` methods the true motion may use, and the range of its rtol.
 SOLVERS = ("Radau", "BDF", "LSODA", "RK45", "DOP853")
 RTOL_MIN, RTOL_MAX = 1e-14, 1e-2
@@ -159,6 +168,8 @@ _LINKAGE_SCALES = (("l", "length"), ("v", "velocity"))
 #: The keys only a slider load has, and only a moment or crank load has.
 _SLIDER_KEYS = ("point", "during", "sense", "s_over_H", "pressure", "force", "piston_diameter", "area")
 _MOMENT_KEYS = ("link", "phi", "moment")
+_DURING: tuple[During, ...] = ("forward", "backward", "both")
+_STROKES: tuple[Stroke, ...] = ("forward", "backward")
 _CRANK_ONLY = (
     'a flywheel scene\'s driver is a crank (type = "crank"): the machine is reduced to its crank'
 )
@@ -243,7 +254,8 @@ def _number_list(r: Reader, value: Any, path: str) -> list[float] | None:
         r.problem(path, f"too many points ({len(value)} > {MAX_TABLE_POINTS})")
         return None
     items = [r.number(v, f"{path}[{i}]") for i, v in enumerate(value)]
-    return None if any(x is None for x in items) else items  # type: ignore[return-value]
+    valid = [x for x in items if x is not None]
+    return valid if len(valid) == len(items) else None
 
 
 def _non_decreasing(r: Reader, s: _Series, what: str) -> bool:
@@ -444,6 +456,7 @@ def _read_masses(fw: Reader, machine: _Machine) -> tuple[list[Mass], bool]:
         fw.problem(fw.at("mass"), f"too many masses ({len(readers)} > {MAX_MACHINE_ITEMS})")
         return [], True
     links = machine.linkage.links() if machine.linkage is not None else None
+    frame_link = machine.linkage.frame_link if machine.linkage is not None else None
     masses: list[Mass] = []
     seen: dict[str, str] = {}
     for r in readers:
@@ -458,7 +471,7 @@ def _read_masses(fw: Reader, machine: _Machine) -> tuple[list[Mass], bool]:
             if link in seen:
                 r.problem(r.at("link"), f"link {link} already has its mass ({seen[link]})")
                 link = None
-            elif link == machine.linkage.frame_link:  # type: ignore[union-attr]
+            elif link == frame_link:
                 r.problem(r.at("link"), f"link {link} is the frame: it does not move")
                 link = None
             elif link not in links:
@@ -533,8 +546,8 @@ def _read_slider_load(r: Reader, machine: _Machine) -> SliderLoad | None:
     not_for(r, _MOMENT_KEYS, 'only for type = "moment" or "crank" (this load is slider)')
     value = r.raw("point", required=True, hint='the slider\'s point, e.g. point = "C"')
     point = None if value is MISSING else r.point_name(value, r.at("point"))
-    during = r.string("during", choices=("forward", "backward", "both"), required=True)
-    sense = r.string("sense", choices=("forward", "backward"), required=True)
+    during = r.string("during", choices=_DURING, required=True)
+    sense = r.string("sense", choices=_STROKES, required=True)
     s = _fractions(r)
     has_force, has_pressure = r.present("force") is not None, r.present("pressure") is not None
     magnitude = "the diagram gives the force's magnitude; sense gives its direction"
@@ -581,9 +594,12 @@ def _read_slider_load(r: Reader, machine: _Machine) -> SliderLoad | None:
     y = force if has_force else pressure
     if s is None or y is None or not _same_length(r, s, y, "s_over_H", "value"):
         return None
-    if (has_force and has_pressure) or (has_pressure and area is None):
+    if has_force and not has_pressure:
+        forces = tuple(y.si)
+    elif has_pressure and area is not None and not has_force:
+        forces = tuple(p * area for p in y.si)
+    else:
         return None
-    forces = tuple(y.si) if has_force else tuple(p * area for p in y.si)  # type: ignore[operator]
     if not all(abs(f) <= MAX_TABLE_SI for f in forces):  # the piston's area times the pressure
         r.problem(r.at(r.present("piston_diameter") or r.present("area") or "area"),
                   f"the piston's force p·A reaches beyond {MAX_TABLE_SI:g} N: no machine of the book, "
@@ -605,7 +621,7 @@ def _read_slider_load(r: Reader, machine: _Machine) -> SliderLoad | None:
         point,
         sliders[point],
         1 if sense == "forward" else -1,
-        during,  # type: ignore[arg-type]
+        during,
         Table(tuple(s.si), forces),
     )
 
@@ -753,38 +769,39 @@ def _read_flywheel(
         )
     fw.finish()
 
-    complete = (
+    read_loads = [load for load in loads if load is not None]
+    if not (  # complete: every value read
         len(problems) == before
-        and all(x is not None for x in (count, omega, cycle, balance, method, tangents))
+        and count is not None and omega is not None and cycle is not None
+        and balance is not None and method is not None and tangents is not None
         and (delta is not None or braking_only)
         and (pole is not None or "pole_distance_mm" not in fw.table)
         and inertia_ok
         and motor_ok
         and true_ok
         and braking_ok
-        and all(load is not None for load in loads)
+        and len(read_loads) == len(loads)
         and (machine.linkage is not None or not machine.has_linkage)
         and (start is not None or not machine.has_linkage)
-    )
-    if not complete:
+    ):
         return None, count
     model = Machine(
         linkage=machine.linkage,
         start=start if start is not None else 0.0,
-        cycle=cycle,  # type: ignore[arg-type]
-        omega_m=omega,  # type: ignore[arg-type]
+        cycle=cycle,
+        omega_m=omega,
         delta=delta if delta is not None else math.nan,
         masses=tuple(masses),
-        loads=tuple(loads),  # type: ignore[arg-type]
+        loads=tuple(read_loads),
         inertia=inertia.si if inertia is not None else 0.0,
-        balance=balance,  # type: ignore[arg-type]
+        balance=balance,
         motor=motor,
     )
     scene = FlywheelScene(
         machine=model,
-        positions=count,  # type: ignore[arg-type]
-        method=method,  # type: ignore[arg-type]
-        tangents=tangents,  # type: ignore[arg-type]
+        positions=count,
+        method=method,
+        tangents=tangents,
         pole_distance=pole,
         true_motion=true_motion,
         braking=braking,

@@ -23,6 +23,8 @@ from graphmech.exact.linkage import solve as solve_exact
 from graphmech.mechanisms.forces import ForceModel, LinkMass, PointForce, RevoluteFriction, SlidingFriction
 from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage, LinkPoint
 from graphmech.methods.kinetostatics import (
+    KinetostaticSolution,
+    Lever,
     construction_targets,
     kinematics_from_construction,
     kinetostatics,
@@ -88,7 +90,7 @@ def kinetostatic_records(quick: bool = False) -> list[dict[str, Any]]:
         for n in (1, 360):
             phi = np.radians(np.arange(n) * (360.0 / n) + (120.0 if n == 1 else 0.0))
 
-            def run() -> Any:
+            def run() -> tuple[KinetostaticSolution, Lever | None]:
                 batch = plan.evaluate_batch({"phi": phi})
                 kin = kinematics_from_construction(b, batch.values, batch.valid)
                 sol = kinetostatics(lk, model, kin, polygons=False)

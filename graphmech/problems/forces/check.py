@@ -43,7 +43,9 @@ from graphmech.scales import round_scale
 from graphmech.tolerances import COND_WARN
 
 if TYPE_CHECKING:
-    from graphmech.drawing.primitives import Panel
+    from graphmech.drawing.primitives import Panel, Sheet
+    from graphmech.mechanisms.linkage import Crank, SliderInput
+    from graphmech.methods.polygons import LinkageConstruction
     from graphmech.mechanisms.linkage import Positions
     from graphmech.problems.forces.scene import ForceScene
     from graphmech.problems.reader import Scene
@@ -84,7 +86,7 @@ class ForceAnalysis:
     spill_mm: float = 0.0  # how far the force sheet runs off its page at the chosen scales
 
     @property
-    def build(self) -> Any:
+    def build(self) -> LinkageConstruction:
         return self.kinematics.build
 
     def scale_notes(self) -> list[str]:
@@ -157,7 +159,7 @@ def _spill(fa: ForceAnalysis) -> float:
     bottom = sheet.page[1] - m - (DEFAULT.note_size * DEFAULT.line_gap * len(sheet.footer) + DEFAULT.note_size)
     right = sheet.page[0] - m
     over = [max(p.frame[3] - bottom, p.frame[2] - right, m - p.frame[0]) for p in layout.panels]
-    return cast(float, max([0.0, *over])) + 1e-6  # (a sheet that warns never ranks with one that fits)
+    return max([0.0, *over]) + 1e-6  # (a sheet that warns never ranks with one that fits)
 
 
 def _analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, float], ...],
@@ -339,14 +341,15 @@ def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, f
     # the output, and η = M_b/M_b0, actual over ideal output (≤ 0: friction locks that drive) — as
     # the reverse stroke of an [efficiency] scene. The exact sign decides for both columns.
     d = fa.build.linkage.driver
-    if sol.balancing_force is not None:
-        g0, g1 = float(bare.balancing_force[i]), float(sol.balancing_force[i])  # type: ignore[index]
-        e0, e1 = float(bare_ex.balancing_force[i]), float(ex.balancing_force[i])  # type: ignore[index]
-        speed = d.velocity
+    if (sol.balancing_force is not None and bare.balancing_force is not None  # a slider driver: all four have F_b
+            and bare_ex.balancing_force is not None and ex.balancing_force is not None):
+        g0, g1 = float(bare.balancing_force[i]), float(sol.balancing_force[i])
+        e0, e1 = float(bare_ex.balancing_force[i]), float(ex.balancing_force[i])
+        speed = cast("SliderInput", d).velocity
     else:
         g0, g1 = float(bare.balancing_moment[i]), float(sol.balancing_moment[i])
         e0, e1 = float(bare_ex.balancing_moment[i]), float(ex.balancing_moment[i])
-        speed = d.omega
+        speed = cast("Crank", d).omega
     if e0 * speed < 0 and abs(e0) > 1e-9 * abs(e1):  # (an M_b0 that is round-off of 0 drives nothing)
         return None, 1.0, g1 / g0, e1 / e0, ""
     return None, 1.0, g0 / g1, e0 / e1, ""
@@ -500,7 +503,7 @@ def render_forces(scene: Scene[ForceScene], footer: tuple[str, ...] = ()) -> tup
     return _sheet(fa, footer), list(fa.warnings) + hint
 
 
-def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Any:
+def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Sheet:
     """The force scene's sheet at the analysis' scales (position 0 solved)."""
     from graphmech.problems.linkage.figures import linkage_sheet
     from graphmech.problems.forces.figures import force_sheet

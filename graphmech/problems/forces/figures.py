@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any, Sequence
+from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 
@@ -24,8 +24,8 @@ from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Linkage
 from graphmech.problems.linkage.figures import mechanism_items
 from graphmech.methods.kinetostatics import (GroupPolygon, GuideReaction, KinetostaticSolution, Lever,
                                             PolygonKinematics)
-from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Segment, Sheet,
-                                         Slider)
+from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Role, Segment,
+                                         Sheet, Slider)
 
 if TYPE_CHECKING:
     from graphmech.mechanisms.forces import ForceModel
@@ -79,7 +79,7 @@ def _arrow_length(mag: float, largest: float) -> float:
 
 
 def _arrows(forces: Sequence[tuple[str, complex, complex]], to_mm: ToMm, largest: float,
-            role: str = "result") -> list[Primitive]:
+            role: Role = "result") -> list[Primitive]:
     """Arrows from each force's point of application along the force, labelled at the head."""
     items: list[Primitive] = []
     for name, vec, at in forces:
@@ -89,7 +89,7 @@ def _arrows(forces: Sequence[tuple[str, complex, complex]], to_mm: ToMm, largest
         p0 = to_mm(at)
         u = _unit(vec)
         p1 = (p0[0] + length * u[0], p0[1] + length * u[1])
-        items.append(Arrow(p0, p1, role))  # type: ignore[arg-type]
+        items.append(Arrow(p0, p1, role))
         items.append(Label(force_label(name), p1, ((-u[0], -u[1]),), 3.0))
     return items
 
@@ -251,9 +251,9 @@ def polygon_items(group: GroupPolygon, mu_F: float, i: int) -> list[Primitive]:
         v = complex(vec[i]) / mu_F
         starts.append(vertex)
         if abs(v) > 1e-9:
-            role = "result" if name in group.unknown else "given"
+            role: Role = "result" if name in group.unknown else "given"
             end = vertex + v
-            items.append(Arrow(_c(vertex), _c(end), role))  # type: ignore[arg-type]
+            items.append(Arrow(_c(vertex), _c(end), role))
             mid = vertex + v / 2
             items.append(Label(force_label(name), _c(mid), (_unit(v), _unit(-v)), 3.0))
         vertex = vertex + v

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Mapping
+from typing import TYPE_CHECKING, Any, Literal, Mapping
 
 from graphmech.errors import SceneError
 from graphmech.mechanisms.linkage import (
@@ -17,6 +17,7 @@ from graphmech.mechanisms.linkage import (
     RPR,
     RRP,
     RRR,
+    Branch,
     Crank,
     Driver,
     Guide,
@@ -36,7 +37,6 @@ from graphmech.problems.reader import (
     POINT_NAME,
     Reader,
     Scene,
-    all_valid,
     file_order,
     read_header,
     read_measured,
@@ -45,6 +45,11 @@ from graphmech.problems.reader import (
     say,
 )
 
+
+#: The choices of a dyad's keys, typed as its model takes them.
+_BRANCHES: tuple[Branch, ...] = ("left", "right")
+_RRP_BRANCHES: tuple[Literal["forward", "backward"], ...] = ("forward", "backward")
+_BARS: tuple[Literal["first", "second"], ...] = ("first", "second")
 
 #: What a scene may show, in the order a textbook draws them.
 SHOW_CHOICES = ("mechanism", "velocity", "acceleration", "instant_centres")
@@ -117,8 +122,8 @@ def _read_guide(parent: Reader, key: str, frame: _Frame) -> Guide | None:
     if r is None:
         return None
     through: tuple[float, float] | None
-    if isinstance(r.table.get("through"), str):
-        name = r.raw("through")
+    if isinstance(name := r.table.get("through"), str):
+        r.raw("through")  # marks the key read: its value is name
         through = frame.get(name)
         if name not in frame:
             r.problem(r.at("through"), f"{say(name)} is not a frame point")
@@ -126,7 +131,7 @@ def _read_guide(parent: Reader, key: str, frame: _Frame) -> Guide | None:
         through = r.pair("through")
     angle = r.scalar("angle", "angle", required=False, default=0.0)
     r.finish()
-    return Guide(through, angle) if all_valid(through, angle) else None  # type: ignore[arg-type]
+    return Guide(through, angle) if through is not None and angle is not None else None
 
 
 def _read_driver(
@@ -183,8 +188,9 @@ def _read_driver(
             part.defines.append((tip, r.at("tip")))
         if link is not None:
             part.carries.append((link, [n for n in (pivot, tip) if n]))
-        if all_valid(link, pivot, tip, length, omega, epsilon, direction):
-            model = Crank(link, pivot, tip, length, omega, epsilon)  # type: ignore[arg-type]
+        if (link is not None and pivot is not None and tip is not None and length is not None
+                and omega is not None and epsilon is not None and direction is not None):
+            model = Crank(link, pivot, tip, length, omega, epsilon)
     else:
         point = name("point")
         guide = _read_guide(r, "guide", frame)
@@ -196,8 +202,9 @@ def _read_driver(
         if link is not None:
             part.carries.append((link, [point] if point else []))
             part.translating.append(link)
-        if all_valid(link, point, guide, velocity, acceleration):
-            model = SliderInput(link, point, guide, velocity, acceleration)  # type: ignore[arg-type]
+        if (link is not None and point is not None and guide is not None and velocity is not None
+                and acceleration is not None):
+            model = SliderInput(link, point, guide, velocity, acceleration)
     r.finish()
     part.model = model
     return part, positions
@@ -240,7 +247,7 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
     if kind == "RRR":
         p, c, q = names
         lengths_given = r.quantity("lengths", "length")
-        lengths = None
+        lengths: tuple[float, float] | None = None
         if lengths_given is not None:
             raw = r.numbers(
                 lengths_given.value,
@@ -249,37 +256,39 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
                 positive=True,
                 shape=f"[l_{p or 'P'}{c or 'C'}, l_{q or 'Q'}{c or 'C'}]",
             )
-            lengths = None if raw is None else tuple(lengths_given.si(x) for x in raw)
-        branch = r.string("branch", choices=("left", "right"), required=True)
+            lengths = None if raw is None else (lengths_given.si(raw[0]), lengths_given.si(raw[1]))
+        branch = r.string("branch", choices=_BRANCHES, required=True)
         need(0, 2)
         new(1)
         carry(i, p, c)
         carry(j, q, c)
-        if all_valid(p, c, q, i, j, lengths, branch):
-            part.model = RRR(p, c, q, (i, j), lengths, branch)  # type: ignore[arg-type]
+        if (p is not None and c is not None and q is not None and i is not None and j is not None
+                and lengths is not None and branch is not None):
+            part.model = RRR(p, c, q, (i, j), lengths, branch)
         if p is not None and p == q:
             r.problem(joints[2][1], f"the two outer joints must differ ({p} twice)")
     elif kind == "RRP":
         p, c = names
         length = r.scalar("length", "length", positive=True)
         guide = _read_guide(r, "guide", frame)
-        branch = r.string("branch", choices=("forward", "backward"), required=True)
+        side = r.string("branch", choices=_RRP_BRANCHES, required=True)
         need(0)
         new(1)
         carry(i, p, c)
         carry(j, c)
         if j is not None:
             part.translating.append(j)
-        if all_valid(p, c, i, j, length, guide, branch):
-            part.model = RRP(p, c, (i, j), length, guide, branch)  # type: ignore[arg-type]
+        if (p is not None and c is not None and i is not None and j is not None and length is not None
+                and guide is not None and side is not None):
+            part.model = RRP(p, c, (i, j), length, guide, side)
     elif kind == "RPR":
         p, q = names
-        bar = r.string("bar", choices=("first", "second"), required=True)
+        bar = r.string("bar", choices=_BARS, required=True)
         need(0, 1)
         if p is not None and p == q:
             r.problem(joints[1][1], f"the two pivots must differ ({p} twice)")
-        if all_valid(p, q, i, j, bar):
-            model = RPR(p, q, (i, j), bar)  # type: ignore[arg-type]
+        if p is not None and q is not None and i is not None and j is not None and bar is not None:
+            model = RPR(p, q, (i, j), bar)
             part.model = model
             on_bar, on_block = model.coincident
             k = 1 if bar == "first" else 0  # the sliding point is the block's pivot
@@ -308,8 +317,9 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
             and abs(math.sin(slot - guide.angle)) < PARALLEL_SIN
         ):
             r.problem(r.at("slot_angle"), "the slot is parallel to the guide: the dyad cannot move")
-        elif all_valid(p, c, i, j, slot, guide):
-            part.model = RPP(p, c, (i, j), slot, guide)  # type: ignore[arg-type]
+        elif (p is not None and c is not None and i is not None and j is not None and slot is not None
+              and guide is not None):
+            part.model = RPP(p, c, (i, j), slot, guide)
     r.finish()
     return part
 
@@ -327,7 +337,7 @@ def _read_point(r: Reader, index: int) -> _Part:
     if ok and (not isinstance(value, list) or len(value) not in (1, 2)):
         r.problem(r.at("base"), "must be a list of 1 or 2 point names")
         ok = False
-    elif ok:
+    elif ok and isinstance(value, list):  # a list of 1 or 2: the branch above refused the rest
         for k, b in enumerate(value):
             b_name = r.point_name(b, f"{r.at('base')}[{k}]")
             ok = ok and b_name is not None
@@ -362,8 +372,8 @@ def _read_point(r: Reader, index: int) -> _Part:
     if name is not None:
         part.defines.append((name, r.at("name")))
     part.needs, part.on = bases, (link, r.at("link"))
-    if all_valid(name, link, along, left) and ok:
-        part.model = LinkPoint(name, link, tuple(b for b, _ in bases), along, left)  # type: ignore[arg-type]
+    if name is not None and link is not None and along is not None and left is not None and ok:
+        part.model = LinkPoint(name, link, tuple(b for b, _ in bases), along, left)
     return part
 
 

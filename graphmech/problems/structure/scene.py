@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from graphmech.mechanisms.topology import Pair, Topology
+from graphmech.mechanisms.topology import Pair, PairKind, Topology
 from graphmech.problems.reader import (
     LINKAGE_KEYS,
     MISSING,
@@ -30,7 +30,7 @@ STRUCTURE_SHOW_CHOICES = ("structure",)
 #: What a structure scene can find (``graphmech.problems.structure.check`` computes each).
 STRUCTURE_QUANTITIES = ("n", "pl", "ph", "p_redundant", "F_local", "F_count", "F", "F_actual", "rank",
                         "p_redundant_actual", "class")
-_PAIR_KINDS = ("R", "P", "higher")
+_PAIR_KINDS: tuple[PairKind, ...] = ("R", "P", "higher")
 #: The most pairs (and printed cases) one structure scene may list.
 MAX_PAIRS = 200
 #: The most links one compound hinge may join.
@@ -84,7 +84,8 @@ def _links(r: Reader, key: str, *, required: bool = False) -> list[str] | None:
         if x is not None and x in out[:i]:
             r.problem(f"{r.at(key)}[{i}]", f"link {x!r} is listed twice")
             return None
-    return None if any(x is None for x in out) else out  # type: ignore[return-value]
+    valid = [x for x in out if x is not None]
+    return valid if len(valid) == len(out) else None
 
 
 def _read_structure(st: Reader) -> StructureScene | None:
@@ -99,8 +100,9 @@ def _read_structure(st: Reader) -> StructureScene | None:
         ph, pr, fl = _count(c, "ph", required=False), _count(c, "p_redundant", required=False), \
             _count(c, "F_local", required=False)
         c.finish()
-        if None not in (label, n, pl, ph, pr, fl):
-            cases.append(Case(label, n, pl, ph, pr, fl))  # type: ignore[arg-type]
+        if label is not None and n is not None and pl is not None and ph is not None and pr is not None \
+                and fl is not None:
+            cases.append(Case(label, n, pl, ph, pr, fl))
     pair_tables = st.tables_at("pair")
     if len(pair_tables) > MAX_PAIRS:
         st.problem(st.at("pair"), f"{len(pair_tables)} pairs: at most {MAX_PAIRS} in one scene")
@@ -149,7 +151,7 @@ def _read_structure(st: Reader) -> StructureScene | None:
         p.finish()
         if kind is not None and links is not None:
             with_at += at is not None
-            pairs.append(Pair(kind, tuple(links), name if isinstance(name, str) else "", at, angle))  # type: ignore[arg-type]
+            pairs.append(Pair(kind, tuple(links), name if isinstance(name, str) else "", at, angle))
     st.finish()
     if cases:
         return StructureScene(None, False, tuple(cases))
