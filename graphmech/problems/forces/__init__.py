@@ -13,7 +13,6 @@ if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
     from graphmech.drawing.primitives import Sheet
     from graphmech.problems.forces.check import ForceAnalysis
     from graphmech.problems.forces.scene import ForceScene
-    from graphmech.problems.judging import Verdict
     from graphmech.problems.reader import Reader, Scene
 
 

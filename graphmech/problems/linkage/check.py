@@ -44,7 +44,6 @@ if TYPE_CHECKING:
     from graphmech.construction.graph import Solution
     from graphmech.mechanisms.linkage import Positions
     from graphmech.methods.quantities import Exact
-    from graphmech.problems.cycle.scene import CycleScene
     from graphmech.problems.reader import Scene
 
 SCALE_KEYS = {"mechanism": "l", "velocity": "v", "acceleration": "a"}

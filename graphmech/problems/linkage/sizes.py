@@ -7,7 +7,7 @@ Shared by the linkage's check and the checks built on it (instant centres, full 
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
