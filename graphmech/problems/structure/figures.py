@@ -155,7 +155,7 @@ def structure_sheet(title: str, an: Any, page: tuple[float, float], footer: tupl
 
 
 def _hull(ps: list[tuple[float, float]]) -> list[tuple[float, float]]:
-    """The convex hull of a link's pairs, counter-clockwise (shapely)."""
+    """The convex hull of a link's pairs in shapely's order (clockwise with y up); pairs in one line: that line."""
     from shapely.geometry import MultiPoint, Polygon
 
     hull = MultiPoint(ps).convex_hull
