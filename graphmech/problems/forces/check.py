@@ -58,6 +58,10 @@ FORCE_NAME = re.compile(
 POLYGON_ROOM_MM = 70.0
 #: The lengths a stated μF may draw the largest force at (mm): outside, the scale is absurd.
 POLYGON_RANGE_MM = (1.0, 1e5)
+#: The largest force a polygon is laid out with, N: a side's length is √(Fx² + Fy²) and the page's
+#: geometry squares lengths again, so beyond ≈ 1e154 N double precision overflows to inf (and the
+#: sides to NaN). 1e152 keeps a margin; forces that large come only from absurd data.
+FORCE_LIMIT_N = 1e152
 
 
 def is_force_name(name: str) -> bool:
@@ -221,6 +225,10 @@ def _choose_force_scale(fa: ForceAnalysis, forced: float | None = None) -> None:
                   default=0.0)
     for il in fa.solution.inertia.values():
         largest = max(largest, float(np.max(np.abs(il.force[fa.kin.valid]), initial=0.0)))
+    if largest > FORCE_LIMIT_N:
+        raise SceneError([("forces", f"the forces reach {largest:.3g} N, more than {FORCE_LIMIT_N:g} N: their polygons "
+                                     "cannot be laid out in double precision (see the driver's speed and "
+                                     "acceleration and the masses)")], fa.scene.source)
     mu = fa.scene.problem.mu_F
     if mu is None:
         fa.scales["F"] = forced or (round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0)

@@ -11,7 +11,7 @@ import pytest
 
 from graphmech.exact import balancing as ex_bal
 from tests.conftest import SCENES, assert_refused, check_json, run_cli, values
-from tests.scenes import write_scene
+from tests.scenes import doc_blocks, replace_once, write_scene
 
 write = partial(write_scene, name="r.toml")
 
@@ -223,3 +223,21 @@ def test_a_friction_iteration_stopped_early_estimates_its_own_error(tolerance, t
             assert q["error_estimate"] < 1e-8
     assert marked >= 6  # R_01 … R_03, M_b, eta at least
     assert values(doc)["M_b0"]["error_source"] == "construction"  # frictionless: no iteration
+
+
+# ---------------------------------------------------------------------------- forces
+
+
+@pytest.mark.parametrize("acceleration, refused", [("1e300", True), ("1e200", True), ("1e150", False)])
+def test_forces_too_large_to_lay_out_are_refused_in_one_line(tmp_path, acceleration, refused):
+    """The docs' slider-driven rocker with an absurd driver acceleration: inertia forces of 3e200 N
+    square to inf in the polygon's layout (fuzz, seed 15: an internal error 'an arrow needs two
+    distinct points, got (nan, nan)'); refused at [forces] in one line, while 3e150 N still checks."""
+    block = next(b for b in doc_blocks() if b.startswith('title = "Slider-driven rocker: balancing force"'))
+    p = write(tmp_path, replace_once(block, "acceleration = -2", f"acceleration = {acceleration}"))
+    result = run_cli("check", str(p))
+    if refused:
+        assert_refused(result, "r.toml", "forces: the forces reach 3e+", "cannot be laid out in double precision")
+    else:
+        code, out, err = result
+        assert code == 0 and err == "" and "nan" not in out
