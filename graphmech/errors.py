@@ -109,7 +109,10 @@ class NotApplicable(GraphmechError, ValueError):
 
 
 class UnknownName(GraphmechError, KeyError):
-    """A name that is not in the mechanism or its construction: a point, a link, a quantity to read.
+    """A name looked up by key and not there: a step of the construction, a quantity of the cycle's
+    diagrams (where the lookup was a KeyError). A name a method refuses among those it offers (a
+    point not in the linkage, a quantity or segment a check cannot read) is an :class:`OutOfDomain`:
+    its callers catch ValueError.
 
     Printed as its message: a KeyError's ``str`` would quote it (``'no point X'``).
     """

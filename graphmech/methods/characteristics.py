@@ -245,8 +245,8 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
         kind = grashof_class(a, b, c, d)
         if kind not in ("crank_rocker_AB", "double_crank", "change_point"):
             raise NotApplicable(f"{no_turn} ({kind.replace('_', ' ')} by Grashof's rule): no extreme positions")
-        rrr = cast(RRR, linkage.dyads[0])  # a hinged four-bar's dyad
-        branch = rrr.branch if isinstance(rrr, RRR) and rrr.q == n["D"] else ("right" if rrr.branch == "left" else "left")
+        rrr = cast(RRR, linkage.dyads[0])  # basic_loop's "fourbar" is an RRR on the crank's tip
+        branch = rrr.branch if rrr.q == n["D"] else ("right" if rrr.branch == "left" else "left")
         side = 1.0 if branch == "left" else -1.0
 
         def on_branch(B: _XY, C: _XY) -> bool:

@@ -507,9 +507,10 @@ def signed_rate(linkage: Linkage, x: str) -> tuple[str, str, tuple[float, float]
     frame, ("slide", link, guide direction) for a slider on a frame guide."""
     frame = linkage.frame_link
     carriers = [lid for lid, pts in linkage.links().items() if x in pts and lid != frame]
-    if x in linkage.frame_points or not carriers:
-        raise OutOfDomain(f"{x} is a point of the frame: its velocity is always 0" if x in linkage.frame_points
-                         else f"no point {x!r} in the linkage")
+    if x in linkage.frame_points:
+        raise NotApplicable(f"{x} is a point of the frame: its velocity is always 0")
+    if not carriers:
+        raise OutOfDomain(f"no point {x!r} in the linkage")
     for dc in direct_centres(linkage):
         if frame not in dc.links:
             continue

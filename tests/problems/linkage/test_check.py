@@ -13,7 +13,8 @@ from graphmech.errors import SceneError
 from graphmech.problems.linkage.bench import closed_form_fourbar
 from graphmech.problems.linkage.check import analyse, exact_value, judge, rows_that_fit
 from graphmech.scene import parse_scene
-from tests.scenes import scene_text
+from tests.conftest import check_json, fourbar_scene
+from tests.scenes import scene_text, write_scene
 
 #: AD 120, AB 60 (link 2) at 30°, BC 120 (3), CD 90 mm (4); 100 rpm, ε = 4 rad/s²; μl, μv stated.
 FOURBAR = scene_text("linkage/fourbar_phi30")
@@ -100,3 +101,14 @@ def test_unknown_find_names_are_refused_with_suggestions():
         analyse(scene('["v_X", "v_C@45"]'))
     assert info.value.problems == [("find[0]", "unknown quantity 'v_X'; did you mean v_E, v_D, v_C?"),
                                    ("find[1]", "no position '45' (positions: 30)")]
+
+
+def test_a_link_angle_at_a_full_turn_is_0_on_both_sides(tmp_path):
+    """At φ = 360° sin φ ≈ -2.4e-16, and ``x % 360`` of the tiny negative angle is 360.0: both the
+    drawn θ and the exact one fold to 0, so a measured 0° is judged against 0°, not 360°."""
+    p = write_scene(tmp_path, fourbar_scene(angle="360", find='["theta_1"]'))
+    doc = check_json(p, "--measured", "theta_1=0")
+    (row,) = doc["quantities"]
+    assert (row["graphical"], row["exact"]) == (0.0, 0.0)
+    (m,) = doc["measured"]
+    assert (m["expected"], m["ok"]) == (0.0, True)
