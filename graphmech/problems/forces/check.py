@@ -58,9 +58,10 @@ FORCE_NAME = re.compile(
 POLYGON_ROOM_MM = 70.0
 #: The lengths a stated μF may draw the largest force at (mm): outside, the scale is absurd.
 POLYGON_RANGE_MM = (1.0, 1e5)
-#: The largest force a polygon is laid out with, N: a side's length is √(Fx² + Fy²) and the page's
-#: geometry squares lengths again, so beyond ≈ 1e154 N double precision overflows to inf (and the
-#: sides to NaN). 1e152 keeps a margin; forces that large come only from absurd data.
+#: The largest force a drawn polygon is laid out with, N: a side's length is √(Fx² + Fy²) and the
+#: page's geometry squares lengths again, so beyond ≈ 1e154 N double precision overflows to inf (and
+#: the sides to NaN). 1e152 keeps a margin; forces that large come only from absurd data. The check
+#: table alone stays exact beyond it (its lengths are forces over a μF chosen as large).
 FORCE_LIMIT_N = 1e152
 
 
@@ -125,6 +126,11 @@ def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, fl
         drawn = any(p in FORCE_PANELS for p in scene.show) and len(cast("Positions", scene.positions).values) == 1
         if not (drawn and _ok(fa, 0)):
             return fa
+        if (largest := _largest_force(fa)) > FORCE_LIMIT_N:  # the table is exact still; the drawing is not
+            raise SceneError([("forces", f"the forces reach {largest:.3g} N, more than {FORCE_LIMIT_N:g} N: their "
+                                         "polygons cannot be drawn in double precision (see the driver's speed and "
+                                         "acceleration and the masses; without the force panels in show, the "
+                                         "table is still checked)")], scene.source)
         forced: dict[str, float]
         best, spill, forced = fa, _spill(fa), {}
         tried: set[tuple[tuple[str, float], ...]] = set()
@@ -220,15 +226,17 @@ def _ok(fa: ForceAnalysis, i: int) -> bool:
     return bool(fa.kin.valid[i] and fa.exact.valid[i] and fa.kinematics.solutions[i] is not None)
 
 
-def _choose_force_scale(fa: ForceAnalysis, forced: float | None = None) -> None:
+def _largest_force(fa: ForceAnalysis) -> float:
+    """The largest reaction or inertia force component at any assembled position, N."""
     largest = max((float(np.max(np.abs(r[fa.kin.valid]), initial=0.0)) for r in fa.solution.reactions.values()),
                   default=0.0)
     for il in fa.solution.inertia.values():
         largest = max(largest, float(np.max(np.abs(il.force[fa.kin.valid]), initial=0.0)))
-    if largest > FORCE_LIMIT_N:
-        raise SceneError([("forces", f"the forces reach {largest:.3g} N, more than {FORCE_LIMIT_N:g} N: their polygons "
-                                     "cannot be laid out in double precision (see the driver's speed and "
-                                     "acceleration and the masses)")], fa.scene.source)
+    return largest
+
+
+def _choose_force_scale(fa: ForceAnalysis, forced: float | None = None) -> None:
+    largest = _largest_force(fa)
     mu = fa.scene.problem.mu_F
     if mu is None:
         fa.scales["F"] = forced or (round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0)
