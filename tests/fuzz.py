@@ -176,6 +176,31 @@ def _no_nonfinite(text: str) -> bool:
     return True
 
 
+#: Refusals a *method* makes of its arguments (graphmech.errors): a scene that reaches one got past
+#: its reader, which should have refused it with the key path. The data's own dead ends
+#: (DegenerateConstruction, NoSolution, TrueMotionError) are answers, not gaps.
+READER_GAPS = ("OutOfDomain", "NotApplicable", "UnknownName", "WrongKind")
+
+
+def refusal_class(scene: Path) -> str:
+    """The class of the error that checking ``scene`` in-process ends with ("" if none): the
+    command prints only its message, and a reader's refusal and a method's read alike there."""
+    import warnings
+
+    import numpy as np
+
+    from graphmech.problems import check
+    from graphmech.scene import load_scene
+
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")
+        try:
+            check(load_scene(scene))
+        except Exception as e:  # noqa: BLE001 — the class is the answer
+            return type(e).__name__
+    return ""
+
+
 def run_one(doc: dict, folder: Path, run_cli, limit: float = 60.0) -> tuple[str, list[str], float]:
     """Run check --json and render on one mutant: (outcome, broken promises, seconds)."""
     scene = folder / "fuzz.toml"
@@ -202,6 +227,8 @@ def run_one(doc: dict, folder: Path, run_cli, limit: float = 60.0) -> tuple[str,
         if code == 2:
             if len(lines) != 1 or not err.endswith("\n") or not lines[0].startswith("fuzz.toml: "):
                 broken.append(f"{argv[0]}: refusal is not one line naming the file: {err[:300]!r}")
+            if argv[0] == "check" and (cls := refusal_class(scene)) in READER_GAPS:
+                broken.append(f"check: a method's {cls} got past the reader (no key path): {err.strip()[:300]}")
             if argv[0] == "render" and out_svg.read_text(encoding="utf-8") != SENTINEL:
                 broken.append("render: a refusal changed the existing output")
             continue

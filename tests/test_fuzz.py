@@ -51,6 +51,30 @@ def test_a_broken_promise_is_seen(tmp_path):
     assert not fuzz.run_one(doc, tmp_path, run_cli)[1]
 
 
+def test_a_method_refusal_that_got_past_the_reader_is_seen(tmp_path, monkeypatch):
+    """A method's OutOfDomain reaches the user as one line with exit 2 — but without a key path:
+    the reader let through what it should have refused, and the fuzzer says so."""
+    from graphmech.errors import NoSolution, OutOfDomain
+    from graphmech.problems.linkage import check as linkage_check
+
+    doc = next(base for name, base in fuzz.bases() if name == "kin.oscillating_block")
+
+    def refuse(*args, **kwargs):
+        raise OutOfDomain("a scale must be positive and finite, not 0.0")
+
+    monkeypatch.setattr(linkage_check, "build_polygons", refuse)
+    outcome, broken, _ = fuzz.run_one(doc, tmp_path, run_cli)
+    assert outcome == "refused" and broken == [
+        "check: a method's OutOfDomain got past the reader (no key path): "
+        "fuzz.toml: a scale must be positive and finite, not 0.0"]
+
+    def no_answer(*args, **kwargs):  # the data's own dead end: an answer, not a gap
+        raise NoSolution("no unique result")
+
+    monkeypatch.setattr(linkage_check, "build_polygons", no_answer)
+    assert fuzz.run_one(doc, tmp_path, run_cli)[:2] == ("refused", [])
+
+
 def test_seeded_mutants_keep_every_promise(tmp_path):
     r = fuzz.campaign(MUTANTS, seed=20261126, folder=tmp_path, run_cli=run_cli, log=None)
     broken = [f"{name}: {b[0]}" for name, _, b in r["failures"]]
