@@ -65,6 +65,14 @@ def hang_guard(seconds: float = HANG_GUARD_S):
         signal.signal(signal.SIGALRM, previous)
 
 
+@pytest.fixture(scope="session")
+def quick_bench(tmp_path_factory) -> tuple[int, str, str, Path]:
+    """``graphmech bench --json --quick -o DIR`` run once for the session: (exit code, stdout,
+    stderr, DIR). The whole bench's tests and the cam bench's read the same run."""
+    out = tmp_path_factory.mktemp("bench")
+    return (*run_cli("bench", "--json", "--quick", "-o", str(out), limit=BENCH_GUARD_S), out)
+
+
 def run_cli(*argv: str, limit: float = HANG_GUARD_S) -> tuple[int, str, str]:
     """Run ``graphmech`` in-process under the hang guard; (exit code, stdout, stderr)."""
     from graphmech.cli import main

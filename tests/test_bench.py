@@ -5,14 +5,12 @@ from __future__ import annotations
 
 import json
 
-from tests.conftest import BENCH_GUARD_S, run_cli
 
-
-def test_bench_records_and_agreement(tmp_path):
-    code, out, err = run_cli("bench", "--json", "--quick", "-o", str(tmp_path), limit=BENCH_GUARD_S)
+def test_bench_records_and_agreement(quick_bench):
+    code, out, err, folder = quick_bench
     assert code == 0, err
     doc = json.loads(out)
-    saved = json.loads((tmp_path / "bench.json").read_text())
+    saved = json.loads((folder / "bench.json").read_text())
     assert [r["n"] for r in saved["records"]] == [r["n"] for r in doc["records"]]
     recs = {(r["method"], r["case"], r["n"]): r for r in doc["records"]}
     for n in (1, 360):

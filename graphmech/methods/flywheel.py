@@ -180,7 +180,7 @@ def _inputs(phi: ArrayLike, J: ArrayLike, M: ArrayLike, cycle: float) -> tuple[n
     if not (np.isfinite(p).all() and np.isfinite(j).all() and np.isfinite(m).all()):
         problems.append("phi, J and M must be finite")
     elif abs(p[0]) > 1e-12 * cycle:
-        problems.append(f"φ is measured from position 1: phi[0] must be 0, not {p[0]!r}")
+        problems.append(f"φ is measured from position 1: phi[0] must be 0, not {float(p[0])!r}")
     elif not (np.all(np.diff(p) > 0.0) and p[-1] < cycle):
         problems.append("the positions must increase strictly within one cycle (0 ≤ φ < Φ)")
     if np.isfinite(j).all() and (j < 0.0).any():

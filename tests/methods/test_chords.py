@@ -6,6 +6,7 @@ import math
 import numpy as np
 import pytest
 
+from graphmech.errors import OutOfDomain
 from graphmech.methods.chords import divisions, frozen_array
 
 
@@ -13,7 +14,7 @@ def test_frozen_array_is_a_read_only_float_copy() -> None:
     src = np.array([1, 2, 3])
     a = frozen_array(src)
     assert a.dtype == float and a.tolist() == [1.0, 2.0, 3.0]
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="read-only"):  # numpy's own refusal
         a[0] = 9.0
     src[0] = 7  # the caller's array is not the copy
     assert a[0] == 1.0
@@ -28,15 +29,15 @@ def test_divisions_come_back_as_floats() -> None:
     assert H == 40.0 and type(H) is float
 
 
-@pytest.mark.parametrize("x, y", [
-    ([[0.0, 1.0], [2.0, 3.0]], [[0.0, 1.0], [2.0, 3.0]]),  # not 1-D
-    ([0.0, 1.0, 2.0], [0.0, 1.0]),                        # lengths differ
-    ([], []),                                              # nothing
-    ([math.inf, 1.0], [0.0, 0.0]),                         # an abscissa not finite
-    ([0.0, -1.0], [0.0, 0.0]),                             # decreasing
+@pytest.mark.parametrize("x, y, message", [
+    ([[0.0, 1.0], [2.0, 3.0]], [[0.0, 1.0], [2.0, 3.0]], r"got shapes \(2, 2\) and \(2, 2\)"),  # not 1-D
+    ([0.0, 1.0, 2.0], [0.0, 1.0], r"got shapes \(3,\) and \(2,\)"),  # lengths differ
+    ([], [], r"got shapes \(0,\) and \(0,\)"),  # nothing
+    ([math.inf, 1.0], [0.0, 0.0], "must be finite"),  # an abscissa not finite
+    ([0.0, -1.0], [0.0, 0.0], "strictly increasing"),  # decreasing
 ])
-def test_bad_divisions_are_refused(x, y) -> None:
-    with pytest.raises(ValueError):
+def test_bad_divisions_are_refused(x, y, message) -> None:
+    with pytest.raises(OutOfDomain, match=message):
         divisions(x, y, 10.0)
 
 

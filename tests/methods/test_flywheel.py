@@ -8,7 +8,14 @@ import math
 import numpy as np
 import pytest
 
-from graphmech.methods.flywheel import CYCLE_MM, H_STEP, HEIGHT_MM, WrongBalance, design_flywheel
+from graphmech.errors import OutOfDomain
+from graphmech.methods.flywheel import (
+    CYCLE_MM,
+    H_STEP,
+    HEIGHT_MM,
+    WrongBalance,
+    design_flywheel,
+)
 from graphmech.scales import round_scale
 
 TAU = 2.0 * math.pi
@@ -121,7 +128,7 @@ def test_only_what_is_needed_is_computed():
     assert d.energy_mm.shape == (13,) and d.energy_mm[0] == 0.0 and d.energy_mm[-1] == 0.0
     d = sine_machine(12, need=("indicator",))
     assert d.wittenbauer is None and d.indicator is not None
-    with pytest.raises(ValueError):
+    with pytest.raises(OutOfDomain, match="^need may hold wittenbauer and indicator, not 'flywheel'$"):
         sine_machine(12, need=("flywheel",))
 
 
@@ -140,16 +147,16 @@ def test_the_constant_moment_must_have_the_sign_its_role_gives_it():
                                delta=0.05).balancing_moment) < 1e-12
 
 
-@pytest.mark.parametrize("phi, J, M", [
-    (np.arange(12) * 0.5 + 0.1, np.ones(12), np.zeros(12)),  # position 1 not at φ = 0
-    (np.arange(12) * 0.6, np.ones(12), np.zeros(12)),        # past the cycle
-    (np.zeros(12), np.ones(12), np.zeros(12)),               # not increasing
-    (positions(12), -np.ones(12), np.zeros(12)),             # negative inertia
-    (positions(12), np.ones(11), np.zeros(12)),              # lengths differ
-    (positions(12), np.ones(12), np.full(12, np.nan)),       # not finite
+@pytest.mark.parametrize("phi, J, M, message", [
+    (np.arange(12) * 0.5 + 0.1, np.ones(12), np.zeros(12), r"phi\[0\] must be 0, not 0\.1$"),  # position 1 not at φ = 0
+    (np.arange(12) * 0.6, np.ones(12), np.zeros(12), "must increase strictly within one cycle"),  # past the cycle
+    (np.zeros(12), np.ones(12), np.zeros(12), "must increase strictly within one cycle"),  # not increasing
+    (positions(12), -np.ones(12), np.zeros(12), "inertia cannot be negative"),
+    (positions(12), np.ones(11), np.zeros(12), r"got shapes \(12,\), \(11,\), \(12,\)"),  # lengths differ
+    (positions(12), np.ones(12), np.full(12, np.nan), "must be finite"),
 ])
-def test_bad_data_is_refused(phi, J, M):
-    with pytest.raises(ValueError):
+def test_bad_data_is_refused(phi, J, M, message):
+    with pytest.raises(OutOfDomain, match=message):
         design_flywheel(phi, J, M, cycle=TAU, omega_m=10.0, delta=0.05)
 
 
@@ -220,7 +227,7 @@ def test_wrong_balance_carries_the_loads_work_over_the_cycle():
 ])
 def test_each_parameter_is_refused_by_name(kw, message):
     args = {"cycle": TAU, "omega_m": 10.0, "delta": 0.05, **kw}
-    with pytest.raises(ValueError) as info:
+    with pytest.raises(OutOfDomain) as info:
         design_flywheel(positions(12), np.ones(12), np.sin(positions(12)), **args)
     assert str(info.value) == message
 

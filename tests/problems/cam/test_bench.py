@@ -16,7 +16,7 @@ import pytest
 from graphmech.problems.cam.bench import CAM_DIVISIONS, cam_cases
 from graphmech.accuracy import convergence_order
 from graphmech.exact.cam import working_profile as exact_working_profile
-from tests.conftest import BENCH_GUARD_S, ROOT, SCENES, run_cli
+from tests.conftest import ROOT, SCENES
 
 REQUIRED = {"method", "case", "n", "seconds", "max_rel_error"}
 CASES = ("offset-roller-e+10", "oscillating-roller", "flat-face-translating")
@@ -36,9 +36,8 @@ BOUND_3600 = {"offset-roller-e+10": 6.0e-6, "oscillating-roller": 3.0e-6, "flat-
 
 
 @pytest.fixture(scope="module")
-def bench(tmp_path_factory) -> tuple[dict, Path]:
-    out = tmp_path_factory.mktemp("bench")
-    code, text, err = run_cli("bench", "--json", "--quick", "-o", str(out), limit=BENCH_GUARD_S)
+def bench(quick_bench) -> tuple[dict, Path]:
+    code, text, err, out = quick_bench
     assert code == 0, err
     return json.loads(text), out
 
