@@ -51,4 +51,12 @@ def test_mypy_finds_no_error_in_graphmech():
     errors = [line for line in out.splitlines() if ": error:" in line]
     assert status == 0 and not errors, (
         f"mypy (strict, pyproject.toml) reports {len(errors)} error(s); the first:\n"
-        + "\n".join(errors[:15]) + (f"\n{err}" if err else ""))
+        + "\n".join(errors[:15]) + (f"\n{err}" if err else "") + f"\n{_typed_versions()}")
+
+
+def _typed_versions() -> str:
+    """numpy and matplotlib ship their own types and are not pinned: a failure with no change to
+    graphmech may come from a newer one (the versions it was clean with: README, Tests)."""
+    from importlib.metadata import version
+
+    return "checked with " + ", ".join(f"{p} {version(p)}" for p in ("mypy", "numpy", "matplotlib"))
