@@ -237,7 +237,7 @@ def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], link
 
         try:
             first = draw_characteristics(linkage, 1e-3).phi_start
-        except ValueError as e:
+        except (ValueError, ArithmeticError) as e:  # a refusal, or the extreme pin cannot be assembled
             top.problem("cycle.start", f"no extreme position to start from: {e}")
             return None, positions
         if first is None:

@@ -11,8 +11,8 @@ import pytest
 from graphmech.errors import SceneError
 from graphmech.problems.cycle.scene import CharacteristicsSpec, CycleScene, CycleSpec
 from graphmech.scene import parse_scene
-from tests.conftest import assert_refused, run_cli
-from tests.scenes import scene_text
+from tests.conftest import assert_refused, fourbar_scene, run_cli
+from tests.scenes import scene_text, write_scene
 
 #: The centred slider-crank (AB = 50, BC = 200 mm) over 12 positions from its extreme.
 SLIDER = scene_text("cycle/slider_crank")
@@ -195,3 +195,13 @@ def test_a_stated_scale_out_of_every_page_is_refused_where_it_is_read(tmp_path, 
     p = written(tmp_path, CYCLE_ONLY.replace("[units]", f"[scales]\nl_m_per_mm = {scale}\n\n[units]"))
     for argv in (("render", str(p), "-o", str(tmp_path / "x.svg")), ("check", str(p), "--json")):
         assert_refused(run_cli(*argv), "s.toml", f"scales.l_m_per_mm: {float(scale):g}: {word} SI units per mm")
+
+
+def test_an_extreme_start_that_cannot_be_assembled_is_refused_at_cycle_start(tmp_path):
+    """A four-bar exactly at Grashof's equality (AD + BC = AB + CD = 70 mm): the extreme position's
+    pin cannot be assembled (an AssemblyError, an ArithmeticError); the reader says so at its key
+    instead of letting the construction's step name the problem."""
+    text = fourbar_scene(a=30, b=50, c=40, d=20, show='["cycle"]', find="[]") + (
+        '[cycle]\npositions = 12\nstart = "extreme"\n')
+    assert_refused(run_cli("check", str(write_scene(tmp_path, text))), "scene.toml",
+                   "cycle.start: no extreme position to start from", "cannot be assembled")
