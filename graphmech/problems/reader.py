@@ -103,6 +103,17 @@ class Scene(Generic[P]):
     problem: P = cast(P, None)  # None for a plain linkage, a Scene[None]
 
 
+def linkage_of(scene: Scene[object]) -> Linkage:
+    """The linkage of a scene whose reader requires one (a linkage, cycle or forces scene):
+    a statement of that guarantee for the type checker, not a check."""
+    return cast(Linkage, scene.linkage)
+
+
+def positions_of(scene: Scene[object]) -> Positions:
+    """The positions of a scene whose reader requires a linkage (they come with it)."""
+    return cast(Positions, scene.positions)
+
+
 # --------------------------------------------------------------------------------------------
 # Units: each kind of quantity, the units a [units] table may name, and the key suffixes.
 # A conversion is (numerator, denominator): SI value = written value · num / den, so that

@@ -37,7 +37,7 @@ from graphmech.accuracy import DISCRETISATION, extrapolated, relative
 from graphmech.problems.judging import Row, Verdict, in_double_precision, measured_entries
 from graphmech.problems.linkage.check import analyse, judge
 from graphmech.problems.linkage.sizes import characteristic, mechanism_size
-from graphmech.problems.reader import page_size
+from graphmech.problems.reader import linkage_of, page_size, positions_of
 from graphmech.errors import SceneError, UnknownName
 from graphmech.problems.cycle.scene import MAX_POLE_MM, MIN_POLE_MM
 from graphmech.exact import characteristics as exact_ch
@@ -48,7 +48,6 @@ from graphmech.methods.full_cycle import CycleDiagram, FullCycle, evaluate_cycle
 from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
 
 if TYPE_CHECKING:
-    from graphmech.mechanisms.linkage import Positions
     from graphmech.problems.cycle.scene import CycleScene, CycleSpec
     from graphmech.problems.reader import Scene
 
@@ -189,7 +188,7 @@ def analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, flo
 
 
 def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, float], ...]) -> CycleAnalysis:
-    linkage: Linkage = cast("Linkage", scene.linkage)  # a linkage scene has one: the reader refuses it otherwise
+    linkage = linkage_of(scene)
     measured = [n for _, n, _ in measured_entries(scene, extra_measured)]
     names = list(scene.find)
     wants = _wants(scene, names + measured)
@@ -249,9 +248,9 @@ def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
     if an.scene.problem.cycle is None:
         return list(warnings)
     build = an.polygons.build
-    link = cast("Linkage", an.scene.linkage).driver.link
+    link = linkage_of(an.scene).driver.link
     said = set(an.cycle.polygon_failures) if an.cycle is not None else set()
-    labels = cast("Positions", an.scene.positions).labels
+    labels = positions_of(an.scene).labels
     prefixes = {position_text(build, lab) + ":": i for i, lab in enumerate(labels)}
     asked = {labels.index(r.name.partition("@")[2]) for r in an.polygons.rows if r.name.partition("@")[2] in labels}
     out = []
@@ -264,7 +263,7 @@ def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
                 and (i not in asked or rest.startswith("shallow")):
             continue  # the cycle's one-line summary says it for every position
         elif not (i in said and rest.startswith("construction impossible")):
-            angle = math.degrees(cast("Positions", an.scene.positions).values[i])
+            angle = math.degrees(positions_of(an.scene).values[i])
             out.append(f"position {i + 1} (φ{link} = {angle:.6g}°): {rest}")
     return out
 
@@ -382,7 +381,7 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
     k: int | str
     mu: str | float
     spec = cast("CycleSpec", scene.problem.cycle)  # analysed as a cycle: the scene has [cycle]
-    angles = np.asarray(cast("Positions", scene.positions).values, dtype=float)
+    angles = np.asarray(positions_of(scene).values, dtype=float)
     d = linkage.driver
     assert isinstance(d, Crank)
     polygons = [p for p in ("velocity", "acceleration") if p in scene.show]
@@ -528,7 +527,7 @@ def _exact_series(an: CycleAnalysis, subject: str) -> dict[str, np.ndarray]:
     cache = an.exact_series
     if subject in cache:
         return cache[subject]
-    linkage = cast("Linkage", an.scene.linkage)
+    linkage = linkage_of(an.scene)
     cyc = an.cycle
     assert cyc is not None
     n = cyc.n
@@ -578,7 +577,7 @@ def _exact_path(linkage: Linkage, point: str, angles: np.ndarray, sense: float, 
 
 def _diagram_errors(an: CycleAnalysis, dg: Any) -> dict[str, float | None]:
     ex = _exact_series(an, dg.subject)
-    linkage = cast("Linkage", an.scene.linkage)
+    linkage = linkage_of(an.scene)
     unit_v, unit_a = ("rad/s", "rad/s²") if dg.kind == "link" else ("m/s", "m/s²")
     size = mechanism_size(linkage)
     v = dg.velocity.derivative_mm * dg.mu_v
@@ -652,8 +651,8 @@ def _rows(an: CycleAnalysis, raw: str, kind: str) -> list[Row]:
     if kind == "ranges":
         if an.ranges is None or an.ranges_exact is None:
             raise UnknownName(f"{base}: the Grashof ranges need [characteristics] ranges = true")
-        names = _range_names(an.ranges, cast("Linkage", scene.linkage))
-        names_exact = _range_names(an.ranges_exact, cast("Linkage", scene.linkage))
+        names = _range_names(an.ranges, linkage_of(scene))
+        names_exact = _range_names(an.ranges_exact, linkage_of(scene))
         if base not in names or base not in names_exact:
             raise UnknownName(f"unknown Grashof range limit {base!r}; the ranges give "
                            f"{', '.join(sorted(names))}")
@@ -705,7 +704,7 @@ def _diagram_at(an: CycleAnalysis, dg: CycleDiagram, m: int, mid: bool) -> Cycle
     if key not in an.refined:
         cyc = an.cycle
         assert cyc is not None
-        fine = evaluate_cycle(cast("Linkage", an.scene.linkage), {"l": an.scales["l"], "v": 1.0, "a": 1.0},
+        fine = evaluate_cycle(linkage_of(an.scene), {"l": an.scales["l"], "v": 1.0, "a": 1.0},
                               finer_positions(float(cyc.angles[0]), cyc.n, cyc.sense, m, mid), diagrams=[dg.subject],
                               mu_phi=cyc.mu_phi, mu_s={dg.subject: dg.mu_s},
                               H_mm=(dg.velocity.H_mm, dg.acceleration.H_mm))
@@ -729,7 +728,7 @@ def _chord_estimate(an: CycleAnalysis, dg: CycleDiagram, what: str, i: int, g: f
             vals.append(float(f.a_mm[m * i] * f.mu_a))
     limit = extrapolated(*cast("tuple[float, float]", vals), order=2)  # the values at 2N and 4N
     unit = {"s": "m", "v": "m/s", "a": "m/s²", "omega": "rad/s", "alpha": "rad/s²"}[what]
-    linkage = cast("Linkage", an.scene.linkage)
+    linkage = linkage_of(an.scene)
     return relative(abs(g - limit), max(abs(limit), characteristic(linkage, unit, mechanism_size(linkage))))
 
 
@@ -756,7 +755,8 @@ def _row(an: CycleAnalysis, name: str, unit: str, g: float, e: float, drawn: flo
     elif unit in ("", "s", "rpm"):
         err = abs(g - e) / max(abs(e), 1e-300)
     else:
-        err = abs(g - e) / max(abs(e), characteristic(cast("Linkage", an.scene.linkage), unit, mechanism_size(cast("Linkage", an.scene.linkage))))
+        linkage = linkage_of(an.scene)
+        err = abs(g - e) / max(abs(e), characteristic(linkage, unit, mechanism_size(linkage)))
     return Row(name, unit, drawn, scale, g, e, err, an.far or name in an.ill)
 
 

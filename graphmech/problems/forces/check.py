@@ -23,7 +23,7 @@ import numpy as np
 from graphmech.accuracy import DISCRETISATION, relative
 from graphmech.problems.linkage.check import Analysis, analyse, judge
 from graphmech.problems.judging import Row, Verdict, split_name
-from graphmech.problems.reader import page_size
+from graphmech.problems.reader import page_size, positions_of
 from graphmech.problems.linkage.sizes import position_text
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.kinetostatics import ExactForces, solve_forces
@@ -123,7 +123,7 @@ def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, fl
     # a value that overflows is reported once, in one line, as "not finite" (no numpy warnings)
     with np.errstate(all="ignore"):
         fa = _analyse_forces(scene, extra_measured, {})
-        drawn = any(p in FORCE_PANELS for p in scene.show) and len(cast("Positions", scene.positions).values) == 1
+        drawn = any(p in FORCE_PANELS for p in scene.show) and len(positions_of(scene).values) == 1
         if not (drawn and _ok(fa, 0)):
             return fa
         if (largest := _largest_force(fa)) > FORCE_LIMIT_N:  # the table is exact still; the drawing is not
@@ -504,7 +504,7 @@ def render_forces(scene: Scene[ForceScene], footer: tuple[str, ...] = ()) -> tup
     """The sheet of a force scene and its warnings: the kinematic panels it shows, then the
     loads, each group's free body and force polygon and Zhukovsky's lever, at one position."""
     drawn = [p for p in scene.show if p in FORCE_PANELS]
-    if drawn and len(cast("Positions", scene.positions).values) > 1:
+    if drawn and len(positions_of(scene).values) > 1:
         raise SceneError([("show", f"{', '.join(drawn)} draw one position and this scene has "
                                    f"{len(cast('Positions', scene.positions).values)}: give the driver one angle "
                                    "(graphmech check takes them all)")], scene.source)

@@ -39,11 +39,10 @@ from graphmech.problems.linkage.sizes import (
     position_text,
     refuse_far_from_origin,
 )
-from graphmech.problems.reader import page_size
+from graphmech.problems.reader import linkage_of, page_size, positions_of
 
 if TYPE_CHECKING:
     from graphmech.construction.graph import Solution
-    from graphmech.mechanisms.linkage import Positions
     from graphmech.methods.quantities import Exact
     from graphmech.problems.reader import Scene
 
@@ -184,10 +183,10 @@ def analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...] 
 
 
 def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]) -> Analysis:
-    linkage: Linkage = cast("Linkage", scene.linkage)  # a linkage scene has one: the reader refuses it otherwise
+    linkage = linkage_of(scene)
     refuse_far_from_origin(scene, linkage, mechanism_size(linkage))
-    positions = np.asarray(cast("Positions", scene.positions).values, dtype=float)
-    labels = tuple(cast("Positions", scene.positions).labels) or tuple(f"{v:g}" for v in positions)
+    positions = np.asarray(positions_of(scene).values, dtype=float)
+    labels = tuple(positions_of(scene).labels) or tuple(f"{v:g}" for v in positions)
     i: int | np.intp
     sol: Solution | None
     scales, stated = choose_scales(scene, linkage, positions)
