@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING
 
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
@@ -41,9 +41,9 @@ def add_pole(b: "LinkageConstruction") -> None:
 
 
 def add(b: "LinkageConstruction", part: Part) -> None:
-    cast("dict[type, Callable[[LinkageConstruction, Part], None]]",
-         {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp, RPR: _rpr, RPP: _rpp,
-          LinkPoint: _point})[type(part)](b, part)
+    build: dict[type, Callable[..., None]] = {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp,
+                                              RPR: _rpr, RPP: _rpp, LinkPoint: _point}
+    build[type(part)](b, part)
 
 
 def _img_label(b: "LinkageConstruction", point: str) -> str:

@@ -25,6 +25,7 @@ from graphmech.errors import DegenerateConstruction
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
 
+
 @dataclass(frozen=True)
 class Row:
     """One line of the check table."""
