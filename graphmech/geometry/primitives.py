@@ -13,6 +13,17 @@ from dataclasses import dataclass
 from typing import Sequence, Union
 
 
+def degrees_0_360(theta: float) -> float:
+    """An angle (rad) in degrees in [0, 360): −0° and −1e-17° are 0°, not 360° (``x % 360`` is
+    360.0 itself for a tiny negative x, as sin 2π ≈ −2.4e-16 gives).
+
+    >>> degrees_0_360(-0.0), degrees_0_360(-1e-19), degrees_0_360(-math.pi / 2)
+    (0.0, 0.0, 270.0)
+    """
+    g = math.degrees(theta) % 360.0
+    return 0.0 if g >= 360.0 else g + 0.0
+
+
 @dataclass(frozen=True)
 class Vector:
     """A free vector (dx, dy)."""

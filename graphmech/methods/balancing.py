@@ -62,16 +62,6 @@ class Correction:
         return 0j if self.theta is None else cmath.rect(self.W, self.theta)
 
 
-def degrees_0_360(theta: float) -> float:
-    """An angle (rad) in degrees in [0, 360): −0° and −1e-17° are 0°, not 360°.
-
-    >>> degrees_0_360(-0.0), degrees_0_360(-1e-19), degrees_0_360(-math.pi / 2)
-    (0.0, 0.0, 270.0)
-    """
-    g = math.degrees(theta) % 360.0
-    return 0.0 if g >= 360.0 else g + 0.0
-
-
 def close_mass_radius_polygon(plane: str, vectors: Sequence[tuple[str, float, float]], r_b: float,
                               mu_W: float, shares: tuple[tuple[str, float], ...] = ()) -> Correction:
     """Lay off (name, W kg·m, angle rad) head to tail at μW from the origin and close it.
@@ -137,5 +127,5 @@ def dynamic_balance(masses: Sequence[RotorMass], z_I: float, z_II: float, r_b: t
     return out[0], out[1]
 
 
-__all__ = ["BALANCED_REL", "Correction", "degrees_0_360", "DrawnSide", "close_mass_radius_polygon", "dynamic_balance",
+__all__ = ["BALANCED_REL", "Correction", "DrawnSide", "close_mass_radius_polygon", "dynamic_balance",
            "static_balance"]

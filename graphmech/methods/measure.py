@@ -11,6 +11,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from graphmech.geometry.kernels import cross
+from graphmech.geometry.primitives import degrees_0_360
 from graphmech.methods.elements import direction
 from graphmech.methods.linkage_construction import ACCELERATION_POLE, VELOCITY_POLE
 from graphmech.methods.quantities import Quantity
@@ -124,16 +125,6 @@ def length(b: "LinkageConstruction", x: str, y: str) -> None:
     _segment(b.mech[x], b.mech[y], b.mu_l, f"l_{x}{y}", b, "m", ("length", x, y), "mechanism")
 
 
-def fold_360(degrees: float) -> float:
-    """``degrees`` in [0, 360): ``x % 360`` is 360.0 itself for a tiny negative x (sin 2π ≈ -2.4e-16).
-
-    >>> fold_360(-1.4e-14), fold_360(-90.0), fold_360(720.5)
-    (0.0, 270.0, 0.5)
-    """
-    d = degrees % 360.0
-    return 0.0 if d == 360.0 else d
-
-
 def link_angle(b: "LinkageConstruction", link: str) -> None:
     """θ of a rotating link: direction of its first two points, degrees in [0, 360)."""
     pts = b.link_points.get(link, [])
@@ -142,12 +133,12 @@ def link_angle(b: "LinkageConstruction", link: str) -> None:
     U, V = pts[0], pts[1]
 
     def kern(ops: Ops, u: Components, v: Components) -> Components:
-        if ops.batch:  # fold_360 for arrays
+        if ops.batch:  # degrees_0_360 for arrays
             import numpy as np
 
             d = np.degrees(np.arctan2(v[1] - u[1], v[0] - u[0])) % 360.0
             return (np.where(d == 360.0, 0.0, d), 1.0)
-        return (fold_360(math.degrees(math.atan2(v[1] - u[1], v[0] - u[0]))), 1.0)
+        return (degrees_0_360(math.atan2(v[1] - u[1], v[0] - u[0])), 1.0)
 
     _add(b, f"theta_{link}", "deg", kern, (b.mech[U], b.mech[V]), ("angle", link), "mechanism")
 

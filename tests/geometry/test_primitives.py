@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from graphmech.geometry.primitives import Circle, Line, Point, Vector, as_point
+from graphmech.geometry.primitives import Circle, Line, Point, Vector, as_point, degrees_0_360
 
 
 def test_vector_arithmetic() -> None:
@@ -59,3 +59,13 @@ def test_values_are_frozen_and_hashable() -> None:
     with pytest.raises(dataclasses.FrozenInstanceError):
         c.r = 3.0  # type: ignore[misc]
     assert len({Point(1.0, 2.0), Point(1.0, 2.0), Point(2.0, 1.0)}) == 2
+
+
+@pytest.mark.parametrize("theta, degrees", [
+    (0.0, 0.0), (-0.0, 0.0), (math.pi / 2, 90.0), (-math.pi / 2, 270.0),
+    (math.atan2(math.sin(2 * math.pi), math.cos(2 * math.pi)), 0.0),  # −2.4e-16 rad: not 360.0
+    (5 * math.pi, 180.0),
+])
+def test_degrees_0_360_never_gives_360(theta, degrees):
+    got = degrees_0_360(theta)
+    assert got == pytest.approx(degrees, abs=1e-12) and 0.0 <= got < 360.0 and math.copysign(1.0, got) == 1.0

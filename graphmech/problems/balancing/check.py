@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, cast
 from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
 from graphmech.errors import SceneError
 from graphmech.exact import balancing as ex
+from graphmech.geometry.primitives import degrees_0_360
 from graphmech.methods import balancing as gm
 from graphmech.scales import format_scale, round_scale
 from graphmech.problems.balancing.scene import DEFAULT_FIND, QUANTITIES, BalancingProblem
@@ -177,7 +178,7 @@ def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | Non
         return c.m_b, abs(w) / c.r_b, c.drawn_mm, mu / c.r_b, an.size / c.r_b
     if c.theta is None:  # balanced
         return None
-    g = gm.degrees_0_360(float(c.theta))
+    g = degrees_0_360(float(c.theta))
     e = _deg360(cmath.phase(w))
     return g, g - _angle_diff_deg(g, e), None, 1.0, 360.0
 

@@ -16,7 +16,8 @@ from __future__ import annotations
 import math
 from typing import Any, Sequence
 
-from graphmech.methods.balancing import Correction, degrees_0_360
+from graphmech.geometry.primitives import degrees_0_360
+from graphmech.methods.balancing import Correction
 from graphmech.drawing.primitives import Arrow, Circle, Label, Panel, Primitive, Segment, Sheet
 from graphmech.drawing.lettering import subscript
 from graphmech.scales import format_scale, round_scale

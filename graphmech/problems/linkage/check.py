@@ -17,7 +17,7 @@ from graphmech import tolerances as T
 from graphmech.errors import DegenerateConstruction, OutOfDomain, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Linkage
-from graphmech.methods.measure import fold_360
+from graphmech.geometry.primitives import degrees_0_360
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
 from graphmech.scales import drawn_size_problem, format_scale, round_scale
 from graphmech.problems.instant_centres import check as ic_check
@@ -307,7 +307,7 @@ def exact_value(kin: Kinematics, spec: Exact, i: int) -> float:
     if kind == "alpha":
         return float(kin.alpha[spec[1]][i])
     if kind == "angle":
-        return fold_360(float(np.degrees(kin.angle[spec[1]][i])))
+        return degrees_0_360(float(kin.angle[spec[1]][i]))
     if kind in ("coriolis", "rel_slide_a"):
         _, x, y, link = spec
         vr = V[x][i] - V[y][i]
