@@ -63,6 +63,12 @@ class CamAnalysis:
     step: float = 0.0  # rad, the divisions' step as drawn (2π/N)
     finer: tuple[CamAnalysis, ...] = ()  # the same drawing at 2N, 4N and 8N divisions, for the rows' error estimates
 
+    @property
+    def profile(self) -> DrawnProfile:
+        """The drawn profile of a scene that asks for a reading off it (its rows and the division
+        table are made only then): a statement for the type checker, not a check."""
+        return cast("DrawnProfile", self.drawn)
+
     def scale_notes(self) -> list[str]:
         """μ as written on the drawing (an oscillating follower's μs is an angle per mm)."""
         return [scale_note(k, v, _angular(self.cam)) + ("" if k in self.stated else " (chosen)")
@@ -199,7 +205,7 @@ def _analyse_cam(scene: Scene[CamScene], extra_measured: tuple[tuple[str, float]
 def division_table(an: CamAnalysis) -> list[dict[str, Any]]:
     """The table books print beside the inversion: per division its number, cam angle, displacement,
     and the pressure angle and pitch-curve radius read off the drawing, with their exact values."""
-    cam, drawn = an.cam, an.drawn
+    cam, drawn = an.cam, an.profile
     ex = exact_cam.profile(cam, an.delta)
     ang = _angular(cam)
     out = []
@@ -207,9 +213,9 @@ def division_table(an: CamAnalysis) -> list[dict[str, Any]]:
         out.append({
             "division": k, "delta_deg": math.degrees(float(d)),
             "s": math.degrees(float(an.s[k])) if ang else float(an.s[k]), "s_unit": "deg" if ang else "m",
-            "alpha_deg": 0.0 if cam.follower.contact == "flat" else math.degrees(float(cast("DrawnProfile", drawn).pressure_angle[k])),
+            "alpha_deg": 0.0 if cam.follower.contact == "flat" else math.degrees(float(drawn.pressure_angle[k])),
             "alpha_exact_deg": math.degrees(float(ex.pressure_angle[k])),
-            "rho_pitch": float(cast("DrawnProfile", drawn).rho_pitch[k]) if abs(cast("DrawnProfile", drawn).rho_pitch[k]) < 1e299 else None,
+            "rho_pitch": float(drawn.rho_pitch[k]) if abs(drawn.rho_pitch[k]) < 1e299 else None,
             "rho_pitch_exact": float(ex.rho_pitch[k]) if np.isfinite(ex.rho_pitch[k]) and abs(ex.rho_pitch[k]) < 1e299 else None,
         })
     return out
@@ -253,7 +259,8 @@ def _graphical_r0_min(cam: DiscCam, alpha: float, step: float) -> float:
     f = cam.follower
     lo = abs(getattr(f, "offset", 0.0)) * (1 + 1e-9) + 1e-12
     if _angular(cam):
-        lo = abs(cast("OscillatingFollower", f).pivot_distance - cast("OscillatingFollower", f).arm) * (1 + 1e-9) + 1e-12
+        rocker = cast("OscillatingFollower", f)
+        lo = abs(rocker.pivot_distance - rocker.arm) * (1 + 1e-9) + 1e-12
     hi = max(cam.base_radius, lo * 2, 1e-6)
     while worst(hi) > alpha and hi < 1e3:
         hi *= 2.0
@@ -282,7 +289,7 @@ def _row(an: CamAnalysis, name: str) -> Row:
                                     f"(every {deg(an.step):.6g}° and at the laws' joints)")], an.scene.source)
         if name.startswith("alpha@"):
             e = float(exact_cam.profile(cam, np.array([delta[k]])).pressure_angle[0])
-            g = 0.0 if cam.follower.contact == "flat" else deg(cast("DrawnProfile", drawn).pressure_angle[k])  # the face's normal is the axis
+            g = 0.0 if cam.follower.contact == "flat" else deg(an.profile.pressure_angle[k])  # the face's normal is the axis
             return _angle_row(name, g, deg(e), 90.0)
         e = float(displacement(cam.program, delta[k]))
         if ang:  # an angular displacement is reported in degrees
@@ -313,7 +320,7 @@ def _row(an: CamAnalysis, name: str) -> Row:
             e = exact_cam.min_convex_rho_pitch(cam)[0] - r_r
         return _plain(name, unit, (rd.rho_min - r_r) / an.scales["l"], an.scales["l"], e, size)
     if name == "profile_deviation":
-        dev = profile_deviation(cam, cast("DrawnProfile", drawn).actual)
+        dev = profile_deviation(cam, an.profile.actual)
         return Row(name, unit, dev / an.scales["l"], an.scales["l"], dev, 0.0, dev / size)
     if name == "h":
         return _plain(name, "rad" if ang else "m", float(np.max(an.s)) / an.scales["s"], an.scales["s"],

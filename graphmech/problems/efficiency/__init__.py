@@ -20,7 +20,7 @@ if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
 def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[EfficiencyProblem]:
     from graphmech.problems.efficiency.scene import parse_efficiency_scene
 
-    return cast("Scene[EfficiencyProblem]", parse_efficiency_scene(data, source, top, order))  # a efficiency scene: its kind says so
+    return cast("Scene[EfficiencyProblem]", parse_efficiency_scene(data, source, top, order))  # an efficiency scene: its kind says so
 
 
 def _analyse(scene: Scene[EfficiencyProblem], extra: Extra) -> EfficiencyAnalysis:
