@@ -1,11 +1,44 @@
-"""Lettering as the figures set it: subscript digits after a symbol (φ₁, ω₂), and the room a
-line of text takes — which a figure needs before anything is drawn (the numbers along an axis
-must not collide), and the renderer's label placer uses too.
+"""Lettering as the figures set it: sub- and superscripts, numbers, and the room a line of text
+takes — which a figure needs before anything is drawn (the numbers along an axis must not
+collide), and the renderer's label placer uses too.
+
+Markup of drawn text
+--------------------
+A figure composes its text with two marks the renderer turns into raised or lowered, smaller
+letters (an SVG ``tspan``): ``_{…}`` a subscript, ``^{…}`` a superscript (``"M_{b}"``,
+``"J_{F}"``, ``"r_{r}"``). The Unicode subscript and superscript characters (``φ₂``, ``m/s²``)
+are read as the same marks, because the serif fonts lack most of them (Liberation Serif has no
+₀–₉; a renderer without a fallback draws boxes). A ``_`` or ``^`` not followed by ``{`` is an
+ordinary character, so scene text such as a title ``"a_b"`` is drawn as typed.
+
+>>> runs("M_{b}′ = 12")
+(('M', 0), ('b', -1), ('′ = 12', 0))
+>>> runs("ω₂ m/s²")
+(('ω', 0), ('2', -1), (' m/s', 0), ('2', 1))
+>>> plain("φ_{2} = " + number(-26.3843297494) + "°")
+'φ2 = −26.38°'
 """
 from __future__ import annotations
 
+import math
+import unicodedata
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+#: Unicode sub- and superscript characters and the ordinary characters they stand for.
+_SUB_CHARS = dict(zip("₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₒₓₕₖₗₘₙₚₛₜᵢᵣᵤᵥ", "0123456789+−=()aeoxhklmnpstiruv"))
+_SUP_CHARS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱ", "0123456789+−=()ni"))
+
+#: The true minus sign, which drawings use instead of the hyphen.
+MINUS = "\u2212"
+
+#: A sub- or superscript's size as a fraction of its line's, and how far its baseline moves
+#: (fraction of the line's size, + up): a subscript of 3.5 mm text is 2.5 mm high.
+SCRIPT_SCALE = 0.72
+SUB_SHIFT = -0.25
+SUP_SHIFT = 0.38
+
+Run = tuple[str, int]
 
 
 def subscript(digits: str) -> str:
@@ -17,10 +50,103 @@ def subscript(digits: str) -> str:
     return digits.translate(_SUBSCRIPT)
 
 
-def text_box_size(text: str, size: float) -> tuple[float, float]:
-    """Estimated width and height (mm) of a line of text at font size ``size`` mm.
+def runs(text: str) -> tuple[Run, ...]:
+    """``text`` cut into runs of the same level: 0 on the line, −1 subscript, +1 superscript.
 
-    >>> text_box_size("ab", 3.5)
-    (4.2, 3.5)
+    >>> runs("a_b ^{2}"), runs("x_{")
+    ((('a_b ', 0), ('2', 1)), (('x_{', 0),))
     """
-    return (round(0.6 * size * max(len(text), 1), 12), float(size))
+    out: list[list[object]] = []
+
+    def put(ch: str, level: int) -> None:
+        if out and out[-1][1] == level:
+            out[-1][0] = str(out[-1][0]) + ch
+        else:
+            out.append([ch, level])
+
+    i, n = 0, len(text)
+    while i < n:
+        ch = text[i]
+        if ch in "_^" and i + 1 < n and text[i + 1] == "{":
+            end = text.find("}", i + 2)
+            if end > i + 2:
+                for c in text[i + 2:end]:
+                    put(c, -1 if ch == "_" else 1)
+                i = end + 1
+                continue
+        if ch in _SUB_CHARS:
+            put(_SUB_CHARS[ch], -1)
+        elif ch in _SUP_CHARS:
+            put(_SUP_CHARS[ch], 1)
+        else:
+            put(ch, 0)
+        i += 1
+    return tuple((str(t), int(str(lv))) for t, lv in out)
+
+
+def plain(text: str) -> str:
+    """The characters of ``text`` without its marks (what a reader of the drawing reads).
+
+    >>> plain("J_{F} = 1.2 kg·m²")
+    'JF = 1.2 kg·m2'
+    """
+    return "".join(t for t, _ in runs(text))
+
+
+def number(x: float, sig: int = 4) -> str:
+    """``x`` as a drawing writes it: ``sig`` significant figures, no trailing zeros, a true
+    minus, and a power of ten as ×10 with a superscript outside 10⁻⁴ … 10⁶.
+
+    >>> number(26.3843297494), number(-0.00872665), number(2.5), number(12346.0), number(1234567.0)
+    ('26.38', '−0.008727', '2.5', '12350', '1.235×10^{6}')
+    """
+    if not math.isfinite(x):
+        raise ValueError(f"cannot letter a non-finite number: {x!r}")
+    s = f"{x:.{sig}g}"
+    if 1e-4 <= abs(float(s)) < 1e6:  # fixed point: 12346 N is written 12350, not 1.235×10⁴
+        places = max(sig - 1 - math.floor(math.log10(abs(float(s)))), 0)
+        s = f"{float(s):.{places}f}"
+        s = s.rstrip("0").rstrip(".") if "." in s else s
+    elif "e" in s:
+        mant, _, exp = s.partition("e")
+        s = f"{mant}×10^{{{int(exp)}}}"
+    if s in ("-0", "0"):
+        return "0"
+    return s.replace("-", MINUS)
+
+
+def minus(text: str) -> str:
+    """A composed line with its hyphen-minus signs set as true minus signs (a hyphen between
+    two letters, as in "four-bar", stays).
+
+    >>> minus("x = -3, a-b, -0.5 mm, ω = -2")
+    'x = −3, a-b, −0.5 mm, ω = −2'
+    """
+    out = []
+    for i, ch in enumerate(text):
+        if ch == "-" and i + 1 < len(text) and (text[i + 1].isdigit() or text[i + 1] == "."):
+            prev = text[i - 1] if i else " "
+            if not prev.isalnum():
+                out.append(MINUS)
+                continue
+        out.append(ch)
+    return "".join(out)
+
+
+def _em(ch: str) -> float:
+    """Width of one character in ems, estimated: CJK full width 1, others 0.6."""
+    return 1.0 if unicodedata.east_asian_width(ch) in ("W", "F") else 0.6
+
+
+def text_box_size(text: str, size: float) -> tuple[float, float]:
+    """Estimated width and height (mm) of a line of text at font size ``size`` mm; sub- and
+    superscripts count at their own size, a CJK character as a full em.
+
+    >>> text_box_size("ab", 3.5), text_box_size("ω_{2}", 5.0)
+    ((4.2, 3.5), (5.16, 5.0))
+    """
+    width = 0.0
+    for t, level in runs(text):
+        scale = 1.0 if level == 0 else SCRIPT_SCALE
+        width += sum(_em(c) for c in t) * scale
+    return (round(size * max(width, 0.6), 12), float(size))

@@ -179,6 +179,10 @@ class Panel:
     items: tuple[Primitive, ...]
     notes: tuple[str, ...] = ()  # e.g. ("μl = 0.002 m/mm",)
     row: int | None = None  # panels with the same row stand in one line; None: fill rows greedily
+    #: The panel's scales that measure its paper, as (symbol, SI per mm) — keys of
+    #: graphmech.scales.SCALE_INFO: each gets a graphic scale bar under the caption, so a
+    #: figure shrunk into a report stays measurable.
+    scales: tuple[tuple[str, float], ...] = ()
 
 
 @dataclass(frozen=True)

@@ -22,6 +22,9 @@ from graphmech.tolerances import DRAWING_PRECISION_MM, MAX_PRECISION_MM, POLE_RA
 
 #: The most driver positions one scene may ask for.
 MAX_POSITIONS = 3600
+#: The notations a drawing can be lettered in (see graphmech.drawing.notation).
+NOTATIONS = ("en", "zh", "ru")
+
 #: The longest title, in characters.
 MAX_TITLE = 200
 #: Named paper sizes, (width, height) in mm: one table for the whole package.
@@ -36,9 +39,14 @@ class Page:
     ----------
     size : (float, float)
         Width and height, mm; A4 landscape by default (see :data:`PAPER_SIZES`).
+    notation : str
+        Whose symbols and captions the drawing uses: ``"en"`` (default), ``"zh"`` (孙桓's
+        symbols, Chinese captions) or ``"ru"`` (the Russian course-project page's). Drawn text
+        only: the names in ``find`` and ``check`` never change.
     """
 
     size: tuple[float, float] = (297.0, 210.0)
+    notation: str = "en"
 
 
 #: The choices of a string key, such as Literal["left", "right"]: what Reader.string returns.
@@ -901,8 +909,9 @@ def read_page(top: Reader) -> Page:
         wh = r.numbers(value, r.at("size"), 2, positive=True, shape="[width, height]")
         if wh is not None:
             size = (wh[0], wh[1])
+    notation = r.string("notation", choices=NOTATIONS, default="en") or "en"
     r.finish()
-    return Page(size)
+    return Page(size, notation)
 
 
 def read_tail(top: Reader, known: Iterable[str] = ()) -> tuple[float, Page]:

@@ -34,6 +34,13 @@ STYLE_KEYS: tuple[str, ...] = (
 )
 
 
+#: The serif faces of the book, then fallbacks that carry what the first lack: Greek and
+#: Cyrillic (DejaVu Serif, STIX Two), Chinese (Noto Serif CJK SC — Debian's fonts-noto-cjk —,
+#: then SimSun on Windows).
+FONT_FAMILY = ("'Times New Roman', Times, 'Liberation Serif', 'DejaVu Serif', 'STIX Two Text', "
+               "'Noto Serif CJK SC', 'Noto Serif SC', SimSun, serif")
+
+
 @dataclass(frozen=True)
 class Pen:
     """How one kind of stroke (and its fill, when a shape is filled) is drawn.
@@ -106,11 +113,11 @@ class Style:
     hatch_spacing: float = 1.4
     hatch_length: float = 1.8
 
-    font_family: str = "Times New Roman, Times, Liberation Serif, DejaVu Serif, serif"
+    font_family: str = FONT_FAMILY
     label_size: float = 3.5
     title_size: float = 5.0
     panel_title_size: float = 3.5
-    note_size: float = 3.0
+    note_size: float = 3.5
     line_gap: float = 1.35
 
     label_gaps: tuple[float, ...] = (2.0, 4.5)

@@ -29,6 +29,7 @@ from typing import Any, Callable, Sequence
 
 import svgwrite
 
+from graphmech.drawing.lettering import SCRIPT_SCALE, SUB_SHIFT, SUP_SHIFT, runs
 from graphmech.render.backend import Anchor, PagePoint
 from graphmech.drawing.primitives import Sheet
 from graphmech.render.sheet import draw_sheet
@@ -55,18 +56,6 @@ def _short(x: float) -> str:
     return fmt(x).rstrip("0").rstrip(".")
 
 
-def _subscripted(s: str) -> tuple[str, str]:
-    """A label written ``M_b`` as its symbol and subscript; any other text as it is.
-
-    >>> _subscripted("M_b"), _subscripted("F_i2′"), _subscripted("a_b_c"), _subscripted("x")
-    (('M', 'b'), ('F', 'i2′'), ('a_b_c', ''), ('x', ''))
-    """
-    head, sep, tail = s.partition("_")
-    if sep and head and tail and "_" not in tail and " " not in s:
-        return head, tail
-    return s, ""
-
-
 def clean_text(s: str) -> str:
     """``s`` without the characters XML 1.0 forbids (control characters other than tab, LF
     and CR; U+FFFE, U+FFFF; lone surrogates), nor the bidirectional overrides that would make
@@ -79,6 +68,26 @@ def clean_text(s: str) -> str:
 
 
 _BIDI = re.compile("[\u202a-\u202e\u2066-\u2069]")
+
+
+def _set_runs(dwg: Any, el: Any, s: str, size: float) -> None:
+    """Fill a text element with the runs of ``s`` (see :func:`graphmech.drawing.lettering.runs`):
+    a sub- or superscript is a ``tspan`` of its own size whose baseline is moved by ``dy``, and
+    the next run on the line moves it back. ``dy`` rather than ``baseline-shift``, which Firefox
+    and CairoSVG do not honour."""
+    level_at = 0.0
+    for k, (text, level) in enumerate(runs(s)):
+        shift = {0: 0.0, -1: SUB_SHIFT, 1: SUP_SHIFT}[level] * size
+        if k == 0 and level == 0:
+            el.text = text
+            continue
+        span = dwg.tspan(text)
+        if shift != level_at:
+            span["dy"] = fmt(level_at - shift)  # SVG's dy is down; the shifts are up
+        if level:
+            span["font-size"] = fmt(SCRIPT_SCALE * size)
+        el.add(span)
+        level_at = shift
 
 
 def sheet_id_prefix(sheet: Sheet) -> str:
@@ -219,10 +228,8 @@ class SvgBackend:
             raise RuntimeError("SvgBackend: begin() must come first")
         if anchor not in ("start", "middle", "end"):
             raise ValueError(f"text anchor must be start, middle or end, got {anchor!r}")
-        base, sub = _subscripted(clean_text(s)) if style_key == "label" else (clean_text(s), "")
-        el = self._dwg.text(base, insert=self._pt(at))
-        if sub:  # M_b: the b lowered and smaller, by dy (baseline-shift is not honoured everywhere)
-            el.add(self._dwg.tspan(sub, dy=[fmt(0.3 * size)], font_size=fmt(0.7 * size)))
+        el = self._dwg.text("", insert=self._pt(at))
+        _set_runs(self._dwg, el, clean_text(s), size)
         el["font-family"] = self.style.font_family
         el["font-size"] = fmt(size)
         el["fill"] = self.style.pen(style_key).colour

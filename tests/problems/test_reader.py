@@ -288,6 +288,13 @@ def test_page_sizes(size: str, expected: tuple[float, float]) -> None:
     assert parse_scene(tomllib.loads(GOOD + f"\n[page]\nsize = {size}\n")).page == Page(expected)
 
 
+def test_page_notation_is_read_and_checked() -> None:
+    page = parse_scene(tomllib.loads(GOOD + '\n[page]\nnotation = "zh"\n')).page
+    assert page.notation == "zh" and Page().notation == "en"
+    assert message_of(GOOD + '\n[page]\nnotation = "cn"\n').startswith(
+        "scene.toml: page.notation: unknown value 'cn': use en, zh or ru")
+
+
 def test_bad_page() -> None:
     assert message_of(GOOD + '\n[page]\nsize = "a3"\n') == (
         "scene.toml: page.size: unknown paper 'a3': use A4, A4-portrait, A3 or A3-portrait "

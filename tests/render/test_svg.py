@@ -236,15 +236,19 @@ def test_svgwrite_is_imported_by_the_svg_backend_only() -> None:
     assert importers == ["render/svg.py"]
 
 
-def test_a_label_written_with_an_underscore_is_subscripted_by_dy() -> None:
-    """M_b: the b one step down and smaller, by dy (not baseline-shift, which Firefox ignores)."""
-    root = ET.fromstring(render_svg(demo_sheet(label="M_b"), "gm1"))
+def test_a_subscript_is_a_tspan_lowered_by_dy_and_the_next_run_comes_back() -> None:
+    """M_{b}′: the b lowered and smaller by dy (not baseline-shift, which Firefox ignores), the
+    prime back on the line; a Unicode subscript digit is set the same way."""
+    root = ET.fromstring(render_svg(demo_sheet(label="M_{b}′ ω₂"), "gm1"))
     [text] = [t for t in root.iter(NS + "text") if t.text == "M"]
-    [sub] = list(text)
-    assert sub.tag == NS + "tspan" and sub.text == "b"
+    sub, back, digit = list(text)
+    assert sub.tag == NS + "tspan" and (sub.text, back.text, digit.text) == ("b", "′ ω", "2")
     size = float(text.get("font-size"))
-    assert float(sub.get("dy")) == pytest.approx(0.3 * size, abs=1e-3)
-    assert float(sub.get("font-size")) == pytest.approx(0.7 * size, abs=1e-3)
-    # a title is the scene's own text: left as written
+    assert float(sub.get("dy")) == pytest.approx(0.25 * size, abs=1e-3)
+    assert float(back.get("dy")) == pytest.approx(-0.25 * size, abs=1e-3)
+    assert float(sub.get("font-size")) == pytest.approx(0.72 * size, abs=1e-3)
+    assert float(sub.get("font-size")) >= 2.5
+    assert back.get("font-size") is None and float(digit.get("dy")) == pytest.approx(0.25 * size, abs=1e-3)
+    # scene text with a bare underscore is left as written
     root = ET.fromstring(render_svg(demo_sheet(title="M_b and x_y"), "gm1"))
     assert [t.text for t in root.iter(NS + "text")][0] == "M_b and x_y"
