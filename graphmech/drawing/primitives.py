@@ -25,10 +25,14 @@ XY = tuple[float, float]
 
 @dataclass(frozen=True)
 class Segment:
+    """A straight line; ``dashed`` for other positions and hidden or redundant members,
+    ``dashdot`` for centre lines (FIGURES.md, GB/T 4457.4 line types)."""
+
     p0: XY
     p1: XY
     role: Role = "given"
     dashed: bool = False
+    dashdot: bool = False
 
 
 @dataclass(frozen=True)
@@ -77,6 +81,7 @@ class Polyline:
     role: Role = "result"
     closed: bool = False
     dashed: bool = False
+    dashdot: bool = False
 
     def __post_init__(self) -> None:
         import math
@@ -114,9 +119,23 @@ ARC_MOST = 720
 
 @dataclass(frozen=True)
 class Circle:
+    """A circle; ``dashdot`` for a centre circle (a cam's base or offset circle, a gear's
+    pitch circle), ``dashed`` for one of another position."""
+
     center: XY
     r: float
     role: Role = "construction"
+    dashed: bool = False
+    dashdot: bool = False
+
+
+@dataclass(frozen=True)
+class Plate:
+    """A link with three or more joints drawn as a filled polygon (a ternary link's
+    triangle), outlined with the given pen; its joints' hinges are drawn on top."""
+
+    points: tuple[XY, ...]
+    role: Role = "given"
 
 
 @dataclass(frozen=True)
@@ -167,7 +186,8 @@ class Label:
     italic: bool = True
 
 
-Primitive = Union[Segment, Arrow, ArcArrow, Polyline, Circle, Hinge, FixedPivot, Slider, GuideLine, Label]
+Primitive = Union[Segment, Arrow, ArcArrow, Polyline, Circle, Plate, Hinge, FixedPivot, Slider, GuideLine,
+                  Label]
 
 
 @dataclass(frozen=True)

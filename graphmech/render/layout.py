@@ -39,6 +39,7 @@ from graphmech.drawing.primitives import (
     Hinge,
     Label,
     Panel,
+    Plate,
     Polyline,
     Primitive,
     Segment,
@@ -105,6 +106,8 @@ def item_box(item: Primitive, style: Style = DEFAULT) -> Box:
         return _box_of(list(item.points), style.pen(item.role).width / 2.0)
     if isinstance(item, Circle):
         return _box_of([item.center], item.r + style.pen(item.role).width / 2.0)
+    if isinstance(item, Plate):
+        return _box_of(list(item.points), style.plate.width / 2.0)
     if isinstance(item, Hinge):
         return _box_of([item.center], item.r + style.hinge.width / 2.0)
     if isinstance(item, FixedPivot):

@@ -49,6 +49,7 @@ from graphmech.drawing.primitives import (
     Hinge,
     Label,
     Panel,
+    Plate,
     Polyline,
     Primitive,
     Segment,
@@ -211,6 +212,9 @@ def pivot_shapes(p: FixedPivot, style: Style = DEFAULT) -> list[tuple[int, Shape
 def item_shapes(item: Primitive, style: Style = DEFAULT) -> list[tuple[int, Shape]]:
     """One primitive as (layer, shape) pairs in its panel's frame; labels give none."""
     if isinstance(item, Segment):
+        if item.dashdot:
+            pieces = dash_pieces((item.p0, item.p1), False, style.dashdot)
+            return [(_ROLE_LAYER[item.role], PolyShape(d, item.role)) for d in pieces]
         return [(_ROLE_LAYER[item.role], LineShape(item.p0, item.p1, item.role, item.dashed))]
     if isinstance(item, Arrow):
         return [(_ROLE_LAYER[item.role], s) for s in arrow_shapes(item, style)]
@@ -229,12 +233,21 @@ def item_shapes(item: Primitive, style: Style = DEFAULT) -> list[tuple[int, Shap
                 (_ROLE_LAYER[item.role], head)]
     if isinstance(item, Polyline):
         layer = _ROLE_LAYER[item.role]
-        if not item.dashed:
+        if not (item.dashed or item.dashdot):
             return [(layer, PolyShape(item.points, item.role, closed=item.closed, filled=False))]
-        pieces = dash_pieces(item.points, item.closed, style.pen(item.role).dash)
+        pattern = style.dashdot if item.dashdot else style.pen(item.role).dash
+        pieces = dash_pieces(item.points, item.closed, pattern)
         return [(layer, PolyShape(d, item.role, closed=False, filled=False)) for d in pieces]
     if isinstance(item, Circle):
+        if item.dashed or item.dashdot:  # a 1° polygon cut into the pattern
+            ring = tuple((item.center[0] + item.r * math.cos(math.radians(k)),
+                          item.center[1] + item.r * math.sin(math.radians(k))) for k in range(360))
+            pattern = style.dashdot if item.dashdot else style.pen(item.role).dash
+            return [(_ROLE_LAYER[item.role], PolyShape(d, item.role))
+                    for d in dash_pieces(ring, True, pattern)]
         return [(_ROLE_LAYER[item.role], CircleShape(item.center, item.r, item.role))]
+    if isinstance(item, Plate):
+        return [(LAYER_SLIDER, PolyShape(item.points, "plate", closed=True, filled=True))]
     if isinstance(item, Hinge):
         return [(LAYER_HINGE, CircleShape(item.center, item.r, "hinge", filled=True))]
     if isinstance(item, FixedPivot):

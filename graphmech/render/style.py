@@ -31,6 +31,7 @@ STYLE_KEYS: tuple[str, ...] = (
     "hinge",
     "slider",
     "text",
+    "plate",
 )
 
 
@@ -70,8 +71,10 @@ class Style:
 
     Parameters
     ----------
-    given, construction, result, label, frame, hatch, hinge, slider, text : Pen
-        The pens, by style key.
+    given, construction, result, label, frame, hatch, hinge, slider, text, plate : Pen
+        The pens, by style key (``plate`` outlines and fills a ternary link's triangle).
+    dashdot : tuple of float
+        The pattern of centre lines, mm (on, off, on, off).
     arrow_length, arrow_half_width : float
         Arrowhead length along the vector and half its base width, mm.
     hinge_r : float
@@ -103,6 +106,9 @@ class Style:
     hinge: Pen = field(default_factory=lambda: Pen(0.4, "black", "white"))
     slider: Pen = field(default_factory=lambda: Pen(0.5, "black", "white"))
     text: Pen = field(default_factory=lambda: Pen(0.0, "black", "black"))
+    plate: Pen = field(default_factory=lambda: Pen(0.7, "black", "#e4e4e4"))
+    #: The dash-dot of a centre line: long dash, gap, dot, gap (mm).
+    dashdot: tuple[float, ...] = (8.0, 1.5, 0.8, 1.5)
 
     arrow_length: float = 2.8
     arrow_half_width: float = 0.8

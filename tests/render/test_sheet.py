@@ -286,3 +286,17 @@ def test_layout_warnings_are_reported() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         record(one_panel(Segment((0.0, 0.0), (40.0, 0.0))))
+
+
+def test_a_centre_line_is_dash_dot_and_a_plate_is_a_filled_outlined_polygon() -> None:
+    from graphmech.drawing.primitives import Circle, Plate, Segment
+    from graphmech.render.sheet import item_shapes
+
+    pieces = [s for _, s in item_shapes(Segment((0.0, 0.0), (40.0, 0.0), "construction", dashdot=True))]
+    lengths = sorted({round(s.points[-1][0] - s.points[0][0], 6) for s in pieces})
+    assert lengths[0] == pytest.approx(0.8) and lengths[-1] == pytest.approx(8.0)  # dot and dash
+    ring = [s for _, s in item_shapes(Circle((0.0, 0.0), 20.0, dashdot=True))]
+    assert len(ring) > 10 and all(abs(math.hypot(*p) - 20.0) < 1e-2 for s in ring for p in s.points)
+    [(layer, tri)] = item_shapes(Plate(((0.0, 0.0), (10.0, 0.0), (5.0, 8.0))))
+    assert tri.key == "plate" and tri.closed and tri.filled and len(tri.points) == 3
+    assert DEFAULT.pen("plate").fill not in ("white", "none", "black")

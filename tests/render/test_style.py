@@ -10,7 +10,7 @@ def test_every_style_key_has_its_own_pen() -> None:
     pens = {key: DEFAULT.pen(key) for key in STYLE_KEYS}
     assert all(isinstance(p, Pen) for p in pens.values())
     assert pens == {key: getattr(DEFAULT, key) for key in STYLE_KEYS}
-    assert set(STYLE_KEYS) == {"given", "construction", "result", "label", "frame", "hatch", "hinge", "slider", "text"}
+    assert set(STYLE_KEYS) == {"given", "construction", "result", "label", "frame", "hatch", "hinge", "slider", "text", "plate"}
 
 
 def test_the_books_line_weights() -> None:
