@@ -226,11 +226,8 @@ def root_size_mm(svg_text: str) -> tuple[float, float]:
 
 
 class Browser:
-    """One headless Chromium driven over the DevTools pipe; ``measure(svg)`` per figure.
-
-    >>> Browser  # doctest: +ELLIPSIS
-    <class '...Browser'>
-    """
+    """One headless Chromium driven over the DevTools pipe; ``measure(svg)`` per figure. A
+    context manager: leaving it closes the browser and removes its profile."""
 
     def __init__(self, executable: str) -> None:
         self._profile = tempfile.TemporaryDirectory(prefix="graphmech-browser-")
