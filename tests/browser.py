@@ -36,7 +36,9 @@ What :func:`analyse` computes per figure (mm at 1:1, tolerances below, in one pl
 * ``filled`` — area of the union (shapely) of the ``getBBox()`` boxes of every drawn element
   (texts and shapes; a horizontal or vertical line's box has no area), clipped to the page,
   over the page's area (the root's width × height in mm). ``extent`` is the bounding box of
-  all of them over the page: how much of the sheet the figure spans at all.
+  all of them over the page: how much of the sheet the figure spans at all; ``panel_filled``
+  the union of the boxes of the root's ``<g>`` children (the panels with their captions, the
+  title, the footer) over the page: how much of the sheet the layout uses.
 * ``min_text`` — the smallest font size of a ``<text>`` (its em, mm); ``min_sub`` the smallest
   of a ``<tspan>`` (a sub-/superscript), None where there is none; ``small_text`` how many
   texts are under ``SMALL_TEXT``; ``unicode_scripts`` how many texts write a sub- or
@@ -187,6 +189,12 @@ MEASURE_JS = r"""
       els.push(r);
     }
     out.groups = groups;
+    out.blocks = [];  // the boxes of the root's <g> children: the panels, the title, the footer
+    for (var c = root.firstElementChild; c; c = c.nextElementSibling) {
+      if (c.localName !== 'g') continue;
+      var gb = c.getBBox();
+      if (gb.width > 0 || gb.height > 0) out.blocks.push(BOX(M(c), gb));
+    }
     out.elements = els;
   } catch (e) {
     out = {ok: false, error: String(e && e.stack || e)};
@@ -494,6 +502,7 @@ def analyse(name: str, data: dict) -> dict:
     page = box(0, 0, page_w, page_h)
     boxes = [box(*(v * k for v in e["bbox"])) for e in els]
     covered = unary_union([b for b in boxes if b.area > 0]).intersection(page)
+    blocks = unary_union([box(*(v * k for v in b)) for b in data["blocks"]]).intersection(page)
     allb = np.array([[v * k for v in e["bbox"]] for e in els]) if els else np.zeros((0, 4))
     ext = box(max(0.0, allb[:, 0].min()), max(0.0, allb[:, 1].min()),
               min(page_w, allb[:, 2].max()), min(page_h, allb[:, 3].max())) if len(allb) else box(0, 0, 0, 0)
@@ -517,6 +526,7 @@ def analyse(name: str, data: dict) -> dict:
         "label_label": len(pairs),
         "filled": round(covered.area / page.area, 4),
         "extent": round(ext.area / page.area, 4),
+        "panel_filled": round(blocks.area / page.area, 4),
         "min_text": round(min(sizes), 3) if sizes else None,
         "min_sub": round(min(subs), 3) if subs else None,
         "small_text": sum(1 for s in sizes if s < SMALL_TEXT - 1e-9),

@@ -126,7 +126,8 @@ def test_no_composed_text_holds_an_ascii_underscore(figures, name):
 def test_a_fit_page_is_at_least_half_filled(fit_figures, name):
     r = loaded(fit_figures, name)
     assert r["filled"] >= FIT_FILLED, (f"{name}: on a fit page of {r['page_mm'][0]:.0f} × {r['page_mm'][1]:.0f} mm "
-                                       f"the element boxes cover {r['filled']:.1%} (< {FIT_FILLED:.0%})")
+                                       f"the element boxes cover {r['filled']:.1%} (< {FIT_FILLED:.0%}); "
+                                       f"the panels' boxes {r['panel_filled']:.1%}")
 
 
 def test_the_reference_titles_hold_no_ascii_underscore():
@@ -184,15 +185,19 @@ def test_checker_finds_an_underscore_in_composed_text_apart_from_the_title(hand_
     assert (hand_written["underscore"], hand_written["underscore_title"]) == (1, 1)
 
 
-def test_checker_measures_the_filled_fraction(browser, tmp_path):
+def test_checker_measures_the_filled_fraction_and_the_panels(browser, tmp_path):
     svg = tmp_path / "filled.svg"
     svg.write_text('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="50mm" viewBox="0 0 100 50">'
                    '<rect x="-10" y="0" width="70" height="50" fill="black"/>'  # 60 × 50 of it on the page
-                   '<rect x="50" y="0" width="20" height="25" fill="none" stroke="black" stroke-width="0.2"/>'
+                   '<g id="panel"><rect x="50" y="0" width="20" height="25" fill="none" stroke="black"/>'
+                   '<rect x="80" y="40" width="10" height="10"/></g>'
                    '</svg>', encoding="utf-8")
     r = analyse("filled", browser.measure(svg))
     assert r["errors"] == [] and tuple(r["page_mm"]) == (100.0, 50.0)
-    assert r["filled"] == pytest.approx((60 * 50 + 10 * 25) / (100 * 50), abs=1e-3)
+    # the element boxes (a stroke's width is not in getBBox): 60 × 50 + 10 × 25 + 10 × 10
+    assert r["filled"] == pytest.approx(3350 / 5000, abs=1e-3)
+    # the one <g>: x 50 … 90, y 0 … 50
+    assert r["panel_filled"] == pytest.approx(2000 / 5000, abs=1e-3)
 
 
 def test_checker_reports_a_console_error_and_refuses_a_parse_error(browser, tmp_path):
