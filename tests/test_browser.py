@@ -75,7 +75,7 @@ def figures(browser, tmp_path_factory) -> dict[str, dict | str]:
 @pytest.fixture(scope="module")
 def fit_figures(browser, tmp_path_factory) -> dict[str, dict | str]:
     """The scenes on pages cropped to their content (``--page fit``)."""
-    return render_and_measure(browser, tmp_path_factory.mktemp("fit"))
+    return render_and_measure(browser, tmp_path_factory.mktemp("fit"), "--page", "fit")
 
 
 def loaded(figures: dict[str, dict | str], name: str) -> dict:
