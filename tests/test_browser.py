@@ -20,6 +20,7 @@ from __future__ import annotations
 import os
 import tomllib
 from pathlib import Path
+from typing import NoReturn
 
 import pytest
 
@@ -33,15 +34,20 @@ RENDER_GUARD_S = 600.0
 SHOWN = 12  # a failure lists this many of its hits
 
 
+def no_browser(ci: bool) -> NoReturn:
+    """Without a browser: fail where CI is set (CI must not skip silently), else skip saying why."""
+    why = f"no browser: none of {', '.join(BROWSERS)} is on PATH"
+    if ci:
+        pytest.fail(f"{why}, and CI is set: the browser tests must run in CI (.ci/run installs chromium)")
+    pytest.skip(f"{why} (CI is unset; with CI set this fails)")
+
+
 @pytest.fixture(scope="module")
 def browser():
-    """One headless Chromium for the module; skip (CI unset) or fail (CI set) where there is none."""
+    """One headless Chromium for the module."""
     executable = find_chromium()
     if executable is None:
-        why = f"no browser: none of {', '.join(BROWSERS)} is on PATH"
-        if "CI" in os.environ:
-            pytest.fail(f"{why}, and CI is set: the browser tests must run in CI (.ci/run installs chromium)")
-        pytest.skip(f"{why} (CI is unset; with CI set this fails)")
+        no_browser("CI" in os.environ)
     with Browser(executable) as b:
         yield b
 
@@ -52,8 +58,8 @@ def render_and_measure(browser: Browser, folder: Path, *options: str) -> dict[st
     try:
         code, _, err = run_cli("render", *options, "-d", str(folder), *map(str, SCENE_FILES),
                                limit=RENDER_GUARD_S)
-    except SystemExit as e:  # the command line refused its options
-        code, err = e.code, f"exit {e.code}"
+    except SystemExit as e:  # argparse: the command line refused its options (its message is lost)
+        code, err = e.code, f"the command line refused {' '.join(options)}"
     if code != 0:
         why = f"graphmech render {' '.join(options)} failed (exit {code}): {err.strip()[-800:]}"
         return {name: why for name in NAMES}
@@ -81,7 +87,8 @@ def fit_figures(browser, tmp_path_factory) -> dict[str, dict | str]:
 def loaded(figures: dict[str, dict | str], name: str) -> dict:
     """The figure's analysis; the test fails (naming the error) if it did not load cleanly."""
     r = figures[name]
-    assert not isinstance(r, str), r
+    if isinstance(r, str):
+        pytest.fail(r, pytrace=False)
     assert not r["errors"], f"{name}: the page reports errors:\n" + "\n".join(r["errors"])
     return r
 
@@ -211,3 +218,13 @@ def test_checker_reports_a_console_error_and_refuses_a_parse_error(browser, tmp_
                       '<text x="1" y="5">a & b</text></svg>', encoding="utf-8")
     with pytest.raises(BrowserError, match="XML parse error"):
         browser.measure(broken)
+
+
+def test_without_a_browser_ci_fails_and_elsewhere_the_tests_skip(monkeypatch, tmp_path):
+    monkeypatch.delenv("CHROMIUM", raising=False)
+    monkeypatch.setenv("PATH", str(tmp_path))
+    assert find_chromium() is None
+    with pytest.raises(pytest.fail.Exception, match="CI is set"):
+        no_browser(ci=True)
+    with pytest.raises(pytest.skip.Exception, match="no browser: none of chromium, chromium-browser, google-chrome"):
+        no_browser(ci=False)
