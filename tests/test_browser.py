@@ -131,10 +131,14 @@ def test_no_composed_text_holds_an_ascii_underscore(figures, name):
 
 @pytest.mark.parametrize("name", NAMES)
 def test_a_fit_page_is_at_least_half_filled(fit_figures, name):
+    """The sheet's elements are its panels, title, footer and title block (the root's groups):
+    their boxes cover at least half of a page cropped to them. (Single strokes and letters leave
+    most of their surroundings empty: the union of every line's and letter's own box is 2–35 %
+    even of a well-filled sheet, so it is reported, not asserted.)"""
     r = loaded(fit_figures, name)
-    assert r["filled"] >= FIT_FILLED, (f"{name}: on a fit page of {r['page_mm'][0]:.0f} × {r['page_mm'][1]:.0f} mm "
-                                       f"the element boxes cover {r['filled']:.1%} (< {FIT_FILLED:.0%}); "
-                                       f"the panels' boxes {r['panel_filled']:.1%}")
+    assert r["panel_filled"] >= FIT_FILLED, (
+        f"{name}: on a fit page of {r['page_mm'][0]:.0f} × {r['page_mm'][1]:.0f} mm the sheet's elements "
+        f"cover {r['panel_filled']:.1%} (< {FIT_FILLED:.0%}); single elements' boxes {r['filled']:.1%}")
 
 
 def test_the_reference_titles_hold_no_ascii_underscore():
