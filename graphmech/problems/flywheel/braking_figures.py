@@ -97,7 +97,7 @@ def rundown_panel(J: float, omega0: float, M_brake: float, t_limit: float | None
         items += [Segment((x, 0.0), (x, r.omega0_mm), "construction", dashed=True),
                   Label(fly_word("t allowed", notation), (x, r.omega0_mm), ((0.0, -1.0),), LETTER)]
         verdict = fly_word("stops" if r.t_stop <= t_limit else "stops not", notation)
-        notes.append(f"{fly_word('required', notation)} t ≤ {number(t_limit)} s: {verdict}")
+        notes.append(f"{fly_word('required', notation)} t ≤ {number(t_limit, 6)} s: {verdict}")  # as given
     return Panel("rundown", fly_word("rundown", notation), tuple(items), tuple(notes),
                  scales=(("t", r.mu_t), ("omega", r.mu_omega)))
 
