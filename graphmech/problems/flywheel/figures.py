@@ -208,8 +208,8 @@ def _diagram(x: np.ndarray, y: np.ndarray, every: int, name: str, *, curve_role:
     lo, hi = min(0.0, float(y.min())), max(0.0, float(y.max()))
     items: list[Primitive] = [Arrow((0.0, 0.0), (float(x[-1]) + AXIS_OVERRUN, 0.0), "label"),
                               Arrow((0.0, lo - (3.0 if lo < 0.0 else 0.0)), (0.0, hi + AXIS_OVERRUN), "label")]
-    for k in range(every, x.size, every):  # ticks at the numbered positions
-        items.append(Segment((float(x[k]), 0.0), (float(x[k]), -1.0), "label"))
+    for k in range(every, x.size, every):  # ticks at the numbered positions, up: clear of the numbers below
+        items.append(Segment((float(x[k]), 0.0), (float(x[k]), 1.0), "label"))
     if ordinates:
         items += [Segment((float(x[k]), 0.0), (float(x[k]), float(y[k])), "construction")
                   for k in _ordinate_positions(x.size - 1, every) if abs(y[k]) > 1e-9]
@@ -313,7 +313,8 @@ def energy_items(design: FlywheelDesign, every: int | None = None, notation: str
     for i, sub, up in ((design.energy_max_index, "max", True), (design.energy_min_index, "min", False)):
         p = (float(x[i]), float(t[i]))
         marks.append(Circle(p, 2 * DOT, "result"))
-        labels.append(Label(f"{T}_{{{sub}}}", p, ((0.0, -1.0) if up else (0.0, 1.0),), LETTER))
+        off = (p[0], p[1] + (1.0 if up else -1.0))  # clear of the mark's dot
+        labels.append(Label(f"{T}_{{{sub}}}", off, ((0.0, -1.0) if up else (0.0, 1.0),), LETTER))
     return items + marks + labels
 
 
@@ -517,7 +518,7 @@ def motion_panel(phi: np.ndarray, omega: np.ndarray, omega_m: float, mu_phi: flo
              fly_word("ordinates", notation, w=number(omega_m)),
              f"ω_{{max}} − ω_{{min}} = {number(hi - lo)} rad/s, δ = {number(delta)}")
     title = fly_word("motion", notation)
-    return Panel("motion", title, tuple(items + labels), notes, row=2, scales=(("omega", mu), ("phi", mu_phi)))
+    return Panel("motion", title, (*items, *labels), notes, row=2, scales=(("omega", mu), ("phi", mu_phi)))
 
 
 # ----------------------------------------------------------------------------- notes
@@ -546,7 +547,7 @@ def _notes(design: FlywheelDesign, members: Sequence[str], notation: str, factor
                 f"{scale_text('phi', inertia_phi_scale(design), '′')}"]
     if "wittenbauer" in members:
         w = design.wittenbauer
-        assert w is not None
+        assert w is not None and design.J_F is not None
         if "inertia" not in members:
             out += [scale_text("J", s["J"])]
         reading = "ω = ω_{m}(1 ± δ/2)" if design.form == "exact" else "ω^{2} = ω_{m}^{2}(1 ± δ)"
@@ -554,7 +555,7 @@ def _notes(design: FlywheelDesign, members: Sequence[str], notation: str, factor
                 f"(ψ_{{max}} = {number(w.psi_max_deg)}°), tan ψ_{{min}} = {number(w.tan_psi_min)} "
                 f"(ψ_{{min}} = {number(w.psi_min_deg)}°)",
                 f"k = {number(w.k_mm)} mm, l = {number(w.l_mm)} mm, kl = {number(w.kl_mm)} mm: "
-                f"{fly_word('J_F', notation)} = μ_{{T}}·kl/(ω_{{m}}^{{2}}δ) = {number(float(design.J_F))} kg·m^{{2}}"]
+                f"{fly_word('J_F', notation)} = μ_{{T}}·kl/(ω_{{m}}^{{2}}δ) = {number(design.J_F)} kg·m^{{2}}"]
         if w.ill_conditioned:
             out += [fly_word("far tangents", notation, a=number(w.angle_between_deg, 2),
                              d=number(-w.intersection[0]), T=T)]
