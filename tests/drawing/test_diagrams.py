@@ -32,10 +32,11 @@ def test_nice_step_is_the_smallest_nice_step_not_below(least: float, step: int) 
 
 
 def test_numbers_every_keeps_the_numbers_clear_of_each_other() -> None:
-    # "100" at 2.8 mm is 5.04 mm wide, plus 1.2 mm clear each side: 7.44 mm; at 2 mm apart, every 4th
-    assert numbers_every(100, 2.0) == 4
-    assert numbers_every(100, 7.44) == 1
-    assert numbers_every(100, 7.4) == 2
+    # "100" at 3.5 mm is 6.3 mm wide, plus 1.2 mm clear each side: 8.7 mm; at 2 mm apart, every 5th
+    assert NUMBER_SIZE == 3.5  # the least body text of a drawing
+    assert numbers_every(100, 2.0) == 5
+    assert numbers_every(100, 8.7) == 1
+    assert numbers_every(100, 8.6) == 2
     assert numbers_every(36, 0.0) == 36 and numbers_every(36, -1.0) == 36  # no room: only the first
 
 

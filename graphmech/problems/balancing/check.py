@@ -223,4 +223,4 @@ def balancing_figure(an: BalancingAnalysis, page: tuple[float, float], footer: t
 
     p = an.problem
     return balancing_sheet(an.scene.title, p.type, p.masses, p.planes, an.corrections, an.scales["W"],
-                           list(an.scene.show), page, footer)
+                           list(an.scene.show), page, footer, an.scene.page.notation)

@@ -2,13 +2,13 @@
 
 rotor
     the end view (at μl): the rotor's circle, each eccentric mass a small circle on its radius,
-    labelled m₁, m₂ …, the correction masses bold on their radii (r_b); for a dynamic balance
-    also a side view: the shaft, the planes of the masses (thin) and the correction planes I and
-    II (bold), with their axial positions.
+    labelled m_{1}, m_{2} …, the correction masses bold on their radii (r_{b}), the centre lines
+    dash-dot; for a dynamic balance also a side view: the rotor's axis (dash-dot), the planes of
+    the masses (thin) and the correction planes I and II (bold), with their axial positions.
 polygon
-    one panel per correction plane (at μW): the mass-radius products W₁, W₂ … head to tail
+    one panel per correction plane (at μW): the mass-radius products W_{1}, W_{2} … head to tail
     (thin arrows, each parallel to its mass's radius — in a correction plane the lever-rule
-    shares, reversed where a mass lies outside the planes), and the closing side W_b from the
+    shares, reversed where a mass lies outside the planes), and the closing side W_{b} from the
     last end back to the start (bold), its magnitude and angle in the notes.
 """
 from __future__ import annotations
@@ -18,21 +18,58 @@ from typing import Any, Sequence
 
 from graphmech.geometry.primitives import degrees_0_360
 from graphmech.methods.balancing import Correction
+from graphmech.drawing.diagrams import scale_text
+from graphmech.drawing.lettering import number
+from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import Arrow, Circle, Label, Panel, Primitive, Segment, Sheet
-from graphmech.drawing.lettering import subscript
-from graphmech.scales import format_scale, round_scale
+from graphmech.scales import round_scale
 
-#: The rotor's end view radius on paper, about, mm.
-ROTOR_MM = 30.0
+#: The rotor's end view radius on paper, about, mm; the side view's length between the outer
+#: planes, about, mm.
+ROTOR_MM, SIDE_MM = 40.0, 120.0
+#: Letter size (the issue's least body text), mm.
+LETTER = 3.5
+
+#: The balancing sheet's words (laid out as graphmech.drawing.notation.WORDS: English, 中文,
+#: русский); «plane» is filled with I or II. Drawn text only.
+BAL_WORDS: dict[str, tuple[str, str, str]] = {
+    "end view": ("Rotor: end view", "转子：端视图", "Ротор: вид с торца"),
+    "side view": ("Rotor: side view, correction planes I and II", "转子：侧视图，平衡平面 I、II",
+                  "Ротор: вид сбоку, плоскости коррекции I и II"),
+    "polygon": ("Mass-radius polygon", "质径积矢量多边形", "План векторов дисбалансов"),
+    "in plane": (", plane «plane»", "，平衡平面 «plane»", ", плоскость «plane»"),
+    "none in plane": ("no mass acts in plane «plane»: no correction mass needed",
+                      "平衡平面 «plane» 中无不平衡质量：无需加平衡质量",
+                      "в плоскости «plane» нет масс: корректирующая масса не нужна"),
+    "closes": ("closes by itself: no correction mass needed", "自行封闭：无需加平衡质量",
+               "замыкается сам: корректирующая масса не нужна"),
+}
+
+
+def bal_word(key: str, notation: str = "en", plane: str = "") -> str:
+    """``key`` of :data:`BAL_WORDS` in ``notation``, «plane» filled in.
+
+    >>> bal_word("polygon", "zh") + bal_word("in plane", "zh", "II")
+    '质径积矢量多边形，平衡平面 II'
+    """
+    return word(key, notation, BAL_WORDS).replace("«plane»", plane)
 
 
 def _w_name(name: str) -> str:
-    """``"W1I"`` → ``W₁ I``, ``"WbII"`` → ``W_b II``."""
+    """``"W1I"`` → ``W_{1}^{I}``, ``"WbII"`` → ``W_{b}^{II}``, ``"W2"`` → ``W_{2}`` (lettering marks).
+
+    >>> _w_name("W1I"), _w_name("WbII"), _w_name("W12"), _w_name("Wb")
+    ('W_{1}^{I}', 'W_{b}^{II}', 'W_{12}', 'W_{b}')
+    """
     body = name[1:]
     plane = "II" if body.endswith("II") else "I" if body.endswith("I") and not body.isdigit() else ""
     core = body[: len(body) - len(plane)]
-    core = "b" if core == "b" else subscript(core) if core.isdigit() else core
-    return "W" + (core if core != "b" else "b") + (" " + plane if plane else "")
+    return "W" + (f"_{{{core}}}" if core else "") + (f"^{{{plane}}}" if plane else "")
+
+
+def _m_name(name: str) -> str:
+    """A mass's letter: ``m_{1}`` for a numbered mass, ``m_{A}`` for a named one."""
+    return f"m_{{{name}}}"
 
 
 def polygon_items(c: Correction) -> list[Primitive]:
@@ -44,35 +81,37 @@ def polygon_items(c: Correction) -> list[Primitive]:
         d = (s.end[0] - s.start[0], s.end[1] - s.start[1])
         n = math.hypot(*d)
         items.append(Label(_w_name(s.name), ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2),
-                           ((d[0] / n, d[1] / n), (-d[0] / n, -d[1] / n)), 3.2))
+                           ((d[0] / n, d[1] / n), (-d[0] / n, -d[1] / n)), LETTER))
     if not c.balanced:
         s = c.closing
         items.append(Arrow(s.start, s.end, "result"))
         d = (s.end[0] - s.start[0], s.end[1] - s.start[1])
         n = math.hypot(*d)
         items.append(Label(_w_name(s.name), ((s.start[0] + s.end[0]) / 2, (s.start[1] + s.end[1]) / 2),
-                           ((d[0] / n, d[1] / n), (-d[0] / n, -d[1] / n)), 3.4))
+                           ((d[0] / n, d[1] / n), (-d[0] / n, -d[1] / n)), LETTER))
     if not items:  # no mass has a share in this plane: the polygon is its start point, closed
-        items = [Circle((0.0, 0.0), 0.8, "result"), Label("o", (0.0, 0.0), (), 3.2)]
+        items = [Circle((0.0, 0.0), 0.8, "result"), Label("o", (0.0, 0.0), (), LETTER)]
     return items
 
 
 def rotor_items(masses: Sequence[Any], corrections: Sequence[Correction], mu_l: float) -> list[Primitive]:
     R = max([u.r for u in masses] + [c.r_b for c in corrections]) * 1.15 / mu_l
-    items: list[Primitive] = [Circle((0.0, 0.0), R, "given"), Segment((-R - 4, 0.0), (R + 4, 0.0), "construction", True),
-                              Segment((0.0, -R - 4), (0.0, R + 4), "construction", True)]
+    # the centre lines dash-dot, past the rotor's circle
+    items: list[Primitive] = [Circle((0.0, 0.0), R, "given"),
+                              Segment((-R - 5, 0.0), (R + 5, 0.0), "construction", dashdot=True),
+                              Segment((0.0, -R - 5), (0.0, R + 5), "construction", dashdot=True)]
     for u in masses:
         p = (u.r / mu_l * math.cos(u.theta), u.r / mu_l * math.sin(u.theta))
         items += [Segment((0.0, 0.0), p, "given"), Circle(p, 1.6, "given"),
-                  Label("m" + subscript(u.name) if u.name.isdigit() else f"m {u.name}", p,
-                        ((-math.cos(u.theta), -math.sin(u.theta)),), 3.0)]
+                  Label(_m_name(u.name), p, ((-math.cos(u.theta), -math.sin(u.theta)),), LETTER)]
     for c in corrections:
         if c.theta is None:  # balanced
             continue
         th = float(c.theta)
         p = (c.r_b / mu_l * math.cos(th), c.r_b / mu_l * math.sin(th))
         items += [Segment((0.0, 0.0), p, "result"), Circle(p, 2.2, "result"),
-                  Label("mb" + (" " + c.plane if c.plane else ""), p, ((-math.cos(th), -math.sin(th)),), 3.2)]
+                  Label("m_{b}" + (f"^{{{c.plane}}}" if c.plane else ""), p, ((-math.cos(th), -math.sin(th)),),
+                        LETTER)]
     return items
 
 
@@ -80,45 +119,47 @@ def side_items(masses: Sequence[Any], planes: tuple[float, float], mu_z: float) 
     zs = [u.z for u in masses] + list(planes)
     lo, hi = min(zs), max(zs)
     items: list[Primitive] = [Segment(((lo - 0.1 * (hi - lo)) / mu_z, 0.0), ((hi + 0.1 * (hi - lo)) / mu_z, 0.0),
-                                      "construction", True)]
+                                      "construction", dashdot=True)]  # the rotor's axis
     for u in masses:
         x = u.z / mu_z
-        items += [Segment((x, -8.0), (x, 8.0), "given"), Label("m" + subscript(u.name) if u.name.isdigit() else u.name,
-                                                                (x, 10.5), ((0.0, -1.0),), 2.8)]
+        items += [Segment((x, -10.0), (x, 10.0), "given"), Label(_m_name(u.name), (x, 12.5), ((0.0, -1.0),), LETTER)]
     for name, z in zip(("I", "II"), planes):
         x = z / mu_z
-        items += [Segment((x, -12.0), (x, 12.0), "result"), Label(name, (x, -15.0), ((0.0, 1.0),), 3.2, italic=False)]
+        items += [Segment((x, -14.0), (x, 14.0), "result"), Label(name, (x, -17.0), ((0.0, 1.0),), LETTER, italic=False)]
     return items
 
 
 def balancing_sheet(title: str, kind: str, masses: Sequence[Any], planes: tuple[float, float] | None,
                     corrections: Sequence[Correction], mu_W: float, show: Sequence[str], page: tuple[float, float],
-                    footer: tuple[str, ...] = ()) -> Sheet:
-    """The sheet: the rotor (end view; a dynamic one also from the side) and a polygon per plane."""
+                    footer: tuple[str, ...] = (), notation: str = "en") -> Sheet:
+    """The sheet: the rotor (end view; a dynamic one also from the side) and a polygon per plane,
+    captions in ``notation``; each panel's ``scales`` its paper's."""
     panels: list[Panel] = []
     if "rotor" in show:
         R = max([u.r for u in masses] + [c.r_b for c in corrections])
         mu_l = round_scale(R * 1.15 / ROTOR_MM)
-        panels.append(Panel("rotor", "rotor: end view", tuple(rotor_items(masses, corrections, mu_l)),
-                            (format_scale("l", mu_l),), row=0))
+        panels.append(Panel("rotor", bal_word("end view", notation), tuple(rotor_items(masses, corrections, mu_l)),
+                            (scale_text("l", mu_l),), row=0, scales=(("l", mu_l),)))
         if kind == "dynamic" and planes is not None:
             zs = [u.z for u in masses] + list(planes)
-            mu_z = round_scale(max(max(zs) - min(zs), 1e-9) / 90.0)
-            panels.append(Panel("side", "rotor: side view, correction planes I and II",
-                                tuple(side_items(masses, planes, mu_z)), (format_scale("l", mu_z),), row=0))
+            mu_z = round_scale(max(max(zs) - min(zs), 1e-9) / SIDE_MM)
+            panels.append(Panel("side", bal_word("side view", notation),
+                                tuple(side_items(masses, planes, mu_z)), (scale_text("l", mu_z),), row=0,
+                                scales=(("l", mu_z),)))
     if "polygon" in show:
         for c in corrections:
-            name = "mass-radius polygon" + (f", plane {c.plane}" if c.plane else "")
+            name = bal_word("polygon", notation) + (bal_word("in plane", notation, c.plane) if c.plane else "")
             if c.balanced and c.plane and not any(share for _, share in c.shares):
-                notes = (format_scale("W", mu_W), f"no mass acts in plane {c.plane}: no correction mass needed")
+                notes = (scale_text("W", mu_W), bal_word("none in plane", notation, c.plane))
             elif c.theta is None:  # balanced
-                notes = (format_scale("W", mu_W), "closes by itself: no correction mass needed")
+                notes = (scale_text("W", mu_W), bal_word("closes", notation))
             else:
-                notes = (format_scale("W", mu_W),
-                         f"mb·rb = {c.W:.5g} kg·m, θb = {degrees_0_360(float(c.theta)):.4g}°, "
-                         f"mb = {c.m_b:.4g} kg")
-            panels.append(Panel(f"polygon{c.plane}", name, tuple(polygon_items(c)), notes, row=1))
+                notes = (scale_text("W", mu_W),
+                         f"m_{{b}}r_{{b}} = {number(c.W)} kg·m, θ_{{b}} = {number(degrees_0_360(float(c.theta)))}°, "
+                         f"m_{{b}} = {number(c.m_b)} kg")
+            panels.append(Panel(f"polygon{c.plane}", name, tuple(polygon_items(c)), notes, row=1,
+                                scales=(("W", mu_W),)))
     return Sheet(title, tuple(panels), page, footer)
 
 
-__all__ = ["balancing_sheet", "polygon_items", "rotor_items", "side_items"]
+__all__ = ["BAL_WORDS", "bal_word", "balancing_sheet", "polygon_items", "rotor_items", "side_items"]

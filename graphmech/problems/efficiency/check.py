@@ -346,7 +346,8 @@ def efficiency_figure(an: EfficiencyAnalysis, page: tuple[float, float], footer:
     show = [s for s in an.scene.show if not (s == "polygon" and p.type == "chain")]
     if p.type == "chain" and "diagram" in show:
         _chain_fits(an, page)
-    sheet = efficiency_sheet(an.scene.title, p, an.strokes, an.chain, an.phi, angle, an.scales, show, page, footer)
+    sheet = efficiency_sheet(an.scene.title, p, an.strokes, an.chain, an.phi, angle, an.scales, show, page, footer,
+                             an.scene.page.notation)
     if p.type == "chain" and "diagram" in show:
         _chain_fits(an, page, sheet)
     return sheet

@@ -21,11 +21,14 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Sequence, cast
 
+import dataclasses
+
 from graphmech.methods.efficiency import Direction, ForcePolygon, StageResult, Stroke
-from graphmech.drawing.primitives import (XY, Arrow, GuideLine, Label, Panel, Polyline, Primitive, Segment,
+from graphmech.drawing.diagrams import scale_text
+from graphmech.drawing.lettering import number
+from graphmech.drawing.notation import word
+from graphmech.drawing.primitives import (XY, Arrow, Circle, GuideLine, Label, Panel, Polyline, Primitive, Segment,
                                          Sheet, Slider)
-from graphmech.drawing.lettering import subscript
-from graphmech.scales import format_scale
 
 if TYPE_CHECKING:
     from graphmech.problems.efficiency.scene import EfficiencyProblem, Stage
@@ -36,13 +39,87 @@ ARROW_MM = 16.0
 DIAGRAM_MM = 70.0
 #: The wedge's sketch, enlarged from its 48 mm layout to about the incline's size.
 WEDGE_SCALE = 1.4
-_WORDS = {"forward": "forward stroke: F drives", "reverse": "reverse stroke: the load drives"}
+#: Letter size (the issue's least body text), mm.
+LETTER = 3.5
+#: A diagram (not to a force scale) is enlarged to fill its share of the page, up to this factor.
+MOST_ENLARGED = 3.0
+
+#: The efficiency sheet's words (laid out as graphmech.drawing.notation.WORDS: English, 中文,
+#: русский). Drawn text only.
+EFF_WORDS: dict[str, tuple[str, str, str]] = {
+    "forward": ("forward stroke: F drives", "正行程：F 为驱动力", "прямой ход: движет F"),
+    "reverse": ("reverse stroke: the load drives", "反行程：载荷为驱动力", "обратный ход: движет нагрузка"),
+    "force polygon": ("Force polygon", "力多边形", "План сил"),
+    "screw": ("Screw thread unrolled", "螺纹展开", "Развёртка резьбы"),
+    "incline": ("Inclined plane", "斜面", "Наклонная плоскость"),
+    "wedge": ("Wedge", "楔形机构", "Клин"),
+    "series": ("Machines in series", "串联机组", "Последовательное соединение машин"),
+    "parallel": (" and in parallel", "与并联", " и параллельное"),
+    "motor": ("motor", "电动机", "двигатель"),
+    "load": ("load", "工作机", "нагрузка"),
+    "self-locked": ("F ∥ R: no finite force — self-locked, η = 0", "F ∥ R：无有限驱动力——自锁，η = 0",
+                    "F ∥ R: конечной силы нет — самоторможение, η = 0"),
+}
+
+
+def eff_word(key: str, notation: str = "en") -> str:
+    """``key`` of :data:`EFF_WORDS` in ``notation``.
+
+    >>> eff_word("force polygon", "ru"), eff_word("screw", "zh")
+    ('План сил', '螺纹展开')
+    """
+    return word(key, notation, EFF_WORDS)
 
 
 def force_name(name: str) -> str:
-    """``"R12"`` → ``R₁₂``, ``"F0"`` → ``F₀``."""
+    """``"R12"`` → ``R_{12}``, ``"F0"`` → ``F_{0}`` (lettering marks)."""
     head = name.rstrip("0123456789")
-    return head + subscript(name[len(head):])
+    tail = name[len(head):]
+    return head + (f"_{{{tail}}}" if tail else "")
+
+
+def _scaled(item: Primitive, k: float) -> Primitive:
+    """A diagram's item enlarged k times about the origin (paper sizes of letters, hinges and
+    arrowheads stay)."""
+    def sc(p: XY) -> XY:
+        return (p[0] * k, p[1] * k)
+    if isinstance(item, (Segment, Arrow, GuideLine)):
+        return dataclasses.replace(item, p0=sc(item.p0), p1=sc(item.p1))
+    if isinstance(item, Polyline):
+        return dataclasses.replace(item, points=tuple(sc(p) for p in item.points))
+    if isinstance(item, Slider):
+        return dataclasses.replace(item, center=sc(item.center), length=item.length * k, width=item.width * k)
+    if isinstance(item, Circle):
+        return dataclasses.replace(item, center=sc(item.center), r=item.r * k)
+    if isinstance(item, Label):
+        return dataclasses.replace(item, anchor=sc(item.anchor))
+    raise TypeError(f"cannot scale {item!r}")
+
+
+def _extent(items: Sequence[Primitive]) -> tuple[float, float]:
+    """Width and height of the items' points, mm."""
+    pts: list[XY] = []
+    for i in items:
+        if isinstance(i, (Segment, Arrow, GuideLine)):
+            pts += [i.p0, i.p1]
+        elif isinstance(i, Polyline):
+            pts += list(i.points)
+        elif isinstance(i, (Slider, Circle)):
+            pts.append(i.center)
+    xs, ys = [p[0] for p in pts] or [0.0], [p[1] for p in pts] or [0.0]
+    return max(xs) - min(xs), max(ys) - min(ys)
+
+
+def enlargement(items: Sequence[Primitive], room: tuple[float, float]) -> float:
+    """How many times a diagram drawn to no force scale is enlarged to fill ``room`` (w, h mm):
+    1 … MOST_ENLARGED.
+
+    >>> enlargement([Segment((0.0, 0.0), (70.0, 3.0))], (180.0, 100.0))
+    2.5714285714285716
+    """
+    w, h = _extent(items)
+    k = min(room[0] / w if w > 0 else MOST_ENLARGED, room[1] / h if h > 0 else MOST_ENLARGED)
+    return max(1.0, min(MOST_ENLARGED, k))
 
 
 def _dir(angle: float) -> XY:
@@ -69,7 +146,7 @@ def _angle_arc(center: XY, r: float, a0: float, a1: float, text: str) -> list[Pr
                 for k in range(n + 1))
     mid = (a0 + a1) / 2.0
     return [Polyline(pts, "construction"),
-            Label(text, (center[0] + (r + 3.0) * math.cos(mid), center[1] + (r + 3.0) * math.sin(mid)), (), 3.0)]
+            Label(text, (center[0] + (r + 3.0) * math.cos(mid), center[1] + (r + 3.0) * math.sin(mid)), (), LETTER)]
 
 
 def _force_arrow(name: str, tip: XY, d: XY, length: float = ARROW_MM, at_tail: bool = False) -> list[Primitive]:
@@ -77,7 +154,7 @@ def _force_arrow(name: str, tip: XY, d: XY, length: float = ARROW_MM, at_tail: b
     d = _unit(d)
     start, end = ((tip, _add(tip, d, length)) if at_tail else (_add(tip, d, -length), tip))
     far = end if at_tail else start
-    return [Arrow(start, end, "given"), Label(force_name(name), far, ((d[0], d[1]), (-d[0], -d[1])), 3.2)]
+    return [Arrow(start, end, "given"), Label(force_name(name), far, ((d[0], d[1]), (-d[0], -d[1])), LETTER)]
 
 
 # ---------------------------------------------------------------------------- diagrams
@@ -91,8 +168,8 @@ def _incline_diagram(alpha: float, phi: float, stroke: Stroke | None, push: str,
     items: list[Primitive] = [GuideLine((0.0, 0.0), top), Segment((0.0, 0.0), (top[0], 0.0), "construction")]
     if thread is not None:  # the unrolled thread: base π·d2, height L, hypotenuse at ψ
         items += [Segment((top[0], 0.0), top, "construction"),
-                  Label(thread[0], (top[0] / 2.0, -4.0), ((0.0, 1.0),), 3.2, italic=False),
-                  Label(thread[1], (top[0] + 4.0, top[1] / 2.0), ((-1.0, 0.0),), 3.2, italic=False)]
+                  Label(thread[0], (top[0] * 0.3, -4.0), ((0.0, 1.0),), LETTER, italic=False),  # clear of Q
+                  Label(thread[1], (top[0] + 4.0, top[1] / 2.0), ((-1.0, 0.0),), LETTER, italic=False)]
     items += _angle_arc((0.0, 0.0), 14.0, 0.0, alpha, "ψ" if thread else "α")
     normal = (-math.sin(alpha), math.cos(alpha))
     contact = _add((0.0, 0.0), up, 0.55 * L)
@@ -104,7 +181,7 @@ def _incline_diagram(alpha: float, phi: float, stroke: Stroke | None, push: str,
     if stroke is not None and stroke.velocities:
         v = stroke.velocities[0][1]
         items.append(Arrow(_add(centre, normal, 6.0), _add(_add(centre, normal, 6.0), _unit(v), 10.0), "construction"))
-        items.append(Label("v", _add(_add(centre, normal, 6.0), _unit(v), 12.0), (), 3.0))
+        items.append(Label("v", _add(_add(centre, normal, 6.0), _unit(v), 12.0), (), LETTER))
         t = _unit(v)
         c, s = math.cos(phi), math.sin(phi)
         r_dir = (normal[0] * c - t[0] * s, normal[1] * c - t[1] * s)
@@ -113,7 +190,7 @@ def _incline_diagram(alpha: float, phi: float, stroke: Stroke | None, push: str,
         a_n = math.atan2(normal[1], normal[0])
         a_r = math.atan2(r_dir[1], r_dir[0])
         if abs(a_r - a_n) > 1e-9:
-            items += _angle_arc(contact, 11.0, a_n, a_r, "φv" if thread else "φ")
+            items += _angle_arc(contact, 11.0, a_n, a_r, "φ_{v}" if thread else "φ")
     return items
 
 
@@ -134,7 +211,7 @@ def _wedge_diagram(gamma: float, beta: float, stroke: Stroke | None = None) -> l
     s1 = [_add(V, face, 6.0 * k), _add(V, face, 34.0 * k), _add(V, up_left, 34.0 * k), _add(V, up_left, 6.0 * k)]
     items.append(Polyline(tuple(s1), "given", closed=True))
     c1 = _mid(_mid(s1[0], s1[1]), _mid(s1[2], s1[3]))
-    items += [Label("1", c1, (), 3.5, italic=False), Label("2", (22.0 * k, h / 2.0), (), 3.5, italic=False)]
+    items += [Label("1", c1, (), LETTER, italic=False), Label("2", (22.0 * k, h / 2.0), (), LETTER, italic=False)]
     items += _force_arrow("Q", (34.0 * k, h / 2.0), (-1.0, 0.0))
     top_mid = _mid(s1[1], s1[2])
     items += _force_arrow("F", top_mid, (-up_left[0], -up_left[1]))
@@ -157,24 +234,26 @@ def _wedge_diagram(gamma: float, beta: float, stroke: Stroke | None = None) -> l
     return items
 
 
-def _chain_diagram(stages: Sequence[Stage], powers: Sequence[StageResult], width: float = math.inf) -> list[Primitive]:
+def _chain_diagram(stages: Sequence[Stage], powers: Sequence[StageResult], width: float = math.inf,
+                   notation: str = "en") -> list[Primitive]:
     """The machines as boxes, the power on the arrows between them, in rows no wider than
     ``width`` mm (a long chain wraps: the power line runs down to the start of the next row)."""
     items: list[Primitive] = []
-    box_w, gap = 36.0, 24.0
+    box_w, gap = 40.0, 26.0
     per_row = max(1, int((width - 8.0 - gap - 14.0) // (gap + box_w))) if math.isfinite(width) else len(stages)
 
     def height(stage: Stage) -> float:
-        return 17.0 if len(stage.branches) == 1 else 22.0 * len(stage.branches) - 4.0
+        return 20.0 if len(stage.branches) == 1 else 22.0 * len(stage.branches) - 4.0
 
     def box(cx: float, cy: float, text: str, eta: str) -> None:
-        pts = ((cx - box_w / 2, cy - 8.5), (cx + box_w / 2, cy - 8.5), (cx + box_w / 2, cy + 8.5),
-               (cx - box_w / 2, cy + 8.5))
+        pts = ((cx - box_w / 2, cy - 10.0), (cx + box_w / 2, cy - 10.0), (cx + box_w / 2, cy + 10.0),
+               (cx - box_w / 2, cy + 10.0))
         items.append(Polyline(pts, "given", closed=True))
-        items.append(Label(text, (cx, cy + 3.2), (), 2.8, italic=False))
-        items.append(Label(eta, (cx, cy - 3.2), (), 2.8))
+        # the name and η stacked in the box, each pushed off the other's line (two 3.5 mm lines in 20 mm)
+        items.append(Label(text, (cx, cy + 1.0), ((0.0, -1.0),), LETTER, italic=False))
+        items.append(Label(eta, (cx, cy - 1.0), ((0.0, 1.0),), LETTER))
 
-    items.append(Label("motor", (0.0, 0.0), (), 3.2, italic=False))
+    items.append(Label(eff_word("motor", notation), (0.0, 0.0), (), LETTER, italic=False))
     x, y, x0 = 8.0, 0.0, 8.0
     for k, (stage, res) in enumerate(zip(stages, powers)):
         if k and k % per_row == 0:  # wrap: down half-way between the rows, back left, down again
@@ -185,18 +264,18 @@ def _chain_diagram(stages: Sequence[Stage], powers: Sequence[StageResult], width
                                    (x0 - gap / 2.0, y - drop)), "result"))
             x, y = x0 - gap / 2.0, y - drop
             items.append(Arrow((x, y), (x + gap / 2.0, y), "result"))
-            items.append(Label(f"{res.power_in / 1000.0:.4g} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),), 2.8,
-                               italic=False))
+            items.append(Label(f"{number(res.power_in / 1000.0)} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),),
+                               LETTER, italic=False))
             x += gap / 2.0 + box_w / 2.0
         else:
             items.append(Arrow((x, y), (x + gap, y), "result"))
-            items.append(Label(f"{res.power_in / 1000.0:.4g} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),), 2.8,
-                               italic=False))
+            items.append(Label(f"{number(res.power_in / 1000.0)} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),),
+                               LETTER, italic=False))
             x += gap + box_w / 2.0
         if len(stage.branches) == 1:
             series = stage.branches[0][1]
             text = stage.name if len(series) == 1 else f"{stage.name} ×{len(series)}"
-            eta = "η = " + (f"{series[0]:g}" if len(set(series)) == 1 else "·".join(f"{e:g}" for e in series))
+            eta = "η = " + (number(series[0]) if len(set(series)) == 1 else "·".join(number(e) for e in series))
             box(x, y, text, eta)
         else:
             n = len(stage.branches)
@@ -205,13 +284,13 @@ def _chain_diagram(stages: Sequence[Stage], powers: Sequence[StageResult], width
                 pts = ((x - box_w / 2, cy - 9.0), (x + box_w / 2, cy - 9.0), (x + box_w / 2, cy + 9.0),
                        (x - box_w / 2, cy + 9.0))
                 items.append(Polyline(pts, "given", closed=True))
-                items.append(Label(f"{stage.name}: {share:g}", (x, cy + 3.4), (), 2.6, italic=False))
-                items.append(Label("η = " + "·".join(f"{e:g}" for e in series), (x, cy - 3.4), (), 2.6))
+                items.append(Label(f"{stage.name}: {number(share)}", (x, cy + 3.4), (), LETTER, italic=False))
+                items.append(Label("η = " + "·".join(number(e) for e in series), (x, cy - 3.4), (), LETTER))
         x += box_w / 2.0
     items.append(Arrow((x, y), (x + gap, y), "result"))
-    items.append(Label(f"{powers[-1].power_out / 1000.0:.4g} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),), 2.8,
-                       italic=False))
-    items.append(Label("load", (x + gap + 6.0, y), (), 3.2, italic=False))
+    items.append(Label(f"{number(powers[-1].power_out / 1000.0)} kW", (x + gap / 2.0, y + 4.5), ((0.0, -1.0),),
+                       LETTER, italic=False))
+    items.append(Label(eff_word("load", notation), (x + gap + 6.0, y), (), LETTER, italic=False))
     return items
 
 
@@ -237,15 +316,17 @@ def polygon_items(polygons: Sequence[ForcePolygon]) -> list[Primitive]:
                 continue
             items.append(Arrow(s.start, s.end, "result" if s.name in ("F", "R", "R12", "R32", "R31") else "given"))
             d = _unit((s.end[0] - s.start[0], s.end[1] - s.start[1]))
-            items.append(Label(force_name(s.name), _mid(s.start, s.end), ((d[0], d[1]), (-d[0], -d[1])), 3.2))
+            items.append(Label(force_name(s.name), _mid(s.start, s.end), ((d[0], d[1]), (-d[0], -d[1])), LETTER))
     return items
 
 
 def efficiency_sheet(title: str, problem: EfficiencyProblem, strokes: dict[Direction, Stroke],
                      chain: tuple[float, tuple[StageResult, ...]] | None, phi: float, angle: float | None,
                      scales: dict[str, float], show: Sequence[str], page: tuple[float, float],
-                     footer: tuple[str, ...] = ()) -> Sheet:
-    """The sheet of an efficiency problem: the diagram and a polygon per direction, as shown."""
+                     footer: tuple[str, ...] = (), notation: str = "en") -> Sheet:
+    """The sheet of an efficiency problem: the diagram and a polygon per direction, as shown;
+    captions in ``notation``. The diagram (directions true, no force scale) is enlarged to fill
+    its share of the page; a polygon stays at μF (its panel's ``scales``)."""
     panels: list[Panel] = []
     first = next(iter(strokes.values()), None)
     if "diagram" in show:
@@ -253,36 +334,41 @@ def efficiency_sheet(title: str, problem: EfficiencyProblem, strokes: dict[Direc
         notes: tuple[str, ...] = ()
         if kind == "chain":
             eta, powers = cast("tuple[float, tuple[StageResult, ...]]", chain)  # walked for every chain
-            items = _chain_diagram(problem.stages, powers, page[0] - 40.0)
+            items = _chain_diagram(problem.stages, powers, page[0] - 40.0, notation)
             parallel = any(len(st.branches) > 1 for st in problem.stages)
-            head = "machines in series" + (" and in parallel" if parallel else "")
-            notes = (f"η = {eta:.6g}",)
-        elif kind == "wedge":
-            gamma, beta = cast(float, problem.gamma), cast(float, problem.beta)  # a wedge has both (its reader)
-            items = _wedge_diagram(gamma, beta, first)
-            head = f"wedge: γ = {math.degrees(gamma):g}°, β = {math.degrees(beta):g}°"
-            notes = (f"φ = arctan f = {math.degrees(phi):.4g}°",) if problem.f is not None else ()
+            head = eff_word("series", notation) + (eff_word("parallel", notation) if parallel else "")
+            notes = (f"η = {number(eta)}",)
         else:
-            thread = ("π·d₂", "L = n·P") if kind == "screw" else None
-            push = problem.push if kind == "incline" else "horizontal"
-            alpha = float(cast(float, angle))  # given for an incline and a screw (efficiency_figure)
-            items = _incline_diagram(alpha, phi, first, push, ("F", "R"), thread)
-            head = ("screw thread unrolled: ψ = " if kind == "screw" else "inclined plane: α = ") + \
-                f"{math.degrees(alpha):.4g}°"
-            if problem.f is not None:
-                sym = "φv" if kind == "screw" else "φ"
-                notes = (f"{sym} = {math.degrees(phi):.4g}°",)
+            if kind == "wedge":
+                gamma, beta = cast(float, problem.gamma), cast(float, problem.beta)  # a wedge has both (its reader)
+                items = _wedge_diagram(gamma, beta, first)
+                head = f"{eff_word('wedge', notation)}: γ = {number(math.degrees(gamma))}°, β = {number(math.degrees(beta))}°"
+                notes = (f"φ = arctan f = {number(math.degrees(phi))}°",) if problem.f is not None else ()
+            else:
+                thread = ("π·d_{2}", "L = n·P") if kind == "screw" else None
+                push = problem.push if kind == "incline" else "horizontal"
+                alpha = float(cast(float, angle))  # given for an incline and a screw (efficiency_figure)
+                items = _incline_diagram(alpha, phi, first, push, ("F", "R"), thread)
+                head = f"{eff_word(kind, notation)}: {'ψ' if kind == 'screw' else 'α'} = {number(math.degrees(alpha))}°"
+                if problem.f is not None:
+                    sym = "φ_{v}" if kind == "screw" else "φ"
+                    notes = (f"{sym} = {number(math.degrees(phi))}°",)
+            # the diagram fills its share of the page: alone, most of it; beside polygons, half
+            share = 1.0 if "polygon" not in show else 0.45
+            k = enlargement(items, (share * (page[0] - 60.0), 0.5 * (page[1] - 60.0)))
+            items = [_scaled(i, k) for i in items]
         panels.append(Panel("diagram", head, tuple(items), notes))
     if "polygon" in show:
-        for k, (d, st) in enumerate(strokes.items()):
+        for d, st in strokes.items():
             items = polygon_items(st.polygons)
             if st.F is None:
-                notes = (format_scale("F", scales["F"]), "F ∥ R: no finite force — self-locked, η = 0")
+                notes = (scale_text("F", scales["F"]), eff_word("self-locked", notation))
             else:
-                notes = (format_scale("F", scales["F"]),
-                         f"F = {st.F:.5g} N, F₀ = {st.F0:.5g} N, η = {st.eta:.4g}".replace("-", "−"))
-            panels.append(Panel(f"polygon-{d}", f"force polygon — {_WORDS[d]}", tuple(items), notes))
+                notes = (scale_text("F", scales["F"]),
+                         f"F = {number(st.F)} N, F_{{0}} = {number(st.F0)} N, η = {number(st.eta)}")
+            panels.append(Panel(f"polygon-{d}", f"{eff_word('force polygon', notation)} — {eff_word(d, notation)}",
+                                tuple(items), notes, scales=(("F", scales["F"]),)))
     return Sheet(title, tuple(panels), page, footer)
 
 
-__all__ = ["efficiency_sheet", "force_name", "polygon_items"]
+__all__ = ["EFF_WORDS", "eff_word", "efficiency_sheet", "enlargement", "force_name", "polygon_items"]

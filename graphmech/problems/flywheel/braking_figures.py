@@ -10,9 +10,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from graphmech.drawing.diagrams import scale_text
+from graphmech.drawing.lettering import number
 from graphmech.drawing.primitives import Arrow, Label, Panel, Primitive, Segment
 from graphmech.errors import OutOfDomain
-from graphmech.scales import format_scale, round_scale
+from graphmech.problems.flywheel.figures import LETTER, fly_word
+from graphmech.scales import round_scale
 
 #: The longest the t axis and the ω axis are drawn, mm (before rounding the scales up).
 T_AXIS_MM, OMEGA_AXIS_MM = 160.0, 90.0
@@ -63,12 +66,14 @@ def draw_rundown(J: float, omega0: float, M_brake: float, t_limit: float | None 
     return Rundown(mu_t, mu_omega, omega0_mm, omega0_mm / slope)
 
 
-def rundown_panel(J: float, omega0: float, M_brake: float, t_limit: float | None = None) -> Panel:
-    """The ω(t) diagram: axes, the run-down line (bold), ω0, t_stop and the required time.
+def rundown_panel(J: float, omega0: float, M_brake: float, t_limit: float | None = None,
+                  notation: str = "en") -> Panel:
+    """The ω(t) diagram: axes, the run-down line (bold), ω0, t_stop and the required time;
+    captions in ``notation``.
 
     >>> p = rundown_panel(0.5, 100.0, 20.0, 3.0)
-    >>> p.name, p.notes[0]
-    ('rundown', 'μt = 0.02 s/mm, μω = 2 (rad/s)/mm')
+    >>> p.name, p.notes[0], p.scales
+    ('rundown', 'μ_{t} = 0.02 s/mm, μ_{ω} = 2 (rad/s)/mm', (('t', 0.02), ('omega', 2.0)))
     """
     r = draw_rundown(J, omega0, M_brake, t_limit)
     x_end = max(r.t_stop_mm, (t_limit or 0.0) / r.mu_t) + AXIS_OVERRUN
@@ -78,22 +83,23 @@ def rundown_panel(J: float, omega0: float, M_brake: float, t_limit: float | None
         Arrow((0.0, 0.0), (x_end, 0.0), "label"),
         Arrow((0.0, 0.0), (0.0, r.omega0_mm + AXIS_OVERRUN), "label"),
         Segment((0.0, r.omega0_mm), (r.t_stop_mm, 0.0), "result"),
-        Label("ω", (0.0, r.omega0_mm + AXIS_OVERRUN), ((0.0, -1.0),), 3.2),
-        Label("t", (x_end, 0.0), ((-1.0, 0.0),), 3.2),
-        Label("O", (0.0, 0.0), ((1.0, 0.0), (0.0, 1.0)), 3.0),
-        Label("ω₀", (0.0, r.omega0_mm), ((0.0, -1.0), (0.0, 1.0), down_right), 3.0),
-        Label("tₛₜₒₚ", (r.t_stop_mm, 0.0), ((-1.0, 0.0), (1.0, 0.0), (-down_right[0], -down_right[1])), 3.0),
+        Label("ω", (0.0, r.omega0_mm + AXIS_OVERRUN), ((0.0, -1.0),), LETTER),
+        Label("t", (x_end, 0.0), ((-1.0, 0.0),), LETTER),
+        Label("O", (0.0, 0.0), ((1.0, 0.0), (0.0, 1.0)), LETTER),
+        Label("ω_{0}", (0.0, r.omega0_mm), ((0.0, -1.0), (0.0, 1.0), down_right), LETTER),
+        Label("t_{stop}", (r.t_stop_mm, 0.0), ((-1.0, 0.0), (1.0, 0.0), (-down_right[0], -down_right[1])), LETTER),
     ]
-    notes = [f"{format_scale('t', r.mu_t)}, {format_scale('omega', r.mu_omega)}",
-             f"ε = M_brake/J = {M_brake:.6g}/{J:.6g} = {M_brake / J:.6g} rad/s²; "
-             f"tₛₜₒₚ = μt·⟨Otₛₜₒₚ⟩ = {r.mu_t:g}·{r.t_stop_mm:.4g} = {r.t_stop:.6g} s"]
+    notes = [f"{scale_text('t', r.mu_t)}, {scale_text('omega', r.mu_omega)}",
+             f"ε = M_{{T}}/J = {number(M_brake)}/{number(J)} = {number(M_brake / J)} rad/s^{{2}}; "
+             f"t_{{stop}} = μ_{{t}}·⟨Ot_{{stop}}⟩ = {number(r.mu_t)}·{number(r.t_stop_mm)} = {number(r.t_stop)} s"]
     if t_limit is not None:
         x = t_limit / r.mu_t
         items += [Segment((x, 0.0), (x, r.omega0_mm), "construction", dashed=True),
-                  Label("t allowed", (x, r.omega0_mm), ((0.0, -1.0),), 3.0)]
-        verdict = "stops in time" if r.t_stop <= t_limit else "does NOT stop in time"
-        notes.append(f"required t ≤ {t_limit:.6g} s: {verdict}")
-    return Panel("rundown", "Run-down under the brake ω(t)", tuple(items), tuple(notes))
+                  Label(fly_word("t allowed", notation), (x, r.omega0_mm), ((0.0, -1.0),), LETTER)]
+        verdict = fly_word("stops" if r.t_stop <= t_limit else "stops not", notation)
+        notes.append(f"{fly_word('required', notation)} t ≤ {number(t_limit, 6)} s: {verdict}")  # as given
+    return Panel("rundown", fly_word("rundown", notation), tuple(items), tuple(notes),
+                 scales=(("t", r.mu_t), ("omega", r.mu_omega)))
 
 
 __all__ = ["Rundown", "draw_rundown", "rundown_panel"]

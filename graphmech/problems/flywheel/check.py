@@ -137,6 +137,8 @@ def _needs(scene: Scene[FlywheelScene], names: list[str]) -> set[str]:
     for panel in scene.show:
         if panel in ("wittenbauer", "indicator"):
             needs.add(panel)
+        elif panel == "motion":  # ω(φ) of the true motion is drawn
+            needs.add("motion")
         elif panel in ("moment", "work", "energy", "inertia"):
             needs.add("design")
     if fw.true_motion is not None:
@@ -346,6 +348,23 @@ def _motion(an: FlywheelAnalysis) -> None:
             f"the flywheel designed from {an.scene.problem.positions} positions (J_F = {J_F:.6g} kg·m²) gives "
             f"δ = {got:.6g} in the true motion, above the required {d:g} ({(got / d - 1) * 100:+.2f} %): "
             "use more positions")
+
+
+def true_motion_curve(an: FlywheelAnalysis, samples: int) -> tuple[np.ndarray, np.ndarray]:
+    """ω(φ) of the periodic true motion at ``samples`` equal steps of the cycle (both ends
+    included), for drawing: stepped from the periodic ω(0) with the solver and tolerance the
+    check used, through the same equation of motion."""
+    from graphmech.exact.true_motion import integrate
+
+    mo = an.motion
+    phi = np.linspace(0.0, an.machine.cycle, samples)
+    omega = np.empty(samples)
+    omega[0] = mo.omega0
+    ex = _exact(an)
+    for i in range(1, samples):
+        omega[i] = integrate(an.machine, ex, mo.J_F, (float(phi[i - 1]), float(phi[i])), float(omega[i - 1]),
+                             solver=mo.solver, rtol=mo.rtol, atol=mo.atol).omega
+    return phi, omega
 
 
 def _braking(an: FlywheelAnalysis) -> None:

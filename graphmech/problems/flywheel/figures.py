@@ -2,33 +2,39 @@
 
 Methods produce primitives with roles; a renderer turns them into SVG and knows nothing of
 flywheels. Every quantity is laid off at its panel's μ; every other size is paper millimetres.
+Symbols and captions are in the scene's notation (``[page] notation``: the reduced moment is
+M_{red}, M_{e} or M_{п}; see :data:`FLY_WORDS`); the names in ``find`` and ``check`` never change.
 
-moment — Mп(φ) integrated by chords (at μM, μφ)
+moment — M_{red}(φ) integrated by chords (at μM, μφ)
     the φ axis numbered at the positions 1 … N (and 1 again at the cycle's end), the ordinates
-    Mп_k (thin) and the curve; the mean ordinate of each interval as a thin step, projected onto
+    (thin) and the curve; the mean ordinate of each interval as a thin step, projected onto
     the moment axis (thin dashed); the pole P on the φ axis at the distance H left of O (dimensioned)
     and the rays from P to the projections (thin); the ray from P parallel to the balancing
-    work's line (thin dashed) cuts the moment axis at the constant moment Mд (or Mс), drawn bold
-    across the cycle.
+    work's line (thin dashed) cuts the moment axis at the constant moment M_{d} (or M_{r}), drawn
+    bold across the cycle.
 work — A(φ) (at μA = μT)
-    the chord polygon Aп (bold), each chord parallel to its ray, and the straight line A_b of
-    the constant moment's work (bold dashed) from the origin to −Aп(Φ).
-energy — ΔT(φ) = Aп + A_b (at μT)
+    the chord polygon A_{red} (bold), each chord parallel to its ray, and the straight line of
+    the constant moment's work (bold dashed) from the origin to −A_{red}(Φ).
+energy — ΔT(φ) = A_{red} + A_{b} (at μT, or at μT′ = μT/k when it would be lower than
+    :data:`ENERGY_LEAST` and stands alone)
     the curve with its ordinates, its largest and smallest values marked.
-inertia — Jп(φ), drawn as the Russian book does: Jп horizontal, φ downwards
+inertia — J_{red}(φ), drawn as the Russian book does: J horizontal, φ downwards
     at μJ and its own μφ′ (the φ axis about 40 mm long).
-wittenbauer — the Wittenbauer diagram ΔT(Jп) (at μJ, μT)
-    the numbered points (dots) and the closed curve through them (thin), the two tangents at ψmax
+wittenbauer — the Wittenbauer diagram ΔT(J_{red}) (at μJ, μT)
+    the numbered points (dots; the numbers set outward from the curve's centroid, clear of the
+    curve and the tangents) and the closed curve through them (thin), the two tangents at ψmax
     and ψmin (bold) with their angles marked by arcs, k and l on the ΔT axis and the segment kl
     dimensioned. Shown together with ``energy`` and/or ``inertia``, these are drawn in the same
-    panel on the continuations of its axes — ΔT(φ) to the left (its φ axis continued is the Jп
-    axis), Jп(φ) below (its φ axis continued is the ΔT axis) — and the points are carried across
+    panel on the continuations of its axes — ΔT(φ) to the left (its φ axis continued is the J
+    axis), J(φ) below (its φ axis continued is the ΔT axis) — and the points are carried across
     by thin lines, as the book builds the diagram. That panel is named by its members joined with
     ``+`` (``"energy+inertia+wittenbauer"``). When k or l lie far below the points the tangents
     are clipped and the intercepts written out.
-indicator — the energy-indicator diagram (at μT)
-    the chain of vertical vectors f₁, f₂, … (excess up, deficit down) from a back to a′ on one
-    level, its vertices lettered, and ΔW_max dimensioned between the highest and lowest.
+indicator — the energy-indicator diagram (at μT, or μT′ as the energy diagram)
+    the chain of vertical vectors f_{1}, f_{2}, … (excess up, deficit down) from a back to a′ on
+    one level, its vertices lettered, and ΔW_{max} dimensioned between the highest and lowest.
+motion — ω(φ) of the true motion (at μω, μφ; :func:`motion_panel`)
+    the φ axis at ω_m, the ordinates ω − ω_m, the curve and the levels ω_max, ω_min (thin dashed).
 
 Many positions (N up to thousands) are drawn with every position in the curves; numbers, rays,
 ordinates and carried lines are thinned to a readable count.
@@ -41,19 +47,22 @@ from typing import Sequence
 import numpy as np
 
 from graphmech.methods.flywheel import FlywheelDesign
-from graphmech.drawing.lettering import text_box_size
+from graphmech.drawing.lettering import number, text_box_size
+from graphmech.drawing.notation import WORDS, word
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, Circle, Label, Panel, Polyline, Primitive, Role,
                                          Segment, Sheet)
 from graphmech.render.style import DEFAULT
-from graphmech.scales import PAPER, format_scale, round_scale
+from graphmech.scales import PAPER, round_scale
 from graphmech.drawing.diagrams import (
     AXIS_OVERRUN,
+    NICE_STEPS,
     NUMBER_CLEARANCE,
     NUMBER_SIZE,
     count_every,
     moved,
     numbers_every,
     phi_axis_numbers,
+    scale_text,
 )
 from graphmech.errors import OutOfDomain
 
@@ -70,7 +79,7 @@ MOST_ORDINATES = 48
 MOST_DOTS = 360
 #: Radius of a dot marking a point (drawn with the result pen: a solid dot), mm.
 DOT = 0.3
-#: The Jп(φ) diagram's φ axis is about this long, mm (its μφ′ a round number of °/mm).
+#: The J(φ) diagram's φ axis is about this long, mm (its μφ′ a round number of °/mm).
 INERTIA_PHI_MM = 40.0
 #: The ΔT axis of the Wittenbauer diagram runs down to k and l unless they lie more than this
 #: below the lowest point; then the tangents are clipped this far below it, mm.
@@ -82,19 +91,74 @@ PSI_R = 16.0
 #: The kl dimension line's distance left of the ΔT axis, mm.
 KL_AT = 7.0
 #: Free space between ΔT(φ) and the Wittenbauer diagram's ΔT axis, and between the diagram
-#: and Jп(φ) below it, mm.
+#: and J(φ) below it, mm.
 GAP_LEFT, GAP_BELOW = 24.0, 12.0
 #: The energy indicator's vectors stand this far apart (at most), its chain at most this wide, mm.
-INDICATOR_STEP, INDICATOR_WIDTH = 6.0, 90.0
+INDICATOR_STEP, INDICATOR_WIDTH = 16.0, 120.0
+#: A diagram of ΔT alone (the energy indicator, or ΔT(φ) not beside the Wittenbauer diagram,
+#: whose ΔT axis it shares) lower than ENERGY_LEAST at μT is drawn at μT′ = μT/k, k the
+#: largest nice step that keeps it within ENERGY_MM, mm.
+ENERGY_LEAST, ENERGY_MM = 30.0, 50.0
+#: The true motion's ω − ω_m spans about this many mm (μω a round number), and ω(φ) is
+#: sampled at this many points of the cycle.
+MOTION_MM, MOTION_SAMPLES = 40.0, 145
+#: Letter sizes: axis names and letters (the issue's 3.5 mm body text), mm.
+LETTER = 3.5
 
-TITLES = {
-    "moment": "Reduced moment Mп(φ), integrated by chords",
-    "work": "Work diagrams A(φ)",
-    "energy": "Increment of kinetic energy ΔT(φ)",
-    "inertia": "Reduced moment of inertia Jп(φ)",
-    "wittenbauer": "Wittenbauer diagram ΔT(Jп)",
-    "indicator": "Energy indicator diagram",
+#: The flywheel sheet's own words (laid out as graphmech.drawing.notation.WORDS: English, 中文,
+#: русский); «…» are filled with the symbols of the same notation (braces are the lettering's
+#: marks). Drawn text only.
+FLY_WORDS: dict[str, tuple[str, str, str]] = {
+    "A": ("A", "W", "A"),
+    "A_red": ("A_{red}", "W_{e}", "A_{п}"),
+    "A_d": ("A_{d}", "W_{d}", "A_{д}"),
+    "A_r": ("A_{r}", "W_{r}", "A_{с}"),
+    "DeltaT": ("ΔT", "ΔE", "ΔT"),
+    "moment": ("Reduced moment «M»(φ), integrated by chords", "等效力矩 «M»(φ) 及其图解积分",
+               "Приведённый момент «M»(φ), графическое интегрирование"),
+    "work": ("Work diagrams «A»(φ): «Ared» (chords), «Ab» (dashed)", "功曲线 «A»(φ)：«Ared»（弦线），«Ab»（虚线）",
+             "Диаграммы работ «A»(φ): «Ared» (хорды), «Ab» (штриховая)"),
+    "energy": ("Increment of kinetic energy «T»(φ)", "动能增量 «T»(φ)", "Приращение кинетической энергии «T»(φ)"),
+    "inertia": ("Reduced moment of inertia «J»(φ)", "等效转动惯量 «J»(φ)", "Приведённый момент инерции «J»(φ)"),
+    "wittenbauer": ("Wittenbauer diagram «T»(«J»)", "能量–质量曲线（维滕鲍尔图）«T»(«J»)",
+                    "Диаграмма Виттенбауэра «T»(«J»)"),
+    "with": (" with «x»", "，附 «x»", " с «x»"),
+    "indicator": ("Energy indicator diagram", "能量指示图", "Диаграмма избыточных работ"),
+    "motion": ("Angular velocity of the true motion ω(φ)", "真实运动的角速度 ω(φ)",
+               "Угловая скорость истинного движения ω(φ)"),
+    "rundown": ("Run-down under the brake ω(t)", "制动停车过程 ω(t)", "Выбег под тормозом ω(t)"),
+    "t allowed": ("t allowed", "允许 t", "допустимое t"),
+    "stops": ("stops in time", "能按时停车", "останавливается вовремя"),
+    "stops not": ("does NOT stop in time", "不能按时停车", "НЕ останавливается вовремя"),
+    "required": ("required", "要求", "требуется"),
+    "ordinates": ("ordinates ω − ω_{m}, the φ axis at ω_{m} = «w» rad/s",
+                  "纵坐标 ω − ω_{m}，φ 轴位于 ω_{m} = «w» rad/s",
+                  "ординаты ω − ω_{m}, ось φ на уровне ω_{m} = «w» рад/с"),
+    "far tangents": ("the tangents are «a»° apart: they meet «d» mm left of the «T» axis, too far to find by "
+                     "hand; k and l are read on the axis",
+                     "两切线夹角仅 «a»°，交点在 «T» 轴左方 «d» mm，无法作图求得；k、l 在轴上量取",
+                     "касательные расходятся на «a»°: они пересекаются в «d» мм левее оси «T», слишком далеко; "
+                     "k и l читаются на оси"),
 }
+
+
+def fly_word(key: str, notation: str = "en", **symbols: str) -> str:
+    """``key`` of :data:`FLY_WORDS` (or of the general WORDS) in ``notation``, its «…» filled in.
+
+    >>> fly_word("M_red", "ru"), fly_word("energy", "zh", T=fly_word("DeltaT", "zh"))
+    ('M_{п}', '动能增量 ΔE(φ)')
+    """
+    text = word(key, notation, FLY_WORDS if key in FLY_WORDS else WORDS)
+    for name, value in symbols.items():
+        text = text.replace(f"«{name}»", value)
+    return text
+
+
+def _syms(notation: str) -> dict[str, str]:
+    """The symbols a caption is filled with."""
+    return {"M": fly_word("M_red", notation), "J": fly_word("J_red", notation), "A": fly_word("A", notation),
+            "T": fly_word("DeltaT", notation), "Ared": fly_word("A_red", notation)}
+
 
 _LEFT = ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0))  # … left of a vertical one
 
@@ -108,7 +172,7 @@ def wittenbauer_every(x: np.ndarray, y: np.ndarray, size: float = NUMBER_SIZE) -
     length, but at least six.
 
     >>> t = np.linspace(0.0, 2 * np.pi, 12, endpoint=False)
-    >>> wittenbauer_every(30 + 10 * np.cos(t), 10 * np.sin(t)), wittenbauer_every(np.zeros(36), np.sin(t.repeat(3)))
+    >>> wittenbauer_every(30 + 20 * np.cos(t), 20 * np.sin(t)), wittenbauer_every(np.zeros(36), np.sin(t.repeat(3)))
     (1, 6)
     """
     n = len(x)
@@ -144,15 +208,15 @@ def _diagram(x: np.ndarray, y: np.ndarray, every: int, name: str, *, curve_role:
     lo, hi = min(0.0, float(y.min())), max(0.0, float(y.max()))
     items: list[Primitive] = [Arrow((0.0, 0.0), (float(x[-1]) + AXIS_OVERRUN, 0.0), "label"),
                               Arrow((0.0, lo - (3.0 if lo < 0.0 else 0.0)), (0.0, hi + AXIS_OVERRUN), "label")]
-    for k in range(every, x.size, every):  # ticks at the numbered positions
-        items.append(Segment((float(x[k]), 0.0), (float(x[k]), -1.0), "label"))
+    for k in range(every, x.size, every):  # ticks at the numbered positions, up: clear of the numbers below
+        items.append(Segment((float(x[k]), 0.0), (float(x[k]), 1.0), "label"))
     if ordinates:
         items += [Segment((float(x[k]), 0.0), (float(x[k]), float(y[k])), "construction")
                   for k in _ordinate_positions(x.size - 1, every) if abs(y[k]) > 1e-9]
     items.append(Polyline(_pts(x, y), curve_role))
-    labels = [Label(name, (0.0, hi + AXIS_OVERRUN), ((0.0, -1.0),), 3.2),
-              Label("φ", (float(x[-1]) + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2),
-              Label("O", (0.0, 0.0), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), 3.0)]
+    labels = [Label(name, (0.0, hi + AXIS_OVERRUN), ((0.0, -1.0),), LETTER),
+              Label("φ", (float(x[-1]) + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), LETTER),
+              Label("O", (0.0, 0.0), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), LETTER)]
     return items, labels + phi_axis_numbers(x, every)
 
 
@@ -161,21 +225,38 @@ def _every(design: FlywheelDesign) -> int:
     return numbers_every(design.n, float(np.min(np.diff(x))))
 
 
-def _constant_names(design: FlywheelDesign) -> tuple[str, str]:
-    """The constant moment's and its work's names: Mд, Aд (driving) or Mс, Aс (resisting)."""
-    return ("Mд", "Aд") if design.balance == "driving" else ("Mс", "Aс")
+def _constant_keys(design: FlywheelDesign) -> tuple[str, str]:
+    """The constant moment's and its work's keys: M_d, A_d (driving) or M_r, A_r (resisting)."""
+    return ("M_d", "A_d") if design.balance == "driving" else ("M_r", "A_r")
+
+
+def energy_factor(design: FlywheelDesign) -> int:
+    """k of μT′ = μT/k for a ΔT diagram drawn alone: 1 when ΔT spans ENERGY_LEAST mm or more at μT,
+    else the largest nice step keeping it within ENERGY_MM.
+
+    >>> phi = np.arange(12) * np.pi / 6
+    >>> from graphmech.methods.flywheel import design_flywheel
+    >>> energy_factor(design_flywheel(phi, np.full(12, 0.5), -50.0 + 5.0 * np.sin(phi), cycle=2 * np.pi,
+    ...                               omega_m=100.0, delta=0.02, H_mm=40.0))
+    10
+    """
+    t = design.energy_mm
+    span = float(max(t.max(), 0.0) - min(t.min(), 0.0))
+    if span >= ENERGY_LEAST or span <= 0.0:
+        return 1
+    return max(k for k in NICE_STEPS if k == 1 or k * span <= ENERGY_MM)
 
 
 # ----------------------------------------------------------------------------- the panels
-def moment_items(design: FlywheelDesign, every: int | None = None) -> list[Primitive]:
-    """Mп(φ) at μM, μφ with the integration's construction and the constant moment (O at the origin)."""
+def moment_items(design: FlywheelDesign, every: int | None = None, notation: str = "en") -> list[Primitive]:
+    """M_{red}(φ) at μM, μφ with the integration's construction and the constant moment (O at the origin)."""
     g = design.moment
     every = every or _every(design)
     x, y, mean = g.x_mm, g.y_mm, g.mean_mm
     n, H, mb = design.n, design.H_mm, design.balancing_mm
     P = g.pole
     xe = float(x[-1])
-    items, labels = _diagram(x, y, every, "Mп", curve_role="given")
+    items, labels = _diagram(x, y, every, fly_word("M_red", notation), curve_role="given")
     items[0] = Arrow((-H - 4.0, 0.0), (xe + AXIS_OVERRUN, 0.0), "label")  # the φ axis carries the pole
     lo = min(0.0, float(y.min()), float(mean.min()), mb)
     # the mean ordinates as a step of equal area; projections on the moment axis; rays from P
@@ -188,63 +269,67 @@ def moment_items(design: FlywheelDesign, every: int | None = None) -> list[Primi
         construction += [Segment((float(x[i]), m), (0.0, m), "construction", dashed=True),
                          Segment(P, (0.0, m), "construction")]
     # the ray from P parallel to the balancing work's line, and the constant moment it cuts off
-    name, _ = _constant_names(design)
+    name = fly_word(_constant_keys(design)[0], notation)
     result: list[Primitive] = [Segment(P, (0.0, mb), "label", dashed=True),
                                Segment((0.0, mb), (xe, mb), "result"), Circle(P, DOT, "result")]
     # the pole distance H, dimensioned under the fan of rays
-    yd = lo - 5.0
+    yd = lo - 6.0
     dim: list[Primitive] = [Segment(P, (P[0], yd - 1.5), "label"), Arrow((-H / 2.0, yd), (-H, yd), "label"),
                             Arrow((-H / 2.0, yd), (0.0, yd), "label")]
     if lo >= 0.0:
         dim.append(Segment((0.0, 0.0), (0.0, yd - 1.5), "label"))
-    top = [Label("P", P, ((1.0, 0.0), (1.0, 0.5)), 3.2), Label("H", (-H / 2.0, yd), ((1.0, 0.0), (-1.0, 0.0)), 3.2),
-           Label(name, (xe, mb), ((-1.0, 0.0),), 3.2)]
+    top = [Label("P", P, ((1.0, 0.0), (1.0, 0.5)), LETTER), Label("H", (-H / 2.0, yd), ((1.0, 0.0), (-1.0, 0.0)), LETTER),
+           Label(name, (xe, mb), ((-1.0, 0.0),), LETTER)]
     return construction + items + result + dim + labels[:3] + top + labels[3:]
 
 
-def work_items(design: FlywheelDesign, every: int | None = None) -> list[Primitive]:
-    """A(φ) at μA = μT: the chord polygon Aп and the constant moment's work line (O at the origin)."""
+def work_items(design: FlywheelDesign, every: int | None = None, notation: str = "en") -> list[Primitive]:
+    """A(φ) at μA = μT: the chord polygon A_{red} and the constant moment's work line (O at the origin)."""
     every = every or _every(design)
     x, a, b = design.moment.x_mm, design.work_mm, design.balance_work_mm
     xe = float(x[-1])
     both = np.concatenate([a, b])
-    items, labels = _diagram(x, a, every, "A")
+    A = fly_word("A", notation)
+    items, labels = _diagram(x, a, every, A)
     items[1] = Arrow((0.0, min(0.0, float(both.min())) - (3.0 if both.min() < 0 else 0.0)),
                      (0.0, max(0.0, float(both.max())) + AXIS_OVERRUN), "label")
-    labels[0] = Label("A", (0.0, max(0.0, float(both.max())) + AXIS_OVERRUN), ((0.0, -1.0),), 3.2)
-    _, work_name = _constant_names(design)
+    labels[0] = Label(A, (0.0, max(0.0, float(both.max())) + AXIS_OVERRUN), ((0.0, -1.0),), LETTER)
+    work_name = fly_word(_constant_keys(design)[1], notation)
     line = Segment((0.0, 0.0), (xe, float(b[-1])), "result", dashed=True)
     far = int(np.argmax(np.abs(a)))
-    names = [Label("Aп", (float(x[far]), float(a[far])), _dirs((-1.0, 0.0), (1.0, 0.0)), 3.2),
-             Label(work_name, (xe, float(b[-1])), ((-1.0, -float(b[-1]) / xe),), 3.2)]
+    names = [Label(fly_word("A_red", notation), (float(x[far]), float(a[far])), _dirs((-1.0, 0.0), (1.0, 0.0)), LETTER),
+             Label(work_name, (xe, float(b[-1])), ((-1.0, -float(b[-1]) / xe),), LETTER)]
     return items + [line] + labels[:3] + names + labels[3:]
 
 
-def energy_items(design: FlywheelDesign, every: int | None = None) -> list[Primitive]:
-    """ΔT(φ) at μT, μφ with its extremes marked (O at the origin)."""
+def energy_items(design: FlywheelDesign, every: int | None = None, notation: str = "en",
+                 factor: int = 1) -> list[Primitive]:
+    """ΔT(φ) at μT/``factor``, μφ with its extremes marked (O at the origin)."""
     every = every or _every(design)
-    x, t = design.moment.x_mm, design.energy_mm
-    items, labels = _diagram(x, t, every, "ΔT")
+    x, t = design.moment.x_mm, design.energy_mm * factor
+    T = fly_word("DeltaT", notation)
+    items, labels = _diagram(x, t, every, T)
     marks: list[Primitive] = []
-    for i, text in ((design.energy_max_index, "ΔTₘₐₓ"), (design.energy_min_index, "ΔTₘᵢₙ")):
+    for i, sub, up in ((design.energy_max_index, "max", True), (design.energy_min_index, "min", False)):
         p = (float(x[i]), float(t[i]))
         marks.append(Circle(p, 2 * DOT, "result"))
-        labels.append(Label(text, p, ((0.0, -1.0) if text.endswith("ₓ") else (0.0, 1.0),), 3.0, italic=False))
+        off = (p[0], p[1] + (1.0 if up else -1.0))  # clear of the mark's dot
+        labels.append(Label(f"{T}_{{{sub}}}", off, ((0.0, -1.0) if up else (0.0, 1.0),), LETTER))
     return items + marks + labels
 
 
 def inertia_phi_scale(design: FlywheelDesign) -> float:
-    """μφ′ of the Jп(φ) diagram, rad/mm: a round number of °/mm, the cycle about 40 mm long."""
+    """μφ′ of the J(φ) diagram, rad/mm: a round number of °/mm, the cycle about 40 mm long."""
     return math.radians(round_scale(math.degrees(design.cycle) / INERTIA_PHI_MM))
 
 
-def inertia_items(design: FlywheelDesign, every: int | None = None) -> list[Primitive]:
-    """Jп(φ) at μJ and μφ′: Jп to the right, φ downwards from the origin."""
+def inertia_items(design: FlywheelDesign, every: int | None = None, notation: str = "en") -> list[Primitive]:
+    """J_{red}(φ) at μJ and μφ′: J to the right, φ downwards from the origin."""
     mu = inertia_phi_scale(design)
     n = design.n
     v = -np.append(design.phi, design.cycle) / mu
     xj = np.append(design.inertia_mm, design.inertia_mm[0])
-    every = every or numbers_every(n, float(np.min(-np.diff(v))))
+    every = every or numbers_every(n, float(np.min(-np.diff(v))), NUMBER_SIZE * 0.6)  # numbers stacked: height
     right = float(xj.max())
     items: list[Primitive] = [Arrow((0.0, 0.0), (right + AXIS_OVERRUN, 0.0), "label"),
                               Arrow((0.0, 0.0), (0.0, float(v[-1]) - AXIS_OVERRUN), "label")]
@@ -252,8 +337,8 @@ def inertia_items(design: FlywheelDesign, every: int | None = None) -> list[Prim
     items += [Segment((0.0, float(v[k])), (float(xj[k]), float(v[k])), "construction")
               for k in _ordinate_positions(n, every) if xj[k] > 1e-9]
     items.append(Polyline(_pts(xj, v), "given"))
-    labels = [Label("Jп", (right + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2),
-              Label("φ", (0.0, float(v[-1]) - AXIS_OVERRUN), ((0.0, 1.0),), 3.2)]
+    labels = [Label(fly_word("J_red", notation), (right + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), LETTER),
+              Label("φ", (0.0, float(v[-1]) - AXIS_OVERRUN), ((0.0, 1.0),), LETTER)]
     labels += [Label(str(k + 1), (0.0, float(v[k])), _LEFT, NUMBER_SIZE, italic=False) for k in range(0, n, every)]
     if n % every == 0:
         labels.append(Label("1", (0.0, float(v[n])), _LEFT, NUMBER_SIZE, italic=False))
@@ -291,12 +376,12 @@ def _angle_mark(at: XY, t: float, name: str) -> list[Primitive]:
         items.append(Polyline(tuple((at[0] + PSI_R * math.cos(psi * i / m), at[1] + PSI_R * math.sin(psi * i / m))
                                     for i in range(m + 1)), "label"))
     tip = (at[0] + (PSI_R + 1.0) * math.cos(psi / 2), at[1] + (PSI_R + 1.0) * math.sin(psi / 2))
-    items.append(Label(name, tip, ((-1.0, 0.0),), 3.0))
+    items.append(Label(name, tip, ((-1.0, 0.0),), LETTER))
     return items
 
 
-def wittenbauer_items(design: FlywheelDesign) -> list[Primitive]:
-    """The Wittenbauer diagram at μJ, μT (O, Jп = 0 and ΔT = 0, at the origin)."""
+def wittenbauer_items(design: FlywheelDesign, notation: str = "en") -> list[Primitive]:
+    """The Wittenbauer diagram at μJ, μT (O, J = 0 and ΔT = 0, at the origin)."""
     w = design.wittenbauer
     if w is None:
         raise OutOfDomain("the design has no Wittenbauer diagram: design it with need=('wittenbauer', …)")
@@ -305,25 +390,28 @@ def wittenbauer_items(design: FlywheelDesign) -> list[Primitive]:
     x0, x1, y0, y1, far = box
     items: list[Primitive] = [Arrow((0.0, y0 - 2.0), (0.0, y1 + AXIS_OVERRUN), "label"),
                               Arrow((0.0, 0.0), (x1 + AXIS_OVERRUN, 0.0), "label")]
-    labels = [Label("ΔT", (0.0, y1 + AXIS_OVERRUN), ((0.0, -1.0),), 3.2),
-              Label("Jп", (x1 + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2)]
+    labels = [Label(fly_word("DeltaT", notation), (0.0, y1 + AXIS_OVERRUN), ((0.0, -1.0),), LETTER),
+              Label(fly_word("J_red", notation), (x1 + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), LETTER)]
     # the points and the closed curve through them in the order of the positions
     if n <= MOST_DOTS:
         items += [Circle(p, DOT, "result") for p in _pts(x, y)]
     items.append(Polyline(_pts(x, y), "label", closed=True))  # thinner than the tangents
     # the tangents at ψmax (from above) and ψmin (from below), k and l on the ΔT axis
-    for c, t, tag, sub in ((w.k_mm, w.tan_psi_max, "k", "ₘₐₓ"), (w.l_mm, w.tan_psi_min, "l", "ₘᵢₙ")):
+    tangent_dirs: list[XY] = []
+    for c, t, tag, sub in ((w.k_mm, w.tan_psi_max, "k", "max"), (w.l_mm, w.tan_psi_min, "l", "min")):
         p0, p1 = _tangent(c, t, box[:4])
         items.append(Segment(p0, p1, "result"))
+        tangent_dirs.append((1.0, t))
         seen = c >= y0
         at = (0.0, c) if seen else p0
-        items += [i for i in _angle_mark(at, t, "ψ" + sub) if not isinstance(i, Label)]
-        labels += [i for i in _angle_mark(at, t, "ψ" + sub) if isinstance(i, Label)]
+        mark = _angle_mark(at, t, f"ψ_{{{sub}}}")
+        items += [i for i in mark if not isinstance(i, Label)]
+        labels += [i for i in mark if isinstance(i, Label)]
         if seen:
             items.append(Segment((-1.2, c), (1.2, c), "label"))
-            labels.insert(2, Label(tag, (0.0, c), _dirs((1.0, t), (-1.0, -t), (0.0, 1.0), (0.0, -1.0)), 3.2))
+            labels.insert(2, Label(tag, (0.0, c), _dirs((1.0, t), (-1.0, -t), (0.0, 1.0), (0.0, -1.0)), LETTER))
         else:
-            labels.append(Label(f"{tag} = {c:.1f} mm", (0.0, y0 - 2.0), ((0.0, 1.0),), 3.0, italic=False))
+            labels.append(Label(f"{tag} = {number(c)} mm", (0.0, y0 - 2.0), ((0.0, 1.0),), LETTER, italic=False))
     k, l = w.k_mm, w.l_mm
     if not far and abs(k - l) > 1e-9:  # the segment kl, dimensioned left of the ΔT axis
         xd = -KL_AT
@@ -335,22 +423,27 @@ def wittenbauer_items(design: FlywheelDesign) -> list[Primitive]:
         else:
             items += [Arrow((xd, hi + 4.0), (xd, hi), "label"), Arrow((xd, lo - 4.0), (xd, lo), "label"),
                       Segment((xd, lo), (xd, hi), "label")]
-        labels.append(Label("kl", (xd, (k + l) / 2.0), ((1.0, 0.0),), 3.2))
+        labels.append(Label("kl", (xd, (k + l) / 2.0), ((1.0, 0.0),), LETTER))
+    # the point numbers: set outward from the curve's centroid, clear of the curve and the tangents
     every = wittenbauer_every(x, y)
+    cx, cy = float(np.mean(x)), float(np.mean(y))
     for i in range(0, n, every):
         a, b = (x[i - 1], y[i - 1]), (x[(i + 1) % n], y[(i + 1) % n])
         p = (float(x[i]), float(y[i]))
-        labels.append(Label(str(i + 1), p, _dirs((a[0] - p[0], a[1] - p[1]), (b[0] - p[0], b[1] - p[1])),
-                            NUMBER_SIZE, italic=False))
+        inward = _dirs((cx - p[0], cy - p[1]))
+        avoid = _dirs((a[0] - p[0], a[1] - p[1]), (b[0] - p[0], b[1] - p[1]), *tangent_dirs,
+                      *[(-d[0], -d[1]) for d in tangent_dirs]) + inward * 3
+        labels.append(Label(str(i + 1), p, avoid, NUMBER_SIZE, italic=False))
     return items + labels
 
 
-def indicator_items(design: FlywheelDesign) -> list[Primitive]:
-    """The energy-indicator chain at μT: vertical vectors from a to a′, ΔW_max dimensioned."""
+def indicator_items(design: FlywheelDesign, notation: str = "en", factor: int = 1) -> list[Primitive]:
+    """The energy-indicator chain at μT/``factor``: vertical vectors from a to a′, ΔW_{max} dimensioned."""
+    del notation  # its letters are the same in every notation
     e = design.indicator
     if e is None:
         raise OutOfDomain("the design has no energy indicator: design it with need=(…, 'indicator')")
-    lv = [float(v) for v in e.levels_mm]
+    lv = [float(v) * factor for v in e.levels_mm]
     m = len(lv) - 1
     step = min(INDICATOR_STEP, INDICATOR_WIDTH / max(m - 1, 1))
     xs = [step * i for i in range(m)]
@@ -361,17 +454,16 @@ def indicator_items(design: FlywheelDesign) -> list[Primitive]:
         if abs(lv[i + 1] - lv[i]) > 1e-9:
             items.append(Arrow((xs[i], lv[i]), (xs[i], lv[i + 1]), "result"))
             if m <= 12:
-                up = 1.0 if lv[i + 1] > lv[i] else -1.0
-                labels.append(Label(f"f{chr(0x2080 + i + 1) if i < 9 else str(i + 1)}",
-                                    (xs[i], (lv[i] + lv[i + 1]) / 2.0), ((0.0, up), (0.0, -up)), 2.8))
+                labels.append(Label(f"f_{{{i + 1}}}", (xs[i], (lv[i] + lv[i + 1]) / 2.0), ((0.0, 1.0), (0.0, -1.0)),
+                                    LETTER))
         if i + 1 < m:
             items.append(Segment((xs[i], lv[i + 1]), (xs[i + 1], lv[i + 1]), "construction"))
     if m <= 26:
         names = [chr(ord("a") + j) for j in range(m)] + ["a′"]
         for j, name in enumerate(names):
-            labels.append(Label(name, (where[j], lv[j]), ((0.0, 1.0), (0.0, -1.0)), 3.0))
+            labels.append(Label(name, (where[j], lv[j]), ((0.0, 1.0), (0.0, -1.0)), LETTER))
     if e.dW_max_mm > 1e-9:
-        xd = xs[-1] + 8.0
+        xd = xs[-1] + 10.0
         hi, lo = lv[e.highest], lv[e.lowest]
         items += [Segment((where[e.highest], hi), (xd + 1.5, hi), "construction"),
                   Segment((where[e.lowest], lo), (xd + 1.5, lo), "construction")]
@@ -381,56 +473,125 @@ def indicator_items(design: FlywheelDesign) -> list[Primitive]:
         else:
             items += [Arrow((xd, hi + 4.0), (xd, hi), "label"), Arrow((xd, lo - 4.0), (xd, lo), "label"),
                       Segment((xd, lo), (xd, hi), "label")]
-        labels.insert(0, Label("ΔWₘₐₓ", (xd, mid), ((-1.0, 0.0),), 3.2))
+        labels.insert(0, Label("ΔW_{max}", (xd, mid), ((-1.0, 0.0),), LETTER))
     return items + labels
 
 
+def motion_panel(phi: np.ndarray, omega: np.ndarray, omega_m: float, mu_phi: float, notation: str = "en",
+                 extremes: tuple[float, float] | None = None) -> Panel:
+    """ω(φ) of the true motion: the φ axis at ω_m (μφ as the other diagrams), the ordinates
+    ω − ω_m at a round μω so that they span about MOTION_MM, the levels ω_max and ω_min dashed.
+
+    ``phi`` (rad from position 1, the cycle's end included) and ``omega`` (rad/s) sample one
+    periodic cycle; ``extremes`` are (ω_max, ω_min) as the check found them (default: the samples').
+
+    >>> phi = np.linspace(0.0, 2 * np.pi, 73)
+    >>> p = motion_panel(phi, 100.0 + 0.02 * np.sin(phi), 100.0, math.radians(2.5))
+    >>> p.name, p.scales[0], p.notes[0]
+    ('motion', ('omega', 0.001), 'μ_{ω} = 0.001 (rad/s)/mm, μ_{φ} = 2.5 °/mm')
+    """
+    hi, lo = extremes if extremes is not None else (float(omega.max()), float(omega.min()))
+    span = max(hi - omega_m, 0.0) - min(lo - omega_m, 0.0)
+    mu = round_scale(span / MOTION_MM) if span > 0.0 else round_scale(max(abs(omega_m), 1.0) * 1e-6)
+    x = np.asarray(phi, dtype=float) / mu_phi
+    y = (np.asarray(omega, dtype=float) - omega_m) / mu
+    items: list[Primitive] = [Arrow((0.0, 0.0), (float(x[-1]) + AXIS_OVERRUN, 0.0), "label"),
+                              Arrow((0.0, min(0.0, float(y.min())) - 4.0), (0.0, max(0.0, float(y.max())) + AXIS_OVERRUN),
+                                    "label")]
+    labels = [Label("ω", (0.0, max(0.0, float(y.max())) + AXIS_OVERRUN), ((0.0, -1.0),), LETTER),
+              Label("φ", (float(x[-1]) + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), LETTER),
+              Label("ω_{m}", (0.0, 0.0), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), LETTER)]
+    xe = float(x[-1])
+    for value, sub in ((hi, "max"), (lo, "min")):
+        yv = (value - omega_m) / mu
+        items.append(Segment((0.0, yv), (xe, yv), "construction", dashed=True))
+        labels.append(Label(f"ω_{{{sub}}}", (xe, yv), ((-1.0, 0.0),), LETTER))
+    items.append(Polyline(_pts(x, y), "result"))
+    ticks = [k * 30.0 for k in range(1, int(math.degrees(float(phi[-1])) // 30.0) + 1)]  # every 30° of φ
+    for deg in ticks:
+        xt = math.radians(deg) / mu_phi
+        items.append(Segment((xt, 0.0), (xt, -1.0), "label"))
+        if deg % 90.0 == 0.0:
+            labels.append(Label(f"{deg:g}°", (xt, 0.0), ((0.0, 1.0), (1.0, 0.0), (-1.0, 0.0)), NUMBER_SIZE, italic=False))
+    delta = (hi - lo) / omega_m
+    notes = (f"{scale_text('omega', mu)}, {scale_text('phi', mu_phi)}",
+             fly_word("ordinates", notation, w=number(omega_m)),
+             f"ω_{{max}} − ω_{{min}} = {number(hi - lo)} rad/s, δ = {number(delta)}")
+    title = fly_word("motion", notation)
+    return Panel("motion", title, (*items, *labels), notes, row=2, scales=(("omega", mu), ("phi", mu_phi)))
+
+
 # ----------------------------------------------------------------------------- notes
-def _phi_note(mu: float) -> str:
-    return f"{format_scale('phi', mu)} ({mu:.6g} rad/mm)"
-
-
-def _notes(design: FlywheelDesign, members: Sequence[str]) -> tuple[str, ...]:
+def _notes(design: FlywheelDesign, members: Sequence[str], notation: str, factor: int) -> tuple[str, ...]:
     s = design.scales
     out: list[str] = []
-    name, work_name = _constant_names(design)
+    const = fly_word(_constant_keys(design)[0], notation)
+    T = fly_word("DeltaT", notation)
     if "moment" in members:
-        out += [f"{format_scale('M', s['M'])}, {_phi_note(s['phi'])}",
-                f"H = {design.H_mm:.6g} mm; {name} = μM·⟨{name}⟩ = {design.balancing_moment:.6g} N·m"]
+        out += [f"{scale_text('M', s['M'])}, {scale_text('phi', s['phi'])}",
+                f"H = {number(design.H_mm)} mm; {const} = μ_{{M}}·⟨{const}⟩ = {number(design.balancing_moment)} N·m"]
     if "work" in members:
-        out += [f"μA = μM·μφ·H: {format_scale('T', s['T']).replace('μT', 'μA')}, {_phi_note(s['phi'])}"]
+        out += [f"μ_{{A}} = μ_{{M}}·μ_{{φ}}·H: {scale_text('T', s['T']).replace('μ_{T}', 'μ_{A}')}, "
+                f"{scale_text('phi', s['phi'])}"]
+    alone = "wittenbauer" not in members
     if "energy" in members or "indicator" in members:
-        out += [f"{format_scale('T', s['T'])} (= μA)"]
+        if alone and factor > 1:
+            out += [f"μ_{{T}}′ = μ_{{T}}/{factor} = {scale_text('T', s['T'] / factor).split(' = ', 1)[1]}, "
+                    f"{scale_text('T', s['T'])} (= μ_{{A}})"]
+        else:
+            out += [f"{scale_text('T', s['T'])} (= μ_{{A}})"]
         if "energy" in members:
-            out[-1] += f", {format_scale('phi', s['phi'])}"
+            out[-1] += f", {scale_text('phi', s['phi'])}"
     if "inertia" in members:
-        out += [f"{format_scale('J', s['J'])}; Jп(φ): {format_scale('phi', inertia_phi_scale(design))}"]
+        out += [f"{scale_text('J', s['J'])}; {fly_word('J_red', notation)}(φ): "
+                f"{scale_text('phi', inertia_phi_scale(design), '′')}"]
     if "wittenbauer" in members:
         w = design.wittenbauer
-        assert w is not None
+        assert w is not None and design.J_F is not None
         if "inertia" not in members:
-            out += [format_scale("J", s["J"])]
-        reading = "ω = ωm(1 ± δ/2)" if design.form == "exact" else "ω² = ωm²(1 ± δ)"
-        out += [f"tan ψ = μJ·ω²/(2μT), {reading}: tan ψmax = {w.tan_psi_max:.5g} (ψmax = {w.psi_max_deg:.4g}°), "
-                f"tan ψmin = {w.tan_psi_min:.5g} (ψmin = {w.psi_min_deg:.4g}°)",
-                f"k = {w.k_mm:.4g} mm, l = {w.l_mm:.4g} mm, kl = {w.kl_mm:.4g} mm: "
-                f"J_F = μT·kl/(ωm²δ) = {design.J_F:.6g} kg·m²"]
+            out += [scale_text("J", s["J"])]
+        reading = "ω = ω_{m}(1 ± δ/2)" if design.form == "exact" else "ω^{2} = ω_{m}^{2}(1 ± δ)"
+        out += [f"tan ψ = μ_{{J}}·ω^{{2}}/(2μ_{{T}}), {reading}: tan ψ_{{max}} = {number(w.tan_psi_max)} "
+                f"(ψ_{{max}} = {number(w.psi_max_deg)}°), tan ψ_{{min}} = {number(w.tan_psi_min)} "
+                f"(ψ_{{min}} = {number(w.psi_min_deg)}°)",
+                f"k = {number(w.k_mm)} mm, l = {number(w.l_mm)} mm, kl = {number(w.kl_mm)} mm: "
+                f"{fly_word('J_F', notation)} = μ_{{T}}·kl/(ω_{{m}}^{{2}}δ) = {number(design.J_F)} kg·m^{{2}}"]
         if w.ill_conditioned:
-            out += [f"the tangents are {w.angle_between_deg:.2g}° apart: they meet {-w.intersection[0]:.4g} mm left "
-                    "of the ΔT axis, too far to find by hand; k and l are read on the axis"]
+            out += [fly_word("far tangents", notation, a=number(w.angle_between_deg, 2),
+                             d=number(-w.intersection[0]), T=T)]
     if "indicator" in members:
         assert design.DeltaW_max is not None and design.J_F_indicator is not None
-        out += [f"ΔWmax = {design.DeltaW_max:.6g} J, Jmean = {design.J_mean:.6g} kg·m²",
-                f"J_F′ = ΔWmax/(ωm²δ) − Jmean = {design.J_F_indicator:.6g} kg·m²"]
+        out += [f"ΔW_{{max}} = {number(design.DeltaW_max)} J, J_{{mean}} = {number(design.J_mean)} kg·m^{{2}}",
+                f"{fly_word('J_F', notation)} = ΔW_{{max}}/(ω_{{m}}^{{2}}δ) − J_{{mean}} = "
+                f"{number(design.J_F_indicator)} kg·m^{{2}}"]
+    return tuple(out)
+
+
+def _scales(design: FlywheelDesign, members: Sequence[str], factor: int) -> tuple[tuple[str, float], ...]:
+    """The paper scales of a panel showing ``members`` (Panel.scales)."""
+    s = design.scales
+    out: list[tuple[str, float]] = []
+    if "moment" in members:
+        out.append(("M", s["M"]))
+    if "wittenbauer" in members or "work" in members:
+        out.append(("T", s["T"]))
+    elif "energy" in members or "indicator" in members:
+        out.append(("T", s["T"] / factor))
+    if "inertia" in members or "wittenbauer" in members:
+        out.append(("J", s["J"]))
+    if any(m in members for m in ("moment", "work", "energy")):
+        out.append(("phi", s["phi"]))
+    if "inertia" in members:
+        out.append(("phi", inertia_phi_scale(design)))
     return tuple(out)
 
 
 # ----------------------------------------------------------------------------- the sheet
-def _beside(design: FlywheelDesign, members: Sequence[str]) -> list[Primitive]:
-    """The Wittenbauer diagram with ΔT(φ) on the left and Jп(φ) below, points carried across."""
+def _beside(design: FlywheelDesign, members: Sequence[str], notation: str = "en") -> list[Primitive]:
+    """The Wittenbauer diagram with ΔT(φ) on the left and J(φ) below, points carried across."""
     w = design.wittenbauer
     assert w is not None
-    witt, wlabels = _split(wittenbauer_items(design))
+    witt, wlabels = _split(wittenbauer_items(design, notation))
     items: list[Primitive] = []
     labels: list[Label] = []
     x, y = w.x_mm, w.y_mm
@@ -439,14 +600,14 @@ def _beside(design: FlywheelDesign, members: Sequence[str]) -> list[Primitive]:
     if "energy" in members:
         xe = design.moment.x_mm
         dx = -(GAP_LEFT + float(xe[-1]) + AXIS_OVERRUN)
-        it, lb = _split(energy_items(design))
+        it, lb = _split(energy_items(design, notation=notation))
         items += [moved(i, dx, 0.0) for i in it]
         labels += [moved(i, dx, 0.0) for i in lb]
         items += [Segment((dx + float(xe[k]), float(y[k])), (float(x[k]), float(y[k])), "construction")
                   for k in carried if abs(float(x[k]) - dx - float(xe[k])) > 1e-9]
     if "inertia" in members:
         dy = _window(design)[2] - 2.0 - GAP_BELOW
-        it, lb = _split(inertia_items(design))
+        it, lb = _split(inertia_items(design, notation=notation))
         items += [moved(i, 0.0, dy) for i in it]
         labels += [moved(i, 0.0, dy) for i in lb]
         mu = inertia_phi_scale(design)
@@ -479,13 +640,36 @@ def panel_members(show: Sequence[str]) -> list[tuple[str, ...]]:
     return out
 
 
+def panel_title(group: Sequence[str], design: FlywheelDesign, notation: str = "en") -> str:
+    """The caption of the panel showing ``group``, in ``notation``.
+
+    >>> from graphmech.methods.flywheel import design_flywheel
+    >>> phi = np.arange(12) * np.pi / 6
+    >>> d = design_flywheel(phi, np.full(12, 0.5), -50.0 + 100.0 * np.sin(phi), cycle=2 * np.pi, omega_m=100.0,
+    ...                     delta=0.02)
+    >>> panel_title(("moment",), d, "ru"), panel_title(("energy", "wittenbauer"), d, "zh")
+    ('Приведённый момент M_{п}(φ), графическое интегрирование', '能量–质量曲线（维滕鲍尔图）ΔE(J_{e})，附 ΔE(φ)')
+    """
+    sy = _syms(notation)
+    if "wittenbauer" in group:
+        return fly_word("wittenbauer", notation, **sy) + "".join(
+            fly_word("with", notation, x=f"{sy['T']}(φ)" if g == "energy" else f"{sy['J']}(φ)")
+            for g in group if g != "wittenbauer")
+    if group[0] == "work":
+        return fly_word("work", notation, Ab=fly_word(_constant_keys(design)[1], notation), **sy)
+    return fly_word(group[0], notation, **sy)
+
+
 def flywheel_sheet(title: str, design: FlywheelDesign, show: Sequence[str],
-                   page_size: tuple[float, float] = PAPER["A3"], footer: tuple[str, ...] = ()) -> Sheet:
+                   page_size: tuple[float, float] = PAPER["A3"], footer: tuple[str, ...] = (),
+                   notation: str = "en") -> Sheet:
     """The sheet of the graphical flywheel design: the panels of ``show`` in the order of :data:`PANELS`.
 
-    Mп(φ) and A(φ) stand in the first row; ΔT(φ), Jп(φ), the Wittenbauer diagram and the energy
+    M(φ) and A(φ) stand in the first row; ΔT(φ), J(φ), the Wittenbauer diagram and the energy
     indicator in the second. A panel's name is its entry of ``show`` (the Wittenbauer diagram's
-    panel: its members joined by ``+``); its notes state its scales and what it finds.
+    panel: its members joined by ``+``); its notes state its scales and what it finds, its
+    ``scales`` the scales of its paper. ΔT(φ) alone and the energy indicator are drawn at
+    μT′ = μT/k (:func:`energy_factor`) when at μT they would be too low to read.
 
     Parameters
     ----------
@@ -498,6 +682,8 @@ def flywheel_sheet(title: str, design: FlywheelDesign, show: Sequence[str],
     page_size : (float, float)
         mm.
     footer : tuple of str
+    notation : "en", "zh" or "ru"
+        Whose symbols and captions (drawn text only).
 
     Raises
     ------
@@ -521,24 +707,20 @@ def flywheel_sheet(title: str, design: FlywheelDesign, show: Sequence[str],
     if "indicator" in show and design.indicator is None:
         raise OutOfDomain("the energy indicator is shown but the design has none (need=('indicator',))")
     every = _every(design)
-    build = {"moment": lambda: moment_items(design, every), "work": lambda: work_items(design, every),
-             "energy": lambda: energy_items(design, every), "inertia": lambda: inertia_items(design),
-             "indicator": lambda: indicator_items(design)}
+    k = energy_factor(design)
+    build = {"moment": lambda: moment_items(design, every, notation),
+             "work": lambda: work_items(design, every, notation),
+             "energy": lambda: energy_items(design, every, notation, k), "inertia": lambda: inertia_items(design, None, notation),
+             "indicator": lambda: indicator_items(design, notation, k)}
     panels = []
     for group in members:
-        if "wittenbauer" in group:
-            items = _beside(design, group)
-            head = TITLES["wittenbauer"] + "".join(
-                f" with {'ΔT(φ)' if g == 'energy' else 'Jп(φ)'}" for g in group if g != "wittenbauer")
-        else:
-            items = build[group[0]]()
-            head = TITLES[group[0]]
-            if group[0] == "work":
-                head += f": Aп (chords), {_constant_names(design)[1]} (dashed)"
+        items = _beside(design, group, notation) if "wittenbauer" in group else build[group[0]]()
         row = 0 if group[0] in ("moment", "work") else 1
-        panels.append(Panel("+".join(group), head, tuple(items), _notes(design, group), row=row))
+        panels.append(Panel("+".join(group), panel_title(group, design, notation), tuple(items),
+                            _notes(design, group, notation, k), row=row, scales=_scales(design, group, k)))
     return Sheet(title, tuple(panels), (page_size[0], page_size[1]), tuple(footer))
 
 
-__all__ = ["PANELS", "energy_items", "flywheel_sheet", "indicator_items", "inertia_items", "moment_items",
-           "panel_members", "wittenbauer_items", "work_items"]
+__all__ = ["FLY_WORDS", "PANELS", "energy_factor", "energy_items", "fly_word", "flywheel_sheet", "indicator_items",
+           "inertia_items", "moment_items", "motion_panel", "panel_members", "panel_title", "wittenbauer_items",
+           "work_items"]

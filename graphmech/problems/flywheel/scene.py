@@ -141,8 +141,9 @@ class FlywheelScene:
 
 #: What a flywheel scene may show: the reduced moments, their work, the increment of kinetic
 #: energy, the reduced inertia, the Wittenbauer (energy–mass) diagram, the indicator diagram;
-#: with a linkage also the mechanism, first; with [flywheel.braking] the run-down ω(t).
-FLYWHEEL_SHOW_CHOICES = ("moment", "work", "energy", "inertia", "wittenbauer", "indicator", "rundown")
+#: with a linkage also the mechanism, first; ω(φ) of the true motion; with [flywheel.braking] the
+#: run-down ω(t).
+FLYWHEEL_SHOW_CHOICES = ("moment", "work", "energy", "inertia", "wittenbauer", "indicator", "motion", "rundown")
 #: What a flywheel scene shows when it does not say (a braking-only scene: its run-down).
 FLYWHEEL_SHOW_DEFAULT = ("energy", "wittenbauer")
 BRAKING_SHOW_DEFAULT = ("rundown",)

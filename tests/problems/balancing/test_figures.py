@@ -46,5 +46,24 @@ def test_recorded_draw_calls_of_a_polygon_panel():
     heads = [c for c in calls if c[0] == "polyline" and c[4] and len(c[1]) == 3]
     assert len(heads) == 5  # W1 … W4 and the closing W_b
     texts = {c[1] for c in calls if c[0] == "text"}
-    assert {"W₁", "W₂", "W₃", "W₄", "Wb"} <= texts
-    assert any("μW = 0.05 (kg·m)/mm" in t for t in texts)
+    assert {"W_{1}", "W_{2}", "W_{3}", "W_{4}", "W_{b}"} <= texts
+    assert any("μ_{W} = 0.05 (kg·m)/mm" in t for t in texts)
+
+
+def test_captions_in_the_notation_marks_and_dash_dot_centre_lines(tmp_path):
+    """bal.rotor_dynamic in 中文: the captions are the book's, the symbols marks (m_{b}^{I}, W_{1}^{I}),
+    the rotor's centre lines and axis dash-dot, every panel states its paper scale."""
+    from graphmech.drawing.primitives import Label, Segment
+
+    text = (SCENES / "bal.rotor_dynamic.toml").read_text(encoding="utf-8") + '\n[page]\nnotation = "zh"\n'
+    an = analyse_balancing(load_scene(write(tmp_path, text)))
+    sheet = balancing_figure(an, (297.0, 210.0))
+    panels = {p.name: p for p in sheet.panels}
+    assert panels["rotor"].title == "转子：端视图" and panels["polygonII"].title == "质径积矢量多边形，平衡平面 II"
+    assert panels["rotor"].scales == (("l", 0.02),) and panels["polygonI"].scales == (("W", 0.1),)
+    texts = {i.text for p in sheet.panels for i in p.items if isinstance(i, Label)}
+    assert {"m_{b}^{I}", "m_{b}^{II}", "m_{1}", "W_{1}^{I}", "W_{b}^{II}"} <= texts
+    assert not any("_" in t.replace("_{", "") for t in texts)
+    centre = [i for i in panels["rotor"].items + panels["side"].items if isinstance(i, Segment) and i.dashdot]
+    assert len(centre) == 3  # two across the end view, the axis in the side view
+    assert panels["polygonI"].notes[1] == "m_{b}r_{b} = 2.783 kg·m, θ_{b} = 5.942°, m_{b} = 5.566 kg"

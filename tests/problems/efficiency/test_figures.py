@@ -9,7 +9,7 @@ import sys
 import pytest
 
 from graphmech.problems.efficiency.check import analyse_efficiency, efficiency_figure
-from graphmech.drawing.primitives import Arrow, Segment
+from graphmech.drawing.primitives import Arrow, Label, Segment
 from graphmech.scene import load_scene
 from tests.conftest import ROOT, SCENES, run_cli
 
@@ -28,7 +28,7 @@ def test_polygon_panels_hold_the_ideal_dashed_and_the_real_bold():
     bold = [i for i in poly.items if isinstance(i, Arrow) and i.role == "result"]
     dashed = [i for i in poly.items if isinstance(i, Segment) and i.dashed]
     assert len(bold) == 4 and len(dashed) == 6  # F, R12, R32, R31 bold (Q given); two ideal triangles
-    assert any("μF = 25 N/mm" in n for n in poly.notes)
+    assert any("μ_{F} = 25 N/mm" in n for n in poly.notes) and poly.scales == (("F", 25.0),)
     f_arrow = next(i for i in poly.items if isinstance(i, Arrow) and any(
         getattr(l, "text", "") == "F" and l.anchor == ((i.p0[0] + i.p1[0]) / 2, (i.p0[1] + i.p1[1]) / 2)
         for l in poly.items))
@@ -80,7 +80,7 @@ def test_a_long_chain_of_machines_wraps_on_its_page(tmp_path):
 def test_force_names_take_their_numbers_as_subscripts():
     from graphmech.problems.efficiency.figures import force_name
 
-    assert (force_name("R12"), force_name("F0"), force_name("R31"), force_name("Q")) == ("R₁₂", "F₀", "R₃₁", "Q")
+    assert (force_name("R12"), force_name("F0"), force_name("R31"), force_name("Q")) == ("R_{12}", "F_{0}", "R_{31}", "Q")
 
 
 def test_polygon_items_draw_the_real_sides_once_and_the_ideal_ones_dashed():
@@ -92,7 +92,7 @@ def test_polygon_items_draw_the_real_sides_once_and_the_ideal_ones_dashed():
     items = polygon_items(s.polygons)
     arrows = [i for i in items if isinstance(i, Arrow)]
     labels = {i.text for i in items if isinstance(i, Label)}
-    assert len(arrows) == 5 and labels == {"Q", "F", "R₁₂", "R₃₂", "R₃₁"}  # R21 is R12 reversed: not again
+    assert len(arrows) == 5 and labels == {"Q", "F", "R_{12}", "R_{32}", "R_{31}"}  # R21 is R12 reversed: not again
     assert sum(isinstance(i, Segment) and i.dashed for i in items) == 6  # the two ideal triangles
     forces = {"F": s.F, **dict(s.reactions)}
     for a in arrows:
@@ -100,7 +100,7 @@ def test_polygon_items_draw_the_real_sides_once_and_the_ideal_ones_dashed():
                     i.anchor == ((a.p0[0] + a.p1[0]) / 2, (a.p0[1] + a.p1[1]) / 2))
         if name != "Q":
             assert a.role == "result"
-            assert math.dist(a.p0, a.p1) * 25.0 == pytest.approx(forces[name.translate(str.maketrans("₁₂₃", "123"))],
+            assert math.dist(a.p0, a.p1) * 25.0 == pytest.approx(forces[name.replace("_{", "").replace("}", "")],
                                                                  rel=1e-12)
         else:
             assert a.role == "given" and math.dist(a.p0, a.p1) * 25.0 == pytest.approx(1000.0, rel=1e-12)
@@ -115,4 +115,24 @@ def test_recorded_draw_calls_of_the_wedge_sheet():
     dashed = [c for c in calls if c[0] == "line" and c[4]]
     assert len(dashed) == 6 + 6 + 3  # each stroke's two ideal triangles, and the diagram's three dashes
     texts = [c[1] for c in calls if c[0] == "text"]
-    assert texts.count("μF = 25 N/mm") == 2 and "F" in texts and "R₁₂" in texts
+    assert texts.count("μ_{F} = 25 N/mm") == 2 and "F" in texts and "R_{12}" in texts
+
+
+def test_a_thread_diagram_alone_fills_its_page_and_letters_in_the_notation(tmp_path):
+    """thread.m20_lead_angles-coarse on A4: the unrolled thread (no force scale) is enlarged to fill
+    the sheet (it was 70 mm of 297); in русский its caption is the book's; d_{2} a subscript mark."""
+    from graphmech.problems.efficiency.check import analyse_efficiency, efficiency_figure
+    from graphmech.problems.efficiency.figures import MOST_ENLARGED, _extent
+    from graphmech.scene import load_scene
+
+    ref = SCENES / "thread.m20_lead_angles-coarse.toml"
+    an = analyse_efficiency(load_scene(ref))
+    [p] = efficiency_figure(an, (297.0, 210.0)).panels
+    width, _ = _extent(p.items)
+    assert 150.0 <= width <= 297.0 - 60.0 and width <= 70.0 * MOST_ENLARGED + 1e-9
+    assert p.title == "Screw thread unrolled: ψ = 2.48°"
+    assert "π·d_{2}" in {i.text for i in p.items if isinstance(i, Label)}
+    ru = tmp_path / "ru.toml"
+    ru.write_text(ref.read_text(encoding="utf-8") + '\n[page]\nnotation = "ru"\n', encoding="utf-8")
+    [q] = efficiency_figure(analyse_efficiency(load_scene(ru)), (297.0, 210.0)).panels
+    assert q.title == "Развёртка резьбы: ψ = 2.48°"

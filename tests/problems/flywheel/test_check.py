@@ -169,6 +169,7 @@ def test_a_flywheel_scene_draws_its_mechanism_at_position_1(tmp_path):
     scene = tmp_path / "fly.toml"
     scene.write_text(text, encoding="utf-8")
     svg, _ = render_scene(scene)
-    assert "position 1 (φ = 0)" in svg and "μl = " in svg and "μT = " in svg
+    seen = re.sub(r"<[^>]+>", "", svg)  # the text as read: sub- and superscripts are tspans
+    assert "position 1 (φ = 0)" in seen and "μl = " in seen and "μT = " in seen
     code, _, err = run_cli("render", str(scene), "-o", str(tmp_path / "f.svg"))
     assert code == 0, err

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from graphmech.methods.flywheel import design_flywheel
-from graphmech.problems.flywheel.figures import (CLIP_MM, MOST_NUMBERS, PANELS, count_every, flywheel_sheet,
-                                                inertia_phi_scale, panel_members)
+from graphmech.problems.flywheel.figures import (CLIP_MM, ENERGY_LEAST, ENERGY_MM, MOST_NUMBERS, PANELS, count_every,
+                                                energy_factor, flywheel_sheet, inertia_phi_scale, panel_members)
 from graphmech.render.labels import boxes_overlap
 from graphmech.render.layout import layout_sheet
 from graphmech.drawing.primitives import Arrow, Circle, Label, Panel, Polyline, Segment, Sheet
@@ -16,7 +16,8 @@ from graphmech.render.recording import RecordingBackend
 from graphmech.render.sheet import draw_sheet, panel_labels, panel_shapes
 from graphmech.render.svg import render_svg
 from graphmech.render.style import DEFAULT
-from graphmech.scales import format_scale
+from graphmech.drawing.diagrams import scale_text
+from graphmech.drawing.lettering import number
 
 TAU = 2.0 * math.pi
 A3 = (420.0, 297.0)
@@ -99,14 +100,19 @@ def test_every_panel_states_its_scales(compressor):
     sheet = sheet_of(compressor)
     s, H = compressor.scales, compressor.H_mm
     notes = {p.name: " | ".join(p.notes) for p in sheet.panels}
-    assert format_scale("M", s["M"]) in notes["moment"] and format_scale("phi", s["phi"]) in notes["moment"]
+    assert "μ_{M} = 10 (N·m)/mm, μ_{φ} = 2.5 °/mm" in notes["moment"]  # as the scene states them: °/mm
     assert f"H = {H:g} mm" in notes["moment"]
-    assert format_scale("T", s["T"]).replace("μT", "μA") in notes["work"]
+    assert "μ_{A} = 13.09 J/mm" in notes["work"] and s["T"] == pytest.approx(13.0899694)  # 4 figures drawn
     for key in ("T", "J", "phi"):
-        assert format_scale(key, s[key]) in notes[WITT]
-    assert format_scale("phi", inertia_phi_scale(compressor)) in notes[WITT]  # Jп(φ)'s own μφ′
-    assert f"J_F = μT·kl/(ωm²δ) = {compressor.J_F:.6g} kg·m²" in notes[WITT]
-    assert format_scale("T", s["T"]) in notes["indicator"] and f"{compressor.J_F_indicator:.6g}" in notes["indicator"]
+        assert scale_text(key, s[key]) in notes[WITT]
+    assert scale_text("phi", inertia_phi_scale(compressor), "′") in notes[WITT]  # J(φ)'s own μφ′
+    assert f"J_{{F}} = μ_{{T}}·kl/(ω_{{m}}^{{2}}δ) = {number(compressor.J_F)} kg·m^{{2}}" in notes[WITT]
+    assert scale_text("T", s["T"]) in notes["indicator"] and number(compressor.J_F_indicator) in notes["indicator"]
+    # every panel's paper scales, for the scale bars
+    scales = {p.name: dict(p.scales) for p in sheet.panels}
+    assert scales["moment"] == {"M": s["M"], "phi": s["phi"]} and scales["work"] == {"T": s["T"], "phi": s["phi"]}
+    assert scales[WITT]["T"] == s["T"] and scales[WITT]["J"] == s["J"]
+    assert [v for k, v in panel(sheet, WITT).scales if k == "phi"] == [s["phi"], inertia_phi_scale(compressor)]
     # the captions are printed under the panels
     printed = {c[1] for c in record(sheet) if c[0] == "text" and c[6] == "text"}
     assert all(n in printed for p in sheet.panels for n in p.notes)
@@ -114,12 +120,12 @@ def test_every_panel_states_its_scales(compressor):
 
 def test_axes_are_arrows_with_their_names(compressor):
     sheet = sheet_of(compressor)
-    for name, symbols in (("moment", {"φ", "Mп"}), ("work", {"φ", "A"}), (WITT, {"φ", "ΔT", "Jп"})):
+    for name, symbols in (("moment", {"φ", "M_{red}"}), ("work", {"φ", "A"}), (WITT, {"φ", "ΔT", "J_{red}"})):
         p = panel(sheet, name)
         assert symbols <= set(texts(p))
         assert sum(isinstance(i, Arrow) and i.role == "label" for i in p.items) >= 2
     witt = panel(sheet, WITT)
-    assert texts(witt).count("ΔT") == 2 and texts(witt).count("Jп") == 2  # ΔT(φ), Jп(φ) and the diagram
+    assert texts(witt).count("ΔT") == 2 and texts(witt).count("J_{red}") == 2  # ΔT(φ), J(φ) and the diagram
 
 
 # ----------------------------------------------------------------------------- Mп and its integration
@@ -140,7 +146,7 @@ def test_moment_diagram_pole_rays_and_the_constant_moment(compressor):
     assert (ray.p1[1] - 0.0) / H == pytest.approx(d.balance_work_mm[-1] / g.x_mm[-1])
     [line] = [i for i in p.items if isinstance(i, Segment) and i.role == "result"]
     assert line.p0 == (0.0, d.balancing_mm) and line.p1 == (g.x_mm[-1], d.balancing_mm)
-    assert "Mд" in texts(p) and "P" in texts(p) and "H" in texts(p)
+    assert "M_{d}" in texts(p) and "P" in texts(p) and "H" in texts(p)
 
 
 def test_positions_are_numbered_on_the_phi_axes(compressor):
@@ -167,7 +173,7 @@ def test_work_diagram_chords_parallel_to_the_rays_and_the_constant_moments_line(
         assert s == pytest.approx((r.p1[1] - r.p0[1]) / (r.p1[0] - r.p0[0]), abs=1e-12)
     [line] = [i for i in p.items if isinstance(i, Segment) and i.role == "result" and i.dashed]
     assert line.p0 == (0.0, 0.0) and line.p1 == (pytest.approx(d.moment.x_mm[-1]), pytest.approx(-d.work_mm[-1]))
-    assert {"Aп", "Aд"} <= set(texts(p))
+    assert {"A_{red}", "A_{d}"} <= set(texts(p))
 
 
 def test_a_constant_resistance_is_named_mc():
@@ -175,7 +181,7 @@ def test_a_constant_resistance_is_named_mc():
     d = design_flywheel(phi, np.zeros(24), 200.0 * np.sin(phi) ** 2, cycle=math.pi, omega_m=60.0, delta=0.02,
                         balance="resisting", need=("wittenbauer",))
     sheet = sheet_of(d, ["moment", "work"])
-    assert "Mс" in texts(panel(sheet, "moment")) and "Aс" in texts(panel(sheet, "work"))
+    assert "M_{r}" in texts(panel(sheet, "moment")) and "A_{r}" in texts(panel(sheet, "work"))
 
 
 # ----------------------------------------------------------------------------- ΔT(φ), Jп(φ) beside the diagram
@@ -235,7 +241,7 @@ def test_tangents_have_the_slopes_of_psi_and_cut_the_axis_at_k_and_l(compressor)
     k = next(i for i in labels(p) if i.text == "k")
     l_ = next(i for i in labels(p) if i.text == "l")
     assert k.anchor == (0.0, w.k_mm) and l_.anchor == (0.0, w.l_mm)
-    assert {"ψₘₐₓ", "ψₘᵢₙ", "kl"} <= set(texts(p))
+    assert {"ψ_{max}", "ψ_{min}", "kl"} <= set(texts(p))
     # on the page: two bold lines of slopes −tan ψ (y down), and the k, l ticks where the panel puts them
     calls = group(record(sheet), WITT)
     bold = [c for c in calls if c[0] == "line" and c[3] == "result"]
@@ -264,9 +270,9 @@ def test_far_intercepts_clip_the_tangents_and_are_written_out():
     bottom = w.y_mm.min() - CLIP_MM
     tangents = [i for i in p.items if isinstance(i, Segment) and i.role == "result"]
     assert len(tangents) == 2 and all(min(t.p0[1], t.p1[1]) == pytest.approx(bottom) for t in tangents)
-    assert {f"k = {w.k_mm:.1f} mm", f"l = {w.l_mm:.1f} mm"} <= set(texts(p))
+    assert {f"k = {number(w.k_mm)} mm", f"l = {number(w.l_mm)} mm"} <= set(texts(p))
     assert "k" not in texts(p) and "kl" not in texts(p)
-    assert f"kl = {w.kl_mm:.4g} mm" in " ".join(p.notes)
+    assert f"kl = {number(w.kl_mm)} mm" in " ".join(p.notes)
 
 
 def test_many_positions_are_numbered_every_kth():
@@ -284,14 +290,18 @@ def test_energy_indicator_chain_and_delta_w_max(compressor):
     e = compressor.indicator
     p = panel(sheet_of(compressor, ["indicator"]), "indicator")
     vectors = [i for i in p.items if isinstance(i, Arrow) and i.role == "result"]
-    assert [a.p1[1] - a.p0[1] for a in vectors] == pytest.approx(list(e.vectors_mm))
+    k = energy_factor(compressor)  # 16.4 mm at μT is too low to read: drawn at μT′ = μT/3
+    assert k == 3 and ENERGY_LEAST <= k * e.dW_max_mm <= ENERGY_MM
+    assert dict(p.scales)["T"] == pytest.approx(compressor.scales["T"] / 3)
+    assert any(n.startswith("μ_{T}′ = μ_{T}/3 = 4.363 J/mm") for n in p.notes)
+    assert [a.p1[1] - a.p0[1] for a in vectors] == pytest.approx(list(k * e.vectors_mm))
     assert all(a.p0[0] == a.p1[0] for a in vectors)  # vertical
     for a, b in zip(vectors[:-1], vectors[1:]):  # head to tail, one level
         assert a.p1[1] == b.p0[1] and b.p0[0] > a.p0[0]
     assert vectors[-1].p1[1] == vectors[0].p0[1]  # back at a's level: a′
     dims = [i for i in p.items if isinstance(i, Arrow) and i.role == "label"]
-    assert max(a.p1[1] for a in dims) - min(a.p1[1] for a in dims) == pytest.approx(e.dW_max_mm)
-    assert {"ΔWₘₐₓ", "a", "b", "a′", "f₁", "f₂"} <= set(texts(p))
+    assert max(a.p1[1] for a in dims) - min(a.p1[1] for a in dims) == pytest.approx(k * e.dW_max_mm)
+    assert {"ΔW_{max}", "a", "b", "a′", "f_{1}", "f_{2}"} <= set(texts(p))
 
 
 # ----------------------------------------------------------------------------- the whole sheet

@@ -497,7 +497,7 @@ MOMENT_LOAD = 'phi_deg = [0, 180, 180, 360]'
          'a flywheel scene\'s driver is a crank (type = "crank"): the machine is reduced to its crank'),
         # the header and the other tables
         (replace(C, '"indicator"]', '"indicator", "velocity"]'), "show[6]",
-         "unknown value 'velocity': use mechanism, moment, work, energy, inertia, wittenbauer, indicator or rundown"),
+         "unknown value 'velocity': use mechanism, moment, work, energy, inertia, wittenbauer, indicator, motion or rundown"),
         (C + '\n[measured]\n"Jp@13" = 0.06\n', "measured.Jp@13", "no position 13: the positions are numbered 1 … 12"),
         (C + "\n[scales]\nM_J_per_mm = 10\n", "scales.M_J_per_mm",
          "J_per_mm is not a unit of a moment; write M_Nm_per_mm or M_kNm_per_mm"),
@@ -550,7 +550,7 @@ def test_without_a_linkage() -> None:
     )
     assert only(ENGINE.replace('show = ["moment", "energy"]', 'show = ["mechanism"]')) == (
         "show[0]",
-        "unknown value 'mechanism': use moment, work, energy, inertia, wittenbauer, indicator or rundown",
+        "unknown value 'mechanism': use moment, work, energy, inertia, wittenbauer, indicator, motion or rundown",
     )
     assert only(ENGINE.replace('find = ["Mr", "DeltaW_max", "J_F"]', 'find = ["J_F@13"]')) == (
         "find[0]",

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import dataclasses
+import math
 import re
 import tomllib
 
@@ -64,3 +65,64 @@ def test_loads_no_constant_moment_balances_are_refused_at_balance():
     ((path, reason),) = info.value.problems
     assert path == "flywheel.balance"
     assert reason.startswith("the loads deliver 13.7466 J over a cycle: a constant driving moment cannot balance")
+
+
+def _in_notation(path, notation: str) -> str:
+    """The reference scene's text with ``[page] notation`` set."""
+    text = path.read_text(encoding="utf-8")
+    return re.sub(r"\[page\]\n", f'[page]\nnotation = "{notation}"\n', text)
+
+
+def test_the_notation_changes_the_drawn_symbols_and_captions_never_the_check(tmp_path):
+    """fly.ic_engine_flywheel in 中文 and русский: the reduced moment is drawn M_{e} / M_{п} (never the
+    Russian "Mп" read as "Mn" in English), the captions are the book's; check prints the same bytes."""
+    from tests.conftest import run_cli
+
+    ref = SCENES / "fly.ic_engine_flywheel.toml"
+    drawn = {}
+    for notation in ("en", "zh", "ru"):
+        sheet, _ = scene_sheet(scene(_in_notation(ref, notation)), ())
+        drawn[notation] = {p.name: (p.title, {i.text for i in p.items if hasattr(i, "text")}) for p in sheet.panels}
+    assert "M_{red}" in drawn["en"]["moment"][1] and "M_{r}" in drawn["en"]["moment"][1]
+    assert "M_{e}" in drawn["zh"]["moment"][1] and "M_{er}" in drawn["zh"]["moment"][1]
+    assert "M_{п}" in drawn["ru"]["moment"][1] and "M_{с}" in drawn["ru"]["moment"][1]
+    assert "ΔE" in drawn["zh"]["energy"][1] and "ΔT" in drawn["ru"]["energy"][1]
+    assert drawn["zh"]["moment"][0] == "等效力矩 M_{e}(φ) 及其图解积分"
+    assert drawn["zh"]["indicator"][0] == "能量指示图"
+    assert drawn["ru"]["moment"][0] == "Приведённый момент M_{п}(φ), графическое интегрирование"
+    assert drawn["en"]["moment"][0] == "Reduced moment M_{red}(φ), integrated by chords"
+    # no composed text carries a bare "_" nor the Cyrillic п outside a mark
+    for notation in drawn:
+        for title, texts in drawn[notation].values():
+            for t in texts | {title}:
+                assert re.sub(r"_\{[^}]*\}", "", t).count("_") == 0, t
+                assert "Mп" not in t and "Jп" not in t
+    outputs = set()
+    for notation in ("en", "zh", "ru"):
+        path = tmp_path / f"fly-{notation}.toml"
+        path.write_text(_in_notation(ref, notation), encoding="utf-8")
+        code, out, _ = run_cli("check", str(path))
+        assert code == 0
+        outputs.add(out)
+    assert len(outputs) == 1 and "Mr " in next(iter(outputs))  # the find name stays Mr
+
+
+def test_the_stiff_sheet_draws_omega_of_the_true_motion():
+    """fly.compressor_course_project-stiff: ω(φ) of the motion the check solves (Radau), the φ axis at ω_m,
+    at a round μω that spreads ω_max − ω_min (5.2e-5 rad/s) over tens of mm; closed over the cycle."""
+    from graphmech.drawing.primitives import Polyline, Segment
+
+    sc = scene((SCENES / "fly.compressor_course_project-stiff.toml").read_text(encoding="utf-8"))
+    assert "motion" in sc.show
+    sheet, _ = scene_sheet(sc, ())
+    [p] = [p for p in sheet.panels if p.name == "motion"]
+    scales = dict(p.scales)
+    assert scales["omega"] == 2e-6 and scales["phi"] == pytest.approx(math.radians(2.5))
+    [curve] = [i for i in p.items if isinstance(i, Polyline)]
+    y = [pt[1] for pt in curve.points]
+    levels = sorted(i.p0[1] for i in p.items if isinstance(i, Segment) and i.dashed)
+    assert min(y) == pytest.approx(levels[0], abs=0.05) and max(y) == pytest.approx(levels[1], abs=0.05)
+    assert levels[1] - levels[0] > 20.0  # readable: ω_max − ω_min over 20 mm
+    assert y[0] == pytest.approx(y[-1], abs=0.01)  # periodic
+    assert curve.points[-1][0] == pytest.approx(360.0 / 2.5)
+    assert p.notes[0] == "μ_{ω} = 2×10^{−6} (rad/s)/mm, μ_{φ} = 2.5 °/mm"
