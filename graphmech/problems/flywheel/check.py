@@ -465,8 +465,11 @@ def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, floa
         ind = ex.indicator()
         if base == "J_mean":
             return float(d.J_mean), float(ind.J_mean), None, 1.0, False
-        if base == "DeltaW_max":
-            return float(d.DeltaW_max), float(ind.delta_W), float(d.DeltaW_max) / mu_T, mu_T, False
+        if base == "DeltaW_max":  # measured on the indicator as drawn: at μT′ = μT/k when enlarged
+            from graphmech.problems.flywheel.figures import energy_factor
+
+            mu_ind = mu_T / energy_factor(d)
+            return float(d.DeltaW_max), float(ind.delta_W), float(d.DeltaW_max) / mu_ind, mu_ind, False
         return float(d.J_F_indicator), float(ind.J_F), None, mu_T / (wm * wm * delta), False
     if base in ("omega_max", "omega_min", "n_max", "n_min"):
         hi = base.endswith("max")

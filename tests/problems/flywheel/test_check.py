@@ -173,3 +173,20 @@ def test_a_flywheel_scene_draws_its_mechanism_at_position_1(tmp_path):
     assert "position 1 (φ = 0)" in seen and "μl = " in seen and "μT = " in seen
     code, _, err = run_cli("render", str(scene), "-o", str(tmp_path / "f.svg"))
     assert code == 0, err
+
+
+def test_delta_w_max_is_read_on_the_indicator_as_drawn_at_its_enlarged_scale() -> None:
+    """The indicator of fly.ic_engine_flywheel is drawn at μT′ = μT/6 (7 mm would be unreadable):
+    the row's drawn length and μ are those of the drawing, so drawn × μ is still the value."""
+    from graphmech.problems.flywheel.figures import energy_factor
+    from graphmech.scene import load_scene
+    from graphmech.problems import KINDS
+    from tests.conftest import SCENES, check_json
+
+    scene = load_scene(SCENES / "fly.ic_engine_flywheel.toml")
+    design = KINDS[scene.kind].analyse(scene, {}).design
+    [row] = [q for q in check_json(SCENES / "fly.ic_engine_flywheel.toml")["quantities"] if q["name"] == "DeltaW_max"]
+    assert energy_factor(design) == 6
+    assert row["scale"] == pytest.approx(design.scales["T"] / 6, rel=1e-12)
+    assert row["drawn_mm"] * row["scale"] == pytest.approx(row["graphical"], rel=1e-12)
+    assert row["drawn_mm"] > 40.0
