@@ -49,8 +49,9 @@ if TYPE_CHECKING:
 #: Mechanism point (m, as a complex number) → drawing (mm).
 ToMm = Callable[[complex], tuple[float, float]]
 
-#: Longest and shortest arrow of a free body or of the loads on the mechanism, mm (not to scale).
-ARROW_LONG, ARROW_SHORT = 16.0, 5.0
+#: Longest and shortest arrow of a free body or of the loads on the mechanism, mm (not to scale):
+#: the shortest long enough to carry its letter beside it.
+ARROW_LONG, ARROW_SHORT = 18.0, 8.0
 #: How far a polygon's closing line runs past the vertex it finds, mm.
 CLOSING_OVERRUN = 8.0
 #: The shortest vector a student reads to ±0.5 mm within 5 %, mm (FIGURES.md: 10–20 mm).
@@ -63,6 +64,9 @@ DETAIL_FACTORS = tuple(m * 10.0 ** k for k in range(5) for m in (1.0, 2.0, 2.5, 
 #: A friction circle under this radius on the paper is hidden by the pin (a hinge is 1.2 mm):
 #: it is enlarged, by a round factor, to at least ``FRICTION_DRAWN_MM``.
 FRICTION_VISIBLE_MM, FRICTION_DRAWN_MM = 1.0, 2.5
+#: A polygon's vector shorter than this on the paper is drawn as no vector (a tangential component
+#: of 0.003 mm: its 2.8 mm head would point anywhere); the chain runs on through its end.
+DRAWN_MIN_MM = 0.1
 #: Label size of the vectors and points, mm (the issue's rule: text ≥ 3.5 mm, scripts ≥ 2.5 mm).
 TEXT_MM = 3.5
 
@@ -274,8 +278,10 @@ def loads_items(build: LinkageConstruction, kin: PolygonKinematics, sol: Kinetos
     for c in model.couples:  # the scene's own moments on links (a resisting moment M_r …)
         items += _moment_arc(_middle(kin, links[c.link], i, to_mm), c.moment, c.name, 4.0)
     d = linkage.driver
-    if isinstance(d, Crank):
-        items += _moment_arc(pos[d.pivot], float(sol.balancing_moment[i]), "M_b", 9.0)
+    if isinstance(d, Crank):  # round the crank's friction circle, if drawn
+        circle = max((friction * fr.rho / build.mu_l for fr in model.revolute_friction if fr.point == d.pivot),
+                     default=0.0)
+        items += _moment_arc(pos[d.pivot], float(sol.balancing_moment[i]), "M_b", max(9.0, circle + 3.0))
     elif sol.balancing_force is not None and float(sol.balancing_force[i]) != 0.0:
         f_b = float(sol.balancing_force[i]) * complex(math.cos(d.guide.angle), math.sin(d.guide.angle))
         items += _arrows([("F_b", f_b, complex(kin.point[d.point][i]))], to_mm, abs(f_b), "result")
@@ -389,12 +395,13 @@ class Detail:
     shown: tuple[str, ...]
 
 
-def _laid_off(group: GroupPolygon, mu_F: float, i: int) -> list[tuple[str, complex, complex]]:
-    """(name, start, vector) of the polygon's drawn vectors, mm at μF, head to tail from o."""
+def _laid_off(group: GroupPolygon, mu_F: float, i: int, least: float = DRAWN_MIN_MM) -> list[tuple[str, complex, complex]]:
+    """(name, start, vector) of the polygon's drawn vectors, mm at μF, head to tail from o (those
+    under ``least`` mm at μF left out)."""
     out, vertex = [], 0j
     for name, vec in group.chain:
         v = complex(vec[i]) / mu_F
-        if abs(v) > 1e-9:
+        if abs(v) >= least:
             out.append((name, vertex, v))
         vertex = vertex + v
     return out
@@ -505,7 +512,7 @@ def detail_items(group: GroupPolygon, mu_F: float, i: int, detail: Detail) -> li
     middle of the part drawn."""
     f = detail.factor
     items: list[Primitive] = []
-    for name, s, v in _laid_off(group, mu_F, i):
+    for name, s, v in _laid_off(group, mu_F, i, DRAWN_MIN_MM / f):
         part = _clip(s, s + v, detail.box)
         if part is None:
             continue
