@@ -50,8 +50,8 @@ if TYPE_CHECKING:
 ToMm = Callable[[complex], tuple[float, float]]
 
 #: Longest and shortest arrow of a free body or of the loads on the mechanism, mm (not to scale):
-#: the shortest long enough to carry its letter beside it.
-ARROW_LONG, ARROW_SHORT = 18.0, 8.0
+#: the shortest as long as a vector to scale is at least (READ_MIN_MM), with room for its letter.
+ARROW_LONG, ARROW_SHORT = 18.0, 10.0
 #: How far a polygon's closing line runs past the vertex it finds, mm.
 CLOSING_OVERRUN = 8.0
 #: The shortest vector a student reads to ±0.5 mm within 5 %, mm (FIGURES.md: 10–20 mm).
