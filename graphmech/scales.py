@@ -54,6 +54,32 @@ def round_scale(minimum: float) -> float:
     return float(f"1e{k + 1}")
 
 
+def round_scale_below(most: float) -> float:
+    """The largest round scale (1, 2, 2.5, 5 × 10^k) that is ≤ ``most`` (> 0): the coarsest
+    scale that still draws a length at least as long as ``most`` asks.
+
+    >>> round_scale_below(3.214), round_scale_below(2.5), round_scale_below(0.0078)
+    (2.5, 2.5, 0.005)
+    """
+    if not (most > 0.0 and math.isfinite(most)):
+        raise OutOfDomain(f"a scale must be positive and finite, not {most!r}")
+    k = math.floor(math.log10(most))
+    for m in reversed(ROUND_MANTISSAS):
+        value = float(f"{m}e{k}")
+        if value <= most * (1 + 1e-12):
+            return value
+    return float(f"1e{k - 1}")  # (not reached: 1e{k} ≤ most)
+
+
+def is_round_scale(value: float) -> bool:
+    """True for 1, 2, 2.5, 5 × 10^k (to round-off).
+
+    >>> is_round_scale(2.5), is_round_scale(1.25), is_round_scale(0.25)
+    (True, False, True)
+    """
+    return value > 0.0 and math.isfinite(value) and abs(round_scale(value) - value) <= 1e-9 * value
+
+
 def format_scale(symbol: str, value: float) -> str:
     """The note written on a drawing, e.g. ``μv = 0.005 (m/s)/mm``.
 

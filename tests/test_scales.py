@@ -8,6 +8,8 @@ import pytest
 
 from graphmech.scales import (DRAWN_SIZE_RANGE_MM, PAPER, PHI_AXIS_RANGE_MM, SCALE_INFO, drawn_size_problem,
                               format_scale, phi_axis_problem, round_scale, scale_out_of_range)
+from graphmech.errors import OutOfDomain
+from graphmech.scales import is_round_scale, round_scale_below
 
 
 @pytest.mark.parametrize("minimum, scale", [
@@ -16,6 +18,21 @@ from graphmech.scales import (DRAWN_SIZE_RANGE_MM, PAPER, PHI_AXIS_RANGE_MM, SCA
 ])
 def test_the_smallest_round_scale_not_below_the_minimum(minimum, scale):
     assert round_scale(minimum) == scale
+
+
+@pytest.mark.parametrize("most, scale", [(3.214, 2.5), (2.5, 2.5), (17.48, 10.0), (0.0099, 0.005), (1.0, 1.0),
+                                         (9.99, 5.0), (1.99e-7, 1e-7)])
+def test_the_largest_round_scale_not_above_the_most(most, scale):
+    # μF that draws a 32.14 N force at least 10 mm long: 2.5 N/mm, not 5
+    assert round_scale_below(most) == scale and is_round_scale(scale)
+    assert scale <= most < round_scale(scale * 1.01)  # the next round scale up is too coarse
+
+
+def test_a_round_scale_is_known_as_one():
+    assert [is_round_scale(x) for x in (0.25, 1e-9, 50.0, 1.25, 3.0, 0.0, float("inf"))] == [
+        True, True, True, False, False, False, False]
+    with pytest.raises(OutOfDomain):
+        round_scale_below(0.0)
 
 
 def test_round_scales_are_exact_decimals():

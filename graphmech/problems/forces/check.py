@@ -39,7 +39,7 @@ from graphmech.methods.kinetostatics import (
     kinetostatics,
     zhukovsky_lever,
 )
-from graphmech.scales import round_scale
+from graphmech.scales import round_scale, round_scale_below
 from graphmech.tolerances import COND_WARN
 
 if TYPE_CHECKING:
@@ -89,6 +89,9 @@ class ForceAnalysis:
     verdicts: list[Verdict] = field(default_factory=list)
     ill: dict[int, bool] = field(default_factory=dict)  # position → some polygon is ill-conditioned
     spill_mm: float = 0.0  # how far the force sheet runs off its page at the chosen scales
+    #: The force polygons' details (their short vectors drawn again larger) are drawn: they give
+    #: way first where the sheet does not fit its page (the check table names those vectors).
+    details: bool = True
 
     @property
     def build(self) -> LinkageConstruction:
@@ -133,6 +136,14 @@ def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, fl
                                          "table is still checked)")], scene.source)
         forced: dict[str, float]
         best, spill, forced = fa, _spill(fa), {}
+        details = True
+        if spill > 0.0:  # the details are the first to give way, before any drawing is made smaller
+            fa.details = False
+            s = _spill(fa)
+            if s < spill:
+                best, spill, details = fa, s, False
+            else:
+                fa.details = True
         tried: set[tuple[tuple[str, float], ...]] = set()
         keys: tuple[str, ...]
         for keys in (("l", "v"), ("F",)):  # the drawings of the mechanism first, then the polygons
@@ -145,9 +156,14 @@ def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, fl
                     continue
                 tried.add(tuple(sorted(trial.items())))
                 candidate = _analyse_forces(scene, extra_measured, trial)
+                candidate.details = details
                 s = _spill(candidate)
                 if s == 0.0 or s < spill - FIT_GAIN_MM:
                     best, spill, forced = candidate, s, trial
+        if not details and spill == 0.0:  # at the scales that fit, the details may fit too
+            best.details = True
+            if _spill(best) > 0.0:
+                best.details = False
         best.spill_mm = spill
         return best
 
@@ -217,6 +233,7 @@ def _analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, f
     _choose_force_scale(fa, forced.get("F"))
     _conditioning(fa)
     _rows(fa)
+    _short_vectors(fa)
     fa.verdicts = list(judge(an, None)) if (measured or extra_kin) else []
     fa.verdicts += _judge_forces(fa, force_measured)
     return fa
@@ -235,11 +252,51 @@ def _largest_force(fa: ForceAnalysis) -> float:
     return largest
 
 
+#: The share of the page's shorter side the largest force polygon may take when μF is chosen
+#: finer than the usual 70 mm polygon so that the forces asked for are readable (the sheet's
+#: fit makes it coarser still where the panels do not fit).
+POLYGON_PAGE_SHARE = 0.5
+
+
+def _asked_forces(fa: ForceAnalysis) -> list[tuple[str, float]]:
+    """(row name, |F| in N) of every force vector the scene asks for, at every position solved:
+    the lengths a student measures on the polygons (a force that is zero is no vector)."""
+    out: list[tuple[str, float]] = []
+    multi = len(fa.labels) > 1
+    size = _characteristic_force(fa)
+    for raw in fa.scene.find:
+        base, at = split_name(raw)
+        if not is_force_name(base) or _known(fa, base) is not None or (at is not None and at not in fa.labels):
+            continue
+        for i in ([fa.labels.index(at)] if at is not None else range(len(fa.labels))):
+            if not _ok(fa, i):
+                continue
+            drawn, _, g, _, unit = _value(fa, base, i)
+            if unit == "N" and drawn is not None and math.isfinite(g) and abs(g) > 1e-9 * size:
+                out.append((f"{base}@{fa.labels[i]}" if multi else base, abs(float(g))))
+    return out
+
+
 def _choose_force_scale(fa: ForceAnalysis, forced: float | None = None) -> None:
+    """μF: the scene's; else the round scale that draws the largest force polygon about
+    ``POLYGON_ROOM_MM`` long — or finer, down to the one that draws every force asked for at least
+    10 mm long (±0.5 mm of reading within 5 %), as far as the page allows."""
+    from graphmech.problems.forces.figures import READ_MIN_MM
+
     largest = _largest_force(fa)
     mu = fa.scene.problem.mu_F
     if mu is None:
-        fa.scales["F"] = forced or (round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0)
+        if forced:
+            fa.scales["F"] = forced
+            return
+        chosen = round_scale(largest / POLYGON_ROOM_MM) if largest > 0 else 1.0
+        fa.scales["F"] = chosen  # (the lengths below are forces in N, whatever μF)
+        shortest = min((g for _, g in _asked_forces(fa)), default=0.0)
+        if shortest > 0 and shortest / chosen < READ_MIN_MM:
+            room = POLYGON_PAGE_SHARE * min(page_size(fa.scene))
+            finer = max(round_scale_below(shortest / READ_MIN_MM), round_scale(largest / room))
+            chosen = min(chosen, finer)
+        fa.scales["F"] = chosen
         return
     fa.scales["F"], fa.stated = mu, fa.stated | {"F"}
     drawn = largest / mu
@@ -248,6 +305,36 @@ def _choose_force_scale(fa: ForceAnalysis, forced: float | None = None) -> None:
                                           f"μF so that it is {POLYGON_RANGE_MM[0]:g} … {POLYGON_RANGE_MM[1]:g} mm "
                                           f"(about {round_scale(largest / POLYGON_ROOM_MM):g} N/mm)")],
                          fa.scene.source)
+
+
+#: The most short vectors a warning names one by one.
+SHORT_NAMED = 6
+
+
+def _short_vectors(fa: ForceAnalysis) -> None:
+    """Warn of the forces asked for that μF draws shorter than 10 mm, each with its reading error
+    (the drawing precision, ±0.5 mm, over its length): a stated μF that does it is the scene's to
+    change; a chosen one does it only where a finer round μF would not fit the page."""
+    from graphmech.problems.forces.figures import READ_MIN_MM
+
+    mu = fa.scales["F"]
+    short = sorted(((name, g / mu) for name, g in _asked_forces(fa) if g / mu < READ_MIN_MM), key=lambda s: s[1])
+    if not short:
+        return
+    prec = fa.scene.precision_mm
+    named = ", ".join(f"{name} {length:.3f} mm (±{100.0 * prec / length:.2g} %)" for name, length in short[:SHORT_NAMED])
+    more = f" and {len(short) - SHORT_NAMED} more" if len(short) > SHORT_NAMED else ""
+    if "F" in fa.stated:
+        how = (f"μF = {mu:g} N/mm (stated) draws {len(short)} of the forces asked for shorter than "
+               f"{READ_MIN_MM:g} mm")
+        fix = (f"; μF = {round_scale_below(short[0][1] * mu / READ_MIN_MM):g} N/mm draws them all at least "
+               f"{READ_MIN_MM:g} mm long")
+    else:
+        how = (f"μF = {mu:g} N/mm (chosen: a finer round scale does not fit the page) draws {len(short)} of the "
+               f"forces asked for shorter than {READ_MIN_MM:g} mm")
+        fix = ""
+    fa.warnings.append(f"{how}, where reading to ±{prec:g} mm errs by more than "
+                       f"{100.0 * prec / READ_MIN_MM:.2g} %: {named}{more}{fix}")
 
 
 def _conditioning(fa: ForceAnalysis) -> None:
@@ -516,6 +603,13 @@ def render_forces(scene: Scene[ForceScene], footer: tuple[str, ...] = ()) -> tup
     hint = [] if fa.spill_mm == 0.0 else [
         f"the force sheet does not fit a {page_size(scene)[0]:g} × {page_size(scene)[1]:g} mm page at any round "
         "scale (its captions and arrows take room too): give [page] size = \"A3\" or show fewer panels"]
+    if not fa.details and "force_polygons" in drawn:
+        from graphmech.problems.forces.figures import polygon_detail
+
+        if any(polygon_detail(g, fa.scales["F"], 0) is not None for g in fa.solution.groups):
+            hint.append(f"the details of the force polygons (their vectors under 10 mm drawn larger) do not fit a "
+                        f"{page_size(scene)[0]:g} × {page_size(scene)[1]:g} mm page and are left out: give a larger "
+                        "[page] size to have them drawn")
     return _sheet(fa, footer), list(fa.warnings) + hint
 
 
@@ -537,7 +631,8 @@ def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Sheet:
     if not drawn:
         return Sheet(scene.title, tuple(head), page_size(scene), footer)
     return force_sheet(scene.title, b, fa.kin, fa.solution, scene.problem.model, fa.lever, fa.scales["F"],
-                       drawn, 0, position_text(b, an.labels[0]), page_size(scene), head, footer)
+                       drawn, 0, position_text(b, an.labels[0]), page_size(scene), head, footer,
+                       scene.page.notation, fa.details)
 
 
 __all__ = ["ForceAnalysis", "analyse_forces", "is_force_name", "FORCE_NAME", "render_forces", "FORCE_PANELS"]
