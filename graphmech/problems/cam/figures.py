@@ -144,7 +144,7 @@ def scale_note(key: str, value: float, angular: bool = False) -> str:
     return f"μ{symbol} = {value:.6g} {UNITS[key][int(angular)]}"
 
 
-def drawn_scale(key: str, value: float, angular: bool = False) -> tuple[str, float]:
+def drawn_scale(key: str, value: float, angular: bool = False) -> tuple[str, str]:
     """A panel's scale as its drawing states it (4 significant figures, an angle per mm in
     degrees) and its key in graphmech.scales.SCALE_INFO, for the graphic scale bar:
     ``("μψ = 0.5 °/mm", "psi")`` for an oscillating follower's swing; the check keeps
