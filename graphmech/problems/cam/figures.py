@@ -431,7 +431,7 @@ def profile_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, *, roller_circ
     marked = _mark_items(cam, drawn, mu_l, ok, marks or {}, notation, fine)
     return (items + [m for m in marked if not isinstance(m, Label)]
             + [Label("O", origin, ((0.0, -1.0), (1.0, 0.0), (-1.0, 0.0), (0.0, 1.0)), TEXT),
-               Label("ω", arc.points(2)[1], (), TEXT)]
+               Label("ω", arc.points(2)[1], ((1.0, 0.0), (-1.0, 0.0), (0.0, -1.0)), TEXT)]  # off the arc, inside it
             + [m for m in marked if isinstance(m, Label)] + labels)
 
 
