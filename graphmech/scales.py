@@ -32,6 +32,8 @@ SCALE_INFO = {
     "a": ("μa", "(m/s²)/mm"),
     "s": ("μs", "m/mm"),
     "phi": ("μφ", "°/mm"),  # kept in rad/mm, written in degrees per mm as books do
+    "psi": ("μψ", "°/mm"),  # an oscillating follower's swing, kept in rad/mm, written like φ
+    "epsilon": ("με", "(rad/s²)/mm"),  # an angular acceleration (ω has "omega")
     "M": ("μM", "(N·m)/mm"),
     "J": ("μJ", "(kg·m²)/mm"),
     "T": ("μT", "J/mm"),
@@ -87,7 +89,7 @@ def format_scale(symbol: str, value: float) -> str:
     'μφ = 2 °/mm'
     """
     sym, unit = SCALE_INFO[symbol]
-    if symbol == "phi":
+    if symbol in ("phi", "psi"):
         value = math.degrees(value)
     return f"{sym} = {value:.6g} {unit}"
 

@@ -85,3 +85,12 @@ def test_a_whole_turns_phi_axis_fits_a_drawing():
     assert phi_axis_problem(2 * math.pi / hi) is None and phi_axis_problem(2 * math.pi / lo) is None
     assert phi_axis_problem(math.radians(72)) == ("μφ makes the φ axis of a turn 5 mm long: choose μφ so that it "
                                                   "is 10 … 2000 mm (phi_deg_per_mm = 0.18 … 36)")
+
+
+def test_an_oscillating_followers_swing_has_a_scale_in_degrees_per_mm_and_epsilon_its_own():
+    import math
+
+    from graphmech.scales import SCALE_INFO, format_scale
+
+    assert format_scale("psi", math.radians(0.5)) == "μψ = 0.5 °/mm"
+    assert SCALE_INFO["epsilon"] == ("με", "(rad/s²)/mm") and SCALE_INFO["omega"][0] == "μω"

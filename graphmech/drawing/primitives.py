@@ -186,8 +186,21 @@ class Label:
     italic: bool = True
 
 
+@dataclass(frozen=True)
+class Text:
+    """Text set exactly at ``at`` — a table's cell, a box's inscription — where no placement moves
+    it: ``at`` is the middle of the line's height and, as ``anchor`` says, its start, middle or end.
+    The figure that sets it keeps it clear of its own lines."""
+
+    text: str
+    at: XY
+    size: float = 3.5  # font size, mm
+    anchor: Literal["start", "middle", "end"] = "middle"
+    italic: bool = False
+
+
 Primitive = Union[Segment, Arrow, ArcArrow, Polyline, Circle, Plate, Hinge, FixedPivot, Slider, GuideLine,
-                  Label]
+                  Label, Text]
 
 
 @dataclass(frozen=True)

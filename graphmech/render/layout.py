@@ -45,6 +45,7 @@ from graphmech.drawing.primitives import (
     Segment,
     Sheet,
     Slider,
+    Text,
 )
 from graphmech.render.style import DEFAULT, Style
 
@@ -130,6 +131,10 @@ def item_box(item: Primitive, style: Style = DEFAULT) -> Box:
         return _box_of(pts, max(style.frame.width, style.hatch.width) / 2.0)
     if isinstance(item, Label):
         return label_margin_box(item, style)
+    if isinstance(item, Text):  # set where it stands: its line's box, by its anchor
+        w, h = text_box_size(item.text, item.size)
+        x0 = item.at[0] - {"start": 0.0, "middle": w / 2.0, "end": w}[item.anchor]
+        return (x0, item.at[1] - h / 2.0, x0 + w, item.at[1] + h / 2.0)
     raise TypeError(f"not a draw primitive: {item!r}")
 
 

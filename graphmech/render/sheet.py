@@ -55,6 +55,7 @@ from graphmech.drawing.primitives import (
     Segment,
     Sheet,
     Slider,
+    Text,
 )
 from graphmech.render.style import DEFAULT, Style
 
@@ -258,7 +259,7 @@ def item_shapes(item: Primitive, style: Style = DEFAULT) -> list[tuple[int, Shap
     if isinstance(item, GuideLine):
         out: list[tuple[int, Shape]] = [(LAYER_GROUND, LineShape(item.p0, item.p1, "frame"))]
         return out + [(LAYER_GROUND, s) for s in hatch(item.p0, item.p1, style)]
-    if isinstance(item, Label):
+    if isinstance(item, (Label, Text)):
         return []
     raise TypeError(f"not a draw primitive: {item!r}")
 
@@ -365,6 +366,10 @@ def draw_sheet(
             cx, cy = pl.to_page(lab.center)
             at = (cx, cy + BASELINE_DROP * lab.label.size)
             backend.text(lab.label.text, at, lab.label.size, "middle", lab.label.italic, "label")
+        for t in panel.items:  # text set where the figure put it (a table's cells)
+            if isinstance(t, Text):
+                x, y = pl.to_page(t.at)
+                backend.text(t.text, (x, y + BASELINE_DROP * t.size), t.size, t.anchor, t.italic, "label")
         for line in pl.caption:
             backend.text(line.text, line.at, line.size, "middle", False, "text")
         backend.end_group()

@@ -104,3 +104,13 @@ def test_empty_panel_is_refused() -> None:
     with pytest.raises(ValueError, match="nothing to draw"):
         layout_sheet(Sheet("", (Panel("e", "", ()),)))
 
+
+
+def test_fixed_text_box_is_its_line_by_its_anchor() -> None:
+    from graphmech.drawing.lettering import text_box_size
+    from graphmech.drawing.primitives import Text
+
+    w, h = text_box_size("n = 12", 3.5)
+    assert item_box(Text("n = 12", (0.0, 0.0), 3.5, "start")) == pytest.approx((0.0, -h / 2, w, h / 2))
+    assert item_box(Text("n = 12", (0.0, 0.0), 3.5, "middle")) == pytest.approx((-w / 2, -h / 2, w / 2, h / 2))
+    assert item_box(Text("n = 12", (5.0, 1.0), 3.5, "end")) == pytest.approx((5.0 - w, 1.0 - h / 2, 5.0, 1.0 + h / 2))

@@ -300,3 +300,25 @@ def test_a_centre_line_is_dash_dot_and_a_plate_is_a_filled_outlined_polygon() ->
     [(layer, tri)] = item_shapes(Plate(((0.0, 0.0), (10.0, 0.0), (5.0, 8.0))))
     assert tri.key == "plate" and tri.closed and tri.filled and len(tri.points) == 3
     assert DEFAULT.pen("plate").fill not in ("white", "none", "black")
+
+
+# ------------------------------------------------------------------------- fixed text
+def test_text_is_set_exactly_where_the_figure_put_it_and_moves_for_nothing() -> None:
+    from graphmech.drawing.primitives import Text
+    from graphmech.render.sheet import BASELINE_DROP
+
+    cell = Text("p_{l}", (10.0, -8.0), 3.5, "end")
+    # a line through its point and a label anchored there: a label would move, the text does not
+    sheet = one_panel(Segment((0.0, -8.0), (20.0, -8.0)), cell, Label("A", (10.0, -8.0)))
+    rec = record(sheet)
+    at = placement_with_labels(sheet).to_page(cell.at)
+    texts = {c[1]: c for c in rec.of("text")}
+    assert texts["p_{l}"][2:] == (pytest.approx((at[0], at[1] + BASELINE_DROP * 3.5)), 3.5, "end", False, "label")
+    assert texts["A"][2] != pytest.approx((at[0], at[1] + BASELINE_DROP * 3.5))
+    assert panel_shapes(one_panel(cell).panels[0]) == []  # no strokes of its own
+
+
+def placement_with_labels(sheet: Sheet, i: int = 0):
+    shapes = [panel_shapes(p) for p in sheet.panels]
+    placed = [panel_labels(p, s) for p, s in zip(sheet.panels, shapes)]
+    return layout_sheet(sheet, DEFAULT, [[q.box for q in lab] for lab in placed]).panels[i]

@@ -43,7 +43,8 @@ def _sheet(scene: Scene[CamScene], footer: Footer) -> tuple[Sheet, list[str]]:
 
     an = finite(analyse_cam(scene, (), estimates=False))  # a drawing needs no error estimates
     sheet = cam_sheet(scene.title, an.cam, an.drawn, an.scales, list(scene.show), page_size(scene),
-                      roller_circles=scene.problem.roller_circles, marks=an.marks, footer=footer)
+                      roller_circles=scene.problem.roller_circles, marks=an.marks, footer=footer,
+                      notation=scene.page.notation)
     return sheet, list(an.warnings)
 
 

@@ -30,20 +30,38 @@ import numpy as np
 
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
-from graphmech.methods.cam_inversion import DrawnProfile, divisions
-from graphmech.drawing.lettering import text_box_size
+from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile
+from graphmech.drawing.lettering import number, text_box_size
+from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
                                          Polyline, Primitive, Segment, Sheet, angle_arc)
 from graphmech.errors import OutOfDomain
-from graphmech.scales import format_scale
+from graphmech.scales import SCALE_INFO, format_scale
 
 #: The panels a cam sheet can show, in the order they stand in the row.
 PANELS = ("profile", "displacement", "velocity", "acceleration")
-TITLES = {"profile": "Cam profile by inversion", "displacement": "Displacement diagram",
-          "velocity": "Velocity diagram", "acceleration": "Acceleration diagram"}
+#: The cam sheet's words (graphmech.drawing.notation's shape): key → (English, 中文 (孙桓), русский).
+WORDS: dict[str, tuple[str, str, str]] = {
+    "profile": ("Cam profile by inversion", "凸轮轮廓曲线（反转法）", "профиль кулачка (метод обращения движения)"),
+    "displacement": ("Displacement diagram", "位移线图", "график перемещений"),
+    "velocity": ("Velocity diagram", "速度线图", "график скоростей"),
+    "acceleration": ("Acceleration diagram", "加速度线图", "график ускорений"),
+    # the segments under the s–δ axis (孙桓: 推程, 远休止, 回程, 近休止; удаление, стояние, возвращение)
+    "rise": ("rise", "推程", "удаление"),
+    "return": ("return", "回程", "возвращение"),
+    "far dwell": ("dwell", "远休止", "дальнее стояние"),
+    "near dwell": ("dwell", "近休止", "ближнее стояние"),
+    "undercut": ("undercut", "运动失真", "подрез"),
+    "ccw": ("ω counter-clockwise", "ω 逆时针", "ω против часовой стрелки"),
+    "cw": ("ω clockwise", "ω 顺时针", "ω по часовой стрелке"),
+    # the cam angle's symbol on the diagrams' axis (孙桓 δ; the Russian books φ)
+    "cam angle": ("δ", "δ", "φ"),
+}
 #: The ordinate's symbol per diagram: translating follower, oscillating follower.
-SYMBOLS = {"displacement": ("s", "ψ"), "velocity": ("v", "ω₂"), "acceleration": ("a", "ε₂")}
+SYMBOLS = {"displacement": ("s", "ψ"), "velocity": ("v", "ω_{2}"), "acceleration": ("a", "ε_{2}")}
 SCALE_KEY = {"displacement": "s", "velocity": "v", "acceleration": "a"}
+#: The key of a diagram's ordinate scale (graphmech.scales.SCALE_INFO): translating, oscillating.
+DRAWN_SCALE = {"s": ("s", "psi"), "v": ("v", "omega"), "a": ("a", "epsilon")}
 ORDER = {"displacement": 0, "velocity": 1, "acceleration": 2}
 UNITS = {"s": ("m/mm", "rad/mm"), "v": ("(m/s)/mm", "(rad/s)/mm"), "a": ("(m/s²)/mm", "(rad/s²)/mm")}
 
@@ -53,28 +71,35 @@ LINE_OVERRUN = 5.0
 FACE_PAST, FACE_MIN = 3.0, 5.0
 #: Radius of the dot marking a pitch point B_k (drawn with the result pen: a solid dot), mm.
 DOT = 0.3
+#: The smooth curves (pitch curve, working profile) are drawn by the same inversion at divisions
+#: this fine, rad — or finer, so that no chord on paper is longer than SMOOTH_CHORD mm.
+SMOOTH_STEP, SMOOTH_CHORD = math.radians(1.0), 1.0
+#: Font size of every text of the sheet (the issue's least body text), mm.
+TEXT = 3.5
 #: Font size of the division numbers, mm.
-NUMBER_SIZE = 2.8
+NUMBER_SIZE = TEXT
 #: Least free distance between two division numbers, mm.
-NUMBER_CLEARANCE = 1.2
+NUMBER_CLEARANCE = 0.8
 #: The division step used for the s–δ diagram when no profile was drawn, rad.
 DEFAULT_STEP = math.radians(15.0)
 #: Dense evaluation of the diagrams: one sample every this much of the δ axis, mm.
 SAMPLE_STEP = 0.25
 #: The band under the s–δ diagram's numbers where the segments are named, mm below the axis.
-NAMES_ROW = (6.0, 11.0)
+NAMES_ROW = (7.0, 12.5)
 #: Font size of the segments' names, mm.
-NAME_SIZE = 2.5
+NAME_SIZE = TEXT
 #: How far the diagram axes run past the curve, mm.
 AXIS_OVERRUN = 7.0
 #: Length of the arrow marking an infinite acceleration, mm.
-INFINITY_ARROW = 9.0
+INFINITY_ARROW = 10.0
 #: The follower's stem beyond its roller / tip, and where its guide stands on it, mm.
 STEM, GUIDE_AT = 20.0, 14.0
 #: Length of the lines showing the pressure angle, and the radius of its arc, mm.
 MARK_LINE, MARK_ARC = 14.0, 8.0
 #: Half size of an undercut cross, and the length of the leader to its label, mm.
 CROSS, LEADER = 1.8, 8.0
+#: How far the centre lines through O run past the working profile, mm.
+CENTRE_PAST = 4.0
 #: A value evaluated this close before a joint is its left-hand limit, rad.
 LEFT_LIMIT = 1e-9
 
@@ -95,7 +120,7 @@ def _add(p: Any, q: Any, k: float = 1.0) -> tuple[float, float]:
 
 
 def _mm(x: float) -> str:
-    return f"{x * 1e3:.6g} mm"
+    return f"{number(x * 1e3)} mm"
 
 
 def _angular(cam: DiscCam) -> bool:
@@ -117,6 +142,22 @@ def scale_note(key: str, value: float, angular: bool = False) -> str:
         return format_scale(key, value)
     symbol = {"s": ("s", "ψ"), "v": ("v", "ω"), "a": ("a", "ε")}[key][int(angular)]
     return f"μ{symbol} = {value:.6g} {UNITS[key][int(angular)]}"
+
+
+def drawn_scale(key: str, value: float, angular: bool = False) -> tuple[str, str]:
+    """A panel's scale as its drawing states it (4 significant figures, an angle per mm in
+    degrees) and its key in graphmech.scales.SCALE_INFO, for the graphic scale bar:
+    ``("μψ = 0.5 °/mm", "psi")`` for an oscillating follower's swing; the check keeps
+    :func:`scale_note`'s full precision.
+
+    >>> drawn_scale("s", math.radians(0.5), True), drawn_scale("a", 1.0 / 3.0)
+    (('μψ = 0.5 °/mm', 'psi'), ('μa = 0.3333 (m/s²)/mm', 'a'))
+    """
+    if key in DRAWN_SCALE:
+        key = DRAWN_SCALE[key][int(angular)]
+    sym, unit = SCALE_INFO[key]
+    shown = math.degrees(value) if key in ("phi", "psi") else value
+    return f"{sym} = {number(shown)} {unit}", key
 
 
 def number_gap(n: int, size: float = NUMBER_SIZE) -> float:
@@ -228,8 +269,10 @@ def _point_on(pitch: np.ndarray, delta: np.ndarray, at: float) -> np.ndarray:
 
 
 def _mark_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, ok: np.ndarray,
-                marks: dict[str, Any]) -> list[Primitive]:
-    """The largest pressure angle drawn at its division; the undercut places crossed."""
+                marks: dict[str, Any], notation: str = "en", smooth: DrawnProfile | None = None) -> list[Primitive]:
+    """The largest pressure angle drawn at its division; the undercut places crossed on the drawn
+    working profile (``smooth``, by default ``drawn``'s)."""
+    smooth = drawn if smooth is None else smooth
     items: list[Primitive] = []
     labels: list[Primitive] = []
     idx = np.flatnonzero(ok)
@@ -250,13 +293,13 @@ def _mark_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, ok: np.ndarray,
                 items.append(arc)
             alpha = float(marks.get("alpha_max", drawn.pressure_angle[k]))
             mid = _unit(_add(normal, u))
-            labels.append(Label(f"αₘₐₓ = {math.degrees(alpha):.1f}°", _add(b, mid, MARK_LINE + 1.0),
-                                ((-mid[0], -mid[1]),), 3.0, italic=False))
+            labels.append(Label(f"α_{{max}} = {number(math.degrees(alpha))}°", _add(b, mid, MARK_LINE + 1.0),
+                                ((-mid[0], -mid[1]),), TEXT, italic=False))
     for at in marks.get("undercut_at", ()) or ():
         if not len(idx):
             break
         p = _point_on(drawn.pitch[idx], drawn.delta[idx], float(at))
-        act = drawn.actual[np.isfinite(drawn.actual).all(axis=1)] if len(drawn.actual) else drawn.actual
+        act = smooth.actual[np.isfinite(smooth.actual).all(axis=1)] if len(smooth.actual) else smooth.actual
         if len(act):  # where the working profile goes wrong: its point nearest the pitch point
             p = act[int(np.argmin(np.hypot(*(act - p).T)))]
         c = (float(p[0]) / mu_l, float(p[1]) / mu_l)
@@ -265,24 +308,41 @@ def _mark_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, ok: np.ndarray,
                   Segment((c[0] - s, c[1] + s), (c[0] + s, c[1] - s), "label")]
         inward = _unit((-c[0], -c[1]))  # a leader into the profile, where only thin lines run
         if inward == (0.0, 0.0):
-            labels.append(Label("undercut", c, (), 3.0, italic=False))
+            labels.append(Label(word("undercut", notation, WORDS), c, (), TEXT, italic=False))
             continue
         tail = _add(c, inward, LEADER)
         items.append(Segment(_add(c, inward, CROSS), tail, "label"))
-        labels.append(Label("undercut", tail, ((-inward[0], -inward[1]),), 3.0, italic=False))
+        labels.append(Label(word("undercut", notation, WORDS), tail, ((-inward[0], -inward[1]),), TEXT,
+                            italic=False))
     return items + labels
 
 
+def smooth_drawing(cam: DiscCam, drawn: DrawnProfile, mu_l: float) -> DrawnProfile:
+    """The inversion carried out again at divisions of 1° (finer where a 1° chord would be longer
+    than SMOOTH_CHORD mm on paper), the laws' joints among them: the pitch curve and the working
+    profile the drawing shows as smooth curves — the same construction as at the numbered
+    divisions, which stay the ones measured."""
+    reach = float(np.nanmax(np.hypot(*drawn.pitch.T))) / mu_l if len(drawn.pitch) else 0.0
+    step = min(SMOOTH_STEP, SMOOTH_CHORD / reach) if reach > 0.0 and math.isfinite(reach) else SMOOTH_STEP
+    delta = divisions(cam, step, breakpoints(cam.program))
+    return draw_profile(cam, delta, displacement(cam.program, delta))
+
+
+def _closed_curve(points: np.ndarray, keep: np.ndarray) -> tuple[tuple[float, float], ...]:
+    return tuple((float(x), float(y)) for x, y in points[keep])
+
+
 def profile_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, *, roller_circles: bool = True,
-                  marks: dict[str, Any] | None = None, number_every: int = 1) -> list[Primitive]:
+                  marks: dict[str, Any] | None = None, number_every: int = 1, notation: str = "en",
+                  smooth: DrawnProfile | None = None) -> list[Primitive]:
     """The profile panel at μl (drawing mm, O at the origin), in the draftsman's order.
 
     Parameters
     ----------
     cam : DiscCam
     drawn : DrawnProfile
-        What :func:`~graphmech.methods.cam_inversion.draw_profile` drew (m); divisions whose
-        construction failed (``valid`` false) are left out.
+        What :func:`~graphmech.methods.cam_inversion.draw_profile` drew (m) at the numbered
+        divisions; divisions whose construction failed (``valid`` false) are left out.
     mu_l : float
         m/mm.
     roller_circles : bool
@@ -292,11 +352,17 @@ def profile_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, *, roller_circ
         division; ``undercut_at`` (rad, a list): crosses where the working profile goes wrong.
     number_every : int
         Number every k-th division (0, k, 2k …).
+    notation : str
+        "en", "zh" or "ru": the drawn words (graphmech.drawing.notation).
+    smooth : DrawnProfile, optional
+        The same inversion at fine divisions, whose pitch curve and working profile are drawn
+        (by default :func:`smooth_drawing`).
     """
     f = cam.follower
     rot = 1.0 if cam.rotation >= 0 else -1.0
     ok = np.asarray(drawn.valid, dtype=bool) & np.isfinite(drawn.pitch).all(axis=1) \
         & np.isfinite(drawn.axis_dir).all(axis=1)
+    fine = smooth_drawing(cam, drawn, mu_l) if smooth is None else smooth
     pitch = drawn.pitch / mu_l
     u = drawn.axis_dir
     feet = _feet(cam, drawn.delta) / mu_l
@@ -305,12 +371,18 @@ def profile_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, *, roller_circ
     items: list[Primitive] = []
     labels: list[Primitive] = []
     origin = (0.0, 0.0)
+    actual = np.asarray(fine.actual, dtype=float) / mu_l
+    actual = actual[np.isfinite(actual).all(axis=1)] if len(actual) else actual
 
-    # 1. the base circle r0 and the offset (pivot) circle
-    items.append(Circle(origin, cam.base_radius / mu_l, "construction"))
+    # 1. the centre lines through O, the base circle r0 and the offset (pivot) circle: thin dash-dot
+    reach = max([cam.base_radius / mu_l] + ([float(np.max(np.hypot(*actual.T)))] if len(actual) else [])) \
+        + CENTRE_PAST
+    items += [Segment((-reach, 0.0), (reach, 0.0), "construction", dashdot=True),
+              Segment((0.0, -reach), (0.0, reach), "construction", dashdot=True)]
+    items.append(Circle(origin, cam.base_radius / mu_l, "construction", dashdot=True))
     guide_r = abs(f.offset) if isinstance(f, TranslatingFollower) else f.pivot_distance
     if guide_r / mu_l > 0.5:
-        items.append(Polyline(_circle_points(guide_r / mu_l), "construction", closed=True, dashed=True))
+        items.append(Circle(origin, guide_r / mu_l, "construction", dashdot=True))
 
     # 2. the follower's inverted positions, numbered at their outer ends
     gap = number_gap(len(pitch))
@@ -334,16 +406,16 @@ def profile_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, *, roller_circ
         if k % number_every == 0 and (k == 0 or not ok[0] or math.dist(end, tuple(ends[0])) >= gap):
             labels.append(Label(str(k), end, avoid, NUMBER_SIZE, italic=False))
 
-    # 3. the pitch points B_k (dots), and the pitch curve through them
+    # 3. the pitch curve, smooth (thin dash-dot for a roller, as 孙桓 draws the 理论廓线), and the
+    #    pitch points B_k on it as dots
+    fine_ok = np.asarray(fine.valid, dtype=bool) & np.isfinite(fine.pitch).all(axis=1)
+    if f.contact == "roller" and fine_ok.sum() >= 3:
+        items.append(Polyline(_closed_curve(fine.pitch / mu_l, fine_ok), "construction", closed=True, dashdot=True))
     items += [Circle(tuple(pitch[k]), DOT, "result") for k in np.flatnonzero(ok)]
-    if f.contact == "roller" and ok.sum() >= 3:
-        items.append(Polyline(tuple(map(tuple, pitch[ok])), "construction", closed=True, dashed=True))
 
-    # 4. the roller circles, and the working profile as their envelope (bold)
+    # 4. the roller circles, and the working profile as their envelope (bold, smooth)
     if f.contact == "roller" and roller_circles and rr > 0.0:
         items += [Circle(tuple(pitch[k]), rr, "construction") for k in np.flatnonzero(ok)]
-    actual = np.asarray(drawn.actual, dtype=float) / mu_l
-    actual = actual[np.isfinite(actual).all(axis=1)] if len(actual) else actual
     if len(actual) >= 3:
         items.append(Polyline(tuple(map(tuple, actual)), "result", closed=True))
 
@@ -356,25 +428,26 @@ def profile_items(cam: DiscCam, drawn: DrawnProfile, mu_l: float, *, roller_circ
     sweep = rot * math.radians(80.0)
     arc = ArcArrow(origin, r_arc, -math.pi / 2 - sweep / 2, sweep, "given")
     items += [arc, Hinge(origin)]
-    marked = _mark_items(cam, drawn, mu_l, ok, marks or {})
+    marked = _mark_items(cam, drawn, mu_l, ok, marks or {}, notation, fine)
     return (items + [m for m in marked if not isinstance(m, Label)]
-            + [Label("O", origin, ((0.0, -1.0),)), Label("ω", arc.points(2)[1], (), 3.2)]
+            + [Label("O", origin, ((0.0, -1.0), (1.0, 0.0), (-1.0, 0.0), (0.0, 1.0)), TEXT),
+               Label("ω", arc.points(2)[1], ((1.0, 0.0), (-1.0, 0.0), (0.0, -1.0)), TEXT)]  # off the arc, inside it
             + [m for m in marked if isinstance(m, Label)] + labels)
 
 
-def profile_notes(cam: DiscCam, mu_l: float) -> tuple[str, ...]:
-    """μl and the cam's given dimensions (r0, e or |OA| and l, r_r)."""
+def profile_notes(cam: DiscCam, mu_l: float, notation: str = "en") -> tuple[str, ...]:
+    """μl and the cam's given dimensions (r0, e or l_OA and l_AB, r_r) and its sense of rotation."""
     f = cam.follower
-    dims = [f"r₀ = {_mm(cam.base_radius)}"]
+    dims = [f"r_{{0}} = {_mm(cam.base_radius)}"]
     if isinstance(f, TranslatingFollower):
         if f.offset:
             dims.append(f"e = {_mm(f.offset)}")
     else:
-        dims += [f"|OA| = {_mm(f.pivot_distance)}"] + ([f"l = {_mm(f.arm)}"] if f.arm else [])  # a flat face has none
+        dims += [f"l_{{OA}} = {_mm(f.pivot_distance)}"] + ([f"l_{{AB}} = {_mm(f.arm)}"] if f.arm else [])  # a face: none
     if f.contact == "roller":
-        dims.append(f"rᵣ = {_mm(f.roller_radius)}")
-    sense = "counter-clockwise" if cam.rotation >= 0 else "clockwise"
-    return (format_scale("l", mu_l), ", ".join(dims) + f"; ω {sense}")
+        dims.append(f"r_{{r}} = {_mm(f.roller_radius)}")
+    sense = word("ccw" if cam.rotation >= 0 else "cw", notation, WORDS)
+    return (drawn_scale("l", mu_l)[0], ", ".join(dims) + f"; {sense}")
 
 
 # ----------------------------------------------------------------------------- the diagrams
@@ -401,21 +474,33 @@ def _segment_name(kind: str, angle: float, room: float) -> str:
     """A segment's name under the s–δ axis, "rise 150°", or just "150°" if that is all there is
     room for (``room`` mm between its joints), or nothing.
 
-    >>> _segment_name("dwell", math.radians(30), 20.0), _segment_name("dwell", math.radians(30), 8.0)
+    >>> _segment_name("dwell", math.radians(30), 25.0), _segment_name("dwell", math.radians(30), 10.0)
     ('dwell 30°', '30°')
     """
-    for text in (f"{kind} {math.degrees(angle):.4g}°", f"{math.degrees(angle):.4g}°"):
+    for text in (f"{kind} {number(math.degrees(angle))}°", f"{number(math.degrees(angle))}°"):
         if text_box_size(text, NAME_SIZE)[0] + 1.0 <= room:
             return text
     return ""
 
 
+def _kind_word(cam: DiscCam, k: int) -> str:
+    """The key of segment ``k``'s name in :data:`WORDS`: a dwell is far (远休止) at the top of the
+    stroke, near (近休止) at the bottom."""
+    seg = cam.program.segments[k]
+    if seg.kind != "dwell":
+        return seg.kind
+    start = float(sum(x.angle for x in cam.program.segments[:k]))
+    top = float(displacement(cam.program, np.array([start + 0.5 * seg.angle]))[0]) > 0.5 * cam.program.stroke
+    return "far dwell" if top else "near dwell"
+
+
 def diagram_items(cam: DiscCam, panel: str, mu: float, mu_phi: float, delta: np.ndarray | None,
-                  number_every: int = 1) -> list[Primitive]:
+                  number_every: int = 1, notation: str = "en") -> list[Primitive]:
     """A motion diagram (``panel`` "displacement", "velocity" or "acceleration") at μ and μφ.
 
     The δ axis runs right from the origin; ``delta`` are the profile's divisions (the s–δ
-    diagram is divided and numbered there, every ``number_every``-th number written).
+    diagram is divided and numbered there, every ``number_every``-th number written);
+    ``notation`` letters it (graphmech.drawing.notation).
     """
     order = ORDER[panel]
     angular = _angular(cam)
@@ -439,10 +524,10 @@ def diagram_items(cam: DiscCam, panel: str, mu: float, mu_phi: float, delta: np.
                 up = 1.0 if imp.jump > 0 else -1.0
                 tip = (x, up * INFINITY_ARROW)
                 items.append(Arrow((x, 0.0), tip, "result"))
-                labels.append(Label("+∞" if up > 0 else "−∞", tip, ((0.0, -up), (1.0, 0.0)), 3.0, italic=False))
+                labels.append(Label("+∞" if up > 0 else "−∞", tip, ((0.0, -up), (1.0, 0.0)), TEXT, italic=False))
         for a in breakpoints(cam.program)[1:]:  # the joints' cam angles under the axis
-            labels.append(Label(f"{math.degrees(float(a)):.4g}°", (float(a) / mu_phi, 0.0),
-                                ((0.0, 1.0), (1.0, 0.0), (-1.0, 0.0)), 2.5, italic=False))
+            labels.append(Label(f"{number(math.degrees(float(a)))}°", (float(a) / mu_phi, 0.0),
+                                ((0.0, 1.0), (1.0, 0.0), (-1.0, 0.0)), TEXT, italic=False))
     ys = [0.0] + [float(v) for c in curves for v in (c[:, 1].min(), c[:, 1].max())]
     ys += [it.p1[1] for it in items if isinstance(it, Arrow)]
     lo, hi = min(ys), max(ys)
@@ -453,8 +538,8 @@ def diagram_items(cam: DiscCam, panel: str, mu: float, mu_phi: float, delta: np.
     items.append(Arrow((0.0, 0.0), (width + AXIS_OVERRUN, 0.0), "label"))
     items.append(Arrow((0.0, bottom), (0.0, top), "label"))
     symbol = SYMBOLS[panel][int(angular)]
-    labels[:0] = [Label(symbol, (0.0, top), ((0.0, -1.0),), 3.2),
-                  Label("δ", (width + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2)]
+    labels[:0] = [Label(symbol, (0.0, top), ((0.0, -1.0),), TEXT),
+                  Label(word("cam angle", notation, WORDS), (width + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), TEXT)]
     joints = [float(a) for a in breakpoints(cam.program)] + [math.tau]
     ticks = [float(x) for x in delta] if panel == "displacement" and delta is not None else joints
     for x in sorted(set(ticks) | set(joints[1:])):
@@ -472,11 +557,11 @@ def diagram_items(cam: DiscCam, panel: str, mu: float, mu_phi: float, delta: np.
                                         NUMBER_SIZE, italic=False))
         h = cam.program.stroke / mu
         items.append(Segment((-1.0, h), (0.0, h), "label"))
-        labels.append(Label("ψₘₐₓ" if angular else "h", (0.0, h), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), 3.0))
+        labels.append(Label("ψ_{max}" if angular else "h", (0.0, h), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), TEXT))
         for j in joints:  # the segments named under the numbers, parted at the joints
             items.append(Segment((j / mu_phi, -NAMES_ROW[0]), (j / mu_phi, -NAMES_ROW[1]), "label"))
-        for seg, a, b in zip(cam.program.segments, joints[:-1], joints[1:]):
-            name = _segment_name(seg.kind, seg.angle, (b - a) / mu_phi)
+        for k, (seg, a, b) in enumerate(zip(cam.program.segments, joints[:-1], joints[1:])):
+            name = _segment_name(word(_kind_word(cam, k), notation, WORDS), seg.angle, (b - a) / mu_phi)
             if name:
                 labels.append(Label(name, ((a + b) / 2.0 / mu_phi, -NAMES_ROW[0]),
                                     ((0.0, 1.0), (1.0, 0.0), (-1.0, 0.0)), NAME_SIZE, italic=False))
@@ -496,7 +581,7 @@ def panel_rows(show: Sequence[str]) -> dict[str, int]:
 
 def cam_sheet(title: str, cam: DiscCam, drawn: DrawnProfile | None, scales: dict[str, float], show: Sequence[str],
               page: tuple[float, float], *, roller_circles: bool = True, marks: dict[str, Any] | None = None,
-              footer: tuple[str, ...] = (), number_every: int | None = None) -> Sheet:
+              footer: tuple[str, ...] = (), number_every: int | None = None, notation: str = "en") -> Sheet:
     """The cam's sheet: the panels of ``show`` in the order profile, displacement, velocity,
     acceleration, side by side in one row.
 
@@ -524,6 +609,8 @@ def cam_sheet(title: str, cam: DiscCam, drawn: DrawnProfile | None, scales: dict
     number_every : int, optional
         Number every k-th division; by default the smallest k that keeps the numbers apart on
         the profile and the s–δ axis (:func:`numbered_every`).
+    notation : str
+        "en", "zh" or "ru": the captions and symbols drawn (graphmech.drawing.notation).
 
     Raises
     ------
@@ -536,8 +623,8 @@ def cam_sheet(title: str, cam: DiscCam, drawn: DrawnProfile | None, scales: dict
     >>> program = MotionProgram(0.016, (Segment("rise", math.pi, "cosine"), Segment("return", math.pi, "cosine")))
     >>> cam = DiscCam(0.03, TranslatingFollower(), program)
     >>> sheet = cam_sheet("Cam", cam, None, {"phi": math.radians(4), "a": 0.001}, ["acceleration"], (297.0, 210.0))
-    >>> [p.notes for p in sheet.panels]
-    [('μa = 0.001 (m/s²)/mm', 'μφ = 4 °/mm')]
+    >>> [(p.notes, p.scales) for p in sheet.panels]
+    [(('μa = 0.001 (m/s²)/mm', 'μφ = 4 °/mm'), (('a', 0.001), ('phi', 0.06981317007977318)))]
     """
     bad = [p for p in show if p not in PANELS]
     if bad:
@@ -570,16 +657,20 @@ def cam_sheet(title: str, cam: DiscCam, drawn: DrawnProfile | None, scales: dict
         if p == "profile":
             assert drawn is not None
             items = profile_items(cam, drawn, scales["l"], roller_circles=roller_circles, marks=marks,
-                                  number_every=number_every)
-            notes = profile_notes(cam, scales["l"])
-            head = TITLES[p]
+                                  number_every=number_every, notation=notation)
+            notes = profile_notes(cam, scales["l"], notation)
+            head = word(p, notation, WORDS)
+            measures: tuple[tuple[str, float], ...] = (("l", scales["l"]),)
         else:
             key = SCALE_KEY[p]
-            items = diagram_items(cam, p, scales[key], scales["phi"], delta, number_every)
-            notes = (scale_note(key, scales[key], angular), scale_note("phi", scales["phi"]))
-            head = f"{TITLES[p]} {SYMBOLS[p][int(angular)]}–δ"
-        panels.append(Panel(p, head, tuple(items), notes, row=panel_rows(show)[p]))
+            items = diagram_items(cam, p, scales[key], scales["phi"], delta, number_every, notation)
+            (note, bar), (phi_note, _) = drawn_scale(key, scales[key], angular), drawn_scale("phi", scales["phi"])
+            notes = (note, phi_note)
+            head = f"{word(p, notation, WORDS)} {SYMBOLS[p][int(angular)]}–{word('cam angle', notation, WORDS)}"
+            measures = ((bar, scales[key]), ("phi", scales["phi"]))
+        panels.append(Panel(p, head, tuple(items), notes, row=panel_rows(show)[p], scales=measures))
     return Sheet(title, tuple(panels), page, footer)
 
 
-__all__ = ["PANELS", "cam_sheet", "diagram_items", "numbered_every", "profile_items", "scale_note"]
+__all__ = ["PANELS", "WORDS", "cam_sheet", "diagram_items", "drawn_scale", "numbered_every", "profile_items",
+           "scale_note", "smooth_drawing"]

@@ -42,7 +42,7 @@ def _sheet(scene: Scene[StructureScene], footer: Footer) -> tuple[Sheet, list[st
     from graphmech.problems.structure.figures import structure_sheet
 
     an = finite(analyse_structure(scene))
-    return structure_sheet(scene.title, an, page_size(scene), footer), list(an.warnings)
+    return structure_sheet(scene.title, an, page_size(scene), footer, scene.page.notation), list(an.warnings)
 
 
 def _lines(an: StructureAnalysis) -> list[str]:

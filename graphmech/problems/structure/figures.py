@@ -1,21 +1,26 @@
-"""The structure sheet: the mechanism's links and pairs with its Assur groups outlined, and the
-book's block diagram (组合方框图) of how the groups attach to the drivers and the frame.
+"""The structure sheet: the mechanism's kinematic sketch (机构运动简图) with its Assur groups
+outlined, the book's block diagram (组合方框图) of how the groups attach to the drivers and the
+frame, and — for a book's printed counts — a table of n, p_l, p_h (p′, F′) and F under the formula.
 
-Links are drawn between the pairs they carry (a ternary link as a shaded-free triangle of its
-three pairs), revolutes as hinges (on the frame: pivots), prismatic pairs as slider blocks on
-their guides, higher pairs as a contact point with its common normal. Each Assur group is
-outlined by a dashed contour around its links and labelled with its class; a class III group's
-label says that its polygons need a special construction.
+Links are drawn between the pairs they carry: a binary link as a bar, a link of three or more
+pairs as a filled plate (the book's hatched or shaded triangle) with its number inside, a
+redundant link (虚约束: the Jacobian finds p′ > 0 and no group takes the link) dashed; revolutes as
+hinges (on the frame: pivots), prismatic pairs as slider blocks on their guides, higher pairs as
+a contact point with its common normal. Each Assur group is outlined by a dashed contour and
+labelled with its class. Every caption and note is in the scene's notation (en, zh, ru).
 """
 from __future__ import annotations
 
 import math
+import re
 import textwrap
 from typing import Any, Sequence
 
+from graphmech.drawing.lettering import text_box_size
+from graphmech.drawing.notation import WORDS as COMMON, word
 from graphmech.mechanisms.topology import Mobility, Structure, Topology, roman
-from graphmech.drawing.primitives import (Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel, Polyline,
-                                         Primitive, Segment, Sheet, Slider)
+from graphmech.drawing.primitives import (Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel, Plate, Polyline,
+                                         Primitive, Segment, Sheet, Slider, Text)
 from graphmech.scales import format_scale, round_scale
 
 #: How far a group's outline stands off its links, mm.
@@ -23,6 +28,57 @@ OUTLINE_MM = 7.0
 BOX_W, BOX_H, BOX_GAP = 34.0, 14.0, 12.0
 #: The longest line of a note under the block diagram, characters (about 2 mm each: A4's 277 mm).
 NOTE_CHARS = 100
+#: Every text of the sheet, mm (the issue's least body text).
+TEXT = 3.5
+#: A table's row height and the free room either side of a cell's text, mm.
+ROW, CELL_PAD = 7.5, 2.5
+#: A number column's least width, mm.
+NUMBER_COL = 12.0
+
+#: The structure sheet's words (graphmech.drawing.notation's shape): key → (English, 中文, русский);
+#: ``{}`` are filled in.
+WORDS: dict[str, tuple[str, str, str]] = {
+    "structure": COMMON["structure"],
+    "groups": ("Structure: drivers and Assur groups", "机构的组成：原动件与基本杆组",
+               "строение механизма: начальные звенья и группы Ассура"),
+    "cases": ("Mobility from the printed counts", "由题给数据计算自由度", "подвижность по заданным числам"),
+    "class": ("a class {} mechanism", "{}级机构", "механизм {} класса"),
+    "replaced": ("higher pairs replaced by a link and two revolutes: {}", "高副低代：{}",
+                 "высшие пары заменены звеном с двумя шарнирами: {}"),
+    "removed": ("rollers (local freedoms) left out: {}", "局部自由度（滚子）除去：{}",
+                "местные подвижности (ролики) исключены: {}"),
+    "compound": ("compound hinges (k − 1 pairs each): {}", "复合铰链（各计 k − 1 个转动副）：{}",
+                 "сложные шарниры (k − 1 пар каждый): {}"),
+    "rank": ("rank J = {} of {}: F = 3·{} − {} − {} = {}", "rank J = {}（{} 个约束方程）：F = 3·{} − {} − {} = {}",
+             "rank J = {} из {}: F = 3·{} − {} − {} = {}"),
+    "redundant": ("redundant links (dashed, p′ = {}) left out of the groups: {}",
+                  "虚约束构件（虚线，p′ = {}）不计入杆组：{}",
+                  "звенья избыточных связей (штриховые, p′ = {}) в группы не входят: {}"),
+    "no group": ("links {} form no Assur group: the number of drivers differs from the mobility",
+                 "构件 {} 不能组成基本杆组：原动件数与自由度不等",
+                 "звенья {} не образуют группы Ассура: число начальных звеньев не равно подвижности"),
+    "special": ("class {} group ({}): its velocity and acceleration polygons need a special construction "
+                "(Assur's special points, or a false-position polygon)",
+                "{}级杆组（{}）：速度、加速度多边形须用特殊作图法（特殊点法或试凑法）",
+                "группа {} класса ({}): планы скоростей и ускорений строятся особым способом "
+                "(особые точки Ассура или метод ложных положений)"),
+    "case": ("case", "机构", "схема"),
+    "rigid": ("rigid", "桁架", "ферма"),
+}
+
+
+def _say(key: str, notation: str, *args: object) -> str:
+    return word(key, notation, WORDS).format(*args)
+
+
+def letter(name: str) -> str:
+    """A point's name as the drawing letters it: a trailing number as a subscript (``K1`` → K₁).
+
+    >>> letter("K1"), letter("C′"), letter("hK"), letter("12")
+    ('K_{1}', 'C′', 'hK', '12')
+    """
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
+    return f"{m.group(1)}_{{{m.group(2)}}}" if m else name
 
 
 def choose_scale(topo: Topology, room: tuple[float, float]) -> float:
@@ -32,8 +88,27 @@ def choose_scale(topo: Topology, room: tuple[float, float]) -> float:
     return round_scale(need)
 
 
-def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequence[str]) -> Panel:
-    """The links and pairs at μl, the groups outlined."""
+def _away(c: tuple[float, float], others: Sequence[tuple[float, float]]) -> tuple[tuple[float, float], ...]:
+    """Unit directions from ``c`` to each of ``others`` (the lines leaving a pair)."""
+    out = []
+    for q in others:
+        d = math.dist(c, q)
+        if d > 1e-9:
+            out.append(((q[0] - c[0]) / d, (q[1] - c[1]) / d))
+    return tuple(out)
+
+
+def _inradius(ps: Sequence[tuple[float, float]]) -> float:
+    """2·area / perimeter of a convex polygon: the room inside it for a number, mm."""
+    n = len(ps)
+    area = 0.5 * abs(sum(ps[k][0] * ps[(k + 1) % n][1] - ps[(k + 1) % n][0] * ps[k][1] for k in range(n)))
+    perimeter = sum(math.dist(ps[k], ps[(k + 1) % n]) for k in range(n))
+    return 2.0 * area / perimeter if perimeter > 0 else 0.0
+
+
+def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequence[str],
+                    redundant: Sequence[str] = (), notation: str = "en") -> Panel:
+    """The kinematic sketch at μl, the groups outlined; the ``redundant`` links dashed."""
     pts = [p.at for p in topo.pairs if p.at is not None]
     ox, oy = pts[0]
 
@@ -41,6 +116,7 @@ def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequ
         return ((xy[0] - ox) / mu, (xy[1] - oy) / mu)
 
     items: list[Primitive] = []
+    labels: list[Primitive] = []
     where: dict[str, list[tuple[float, float]]] = {x: [] for x in topo.links}
     for p in topo.pairs:
         assert p.at is not None
@@ -49,22 +125,41 @@ def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequ
                 where[x].append(mm(p.at))
     rollers = set(topo.rollers())
     for x, ps in where.items():  # each link through its pairs; a roller as its circle
+        dashed = x in redundant
         if x in rollers and len(ps) == 2:
             pin = next(mm(p.at) for p in topo.pairs_of(x) if p.kind == "R" and p.at is not None)
             contact = next(q for q in ps if q != pin)
-            items.append(Circle(pin, math.dist(pin, contact), "given"))
-        elif len(ps) == 2:
-            items.append(Segment(ps[0], ps[1], "given"))
-        elif len(ps) > 2:
-            items.append(Polyline(tuple(_hull(ps)), "given", closed=True))
-        if ps:
-            cx, cy = sum(q[0] for q in ps) / len(ps), sum(q[1] for q in ps) / len(ps)
-            items.append(Label(x, (cx, cy), (), 3.2, italic=False))
+            items.append(Circle(pin, math.dist(pin, contact), "given", dashed=dashed))
+            labels.append(Label(x, pin, _away(pin, [contact]), TEXT, italic=False))
+            continue
+        hull = _hull(ps) if len(ps) > 2 else list(ps)
+        if len(hull) == 2:
+            items.append(Segment(hull[0], hull[1], "given", dashed=dashed))
+        elif len(hull) > 2 and dashed:
+            items.append(Polyline(tuple(hull), "given", closed=True, dashed=True))
+        elif len(hull) > 2:
+            items.append(Plate(tuple(hull)))
+        if not ps:
+            continue
+        cx, cy = sum(q[0] for q in ps) / len(ps), sum(q[1] for q in ps) / len(ps)
+        if len(hull) == 2 and len(ps) > 2:  # a bar through a middle pair: beside its longest piece
+            a, b = hull
+            along = sorted(ps, key=lambda q: (q[0] - a[0]) * (b[0] - a[0]) + (q[1] - a[1]) * (b[1] - a[1]))
+            p0, p1 = max(zip(along[:-1], along[1:]), key=lambda pq: math.dist(*pq))
+            cx, cy = (p0[0] + p1[0]) / 2.0, (p0[1] + p1[1]) / 2.0
+        if len(hull) > 2 and not dashed and _inradius(hull) >= 0.75 * max(text_box_size(x, TEXT)):
+            items.append(Text(x, (cx, cy), TEXT))  # the plate's number inside it, as the book writes it
+        else:  # a bar's number beside its middle, off the bar
+            labels.append(Label(x, (cx, cy), _away((cx, cy), hull if len(hull) == 2 else ()), TEXT, italic=False))
     for p in topo.pairs:
         assert p.at is not None
         c = mm(p.at)
+        others = [q for x in p.links if x != topo.frame and x in where for q in where[x] if q != c]
+        avoid = list(_away(c, others))
         if p.kind == "R":
             items.append(FixedPivot(c) if topo.frame in p.links else Hinge(c))
+            if topo.frame in p.links:
+                avoid.append((0.0, -1.0))  # the pivot's base below it
         elif p.kind == "P":
             ang = p.angle or 0.0
             u = (math.cos(ang), math.sin(ang))
@@ -73,14 +168,16 @@ def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequ
             else:
                 items.append(Segment((c[0] - 12 * u[0], c[1] - 12 * u[1]), (c[0] + 12 * u[0], c[1] + 12 * u[1]), "given"))
             items.append(Slider(c, ang))
+            avoid += [u, (-u[0], -u[1])]
         else:
             ang = p.angle or 0.0
             n = (math.cos(ang), math.sin(ang))
             items.append(Segment((c[0] - 8 * n[0], c[1] - 8 * n[1]), (c[0] + 8 * n[0], c[1] + 8 * n[1]),
                                  "construction", dashed=True))
             items.append(Circle(c, 1.0, "result"))
+            avoid += [n, (-n[0], -n[1])]
         if p.name:
-            items.append(Label(p.name, c, (), 3.2))
+            labels.append(Label(letter(p.name), c, tuple(avoid), TEXT))
     if st is not None:
         for g in st.groups:
             ps = [q for x in g.links if x in where for q in where[x]]
@@ -89,66 +186,110 @@ def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequ
             outline = _outline(ps, OUTLINE_MM)
             items.append(Polyline(tuple(outline), "construction", closed=True, dashed=True))
             top = max(outline, key=lambda q: (q[1], q[0]))
-            items.append(Label(f"{roman(g.grade)} ({','.join(g.links)})", top, ((0.0, -1.0),), 3.0, italic=False))
-    return Panel("structure", "Kinematic diagram and Assur groups", tuple(items), (format_scale("l", mu),) + tuple(notes))
+            labels.append(Label(f"{roman(g.grade)} ({','.join(g.links)})", top, ((0.0, -1.0),), TEXT, italic=False))
+    return Panel("structure", word("structure", notation, WORDS), tuple(items + labels),
+                 (format_scale("l", mu),) + tuple(notes), scales=(("l", mu),))
 
 
-def block_panel(st: Structure, topo: Topology) -> Panel:
-    """The block diagram: frame and drivers (class I), then each group, joined by arrows."""
+def block_panel(st: Structure, topo: Topology, notation: str = "en", redundant: int = 0) -> Panel:
+    """The block diagram: frame and drivers (class I), then each group, joined by arrows; each
+    box's inscription set in its middle. ``redundant``: the Jacobian's p′, which names the links no
+    group takes as redundant ones."""
     items: list[Primitive] = []
     boxes = [f"I: {topo.frame} + {', '.join(st.drivers) or '—'}"]
     boxes += [f"{roman(g.grade)}: {', '.join(g.links)}" for g in st.groups]
     x = 0.0
     for k, text in enumerate(boxes):
-        corners = ((x, 0.0), (x + BOX_W, 0.0), (x + BOX_W, BOX_H), (x, BOX_H))
+        w = max(BOX_W, text_box_size(text, TEXT)[0] + 2.0 * CELL_PAD)
+        corners = ((x, 0.0), (x + w, 0.0), (x + w, BOX_H), (x, BOX_H))
         items.append(Polyline(corners, "given", closed=True))
-        items.append(Label(text, (x + BOX_W / 2, BOX_H / 2), (), 3.2, italic=False))
+        items.append(Text(text, (x + w / 2, BOX_H / 2), TEXT))
         if k:
             items.append(Arrow((x - BOX_GAP, BOX_H / 2), (x, BOX_H / 2), "given"))
-        x += BOX_W + BOX_GAP
-    notes = [f"a class {roman(st.grade)} mechanism"]
+        x += w + BOX_GAP
+    notes = [_say("class", notation, roman(st.grade))]
     if st.replaced:
-        notes.append(f"higher pairs replaced by a link and two revolutes: {', '.join(st.replaced)}")
+        notes.append(_say("replaced", notation, ", ".join(map(letter, st.replaced))))
     if st.removed:
-        notes.append(f"rollers (local freedoms) left out: {', '.join(st.removed)}")
-    for message in st.messages:  # a class III group's message is long: lines that fit the page
-        notes += textwrap.wrap(message, NOTE_CHARS)
-    return Panel("groups", "Structure: drivers and Assur groups", tuple(items), tuple(notes))
+        notes.append(_say("removed", notation, ", ".join(st.removed)))
+    said = [_say("special", notation, roman(g.grade), ", ".join(g.links)) for g in st.groups if g.grade >= 3]
+    if st.leftover:
+        said.append(_say("redundant", notation, redundant, ", ".join(st.leftover)) if redundant
+                    else _say("no group", notation, ", ".join(st.leftover)))
+    width = NOTE_CHARS if notation != "zh" else NOTE_CHARS // 2  # a CJK character is twice as wide
+    for message in said:  # a long message in lines that fit the page
+        notes += textwrap.wrap(message, width)
+    return Panel("groups", word("groups", notation, WORDS), tuple(items), tuple(notes))
 
 
-def cases_panel(cases: Sequence[dict[str, Any]]) -> Panel:
-    """A book's table of printed counts, one line a case."""
-    from graphmech.problems.structure.check import case_formula
+def cases_panel(cases: Sequence[dict[str, Any]], notation: str = "en") -> Panel:
+    """A book's printed counts as a table — case, n, p_l, p_h (p′, F′ where a case has them), F —
+    under the formula they go into, drawn with lines and text set in its cells."""
+    has_pr = any(c["p_redundant"] for c in cases)
+    has_fl = any(c["F_local"] for c in cases)
+    rigid = any(c["F"] <= 0 for c in cases)
+    if has_pr or has_fl:
+        formula = "F = 3n − (2p_{l} + p_{h}" + (" − p′" if has_pr else "") + ")" + (" − F′" if has_fl else "")
+    else:
+        formula = "F = 3n − 2p_{l} − p_{h}"
+    head = [word("case", notation, WORDS), "n", "p_{l}", "p_{h}"] + (["p′"] if has_pr else []) \
+        + (["F′"] if has_fl else []) + ["F"] + ([""] if rigid else [])
+    keys = ["label", "n", "pl", "ph"] + (["p_redundant"] if has_pr else []) + (["F_local"] if has_fl else []) + ["F"]
+    rows = []
+    for c in cases:
+        # a case's label is the scene's name for it; drawn as words, its "_" as spaces
+        row = [str(c["label"]).replace("_", " ")] + [str(c[k]).replace("-", "−") for k in keys[1:]]
+        rows.append(row + ([word("rigid", notation, WORDS) if c["F"] <= 0 else ""] if rigid else []))
+    widths = [max(text_box_size(r[j], TEXT)[0] for r in [head] + rows) + 2.0 * CELL_PAD for j in range(len(head))]
+    widths = [w if j == 0 or (rigid and j == len(head) - 1) else max(w, NUMBER_COL) for j, w in enumerate(widths)]
+    xs = [0.0]
+    for w in widths:
+        xs.append(xs[-1] + w)
+    width, depth = xs[-1], ROW * (len(rows) + 1)
+    items: list[Primitive] = [Text(formula, (width / 2.0, ROW * 0.9), TEXT, italic=True)]
+    # the frame and the rule under the head bold, the other rules thin
+    items += [Polyline(((0.0, 0.0), (width, 0.0), (width, -depth), (0.0, -depth)), "given", closed=True),
+              Segment((0.0, -ROW), (width, -ROW), "given")]
+    items += [Segment((0.0, -ROW * k), (width, -ROW * k), "construction") for k in range(2, len(rows) + 1)]
+    items += [Segment((x, 0.0), (x, -depth), "construction") for x in xs[1:-1]]
+    for k, row in enumerate([head] + rows):
+        y = -ROW * (k + 0.5)
+        for j, text in enumerate(row):
+            if not text:
+                continue
+            if j == 0:  # names from the left, numbers in the middle of their column
+                items.append(Text(text, (xs[0] + CELL_PAD, y), TEXT, "start"))
+            else:  # the head's symbols italic, as the formula's
+                items.append(Text(text, ((xs[j] + xs[j + 1]) / 2.0, y), TEXT, italic=k == 0 and j < len(keys)))
+    return Panel("cases", word("cases", notation, WORDS), tuple(items))
 
-    items: list[Primitive] = []
-    for k, c in enumerate(cases):
-        text = f"{c['label']}:  " + case_formula(c)
-        items.append(Label(text, (0.0, -8.0 * k), (), 3.5, italic=False))
-    return Panel("cases", "Mobility F = 3n − (2pl + ph − p′) − F′", tuple(items))
 
-
-def structure_sheet(title: str, an: Any, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
-    """The whole structure sheet of a checked structure scene."""
+def structure_sheet(title: str, an: Any, page: tuple[float, float], footer: tuple[str, ...] = (),
+                    notation: str = "en") -> Sheet:
+    """The whole structure sheet of a checked structure scene, lettered in ``notation``."""
     from graphmech.problems.structure.check import formula
 
     panels: list[Panel] = []
     if an.cases:
-        panels.append(cases_panel(an.cases))
+        panels.append(cases_panel(an.cases, notation))
     ss = an.scene.problem
     m: Mobility | None = an.mobility
     if ss.topology is not None and m is not None:
         notes = [formula(m)]
         if m.compound:
-            notes.append(f"compound hinges (k − 1 pairs each): {', '.join(m.compound)}")
+            notes.append(_say("compound", notation, ", ".join(map(letter, m.compound))))
         if m.rank is not None:
-            notes.append(f"rank J = {m.rank} of {m.equations}: F = 3·{m.n} − {m.rank} − {m.F_local} = {m.F_actual}")
+            notes.append(_say("rank", notation, m.rank, m.equations, m.n, m.rank, m.F_local, m.F_actual))
+        st: Structure | None = an.structure
+        p_red = int(m.p_redundant_actual or 0)
+        redundant = tuple(st.leftover) if st is not None and p_red > 0 else ()
         if ss.geometry:
             room = (page[0] * 0.6, max(page[1] - 125.0, 40.0))  # less title, notes, the block diagram
             mu = an.scales.get("l") or choose_scale(ss.topology, room)
             an.scales["l"] = mu
-            panels.append(mechanism_panel(ss.topology, an.structure, mu, notes))
-        if an.structure is not None:
-            panels.append(block_panel(an.structure, ss.topology))
+            panels.append(mechanism_panel(ss.topology, st, mu, notes, redundant, notation))
+        if st is not None:
+            panels.append(block_panel(st, ss.topology, notation, p_red))
             if not ss.geometry:
                 panels[-1] = Panel(panels[-1].name, panels[-1].title, panels[-1].items, tuple(notes) + panels[-1].notes)
     return Sheet(title, tuple(panels), page, footer)
@@ -172,4 +313,4 @@ def _outline(ps: list[tuple[float, float]], off: float) -> list[tuple[float, flo
     return [(round(x, 6), round(y, 6)) for x, y in list(shape.exterior.coords)[:-1]]
 
 
-__all__ = ["block_panel", "cases_panel", "choose_scale", "mechanism_panel", "structure_sheet"]
+__all__ = ["WORDS", "block_panel", "cases_panel", "choose_scale", "letter", "mechanism_panel", "structure_sheet"]

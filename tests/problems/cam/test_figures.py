@@ -9,7 +9,7 @@ import pytest
 
 from graphmech.mechanisms.cam import Contact, DiscCam, MotionProgram, OscillatingFollower, Segment, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement
-from graphmech.problems.cam.figures import cam_sheet, numbered_every
+from graphmech.problems.cam.figures import cam_sheet, numbered_every, smooth_drawing
 from graphmech.methods.cam_inversion import divisions, draw_profile
 from graphmech.render.layout import item_box, layout_sheet
 from graphmech.drawing.primitives import (Arrow, Circle, FixedPivot, Label, Panel, Polyline, Segment as Line, Sheet)
@@ -17,6 +17,7 @@ from graphmech.render.recording import RecordingBackend
 from graphmech.render.sheet import dash_pieces, draw_sheet, panel_labels, panel_shapes
 from graphmech.render.svg import render_svg
 from graphmech.render.style import DEFAULT
+from tests.conftest import SCENES, run_cli
 
 MU_L, MU_S, MU_PHI, MU_V, MU_A = 0.001, 0.0005, math.radians(2.0), 0.0005, 0.0005
 SCALES = {"l": MU_L, "s": MU_S, "phi": MU_PHI, "v": MU_V, "a": MU_A}
@@ -106,10 +107,17 @@ def test_dashed_polyline_is_cut_into_dashes_that_follow_the_curve_with_the_pens_
 
 
 # ----------------------------------------------------------------------------- the profile
-def test_base_circle_is_r0_over_mu_l_about_o():
-    cam, _, sheet = make()
-    circles = [i for i in panel(sheet, "profile").items if isinstance(i, Circle) and i.center == (0.0, 0.0)]
-    assert [c.r for c in circles] == [pytest.approx(0.030 / MU_L)] and circles[0].role == "construction"
+def test_base_and_offset_circles_and_the_centre_lines_through_o_are_thin_dash_dot():
+    cam, drawn, sheet = make()
+    items = panel(sheet, "profile").items
+    circles = [i for i in items if isinstance(i, Circle) and i.center == (0.0, 0.0)]
+    assert [c.r for c in circles] == [pytest.approx(0.030 / MU_L), pytest.approx(0.010 / MU_L)]  # r0, e
+    assert all(c.role == "construction" and c.dashdot and not c.dashed for c in circles)
+    centre = [i for i in items if isinstance(i, Line) and i.dashdot]
+    assert sorted((c.p0, c.p1) for c in centre) == sorted([((-centre[0].p1[0], 0.0), (centre[0].p1[0], 0.0)),
+                                                           ((0.0, -centre[0].p1[0]), (0.0, centre[0].p1[0]))])
+    reach = max(np.hypot(*smooth_drawing(cam, drawn, MU_L).actual.T)) / MU_L
+    assert centre[0].p1[0] == pytest.approx(reach + 4.0)  # just past the working profile
 
 
 def test_one_number_per_division_at_the_outer_end_of_its_line():
@@ -126,11 +134,19 @@ def test_one_number_per_division_at_the_outer_end_of_its_line():
         assert math.dist(b, line.p1) == pytest.approx(0.010 / MU_L + 5.0)  # past the roller circle
 
 
-def test_working_profile_is_the_drawn_actual_profile_at_mu_l():
+def test_working_profile_is_the_inversions_envelope_drawn_smooth_at_mu_l():
     cam, drawn, sheet = make(show=["profile"])
     [work] = [i for i in panel(sheet, "profile").items if isinstance(i, Polyline) and i.role == "result"]
     assert work.closed and not work.dashed
-    np.testing.assert_array_equal(np.array(work.points), drawn.actual / MU_L)
+    fine = smooth_drawing(cam, drawn, MU_L)
+    # the same inversion at 1° (and the joints): 360 divisions, not the 24 numbered ones
+    assert len(fine.delta) == 360 and np.max(np.diff(fine.delta)) <= math.radians(1.0) + 1e-12
+    np.testing.assert_array_equal(np.array(work.points), fine.actual / MU_L)
+    chords = np.hypot(*np.diff(np.array(work.points), axis=0).T)
+    assert np.max(chords) < 1.0 and len(work.points) > 300  # no chords between the 15° points
+    # the smooth profile is the rollers' envelope: every point r_r from the pitch curve
+    gap = np.min(np.hypot(*(fine.actual[:, None, :] - fine.pitch[None, :, :]).transpose(2, 0, 1)), axis=1)
+    np.testing.assert_allclose(gap, 0.010, rtol=2e-4)
     # on the page: one closed result polyline, the same points translated and flipped
     calls = group(record(sheet), "profile")
     [poly] = [c for c in calls if c[0] == "polyline" and c[2] == "result" and c[3]]
@@ -139,12 +155,16 @@ def test_working_profile_is_the_drawn_actual_profile_at_mu_l():
     np.testing.assert_allclose(page - page[0], model - model[0], atol=1e-9)
 
 
-def test_pitch_curve_is_thin_and_dashed_through_the_pitch_points_for_a_roller():
+def test_pitch_curve_is_thin_dash_dot_smooth_through_the_pitch_points_drawn_as_dots_for_a_roller():
     cam, drawn, sheet = make(show=["profile"])
     items = panel(sheet, "profile").items
-    [pitch] = [i for i in items if isinstance(i, Polyline) and i.role == "construction" and len(i.points) == 24]
-    assert pitch.closed and pitch.dashed
-    np.testing.assert_array_equal(np.array(pitch.points), drawn.pitch / MU_L)
+    [pitch] = [i for i in items if isinstance(i, Polyline) and i.role == "construction"]
+    assert pitch.closed and pitch.dashdot and not pitch.dashed
+    np.testing.assert_array_equal(np.array(pitch.points), smooth_drawing(cam, drawn, MU_L).pitch / MU_L)
+    on_curve = {tuple(np.round(p, 9)) for p in np.array(pitch.points)}
+    assert all(tuple(np.round(b, 9)) in on_curve for b in drawn.pitch / MU_L)  # B_k are its points
+    dots = [i.center for i in items if isinstance(i, Circle) and i.role == "result" and i.r < 0.5]
+    np.testing.assert_allclose(np.array(dots), drawn.pitch / MU_L)  # a solid dot at each B_k
 
 
 def roller_circle_calls(calls: tuple, r: float) -> list:
@@ -155,37 +175,37 @@ def test_roller_circles_at_every_pitch_point_unless_switched_off():
     cam, drawn, sheet = make(show=["profile"])
     r = 0.010 / MU_L
     assert len(roller_circle_calls(group(record(sheet), "profile"), r)) == 24
-    centres = [i.center for i in panel(sheet, "profile").items
-               if isinstance(i, Circle) and i.role == "construction" and i.r == pytest.approx(r)]
+    centres = [i.center for i in panel(sheet, "profile").items  # (the offset circle about O is 10 mm too)
+               if isinstance(i, Circle) and i.role == "construction" and i.r == pytest.approx(r) and not i.dashdot]
     np.testing.assert_allclose(np.array(centres), drawn.pitch / MU_L)
     _, _, bare = make(show=["profile"], roller_circles=False)
     calls = group(record(bare), "profile")
     assert roller_circle_calls(calls, r) == []
-    assert [c[2] for c in calls if c[0] == "circle" and c[3] == "construction"] == [pytest.approx(30.0)]
+    assert [c for c in calls if c[0] == "circle" and c[3] == "construction"] == []  # r0, e: dash-dot pieces
 
 
 def test_knife_edge_follower_draws_no_roller_circles_and_its_pitch_curve_is_the_profile():
     cam, drawn, sheet = make(reference_cam("knife", 0.0), show=["profile"])
     calls = group(record(sheet), "profile")
-    assert [c[2] for c in calls if c[0] == "circle" and not c[4] and c[3] in ("construction", "given")] \
-        == [pytest.approx(30.0)]  # the base circle only
-    curves = [i for i in panel(sheet, "profile").items if isinstance(i, Polyline) and not i.dashed]
-    assert len(curves) == 1 and curves[0].role == "result"
-    np.testing.assert_array_equal(np.array(curves[0].points), drawn.pitch / MU_L)
+    assert [c for c in calls if c[0] == "circle" and not c[4] and c[3] in ("construction", "given")] == []
+    curves = [i for i in panel(sheet, "profile").items if isinstance(i, Polyline)]
+    assert len(curves) == 1 and curves[0].role == "result" and not (curves[0].dashed or curves[0].dashdot)
+    np.testing.assert_array_equal(np.array(curves[0].points), smooth_drawing(cam, drawn, MU_L).pitch / MU_L)
 
 
-def test_offset_circle_is_thin_and_dashed_and_omega_turns_with_the_cam():
+def test_offset_circle_is_thin_dash_dot_and_omega_turns_with_the_cam():
     cam, _, sheet = make(show=["profile"])
     items = panel(sheet, "profile").items
-    [offset] = [i for i in items if isinstance(i, Polyline) and i.dashed and len(i.points) != 24]
-    assert offset.role == "construction" and offset.closed
-    assert np.hypot(*np.array(offset.points).T) == pytest.approx(10.0)
+    [offset] = [i for i in items if isinstance(i, Circle) and i.center == (0.0, 0.0) and i.r < 20.0]
+    assert offset.role == "construction" and offset.dashdot and offset.r == pytest.approx(10.0)
     arc = next(i for i in items if type(i).__name__ == "ArcArrow")
     assert arc.sweep > 0  # CCW cam
     _, _, cw = make(dataclasses.replace(cam, rotation=-1), show=["profile"])
     assert next(i for i in panel(cw, "profile").items if type(i).__name__ == "ArcArrow").sweep < 0
     assert {"O", "ω"} <= {i.text for i in items if isinstance(i, Label)}
-    assert "μl = 0.001 m/mm" in panel(sheet, "profile").notes
+    assert panel(sheet, "profile").notes == ("μl = 0.001 m/mm", "r_{0} = 30 mm, e = 10 mm, r_{r} = 10 mm; "
+                                             "ω counter-clockwise")
+    assert panel(sheet, "profile").scales == (("l", MU_L),)
 
 
 def test_the_follower_stands_at_division_0_with_its_roller():
@@ -209,7 +229,10 @@ def test_oscillating_follower_arms_from_the_pivot_circle():
     assert len(arms) == len(drawn.delta)
     assert all(math.dist(a.p0, a.p1) == pytest.approx(50.0) for a in arms)
     assert sum(isinstance(i, FixedPivot) for i in items) == 1
-    assert panel(sheet, "displacement").notes[0] == "μψ = 0.00872665 rad/mm"
+    # the swing's scale in degrees per mm, as the scene states it, and its key for the scale bar
+    assert panel(sheet, "displacement").notes == ("μψ = 0.5 °/mm", "μφ = 2 °/mm")
+    assert panel(sheet, "displacement").scales == (("psi", math.radians(0.5)), ("phi", MU_PHI))
+    assert "l_{OA} = 55 mm, l_{AB} = 50 mm" in panel(sheet, "profile").notes[1]
 
 
 def test_marks_draw_the_largest_pressure_angle_and_the_undercut():
@@ -218,7 +241,7 @@ def test_marks_draw_the_largest_pressure_angle_and_the_undercut():
     cam, drawn, sheet = make(show=["profile"], marks=marks)
     items = panel(sheet, "profile").items
     texts = [i.text for i in items if isinstance(i, Label)]
-    assert "αₘₐₓ = 34.9°" in texts and "undercut" in texts
+    assert "α_{max} = 34.86°" in texts and "undercut" in texts
     b16 = tuple(drawn.pitch[16] / MU_L)
     thin = [i for i in items if isinstance(i, Line) and i.role == "label" and i.p0 == b16]
     assert len(thin) == 2  # the normal and the follower's direction
@@ -239,8 +262,10 @@ def test_displacement_curve_reaches_h_over_mu_s_and_its_ordinates_stand_at_the_d
     expect = [(d / MU_PHI, s / MU_S) for d, s in zip(drawn.delta, displacement(cam.program, drawn.delta)) if s > 0]
     np.testing.assert_allclose(np.asarray(ordinates, dtype=float), np.asarray(expect, dtype=float), rtol=1e-6, atol=1e-12)
     assert numbers(disp) == [str(k) for k in range(24)]
-    assert {"rise 150°", "dwell 30°", "return 120°", "dwell 60°"} <= {i.text for i in disp.items if isinstance(i, Label)}
+    # 30° is 15 mm at 2 °/mm: room for the angle only
+    assert {"rise 150°", "30°", "return 120°", "dwell 60°"} <= {i.text for i in disp.items if isinstance(i, Label)}
     assert disp.notes == ("μs = 0.0005 m/mm", "μφ = 2 °/mm")
+    assert disp.scales == (("s", MU_S), ("phi", MU_PHI))
     # on the page: the curve's highest point is 32 mm above the δ axis
     calls = group(record(sheet), "displacement")
     axis = next(c for c in calls if c[0] == "line" and c[3] == "label" and c[1][1] == c[2][1])
@@ -252,13 +277,14 @@ def test_uniform_rise_shows_plus_and_minus_infinity_at_its_two_ends():
     cam, _, sheet = make()
     acc = panel(sheet, "acceleration")
     marks = {i.text: i.anchor for i in acc.items if isinstance(i, Label) and "∞" in i.text}
-    assert marks == {"+∞": (0.0, pytest.approx(9.0)), "−∞": (pytest.approx(150.0 / 2.0), pytest.approx(-9.0))}
+    assert marks == {"+∞": (0.0, pytest.approx(10.0)), "−∞": (pytest.approx(150.0 / 2.0), pytest.approx(-10.0))}
     arrows = [i for i in acc.items if isinstance(i, Arrow) and i.role == "result"]
     assert sorted(a.p1 for a in arrows) == sorted(marks.values())
     assert all(a.p0 == (a.p1[0], 0.0) for a in arrows)
     texts = [c[1] for c in group(record(sheet), "acceleration") if c[0] == "text"]
     assert "+∞" in texts and "−∞" in texts
     assert acc.notes == ("μa = 0.0005 (m/s²)/mm", "μφ = 2 °/mm")
+    assert acc.scales == (("a", MU_A), ("phi", MU_PHI))
 
 
 def test_acceleration_jumps_of_the_parabolic_return_are_dashed_and_pieces_are_apart():
@@ -320,4 +346,64 @@ def test_the_sheet_renders_to_the_same_svg_every_time():
     svg = render_svg(one, "gtest", on_warning=lambda w: None)
     assert svg == render_svg(two, "gtest", on_warning=lambda w: None)
     assert svg.startswith("<?xml") or svg.startswith("<svg")
-    assert "nan" not in svg.lower() and "−∞" in svg and "αₘₐₓ" in svg
+    assert "nan" not in svg.lower() and "−∞" in svg and "max</tspan>" in svg
+
+
+# ----------------------------------------------------------------------------- notation
+def with_notation(src, dst_dir, notation: str):
+    """A copy of the scene ``src`` lettered in ``notation`` ([page] notation), same file name."""
+    text = src.read_text(encoding="utf-8")
+    if "\n[page]\n" in text:
+        text = text.replace("\n[page]\n", f'\n[page]\nnotation = "{notation}"\n', 1)
+    else:
+        text += f'\n[page]\nnotation = "{notation}"\n'
+    dst_dir.mkdir(exist_ok=True)
+    out = dst_dir / src.name
+    out.write_text(text, encoding="utf-8")
+    return out
+
+
+CAPTIONS = {"en": ("Cam profile by inversion", "Displacement diagram", "Acceleration diagram"),
+            "zh": ("凸轮轮廓曲线", "位移线图", "加速度线图"),
+            "ru": ("профиль кулачка", "график перемещений", "график ускорений")}
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in SCENES.glob("cam.*.toml")))
+def test_each_reference_cam_scene_is_lettered_in_zh_and_ru_and_checks_the_same(tmp_path, name):
+    src = SCENES / f"{name}.toml"
+    shown: dict[str, str] = {}
+    checked: dict[str, str] = {}
+    for notation in ("en", "zh", "ru"):
+        scene = with_notation(src, tmp_path / notation, notation)
+        code, out, err = run_cli("render", str(scene), "-o", str(tmp_path / f"{notation}.svg"))
+        assert code == 0, err
+        shown[notation] = (tmp_path / f"{notation}.svg").read_text(encoding="utf-8")
+        code, checked[notation], err = run_cli("check", str(scene))
+        assert code in (0, 1), err
+    assert checked["zh"] == checked["ru"] == checked["en"]  # drawn words only: check reads the same
+    for notation, words in CAPTIONS.items():
+        present = [w for w in words if w in shown[notation]]
+        assert present, (notation, words)  # each scene shows a profile, an s–δ or an a–δ diagram
+        for other in set(CAPTIONS) - {notation}:
+            assert not any(w in shown[other] for w in present), (notation, other)
+    # the segments under the s–δ axis are named in the book's words (where there is room)
+    assert "推程" in shown["zh"] and ">rise " in shown["en"]
+    assert ">rise " not in shown["zh"] + shown["ru"] and ">dwell " not in shown["zh"] + shown["ru"]
+    if name.startswith("cam.offset_roller"):  # 150° at 2.5 °/mm: room for the Russian words too
+        assert ">удаление 150°<" in shown["ru"] and ">近休止 60°<" in shown["zh"]
+
+
+def test_every_composed_text_is_lettered_no_bare_underscore_and_at_least_3_5_mm():
+    import re
+
+    program = MotionProgram(math.radians(25), (Segment("rise", math.pi, "cosine"), Segment("return", math.pi, "sine")))
+    rocker = DiscCam(0.025, OscillatingFollower(0.055, 0.05, "roller", 0.008), program, rotation=1)
+    marks = {"alpha_max_at": math.radians(240.0), "alpha_max": 0.6085, "undercut_at": [math.radians(150.0)]}
+    sheets = [make(marks=marks)[2], make(rocker, show=["profile", "displacement"],
+                                         scales={"l": 0.001, "s": math.radians(0.5), "phi": MU_PHI})[2]]
+    for sheet in sheets:
+        for p in sheet.panels:
+            texts = [p.title, *p.notes] + [i.text for i in p.items if isinstance(i, Label)]
+            assert not [t for t in texts if re.search(r"_(?!\{)", t)], texts
+            assert not [t for t in texts if re.search(r"\d\.\d{5}", t)], texts  # 4 significant figures
+            assert min(i.size for i in p.items if isinstance(i, Label)) >= 3.5

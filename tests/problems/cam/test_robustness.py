@@ -135,7 +135,7 @@ def test_an_oscillating_flat_face_needs_no_arm(tmp_path):
     code, out, err = strict("render", str(p), "-o", str(tmp_path / "c.svg"))
     assert code == 0, err
     svg = (tmp_path / "c.svg").read_text(encoding="utf-8")
-    assert "|OA| = 55 mm; ω counter-clockwise" in svg  # no arm length l to state
+    assert ">OA</tspan>" in svg and "> = 55 mm; ω counter-clockwise</tspan>" in svg  # no arm l_AB to state
     # an arm given anyway is still read (and stated), as before
     q = scene(tmp_path, r0=25, h=25, follower=OSC_FLAT + "\narm = 50", find='["h"]', name="arm.toml")
     assert check_json(q)["quantities"][0]["graphical"] == pytest.approx(math.radians(25), rel=1e-12)

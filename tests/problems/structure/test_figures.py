@@ -78,22 +78,153 @@ def test_the_scale_is_the_round_one_that_fits_the_pairs_in_the_room():
     assert choose_scale(_five_bar(), (30.0, 100.0)) == 0.005  # 0.15 m in 30 mm
 
 
-def test_the_block_diagram_holds_class_I_then_each_group():
-    from graphmech.drawing.primitives import Arrow, Label
+def test_the_block_diagram_holds_class_I_then_each_group_inscribed_in_the_middle_of_its_box():
+    from graphmech.drawing.primitives import Arrow, Polyline, Text
     from graphmech.mechanisms.topology import structure
     from graphmech.problems.structure.figures import block_panel
 
     topo = _five_bar()
     panel = block_panel(structure(topo), topo)
-    assert [i.text for i in panel.items if isinstance(i, Label)] == ["I: 1 + 2, 5", "II: 3, 4"]
+    texts = [i for i in panel.items if isinstance(i, Text)]
+    assert [t.text for t in texts] == ["I: 1 + 2, 5", "II: 3, 4"]
+    boxes = [i.points for i in panel.items if isinstance(i, Polyline)]
+    for t, box in zip(texts, boxes):  # set at the box's centre, not placed around it
+        assert t.at == pytest.approx(((box[0][0] + box[2][0]) / 2, (box[0][1] + box[2][1]) / 2))
     assert sum(isinstance(i, Arrow) for i in panel.items) == 1 and panel.notes == ("a class II mechanism",)
+    assert block_panel(structure(topo), topo, "zh").notes == ("II级机构",)
+    assert block_panel(structure(topo), topo, "ru").notes == ("механизм II класса",)
 
 
-def test_the_cases_panel_writes_each_count_out():
+CASES = [{"label": "punch_press_initial", "n": 3, "pl": 4, "ph": 1, "p_redundant": 0, "F_local": 0, "F": 0},
+         {"label": "3-1", "n": 7, "pl": 10, "ph": 0, "p_redundant": 0, "F_local": 0, "F": 1},
+         {"label": "closed_gear_train", "n": 7, "pl": 7, "ph": 8, "p_redundant": 2, "F_local": 0, "F": 1}]
+
+
+def cells(panel):
+    """The table's text by row (top first), each row left to right."""
+    from graphmech.drawing.primitives import Text
+
+    rows: dict[float, list] = {}
+    for t in panel.items:
+        if isinstance(t, Text) and t.at[1] < 0:
+            rows.setdefault(round(t.at[1], 6), []).append(t)
+    return [[t.text for t in sorted(r, key=lambda t: t.at[0])] for _, r in sorted(rows.items(), reverse=True)]
+
+
+def test_printed_counts_are_a_table_of_n_pl_ph_p_and_f_under_the_formula():
+    from graphmech.drawing.lettering import text_box_size
+    from graphmech.drawing.primitives import Polyline, Segment, Text
     from graphmech.problems.structure.figures import cases_panel
 
-    panel = cases_panel([{"label": "3-1", "n": 7, "pl": 10, "ph": 0, "p_redundant": 0, "F_local": 0, "F": 1}])
-    assert [i.text for i in panel.items] == ["3-1:  F = 3·7 − (2·10 + 0 − 0) − 0 = 1"]
+    panel = cases_panel(CASES)
+    assert cells(panel) == [["case", "n", "p_{l}", "p_{h}", "p′", "F"],  # no F′ column: no case has one
+                            ["punch press initial", "3", "4", "1", "0", "0", "rigid"],
+                            ["3-1", "7", "10", "0", "0", "1"],
+                            ["closed gear train", "7", "7", "8", "2", "1"]]
+    [formula] = [t for t in panel.items if isinstance(t, Text) and t.at[1] > 0]
+    assert formula.text == "F = 3n − (2p_{l} + p_{h} − p′)"
+    [frame] = [i for i in panel.items if isinstance(i, Polyline)]
+    x0, x1 = frame.points[0][0], frame.points[1][0]
+    depth = -frame.points[2][1]
+    assert formula.at[0] == pytest.approx((x0 + x1) / 2) and depth == pytest.approx(4 * 7.5)  # head + 3 rows
+    rules = [i for i in panel.items if isinstance(i, Segment)]
+    across = sorted(-r.p0[1] for r in rules if r.p0[1] == r.p1[1])
+    downs = sorted(r.p0[0] for r in rules if r.p0[0] == r.p1[0])
+    assert across == pytest.approx([7.5, 15.0, 22.5]) and len(downs) == 6  # 7 columns
+    # every cell's text inside its cell: no rule crosses it
+    for t in panel.items:
+        if isinstance(t, Text) and t.at[1] < 0:
+            w, h = text_box_size(t.text, t.size)
+            left = t.at[0] - (0.0 if t.anchor == "start" else w / 2)
+            assert not [x for x in [x0, x1, *downs] if left < x < left + w], t
+            assert not [y for y in [0.0, depth, *across] if -(t.at[1] + h / 2) < y < -(t.at[1] - h / 2)], t
+    plain = cases_panel(CASES[1:2], "zh")
+    assert cells(plain)[0] == ["机构", "n", "p_{l}", "p_{h}", "F"] and plain.title == "由题给数据计算自由度"
+    assert [t.text for t in plain.items if isinstance(t, Text) and t.at[1] > 0] == ["F = 3n − 2p_{l} − p_{h}"]
+
+
+def test_a_ternary_link_is_a_filled_plate_with_its_number_inside_and_a_bar_is_a_line():
+    from graphmech.drawing.primitives import Label, Plate, Segment, Text
+    from graphmech.problems.structure.check import analyse_structure
+    from graphmech.problems.structure.figures import structure_sheet
+    from graphmech.scene import load_scene
+
+    an = analyse_structure(load_scene(SCENES / "dof.hfut_cases-ic_engine_EG.toml"))
+    sheet = structure_sheet("IC engine", an, (297.0, 210.0))
+    mech = next(p for p in sheet.panels if p.name == "structure")
+    plates = [i for i in mech.items if isinstance(i, Plate)]
+    assert len(plates) == 2 and all(len(p.points) == 3 for p in plates)  # links 3 (B, C, D) and 6 (E, G, H)
+    inside = {t.text: t.at for t in mech.items if isinstance(t, Text)}
+    assert set(inside) == {"3", "6"}
+    for plate in plates:  # each number at its triangle's centroid
+        c = tuple(sum(q[k] for q in plate.points) / 3 for k in (0, 1))
+        assert any(at == pytest.approx(c) for at in inside.values())
+    assert {"2", "5", "7"} <= {i.text for i in mech.items if isinstance(i, Label)}
+    assert not any(isinstance(i, Segment) and i.dashed for i in mech.items)  # nothing redundant here
+    assert mech.scales == (("l", an.scales["l"]),)
+
+
+def test_a_redundant_link_is_dashed_and_named_under_the_block_diagram():
+    from graphmech.drawing.primitives import Label, Segment
+    from graphmech.problems.structure.check import analyse_structure
+    from graphmech.problems.structure.figures import structure_sheet
+    from graphmech.scene import load_scene
+
+    an = analyse_structure(load_scene(SCENES / "structure.parallelogram_redundant.toml"))
+    sheet = structure_sheet("P", an, (297.0, 210.0))
+    mech = next(p for p in sheet.panels if p.name == "structure")
+    bars = [i for i in mech.items if isinstance(i, Segment) and i.role == "given"]
+    mu = an.scales["l"]
+    dashed = [(round(b.p0[0] * mu * 1e3, 6), round(b.p1[0] * mu * 1e3, 6)) for b in bars if b.dashed]
+    assert dashed == [(50.0, 80.0)]  # EF, link 5, only
+    assert len([b for b in bars if not b.dashed]) == 3  # AB, BFC (one bar through F), CD
+    # link 3's number beside a piece of its bar, not on the middle pair F
+    three = next(i for i in mech.items if isinstance(i, Label) and i.text == "3")
+    assert three.anchor[0] * mu * 1e3 == pytest.approx(55.0)
+    groups = next(p for p in sheet.panels if p.name == "groups")
+    assert groups.notes[-1] == "redundant links (dashed, p′ = 1) left out of the groups: 5"
+
+
+def test_point_names_with_a_number_are_lettered_with_a_subscript():
+    from graphmech.drawing.primitives import Label
+    from graphmech.problems.structure.check import analyse_structure
+    from graphmech.problems.structure.figures import structure_sheet
+    from graphmech.scene import load_scene
+
+    an = analyse_structure(load_scene(SCENES / "dof.hfut_cases-precision_press_1.toml"))
+    sheet = structure_sheet("P", an, (297.0, 210.0))
+    mech = next(p for p in sheet.panels if p.name == "structure")
+    names = {i.text for i in mech.items if isinstance(i, Label) and i.italic}
+    assert {"D_{1}", "D_{2}", "K_{1}", "K_{2}", "C′", "M"} <= names and "K1" not in names
+    assert "compound hinges (k − 1 pairs each): M, K_{1}, K_{2}, E" in mech.notes
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in SCENES.glob("*.toml")
+                                        if p.stem.startswith(("dof.", "structure."))))
+def test_each_structure_sheet_is_lettered_in_zh_and_ru_and_checks_the_same(tmp_path, name):
+    import re
+
+    captions = {"en": ("Mobility from the printed counts", "Structure: drivers and Assur groups"),
+                "zh": ("由题给数据计算自由度", "机构的组成"), "ru": ("подвижность по заданным числам", "строение механизма")}
+    text = (SCENES / f"{name}.toml").read_text(encoding="utf-8")
+    shown, checked = {}, {}
+    for notation in captions:
+        d = tmp_path / notation
+        d.mkdir()
+        (d / f"{name}.toml").write_text(text + f'\n[page]\nnotation = "{notation}"\n', encoding="utf-8")
+        code, out, err = run_cli("render", str(d / f"{name}.toml"), "-o", str(d / "x.svg"))
+        assert code == 0, err
+        shown[notation] = (d / "x.svg").read_text(encoding="utf-8")
+        code, checked[notation], err = run_cli("check", str(d / f"{name}.toml"))
+        assert code in (0, 1), err
+    assert checked["en"] == checked["zh"] == checked["ru"]
+    for notation, words in captions.items():
+        present = [w for w in words if w in shown[notation]]
+        assert present, (notation, words)
+        assert not any(w in shown[o] for o in captions if o != notation for w in present)
+    # what graphmech composes holds no bare "_" (the title is the scene's own text)
+    body = re.sub(r'<g id="[^"]*-title">.*?</g>', "", shown["en"])
+    assert not re.findall(r">[^<]*_[^<]*<", body)
 
 
 def test_a_links_outline_is_the_hull_of_its_pairs():
