@@ -67,9 +67,9 @@ def test_a_sliders_diagrams_are_s_v_a_and_a_links_psi_omega_epsilon(slider_crank
     period = 2 * math.pi / cyc.mu_phi
     names = {dg.subject: [t for t, _ in labels(diagram_items(dg, cyc.n, period)) if not t.isdigit()]
              for dg in cyc.diagrams}
-    assert names["C"][:3] == ["s_C", "φ", "O"]
-    assert {"v_C", "a_C", "P₁", "H₁", "P₂", "H₂"} <= set(names["C"])
-    assert names["2"][:3] == ["ψ₂", "φ", "O"] and {"ω₂", "ε₂"} <= set(names["2"])
+    assert names["C"][:3] == ["s_{C}", "φ", "O"]
+    assert {"v_{C}", "a_{C}", "P_{1}", "H_{1}", "P_{2}", "H_{2}"} <= set(names["C"])
+    assert names["2"][:3] == ["ψ_{2}", "φ", "O"] and {"ω_{2}", "ε_{2}"} <= set(names["2"])
 
 
 def test_a_slider_cranks_extreme_positions_and_its_stroke(slider_crank):
@@ -77,7 +77,7 @@ def test_a_slider_cranks_extreme_positions_and_its_stroke(slider_crank):
     items = characteristics_items(slider_crank.drawn, slider_crank.scene.linkage)
     sliders = [it for it in items if isinstance(it, Slider)]
     assert sorted(s.center for s in sliders) == [(30.0, 0.0), (50.0, 0.0)]
-    assert {"θ", "H", "γmin", "A", "B₁", "C₁", "B₂", "C₂"} <= {t for t, _ in labels(items)}
+    assert {"θ", "H", "γ_{min}", "A", "B₁", "C₁", "B₂", "C₂", "B′", "C′"} <= {t for t, _ in labels(items)}
     stroke = next(at for t, at in labels(items) if t == "H")
     assert stroke[0] == pytest.approx(40.0)  # marked in the middle of C₁C₂
 
@@ -111,9 +111,9 @@ def test_the_sheet_has_a_panel_per_shown_entry_in_order():
 def test_the_characteristics_sheet_adds_the_ranges_panel():
     drawing, _ = sheet(load_scene(SCENES / "linkage.grashof_ranges.toml"))
     assert [p.name for p in drawing.panels] == ["characteristics", "ranges"]
-    assert drawing.panels[0].title == "Extreme positions, θ, ψ and γmin"
+    assert drawing.panels[0].title == "Extreme positions, θ, ψ and γ_{min}"
     assert "θ = 33.38°, ψ = 59.1°, K = (180° + θ)/(180° − θ) = 1.455" in drawing.panels[0].notes
-    assert drawing.panels[1].notes[0] == "1 mm of lAB per mm"
+    assert drawing.panels[1].notes[0] == "1 mm of l_{AB} per mm"
 
 
 def test_same_scene_same_svg():

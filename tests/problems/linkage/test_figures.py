@@ -39,7 +39,7 @@ def test_slider_crank_diagram_symbols():
     assert kinds.count(FixedPivot) == 1  # A, hatched
     assert kinds.count(Slider) == 1 and kinds.count(GuideLine) == 1  # block 3 on its guide
     assert kinds.count(Hinge) == 2  # B and C
-    assert {i.text for i in mech.items if isinstance(i, Label)} >= {"A", "B", "C", "1", "2", "3", "ω₁"}
+    assert {i.text for i in mech.items if isinstance(i, Label)} >= {"A", "B", "C", "1", "2", "3", "ω_{1}"}
     arc = next(i for i in mech.items if isinstance(i, ArcArrow))
     assert arc.sweep > 0  # ω1 counter-clockwise
     # links are drawn at μl: |AB| on paper is l_AB/μl = 100 mm / 5 = 20 mm
@@ -73,4 +73,5 @@ def test_acceleration_polygon_lays_off_the_normal_component_with_its_point_n():
 def test_scale_notes_are_written_under_each_panel():
     an, sheet = sheet_of("kin.oscillating_block")
     notes = [n for p in sheet.panels for n in p.notes]
-    assert notes == ["μl = 0.002 m/mm", "μv = 0.005 (m/s)/mm", "μa = 0.05 (m/s²)/mm"]
+    assert notes == ["μ_{l} = 0.002 m/mm", "μ_{v} = 0.005 (m/s)/mm", "μ_{a} = 0.05 (m/s²)/mm"]
+    assert [p.scales for p in sheet.panels] == [(("l", 0.002),), (("v", 0.005),), (("a", 0.05),)]

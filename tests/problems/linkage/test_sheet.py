@@ -27,8 +27,11 @@ def scene(text=FOURBAR):
 def test_a_panel_per_shown_figure_and_position_with_the_footer():
     sheet, warnings = scene_sheet(scene(), ("graphmech test",))
     assert [p.name for p in sheet.panels] == ["mechanism-30", "velocity-30"]
-    assert sheet.panels[0].title == "Kinematic diagram, φ₂ = 30°"
-    assert sheet.footer == ("graphmech test",) and sheet.page == (297.0, 210.0) and warnings == []
+    assert sheet.panels[0].title == "Kinematic diagram, φ_{2} = 30°"
+    assert sheet.footer == ("graphmech test",) and sheet.page == (297.0, 210.0)
+    # μv = 0.01 is the finest round scale the A4 panel holds: v_C comes out under 10 mm, so it is named
+    assert warnings == ["v_C is drawn 9.4 mm long at μv = 0.01 (m/s)/mm, under 10 mm: read to ±0.5 mm it is "
+                        "±5.3 % (a smaller μv or a larger page makes it longer)"]
     rec = RecordingBackend()
     draw_sheet(sheet, rec)
     assert [c[1] for c in rec.calls if c[0] == "begin_group"] == ["title", "panel1-mechanism-30",
@@ -60,4 +63,4 @@ def test_the_mechanism_at_position_1_alone_in_the_first_row():
     s = dataclasses.replace(scene(), positions=Positions((0.5, 1.0), ("1", "2")), find=("v_C",))
     panels = mechanism_at_position_1(s, ())
     assert [(p.name, p.row) for p in panels] == [("mechanism-1", 0)]
-    assert panels[0].title == "Kinematic diagram, position 1 (φ = 0), φ₂ = 1°"
+    assert panels[0].title == "Kinematic diagram, position 1 (φ = 0), φ_{2} = 1°"
