@@ -205,7 +205,7 @@ def _clusters(found: list[tuple[XY, str, int]], within: float) -> list[list[tupl
             groups.append([f])
         else:
             home.append(f)
-    return [sorted(g, key=lambda t: (t[1], t[2])) for g in groups]
+    return [sorted(g, key=lambda t: (t[1] == "", t[1], t[2])) for g in groups]  # letters before bare numbers
 
 
 def _numbers_on_lines(found: list[tuple[XY, str, int]]) -> list[tuple[XY, str, int]]:

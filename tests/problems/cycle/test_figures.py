@@ -190,3 +190,43 @@ def test_a_stated_scale_that_cannot_be_drawn_is_refused(tmp_path, scale, across)
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
     assert code == 2 and err.startswith(f"s.toml: scales: μl = {scale.replace('1e9', '1e+09').replace('1e-9', '1e-09')} m/mm draws the "
                                         f"mechanism {across} mm across"), err
+
+
+def test_the_other_positions_are_thin_dashed_and_no_letter_stands_twice():
+    """Position 1 bold with its letters and the coupler BCE a plate; the eleven others thin dashed."""
+    from graphmech.drawing.primitives import Plate
+
+    an = analyse_cycle(load_scene(SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"))
+    items = cycle_items(an.cycle, ("E",))
+    segs = [it for it in items if isinstance(it, Segment)]
+    assert sum(1 for s in segs if s.dashed and s.role == "construction") >= 11 * 3
+    assert all(s.dashed for s in segs if s.role == "construction")
+    assert sum(isinstance(it, Plate) for it in items) == 1  # position 1's coupler BCE
+    letters = [t for t, _ in labels(items) if not t.isdigit()]
+    assert len(letters) == len(set(letters)) and {"A", "B", "C", "D", "E"} <= set(letters)
+
+
+def test_the_extreme_positions_panel_letters_each_position_once():
+    """B₁C₁ bold, B₂C₂ and the γ_min position B′C′ thin dashed; AD a dash-dot line of centres; γ_min
+    lettered off the line AD."""
+    an = analyse_cycle(load_scene(SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"))
+    items = characteristics_items(an.drawn, an.scene.linkage)
+    texts = [t for t, _ in labels(items)]
+    assert len(texts) == len(set(texts)) and {"B₁", "C₁", "B₂", "C₂", "B′", "C′", "γ_{min}"} <= set(texts)
+    A, D = an.drawn.points["A"], an.drawn.points["D"]
+    assert any(s.dashdot and {s.p0, s.p1} == {A, D} for s in items if isinstance(s, Segment))
+    assert not any(s.role == "given" for s in items if isinstance(s, Segment))  # the frame is its pivots
+    gx, gy = next(at for t, at in labels(items) if t == "γ_{min}")
+    off = abs((D[0] - A[0]) * (gy - A[1]) - (D[1] - A[1]) * (gx - A[0])) / math.dist(A, D)
+    assert off > 1.5  # the letter's anchor stands off the frame line
+
+
+def test_common_pole_images_are_merged_where_they_coincide_and_numbered_along_a_line(slider_crank):
+    """The slider's images c₁ … c₁₂ lie on the guide's line through p: numbers there, the letter at
+    the farthest; no text twice."""
+    from graphmech.problems.cycle.figures import polygons_items
+
+    texts = [t for t, _ in labels(polygons_items(slider_crank.cycle, "velocity"))]
+    assert len(texts) == len(set(texts))
+    assert sum(t.startswith("c") for t in texts) <= 2 and sum(t[:1].isdigit() for t in texts) >= 8
+    assert {f"b_{{{k}}}" for k in (2, 3, 5, 6)} <= set(texts)
