@@ -169,6 +169,6 @@ def test_a_flywheel_scene_draws_its_mechanism_at_position_1(tmp_path):
     scene = tmp_path / "fly.toml"
     scene.write_text(text, encoding="utf-8")
     svg, _ = render_scene(scene)
-    assert "position 1 (φ = 0)" in svg and "μl = " in svg and "μT = " in svg
+    assert "position 1 (φ = 0)" in svg and ">l</tspan>" in svg and "μT = " in svg  # μ_{l} set as a subscript
     code, _, err = run_cli("render", str(scene), "-o", str(tmp_path / "f.svg"))
     assert code == 0, err
