@@ -369,6 +369,15 @@ def _sense_marks(linkage: Linkage, pos: dict[str, XY], senses: Mapping[str, tupl
         phi = math.atan2(pos[b][1] - pos[a][1], pos[b][0] - pos[a][0])
         r = min(6.0, 0.3 * length)
         busy = [phi, phi + math.pi]
+        # a plate's marks stand outside it, off the side its other joints are not on
+        side = sum((pos[n][0] - mid[0]) * -math.sin(phi) + (pos[n][1] - mid[1]) * math.cos(phi) for n in at)
+        if abs(side) > 1.0:
+            out_angle = phi - math.pi / 2 if side > 0 else phi + math.pi / 2
+            if omega is not None:
+                out += sense_mark(mid, r, busy, omega, f"ω_{{{lid}}}", first=out_angle)
+            if eps is not None:
+                out += sense_mark(mid, r + 4.0, busy, eps, f"ε_{{{lid}}}", first=out_angle)
+            continue
         if omega is not None:
             out += sense_mark(mid, r, busy, omega, f"ω_{{{lid}}}", first=phi + math.pi / 2)
         if eps is not None:
