@@ -23,18 +23,18 @@ says which positions are drawn.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Any, Sequence, cast
 
 import numpy as np
 
 from graphmech.construction.graph import values_at
-from graphmech.problems.linkage.figures import display, mechanism_items, polygon_items
-from graphmech.drawing.diagrams import AXIS_OVERRUN, NUMBER_SIZE, count_every, moved, numbers_every, phi_axis_numbers
-from graphmech.drawing.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
+from graphmech.problems.linkage.figures import LETTER, caption, display, mechanism_items, polygon_items, scale_note
+from graphmech.drawing.diagrams import AXIS_OVERRUN, count_every, moved, numbers_every, phi_axis_numbers
+from graphmech.drawing.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Polyline, Primitive, Role, Segment, Sheet, Slider, angle_arc)
-from graphmech.drawing.lettering import subscript
-from graphmech.scales import format_scale
+from graphmech.drawing.lettering import number, subscript
 
 __all__ = ["cycle_sheet", "cycle_items", "polygons_items", "diagram_items", "characteristics_items", "MOST_DRAWN"]
 
@@ -44,6 +44,8 @@ MOST_DRAWN, MOST_RAYS = 24, 12
 MOST_DOTS = 72
 #: Radius of a dot, mm; of the angle marks θ, ψ, γ.
 DOT, MARK_R = 0.35, 9.0
+#: The smallest transmission angle's letter.
+GAMMA_MIN = "γ_{min}"
 #: Vertical gap between the stacked diagrams, mm.
 STACK_GAP = 14.0
 
@@ -129,18 +131,20 @@ def cycle_items(cyc: Any, paths: Sequence[str] = ()) -> list[Primitive]:
             links = set(cyc.build.linkage.links())
             first = [it for it in its if not (isinstance(it, Label) and not it.italic and it.text in links)]
             continue
-        for it in its:  # the other positions thin, without letters, arrows or repeated frame
+        for it in its:  # the other positions thin dashed, without letters, arrows or repeated frame
             if isinstance(it, Segment):
-                items.append(Segment(it.p0, it.p1, "construction"))
+                items.append(Segment(it.p0, it.p1, "construction", dashed=True))
+            elif isinstance(it, Plate):
+                items += [Segment(a, b, "construction", dashed=True) for a, b in zip(it.points, it.points[1:] + it.points[:1])]
             elif isinstance(it, (Hinge, Slider)):
                 items.append(it)
     numbers: list[Primitive] = []
     A = cyc.mech[crank.pivot][0]
     tip = cyc.mech[crank.tip]
-    every = numbers_every(cyc.n, 2.0 * math.pi * float(np.hypot(*(tip[0] - A))) / cyc.n)
+    every = numbers_every(cyc.n, 2.0 * math.pi * float(np.hypot(*(tip[0] - A))) / cyc.n, LETTER)
     for i in range(0, cyc.n, every):
         at = _pt(tip[i])
-        numbers.append(Label(str(i + 1), at, (_unit(at, _pt(A)),), NUMBER_SIZE, italic=False))
+        numbers.append(Label(str(i + 1), at, (_unit(at, _pt(A)),), LETTER, italic=False))
     curves: list[Primitive] = []
     for name in paths:
         xy = cyc.mech[name]
@@ -150,12 +154,19 @@ def cycle_items(cyc: Any, paths: Sequence[str] = ()) -> list[Primitive]:
     return items + curves + first + numbers
 
 
+#: Images of the common-pole polygons closer than this (mm) share one label.
+MERGE_MM = 1.0
+
+
 def polygons_items(cyc: Any, panel: str) -> list[Primitive]:
-    """The polygons of the drawn positions with a common pole, images lettered with the position."""
+    """The polygons of the drawn positions with a common pole, images lettered with the
+    position (b₁ … b₁₂); images that (nearly) coincide share one label (c_{3,9}; b_{4},c_{4}); a
+    point's images on one line through the pole are numbered, lettered at the farthest tip only."""
     b, plan = cyc.build, cyc.plan
     images = b.vel if panel == "velocity" else b.acc
     items: list[Primitive] = []
-    labels: dict[tuple[float, float], str] = {}
+    pole = ""
+    found: list[tuple[XY, str, int]] = []  # (where, image letter, position number)
     for i in drawn_positions(cyc.n):
         if i in cyc.polygon_failures:  # no polygon at a change point: the panel's note says so
             continue
@@ -165,7 +176,7 @@ def polygons_items(cyc: Any, panel: str) -> list[Primitive]:
                 continue
             if isinstance(it, Label):
                 if i == 0 and abs(it.anchor[0]) < 1e-9 and abs(it.anchor[1]) < 1e-9:
-                    labels[(0.0, 0.0)] = it.text  # the pole (and the images of fixed points)
+                    pole = it.text  # the pole (and the images of fixed points)
                 continue
             items.append(it)
         for name, step in images.items():
@@ -173,14 +184,62 @@ def polygons_items(cyc: Any, panel: str) -> list[Primitive]:
             if s is None or not s.label or step not in values:
                 continue
             at = _pt(values[step])
-            key = (round(at[0], 6), round(at[1], 6))
-            if key == (0.0, 0.0):
+            if math.hypot(*at) < 1e-6:
                 continue
-            text = display(s.label)
-            text = text + (subscript(str(i + 1)) if not any(ch in text for ch in "₀₁₂₃₄₅₆₇₈₉") else f"({i + 1})")
-            labels[key] = labels[key] + "," + text if key in labels else text
-    out = [Label(t, k, (), 3.0) for k, t in labels.items()]
+            found.append((at, display(s.label), i + 1))
+    out: list[Primitive] = [Label(pole, (0.0, 0.0), (), LETTER)] if pole else []
+    found = _numbers_on_lines(found)
+    for group in _clusters(found, MERGE_MM):
+        at = (sum(g[0][0] for g in group) / len(group), sum(g[0][1] for g in group) / len(group))
+        out.append(Label(_merged(group), at, (), LETTER))
     return items + out
+
+
+def _clusters(found: list[tuple[XY, str, int]], within: float) -> list[list[tuple[XY, str, int]]]:
+    """The points in groups, each point within ``within`` mm of its group's first point (no
+    chains: images spaced along one line stay apart)."""
+    groups: list[list[tuple[XY, str, int]]] = []
+    for f in found:
+        home = next((g for g in groups if math.dist(f[0], g[0][0]) < within), None)
+        if home is None:
+            groups.append([f])
+        else:
+            home.append(f)
+    return [sorted(g, key=lambda t: (t[1] == "", t[1], t[2])) for g in groups]  # letters before bare numbers
+
+
+def _numbers_on_lines(found: list[tuple[XY, str, int]]) -> list[tuple[XY, str, int]]:
+    """The images of a point that all lie on one line through the pole (a slider's velocity
+    along its guide) pile up along that line: they keep their letter at the farthest tip only,
+    the others are numbered (the letter "" stands for "the same as the line's")."""
+    by: dict[str, list[int]] = {}
+    for k, (_, letter, _) in enumerate(found):
+        by.setdefault(letter, []).append(k)
+    out = list(found)
+    for letter, ks in by.items():
+        far = max(ks, key=lambda k: math.hypot(*found[k][0]))
+        r = math.hypot(*found[far][0])
+        if len(ks) < 3 or r <= 0.0:
+            continue
+        u = (found[far][0][0] / r, found[far][0][1] / r)
+        if all(abs(found[k][0][0] * u[1] - found[k][0][1] * u[0]) < 0.5 for k in ks):
+            for k in ks:
+                if k != far:
+                    out[k] = (found[k][0], "", found[k][2])
+    return out
+
+
+def _merged(group: list[tuple[XY, str, int]]) -> str:
+    """One label for images standing together: c_{3,9}; b_{4}, c_{4}; s₂(3,9)."""
+    by: dict[str, list[int]] = {}
+    for _, letter, k in group:
+        by.setdefault(letter, []).append(k)
+    parts = []
+    for letter, ks in by.items():
+        nums = ",".join(str(k) for k in sorted(set(ks)))
+        parts.append(nums if not letter else
+                     f"{letter}({nums})" if any(ch in letter for ch in "₀₁₂₃₄₅₆₇₈₉") else f"{letter}_{{{nums}}}")
+    return ",".join(parts)
 
 
 # ----------------------------------------------------------------------------- the diagrams
@@ -191,10 +250,10 @@ def _axes(xe: float, lo: float, hi: float, name: str, n: int, every: int, period
     x = np.arange(n + 1) * (period / n)
     for k in range(every, n + 1, every):
         items.append(Segment((float(x[k]), 0.0), (float(x[k]), -1.0), "label"))
-    labels = [Label(name, (0.0, hi + AXIS_OVERRUN), ((0.0, -1.0),), 3.2),
-              Label("φ", (xe + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2),
-              Label("O", (0.0, 0.0), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), 3.0)]
-    return items, labels + phi_axis_numbers(x, every)
+    labels = [Label(name, (0.0, hi + AXIS_OVERRUN), ((0.0, -1.0),), LETTER),
+              Label("φ", (xe + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), LETTER),
+              Label("O", (0.0, 0.0), ((1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), LETTER)]
+    return items, labels + [dataclasses.replace(t, size=LETTER) for t in phi_axis_numbers(x, every)]
 
 
 def _differentiation_items(diff: Any, values_at: np.ndarray, name: str, n: int, every: int, period: float,
@@ -224,8 +283,8 @@ def _differentiation_items(diff: Any, values_at: np.ndarray, name: str, n: int, 
     yd = lo - 5.0
     dim: list[Primitive] = [Segment(P, (P[0], yd - 1.5), "label"), Arrow((-H / 2.0, yd), (-H, yd), "label"),
                             Arrow((-H / 2.0, yd), (0.0, yd), "label"), Segment((0.0, 0.0), (0.0, yd - 1.5), "label")]
-    names = [Label(pole_name, P, ((1.0, 0.0), (1.0, 0.5)), 3.2),
-             Label("H" + pole_name[1:], (-H / 2.0, yd), ((1.0, 0.0), (-1.0, 0.0)), 3.2)]
+    names = [Label(pole_name, P, ((1.0, 0.0), (1.0, 0.5)), LETTER),
+             Label("H" + pole_name[1:], (-H / 2.0, yd), ((1.0, 0.0), (-1.0, 0.0)), LETTER)]
     return construction + items + result + dim + labels[:3] + names + labels[3:]
 
 
@@ -233,13 +292,15 @@ def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
     """s–φ, v–φ and a–φ of one subject, stacked top to bottom (the s diagram's origin at (0, 0))."""
     point = dg.kind != "link"
     names = ("s", "v", "aτ" if dg.kind == "path" else "a") if point else ("ψ", "ω", "ε")
-    every = numbers_every(n, period / n)
+    every = numbers_every(n, period / n, LETTER)
     # s–φ: the curve through the positions, closed at the cycle's end
     x = np.append(dg.x_mm, period)
     s = np.append(dg.s_mm, dg.s_mm[0] + dg.rise_mm)
     lo, hi = min(0.0, float(s.min())), max(0.0, float(s.max()))
-    # a point's subject is a letter: written s_C, the renderer sets C as a subscript
-    sub = (lambda name: f"{name}_{dg.subject}") if point else (lambda name: name + subscript(dg.subject))
+    # the subject as a subscript: s_{C}, ψ_{3}
+    def sub(name: str) -> str:
+        return f"a_{{{dg.subject}}}^{{τ}}" if name == "aτ" else f"{name}_{{{dg.subject}}}"
+
     items, labels = _axes(period, lo, hi, sub(names[0]), n, every, period)
     top: list[Primitive] = [Polyline(thinned(np.column_stack([x, s])), "result")]
     if n <= MOST_DOTS:
@@ -248,8 +309,8 @@ def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
                 if abs(b) > 1e-9]
     out: list[Primitive] = items + top + cast("list[Primitive]", labels)
     v_name, a_name = sub(names[1]), sub(names[2])
-    v_items = _differentiation_items(dg.velocity, dg.velocity.derivative_mm, v_name, n, every, period, "P₁")
-    a_items = _differentiation_items(dg.acceleration, dg.a_mm, a_name, n, every, period, "P₂")
+    v_items = _differentiation_items(dg.velocity, dg.velocity.derivative_mm, v_name, n, every, period, "P_{1}")
+    a_items = _differentiation_items(dg.acceleration, dg.a_mm, a_name, n, every, period, "P_{2}")
     y = lo - STACK_GAP - 6.0
     v_hi = max(0.0, float(np.max(dg.velocity.derivative_mm)))
     v_lo = min(0.0, float(np.min(dg.velocity.derivative_mm)))
@@ -262,29 +323,56 @@ def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
 
 
 def _diagram_notes(dg: Any, mu_phi: float) -> tuple[str, ...]:
+    h1, h2 = number(dg.velocity.H_mm), number(dg.acceleration.H_mm)
     if dg.kind == "path":
-        s = f"s along the path of {dg.subject} (its chords end to end): {format_scale('s', dg.mu_s)}, " \
-            f"{format_scale('phi', mu_phi)}"
-        v = f"H₁ = {dg.velocity.H_mm:g} mm: the speed, μv = μs·ω₁/(μφ·H₁) = {dg.mu_v:.6g} (m/s)/mm"
-        a = f"H₂ = {dg.acceleration.H_mm:g} mm: the tangential acceleration, μa = μv·ω₁/(μφ·H₂) = {dg.mu_a:.6g} (m/s²)/mm"
+        s = f"s along the path of {dg.subject} (its chords end to end): {scale_note('s', dg.mu_s)}, " \
+            f"{scale_note('phi', mu_phi)}"
+        v = f"H_{{1}} = {h1} mm: the speed, μ_{{v}} = μ_{{s}}·ω_{{1}}/(μ_{{φ}}·H_{{1}}) = {number(dg.mu_v)} (m/s)/mm"
+        a = (f"H_{{2}} = {h2} mm: the tangential acceleration, μ_{{a}} = μ_{{v}}·ω_{{1}}/(μ_{{φ}}·H_{{2}}) = "
+             f"{number(dg.mu_a)} (m/s²)/mm")
     elif dg.kind == "point":
-        s = f"{format_scale('s', dg.mu_s)}, {format_scale('phi', mu_phi)}"
-        v = f"H₁ = {dg.velocity.H_mm:g} mm: μv = μs·ω₁/(μφ·H₁) = {dg.mu_v:.6g} (m/s)/mm"
-        a = f"H₂ = {dg.acceleration.H_mm:g} mm: μa = μv·ω₁/(μφ·H₂) = {dg.mu_a:.6g} (m/s²)/mm"
-    else:
-        s = f"μψ = {math.degrees(dg.mu_s):.6g} °/mm, {format_scale('phi', mu_phi)}"
-        v = f"H₁ = {dg.velocity.H_mm:g} mm: μω = μψ·ω₁/(μφ·H₁) = {dg.mu_v:.6g} (rad/s)/mm"
-        a = f"H₂ = {dg.acceleration.H_mm:g} mm: με = μω·ω₁/(μφ·H₂) = {dg.mu_a:.6g} (rad/s²)/mm"
+        s = f"{scale_note('s', dg.mu_s)}, {scale_note('phi', mu_phi)}"
+        v = f"H_{{1}} = {h1} mm: μ_{{v}} = μ_{{s}}·ω_{{1}}/(μ_{{φ}}·H_{{1}}) = {number(dg.mu_v)} (m/s)/mm"
+        a = f"H_{{2}} = {h2} mm: μ_{{a}} = μ_{{v}}·ω_{{1}}/(μ_{{φ}}·H_{{2}}) = {number(dg.mu_a)} (m/s²)/mm"
+    else:  # a link's angle: μψ in degrees per mm, as the scene states it
+        s = f"μ_{{ψ}} = {number(math.degrees(dg.mu_s))} °/mm, {scale_note('phi', mu_phi)}"
+        v = f"H_{{1}} = {h1} mm: μ_{{ω}} = μ_{{ψ}}·ω_{{1}}/(μ_{{φ}}·H_{{1}}) = {number(dg.mu_v)} (rad/s)/mm"
+        a = f"H_{{2}} = {h2} mm: μ_{{ε}} = μ_{{ω}}·ω_{{1}}/(μ_{{φ}}·H_{{2}}) = {number(dg.mu_a)} (rad/s²)/mm"
     return (s, v, a)
+
+
+def _diagram_scales(dg: Any, mu_phi: float) -> tuple[tuple[str, float], ...]:
+    """The scales that measure a diagram's paper: its ordinate (a length's μs; an angle's μψ has
+    no entry of its own in SCALE_INFO and gets none) and μφ along the axis."""
+    return ((("s", dg.mu_s),) if dg.kind != "link" else ()) + (("phi", mu_phi),)
 
 
 # ----------------------------------------------------------------------------- characteristics
 def _mark(at: XY, d1: XY, d2: XY, r: float, text: str) -> list[Primitive]:
+    """An angle's arc and its letter, set outside the arc on the bisector (off both arms)."""
     arc = angle_arc(at, d1, d2, r)
     if arc is None:
-        return [Label(text, at, (d1, d2), 3.2)]
+        return [Label(text, at, (d1, d2), LETTER)]
     mid = arc.points[len(arc.points) // 2]
-    return [arc, Label(text, mid, (_unit(mid, at),), 3.2)]
+    out = _unit(at, mid)
+    return [arc, Label(text, (mid[0] + 1.5 * out[0], mid[1] + 1.5 * out[1]), ((-out[0], -out[1]), d1, d2), LETTER)]
+
+
+#: A centre line longer than this on paper (a drawing metres wide at a stated μl) is drawn thin
+#: solid: the renderer cuts a dash-dot line into pieces, thousands of them on a metre.
+LONGEST_DASHDOT_MM = 1000.0
+
+
+def _centre_line(a: XY, b: XY) -> Segment:
+    """A line of centres (AD, AC): thin dash-dot."""
+    return Segment(a, b, "construction", dashdot=math.dist(a, b) <= LONGEST_DASHDOT_MM)
+
+
+def _guide(g0: XY, g1: XY, pivot: XY) -> GuideLine:
+    """A frame guide hatched on the side away from the crank's pivot (GuideLine hatches the
+    right of its direction), so the hatching never runs toward or through the pivot."""
+    right = (g1[1] - g0[1]) * (pivot[0] - g0[0]) - (g1[0] - g0[0]) * (pivot[1] - g0[1])
+    return GuideLine(g1, g0) if right > 0 else GuideLine(g0, g1)
 
 
 def _arc_between(centre: XY, p: XY, q: XY, role: Role = "construction") -> Polyline | None:
@@ -302,20 +390,22 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
     sub = {k: v for k, v in loop.names.items()}
     if dr.theta is None:  # the output turns fully: the linkage where γ is smallest, nothing else
         D, Bg, Cg = p["D"], p["Bg"], p["Cg"]
-        items += [Segment(A, Bg, "result"), Segment(Bg, Cg, "result"), Segment(Cg, D, "result"), Segment(A, D, "given"),
-                  FixedPivot(A), FixedPivot(D), Hinge(Bg), Hinge(Cg)]
-        labels += _mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, "γmin")
+        items += [Segment(A, Bg, "result"), Segment(Bg, Cg, "result"), Segment(Cg, D, "result"),
+                  _centre_line(A, D), FixedPivot(A), FixedPivot(D), Hinge(Bg), Hinge(Cg)]
+        labels += _mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, GAMMA_MIN)
         for at, text in ((A, sub["A"]), (D, sub["D"]), (Bg, sub["B"]), (Cg, sub["C"])):
-            labels.append(Label(text, at, (_unit(at, A),) if at != A else (), 3.5))
+            labels.append(Label(text, at, (_unit(at, A),) if at != A else (), LETTER))
         return items + labels
     B1, C1, B2, C2, Bg, Cg = p["B1"], p["C1"], p["B2"], p["C2"], p["Bg"], p["Cg"]
     if loop.kind == "fourbar":
         D = p["D"]
+        # position 1 bold; the other extreme and the γ_min position thin dashed; AD the line of centres
         items += [Segment(A, B1, "result"), Segment(B1, C1, "result"), Segment(C1, D, "result"),
-                  Segment(A, B2, "given", dashed=True), Segment(B2, C2, "given", dashed=True),
-                  Segment(C2, D, "given", dashed=True),
-                  Segment(A, D, "given"),
-                  Segment(Bg, Cg, "construction"), Segment(Cg, D, "construction"), Segment(A, Bg, "construction")]
+                  Segment(A, B2, "construction", dashed=True), Segment(B2, C2, "construction", dashed=True),
+                  Segment(C2, D, "construction", dashed=True),
+                  _centre_line(A, D),
+                  Segment(Bg, Cg, "construction", dashed=True), Segment(Cg, D, "construction", dashed=True),
+                  Segment(A, Bg, "construction", dashed=True)]
         for arc in (_arc_between(A, C1, C2), _arc_between(D, C1, C2)):
             if arc is not None:
                 items.append(arc)
@@ -326,15 +416,15 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
         if math.dist(A, C1) > 1e-9:
             items.append(Segment(A, C1, "construction", dashed=True))
         items.append(Segment(A, C2, "construction", dashed=True))
-        labels += _mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, "γmin")
+        labels += _mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, GAMMA_MIN)
         items += [FixedPivot(A), FixedPivot(D)] + [Hinge(x) for x in (B1, C1, B2, C2, Bg, Cg)]
         names = [(A, sub["A"]), (D, sub["D"]), (B1, sub["B"] + "₁"), (C1, sub["C"] + "₁"), (B2, sub["B"] + "₂"),
-                 (C2, sub["C"] + "₂")]
+                 (C2, sub["C"] + "₂"), (Bg, sub["B"] + "′"), (Cg, sub["C"] + "′")]
     elif loop.kind == "slider_crank":
         g = _unit(p["G0"], p["G1"])
-        items += [GuideLine(p["G0"], p["G1"]), Segment(A, B1, "result"), Segment(B1, C1, "result"),
-                  Segment(A, B2, "given", dashed=True), Segment(B2, C2, "given", dashed=True),
-                  Segment(A, Bg, "construction"), Segment(Bg, Cg, "construction"),
+        items += [_guide(p["G0"], p["G1"], A), Segment(A, B1, "result"), Segment(B1, C1, "result"),
+                  Segment(A, B2, "construction", dashed=True), Segment(B2, C2, "construction", dashed=True),
+                  Segment(A, Bg, "construction", dashed=True), Segment(Bg, Cg, "construction", dashed=True),
                   Slider(C1, math.atan2(g[1], g[0])), Slider(C2, math.atan2(g[1], g[0]))]
         for r in (math.dist(A, C1), math.dist(A, C2)):
             arc = angle_arc(A, _unit(A, C1), _unit(A, C2), r, "construction")
@@ -353,26 +443,27 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
         items += [Segment(C1, d1, "label"), Segment(C2, d2, "label")]
         if math.dist(d1, d2) > 1e-6:  # a stroke too short to draw (a crank of 1e-300 mm) gets no arrows
             items += [Arrow(mid, d1, "label"), Arrow(mid, d2, "label")]
-        labels.append(Label("H", mid, (g, (-g[0], -g[1])), 3.2))
+        labels.append(Label("H", mid, (g, (-g[0], -g[1])), LETTER))
         across = (-g[1], g[0])
         normal = across if (Bg[0] - Cg[0]) * across[0] + (Bg[1] - Cg[1]) * across[1] > 0 else (-across[0], -across[1])
         # γ is measured from the normal to the guide (the slider's path is the guide)
         items.append(Segment(Cg, (Cg[0] + 14.0 * normal[0], Cg[1] + 14.0 * normal[1]), "construction", dashed=True))
-        labels += _mark(Cg, _unit(Cg, Bg), normal, 8.0, "γmin")
+        labels += _mark(Cg, _unit(Cg, Bg), normal, 8.0, GAMMA_MIN)
         items += [FixedPivot(A)] + [Hinge(x) for x in (B1, B2, C1, C2, Bg, Cg)]
-        names = [(A, sub["A"]), (B1, sub["B"] + "₁"), (C1, sub["C"] + "₁"), (B2, sub["B"] + "₂"), (C2, sub["C"] + "₂")]
+        names = [(A, sub["A"]), (B1, sub["B"] + "₁"), (C1, sub["C"] + "₁"), (B2, sub["B"] + "₂"), (C2, sub["C"] + "₂"),
+                 (Bg, sub["B"] + "′"), (Cg, sub["C"] + "′")]
     else:
         C = p["C"]
         r = math.dist(A, B1)
         items.append(Circle(A, r, "construction"))
         reach = max(math.dist(C, B1), math.dist(C, B2)) + 12.0
-        extremes: tuple[tuple[XY, Role, bool], ...] = ((B1, "result", False), (B2, "given", True))
+        extremes: tuple[tuple[XY, Role, bool], ...] = ((B1, "result", False), (B2, "construction", True))
         for B, role, dashed in extremes:
             u = _unit(C, B)
             items += [Segment(A, B, role, dashed=dashed),
                       Segment(C, (C[0] + reach * u[0], C[1] + reach * u[1]), role, dashed=dashed),
                       Slider(B, math.atan2(u[1], u[0]))]
-        items.append(Segment(A, C, "given"))
+        items.append(_centre_line(A, C))
         labels += _mark(C, _unit(C, B1), _unit(C, B2), MARK_R * 1.5, "ψ")
         back = (2 * A[0] - B1[0], 2 * A[1] - B1[1])
         items.append(Segment(A, back, "construction", dashed=True))
@@ -380,39 +471,41 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
         items += [FixedPivot(A), FixedPivot(C), Hinge(B1), Hinge(B2)]
         names = [(A, sub["A"]), (C, sub["C"]), (B1, sub["B"] + "₁"), (B2, sub["B"] + "₂")]
     for at, text in names:
-        labels.append(Label(text, at, (_unit(at, A),) if at != A else (), 3.5))
+        labels.append(Label(text, at, (_unit(at, A),) if at != A else (), LETTER))
     return items + labels
 
 
 def _characteristics_notes(an: Any) -> tuple[str, ...]:
     dr = an.drawn
-    out = [format_scale("l", dr.mu_l)]
+    out = [scale_note("l", dr.mu_l)]
     kinds = {"crank_rocker_AB": "crank-rocker (AB the crank)", "crank_rocker_CD": "crank-rocker (CD turns fully)",
              "double_crank": "double crank", "double_rocker": "double rocker", "change_point": "change point "
              "(s + l = p + q)", "crank": "the crank turns fully"}
+    gamma = f"{GAMMA_MIN} = {number(math.degrees(dr.gamma_min))}° at φ = {number(math.degrees(dr.gamma_min_at))}°"
     if dr.theta is None:
         out.append(f"{kinds.get(dr.grashof, dr.grashof)}: the output turns fully, no extreme positions")
-        out.append(f"γmin = {math.degrees(dr.gamma_min):.4g}° at φ = {math.degrees(dr.gamma_min_at):.4g}° (drawn)")
+        out.append(gamma + " (drawn)")
         return tuple(out)
     out.append(f"{kinds.get(dr.grashof, dr.grashof)}; position 1 (bold): the working stroke begins")
-    line = f"θ = {math.degrees(dr.theta):.4g}°"
+    line = f"θ = {number(math.degrees(dr.theta))}°"
     if dr.psi is not None:
-        line += f", ψ = {math.degrees(dr.psi):.4g}°"
+        line += f", ψ = {number(math.degrees(dr.psi))}°"
     if dr.stroke_mm is not None:
-        line += f", H = {dr.stroke_mm:.4g} mm = {dr.stroke_mm * dr.mu_l:.5g} m"
+        line += f", H = {number(dr.stroke_mm)} mm = {number(dr.stroke_mm * dr.mu_l)} m"
     k = (math.pi + dr.theta) / (math.pi - dr.theta)
-    line += f", K = (180° + θ)/(180° − θ) = {k:.4g}"
+    line += f", K = (180° + θ)/(180° − θ) = {number(k)}"
     out.append(line)
     if dr.loop.kind == "guide_bar":
         out.append("γ = 90° throughout: the block drives the bar at right angles")
     else:
-        out.append(f"γmin = {math.degrees(dr.gamma_min):.4g}° at φ = {math.degrees(dr.gamma_min_at):.4g}°")
+        out.append(gamma + " (B′C′, dashed)")
     t_work = an.scene.problem.characteristics.t_work
     if t_work is not None:
         work, back = math.pi + dr.theta, math.pi - dr.theta
         period = t_work * 2.0 * math.pi / work
-        out.append(f"working stroke {math.degrees(work):.4g}° in {t_work:.4g} s, return {math.degrees(back):.4g}° in "
-                   f"{period - t_work:.4g} s: a turn in {period:.4g} s, n = {60.0 / period:.4g} r/min")
+        out.append(f"working stroke {number(math.degrees(work))}° in {number(t_work)} s, return "
+                   f"{number(math.degrees(back))}° in {number(period - t_work)} s: a turn in {number(period)} s, "
+                   f"n = {number(60.0 / period)} r/min")
     return tuple(out)
 
 
@@ -433,17 +526,17 @@ def ranges_items(ranges: Sequence[tuple[str, float, float]], crank: str, length:
     mu = round_scale(limit / RANGES_MM)
     end = limit / mu
     items: list[Primitive] = [Arrow((0.0, 0.0), (end + AXIS_OVERRUN, 0.0), "label")]
-    labels: list[Primitive] = [Label(f"l{crank}", (end + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), 3.2),
-                               Label("0", (0.0, 0.0), _BELOW, NUMBER_SIZE, italic=False)]
+    labels: list[Primitive] = [Label(f"l_{{{crank}}}", (end + AXIS_OVERRUN, 0.0), ((-1.0, 0.0),), LETTER),
+                               Label("0", (0.0, 0.0), _BELOW, LETTER, italic=False)]
     for k, (kind, lo, hi) in enumerate(ranges):
         x0, x1 = lo / mu, hi / mu
         items.append(Segment((x0, 3.0), (x1, 3.0), "result", dashed=bool(k % 2)))
         items += [Segment((x1, -1.0), (x1, 5.0), "label")]
-        labels.append(Label(CLASS_NAMES.get(kind, kind), ((x0 + x1) / 2.0, 3.0), ((0.0, -1.0),), 3.0, italic=False))
-        labels.append(Label(f"{hi * 1000:.4g}", (x1, 0.0), _BELOW, NUMBER_SIZE, italic=False))
+        labels.append(Label(CLASS_NAMES.get(kind, kind), ((x0 + x1) / 2.0, 3.0), ((0.0, -1.0),), LETTER, italic=False))
+        labels.append(Label(number(hi * 1000), (x1, 0.0), _BELOW, LETTER, italic=False))
     x = length / mu
     items.append(Circle((x, 0.0), 1.0, "result"))
-    labels.append(Label(f"{crank} = {length * 1000:.4g}", (x, -6.0), ((0.0, 1.0),), 3.0))
+    labels.append(Label(f"{crank} = {number(length * 1000)}", (x, -6.0), ((0.0, 1.0),), LETTER))
     return items + labels, mu
 
 
@@ -455,44 +548,49 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
     panels: list[Panel] = []
     cyc = an.cycle
     paths = an.scene.problem.cycle.paths if an.scene.problem.cycle is not None else ()
+    notation = getattr(an.scene.page, "notation", "en")
     for entry in show:
         if entry == "characteristics":
-            head = {"fourbar": "Extreme positions, θ, ψ and γmin", "slider_crank": "Extreme positions, θ, H and γmin",
-                    "guide_bar": "Extreme positions, θ and ψ"}[an.drawn.loop.kind]
+            head = caption("extremes " + an.drawn.loop.kind, notation)
             panels.append(Panel("characteristics", head,
-                                tuple(characteristics_items(an.drawn, an.scene.linkage)), _characteristics_notes(an)))
+                                tuple(characteristics_items(an.drawn, an.scene.linkage)), _characteristics_notes(an),
+                                scales=(("l", an.drawn.mu_l),)))
             if an.ranges is not None:
                 loop = an.drawn.loop
                 crank = loop.names["A"] + loop.names["B"]
                 items, mu = ranges_items(an.ranges, crank, loop.a)
-                panels.append(Panel("ranges", f"Grashof's rule: the classes as l{crank} grows (mm)", tuple(items),
-                                    (f"{mu * 1000:.6g} mm of l{crank} per mm",
-                                     "s + l < p + q: the shortest link turns fully; = : change point")))
+                panels.append(Panel("ranges", caption("Grashof", notation).format(crank), tuple(items),
+                                    (f"{number(mu * 1000)} mm of l_{{{crank}}} per mm",
+                                     "s + l < p + q: the shortest link turns fully; = : change point"),
+                                    scales=(("l", mu),)))
         elif entry == "cycle" or (entry == "paths" and "cycle" not in show):
             items = cycle_items(cyc, paths if "paths" in show else ())
-            notes = [format_scale("l", an.scales["l"]), f"{cyc.n} positions, 1 at φ = "
-                     f"{math.degrees(float(cyc.angles[0])):.6g}°" + (" (an extreme position)"
-                                                                     if an.scene.problem.cycle.start == "extreme" else "")]
+            notes = [scale_note("l", an.scales["l"]), f"{cyc.n} positions, 1 at φ = "
+                     f"{number(math.degrees(float(cyc.angles[0])))}°" + (" (an extreme position)"
+                                                                         if an.scene.problem.cycle.start == "extreme" else "")]
             if _which(cyc.n):
                 notes.append(_which(cyc.n) + "; the paths through all")
-            head = "Kinematic diagram at all positions" + (", paths of " + ", ".join(paths) if "paths" in show else "")
-            panels.append(Panel("cycle", head, tuple(items), tuple(notes)))
+            head = caption("all positions", notation)
+            if "paths" in show:
+                head = caption("paths of", notation).format(head, ", ".join(paths))
+            panels.append(Panel("cycle", head, tuple(items), tuple(notes), scales=(("l", an.scales["l"]),)))
         elif entry in ("velocity", "acceleration"):
             key = "v" if entry == "velocity" else "a"
-            notes = [format_scale(key, an.scales[key])] + ([_which(cyc.n)] if _which(cyc.n) else [])
+            notes = [scale_note(key, an.scales[key])] + ([_which(cyc.n)] if _which(cyc.n) else [])
             if cyc.polygon_failures:
                 gone = sorted(cyc.polygon_failures)
                 notes.append("no polygon at position" + ("s " if len(gone) > 1 else " ")
                              + ", ".join(str(i + 1) for i in gone[:12]) + (" …" if len(gone) > 12 else "")
                              + ": two of its lines are parallel there")
-            head = ("Velocity" if key == "v" else "Acceleration") + " polygons of all positions, common pole"
-            panels.append(Panel(entry, head, tuple(polygons_items(cyc, entry)), tuple(notes)))
+            head = caption(entry + " polygons, common pole", notation)
+            panels.append(Panel(entry, head, tuple(polygons_items(cyc, entry)), tuple(notes),
+                                scales=((key, an.scales[key]),)))
         elif entry == "diagrams":
             period = 2.0 * math.pi / cyc.mu_phi
             for dg in cyc.diagrams:
-                what = {"point": "slider", "path": "point", "link": "link"}[dg.kind] + f" {dg.subject}"
-                head = ("ψ–φ, ω–φ, ε–φ" if dg.kind == "link" else "s–φ, v–φ, aτ–φ" if dg.kind == "path" else "s–φ, v–φ, a–φ") + f" of {what}, by chords"
+                curves = ("ψ–φ, ω–φ, ε–φ" if dg.kind == "link" else "s–φ, v–φ, a^{τ}–φ" if dg.kind == "path"
+                          else "s–φ, v–φ, a–φ")
+                head = caption("diagrams " + dg.kind, notation).format(curves, dg.subject)
                 panels.append(Panel(f"diagrams-{dg.subject}", head, tuple(diagram_items(dg, cyc.n, period)),
-                                    _diagram_notes(dg, cyc.mu_phi)))
+                                    _diagram_notes(dg, cyc.mu_phi), scales=_diagram_scales(dg, cyc.mu_phi)))
     return Sheet(title, tuple(panels), (page[0], page[1]), tuple(footer))
-

@@ -15,11 +15,11 @@ import math
 from dataclasses import replace
 from typing import Any, Sequence, cast
 
-from graphmech.problems.linkage.figures import mechanism_items
+from graphmech.problems.linkage.figures import LETTER, caption, mechanism_items, prime, scale_note
 from graphmech.methods.instant_centres import Centre, InstantCentres, centre_name, direct_centres, pair
-from graphmech.drawing.primitives import ArcArrow, Arrow, Circle, Label, Panel, Primitive, Segment
-from graphmech.drawing.lettering import subscript
-from graphmech.scales import format_scale, round_scale
+from graphmech.drawing.primitives import Arrow, Circle, Label, Panel, Primitive, Segment
+from graphmech.drawing.lettering import number, subscript
+from graphmech.scales import round_scale
 
 #: Radius of the polygon of links, mm.
 CIRCLE_R = 16.0
@@ -56,7 +56,8 @@ def panel_scale(mu_l: float, pos: dict[str, tuple[float, float]], ic: InstantCen
 
 def ic_panel(name: str, head: str, build: Any, pos: dict[str, tuple[float, float]], ic: InstantCentres,
              mu_panel: float, notes: Sequence[str] = (), marks: Sequence[tuple[str, Any]] = (), row: int | None = None,
-             spans: dict[int, tuple[float, float]] | None = None) -> Panel:
+             spans: dict[int, tuple[float, float]] | None = None,
+             senses: dict[str, tuple[float | None, float | None]] | None = None) -> Panel:
     """The kinematic diagram at ``mu_panel`` with every centre and the Kennedy lines used.
 
     ``marks``: extra results to draw, ``("least", (a, b, foot, P1k))`` — the perpendicular from
@@ -66,7 +67,7 @@ def ic_panel(name: str, head: str, build: Any, pos: dict[str, tuple[float, float
     b2 = replace(build, scales={**build.scales, "l": mu_panel})
     p2 = {n: (x * k, y * k) for n, (x, y) in pos.items()}
     sp = {key: (lo * k, hi * k) for key, (lo, hi) in (spans or {}).items()}
-    items: list[Primitive] = list(mechanism_items(b2, p2, sp))
+    items: list[Primitive] = list(mechanism_items(b2, p2, sp, senses))
     pts = _scaled(ic, k)
     xs = [p[0] for p in p2.values()]
     ys = [p[1] for p in p2.values()]
@@ -94,7 +95,7 @@ def ic_panel(name: str, head: str, build: Any, pos: dict[str, tuple[float, float
             p = pts[key]
             assert p is not None
             items.append(Circle(p, 1.0, "result"))
-            items.append(Label(text, p, (), 3.0))
+            items.append(Label(text, p, (), LETTER))
         elif c.point is not None:  # far: an arrow pointing at it
             p = pts[key]
             assert p is not None
@@ -104,7 +105,7 @@ def ic_panel(name: str, head: str, build: Any, pos: dict[str, tuple[float, float
             end = (start[0] + ARROW_MM * u[0], start[1] + ARROW_MM * u[1])
             x, y = (c.point[0] * build.mu_l + build.origin[0], c.point[1] * build.mu_l + build.origin[1])
             items.append(Arrow(start, end, "result"))
-            items.append(Label(f"{text} → ({x:.4g}, {y:.4g}) m", end, (u,), 2.8))
+            items.append(Label(f"{text} → ({number(x)}, {number(y)}) m", end, (u,), LETTER))
         else:
             assert c.direction is not None
             at = slides.get(frozenset(key))
@@ -116,7 +117,7 @@ def ic_panel(name: str, head: str, build: Any, pos: dict[str, tuple[float, float
                 start = base
             end = (start[0] + ARROW_MM * u[0], start[1] + ARROW_MM * u[1])
             items.append(Arrow(start, end, "result"))
-            items.append(Label(text + "∞", end, (u,), 3.0))
+            items.append(Label(text + "∞", end, (u,), LETTER))
     for kind, data in marks:
         if kind == "least":
             _, _, foot, p1 = data
@@ -125,12 +126,13 @@ def ic_panel(name: str, head: str, build: Any, pos: dict[str, tuple[float, float
             items.append(Segment(q, f, "construction", dashed=True))
             items.append(Circle(f, 1.0, "result"))
             free = next(n for n in "EMNQRSTUVWXYZ" if n not in p2)  # the book calls it E when E is free
-            items.append(Label(free, f, (), 3.2))
+            items.append(Label(free, f, (), LETTER))
             a, b = p2[data[0]], p2[data[1]]
             lo = min(a, b, f, key=lambda t: (t[0] - a[0]) * (b[0] - a[0]) + (t[1] - a[1]) * (b[1] - a[1]))
             hi = max(a, b, f, key=lambda t: (t[0] - a[0]) * (b[0] - a[0]) + (t[1] - a[1]) * (b[1] - a[1]))
             items.append(Segment(lo, hi, "construction"))
-    return Panel(name, head, tuple(items), (format_scale("l", mu_panel),) + tuple(notes), row=row)
+    return Panel(name, head, tuple(items), (scale_note("l", mu_panel),) + tuple(notes), row=row,
+                 scales=(("l", mu_panel),))
 
 
 #: The drawn centres, by pair of links (None: at infinity).
@@ -174,7 +176,7 @@ def _on_line_base(c: Centre, ic: InstantCentres, pts: _Points, near: set[tuple[s
     return centre
 
 
-def circle_panel(name: str, ic: InstantCentres, row: int | None = None) -> Panel:
+def circle_panel(name: str, ic: InstantCentres, row: int | None = None, notation: str = "en") -> Panel:
     """The polygon of links: links as numbered points on a circle; a solid chord per direct
     centre, a dashed chord per centre found by Kennedy's theorem; undetermined ones left out."""
     n = len(ic.links)
@@ -189,21 +191,23 @@ def circle_panel(name: str, ic: InstantCentres, row: int | None = None) -> Panel
                              dashed=c.kind == "kennedy"))
     for lid, p in at.items():
         items.append(Circle(p, 0.8, "result"))
-        items.append(Label(lid, p, ((-p[0] / CIRCLE_R, -p[1] / CIRCLE_R),), 3.2, italic=False))
+        items.append(Label(lid, p, ((-p[0] / CIRCLE_R, -p[1] / CIRCLE_R),), LETTER, italic=False))
     missing = [centre_name(*k) for k in ic.order if ic.centres[k].kind == "undetermined"]
-    notes = ("solid: direct, dashed: by Kennedy",) + ((f"undetermined: {', '.join(missing)}",) if missing else ())
-    return Panel(name, "Polygon of links", tuple(items), notes, row=row)
+    notes = (caption("by Kennedy", notation),) + (
+        (f"{caption('undetermined', notation)}: {', '.join(missing)}",) if missing else ())
+    return Panel(name, caption("polygon of links", notation), tuple(items), notes, row=row)
 
 
 def ic_panels(an: Any, page: tuple[float, float], first_row: int = 0) -> list[Panel]:
     """The instant-centre panels of every constructed position of a checked linkage scene."""
-    from graphmech.problems.linkage.sizes import position_text
+    from graphmech.problems.linkage.sizes import drawn_position_text
     from graphmech.problems.linkage.figures import guide_spans
     from graphmech.methods.instant_centres import (common_link, least_speed_on_line, point_names, positions_mm,
                                                    split_line)
 
     ica = an.instant_centres
     build = an.build
+    notation = getattr(an.scene.page, "notation", "en")
     spans = guide_spans(build.linkage, build, an.solutions)
     rows = max(1, sum(1 for s in an.solutions if s is not None))
     room = (page[0] * 0.5, max((page[1] - 40.0) / rows - 60.0, 30.0))  # less title, notes, gaps
@@ -222,12 +226,12 @@ def ic_panels(an: Any, page: tuple[float, float], first_row: int = 0) -> list[Pa
         mu = panel_scale(build.mu_l, pos, ic, room)
         notes = [_omega_note(ic, lid, build.mu_l) for lid in ic.links
                  if lid in ic.motions and len(ic.motions[lid].found) == 4]
-        notes += [f"ω{subscript(lid)}: {why}" for lid, why in ic.undetermined.items()]
+        notes += [f"ω_{{{lid}}}: {why}" for lid, why in ic.undetermined.items()]
         notes += [f"{centre_name(*c.links)}: undetermined — {c.why}" for c in ic.centres.values() if not c.known]
         for x, zs in ica.zeros.items():
-            notes.append(f"v{subscript(x)} = 0 at φ{subscript(build.linkage.driver.link)} = "
-                         + ", ".join(f"{math.degrees(z):.2f}°" for z in zs) if zs else
-                         f"v{subscript(x)} ≠ 0 over the whole turn")  # (was "= 0 at φ = " and nothing)
+            notes.append(f"v_{{{x}}} = 0 at φ_{{{build.linkage.driver.link}}} = "
+                         + ", ".join(f"{number(math.degrees(z))}°" for z in zs) if zs else
+                         f"v_{{{x}}} ≠ 0 over the whole turn")  # (was "= 0 at φ = " and nothing)
         marks = []
         for text in least:
             ab = split_line(text, point_names(build.linkage))
@@ -237,21 +241,28 @@ def ic_panels(an: Any, page: tuple[float, float], first_row: int = 0) -> list[Pa
                 p1 = ic.absolute(lid).point
                 if not isinstance(found, str) and p1 is not None:
                     marks.append(("least", (ab[0], ab[1], found[2], p1)))
-        head = "Instant centres, " + position_text(build, an.labels[i])
-        panels.append(ic_panel(f"ic-{an.labels[i]}", head, build, pos, ic, mu, notes, marks, first_row + i, spans))
-        panels.append(circle_panel(f"ic-circle-{an.labels[i]}", ic, first_row + i))
+        # the senses of the ω found from the centres, drawn on their links
+        senses: dict[str, tuple[float | None, float | None]] = {
+            lid: (ic.motions[lid].omega, None) for lid in ic.links
+            if lid in ic.motions and len(ic.motions[lid].found) == 4 and not ic.absolute(lid).at_infinity
+            and abs(ic.motions[lid].omega) > 1e-9 * (abs(getattr(build.linkage.driver, "omega", 0.0)) or 1.0)}
+        head = caption("instant centres", notation) + ", " + drawn_position_text(build, an.labels[i])
+        panels.append(ic_panel(f"ic-{an.labels[i]}", head, build, pos, ic, mu, notes, marks, first_row + i, spans,
+                               senses))
+        panels.append(circle_panel(f"ic-circle-{an.labels[i]}", ic, first_row + i, notation))
     if ica is not None:
         last = first_row + len(an.solutions)
         for k, (x, zs) in enumerate(ica.zeros.items()):
             if zs:
-                panels.append(zero_panel(an, x, zs, spans, last + k))
+                panels.append(zero_panel(an, x, zs, spans, last + k, notation))
     return panels
 
 
 def zero_panel(an: Any, x: str, zeros: Sequence[float], spans: dict[int, tuple[float, float]] | None,
-               row: int) -> Panel:
+               row: int, notation: str = "en") -> Panel:
     """The mechanism drawn at each crank angle where v_x = 0, with the centre that makes it so:
-    the driver's centre with x's link falls on the driver's pivot (the ratio's numerator is 0)."""
+    the driver's centre with x's link falls on the driver's pivot (the ratio's numerator is 0).
+    The first position bold with its letters, the others thin dashed with primed letters (B′, C′)."""
     from graphmech.methods.instant_centres import instant_centres, positions_mm, signed_rate
 
     build = an.build
@@ -259,33 +270,26 @@ def zero_panel(an: Any, x: str, zeros: Sequence[float], spans: dict[int, tuple[f
     driver = linkage.driver.link
     carrier = signed_rate(linkage, x)[1]  # the rocker or slider whose rate vanishes with v_x
     items: list[Primitive] = []
-    seen: set[tuple[str, float, float]] = set()
+    seen: set[tuple[float, float]] = set()
     for k, z in enumerate(zeros):
         sol = an.plan.solve({build.param: float(z)})
         pos = positions_mm(build, sol)
-        for it in mechanism_items(build, pos, spans):
-            if k and isinstance(it, ArcArrow) or (isinstance(it, Label) and it.text.startswith("ω") and k):
-                continue  # the driver's sense once
-            if isinstance(it, Label):  # the frame's letters once
-                key = (it.text, round(it.anchor[0], 6), round(it.anchor[1], 6))
-                if key in seen:
-                    continue
-                seen.add(key)
-            items.append(it)
+        mark = prime(k) if k else None
+        items += mechanism_items(build, pos, spans, mark=mark)
         tip = pos.get(getattr(linkage.driver, "tip", ""), None)
         if tip is not None:
-            items.append(Label(f"φ{subscript(driver)} = {math.degrees(z):.2f}°", tip, (), 3.0, italic=False))
+            items.append(Label(f"φ_{{{driver}}} = {number(math.degrees(z))}°", tip, (), LETTER, italic=False))
         ic = instant_centres(linkage, pos, mu_l=build.mu_l)
         if carrier is not None and carrier != driver:
             c = ic.centre(driver, carrier)
-            key2 = ("P", round(c.point[0], 6), round(c.point[1], 6)) if c.point is not None else None
-            if c.point is not None and key2 not in seen:
-                seen.add(cast("tuple[str, float, float]", key2))
+            key = (round(c.point[0], 6), round(c.point[1], 6)) if c.point is not None else None
+            if c.point is not None and key is not None and key not in seen:
+                seen.add(key)
                 items.append(Circle(c.point, 1.4, "result"))
-                items.append(Label(label(driver, carrier), c.point, (), 3.0))
-    ang = ", ".join(f"{math.degrees(z):.2f}°" for z in zeros)
-    return Panel(f"ic-zero-{x}", f"v{subscript(x)} = 0", tuple(items),
-                 (format_scale("l", build.mu_l), f"at φ{subscript(driver)} = {ang}"), row=row)
+                items.append(Label(label(driver, carrier), c.point, (), LETTER))
+    ang = ", ".join(f"{number(math.degrees(z))}°" for z in zeros)
+    return Panel(f"ic-zero-{x}", caption("zero velocity", notation).format(x), tuple(items),
+                 (scale_note("l", build.mu_l), f"at φ_{{{driver}}} = {ang}"), row=row, scales=(("l", build.mu_l),))
 
 
 def _omega_note(ic: InstantCentres, lid: str, mu_l: float) -> str:
@@ -293,10 +297,9 @@ def _omega_note(ic: InstantCentres, lid: str, mu_l: float) -> str:
     i = mo.found[0]
     if ic.absolute(lid).at_infinity:  # a translating link: every point moves as P_ij does
         v = math.hypot(*mo.v0) * mu_l
-        return f"link {lid} translates ({_sub(mo.found[3])} ∞): v = v({_sub(mo.found[2])}) = {v:.4g} m/s"
+        return f"link {lid} translates ({_sub(mo.found[3])} ∞): v = v({_sub(mo.found[2])}) = {number(v)} m/s"
     p1i, pij, p1j = (_sub(n) for n in mo.found[1:])
-    omega = f"{mo.omega:.4g}".replace("-", "−")  # the typographic minus, as everywhere on the sheet
-    return f"ω{subscript(lid)} = ω{subscript(i)}·{p1i}{pij}/{p1j}{pij} = {omega} rad/s"
+    return f"ω_{{{lid}}} = ω_{{{i}}}·{p1i}{pij}/{p1j}{pij} = {number(mo.omega)} rad/s"
 
 
 def _sub(name: str) -> str:

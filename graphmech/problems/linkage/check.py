@@ -52,6 +52,15 @@ _PANEL_WORDS = {"mechanism": "the mechanism", "velocity": "the velocity polygon"
 #: The smallest drawing a panel may get, mm; a sheet whose positions leave less is refused.
 MIN_PANEL_MM = 25.0
 
+#: A vector a student measures should be at least this long (FIGURES.md: the reading error ±0.5 mm
+#: is then at most 5 %); a shorter one is named in a warning with its reading error.
+SHORTEST_VECTOR_MM = 10.0
+#: The reading error of a length measured on the drawing, mm.
+READING_MM = 0.5
+#: A vector whose exact value is below this fraction of the mechanism's typical value is a zero
+#: (a velocity at a dead centre): a point of the polygon, not a vector to measure.
+ZERO_VECTOR = 1e-9
+
 
 def rows_that_fit(page: tuple[float, float]) -> int:
     """How many positions (one row of panels each) one sheet of this size can hold."""
@@ -124,6 +133,10 @@ def _requested(scene: Scene[object], build: LinkageConstruction, labels: tuple[s
 def choose_scales(scene: Scene[object], linkage: Linkage, positions: np.ndarray) -> tuple[dict[str, float], set[str]]:
     """μ from the scene where stated; otherwise the round value that fits the panel on the page.
 
+    That is the finest round μ the panel's room allows, so where it still draws a vector the
+    scene asks for shorter than :data:`SHORTEST_VECTOR_MM`, only a larger page helps:
+    :func:`short_vector_warnings` names it.
+
     The construction is linear in 1/μ, so one provisional evaluation at μ = 1 gives every
     panel's extent in real units; each μ is then the smallest round number that fits that
     extent into the room one panel has (the panels stand side by side, one row per position).
@@ -167,6 +180,26 @@ def choose_scales(scene: Scene[object], linkage: Linkage, positions: np.ndarray)
             raise DegenerateConstruction("the construction", OUT_OF_RANGE)
         scales[key] = round_scale(need) if need > 0 else 1.0
     return {k: scales[k] for k in ("l", "v", "a")}, stated
+
+
+def short_vector_warnings(an: Analysis) -> list[str]:
+    """The polygons' vectors the scene asks for that are drawn shorter than
+    :data:`SHORTEST_VECTOR_MM` (read to ±0.5 mm, their error is more than 5 %), at a stated μ
+    or at the finest one the page allows. A zero (a velocity at a dead centre) is a point, not
+    a vector."""
+    out = []
+    for r in an.rows:
+        q = an.build.quantities.get(split_name(r.name)[0])
+        if q is None or q.panel not in ("velocity", "acceleration") or r.drawn_mm is None:
+            continue
+        drawn = abs(r.drawn_mm)
+        if drawn >= SHORTEST_VECTOR_MM or abs(r.exact) <= ZERO_VECTOR * characteristic(an.build.linkage, q.unit, an.size):
+            continue
+        key = SCALE_KEYS[q.panel]
+        out.append(f"{r.name} is drawn {drawn:.3g} mm long at {format_scale(key, an.scales[key])}, under "
+                   f"{SHORTEST_VECTOR_MM:g} mm: read to ±{READING_MM:g} mm it is ±{100.0 * READING_MM / drawn:.2g} % "
+                   f"(a smaller μ{key} or a larger page makes it longer)")
+    return out
 
 
 # ---------------------------------------------------------------------------- analysis
@@ -245,6 +278,7 @@ def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]
     if far:
         an.rows = [replace(r, ill_conditioned=True) for r in an.rows]
     an.warnings.extend(_conditioning_warnings(an, [q for _, q, _ in wanted] + measured_q))
+    an.warnings.extend(short_vector_warnings(an))
     if ic:
         an.instant_centres = ic_check.add_rows(an)
     return an

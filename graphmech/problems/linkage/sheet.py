@@ -3,6 +3,7 @@ acceleration polygons — and the instant centres when the scene asks for them."
 from __future__ import annotations
 
 import dataclasses
+import math
 from typing import Any
 
 from graphmech.drawing.primitives import Sheet
@@ -13,7 +14,7 @@ from graphmech.problems.instant_centres.figures import ic_panels
 from graphmech.problems.judging import finite
 from graphmech.problems.linkage.check import analyse, rows_that_fit
 from graphmech.problems.linkage.figures import linkage_sheet
-from graphmech.problems.linkage.sizes import position_text
+from graphmech.problems.linkage.sizes import drawn_position_text
 from graphmech.problems.reader import Scene, page_size
 
 
@@ -23,12 +24,47 @@ def scene_sheet(scene: Scene[Any], footer: tuple[str, ...], caption: str = "") -
     _fits(scene)
     an = finite(analyse(scene, ()))
     b = an.build
-    texts = [caption + position_text(b, lab) for lab in an.labels]
+    texts = [caption + drawn_position_text(b, lab) for lab in an.labels]
+    notation = getattr(scene.page, "notation", "en")
     sheet = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
-                          [s for s in scene.show if s in PANELS], page_size(scene), footer)
+                          [s for s in scene.show if s in PANELS], page_size(scene), footer, notation,
+                          found_senses(an))
     if "instant_centres" in scene.show:
         sheet = dataclasses.replace(sheet, panels=sheet.panels + tuple(ic_panels(an, page_size(scene))))
     return sheet, list(an.warnings)
+
+
+def found_senses(an: Any) -> list[dict[str, tuple[float | None, float | None]]]:
+    """Per position, each link's ω (where the scene shows the velocity polygon) and ε (the
+    acceleration polygon) as the construction finds them — their signs are the senses drawn on
+    the mechanism. A link that does not turn (a slider) has none."""
+    b = an.build
+    show = an.scene.show
+    wanted = {name: q for name, q in b.quantities.items() if q.exact[0] in ("omega", "alpha")
+              and ((q.exact[0] == "omega" and "velocity" in show) or (q.exact[0] == "alpha" and "acceleration" in show))}
+    out: list[dict[str, tuple[float | None, float | None]]] = []
+    if not wanted or "mechanism" not in show:
+        return [{} for _ in an.solutions]
+    plan = b.g.prune(list(dict.fromkeys(q.slot for q in wanted.values())))
+    scale = {"omega": abs(getattr(b.linkage.driver, "omega", 0.0)) or 1.0}
+    for i, sol in enumerate(an.solutions):
+        found: dict[str, tuple[float | None, float | None]] = {}
+        if sol is not None:
+            try:
+                values = plan.solve({b.param: float(an.positions[i])}).values
+            except (ArithmeticError, ValueError):  # a degenerate polygon: no senses drawn
+                values = {}
+            for q in wanted.values():
+                if q.slot not in values:
+                    continue
+                drawn, mu = values[q.slot]
+                v = float(drawn) * float(mu)
+                if not math.isfinite(v) or abs(v) <= 1e-9 * scale["omega"] ** (1 if q.exact[0] == "omega" else 2):
+                    continue  # at rest: no sense to draw
+                w, e = found.get(q.exact[1], (None, None))
+                found[q.exact[1]] = (v, e) if q.exact[0] == "omega" else (w, v)
+        out.append(found)
+    return out
 
 
 def _fits(scene: Scene[Any]) -> None:

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphmech import tolerances as T
-from graphmech.drawing.lettering import subscript
+from graphmech.drawing.lettering import number, subscript
 from graphmech.errors import SceneError
 from graphmech.exact.linkage import Kinematics
 from graphmech.mechanisms.linkage import Crank, Linkage
@@ -26,6 +26,18 @@ def position_text(build: LinkageConstruction, label: str) -> str:
     driver = build.linkage.driver
     sub = subscript(driver.link)
     return f"φ{sub} = {label}°" if isinstance(driver, Crank) else f"s{sub} = {label}"
+
+
+def drawn_position_text(build: LinkageConstruction, label: str) -> str:
+    """A position as a drawing letters it: ``φ_{1} = 26.38°`` (4 significant figures, a true
+    minus); the check's :func:`position_text` keeps the scene's own digits."""
+    driver = build.linkage.driver
+    try:
+        value = number(float(label))
+    except ValueError:  # a label that is not a number is drawn as given
+        value = label
+    sym = "φ" if isinstance(driver, Crank) else "s"
+    return f"{sym}_{{{driver.link}}} = {value}" + ("°" if isinstance(driver, Crank) else "")
 
 
 def mechanism_size(linkage: Linkage, kin: Kinematics | None = None) -> float:

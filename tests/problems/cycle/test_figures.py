@@ -67,9 +67,9 @@ def test_a_sliders_diagrams_are_s_v_a_and_a_links_psi_omega_epsilon(slider_crank
     period = 2 * math.pi / cyc.mu_phi
     names = {dg.subject: [t for t, _ in labels(diagram_items(dg, cyc.n, period)) if not t.isdigit()]
              for dg in cyc.diagrams}
-    assert names["C"][:3] == ["s_C", "φ", "O"]
-    assert {"v_C", "a_C", "P₁", "H₁", "P₂", "H₂"} <= set(names["C"])
-    assert names["2"][:3] == ["ψ₂", "φ", "O"] and {"ω₂", "ε₂"} <= set(names["2"])
+    assert names["C"][:3] == ["s_{C}", "φ", "O"]
+    assert {"v_{C}", "a_{C}", "P_{1}", "H_{1}", "P_{2}", "H_{2}"} <= set(names["C"])
+    assert names["2"][:3] == ["ψ_{2}", "φ", "O"] and {"ω_{2}", "ε_{2}"} <= set(names["2"])
 
 
 def test_a_slider_cranks_extreme_positions_and_its_stroke(slider_crank):
@@ -77,7 +77,7 @@ def test_a_slider_cranks_extreme_positions_and_its_stroke(slider_crank):
     items = characteristics_items(slider_crank.drawn, slider_crank.scene.linkage)
     sliders = [it for it in items if isinstance(it, Slider)]
     assert sorted(s.center for s in sliders) == [(30.0, 0.0), (50.0, 0.0)]
-    assert {"θ", "H", "γmin", "A", "B₁", "C₁", "B₂", "C₂"} <= {t for t, _ in labels(items)}
+    assert {"θ", "H", "γ_{min}", "A", "B₁", "C₁", "B₂", "C₂", "B′", "C′"} <= {t for t, _ in labels(items)}
     stroke = next(at for t, at in labels(items) if t == "H")
     assert stroke[0] == pytest.approx(40.0)  # marked in the middle of C₁C₂
 
@@ -111,9 +111,9 @@ def test_the_sheet_has_a_panel_per_shown_entry_in_order():
 def test_the_characteristics_sheet_adds_the_ranges_panel():
     drawing, _ = sheet(load_scene(SCENES / "linkage.grashof_ranges.toml"))
     assert [p.name for p in drawing.panels] == ["characteristics", "ranges"]
-    assert drawing.panels[0].title == "Extreme positions, θ, ψ and γmin"
+    assert drawing.panels[0].title == "Extreme positions, θ, ψ and γ_{min}"
     assert "θ = 33.38°, ψ = 59.1°, K = (180° + θ)/(180° − θ) = 1.455" in drawing.panels[0].notes
-    assert drawing.panels[1].notes[0] == "1 mm of lAB per mm"
+    assert drawing.panels[1].notes[0] == "1 mm of l_{AB} per mm"
 
 
 def test_same_scene_same_svg():
@@ -190,3 +190,43 @@ def test_a_stated_scale_that_cannot_be_drawn_is_refused(tmp_path, scale, across)
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
     assert code == 2 and err.startswith(f"s.toml: scales: μl = {scale.replace('1e9', '1e+09').replace('1e-9', '1e-09')} m/mm draws the "
                                         f"mechanism {across} mm across"), err
+
+
+def test_the_other_positions_are_thin_dashed_and_no_letter_stands_twice():
+    """Position 1 bold with its letters and the coupler BCE a plate; the eleven others thin dashed."""
+    from graphmech.drawing.primitives import Plate
+
+    an = analyse_cycle(load_scene(SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"))
+    items = cycle_items(an.cycle, ("E",))
+    segs = [it for it in items if isinstance(it, Segment)]
+    assert sum(1 for s in segs if s.dashed and s.role == "construction") >= 11 * 3
+    assert all(s.dashed for s in segs if s.role == "construction")
+    assert sum(isinstance(it, Plate) for it in items) == 1  # position 1's coupler BCE
+    letters = [t for t, _ in labels(items) if not t.isdigit()]
+    assert len(letters) == len(set(letters)) and {"A", "B", "C", "D", "E"} <= set(letters)
+
+
+def test_the_extreme_positions_panel_letters_each_position_once():
+    """B₁C₁ bold, B₂C₂ and the γ_min position B′C′ thin dashed; AD a dash-dot line of centres; γ_min
+    lettered off the line AD."""
+    an = analyse_cycle(load_scene(SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"))
+    items = characteristics_items(an.drawn, an.scene.linkage)
+    texts = [t for t, _ in labels(items)]
+    assert len(texts) == len(set(texts)) and {"B₁", "C₁", "B₂", "C₂", "B′", "C′", "γ_{min}"} <= set(texts)
+    A, D = an.drawn.points["A"], an.drawn.points["D"]
+    assert any(s.dashdot and {s.p0, s.p1} == {A, D} for s in items if isinstance(s, Segment))
+    assert not any(s.role == "given" for s in items if isinstance(s, Segment))  # the frame is its pivots
+    gx, gy = next(at for t, at in labels(items) if t == "γ_{min}")
+    off = abs((D[0] - A[0]) * (gy - A[1]) - (D[1] - A[1]) * (gx - A[0])) / math.dist(A, D)
+    assert off > 1.5  # the letter's anchor stands off the frame line
+
+
+def test_common_pole_images_are_merged_where_they_coincide_and_numbered_along_a_line(slider_crank):
+    """The slider's images c₁ … c₁₂ lie on the guide's line through p: numbers there, the letter at
+    the farthest; no text twice."""
+    from graphmech.problems.cycle.figures import polygons_items
+
+    texts = [t for t, _ in labels(polygons_items(slider_crank.cycle, "velocity"))]
+    assert len(texts) == len(set(texts))
+    assert sum(t.startswith("c") for t in texts) <= 2 and sum(t[:1].isdigit() for t in texts) >= 8
+    assert {f"b_{{{k}}}" for k in (2, 3, 5, 6)} <= set(texts)

@@ -45,7 +45,7 @@ def test_the_mechanism_at_position_1_comes_first_and_warnings_come_back():
     text = re.sub(r"show = \[.*?\]", 'show = ["mechanism", "energy"]', text, flags=re.S)
     sheet, warnings = scene_sheet(scene(text), ())
     assert [p.name for p in sheet.panels] == ["mechanism-1", "energy"]
-    assert sheet.panels[0].notes == ("μl = 0.001 m/mm",)
+    assert sheet.panels[0].notes == ("μ_{l} = 0.001 m/mm",)
     (warning,) = warnings
     assert "gives δ = 0.0430076 in the true motion, above the required 0.04 (+7.52 %)" in warning
 

@@ -112,3 +112,64 @@ def test_a_link_angle_at_a_full_turn_is_0_on_both_sides(tmp_path):
     assert (row["graphical"], row["exact"]) == (0.0, 0.0)
     (m,) = doc["measured"]
     assert (m["expected"], m["ok"]) == (0.0, True)
+
+
+def test_a_vector_drawn_under_10_mm_is_named_with_its_reading_error():
+    """At the stated μv = 0.01 (m/s)/mm, v_CB of the four-bar at 90° is 0.0258 m/s: 2.58 mm on paper,
+    so ±0.5 mm is ±19 %; v_C (59 mm) is not named."""
+    import tomllib
+
+    from graphmech.scene import parse_scene
+    from tests.conftest import fourbar_scene
+
+    text = fourbar_scene(angle="90", find='["v_C", "v_CB"]', scales="[scales]\nv_m_s_per_mm = 0.01")
+    an = analyse(parse_scene(tomllib.loads(text), "s.toml"))
+    short = [w for w in an.warnings if "under 10 mm" in w]
+    assert short == ["v_CB is drawn 2.58 mm long at μv = 0.01 (m/s)/mm, under 10 mm: read to ±0.5 mm it is ±19 % "
+                     "(a smaller μv or a larger page makes it longer)"]
+
+
+#: A centred slider-crank at φ = 0: B and C on the guide, C at its dead centre (v_C = 0).
+SLIDER_AT_DEAD_CENTRE = """
+title = "dead centre"
+show = ["mechanism", "velocity"]
+find = ["v_C", "v_B"]
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+[scales]
+l_m_per_mm = 0.005
+v_m_s_per_mm = 0.025
+[frame]
+link = "4"
+A = [0, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length = 100
+angle = 0
+omega = 10
+[[dyad]]
+type = "RRP"
+joints = ["B", "C"]
+links = ["2", "3"]
+length = 300
+guide = { through = [0, 0], angle = 0 }
+branch = "forward"
+"""
+
+
+def test_a_zero_velocity_at_a_dead_centre_is_no_vector():
+    """v_C = 0 at the dead centre is the pole itself, not a vector shorter than 10 mm; v_B is 40 mm."""
+    import tomllib
+
+    from graphmech.problems.linkage.check import short_vector_warnings
+    from graphmech.scene import parse_scene
+
+    an = analyse(parse_scene(tomllib.loads(SLIDER_AT_DEAD_CENTRE), "dc.toml"))
+    rows = {r.name: r for r in an.rows}
+    assert abs(rows["v_C"].drawn_mm) < 1e-9 and abs(rows["v_B"].drawn_mm) == pytest.approx(40.0)
+    assert short_vector_warnings(an) == [] and not any("under 10 mm" in w for w in an.warnings)

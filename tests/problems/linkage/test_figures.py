@@ -39,7 +39,7 @@ def test_slider_crank_diagram_symbols():
     assert kinds.count(FixedPivot) == 1  # A, hatched
     assert kinds.count(Slider) == 1 and kinds.count(GuideLine) == 1  # block 3 on its guide
     assert kinds.count(Hinge) == 2  # B and C
-    assert {i.text for i in mech.items if isinstance(i, Label)} >= {"A", "B", "C", "1", "2", "3", "ω₁"}
+    assert {i.text for i in mech.items if isinstance(i, Label)} >= {"A", "B", "C", "1", "2", "3", "ω_{1}"}
     arc = next(i for i in mech.items if isinstance(i, ArcArrow))
     assert arc.sweep > 0  # ω1 counter-clockwise
     # links are drawn at μl: |AB| on paper is l_AB/μl = 100 mm / 5 = 20 mm
@@ -73,4 +73,64 @@ def test_acceleration_polygon_lays_off_the_normal_component_with_its_point_n():
 def test_scale_notes_are_written_under_each_panel():
     an, sheet = sheet_of("kin.oscillating_block")
     notes = [n for p in sheet.panels for n in p.notes]
-    assert notes == ["μl = 0.002 m/mm", "μv = 0.005 (m/s)/mm", "μa = 0.05 (m/s²)/mm"]
+    assert notes == ["μ_{l} = 0.002 m/mm", "μ_{v} = 0.005 (m/s)/mm", "μ_{a} = 0.05 (m/s²)/mm"]
+    assert [p.scales for p in sheet.panels] == [(("l", 0.002),), (("v", 0.005),), (("a", 0.05),)]
+
+
+def test_a_ternary_link_is_a_plate_with_its_hinges_on_top():
+    """Link 3 of the six-bar carries B, C and E: one filled triangle, not three bars."""
+    from graphmech.drawing.primitives import Plate
+    from graphmech.methods.instant_centres import positions_mm
+    from graphmech.problems.linkage.figures import mechanism_items
+
+    an = analyse(load_scene(SCENES / "ic.sixbar.toml"))
+    pos = positions_mm(an.build, an.solutions[0])
+    items = mechanism_items(an.build, pos)
+    plates = [it for it in items if isinstance(it, Plate)]
+    assert len(plates) == 1 and sorted(plates[0].points) == sorted([pos["B"], pos["C"], pos["E"]])
+    bars = {frozenset((it.p0, it.p1)) for it in items if isinstance(it, Segment)}
+    assert frozenset((pos["B"], pos["C"])) not in bars  # BC is an edge of the plate
+    hinges = {it.center for it in items if isinstance(it, Hinge)}
+    assert {pos["B"], pos["C"], pos["E"]} <= hinges
+    assert items.index(plates[0]) < min(i for i, it in enumerate(items) if isinstance(it, Hinge))
+
+
+def test_the_found_senses_of_omega_and_epsilon_are_drawn_on_the_link():
+    """Oscillating block at 45°: ω₂ = +1.995 rad/s (counter-clockwise), ε₂ = −8.419 rad/s² (clockwise)."""
+    from graphmech.problems.linkage.sheet import scene_sheet
+
+    sheet, _ = scene_sheet(load_scene(SCENES / "kin.oscillating_block.toml"), ())
+    mech = panel(sheet, "mechanism")
+    found = [it for it in mech.items if isinstance(it, ArcArrow) and it.role == "result"]
+    texts = [it.text for it in mech.items if isinstance(it, Label)]
+    assert "ω_{2}" in texts and "ε_{2}" in texts and "ω_{1}" in texts
+    assert [math.copysign(1.0, a.sweep) for a in found] == [1.0, -1.0]
+
+
+def test_a_guide_is_hatched_away_from_the_crank_pivot():
+    """The offset guide runs 6 mm above A: its hatching is above it (GuideLine hatches its right)."""
+    an, sheet = sheet_of("linkage.slider_crank_offset")
+    for name in ("mechanism-50", "mechanism-220"):
+        g = next(it for it in panel(sheet, name).items if isinstance(it, GuideLine))
+        ax, ay = next(it for it in panel(sheet, name).items if isinstance(it, FixedPivot)).center
+        (x0, y0), (x1, y1) = g.p0, g.p1
+        assert y0 == y1 == pytest.approx(ay + 6.0)  # e = 30 mm at μl = 0.005
+        right = (y1 - y0) * (ax - x0) - (x1 - x0) * (ay - y0)  # > 0: A on the hatched side
+        assert right < 0
+
+
+def test_a_guide_through_the_crank_pivot_stops_short_of_it():
+    """A centred slider-crank's guide passes through A: it is drawn from 7 mm past A, never through it."""
+    import tomllib
+
+    from graphmech.problems.linkage.figures import PIVOT_CLEAR, mechanism_items
+    from graphmech.scene import parse_scene
+    from tests.problems.linkage.test_check import SLIDER_AT_DEAD_CENTRE
+
+    text = SLIDER_AT_DEAD_CENTRE.replace("length = 100\nangle = 0", "length = 100\nangle = 150")
+    an = analyse(parse_scene(tomllib.loads(text), "s.toml"))
+    pos = {n: (float(an.solutions[0].values[s][0]), float(an.solutions[0].values[s][1]))
+           for n, s in an.build.mech.items()}
+    g = next(it for it in mechanism_items(an.build, pos) if isinstance(it, GuideLine))
+    ax = pos["A"][0]
+    assert min(g.p0[0], g.p1[0]) == pytest.approx(ax + PIVOT_CLEAR) and max(g.p0[0], g.p1[0]) > pos["C"][0]
