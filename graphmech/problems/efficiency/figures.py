@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING, Sequence, cast
 
 import dataclasses
 
+from graphmech.errors import WrongKind
 from graphmech.methods.efficiency import Direction, ForcePolygon, StageResult, Stroke
 from graphmech.drawing.diagrams import scale_text
 from graphmech.drawing.lettering import number
@@ -93,7 +94,7 @@ def _scaled(item: Primitive, k: float) -> Primitive:
         return dataclasses.replace(item, center=sc(item.center), r=item.r * k)
     if isinstance(item, Label):
         return dataclasses.replace(item, anchor=sc(item.anchor))
-    raise TypeError(f"cannot scale {item!r}")
+    raise WrongKind(f"cannot scale {item!r}")
 
 
 def _extent(items: Sequence[Primitive]) -> tuple[float, float]:
