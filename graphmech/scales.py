@@ -44,6 +44,10 @@ SCALE_INFO = {
 }
 
 
+#: Scales of an angle, kept in rad/mm and written in degrees per mm as books do.
+ANGLE_SCALES = ("phi", "psi")
+
+
 def round_scale(minimum: float) -> float:
     """The smallest round scale (1, 2, 2.5, 5 × 10^k) that is ≥ ``minimum`` (> 0)."""
     if not (minimum > 0.0 and math.isfinite(minimum)):
@@ -89,7 +93,7 @@ def format_scale(symbol: str, value: float) -> str:
     'μφ = 2 °/mm'
     """
     sym, unit = SCALE_INFO[symbol]
-    if symbol in ("phi", "psi"):
+    if symbol in ANGLE_SCALES:
         value = math.degrees(value)
     return f"{sym} = {value:.6g} {unit}"
 

@@ -8,14 +8,12 @@ against φ).
 from __future__ import annotations
 
 import dataclasses
-import math
 from typing import overload
 
 import numpy as np
 
-from graphmech.drawing.lettering import number, text_box_size
+from graphmech.drawing.lettering import text_box_size
 from graphmech.drawing.primitives import XY, ArcArrow, Arrow, Circle, Label, Polyline, Primitive, Segment
-from graphmech.scales import SCALE_INFO
 
 #: Font size of the position numbers (the least body text a drawing sets, issue 15), and the
 #: least free distance between two of them, mm.
@@ -82,19 +80,6 @@ def moved(item: Primitive, dx: float, dy: float) -> Primitive:
     if isinstance(item, Label):
         return dataclasses.replace(item, anchor=mv(item.anchor))
     raise TypeError(f"cannot move {item!r}")
-
-
-def scale_text(symbol: str, value: float, prime: str = "") -> str:
-    """A scale as a drawing states it: μ with its subscript, the value to four significant
-    figures, the unit of :data:`graphmech.scales.SCALE_INFO` (an angle in °/mm, as the scene
-    gives it); ``prime`` marks a second scale of the same quantity (μ_{φ}′).
-
-    >>> scale_text("phi", math.radians(2.5)), scale_text("T", 12.21730476), scale_text("omega", 2e-6, "′")
-    ('μ_{φ} = 2.5 °/mm', 'μ_{T} = 12.22 J/mm', 'μ_{ω}′ = 2×10^{−6} (rad/s)/mm')
-    """
-    sym, unit = SCALE_INFO[symbol]
-    shown = math.degrees(value) if symbol == "phi" else value
-    return f"μ_{{{sym[1:]}}}{prime} = {number(shown)} {unit}"
 
 
 def phi_axis_numbers(x: np.ndarray, every: int, y: float = 0.0) -> list[Label]:

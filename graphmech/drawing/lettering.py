@@ -23,6 +23,8 @@ from __future__ import annotations
 import math
 import unicodedata
 
+from graphmech.scales import ANGLE_SCALES, SCALE_INFO
+
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 #: Unicode sub- and superscript characters and the ordinary characters they stand for.
@@ -150,3 +152,19 @@ def text_box_size(text: str, size: float) -> tuple[float, float]:
         scale = 1.0 if level == 0 else SCRIPT_SCALE
         width += sum(_em(c) for c in t) * scale
     return (round(size * max(width, 0.6), 12), float(size))
+
+
+def scale_text(symbol: str, value: float, prime: str = "") -> str:
+    """A scale as a drawing states it — the one way every figure writes its μ: μ with its
+    subscript, the value to four significant figures, the unit of
+    :data:`graphmech.scales.SCALE_INFO` (an angle per mm in degrees, as scenes give it);
+    ``prime`` marks a second scale of the same quantity (μ_{φ}′). ``check`` keeps full precision.
+
+    >>> scale_text("phi", math.radians(2.5)), scale_text("T", 12.21730476), scale_text("omega", 2e-6, "′")
+    ('μ_{φ} = 2.5 °/mm', 'μ_{T} = 12.22 J/mm', 'μ_{ω}′ = 2×10^{−6} (rad/s)/mm')
+    >>> scale_text("psi", math.radians(0.5)), scale_text("F", 25.0)
+    ('μ_{ψ} = 0.5 °/mm', 'μ_{F} = 25 N/mm')
+    """
+    sym, unit = SCALE_INFO[symbol]
+    shown = math.degrees(value) if symbol in ANGLE_SCALES else value
+    return f"μ_{{{sym[1:]}}}{prime} = {number(shown)} {unit}"

@@ -18,7 +18,7 @@ from typing import Any, Sequence
 
 from graphmech.geometry.primitives import degrees_0_360
 from graphmech.methods.balancing import Correction
-from graphmech.drawing.diagrams import scale_text
+from graphmech.drawing.lettering import scale_text
 from graphmech.drawing.lettering import number
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import Arrow, Circle, Label, Panel, Primitive, Segment, Sheet

@@ -31,12 +31,12 @@ import numpy as np
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
 from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile
-from graphmech.drawing.lettering import number, text_box_size
+from graphmech.drawing.lettering import number, scale_text, text_box_size
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
                                          Polyline, Primitive, Segment, Sheet, angle_arc)
 from graphmech.errors import OutOfDomain
-from graphmech.scales import SCALE_INFO, format_scale
+from graphmech.scales import format_scale
 
 #: The panels a cam sheet can show, in the order they stand in the row.
 PANELS = ("profile", "displacement", "velocity", "acceleration")
@@ -145,19 +145,16 @@ def scale_note(key: str, value: float, angular: bool = False) -> str:
 
 
 def drawn_scale(key: str, value: float, angular: bool = False) -> tuple[str, str]:
-    """A panel's scale as its drawing states it (4 significant figures, an angle per mm in
-    degrees) and its key in graphmech.scales.SCALE_INFO, for the graphic scale bar:
-    ``("μψ = 0.5 °/mm", "psi")`` for an oscillating follower's swing; the check keeps
-    :func:`scale_note`'s full precision.
+    """A panel's scale as its drawing states it (:func:`graphmech.drawing.lettering.scale_text`)
+    and its key in graphmech.scales.SCALE_INFO, for the graphic scale bar: an oscillating
+    follower's swing is ``psi`` (°/mm); the check keeps :func:`scale_note`'s full precision.
 
     >>> drawn_scale("s", math.radians(0.5), True), drawn_scale("a", 1.0 / 3.0)
-    (('μψ = 0.5 °/mm', 'psi'), ('μa = 0.3333 (m/s²)/mm', 'a'))
+    (('μ_{ψ} = 0.5 °/mm', 'psi'), ('μ_{a} = 0.3333 (m/s²)/mm', 'a'))
     """
     if key in DRAWN_SCALE:
         key = DRAWN_SCALE[key][int(angular)]
-    sym, unit = SCALE_INFO[key]
-    shown = math.degrees(value) if key in ("phi", "psi") else value
-    return f"{sym} = {number(shown)} {unit}", key
+    return scale_text(key, value), key
 
 
 def number_gap(n: int, size: float = NUMBER_SIZE) -> float:
@@ -624,7 +621,7 @@ def cam_sheet(title: str, cam: DiscCam, drawn: DrawnProfile | None, scales: dict
     >>> cam = DiscCam(0.03, TranslatingFollower(), program)
     >>> sheet = cam_sheet("Cam", cam, None, {"phi": math.radians(4), "a": 0.001}, ["acceleration"], (297.0, 210.0))
     >>> [(p.notes, p.scales) for p in sheet.panels]
-    [(('μa = 0.001 (m/s²)/mm', 'μφ = 4 °/mm'), (('a', 0.001), ('phi', 0.06981317007977318)))]
+    [(('μ_{a} = 0.001 (m/s²)/mm', 'μ_{φ} = 4 °/mm'), (('a', 0.001), ('phi', 0.06981317007977318)))]
     """
     bad = [p for p in show if p not in PANELS]
     if bad:

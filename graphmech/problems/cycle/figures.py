@@ -30,11 +30,11 @@ from typing import Any, Sequence, cast
 import numpy as np
 
 from graphmech.construction.graph import values_at
-from graphmech.problems.linkage.figures import LETTER, caption, display, mechanism_items, polygon_items, scale_note
+from graphmech.problems.linkage.figures import LETTER, caption, display, mechanism_items, polygon_items
 from graphmech.drawing.diagrams import AXIS_OVERRUN, count_every, moved, numbers_every, phi_axis_numbers
 from graphmech.drawing.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Polyline, Primitive, Role, Segment, Sheet, Slider, angle_arc)
-from graphmech.drawing.lettering import number, subscript
+from graphmech.drawing.lettering import number, scale_text
 
 __all__ = ["cycle_sheet", "cycle_items", "polygons_items", "diagram_items", "characteristics_items", "MOST_DRAWN"]
 
@@ -325,17 +325,17 @@ def diagram_items(dg: Any, n: int, period: float) -> list[Primitive]:
 def _diagram_notes(dg: Any, mu_phi: float) -> tuple[str, ...]:
     h1, h2 = number(dg.velocity.H_mm), number(dg.acceleration.H_mm)
     if dg.kind == "path":
-        s = f"s along the path of {dg.subject} (its chords end to end): {scale_note('s', dg.mu_s)}, " \
-            f"{scale_note('phi', mu_phi)}"
+        s = f"s along the path of {dg.subject} (its chords end to end): {scale_text('s', dg.mu_s)}, " \
+            f"{scale_text('phi', mu_phi)}"
         v = f"H_{{1}} = {h1} mm: the speed, μ_{{v}} = μ_{{s}}·ω_{{1}}/(μ_{{φ}}·H_{{1}}) = {number(dg.mu_v)} (m/s)/mm"
         a = (f"H_{{2}} = {h2} mm: the tangential acceleration, μ_{{a}} = μ_{{v}}·ω_{{1}}/(μ_{{φ}}·H_{{2}}) = "
              f"{number(dg.mu_a)} (m/s²)/mm")
     elif dg.kind == "point":
-        s = f"{scale_note('s', dg.mu_s)}, {scale_note('phi', mu_phi)}"
+        s = f"{scale_text('s', dg.mu_s)}, {scale_text('phi', mu_phi)}"
         v = f"H_{{1}} = {h1} mm: μ_{{v}} = μ_{{s}}·ω_{{1}}/(μ_{{φ}}·H_{{1}}) = {number(dg.mu_v)} (m/s)/mm"
         a = f"H_{{2}} = {h2} mm: μ_{{a}} = μ_{{v}}·ω_{{1}}/(μ_{{φ}}·H_{{2}}) = {number(dg.mu_a)} (m/s²)/mm"
     else:  # a link's angle: μψ in degrees per mm, as the scene states it
-        s = f"μ_{{ψ}} = {number(math.degrees(dg.mu_s))} °/mm, {scale_note('phi', mu_phi)}"
+        s = f"μ_{{ψ}} = {number(math.degrees(dg.mu_s))} °/mm, {scale_text('phi', mu_phi)}"
         v = f"H_{{1}} = {h1} mm: μ_{{ω}} = μ_{{ψ}}·ω_{{1}}/(μ_{{φ}}·H_{{1}}) = {number(dg.mu_v)} (rad/s)/mm"
         a = f"H_{{2}} = {h2} mm: μ_{{ε}} = μ_{{ω}}·ω_{{1}}/(μ_{{φ}}·H_{{2}}) = {number(dg.mu_a)} (rad/s²)/mm"
     return (s, v, a)
@@ -477,7 +477,7 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
 
 def _characteristics_notes(an: Any) -> tuple[str, ...]:
     dr = an.drawn
-    out = [scale_note("l", dr.mu_l)]
+    out = [scale_text("l", dr.mu_l)]
     kinds = {"crank_rocker_AB": "crank-rocker (AB the crank)", "crank_rocker_CD": "crank-rocker (CD turns fully)",
              "double_crank": "double crank", "double_rocker": "double rocker", "change_point": "change point "
              "(s + l = p + q)", "crank": "the crank turns fully"}
@@ -565,7 +565,7 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
                                     scales=(("l", mu),)))
         elif entry == "cycle" or (entry == "paths" and "cycle" not in show):
             items = cycle_items(cyc, paths if "paths" in show else ())
-            notes = [scale_note("l", an.scales["l"]), f"{cyc.n} positions, 1 at φ = "
+            notes = [scale_text("l", an.scales["l"]), f"{cyc.n} positions, 1 at φ = "
                      f"{number(math.degrees(float(cyc.angles[0])))}°" + (" (an extreme position)"
                                                                          if an.scene.problem.cycle.start == "extreme" else "")]
             if _which(cyc.n):
@@ -576,7 +576,7 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
             panels.append(Panel("cycle", head, tuple(items), tuple(notes), scales=(("l", an.scales["l"]),)))
         elif entry in ("velocity", "acceleration"):
             key = "v" if entry == "velocity" else "a"
-            notes = [scale_note(key, an.scales[key])] + ([_which(cyc.n)] if _which(cyc.n) else [])
+            notes = [scale_text(key, an.scales[key])] + ([_which(cyc.n)] if _which(cyc.n) else [])
             if cyc.polygon_failures:
                 gone = sorted(cyc.polygon_failures)
                 notes.append("no polygon at position" + ("s " if len(gone) > 1 else " ")

@@ -25,7 +25,7 @@ import dataclasses
 
 from graphmech.errors import WrongKind
 from graphmech.methods.efficiency import Direction, ForcePolygon, StageResult, Stroke
-from graphmech.drawing.diagrams import scale_text
+from graphmech.drawing.lettering import scale_text
 from graphmech.drawing.lettering import number
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (XY, Arrow, Circle, GuideLine, Label, Panel, Polyline, Primitive, Segment,

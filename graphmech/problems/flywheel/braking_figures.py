@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from graphmech.drawing.diagrams import scale_text
+from graphmech.drawing.lettering import scale_text
 from graphmech.drawing.lettering import number
 from graphmech.drawing.primitives import Arrow, Label, Panel, Primitive, Segment
 from graphmech.errors import OutOfDomain

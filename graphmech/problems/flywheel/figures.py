@@ -47,7 +47,7 @@ from typing import Sequence
 import numpy as np
 
 from graphmech.methods.flywheel import FlywheelDesign
-from graphmech.drawing.lettering import number, text_box_size
+from graphmech.drawing.lettering import number, scale_text, text_box_size
 from graphmech.drawing.notation import WORDS, word
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, Circle, Label, Panel, Polyline, Primitive, Role,
                                          Segment, Sheet)
@@ -62,7 +62,6 @@ from graphmech.drawing.diagrams import (
     moved,
     numbers_every,
     phi_axis_numbers,
-    scale_text,
 )
 from graphmech.errors import OutOfDomain
 

@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 
-from graphmech.drawing.lettering import number
+from graphmech.drawing.lettering import number, scale_text
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Role, Segment,
                                          Sheet, Slider)
@@ -40,7 +40,7 @@ from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Linkage
 from graphmech.methods.kinetostatics import (GroupPolygon, GuideReaction, KinetostaticSolution, Lever,
                                             PolygonKinematics)
 from graphmech.problems.linkage.figures import mechanism_items
-from graphmech.scales import SCALE_INFO, is_round_scale, round_scale
+from graphmech.scales import is_round_scale, round_scale
 
 if TYPE_CHECKING:
     from graphmech.mechanisms.forces import ForceModel
@@ -129,17 +129,6 @@ def point_label(name: str) -> str:
     """
     m = re.fullmatch(r"([A-Za-z]+?)(\d+)(['′]*)", name)
     return f"{m[1]}_{{{m[2]}}}{m[3].replace(chr(39), '′')}" if m else name
-
-
-def scale_note(symbol: str, value: float) -> str:
-    """A panel's scale as the drawing states it: ``μ_{F} = 25 N/mm`` (six figures at most: a
-    stated μ is written as given).
-
-    >>> scale_note("F", 25.0), scale_note("v", 0.02)
-    ('μ_{F} = 25 N/mm', 'μ_{v} = 0.02 (m/s)/mm')
-    """
-    sym, unit = SCALE_INFO[symbol]
-    return f"μ_{{{sym[1:]}}} = {number(value, 6)} {unit}"
 
 
 def group_text(group: GroupPolygon, notation: str) -> str:
@@ -567,7 +556,7 @@ def force_sheet(title: str, build: LinkageConstruction, kin: PolygonKinematics, 
     friction = friction_factor(rho, mu_l)
     not_to_scale = _w("arrows not to scale", notation)
     if "forces" in show:
-        notes: tuple[str, ...] = (scale_note("l", mu_l), not_to_scale)
+        notes: tuple[str, ...] = (scale_text("l", mu_l), not_to_scale)
         if rho:
             notes += friction_notes(friction, notation, tangent=False)
         panels.append(Panel("forces", _w("loads", notation, position),
@@ -588,13 +577,13 @@ def force_sheet(title: str, build: LinkageConstruction, kin: PolygonKinematics, 
             polygon = word("force polygon", notation)
             caption = _w("force polygon", notation, *((name, polygon) if notation == "zh" else (polygon, name)))
             panels.append(Panel(f"polygon-{key}", caption, tuple(polygon_items(g, mu_F, i, detail, mark)),
-                                (scale_note("F", mu_F),), scales=(("F", mu_F),)))
+                                (scale_text("F", mu_F),), scales=(("F", mu_F),)))
             if detail is not None:
                 marks += 1
                 args = (name, mark) if notation == "zh" else (mark, name)
                 panels.append(Panel(f"detail-{key}", _w("detail", notation, *args),
                                     tuple(detail_items(g, mu_F, i, detail)),
-                                    (scale_note("F", detail.mu_F), _w("enlarged", notation, number(detail.factor))),
+                                    (scale_text("F", detail.mu_F), _w("enlarged", notation, number(detail.factor))),
                                     scales=(("F", detail.mu_F),)))
     if "lever" in show and lever is not None:
         # the lever knows no friction: with friction it gives the frictionless M_b0 (F_b0)
@@ -608,10 +597,10 @@ def force_sheet(title: str, build: LinkageConstruction, kin: PolygonKinematics, 
             result = (f"M_{{b{bare}}} = μ_{{v}}·ΣM_{{p}}/ω_{{{d.link}}} = "
                       f"{number(float(lever.balancing_moment[i]))} N·m{note}")
         panels.append(Panel("lever", _w("lever", notation), tuple(lever_items(build.linkage, kin, lever, i)),
-                            (scale_note("v", kin.mu_v), result), scales=(("v", kin.mu_v),)))
+                            (scale_text("v", kin.mu_v), result), scales=(("v", kin.mu_v),)))
     return Sheet(title, tuple(panels), page, footer)
 
 
-__all__ = ["force_sheet", "force_label", "point_label", "scale_note", "loads_items", "free_body_items",
+__all__ = ["force_sheet", "force_label", "point_label", "loads_items", "free_body_items",
            "polygon_items", "polygon_detail", "detail_items", "lever_items", "friction_factor", "Detail",
            "FORCE_WORDS", "READ_MIN_MM"]

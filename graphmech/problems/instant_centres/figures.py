@@ -15,10 +15,10 @@ import math
 from dataclasses import replace
 from typing import Any, Sequence, cast
 
-from graphmech.problems.linkage.figures import LETTER, caption, mechanism_items, prime, scale_note
+from graphmech.problems.linkage.figures import LETTER, caption, mechanism_items, prime
 from graphmech.methods.instant_centres import Centre, InstantCentres, centre_name, direct_centres, pair
 from graphmech.drawing.primitives import Arrow, Circle, Label, Panel, Primitive, Segment
-from graphmech.drawing.lettering import number, subscript
+from graphmech.drawing.lettering import number, scale_text, subscript
 from graphmech.scales import round_scale
 
 #: Radius of the polygon of links, mm.
@@ -131,7 +131,7 @@ def ic_panel(name: str, head: str, build: Any, pos: dict[str, tuple[float, float
             lo = min(a, b, f, key=lambda t: (t[0] - a[0]) * (b[0] - a[0]) + (t[1] - a[1]) * (b[1] - a[1]))
             hi = max(a, b, f, key=lambda t: (t[0] - a[0]) * (b[0] - a[0]) + (t[1] - a[1]) * (b[1] - a[1]))
             items.append(Segment(lo, hi, "construction"))
-    return Panel(name, head, tuple(items), (scale_note("l", mu_panel),) + tuple(notes), row=row,
+    return Panel(name, head, tuple(items), (scale_text("l", mu_panel),) + tuple(notes), row=row,
                  scales=(("l", mu_panel),))
 
 
@@ -289,7 +289,7 @@ def zero_panel(an: Any, x: str, zeros: Sequence[float], spans: dict[int, tuple[f
                 items.append(Label(label(driver, carrier), c.point, (), LETTER))
     ang = ", ".join(f"{number(math.degrees(z))}°" for z in zeros)
     return Panel(f"ic-zero-{x}", caption("zero velocity", notation).format(x), tuple(items),
-                 (scale_note("l", build.mu_l), f"at φ_{{{driver}}} = {ang}"), row=row, scales=(("l", build.mu_l),))
+                 (scale_text("l", build.mu_l), f"at φ_{{{driver}}} = {ang}"), row=row, scales=(("l", build.mu_l),))
 
 
 def _omega_note(ic: InstantCentres, lid: str, mu_l: float) -> str:

@@ -16,8 +16,7 @@ from graphmech.mechanisms.linkage import Crank, Linkage, LinkPoint, RPP, RPR, RR
 from graphmech.drawing.notation import WORDS, word
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Primitive, Role, Segment, Sheet, Slider)
-from graphmech.drawing.lettering import number, subscript
-from graphmech.scales import SCALE_INFO
+from graphmech.drawing.lettering import scale_text, subscript
 
 #: The kinematics sheets' captions in the three notations (graphmech.drawing.notation's shape);
 #: a template's {0}, {1} take a position, a link or a point.
@@ -65,17 +64,6 @@ PRIMES = ("′", "″", "‴")
 def caption(key: str, notation: str = "en") -> str:
     """A caption of the kinematics sheets in ``notation`` (``LINKAGE_WORDS``)."""
     return word(key, notation, LINKAGE_WORDS)
-
-
-def scale_note(key: str, mu: float) -> str:
-    """μ as a drawing states it: ``μ_{l} = 0.002 m/mm`` (4 significant figures, μφ in degrees
-    per mm as the scene writes it).
-
-    >>> scale_note("v", 0.025), scale_note("phi", math.radians(4.0))
-    ('μ_{v} = 0.025 (m/s)/mm', 'μ_{φ} = 4 °/mm')
-    """
-    sym, unit = SCALE_INFO[key]
-    return f"μ_{{{sym[1:]}}} = {number(math.degrees(mu) if key == 'phi' else mu)} {unit}"
 
 
 def prime(k: int) -> str:
@@ -433,7 +421,7 @@ def linkage_sheet(title: str, linkage: Linkage, build: Any, plan: Any, solutions
             continue
         for panel in show:
             key = SCALE_OF[panel]
-            note = (scale_note(key, scales[key]),)
+            note = (scale_text(key, scales[key]),)
             if panel == "mechanism":
                 pos = {name: _pt(sol.values[slot]) for name, slot in build.mech.items() if slot in sol.values}
                 items = mechanism_items(build, pos, spans, senses[i] if senses else None)
@@ -461,5 +449,5 @@ def guide_spans(linkage: Linkage, build: Any, solutions: Sequence[Any]) -> dict[
     return spans
 
 
-__all__ = ["linkage_sheet", "mechanism_items", "polygon_items", "display", "caption", "scale_note", "sense_mark",
+__all__ = ["linkage_sheet", "mechanism_items", "polygon_items", "display", "caption", "sense_mark",
            "prime", "LINKAGE_WORDS", "LinkPoint"]

@@ -203,7 +203,7 @@ def test_offset_circle_is_thin_dash_dot_and_omega_turns_with_the_cam():
     _, _, cw = make(dataclasses.replace(cam, rotation=-1), show=["profile"])
     assert next(i for i in panel(cw, "profile").items if type(i).__name__ == "ArcArrow").sweep < 0
     assert {"O", "ω"} <= {i.text for i in items if isinstance(i, Label)}
-    assert panel(sheet, "profile").notes == ("μl = 0.001 m/mm", "r_{0} = 30 mm, e = 10 mm, r_{r} = 10 mm; "
+    assert panel(sheet, "profile").notes == ("μ_{l} = 0.001 m/mm", "r_{0} = 30 mm, e = 10 mm, r_{r} = 10 mm; "
                                              "ω counter-clockwise")
     assert panel(sheet, "profile").scales == (("l", MU_L),)
 
@@ -230,7 +230,7 @@ def test_oscillating_follower_arms_from_the_pivot_circle():
     assert all(math.dist(a.p0, a.p1) == pytest.approx(50.0) for a in arms)
     assert sum(isinstance(i, FixedPivot) for i in items) == 1
     # the swing's scale in degrees per mm, as the scene states it, and its key for the scale bar
-    assert panel(sheet, "displacement").notes == ("μψ = 0.5 °/mm", "μφ = 2 °/mm")
+    assert panel(sheet, "displacement").notes == ("μ_{ψ} = 0.5 °/mm", "μ_{φ} = 2 °/mm")
     assert panel(sheet, "displacement").scales == (("psi", math.radians(0.5)), ("phi", MU_PHI))
     assert "l_{OA} = 55 mm, l_{AB} = 50 mm" in panel(sheet, "profile").notes[1]
 
@@ -264,7 +264,7 @@ def test_displacement_curve_reaches_h_over_mu_s_and_its_ordinates_stand_at_the_d
     assert numbers(disp) == [str(k) for k in range(24)]
     # 30° is 15 mm at 2 °/mm: room for the angle only
     assert {"rise 150°", "30°", "return 120°", "dwell 60°"} <= {i.text for i in disp.items if isinstance(i, Label)}
-    assert disp.notes == ("μs = 0.0005 m/mm", "μφ = 2 °/mm")
+    assert disp.notes == ("μ_{s} = 0.0005 m/mm", "μ_{φ} = 2 °/mm")
     assert disp.scales == (("s", MU_S), ("phi", MU_PHI))
     # on the page: the curve's highest point is 32 mm above the δ axis
     calls = group(record(sheet), "displacement")
@@ -283,7 +283,7 @@ def test_uniform_rise_shows_plus_and_minus_infinity_at_its_two_ends():
     assert all(a.p0 == (a.p1[0], 0.0) for a in arrows)
     texts = [c[1] for c in group(record(sheet), "acceleration") if c[0] == "text"]
     assert "+∞" in texts and "−∞" in texts
-    assert acc.notes == ("μa = 0.0005 (m/s²)/mm", "μφ = 2 °/mm")
+    assert acc.notes == ("μ_{a} = 0.0005 (m/s²)/mm", "μ_{φ} = 2 °/mm")
     assert acc.scales == (("a", MU_A), ("phi", MU_PHI))
 
 

@@ -16,7 +16,7 @@ from graphmech.render.recording import RecordingBackend
 from graphmech.render.sheet import draw_sheet, panel_labels, panel_shapes
 from graphmech.render.svg import render_svg
 from graphmech.render.style import DEFAULT
-from graphmech.drawing.diagrams import scale_text
+from graphmech.drawing.lettering import scale_text
 from graphmech.drawing.lettering import number
 
 TAU = 2.0 * math.pi
