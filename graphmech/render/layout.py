@@ -13,8 +13,8 @@ so their captions line up under them. What still does not fit keeps its μ and i
 :attr:`SheetLayout.warnings` (the caller reports them).
 
 A sheet with a title block (:mod:`graphmech.render.titleblock`) has it at the page's lower
-right, inside the margins: the last row of panels stands beside it where it and every row
-clear it, else the rows keep above it. A *fit* sheet (``[page] size = "fit"``) is laid out
+right, inside the margins: the rows stand as without it where they clear it, else the last row
+stands beside it where every row then clears it, else the rows keep above it. A *fit* sheet (``[page] size = "fit"``) is laid out
 first, its page then cropped to the content with the page margin: of the ways to fill rows,
 the one whose page is smallest and nearest A-paper's shape.
 
@@ -426,12 +426,14 @@ def layout_sheet(
         if block.width > page_w - 2.0 * m + 1e-9:
             warnings.append(f"the title block is {block.width:.1f} mm wide but the page leaves "
                             f"{page_w - 2.0 * m:.1f} mm between its margins")
-        if not sheet.fit:  # the last row beside the block, if it and every row clear it
+        if not sheet.fit:  # the rows as without it, or the last row beside it, if every row clears it
             last_right = block_at[0] - gap
-            beside = _arrange(rows, sizes, room, gap, last_right)
-            fits = not rows or _row_sizes(rows[-1:], sizes, gap)[0][0] <= last_right - m + 1e-9
-            if fits and not any(_overlaps(_frame(beside[i], sizes[i]), block_box) for i in beside):
-                at = beside
+            narrow = not rows or _row_sizes(rows[-1:], sizes, gap)[0][0] <= last_right - m + 1e-9
+            for right in [None] + ([last_right] if narrow else []):
+                tried = _arrange(rows, sizes, room, gap, right)
+                if not any(_overlaps(_frame(tried[i], sizes[i]), block_box) for i in tried):
+                    at = tried
+                    break
         if at is None:  # else a band of the page's width above it
             room = (room[0], room[1], room[2], min(room[3], block_at[1] - gap))
     if at is None:
