@@ -16,7 +16,7 @@ A sheet with a title block (:mod:`graphmech.render.titleblock`) has it at the pa
 right, inside the margins: the rows stand as without it where they clear it, else the last row
 stands beside it where every row then clears it, else the rows keep above it. A *fit* sheet (``[page] size = "fit"``) is laid out
 first, its page then cropped to the content with the page margin: of the ways to fill rows,
-the one whose page is smallest and nearest A-paper's shape.
+the one whose page is smallest and nearest A-paper's shape, in whole millimetres.
 
 Coordinates: a panel's drawing box is in its own frame (y up); everything else is page
 millimetres (origin top-left, y down). ``PanelPlacement.to_page`` is the only transform:
@@ -33,7 +33,7 @@ Examples
 [69.867, 184.433]
 >>> fit = layout_sheet(Sheet("t", (p, p), fit=True))
 >>> fit.page, [round(pl.frame[1], 3) for pl in fit.panels]  # cropped; one above the other
-((62.7, 62.6), [21.75, 43.175])
+((63.0, 63.0), [21.883, 43.442])
 """
 from __future__ import annotations
 
@@ -352,7 +352,8 @@ def _fit(sheet: Sheet, sizes: Sequence[_Size], block: TitleBlockLayout | None, s
          head: float, foot: float) -> tuple[list[list[int]], tuple[float, float]]:
     """The rows and the page of a fit sheet: of the ways to fill rows (every width limit a run
     of panels gives), the one whose cropped page is smallest and nearest A-paper's shape (the
-    first of equals); the page holds title, rows, footer and title block, with the margins."""
+    first of equals); the page holds title, rows, footer and title block, with the margins,
+    rounded up to whole millimetres."""
     m, gap = style.page_margin, style.panel_gap
     n = len(sizes)
     limits = sorted({sum(s.w for s in sizes[i:j + 1]) + gap * (j - i) for i in range(n) for j in range(i, n)})
@@ -371,7 +372,8 @@ def _fit(sheet: Sheet, sizes: Sequence[_Size], block: TitleBlockLayout | None, s
         if best is None or score < best[0] - 1e-9:
             best = (score, rows, (w, h))
     assert best is not None
-    return best[1], best[2]
+    w, h = best[2]
+    return best[1], (float(math.ceil(w - 1e-9)), float(math.ceil(h - 1e-9)))  # whole millimetres
 
 
 def layout_sheet(
