@@ -15,8 +15,8 @@ so their captions line up under them. What still does not fit keeps its μ and i
 A sheet with a title block (:mod:`graphmech.render.titleblock`) has it at the page's lower
 right, inside the margins: the rows stand as without it where they clear it, else the last row
 stands beside it where every row then clears it, else the rows keep above it. A *fit* sheet (``[page] size = "fit"``) is laid out
-first, its page then cropped to the content with the page margin: of the ways to fill rows,
-the one whose page is smallest and nearest A-paper's shape, in whole millimetres.
+first, its page then cropped to the content with a small margin (:data:`FIT_MARGIN`): of the
+ways to fill rows, the one whose page is smallest (not a strip), in whole millimetres.
 
 Coordinates: a panel's drawing box is in its own frame (y up); everything else is page
 millimetres (origin top-left, y down). ``PanelPlacement.to_page`` is the only transform:
@@ -256,8 +256,11 @@ def _caption_lines(panel: Panel, style: Style) -> list[tuple[str, float]]:
 CAPTION_GAP = 2.0
 #: Free distance above each scale bar (from the caption or the bar before it), mm.
 BAR_GAP = 1.0
-#: The shape a fit page's rows are chosen for: width / height of A-paper, landscape.
-FIT_ASPECT = math.sqrt(2.0)
+#: A fit page's margin, mm: a figure for a report is cropped to its content with a small margin.
+FIT_MARGIN = 5.0
+#: The longest side of a fit page over its shortest beyond which the rows are rearranged
+#: (a strip of panels in one row, or a column, reads badly).
+FIT_MAX_SHAPE = 2.5
 
 
 @dataclass(frozen=True)
@@ -351,10 +354,10 @@ def _overlaps(a: Box, b: Box) -> bool:
 def _fit(sheet: Sheet, sizes: Sequence[_Size], block: TitleBlockLayout | None, style: Style,
          head: float, foot: float) -> tuple[list[list[int]], tuple[float, float]]:
     """The rows and the page of a fit sheet: of the ways to fill rows (every width limit a run
-    of panels gives), the one whose cropped page is smallest and nearest A-paper's shape (the
-    first of equals); the page holds title, rows, footer and title block, with the margins,
-    rounded up to whole millimetres."""
-    m, gap = style.page_margin, style.panel_gap
+    of panels gives), the one whose cropped page is smallest — the most filled — unless it is
+    longer than FIT_MAX_SHAPE times its width or height (the first of equals); the page holds
+    title, rows, footer and title block with FIT_MARGIN, rounded up to whole millimetres."""
+    m, gap = FIT_MARGIN, style.panel_gap
     n = len(sizes)
     limits = sorted({sum(s.w for s in sizes[i:j + 1]) + gap * (j - i) for i in range(n) for j in range(i, n)})
     fixed = max([text_box_size(sheet.title, style.title_size)[0] if sheet.title else 0.0]
@@ -367,8 +370,8 @@ def _fit(sheet: Sheet, sizes: Sequence[_Size], block: TitleBlockLayout | None, s
         row_w, row_h = _row_sizes(rows, sizes, gap)
         w = max([fixed, 1.0] + row_w) + 2.0 * m
         h = head + sum(row_h) + gap * max(len(rows) - 1, 0) + band + 2.0 * m
-        shape = max(w / h / FIT_ASPECT, FIT_ASPECT * h / w)
-        score = w * h * shape * shape
+        stretch = max(w / h, h / w) / FIT_MAX_SHAPE
+        score = w * h * max(stretch, 1.0) ** 2
         if best is None or score < best[0] - 1e-9:
             best = (score, rows, (w, h))
     assert best is not None
@@ -404,7 +407,7 @@ def layout_sheet(
              for i, p in enumerate(sheet.panels)]
     block = None if sheet.title_block is None else \
         title_block_layout(sheet.title_block, sheet.title, scale_text(sheet.panels), style)
-    m, gap = style.page_margin, style.panel_gap
+    m, gap = FIT_MARGIN if sheet.fit else style.page_margin, style.panel_gap
     step = style.note_size * style.line_gap
     n_foot = len(sheet.footer)
     head = style.title_size * (1.0 + style.line_gap) if sheet.title else 0.0
