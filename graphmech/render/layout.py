@@ -15,8 +15,9 @@ so their captions line up under them. What still does not fit keeps its μ and i
 A sheet with a title block (:mod:`graphmech.render.titleblock`) has it at the page's lower
 right, inside the margins: the rows stand as without it where they clear it, else the last row
 stands beside it where every row then clears it, else the rows keep above it. A *fit* sheet (``[page] size = "fit"``) is laid out
-first, its page then cropped to the content with a small margin (:data:`FIT_MARGIN`): of the
-ways to fill rows, the one whose page is smallest (not a strip), in whole millimetres.
+first, its page then cropped to the content with a small margin (:data:`FIT_MARGIN`, panels
+:data:`FIT_GAP` apart): of the ways to fill rows, the one whose page is smallest (not a strip),
+its title wrapped to the drawing's width, in whole millimetres.
 
 Coordinates: a panel's drawing box is in its own frame (y up); everything else is page
 millimetres (origin top-left, y down). ``PanelPlacement.to_page`` is the only transform:
@@ -33,7 +34,7 @@ Examples
 [69.867, 184.433]
 >>> fit = layout_sheet(Sheet("t", (p, p), fit=True))
 >>> fit.page, [round(pl.frame[1], 3) for pl in fit.panels]  # cropped; one above the other
-((63.0, 63.0), [21.883, 43.442])
+((53.0, 49.0), [16.883, 34.442])
 """
 from __future__ import annotations
 
@@ -237,6 +238,9 @@ class SheetLayout:
     warnings: tuple[str, ...]
     page: tuple[float, float]
     title_block: tuple[TitleBlockLayout, XY] | None = None
+    #: The sheet title as drawn, a line each, the first at ``title_at`` (a fit page wraps a
+    #: title wider than its drawing).
+    title_lines: tuple[str, ...] = ()
 
     @property
     def title_block_box(self) -> Box | None:
@@ -256,8 +260,12 @@ def _caption_lines(panel: Panel, style: Style) -> list[tuple[str, float]]:
 CAPTION_GAP = 2.0
 #: Free distance above each scale bar (from the caption or the bar before it), mm.
 BAR_GAP = 1.0
-#: A fit page's margin, mm: a figure for a report is cropped to its content with a small margin.
+#: A fit page's margin and least gap between panels, mm: a figure for a report is cropped to
+#: its content with a small margin.
 FIT_MARGIN = 5.0
+FIT_GAP = 8.0
+#: A fit page's title is wrapped to the drawing's width, but not narrower than this, mm.
+FIT_TITLE_WIDTH = 80.0
 #: The longest side of a fit page over its shortest beyond which the rows are rearranged
 #: (a strip of panels in one row, or a column, reads badly).
 FIT_MAX_SHAPE = 2.5
@@ -351,32 +359,56 @@ def _overlaps(a: Box, b: Box) -> bool:
     return min(a[2], b[2]) > max(a[0], b[0]) and min(a[3], b[3]) > max(a[1], b[1])
 
 
+def wrap(text: str, width: float, size: float) -> tuple[str, ...]:
+    """``text`` broken at spaces into lines at most ``width`` mm wide at font ``size`` (a word
+    wider than that stands alone on its line).
+
+    >>> wrap("Crank-rocker through a whole turn", 40.0, 5.0)
+    ('Crank-rocker', 'through a', 'whole turn')
+    """
+    lines: list[str] = []
+    for word in text.split(" "):
+        if lines and text_box_size(lines[-1] + " " + word, size)[0] <= width + 1e-9:
+            lines[-1] += " " + word
+        else:
+            lines.append(word)
+    return tuple(lines)
+
+
+def _head(lines: Sequence[str], style: Style) -> float:
+    """The height the sheet title's lines take above the panels, mm."""
+    return style.title_size * (1.0 + len(lines) * style.line_gap) if lines else 0.0
+
+
 def _fit(sheet: Sheet, sizes: Sequence[_Size], block: TitleBlockLayout | None, style: Style,
-         head: float, foot: float) -> tuple[list[list[int]], tuple[float, float]]:
-    """The rows and the page of a fit sheet: of the ways to fill rows (every width limit a run
-    of panels gives), the one whose cropped page is smallest — the most filled — unless it is
-    longer than FIT_MAX_SHAPE times its width or height (the first of equals); the page holds
-    title, rows, footer and title block with FIT_MARGIN, rounded up to whole millimetres."""
-    m, gap = FIT_MARGIN, style.panel_gap
+         foot: float) -> tuple[list[list[int]], tuple[float, float], tuple[str, ...]]:
+    """The rows, the page and the title's lines of a fit sheet: of the ways to fill rows (every
+    width limit a run of panels gives), the one whose cropped page is smallest — the most filled
+    — unless it is longer than FIT_MAX_SHAPE times its width or height (the first of equals);
+    the title wrapped to the drawing's width; the page holds title, rows, footer and title block
+    with FIT_MARGIN, rounded up to whole millimetres."""
+    m, gap = FIT_MARGIN, FIT_GAP
     n = len(sizes)
     limits = sorted({sum(s.w for s in sizes[i:j + 1]) + gap * (j - i) for i in range(n) for j in range(i, n)})
-    fixed = max([text_box_size(sheet.title, style.title_size)[0] if sheet.title else 0.0]
-                + [text_box_size(f, style.note_size)[0] + (gap + block.width if block else 0.0)
-                   for f in sheet.footer] + [block.width if block else 0.0])
+    fixed = max([text_box_size(f, style.note_size)[0] + (gap + block.width if block else 0.0)
+                 for f in sheet.footer] + [block.width if block else 0.0, 1.0])
     band = max(foot, block.height + gap if block else 0.0)
-    best: tuple[float, list[list[int]], tuple[float, float]] | None = None
+    best: tuple[float, list[list[int]], tuple[float, float], tuple[str, ...]] | None = None
     for limit in limits or [0.0]:
         rows = _rows(sheet.panels, sizes, limit, gap)
         row_w, row_h = _row_sizes(rows, sizes, gap)
-        w = max([fixed, 1.0] + row_w) + 2.0 * m
-        h = head + sum(row_h) + gap * max(len(rows) - 1, 0) + band + 2.0 * m
+        inner = max([fixed] + row_w)
+        title = wrap(sheet.title, max(inner, FIT_TITLE_WIDTH), style.title_size) if sheet.title else ()
+        inner = max([inner] + [text_box_size(t, style.title_size)[0] for t in title])
+        w = inner + 2.0 * m
+        h = _head(title, style) + sum(row_h) + gap * max(len(rows) - 1, 0) + band + 2.0 * m
         stretch = max(w / h, h / w) / FIT_MAX_SHAPE
         score = w * h * max(stretch, 1.0) ** 2
         if best is None or score < best[0] - 1e-9:
-            best = (score, rows, (w, h))
+            best = (score, rows, (w, h), title)
     assert best is not None
-    w, h = best[2]
-    return best[1], (float(math.ceil(w - 1e-9)), float(math.ceil(h - 1e-9)))  # whole millimetres
+    _, rows, (w, h), title = best
+    return rows, (float(math.ceil(w - 1e-9)), float(math.ceil(h - 1e-9))), title  # whole millimetres
 
 
 def layout_sheet(
@@ -407,16 +439,17 @@ def layout_sheet(
              for i, p in enumerate(sheet.panels)]
     block = None if sheet.title_block is None else \
         title_block_layout(sheet.title_block, sheet.title, scale_text(sheet.panels), style)
-    m, gap = FIT_MARGIN if sheet.fit else style.page_margin, style.panel_gap
+    m, gap = (FIT_MARGIN, FIT_GAP) if sheet.fit else (style.page_margin, style.panel_gap)
     step = style.note_size * style.line_gap
     n_foot = len(sheet.footer)
-    head = style.title_size * (1.0 + style.line_gap) if sheet.title else 0.0
     foot = step * n_foot + style.note_size if n_foot else 0.0
     if sheet.fit:
-        rows, page = _fit(sheet, sizes, block, style, head, foot)
+        rows, page, title = _fit(sheet, sizes, block, style, foot)
     else:
         page = sheet.page
         rows = _rows(sheet.panels, sizes, page[0] - 2.0 * m, gap)
+        title = (sheet.title,) if sheet.title else ()
+    head = _head(title, style)
     page_w, page_h = page
     title_at = (page_w / 2.0, m + style.title_size)
     footer_at = tuple((m, page_h - m - step * (n_foot - 1 - k)) for k in range(n_foot))
@@ -465,7 +498,7 @@ def layout_sheet(
 
     placements = tuple(_placement(sheet.panels[i], sizes[i], at[i], style) for i in range(len(sizes)))
     return SheetLayout(placements, title_at, footer_at, tuple(warnings), (page_w, page_h),
-                       None if block is None or block_at is None else (block, block_at))
+                       None if block is None or block_at is None else (block, block_at), title)
 
 
 def _frame(corner: XY, size: _Size) -> Box:

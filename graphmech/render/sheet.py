@@ -356,7 +356,9 @@ def draw_sheet(
     backend.begin(layout.page[0], layout.page[1], sheet.title)
     if sheet.title:
         backend.begin_group("title")
-        backend.text(sheet.title, layout.title_at, style.title_size, "middle", False, "text")
+        x, y = layout.title_at
+        for k, line in enumerate(layout.title_lines):  # one line, unless a fit page wraps it
+            backend.text(line, (x, y + k * style.title_size * style.line_gap), style.title_size, "middle", False, "text")
         backend.end_group()
     for i, (panel, pl, panel_shape, labels) in enumerate(
         zip(sheet.panels, layout.panels, shapes, placed)

@@ -8,7 +8,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from graphmech.render.layout import BAR_GAP, SheetLayout, item_box, layout_sheet, panel_bbox
+from graphmech.render.layout import (BAR_GAP, FIT_MARGIN, FIT_MAX_SHAPE, SheetLayout, item_box, layout_sheet,
+                                     panel_bbox)
+from graphmech.render.recording import RecordingBackend
+from graphmech.render.sheet import draw_sheet
 from graphmech.drawing.primitives import Arrow, FixedPivot, Hinge, Label, Panel, Segment, Sheet, TitleBlock
 from graphmech.render.style import DEFAULT
 from graphmech.scales import PAPER
@@ -182,7 +185,7 @@ def _assert_sound(sheet: Sheet) -> SheetLayout:
     if not lay.warnings:
         frames = [p.frame for p in lay.panels]
         for i, a in enumerate(frames):
-            assert inside(a, lay.page, DEFAULT.page_margin - 1e-9)
+            assert inside(a, lay.page, (FIT_MARGIN if sheet.fit else DEFAULT.page_margin) - 1e-9)
             for b in frames[i + 1:]:
                 assert not overlap(a, b)
     return lay
@@ -200,7 +203,7 @@ def test_any_sheet_is_laid_out_without_overlap(sheet: Sheet) -> None:
 def test_a_fit_page_holds_its_content_and_no_more(sheet: Sheet) -> None:
     lay = _assert_sound(sheet)
     assert lay.warnings == ()  # the page is made to hold it
-    m = DEFAULT.page_margin
+    m = FIT_MARGIN
     frames = [p.frame for p in lay.panels]
     assert lay.page == tuple(float(round(x)) for x in lay.page)  # whole millimetres
     # cropped: the content reaches the margins (less than a millimetre of rounding), at the
@@ -224,7 +227,21 @@ def test_a_fit_page_is_cropped_whatever_the_working_area() -> None:
 def test_a_fit_sheet_of_many_panels_is_not_a_strip() -> None:
     lay = layout_sheet(Sheet("", tuple(bar(f"p{k}", 80.0, 60.0) for k in range(8)), fit=True))
     w, h = lay.page
-    assert 1.0 < w / h < 2.5  # rows of four or so, not one row of eight
+    assert 1 / FIT_MAX_SHAPE < w / h < FIT_MAX_SHAPE  # not one row (or one column) of eight
+    assert {len({p.frame[1] for p in lay.panels}), len({p.frame[0] for p in lay.panels})} == {2, 4}
+
+
+def test_a_fit_pages_title_is_wrapped_to_the_drawing() -> None:
+    title = "Crank-rocker AB = 28, BC = 52, CD = 50, AD = 72 mm through a whole turn"
+    lay = layout_sheet(Sheet(title, (bar("a", 90.0, 40.0),), fit=True))
+    assert len(lay.title_lines) == 3 and " ".join(lay.title_lines) == title
+    assert lay.page[0] < 120.0  # not as wide as the title on one line (about 210 mm)
+    assert min(p.frame[1] for p in lay.panels) > lay.title_at[1] + DEFAULT.title_size * DEFAULT.line_gap
+    calls = draw_sheet(Sheet(title, (bar("a", 90.0, 40.0),), fit=True), RecordingBackend())
+    drawn = [c for c in calls if c[0] == "text" and c[3] == DEFAULT.title_size]
+    assert [c[1] for c in drawn] == list(lay.title_lines)
+    assert drawn[1][2][1] - drawn[0][2][1] == pytest.approx(DEFAULT.title_size * DEFAULT.line_gap)
+    assert layout_sheet(Sheet(title, (bar("a", 90.0, 40.0),))).title_lines == (title,)  # a paper page: one line
 
 
 # ---------------------------------------------------------------- scale bars in the frame
@@ -265,7 +282,7 @@ def test_a_fit_page_holds_its_title_block(sheet: Sheet) -> None:
     lay = _assert_sound(sheet)
     box = lay.title_block_box
     assert lay.warnings == () and box is not None
-    assert inside(box, lay.page, DEFAULT.page_margin - 1e-9)
+    assert inside(box, lay.page, FIT_MARGIN - 1e-9)
     for p in lay.panels:
         assert not overlap(p.frame, box)
 
