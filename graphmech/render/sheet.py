@@ -357,8 +357,8 @@ def draw_sheet(
     if sheet.title:
         backend.begin_group("title")
         x, y = layout.title_at
-        for k, line in enumerate(layout.title_lines):  # one line, unless a fit page wraps it
-            backend.text(line, (x, y + k * style.title_size * style.line_gap), style.title_size, "middle", False, "text")
+        for k, text in enumerate(layout.title_lines):  # one line, unless a fit page wraps it
+            backend.text(text, (x, y + k * style.title_size * style.line_gap), style.title_size, "middle", False, "text")
         backend.end_group()
     for i, (panel, pl, panel_shape, labels) in enumerate(
         zip(sheet.panels, layout.panels, shapes, placed)
