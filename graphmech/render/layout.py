@@ -268,7 +268,7 @@ FIT_GAP = 8.0
 FIT_TITLE_WIDTH = 80.0
 #: The longest side of a fit page over its shortest beyond which the rows are rearranged
 #: (a strip of panels in one row, or a column, reads badly).
-FIT_MAX_SHAPE = 2.5
+FIT_MAX_SHAPE = 2.0
 
 
 @dataclass(frozen=True)
