@@ -20,6 +20,7 @@ import numpy as np
 
 from graphmech.errors import COMMAND_LINE, GraphmechError, SceneError, printable
 from graphmech.files import write_atomic
+from graphmech.scales import FIT, PAPER
 
 EXIT_OK, EXIT_OUT_OF_TOLERANCE, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
 
@@ -27,6 +28,19 @@ EXIT_OK, EXIT_OUT_OF_TOLERANCE, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:  # one line, exit 2 (argparse's own convention too)
         self.exit(EXIT_BAD_INPUT, f"graphmech: {message}\n")
+
+
+#: The paper sizes --page takes (graphmech.scales.PAPER and "fit").
+PAPERS = ", ".join([*PAPER, FIT])
+PAGE_HELP = f"the paper, instead of the scene's [page] size: {PAPERS} (fit: cropped to the drawing)"
+
+
+def _paper(text: str) -> str:
+    """--page's value: a paper name (any case) or fit; else the one-line error, exit 2."""
+    names = {name.casefold(): name for name in [*PAPER, FIT]}
+    if text.casefold() not in names:
+        raise argparse.ArgumentTypeError(f"unknown paper {text!r}: choose from {PAPERS}")
+    return names[text.casefold()]
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -39,12 +53,15 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("scenes", nargs="+", metavar="SCENE")
     r.add_argument("-o", "--output", help="output SVG (one scene only)")
     r.add_argument("-d", "--directory", help="write <scene name>.svg into this folder")
+    r.add_argument("--page", type=_paper, metavar="SIZE", help=PAGE_HELP)
     c = sub.add_parser("check", help="the check table: graphical vs exact, and verdicts on measured values")
     c.add_argument("scene", metavar="SCENE")
     c.add_argument("--json", action="store_true", help="machine-readable output")
     c.add_argument("--measured", action="append", default=[], metavar="NAME=VALUE",
                    help="a value you measured: v_C=0.26 (SI) or pc=52 (drawn mm); repeatable, or comma-separated")
     c.add_argument("--precision", type=float, metavar="MM", help="drawing precision, mm (default: the scene's, else 0.5)")
+    c.add_argument("--page", type=_paper, metavar="SIZE",
+                   help="the paper the scales are chosen for, instead of the scene's [page] size: " + PAPERS)
     b = sub.add_parser("bench", help="run time and error of the graphical methods against the exact ones")
     b.add_argument("--json", action="store_true")
     b.add_argument("-o", "--output", metavar="DIR", help="also write bench.json and log-log plots of error and time into DIR")
@@ -103,7 +120,7 @@ def _render(args: argparse.Namespace) -> int:
     outputs = []
     for s in args.scenes:  # render everything first: one bad scene writes nothing
         args.current = s  # for the message if it cannot be constructed
-        svg, found = render_scene(s)
+        svg, found = render_scene(s, args.page)
         for w in found:
             say(f"{_file_name(args)}: warning: {w}")
         if args.output:
@@ -154,7 +171,7 @@ def _check(args: argparse.Namespace) -> int:
         return EXIT_BAD_INPUT
     extra = _parse_measured(args.measured)
     args.current = args.scene
-    scene = with_precision(load_scene(args.scene), args.precision)
+    scene = with_precision(load_scene(args.scene, args.page), args.precision)
     an, verdicts, extra_doc, lines = check(scene, tuple(extra))
     bad = any(not v.ok for v in verdicts)
     if args.json:

@@ -14,13 +14,24 @@ import math
 from graphmech.errors import OutOfDomain
 from graphmech.tolerances import SCALE_RANGE_SI
 
-#: Paper sizes in mm (width, height), landscape unless named "-portrait".
+#: Paper sizes in mm (width, height), landscape unless named "-portrait" (ISO 216: a course
+#: project's sheet is A1 or A2, a figure A4 or A3).
 PAPER = {
     "A4": (297.0, 210.0),
     "A4-portrait": (210.0, 297.0),
     "A3": (420.0, 297.0),
     "A3-portrait": (297.0, 420.0),
+    "A2": (594.0, 420.0),
+    "A2-portrait": (420.0, 594.0),
+    "A1": (841.0, 594.0),
+    "A1-portrait": (594.0, 841.0),
 }
+
+#: ``[page] size = "fit"`` (and ``--page fit``): the page is cropped to the drawing with the
+#: page margin. Its scales μ are chosen — and a kind's "does the sheet fit its page" is
+#: judged — for this working area, so a fit figure is drawn as it would be on that paper.
+FIT = "fit"
+FIT_WORKING_AREA = PAPER["A3"]
 
 #: The mantissas textbooks use for scales: 1, 2, 2.5, 5 × 10^k.
 ROUND_MANTISSAS = (1.0, 2.0, 2.5, 5.0, 10.0)

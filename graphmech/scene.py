@@ -32,7 +32,22 @@ from graphmech.problems.reader import Reader, Scene, read_units
 MAX_BYTES = 1 << 20
 
 
-def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene[Any]:
+def with_page(data: dict[str, Any], page: str | None) -> dict[str, Any]:
+    """The TOML data with ``[page] size = page`` (the command line's ``--page``) in place of the
+    file's own: it is read like the file's, so that every kind's reader chooses its scales and
+    judges "does the sheet fit" for that page (None: the file's page). A ``page`` that is no
+    table is left for the reader to refuse.
+
+    >>> with_page({"title": "t", "page": {"size": "A4", "notation": "zh"}}, "fit")
+    {'title': 't', 'page': {'size': 'fit', 'notation': 'zh'}}
+    """
+    table = data.get("page", {})
+    if page is None or not isinstance(table, dict):
+        return data
+    return {**data, "page": {**table, "size": page}}
+
+
+def parse_scene(data: dict[str, Any], source: str = "scene", page: str | None = None) -> Scene[Any]:
     """Validate parsed TOML data and build the :class:`Scene`, in SI units.
 
     Parameters
@@ -41,6 +56,9 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene[Any]:
         The TOML document as ``tomllib`` returns it.
     source : str
         The name used in messages.
+    page : str, optional
+        A paper size (a name in :data:`graphmech.scales.PAPER`, or ``"fit"``) that replaces the
+        scene's ``[page] size`` (:func:`with_page`).
 
     Returns
     -------
@@ -94,6 +112,7 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene[Any]:
     problems: list[tuple[str, str]] = []
     if not isinstance(data, dict):
         raise SceneError([("", "a scene must be a TOML table")], source)
+    data = with_page(data, page)
     order = {k: n for n, k in enumerate(data)}
     top = Reader(data, "", problems, {})
     top.units = read_units(top)
@@ -108,13 +127,15 @@ def parse_scene(data: dict[str, Any], source: str = "scene") -> Scene[Any]:
     return kind.read(data, source, top, order)
 
 
-def load_scene(path: str | os.PathLike[str]) -> Scene[Any]:
+def load_scene(path: str | os.PathLike[str], page: str | None = None) -> Scene[Any]:
     """Read a scene file and validate it.
 
     Parameters
     ----------
     path : str or path-like
         A UTF-8 TOML file of at most :data:`MAX_BYTES` bytes.
+    page : str, optional
+        A paper size that replaces the scene's ``[page] size`` (see :func:`parse_scene`).
 
     Returns
     -------
@@ -167,15 +188,16 @@ def load_scene(path: str | os.PathLike[str]) -> Scene[Any]:
         ) from None
     except RecursionError:
         raise SceneError([("", "invalid TOML: nested too deeply")], source) from None
-    return parse_scene(data, source)
+    return parse_scene(data, source, page)
 
 
-def render_scene(path: str | os.PathLike[str]) -> tuple[str, list[str]]:
-    """The SVG text of a scene file and the warnings found while making it."""
+def render_scene(path: str | os.PathLike[str], page: str | None = None) -> tuple[str, list[str]]:
+    """The SVG text of a scene file and the warnings found while making it; ``page`` replaces
+    the scene's ``[page] size`` (see :func:`parse_scene`)."""
     import graphmech
     from graphmech.render.svg import render_svg  # svgwrite only when a drawing is made
 
-    scene = load_scene(path)
+    scene = load_scene(path, page)
     drawing, warnings = sheet(scene, (f"graphmech {graphmech.__version__}",))
     warnings = list(warnings)
     return render_svg(drawing, id_prefix(path), on_warning=warnings.append), warnings
@@ -186,4 +208,4 @@ def id_prefix(path: str | os.PathLike[str]) -> str:
     return "g" + hashlib.sha256(Path(path).read_bytes()).hexdigest()[:8]
 
 
-__all__ = ["MAX_BYTES", "Scene", "id_prefix", "load_scene", "parse_scene", "render_scene"]
+__all__ = ["MAX_BYTES", "Scene", "id_prefix", "load_scene", "parse_scene", "render_scene", "with_page"]

@@ -307,3 +307,47 @@ def test_check_json_is_the_same_whatever_the_hash_seed():
             for seed in ("1", "2", "3")]
     assert outs[0] and outs[0] == outs[1] == outs[2]
     assert list(json.loads(outs[0])["scales"])[:3] == ["l", "s", "phi"]
+
+
+def test_page_on_the_command_line_is_read_with_the_scene(tmp_path):
+    """--page replaces [page] size before the scene is read: a reader that refuses a sheet too
+    small for its positions sees the paper given on the command line."""
+    p = tmp_path / "three.toml"
+    p.write_text(fourbar_scene(scales=STATED, title="Four-bar").replace("angle = 165", "angle = [30, 90, 165]"),
+                 encoding="utf-8")
+    assert_refused(run_cli("render", str(p), "-o", str(tmp_path / "a4.svg")), "three.toml", "3 positions do not fit")
+    assert run_cli("render", str(p), "--page", "A3", "-o", str(tmp_path / "a3.svg"))[0] == 0
+    root = ET.fromstring((tmp_path / "a3.svg").read_text(encoding="utf-8"))
+    assert (root.get("width"), root.get("height")) == ("420mm", "297mm")
+    assert run_cli("render", str(p), "--page", "a2", "-o", str(tmp_path / "a2.svg"))[0] == 0  # any case
+    assert ET.fromstring((tmp_path / "a2.svg").read_text(encoding="utf-8")).get("width") == "594mm"
+
+
+def test_a_fit_page_is_cropped_to_the_drawing(tmp_path):
+    out = tmp_path / "fit.svg"
+    assert run_cli("render", str(SCENES / "thread.m20_lead_angles-fine.toml"), "--page", "fit", "-o", str(out))[0] == 0
+    root = ET.fromstring(out.read_text(encoding="utf-8"))
+    w, h = (float(root.get(k).removesuffix("mm")) for k in ("width", "height"))
+    assert w < 150.0 and h < 110.0  # the scene's A4 was mostly empty
+    again = tmp_path / "again.svg"
+    assert run_cli("render", str(SCENES / "thread.m20_lead_angles-fine.toml"), "--page", "fit", "-o", str(again))[0] == 0
+    assert out.read_bytes() == again.read_bytes()
+
+
+def test_page_on_the_command_line_reaches_check(tmp_path):
+    p = scene(tmp_path, scales="")  # graphmech chooses μ for the page
+    small, large = check_json(p, "--page", "A4"), check_json(p, "--page", "A1")
+    assert small["scales"]["l"] > large["scales"]["l"]  # more paper, a larger drawing
+    assert check_json(p) == small  # the scene's own page is A4
+
+
+@pytest.mark.parametrize("command", ["render", "check"])
+def test_an_unknown_page_is_one_line(tmp_path, capsys, command):
+    from graphmech.cli import main
+
+    with pytest.raises(SystemExit) as stop:  # argparse's own exit, as for any bad option
+        main([command, str(scene(tmp_path)), "--page", "A5"])
+    out, err = capsys.readouterr()
+    assert stop.value.code == 2 and out == "" and err.count("\n") == 1
+    assert "--page" in err and "unknown paper 'A5'" in err
+    assert "A4, A4-portrait, A3, A3-portrait, A2, A2-portrait, A1, A1-portrait, fit" in err

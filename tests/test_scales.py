@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from graphmech.scales import (DRAWN_SIZE_RANGE_MM, PAPER, PHI_AXIS_RANGE_MM, SCALE_INFO, drawn_size_problem,
+from graphmech.scales import (DRAWN_SIZE_RANGE_MM, FIT, FIT_WORKING_AREA, PAPER, PHI_AXIS_RANGE_MM, SCALE_INFO, drawn_size_problem,
                               format_scale, phi_axis_problem, round_scale, scale_out_of_range)
 from graphmech.errors import OutOfDomain
 from graphmech.scales import is_round_scale, round_scale_below
@@ -57,6 +57,14 @@ def test_the_note_on_a_drawing_names_the_scale_and_its_unit():
 def test_paper_sizes_are_landscape_unless_portrait():
     assert PAPER["A4"] == (297.0, 210.0) and PAPER["A3"] == (420.0, 297.0)
     assert PAPER["A4-portrait"] == PAPER["A4"][::-1] and PAPER["A3-portrait"] == PAPER["A3"][::-1]
+    assert PAPER["A2"] == (594.0, 420.0) and PAPER["A1"] == (841.0, 594.0)
+    assert list(PAPER) == ["A4", "A4-portrait", "A3", "A3-portrait", "A2", "A2-portrait", "A1", "A1-portrait"]
+    for name, (w, h) in PAPER.items():
+        assert (w > h) != name.endswith("-portrait")
+        if not name.endswith("-portrait"):
+            assert PAPER[name + "-portrait"] == (h, w)
+            assert w * h / (297.0 * 210.0) == pytest.approx(2 ** (4 - int(name[1])), rel=0.01)  # each twice the next
+    assert FIT == "fit" and FIT_WORKING_AREA in PAPER.values()
 
 
 def test_a_stated_scale_out_of_every_page():

@@ -232,3 +232,34 @@ def test_any_bytes_give_a_scene_error(tmp_path_factory: pytest.TempPathFactory, 
     path.write_bytes(raw)
     with pytest.raises(SceneError):
         load_scene(path)
+
+
+def test_a_page_given_to_the_loader_replaces_the_scenes_size(tmp_path: Path) -> None:
+    from graphmech.scales import FIT_WORKING_AREA, PAPER
+
+    path = SCENES / "linkage.fourbar_28_52_50_72-cycle.toml"  # [page] size = "A3"
+    assert load_scene(path).page.size == PAPER["A3"]
+    assert load_scene(path, "A2").page.size == PAPER["A2"]
+    fit = load_scene(path, "fit").page
+    assert fit.fit and fit.size == FIT_WORKING_AREA
+    # the rest of [page] stays the scene's
+    p = tmp_path / "zh.toml"
+    p.write_text(path.read_text(encoding="utf-8").replace('size = "A3"', 'size = "A3"\nnotation = "zh"'),
+                 encoding="utf-8")
+    assert load_scene(p, "A1").page.notation == "zh"
+    # a [page] that is no table is still refused, --page or not
+    bad = tmp_path / "bad.toml"
+    bad.write_text("page = 3\n" + path.read_text(encoding="utf-8").replace('[page]\nsize = "A3"', ""), encoding="utf-8")
+    with pytest.raises(SceneError, match="page: must be a table"):
+        load_scene(bad, "A2")
+
+
+def test_the_same_scene_with_a_title_block_gives_the_same_bytes(tmp_path: Path) -> None:
+    text = (SCENES / "linkage.fourbar_28_52_50_72.toml").read_text(encoding="utf-8")
+    text += ('\n[page.title_block]\nname = "Li Lei"\ngroup = "ME 2101"\ndate = "2024-06-01"\nsheet = "1"\n'
+             if "[page]" in text else
+             '\n[page]\nsize = "fit"\n[page.title_block]\nname = "Li Lei"\ndate = "2024-06-01"\nsheet = "1"\n')
+    p = tmp_path / "block.toml"
+    p.write_text(text, encoding="utf-8")
+    first, _ = render_scene(p)
+    assert render_scene(p)[0] == first and "-title-block" in first and "Li Lei" in first

@@ -219,10 +219,29 @@ class Panel:
 
 
 @dataclass(frozen=True)
+class TitleBlock:
+    """The title block of a course-project sheet (``[page.title_block]``): the scene's strings,
+    drawn as they are, lettered in ``notation``; an empty title is the sheet's."""
+
+    title: str = ""
+    name: str = ""
+    group: str = ""
+    date: str = ""
+    sheet: str = ""
+    notation: str = "en"
+
+
+@dataclass(frozen=True)
 class Sheet:
-    """A whole drawing: a title and panels laid out side by side on a page (size in mm)."""
+    """A whole drawing: a title and panels laid out side by side on a page (size in mm).
+
+    ``fit``: the page is cropped to the laid-out content with a margin (``page`` is then only
+    the working area the scales were chosen for); ``title_block``: drawn at the lower right.
+    """
 
     title: str
     panels: tuple[Panel, ...]
     page: tuple[float, float] = (297.0, 210.0)
     footer: tuple[str, ...] = field(default=())
+    fit: bool = False
+    title_block: TitleBlock | None = None

@@ -56,8 +56,10 @@ def check(scene: Scene[Any], extra: Extra = ()) -> tuple[Analysis, list[Verdict]
 
 
 def sheet(scene: Scene[Any], footer: Footer = ()) -> tuple[Sheet, list[str]]:
-    """The drawing of a scene and the warnings found while making it."""
-    return kind_of(scene).sheet(scene, footer)
+    """The drawing of a scene and the warnings found while making it; the page as ``[page]``
+    says (cropped to the content for ``size = "fit"``, a title block) — one place for every kind."""
+    drawing, warnings = kind_of(scene).sheet(scene, footer)
+    return dataclasses.replace(drawing, fit=scene.page.fit, title_block=scene.page.title_block), warnings
 
 
 __all__ = ["KINDS", "Kind", "check", "kind_of", "sheet", "tables", "with_precision"]

@@ -16,7 +16,8 @@ from dataclasses import dataclass, field
 from typing import Any, Generic, Iterable, Mapping, NoReturn, TypeGuard, TypeVar, cast, overload
 
 from graphmech.errors import SceneError
-from graphmech.scales import PAPER, scale_out_of_range
+from graphmech.drawing.primitives import TitleBlock
+from graphmech.scales import FIT, FIT_WORKING_AREA, PAPER, scale_out_of_range
 from graphmech.mechanisms.linkage import Linkage, Positions
 from graphmech.tolerances import DRAWING_PRECISION_MM, MAX_PRECISION_MM, POLE_RANGE_MM
 
@@ -31,6 +32,12 @@ MAX_TITLE = 200
 PAPER_SIZES = PAPER
 
 
+#: The strings of a ``[page.title_block]``, in the order the block is read.
+TITLE_BLOCK_KEYS = ("title", "name", "group", "date", "sheet")
+#: The longest value of a title block's cell other than its title, in characters.
+MAX_TITLE_BLOCK_CELL = 60
+
+
 @dataclass(frozen=True)
 class Page:
     """The drawing sheet.
@@ -38,15 +45,23 @@ class Page:
     Parameters
     ----------
     size : (float, float)
-        Width and height, mm; A4 landscape by default (see :data:`PAPER_SIZES`).
+        Width and height, mm; A4 landscape by default (see :data:`PAPER_SIZES`). For a fit
+        page, the working area its scales are chosen for and the kinds judge "does the sheet
+        fit" on (:data:`graphmech.scales.FIT_WORKING_AREA`): :func:`page_size` is always this.
     notation : str
         Whose symbols and captions the drawing uses: ``"en"`` (default), ``"zh"`` (孙桓's
         symbols, Chinese captions) or ``"ru"`` (the Russian course-project page's). Drawn text
         only: the names in ``find`` and ``check`` never change.
+    fit : bool
+        ``size = "fit"``: the drawn page is cropped to the content with the page margin.
+    title_block : TitleBlock or None
+        ``[page.title_block]``: a course-project sheet's title block, drawn at the lower right.
     """
 
     size: tuple[float, float] = (297.0, 210.0)
     notation: str = "en"
+    fit: bool = False
+    title_block: TitleBlock | None = None
 
 
 #: The choices of a string key, such as Literal["left", "right"]: what Reader.string returns.
@@ -890,28 +905,57 @@ def read_check(top: Reader) -> float:
 
 
 def read_page(top: Reader) -> Page:
-    """[page]: size = "A4" (or another name in PAPER_SIZES) or [w, h] in mm."""
+    """[page]: size = "A4" (or another name in PAPER_SIZES), "fit" or [w, h] in mm; notation;
+    [page.title_block]."""
     r = top.table_at("page")
     if r is None:
         return Page()
     value = r.raw("size")
-    size = Page().size
-    if isinstance(value, str):
+    size, fit = Page().size, False
+    if value == FIT:
+        size, fit = FIT_WORKING_AREA, True
+    elif isinstance(value, str):
         if value in PAPER_SIZES:
             size = PAPER_SIZES[value]
         else:
             r.problem(
                 r.at("size"),
-                f"unknown paper {say(value)}: use {one_of(PAPER_SIZES)} or [width, height] in mm"
-                + maybe(value, PAPER_SIZES),
+                f"unknown paper {say(value)}: use {', '.join(PAPER_SIZES)}, {FIT} (the drawing "
+                "cropped) or [width, height] in mm" + maybe(value, [*PAPER_SIZES, FIT]),
             )
     elif value is not MISSING:
         wh = r.numbers(value, r.at("size"), 2, positive=True, shape="[width, height]")
         if wh is not None:
             size = (wh[0], wh[1])
     notation = r.string("notation", choices=NOTATIONS, default="en") or "en"
+    block = read_title_block(r, notation)
     r.finish()
-    return Page(size, notation)
+    return Page(size, notation, fit, block)
+
+
+def read_title_block(page: Reader, notation: str) -> TitleBlock | None:
+    """[page.title_block]: title, name, group, date, sheet — one-line strings, each optional."""
+    r = page.table_at("title_block")
+    if r is None:
+        return None
+    cells: dict[str, str] = {}
+    for key in TITLE_BLOCK_KEYS:
+        value = r.raw(key)
+        if value is MISSING:
+            continue
+        if not isinstance(value, str):
+            quoted = f' in quotes: {key} = "{value}"' if hasattr(value, "isoformat") else ""
+            r.problem(r.at(key), f"must be a string{quoted or ', not ' + type_name(value)}")
+            continue
+        most = MAX_TITLE if key == "title" else MAX_TITLE_BLOCK_CELL
+        if len(value) > most:
+            r.problem(r.at(key), f"too long ({len(value)} characters; at most {most} fit a cell)")
+        elif any(ch in value for ch in "\r\n"):
+            r.problem(r.at(key), "must be one line: a cell of the title block holds one line")
+        else:
+            cells[key] = value
+    r.finish()
+    return TitleBlock(**cells, notation=notation)
 
 
 def read_tail(top: Reader, known: Iterable[str] = ()) -> tuple[float, Page]:
@@ -1016,6 +1060,8 @@ def pole_distances(r: Reader, count: int = 1) -> tuple[float, ...] | None:
 
 
 def page_size(scene: Scene[object]) -> tuple[float, float]:
-    """The scene's sheet, (width, height) in mm."""
-    size = getattr(scene.page, "size", (297.0, 210.0))
-    return PAPER[size] if isinstance(size, str) else (float(size[0]), float(size[1]))
+    """The scene's sheet, (width, height) in mm: what its scales are chosen for and a kind
+    judges "does the sheet fit" on — for a fit page, the working area (the drawn page is
+    then cropped to the content)."""
+    size = scene.page.size
+    return (float(size[0]), float(size[1]))

@@ -1,11 +1,23 @@
 """Where each panel goes on the page — by translation only, never by scaling.
 
 A panel is drawn at its own scale μ: its items are drawing millimetres and stay so on paper.
-Layout therefore only *moves* panels: left to right in the given order, ``Style.panel_gap``
-apart, each row centred on the page, panels of a row standing on a common line so their
-captions (title, then notes such as "μv = 0.005 (m/s)/mm") line up under them. A row that
-would be wider than the page between its margins wraps; what still does not fit keeps its μ
-and is reported in :attr:`SheetLayout.warnings` (the caller reports them).
+Layout therefore only *moves* panels. Each panel's *frame* is its drawing with its caption
+under it (title, then notes such as "μv = 0.005 (m/s)/mm", then a graphic scale bar per scale
+of ``Panel.scales``: :mod:`graphmech.render.scalebar`). Panels fill rows left to right in the
+given order, ``Style.panel_gap`` apart at least (``Panel.row`` puts panels in one row, e.g. one
+row per mechanism position); a row that would be wider than the page between its margins wraps.
+The page's free room is then spread out, not left as a margin around a clump: the free height
+evenly before, between and after the rows, each row's free width before, between and after its
+panels; rows with as many panels each share columns. Panels of a row stand on a common line,
+so their captions line up under them. What still does not fit keeps its μ and is reported in
+:attr:`SheetLayout.warnings` (the caller reports them).
+
+A sheet with a title block (:mod:`graphmech.render.titleblock`) has it at the page's lower
+right, inside the margins: the rows stand as without it where they clear it, else the last row
+stands beside it where every row then clears it, else the rows keep above it. A *fit* sheet (``[page] size = "fit"``) is laid out
+first, its page then cropped to the content with a small margin (:data:`FIT_MARGIN`, panels
+:data:`FIT_GAP` apart): of the ways to fill rows, the one whose page is smallest (not a strip),
+its title wrapped to the drawing's width, in whole millimetres.
 
 Coordinates: a panel's drawing box is in its own frame (y up); everything else is page
 millimetres (origin top-left, y down). ``PanelPlacement.to_page`` is the only transform:
@@ -18,8 +30,11 @@ Examples
 >>> lay = layout_sheet(Sheet("t", (p, p)))
 >>> lay.warnings
 ()
->>> [round(pl.frame[0], 3) for pl in lay.panels]  # 42.7 mm boxes (stroke, padding), 12 mm apart
-[99.8, 154.5]
+>>> [round(pl.frame[0], 3) for pl in lay.panels]  # 42.7 mm boxes, the free width in thirds
+[69.867, 184.433]
+>>> fit = layout_sheet(Sheet("t", (p, p), fit=True))
+>>> fit.page, [round(pl.frame[1], 3) for pl in fit.panels]  # cropped; one above the other
+((53.0, 49.0), [16.883, 34.442])
 """
 from __future__ import annotations
 
@@ -47,7 +62,9 @@ from graphmech.drawing.primitives import (
     Slider,
     Text,
 )
+from graphmech.render.scalebar import ScaleBar, scale_bar
 from graphmech.render.style import DEFAULT, Style
+from graphmech.render.titleblock import TitleBlockLayout, scale_text, title_block_layout
 
 
 def _box_of(points: Sequence[XY], grow: float) -> Box:
@@ -186,9 +203,12 @@ class PanelPlacement:
     dx, dy : float
         The transform to page: ``(x, y) ↦ (x + dx, dy − y)`` — a translation and a flip.
     frame : Box
-        The page box (y down) of drawing and caption together.
+        The page box (y down) of drawing, caption and scale bars together.
     caption : tuple of CaptionLine
         Title and notes, centred under the drawing.
+    scale_bars : tuple of (ScaleBar, (x, y))
+        A graphic scale bar per scale of the panel, under the caption, each with its block's
+        top-left corner on the page.
     """
 
     name: str
@@ -197,6 +217,7 @@ class PanelPlacement:
     dy: float
     frame: Box
     caption: tuple[CaptionLine, ...]
+    scale_bars: tuple[tuple[ScaleBar, XY], ...] = ()
 
     def to_page(self, p: XY) -> XY:
         """A point of the panel (mm, y up) on the page (mm, y down)."""
@@ -212,12 +233,27 @@ class PanelPlacement:
 
 @dataclass(frozen=True)
 class SheetLayout:
-    """Placement of all panels plus the sheet title's and footer lines' baselines."""
+    """Placement of all panels, the sheet title's and footer lines' baselines, the page drawn on
+    (the sheet's, or for a fit sheet its crop to the content) and the title block with its
+    top-left corner on the page."""
 
     panels: tuple[PanelPlacement, ...]
     title_at: XY
     footer_at: tuple[XY, ...]
     warnings: tuple[str, ...]
+    page: tuple[float, float]
+    title_block: tuple[TitleBlockLayout, XY] | None = None
+    #: The sheet title as drawn, a line each, the first at ``title_at`` (a fit page wraps a
+    #: title wider than its drawing).
+    title_lines: tuple[str, ...] = ()
+
+    @property
+    def title_block_box(self) -> Box | None:
+        """The title block's box on the page, or None."""
+        if self.title_block is None:
+            return None
+        block, (x, y) = self.title_block
+        return (x, y, x + block.width, y + block.height)
 
 
 def _caption_lines(panel: Panel, style: Style) -> list[tuple[str, float]]:
@@ -227,6 +263,157 @@ def _caption_lines(panel: Panel, style: Style) -> list[tuple[str, float]]:
 
 #: Free distance between a drawing and the first line of its caption, mm.
 CAPTION_GAP = 2.0
+#: Free distance above each scale bar (from the caption or the bar before it), mm.
+BAR_GAP = 1.0
+#: A fit page's margin and least gap between panels, mm: a figure for a report is cropped to
+#: its content with a small margin.
+FIT_MARGIN = 5.0
+FIT_GAP = 8.0
+#: A fit page's title is wrapped to the drawing's width, but not narrower than this, mm.
+FIT_TITLE_WIDTH = 80.0
+#: The longest side of a fit page over its shortest beyond which the rows are rearranged
+#: (a strip of panels in one row, or a column, reads badly).
+FIT_MAX_SHAPE = 2.0
+
+
+@dataclass(frozen=True)
+class _Size:
+    """A panel's drawing box (own frame), caption lines, scale bars and frame size (mm)."""
+
+    draw: Box
+    lines: tuple[tuple[str, float], ...]
+    bars: tuple[ScaleBar, ...]
+    w: float
+    h: float
+
+
+def _panel_size(panel: Panel, style: Style, label_boxes: Sequence[Box] | None) -> _Size:
+    draw = panel_bbox(panel, style, label_boxes)
+    lines = tuple(_caption_lines(panel, style))
+    bars = tuple(scale_bar(sym, mu, style.note_size) for sym, mu in panel.scales)
+    cap_h = sum(s * style.line_gap for _, s in lines) + sum(BAR_GAP + b.height for b in bars)
+    cap_h += CAPTION_GAP if lines or bars else 0.0
+    cap_w = max([text_box_size(t, s)[0] for t, s in lines] + [b.width for b in bars], default=0.0)
+    return _Size(draw, lines, bars, max(draw[2] - draw[0], cap_w), draw[3] - draw[1] + cap_h)
+
+
+def _rows(panels: Sequence[Panel], sizes: Sequence[_Size], limit: float, gap: float) -> list[list[int]]:
+    """Rows as the panels ask (``Panel.row``: e.g. one row per mechanism position), the others
+    filled greedily, left to right, up to ``limit`` mm wide."""
+    rows: list[list[int]] = []
+    width = 0.0
+    explicit: dict[int, list[int]] = {}
+    for i, panel in enumerate(panels):
+        if panel.row is not None:
+            explicit.setdefault(panel.row, []).append(i)
+    for i, size in enumerate(sizes):
+        row = panels[i].row
+        if row is not None:
+            if i == explicit[row][0]:
+                rows.append(explicit[row])
+            continue
+        if rows and width + gap + size.w <= limit + 1e-9:
+            rows[-1].append(i)
+            width += gap + size.w
+        else:
+            rows.append([i])
+            width = size.w
+    return rows
+
+
+def _row_sizes(rows: Sequence[Sequence[int]], sizes: Sequence[_Size], gap: float) -> tuple[list[float], list[float]]:
+    widths = [sum(sizes[i].w for i in r) + gap * (len(r) - 1) for r in rows]
+    return widths, [max(sizes[i].h for i in r) for r in rows]
+
+
+def _arrange(rows: Sequence[Sequence[int]], sizes: Sequence[_Size], room: Box, gap: float,
+             last_right: float | None = None) -> dict[int, XY]:
+    """Each panel's frame's top-left corner: the free height spread evenly before, between and
+    after the rows, each row's free width before, between and after its panels; panels of a
+    row stand on one line. Rows with as many panels each share columns (the widest of each).
+    ``last_right`` narrows the last row's room (beside a title block)."""
+    left, top, right, bottom = room
+    _, row_h = _row_sizes(rows, sizes, gap)
+    total_h = sum(row_h) + gap * (len(rows) - 1) if rows else 0.0
+    free_h = bottom - top - total_h
+    slot_h = free_h / (len(rows) + 1) if free_h > 0.0 else 0.0
+    rights = [right] * len(rows)
+    if rows and last_right is not None:
+        rights[-1] = last_right
+    columns: list[float] | None = None
+    k = len(rows[0]) if rows else 0
+    if len(rows) > 1 and k > 1 and all(len(r) == k for r in rows):
+        columns = [max(sizes[r[j]].w for r in rows) for j in range(k)]
+        if any(sum(columns) + gap * (k - 1) > r - left + 1e-9 for r in rights):
+            columns = None
+    at: dict[int, XY] = {}
+    y = top + slot_h
+    for r, rh, r_right in zip(rows, row_h, rights):
+        cells = columns or [sizes[i].w for i in r]
+        free = r_right - left - sum(cells) - gap * (len(r) - 1)
+        slot = free / (len(r) + 1) if free > 0.0 else 0.0
+        x = left + (slot if free > 0.0 else free / 2.0)  # a row too wide runs off both sides alike
+        for i, cell in zip(r, cells):
+            at[i] = (x + (cell - sizes[i].w) / 2.0, y + rh - sizes[i].h)
+            x += cell + gap + slot
+        y += rh + gap + slot_h
+    return at
+
+
+def _overlaps(a: Box, b: Box) -> bool:
+    return min(a[2], b[2]) > max(a[0], b[0]) and min(a[3], b[3]) > max(a[1], b[1])
+
+
+def wrap(text: str, width: float, size: float) -> tuple[str, ...]:
+    """``text`` broken at spaces into lines at most ``width`` mm wide at font ``size`` (a word
+    wider than that stands alone on its line).
+
+    >>> wrap("Crank-rocker through a whole turn", 40.0, 5.0)
+    ('Crank-rocker', 'through a', 'whole turn')
+    """
+    lines: list[str] = []
+    for word in text.split(" "):
+        if lines and text_box_size(lines[-1] + " " + word, size)[0] <= width + 1e-9:
+            lines[-1] += " " + word
+        else:
+            lines.append(word)
+    return tuple(lines)
+
+
+def _head(lines: Sequence[str], style: Style) -> float:
+    """The height the sheet title's lines take above the panels, mm."""
+    return style.title_size * (1.0 + len(lines) * style.line_gap) if lines else 0.0
+
+
+def _fit(sheet: Sheet, sizes: Sequence[_Size], block: TitleBlockLayout | None, style: Style,
+         foot: float) -> tuple[list[list[int]], tuple[float, float], tuple[str, ...]]:
+    """The rows, the page and the title's lines of a fit sheet: of the ways to fill rows (every
+    width limit a run of panels gives), the one whose cropped page is smallest — the most filled
+    — unless it is longer than FIT_MAX_SHAPE times its width or height (the first of equals);
+    the title wrapped to the drawing's width; the page holds title, rows, footer and title block
+    with FIT_MARGIN, rounded up to whole millimetres."""
+    m, gap = FIT_MARGIN, FIT_GAP
+    n = len(sizes)
+    limits = sorted({sum(s.w for s in sizes[i:j + 1]) + gap * (j - i) for i in range(n) for j in range(i, n)})
+    fixed = max([text_box_size(f, style.note_size)[0] + (gap + block.width if block else 0.0)
+                 for f in sheet.footer] + [block.width if block else 0.0, 1.0])
+    band = max(foot, block.height + gap if block else 0.0)
+    best: tuple[float, list[list[int]], tuple[float, float], tuple[str, ...]] | None = None
+    for limit in limits or [0.0]:
+        rows = _rows(sheet.panels, sizes, limit, gap)
+        row_w, row_h = _row_sizes(rows, sizes, gap)
+        inner = max([fixed] + row_w)
+        title = wrap(sheet.title, max(inner, FIT_TITLE_WIDTH), style.title_size) if sheet.title else ()
+        inner = max([inner] + [text_box_size(t, style.title_size)[0] for t in title])
+        w = inner + 2.0 * m
+        h = _head(title, style) + sum(row_h) + gap * max(len(rows) - 1, 0) + band + 2.0 * m
+        stretch = max(w / h, h / w) / FIT_MAX_SHAPE
+        score = w * h * max(stretch, 1.0) ** 2
+        if best is None or score < best[0] - 1e-9:
+            best = (score, rows, (w, h), title)
+    assert best is not None
+    _, rows, (w, h), title = best
+    return rows, (float(math.ceil(w - 1e-9)), float(math.ceil(h - 1e-9))), title  # whole millimetres
 
 
 def layout_sheet(
@@ -239,7 +426,8 @@ def layout_sheet(
     Parameters
     ----------
     sheet : Sheet
-        Title, panels in order, page size (mm) and footer.
+        Title, panels in order, page size (mm), footer; whether the page is cropped to the
+        content (``fit``) and its title block.
     style : Style
         Gaps, margins, font sizes.
     label_boxes : sequence of sequences of Box, optional
@@ -250,94 +438,97 @@ def layout_sheet(
     SheetLayout
         Deterministic; ``warnings`` says what does not fit the page (μ is never changed).
     """
-    page_w, page_h = sheet.page
-    m = style.page_margin
     if label_boxes is not None and len(label_boxes) != len(sheet.panels):
         raise ValueError("label_boxes must give one sequence of boxes per panel")
-
-    title_at = (page_w / 2.0, m + style.title_size)
-    top = m + (style.title_size * (1.0 + style.line_gap) if sheet.title else 0.0)
+    sizes = [_panel_size(p, style, None if label_boxes is None else label_boxes[i])
+             for i, p in enumerate(sheet.panels)]
+    block = None if sheet.title_block is None else \
+        title_block_layout(sheet.title_block, sheet.title, scale_text(sheet.panels), style)
+    m, gap = (FIT_MARGIN, FIT_GAP) if sheet.fit else (style.page_margin, style.panel_gap)
     step = style.note_size * style.line_gap
     n_foot = len(sheet.footer)
+    foot = step * n_foot + style.note_size if n_foot else 0.0
+    if sheet.fit:
+        rows, page, title = _fit(sheet, sizes, block, style, foot)
+    else:
+        page = sheet.page
+        rows = _rows(sheet.panels, sizes, page[0] - 2.0 * m, gap)
+        title = (sheet.title,) if sheet.title else ()
+    head = _head(title, style)
+    page_w, page_h = page
+    title_at = (page_w / 2.0, m + style.title_size)
     footer_at = tuple((m, page_h - m - step * (n_foot - 1 - k)) for k in range(n_foot))
-    bottom = page_h - m - (step * n_foot + style.note_size if n_foot else 0.0)
-    avail_w = page_w - 2.0 * m
-    avail_h = bottom - top
+    room = (m, m + head, page_w - m, page_h - m - foot)
     warnings: list[str] = []
 
-    # sizes of each panel: drawing box, caption height and width, frame size
-    sizes = []
-    for i, panel in enumerate(sheet.panels):
-        draw = panel_bbox(panel, style, None if label_boxes is None else label_boxes[i])
-        lines = _caption_lines(panel, style)
-        cap_h = (CAPTION_GAP + sum(s * style.line_gap for _, s in lines)) if lines else 0.0
-        cap_w = max((text_box_size(t, s)[0] for t, s in lines), default=0.0)
-        dw, dh = draw[2] - draw[0], draw[3] - draw[1]
-        fw, fh = max(dw, cap_w), dh + cap_h
-        sizes.append((draw, lines, fw, fh))
-        if fw > avail_w + 1e-9:
+    block_at: XY | None = None
+    at: dict[int, XY] | None = None
+    if block is not None:
+        block_at = (page_w - m - block.width, page_h - m - block.height)
+        block_box = (block_at[0] - gap, block_at[1] - gap, page_w, page_h)
+        if block.width > page_w - 2.0 * m + 1e-9:
+            warnings.append(f"the title block is {block.width:.1f} mm wide but the page leaves "
+                            f"{page_w - 2.0 * m:.1f} mm between its margins")
+        if not sheet.fit:  # the rows as without it, or the last row beside it, if every row clears it
+            last_right = block_at[0] - gap
+            narrow = not rows or _row_sizes(rows[-1:], sizes, gap)[0][0] <= last_right - m + 1e-9
+            for right in [None] + ([last_right] if narrow else []):
+                tried = _arrange(rows, sizes, room, gap, right)
+                if not any(_overlaps(_frame(tried[i], sizes[i]), block_box) for i in tried):
+                    at = tried
+                    break
+        if at is None:  # else a band of the page's width above it
+            room = (room[0], room[1], room[2], min(room[3], block_at[1] - gap))
+    if at is None:
+        at = _arrange(rows, sizes, room, gap)
+
+    avail_w, avail_h = room[2] - room[0], room[3] - room[1]
+    for i, (panel, size) in enumerate(zip(sheet.panels, sizes)):
+        if size.w > avail_w + 1e-9:
             warnings.append(
-                f"panel {panel.name!r} is {fw:.1f} mm wide but the page leaves {avail_w:.1f} mm "
+                f"panel {panel.name!r} is {size.w:.1f} mm wide but the page leaves {avail_w:.1f} mm "
                 "between its margins; its scale μ is kept, so it runs off the page"
             )
-
-    # rows as the panels ask (e.g. one row per mechanism position), else greedy, left to right
-    rows: list[list[int]] = []
-    width = 0.0
-    explicit: dict[int, list[int]] = {}
-    for i, panel in enumerate(sheet.panels):
-        if panel.row is not None:
-            explicit.setdefault(panel.row, []).append(i)
-    for i, (_, _, fw, _) in enumerate(sizes):
-        row = sheet.panels[i].row
-        if row is not None:
-            if i == explicit[row][0]:
-                rows.append(explicit[row])
-            continue
-        if rows and width + style.panel_gap + fw <= avail_w + 1e-9:
-            rows[-1].append(i)
-            width += style.panel_gap + fw
-        else:
-            rows.append([i])
-            width = fw
-    row_w = [sum(sizes[i][2] for i in r) + style.panel_gap * (len(r) - 1) for r in rows]
+    row_w, row_h = _row_sizes(rows, sizes, gap)
     for r, w in zip(rows, row_w):
         if len(r) > 1 and w > avail_w + 1e-9:
             warnings.append(f"a row of {len(r)} panels is {w:.1f} mm wide but the page leaves "
                             f"{avail_w:.1f} mm; their scales μ are kept, so it runs off the page")
-    row_h = [max(sizes[i][3] for i in r) for r in rows]
-    total_h = sum(row_h) + style.panel_gap * (len(rows) - 1) if rows else 0.0
+    total_h = sum(row_h) + gap * (len(rows) - 1) if rows else 0.0
     if total_h > avail_h + 1e-9:
         warnings.append(
             f"the panels need {total_h:.1f} mm of height in {len(rows)} row(s) but the page "
             f"leaves {avail_h:.1f} mm; their scales μ are kept, so they run off the page"
         )
-        y = top
-    else:
-        y = top + (avail_h - total_h) / 2.0
 
-    placements: list[PanelPlacement | None] = [None] * len(sizes)
-    for r, rw, rh in zip(rows, row_w, row_h):
-        x = (page_w - rw) / 2.0
-        for i in r:
-            draw, lines, fw, fh = sizes[i]
-            dw, dh = draw[2] - draw[0], draw[3] - draw[1]
-            ftop = y + rh - fh
-            left = x + (fw - dw) / 2.0
-            dx = left - draw[0]
-            dy = ftop + draw[3]
-            cx = x + fw / 2.0
-            base = ftop + dh + CAPTION_GAP
-            caption: list[CaptionLine] = []
-            for text, size in lines:
-                base += size * (style.line_gap - 1.0) if caption else 0.0
-                base += size
-                caption.append(CaptionLine(text, size, (cx, base)))
-            placements[i] = PanelPlacement(
-                sheet.panels[i].name, draw, dx, dy, (x, ftop, x + fw, ftop + fh), tuple(caption)
-            )
-            x += fw + style.panel_gap
-        y += rh + style.panel_gap
-    return SheetLayout(
-        tuple(p for p in placements if p is not None), title_at, footer_at, tuple(warnings)
-    )
+    placements = tuple(_placement(sheet.panels[i], sizes[i], at[i], style) for i in range(len(sizes)))
+    return SheetLayout(placements, title_at, footer_at, tuple(warnings), (page_w, page_h),
+                       None if block is None or block_at is None else (block, block_at), title)
+
+
+def _frame(corner: XY, size: _Size) -> Box:
+    return (corner[0], corner[1], corner[0] + size.w, corner[1] + size.h)
+
+
+def _placement(panel: Panel, size: _Size, corner: XY, style: Style) -> PanelPlacement:
+    """The panel's transform, caption lines and scale bars, its frame's top-left at ``corner``."""
+    x, ftop = corner
+    draw = size.draw
+    dw, dh = draw[2] - draw[0], draw[3] - draw[1]
+    dx = x + (size.w - dw) / 2.0 - draw[0]
+    dy = ftop + draw[3]
+    cx = x + size.w / 2.0
+    cursor = ftop + dh + CAPTION_GAP
+    base = cursor
+    caption: list[CaptionLine] = []
+    for text, s in size.lines:
+        base += s * (style.line_gap - 1.0) if caption else 0.0
+        base += s
+        caption.append(CaptionLine(text, s, (cx, base)))
+        cursor += s * style.line_gap
+    bars: list[tuple[ScaleBar, XY]] = []
+    for bar in size.bars:
+        cursor += BAR_GAP
+        bars.append((bar, (cx - bar.width / 2.0, cursor)))
+        cursor += bar.height
+    return PanelPlacement(panel.name, draw, dx, dy, _frame(corner, size), tuple(caption), tuple(bars))

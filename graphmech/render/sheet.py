@@ -16,8 +16,9 @@ What the frontend decides, so that every backend draws the same figure:
   Items of the same layer keep the panel's order.
 * **Labels** (:mod:`graphmech.render.labels`), placed around their anchors clear of each other
   and of the panel's strokes; drawn last.
-* **Lettering**: sheet title at the top, each panel's title and notes centred under it, footer
-  lines at the bottom left.
+* **Lettering**: sheet title at the top, each panel's title and notes centred under it, then a
+  graphic scale bar per scale of the panel (:mod:`graphmech.render.scalebar`), footer lines at
+  the bottom left, the title block at the bottom right (:mod:`graphmech.render.titleblock`).
 
 Examples
 --------
@@ -39,6 +40,8 @@ from typing import Callable, Sequence, TypeVar, Union
 from graphmech.render.backend import Backend
 from graphmech.render.labels import PlacedLabel, place_labels
 from graphmech.render.layout import PanelPlacement, layout_sheet, slider_corners
+from graphmech.render.scalebar import draw_scale_bar
+from graphmech.render.titleblock import draw_title_block
 from graphmech.drawing.primitives import (
     XY,
     ArcArrow,
@@ -351,10 +354,12 @@ def draw_sheet(
         else:
             on_warning(w)
 
-    backend.begin(sheet.page[0], sheet.page[1], sheet.title)
+    backend.begin(layout.page[0], layout.page[1], sheet.title)
     if sheet.title:
         backend.begin_group("title")
-        backend.text(sheet.title, layout.title_at, style.title_size, "middle", False, "text")
+        x, y = layout.title_at
+        for k, text in enumerate(layout.title_lines):  # one line, unless a fit page wraps it
+            backend.text(text, (x, y + k * style.title_size * style.line_gap), style.title_size, "middle", False, "text")
         backend.end_group()
     for i, (panel, pl, panel_shape, labels) in enumerate(
         zip(sheet.panels, layout.panels, shapes, placed)
@@ -372,6 +377,12 @@ def draw_sheet(
                 backend.text(t.text, (x, y + BASELINE_DROP * t.size), t.size, t.anchor, t.italic, "label")
         for line in pl.caption:
             backend.text(line.text, line.at, line.size, "middle", False, "text")
+        for bar, corner in pl.scale_bars:
+            draw_scale_bar(bar, corner, backend, style)
+        backend.end_group()
+    if layout.title_block is not None:
+        backend.begin_group("title-block")
+        draw_title_block(*layout.title_block, backend, style)
         backend.end_group()
     if sheet.footer:
         backend.begin_group("footer")

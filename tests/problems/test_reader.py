@@ -14,7 +14,9 @@ import tomllib
 
 import pytest
 
+from graphmech.drawing.primitives import TitleBlock
 from graphmech.errors import SceneError
+from graphmech.scales import FIT_WORKING_AREA, PAPER
 from graphmech.problems.reader import (
     Page,
     Reader,
@@ -281,6 +283,10 @@ precision_mm = 0
         ('"A3"', (420.0, 297.0)),
         ('"A4-portrait"', (210.0, 297.0)),
         ('"A3-portrait"', (297.0, 420.0)),
+        ('"A2"', (594.0, 420.0)),
+        ('"A2-portrait"', (420.0, 594.0)),
+        ('"A1"', (841.0, 594.0)),
+        ('"A1-portrait"', (594.0, 841.0)),
         ("[200, 150.5]", (200.0, 150.5)),
     ],
 )
@@ -297,12 +303,42 @@ def test_page_notation_is_read_and_checked() -> None:
 
 def test_bad_page() -> None:
     assert message_of(GOOD + '\n[page]\nsize = "a3"\n') == (
-        "scene.toml: page.size: unknown paper 'a3': use A4, A4-portrait, A3 or A3-portrait "
-        "or [width, height] in mm (did you mean A3?)"
+        "scene.toml: page.size: unknown paper 'a3': use A4, A4-portrait, A3, A3-portrait, A2, "
+        "A2-portrait, A1, A1-portrait, fit (the drawing cropped) or [width, height] in mm (did you mean A3?)"
     )
+    assert message_of(GOOD + '\n[page]\nsize = "fitt"\n').endswith("(did you mean fit?)")
     assert (
         message_of(GOOD + "\n[page]\nsize = [0, 100]\n") == "scene.toml: page.size[0]: must be > 0"
     )
+
+
+def test_a_fit_page_chooses_its_scales_for_the_working_area() -> None:
+    scene = parse_scene(tomllib.loads(GOOD + '\n[page]\nsize = "fit"\nnotation = "ru"\n'))
+    assert scene.page == Page(FIT_WORKING_AREA, "ru", fit=True)
+    assert page_size(scene) == FIT_WORKING_AREA == PAPER["A3"]
+
+
+def test_a_title_block_is_read_as_the_scene_writes_it() -> None:
+    text = GOOD + ('\n[page]\nnotation = "zh"\n[page.title_block]\ntitle = "曲柄摇杆机构"\nname = "张三"\n'
+                   'group = "机械 2101"\ndate = "2024-06-01"\nsheet = "1"\n')
+    page = parse_scene(tomllib.loads(text)).page
+    assert page.title_block == TitleBlock("曲柄摇杆机构", "张三", "机械 2101", "2024-06-01", "1", "zh")
+    bare = parse_scene(tomllib.loads(GOOD + "\n[page.title_block]\n")).page
+    assert bare.title_block == TitleBlock() and not bare.fit and bare.size == (297.0, 210.0)
+    assert parse_scene(tomllib.loads(GOOD)).page.title_block is None
+
+
+@pytest.mark.parametrize(("body", "message"), [
+    ("date = 2024-06-01", 'page.title_block.date: must be a string in quotes: date = "2024-06-01"'),
+    ("sheet = 1", "page.title_block.sheet: must be a string, not a number"),
+    ('nmae = "x"', "page.title_block.nmae: unknown key; did you mean name?"),
+    ('name = "' + "x" * 61 + '"', "page.title_block.name: too long (61 characters; at most 60 fit a cell)"),
+    ('title = "' + "x" * 201 + '"', "page.title_block.title: too long (201 characters; at most 200 fit a cell)"),
+    ('group = "a\\nb"', "page.title_block.group: must be one line: a cell of the title block holds one line"),
+])
+def test_a_bad_title_block_is_one_line_naming_the_key(body: str, message: str) -> None:
+    assert message_of(GOOD + f"\n[page.title_block]\n{body}\n") == f"scene.toml: {message}"
+    assert message_of(GOOD + "\n[page]\ntitle_block = 3\n") == "scene.toml: page.title_block: must be a table, not a number"
 
 
 def test_problems_come_in_file_order() -> None:

@@ -504,7 +504,8 @@ MOMENT_LOAD = 'phi_deg = [0, 180, 180, 360]'
         (C + "\n[scales]\na_m_s2_per_mm = 1\n", "scales.a_m_s2_per_mm", "unknown key; did you mean v_m_s_per_mm?"),
         (C + "\n[check]\nprecision_mm = 0\n", "check.precision_mm", "must be > 0"),
         (C + '\n[page]\nsize = "A5"\n', "page.size",
-         "unknown paper 'A5': use A4, A4-portrait, A3 or A3-portrait or [width, height] in mm"),
+         "unknown paper 'A5': use A4, A4-portrait, A3, A3-portrait, A2, A2-portrait, A1, A1-portrait, "
+         "fit (the drawing cropped) or [width, height] in mm"),
     ],
 )
 def test_each_problem_names_its_key(text: str, path: str, message: str) -> None:
