@@ -124,7 +124,7 @@ class Style:
     title_size: float = 5.0
     panel_title_size: float = 3.5
     note_size: float = 3.5
-    line_gap: float = 1.35
+    line_gap: float = 1.4  # 1.35 let a subscript touch the next line's superscript
 
     label_gaps: tuple[float, ...] = (2.0, 4.5)
     label_clearance: float = 0.6
