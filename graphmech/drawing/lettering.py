@@ -165,6 +165,14 @@ def scale_text(symbol: str, value: float, prime: str = "") -> str:
     >>> scale_text("psi", math.radians(0.5)), scale_text("F", 25.0)
     ('μ_{ψ} = 0.5 °/mm', 'μ_{F} = 25 N/mm')
     """
-    sym, unit = SCALE_INFO[symbol]
     shown = math.degrees(value) if symbol in ANGLE_SCALES else value
-    return f"μ_{{{sym[1:]}}}{prime} = {number(shown)} {unit}"
+    return f"{scale_symbol(symbol)}{prime} = {number(shown)} {SCALE_INFO[symbol][1]}"
+
+
+def scale_symbol(symbol: str) -> str:
+    """μ with the scale's letter as its subscript, as drawings write it.
+
+    >>> scale_symbol("l"), scale_symbol("phi")
+    ('μ_{l}', 'μ_{φ}')
+    """
+    return f"μ_{{{SCALE_INFO[symbol][0][1:]}}}"

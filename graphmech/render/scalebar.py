@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from graphmech.drawing.lettering import number, text_box_size
+from graphmech.drawing.lettering import number, scale_symbol, text_box_size
 from graphmech.render.backend import Backend
 from graphmech.render.style import DEFAULT, Style
 from graphmech.scales import ANGLE_SCALES, SCALE_INFO
@@ -141,7 +141,7 @@ def scale_bar(symbol: str, mu: float, size: float = DEFAULT.note_size) -> ScaleB
     step = value / divisions
     every = tuple((length * i / divisions, number(step * i)) for i in range(divisions + 1))
     ticks = every if _fit(every, size) else _ends(every, divisions, size)
-    return ScaleBar(symbol, SCALE_INFO[symbol][0], unit_of(symbol), value, length, divisions, ticks, size)
+    return ScaleBar(symbol, scale_symbol(symbol), unit_of(symbol), value, length, divisions, ticks, size)
 
 
 def _fit(ticks: tuple[tuple[float, str], ...], size: float) -> bool:

@@ -32,7 +32,7 @@ def overlap(a, b) -> bool:
 
 def test_a_velocity_bar() -> None:
     bar = scale_bar("v", 0.005)
-    assert (bar.name, bar.unit, bar.value, bar.length, bar.divisions) == ("μv", "m/s", 0.2, 40.0, 4)
+    assert (bar.name, bar.unit, bar.value, bar.length, bar.divisions) == ("μ_{v}", "m/s", 0.2, 40.0, 4)
     assert bar.ticks == ((0.0, "0"), (10.0, "0.05"), (20.0, "0.1"), (30.0, "0.15"), (40.0, "0.2"))
 
 

@@ -100,7 +100,7 @@ def test_a_sheet_draws_its_title_block_after_the_panels_and_its_scale_bars_in_th
     assert outline[1][0] == pytest.approx((box[0], box[1])) and outline[1][2] == pytest.approx((box[2], box[3]))
     texts = [c[1] for c in calls if c[0] == "text"]
     assert "比例" in texts and "1:2" in texts and "张三" in texts
-    assert texts.count("μl") == 1 and texts.count("μv") == 1 and "m/s" in texts  # one bar per scale
+    assert texts.count("μ_{l}") == 1 and texts.count("μ_{v}") == 1 and "m/s" in texts  # one bar per scale
 
 
 def test_a_fit_sheet_begins_on_its_cropped_page() -> None:
