@@ -31,8 +31,8 @@ Candidates and scores
 ---------------------
 For each label, in the given order, candidate text boxes are laid around its anchor: 16
 directions (starting at 45°, counter-clockwise in steps of 22.5°) on each ring of
-``Style.label_gaps`` and then of :data:`FAR_GAPS` (the free distance between the anchor and the
-box edge along the direction). Each candidate gets a score (lower is better):
+``Style.label_gaps``, then 32 on each ring of :data:`FAR_GAPS` (the gap is the free distance
+between the anchor and the box edge along the direction). Each candidate gets a score (lower is better):
 
 * ``W_OVERLAP`` · overlap area (mm²) with the boxes already placed, each grown by the
   clearance, plus ``W_OVERLAP_HIT`` per box touched;
@@ -46,7 +46,8 @@ box edge along the direction). Each candidate gets a score (lower is better):
   for the nearest ring and the upper right;
 * for a box further than :data:`LEADER_FROM` from its anchor, which gets a **leader** (a thin
   line from near the anchor to the box's edge): ``W_LEADER``, plus ``W_LEADER_CROSS`` per
-  stroke and ``W_LEADER_LABEL`` per placed box the leader would cross.
+  stroke and ``W_LEADER_LABEL`` per placed box the leader would cross, and ``W_LEADER_ALONG``
+  per point of four along it that runs beside a stroke (it would read as part of the drawing).
 
 The minimum wins; ties go to the earlier candidate. A free spot on a far ring beats any
 crossing near the anchor; where no candidate is free, the least bad is taken — placement never
@@ -94,9 +95,12 @@ W_UPPER_RIGHT = 0.5
 W_LEADER = 1.5
 W_LEADER_CROSS = 2.0
 W_LEADER_LABEL = 30.0
+W_LEADER_ALONG = 1.5
 
-#: Number of candidate directions per ring.
+#: Number of candidate directions per ring: on the near rings, and on the far ones (where the
+#: free gaps between lines fanning out from a point are narrower in angle).
 N_DIRECTIONS = 16
+N_FAR_DIRECTIONS = 32
 #: Rings beyond ``Style.label_gaps``, mm: a label pushed this far gets a leader.
 FAR_GAPS = (7.5, 10.5, 14.0, 18.0)
 #: A box whose gap to its anchor is larger than this (mm) gets a leader.
@@ -106,6 +110,8 @@ LEADER_FROM = 3.5
 LEADER_START = 0.8
 LEADER_GAP = 0.3
 LEADER_SHORTEST = 1.0
+#: A leader's point this close to a stroke (beyond its half width), mm, runs beside it.
+LEADER_ALONG_DISTANCE = 0.6
 #: Free distance kept between a box and a stroke's ink (the stroke's half width more), mm.
 STROKE_CLEARANCE = 0.15
 #: Anchors of point names closer than this (mm) share one label.
@@ -116,12 +122,16 @@ POLES = ("p", "p′", "π", "π′")
 CELL = 5.0
 MAX_SAMPLES = 400_000
 
-_DIRECTIONS = np.array(
-    [
-        (math.cos(math.radians(45.0 + 22.5 * k)), math.sin(math.radians(45.0 + 22.5 * k)))
-        for k in range(N_DIRECTIONS)
-    ]
-)
+
+
+def _directions(n: int) -> np.ndarray:
+    """``n`` unit directions from 45°, counter-clockwise, evenly spaced."""
+    a = np.radians(45.0 + 360.0 / n * np.arange(n))
+    return np.column_stack([np.cos(a), np.sin(a)])
+
+
+_DIRECTIONS = _directions(N_DIRECTIONS)
+_FAR_DIRECTIONS = _directions(N_FAR_DIRECTIONS)
 _UPPER_RIGHT = np.array([math.sqrt(0.5), math.sqrt(0.5)])
 _POINT_NAME = re.compile(r"^(?:[A-Za-z]|π)[A-Za-z0-9′″']*$")
 
@@ -318,12 +328,12 @@ def _extent(label: Label) -> tuple[float, float, float]:
     return text_extent(label.text, label.size, label.italic)
 
 
-def candidate_centres(label: Label, gaps: Sequence[float]) -> np.ndarray:
-    """Candidate box centres (n × 2), ring-major, in candidate order."""
+def candidate_centres(label: Label, gaps: Sequence[float], dirs: np.ndarray = _DIRECTIONS) -> np.ndarray:
+    """Candidate box centres (n × 2), ring-major, in candidate order, along ``dirs`` (m × 2)."""
     w, up, down = _extent(label)
-    support = _support(_DIRECTIONS, w / 2.0, (up + down) / 2.0)
+    support = _support(dirs, w / 2.0, (up + down) / 2.0)
     anchor = np.asarray(label.anchor, dtype=float)
-    rings = [anchor + _DIRECTIONS * (gap + support)[:, None] for gap in gaps]
+    rings = [anchor + dirs * (gap + support)[:, None] for gap in gaps]
     return np.concatenate(rings, axis=0)
 
 
@@ -414,6 +424,33 @@ def _crossings(p0: np.ndarray, p1: np.ndarray, segs: np.ndarray) -> np.ndarray:
     return result
 
 
+def _along(p0: np.ndarray, p1: np.ndarray, segs: np.ndarray) -> np.ndarray:
+    """How many of the points at ¼, ½, ¾ and the end of each leader p0→p1 (C × 2 each) lie
+    within LEADER_ALONG_DISTANCE of a stroke (S × 5): a leader running beside a line reads as
+    part of the drawing."""
+    c = p0.shape[0]
+    if segs.shape[0] == 0 or c == 0:
+        return np.zeros(c)
+    f = np.array([0.25, 0.5, 0.75, 1.0])
+    q = (p0[:, None, :] + f[None, :, None] * (p1 - p0)[:, None, :]).reshape(-1, 2)  # (4C) × 2
+    reach = segs[:, 4] + LEADER_ALONG_DISTANCE
+    near = ((np.minimum(segs[:, 0], segs[:, 2]) - reach)[None, :] <= q[:, 0:1]) \
+        & ((np.maximum(segs[:, 0], segs[:, 2]) + reach)[None, :] >= q[:, 0:1]) \
+        & ((np.minimum(segs[:, 1], segs[:, 3]) - reach)[None, :] <= q[:, 1:2]) \
+        & ((np.maximum(segs[:, 1], segs[:, 3]) + reach)[None, :] >= q[:, 1:2])
+    qi, si = np.nonzero(near)
+    if qi.shape[0] == 0:
+        return np.zeros(c)
+    a, d = segs[si, 0:2], segs[si, 2:4] - segs[si, 0:2]
+    dd = np.einsum("ij,ij->i", d, d)
+    t = np.clip(np.einsum("ij,ij->i", q[qi] - a, d) / np.where(dd > 0.0, dd, 1.0), 0.0, 1.0)
+    gap = np.hypot(*(q[qi] - a - t[:, None] * d).T)
+    close = np.zeros(q.shape[0], dtype=bool)
+    close[qi[gap <= reach[si]]] = True
+    result: np.ndarray = close.reshape(c, 4).sum(axis=1).astype(float)
+    return result
+
+
 def _leader_start(anchor: np.ndarray, dirs: np.ndarray, discs: np.ndarray, fills: list[np.ndarray]) -> np.ndarray:
     """Where a leader leaves its anchor along each direction: past the hinge or the block the
     anchor is on, or LEADER_START from it."""
@@ -494,7 +531,9 @@ def _score(
 ) -> _Batch:
     """The candidates of ``label`` on the rings ``gaps`` (the first of them ``first_ring``)."""
     w, up, down = _extent(label)
-    centres = candidate_centres(label, gaps)
+    ring_dirs = _DIRECTIONS if first_ring == 0 else _FAR_DIRECTIONS
+    m = ring_dirs.shape[0]
+    centres = candidate_centres(label, gaps, ring_dirs)
     n = centres.shape[0]
     boxes = np.column_stack([centres[:, 0] - w / 2, centres[:, 1] - (up + down) / 2,
                              centres[:, 0] + w / 2, centres[:, 1] + (up + down) / 2])
@@ -541,14 +580,14 @@ def _score(
         score += W_DISC * (dist < discs[None, :, 2] + STROKE_CLEARANCE).sum(axis=1)
 
     # preferences
-    dirs = np.tile(_DIRECTIONS, (n // N_DIRECTIONS, 1))
+    dirs = np.tile(ring_dirs, (len(gaps), 1))
     for a in label.avoid:
         score += W_AVOID * np.clip(dirs @ _unit(a), 0.0, None) ** 2
-    ring = first_ring + np.repeat(np.arange(n // N_DIRECTIONS), N_DIRECTIONS)
+    ring = first_ring + np.repeat(np.arange(len(gaps)), m)
     score += W_RING * ring + W_UPPER_RIGHT * (1.0 - dirs @ _UPPER_RIGHT) / 2.0
 
     # leaders: from past the anchor's hinge or block to just short of the box
-    gap = np.repeat(np.asarray(gaps, dtype=float), N_DIRECTIONS)
+    gap = np.repeat(np.asarray(gaps, dtype=float), m)
     to_centre = centres - anchor
     dist_c = np.hypot(to_centre[:, 0], to_centre[:, 1])
     u = to_centre / dist_c[:, None]
@@ -559,7 +598,8 @@ def _score(
     p1 = anchor + u * t1[:, None]
     idx = np.nonzero(lead)[0]
     if idx.shape[0]:
-        extra = W_LEADER + W_LEADER_CROSS * _crossings(p0[idx], p1[idx], strokes)
+        extra = (W_LEADER + W_LEADER_CROSS * _crossings(p0[idx], p1[idx], strokes)
+                 + W_LEADER_ALONG * _along(p0[idx], p1[idx], strokes))
         if pb.shape[0]:
             k = pb.shape[0]
             crossed = _clip(np.repeat(pb, idx.shape[0], axis=0),

@@ -38,6 +38,9 @@ from graphmech.render.labels import (
 )
 from graphmech.render.sheet import _obstacles, panel_labels, panel_shapes
 from graphmech.render.style import DEFAULT
+from graphmech.scene import load_scene
+from graphmech.problems import sheet as scene_sheet
+from tests.conftest import SCENES
 
 
 def box_hits_segment(box, p0, p1, n: int = 400) -> bool:
@@ -52,17 +55,19 @@ def box_hits_segment(box, p0, p1, n: int = 400) -> bool:
 
 def ink(panel: Panel):
     """What the panel draws, as shapely geometry (independent of the placer): each stroke
-    thickened by half its pen's width, filled shapes and hinges as areas."""
-    from graphmech.render.sheet import CircleShape, LineShape, PolyShape
+    thickened by half its pen's width, filled shapes and hinges as areas; a shape filled with
+    its stroke's colour (an arrowhead) is drawn without a stroke (SvgBackend)."""
+    from graphmech.render.sheet import LineShape, PolyShape
 
     parts = []
     for s in panel_shapes(panel):
-        w = DEFAULT.pen(s.key).width / 2.0
+        pen = DEFAULT.pen(s.key)
+        w = 0.0 if isinstance(s, PolyShape) and s.filled and pen.fill == pen.colour else pen.width / 2.0
         if isinstance(s, LineShape):
             parts.append(shapely.LineString([s.p0, s.p1]).buffer(w))
         elif isinstance(s, PolyShape):
             pts = list(s.points) + ([s.points[0]] if s.closed else [])
-            parts.append(shapely.LineString(pts).buffer(w))
+            parts.append(shapely.LineString(pts).buffer(w) if w else shapely.LineString(pts))
             if s.filled:
                 parts.append(shapely.Polygon(s.points))
         else:
@@ -319,3 +324,19 @@ def test_placed_boxes_never_overlap_when_anchors_are_10mm_apart(points, names, s
             x, y = lab.anchor
             if lab is not p.label:
                 assert not (p.box[0] < x < p.box[2] and p.box[1] < y < p.box[3])
+
+
+# ----------------------------------------------------------------------------- every reference figure
+@pytest.mark.parametrize("path", sorted(SCENES.glob("*.toml")), ids=lambda p: p.stem)
+def test_reference_figures_labels_clear_of_each_other_and_of_every_stroke(path) -> None:
+    scene = load_scene(path)
+    drawing, _ = scene_sheet(scene, ("graphmech",))
+    for panel in drawing.panels:
+        placed = panel_labels(panel, panel_shapes(panel))
+        geometry = ink(panel)
+        for p in placed:
+            assert not crossed(p.box, geometry), (panel.name, p.label.text)
+        for p, q in itertools.combinations(placed, 2):
+            assert boxes_overlap(p.box, q.box) == 0.0, (panel.name, p.label.text, q.label.text)
+        drawn = [t for p in placed for t in ([p.label.text] if len(p.sources) == 1 else [s.text for s in p.sources])]
+        assert sorted(drawn) == sorted(it.text for it in panel.items if isinstance(it, Label))
