@@ -176,7 +176,9 @@ def merged_text(texts: Sequence[str]) -> str:
     return ", ".join(names)
 
 
-def merge_coincident(labels: Sequence[Label], distance: float = MERGE_DISTANCE) -> list[tuple[Label, tuple[Label, ...]]]:
+def merge_coincident(
+    labels: Sequence[Label], distance: float = MERGE_DISTANCE
+) -> list[tuple[Label, tuple[Label, ...]]]:
     """The labels to draw, each with the labels it stands for, in the order of their first.
 
     Point names of the same size and slant within ``distance`` of a name already in a group join
@@ -201,12 +203,12 @@ def merge_coincident(labels: Sequence[Label], distance: float = MERGE_DISTANCE) 
             groups.append([lab])
         cells.setdefault((ix, iy), []).append(g)
     out: list[tuple[Label, tuple[Label, ...]]] = []
-    for g in groups:
-        if len(g) == 1:
-            out.append((g[0], (g[0],)))
+    for members in groups:
+        if len(members) == 1:
+            out.append((members[0], (members[0],)))
             continue
-        avoid = tuple(dict.fromkeys(a for m in g for a in m.avoid))
-        out.append((replace(g[0], text=merged_text([m.text for m in g]), avoid=avoid), tuple(g)))
+        avoid = tuple(dict.fromkeys(a for m in members for a in m.avoid))
+        out.append((replace(members[0], text=merged_text([m.text for m in members]), avoid=avoid), tuple(members)))
     return out
 
 

@@ -300,3 +300,42 @@ def test_a_centre_line_is_dash_dot_and_a_plate_is_a_filled_outlined_polygon() ->
     [(layer, tri)] = item_shapes(Plate(((0.0, 0.0), (10.0, 0.0), (5.0, 8.0))))
     assert tri.key == "plate" and tri.closed and tri.filled and len(tri.points) == 3
     assert DEFAULT.pen("plate").fill not in ("white", "none", "black")
+
+
+def test_each_label_is_a_group_of_its_own_with_its_leader() -> None:
+    star = tuple(Segment((0.0, 0.0), (30.0 * math.cos(math.radians(a)), 30.0 * math.sin(math.radians(a))))
+                 for a in range(0, 360, 30))
+    sheet = one_panel(*star, Hinge((0.0, 0.0)), Label("E", (0.0, 0.0)), Label("F", (60.0, 0.0)),
+                      title="Star")
+    rec = record(sheet)
+    calls = rec.calls
+    (e,) = [i for i, c in enumerate(calls) if c[0] == "text" and c[1] == "E"]
+    (f,) = [i for i, c in enumerate(calls) if c[0] == "text" and c[1] == "F"]
+    # E had to move from the star's centre: its group holds its leader and its text, nothing else
+    assert calls[e - 2][0] == "begin_group" and calls[e - 2][1] == "label1"
+    assert calls[e - 1][0] == "line" and calls[e - 1][3] == "label" and calls[e + 1] == ("end_group",)
+    # F is free: its text alone
+    assert calls[f - 1] == ("begin_group", "label2") and calls[f + 1] == ("end_group",)
+    # the leader on the page: from just outside the hinge to near E's text
+    placed = panel_labels(sheet.panels[0], panel_shapes(sheet.panels[0]))
+    pl = layout_sheet(sheet, DEFAULT, [[p.box for p in placed]]).panels[0]
+    centre = pl.to_page((0.0, 0.0))
+    a, b = calls[e - 1][1], calls[e - 1][2]
+    assert 1.2 < math.dist(a, centre) < 2.5 and math.dist(b, centre) > math.dist(a, centre) + 1.0
+    # the text is set on the placed baseline
+    assert calls[e][2] == pytest.approx(pl.to_page(placed[0].baseline))
+
+
+def test_coincident_points_are_drawn_as_one_label() -> None:
+    sheet = one_panel(Arrow((0.0, 0.0), (20.0, 5.0)), Label("c₃", (0.0, 0.0)), Label("p", (0.1, 0.0)),
+                      Label("b", (20.0, 5.0)))
+    assert [c[1] for c in record(sheet).of("text")] == ["p (c₃)", "b"]
+
+
+def test_a_label_keeps_off_the_block_and_the_hatching_it_names() -> None:
+    sheet = one_panel(GuideLine((-30.0, -2.5), (30.0, -2.5)), Slider((0.0, 0.0), 0.0),
+                      Segment((0.0, 0.0), (-25.0, 15.0)), Hinge((0.0, 0.0)), Label("C", (0.0, 0.0)))
+    (p,) = panel_labels(sheet.panels[0], panel_shapes(sheet.panels[0]))
+    x0, y0, x1, y1 = p.box
+    # the block is 8 × 5 about C; the hatching hangs 1.3 mm under the guide at y = −2.5
+    assert x1 <= -4.0 or x0 >= 4.0 or y0 >= 2.5 + 0.25 or y1 <= -2.5 - 1.3 - 0.1
