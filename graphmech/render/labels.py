@@ -287,8 +287,6 @@ class Obstacles:
         else:
             segs = np.array([(a[0], a[1], b[0], b[1]) for a, b in segments], dtype=float).reshape(-1, 4)
         half = np.asarray(widths, dtype=float).reshape(-1) / 2.0 if len(widths) else np.zeros(segs.shape[0])
-        if half.shape[0] != segs.shape[0]:
-            raise ValueError(f"{len(widths)} widths for {segs.shape[0]} segments")
         keep = np.isfinite(segs).all(axis=1)
         self.segs = np.column_stack([segs, half])[keep]
         self.discs = np.array([(c[0], c[1], r) for c, r in discs], dtype=float).reshape(-1, 3)
