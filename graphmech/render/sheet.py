@@ -15,10 +15,13 @@ What the frontend decides, so that every backend draws the same figure:
   construction lines, given lines, result lines, hinges (so they cover the line ends), labels.
   Items of the same layer keep the panel's order.
 * **Labels** (:mod:`graphmech.render.labels`), placed around their anchors clear of each other
-  and of the panel's strokes; drawn last.
+  and of everything the panel draws (:func:`_obstacles`), coincident point names merged; drawn
+  last, each in a group of its own with its leader (a thin line from near the anchor to a label
+  that had to move away), so the leader is the label's own stroke.
 * **Lettering**: sheet title at the top, each panel's title and notes centred under it, then a
-  graphic scale bar per scale of the panel (:mod:`graphmech.render.scalebar`), footer lines at
-  the bottom left, the title block at the bottom right (:mod:`graphmech.render.titleblock`).
+  graphic scale bar per scale of the panel (:mod:`graphmech.render.scalebar`), all in a caption
+  group of their own; footer lines at the bottom left, the title block at the bottom right
+  (:mod:`graphmech.render.titleblock`).
 
 Examples
 --------
@@ -37,8 +40,10 @@ import warnings
 from dataclasses import dataclass
 from typing import Callable, Sequence, TypeVar, Union
 
+import numpy as np
+
 from graphmech.render.backend import Backend
-from graphmech.render.labels import PlacedLabel, place_labels
+from graphmech.render.labels import Obstacles, PlacedLabel, place_labels
 from graphmech.render.layout import PanelPlacement, layout_sheet, slider_corners
 from graphmech.render.scalebar import draw_scale_bar
 from graphmech.render.titleblock import draw_title_block
@@ -73,7 +78,8 @@ _ROLE_LAYER = {
     "result": LAYER_RESULT,
 }
 
-#: Label baseline below the centre of its estimated box, as a fraction of the font size.
+
+#: A fixed text's baseline below the point it is centred on, as a fraction of its size.
 BASELINE_DROP = 0.35
 
 
@@ -277,36 +283,58 @@ def panel_shapes(panel: Panel, style: Style = DEFAULT) -> list[Shape]:
     return [t[3] for t in tagged]
 
 
-def _obstacles(shapes: Sequence[Shape]) -> tuple[list[tuple[XY, XY]], list[tuple[XY, float]]]:
-    """Strokes and round symbols a label should keep clear of (panel frame)."""
-    segs: list[tuple[XY, XY]] = []
+#: Chord length, mm, of the polygon a drawn circle is an obstacle as (its sagitta is at most
+#: about r·(π/n)²/2; the chords are never fewer than 24 nor more than 720).
+CIRCLE_CHORD = 1.0
+
+
+def _ring(c: XY, r: float) -> np.ndarray:
+    """A drawn circle as the chords (n × 4) of the polygon it is an obstacle as."""
+    n = min(720, max(24, math.ceil(2.0 * math.pi * r / CIRCLE_CHORD)))
+    t = np.linspace(0.0, 2.0 * math.pi, n + 1)
+    x, y = c[0] + r * np.cos(t), c[1] + r * np.sin(t)
+    return np.column_stack([x[:-1], y[:-1], x[1:], y[1:]])
+
+
+def _obstacles(shapes: Sequence[Shape], style: Style = DEFAULT) -> Obstacles:
+    """Everything drawn, as labels must keep clear of it (panel frame): every stroke as pieces
+    with its pen's width (hatching, pivot triangles, outlines, circles as chords, curves piece by
+    piece), hinges as discs, slider blocks, plates and arrowheads as fills."""
+    pieces: list[np.ndarray] = []
+    widths: list[np.ndarray] = []
     discs: list[tuple[XY, float]] = []
+    fills: list[tuple[XY, ...]] = []
     for s in shapes:
+        pen = style.pen(s.key)
+        width = pen.width
         if isinstance(s, LineShape):
-            segs.append((s.p0, s.p1))
+            segs = np.array([[s.p0[0], s.p0[1], s.p1[0], s.p1[1]]])
         elif isinstance(s, PolyShape):
-            pts = list(s.points) + ([s.points[0]] if s.closed else [])
-            segs += list(zip(pts[:-1], pts[1:]))
+            pts = np.array(s.points + ((s.points[0],) if s.closed else ()), dtype=float)
+            segs = np.column_stack([pts[:-1], pts[1:]])
+            # a filled shape of the stroke's own colour is drawn without a stroke (an arrowhead)
+            if s.filled:
+                fills.append(s.points)
+                width = 0.0 if pen.fill == pen.colour else width
         elif s.filled:  # a hinge
-            discs.append((s.c, s.r + 0.2))
-        else:  # a construction circle, as a 48-gon
-            n = 48
-            ring = [
-                (s.c[0] + s.r * math.cos(2 * math.pi * k / n),
-                 s.c[1] + s.r * math.sin(2 * math.pi * k / n))
-                for k in range(n + 1)
-            ]
-            segs += list(zip(ring[:-1], ring[1:]))
-    return segs, discs
+            discs.append((s.c, s.r + pen.width / 2.0))
+            continue
+        else:
+            segs = _ring(s.c, s.r)
+        pieces.append(segs)
+        widths.append(np.full(segs.shape[0], width))
+    if not pieces:
+        return Obstacles(discs=discs, fills=fills)
+    return Obstacles(np.concatenate(pieces), np.concatenate(widths), discs, fills)
 
 
 def panel_labels(
     panel: Panel, shapes: Sequence[Shape], style: Style = DEFAULT
 ) -> tuple[PlacedLabel, ...]:
-    """The panel's labels placed clear of each other and of its shapes (panel frame)."""
-    segs, discs = _obstacles(shapes)
+    """The panel's labels placed clear of each other and of everything drawn (panel frame);
+    coincident point names come back as one label."""
     labels = [it for it in panel.items if isinstance(it, Label)]
-    return place_labels(labels, segs, discs, style)
+    return place_labels(labels, style=style, obstacles=_obstacles(shapes, style))
 
 
 # ----------------------------------------------------------------------------- drawing
@@ -367,18 +395,26 @@ def draw_sheet(
         backend.begin_group(_group_name(f"panel{i + 1}", panel.name))
         for shape in panel_shape:
             _emit(shape, pl, backend)
-        for lab in labels:
-            cx, cy = pl.to_page(lab.center)
-            at = (cx, cy + BASELINE_DROP * lab.label.size)
-            backend.text(lab.label.text, at, lab.label.size, "middle", lab.label.italic, "label")
+        for k, lab in enumerate(labels):
+            # one group per label, its leader with it: the leader is the label's own stroke
+            backend.begin_group(f"label{k + 1}")
+            if lab.leader is not None:
+                backend.line(pl.to_page(lab.leader[0]), pl.to_page(lab.leader[1]), "label")
+            backend.text(lab.label.text, pl.to_page(lab.baseline), lab.label.size, "middle",
+                         lab.label.italic, "label")
+            backend.end_group()
         for t in panel.items:  # text set where the figure put it (a table's cells)
             if isinstance(t, Text):
                 x, y = pl.to_page(t.at)
                 backend.text(t.text, (x, y + BASELINE_DROP * t.size), t.size, t.anchor, t.italic, "label")
-        for line in pl.caption:
-            backend.text(line.text, line.at, line.size, "middle", False, "text")
-        for bar, corner in pl.scale_bars:
-            draw_scale_bar(bar, corner, backend, style)
+        # the caption in a group of its own: its strokes (the bars) are its, the panel's are not
+        if pl.caption or pl.scale_bars:
+            backend.begin_group("caption")
+            for line in pl.caption:
+                backend.text(line.text, line.at, line.size, "middle", False, "text")
+            for bar, corner in pl.scale_bars:
+                draw_scale_bar(bar, corner, backend, style)
+            backend.end_group()
         backend.end_group()
     if layout.title_block is not None:
         backend.begin_group("title-block")

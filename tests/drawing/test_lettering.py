@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import pytest
 
-from graphmech.drawing.lettering import minus, number, plain, runs, subscript, text_box_size
+from graphmech.drawing.lettering import minus, number, plain, runs, subscript, text_box_size, text_extent
 
 
 def test_subscript_turns_every_digit_and_nothing_else() -> None:
@@ -13,13 +13,32 @@ def test_subscript_turns_every_digit_and_nothing_else() -> None:
     assert subscript("") == ""
 
 
-def test_text_box_size_is_three_fifths_of_the_size_per_character() -> None:
-    assert text_box_size("ω₂", 5.0) == (5.16, 5.0)  # the subscript at its own 0.72 size
+def test_text_box_size_counts_each_character_from_above() -> None:
+    assert text_box_size("ω₂", 5.0) == (6.16, 5.0)  # ω 0.8 em, the subscript 0.6 em at 0.72 size
     assert text_box_size("速度", 5.0) == (10.0, 5.0)  # a CJK character is a full em
-    assert text_box_size("0.1", 2.8) == (5.04, 2.8)  # rounded: no 5.040000000000001
+    assert text_box_size("0.1", 2.8) == (4.62, 2.8)  # digits 0.6, the point 0.45; rounded
     assert text_box_size("", 4.0) == (2.4, 4.0)  # an empty label still takes a character's room
     w, h = text_box_size("x", 3)
     assert type(h) is float and w == 1.8
+
+
+#: Widths (em) of single characters as Chromium's getBBox() gave them for this project's font
+#: list (Liberation Serif, fallbacks for the rest), the larger of upright and italic.
+MEASURED_EM = {"M": 0.93, "W": 0.95, "H": 0.79, "D": 0.75, "B": 0.67, "S": 0.56, "I": 0.42,
+               "m": 0.78, "w": 0.74, "p": 0.58, "i": 0.28, "j": 0.41, "7": 0.56, "ω": 0.71,
+               "ψ": 0.64, "φ": 0.58, "Π": 0.82, "Φ": 0.76, "Ш": 1.14, "Ж": 0.98, "т": 0.72,
+               "′": 0.24, "=": 0.67, "−": 0.67, "(": 0.40, "°": 0.40, " ": 0.25}
+
+
+def test_text_extent_holds_what_the_browser_draws() -> None:
+    for ch, em in MEASURED_EM.items():
+        assert text_extent(ch, 10.0, italic=True)[0] >= 10.0 * em, ch
+    assert text_extent("速", 10.0, italic=True)[0] >= 11.6  # a slanted CJK box is wider
+    # the font's cell: ascent 0.891, descent 0.216 (brackets 0.238); scripts reach further
+    assert text_extent("B", 10.0) == (7.0, 9.0, 2.4)
+    w, up, down = text_extent("R^{n}_{34}", 10.0)
+    assert up >= 10.15 and down >= 4.09  # Chromium: 1.015 and 0.409 em
+    assert text_extent("x_{2}", 10.0)[1:] == (9.0, 4.228)
 
 
 def test_runs_read_the_marks_and_the_unicode_scripts_alike() -> None:

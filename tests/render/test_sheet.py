@@ -251,7 +251,10 @@ def test_labels_are_drawn_last_in_their_panel_then_the_caption() -> None:
     rec = record(sheet)
     kinds = [c[0] for c in rec.calls]
     first_text = kinds.index("text")
-    assert set(kinds[first_text:]) == {"text", "end_group", "finish"}
+    # after the first letter only letters and their groups (label, caption): no stroke is drawn
+    # over them (the label has no leader here)
+    assert set(kinds[first_text:]) == {"text", "begin_group", "end_group", "finish"}
+    assert [c[1] for c in rec.of("begin_group")][-2:] == ["label1", "caption"]
     texts = rec.of("text")
     assert [t[1] for t in texts] == ["A", "Mechanism", "μl = 0.002 m/mm"]
     assert texts[0][5] is True and texts[0][6] == "label"  # italic letter
@@ -322,3 +325,42 @@ def placement_with_labels(sheet: Sheet, i: int = 0):
     shapes = [panel_shapes(p) for p in sheet.panels]
     placed = [panel_labels(p, s) for p, s in zip(sheet.panels, shapes)]
     return layout_sheet(sheet, DEFAULT, [[q.box for q in lab] for lab in placed]).panels[i]
+
+
+def test_each_label_is_a_group_of_its_own_with_its_leader() -> None:
+    star = tuple(Segment((0.0, 0.0), (30.0 * math.cos(math.radians(a)), 30.0 * math.sin(math.radians(a))))
+                 for a in range(0, 360, 30))
+    sheet = one_panel(*star, Hinge((0.0, 0.0)), Label("E", (0.0, 0.0)), Label("F", (60.0, 0.0)),
+                      title="Star")
+    rec = record(sheet)
+    calls = rec.calls
+    (e,) = [i for i, c in enumerate(calls) if c[0] == "text" and c[1] == "E"]
+    (f,) = [i for i, c in enumerate(calls) if c[0] == "text" and c[1] == "F"]
+    # E had to move from the star's centre: its group holds its leader and its text, nothing else
+    assert calls[e - 2][0] == "begin_group" and calls[e - 2][1] == "label1"
+    assert calls[e - 1][0] == "line" and calls[e - 1][3] == "label" and calls[e + 1] == ("end_group",)
+    # F is free: its text alone
+    assert calls[f - 1] == ("begin_group", "label2") and calls[f + 1] == ("end_group",)
+    # the leader on the page: from just outside the hinge to near E's text
+    placed = panel_labels(sheet.panels[0], panel_shapes(sheet.panels[0]))
+    pl = layout_sheet(sheet, DEFAULT, [[p.box for p in placed]]).panels[0]
+    centre = pl.to_page((0.0, 0.0))
+    a, b = calls[e - 1][1], calls[e - 1][2]
+    assert 1.2 < math.dist(a, centre) < 2.5 and math.dist(b, centre) > math.dist(a, centre) + 1.0
+    # the text is set on the placed baseline
+    assert calls[e][2] == pytest.approx(pl.to_page(placed[0].baseline))
+
+
+def test_coincident_points_are_drawn_as_one_label() -> None:
+    sheet = one_panel(Arrow((0.0, 0.0), (20.0, 5.0)), Label("c₃", (0.0, 0.0)), Label("p", (0.1, 0.0)),
+                      Label("b", (20.0, 5.0)))
+    assert [c[1] for c in record(sheet).of("text")] == ["p (c₃)", "b"]
+
+
+def test_a_label_keeps_off_the_block_and_the_hatching_it_names() -> None:
+    sheet = one_panel(GuideLine((-30.0, -2.5), (30.0, -2.5)), Slider((0.0, 0.0), 0.0),
+                      Segment((0.0, 0.0), (-25.0, 15.0)), Hinge((0.0, 0.0)), Label("C", (0.0, 0.0)))
+    (p,) = panel_labels(sheet.panels[0], panel_shapes(sheet.panels[0]))
+    x0, y0, x1, y1 = p.box
+    # the block is 8 × 5 about C; the hatching hangs 1.3 mm under the guide at y = −2.5
+    assert x1 <= -4.0 or x0 >= 4.0 or y0 >= 2.5 + 0.25 or y1 <= -2.5 - 1.3 - 0.1

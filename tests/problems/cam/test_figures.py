@@ -55,14 +55,15 @@ def record(sheet: Sheet) -> tuple:
 
 
 def group(calls: tuple, name: str) -> list:
-    """The calls drawn inside the panel group whose name ends with ``name``."""
-    out, inside = [], False
+    """The calls drawn inside the panel group whose name ends with ``name`` (its labels' groups
+    included)."""
+    out, depth = [], 0  # how deep inside that panel's group (0: outside)
     for c in calls:
         if c[0] == "begin_group":
-            inside = c[1].endswith("-" + name)
+            depth = depth + 1 if depth else int(c[1].endswith("-" + name))
         elif c[0] == "end_group":
-            inside = False
-        elif inside:
+            depth = max(depth - 1, 0)
+        elif depth:
             out.append(c)
     return out
 

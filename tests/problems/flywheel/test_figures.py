@@ -60,13 +60,13 @@ def placements(sheet: Sheet):
 def group(calls: tuple, name: str) -> list:
     """The calls drawn inside the panel group named ``panel<i>-<name>`` (``+`` written ``-``)."""
     want = name.replace("+", "-")
-    out, inside = [], False
+    out, depth = [], 0  # how deep inside that panel's group (0: outside); labels have groups too
     for c in calls:
         if c[0] == "begin_group":
-            inside = c[1].split("-", 1)[-1] == want
+            depth = depth + 1 if depth else int(c[1].split("-", 1)[-1] == want)
         elif c[0] == "end_group":
-            inside = False
-        elif inside:
+            depth = max(depth - 1, 0)
+        elif depth:
             out.append(c)
     return out
 

@@ -145,6 +145,8 @@ def test_a_sheet_that_fits_no_round_scale_keeps_readable_drawings_and_says_so(tm
     code, _, err = run_cli("render", str(_write(tmp_path, scene_text("forces/double_slider"))), "-o", str(tmp_path / "s.svg"))
     assert code == 0 and 'give [page] size = "A3"' in err
     fa = analyse_forces(_scene(scene_text("forces/double_slider")))
+    # (μl 0.02, not 0.01, since labels keep clear of every stroke: at 0.01 they push the crowded
+    # free bodies 7 mm wider, and 0.02 spills more than FIT_GAIN_MM less)
     assert (fa.scales["l"], fa.scales["F"]) == (0.02, 5.0) and fa.spill_mm > 0
     rows = {r.name: r for r in fa.rows}
     # the loads drive the slider here (F_b0 < 0 along +v): η = F_b/F_b0
