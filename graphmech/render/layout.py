@@ -34,7 +34,7 @@ Examples
 [69.867, 184.433]
 >>> fit = layout_sheet(Sheet("t", (p, p), fit=True))
 >>> fit.page, [round(pl.frame[1], 3) for pl in fit.panels]  # cropped; one above the other
-((53.0, 49.0), [16.883, 34.442])
+((53.0, 50.0), [17.267, 35.133])
 """
 from __future__ import annotations
 
@@ -256,9 +256,54 @@ class SheetLayout:
         return (x, y, x + block.width, y + block.height)
 
 
-def _caption_lines(panel: Panel, style: Style) -> list[tuple[str, float]]:
+def footer_room(n: int, margin: float, style: Style = DEFAULT) -> float:
+    """The height ``n`` footer lines take from the panels above the bottom margin, mm: the
+    footer stands in the margin, its last baseline FOOT_EDGE above the edge, so one line takes
+    none.
+
+    >>> footer_room(0, 10.0), footer_room(1, 10.0), round(footer_room(2, 10.0), 3)
+    (0.0, 1.0, 5.9)
+    """
+    if n == 0:
+        return 0.0
+    return max(style.note_size * style.line_gap * (n - 1) + style.note_size + FOOT_EDGE + FOOT_GAP - margin, 0.0)
+
+
+def _caption_lines(panel: Panel, style: Style, width: float = math.inf) -> list[tuple[str, float]]:
+    """Title and notes; a note wider than ``width`` (the drawing's, at least NOTE_WIDTH) is
+    broken at spaces, so one long remark does not widen its panel across the page."""
     lines = [(panel.title, style.panel_title_size)] if panel.title else []
-    return lines + [(n, style.note_size) for n in panel.notes]
+    room = max(width, NOTE_WIDTH)
+    return lines + [(part, style.note_size) for n in panel.notes for part in balanced_wrap(n, room, style.note_size)]
+
+
+def balanced_wrap(text: str, width: float, size: float) -> tuple[str, ...]:
+    """:func:`wrap` into as few lines, but as even as they go: no lone last word.
+
+    >>> balanced_wrap("working stroke 210° in 7 s, return 150° in 5 s: a turn in 12 s, n = 5 r/min", 130.0, 3.5)
+    ('working stroke 210° in 7 s, return 150°', 'in 5 s: a turn in 12 s, n = 5 r/min')
+    """
+    lines = wrap(text, width, size)
+    if len(lines) < 2:
+        return lines
+    lo, hi = max(text_box_size(w, size)[0] for w in text.split(" ")), width
+    for _ in range(30):  # the narrowest width that still gives as few lines (bisection)
+        mid = (lo + hi) / 2.0
+        if len(wrap(text, mid, size)) <= len(lines):
+            hi = mid
+        else:
+            lo = mid
+    return wrap(text, hi, size)
+
+
+#: The footer's last baseline above the page's lower edge, and its least gap to the panels, mm.
+FOOT_EDGE = 5.5
+FOOT_GAP = 2.0
+#: A caption note is wrapped to its drawing's width, but not narrower than this, mm.
+NOTE_WIDTH = 130.0
+#: The least gap between panels and rows when the page is tight, mm (instead of panel_gap):
+#: a sheet that fits with narrower gaps is better than one that runs off the page.
+TIGHT_GAP = 4.0
 
 
 #: Free distance between a drawing and the first line of its caption, mm.
@@ -276,6 +321,35 @@ FIT_TITLE_WIDTH = 80.0
 FIT_MAX_SHAPE = 2.0
 
 
+#: Free distance between two scale bars standing side by side, mm.
+BAR_SIDE_GAP = 6.0
+
+
+def bar_rows(bars: Sequence[ScaleBar], width: float) -> list[list[ScaleBar]]:
+    """The panel's scale bars in rows under its caption: side by side while a row stays within
+    ``width`` (the panel's drawing or caption, whichever is wider), so a diagram with μs and μφ
+    costs one bar's height, not two.
+
+    >>> b = scale_bar("l", 0.001)
+    >>> [len(r) for r in bar_rows([b, b, b], 2 * b.width + BAR_SIDE_GAP)]
+    [2, 1]
+    """
+    rows: list[list[ScaleBar]] = []
+    used = 0.0
+    for bar in bars:
+        if rows and used + BAR_SIDE_GAP + bar.width <= width + 1e-9:
+            rows[-1].append(bar)
+            used += BAR_SIDE_GAP + bar.width
+        else:
+            rows.append([bar])
+            used = bar.width
+    return rows
+
+
+def _row_width(row: Sequence[ScaleBar]) -> float:
+    return sum(b.width for b in row) + BAR_SIDE_GAP * (len(row) - 1)
+
+
 @dataclass(frozen=True)
 class _Size:
     """A panel's drawing box (own frame), caption lines, scale bars and frame size (mm)."""
@@ -289,11 +363,14 @@ class _Size:
 
 def _panel_size(panel: Panel, style: Style, label_boxes: Sequence[Box] | None) -> _Size:
     draw = panel_bbox(panel, style, label_boxes)
-    lines = tuple(_caption_lines(panel, style))
+    lines = tuple(_caption_lines(panel, style, draw[2] - draw[0]))
     bars = tuple(scale_bar(sym, mu, style.note_size) for sym, mu in panel.scales)
-    cap_h = sum(s * style.line_gap for _, s in lines) + sum(BAR_GAP + b.height for b in bars)
+    text_w = max([text_box_size(t, s)[0] for t, s in lines], default=0.0)
+    rows = bar_rows(bars, max(draw[2] - draw[0], text_w))
+    cap_h = sum(s * style.line_gap for _, s in lines)
+    cap_h += sum(BAR_GAP + max(b.height for b in row) for row in rows)
     cap_h += CAPTION_GAP if lines or bars else 0.0
-    cap_w = max([text_box_size(t, s)[0] for t, s in lines] + [b.width for b in bars], default=0.0)
+    cap_w = max([text_w] + [_row_width(row) for row in rows])
     return _Size(draw, lines, bars, max(draw[2] - draw[0], cap_w), draw[3] - draw[1] + cap_h)
 
 
@@ -447,17 +524,23 @@ def layout_sheet(
     m, gap = (FIT_MARGIN, FIT_GAP) if sheet.fit else (style.page_margin, style.panel_gap)
     step = style.note_size * style.line_gap
     n_foot = len(sheet.footer)
-    foot = step * n_foot + style.note_size if n_foot else 0.0
+    foot = footer_room(n_foot, m, style)
     if sheet.fit:
         rows, page, title = _fit(sheet, sizes, block, style, foot)
     else:
         page = sheet.page
-        rows = _rows(sheet.panels, sizes, page[0] - 2.0 * m, gap)
         title = (sheet.title,) if sheet.title else ()
+        height = page[1] - 2.0 * m - _head(title, style) - foot
+        for gap in (style.panel_gap, min(style.panel_gap, TIGHT_GAP)):  # the wide gap if it fits
+            rows = _rows(sheet.panels, sizes, page[0] - 2.0 * m, gap)
+            row_w, row_h = _row_sizes(rows, sizes, gap)
+            if max(row_w, default=0.0) <= page[0] - 2.0 * m + 1e-9 and \
+                    sum(row_h) + gap * (len(rows) - 1) <= height + 1e-9:
+                break
     head = _head(title, style)
     page_w, page_h = page
     title_at = (page_w / 2.0, m + style.title_size)
-    footer_at = tuple((m, page_h - m - step * (n_foot - 1 - k)) for k in range(n_foot))
+    footer_at = tuple((m, page_h - FOOT_EDGE - step * (n_foot - 1 - k)) for k in range(n_foot))
     room = (m, m + head, page_w - m, page_h - m - foot)
     warnings: list[str] = []
 
@@ -527,8 +610,12 @@ def _placement(panel: Panel, size: _Size, corner: XY, style: Style) -> PanelPlac
         caption.append(CaptionLine(text, s, (cx, base)))
         cursor += s * style.line_gap
     bars: list[tuple[ScaleBar, XY]] = []
-    for bar in size.bars:
+    text_w = max([text_box_size(t, s)[0] for t, s in size.lines], default=0.0)
+    for row in bar_rows(size.bars, max(dw, text_w)):
         cursor += BAR_GAP
-        bars.append((bar, (cx - bar.width / 2.0, cursor)))
-        cursor += bar.height
+        left = cx - _row_width(row) / 2.0
+        for bar in row:
+            bars.append((bar, (left, cursor)))
+            left += bar.width + BAR_SIDE_GAP
+        cursor += max(b.height for b in row)
     return PanelPlacement(panel.name, draw, dx, dy, _frame(corner, size), tuple(caption), tuple(bars))

@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from graphmech.render.layout import (BAR_GAP, FIT_MARGIN, FIT_MAX_SHAPE, SheetLayout, item_box, layout_sheet,
-                                     panel_bbox)
+from graphmech.render.layout import (BAR_GAP, FIT_MARGIN, FIT_MAX_SHAPE, SheetLayout, footer_room, item_box,
+                                     layout_sheet, panel_bbox)
 from graphmech.render.recording import RecordingBackend
 from graphmech.render.sheet import draw_sheet
 from graphmech.drawing.primitives import Arrow, FixedPivot, Hinge, Label, Panel, Segment, Sheet, TitleBlock
@@ -135,7 +135,7 @@ def test_rows_are_spread_over_the_height() -> None:
     tops = [p.frame[1] for p in lay.panels]
     bottoms = [p.frame[3] for p in lay.panels]
     top = DEFAULT.page_margin + DEFAULT.title_size * (1.0 + DEFAULT.line_gap)
-    bottom = 210.0 - DEFAULT.page_margin - (DEFAULT.note_size * DEFAULT.line_gap + DEFAULT.note_size)
+    bottom = 210.0 - DEFAULT.page_margin - footer_room(1, DEFAULT.page_margin)
     gaps = [tops[0] - top, tops[1] - bottoms[0] - DEFAULT.panel_gap,
             tops[2] - bottoms[1] - DEFAULT.panel_gap, bottom - bottoms[2]]
     assert gaps == pytest.approx([gaps[0]] * 4) and gaps[0] > 10.0
@@ -221,7 +221,7 @@ def test_a_fit_page_holds_its_content_and_no_more(sheet: Sheet) -> None:
     widest = max(f[2] - f[0] for f in frames)
     assert min(f[0] for f in frames) < m + 1.0 or widest < lay.page[0] - 2 * m - 1.0
     lowest = max(f[3] for f in frames)
-    foot = DEFAULT.note_size * DEFAULT.line_gap + DEFAULT.note_size
+    foot = footer_room(len(sheet.footer), m)
     assert lay.page[1] - m - foot - 1.0 < lowest <= lay.page[1] - m - foot + 1e-9
 
 
@@ -319,3 +319,33 @@ def test_a_title_block_wider_than_the_page_warns() -> None:
     block = TitleBlock(title="x" * 200)
     lay = layout_sheet(Sheet("", (bar("a", 20.0),), PAPER["A4"], title_block=block))
     assert any("title block" in w for w in lay.warnings)
+
+
+def test_a_tight_page_closes_the_gaps_before_it_lets_panels_run_off() -> None:
+    """Two rows that need 170 mm with 12 mm gaps but 164 mm with TIGHT_GAP: laid out without a
+    warning, the rows TIGHT_GAP apart at least; two that need more still warn."""
+    from graphmech.render.layout import TIGHT_GAP
+
+    def rows(h: float) -> Sheet:
+        return Sheet("", tuple(Panel(f"p{k}", "", (Segment((0.0, 0.0), (40.0, h)),), row=k) for k in range(2)))
+
+    room = 210.0 - 2 * DEFAULT.page_margin
+    h = (room - TIGHT_GAP) / 2.0 - 2 * DEFAULT.panel_padding - 1.0  # fits with the tight gap only
+    lay = layout_sheet(rows(h))
+    assert lay.warnings == ()
+    (a, b) = lay.panels
+    assert TIGHT_GAP - 1e-9 <= b.frame[1] - a.frame[3] < DEFAULT.panel_gap
+    assert any("run off" in w for w in layout_sheet(rows(h + TIGHT_GAP)).warnings)
+
+
+def test_a_long_note_is_wrapped_to_its_drawing_or_note_width_in_even_lines() -> None:
+    from graphmech.drawing.lettering import text_box_size
+    from graphmech.render.layout import NOTE_WIDTH
+
+    note = "the crank turns fully; position 1 (bold): the working stroke begins " * 4
+    lay = layout_sheet(Sheet("", (Panel("p", "T", (Segment((0.0, 0.0), (30.0, 0.0)),), (note.strip(),)),),
+                             (420.0, 297.0)))
+    lines = [c.text for c in lay.panels[0].caption[1:]]
+    widths = [text_box_size(t, DEFAULT.note_size)[0] for t in lines]
+    assert len(lines) > 1 and " ".join(lines) == note.strip()
+    assert max(widths) <= NOTE_WIDTH + 1e-9 and min(widths) > 0.5 * max(widths)  # no lone last word

@@ -7,7 +7,7 @@ import warnings
 
 import pytest
 
-from graphmech.render.layout import layout_sheet
+from graphmech.render.layout import FOOT_EDGE, layout_sheet
 from graphmech.drawing.primitives import (
     Arrow,
     Circle,
@@ -275,7 +275,7 @@ def test_groups_and_sheet_lettering() -> None:
     title, f1, f2 = rec.of("text")
     assert title[1] == "Velocity analysis" and title[2] == (148.5, pytest.approx(15.0))
     assert f1[4] == "start" and f1[2][0] == DEFAULT.page_margin
-    assert f1[2][1] < f2[2][1] == pytest.approx(210.0 - DEFAULT.page_margin)
+    assert f1[2][1] < f2[2][1] == pytest.approx(210.0 - FOOT_EDGE)  # in the bottom margin
     assert rec.calls[-1] == ("finish",)
 
 
