@@ -132,10 +132,16 @@ class Circle:
 @dataclass(frozen=True)
 class Plate:
     """A link with three or more joints drawn as a filled polygon (a ternary link's
-    triangle), outlined with the given pen; its joints' hinges are drawn on top."""
+    triangle), outlined with the given pen; its joints' hinges are drawn on top. Its number is
+    drawn with it, in one group: the plate is the number's own ground, not a stroke it crosses."""
 
     points: tuple[XY, ...]
     role: Role = "given"
+    #: The link's number, written inside the plate at ``number_at`` (its vertices' centroid
+    #: when None) in ``number_size`` mm, as the book numbers a ternary link.
+    number: str = ""
+    number_at: XY | None = None
+    number_size: float = 3.5
 
 
 @dataclass(frozen=True)

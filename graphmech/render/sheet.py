@@ -102,6 +102,9 @@ class PolyShape:
     key: str
     closed: bool = False
     filled: bool = False
+    #: Text written on the shape and drawn with it, in one group (a plate's number): text,
+    #: where (panel frame, the text's centre), size mm.
+    text: tuple[str, XY, float] | None = None
 
 
 @dataclass(frozen=True)
@@ -257,7 +260,10 @@ def item_shapes(item: Primitive, style: Style = DEFAULT) -> list[tuple[int, Shap
                     for d in dash_pieces(ring, True, pattern)]
         return [(_ROLE_LAYER[item.role], CircleShape(item.center, item.r, item.role))]
     if isinstance(item, Plate):
-        return [(LAYER_SLIDER, PolyShape(item.points, "plate", closed=True, filled=True))]
+        at = item.number_at or (sum(p[0] for p in item.points) / len(item.points),
+                                sum(p[1] for p in item.points) / len(item.points))
+        text = (item.number, at, item.number_size) if item.number else None
+        return [(LAYER_SLIDER, PolyShape(item.points, "plate", closed=True, filled=True, text=text))]
     if isinstance(item, Hinge):
         return [(LAYER_HINGE, CircleShape(item.center, item.r, "hinge", filled=True))]
     if isinstance(item, FixedPivot):
@@ -348,7 +354,15 @@ def _emit(shape: Shape, pl: PanelPlacement, backend: Backend[object]) -> None:
         backend.line(pl.to_page(shape.p0), pl.to_page(shape.p1), shape.key, shape.dashed)
     elif isinstance(shape, PolyShape):
         pts = [pl.to_page(p) for p in shape.points]
+        if shape.text is None:
+            backend.polyline(pts, shape.key, shape.closed, shape.filled)
+            return
+        text, at, size = shape.text  # the shape and its text in one group: the text's own ground
+        backend.begin_group("plate")
         backend.polyline(pts, shape.key, shape.closed, shape.filled)
+        x, y = pl.to_page(at)
+        backend.text(text, (x, y + BASELINE_DROP * size), size, "middle", False, "label")
+        backend.end_group()
     else:
         backend.circle(pl.to_page(shape.c), shape.r, shape.key, shape.filled)
 

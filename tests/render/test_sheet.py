@@ -364,3 +364,19 @@ def test_a_label_keeps_off_the_block_and_the_hatching_it_names() -> None:
     x0, y0, x1, y1 = p.box
     # the block is 8 × 5 about C; the hatching hangs 1.3 mm under the guide at y = −2.5
     assert x1 <= -4.0 or x0 >= 4.0 or y0 >= 2.5 + 0.25 or y1 <= -2.5 - 1.3 - 0.1
+
+
+def test_a_plate_and_its_number_are_drawn_in_one_group() -> None:
+    """The number is the plate's own (the browser test's ownership rule: a group holding one text
+    owns its shapes); drawn at the given point, else at the vertices' centroid."""
+    from graphmech.drawing.primitives import Plate
+
+    rec = record(one_panel(Plate(((0.0, 0.0), (30.0, 0.0), (15.0, 24.0)), number="3"),
+                           Plate(((40.0, 0.0), (70.0, 0.0), (55.0, 24.0)))))
+    kinds = [c[0] if c[0] != "begin_group" else c[1] for c in rec.calls]
+    i = kinds.index("plate")
+    assert kinds[i + 1:i + 4] == ["polyline", "text", "end_group"] and kinds.count("plate") == 1
+    text = rec.calls[i + 2]
+    poly = rec.calls[i + 1][1]
+    cx = sum(p[0] for p in poly) / 3
+    assert text[1] == "3" and text[2][0] == pytest.approx(cx) and text[6] == "label"

@@ -170,7 +170,7 @@ def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, fl
 
 def _spill(fa: ForceAnalysis) -> float:
     """How far the force sheet runs off its page, mm (0: it fits), its labels placed as drawn."""
-    from graphmech.render.layout import layout_sheet
+    from graphmech.render.layout import footer_room, layout_sheet
     from graphmech.render.sheet import panel_labels, panel_shapes
     from graphmech.render.style import DEFAULT
 
@@ -182,7 +182,7 @@ def _spill(fa: ForceAnalysis) -> float:
         return 0.0
     m = DEFAULT.page_margin
     # the room above the footer line, as render.layout reckons it
-    bottom = sheet.page[1] - m - (DEFAULT.note_size * DEFAULT.line_gap * len(sheet.footer) + DEFAULT.note_size)
+    bottom = sheet.page[1] - m - footer_room(len(sheet.footer), m)
     right = sheet.page[0] - m
     over = [max(p.frame[3] - bottom, p.frame[2] - right, m - p.frame[0]) for p in layout.panels]
     return max([0.0, *over]) + 1e-6  # (a sheet that warns never ranks with one that fits)

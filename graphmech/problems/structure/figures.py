@@ -137,8 +137,6 @@ def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequ
             items.append(Segment(hull[0], hull[1], "given", dashed=dashed))
         elif len(hull) > 2 and dashed:
             items.append(Polyline(tuple(hull), "given", closed=True, dashed=True))
-        elif len(hull) > 2:
-            items.append(Plate(tuple(hull)))
         if not ps:
             continue
         cx, cy = sum(q[0] for q in ps) / len(ps), sum(q[1] for q in ps) / len(ps)
@@ -147,9 +145,10 @@ def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequ
             along = sorted(ps, key=lambda q: (q[0] - a[0]) * (b[0] - a[0]) + (q[1] - a[1]) * (b[1] - a[1]))
             p0, p1 = max(zip(along[:-1], along[1:]), key=lambda pq: math.dist(*pq))
             cx, cy = (p0[0] + p1[0]) / 2.0, (p0[1] + p1[1]) / 2.0
-        if len(hull) > 2 and not dashed and _inradius(hull) >= 0.75 * max(text_box_size(x, TEXT)):
-            items.append(Text(x, (cx, cy), TEXT))  # the plate's number inside it, as the book writes it
-        else:  # a bar's number beside its middle, off the bar
+        inside = len(hull) > 2 and not dashed and _inradius(hull) >= 0.75 * max(text_box_size(x, TEXT))
+        if len(hull) > 2 and not dashed:  # the plate, its number inside it as the book writes it
+            items.append(Plate(tuple(hull), number=x if inside else "", number_at=(cx, cy), number_size=TEXT))
+        if not inside:  # a bar's number beside its middle, off the bar
             labels.append(Label(x, (cx, cy), _away((cx, cy), hull if len(hull) == 2 else ()), TEXT, italic=False))
     for p in topo.pairs:
         assert p.at is not None

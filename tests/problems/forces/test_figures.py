@@ -142,12 +142,14 @@ def test_a_sheet_that_fits_no_round_scale_keeps_readable_drawings_and_says_so(tm
     # the first fit made everything coarser until the spill was least: μF = 20 N/mm drew 3 mm
     # polygons on an A4 sheet that captions alone overfill; now μl, μv first, a coarser scale only
     # for a real gain, and a hint
-    code, _, err = run_cli("render", str(_write(tmp_path, scene_text("forces/double_slider"))), "-o", str(tmp_path / "s.svg"))
+    # on an A5 sheet (on A4 the double slider fits since captions wrap and the footer stands in
+    # the margin: μl = 0.005, μF = 2 N/mm)
+    a5 = scene_text("forces/double_slider").replace("[units]", '[page]\nsize = [210, 148]\n[units]')
+    code, _, err = run_cli("render", str(_write(tmp_path, a5)), "-o", str(tmp_path / "s.svg"))
     assert code == 0 and 'give [page] size = "A3"' in err
-    fa = analyse_forces(_scene(scene_text("forces/double_slider")))
-    # (μl 0.02, not 0.01, since labels keep clear of every stroke: at 0.01 they push the crowded
-    # free bodies 7 mm wider, and 0.02 spills more than FIT_GAIN_MM less)
-    assert (fa.scales["l"], fa.scales["F"]) == (0.02, 5.0) and fa.spill_mm > 0
+    fa = analyse_forces(_scene(a5))
+    assert (fa.scales["l"], fa.scales["F"]) == (0.025, 5.0) and fa.spill_mm > 0
+    assert analyse_forces(_scene(scene_text("forces/double_slider"))).spill_mm == 0.0
     rows = {r.name: r for r in fa.rows}
     # the loads drive the slider here (F_b0 < 0 along +v): η = F_b/F_b0
     assert rows["F_b0"].exact == pytest.approx(-46.921582, rel=1e-7)

@@ -35,7 +35,7 @@ def test_a_panel_per_shown_figure_and_position_with_the_footer():
                         "±5.3 % (a smaller μv or a larger page makes it longer)"]
     rec = RecordingBackend()
     draw_sheet(sheet, rec)
-    groups = [c[1] for c in rec.calls if c[0] == "begin_group" and not c[1].startswith("label")]
+    groups = [c[1] for c in rec.calls if c[0] == "begin_group" and not c[1].startswith(("label", "caption"))]
     assert groups == ["title", "panel1-mechanism-30", "panel2-velocity-30", "footer"]
 
 

@@ -144,7 +144,7 @@ def test_printed_counts_are_a_table_of_n_pl_ph_p_and_f_under_the_formula():
 
 
 def test_a_ternary_link_is_a_filled_plate_with_its_number_inside_and_a_bar_is_a_line():
-    from graphmech.drawing.primitives import Label, Plate, Segment, Text
+    from graphmech.drawing.primitives import Label, Plate, Segment
     from graphmech.problems.structure.check import analyse_structure
     from graphmech.problems.structure.figures import structure_sheet
     from graphmech.scene import load_scene
@@ -154,7 +154,7 @@ def test_a_ternary_link_is_a_filled_plate_with_its_number_inside_and_a_bar_is_a_
     mech = next(p for p in sheet.panels if p.name == "structure")
     plates = [i for i in mech.items if isinstance(i, Plate)]
     assert len(plates) == 2 and all(len(p.points) == 3 for p in plates)  # links 3 (B, C, D) and 6 (E, G, H)
-    inside = {t.text: t.at for t in mech.items if isinstance(t, Text)}
+    inside = {p.number: p.number_at for p in plates}  # drawn with the plate, in its group
     assert set(inside) == {"3", "6"}
     for plate in plates:  # each number at its triangle's centroid
         c = tuple(sum(q[k] for q in plate.points) / 3 for k in (0, 1))
