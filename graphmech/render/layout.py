@@ -313,7 +313,7 @@ BAR_GAP = 1.0
 #: A fit page's margin and least gap between panels, mm: a figure for a report is cropped to
 #: its content with a small margin.
 FIT_MARGIN = 5.0
-FIT_GAP = 8.0
+FIT_GAP = 6.0
 #: A fit page's title is wrapped to the drawing's width, but not narrower than this, mm.
 FIT_TITLE_WIDTH = 80.0
 #: The longest side of a fit page over its shortest beyond which the rows are rearranged
@@ -480,7 +480,7 @@ def _fit(sheet: Sheet, sizes: Sequence[_Size], block: TitleBlockLayout | None, s
         rows = _rows(sheet.panels, sizes, limit, gap)
         row_w, row_h = _row_sizes(rows, sizes, gap)
         inner = max([fixed] + row_w)
-        title = wrap(sheet.title, max(inner, FIT_TITLE_WIDTH), style.title_size) if sheet.title else ()
+        title = balanced_wrap(sheet.title, max(inner, FIT_TITLE_WIDTH), style.title_size) if sheet.title else ()
         inner = max([inner] + [text_box_size(t, style.title_size)[0] for t in title])
         w = inner + 2.0 * m
         h = _head(title, style) + sum(row_h) + gap * max(len(rows) - 1, 0) + band + 2.0 * m

@@ -11,21 +11,25 @@ labelled with its class. Every caption and note is in the scene's notation (en, 
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 import textwrap
 from typing import Any, Sequence
 
-from graphmech.drawing.lettering import text_box_size
+from graphmech.drawing.lettering import scale_text, text_box_size
 from graphmech.drawing.notation import WORDS as COMMON, word
 from graphmech.mechanisms.topology import Mobility, Structure, Topology, roman
 from graphmech.drawing.primitives import (Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel, Plate, Polyline,
                                          Primitive, Segment, Sheet, Slider, Text)
-from graphmech.scales import format_scale, round_scale
+from graphmech.render.layout import panel_bbox
+from graphmech.scales import round_scale
 
 #: How far a group's outline stands off its links, mm.
 OUTLINE_MM = 7.0
 BOX_W, BOX_H, BOX_GAP = 34.0, 14.0, 12.0
+#: The least width a block diagram's chain goes to before it wraps into rows, mm.
+BLOCK_WIDTH = 150.0
 #: The longest line of a note under the block diagram, characters (about 2 mm each: A4's 277 mm).
 NOTE_CHARS = 100
 #: Every text of the sheet, mm (the issue's least body text).
@@ -186,25 +190,37 @@ def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequ
             items.append(Polyline(tuple(outline), "construction", closed=True, dashed=True))
             top = max(outline, key=lambda q: (q[1], q[0]))
             labels.append(Label(f"{roman(g.grade)} ({','.join(g.links)})", top, ((0.0, -1.0),), TEXT, italic=False))
+        items, moved = _numbers_clear_of_outlines(items)
+        labels += moved
     return Panel("structure", word("structure", notation, WORDS), tuple(items + labels),
-                 (format_scale("l", mu),) + tuple(notes), scales=(("l", mu),))
+                 (scale_text("l", mu),) + tuple(notes), scales=(("l", mu),))
 
 
-def block_panel(st: Structure, topo: Topology, notation: str = "en", redundant: int = 0) -> Panel:
+def block_panel(st: Structure, topo: Topology, notation: str = "en", redundant: int = 0,
+                width: float = math.inf) -> Panel:
     """The block diagram: frame and drivers (class I), then each group, joined by arrows; each
-    box's inscription set in its middle. ``redundant``: the Jacobian's p′, which names the links no
-    group takes as redundant ones."""
+    box's inscription set in its middle; a chain wider than ``width`` mm goes on in rows below,
+    the arrow turning down to the next row's first box. ``redundant``: the Jacobian's p′, which
+    names the links no group takes as redundant ones."""
     items: list[Primitive] = []
     boxes = [f"I: {topo.frame} + {', '.join(st.drivers) or '—'}"]
     boxes += [f"{roman(g.grade)}: {', '.join(g.links)}" for g in st.groups]
-    x = 0.0
+    x, y = 0.0, 0.0
+    last: tuple[float, float, float] | None = None  # the box before: left, right, bottom
     for k, text in enumerate(boxes):
         w = max(BOX_W, text_box_size(text, TEXT)[0] + 2.0 * CELL_PAD)
-        corners = ((x, 0.0), (x + w, 0.0), (x + w, BOX_H), (x, BOX_H))
+        if k and x + w > width + 1e-9 and last is not None:  # on in the next row
+            x, y = 0.0, y - BOX_H - BOX_GAP
+            mid_y = y + BOX_H + BOX_GAP / 2.0
+            start = ((last[0] + last[1]) / 2.0, last[2])
+            items.append(Polyline((start, (start[0], mid_y), (x + w / 2.0, mid_y)), "given"))
+            items.append(Arrow((x + w / 2.0, mid_y), (x + w / 2.0, y + BOX_H), "given"))
+        elif k:
+            items.append(Arrow((x - BOX_GAP, y + BOX_H / 2), (x, y + BOX_H / 2), "given"))
+        corners = ((x, y), (x + w, y), (x + w, y + BOX_H), (x, y + BOX_H))
         items.append(Polyline(corners, "given", closed=True))
-        items.append(Text(text, (x + w / 2, BOX_H / 2), TEXT))
-        if k:
-            items.append(Arrow((x - BOX_GAP, BOX_H / 2), (x, BOX_H / 2), "given"))
+        items.append(Text(text, (x + w / 2, y + BOX_H / 2), TEXT))
+        last = (x, x + w, y)
         x += w + BOX_GAP
     notes = [_say("class", notation, roman(st.grade))]
     if st.replaced:
@@ -287,8 +303,10 @@ def structure_sheet(title: str, an: Any, page: tuple[float, float], footer: tupl
             mu = an.scales.get("l") or choose_scale(ss.topology, room)
             an.scales["l"] = mu
             panels.append(mechanism_panel(ss.topology, st, mu, notes, redundant, notation))
-        if st is not None:
-            panels.append(block_panel(st, ss.topology, notation, p_red))
+        if st is not None:  # as wide as the sketch (150 mm at least), the chain in rows beyond
+            box = panel_bbox(panels[-1]) if ss.geometry else (0.0, 0.0, 0.0, 0.0)
+            sketch = box[2] - box[0]
+            panels.append(block_panel(st, ss.topology, notation, p_red, max(sketch, BLOCK_WIDTH)))
             if not ss.geometry:
                 panels[-1] = Panel(panels[-1].name, panels[-1].title, panels[-1].items, tuple(notes) + panels[-1].notes)
     return Sheet(title, tuple(panels), page, footer)
@@ -302,6 +320,27 @@ def _hull(ps: list[tuple[float, float]]) -> list[tuple[float, float]]:
     if not isinstance(hull, Polygon):  # pairs in one line: the line itself
         return [(float(x), float(y)) for x, y in hull.coords]
     return [(float(x), float(y)) for x, y in list(hull.exterior.coords)[:-1]]
+
+
+def _numbers_clear_of_outlines(items: list[Primitive]) -> tuple[list[Primitive], list[Label]]:
+    """A plate's number that an Assur group's outline crosses leaves the plate: the plate keeps
+    no number and the number becomes a label, placed clear of every stroke."""
+    from shapely.geometry import LineString, box
+
+    outlines = [LineString(i.points + i.points[:1]) for i in items if isinstance(i, Polyline) and i.role == "construction"]
+    out: list[Primitive] = []
+    moved: list[Label] = []
+    for i in items:
+        if isinstance(i, Plate) and i.number and i.number_at is not None:
+            w, h = text_box_size(i.number, i.number_size)
+            (x, y), pad = i.number_at, 0.5
+            cell = box(x - w / 2 - pad, y - h / 2 - pad, x + w / 2 + pad, y + h / 2 + pad)
+            if any(o.intersects(cell) for o in outlines):
+                out.append(dataclasses.replace(i, number=""))
+                moved.append(Label(i.number, i.number_at, (), i.number_size, italic=False))
+                continue
+        out.append(i)
+    return out, moved
 
 
 def _outline(ps: list[tuple[float, float]], off: float) -> list[tuple[float, float]]:

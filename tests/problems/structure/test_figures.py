@@ -41,7 +41,7 @@ def test_every_structure_sheet_fits_its_page(name):
     svg, warnings = render_scene(SCENES / f"{name}.toml")
     assert not [w for w in warnings if "runs off the page" in w], warnings
     if name == "dof.hfut_cases-3-2":
-        assert "μl = 0.0025 m/mm" in svg
+        assert "μ<tspan dy=\"0.875\" font-size=\"2.520\">l</tspan><tspan dy=\"-0.875\"> = 0.0025 m/mm" in svg  # μ_{l}
 
 
 def test_a_stated_scale_that_cannot_draw_the_pairs_is_refused(tmp_path):
@@ -251,3 +251,18 @@ def test_recorded_draw_calls_of_the_ic_engine_sheet():
     mechanism = next(p for p in structure_sheet("IC engine", an, (297.0, 210.0)).panels if p.name == "structure")
     outlines = [i for i in mechanism.items if isinstance(i, Polyline) and i.dashed]
     assert len(outlines) == len(an.structure.groups) == 2
+
+
+def test_a_plate_number_an_assur_outline_crosses_becomes_a_placed_label():
+    """dof.hfut_cases-3-2: the dashed outlines of groups run over plates 4 and 7, so their numbers
+    leave the plates (placed clear of every stroke, with a leader); the others stay inside."""
+    from graphmech.drawing.primitives import Label, Plate
+    from graphmech.problems.structure.check import analyse_structure
+    from graphmech.problems.structure.figures import structure_sheet
+    from graphmech.scene import load_scene
+
+    an = analyse_structure(load_scene(SCENES / "dof.hfut_cases-3-2.toml"))
+    mech = next(p for p in structure_sheet("3-2", an, (297.0, 210.0)).panels if p.name == "structure")
+    plates = [i for i in mech.items if isinstance(i, Plate)]
+    moved = {i.text for i in mech.items if isinstance(i, Label)} & {"4", "7"}
+    assert moved == {"4", "7"} and not any(p.number in moved for p in plates)
