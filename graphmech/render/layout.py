@@ -34,7 +34,7 @@ Examples
 [69.867, 184.433]
 >>> fit = layout_sheet(Sheet("t", (p, p), fit=True))
 >>> fit.page, [round(pl.frame[1], 3) for pl in fit.panels]  # cropped; one above the other
-((53.0, 50.0), [17.267, 35.133])
+((53.0, 48.0), [17.267, 33.133])
 """
 from __future__ import annotations
 
@@ -398,6 +398,31 @@ def _rows(panels: Sequence[Panel], sizes: Sequence[_Size], limit: float, gap: fl
     return rows
 
 
+def _stacks(panels: Sequence[Panel], sizes: Sequence[_Size], gap: float) -> list[list[int]]:
+    """Consecutive panels stacked one above the other (a fit page's cells): a panel goes under the
+    one before while the stack stays no taller than the sheet's tallest panel and its widths
+    within a factor of two — so short panels fill the height a tall one gives their row."""
+    tallest = max((s.h for s in sizes), default=0.0)
+    cells: list[list[int]] = []
+    for i, size in enumerate(sizes):
+        if cells and panels[i].row is None and panels[cells[-1][0]].row is None:
+            cell = cells[-1]
+            height = sum(sizes[j].h + gap for j in cell) + size.h
+            widths = [sizes[j].w for j in cell] + [size.w]
+            if height <= tallest + 1e-9 and min(widths) >= 0.5 * max(widths):
+                cell.append(i)
+                continue
+        cells.append([i])
+    return cells
+
+
+def _cell_sizes(cells: Sequence[Sequence[int]], sizes: Sequence[_Size], gap: float) -> list[_Size]:
+    """A cell's size: its one panel's, or a stack's (the widest, the heights and gaps summed)."""
+    return [sizes[c[0]] if len(c) == 1 else
+            _Size(sizes[c[0]].draw, (), (), max(sizes[j].w for j in c), sum(sizes[j].h for j in c) + gap * (len(c) - 1))
+            for c in cells]
+
+
 def _row_sizes(rows: Sequence[Sequence[int]], sizes: Sequence[_Size], gap: float) -> tuple[list[float], list[float]]:
     widths = [sum(sizes[i].w for i in r) + gap * (len(r) - 1) for r in rows]
     return widths, [max(sizes[i].h for i in r) for r in rows]
@@ -463,34 +488,40 @@ def _head(lines: Sequence[str], style: Style) -> float:
 
 
 def _fit(sheet: Sheet, sizes: Sequence[_Size], block: TitleBlockLayout | None, style: Style,
-         foot: float) -> tuple[list[list[int]], tuple[float, float], tuple[str, ...]]:
+         foot: float) -> tuple[list[list[int]], tuple[float, float], tuple[str, ...], list[list[int]]]:
     """The rows, the page and the title's lines of a fit sheet: of the ways to fill rows (every
     width limit a run of panels gives), the one whose cropped page is smallest — the most filled
     — unless it is longer than FIT_MAX_SHAPE times its width or height (the first of equals);
     the title wrapped to the drawing's width; the page holds title, rows, footer and title block
-    with FIT_MARGIN, rounded up to whole millimetres."""
+    with FIT_MARGIN, rounded up to whole millimetres. The rows are of cells: panels one by one,
+    or stacked (:func:`_stacks`), whichever fills the page better. Returns the rows (of cell
+    indices), the page, the title's lines and the cells."""
     m, gap = FIT_MARGIN, FIT_GAP
-    n = len(sizes)
-    limits = sorted({sum(s.w for s in sizes[i:j + 1]) + gap * (j - i) for i in range(n) for j in range(i, n)})
     fixed = max([text_box_size(f, style.note_size)[0] + (gap + block.width if block else 0.0)
                  for f in sheet.footer] + [block.width if block else 0.0, 1.0])
     band = max(foot, block.height + gap if block else 0.0)
-    best: tuple[float, list[list[int]], tuple[float, float], tuple[str, ...]] | None = None
-    for limit in limits or [0.0]:
-        rows = _rows(sheet.panels, sizes, limit, gap)
-        row_w, row_h = _row_sizes(rows, sizes, gap)
-        inner = max([fixed] + row_w)
-        title = balanced_wrap(sheet.title, max(inner, FIT_TITLE_WIDTH), style.title_size) if sheet.title else ()
-        inner = max([inner] + [text_box_size(t, style.title_size)[0] for t in title])
-        w = inner + 2.0 * m
-        h = _head(title, style) + sum(row_h) + gap * max(len(rows) - 1, 0) + band + 2.0 * m
-        stretch = max(w / h, h / w) / FIT_MAX_SHAPE
-        score = w * h * max(stretch, 1.0) ** 2
-        if best is None or score < best[0] - 1e-9:
-            best = (score, rows, (w, h), title)
+    best: tuple[float, list[list[int]], tuple[float, float], tuple[str, ...], list[list[int]]] | None = None
+    singles = [[i] for i in range(len(sizes))]
+    for cells in (singles, _stacks(sheet.panels, sizes, gap)):
+        csizes = _cell_sizes(cells, sizes, gap)
+        heads = [sheet.panels[c[0]] for c in cells]
+        n = len(csizes)
+        limits = sorted({sum(s.w for s in csizes[i:j + 1]) + gap * (j - i) for i in range(n) for j in range(i, n)})
+        for limit in limits or [0.0]:
+            rows = _rows(heads, csizes, limit, gap)
+            row_w, row_h = _row_sizes(rows, csizes, gap)
+            inner = max([fixed] + row_w)
+            title = balanced_wrap(sheet.title, max(inner, FIT_TITLE_WIDTH), style.title_size) if sheet.title else ()
+            inner = max([inner] + [text_box_size(t, style.title_size)[0] for t in title])
+            w = inner + 2.0 * m
+            h = _head(title, style) + sum(row_h) + gap * max(len(rows) - 1, 0) + band + 2.0 * m
+            stretch = max(w / h, h / w) / FIT_MAX_SHAPE
+            score = w * h * max(stretch, 1.0) ** 2
+            if best is None or score < best[0] - 1e-9:
+                best = (score, rows, (w, h), title, cells)
     assert best is not None
-    _, rows, (w, h), title = best
-    return rows, (float(math.ceil(w - 1e-9)), float(math.ceil(h - 1e-9))), title  # whole millimetres
+    _, rows, (w, h), title, cells = best
+    return rows, (float(math.ceil(w - 1e-9)), float(math.ceil(h - 1e-9))), title, cells  # whole millimetres
 
 
 def layout_sheet(
@@ -525,8 +556,9 @@ def layout_sheet(
     step = style.note_size * style.line_gap
     n_foot = len(sheet.footer)
     foot = footer_room(n_foot, m, style)
+    cells = [[i] for i in range(len(sizes))]
     if sheet.fit:
-        rows, page, title = _fit(sheet, sizes, block, style, foot)
+        rows, page, title, cells = _fit(sheet, sizes, block, style, foot)
     else:
         page = sheet.page
         title = (sheet.title,) if sheet.title else ()
@@ -537,6 +569,7 @@ def layout_sheet(
             if max(row_w, default=0.0) <= page[0] - 2.0 * m + 1e-9 and \
                     sum(row_h) + gap * (len(rows) - 1) <= height + 1e-9:
                 break
+    panel_sizes, sizes = sizes, _cell_sizes(cells, sizes, gap)  # the rows hold cells from here
     head = _head(title, style)
     page_w, page_h = page
     title_at = (page_w / 2.0, m + style.title_size)
@@ -566,7 +599,7 @@ def layout_sheet(
         at = _arrange(rows, sizes, room, gap)
 
     avail_w, avail_h = room[2] - room[0], room[3] - room[1]
-    for i, (panel, size) in enumerate(zip(sheet.panels, sizes)):
+    for i, (panel, size) in enumerate(zip(sheet.panels, panel_sizes)):
         if size.w > avail_w + 1e-9:
             warnings.append(
                 f"panel {panel.name!r} is {size.w:.1f} mm wide but the page leaves {avail_w:.1f} mm "
@@ -584,7 +617,14 @@ def layout_sheet(
             f"leaves {avail_h:.1f} mm; their scales μ are kept, so they run off the page"
         )
 
-    placements = tuple(_placement(sheet.panels[i], sizes[i], at[i], style) for i in range(len(sizes)))
+    corners: dict[int, XY] = {}
+    for k, cell in enumerate(cells):  # a stack's panels top-down in its cell, each centred
+        x, y = at[k]
+        for i in cell:
+            corners[i] = (x + (sizes[k].w - panel_sizes[i].w) / 2.0, y)
+            y += panel_sizes[i].h + gap
+    placements = tuple(_placement(sheet.panels[i], panel_sizes[i], corners[i], style)
+                       for i in range(len(panel_sizes)))
     return SheetLayout(placements, title_at, footer_at, tuple(warnings), (page_w, page_h),
                        None if block is None or block_at is None else (block, block_at), title)
 

@@ -349,3 +349,16 @@ def test_a_long_note_is_wrapped_to_its_drawing_or_note_width_in_even_lines() -> 
     widths = [text_box_size(t, DEFAULT.note_size)[0] for t in lines]
     assert len(lines) > 1 and " ".join(lines) == note.strip()
     assert max(widths) <= NOTE_WIDTH + 1e-9 and min(widths) > 0.5 * max(widths)  # no lone last word
+
+
+def test_a_fit_page_stacks_short_panels_beside_a_tall_one() -> None:
+    """One panel 100 mm tall and two of 40 mm: on a fit page the short ones stand one above the
+    other beside the tall one (a cell), not in a row that leaves 60 mm empty under them."""
+    tall = Panel("tall", "", (Segment((0.0, 0.0), (60.0, 100.0)),))
+    short = [Panel(f"s{k}", "", (Segment((0.0, 0.0), (50.0, 40.0)),)) for k in range(2)]
+    lay = layout_sheet(Sheet("", (tall, *short), fit=True))
+    t, a, b = (p.frame for p in lay.panels)
+    assert a[0] == pytest.approx(b[0]) and a[3] < b[1]  # stacked: same column, a above b
+    assert a[0] > t[2] and b[3] <= t[3] + 1e-9  # beside the tall one, no lower
+    area = sum((f[2] - f[0]) * (f[3] - f[1]) for f in (t, a, b))
+    assert area / (lay.page[0] * lay.page[1]) > 0.6
