@@ -31,6 +31,10 @@ _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 _SUB_CHARS = dict(zip("₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₒₓₕₖₗₘₙₚₛₜᵢᵣᵤᵥ", "0123456789+−=()aeoxhklmnpstiruv"))
 _SUP_CHARS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱ", "0123456789+−=()ni"))
 
+#: The body text of every drawing at 1:1, mm (FIGURES.md: 3.5 mm letters; scripts at
+#: SCRIPT_SCALE of it, 2.5 mm): labels, captions, numbers along axes.
+LETTER = 3.5
+
 #: The true minus sign, which drawings use instead of the hyphen.
 MINUS = "\u2212"
 

@@ -19,6 +19,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Literal, Union
 
+from graphmech.drawing.lettering import LETTER
+
 Role = Literal["given", "construction", "result", "label"]
 XY = tuple[float, float]
 
@@ -141,7 +143,7 @@ class Plate:
     #: when None) in ``number_size`` mm, as the book numbers a ternary link.
     number: str = ""
     number_at: XY | None = None
-    number_size: float = 3.5
+    number_size: float = LETTER
 
 
 @dataclass(frozen=True)
@@ -188,7 +190,7 @@ class Label:
     text: str
     anchor: XY
     avoid: tuple[XY, ...] = ()
-    size: float = 3.5  # font size, mm
+    size: float = LETTER  # font size, mm
     italic: bool = True
 
 
@@ -200,7 +202,7 @@ class Text:
 
     text: str
     at: XY
-    size: float = 3.5  # font size, mm
+    size: float = LETTER  # font size, mm
     anchor: Literal["start", "middle", "end"] = "middle"
     italic: bool = False
 

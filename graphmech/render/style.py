@@ -20,6 +20,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from graphmech.drawing.lettering import LETTER
+
 #: The style keys a backend must understand.
 STYLE_KEYS: tuple[str, ...] = (
     "given",
@@ -120,10 +122,10 @@ class Style:
     hatch_length: float = 1.8
 
     font_family: str = FONT_FAMILY
-    label_size: float = 3.5
+    label_size: float = LETTER
     title_size: float = 5.0
-    panel_title_size: float = 3.5
-    note_size: float = 3.5
+    panel_title_size: float = LETTER
+    note_size: float = LETTER
     line_gap: float = 1.4  # 1.35 let a subscript touch the next line's superscript
 
     label_gaps: tuple[float, ...] = (2.0, 4.5)

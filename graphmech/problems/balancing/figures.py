@@ -18,8 +18,7 @@ from typing import Any, Sequence
 
 from graphmech.geometry.primitives import degrees_0_360
 from graphmech.methods.balancing import Correction
-from graphmech.drawing.lettering import scale_text
-from graphmech.drawing.lettering import number
+from graphmech.drawing.lettering import LETTER, number, scale_text
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import Arrow, Circle, Label, Panel, Primitive, Segment, Sheet
 from graphmech.scales import round_scale
@@ -27,8 +26,6 @@ from graphmech.scales import round_scale
 #: The rotor's end view radius on paper, about, mm; the side view's length between the outer
 #: planes, about, mm.
 ROTOR_MM, SIDE_MM = 40.0, 120.0
-#: Letter size (the issue's least body text), mm.
-LETTER = 3.5
 
 #: The balancing sheet's words (laid out as graphmech.drawing.notation.WORDS: English, 中文,
 #: русский); «plane» is filled with I or II. Drawn text only.

@@ -31,7 +31,7 @@ import numpy as np
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
 from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile
-from graphmech.drawing.lettering import number, scale_text, text_box_size
+from graphmech.drawing.lettering import LETTER, number, scale_text, text_box_size
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
                                          Polyline, Primitive, Segment, Sheet, angle_arc)
@@ -75,7 +75,7 @@ DOT = 0.3
 #: this fine, rad — or finer, so that no chord on paper is longer than SMOOTH_CHORD mm.
 SMOOTH_STEP, SMOOTH_CHORD = math.radians(1.0), 1.0
 #: Font size of every text of the sheet (the issue's least body text), mm.
-TEXT = 3.5
+TEXT = LETTER
 #: Font size of the division numbers, mm.
 NUMBER_SIZE = TEXT
 #: Least free distance between two division numbers, mm.

@@ -25,8 +25,7 @@ import dataclasses
 
 from graphmech.errors import WrongKind
 from graphmech.methods.efficiency import Direction, ForcePolygon, StageResult, Stroke
-from graphmech.drawing.lettering import scale_text
-from graphmech.drawing.lettering import number
+from graphmech.drawing.lettering import LETTER, number, scale_text
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (XY, Arrow, Circle, GuideLine, Label, Panel, Polyline, Primitive, Segment,
                                          Sheet, Slider)
@@ -40,8 +39,6 @@ ARROW_MM = 16.0
 DIAGRAM_MM = 70.0
 #: The wedge's sketch, enlarged from its 48 mm layout to about the incline's size.
 WEDGE_SCALE = 1.4
-#: Letter size (the issue's least body text), mm.
-LETTER = 3.5
 #: A diagram (not to a force scale) is enlarged to fill its share of the page, up to this factor.
 MOST_ENLARGED = 3.0
 

@@ -47,7 +47,7 @@ from typing import Sequence
 import numpy as np
 
 from graphmech.methods.flywheel import FlywheelDesign
-from graphmech.drawing.lettering import number, scale_text, text_box_size
+from graphmech.drawing.lettering import LETTER, number, scale_text, text_box_size
 from graphmech.drawing.notation import WORDS, word
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, Circle, Label, Panel, Polyline, Primitive, Role,
                                          Segment, Sheet)
@@ -101,8 +101,6 @@ ENERGY_LEAST, ENERGY_MM = 30.0, 50.0
 #: The true motion's ω − ω_m spans about this many mm (μω a round number), and ω(φ) is
 #: sampled at this many points of the cycle.
 MOTION_MM, MOTION_SAMPLES = 40.0, 145
-#: Letter sizes: axis names and letters (the issue's 3.5 mm body text), mm.
-LETTER = 3.5
 
 #: The flywheel sheet's own words (laid out as graphmech.drawing.notation.WORDS: English, 中文,
 #: русский); «…» are filled with the symbols of the same notation (braces are the lettering's

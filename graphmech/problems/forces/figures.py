@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 
-from graphmech.drawing.lettering import number, scale_text
+from graphmech.drawing.lettering import LETTER, number, scale_text
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Role, Segment,
                                          Sheet, Slider)
@@ -68,7 +68,7 @@ FRICTION_VISIBLE_MM, FRICTION_DRAWN_MM = 1.0, 2.5
 #: of 0.003 mm: its 2.8 mm head would point anywhere); the chain runs on through its end.
 DRAWN_MIN_MM = 0.1
 #: Label size of the vectors and points, mm (the issue's rule: text ≥ 3.5 mm, scripts ≥ 2.5 mm).
-TEXT_MM = 3.5
+TEXT_MM = LETTER
 
 #: The force sheet's captions and notes: key → (English, 中文, русский), as graphmech.drawing.notation.WORDS.
 FORCE_WORDS: Mapping[str, tuple[str, str, str]] = {

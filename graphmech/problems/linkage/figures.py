@@ -16,7 +16,7 @@ from graphmech.mechanisms.linkage import Crank, Linkage, LinkPoint, RPP, RPR, RR
 from graphmech.drawing.notation import WORDS, word
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Primitive, Role, Segment, Sheet, Slider)
-from graphmech.drawing.lettering import scale_text, subscript
+from graphmech.drawing.lettering import LETTER, scale_text, subscript
 
 #: The kinematics sheets' captions in the three notations (graphmech.drawing.notation's shape);
 #: a template's {0}, {1} take a position, a link or a point.
@@ -55,8 +55,6 @@ LINE_OVERRUN = 6.0
 #: A guide stops this far (mm, along it) short of a frame pivot on its line, so its hatching
 #: never runs through the pivot's symbol (its ground line is 4.8 mm either side).
 PIVOT_CLEAR = 7.0
-#: Letters, link numbers and the ω, ε marks, mm (FIGURES.md: text ≥ 3.5 mm).
-LETTER = 3.5
 #: The marks of the other positions in one panel: B′, B″, B‴, then B₄, B₅ …
 PRIMES = ("′", "″", "‴")
 

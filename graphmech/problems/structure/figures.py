@@ -17,7 +17,7 @@ import re
 import textwrap
 from typing import Any, Sequence
 
-from graphmech.drawing.lettering import scale_text, text_box_size
+from graphmech.drawing.lettering import LETTER, scale_text, text_box_size
 from graphmech.drawing.notation import WORDS as COMMON, word
 from graphmech.mechanisms.topology import Mobility, Structure, Topology, roman
 from graphmech.drawing.primitives import (Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel, Plate, Polyline,
@@ -33,7 +33,7 @@ BLOCK_WIDTH = 150.0
 #: The longest line of a note under the block diagram, characters (about 2 mm each: A4's 277 mm).
 NOTE_CHARS = 100
 #: Every text of the sheet, mm (the issue's least body text).
-TEXT = 3.5
+TEXT = LETTER
 #: A table's row height and the free room either side of a cell's text, mm.
 ROW, CELL_PAD = 7.5, 2.5
 #: A number column's least width, mm.
