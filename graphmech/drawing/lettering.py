@@ -21,6 +21,7 @@ ordinary character, so scene text such as a title ``"a_b"`` is drawn as typed.
 from __future__ import annotations
 
 import math
+import re
 import unicodedata
 
 from graphmech.scales import ANGLE_SCALES, SCALE_INFO
@@ -54,6 +55,19 @@ def subscript(digits: str) -> str:
     'c₂'
     """
     return digits.translate(_SUBSCRIPT)
+
+
+def point_name(name: str) -> str:
+    """A point's name as a drawing letters it: the digits after its letters a subscript, an
+    apostrophe a prime (the scene writes ``S2``, ``K1``, ``C'``); any other name as written.
+
+    >>> point_name("S2"), point_name("K1'"), point_name("B"), point_name("12"), point_name("hK")
+    ('S_{2}', 'K_{1}′', 'B', '12', 'hK')
+    """
+    m = re.fullmatch(r"([^\W\d_]+?)(\d+)(['′]*)", name)
+    if m is None:
+        return name.replace("'", "′")
+    return f"{m[1]}_{{{m[2]}}}{m[3].replace(chr(39), '′')}"
 
 
 def runs(text: str) -> tuple[Run, ...]:

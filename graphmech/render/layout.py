@@ -334,16 +334,7 @@ def bar_rows(bars: Sequence[ScaleBar], width: float) -> list[list[ScaleBar]]:
     >>> [len(r) for r in bar_rows([b, b, b], 2 * b.width + BAR_SIDE_GAP)]
     [2, 1]
     """
-    rows: list[list[ScaleBar]] = []
-    used = 0.0
-    for bar in bars:
-        if rows and used + BAR_SIDE_GAP + bar.width <= width + 1e-9:
-            rows[-1].append(bar)
-            used += BAR_SIDE_GAP + bar.width
-        else:
-            rows.append([bar])
-            used = bar.width
-    return rows
+    return [[bars[i] for i in row] for row in fill_rows([b.width for b in bars], width, BAR_SIDE_GAP)]
 
 
 def _row_width(row: Sequence[ScaleBar]) -> float:
@@ -374,28 +365,42 @@ def _panel_size(panel: Panel, style: Style, label_boxes: Sequence[Box] | None) -
     return _Size(draw, lines, bars, max(draw[2] - draw[0], cap_w), draw[3] - draw[1] + cap_h)
 
 
-def _rows(panels: Sequence[Panel], sizes: Sequence[_Size], limit: float, gap: float) -> list[list[int]]:
-    """Rows as the panels ask (``Panel.row``: e.g. one row per mechanism position), the others
-    filled greedily, left to right, up to ``limit`` mm wide."""
-    rows: list[list[int]] = []
-    width = 0.0
+def fill_rows(widths: Sequence[float], limit: float, gap: float,
+              fixed: Sequence[int | None] | None = None) -> list[list[int]]:
+    """Indices of things ``widths`` wide in rows ``gap`` apart, filled greedily left to right up
+    to ``limit``; a thing with a ``fixed`` row key stands in the row of that key, in order (one
+    row per mechanism position). Panels on a sheet and scale bars under a caption alike.
+
+    >>> fill_rows([10, 10, 10, 5], 25, 2), fill_rows([10, 10, 10], 100, 2, [None, 0, 0])
+    ([[0, 1], [2, 3]], [[0], [1, 2]])
+    """
+    keys = list(fixed) if fixed is not None else [None] * len(widths)
     explicit: dict[int, list[int]] = {}
-    for i, panel in enumerate(panels):
-        if panel.row is not None:
-            explicit.setdefault(panel.row, []).append(i)
-    for i, size in enumerate(sizes):
-        row = panels[i].row
-        if row is not None:
-            if i == explicit[row][0]:
-                rows.append(explicit[row])
+    for i, key in enumerate(keys):
+        if key is not None:
+            explicit.setdefault(key, []).append(i)
+    rows: list[list[int]] = []
+    used = 0.0
+    free_row = False  # the last row is one greedy filling may go on
+    for i, w in enumerate(widths):
+        key = keys[i]
+        if key is not None:
+            if i == explicit[key][0]:
+                rows.append(explicit[key])
+                free_row = False
             continue
-        if rows and width + gap + size.w <= limit + 1e-9:
+        if rows and free_row and used + gap + w <= limit + 1e-9:
             rows[-1].append(i)
-            width += gap + size.w
+            used += gap + w
         else:
             rows.append([i])
-            width = size.w
+            used, free_row = w, True
     return rows
+
+
+def _rows(panels: Sequence[Panel], sizes: Sequence[_Size], limit: float, gap: float) -> list[list[int]]:
+    """Rows as the panels ask (``Panel.row``), the others filled greedily up to ``limit`` mm."""
+    return fill_rows([s.w for s in sizes], limit, gap, [p.row for p in panels])
 
 
 def _stacks(panels: Sequence[Panel], sizes: Sequence[_Size], gap: float) -> list[list[int]]:

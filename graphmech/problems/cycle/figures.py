@@ -30,11 +30,11 @@ from typing import Any, Sequence, cast
 import numpy as np
 
 from graphmech.construction.graph import values_at
-from graphmech.problems.linkage.figures import LETTER, caption, display, mechanism_items, polygon_items
+from graphmech.problems.linkage.figures import caption, display, mechanism_items, polygon_items
 from graphmech.drawing.diagrams import AXIS_OVERRUN, count_every, moved, numbers_every, phi_axis_numbers
 from graphmech.drawing.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Polyline, Primitive, Role, Segment, Sheet, Slider, angle_arc)
-from graphmech.drawing.lettering import number, scale_text
+from graphmech.drawing.lettering import LETTER, number, scale_text
 
 __all__ = ["cycle_sheet", "cycle_items", "polygons_items", "diagram_items", "characteristics_items", "MOST_DRAWN"]
 

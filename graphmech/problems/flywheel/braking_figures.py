@@ -10,11 +10,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from graphmech.drawing.lettering import scale_text
-from graphmech.drawing.lettering import number
+from graphmech.drawing.lettering import LETTER, number, scale_text
 from graphmech.drawing.primitives import Arrow, Label, Panel, Primitive, Segment
 from graphmech.errors import OutOfDomain
-from graphmech.problems.flywheel.figures import LETTER, fly_word
+from graphmech.problems.flywheel.figures import fly_word
 from graphmech.scales import round_scale
 
 #: The longest the t axis and the ω axis are drawn, mm (before rounding the scales up).

@@ -25,14 +25,13 @@ that measure its paper (``Panel.scales``).
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 
-from graphmech.drawing.lettering import LETTER, number, scale_text
+from graphmech.drawing.lettering import LETTER, number, point_name, scale_text
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Role, Segment,
                                          Sheet, Slider)
@@ -121,16 +120,6 @@ def force_label(name: str) -> str:
     return head + prime + sup + sub
 
 
-def point_label(name: str) -> str:
-    """A point's name lettered: the digits after its letter a subscript (``S2`` → S_{2}).
-
-    >>> point_label("S2"), point_label("s2"), point_label("B")
-    ('S_{2}', 's_{2}', 'B')
-    """
-    m = re.fullmatch(r"([A-Za-z]+?)(\d+)(['′]*)", name)
-    return f"{m[1]}_{{{m[2]}}}{m[3].replace(chr(39), '′')}" if m else name
-
-
 def group_text(group: GroupPolygon, notation: str) -> str:
     """The group's name in the notation: "group 4–5", "杆组 4–5", "driver 1" …"""
     if group.name.startswith("driver"):
@@ -217,7 +206,7 @@ def loads_items(build: LinkageConstruction, kin: PolygonKinematics, sol: Kinetos
     linkage: Linkage = build.linkage
     pos = {name: build.to_drawing(_c(complex(p[i]))) for name, p in kin.point.items()}
     # the kinematic diagram's letters as this sheet letters them: S_{2}, at least 3.5 mm
-    items = [Label(point_label(x.text), x.anchor, x.avoid, max(x.size, TEXT_MM), x.italic) if isinstance(x, Label)
+    items = [Label(point_name(x.text), x.anchor, x.avoid, max(x.size, TEXT_MM), x.italic) if isinstance(x, Label)
              else x for x in mechanism_items(build, pos)]
 
     def to_mm(z: complex) -> tuple[float, float]:
@@ -329,7 +318,7 @@ def free_body_items(build: LinkageConstruction, kin: PolygonKinematics, group: G
             items.append(Hinge(to_mm(complex(kin.point[name][i]))))
         if name in rho and rho[name] > 0:
             items.append(Circle(to_mm(complex(kin.point[name][i])), friction * rho[name] / build.mu_l))
-        items.append(Label(point_label(name), to_mm(complex(kin.point[name][i])), tuple(leaving.get(name, ())),
+        items.append(Label(point_name(name), to_mm(complex(kin.point[name][i])), tuple(leaving.get(name, ())),
                            TEXT_MM))
     # With friction a reaction is tangent to its friction circle: its line of action is moved off
     # the joint's centre so that its moment about it is the friction couple M_f — by ρ, times the
@@ -535,7 +524,7 @@ def lever_items(linkage: Linkage, kin: PolygonKinematics, lever: Lever, i: int) 
     for name, z in images.items():
         if abs(z) > 1e-9 and name not in linkage.frame_points:
             items.append(Segment((0.0, 0.0), _c(z), "construction"))
-            items.append(Label(point_label(name.lower()), _c(z), (_unit(-z),), TEXT_MM))
+            items.append(Label(point_name(name.lower()), _c(z), (_unit(-z),), TEXT_MM))
     arms = [(name, complex(f[i]), complex(at[i])) for name, at, f in lever.arms]
     largest = max([abs(v) for _, v, _ in arms], default=0.0)
     items += _arrows(arms, lambda z: _c(z), largest)
@@ -601,6 +590,6 @@ def force_sheet(title: str, build: LinkageConstruction, kin: PolygonKinematics, 
     return Sheet(title, tuple(panels), page, footer)
 
 
-__all__ = ["force_sheet", "force_label", "point_label", "loads_items", "free_body_items",
+__all__ = ["force_sheet", "force_label", "loads_items", "free_body_items",
            "polygon_items", "polygon_detail", "detail_items", "lever_items", "friction_factor", "Detail",
            "FORCE_WORDS", "READ_MIN_MM"]

@@ -15,10 +15,10 @@ import math
 from dataclasses import replace
 from typing import Any, Sequence, cast
 
-from graphmech.problems.linkage.figures import LETTER, caption, mechanism_items, prime
+from graphmech.problems.linkage.figures import caption, mechanism_items, prime
 from graphmech.methods.instant_centres import Centre, InstantCentres, centre_name, direct_centres, pair
 from graphmech.drawing.primitives import Arrow, Circle, Label, Panel, Primitive, Segment
-from graphmech.drawing.lettering import number, scale_text, subscript
+from graphmech.drawing.lettering import LETTER, number, scale_text, subscript
 from graphmech.scales import round_scale
 
 #: Radius of the polygon of links, mm.

@@ -16,7 +16,7 @@ from graphmech.mechanisms.linkage import Crank, Linkage, LinkPoint, RPP, RPR, RR
 from graphmech.drawing.notation import WORDS, word
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Primitive, Role, Segment, Sheet, Slider)
-from graphmech.drawing.lettering import LETTER, scale_text, subscript
+from graphmech.drawing.lettering import LETTER, point_name, scale_text, subscript
 
 #: The kinematics sheets' captions in the three notations (graphmech.drawing.notation's shape);
 #: a template's {0}, {1} take a position, a link or a point.
@@ -315,7 +315,7 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
             continue
         if other and name in linkage.frame_points:
             continue  # the frame is drawn once, with its letters
-        items.append(Label(name + (mark or ""), pos[name], _dirs(lines.get(name, ())), LETTER))
+        items.append(Label(point_name(name) + (mark or ""), pos[name], _dirs(lines.get(name, ())), LETTER))
     return items + numbers
 
 

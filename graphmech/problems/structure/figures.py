@@ -13,11 +13,10 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import re
 import textwrap
 from typing import Any, Sequence
 
-from graphmech.drawing.lettering import LETTER, scale_text, text_box_size
+from graphmech.drawing.lettering import LETTER, point_name, scale_text, text_box_size
 from graphmech.drawing.notation import WORDS as COMMON, word
 from graphmech.mechanisms.topology import Mobility, Structure, Topology, roman
 from graphmech.drawing.primitives import (Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel, Plate, Polyline,
@@ -73,16 +72,6 @@ WORDS: dict[str, tuple[str, str, str]] = {
 
 def _say(key: str, notation: str, *args: object) -> str:
     return word(key, notation, WORDS).format(*args)
-
-
-def letter(name: str) -> str:
-    """A point's name as the drawing letters it: a trailing number as a subscript (``K1`` → K₁).
-
-    >>> letter("K1"), letter("C′"), letter("hK"), letter("12")
-    ('K_{1}', 'C′', 'hK', '12')
-    """
-    m = re.fullmatch(r"([A-Za-z]+)(\d+)", name)
-    return f"{m.group(1)}_{{{m.group(2)}}}" if m else name
 
 
 def choose_scale(topo: Topology, room: tuple[float, float]) -> float:
@@ -180,7 +169,7 @@ def mechanism_panel(topo: Topology, st: Structure | None, mu: float, notes: Sequ
             items.append(Circle(c, 1.0, "result"))
             avoid += [n, (-n[0], -n[1])]
         if p.name:
-            labels.append(Label(letter(p.name), c, tuple(avoid), TEXT))
+            labels.append(Label(point_name(p.name), c, tuple(avoid), TEXT))
     if st is not None:
         for g in st.groups:
             ps = [q for x in g.links if x in where for q in where[x]]
@@ -224,7 +213,7 @@ def block_panel(st: Structure, topo: Topology, notation: str = "en", redundant: 
         x += w + BOX_GAP
     notes = [_say("class", notation, roman(st.grade))]
     if st.replaced:
-        notes.append(_say("replaced", notation, ", ".join(map(letter, st.replaced))))
+        notes.append(_say("replaced", notation, ", ".join(map(point_name, st.replaced))))
     if st.removed:
         notes.append(_say("removed", notation, ", ".join(st.removed)))
     said = [_say("special", notation, roman(g.grade), ", ".join(g.links)) for g in st.groups if g.grade >= 3]
@@ -292,7 +281,7 @@ def structure_sheet(title: str, an: Any, page: tuple[float, float], footer: tupl
     if ss.topology is not None and m is not None:
         notes = [formula(m)]
         if m.compound:
-            notes.append(_say("compound", notation, ", ".join(map(letter, m.compound))))
+            notes.append(_say("compound", notation, ", ".join(map(point_name, m.compound))))
         if m.rank is not None:
             notes.append(_say("rank", notation, m.rank, m.equations, m.n, m.rank, m.F_local, m.F_actual))
         st: Structure | None = an.structure
@@ -351,4 +340,4 @@ def _outline(ps: list[tuple[float, float]], off: float) -> list[tuple[float, flo
     return [(round(x, 6), round(y, 6)) for x, y in list(shape.exterior.coords)[:-1]]
 
 
-__all__ = ["WORDS", "block_panel", "cases_panel", "choose_scale", "letter", "mechanism_panel", "structure_sheet"]
+__all__ = ["WORDS", "block_panel", "cases_panel", "choose_scale", "mechanism_panel", "structure_sheet"]
