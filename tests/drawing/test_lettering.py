@@ -63,3 +63,24 @@ def test_number_has_four_significant_figures_and_a_true_minus() -> None:
 
 def test_minus_sets_signs_but_keeps_hyphens_in_words() -> None:
     assert minus("φ = -30°, four-bar, x-3") == "φ = −30°, four-bar, x-3"
+
+
+def test_a_point_name_gets_its_digits_as_a_subscript_and_its_apostrophes_as_primes() -> None:
+    from graphmech.drawing.lettering import point_name
+
+    assert [point_name(n) for n in ("S2", "K12", "C'", "c2''", "B", "E2F")] == [
+        "S_{2}", "K_{12}", "C′", "c_{2}′′", "B", "E2F"]
+    assert plain(point_name("S2")) == "S2" and runs(point_name("S2")) == (("S", 0), ("2", -1))
+
+
+def test_scale_text_states_every_scale_with_its_subscripted_symbol_and_four_figures() -> None:
+    import math
+
+    from graphmech.drawing.lettering import scale_symbol, scale_text
+    from graphmech.scales import SCALE_INFO
+
+    for key in SCALE_INFO:
+        text = scale_text(key, 0.0123456)
+        assert text.startswith(scale_symbol(key) + " = ") and "_" not in plain(text)
+    assert scale_text("phi", math.radians(4.0)) == "μ_{φ} = 4 °/mm"
+    assert scale_text("l", 0.0123456) == "μ_{l} = 0.01235 m/mm"

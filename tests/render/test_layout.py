@@ -362,3 +362,12 @@ def test_a_fit_page_stacks_short_panels_beside_a_tall_one() -> None:
     assert a[0] > t[2] and b[3] <= t[3] + 1e-9  # beside the tall one, no lower
     area = sum((f[2] - f[0]) * (f[3] - f[1]) for f in (t, a, b))
     assert area / (lay.page[0] * lay.page[1]) > 0.6
+
+
+def test_fill_rows_keeps_fixed_rows_apart_from_the_greedy_ones() -> None:
+    from graphmech.render.layout import fill_rows
+
+    assert fill_rows([10, 10, 10, 5], 25, 2) == [[0, 1], [2, 3]]
+    # a fixed row takes no greedy panel after it, and its members stand together wherever they are
+    assert fill_rows([10, 10, 10, 10], 100, 2, [0, None, 0, None]) == [[0, 2], [1, 3]]
+    assert fill_rows([50, 10], 20, 2) == [[0], [1]]  # a thing wider than the limit stands alone
