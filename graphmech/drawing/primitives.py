@@ -156,9 +156,12 @@ class Hinge:
 
 @dataclass(frozen=True)
 class FixedPivot:
-    """A frame pivot: hinge on a small triangle standing on a hatched ground line."""
+    """A frame pivot: hinge on a small triangle standing on a hatched ground line. ``base`` is
+    the unit direction from the hinge to its ground line: below (0, −1) as the book draws it;
+    None lets the renderer choose a side no link of the panel runs through."""
 
     center: XY
+    base: XY | None = None
 
 
 @dataclass(frozen=True)

@@ -62,6 +62,7 @@ from graphmech.drawing.primitives import (
     Slider,
     Text,
 )
+from graphmech.render.pivots import oriented
 from graphmech.render.scalebar import ScaleBar, scale_bar
 from graphmech.render.style import DEFAULT, Style
 from graphmech.render.titleblock import TitleBlockLayout, scale_text, title_block_layout
@@ -128,13 +129,16 @@ def item_box(item: Primitive, style: Style = DEFAULT) -> Box:
         return _box_of(list(item.points), style.plate.width / 2.0)
     if isinstance(item, Hinge):
         return _box_of([item.center], item.r + style.hinge.width / 2.0)
-    if isinstance(item, FixedPivot):
+    if isinstance(item, FixedPivot):  # drawn below, then turned onto its base's side
         cx, cy = item.center
-        top = cy + style.hinge_r + style.hinge.width / 2.0
-        bottom = cy - style.pivot_height - style.hatch_length / math.sqrt(2.0)
+        top = style.hinge_r + style.hinge.width / 2.0
+        depth = style.pivot_height + style.hatch_length / math.sqrt(2.0)
         half = max(style.pivot_ground_half, style.pivot_half_base)
         grow = max(style.frame.width, style.hatch.width) / 2.0
-        return (cx - half - grow, bottom - grow, cx + half + grow, top)
+        bx, by = item.base or (0.0, -1.0)
+        corners = [(cx + bx * a - by * b, cy + by * a + bx * b)
+                   for a in (-top, depth + grow) for b in (-half - grow, half + grow)]
+        return _box_of(corners, 0.0)
     if isinstance(item, Slider):
         return _box_of(list(slider_corners(item)), style.slider.width / 2.0)
     if isinstance(item, GuideLine):
@@ -169,6 +173,7 @@ def panel_bbox(
     ValueError
         For a panel with nothing to draw.
     """
+    panel = oriented(panel, style)
     boxes = [item_box(it, style) for it in panel.items if not isinstance(it, Label)]
     if label_boxes is None:
         boxes += [label_margin_box(it, style) for it in panel.items if isinstance(it, Label)]

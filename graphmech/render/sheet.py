@@ -43,6 +43,7 @@ from typing import Callable, Sequence, TypeVar, Union
 import numpy as np
 
 from graphmech.render.backend import Backend
+from graphmech.render.pivots import oriented
 from graphmech.render.labels import Obstacles, PlacedLabel, place_labels
 from graphmech.render.layout import PanelPlacement, layout_sheet, slider_corners
 from graphmech.render.scalebar import draw_scale_bar
@@ -208,16 +209,23 @@ def dash_pieces(points: Sequence[XY], closed: bool, pattern: Sequence[float]) ->
 
 
 def pivot_shapes(p: FixedPivot, style: Style = DEFAULT) -> list[tuple[int, Shape]]:
-    """A frame pivot: legs and ground line, hatching below it, and the hinge on top."""
+    """A frame pivot: legs and ground line, hatching beyond it, and the hinge on top — drawn
+    standing on ``p.base`` (below when None), the whole symbol turned about the hinge."""
     cx, cy = p.center
+    bx, by = p.base or (0.0, -1.0)
+    cos, sin = -by, bx  # the turn taking "below" (0, −1) to the base's direction
+
+    def turn(q: XY) -> XY:
+        x, y = q[0] - cx, q[1] - cy
+        return (cx + x * cos - y * sin, cy + x * sin + y * cos)
+
     gy = cy - style.pivot_height
     left, right = (cx - style.pivot_ground_half, gy), (cx + style.pivot_ground_half, gy)
-    out: list[tuple[int, Shape]] = [
-        (LAYER_GROUND, LineShape(p.center, (cx - style.pivot_half_base, gy), "frame")),
-        (LAYER_GROUND, LineShape(p.center, (cx + style.pivot_half_base, gy), "frame")),
-        (LAYER_GROUND, LineShape(left, right, "frame")),
-    ]
-    out += [(LAYER_GROUND, s) for s in hatch(left, right, style)]
+    legs = [LineShape(p.center, turn((cx - style.pivot_half_base, gy)), "frame"),
+            LineShape(p.center, turn((cx + style.pivot_half_base, gy)), "frame"),
+            LineShape(turn(left), turn(right), "frame")]
+    out: list[tuple[int, Shape]] = [(LAYER_GROUND, s) for s in legs]
+    out += [(LAYER_GROUND, s) for s in hatch(turn(left), turn(right), style)]
     out.append((LAYER_HINGE, CircleShape(p.center, style.hinge_r, "hinge", filled=True)))
     return out
 
@@ -280,7 +288,9 @@ def item_shapes(item: Primitive, style: Style = DEFAULT) -> list[tuple[int, Shap
 
 
 def panel_shapes(panel: Panel, style: Style = DEFAULT) -> list[Shape]:
-    """All shapes of a panel in drawing order (layer, then the panel's order)."""
+    """All shapes of a panel in drawing order (layer, then the panel's order); its frame pivots
+    stand where :func:`graphmech.render.pivots.oriented` puts their bases."""
+    panel = oriented(panel, style)
     tagged = []
     for i, item in enumerate(panel.items):
         for j, (layer, shape) in enumerate(item_shapes(item, style)):
