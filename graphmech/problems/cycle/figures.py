@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any, Sequence, cast
+from typing import Any, Mapping, Sequence, cast
 
 import numpy as np
 
@@ -35,6 +35,7 @@ from graphmech.drawing.diagrams import AXIS_OVERRUN, count_every, moved, numbers
 from graphmech.drawing.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Polyline, Primitive, Role, Segment, Sheet, Slider, angle_arc)
 from graphmech.drawing.lettering import LETTER, number, scale_text
+from graphmech.drawing.notation import word
 
 __all__ = ["cycle_sheet", "cycle_items", "polygons_items", "diagram_items", "characteristics_items", "MOST_DRAWN"]
 
@@ -475,18 +476,43 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
     return items + labels
 
 
-def _characteristics_notes(an: Any) -> tuple[str, ...]:
+#: The notes of the characteristics panel in the three notations (graphmech.drawing.notation's
+#: shape); a template's {0}, {1} … take the numbers.
+NOTES: Mapping[str, tuple[str, str, str]] = {
+    "crank_rocker_AB": ("crank-rocker (AB the crank)", "曲柄摇杆机构（AB为曲柄）", "кривошипно-коромысловый (AB — кривошип)"),
+    "crank_rocker_CD": ("crank-rocker (CD turns fully)", "曲柄摇杆机构（CD整周转动）",
+                        "кривошипно-коромысловый (CD вращается полностью)"),
+    "double_crank": ("double crank", "双曲柄机构", "двухкривошипный"),
+    "double_rocker": ("double rocker", "双摇杆机构", "двухкоромысловый"),
+    "change_point": ("change point (s + l = p + q)", "临界状态（s + l = p + q）", "переходный (s + l = p + q)"),
+    "crank": ("the crank turns fully", "曲柄整周转动", "кривошип вращается полностью"),
+    "no extremes": ("{0}: the output turns fully, no extreme positions", "{0}：从动件整周转动，无极限位置",
+                    "{0}: выходное звено вращается полностью, крайних положений нет"),
+    "gamma": ("{0} = {1}° at φ = {2}°", "{0} = {1}°（φ = {2}°）", "{0} = {1}° при φ = {2}°"),
+    "drawn": ("{0} (drawn)", "{0}（图示）", "{0} (на чертеже)"),
+    "dashed": ("{0} (B′C′, dashed)", "{0}（B′C′，虚线）", "{0} (B′C′, штриховая)"),
+    "working begins": ("{0}; position 1 (bold): the working stroke begins", "{0}；位置1（粗线）：工作行程开始",
+                       "{0}; положение 1 (жирно): начало рабочего хода"),
+    "guide bar": ("γ = 90° throughout: the block drives the bar at right angles", "γ恒为90°：滑块始终垂直推动导杆",
+                  "γ = 90° всё время: камень давит на кулису под прямым углом"),
+    "timing": ("working stroke {0}° in {1} s, return {2}° in {3} s: a turn in {4} s, n = {5} r/min",
+               "工作行程{0}°用时{1} s，回程{2}°用时{3} s：每转{4} s，n = {5} r/min",
+               "рабочий ход {0}° за {1} с, холостой {2}° за {3} с: оборот за {4} с, n = {5} об/мин"),
+}
+
+
+def _characteristics_notes(an: Any, notation: str = "en") -> tuple[str, ...]:
     dr = an.drawn
+
+    def say(key: str, *args: object) -> str:
+        return word(key, notation, NOTES).format(*args) if key in NOTES else key
+
     out = [scale_text("l", dr.mu_l)]
-    kinds = {"crank_rocker_AB": "crank-rocker (AB the crank)", "crank_rocker_CD": "crank-rocker (CD turns fully)",
-             "double_crank": "double crank", "double_rocker": "double rocker", "change_point": "change point "
-             "(s + l = p + q)", "crank": "the crank turns fully"}
-    gamma = f"{GAMMA_MIN} = {number(math.degrees(dr.gamma_min))}° at φ = {number(math.degrees(dr.gamma_min_at))}°"
+    kind = say(dr.grashof)
+    gamma = say("gamma", GAMMA_MIN, number(math.degrees(dr.gamma_min)), number(math.degrees(dr.gamma_min_at)))
     if dr.theta is None:
-        out.append(f"{kinds.get(dr.grashof, dr.grashof)}: the output turns fully, no extreme positions")
-        out.append(gamma + " (drawn)")
-        return tuple(out)
-    out.append(f"{kinds.get(dr.grashof, dr.grashof)}; position 1 (bold): the working stroke begins")
+        return tuple(out + [say("no extremes", kind), say("drawn", gamma)])
+    out.append(say("working begins", kind))
     line = f"θ = {number(math.degrees(dr.theta))}°"
     if dr.psi is not None:
         line += f", ψ = {number(math.degrees(dr.psi))}°"
@@ -495,17 +521,13 @@ def _characteristics_notes(an: Any) -> tuple[str, ...]:
     k = (math.pi + dr.theta) / (math.pi - dr.theta)
     line += f", K = (180° + θ)/(180° − θ) = {number(k)}"
     out.append(line)
-    if dr.loop.kind == "guide_bar":
-        out.append("γ = 90° throughout: the block drives the bar at right angles")
-    else:
-        out.append(gamma + " (B′C′, dashed)")
+    out.append(say("guide bar") if dr.loop.kind == "guide_bar" else say("dashed", gamma))
     t_work = an.scene.problem.characteristics.t_work
     if t_work is not None:
         work, back = math.pi + dr.theta, math.pi - dr.theta
         period = t_work * 2.0 * math.pi / work
-        out.append(f"working stroke {number(math.degrees(work))}° in {number(t_work)} s, return "
-                   f"{number(math.degrees(back))}° in {number(period - t_work)} s: a turn in {number(period)} s, "
-                   f"n = {number(60.0 / period)} r/min")
+        out.append(say("timing", number(math.degrees(work)), number(t_work), number(math.degrees(back)),
+                       number(period - t_work), number(period), number(60.0 / period)))
     return tuple(out)
 
 
@@ -553,7 +575,7 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
         if entry == "characteristics":
             head = caption("extremes " + an.drawn.loop.kind, notation)
             panels.append(Panel("characteristics", head,
-                                tuple(characteristics_items(an.drawn, an.scene.linkage)), _characteristics_notes(an),
+                                tuple(characteristics_items(an.drawn, an.scene.linkage)), _characteristics_notes(an, notation),
                                 scales=(("l", an.drawn.mu_l),)))
             if an.ranges is not None:
                 loop = an.drawn.loop

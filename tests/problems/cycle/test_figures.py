@@ -230,3 +230,25 @@ def test_common_pole_images_are_merged_where_they_coincide_and_numbered_along_a_
     assert len(texts) == len(set(texts))
     assert sum(t.startswith("c") for t in texts) <= 2 and sum(t[:1].isdigit() for t in texts) >= 8
     assert {f"b_{{{k}}}" for k in (2, 3, 5, 6)} <= set(texts)
+
+
+@pytest.mark.parametrize(("notation", "begins", "timing"), [
+    ("en", "position 1 (bold): the working stroke begins", "working stroke 210° in 7 s"),
+    ("zh", "位置1（粗线）：工作行程开始", "工作行程210°用时7 s"),
+    ("ru", "положение 1 (жирно): начало рабочего хода", "рабочий ход 210° за 7 с"),
+])
+def test_the_characteristics_notes_are_lettered_in_the_notation(notation: str, begins: str, timing: str) -> None:
+    import pathlib
+    import tomllib
+
+    from graphmech.problems import KINDS
+    from graphmech.scene import parse_scene
+    from tests.conftest import SCENES
+
+    data = tomllib.loads(pathlib.Path(SCENES / "linkage.quick_return_timing.toml").read_text(encoding="utf-8"))
+    data.setdefault("page", {})["notation"] = notation
+    scene = parse_scene(data, "quick_return")
+    sheet, _ = KINDS[scene.kind].sheet(scene, ())
+    [notes] = [p.notes for p in sheet.panels if p.name == "characteristics"]
+    assert any(begins in n for n in notes) and any(n.startswith(timing) for n in notes)
+    assert notes[0] == "μ_{l} = 0.001 m/mm"  # symbols and numbers the same in every notation
