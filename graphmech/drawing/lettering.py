@@ -36,6 +36,10 @@ _SUP_CHARS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱ", "01234
 #: SCRIPT_SCALE of it, 2.5 mm): labels, captions, numbers along axes.
 LETTER = 3.5
 
+#: A line's baseline below the middle of its box, as a fraction of its size: where to write a
+#: text that is to stand centred on a point (a label, a table's cell, a scale bar's number).
+BASELINE_DROP = 0.35
+
 #: The true minus sign, which drawings use instead of the hyphen.
 MINUS = "\u2212"
 

@@ -349,7 +349,7 @@ def _overlap_areas(boxes: np.ndarray, placed: np.ndarray) -> np.ndarray:
     return result
 
 
-def _clip(boxes: np.ndarray, segs: np.ndarray) -> np.ndarray:
+def clip_lengths(boxes: np.ndarray, segs: np.ndarray) -> np.ndarray:
     """Length of each segment (n × 4: x0, y0, x1, y1) inside its box (n × 4) (Liang–Barsky)."""
     x0, y0 = segs[:, 0], segs[:, 1]
     dx, dy = segs[:, 2] - x0, segs[:, 3] - y0
@@ -383,7 +383,7 @@ def _inside(boxes: np.ndarray, segs: np.ndarray) -> tuple[np.ndarray, np.ndarray
     if ci.shape[0] == 0:
         return np.zeros(c), np.zeros(c)
     grown = boxes[ci] + np.column_stack([-g[si], -g[si], g[si], g[si]])
-    length = _clip(grown, segs[si, :4])
+    length = clip_lengths(grown, segs[si, :4])
     return (np.bincount(ci, weights=length, minlength=c),
             np.bincount(ci, weights=(length > 1e-9).astype(float), minlength=c))
 
@@ -602,7 +602,7 @@ def _score(
                  + W_LEADER_ALONG * _along(p0[idx], p1[idx], strokes))
         if pb.shape[0]:
             k = pb.shape[0]
-            crossed = _clip(np.repeat(pb, idx.shape[0], axis=0),
+            crossed = clip_lengths(np.repeat(pb, idx.shape[0], axis=0),
                             np.tile(np.column_stack([p0[idx], p1[idx]]), (k, 1))).reshape(k, -1) > 1e-9
             extra += W_LEADER_LABEL * crossed.sum(axis=0)
         score[idx] += extra

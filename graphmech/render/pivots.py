@@ -12,10 +12,12 @@ room reckoned for it agree.
 from __future__ import annotations
 
 import dataclasses
-import math
+
+import numpy as np
 
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, FixedPivot, GuideLine, Panel, Plate, Polyline,
                                           Primitive, Segment)
+from graphmech.render.labels import clip_lengths
 from graphmech.render.style import DEFAULT, Style
 
 #: The directions a base may stand in, in the order preferred: below, right, left, above.
@@ -37,36 +39,21 @@ def _pieces(item: Primitive) -> list[tuple[XY, XY]]:
     return []
 
 
-def _inside(a: XY, b: XY, c: XY, d: XY, near: float, depth: float, half: float) -> float:
-    """Length of the piece a–b inside the base's box: from ``near`` to ``depth`` along ``d`` from
-    the pivot ``c`` (the hinge itself, where every link of the pivot starts, left out), ``half``
-    to either side (Liang–Barsky in the base's own frame)."""
-    def local(p: XY) -> XY:
-        x, y = p[0] - c[0], p[1] - c[1]
-        return (x * d[0] + y * d[1], -x * d[1] + y * d[0])  # along d, across it
-
-    (u0, v0), (u1, v1) = local(a), local(b)
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-(u1 - u0), u0 - near), (u1 - u0, depth - u0), (-(v1 - v0), v0 + half), (v1 - v0, half - v0)):
-        if p == 0.0:
-            if q < 0.0:
-                return 0.0
-            continue
-        r = q / p
-        if p < 0.0:
-            t0 = max(t0, r)
-        else:
-            t1 = min(t1, r)
-    return max(t1 - t0, 0.0) * math.hypot(u1 - u0, v1 - v0)
-
-
 def base_of(pivot: FixedPivot, pieces: list[tuple[XY, XY]], style: Style = DEFAULT) -> XY:
     """The side the pivot's base stands on: the first of BASES with least line under it (below
-    unless another side has GAIN_MM less)."""
-    depth = style.pivot_height + style.hatch_length
-    half = style.pivot_ground_half
-    near = style.hinge_r
-    lengths = [sum(_inside(a, b, pivot.center, d, near, depth, half) for a, b in pieces) for d in BASES]
+    unless another side has GAIN_MM less). Under a base: from the hinge's rim (where every link
+    of the pivot starts) to the hatching's end along the side, the ground line's half to either
+    side, measured in the base's own frame."""
+    if not pieces:
+        return BASES[0]
+    segs = np.array([(a[0], a[1], b[0], b[1]) for a, b in pieces], dtype=float) - np.tile(pivot.center, 2)
+    box = np.array([style.hinge_r, -style.pivot_ground_half, style.pivot_height + style.hatch_length,
+                    style.pivot_ground_half])
+    lengths = []
+    for dx, dy in BASES:  # each piece in the frame (along the base, across it)
+        local = np.column_stack([segs[:, 0] * dx + segs[:, 1] * dy, -segs[:, 0] * dy + segs[:, 1] * dx,
+                                 segs[:, 2] * dx + segs[:, 3] * dy, -segs[:, 2] * dy + segs[:, 3] * dx])
+        lengths.append(float(clip_lengths(np.tile(box, (len(segs), 1)), local).sum()))
     best = min(range(len(BASES)), key=lambda k: (lengths[k], k))
     return BASES[best] if lengths[0] - lengths[best] > GAIN_MM else BASES[0]
 

@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from graphmech.drawing.lettering import number, scale_symbol, text_box_size
+from graphmech.drawing.lettering import BASELINE_DROP, number, scale_symbol, text_box_size
 from graphmech.render.backend import Backend
 from graphmech.render.style import DEFAULT, Style
 from graphmech.scales import ANGLE_SCALES, SCALE_INFO
@@ -42,8 +42,6 @@ NUMBER_GAP = 1.0
 SIDE_GAP = 2.0
 #: The least free space between two neighbouring numbers, mm.
 NUMBER_SPACING = 1.5
-#: The text's baseline below the middle of its box, as a fraction of its size (as labels).
-BASELINE_DROP = 0.35
 
 
 def unit_of(symbol: str) -> str:

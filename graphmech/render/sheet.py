@@ -42,6 +42,7 @@ from typing import Callable, Sequence, TypeVar, Union
 
 import numpy as np
 
+from graphmech.drawing.lettering import BASELINE_DROP
 from graphmech.render.backend import Backend
 from graphmech.render.pivots import oriented
 from graphmech.render.labels import Obstacles, PlacedLabel, place_labels
@@ -80,8 +81,6 @@ _ROLE_LAYER = {
 }
 
 
-#: A fixed text's baseline below the point it is centred on, as a fraction of its size.
-BASELINE_DROP = 0.35
 
 
 class LayoutWarning(UserWarning):

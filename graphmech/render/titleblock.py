@@ -31,7 +31,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Mapping, Sequence
 
-from graphmech.drawing.lettering import number, text_box_size
+from graphmech.drawing.lettering import BASELINE_DROP, number, text_box_size
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import Panel, TitleBlock
 from graphmech.render.backend import Backend
@@ -55,8 +55,6 @@ MIN_LABEL = 15.0
 MIN_VALUE = 25.0
 #: Free room left and right of a cell's text, mm.
 PAD = 2.0
-#: The text's baseline below the middle of its box, as a fraction of its size (as labels).
-BASELINE_DROP = 0.35
 
 
 @dataclass(frozen=True)

@@ -308,7 +308,7 @@ def test_a_centre_line_is_dash_dot_and_a_plate_is_a_filled_outlined_polygon() ->
 # ------------------------------------------------------------------------- fixed text
 def test_text_is_set_exactly_where_the_figure_put_it_and_moves_for_nothing() -> None:
     from graphmech.drawing.primitives import Text
-    from graphmech.render.sheet import BASELINE_DROP
+    from graphmech.drawing.lettering import BASELINE_DROP
 
     cell = Text("p_{l}", (10.0, -8.0), 3.5, "end")
     # a line through its point and a label anchored there: a label would move, the text does not

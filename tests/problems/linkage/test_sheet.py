@@ -70,7 +70,7 @@ def test_the_mechanism_at_position_1_alone_in_the_first_row():
 def _sheet_and_check(name, notation=None):
     """The sheet's captions and the check's text of a reference scene, in ``notation``."""
     from graphmech.problems import sheet as sheet_of
-    from tests.conftest import ROOT, run_cli
+    from tests.conftest import ROOT
 
     text = (ROOT / "figures" / "scenes" / f"{name}.toml").read_text(encoding="utf-8")
     if notation:
