@@ -13,7 +13,8 @@ from typing import overload
 import numpy as np
 
 from graphmech.drawing.lettering import text_box_size
-from graphmech.drawing.primitives import XY, ArcArrow, Arrow, Circle, Label, Polyline, Primitive, Segment
+from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, Circle, GuideLine, Label, Polyline, Primitive,
+                                          Segment, Slider)
 
 #: Font size of the position numbers (the least body text a drawing sets, issue 15), and the
 #: least free distance between two of them, mm.
@@ -64,22 +65,39 @@ def count_every(n: int, most: int) -> int:
 
 
 @overload
+def transformed(item: Label, k: float = 1.0, dx: float = 0.0, dy: float = 0.0) -> Label: ...
+@overload
+def transformed(item: Primitive, k: float = 1.0, dx: float = 0.0, dy: float = 0.0) -> Primitive: ...
+def transformed(item: Primitive, k: float = 1.0, dx: float = 0.0, dy: float = 0.0) -> Primitive:
+    """The item enlarged ``k`` times about the origin, then moved by (dx, dy) mm: its points, and
+    the sizes that belong to the drawing (a circle's radius, a slider block); the paper sizes of
+    letters, hinges and arrowheads stay. A label stays a label.
+
+    >>> transformed(Segment((1.0, 2.0), (3.0, 4.0)), 2.0, 10.0).p1, transformed(Circle((1.0, 0.0), 2.0), 3.0).r
+    ((16.0, 8.0), 6.0)
+    """
+    def tf(p: XY) -> XY:
+        return (k * p[0] + dx, k * p[1] + dy)
+    if isinstance(item, (Segment, Arrow, GuideLine)):
+        return dataclasses.replace(item, p0=tf(item.p0), p1=tf(item.p1))
+    if isinstance(item, (ArcArrow, Circle)):
+        return dataclasses.replace(item, center=tf(item.center), r=item.r * k)
+    if isinstance(item, Polyline):
+        return dataclasses.replace(item, points=tuple(tf(p) for p in item.points))
+    if isinstance(item, Slider):
+        return dataclasses.replace(item, center=tf(item.center), length=item.length * k, width=item.width * k)
+    if isinstance(item, Label):
+        return dataclasses.replace(item, anchor=tf(item.anchor))
+    raise TypeError(f"cannot move {item!r}")
+
+
+@overload
 def moved(item: Label, dx: float, dy: float) -> Label: ...
 @overload
 def moved(item: Primitive, dx: float, dy: float) -> Primitive: ...
 def moved(item: Primitive, dx: float, dy: float) -> Primitive:
     """The item translated by (dx, dy) mm (a label stays a label)."""
-    def mv(p: XY) -> XY:
-        return (p[0] + dx, p[1] + dy)
-    if isinstance(item, (Segment, Arrow)):
-        return dataclasses.replace(item, p0=mv(item.p0), p1=mv(item.p1))
-    if isinstance(item, (ArcArrow, Circle)):
-        return dataclasses.replace(item, center=mv(item.center))
-    if isinstance(item, Polyline):
-        return dataclasses.replace(item, points=tuple(mv(p) for p in item.points))
-    if isinstance(item, Label):
-        return dataclasses.replace(item, anchor=mv(item.anchor))
-    raise TypeError(f"cannot move {item!r}")
+    return transformed(item, 1.0, dx, dy)
 
 
 def phi_axis_numbers(x: np.ndarray, every: int, y: float = 0.0) -> list[Label]:

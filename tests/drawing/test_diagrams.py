@@ -71,3 +71,17 @@ def test_moved_translates_every_kind_of_diagram_item() -> None:
 def test_moved_refuses_what_a_diagram_does_not_hold(item) -> None:
     with pytest.raises(TypeError, match="cannot move"):
         moved(item, 1.0, 1.0)
+
+
+def test_transformed_enlarges_drawing_sizes_but_keeps_paper_sizes_and_moves_every_kind() -> None:
+    from graphmech.drawing.diagrams import moved, transformed
+    from graphmech.drawing.primitives import Circle, GuideLine, Hinge, Label, Slider
+
+    block = transformed(Slider((1.0, 1.0), 0.0, 8.0, 5.0), 2.0, 1.0, 0.0)
+    assert (block.center, block.length, block.width) == ((3.0, 2.0), 16.0, 10.0)
+    assert transformed(GuideLine((0.0, 0.0), (1.0, 0.0)), 3.0).p1 == (3.0, 0.0)
+    label = transformed(Label("B", (1.0, 1.0), size=3.5), 2.0)
+    assert label.anchor == (2.0, 2.0) and label.size == 3.5  # the letter keeps its paper size
+    assert moved(Circle((0.0, 0.0), 2.0), 5.0, -1.0) == Circle((5.0, -1.0), 2.0)
+    with pytest.raises(TypeError):
+        transformed(Hinge((0.0, 0.0)), 2.0)

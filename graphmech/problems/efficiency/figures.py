@@ -21,11 +21,10 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Sequence, cast
 
-import dataclasses
 
-from graphmech.errors import WrongKind
+from graphmech.drawing.diagrams import transformed
 from graphmech.methods.efficiency import Direction, ForcePolygon, StageResult, Stroke
-from graphmech.drawing.lettering import LETTER, number, scale_text
+from graphmech.drawing.lettering import LETTER, number, point_name, scale_text
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (XY, Arrow, Circle, GuideLine, Label, Panel, Polyline, Primitive, Segment,
                                          Sheet, Slider)
@@ -67,31 +66,6 @@ def eff_word(key: str, notation: str = "en") -> str:
     ('План сил', '螺纹展开')
     """
     return word(key, notation, EFF_WORDS)
-
-
-def force_name(name: str) -> str:
-    """``"R12"`` → ``R_{12}``, ``"F0"`` → ``F_{0}`` (lettering marks)."""
-    head = name.rstrip("0123456789")
-    tail = name[len(head):]
-    return head + (f"_{{{tail}}}" if tail else "")
-
-
-def _scaled(item: Primitive, k: float) -> Primitive:
-    """A diagram's item enlarged k times about the origin (paper sizes of letters, hinges and
-    arrowheads stay)."""
-    def sc(p: XY) -> XY:
-        return (p[0] * k, p[1] * k)
-    if isinstance(item, (Segment, Arrow, GuideLine)):
-        return dataclasses.replace(item, p0=sc(item.p0), p1=sc(item.p1))
-    if isinstance(item, Polyline):
-        return dataclasses.replace(item, points=tuple(sc(p) for p in item.points))
-    if isinstance(item, Slider):
-        return dataclasses.replace(item, center=sc(item.center), length=item.length * k, width=item.width * k)
-    if isinstance(item, Circle):
-        return dataclasses.replace(item, center=sc(item.center), r=item.r * k)
-    if isinstance(item, Label):
-        return dataclasses.replace(item, anchor=sc(item.anchor))
-    raise WrongKind(f"cannot scale {item!r}")
 
 
 def _extent(items: Sequence[Primitive]) -> tuple[float, float]:
@@ -152,7 +126,7 @@ def _force_arrow(name: str, tip: XY, d: XY, length: float = ARROW_MM, at_tail: b
     d = _unit(d)
     start, end = ((tip, _add(tip, d, length)) if at_tail else (_add(tip, d, -length), tip))
     far = end if at_tail else start
-    return [Arrow(start, end, "given"), Label(force_name(name), far, ((d[0], d[1]), (-d[0], -d[1])), LETTER)]
+    return [Arrow(start, end, "given"), Label(point_name(name), far, ((d[0], d[1]), (-d[0], -d[1])), LETTER)]
 
 
 # ---------------------------------------------------------------------------- diagrams
@@ -314,7 +288,7 @@ def polygon_items(polygons: Sequence[ForcePolygon]) -> list[Primitive]:
                 continue
             items.append(Arrow(s.start, s.end, "result" if s.name in ("F", "R", "R12", "R32", "R31") else "given"))
             d = _unit((s.end[0] - s.start[0], s.end[1] - s.start[1]))
-            items.append(Label(force_name(s.name), _mid(s.start, s.end), ((d[0], d[1]), (-d[0], -d[1])), LETTER))
+            items.append(Label(point_name(s.name), _mid(s.start, s.end), ((d[0], d[1]), (-d[0], -d[1])), LETTER))
     return items
 
 
@@ -354,7 +328,7 @@ def efficiency_sheet(title: str, problem: EfficiencyProblem, strokes: dict[Direc
             # the diagram fills its share of the page: alone, most of it; beside polygons, half
             share = 1.0 if "polygon" not in show else 0.45
             k = enlargement(items, (share * (page[0] - 60.0), 0.5 * (page[1] - 60.0)))
-            items = [_scaled(i, k) for i in items]
+            items = [transformed(i, k) for i in items]
         panels.append(Panel("diagram", head, tuple(items), notes))
     if "polygon" in show:
         for d, st in strokes.items():
@@ -369,4 +343,4 @@ def efficiency_sheet(title: str, problem: EfficiencyProblem, strokes: dict[Direc
     return Sheet(title, tuple(panels), page, footer)
 
 
-__all__ = ["EFF_WORDS", "eff_word", "efficiency_sheet", "enlargement", "force_name", "polygon_items"]
+__all__ = ["EFF_WORDS", "eff_word", "efficiency_sheet", "enlargement", "polygon_items"]

@@ -78,9 +78,9 @@ def test_a_long_chain_of_machines_wraps_on_its_page(tmp_path):
 
 
 def test_force_names_take_their_numbers_as_subscripts():
-    from graphmech.problems.efficiency.figures import force_name
+    from graphmech.drawing.lettering import point_name  # a force's name is lettered as a point's
 
-    assert (force_name("R12"), force_name("F0"), force_name("R31"), force_name("Q")) == ("R_{12}", "F_{0}", "R_{31}", "Q")
+    assert (point_name("R12"), point_name("F0"), point_name("R31"), point_name("Q")) == ("R_{12}", "F_{0}", "R_{31}", "Q")
 
 
 def test_polygon_items_draw_the_real_sides_once_and_the_ideal_ones_dashed():
