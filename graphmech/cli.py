@@ -1,9 +1,9 @@
-"""The ``graphmech`` command: render, check, bench.
+"""The ``graphmech`` command: render, check, batch, bench.
 
 Exit status: 0 success; 1 a measured value is out of tolerance; 2 bad input (one line naming
 the file, the key path and what is wrong — never a traceback). Output files are written to a
 temporary file and renamed, so a failure leaves nothing half-written and an existing file
-untouched.
+untouched. Nothing heavy is imported before a command needs it: ``--help`` loads no numpy.
 """
 from __future__ import annotations
 
@@ -16,11 +16,10 @@ import warnings
 from pathlib import Path
 from typing import Any, NoReturn, Sequence
 
-import numpy as np
-
-from graphmech.errors import COMMAND_LINE, GraphmechError, SceneError, printable
+from graphmech.errors import COMMAND_LINE, GraphmechError, SceneError, one_line, printable
 from graphmech.files import write_atomic
 from graphmech.scales import FIT, PAPER
+from graphmech.version import __version__
 
 EXIT_OK, EXIT_OUT_OF_TOLERANCE, EXIT_BAD_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
 
@@ -43,30 +42,83 @@ def _paper(text: str) -> str:
     return names[text.casefold()]
 
 
-def _parser() -> argparse.ArgumentParser:
-    import graphmech
+#: What --help ends with: where the format is written, and the exit codes.
+EPILOG = """\
+The scene format, with an example of every feature: docs/scene-format.md (in the repository and
+installed with the package); the example scenes: figures/scenes.
 
-    p = _Parser(prog="graphmech", description="Textbook graphical methods as exact, checked constructions.")
-    p.add_argument("--version", action="version", version=f"graphmech {graphmech.__version__}")
+exit status:
+  0  done; every measured value within tolerance
+  1  a measured value is out of tolerance (check)
+  2  bad input or a construction that cannot be made: one line on stderr naming the file, the
+     key path and the reason; nothing is written (batch: the other jobs are)
+  3  an internal error (a bug: please report it with the scene)
+"""
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="graphmech", description="Textbook graphical methods as exact, checked constructions.",
+                epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--version", action="version", version=f"graphmech {__version__}")
+    quiet = argparse.ArgumentParser(add_help=False)
+    quiet.add_argument("-q", "--quiet", action="store_true", help="no warnings on stderr (errors still)")
+    varied = argparse.ArgumentParser(add_help=False)
+    varied.add_argument("--set", action="append", default=[], metavar="KEY=V1[,V2…]", dest="assign",
+                        help="vary the scene: a key path as messages print it (driver.angle, dyad[0].lengths[1]) "
+                             "and values in the scene's unit; repeatable: one run per combination")
+    varied.add_argument("--page", type=_paper, metavar="SIZE", help=PAGE_HELP)
+    figure = argparse.ArgumentParser(add_help=False)
+    figure.add_argument("--format", choices=FORMATS, help="svg, pdf (true size) or png (default: -o's extension, "
+                                                           "else svg)")
+    figure.add_argument("--dpi", type=_dpi, metavar="N", help="PNG resolution, dots per inch (default 150)")
     sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
-    r = sub.add_parser("render", help="draw a scene to SVG")
+    r = sub.add_parser("render", help="draw a scene to SVG, PDF or PNG", parents=[quiet, varied, figure],
+                       epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
     r.add_argument("scenes", nargs="+", metavar="SCENE")
-    r.add_argument("-o", "--output", help="output SVG (one scene only)")
-    r.add_argument("-d", "--directory", help="write <scene name>.svg into this folder")
-    r.add_argument("--page", type=_paper, metavar="SIZE", help=PAGE_HELP)
-    c = sub.add_parser("check", help="the check table: graphical vs exact, and verdicts on measured values")
+    r.add_argument("-o", "--output", help="the output file, .svg, .pdf or .png (one figure only)")
+    r.add_argument("-d", "--directory", help="write <scene name>[-<key>=<value>…].svg into this folder")
+    c = sub.add_parser("check", help="the check table: graphical vs exact, and verdicts on measured values",
+                       parents=[quiet, varied], epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
     c.add_argument("scene", metavar="SCENE")
     c.add_argument("--json", action="store_true", help="machine-readable output")
     c.add_argument("--measured", action="append", default=[], metavar="NAME=VALUE",
                    help="a value you measured: v_C=0.26 (SI) or pc=52 (drawn mm); repeatable, or comma-separated")
     c.add_argument("--precision", type=float, metavar="MM", help="drawing precision, mm (default: the scene's, else 0.5)")
-    c.add_argument("--page", type=_paper, metavar="SIZE",
-                   help="the paper the scales are chosen for, instead of the scene's [page] size: " + PAPERS)
+    t = sub.add_parser("batch", help="figures and checks of many scenes and variants, on all cores",
+                       parents=[quiet, varied, figure], epilog=EPILOG,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    t.add_argument("scenes", nargs="+", metavar="SCENE")
+    t.add_argument("-d", "--directory", required=True, metavar="DIR",
+                   help="write <name>.svg (or .pdf, .png) and <name>.json, its check, for each")
+    t.add_argument("-j", "--jobs", type=_jobs, metavar="N", help="processes (default: every core)")
     b = sub.add_parser("bench", help="run time and error of the graphical methods against the exact ones")
     b.add_argument("--json", action="store_true")
     b.add_argument("-o", "--output", metavar="DIR", help="also write bench.json and log-log plots of error and time into DIR")
     b.add_argument("--quick", action="store_true", help="fewer repetitions")
     return p
+
+
+#: The figure formats (graphmech.render.export.FORMATS, named here so --help imports nothing).
+FORMATS = ("svg", "pdf", "png")
+#: The PNG resolutions --dpi takes.
+DPI_RANGE = (10.0, 2400.0)
+
+
+def _dpi(text: str) -> float:
+    try:
+        dpi = float(text)
+    except ValueError:
+        dpi = math.nan
+    if not DPI_RANGE[0] <= dpi <= DPI_RANGE[1]:
+        raise argparse.ArgumentTypeError(f"{text!r}: give a number of dots per inch from {DPI_RANGE[0]:g} "
+                                         f"to {DPI_RANGE[1]:g}")
+    return dpi
+
+
+def _jobs(text: str) -> int:
+    if not text.isdigit() or not 1 <= int(text) <= 256:
+        raise argparse.ArgumentTypeError(f"{text!r}: give a number of processes from 1 to 256")
+    return int(text)
 
 
 def say(text: str) -> None:
@@ -78,6 +130,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     args.current = None  # the scene being read, for the messages
     try:
+        import numpy as np
+
         # Numerical trouble is ours to detect and say in words (a warning naming the value, or a
         # refusal); numpy's and the libraries' own warnings never reach the user's stderr.
         with warnings.catch_warnings(), np.errstate(all="ignore"):
@@ -86,12 +140,11 @@ def main(argv: Sequence[str] | None = None) -> int:
                 return _render(args)
             if args.command == "check":
                 return _check(args)
+            if args.command == "batch":
+                return _batch(args)
             return _bench(args)
-    except SceneError as e:
-        say(e.one_line(_file_name(args)))
-        return EXIT_BAD_INPUT
-    except GraphmechError as e:  # a construction that cannot be made, or another refusal
-        say(f"{_file_name(args) or 'graphmech'}: {e}")
+    except GraphmechError as e:  # a bad scene, a construction that cannot be made, another refusal
+        say(one_line(e, _file_name(args)))
         return EXIT_BAD_INPUT
     except OSError as e:
         say(f"graphmech: {e.filename or ''}{': ' if e.filename else ''}{e.strerror or e}")
@@ -108,35 +161,64 @@ def _file_name(args: argparse.Namespace) -> str | None:
     return Path(args.current).name if args.current else None
 
 
+def _warn(args: argparse.Namespace, where: str, found: Sequence[str]) -> None:
+    """The warnings found while doing ``where``, one line each, unless -q."""
+    if not args.quiet:
+        for w in found:
+            say(f"{where}: warning: {w}")
+
+
+def _variants(args: argparse.Namespace) -> list[dict[str, Any]]:
+    from graphmech.variants import combinations, parse_assignment
+
+    return combinations([parse_assignment(a) for a in args.assign])
+
+
 # ---------------------------------------------------------------------------- render
 
 
-def _render(args: argparse.Namespace) -> int:
-    from graphmech.scene import render_scene
+def _figure_format(args: argparse.Namespace) -> str:
+    """The format of the figures: --format, else -o's extension, else SVG; -o's extension must
+    be that format's (never SVG bytes in a .png)."""
+    from graphmech.render.export import format_of
 
-    if args.output and len(args.scenes) > 1:
-        say("graphmech: -o takes one scene; use -d DIR for several")
+    if args.output:
+        return format_of(args.output, args.format)
+    return args.format or "svg"
+
+
+def _render(args: argparse.Namespace) -> int:
+    from graphmech import batch
+
+    variants = _variants(args)
+    todo = batch.jobs(args.scenes, variants, args.page)
+    if args.output and len(todo) > 1:
+        many = "scene" if len(args.scenes) > 1 else "variant"
+        say(f"graphmech: -o takes one figure; this makes {len(todo)} (one per {many}): use -d DIR")
         return EXIT_BAD_INPUT
-    outputs = []
-    for s in args.scenes:  # render everything first: one bad scene writes nothing
-        args.current = s  # for the message if it cannot be constructed
-        svg, found = render_scene(s, args.page)
-        for w in found:
-            say(f"{_file_name(args)}: warning: {w}")
-        if args.output:
-            out = Path(args.output)
-        else:
-            out = Path(args.directory or ".") / (Path(s).stem + ".svg")
-        outputs.append((out, svg))
-    for out, svg in outputs:
+    fmt = _figure_format(args)
+    options = batch.Options(figure=fmt, dpi=args.dpi)
+    out_dir = Path(args.directory or ".")
+    if args.directory and not out_dir.is_dir():
+        say(f"graphmech: {out_dir}: folder does not exist")
+        return EXIT_BAD_INPUT
+    results = batch.run(todo, options)  # everything first: one bad scene writes nothing
+    for r in results:
+        if r.error is not None:
+            say(r.error)
+            return EXIT_BAD_INPUT
+        _warn(args, r.job.label, r.warnings)
+    outputs = [(Path(args.output) if args.output else out_dir / f"{r.name}.{fmt}", r.figure) for r in results]
+    for out, _ in outputs:
         if not Path(os.path.realpath(out)).parent.is_dir():
             say(f"graphmech: {out}: folder does not exist")
             return EXIT_BAD_INPUT
         if out.is_dir():
             say(f"graphmech: {out}: is a folder; give a file name")
             return EXIT_BAD_INPUT
-    for out, svg in outputs:
-        write_atomic(out, svg)
+    for out, data in outputs:
+        assert data is not None
+        write_atomic(out, data)
         print(out)
     return EXIT_OK
 
@@ -161,55 +243,72 @@ def _parse_measured(items: Sequence[str]) -> list[tuple[str, float]]:
 
 
 def _check(args: argparse.Namespace) -> int:
-    from graphmech.problems import check, with_precision
-    from graphmech.scene import load_scene
-
+    from graphmech import batch
     from graphmech.tolerances import MAX_PRECISION_MM
 
     if args.precision is not None and not 0 < args.precision <= MAX_PRECISION_MM:
         say(f"graphmech: --precision must be a number of mm above 0 and at most {MAX_PRECISION_MM:g}")
         return EXIT_BAD_INPUT
-    extra = _parse_measured(args.measured)
+    extra = tuple(_parse_measured(args.measured))
+    variants = _variants(args)
     args.current = args.scene
-    scene = with_precision(load_scene(args.scene, args.page), args.precision)
-    an, verdicts, extra_doc, lines = check(scene, tuple(extra))
-    bad = any(not v.ok for v in verdicts)
+    options = batch.Options(figure=None, check=True, measured=extra, precision=args.precision)
+    if not args.assign:  # one scene as written: its table, or its refusal
+        table = batch.problem(batch.Job(args.scene, {}, args.page)).check(extra, args.precision)
+        print(table.to_json() if args.json else table.text())
+        if not args.json:
+            _warn(args, _file_name(args) or "", table.warnings)
+        return EXIT_OUT_OF_TOLERANCE if not table.ok else EXIT_OK
+    results = batch.run(batch.jobs([args.scene], variants, args.page), options)
+    good = [r for r in results if r.table is not None]
     if args.json:
-        doc = {"quantities": [r.as_dict() for r in an.rows], "measured": [v.as_dict() for v in verdicts],
-               "warnings": list(an.warnings), "scales": an.scales, **extra_doc}
-        print(json.dumps(doc, indent=1, ensure_ascii=False, allow_nan=False))
-    else:
-        print(_table(an, verdicts))
-        for line in lines:
-            print(line)
-        for w in an.warnings:
-            say(f"{_file_name(args)}: warning: {w}")
-    return EXIT_OUT_OF_TOLERANCE if bad else EXIT_OK
+        print(json.dumps(batch.check_documents(results), indent=1, ensure_ascii=False, allow_nan=False))
+    elif good:
+        print(batch.variants_table(results))
+    for r in results:
+        if r.error is not None:
+            say(r.error)
+        elif not args.json:
+            _warn(args, r.job.label, r.warnings)
+    if len(good) < len(results):
+        return EXIT_BAD_INPUT
+    return EXIT_OUT_OF_TOLERANCE if any(not r.table.ok for r in good if r.table) else EXIT_OK
 
 
-def _table(an: Any, verdicts: Sequence[Any]) -> str:
-    lines = [f"{an.scene.title}", "  ".join(an.scale_notes())]
-    if an.rows:
-        lines.append(f"{'quantity':<16} {'drawn mm':>11} {'μ':>11} {'graphical':>16} {'exact':>16} {'rel.error':>9}  unit")
-        for r in an.rows:
-            drawn = "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}"
-            flag = "  ILL-CONDITIONED" if r.ill_conditioned else ""
-            if r.error_estimate is not None:  # a discretised or read-off value: how accurate it says it is
-                flag += f"  ±{_percent(r.error_estimate)} ({r.basis or r.error_source})"
-            lines.append(f"{r.name:<16} {drawn:>11} {r.scale:>11.5g} {r.graphical:>16.9g} {r.exact:>16.9g}"
-                         f" {r.rel_error:>9.1e}  {r.unit}{flag}")
-    if verdicts:
-        lines.append(f"{'measured':<16} {'value':>11} {'expected':>13} {'± tol':>9}  verdict")
-        for v in verdicts:
-            lines.append(f"{v.name:<16} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
-                         f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
-    return "\n".join(lines)
+# ---------------------------------------------------------------------------- batch
 
 
-def _percent(fraction: float) -> str:
-    """A relative error as the table prints it: '8 %', '0.013 %', '<1e-10 %'."""
-    p = 100.0 * fraction
-    return "<1e-10 %" if p < 1e-10 else f"{p:.2g} %"
+def _batch(args: argparse.Namespace) -> int:
+    from graphmech import batch
+
+    out_dir = Path(args.directory)
+    if not out_dir.is_dir():
+        say(f"graphmech: {out_dir}: folder does not exist")
+        return EXIT_BAD_INPUT
+    fmt = args.format or "svg"
+    todo = batch.jobs(args.scenes, _variants(args), args.page)
+    failed = 0
+
+    def write(r: batch.Result) -> None:  # as each job is done: the others go on whatever it met
+        nonlocal failed
+        if r.error is None:
+            assert r.figure is not None and r.table is not None
+            try:
+                write_atomic(out_dir / f"{r.name}.{fmt}", r.figure)
+                write_atomic(out_dir / f"{r.name}.json", r.table.to_json() + "\n")
+            except OSError as e:
+                r = batch.Result(r.job, error=f"{r.job.label}: {e.strerror or e}")
+        if r.error is not None:
+            failed += 1
+            say(r.error)
+            return
+        _warn(args, r.job.label, r.warnings)
+        print(out_dir / f"{r.name}.{fmt}")
+
+    batch.run(todo, batch.Options(figure=fmt, dpi=args.dpi, check=True), args.jobs, done=write)
+    if failed:
+        say(f"graphmech: {failed} of {len(todo)} failed; the other {len(todo) - failed} written")
+    return EXIT_BAD_INPUT if failed else EXIT_OK
 
 
 # ---------------------------------------------------------------------------- bench

@@ -50,6 +50,17 @@ class SceneError(GraphmechError, ValueError):
         return printable(": ".join([w for w in where if w] + [f"{reason}{more}"]))
 
 
+def one_line(error: GraphmechError, file: str | None = None) -> str:
+    """What the command prints for ``error`` met while doing ``file``: one line, the file first.
+
+    >>> one_line(GraphmechError("c: the circles do not meet"), "crank.toml")
+    'crank.toml: c: the circles do not meet'
+    """
+    if isinstance(error, SceneError):
+        return error.one_line(file)
+    return printable(f"{file or 'graphmech'}: {error}")
+
+
 class DegenerateConstruction(GraphmechError, ArithmeticError):
     """A construction step has no (unique) result: parallel lines, circles that do not meet.
 

@@ -147,6 +147,12 @@ def load_scene(path: str | os.PathLike[str], page: str | None = None) -> Scene[A
         For an unreadable, oversized, non-UTF-8 or malformed file, and for every problem
         :func:`parse_scene` finds; messages start with the file name.
     """
+    return parse_scene(read_data(path)[0], Path(path).name, page)
+
+
+def read_data(path: str | os.PathLike[str]) -> tuple[dict[str, Any], bytes]:
+    """A scene file's TOML data, unvalidated, and its bytes (for :func:`id_prefix`); the
+    file's problems (unreadable, oversized, not UTF-8, not TOML) raised as in :func:`load_scene`."""
     source = Path(path).name
     try:
         with open(path, "rb") as fh:
@@ -158,6 +164,12 @@ def load_scene(path: str | os.PathLike[str], page: str | None = None) -> Scene[A
             [("", "file is larger than 1 MiB; a scene is a few kilobytes, refusing to read it")],
             source,
         )
+    return parse_toml(raw, source), raw
+
+
+def parse_toml(raw: bytes, source: str = "scene") -> dict[str, Any]:
+    """TOML text (UTF-8 bytes, a BOM allowed) as data; its problems as a one-line SceneError
+    naming the line."""
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
@@ -172,7 +184,7 @@ def load_scene(path: str | os.PathLike[str], page: str | None = None) -> Scene[A
             source,
         ) from None
     try:
-        data = tomllib.loads(text)
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         message = str(exc)
         m = re.search(r"\(at line (\d+), column (\d+)\)", message)
@@ -188,24 +200,31 @@ def load_scene(path: str | os.PathLike[str], page: str | None = None) -> Scene[A
         ) from None
     except RecursionError:
         raise SceneError([("", "invalid TOML: nested too deeply")], source) from None
-    return parse_scene(data, source, page)
 
 
 def render_scene(path: str | os.PathLike[str], page: str | None = None) -> tuple[str, list[str]]:
     """The SVG text of a scene file and the warnings found while making it; ``page`` replaces
     the scene's ``[page] size`` (see :func:`parse_scene`)."""
-    import graphmech
+    return draw(load_scene(path, page), id_prefix(path))
+
+
+def draw(scene: Scene[Any], prefix: str) -> tuple[str, list[str]]:
+    """The SVG text of a scene and the warnings found while making it; element ids start with
+    ``prefix`` (:func:`id_prefix`)."""
     from graphmech.render.svg import render_svg  # svgwrite only when a drawing is made
+    from graphmech.version import __version__
 
-    scene = load_scene(path, page)
-    drawing, warnings = sheet(scene, (f"graphmech {graphmech.__version__}",))
+    drawing, warnings = sheet(scene, (f"graphmech {__version__}",))
     warnings = list(warnings)
-    return render_svg(drawing, id_prefix(path), on_warning=warnings.append), warnings
+    return render_svg(drawing, prefix, on_warning=warnings.append), warnings
 
 
-def id_prefix(path: str | os.PathLike[str]) -> str:
-    """Element ids start with a hash of the scene, so two figures inline on one page don't clash."""
-    return "g" + hashlib.sha256(Path(path).read_bytes()).hexdigest()[:8]
+def id_prefix(path: str | os.PathLike[str] | bytes) -> str:
+    """Element ids start with a hash of the scene (a file, or its bytes), so two figures inline
+    on one page don't clash."""
+    raw = path if isinstance(path, bytes) else Path(path).read_bytes()
+    return "g" + hashlib.sha256(raw).hexdigest()[:8]
 
 
-__all__ = ["MAX_BYTES", "Scene", "id_prefix", "load_scene", "parse_scene", "render_scene", "with_page"]
+__all__ = ["MAX_BYTES", "Scene", "draw", "id_prefix", "load_scene", "parse_scene", "parse_toml", "read_data",
+           "render_scene", "with_page"]

@@ -46,7 +46,7 @@ PACKAGE = ROOT / "graphmech"
 #: ``__init__`` is graphmech/__init__.py alone); a module is in the layer of its longest prefix.
 CONTRACTS: dict[str, tuple[str, str]] = {
     # layer          modules          may import
-    "base":         ("__init__ errors tolerances scales files timing accuracy", ""),
+    "base":         ("version errors tolerances scales files timing accuracy", ""),
     "geometry":     ("geometry",     "base"),
     "construction": ("construction", "geometry base"),
     "mechanisms":   ("mechanisms",   "construction geometry base"),
@@ -58,10 +58,15 @@ CONTRACTS: dict[str, tuple[str, str]] = {
     "render":       ("render",       "drawing base"),
     # the registry, judging, reader and one package per kind (kinds are found on disk)
     "problems":     ("problems",     "methods drawing render exact mechanisms construction geometry base"),
-    "scene":        ("scene",        "problems render drawing mechanisms base"),
-    "bench":        ("bench",        "scene problems methods drawing render exact mechanisms construction geometry base"),
-    "cli":          ("cli",          "bench scene problems methods drawing render exact mechanisms construction "
-                                     "geometry base"),
+    "scene":        ("scene variants", "problems render drawing mechanisms base"),
+    # the Python API (a Problem, its check table and drawing) and what runs many of them
+    "api":          ("api batch",    "scene problems render drawing base"),
+    "bench":        ("bench",        "api scene problems methods drawing render exact mechanisms construction geometry "
+                                     "base"),
+    "cli":          ("cli",          "package bench api scene problems methods drawing render exact mechanisms "
+                                     "construction geometry base"),
+    # `import graphmech`: the version, and the API loaded on first use (PEP 562)
+    "package":      ("__init__",     "api base"),
     # `python -m graphmech`: the only module that may import cli
     "main":         ("__main__",     "cli"),
 }
@@ -642,7 +647,7 @@ def test_checker_classifies_by_the_longest_prefix():
     assert layer_of("graphmech.a.b.c", contracts) == "high"
     assert layer_of("graphmech.ab", contracts) is None  # a prefix is a whole name
     assert layer_of("graphmech.other", contracts) is None  # __init__ names graphmech/__init__.py alone
-    assert layer_of("graphmech.__main__") == "main" and layer_of("graphmech") == "base"
+    assert layer_of("graphmech.__main__") == "main" and layer_of("graphmech") == "package"
 
 
 def test_checker_wants_every_module_in_a_layer_and_every_import_to_exist():

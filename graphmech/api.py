@@ -1,0 +1,286 @@
+"""The Python API: a scene as a :class:`Problem` — its check table, its drawing, its variants.
+
+>>> import graphmech as gm
+>>> p = gm.loads('''
+... title = "Slider-crank"
+... find = ["v_C", "omega_2"]
+... units = {length = "mm", angle = "deg"}
+... frame = {A = [0, 0]}
+... driver = {type = "crank", link = "1", pivot = "A", tip = "B", length = 50, angle = 90, omega_rad_s = 10}
+... [[dyad]]
+... type = "RRP"
+... joints = ["B", "C"]
+... links = ["2", "3"]
+... length = 150
+... guide = {through = [0, 0], angle = 0}
+... branch = "forward"
+... ''')
+>>> table = p.check()
+>>> [row.name for row in table]
+['v_C', 'omega_2']
+>>> table["v_C"].exact, table["v_C"].rel_error < 1e-9
+(-0.5, True)
+>>> verdict = p.check(measured={"v_C": -0.49}).measured[0]   # within ±0.5 mm of drawing × μv?
+>>> verdict.ok, verdict.tolerance
+(False, 0.005)
+>>> round(p.replace({"driver.angle": 30}).check()["v_C"].exact, 6)
+-0.323193
+>>> p.render().svg.startswith("<svg")
+True
+
+Every function here raises :class:`~graphmech.errors.SceneError` (a bad scene or key path) or
+another :class:`~graphmech.errors.GraphmechError` (a construction that cannot be made) with the
+one-line message the command prints.
+"""
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, overload
+
+from graphmech.errors import GraphmechError, SceneError
+from graphmech.problems import check as check_scene
+from graphmech.problems import with_precision
+from graphmech.problems.judging import Row, Verdict
+from graphmech.problems.reader import Scene
+from graphmech.scene import draw, id_prefix, parse_scene, parse_toml, read_data
+from graphmech.variants import Assignment, replace, value_text, variant_name
+
+#: The fields of a check row, as ``check --json`` writes them (:meth:`Row.as_dict`).
+ROW_FIELDS = ("name", "unit", "drawn_mm", "scale", "graphical", "exact", "rel_error", "error_source",
+              "error_estimate", "basis", "ill_conditioned")
+
+
+# ------------------------------------------------------------------------------ the problem
+
+
+class Problem:
+    """A validated scene: what :func:`load`, :func:`loads` and :func:`from_dict` return.
+
+    ``name`` is the file's stem (with a variant's assignments, ``crank-driver.angle=60``),
+    ``title`` and ``kind`` the scene's; ``scene`` the validated :class:`Scene` (SI units);
+    ``data`` the TOML data it was read from; ``variant`` the assignments that made it from its
+    original (empty for a scene as written).
+    """
+
+    def __init__(self, data: Mapping[str, Any], source: str = "scene", *, raw: bytes | None = None,
+                 page: str | None = None, variant: Assignment | None = None) -> None:
+        self.data = data
+        self.source = source
+        self.page = page
+        self.variant: Assignment = dict(variant or {})
+        self.scene: Scene[Any] = parse_scene(dict(data), source, page)
+        # ids as the command gives them for the same file; a variant's differ from its original's
+        base = raw if raw is not None else json.dumps(data, sort_keys=True, default=str).encode()
+        self._raw = base
+        tail = "".join(f"\n{k}={value_text(v)}" for k, v in self.variant.items()).encode()
+        self.prefix = id_prefix(base + tail)
+
+    @property
+    def name(self) -> str:
+        return variant_name(Path(self.source).stem, self.variant)
+
+    @property
+    def title(self) -> str:
+        return self.scene.title
+
+    @property
+    def kind(self) -> str:
+        return self.scene.kind
+
+    def __repr__(self) -> str:
+        return f"<graphmech.Problem {self.name!r}: {self.kind}, {self.title!r}>"
+
+    def check(self, measured: Mapping[str, float] | Sequence[tuple[str, float]] | None = None,
+              precision: float | None = None) -> CheckTable:
+        """The check table; ``measured`` judges your own values (``{"pc": 40.5}`` drawn mm,
+        ``{"v_C": 0.26}`` SI) within ``precision`` mm of drawing (default: the scene's)."""
+        pairs = tuple((measured.items() if isinstance(measured, Mapping) else measured) or ())
+        extra = tuple((str(k), _number(k, v)) for k, v in pairs)
+        an, verdicts, doc, lines = check_scene(with_precision(self.scene, precision), extra)
+        return CheckTable(title=self.title, rows=tuple(an.rows), measured=tuple(verdicts),
+                          warnings=tuple(an.warnings), scales=dict(an.scales),
+                          scale_notes=tuple(an.scale_notes()), lines=tuple(lines), extras=doc,
+                          variant=dict(self.variant))
+
+    def render(self) -> Drawing:
+        """The drawing: ``.svg`` text, ``.save(path)`` as SVG, PDF or PNG, shown by Jupyter."""
+        svg, warnings = draw(self.scene, self.prefix)
+        return Drawing(svg, tuple(warnings), self.name)
+
+    def replace(self, changes: Mapping[str, Any]) -> Problem:
+        """A variant: the scene with the values at the key paths changed (``{"driver.angle": 60}``,
+        ``{"dyad[0].lengths[1]": 55}``), in the unit the scene states; validated like the file."""
+        data = replace(self.data, changes, self.source)
+        return Problem(data, self.source, raw=self._raw, page=self.page, variant={**self.variant, **changes})
+
+    def with_page(self, page: str | None) -> Problem:
+        """The same problem on other paper (``"A4"`` … ``"A1-portrait"``, ``"fit"``)."""
+        return Problem(self.data, self.source, raw=self._raw, page=page, variant=self.variant)
+
+
+def load(path: str | os.PathLike[str], page: str | None = None) -> Problem:
+    """A scene file (TOML, UTF-8), validated; ``page`` replaces its ``[page] size``."""
+    data, raw = read_data(path)
+    return Problem(data, Path(path).name, raw=raw, page=page)
+
+
+def loads(text: str, name: str = "scene.toml", page: str | None = None) -> Problem:
+    """A scene from TOML text; ``name`` is the file name messages give."""
+    raw = text.encode("utf-8")
+    return Problem(parse_toml(raw, name), name, raw=raw, page=page)
+
+
+def from_dict(data: Mapping[str, Any], name: str = "scene.toml", page: str | None = None) -> Problem:
+    """A scene from a dict shaped as the TOML (``{"driver": {"angle_deg": 30, …}, …}``)."""
+    if not isinstance(data, Mapping):
+        raise SceneError([("", "a scene must be a table (a dict)")], name)
+    return Problem(dict(data), name, page=page)
+
+
+def _number(name: object, value: object) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise SceneError([(f"measured.{name}", "must be a number")], "measured")
+    return float(value)
+
+
+# ------------------------------------------------------------------------------ the check table
+
+
+@dataclass(frozen=True)
+class CheckTable:
+    """The check of a scene: iterate for its rows (:class:`~graphmech.problems.judging.Row`:
+    ``name, unit, drawn_mm, scale, graphical, exact, rel_error, error_source, error_estimate,
+    basis, ill_conditioned``); ``table["v_C"]`` is one row; ``measured`` the verdicts on your
+    values; ``ok`` whether all of them are within tolerance."""
+
+    title: str
+    rows: tuple[Row, ...]
+    measured: tuple[Verdict, ...] = ()
+    warnings: tuple[str, ...] = ()
+    scales: dict[str, float] = field(default_factory=dict)
+    scale_notes: tuple[str, ...] = ()
+    lines: tuple[str, ...] = ()
+    extras: dict[str, Any] = field(default_factory=dict)
+    variant: Assignment = field(default_factory=dict)
+
+    def __iter__(self) -> Iterator[Row]:
+        return iter(self.rows)
+
+    def __len__(self) -> int:
+        return len(self.rows)
+
+    @overload
+    def __getitem__(self, key: int) -> Row: ...
+    @overload
+    def __getitem__(self, key: str) -> Row: ...
+    def __getitem__(self, key: int | str) -> Row:
+        if isinstance(key, int):
+            return self.rows[key]
+        for row in self.rows:
+            if row.name == key:
+                return row
+        raise KeyError(f"{key!r}: not in the check table (it has {', '.join(r.name for r in self.rows)})")
+
+    @property
+    def ok(self) -> bool:
+        """Every measured value is within tolerance (True when none was given)."""
+        return all(v.ok for v in self.measured)
+
+    def to_dict(self) -> dict[str, Any]:
+        """What ``check --json`` prints (plus ``"variant"`` for a variant)."""
+        doc = {"quantities": [r.as_dict() for r in self.rows], "measured": [v.as_dict() for v in self.measured],
+               "warnings": list(self.warnings), "scales": self.scales, **self.extras}
+        if self.variant:
+            doc["variant"] = dict(self.variant)
+        return doc
+
+    def to_json(self, indent: int | None = 1) -> str:
+        return json.dumps(self.to_dict(), indent=indent, ensure_ascii=False, allow_nan=False)
+
+    def to_pandas(self) -> Any:
+        """The rows as a pandas DataFrame (pandas is not a dependency of graphmech)."""
+        try:
+            import pandas as pd
+        except ImportError:
+            raise GraphmechError("to_pandas needs pandas: pip install pandas") from None
+        return pd.DataFrame([r.as_dict() for r in self.rows], columns=list(ROW_FIELDS))
+
+    def text(self) -> str:
+        """The table as ``graphmech check`` prints it."""
+        lines = [self.title, "  ".join(self.scale_notes)]
+        if self.rows:
+            lines.append(f"{'quantity':<16} {'drawn mm':>11} {'μ':>11} {'graphical':>16} {'exact':>16} "
+                         f"{'rel.error':>9}  unit")
+            for r in self.rows:
+                drawn = "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}"
+                flag = "  ILL-CONDITIONED" if r.ill_conditioned else ""
+                if r.error_estimate is not None:  # a discretised or read-off value: how accurate it says it is
+                    flag += f"  ±{percent(r.error_estimate)} ({r.basis or r.error_source})"
+                lines.append(f"{r.name:<16} {drawn:>11} {r.scale:>11.5g} {r.graphical:>16.9g} {r.exact:>16.9g}"
+                             f" {r.rel_error:>9.1e}  {r.unit}{flag}")
+        if self.measured:
+            lines.append(f"{'measured':<16} {'value':>11} {'expected':>13} {'± tol':>9}  verdict")
+            for v in self.measured:
+                lines.append(f"{v.name:<16} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
+                             f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
+        return "\n".join([*lines, *self.lines])
+
+    def __str__(self) -> str:
+        return self.text()
+
+    def _repr_html_(self) -> str:
+        from html import escape
+
+        head = "".join(f"<th>{escape(h)}</th>" for h in ("quantity", "drawn mm", "μ", "graphical", "exact",
+                                                          "rel. error", "unit", "accuracy"))
+        body = []
+        for r in self.rows:
+            acc = "ill-conditioned" if r.ill_conditioned else ""
+            if r.error_estimate is not None:
+                acc += f" ±{percent(r.error_estimate)} ({r.basis or r.error_source})"
+            cells = (r.name, "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}", f"{r.scale:.5g}",
+                     f"{r.graphical:.9g}", f"{r.exact:.9g}", f"{r.rel_error:.1e}", r.unit, acc.strip())
+            body.append("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in cells) + "</tr>")
+        for v in self.measured:
+            body.append(f"<tr><td>{escape(v.name)}</td><td colspan='7'>measured {v.measured:.6g}, expected "
+                        f"{v.expected:.6g} ± {v.tolerance:.3g} {escape(v.unit)}: "
+                        f"<b>{'ok' if v.ok else 'OUT OF TOLERANCE'}</b></td></tr>")
+        return (f"<table><caption>{escape(self.title)} — {escape('  '.join(self.scale_notes))}</caption>"
+                f"<thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>")
+
+
+def percent(fraction: float) -> str:
+    """A relative error as the table prints it: '8 %', '0.013 %', '<1e-10 %'."""
+    p = 100.0 * fraction
+    return "<1e-10 %" if p < 1e-10 else f"{p:.2g} %"
+
+
+# ------------------------------------------------------------------------------ the drawing
+
+
+@dataclass(frozen=True)
+class Drawing:
+    """A scene's drawing: ``svg`` (text), the ``warnings`` found while making it; Jupyter and
+    IPython show it inline (``_repr_svg_``)."""
+
+    svg: str
+    warnings: tuple[str, ...] = ()
+    name: str = "scene"
+
+    def save(self, path: str | os.PathLike[str], format: str | None = None, dpi: float | None = None) -> Path:
+        """Write the drawing as SVG, PDF (true size) or PNG (at ``dpi``), by the extension or
+        ``format``; atomically. Returns the path."""
+        from graphmech.render.export import save
+
+        save(self.svg, path, format, dpi)
+        return Path(path)
+
+    def _repr_svg_(self) -> str:
+        return self.svg
+
+
+__all__ = ["ROW_FIELDS", "CheckTable", "Drawing", "Problem", "from_dict", "load", "loads", "percent"]

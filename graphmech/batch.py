@@ -1,0 +1,164 @@
+"""Many figures and checks at once: scenes × variants, on a process pool.
+
+A :class:`Job` is one scene file with one variant (:mod:`graphmech.variants`); :func:`make` does
+one job — loads, varies, draws (SVG, PDF or PNG) and checks — and returns what it would write,
+or its one-line error, never raising; :func:`run` does many on all cores, results in job order.
+The caller writes: ``render`` writes nothing unless every job succeeded; ``batch`` writes every
+job that succeeded (each all-or-nothing) and reports the others in one line each.
+"""
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterable, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from graphmech.api import CheckTable, Problem, load
+from graphmech.errors import GraphmechError, one_line
+from graphmech.variants import Assignment, value_text
+
+#: Fewer jobs than this are done in this process: a pool's start costs more than it gives.
+POOL_FROM = 4
+
+
+@dataclass(frozen=True)
+class Job:
+    """One scene file with one variant of it (``{}``: the scene as written), on ``page``."""
+
+    scene: str
+    variant: Assignment = field(default_factory=dict)
+    page: str | None = None
+
+    @property
+    def file(self) -> str:
+        return Path(self.scene).name
+
+    @property
+    def label(self) -> str:
+        """The job as messages name it: ``crank.toml`` or ``crank.toml [driver.angle=30]``."""
+        if not self.variant:
+            return self.file
+        return f"{self.file} [{', '.join(f'{k}={value_text(v)}' for k, v in self.variant.items())}]"
+
+
+def jobs(scenes: Iterable[str], variants: Sequence[Assignment], page: str | None = None) -> list[Job]:
+    """Every scene with every variant, scene by scene."""
+    return [Job(s, v, page) for s in scenes for v in (variants or [{}])]
+
+
+@dataclass(frozen=True)
+class Options:
+    """What each job makes: a figure in ``figure`` format (None: none) at ``dpi``; the check
+    (with ``measured`` values judged at ``precision`` mm) when ``check``."""
+
+    figure: str | None = "svg"
+    dpi: float | None = None
+    check: bool = False
+    measured: tuple[tuple[str, float], ...] = ()
+    precision: float | None = None
+
+
+@dataclass(frozen=True)
+class Result:
+    """What one job made: its ``name`` (the file stem of its outputs), the figure's bytes, the
+    check table, the warnings — or ``error``, the one line saying why it could not be made."""
+
+    job: Job
+    name: str = ""
+    figure: bytes | None = None
+    table: CheckTable | None = None
+    warnings: tuple[str, ...] = ()
+    error: str | None = None
+
+    @property
+    def ok(self) -> bool:
+        return self.error is None
+
+
+def problem(job: Job) -> Problem:
+    """The job's problem: the file, on its page, with its variant's values."""
+    p = load(job.scene, job.page)
+    return p.replace(job.variant) if job.variant else p
+
+
+def make(job: Job, options: Options) -> Result:
+    """Do one job; a refusal (bad scene, bad key path, a construction that cannot be made, an
+    unreadable file, a missing browser) is the result's ``error``, never an exception."""
+    try:
+        p = problem(job)
+        figure, warnings = None, ()
+        if options.figure is not None:
+            drawing = p.render()
+            warnings = drawing.warnings
+            figure = _convert(drawing.svg, options.figure, options.dpi)
+        table = p.check(options.measured, options.precision) if options.check else None
+        if table is not None and options.figure is None:
+            warnings = table.warnings
+        return Result(job, p.name, figure, table, tuple(warnings))
+    except GraphmechError as e:
+        return Result(job, error=one_line(e, job.label))
+    except OSError as e:
+        return Result(job, error=f"{job.label}: {e.filename or ''}{': ' if e.filename else ''}{e.strerror or e}")
+    except RecursionError:
+        return Result(job, error=f"{job.label}: nested too deeply")
+
+
+def _convert(svg: str, fmt: str, dpi: float | None) -> bytes:
+    if fmt == "svg":  # no browser needed
+        return svg.encode("utf-8")
+    from graphmech.render.export import convert
+
+    return convert(svg, fmt, dpi)
+
+
+def run(todo: Sequence[Job], options: Options, workers: int | None = None,
+        done: Callable[[Result], None] | None = None) -> list[Result]:
+    """Every job, in order; on a pool of ``workers`` processes (default: all cores) when there
+    are enough of them. ``done`` is called with each result as it comes, in order."""
+    workers = max(1, min(workers or os.cpu_count() or 1, len(todo)))
+    results: list[Result] = []
+    if workers == 1 or len(todo) < POOL_FROM:
+        for job in todo:
+            results.append(make(job, options))
+            if done is not None:
+                done(results[-1])
+        return results
+    with ProcessPoolExecutor(max_workers=workers) as pool:
+        for result in pool.map(make, todo, [options] * len(todo), chunksize=max(1, len(todo) // (4 * workers))):
+            results.append(result)
+            if done is not None:
+                done(result)
+    return results
+
+
+def variants_table(results: Sequence[Result]) -> str:
+    """The check of many variants, one row per variant, one column per quantity (the graphical
+    value; ``check --json`` has everything): a teacher's answer key."""
+    tables = [(r.name, r.table) for r in results if r.table is not None]
+    names: list[str] = []
+    units: dict[str, str] = {}
+    for _, t in tables:
+        for row in t:
+            if row.name not in units:
+                names.append(row.name)
+                units[row.name] = row.unit
+    width = max([len("variant"), *(len(n) for n, _ in tables)])
+    heads = [f"{n} ({units[n]})" if units[n] else n for n in names]
+    cols = [max(12, len(h)) for h in heads]
+    lines = ["  ".join([f"{'variant':<{width}}", *(f"{h:>{c}}" for h, c in zip(heads, cols))])]
+    for name, t in tables:
+        by = {row.name: row for row in t}
+        cells = [f"{by[n].graphical:>{c}.6g}" if n in by else f"{'':>{c}}" for n, c in zip(names, cols)]
+        lines.append("  ".join([f"{name:<{width}}", *cells]))
+    return "\n".join(lines)
+
+
+def check_documents(results: Sequence[Result]) -> list[dict[str, Any]]:
+    """``check --json`` of each variant, with its name and values."""
+    return [{"name": r.name, **r.table.to_dict()} for r in results if r.table is not None]
+
+
+__all__ = ["POOL_FROM", "Job", "Options", "Result", "check_documents", "jobs", "make", "problem", "run",
+           "variants_table"]
