@@ -64,7 +64,10 @@ def _key_in(table: Mapping[str, Any], key: str, path: str, source: str) -> str:
         return with_unit[0]
     if len(with_unit) > 1:
         raise SceneError([(path, f"ambiguous: the table has {', '.join(with_unit)}; name one")], source)
-    raise SceneError([(path, "not in the scene" + did_you_mean(key, [str(k) for k in table]) +
+    # a key's base without its unit is a candidate too: "angel" is nearest "angle" (of angle_deg)
+    keys = [str(k) for k in table]
+    bases = {k[:i] for k in keys for i, c in enumerate(k) if c == "_" and i}
+    raise SceneError([(path, "not in the scene" + did_you_mean(key, [*keys, *bases]) +
                        " (--set changes a value the scene has; add a new key in the file)")], source)
 
 

@@ -1,0 +1,125 @@
+"""The Python API: a scene as a Problem — check table, drawing, variants — agreeing with the command."""
+from __future__ import annotations
+
+import json
+import sys
+
+import pytest
+
+import graphmech as gm
+from graphmech.api import ROW_FIELDS, CheckTable, Drawing, Problem
+from graphmech.errors import GraphmechError, SceneError
+from tests.conftest import SCENES, run_cli
+
+BLOCK = SCENES / "kin.oscillating_block.toml"
+
+
+def test_the_package_exports_the_api_lazily():
+    assert {"load", "loads", "from_dict", "Problem", "CheckTable", "Drawing"} <= set(dir(gm))
+    assert gm.load is gm.api.load and gm.Problem is Problem
+    with pytest.raises(AttributeError, match="no attribute 'nope'"):
+        gm.nope  # noqa: B018
+
+
+def test_check_rows_carry_the_fields_of_check_json():
+    table = gm.load(BLOCK).check()
+    code, out, _ = run_cli("check", str(BLOCK), "--json")
+    assert code == 0 and json.loads(out) == table.to_dict() == json.loads(table.to_json())
+    assert [r.name for r in table] == ["l_BC", "omega_2", "alpha_2", "v_C2C3", "a_k_C2C3", "v_D", "a_D", "v_E", "a_E"]
+    assert set(ROW_FIELDS) == set(table.to_dict()["quantities"][0])
+    row = table["v_E"]
+    assert row is table[7] and row.graphical == pytest.approx(row.drawn_mm * row.scale, rel=1e-15)
+    assert row.rel_error < 1e-9 and row.error_source == "construction"
+    assert len(table) == 9 and table.ok and table.measured == ()
+    with pytest.raises(KeyError, match="'v_Z': not in the check table"):
+        table["v_Z"]
+
+
+def test_the_text_table_is_what_check_prints():
+    code, out, _ = run_cli("check", str(BLOCK))
+    assert code == 0 and out == gm.load(BLOCK).check().text() + "\n" == str(gm.load(BLOCK).check()) + "\n"
+
+
+def test_measured_values_are_judged_as_on_the_command_line():
+    p = gm.load(BLOCK)
+    exact = p.check()["v_E"].exact
+    table = p.check(measured={"v_E": exact * 1.001, "omega_2": 99.0})
+    assert [(v.name, v.ok) for v in table.measured] == [("v_E", True), ("omega_2", False)] and not table.ok
+    code, out, _ = run_cli("check", str(BLOCK), "--json", f"--measured=v_E={exact * 1.001!r},omega_2=99")
+    assert code == 1 and json.loads(out)["measured"] == [v.as_dict() for v in table.measured]
+    assert p.check([("v_E", exact)], precision=0.01).measured[0].tolerance < table.measured[0].tolerance
+    with pytest.raises(SceneError, match="measured.v_E: must be a number"):
+        p.check(measured={"v_E": "fast"})
+
+
+def test_to_pandas_is_a_data_frame_with_the_row_fields():
+    pd = pytest.importorskip("pandas")  # a test dependency; graphmech itself never needs it
+    frame = gm.load(BLOCK).check().to_pandas()
+    assert isinstance(frame, pd.DataFrame) and list(frame.columns) == list(ROW_FIELDS) and len(frame) == 9
+    assert frame.set_index("name").loc["v_E", "exact"] == gm.load(BLOCK).check()["v_E"].exact
+
+
+def test_to_pandas_without_pandas_says_what_to_install(monkeypatch):
+    monkeypatch.setitem(sys.modules, "pandas", None)  # import pandas → ImportError
+    with pytest.raises(GraphmechError, match="pip install pandas"):
+        gm.load(BLOCK).check().to_pandas()
+
+
+def test_the_drawing_is_the_commands_svg_and_jupyter_shows_it(tmp_path):
+    drawing = gm.load(BLOCK).render()
+    code, _, _ = run_cli("render", str(BLOCK), "-o", str(tmp_path / "cli.svg"))
+    assert code == 0 and drawing.svg == (tmp_path / "cli.svg").read_text(encoding="utf-8")
+    assert drawing._repr_svg_() == drawing.svg and isinstance(drawing, Drawing)
+    assert drawing.save(tmp_path / "api.svg") == tmp_path / "api.svg"
+    assert (tmp_path / "api.svg").read_bytes() == (tmp_path / "cli.svg").read_bytes()
+
+
+def test_loads_and_from_dict_read_as_the_file_does():
+    text = BLOCK.read_text(encoding="utf-8")
+    a, b = gm.loads(text, "kin.oscillating_block.toml"), gm.load(BLOCK)
+    assert a.render().svg == b.render().svg  # the same bytes, the same ids
+    import tomllib
+
+    c = gm.from_dict(tomllib.loads(text), "block.toml")
+    assert c.check().to_dict() == b.check().to_dict() and c.name == "block" and c.kind == "linkage"
+    assert repr(c) == "<graphmech.Problem 'block': linkage, " + repr(b.title) + ">"
+
+
+def test_bad_scenes_raise_the_one_line_message():
+    with pytest.raises(SceneError, match=r"^x.toml: line 1: invalid TOML"):
+        gm.loads("title = ", "x.toml")
+    with pytest.raises(SceneError, match=r"^scene.toml: driver.length: missing"):
+        gm.from_dict({"frame": {"A_mm": [0, 0]}, "driver": {"type": "crank", "link": "1", "pivot": "A",
+                                                             "tip": "B", "angle_deg": 0, "omega_rad_s": 1}})
+    with pytest.raises(SceneError, match="a scene must be a table"):
+        gm.from_dict([1, 2])  # type: ignore[arg-type]
+    with pytest.raises(SceneError, match="cannot read the file"):
+        gm.load(SCENES / "no-such.toml")
+
+
+def test_a_variant_is_checked_and_named_and_the_original_kept():
+    p = gm.load(BLOCK)
+    v = p.replace({"driver.angle": 60, "driver.omega": 20})
+    assert v.name == "kin.oscillating_block-driver.angle=60-driver.omega=20" and p.name == "kin.oscillating_block"
+    assert v.variant == {"driver.angle": 60, "driver.omega": 20} and p.variant == {}
+    # ω2 scales with ω1 at the same position
+    assert v.check()["omega_2"].exact == pytest.approx(2 * p.replace({"driver.angle": 60}).check()["omega_2"].exact)
+    assert v.check().to_dict()["variant"] == {"driver.angle": 60, "driver.omega": 20}
+    assert v.render().svg != p.render().svg and v.prefix != p.prefix
+    assert p.check()["omega_2"].exact == gm.load(BLOCK).check()["omega_2"].exact
+    with pytest.raises(SceneError, match="kin.oscillating_block.toml: driver.angel: not in the scene"):
+        p.replace({"driver.angel": 3})
+    with pytest.raises(SceneError, match="driver.angle_deg|driver.angle"):
+        p.replace({"driver.angle": "north"})  # the reader judges the value as the file's own
+
+
+def test_another_page_chooses_other_paper():
+    p = gm.load(BLOCK).with_page("fit")
+    assert p.scene.page.fit and 'width="297mm"' not in p.render().svg
+
+
+def test_the_check_table_shows_in_jupyter_as_html_with_text_escaped():
+    p = gm.loads(BLOCK.read_text(encoding="utf-8").replace('title = "Oscillating block', 'title = "<b>x</b>'))
+    html = p.check(measured={"v_E": 1.0})._repr_html_()
+    assert html.startswith("<table><caption>&lt;b&gt;x&lt;/b&gt;") and html.count("<tr>") == 1 + 9 + 1
+    assert "OUT OF TOLERANCE" in html and isinstance(p.check(), CheckTable)

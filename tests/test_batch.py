@@ -1,0 +1,127 @@
+"""Many figures and checks: render/check --set, graphmech batch on a process pool, each job
+all-or-nothing, each failure one line."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+import graphmech as gm
+from graphmech import batch
+from tests.conftest import SCENES, run_cli
+
+BLOCK = SCENES / "kin.oscillating_block.toml"
+CRANK = SCENES / "linkage.slider_crank_offset.toml"
+
+
+def test_jobs_are_every_scene_with_every_variant():
+    todo = batch.jobs([str(BLOCK), str(CRANK)], [{"driver.angle": 30}, {"driver.angle": 40}], "A4")
+    assert [(j.file, j.variant, j.page) for j in todo] == [
+        ("kin.oscillating_block.toml", {"driver.angle": 30}, "A4"), ("kin.oscillating_block.toml", {"driver.angle": 40}, "A4"),
+        ("linkage.slider_crank_offset.toml", {"driver.angle": 30}, "A4"),
+        ("linkage.slider_crank_offset.toml", {"driver.angle": 40}, "A4")]
+    assert todo[0].label == "kin.oscillating_block.toml [driver.angle=30]" and batch.jobs(["a"], []) == [batch.Job("a")]
+
+
+def test_a_job_that_fails_is_a_result_with_its_one_line_never_an_exception():
+    bad = batch.make(batch.Job(str(BLOCK), {"driver.angel": 1}), batch.Options(check=True))
+    assert not bad.ok and bad.error == ("kin.oscillating_block.toml [driver.angel=1]: kin.oscillating_block.toml: "
+                                        "driver.angel: not in the scene; did you mean angle? (--set changes a value "
+                                        "the scene has; add a new key in the file)")
+    missing = batch.make(batch.Job("nowhere/x.toml"), batch.Options())
+    assert missing.error is not None and "cannot read the file" in missing.error and "\n" not in missing.error
+
+
+def test_the_pool_gives_the_same_results_in_order_as_one_process():
+    todo = batch.jobs([str(BLOCK)], [{"driver.angle": a} for a in (10, 20, 30, 40, 50)])
+    options = batch.Options(check=True)
+    seen: list[str] = []
+    pooled = batch.run(todo, options, workers=2, done=lambda r: seen.append(r.name))
+    alone = batch.run(todo, options, workers=1)
+    assert [r.name for r in pooled] == seen == [r.name for r in alone] == [
+        f"kin.oscillating_block-driver.angle={a}" for a in (10, 20, 30, 40, 50)]
+    assert [r.figure for r in pooled] == [r.figure for r in alone]
+    assert [r.table.to_dict() for r in pooled if r.table] == [r.table.to_dict() for r in alone if r.table]
+
+
+def test_render_set_writes_one_figure_per_combination(tmp_path):
+    code, out, err = run_cli("render", str(BLOCK), "--set", "driver.angle=30,60", "--set", "driver.omega=10",
+                             "-d", str(tmp_path), "-q")
+    names = ["kin.oscillating_block-driver.angle=30-driver.omega=10.svg",
+             "kin.oscillating_block-driver.angle=60-driver.omega=10.svg"]
+    assert code == 0 and err == "" and out.split() == [str(tmp_path / n) for n in names]
+    assert sorted(p.name for p in tmp_path.iterdir()) == names
+    expected = gm.load(BLOCK).replace({"driver.angle": 60, "driver.omega": 10}).render().svg
+    assert (tmp_path / names[1]).read_text(encoding="utf-8") == expected
+
+
+def test_render_set_with_one_output_file_needs_a_folder(tmp_path):
+    code, out, err = run_cli("render", str(BLOCK), "--set", "driver.angle=30,60", "-o", str(tmp_path / "x.svg"))
+    assert code == 2 and out == "" and err == "graphmech: -o takes one figure; this makes 2 (one per variant): use -d DIR\n"
+    code, _, _ = run_cli("render", str(BLOCK), "--set", "driver.angle=30", "-o", str(tmp_path / "x.svg"))
+    assert code == 0 and (tmp_path / "x.svg").is_file()
+
+
+def test_render_with_a_failing_variant_writes_nothing(tmp_path):
+    code, out, err = run_cli("render", str(CRANK), "--set", "driver.angle=50,60", "--set", "dyad[0].length=300,10",
+                             "-d", str(tmp_path))
+    assert code == 2 and out == "" and err.count("\n") == 1 and list(tmp_path.iterdir()) == []
+    assert err.startswith("linkage.slider_crank_offset.toml [driver.angle=50, dyad[0].length=10]: ")
+
+
+def test_check_set_prints_one_row_per_variant():
+    code, out, err = run_cli("check", str(BLOCK), "--set", "driver.angle=30,45", "-q")
+    lines = out.splitlines()
+    assert code == 0 and err == "" and len(lines) == 3
+    assert lines[0].split()[:3] == ["variant", "l_BC", "(m)"]
+    exact = gm.load(BLOCK).replace({"driver.angle": 45}).check()["omega_2"].graphical
+    assert lines[2].split()[0] == "kin.oscillating_block-driver.angle=45" and f"{exact:.6g}" in lines[2].split()
+    code, out, _ = run_cli("check", str(BLOCK), "--set", "driver.angle=30,45", "--json")
+    docs = json.loads(out)
+    assert code == 0 and [d["variant"] for d in docs] == [{"driver.angle": 30}, {"driver.angle": 45}]
+    assert docs[1]["quantities"] == gm.load(BLOCK).replace({"driver.angle": 45}).check().to_dict()["quantities"]
+
+
+def test_check_set_with_a_failing_variant_reports_it_and_exits_2():
+    code, out, err = run_cli("check", str(CRANK), "--set", "driver.omega=10,fast", "-q")
+    assert code == 2 and len(out.splitlines()) == 2  # the header and the one variant that could be made
+    assert err.count("\n") == 1 and err.startswith("linkage.slider_crank_offset.toml [driver.omega=fast]: ")
+
+
+def test_batch_writes_the_good_jobs_and_reports_each_failure(tmp_path):
+    out_dir = tmp_path / "out"
+    out_dir.mkdir()
+    broken = tmp_path / "broken.toml"
+    broken.write_text("title = 1\n", encoding="utf-8")
+    code, out, err = run_cli("batch", str(BLOCK), str(CRANK), str(broken), "--set", "driver.angle=30,50",
+                             "-d", str(out_dir), "-j", "2", "-q")
+    assert code == 2
+    made = sorted(p.name for p in out_dir.iterdir())
+    assert made == sorted(f"{s}-driver.angle={a}.{x}" for s in ("kin.oscillating_block", "linkage.slider_crank_offset")
+                          for a in (30, 50) for x in ("svg", "json"))
+    lines = err.splitlines()
+    assert len(lines) == 3 and lines[-1] == "graphmech: 2 of 6 failed; the other 4 written"
+    assert all(line.startswith("broken.toml [driver.angle=") for line in lines[:2])
+    doc = json.loads((out_dir / "linkage.slider_crank_offset-driver.angle=50.json").read_text(encoding="utf-8"))
+    assert doc["variant"] == {"driver.angle": 50}
+    assert doc["quantities"] == gm.load(CRANK).replace({"driver.angle": 50}).check().to_dict()["quantities"]
+    assert len(out.split()) == 4
+
+
+def test_batch_refuses_a_missing_folder_and_bad_job_counts(tmp_path):
+    code, _, err = run_cli("batch", str(BLOCK), "-d", str(tmp_path / "none"))
+    assert code == 2 and err == f"graphmech: {tmp_path / 'none'}: folder does not exist\n"
+    for bad in ("0", "x", "1000"):
+        with pytest.raises(SystemExit) as e:
+            run_cli("batch", str(BLOCK), "-d", str(tmp_path), "-j", bad)
+        assert e.value.code == 2
+
+
+def test_quiet_silences_warnings_not_errors(tmp_path):
+    wide = "figures/scenes/kin.oscillating_block.toml"
+    code, _, err = run_cli("render", wide, "--set", "driver.omega=20", "-o", str(tmp_path / "w.svg"))
+    assert code == 0 and "warning:" in err
+    code, _, err = run_cli("render", wide, "--set", "driver.omega=20", "-o", str(tmp_path / "w.svg"), "-q")
+    assert code == 0 and err == ""
+    code, _, err = run_cli("render", wide, "--set", "driver.nope=1", "-o", str(tmp_path / "w.svg"), "-q")
+    assert code == 2 and "driver.nope: not in the scene" in err
