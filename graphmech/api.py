@@ -150,7 +150,7 @@ def _number(name: object, value: object) -> float:
 # ------------------------------------------------------------------------------ the check table
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class CheckTable:
     """The check of a scene: iterate for its rows (:class:`~graphmech.problems.judging.Row`:
     ``name, unit, drawn_mm, scale, graphical, exact, rel_error, error_source, error_estimate,
@@ -232,6 +232,10 @@ class CheckTable:
     def __str__(self) -> str:
         return self.text()
 
+    def __repr__(self) -> str:
+        judged = f", {len(self.measured)} measured" if self.measured else ""
+        return f"<graphmech.CheckTable {self.title!r}: {len(self.rows)} rows{judged}>"
+
     def _repr_html_(self) -> str:
         from html import escape
 
@@ -262,7 +266,7 @@ def percent(fraction: float) -> str:
 # ------------------------------------------------------------------------------ the drawing
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class Drawing:
     """A scene's drawing: ``svg`` (text), the ``warnings`` found while making it; Jupyter and
     IPython show it inline (``_repr_svg_``)."""
@@ -281,6 +285,14 @@ class Drawing:
 
     def _repr_svg_(self) -> str:
         return self.svg
+
+    def __repr__(self) -> str:
+        import re
+
+        w = re.search(r'width="([\d.]+)mm"', self.svg[:600])
+        h = re.search(r'height="([\d.]+)mm"', self.svg[:600])
+        page = f"{w.group(1)} × {h.group(1)} mm" if w and h else "SVG"
+        return f"<graphmech.Drawing {self.name!r}: {page}, {len(self.warnings)} warnings>"
 
 
 __all__ = ["ROW_FIELDS", "CheckTable", "Drawing", "Problem", "from_dict", "load", "loads", "percent"]

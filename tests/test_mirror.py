@@ -23,7 +23,7 @@ TESTS = ROOT / "tests"
 EXTRAS = {"test_reference", "test_robustness", "test_extremes"}
 # Test modules of the project as a whole (tests/ itself): layers, types, the fresh clone, the
 # fuzzer, the docs' examples, the figures in a browser, this file.
-PROJECT = {"test_layout", "test_mirror", "test_typing", "test_fresh_clone", "test_fuzz", "test_docs_examples",
+PROJECT = {"test_layout", "test_mirror", "test_typing", "test_fresh_clone", "test_fuzz", "test_docs_examples", "test_notebook",
            "test_browser"}
 # Folders below tests/ that mirror nothing: shared data and scenes.
 NOT_MIRRORED = {"reference", "scenes", "__pycache__"}
