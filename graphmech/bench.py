@@ -11,6 +11,8 @@ backwards), and times one whole sheet.
 from __future__ import annotations
 
 import math
+import os
+import time
 from pathlib import Path
 from typing import Any
 
@@ -20,6 +22,31 @@ from graphmech.timing import best_time
 
 #: The full-cycle sheet timed from the scene file to the SVG (a repository's copy, not installed).
 SHEET_SCENE = Path(__file__).resolve().parents[1] / "figures" / "scenes" / "linkage.slider_crank_offset-cycle.toml"
+#: The scene whose variants the batch record makes: a teacher's exercise, one per crank angle.
+BATCH_SCENE = SHEET_SCENE.parent / "kin.oscillating_block.toml"
+#: Variants in the batch record (``--quick``: fewer).
+BATCH_VARIANTS, BATCH_VARIANTS_QUICK = 100, 12
+
+
+def batch_record(quick: bool = False, scene: Path = BATCH_SCENE) -> dict[str, Any]:
+    """The time to make the figures (SVG) and checks of ``BATCH_VARIANTS`` variants of one scene
+    (the crank angle over a turn) on every core, as ``graphmech batch`` does, but writing
+    nothing; ``max_rel_error`` is the largest of all their check tables."""
+    from graphmech import batch
+
+    n = BATCH_VARIANTS_QUICK if quick else BATCH_VARIANTS
+    if not scene.exists():
+        return {"method": "batch", "case": "oscillating-block-variants", "n": n, "seconds": 0.0,
+                "max_rel_error": None, "note": "scene not found (an installed copy without figures/)"}
+    todo = batch.jobs([str(scene)], [{"driver.angle": round(360.0 * k / n, 6)} for k in range(n)])
+    start = time.perf_counter()
+    results = batch.run(todo, batch.Options(figure="svg", check=True))
+    seconds = time.perf_counter() - start
+    failed = [r.error for r in results if r.error is not None]
+    errors = [row.rel_error for r in results if r.table is not None for row in r.table]
+    return {"method": "batch", "case": "oscillating-block-variants", "n": n, "seconds": seconds,
+            "max_rel_error": max(errors) if errors else None, "failed": len(failed), "workers": os.cpu_count() or 1,
+            "note": f"{n} variants of kin.oscillating_block.toml (figure + check each), on a process pool"}
 
 
 def sheet_record(repeat: int = 3, scene: Path = SHEET_SCENE) -> dict[str, Any]:
@@ -48,4 +75,7 @@ def run_bench(quick: bool = False) -> dict[str, Any]:
             notes += said
     sheet = sheet_record(repeat=1 if quick else 3)
     notes.append(sheet_note(sheet))
-    return {"records": records + [sheet], "notes": notes}
+    many = batch_record(quick)
+    notes.append(f"batch: {many['n']} variants (figure and check each) in {many['seconds']:.2f} s on "
+                 f"{many.get('workers', 1)} processes ({1e3 * many['seconds'] / max(1, many['n']):.0f} ms each)")
+    return {"records": records + [sheet, many], "notes": notes}

@@ -20,3 +20,12 @@ def test_bench_records_and_agreement(quick_bench):
         assert r["max_rel_error"] <= 1e-12
     # the yardstick solves the same linkage to the same answers
     assert recs[("closed-form-numpy", "fourbar-120-60-120-90", 360)]["max_rel_error"] <= 1e-12
+
+
+def test_the_batch_record_times_variants_with_their_checks(quick_bench):
+    code, out, _, _ = quick_bench
+    batch = [r for r in json.loads(out)["records"] if r["method"] == "batch"]
+    assert code == 0 and len(batch) == 1
+    r = batch[0]
+    assert r["n"] == 12 and r["failed"] == 0 and r["seconds"] > 0 and r["workers"] >= 1
+    assert r["max_rel_error"] <= 1e-12  # every variant's every row: constructions, exact to round-off
