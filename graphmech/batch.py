@@ -88,7 +88,8 @@ def make(job: Job, options: Options) -> Result:
     unreadable file, a missing browser) is the result's ``error``, never an exception."""
     try:
         p = problem(job)
-        figure, warnings = None, ()
+        figure: bytes | None = None
+        warnings: tuple[str, ...] = ()
         if options.figure is not None:
             drawing = p.render()
             warnings = drawing.warnings

@@ -60,14 +60,14 @@ def _parser() -> argparse.ArgumentParser:
     p = _Parser(prog="graphmech", description="Textbook graphical methods as exact, checked constructions.",
                 epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"graphmech {__version__}")
-    quiet = argparse.ArgumentParser(add_help=False)
+    quiet = _Parser(add_help=False)
     quiet.add_argument("-q", "--quiet", action="store_true", help="no warnings on stderr (errors still)")
-    varied = argparse.ArgumentParser(add_help=False)
+    varied = _Parser(add_help=False)
     varied.add_argument("--set", action="append", default=[], metavar="KEY=V1[,V2…]", dest="assign",
                         help="vary the scene: a key path as messages print it (driver.angle, dyad[0].lengths[1]) "
                              "and values in the scene's unit; repeatable: one run per combination")
     varied.add_argument("--page", type=_paper, metavar="SIZE", help=PAGE_HELP)
-    figure = argparse.ArgumentParser(add_help=False)
+    figure = _Parser(add_help=False)
     figure.add_argument("--format", choices=FORMATS, help="svg, pdf (true size) or png (default: -o's extension, "
                                                            "else svg)")
     figure.add_argument("--dpi", type=_dpi, metavar="N", help="PNG resolution, dots per inch (default 150)")
