@@ -62,6 +62,10 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("--precision", type=float, metavar="MM", help="drawing precision, mm (default: the scene's, else 0.5)")
     c.add_argument("--page", type=_paper, metavar="SIZE",
                    help="the paper the scales are chosen for, instead of the scene's [page] size: " + PAPERS)
+    st = sub.add_parser("steps", help="the construction protocol: the numbered steps of the drawing, with every length")
+    st.add_argument("scene", metavar="SCENE")
+    st.add_argument("--page", type=_paper, metavar="SIZE",
+                    help="the paper the scales are chosen for, instead of the scene's [page] size: " + PAPERS)
     b = sub.add_parser("bench", help="run time and error of the graphical methods against the exact ones")
     b.add_argument("--json", action="store_true")
     b.add_argument("-o", "--output", metavar="DIR", help="also write bench.json and log-log plots of error and time into DIR")
@@ -86,6 +90,8 @@ def main(argv: Sequence[str] | None = None) -> int:
                 return _render(args)
             if args.command == "check":
                 return _check(args)
+            if args.command == "steps":
+                return _steps(args)
             return _bench(args)
     except SceneError as e:
         say(e.one_line(_file_name(args)))
@@ -210,6 +216,20 @@ def _percent(fraction: float) -> str:
     """A relative error as the table prints it: '8 %', '0.013 %', '<1e-10 %'."""
     p = 100.0 * fraction
     return "<1e-10 %" if p < 1e-10 else f"{p:.2g} %"
+
+
+# ---------------------------------------------------------------------------- steps
+
+
+def _steps(args: argparse.Namespace) -> int:
+    """The construction protocol on stdout, one numbered step a line (graphmech.problems.steps)."""
+    from graphmech.problems import steps
+    from graphmech.scene import load_scene
+
+    args.current = args.scene
+    lines = steps(load_scene(args.scene, args.page))
+    print("\n".join(f"{k}. {line}" for k, line in enumerate(lines, 1)))
+    return EXIT_OK
 
 
 # ---------------------------------------------------------------------------- bench

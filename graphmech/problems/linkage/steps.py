@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from graphmech.drawing.lettering import subscript
 from graphmech.mechanisms.linkage import Crank, SliderInput
+from graphmech.methods.instant_centres import centre_name, pair
 from graphmech.methods.polygons import PANELS
 from graphmech.problems.instant_centres import check as ic_check
 from graphmech.problems.judging import split_name
@@ -132,6 +133,24 @@ PHRASES: Phrases = {
               "измеряем на схеме угол звена {link} с осью x: {sym} = {value}°"),
     "against the guide": (" ({seg} points against the guide's direction)", "（{seg}与导路正向相反）",
                           " ({seg} направлен против направляющей)"),
+    # instant centres
+    "centre at joint": ("{P} is at the joint {J}", "{P}位于转动副{J}处", "{P} — в шарнире {J}"),
+    "centre at infinity": ("{P} is at infinity, ⟂ the sliding pair (at {angle}° to the x axis)",
+                           "{P}在垂直于移动副导路的无穷远处（与x轴成{angle}°）",
+                           "{P} — в бесконечности, ⟂ направляющей (под углом {angle}° к оси x)"),
+    "centre by Kennedy": ("{P} = (line {a}{b}) ∩ (line {c}{d}) by Kennedy's theorem: x = {x} mm, y = {y} mm",
+                          "由三心定理，{P} = 直线{a}{b}与直线{c}{d}的交点：x = {x} mm, y = {y} mm",
+                          "по теореме Кеннеди {P} = (прямая {a}{b}) ∩ (прямая {c}{d}): x = {x} mm, y = {y} mm"),
+    "centre by Kennedy at infinity": ("{P}: lines {a}{b} and {c}{d} are parallel (Kennedy): {P} at infinity, at {angle}° "
+                                      "to the x axis",
+                                      "由三心定理，直线{a}{b}与{c}{d}平行：{P}在无穷远处，与x轴成{angle}°",
+                                      "по теореме Кеннеди прямые {a}{b} и {c}{d} параллельны: {P} — в бесконечности, "
+                                      "под углом {angle}° к оси x"),
+    "centre undetermined": ("{P} cannot be found: {why}", "{P}无法确定：{why}", "{P} найти нельзя: {why}"),
+    "read": ("read off the drawing: {sym} = {mm} mm × {scale} = {value} {unit}",
+             "由图量得：{sym} = {mm} mm × {scale} = {value} {unit}",
+             "по чертежу: {sym} = {mm} mm × {scale} = {value} {unit}"),
+    "read angle": ("read off the drawing: {sym} = {value}°", "由图量得：{sym} = {value}°", "по чертежу: {sym} = {value}°"),
     "impossible": ("at {pos} the construction is impossible: {why}", "{pos}时无法作图：{why}",
                    "при {pos} построение невозможно: {why}"),
 }
@@ -170,6 +189,8 @@ def protocol(an: Analysis) -> list[str]:
             line = words.step(s)
             if line:
                 out.append(line)
+        if an.instant_centres is not None and an.instant_centres.centres[i] is not None:
+            out += words.centres(an.instant_centres.centres[i], label)
     return out
 
 
@@ -183,11 +204,18 @@ def _targets(an: Analysis, label: str) -> list[str]:
         if ic_check.claims(raw) or base not in b.quantities or at not in (None, label):
             continue
         out.append(b.quantities[base].slot)
+    if an.instant_centres is not None:  # the centres are found on the whole kinematic diagram
+        out += list(b.mech.values())
     if not an.scene.find:
         for panel in PANELS:
             if panel in an.scene.show:
                 out += [n for n in b.steps_of_panel(panel) if b.g.steps[n].kind == "point"]
     return list(dict.fromkeys(out))
+
+
+def _drawn(mm: float, size: float) -> float:
+    """A drawn length as a student measures it: round-off far below the drawing's size is 0."""
+    return 0.0 if abs(mm) <= 1e-9 * size else float(mm)
 
 
 def letter(label: str) -> str:
@@ -241,6 +269,42 @@ class _Words:
             d.guide for d in self.b.linkage.dyads if getattr(d, "c", None) == C)
         x, y = self.b.to_drawing(g.through)
         return self.say("guide line", C=letter(C), x=num(x), y=num(y), angle=num(math.degrees(g.angle)))
+
+    def centres(self, ic: Any, label: str) -> list[str]:
+        """The instant centres in the order they are found, then the values the scene asks of them."""
+        out = []
+        for key in ic.order:
+            c = ic.centres[key]
+            P = centre_name(*key)
+            if c.kind == "undetermined":
+                out.append(self.say("centre undetermined", P=P, why=c.why))
+            elif c.kind == "direct":
+                angle = num(math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0) if c.direction else ""
+                out.append(self.say("centre at joint", P=P, J=letter(c.via[0])) if c.point is not None and c.via
+                           else self.say("centre at infinity", P=P, angle=angle))
+            else:
+                i, j = key
+                k, m = c.via[:2]
+                a, bb = (centre_name(*pair(ic.links, i, k)), centre_name(*pair(ic.links, k, j)))
+                cc, d = (centre_name(*pair(ic.links, i, m)), centre_name(*pair(ic.links, m, j)))
+                if c.point is not None:
+                    x, y = (_drawn(v, ic.size) for v in c.point)
+                    out.append(self.say("centre by Kennedy", P=P, a=a, b=bb, c=cc, d=d, x=num(x), y=num(y)))
+                else:
+                    angle = num(math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0)
+                    out.append(self.say("centre by Kennedy at infinity", P=P, a=a, b=bb, c=cc, d=d, angle=angle))
+        multi = len(self.an.labels) > 1
+        for r in self.an.rows:
+            base, at = split_name(r.name)
+            if not ic_check.claims(base) or (multi and at != label):
+                continue
+            if r.drawn_mm is None:
+                out.append(self.say("read angle", sym=symbol(base), value=num(r.graphical)))
+            else:
+                zero = _drawn(r.drawn_mm, ic.size) == 0.0
+                out.append(self.say("read", sym=symbol(base), mm=num(0.0 if zero else r.drawn_mm), scale=num(r.scale),
+                                    value=num(0.0 if zero else r.graphical), unit=r.unit))
+        return out
 
     # ------------------------------------------------------------------ steps
     def diagram(self) -> str:
