@@ -5,7 +5,15 @@ import math
 
 import pytest
 
-from graphmech.problems.protocol import PHRASES, num, phrase, scale, scale_choice, sense, text
+from graphmech.problems.protocol import (
+    PHRASES,
+    num,
+    phrase,
+    scale,
+    scale_choice,
+    sense,
+    text,
+)
 
 
 def test_numbers_have_four_significant_figures_and_plain_powers():

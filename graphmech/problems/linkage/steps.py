@@ -14,14 +14,15 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from graphmech.drawing.lettering import subscript
-from graphmech.mechanisms.linkage import Crank, SliderInput
+from graphmech.mechanisms.linkage import RPP, RRP, Crank, SliderInput
 from graphmech.methods.instant_centres import centre_name, pair
 from graphmech.methods.polygons import PANELS
 from graphmech.problems.instant_centres import check as ic_check
 from graphmech.problems.judging import split_name
 from graphmech.problems.linkage.check import SCALE_KEYS, Analysis, analyse
 from graphmech.problems.linkage.sizes import position_text
-from graphmech.problems.protocol import PHRASES as COMMON, Phrases, num, phrase, scale_choice, sense
+from graphmech.problems.protocol import PHRASES as COMMON
+from graphmech.problems.protocol import Phrases, num, phrase, scale_choice, sense
 
 if TYPE_CHECKING:
     from graphmech.construction.graph import Solution, Step
@@ -266,7 +267,7 @@ class _Words:
         """Drawing the guide that the slider at ``C`` moves on."""
         driver = self.b.linkage.driver
         g = driver.guide if isinstance(driver, SliderInput) and driver.point == C else next(
-            d.guide for d in self.b.linkage.dyads if getattr(d, "c", None) == C)
+            d.guide for d in self.b.linkage.dyads if isinstance(d, (RRP, RPP)) and d.c == C)
         x, y = self.b.to_drawing(g.through)
         return self.say("guide line", C=letter(C), x=num(x), y=num(y), angle=num(math.degrees(g.angle)))
 
@@ -344,7 +345,7 @@ class _Words:
                             r=num(self.mm(self.b.mech[P], s.name)))
         if key == "slot_guide":
             C, P = args
-            slot = next(d.slot_angle for d in self.b.linkage.dyads if getattr(d, "c", None) == C)
+            slot = next(d.slot_angle for d in self.b.linkage.dyads if isinstance(d, RPP) and d.c == C)
             return self.say("slot_guide", guide=self.guide(C), C=letter(C), P=letter(P), angle=num(math.degrees(slot)))
         # on_link: a point fixed on a link
         D, link, U, *V = args
@@ -352,8 +353,8 @@ class _Words:
         if not V:
             return self.say("on_link shift", D=letter(D), link=link, U=letter(U), x=num(pt.along / mu_l),
                             y=num(pt.left / mu_l))
-        fields = dict(D=letter(D), link=link, U=letter(U), V=letter(V[0]), UD=letter(U) + letter(D),
-                      along=num(pt.along / mu_l), left=num(pt.left / mu_l))
+        fields = {"D": letter(D), "link": link, "U": letter(U), "V": letter(V[0]), "UD": letter(U) + letter(D),
+                  "along": num(pt.along / mu_l), "left": num(pt.left / mu_l)}
         return self.say("on_link straight" if pt.left == 0.0 else "on_link", **fields)
 
     def polygon(self, s: Step, key: str, args: list[str]) -> str:
@@ -368,9 +369,9 @@ class _Words:
             pole = s.inputs[0]
             pb = self.lab(pole) + self.lab(s.name)
             mm = self.mm(pole, s.name)
-            fields = dict(pb=pb, AB=letter(A) + letter(B), BA=letter(B) + letter(A), A=letter(A), B=letter(B),
-                          lAB=A + B, lB=B,
-                          i=subscript(link), l=num(driver.length), mu=num(mu), mm=num(mm), v=num(mm * mu))
+            fields = {"pb": pb, "AB": letter(A) + letter(B), "BA": letter(B) + letter(A), "A": letter(A),
+                      "B": letter(B), "lAB": A + B, "lB": B, "i": subscript(link), "l": num(driver.length),
+                      "mu": num(mu), "mm": num(mm), "v": num(mm * mu)}
             if panel == "velocity":
                 return self.say("crank velocity", sense=sense(driver.omega, self.notation), w=num(abs(driver.omega)),
                                 **fields)

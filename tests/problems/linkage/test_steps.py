@@ -12,7 +12,8 @@ from graphmech.drawing.lettering import number
 from graphmech.problems import check, steps
 from graphmech.problems.linkage.steps import symbol
 from graphmech.problems.protocol import num
-from graphmech.scene import load_scene, parse_scene as parse
+from graphmech.scene import load_scene
+from graphmech.scene import parse_scene as parse
 from tests.conftest import SCENES, fourbar_scene
 
 
@@ -94,7 +95,7 @@ def test_the_laid_off_lengths_are_the_drawings():
 
 
 def test_each_position_is_protocolled_in_turn():
-    lines, rows = _protocol("linkage.slider_crank_offset")
+    lines, _ = _protocol("linkage.slider_crank_offset")
     first, second = _index(lines, "at φ₁ = 50°"), _index(lines, "at φ₁ = 220°")
     assert first == 0 and second == 20
     assert lines[3].startswith("draw the guide of C through x = 0 mm, y = 6 mm at 0° to the x axis; an arc about B "
