@@ -43,6 +43,7 @@ from typing import Any, overload
 
 from graphmech.errors import GraphmechError, SceneError
 from graphmech.problems import check as check_scene
+from graphmech.problems import steps
 from graphmech.problems import with_precision
 from graphmech.problems.judging import Row, Verdict
 from graphmech.problems.reader import Scene
@@ -116,6 +117,11 @@ class Problem:
         ``{"dyad[0].lengths[1]": 55}``), in the unit the scene states; validated like the file."""
         data = replace(self.data, changes, self.source)
         return Problem(data, self.source, raw=self._raw, page=self.page, variant={**self.variant, **changes})
+
+    def steps(self) -> list[str]:
+        """The construction protocol: the steps of the drawing as the book words them, in the
+        scene's notation, with every length drawn and every value found (unnumbered)."""
+        return steps(self.scene)
 
     def with_page(self, page: str | None) -> Problem:
         """The same problem on other paper (``"A4"`` … ``"A1-portrait"``, ``"fit"``)."""

@@ -91,6 +91,9 @@ def _parser() -> argparse.ArgumentParser:
     t.add_argument("-d", "--directory", required=True, metavar="DIR",
                    help="write <name>.svg (or .pdf, .png) and <name>.json, its check, for each")
     t.add_argument("-j", "--jobs", type=_jobs, metavar="N", help="processes (default: every core)")
+    st = sub.add_parser("steps", help="the construction protocol: the numbered steps of the drawing, with every length",
+                        parents=[varied], epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+    st.add_argument("scene", metavar="SCENE")
     b = sub.add_parser("bench", help="run time and error of the graphical methods against the exact ones")
     b.add_argument("--json", action="store_true")
     b.add_argument("-o", "--output", metavar="DIR", help="also write bench.json and log-log plots of error and time into DIR")
@@ -142,10 +145,16 @@ def main(argv: Sequence[str] | None = None) -> int:
                 return _check(args)
             if args.command == "batch":
                 return _batch(args)
+            if args.command == "steps":
+                return _steps(args)
             return _bench(args)
     except GraphmechError as e:  # a bad scene, a construction that cannot be made, another refusal
         say(one_line(e, _file_name(args)))
         return EXIT_BAD_INPUT
+    except BrokenPipeError:  # `graphmech steps … | head`: the reader has all it wants
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return EXIT_OK
     except OSError as e:
         say(f"graphmech: {e.filename or ''}{': ' if e.filename else ''}{e.strerror or e}")
         return EXIT_BAD_INPUT
@@ -309,6 +318,23 @@ def _batch(args: argparse.Namespace) -> int:
     if failed:
         say(f"graphmech: {failed} of {len(todo)} failed; the other {len(todo) - failed} written")
     return EXIT_BAD_INPUT if failed else EXIT_OK
+
+
+# ---------------------------------------------------------------------------- steps
+
+
+def _steps(args: argparse.Namespace) -> int:
+    """The construction protocol on stdout, one numbered step a line (Problem.steps)."""
+    from graphmech import batch
+
+    variants = _variants(args)
+    if len(variants) > 1:
+        say(f"graphmech: steps takes one variant; --set makes {len(variants)}: give one value per key")
+        return EXIT_BAD_INPUT
+    args.current = args.scene
+    lines = batch.problem(batch.Job(args.scene, variants[0], args.page)).steps()
+    print("\n".join(f"{k}. {line}" for k, line in enumerate(lines, 1)))
+    return EXIT_OK
 
 
 # ---------------------------------------------------------------------------- bench

@@ -351,3 +351,18 @@ def test_an_unknown_page_is_one_line(tmp_path, capsys, command):
     assert stop.value.code == 2 and out == "" and err.count("\n") == 1
     assert "--page" in err and "unknown paper 'A5'" in err
     assert "A4, A4-portrait, A3, A3-portrait, A2, A2-portrait, A1, A1-portrait, fit" in err
+
+
+def test_steps_prints_the_numbered_construction_protocol():
+    code, out, err = run_cli("steps", str(SCENES / "kin.oscillating_block.toml"))
+    lines = out.splitlines()
+    assert code == 0 and err == "" and len(lines) == 31
+    assert [line.split(". ", 1)[0] for line in lines] == [str(k) for k in range(1, 32)]
+    assert lines[9] == "10. through b draw a line ⟂ BC"
+    assert lines[-1] == "31. measure p′e′ = 56.68 mm: a_E = p′e′·μa = 2.834 m/s²"
+
+
+def test_steps_of_a_kind_without_a_protocol_is_refused_in_one_line():
+    err = assert_refused(run_cli("steps", str(SCENES / "cam.oscillating_roller.toml")), "cam.oscillating_roller.toml",
+                         "no construction protocol for a cam scene yet")
+    assert "linkage" in err

@@ -57,6 +57,10 @@ class Step:
         Which figure it belongs to (mechanism, velocity, acceleration).
     label : str or None
         The letter written at a point ("b", "c′").
+    say : tuple of str
+        The step for the construction protocol (``graphmech steps``): a phrase's key and its
+        arguments, names only (``("perp", "B", "C")``); the kind's protocol words it in the
+        scene's notation with the numbers of a solution. Empty: not a step a draftsman writes.
     """
 
     name: str
@@ -67,6 +71,7 @@ class Step:
     text: str = ""
     panel: str | None = None
     label: str | None = None
+    say: tuple[str, ...] = ()
 
 
 class Construction:
@@ -92,6 +97,7 @@ class Construction:
         text: str = "",
         panel: str | None = None,
         label: str | None = None,
+        say: Iterable[str] = (),
     ) -> str:
         inputs = tuple(inputs)
         if name in self.steps:
@@ -99,7 +105,8 @@ class Construction:
         for i in inputs:
             if i not in self.steps:
                 raise KeyError(f"step {name!r} reads {i!r}, which is not defined before it")
-        self.steps[name] = Step(name, kind, kernel, inputs, role, text or name, panel, label)
+        self.steps[name] = Step(name, kind, kernel, inputs, role, text or name, panel, label,
+                                 tuple(say))
         if kind == "line":
             self.extent[name] = [inputs[0]] if inputs else []
         return name

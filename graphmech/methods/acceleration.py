@@ -38,7 +38,7 @@ def label(point: str) -> str:
 
 def add_pole(b: "LinkageConstruction") -> None:
     b.g.add(POLE, "point", lambda ops: (0.0, 0.0), (), role="result", text="pole p′", panel=PANEL,
-            label="p'")
+            label="p'", say=("pole",))
     for name in b.linkage.frame_points:
         b.acc[name] = POLE
 
@@ -69,7 +69,7 @@ def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
 
     n = b.g.add(E.own(PANEL, tag), "point", kern, (b.acc[Y], b.mech[X], b.mech[Y], b.omega[link]),
                 role="construction", panel=PANEL, label=tag,
-                text=f"lay off {_lbl(b, b.acc[Y])}{tag} = ω{link}²·l_{X}{Y}/μa ∥ {X}{Y}")
+                text=f"lay off {_lbl(b, b.acc[Y])}{tag} = ω{link}²·l_{X}{Y}/μa ∥ {X}{Y}", say=("normal", link, X, Y))
     E.vector(b, PANEL, b.acc[Y], n, "construction")
     measure.component(b, f"a_{X}{Y}_n", b.acc[Y], n, ("normal", X, Y, link))
     return n
@@ -77,7 +77,8 @@ def _normal(b: "LinkageConstruction", link: str, X: str, Y: str) -> str:
 
 def _tangential_line(b: "LinkageConstruction", n: str, X: str, Y: str) -> str:
     return E.line(b, PANEL, f"⟂{Y}·{X}@{_lbl(b, n)}",
-                 K.line_perpendicular_to, (n, E.direction(b, Y, X)), f"through {_lbl(b, n)} draw ⟂ {Y}{X} (a^t_{X}{Y})")
+                 K.line_perpendicular_to, (n, E.direction(b, Y, X)), f"through {_lbl(b, n)} draw ⟂ {Y}{X} (a^t_{X}{Y})",
+                  say=("perp", Y, X, f"a^t_{X}{Y}"))
 
 
 def _close(b: "LinkageConstruction", link: str, X: str, Y: str, n: str, img: str) -> None:
@@ -98,7 +99,7 @@ def _crank(b: "LinkageConstruction", d: Crank) -> None:
         return (p[0] + k * (-w2 * rx - eps * ry), p[1] + k * (-w2 * ry + eps * rx))
 
     img = E.image(b, PANEL, b.acc, B, label(B), tip, (POLE, b.mech[A], b.mech[B]),
-                 f"p′{label(B)} = a_{B}: ω{d.link}²·l_{A}{B}/μa ∥ {B}{A} + ε{d.link}·l_{A}{B}/μa ⟂ {A}{B}")
+                 f"p′{label(B)} = a_{B}: ω{d.link}²·l_{A}{B}/μa ∥ {B}{A} + ε{d.link}·l_{A}{B}/μa ⟂ {A}{B}", say=("crank", d.pivot, d.tip, d.link))
     E.vector(b, PANEL, POLE, img)
     if eps != 0.0:
         n = _normal(b, d.link, B, A)
@@ -116,7 +117,7 @@ def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
     gx, gy = d.guide.direction
     k = d.acceleration / b.scales["a"]
     img = E.image(b, PANEL, b.acc, d.point, label(d.point), lambda ops, p: (p[0] + k * gx, p[1] + k * gy), (POLE,),
-                 f"p′{label(d.point)} ∥ guide, = a/μa")
+                 f"p′{label(d.point)} ∥ guide, = a/μa", say=("slider", d.point))
     E.vector(b, PANEL, POLE, img)
 
 
@@ -128,7 +129,7 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
     li = _tangential_line(b, ni, C, P)
     lj = _tangential_line(b, nj, C, Q)
     img = E.image(b, PANEL, b.acc, C, label(C), K.intersect_lines, (li, lj),
-                 f"{label(C)} = (⟂{P}{C} through {_lbl(b, ni)}) ∩ (⟂{Q}{C} through {_lbl(b, nj)})")
+                 f"{label(C)} = (⟂{P}{C} through {_lbl(b, ni)}) ∩ (⟂{Q}{C} through {_lbl(b, nj)})", say=("meet",))
     b.g.extend_line(li, img)
     b.g.extend_line(lj, img)
     E.vector(b, PANEL, POLE, img)
@@ -142,9 +143,9 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     n = _normal(b, y.links[0], C, P)
     lt = _tangential_line(b, n, C, P)
     lg = E.line(b, PANEL, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
-               f"through p′ draw ∥ the guide of {C}")
+               f"through p′ draw ∥ the guide of {C}", say=("guide", C))
     img = E.image(b, PANEL, b.acc, C, label(C), K.intersect_lines, (lt, lg),
-                 f"{label(C)} = (⟂{P}{C} through {_lbl(b, n)}) ∩ (∥ guide through p′)")
+                 f"{label(C)} = (⟂{P}{C} through {_lbl(b, n)}) ∩ (∥ guide through p′)", say=("meet",))
     b.g.extend_line(lt, img)
     b.g.extend_line(lg, img)
     E.vector(b, PANEL, POLE, img)
@@ -171,11 +172,13 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
         ktag += "'"
     k = b.g.add(E.own(PANEL, ktag), "point", coriolis, (b.acc[X], b.vel[xbar], b.vel[xblock], b.omega[bar]),
                 role="construction", panel=PANEL, label=ktag,
-                text=f"lay off {_lbl(b, b.acc[X])}{ktag} = 2ω{bar}·v_{xbar}{xblock}/μa (Coriolis)")
+                text=f"lay off {_lbl(b, b.acc[X])}{ktag} = 2ω{bar}·v_{xbar}{xblock}/μa (Coriolis)",
+                say=("coriolis", bar, xbar, xblock))
     E.vector(b, PANEL, b.acc[X], k, "construction")
-    lr = E.line(b, PANEL, f"∥{Bp}·{X}@{ktag}", K.line_parallel_to, (k, E.direction(b, Bp, X)), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})")
+    lr = E.line(b, PANEL, f"∥{Bp}·{X}@{ktag}", K.line_parallel_to, (k, E.direction(b, Bp, X)), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})",
+                  say=("par", Bp, X, f"a^r_{xbar}{xblock}"))
     img = E.image(b, PANEL, b.acc, xbar, label(xbar), K.intersect_lines, (lt, lr),
-                 f"{label(xbar)} = (⟂{Bp}{X} through {_lbl(b, n)}) ∩ (∥{Bp}{X} through {ktag})")
+                 f"{label(xbar)} = (⟂{Bp}{X} through {_lbl(b, n)}) ∩ (∥{Bp}{X} through {ktag})", say=("meet",))
     b.g.extend_line(lt, img)
     b.g.extend_line(lr, img)
     E.vector(b, PANEL, POLE, img)
@@ -193,11 +196,11 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     gx, gy = y.guide.direction
     sx, sy = math.cos(y.slot_angle), math.sin(y.slot_angle)
     lg = E.line(b, PANEL, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
-               f"through p′ draw ∥ the guide of {C}")
+               f"through p′ draw ∥ the guide of {C}", say=("guide", C))
     ls = E.line(b, PANEL, f"∥slot{C}@{_lbl(b, b.acc[P])}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.acc[P],),
-               f"through {_lbl(b, b.acc[P])} draw ∥ the slot")
+               f"through {_lbl(b, b.acc[P])} draw ∥ the slot", say=("slot", C))
     img = E.image(b, PANEL, b.acc, C, label(C), K.intersect_lines, (lg, ls),
-                 f"{label(C)} = (∥ guide through p′) ∩ (∥ slot through {_lbl(b, b.acc[P])})")
+                 f"{label(C)} = (∥ guide through p′) ∩ (∥ slot through {_lbl(b, b.acc[P])})", say=("meet",))
     b.g.extend_line(lg, img)
     b.g.extend_line(ls, img)
     pblock, pslot = y.coincident
@@ -214,7 +217,7 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
     U, V = pt.base
     img = E.image(b, PANEL, b.acc, pt.name, label(pt.name), K.similar_point,
                  (b.mech[U], b.mech[V], b.mech[pt.name], b.acc[U], b.acc[V]),
-                 f"{label(pt.name)}: △{label(U)}{label(V)}{label(pt.name)} ∼ △{U}{V}{pt.name} (acceleration image)")
+                 f"{label(pt.name)}: △{label(U)}{label(V)}{label(pt.name)} ∼ △{U}{V}{pt.name} (acceleration image)", say=("image", U, V, pt.name))
     E.vector(b, PANEL, POLE, img)
     E.vector(b, PANEL, b.acc[U], img, "construction", kind="segment")
     E.vector(b, PANEL, b.acc[V], img, "construction", kind="segment")

@@ -27,7 +27,7 @@ def add_frame(b: "LinkageConstruction") -> None:
     for name, xy0 in frame.items():
         xy = b.to_drawing(xy0)
         b.mech[name] = b.g.add(name, "point", lambda ops, xy=xy: xy, (), role="given",
-                               text=f"frame point {name}", panel=PANEL, label=name)
+                               text=f"frame point {name}", panel=PANEL, label=name, say=("frame", name))
 
 
 def add(b: "LinkageConstruction", part: Part) -> None:
@@ -44,7 +44,7 @@ def _crank(b: "LinkageConstruction", d: Crank) -> None:
 
     b.mech[d.tip] = b.g.add(d.tip, "point", tip, (b.param, b.mech[d.pivot]), role="given",
                             text=f"{d.tip} on the crank circle about {d.pivot} at φ", panel=PANEL,
-                            label=d.tip)
+                            label=d.tip, say=("crank", d.pivot, d.tip, d.link))
 
 
 def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
@@ -58,7 +58,8 @@ def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
         return (ox + s / mu * gx, oy + s / mu * gy)
 
     b.mech[d.point] = b.g.add(d.point, "point", point, (b.param,), role="given",
-                              text=f"{d.point} at s along its guide", panel=PANEL, label=d.point)
+                              text=f"{d.point} at s along its guide", panel=PANEL, label=d.point,
+                              say=("slider_at", d.point, d.link))
 
 
 def _rrr(b: "LinkageConstruction", y: RRR) -> None:
@@ -80,7 +81,7 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
 
     b.mech[C] = b.g.add(C, "point", joint, (b.mech[P], b.mech[Q]), role="given",
                         text=f"{C} = circle({P}, l{i}) ∩ circle({Q}, l{j}), {y.branch} of {P}→{Q}",
-                        panel=PANEL, label=C)
+                        panel=PANEL, label=C, say=("circles", C, P, Q, y.branch))
 
 
 def _guide_line(b: "LinkageConstruction", guide: Any) -> Components:
@@ -107,7 +108,7 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
 
     b.mech[C] = b.g.add(C, "point", joint, (b.mech[P],), role="given",
                         text=f"{C} = circle({P}, l{y.links[0]}) ∩ guide, {y.branch}", panel=PANEL,
-                        label=C)
+                        label=C, say=("circle_guide", C, P))
 
 
 def _rpr(b: "LinkageConstruction", y: RPR) -> None:
@@ -129,7 +130,8 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
         return K.intersect_lines(ops, K.line_fixed(ops, p, sx, sy), line)
 
     b.mech[C] = b.g.add(C, "point", joint, (b.mech[P],), role="given",
-                        text=f"{C} = slot through {P} ∩ guide", panel=PANEL, label=C)
+                        text=f"{C} = slot through {P} ∩ guide", panel=PANEL, label=C,
+                        say=("slot_guide", C, P))
     b.mech[y.coincident[0]] = b.mech[P]
     b.mech[y.coincident[1]] = b.mech[P]
 
@@ -142,7 +144,8 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
             return (u[0] + along, u[1] + left)
 
         b.mech[pt.name] = b.g.add(pt.name, "point", fixed, (b.mech[pt.base[0]],), role="given",
-                                  text=f"{pt.name} on link {pt.link}", panel=PANEL, label=pt.name)
+                                  text=f"{pt.name} on link {pt.link}", panel=PANEL, label=pt.name,
+                                  say=("on_link", pt.name, pt.link, pt.base[0]))
         return
     U, V = pt.base
 
@@ -151,4 +154,5 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
         return (u[0] + along * ux - left * uy, u[1] + along * uy + left * ux)
 
     b.mech[pt.name] = b.g.add(pt.name, "point", placed, (b.mech[U], b.mech[V]), role="given",
-                              text=f"{pt.name} on link {pt.link}", panel=PANEL, label=pt.name)
+                              text=f"{pt.name} on link {pt.link}", panel=PANEL, label=pt.name,
+                              say=("on_link", pt.name, pt.link, U, V))

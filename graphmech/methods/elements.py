@@ -31,16 +31,20 @@ def vector(b: "LinkageConstruction", panel: str, start: str, end: str, role: Rol
 
 
 def image(b: "LinkageConstruction", panel: str, images: dict[str, str], point: str, lab: str, kernel: Callable[..., Components],
-          inputs: tuple[str, ...], text: str) -> str:
-    """The image of a point in a polygon (its letter ``lab``: b, c′ …), found by ``kernel``."""
+          inputs: tuple[str, ...], text: str, say: tuple[str, ...] = ()) -> str:
+    """The image of a point in a polygon (its letter ``lab``: b, c′ …), found by ``kernel``;
+    ``say``: the step for the construction protocol (:class:`~graphmech.construction.graph.Step`)."""
     images[point] = b.g.add(f"{panel[0]}:{lab}", "point", kernel, inputs, role="result", text=text,
-                            panel=panel, label=lab)
+                            panel=panel, label=lab, say=say)
     return images[point]
 
 
-def line(b: "LinkageConstruction", panel: str, name: str, kernel: Callable[..., Components], inputs: tuple[str, ...], text: str) -> str:
-    """A construction line ("through b draw ⟂ BC"), drawn thin through the points it carries."""
-    return b.g.add(f"{panel[0]}:{name}", "line", kernel, inputs, role="construction", text=text, panel=panel)
+def line(b: "LinkageConstruction", panel: str, name: str, kernel: Callable[..., Components], inputs: tuple[str, ...], text: str,
+         say: tuple[str, ...] = ()) -> str:
+    """A construction line ("through b draw ⟂ BC"), drawn thin through the points it carries (its
+    first input); ``say`` as for :func:`image`."""
+    return b.g.add(f"{panel[0]}:{name}", "line", kernel, inputs, role="construction", text=text, panel=panel,
+                   say=say)
 
 
 def direction(b: "LinkageConstruction", x: str, y: str) -> str:

@@ -26,7 +26,8 @@ def _add(b: "LinkageConstruction", name: str, unit: str, kernel: Callable[..., C
          exact: Exact, panel: str, segment: tuple[str, ...] = ()) -> str:
     slot = f"m:{name}"
     if not b.g.has(slot):
-        b.g.add(slot, "scalar", kernel, inputs, role="hidden", text=f"measure {name}", panel=panel)
+        b.g.add(slot, "scalar", kernel, inputs, role="hidden", text=f"measure {name}", panel=panel,
+                say=("measure", name))
         b.quantity(Quantity(name, unit, slot, exact, panel, segment))
     return slot
 

@@ -35,7 +35,7 @@ def label(point: str) -> str:
 
 def add_pole(b: "LinkageConstruction") -> None:
     b.g.add(POLE, "point", lambda ops: (0.0, 0.0), (), role="result", text="pole p", panel=PANEL,
-            label="p")
+            label="p", say=("pole",))
     for name in b.linkage.frame_points:
         b.vel[name] = POLE  # fixed points have zero velocity: their image is the pole
 
@@ -57,7 +57,7 @@ def _crank(b: "LinkageConstruction", d: Crank) -> None:
         return (p[0] - k * (t[1] - a[1]), p[1] + k * (t[0] - a[0]))
 
     img = E.image(b, PANEL, b.vel, d.tip, label(d.tip), tip, (POLE, b.mech[d.pivot], b.mech[d.tip]),
-                 f"p{label(d.tip)} ⟂ {d.pivot}{d.tip}, p{label(d.tip)} = ω{d.link}·l_{d.pivot}{d.tip}/μv")
+                 f"p{label(d.tip)} ⟂ {d.pivot}{d.tip}, p{label(d.tip)} = ω{d.link}·l_{d.pivot}{d.tip}/μv", say=("crank", d.pivot, d.tip, d.link))
     E.vector(b, PANEL, POLE, img)
     measure.omega(b, d.link, d.pivot, d.tip)
 
@@ -66,7 +66,7 @@ def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
     gx, gy = d.guide.direction
     k = d.velocity / b.scales["v"]
     img = E.image(b, PANEL, b.vel, d.point, label(d.point), lambda ops, p: (p[0] + k * gx, p[1] + k * gy), (POLE,),
-                 f"p{label(d.point)} ∥ guide, p{label(d.point)} = v/μv")
+                 f"p{label(d.point)} ∥ guide, p{label(d.point)} = v/μv", say=("slider", d.point))
     E.vector(b, PANEL, POLE, img)
     measure.zero_rate(b, d.link)
 
@@ -74,10 +74,12 @@ def _slider(b: "LinkageConstruction", d: SliderInput) -> None:
 def _rrr(b: "LinkageConstruction", y: RRR) -> None:
     P, C, Q = y.p, y.c, y.q
     lp, lq, lc = _img_label(b, P), _img_label(b, Q), label(C)
-    li = E.line(b, PANEL, f"⟂{P}·{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}")
-    lj = E.line(b, PANEL, f"⟂{Q}·{C}@{lq}", K.line_perpendicular_to, (b.vel[Q], E.direction(b, Q, C)), f"through {lq} draw ⟂ {Q}{C}")
+    li = E.line(b, PANEL, f"⟂{P}·{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}",
+                  say=("perp", P, C))
+    lj = E.line(b, PANEL, f"⟂{Q}·{C}@{lq}", K.line_perpendicular_to, (b.vel[Q], E.direction(b, Q, C)), f"through {lq} draw ⟂ {Q}{C}",
+                  say=("perp", Q, C))
     img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, (li, lj),
-                 f"{lc} = (⟂{P}{C} through {lp}) ∩ (⟂{Q}{C} through {lq})")
+                 f"{lc} = (⟂{P}{C} through {lp}) ∩ (⟂{Q}{C} through {lq})", say=("meet",))
     b.g.extend_line(li, img)
     b.g.extend_line(lj, img)
     E.vector(b, PANEL, POLE, img)
@@ -91,11 +93,12 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     P, C = y.p, y.c
     gx, gy = y.guide.direction
     lp, lc = _img_label(b, P), label(C)
-    li = E.line(b, PANEL, f"⟂{P}·{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}")
+    li = E.line(b, PANEL, f"⟂{P}·{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}",
+                  say=("perp", P, C))
     lg = E.line(b, PANEL, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
-               f"through p draw ∥ the guide of {C}")
+               f"through p draw ∥ the guide of {C}", say=("guide", C))
     img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, (li, lg),
-                 f"{lc} = (⟂{P}{C} through {lp}) ∩ (∥ guide through p)")
+                 f"{lc} = (⟂{P}{C} through {lp}) ∩ (∥ guide through p)", say=("meet",))
     b.g.extend_line(li, img)
     b.g.extend_line(lg, img)
     E.vector(b, PANEL, POLE, img)
@@ -110,10 +113,12 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     xbar, xblock = y.coincident
     b.vel[xblock] = b.vel[X]
     lp, lx, lc = _img_label(b, Bp), _img_label(b, X), label(xbar)
-    lt = E.line(b, PANEL, f"⟂{Bp}·{X}@{lp}", K.line_perpendicular_to, (b.vel[Bp], E.direction(b, Bp, X)), f"through {lp} draw ⟂ {Bp}{X}")
-    lr = E.line(b, PANEL, f"∥{Bp}·{X}@{lx}", K.line_parallel_to, (b.vel[X], E.direction(b, Bp, X)), f"through {lx} draw ∥ {Bp}{X}")
+    lt = E.line(b, PANEL, f"⟂{Bp}·{X}@{lp}", K.line_perpendicular_to, (b.vel[Bp], E.direction(b, Bp, X)), f"through {lp} draw ⟂ {Bp}{X}",
+                  say=("perp", Bp, X))
+    lr = E.line(b, PANEL, f"∥{Bp}·{X}@{lx}", K.line_parallel_to, (b.vel[X], E.direction(b, Bp, X)), f"through {lx} draw ∥ {Bp}{X}",
+                  say=("par", Bp, X))
     img = E.image(b, PANEL, b.vel, xbar, label(xbar), K.intersect_lines, (lt, lr),
-                 f"{lc} = (⟂{Bp}{X} through {lp}) ∩ (∥{Bp}{X} through {lx})")
+                 f"{lc} = (⟂{Bp}{X} through {lp}) ∩ (∥{Bp}{X} through {lx})", say=("meet",))
     b.g.extend_line(lt, img)
     b.g.extend_line(lr, img)
     E.vector(b, PANEL, POLE, img)
@@ -131,11 +136,11 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     sx, sy = math.cos(y.slot_angle), math.sin(y.slot_angle)
     lp, lc = _img_label(b, P), label(C)
     lg = E.line(b, PANEL, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
-               f"through p draw ∥ the guide of {C}")
+               f"through p draw ∥ the guide of {C}", say=("guide", C))
     ls = E.line(b, PANEL, f"∥slot{C}@{lp}", lambda ops, t: K.line_fixed(ops, t, sx, sy), (b.vel[P],),
-               f"through {lp} draw ∥ the slot")
+               f"through {lp} draw ∥ the slot", say=("slot", C))
     img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, (lg, ls),
-                 f"{lc} = (∥ guide through p) ∩ (∥ slot through {lp})")
+                 f"{lc} = (∥ guide through p) ∩ (∥ slot through {lp})", say=("meet",))
     b.g.extend_line(lg, img)
     b.g.extend_line(ls, img)
     pblock, pslot = y.coincident
@@ -155,7 +160,7 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
     U, V = pt.base
     img = E.image(b, PANEL, b.vel, pt.name, label(pt.name), K.similar_point,
                  (b.mech[U], b.mech[V], b.mech[pt.name], b.vel[U], b.vel[V]),
-                 f"{label(pt.name)}: △{label(U)}{label(V)}{label(pt.name)} ∼ △{U}{V}{pt.name} (velocity image)")
+                 f"{label(pt.name)}: △{label(U)}{label(V)}{label(pt.name)} ∼ △{U}{V}{pt.name} (velocity image)", say=("image", U, V, pt.name))
     E.vector(b, PANEL, POLE, img)
     E.vector(b, PANEL, b.vel[U], img, "construction", kind="segment")
     E.vector(b, PANEL, b.vel[V], img, "construction", kind="segment")

@@ -18,6 +18,7 @@ import dataclasses
 from typing import TYPE_CHECKING, Any
 
 from graphmech.problems import balancing, cam, cycle, efficiency, flywheel, forces, linkage, structure
+from graphmech.errors import NotApplicable
 from graphmech.problems.kind import Analysis, Extra, Footer, Kind
 
 if TYPE_CHECKING:  # annotations only: importing the registry stays light
@@ -62,4 +63,15 @@ def sheet(scene: Scene[Any], footer: Footer = ()) -> tuple[Sheet, list[str]]:
     return dataclasses.replace(drawing, fit=scene.page.fit, title_block=scene.page.title_block), warnings
 
 
-__all__ = ["KINDS", "Kind", "check", "kind_of", "sheet", "tables", "with_precision"]
+def steps(scene: Scene[Any]) -> list[str]:
+    """The construction protocol of a scene: its steps as the book words them, in the scene's
+    notation, with every length drawn and every value read; one line per step, not numbered (the
+    caller numbers them). A kind without a protocol yet is refused in one line."""
+    kind = kind_of(scene)
+    if kind.steps is None:
+        with_one = ", ".join(k.name for k in KINDS.values() if k.steps is not None)
+        raise NotApplicable(f"no construction protocol for a {kind.name} scene yet (graphmech steps covers: {with_one})")
+    return kind.steps(scene)
+
+
+__all__ = ["KINDS", "Kind", "check", "kind_of", "sheet", "steps", "tables", "with_precision"]

@@ -60,6 +60,8 @@ class Kind(Generic[P, A]):
     poses(data) → whether a scene file poses this kind (default: it has one of ``tables``).
     mixture(data) → (key path, reason) refusing a scene that mixes this kind with another,
         or None.
+    steps(scene) → the construction protocol, one line per step, not numbered (``graphmech
+        steps``); None: this kind has none yet.
     """
 
     name: str
@@ -73,6 +75,7 @@ class Kind(Generic[P, A]):
     bench: Callable[[bool], Bench] | None = None
     poses: Callable[[Mapping[str, Any]], bool] | None = None
     mixture: Callable[[Mapping[str, Any]], tuple[str, str] | None] | None = None
+    steps: Callable[[Scene[P]], list[str]] | None = None
 
     def posed_by(self, data: Mapping[str, Any]) -> bool:
         """Whether the scene file ``data`` poses this kind of problem."""

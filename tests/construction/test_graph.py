@@ -142,3 +142,13 @@ def test_values_at_one_position_of_a_batch():
     got = values_at(vals, 1)
     assert got == {"x": 2.0, "p": (4.0, 7.0), "c": 5.0, "n": "name"}
     assert type(got["x"]) is float and type(got["p"][0]) is float
+
+
+def test_a_step_keeps_its_protocol_phrase_and_a_plain_step_has_none():
+    from graphmech.construction import Construction
+
+    g = Construction()
+    g.add("A", "point", lambda ops: (0.0, 0.0), (), say=("frame", "A"))
+    g.add("B", "point", lambda ops, a: (a[0] + 1.0, 0.0), ("A",))
+    assert g.steps["A"].say == ("frame", "A") and g.steps["B"].say == ()
+    assert g.prune(["B"]).by_name["A"].say == ("frame", "A")

@@ -71,3 +71,12 @@ def test_every_registered_kind_names_itself_and_reads_and_checks():
     for name, kind in KINDS.items():
         assert kind.name == name and kind.tables
         assert callable(kind.read) and callable(kind.analyse) and callable(kind.judge) and callable(kind.sheet)
+
+
+def test_the_registry_refuses_a_protocol_a_kind_does_not_have():
+    from graphmech.errors import NotApplicable
+    from graphmech.problems import steps
+
+    assert KINDS["linkage"].steps is not None and KINDS["flywheel"].steps is None
+    with pytest.raises(NotApplicable, match="no construction protocol for a flywheel scene yet"):
+        steps(SimpleNamespace(kind="flywheel"))

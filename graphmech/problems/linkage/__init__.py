@@ -53,6 +53,12 @@ def _extras(an: LinkageAnalysis) -> dict[str, Any]:
     return {"instant_centres": summary(an)}
 
 
+def _steps(scene: Scene[None]) -> list[str]:
+    from graphmech.problems.linkage.steps import linkage_steps
+
+    return linkage_steps(scene)
+
+
 def _bench(quick: bool) -> Bench:
     from graphmech.problems.instant_centres.bench import ic_records
     from graphmech.problems.linkage.bench import bench
@@ -62,4 +68,4 @@ def _bench(quick: bool) -> Bench:
 
 
 KIND = Kind("linkage", LINKAGE_KEYS, _read, _analyse, _judge, _sheet, _extras, bench=_bench,
-            poses=lambda data: True)  # the last one asked: a scene that poses nothing else is a linkage's
+            poses=lambda data: True, steps=_steps)  # the last one asked: a scene that poses nothing else is a linkage's
