@@ -123,3 +123,14 @@ def test_the_check_table_shows_in_jupyter_as_html_with_text_escaped():
     html = p.check(measured={"v_E": 1.0})._repr_html_()
     assert html.startswith("<table><caption>&lt;b&gt;x&lt;/b&gt;") and html.count("<tr>") == 1 + 9 + 1
     assert "OUT OF TOLERANCE" in html and isinstance(p.check(), CheckTable)
+
+
+def test_steps_is_the_construction_protocol_with_the_tables_numbers():
+    p = gm.load(BLOCK)
+    lines = p.steps()
+    assert lines[0].startswith("choose μl = 0.002 m/mm") and len(lines) > 20
+    pe = p.check()["v_E"]
+    assert f"measure pe = {pe.drawn_mm:.2f} mm: v_E = pe·μv = {pe.graphical:.4f} m/s" in lines
+    code, out, _ = run_cli("steps", str(BLOCK))
+    assert code == 0 and out.splitlines() == [f"{k}. {line}" for k, line in enumerate(lines, 1)]
+    assert gm.load(BLOCK).replace({"driver.angle": 60}).steps()[0].endswith("φ₁ = 60°")
