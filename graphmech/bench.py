@@ -10,26 +10,26 @@ backwards), and times one whole sheet.
 """
 from __future__ import annotations
 
-import math
-from pathlib import Path
+from importlib.resources import as_file
 from typing import Any
 
+from graphmech.packaged import examples
 from graphmech.problems import KINDS
 from graphmech.scene import render_scene
 from graphmech.timing import best_time
 
-#: The full-cycle sheet timed from the scene file to the SVG (a repository's copy, not installed).
-SHEET_SCENE = Path(__file__).resolve().parents[1] / "figures" / "scenes" / "linkage.slider_crank_offset-cycle.toml"
+#: The full-cycle sheet timed from the scene file to the SVG: an example scene, installed with
+#: the package (graphmech.packaged).
+SHEET_SCENE = "linkage.slider_crank_offset-cycle.toml"
 
 
-def sheet_record(repeat: int = 3, scene: Path = SHEET_SCENE) -> dict[str, Any]:
+def sheet_record(repeat: int = 3) -> dict[str, Any]:
     """The time to render the 12-position full-cycle sheet of the offset slider-crank, from the
     scene file to the SVG text."""
-    secs = best_time(lambda: render_scene(scene), repeat)[0] if scene.exists() else math.nan
+    with as_file(examples().joinpath(SHEET_SCENE)) as scene:
+        secs = best_time(lambda: render_scene(scene), repeat)[0]
     return {"method": "full-cycle-sheet", "case": "slider-crank-offset-12", "n": 12,
-            "seconds": secs if math.isfinite(secs) else 0.0, "max_rel_error": None,
-            "note": "render of figures/scenes/linkage.slider_crank_offset-cycle.toml" if math.isfinite(secs)
-            else "scene not found (an installed copy without figures/)"}
+            "seconds": secs, "max_rel_error": None, "note": f"render of the example scene {SHEET_SCENE}"}
 
 
 def sheet_note(record: dict[str, Any]) -> str:

@@ -46,7 +46,7 @@ PACKAGE = ROOT / "graphmech"
 #: ``__init__`` is graphmech/__init__.py alone); a module is in the layer of its longest prefix.
 CONTRACTS: dict[str, tuple[str, str]] = {
     # layer          modules          may import
-    "base":         ("__init__ errors tolerances scales files timing accuracy", ""),
+    "base":         ("__init__ errors tolerances scales files timing accuracy packaged", ""),
     "geometry":     ("geometry",     "base"),
     "construction": ("construction", "geometry base"),
     "mechanisms":   ("mechanisms",   "construction geometry base"),
@@ -60,8 +60,10 @@ CONTRACTS: dict[str, tuple[str, str]] = {
     "problems":     ("problems",     "methods drawing render exact mechanisms construction geometry base"),
     "scene":        ("scene",        "problems render drawing mechanisms base"),
     "bench":        ("bench",        "scene problems methods drawing render exact mechanisms construction geometry base"),
-    "cli":          ("cli",          "bench scene problems methods drawing render exact mechanisms construction "
-                                     "geometry base"),
+    # the static HTML page of a folder's figures and checks (graphmech gallery)
+    "gallery":      ("gallery",      "scene problems base"),
+    "cli":          ("cli",          "gallery bench scene problems methods drawing render exact mechanisms "
+                                     "construction geometry base"),
     # `python -m graphmech`: the only module that may import cli
     "main":         ("__main__",     "cli"),
 }
