@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import html
 import os
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Sequence
+from typing import TYPE_CHECKING
 from urllib.parse import quote
 
 from graphmech.accuracy import percent
@@ -44,8 +45,8 @@ class Entry:
     source: bytes | None  # the scene file, copied beside the page (None: it could not be read)
     title: str = ""
     svg: str | None = None
-    rows: tuple["Row", ...] = ()
-    verdicts: tuple["Verdict", ...] = ()
+    rows: tuple[Row, ...] = ()
+    verdicts: tuple[Verdict, ...] = ()
     scales: tuple[str, ...] = ()
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
@@ -120,8 +121,9 @@ def _check_table(e: Entry) -> list[str]:
 def _verdict_table(e: Entry) -> list[str]:
     if not e.verdicts:
         return []
-    out = ['<table class="measured">', "<thead><tr><th>measured</th><th>value</th><th>expected</th>"
-           "<th>± tol</th><th>verdict</th><th>unit</th></tr></thead>", "<tbody>"]
+    head = ["measured", "value", "expected", "± tol", "verdict", "unit"]
+    out = ['<table class="measured">', "<thead><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr></thead>",
+           "<tbody>"]
     for v in e.verdicts:
         verdict = '<td>ok</td>' if v.ok else '<td class="bad">OUT OF TOLERANCE</td>'
         out.append(f'<tr><td>{_e(v.name)}</td><td class="n">{v.measured:.6g}</td><td class="n">{v.expected:.6g}'

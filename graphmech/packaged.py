@@ -63,7 +63,7 @@ def _unknown(what: str, name: str, known: list[str], listing: str) -> GraphmechE
 def example(name: str) -> Traversable:
     """The example scene file ``name`` (with or without .toml); an unknown name is refused with
     the closest name."""
-    stem = name[:-5] if name.endswith(".toml") else name
+    stem = name.removesuffix(".toml")
     known = example_names()
     if stem not in known:
         raise _unknown("example", name, known, "graphmech examples lists them")
