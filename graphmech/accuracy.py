@@ -28,6 +28,16 @@ CONSTRUCTION, DISCRETISATION, READING = "construction", "discretisation", "readi
 SOURCES = (CONSTRUCTION, DISCRETISATION, READING)
 
 
+def percent(fraction: float) -> str:
+    """A relative error as the check tables print it (text and the gallery's HTML).
+
+    >>> percent(0.08), percent(1.3e-4), percent(0.0)
+    ('8 %', '0.013 %', '<1e-10 %')
+    """
+    p = 100.0 * fraction
+    return "<1e-10 %" if p < 1e-10 else f"{p:.2g} %"
+
+
 def richardson(coarse: float, fine: float, order: float) -> float:
     """The estimated absolute error of ``coarse`` (at N) from ``fine`` (at 2N), order p known."""
     return cast(float, abs(coarse - fine) * 2.0**order / (2.0**order - 1.0))  # float ** float is Any to mypy

@@ -41,6 +41,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, overload
 
+from graphmech.accuracy import percent
 from graphmech.errors import GraphmechError, SceneError
 from graphmech.problems import check as check_scene
 from graphmech.problems import steps
@@ -263,12 +264,6 @@ class CheckTable:
                 f"<thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>")
 
 
-def percent(fraction: float) -> str:
-    """A relative error as the table prints it: '8 %', '0.013 %', '<1e-10 %'."""
-    p = 100.0 * fraction
-    return "<1e-10 %" if p < 1e-10 else f"{p:.2g} %"
-
-
 # ------------------------------------------------------------------------------ the drawing
 
 
@@ -301,4 +296,4 @@ class Drawing:
         return f"<graphmech.Drawing {self.name!r}: {page}, {len(self.warnings)} warnings>"
 
 
-__all__ = ["ROW_FIELDS", "CheckTable", "Drawing", "Problem", "from_dict", "load", "loads", "percent"]
+__all__ = ["ROW_FIELDS", "CheckTable", "Drawing", "Problem", "from_dict", "load", "loads"]

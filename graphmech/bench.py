@@ -10,53 +10,51 @@ backwards), and times one whole sheet.
 """
 from __future__ import annotations
 
-import math
 import os
 import time
-from pathlib import Path
+from importlib.resources import as_file
 from typing import Any
 
+from graphmech.packaged import examples
 from graphmech.problems import KINDS
 from graphmech.scene import render_scene
 from graphmech.timing import best_time
 
-#: The full-cycle sheet timed from the scene file to the SVG (a repository's copy, not installed).
-SHEET_SCENE = Path(__file__).resolve().parents[1] / "figures" / "scenes" / "linkage.slider_crank_offset-cycle.toml"
+#: The full-cycle sheet timed from the scene file to the SVG: an example scene, installed with
+#: the package (graphmech.packaged).
+SHEET_SCENE = "linkage.slider_crank_offset-cycle.toml"
 #: The scene whose variants the batch record makes: a teacher's exercise, one per crank angle.
-BATCH_SCENE = SHEET_SCENE.parent / "kin.oscillating_block.toml"
+BATCH_SCENE = "kin.oscillating_block.toml"
 #: Variants in the batch record (``--quick``: fewer).
 BATCH_VARIANTS, BATCH_VARIANTS_QUICK = 100, 12
 
 
-def batch_record(quick: bool = False, scene: Path = BATCH_SCENE) -> dict[str, Any]:
+def batch_record(quick: bool = False) -> dict[str, Any]:
     """The time to make the figures (SVG) and checks of ``BATCH_VARIANTS`` variants of one scene
     (the crank angle over a turn) on every core, as ``graphmech batch`` does, but writing
     nothing; ``max_rel_error`` is the largest of all their check tables."""
     from graphmech import batch
 
     n = BATCH_VARIANTS_QUICK if quick else BATCH_VARIANTS
-    if not scene.exists():
-        return {"method": "batch", "case": "oscillating-block-variants", "n": n, "seconds": 0.0,
-                "max_rel_error": None, "note": "scene not found (an installed copy without figures/)"}
-    todo = batch.jobs([str(scene)], [{"driver.angle": round(360.0 * k / n, 6)} for k in range(n)])
-    start = time.perf_counter()
-    results = batch.run(todo, batch.Options(figure="svg", check=True))
-    seconds = time.perf_counter() - start
+    with as_file(examples().joinpath(BATCH_SCENE)) as scene:
+        todo = batch.jobs([str(scene)], [{"driver.angle": round(360.0 * k / n, 6)} for k in range(n)])
+        start = time.perf_counter()
+        results = batch.run(todo, batch.Options(figure="svg", check=True))
+        seconds = time.perf_counter() - start
     failed = [r.error for r in results if r.error is not None]
     errors = [row.rel_error for r in results if r.table is not None for row in r.table]
     return {"method": "batch", "case": "oscillating-block-variants", "n": n, "seconds": seconds,
             "max_rel_error": max(errors) if errors else None, "failed": len(failed), "workers": os.cpu_count() or 1,
-            "note": f"{n} variants of kin.oscillating_block.toml (figure + check each), on a process pool"}
+            "note": f"{n} variants of the example scene {BATCH_SCENE} (figure + check each), on a process pool"}
 
 
-def sheet_record(repeat: int = 3, scene: Path = SHEET_SCENE) -> dict[str, Any]:
+def sheet_record(repeat: int = 3) -> dict[str, Any]:
     """The time to render the 12-position full-cycle sheet of the offset slider-crank, from the
     scene file to the SVG text."""
-    secs = best_time(lambda: render_scene(scene), repeat)[0] if scene.exists() else math.nan
+    with as_file(examples().joinpath(SHEET_SCENE)) as scene:
+        secs = best_time(lambda: render_scene(scene), repeat)[0]
     return {"method": "full-cycle-sheet", "case": "slider-crank-offset-12", "n": 12,
-            "seconds": secs if math.isfinite(secs) else 0.0, "max_rel_error": None,
-            "note": "render of figures/scenes/linkage.slider_crank_offset-cycle.toml" if math.isfinite(secs)
-            else "scene not found (an installed copy without figures/)"}
+            "seconds": secs, "max_rel_error": None, "note": f"render of the example scene {SHEET_SCENE}"}
 
 
 def sheet_note(record: dict[str, Any]) -> str:

@@ -98,6 +98,19 @@ def _parser() -> argparse.ArgumentParser:
     b.add_argument("--json", action="store_true")
     b.add_argument("-o", "--output", metavar="DIR", help="also write bench.json and log-log plots of error and time into DIR")
     b.add_argument("--quick", action="store_true", help="fewer repetitions")
+    # what is installed besides the code (graphmech.packaged) and the gallery (graphmech.gallery)
+    e = sub.add_parser("examples", help="list the example scenes installed with graphmech, or copy one")
+    e.add_argument("name", nargs="?", metavar="NAME", help="the example to copy (as listed)")
+    e.add_argument("-o", "--output", metavar="FILE", help="copy it to FILE (default: ./NAME.toml; never overwrites)")
+    e.add_argument("-d", "--directory", metavar="DIR", help="copy it into DIR as NAME.toml")
+    n = sub.add_parser("new", help="a commented scene template to start from (stdout, or -o FILE)")
+    n.add_argument("kind", metavar="KIND", help="linkage, cam, flywheel, forces, balancing, efficiency, structure "
+                                                "or cycle")
+    n.add_argument("-o", "--output", metavar="FILE", help="write it to FILE (never overwrites)")
+    g = sub.add_parser("gallery", help="a static HTML page of the figures and checks of the scenes in DIR")
+    g.add_argument("folder", metavar="DIR", help="the scenes: DIR/*.toml")
+    g.add_argument("-d", "--directory", metavar="SITE", required=True,
+                   help="write SITE/index.html, each figure and a copy of each scene (exit 2 if a scene failed)")
     return p
 
 
@@ -147,6 +160,8 @@ def main(argv: Sequence[str] | None = None) -> int:
                 return _batch(args)
             if args.command == "steps":
                 return _steps(args)
+            if args.command in ("examples", "new", "gallery"):
+                return _packaged(args)
             return _bench(args)
     except GraphmechError as e:  # a bad scene, a construction that cannot be made, another refusal
         say(one_line(e, _file_name(args)))
@@ -334,6 +349,45 @@ def _steps(args: argparse.Namespace) -> int:
     args.current = args.scene
     lines = batch.problem(batch.Job(args.scene, variants[0], args.page)).steps()
     print("\n".join(f"{k}. {line}" for k, line in enumerate(lines, 1)))
+    return EXIT_OK
+
+
+# ---------------------------------------------------------------------------- examples, new, gallery
+
+
+def _packaged(args: argparse.Namespace) -> int:
+    from graphmech import packaged
+
+    if args.command == "gallery":
+        from graphmech.gallery import make_gallery
+
+        index, entries = make_gallery(args.folder, args.directory)
+        for e in entries:
+            if e.error is not None:
+                say(f"graphmech gallery: {e.error}")
+        print(index)
+        return EXIT_BAD_INPUT if any(e.error is not None for e in entries) else EXIT_OK
+    if args.command == "new":
+        text = packaged.template(args.kind)
+        if args.output is None:
+            sys.stdout.write(text)
+        else:
+            packaged.write_new(args.output, text)
+            print(args.output)
+        return EXIT_OK
+    if args.name is None:
+        names = packaged.example_names()
+        width = max(map(len, names))
+        for name in names:
+            print(f"{name:<{width}}  {packaged.example_title(name)}")
+        return EXIT_OK
+    if args.output and args.directory:
+        say("graphmech: give -o FILE or -d DIR, not both")
+        return EXIT_BAD_INPUT
+    scene = packaged.example(args.name)
+    out = Path(args.output) if args.output else Path(args.directory or ".") / scene.name
+    packaged.write_new(out, scene.read_text(encoding="utf-8"))
+    print(out)
     return EXIT_OK
 
 

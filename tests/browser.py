@@ -344,6 +344,30 @@ class Browser:
         data["page_mm"] = root_size_mm(Path(svg).read_text(encoding="utf-8"))
         return data
 
+    def evaluate(self, page: Path, expression: str) -> tuple[Any, list[str]]:
+        """Any local file (an HTML page) opened in a fresh tab, after its load event (its images
+        loaded or failed): ``expression``'s value (awaited, by value) and the page's errors."""
+        target = self._call("Target.createTarget", {"url": "about:blank"})["targetId"]
+        session = self._call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+        try:
+            for domain in ("Page", "Runtime", "Log"):
+                self._call(f"{domain}.enable", session=session)
+            self._events.clear()
+            nav = self._call("Page.navigate", {"url": Path(page).resolve().as_uri()}, session=session)
+            if nav.get("errorText"):
+                raise BrowserError(f"{page.name}: {nav['errorText']}")
+            self._wait_for("Page.loadEventFired", session)
+            value = self._call("Runtime.evaluate", {"expression": expression, "awaitPromise": True,
+                                                    "returnByValue": True}, session=session)
+            errors = [msg for e in self._events if e.get("sessionId") == session
+                      for msg in [_error_message(e)] if msg]
+        finally:
+            self._call("Target.closeTarget", {"targetId": target})
+            self._events.clear()
+        if "exceptionDetails" in value:
+            raise BrowserError(f"{page.name}: the script failed: {value['exceptionDetails']}")
+        return value["result"].get("value"), errors
+
     def close(self) -> None:
         if self._proc.poll() is None:
             try:

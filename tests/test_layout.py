@@ -46,7 +46,7 @@ PACKAGE = ROOT / "graphmech"
 #: ``__init__`` is graphmech/__init__.py alone); a module is in the layer of its longest prefix.
 CONTRACTS: dict[str, tuple[str, str]] = {
     # layer          modules          may import
-    "base":         ("version errors tolerances scales files timing accuracy", ""),
+    "base":         ("version errors tolerances scales files timing accuracy packaged", ""),
     "geometry":     ("geometry",     "base"),
     "construction": ("construction", "geometry base"),
     "mechanisms":   ("mechanisms",   "construction geometry base"),
@@ -61,9 +61,11 @@ CONTRACTS: dict[str, tuple[str, str]] = {
     "scene":        ("scene variants", "problems render drawing mechanisms base"),
     # the Python API (a Problem, its check table and drawing) and what runs many of them
     "api":          ("api batch",    "scene problems render drawing base"),
+    # the static HTML page of a folder's figures and checks (graphmech gallery)
+    "gallery":      ("gallery",      "api scene problems base"),
     "bench":        ("bench",        "api scene problems methods drawing render exact mechanisms construction geometry "
                                      "base"),
-    "cli":          ("cli",          "package bench api scene problems methods drawing render exact mechanisms "
+    "cli":          ("cli",          "package gallery bench api scene problems methods drawing render exact mechanisms "
                                      "construction geometry base"),
     # `import graphmech`: the version, and the API loaded on first use (PEP 562)
     "package":      ("__init__",     "api base"),

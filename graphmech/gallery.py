@@ -1,0 +1,199 @@
+"""``graphmech gallery DIR -d SITE``: a static HTML page of the figures of a folder of scenes.
+
+For each scene ``DIR/*.toml`` (by file name) the page shows its figure (``SITE/<name>.svg``, an
+``<img>``), its check table — the rows of ``graphmech check`` with how accurate each says it is —,
+its measured values judged, its warnings, and links to the figure and to a copy of the scene
+(``SITE/<name>.toml``). A scene that cannot be read, drawn or checked is listed with its one-line
+reason and the others are still written. Every text taken from a scene is HTML-escaped; the output
+depends on the scenes alone (no clock, sorted order), so the same folder gives the same bytes.
+"""
+from __future__ import annotations
+
+import html
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING
+from urllib.parse import quote
+
+from graphmech.accuracy import percent
+from graphmech.errors import GraphmechError, SceneError, printable
+from graphmech.files import write_atomic
+
+if TYPE_CHECKING:
+    from graphmech.problems.judging import Row, Verdict
+
+INDEX = "index.html"
+
+STYLE = """
+body { font-family: "DejaVu Serif", "Noto Serif CJK SC", serif; margin: 1.5em auto; max-width: 80em;
+       padding: 0 1em; color: #111; }
+h1 { font-size: 1.5em; } h2 { font-size: 1.2em; margin-top: 2em; border-top: 1px solid #999; padding-top: .5em; }
+figure { margin: 1em 0; } figure img { max-width: 100%; height: auto; border: 1px solid #ccc; }
+table { border-collapse: collapse; font-size: .9em; margin: .5em 0; }
+th, td { border: 1px solid #bbb; padding: .15em .5em; } td.n { text-align: right; font-variant-numeric: tabular-nums; }
+td.bad, .failed { color: #a00; } ul.warnings { color: #730; } p.scales, p.files { font-size: .9em; }
+"""
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One scene of the gallery: its figure and check, or the reason it failed."""
+
+    name: str  # the scene file's name without .toml (the figure and the copy are <name>.svg, <name>.toml)
+    source: bytes | None  # the scene file, copied beside the page (None: it could not be read)
+    title: str = ""
+    svg: str | None = None
+    rows: tuple[Row, ...] = ()
+    verdicts: tuple[Verdict, ...] = ()
+    scales: tuple[str, ...] = ()
+    notes: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
+    error: str | None = None  # one line: why the scene failed
+
+
+def make_entry(path: Path) -> Entry:
+    """Draw and check one scene file as ``graphmech render`` and ``graphmech check`` do."""
+    from graphmech.problems import check
+    from graphmech.scene import load_scene, render_scene
+
+    name, file = path.name[:-5], path.name
+    try:
+        source = path.read_bytes()
+    except OSError as e:
+        return Entry(name, None, error=printable(f"{file}: cannot read the file ({e.strerror or e})"))
+    try:
+        svg, found = render_scene(path)
+        an, verdicts, _, lines = check(load_scene(path))
+    except SceneError as e:
+        return Entry(name, source, error=e.one_line(file))
+    except GraphmechError as e:
+        return Entry(name, source, error=printable(f"{file}: {e}"))
+    except Exception as e:  # a bug of ours: this scene fails in one line, the others are still shown
+        return Entry(name, source, error=printable(f"{file}: internal error ({type(e).__name__}: {e}); "
+                                                   "please report it with the scene"))
+    warnings = list(dict.fromkeys([*found, *an.warnings]))  # the drawing's and the check's, each once
+    return Entry(name, source, str(an.scene.title), svg, tuple(an.rows), tuple(verdicts),
+                 tuple(an.scale_notes()), tuple(lines), tuple(warnings))
+
+
+def scene_files(folder: str | os.PathLike[str]) -> list[Path]:
+    """The scenes of a gallery: ``folder/*.toml``, sorted by name (so the page is the same bytes on
+    every file system); refused in one line when there is none."""
+    where = Path(folder)
+    if not where.is_dir():
+        raise GraphmechError(f"{folder}: not a folder")
+    files = sorted((p for p in where.glob("*.toml") if p.is_file()), key=lambda p: p.name)
+    if not files:
+        raise GraphmechError(f"{folder}: no scene files (*.toml) in it")
+    return files
+
+
+def _e(text: object) -> str:
+    return html.escape(str(text), quote=True)
+
+
+def _href(file: str) -> str:
+    return _e(quote(file))
+
+
+def _check_table(e: Entry) -> list[str]:
+    if not e.rows:
+        return []
+    head = ["quantity", "drawn mm", "μ", "graphical", "exact", "rel. error", "unit", "error source",
+            "estimate"]
+    out = ['<table class="check">', "<thead><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr></thead>",
+           "<tbody>"]
+    for r in e.rows:
+        drawn = "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}"
+        source = r.error_source + (" (ill-conditioned)" if r.ill_conditioned else "")
+        estimate = "" if r.error_estimate is None else f"±{percent(r.error_estimate)} ({r.basis or r.error_source})"
+        cells = [(r.name, ""), (drawn, "n"), (f"{r.scale:.5g}", "n"), (f"{r.graphical:.9g}", "n"),
+                 (f"{r.exact:.9g}", "n"), (f"{r.rel_error:.1e}", "n"), (r.unit, ""), (source, ""),
+                 (estimate, "")]
+        out.append("<tr>" + "".join(f'<td class="{c}">{_e(v)}</td>' if c else f"<td>{_e(v)}</td>"
+                                    for v, c in cells) + "</tr>")
+    out += ["</tbody>", "</table>"]
+    return out
+
+
+def _verdict_table(e: Entry) -> list[str]:
+    if not e.verdicts:
+        return []
+    head = ["measured", "value", "expected", "± tol", "verdict", "unit"]
+    out = ['<table class="measured">', "<thead><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr></thead>",
+           "<tbody>"]
+    for v in e.verdicts:
+        verdict = '<td>ok</td>' if v.ok else '<td class="bad">OUT OF TOLERANCE</td>'
+        out.append(f'<tr><td>{_e(v.name)}</td><td class="n">{v.measured:.6g}</td><td class="n">{v.expected:.6g}'
+                   f'</td><td class="n">{v.tolerance:.3g}</td>{verdict}<td>{_e(v.unit)}</td></tr>')
+    out += ["</tbody>", "</table>"]
+    return out
+
+
+def _section(e: Entry) -> list[str]:
+    heading = e.title or e.name
+    out = [f'<section id="{_e("scene-" + e.name)}">', f"<h2>{_e(heading)}</h2>"]
+    links = [f'<a href="{_href(e.name + ".toml")}">{_e(e.name)}.toml</a>'] if e.source is not None else []
+    if e.error is not None:
+        out.append(f'<p class="failed">failed: {_e(e.error)}</p>')
+    else:
+        links.append(f'<a href="{_href(e.name + ".svg")}">{_e(e.name)}.svg</a>')
+        out.append(f'<figure><img src="{_href(e.name + ".svg")}" alt="{_e(heading)}"></figure>')
+        if e.scales:
+            out.append(f'<p class="scales">{_e(" · ".join(e.scales))}</p>')
+        out += _check_table(e) + _verdict_table(e)
+        if e.notes:
+            out += ['<ul class="notes">', *(f"<li>{_e(n)}</li>" for n in e.notes), "</ul>"]
+        if e.warnings:
+            out += ['<ul class="warnings">', *(f"<li>warning: {_e(w)}</li>" for w in e.warnings), "</ul>"]
+    if links:
+        out.append(f'<p class="files">{"scene and figure" if len(links) > 1 else "scene"}: {" · ".join(links)}</p>')
+    out.append("</section>")
+    return out
+
+
+def page(entries: Sequence[Entry], heading: str) -> str:
+    """The gallery's index.html for ``entries`` (in that order)."""
+    from graphmech.version import __version__
+
+    failed = sum(e.error is not None for e in entries)
+    count = f"{len(entries)} scene{'s' if len(entries) != 1 else ''}" + (f", {failed} failed" if failed else "")
+    out = ["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
+           '<meta name="viewport" content="width=device-width, initial-scale=1">',
+           f'<meta name="generator" content="graphmech {_e(__version__)}">',
+           f"<title>{_e(heading)}</title>", f"<style>{STYLE}</style>", "</head>", "<body>",
+           f"<h1>{_e(heading)}</h1>", f"<p>{_e(count)}: each figure with its check — graphical against exact.</p>",
+           '<nav><ul class="contents">']
+    for e in entries:
+        mark = ' <span class="failed">(failed)</span>' if e.error is not None else ""
+        out.append(f'<li><a href="#{_href("scene-" + e.name)}">{_e(e.name)}</a>{mark}</li>')
+    out.append("</ul></nav>")
+    for e in entries:
+        out += _section(e)
+    out += ["</body>", "</html>", ""]
+    return "\n".join(out)
+
+
+def make_gallery(folder: str | os.PathLike[str], site: str | os.PathLike[str]) -> tuple[Path, list[Entry]]:
+    """Write the gallery of ``folder``'s scenes into ``site`` (made if absent): index.html, each
+    figure and each scene's copy. Returns the index's path and the entries (those with an
+    ``error`` failed; the rest are written all the same)."""
+    files = scene_files(folder)
+    out = Path(site)
+    if out.exists() and not out.is_dir():
+        raise GraphmechError(f"{site}: is not a folder")
+    entries = [make_entry(p) for p in files]  # everything made before anything is written
+    out.mkdir(parents=True, exist_ok=True)
+    for e in entries:
+        if e.source is not None:
+            write_atomic(out / f"{e.name}.toml", e.source)
+        if e.svg is not None:
+            write_atomic(out / f"{e.name}.svg", e.svg)
+    index = out / INDEX
+    write_atomic(index, page(entries, f"graphmech gallery: {Path(folder).resolve().name}"))
+    return index, entries
+
+
+__all__ = ["INDEX", "Entry", "make_entry", "make_gallery", "page", "scene_files"]
