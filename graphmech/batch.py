@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from graphmech.api import CheckTable, Problem, load
-from graphmech.errors import GraphmechError, one_line
+from graphmech.errors import GraphmechError, one_line, printable
 from graphmech.variants import Assignment, value_text
 
 #: Fewer jobs than this are done in this process: a pool's start costs more than it gives.
@@ -95,8 +95,8 @@ def make(job: Job, options: Options) -> Result:
             warnings = drawing.warnings
             figure = _convert(drawing.svg, options.figure, options.dpi)
         table = p.check(options.measured, options.precision) if options.check else None
-        if table is not None and options.figure is None:
-            warnings = table.warnings
+        if table is not None:  # the drawing's and the check's, each once
+            warnings = tuple(dict.fromkeys([*warnings, *table.warnings]))
         return Result(job, p.name, figure, table, tuple(warnings))
     except GraphmechError as e:
         return Result(job, error=one_line(e, job.label))
@@ -104,6 +104,9 @@ def make(job: Job, options: Options) -> Result:
         return Result(job, error=f"{job.label}: {e.filename or ''}{': ' if e.filename else ''}{e.strerror or e}")
     except RecursionError:
         return Result(job, error=f"{job.label}: nested too deeply")
+    except Exception as e:  # a bug of ours: this job fails in one line, the others are still made
+        return Result(job, error=printable(f"{job.label}: internal error ({type(e).__name__}: {e}); "
+                                           "please report it with the scene"))
 
 
 def _convert(svg: str, fmt: str, dpi: float | None) -> bytes:

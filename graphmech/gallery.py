@@ -12,16 +12,17 @@ from __future__ import annotations
 import html
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 from urllib.parse import quote
 
 from graphmech.accuracy import percent
-from graphmech.errors import GraphmechError, SceneError, printable
+from graphmech.errors import GraphmechError, printable
 from graphmech.files import write_atomic
 
 if TYPE_CHECKING:
+    from graphmech.batch import Result
     from graphmech.problems.judging import Row, Verdict
 
 INDEX = "index.html"
@@ -53,29 +54,28 @@ class Entry:
     error: str | None = None  # one line: why the scene failed
 
 
-def make_entry(path: Path) -> Entry:
-    """Draw and check one scene file as ``graphmech render`` and ``graphmech check`` do."""
-    from graphmech.problems import check
-    from graphmech.scene import load_scene, render_scene
+def entries(paths: Sequence[Path], workers: int | None = None) -> list[Entry]:
+    """Draw and check each scene file as ``graphmech batch`` does (on a process pool), in order."""
+    from graphmech import batch
 
+    results = batch.run(batch.jobs([str(p) for p in paths], []), batch.Options(figure="svg", check=True), workers)
+    return [entry(p, r) for p, r in zip(paths, results)]
+
+
+def entry(path: Path, r: Result) -> Entry:
+    """One scene's entry from its batch result (and its file, copied beside the page)."""
     name, file = path.name[:-5], path.name
     try:
-        source = path.read_bytes()
+        source: bytes | None = path.read_bytes()
     except OSError as e:
-        return Entry(name, None, error=printable(f"{file}: cannot read the file ({e.strerror or e})"))
-    try:
-        svg, found = render_scene(path)
-        an, verdicts, _, lines = check(load_scene(path))
-    except SceneError as e:
-        return Entry(name, source, error=e.one_line(file))
-    except GraphmechError as e:
-        return Entry(name, source, error=printable(f"{file}: {e}"))
-    except Exception as e:  # a bug of ours: this scene fails in one line, the others are still shown
-        return Entry(name, source, error=printable(f"{file}: internal error ({type(e).__name__}: {e}); "
-                                                   "please report it with the scene"))
-    warnings = list(dict.fromkeys([*found, *an.warnings]))  # the drawing's and the check's, each once
-    return Entry(name, source, str(an.scene.title), svg, tuple(an.rows), tuple(verdicts),
-                 tuple(an.scale_notes()), tuple(lines), tuple(warnings))
+        source = None
+        if r.error is None:
+            r = replace(r, error=printable(f"{file}: cannot read the file ({e.strerror or e})"))
+    t = r.table
+    if r.error is not None or t is None or r.figure is None:
+        return Entry(name, source, error=r.error or f"{file}: not made")
+    return Entry(name, source, t.title, r.figure.decode("utf-8"), t.rows, t.measured, t.scale_notes, t.lines,
+                 r.warnings)
 
 
 def scene_files(folder: str | os.PathLike[str]) -> list[Path]:
@@ -184,16 +184,16 @@ def make_gallery(folder: str | os.PathLike[str], site: str | os.PathLike[str]) -
     out = Path(site)
     if out.exists() and not out.is_dir():
         raise GraphmechError(f"{site}: is not a folder")
-    entries = [make_entry(p) for p in files]  # everything made before anything is written
+    made = entries(files)  # everything made before anything is written
     out.mkdir(parents=True, exist_ok=True)
-    for e in entries:
+    for e in made:
         if e.source is not None:
             write_atomic(out / f"{e.name}.toml", e.source)
         if e.svg is not None:
             write_atomic(out / f"{e.name}.svg", e.svg)
     index = out / INDEX
-    write_atomic(index, page(entries, f"graphmech gallery: {Path(folder).resolve().name}"))
-    return index, entries
+    write_atomic(index, page(made, f"graphmech gallery: {Path(folder).resolve().name}"))
+    return index, made
 
 
-__all__ = ["INDEX", "Entry", "make_entry", "make_gallery", "page", "scene_files"]
+__all__ = ["INDEX", "Entry", "entries", "entry", "make_gallery", "page", "scene_files"]
