@@ -44,8 +44,9 @@ def _paper(text: str) -> str:
 
 #: What --help ends with: where the format is written, and the exit codes.
 EPILOG = """\
-The scene format, with an example of every feature: docs/scene-format.md (in the repository and
-installed with the package); the example scenes: figures/scenes.
+The scene format, with an example of every feature: docs/scene-format.md, installed as
+  {docs}
+`graphmech examples` lists the example scenes, `graphmech new KIND` writes a commented one.
 
 exit status:
   0  done; every measured value within tolerance
@@ -56,9 +57,17 @@ exit status:
 """
 
 
+def _epilog() -> str:
+    """--help's end, with where the installed scene format is."""
+    from graphmech.packaged import docs
+
+    return EPILOG.format(docs=docs().joinpath("scene-format.md"))
+
+
 def _parser() -> argparse.ArgumentParser:
+    epilog = _epilog()
     p = _Parser(prog="graphmech", description="Textbook graphical methods as exact, checked constructions.",
-                epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+                epilog=epilog, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"graphmech {__version__}")
     quiet = _Parser(add_help=False)
     quiet.add_argument("-q", "--quiet", action="store_true", help="no warnings on stderr (errors still)")
@@ -73,26 +82,26 @@ def _parser() -> argparse.ArgumentParser:
     figure.add_argument("--dpi", type=_dpi, metavar="N", help="PNG resolution, dots per inch (default 150)")
     sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
     r = sub.add_parser("render", help="draw a scene to SVG, PDF or PNG", parents=[quiet, varied, figure],
-                       epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+                       epilog=epilog, formatter_class=argparse.RawDescriptionHelpFormatter)
     r.add_argument("scenes", nargs="+", metavar="SCENE")
     r.add_argument("-o", "--output", help="the output file, .svg, .pdf or .png (one figure only)")
     r.add_argument("-d", "--directory", help="write <scene name>[-<key>=<value>…].svg into this folder")
     c = sub.add_parser("check", help="the check table: graphical vs exact, and verdicts on measured values",
-                       parents=[quiet, varied], epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+                       parents=[quiet, varied], epilog=epilog, formatter_class=argparse.RawDescriptionHelpFormatter)
     c.add_argument("scene", metavar="SCENE")
     c.add_argument("--json", action="store_true", help="machine-readable output")
     c.add_argument("--measured", action="append", default=[], metavar="NAME=VALUE",
                    help="a value you measured: v_C=0.26 (SI) or pc=52 (drawn mm); repeatable, or comma-separated")
     c.add_argument("--precision", type=float, metavar="MM", help="drawing precision, mm (default: the scene's, else 0.5)")
     t = sub.add_parser("batch", help="figures and checks of many scenes and variants, on all cores",
-                       parents=[quiet, varied, figure], epilog=EPILOG,
+                       parents=[quiet, varied, figure], epilog=epilog,
                        formatter_class=argparse.RawDescriptionHelpFormatter)
     t.add_argument("scenes", nargs="+", metavar="SCENE")
     t.add_argument("-d", "--directory", required=True, metavar="DIR",
                    help="write <name>.svg (or .pdf, .png) and <name>.json, its check, for each")
     t.add_argument("-j", "--jobs", type=_jobs, metavar="N", help="processes (default: every core)")
     st = sub.add_parser("steps", help="the construction protocol: the numbered steps of the drawing, with every length",
-                        parents=[varied], epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+                        parents=[varied], epilog=epilog, formatter_class=argparse.RawDescriptionHelpFormatter)
     st.add_argument("scene", metavar="SCENE")
     b = sub.add_parser("bench", help="run time and error of the graphical methods against the exact ones")
     b.add_argument("--json", action="store_true")

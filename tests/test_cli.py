@@ -366,3 +366,22 @@ def test_steps_of_a_kind_without_a_protocol_is_refused_in_one_line():
     err = assert_refused(run_cli("steps", str(SCENES / "cam.oscillating_roller.toml")), "cam.oscillating_roller.toml",
                          "no construction protocol for a cam scene yet")
     assert "linkage" in err
+
+
+def test_help_points_to_the_installed_scene_format_and_lists_the_exit_codes(capsys):
+    import pytest as _pytest
+
+    from graphmech.packaged import docs
+
+    for argv in (["--help"], ["render", "--help"], ["batch", "--help"]):
+        with _pytest.raises(SystemExit) as e:
+            from graphmech.cli import main
+
+            main(argv)
+        out = capsys.readouterr().out
+        assert e.value.code == 0
+        assert str(docs().joinpath("scene-format.md")) in out and docs().joinpath("scene-format.md").is_file()
+        assert "exit status:" in out and "  2  bad input" in out and "  1  a measured value" in out
+    with _pytest.raises(SystemExit):
+        main(["render", "--help"])
+    assert "--set KEY=V1[,V2…]" in capsys.readouterr().out
