@@ -49,11 +49,14 @@ def _parser() -> argparse.ArgumentParser:
     p = _Parser(prog="graphmech", description="Textbook graphical methods as exact, checked constructions.")
     p.add_argument("--version", action="version", version=f"graphmech {graphmech.__version__}")
     sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
-    r = sub.add_parser("render", help="draw a scene to SVG")
+    r = sub.add_parser("render", help="draw a scene to SVG, PDF or PNG")
     r.add_argument("scenes", nargs="+", metavar="SCENE")
-    r.add_argument("-o", "--output", help="output SVG (one scene only)")
-    r.add_argument("-d", "--directory", help="write <scene name>.svg into this folder")
+    r.add_argument("-o", "--output", help="output file, its format by its extension: .svg, .pdf or .png (one scene only)")
+    r.add_argument("-d", "--directory", help="write <scene name>.svg (or .pdf, .png: --format) into this folder")
     r.add_argument("--page", type=_paper, metavar="SIZE", help=PAGE_HELP)
+    r.add_argument("--format", metavar="svg|pdf|png",
+                   help="the format to write (must agree with -o's extension); PDF and PNG need headless Chromium")
+    r.add_argument("--dpi", type=float, metavar="N", help="the PNG's resolution, dots per inch (default 150)")
     c = sub.add_parser("check", help="the check table: graphical vs exact, and verdicts on measured values")
     c.add_argument("scene", metavar="SCENE")
     c.add_argument("--json", action="store_true", help="machine-readable output")
@@ -112,31 +115,46 @@ def _file_name(args: argparse.Namespace) -> str | None:
 
 
 def _render(args: argparse.Namespace) -> int:
+    from contextlib import nullcontext
+
+    from graphmech.render.chromium import Browser
+    from graphmech.render.export import DPI, check_dpi, convert, format_of
     from graphmech.scene import render_scene
 
     if args.output and len(args.scenes) > 1:
         say("graphmech: -o takes one scene; use -d DIR for several")
         return EXIT_BAD_INPUT
+    dpi = DPI if args.dpi is None else check_dpi(args.dpi)
+    if args.output:  # the format is settled before anything is drawn: a refusal writes nothing
+        targets = [(Path(args.output), format_of(args.output, args.format))]
+    else:
+        kind = format_of("", args.format)
+        targets = [(Path(args.directory or ".") / f"{Path(s).stem}.{kind}", kind) for s in args.scenes]
     outputs = []
-    for s in args.scenes:  # render everything first: one bad scene writes nothing
-        args.current = s  # for the message if it cannot be constructed
-        svg, found = render_scene(s, args.page)
-        for w in found:
-            say(f"{_file_name(args)}: warning: {w}")
-        if args.output:
-            out = Path(args.output)
-        else:
-            out = Path(args.directory or ".") / (Path(s).stem + ".svg")
-        outputs.append((out, svg))
-    for out, svg in outputs:
-        if not Path(os.path.realpath(out)).parent.is_dir():
-            say(f"graphmech: {out}: folder does not exist")
-            return EXIT_BAD_INPUT
-        if out.is_dir():
-            say(f"graphmech: {out}: is a folder; give a file name")
-            return EXIT_BAD_INPUT
-    for out, svg in outputs:
-        write_atomic(out, svg)
+    # one browser prints every PDF and PNG (started first: without one, nothing is drawn)
+    with Browser() if any(kind != "svg" for _, kind in targets) else nullcontext() as browser:
+        for s, (out, kind) in zip(args.scenes, targets):  # render everything first: one bad scene writes nothing
+            args.current = s  # for the message if it cannot be constructed
+            svg, found = render_scene(s, args.page)
+            for w in found:
+                say(f"{_file_name(args)}: warning: {w}")
+            outputs.append((out, kind, svg))
+        args.current = None
+        for out, _, _ in outputs:
+            if not Path(os.path.realpath(out)).parent.is_dir():
+                say(f"graphmech: {out}: folder does not exist")
+                return EXIT_BAD_INPUT
+            if out.is_dir():
+                say(f"graphmech: {out}: is a folder; give a file name")
+                return EXIT_BAD_INPUT
+        files = []
+        for out, kind, svg in outputs:
+            try:
+                files.append((out, convert(svg, kind, dpi, browser)))
+            except GraphmechError as e:
+                raise GraphmechError(f"{out}: {e}") from None
+    for out, data in files:
+        write_atomic(out, data)
         print(out)
     return EXIT_OK
 

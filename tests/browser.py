@@ -61,6 +61,7 @@ the same on every run on one machine.
 from __future__ import annotations
 
 import base64
+import os
 import re
 from pathlib import Path
 from typing import Any, NoReturn
@@ -72,9 +73,14 @@ from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import unary_union
 
 from graphmech.render import chromium
-from graphmech.render.chromium import BROWSERS, BrowserError, find_chromium, root_size_mm
+from graphmech.render.chromium import (
+    BROWSERS,
+    BrowserError,
+    find_chromium,
+    root_size_mm,
+)
 
-__all__ = ["BROWSERS", "Browser", "BrowserError", "analyse", "find_chromium", "no_browser", "root_size_mm"]
+__all__ = ["BROWSERS", "Browser", "BrowserError", "analyse", "find_chromium", "no_browser", "open_browser", "root_size_mm"]
 
 # ---------------------------------------------------------------------------- tolerances (one place)
 TOL = 0.1            # mm: how far ink or another box must reach into a text box to count
@@ -211,6 +217,16 @@ def no_browser(ci: bool) -> NoReturn:
     if ci:
         pytest.fail(f"{why}, and CI is set: the browser tests must run in CI (.ci/run installs chromium)")
     pytest.skip(f"{why} (CI is unset; with CI set this fails)")
+
+
+def open_browser():
+    """The browser tests' module fixture (``browser = pytest.fixture(scope="module")(open_browser)``):
+    one headless Chromium for the module, or :func:`no_browser`."""
+    executable = find_chromium()
+    if executable is None:
+        no_browser("CI" in os.environ)
+    with Browser(executable) as b:
+        yield b
 
 
 class Browser(chromium.Browser):

@@ -18,14 +18,22 @@ silently (``.ci/run`` installs Debian's chromium and fonts-noto-cjk first). test
 """
 from __future__ import annotations
 
-import os
 import tomllib
 from pathlib import Path
 
 import pytest
 
 from graphmech.render.chromium import ENVIRON
-from tests.browser import FIT_FILLED, TOL, Browser, BrowserError, analyse, find_chromium, no_browser
+from tests.browser import (
+    FIT_FILLED,
+    TOL,
+    Browser,
+    BrowserError,
+    analyse,
+    find_chromium,
+    no_browser,
+    open_browser,
+)
 from tests.conftest import SCENES, run_cli
 
 SCENE_FILES = sorted(SCENES.glob("*.toml"))
@@ -35,14 +43,7 @@ RENDER_GUARD_S = 600.0
 SHOWN = 12  # a failure lists this many of its hits
 
 
-@pytest.fixture(scope="module")
-def browser():
-    """One headless Chromium for the module."""
-    executable = find_chromium()
-    if executable is None:
-        no_browser("CI" in os.environ)
-    with Browser(executable) as b:
-        yield b
+browser = pytest.fixture(scope="module")(open_browser)  # one headless Chromium for the module
 
 
 def render_and_measure(browser: Browser, folder: Path, *options: str) -> dict[str, dict | str]:

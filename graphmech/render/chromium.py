@@ -26,9 +26,10 @@ import signal
 import subprocess
 import tempfile
 import time
+from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any, Self
 
 from graphmech.errors import GraphmechError
 
@@ -118,7 +119,7 @@ class Browser:
         self.events: list[dict[str, Any]] = []
         self._profile = tempfile.TemporaryDirectory(prefix="graphmech-browser-")
         self.workdir = Path(self._profile.name)
-        self._log = open(self.workdir / "stderr.log", "w+b")
+        self._log = open(self.workdir / "stderr.log", "w+b")  # noqa: SIM115 (open while the browser runs)
         self._buffer = b""
         self._next = 0
         self._broken = False
@@ -140,7 +141,7 @@ class Browser:
                  "--mute-audio", "--remote-debugging-pipe",
                  f"--user-data-dir={self.workdir}", "about:blank"],
                 stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=self._log,
-                preexec_fn=child_fds, close_fds=False, start_new_session=True)
+                preexec_fn=child_fds, close_fds=False, start_new_session=True)  # noqa: PLW1509 (dup2 only)
         except OSError as e:
             for fd in (to_browser, from_browser, self._in, self._out):
                 os.close(fd)
@@ -262,7 +263,7 @@ class Browser:
         self._log.close()
         self._profile.cleanup()
 
-    def __enter__(self) -> Browser:
+    def __enter__(self) -> Self:
         return self
 
     def __exit__(self, *exc: object) -> None:
