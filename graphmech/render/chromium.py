@@ -160,8 +160,9 @@ class Browser:
     def call(self, method: str, params: dict[str, Any] | None = None, session: str | None = None) -> dict[str, Any]:
         """Send one command (to a tab's ``session``, else to the browser) and wait for its answer;
         the events that arrive meanwhile are kept in :attr:`events`."""
-        if self._broken:
-            raise BrowserError("the browser stopped answering earlier; start a new one")
+        if self._broken or self._closed:
+            raise BrowserError("the browser stopped answering earlier; start a new one" if self._broken
+                               else "the browser was closed")
         self._next += 1
         message: dict[str, Any] = {"id": self._next, "method": method, "params": params or {}}
         if session:

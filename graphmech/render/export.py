@@ -9,8 +9,8 @@ the family list that has its glyphs), not outlines of one font:
   so every scale factor μ printed on the sheet stays true; the text is real text with the fonts
   embedded as subsets; one page. Chromium sizes a printed page in whole points (and 1/300 in),
   up to 0.2 mm off, so the page is printed a little larger, the drawing anchored at its top-left
-  corner, and its ``/MediaBox`` then set to the exact size (the same bytes' length, so the file's
-  cross-reference offsets stay right).
+  corner, and its ``/MediaBox`` then set to the exact size by an incremental update (the page's
+  object appended anew; nothing Chromium wrote is changed).
 * **PNG** (``Page.captureScreenshot``) at ``dpi`` (device scale factor dpi/96 over a viewport of
   the page's CSS px), on white: round(mm / 25.4 · dpi) pixels each way, with a ``pHYs`` chunk
   saying the dpi, so LaTeX, Word and image viewers place it at its true size.
@@ -150,17 +150,39 @@ def _pdf(data: str, width_mm: float, height_mm: float) -> bytes:
     boxes = list(_MEDIABOX.finditer(pdf))
     if len(boxes) != 1:
         raise BrowserError(f"the printed PDF has {len(boxes)} page boxes, not one")
-    old = boxes[0]
-    x0, y0, x1, y1 = (float(v) for v in old.group(1).split())
+    x0, y0, x1, y1 = (float(v) for v in boxes[0].group(1).split())
     w, h = (v / MM_PER_IN * PT_PER_IN for v in (width_mm, height_mm))
     if x1 - x0 < w - 0.2 or y1 - y0 < h - 0.2:
         raise BrowserError(f"headless Chromium printed a page of {x1 - x0:g} × {y1 - y0:g} pt, smaller than "
                            f"the drawing's {w:g} × {h:g} pt")
-    for decimals in (3, 2):  # 0.001 pt is 0.35 µm; fewer only if the digits would not fit
-        box = " ".join(f"{v:.{decimals}f}".rstrip("0").rstrip(".") for v in (x0, y1 - h, x0 + w, y1)).encode()
-        if len(box) <= len(old.group(1)):  # the same length: the cross-reference offsets stay true
-            return pdf[:old.start(1)] + box.ljust(len(old.group(1))) + pdf[old.end(1):]
-    raise BrowserError("the printed PDF's page box could not be set to the drawing's size")
+    box = " ".join(f"{v:.3f}".rstrip("0").rstrip(".") for v in (x0, y1 - h, x0 + w, y1))  # 0.001 pt = 0.35 µm
+    return updated(pdf, boxes[0].start(), b"/MediaBox [" + box.encode() + b"]")
+
+
+def updated(pdf: bytes, at: int, entry: bytes) -> bytes:
+    """``pdf`` with the ``/Key [value]`` entry found at byte ``at`` replaced by ``entry``, as an
+    incremental update (PDF 1.7 § 7.5.6): the object holding it is appended anew, with an xref
+    section and a trailer pointing back to the old ones — nothing before is moved."""
+    heads = list(re.finditer(rb"(\d+) (\d+) obj\b", pdf[:at]))
+    end = pdf.find(b"endobj", at)
+    trailer = list(re.finditer(rb"trailer\s*(<<.*?>>)\s*startxref\s+(\d+)", pdf, re.S))
+    if not heads or end < 0 or not trailer:
+        raise BrowserError("the printed PDF is not laid out as expected (no object or no trailer)")
+    head = heads[-1]
+    body = pdf[head.end(): end]
+    old = re.match(rb"/\w+\s*\[[^\]]*\]", pdf[at:end])
+    assert old is not None
+    body = body.replace(old.group(0), entry, 1)
+    number, generation = int(head.group(1)), int(head.group(2))
+    base = pdf if pdf.endswith(b"\n") else pdf + b"\n"
+    offset = len(base)
+    obj = b"%d %d obj" % (number, generation) + body + b"endobj\n"
+    # the free head of the list (object 0) first, as readers expect of every xref section
+    xref = b"xref\n0 1\n0000000000 65535 f \n%d 1\n%010d %05d n \n" % (number, offset, generation)
+    old_trailer = re.sub(rb"/Prev\s+\d+\s*", b"", trailer[-1].group(1))
+    new_trailer = old_trailer.replace(b"<<", b"<</Prev " + trailer[-1].group(2) + b"\n", 1)
+    return (base + obj + xref + b"trailer\n" + new_trailer + b"\nstartxref\n%d\n%%%%EOF\n"
+            % (offset + len(obj)))
 
 
 def _png(tab: Tab, pixels: tuple[int, int], dpi: float) -> bytes:
