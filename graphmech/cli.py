@@ -115,46 +115,43 @@ def _file_name(args: argparse.Namespace) -> str | None:
 
 
 def _render(args: argparse.Namespace) -> int:
-    from contextlib import nullcontext
-
-    from graphmech.render.chromium import Browser
-    from graphmech.render.export import DPI, check_dpi, convert, format_of
+    from graphmech.render.export import (
+        DPI,
+        check_dpi,
+        format_of,
+        require_browser,
+        save_all,
+    )
     from graphmech.scene import render_scene
 
     if args.output and len(args.scenes) > 1:
         say("graphmech: -o takes one scene; use -d DIR for several")
         return EXIT_BAD_INPUT
+    # the format and the browser it needs are settled before anything is drawn: a refusal writes nothing
+    kind = format_of(args.output or "", args.format)
     dpi = DPI if args.dpi is None else check_dpi(args.dpi)
-    if args.output:  # the format is settled before anything is drawn: a refusal writes nothing
-        targets = [(Path(args.output), format_of(args.output, args.format))]
-    else:
-        kind = format_of("", args.format)
-        targets = [(Path(args.directory or ".") / f"{Path(s).stem}.{kind}", kind) for s in args.scenes]
+    require_browser(kind)
     outputs = []
-    # one browser prints every PDF and PNG (started first: without one, nothing is drawn)
-    with Browser() if any(kind != "svg" for _, kind in targets) else nullcontext() as browser:
-        for s, (out, kind) in zip(args.scenes, targets):  # render everything first: one bad scene writes nothing
-            args.current = s  # for the message if it cannot be constructed
-            svg, found = render_scene(s, args.page)
-            for w in found:
-                say(f"{_file_name(args)}: warning: {w}")
-            outputs.append((out, kind, svg))
-        args.current = None
-        for out, _, _ in outputs:
-            if not Path(os.path.realpath(out)).parent.is_dir():
-                say(f"graphmech: {out}: folder does not exist")
-                return EXIT_BAD_INPUT
-            if out.is_dir():
-                say(f"graphmech: {out}: is a folder; give a file name")
-                return EXIT_BAD_INPUT
-        files = []
-        for out, kind, svg in outputs:
-            try:
-                files.append((out, convert(svg, kind, dpi, browser)))
-            except GraphmechError as e:
-                raise GraphmechError(f"{out}: {e}") from None
-    for out, data in files:
-        write_atomic(out, data)
+    for s in args.scenes:  # render everything first: one bad scene writes nothing
+        args.current = s  # for the message if it cannot be constructed
+        svg, found = render_scene(s, args.page)
+        for w in found:
+            say(f"{_file_name(args)}: warning: {w}")
+        if args.output:
+            out = Path(args.output)
+        else:
+            out = Path(args.directory or ".") / f"{Path(s).stem}.{kind}"
+        outputs.append((out, svg))
+    for out, svg in outputs:
+        if not Path(os.path.realpath(out)).parent.is_dir():
+            say(f"graphmech: {out}: folder does not exist")
+            return EXIT_BAD_INPUT
+        if out.is_dir():
+            say(f"graphmech: {out}: is a folder; give a file name")
+            return EXIT_BAD_INPUT
+    args.current = None
+    save_all(outputs, kind, dpi)  # one browser prints them all
+    for out, _ in outputs:
         print(out)
     return EXIT_OK
 

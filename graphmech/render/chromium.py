@@ -40,7 +40,8 @@ ENVIRON = ("GRAPHMECH_CHROMIUM", "CHROMIUM")
 #: s: the browser must answer each protocol step within this (a hang guard, not a speed demand).
 STEP_S = 60.0
 #: How to get a browser, for the message when there is none.
-INSTALL = ("install it (Debian/Ubuntu: apt-get install chromium) or set GRAPHMECH_CHROMIUM to its path")
+NOT_FOUND = ("PDF and PNG are printed by headless Chromium, which was not found: install it "
+             "(Debian/Ubuntu: apt-get install chromium) or set GRAPHMECH_CHROMIUM to its path")
 
 _LENGTH = re.compile(r"^\s*([0-9.eE+-]+)\s*(mm|cm|in|pt|pc|px)?\s*$")
 _MM_PER = {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72, "pc": 25.4 / 6, "px": 25.4 / 96, None: 25.4 / 96}
@@ -113,7 +114,7 @@ class Browser:
     def __init__(self, executable: str | None = None, timeout: float = STEP_S) -> None:
         found = executable or find_chromium()
         if found is None:
-            raise BrowserError(f"PDF and PNG are printed by headless Chromium, which was not found: {INSTALL}")
+            raise BrowserError(NOT_FOUND)
         self.executable = found
         self.timeout = timeout
         self.events: list[dict[str, Any]] = []

@@ -25,11 +25,19 @@ import math
 import re
 import struct
 import zlib
+from collections.abc import Sequence
 from pathlib import Path
 
 from graphmech.errors import GraphmechError
 from graphmech.files import write_atomic
-from graphmech.render.chromium import Browser, BrowserError, Tab, root_size_mm
+from graphmech.render.chromium import (
+    NOT_FOUND,
+    Browser,
+    BrowserError,
+    Tab,
+    find_chromium,
+    root_size_mm,
+)
 
 FORMATS = ("svg", "pdf", "png")
 DPI = 150.0  # the PNG's default resolution: sharp on screen and on a printed A4, ≈ 0.3 MB
@@ -137,6 +145,30 @@ def save(svg_text: str, path: str | Path, fmt: str | None = None, dpi: float = D
     return kind
 
 
+def require_browser(fmt: str) -> None:
+    """Refuse at once (one line) when ``fmt`` is printed by a browser and there is none — before
+    anything is drawn."""
+    if fmt != "svg" and find_chromium() is None:
+        raise BrowserError(NOT_FOUND)
+
+
+def save_all(figures: Sequence[tuple[str | Path, str]], fmt: str, dpi: float = DPI) -> None:
+    """Each ``(path, svg_text)`` written in ``fmt``: all converted first — one browser for every
+    PDF and PNG — then all written, so a failure (named by its file) writes none of them."""
+    if fmt == "svg":
+        data = [convert(svg, fmt) for _, svg in figures]
+    else:
+        with Browser() as browser:
+            data = []
+            for path, svg in figures:
+                try:
+                    data.append(convert(svg, fmt, dpi, browser))
+                except GraphmechError as e:
+                    raise GraphmechError(f"{Path(path).name}: {e}") from None
+    for (path, _), content in zip(figures, data):
+        write_atomic(path, content)
+
+
 # ---------------------------------------------------------------------------- the two prints
 
 
@@ -165,7 +197,7 @@ def updated(pdf: bytes, at: int, entry: bytes) -> bytes:
     section and a trailer pointing back to the old ones — nothing before is moved."""
     heads = list(re.finditer(rb"(\d+) (\d+) obj\b", pdf[:at]))
     end = pdf.find(b"endobj", at)
-    trailer = list(re.finditer(rb"trailer\s*(<<.*?>>)\s*startxref\s+(\d+)", pdf, re.S))
+    trailer = list(re.finditer(rb"trailer\s*(<<.*?>>)\s*startxref\s+(\d+)", pdf, re.DOTALL))
     if not heads or end < 0 or not trailer:
         raise BrowserError("the printed PDF is not laid out as expected (no object or no trailer)")
     head = heads[-1]

@@ -12,7 +12,14 @@ import stat
 import pytest
 
 from graphmech.errors import GraphmechError
-from graphmech.render.chromium import BROWSERS, ENVIRON, Browser, BrowserError, find_chromium, root_size_mm
+from graphmech.render.chromium import (
+    BROWSERS,
+    ENVIRON,
+    Browser,
+    BrowserError,
+    find_chromium,
+    root_size_mm,
+)
 from tests.browser import open_browser
 
 browser = pytest.fixture(scope="module")(open_browser)
@@ -108,17 +115,15 @@ def test_one_browser_serves_many_tabs(browser):
     for n in range(3):
         with browser.tab("data:text/html,<p>x</p>") as tab:
             assert tab.evaluate(f"Promise.resolve({n} + 1)") == n + 1
-    with browser.tab("data:text/html,<p>x</p>") as tab:
-        with pytest.raises(BrowserError, match="the page's script failed: .*boom"):
-            tab.evaluate("(function () { throw new Error('boom'); })()")
+    with browser.tab("data:text/html,<p>x</p>") as tab, pytest.raises(BrowserError, match="the page's script failed: .*boom"):
+        tab.evaluate("(function () { throw new Error('boom'); })()")
 
 
 def test_a_browser_that_dies_is_an_error_not_a_hang(tmp_path):
     with Browser() as b:
         os.killpg(b._proc.pid, signal.SIGKILL)
-        with pytest.raises(BrowserError, match="exited"):
-            with b.tab("data:text/html,x"):
-                pass
+        with pytest.raises(BrowserError, match="exited"), b.tab("data:text/html,x"):
+            pass
         with pytest.raises(BrowserError, match="stopped answering"):
             b.call("Browser.getVersion")
     b.close()  # twice is harmless

@@ -18,8 +18,19 @@ from PIL import Image
 
 from graphmech.errors import GraphmechError
 from graphmech.render.chromium import ENVIRON, BrowserError, root_size_mm
-from graphmech.render.export import (FORMATS, MAX_DPI, MIN_DPI, check_dpi, convert, cropped, format_of, png_size,
-                                     save, with_dpi)
+from graphmech.render.export import (
+    FORMATS,
+    MAX_DPI,
+    MIN_DPI,
+    check_dpi,
+    convert,
+    cropped,
+    format_of,
+    png_size,
+    save,
+    save_all,
+    with_dpi,
+)
 from graphmech.scene import render_scene
 from tests.browser import open_browser
 from tests.conftest import SCENES, assert_refused, run_cli
@@ -232,6 +243,16 @@ def test_save_writes_nothing_when_the_browser_fails(tmp_path, zh_svg):
     assert [p.name for p in tmp_path.iterdir()] == ["a.pdf"]  # no temporary file left
 
 
+def test_a_batch_is_all_or_nothing_and_names_the_file_that_failed(tmp_path, zh_svg, browser):
+    broken = '<svg xmlns="http://www.w3.org/2000/svg" width="10mm" height="10mm"><text>a & b</text></svg>'
+    figures = [(tmp_path / "good.png", zh_svg), (tmp_path / "bad.png", broken)]
+    with pytest.raises(GraphmechError, match=r"^bad.png: headless Chromium could not read the SVG"):
+        save_all(figures, "png", 96)
+    assert list(tmp_path.iterdir()) == []
+    save_all(figures[:1], "png", 96)
+    assert [p.name for p in tmp_path.iterdir()] == ["good.png"]
+
+
 def test_a_broken_svg_is_refused_not_printed(browser):
     with pytest.raises(BrowserError, match="not well-formed"):
         convert('<svg xmlns="http://www.w3.org/2000/svg" width="10mm" height="10mm"><text>a & b</text></svg>',
@@ -298,7 +319,7 @@ def test_render_writes_the_format_of_the_extension(tmp_path, browser, name, fmt)
 
 def test_render_into_a_folder_in_the_format_asked(tmp_path, browser):
     scenes = [ZH, SCENES / "kin.oscillating_block.toml"]
-    code, stdout, err = run_cli("render", *map(str, scenes), "-d", str(tmp_path), "--format", "pdf")
+    code, _, err = run_cli("render", *map(str, scenes), "-d", str(tmp_path), "--format", "pdf")
     assert code == 0, err
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(f"{s.stem}.pdf" for s in scenes)
     assert all(len(pypdf.PdfReader(p).pages) == 1 for p in tmp_path.iterdir())
