@@ -279,9 +279,9 @@ class Drawing:
     def save(self, path: str | os.PathLike[str], format: str | None = None, dpi: float | None = None) -> Path:
         """Write the drawing as SVG, PDF (true size) or PNG (at ``dpi``), by the extension or
         ``format``; atomically. Returns the path."""
-        from graphmech.render.export import save
+        from graphmech.render.export import DPI, save
 
-        save(self.svg, path, format, dpi)
+        save(self.svg, path, format, DPI if dpi is None else dpi)
         return Path(path)
 
     def _repr_svg_(self) -> str:

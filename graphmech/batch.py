@@ -8,16 +8,21 @@ job that succeeded (each all-or-nothing) and reports the others in one line each
 """
 from __future__ import annotations
 
+import multiprocessing
+import multiprocessing.util
 import os
 from collections.abc import Callable, Iterable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from graphmech.api import CheckTable, Problem, load
 from graphmech.errors import GraphmechError, one_line, printable
 from graphmech.variants import Assignment, value_text
+
+if TYPE_CHECKING:
+    from graphmech.render.chromium import Browser
 
 #: Fewer jobs than this are done in this process: a pool's start costs more than it gives.
 POOL_FROM = 4
@@ -112,9 +117,31 @@ def make(job: Job, options: Options) -> Result:
 def _convert(svg: str, fmt: str, dpi: float | None) -> bytes:
     if fmt == "svg":  # no browser needed
         return svg.encode("utf-8")
-    from graphmech.render.export import convert
+    from graphmech.render.export import DPI, convert
 
-    return convert(svg, fmt, dpi)
+    return convert(svg, fmt, DPI if dpi is None else dpi, _browser())
+
+
+#: This process's headless Chromium, started for its first PDF or PNG and kept for the rest:
+#: one per worker, not one per figure (a start costs about a second).
+_BROWSER: list[Browser] = []
+
+
+def _browser() -> Browser:
+    from graphmech.render.chromium import Browser
+
+    if _BROWSER and _BROWSER[0].alive:
+        return _BROWSER[0]
+    _close_browser()
+    _BROWSER.append(Browser())
+    if multiprocessing.parent_process() is not None:  # a pool's worker: closed when it exits
+        multiprocessing.util.Finalize(None, _close_browser, exitpriority=10)
+    return _BROWSER[0]
+
+
+def _close_browser() -> None:
+    while _BROWSER:
+        _BROWSER.pop().close()
 
 
 def run(todo: Sequence[Job], options: Options, workers: int | None = None,
@@ -124,10 +151,13 @@ def run(todo: Sequence[Job], options: Options, workers: int | None = None,
     workers = max(1, min(workers or os.cpu_count() or 1, len(todo)))
     results: list[Result] = []
     if workers == 1 or len(todo) < POOL_FROM:
-        for job in todo:
-            results.append(make(job, options))
-            if done is not None:
-                done(results[-1])
+        try:
+            for job in todo:
+                results.append(make(job, options))
+                if done is not None:
+                    done(results[-1])
+        finally:
+            _close_browser()
         return results
     with ProcessPoolExecutor(max_workers=workers) as pool:
         for result in pool.map(make, todo, [options] * len(todo), chunksize=max(1, len(todo) // (4 * workers))):

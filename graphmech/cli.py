@@ -77,15 +77,16 @@ def _parser() -> argparse.ArgumentParser:
                              "and values in the scene's unit; repeatable: one run per combination")
     varied.add_argument("--page", type=_paper, metavar="SIZE", help=PAGE_HELP)
     figure = _Parser(add_help=False)
-    figure.add_argument("--format", choices=FORMATS, help="svg, pdf (true size) or png (default: -o's extension, "
-                                                           "else svg)")
-    figure.add_argument("--dpi", type=_dpi, metavar="N", help="PNG resolution, dots per inch (default 150)")
+    figure.add_argument("--format", metavar="svg|pdf|png",
+                        help="the format to write (default: -o's extension, else svg; must agree with it); PDF (true "
+                             "size) and PNG are printed by headless Chromium")
+    figure.add_argument("--dpi", type=float, metavar="N", help="the PNG's resolution, dots per inch (default 150)")
     sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
     r = sub.add_parser("render", help="draw a scene to SVG, PDF or PNG", parents=[quiet, varied, figure],
                        epilog=epilog, formatter_class=argparse.RawDescriptionHelpFormatter)
     r.add_argument("scenes", nargs="+", metavar="SCENE")
-    r.add_argument("-o", "--output", help="the output file, .svg, .pdf or .png (one figure only)")
-    r.add_argument("-d", "--directory", help="write <scene name>[-<key>=<value>…].svg into this folder")
+    r.add_argument("-o", "--output", help="the output file, its format by its extension: .svg, .pdf or .png (one figure only)")
+    r.add_argument("-d", "--directory", help="write <scene name>[-<key>=<value>…].svg (or .pdf, .png: --format) into this folder")
     c = sub.add_parser("check", help="the check table: graphical vs exact, and verdicts on measured values",
                        parents=[quiet, varied], epilog=epilog, formatter_class=argparse.RawDescriptionHelpFormatter)
     c.add_argument("scene", metavar="SCENE")
@@ -121,23 +122,6 @@ def _parser() -> argparse.ArgumentParser:
     g.add_argument("-d", "--directory", metavar="SITE", required=True,
                    help="write SITE/index.html, each figure and a copy of each scene (exit 2 if a scene failed)")
     return p
-
-
-#: The figure formats (graphmech.render.export.FORMATS, named here so --help imports nothing).
-FORMATS = ("svg", "pdf", "png")
-#: The PNG resolutions --dpi takes.
-DPI_RANGE = (10.0, 2400.0)
-
-
-def _dpi(text: str) -> float:
-    try:
-        dpi = float(text)
-    except ValueError:
-        dpi = math.nan
-    if not DPI_RANGE[0] <= dpi <= DPI_RANGE[1]:
-        raise argparse.ArgumentTypeError(f"{text!r}: give a number of dots per inch from {DPI_RANGE[0]:g} "
-                                         f"to {DPI_RANGE[1]:g}")
-    return dpi
 
 
 def _jobs(text: str) -> int:
@@ -210,14 +194,16 @@ def _variants(args: argparse.Namespace) -> list[dict[str, Any]]:
 # ---------------------------------------------------------------------------- render
 
 
-def _figure_format(args: argparse.Namespace) -> str:
-    """The format of the figures: --format, else -o's extension, else SVG; -o's extension must
-    be that format's (never SVG bytes in a .png)."""
-    from graphmech.render.export import format_of
+def _figure_format(args: argparse.Namespace) -> tuple[str, float]:
+    """The format of the figures and the PNG's dpi: --format, else -o's extension, else SVG
+    (-o's extension must be that format's: never SVG bytes in a .png); refused before anything
+    is drawn, and so is a PDF or PNG with no browser to print it."""
+    from graphmech.render.export import DPI, check_dpi, format_of, require_browser
 
-    if args.output:
-        return format_of(args.output, args.format)
-    return args.format or "svg"
+    fmt = format_of(args.output or "", args.format)
+    dpi = DPI if args.dpi is None else check_dpi(args.dpi)
+    require_browser(fmt)
+    return fmt, dpi
 
 
 def _render(args: argparse.Namespace) -> int:
@@ -229,8 +215,8 @@ def _render(args: argparse.Namespace) -> int:
         many = "scene" if len(args.scenes) > 1 else "variant"
         say(f"graphmech: -o takes one figure; this makes {len(todo)} (one per {many}): use -d DIR")
         return EXIT_BAD_INPUT
-    fmt = _figure_format(args)
-    options = batch.Options(figure=fmt, dpi=args.dpi)
+    fmt, dpi = _figure_format(args)
+    options = batch.Options(figure=fmt, dpi=dpi)
     out_dir = Path(args.directory or ".")
     if args.directory and not out_dir.is_dir():
         say(f"graphmech: {out_dir}: folder does not exist")
@@ -318,7 +304,8 @@ def _batch(args: argparse.Namespace) -> int:
     if not out_dir.is_dir():
         say(f"graphmech: {out_dir}: folder does not exist")
         return EXIT_BAD_INPUT
-    fmt = args.format or "svg"
+    args.output = None
+    fmt, dpi = _figure_format(args)
     todo = batch.jobs(args.scenes, _variants(args), args.page)
     failed = 0
 
@@ -338,7 +325,7 @@ def _batch(args: argparse.Namespace) -> int:
         _warn(args, r.job.label, r.warnings)
         print(out_dir / f"{r.name}.{fmt}")
 
-    batch.run(todo, batch.Options(figure=fmt, dpi=args.dpi, check=True), args.jobs, done=write)
+    batch.run(todo, batch.Options(figure=fmt, dpi=dpi, check=True), args.jobs, done=write)
     if failed:
         say(f"graphmech: {failed} of {len(todo)} failed; the other {len(todo) - failed} written")
     return EXIT_BAD_INPUT if failed else EXIT_OK

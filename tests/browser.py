@@ -1,13 +1,15 @@
 """Figures as headless Chromium shows them: the one browser driver, measuring script and geometry
 that tests/test_browser.py and ``.ci/figure-report`` share.
 
-The browser is Debian's ``chromium`` (or ``chromium-browser`` / ``google-chrome`` on PATH, or
-``$CHROMIUM``), driven over the DevTools protocol on a pipe (``--remote-debugging-pipe``: fd 3 in,
-fd 4 out, JSON messages ended by NUL) — no Playwright or pyppeteer, which download a browser of
-their own. One browser process serves every figure: each SVG is opened from its file as an SVG
-document in a fresh tab, the fonts awaited, and :data:`MEASURE_JS` evaluated in it; the page's
-errors (an XML parse error, a console error such as "<path> attribute d: Expected number", an
-uncaught exception, a failed load) are collected beside the measurements.
+The browser and its driver are graphmech's own (graphmech/render/chromium.py: Debian's
+``chromium`` found on PATH or named by ``$GRAPHMECH_CHROMIUM`` / ``$CHROMIUM``, driven over the
+DevTools pipe — no Playwright or pyppeteer, which download a browser of their own); this module
+adds what only the tests need. One browser process serves every figure: each SVG is opened from
+its file as an SVG document in a fresh tab, the fonts awaited, and :data:`MEASURE_JS` evaluated in
+it; the page's errors (an XML parse error, a console error such as "<path> attribute d: Expected
+number", an uncaught exception, a failed load) are collected beside the measurements.
+:meth:`Browser.screenshot` photographs an SVG file the same way, for comparing graphmech's PNG
+with what the browser shows.
 
 What the browser measures (all mapped to the root's user space, i.e. page millimetres, with
 ``elem.getScreenCTM()`` composed with the inverse of the root's ``getScreenCTM()``):
@@ -58,22 +60,27 @@ the same on every run on one machine.
 """
 from __future__ import annotations
 
-import fcntl
-import json
+import base64
 import os
 import re
-import select
-import shutil
-import subprocess
-import tempfile
-import time
 from pathlib import Path
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
+import pytest
 from shapely import STRtree
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.ops import unary_union
+
+from graphmech.render import chromium
+from graphmech.render.chromium import (
+    BROWSERS,
+    BrowserError,
+    find_chromium,
+    root_size_mm,
+)
+
+__all__ = ["BROWSERS", "Browser", "BrowserError", "analyse", "find_chromium", "no_browser", "open_browser", "root_size_mm"]
 
 # ---------------------------------------------------------------------------- tolerances (one place)
 TOL = 0.1            # mm: how far ink or another box must reach into a text box to count
@@ -81,9 +88,6 @@ FIT_FILLED = 0.5     # a fit page: the union of the element boxes covers at leas
 SMALL_TEXT = 3.5     # mm: body text smaller than this is counted (the issue's rule)
 SHORT_VECTOR = 10.0  # mm: vectors shorter than this are counted
 JOIN_TOL = 0.01      # mm: a shaft's end and a head's base meet within this (coordinates have 3 decimals)
-STEP_S = 60.0        # s: the browser must answer each protocol step within this (a hang guard, no timing)
-
-BROWSERS = ("chromium", "chromium-browser", "google-chrome")
 
 # Evaluated in each figure's page; its value (returned by value, as JSON) is the measurement.
 MEASURE_JS = r"""
@@ -203,138 +207,40 @@ MEASURE_JS = r"""
 })()
 """
 
-_LENGTH = re.compile(r"^\s*([0-9.eE+-]+)\s*(mm|cm|in|pt|pc|px)?\s*$")
-_MM_PER = {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72, "pc": 25.4 / 6, "px": 25.4 / 96, None: 25.4 / 96}
 _SCRIPTS = re.compile("[\u2070-\u209c\u1d2c-\u1d6a]")  # sub-/superscript characters beyond Latin-1
 
 
-class BrowserError(Exception):
-    """The browser could not open or measure a figure (the message says which and why)."""
+def no_browser(ci: bool) -> NoReturn:
+    """Without a browser: fail where CI is set (CI must not skip silently), else skip saying why.
+    Every browser test's fixture calls this when :func:`find_chromium` finds none."""
+    why = f"no browser: none of {', '.join(BROWSERS)} is on PATH"
+    if ci:
+        pytest.fail(f"{why}, and CI is set: the browser tests must run in CI (.ci/run installs chromium)")
+    pytest.skip(f"{why} (CI is unset; with CI set this fails)")
 
 
-def find_chromium() -> str | None:
-    """The browser to use: ``$CHROMIUM`` if set, else the first of :data:`BROWSERS` on PATH."""
-    for name in (os.environ.get("CHROMIUM"), *BROWSERS):
-        if name and (found := shutil.which(name)):
-            return found
-    return None
+def open_browser():
+    """The browser tests' module fixture (``browser = pytest.fixture(scope="module")(open_browser)``):
+    one headless Chromium for the module, or :func:`no_browser`."""
+    executable = find_chromium()
+    if executable is None:
+        no_browser("CI" in os.environ)
+    with Browser(executable) as b:
+        yield b
 
 
-def root_size_mm(svg_text: str) -> tuple[float, float]:
-    """The root's width and height in mm, from its attributes (what the page is)."""
-    head = svg_text[: svg_text.index(">", svg_text.index("<svg")) + 1]
-    out = []
-    for attr in ("width", "height"):
-        m = re.search(rf'\s{attr}="([^"]*)"', head)
-        v = _LENGTH.match(m.group(1)) if m else None
-        if v is None:
-            raise BrowserError(f"the root <svg> has no absolute {attr}")
-        out.append(float(v.group(1)) * _MM_PER[v.group(2)])
-    return out[0], out[1]
+class Browser(chromium.Browser):
+    """graphmech's headless Chromium with the tests' two uses: ``measure(svg)`` and
+    ``screenshot(svg, dpi)`` per figure file. A context manager."""
 
-
-class Browser:
-    """One headless Chromium driven over the DevTools pipe; ``measure(svg)`` per figure. A
-    context manager: leaving it closes the browser and removes its profile."""
-
-    def __init__(self, executable: str) -> None:
-        self._profile = tempfile.TemporaryDirectory(prefix="graphmech-browser-")
-        self._log = open(Path(self._profile.name) / "stderr.log", "w+b")
-        to_browser, self._in = os.pipe()     # we write commands; the browser reads them on fd 3
-        self._out, from_browser = os.pipe()  # the browser writes answers on fd 4; we read them
-
-        def child_fds() -> None:  # in the child: the pipes onto fds 3 and 4, inheritable
-            a = fcntl.fcntl(to_browser, fcntl.F_DUPFD, 10)
-            b = fcntl.fcntl(from_browser, fcntl.F_DUPFD, 10)
-            os.dup2(a, 3)
-            os.dup2(b, 4)
-
-        self._proc = subprocess.Popen(
-            [executable, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
-             "--disable-extensions", "--disable-background-networking", "--hide-scrollbars",
-             "--mute-audio", "--remote-debugging-pipe", f"--user-data-dir={self._profile.name}",
-             "about:blank"],
-            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=self._log,
-            preexec_fn=child_fds, close_fds=False)
-        os.close(to_browser)
-        os.close(from_browser)
-        self._buffer = b""
-        self._next = 0
-        self._events: list[dict[str, Any]] = []
-        try:
-            self.version = self._call("Browser.getVersion")["product"]
-        except BaseException:
-            self.close()
-            raise
-
-    # --- the protocol
-    def _call(self, method: str, params: dict[str, Any] | None = None, session: str | None = None) -> dict[str, Any]:
-        self._next += 1
-        message: dict[str, Any] = {"id": self._next, "method": method, "params": params or {}}
-        if session:
-            message["sessionId"] = session
-        data = json.dumps(message).encode() + b"\0"
-        while data:
-            data = data[os.write(self._in, data):]
-        while True:
-            m = self._receive()
-            if m.get("id") == self._next:
-                if "error" in m:
-                    raise BrowserError(f"{method}: {m['error'].get('message')}")
-                return m.get("result", {})
-            if "method" in m:
-                self._events.append(m)
-
-    def _receive(self) -> dict[str, Any]:
-        deadline = time.monotonic() + STEP_S
-        while b"\0" not in self._buffer:
-            left = deadline - time.monotonic()
-            if left <= 0 or not select.select([self._out], [], [], left)[0]:
-                raise BrowserError(f"the browser did not answer within {STEP_S:g} s")
-            chunk = os.read(self._out, 1 << 20)
-            if not chunk:
-                raise BrowserError(f"the browser exited: {self._stderr_tail()}")
-            self._buffer += chunk
-        raw, self._buffer = self._buffer.split(b"\0", 1)
-        result: dict[str, Any] = json.loads(raw)
-        return result
-
-    def _wait_for(self, method: str, session: str) -> dict[str, Any]:
-        while True:
-            for i, e in enumerate(self._events):
-                if e["method"] == method and e.get("sessionId") == session:
-                    return self._events.pop(i)
-            m = self._receive()
-            if "method" in m:
-                self._events.append(m)
-
-    def _stderr_tail(self) -> str:
-        self._log.flush()
-        self._log.seek(0)
-        return self._log.read().decode(errors="replace")[-500:]
-
-    # --- figures
     def measure(self, svg: Path) -> dict[str, Any]:
         """``svg`` opened as users open it, measured: the script's JSON plus ``errors`` (the page's
         error messages, in order) and ``page_mm``. Raises BrowserError where nothing could be
         measured (the message holds the page's errors too)."""
-        target = self._call("Target.createTarget", {"url": "about:blank"})["targetId"]
-        session = self._call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-        try:
-            for domain in ("Page", "Runtime", "Log"):
-                self._call(f"{domain}.enable", session=session)
-            self._events.clear()
-            nav = self._call("Page.navigate", {"url": Path(svg).resolve().as_uri()}, session=session)
-            if nav.get("errorText"):
-                raise BrowserError(f"{svg.name}: {nav['errorText']}")
-            self._wait_for("Page.loadEventFired", session)
-            value = self._call("Runtime.evaluate", {"expression": MEASURE_JS, "awaitPromise": True,
-                                                    "returnByValue": True}, session=session)
-            errors = [msg for e in self._events if e.get("sessionId") == session
-                      for msg in [_error_message(e)] if msg]
-        finally:
-            self._call("Target.closeTarget", {"targetId": target})
-            self._events.clear()
+        with self.tab(Path(svg).resolve().as_uri(), ("Page", "Runtime", "Log")) as tab:
+            value = tab.call("Runtime.evaluate", {"expression": MEASURE_JS, "awaitPromise": True,
+                                                  "returnByValue": True})
+            errors = [msg for e in tab.events() for msg in [_error_message(e)] if msg]
         if "exceptionDetails" in value:
             raise BrowserError(f"{svg.name}: the measuring script failed: {value['exceptionDetails']}")
         data: dict[str, Any] = value["result"]["value"]
@@ -347,48 +253,24 @@ class Browser:
     def evaluate(self, page: Path, expression: str) -> tuple[Any, list[str]]:
         """Any local file (an HTML page) opened in a fresh tab, after its load event (its images
         loaded or failed): ``expression``'s value (awaited, by value) and the page's errors."""
-        target = self._call("Target.createTarget", {"url": "about:blank"})["targetId"]
-        session = self._call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-        try:
-            for domain in ("Page", "Runtime", "Log"):
-                self._call(f"{domain}.enable", session=session)
-            self._events.clear()
-            nav = self._call("Page.navigate", {"url": Path(page).resolve().as_uri()}, session=session)
-            if nav.get("errorText"):
-                raise BrowserError(f"{page.name}: {nav['errorText']}")
-            self._wait_for("Page.loadEventFired", session)
-            value = self._call("Runtime.evaluate", {"expression": expression, "awaitPromise": True,
-                                                    "returnByValue": True}, session=session)
-            errors = [msg for e in self._events if e.get("sessionId") == session
-                      for msg in [_error_message(e)] if msg]
-        finally:
-            self._call("Target.closeTarget", {"targetId": target})
-            self._events.clear()
-        if "exceptionDetails" in value:
-            raise BrowserError(f"{page.name}: the script failed: {value['exceptionDetails']}")
-        return value["result"].get("value"), errors
+        with self.tab(Path(page).resolve().as_uri(), ("Page", "Runtime", "Log")) as tab:
+            value = tab.evaluate(expression)
+            errors = [msg for e in tab.events() for msg in [_error_message(e)] if msg]
+        return value, errors
 
-    def close(self) -> None:
-        if self._proc.poll() is None:
-            try:
-                self._call("Browser.close")
-                self._proc.wait(10)
-            except (BrowserError, OSError, subprocess.TimeoutExpired):
-                self._proc.kill()
-                self._proc.wait()
-        for fd in (self._in, self._out):
-            try:
-                os.close(fd)
-            except OSError:
-                pass
-        self._log.close()
-        self._profile.cleanup()
-
-    def __enter__(self) -> Browser:
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        self.close()
+    def screenshot(self, svg: Path, dpi: float) -> bytes:
+        """``svg`` opened from its file as an SVG document and photographed whole at ``dpi``, on
+        white, as the browser shows it — not graphmech.render.export's way (an HTML page holding
+        the SVG, cut to the exact pixels): the PNG the tests compare it with."""
+        w, h = root_size_mm(Path(svg).read_text(encoding="utf-8"))
+        with self.tab(Path(svg).resolve().as_uri()) as tab:
+            tab.call("Emulation.setDeviceMetricsOverride", {
+                "width": round(w / 25.4 * 96), "height": round(h / 25.4 * 96), "deviceScaleFactor": dpi / 96,
+                "mobile": False})
+            tab.call("Emulation.setDefaultBackgroundColorOverride", {"color": {"r": 255, "g": 255, "b": 255, "a": 1}})
+            tab.call("Runtime.evaluate", {"expression": "document.fonts.ready.then(function () { return 1; })",
+                                          "awaitPromise": True})
+            return base64.b64decode(tab.call("Page.captureScreenshot", {"format": "png"})["data"])
 
 
 def _error_message(event: dict[str, Any]) -> str | None:

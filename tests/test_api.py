@@ -134,3 +134,27 @@ def test_steps_is_the_construction_protocol_with_the_tables_numbers():
     code, out, _ = run_cli("steps", str(BLOCK))
     assert code == 0 and out.splitlines() == [f"{k}. {line}" for k, line in enumerate(lines, 1)]
     assert gm.load(BLOCK).replace({"driver.angle": 60}).steps()[0].endswith("φ₁ = 60°")
+
+
+def test_the_drawing_saves_as_pdf_and_png_by_extension(tmp_path):
+    import os
+
+    from graphmech.render.chromium import find_chromium
+    from tests.browser import no_browser
+
+    if find_chromium() is None:
+        no_browser("CI" in os.environ)
+    from PIL import Image
+    from pypdf import PdfReader
+
+    drawing = gm.load(BLOCK).render()
+    drawing.save(tmp_path / "a.pdf")
+    drawing.save(tmp_path / "a.png", dpi=72)
+    drawing.save(tmp_path / "b", format="png")
+    box = PdfReader(tmp_path / "a.pdf").pages[0].mediabox
+    assert (round(float(box.width) / 72 * 25.4, 1), round(float(box.height) / 72 * 25.4, 1)) == (297.0, 210.0)
+    with Image.open(tmp_path / "a.png") as a, Image.open(tmp_path / "b") as b:
+        assert a.size == (842, 595) and b.size == (round(297 / 25.4 * 150), round(210 / 25.4 * 150))
+    with pytest.raises(GraphmechError, match="unknown format .jpg"):
+        drawing.save(tmp_path / "a.jpg")
+    assert not (tmp_path / "a.jpg").exists()

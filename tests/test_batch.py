@@ -125,3 +125,31 @@ def test_quiet_silences_warnings_not_errors(tmp_path):
     assert code == 0 and err == ""
     code, _, err = run_cli("render", wide, "--set", "driver.nope=1", "-o", str(tmp_path / "w.svg"), "-q")
     assert code == 2 and "driver.nope: not in the scene" in err
+
+
+def test_batch_prints_pdf_and_png_with_one_browser_per_process(tmp_path):
+    import os
+
+    from pypdf import PdfReader
+
+    from graphmech.render.chromium import find_chromium
+    from tests.browser import no_browser
+
+    if find_chromium() is None:
+        no_browser("CI" in os.environ)
+    out = tmp_path / "out"
+    out.mkdir()
+    code, printed, err = run_cli("batch", str(BLOCK), "--set", "driver.angle=10,20,30,40", "-d", str(out),
+                                 "--format", "pdf", "-j", "2", "-q")
+    assert code == 0 and err == "" and len(printed.split()) == 4
+    for a in (10, 20, 30, 40):
+        pdf = PdfReader(out / f"kin.oscillating_block-driver.angle={a}.pdf")
+        box = pdf.pages[0].mediabox
+        assert len(pdf.pages) == 1 and abs(float(box.width) / 72 * 25.4 - 297) < 0.1
+    code, _, err = run_cli("render", str(BLOCK), "--set", "driver.angle=10,20", "-d", str(out), "--format", "png",
+                           "--dpi", "50", "-q")
+    from PIL import Image
+
+    with Image.open(out / "kin.oscillating_block-driver.angle=20.png") as im:
+        assert code == 0 and im.size == (round(297 / 25.4 * 50), round(210 / 25.4 * 50))
+    assert batch._BROWSER == []  # closed when the run is done

@@ -11,20 +11,29 @@ tolerances). Per figure, so a failure names it:
 * rendered with ``--page fit``, the union of the element boxes covers at least ``FIT_FILLED`` of
   the page.
 
-Without a browser (``chromium``, ``chromium-browser`` or ``google-chrome`` on PATH) these tests
-skip, saying why — unless the environment variable ``CI`` is set: there they fail, so CI cannot
-skip them silently (``.ci/run`` installs Debian's chromium and fonts-noto-cjk first).
+Without a browser (graphmech.render.chromium.find_chromium finds none) these tests skip, saying
+why — unless the environment variable ``CI`` is set: there they fail, so CI cannot skip them
+silently (``.ci/run`` installs Debian's chromium and fonts-noto-cjk first). tests/browser.py's
+``no_browser`` says so for every browser test.
 """
 from __future__ import annotations
 
-import os
 import tomllib
 from pathlib import Path
-from typing import NoReturn
 
 import pytest
 
-from tests.browser import BROWSERS, FIT_FILLED, TOL, Browser, BrowserError, analyse, find_chromium
+from graphmech.render.chromium import ENVIRON
+from tests.browser import (
+    FIT_FILLED,
+    TOL,
+    Browser,
+    BrowserError,
+    analyse,
+    find_chromium,
+    no_browser,
+    open_browser,
+)
 from tests.conftest import SCENES, run_cli
 
 SCENE_FILES = sorted(SCENES.glob("*.toml"))
@@ -34,22 +43,7 @@ RENDER_GUARD_S = 600.0
 SHOWN = 12  # a failure lists this many of its hits
 
 
-def no_browser(ci: bool) -> NoReturn:
-    """Without a browser: fail where CI is set (CI must not skip silently), else skip saying why."""
-    why = f"no browser: none of {', '.join(BROWSERS)} is on PATH"
-    if ci:
-        pytest.fail(f"{why}, and CI is set: the browser tests must run in CI (.ci/run installs chromium)")
-    pytest.skip(f"{why} (CI is unset; with CI set this fails)")
-
-
-@pytest.fixture(scope="module")
-def browser():
-    """One headless Chromium for the module."""
-    executable = find_chromium()
-    if executable is None:
-        no_browser("CI" in os.environ)
-    with Browser(executable) as b:
-        yield b
+browser = pytest.fixture(scope="module")(open_browser)  # one headless Chromium for the module
 
 
 def render_and_measure(browser: Browser, folder: Path, *options: str) -> dict[str, dict | str]:
@@ -225,7 +219,8 @@ def test_checker_reports_a_console_error_and_refuses_a_parse_error(browser, tmp_
 
 
 def test_without_a_browser_ci_fails_and_elsewhere_the_tests_skip(monkeypatch, tmp_path):
-    monkeypatch.delenv("CHROMIUM", raising=False)
+    for name in ENVIRON:
+        monkeypatch.delenv(name, raising=False)
     monkeypatch.setenv("PATH", str(tmp_path))
     assert find_chromium() is None
     with pytest.raises(pytest.fail.Exception, match="CI is set"):
