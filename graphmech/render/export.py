@@ -25,7 +25,6 @@ import math
 import re
 import struct
 import zlib
-from collections.abc import Sequence
 from pathlib import Path
 
 from graphmech.errors import GraphmechError
@@ -150,23 +149,6 @@ def require_browser(fmt: str) -> None:
     anything is drawn."""
     if fmt != "svg" and find_chromium() is None:
         raise BrowserError(NOT_FOUND)
-
-
-def save_all(figures: Sequence[tuple[str | Path, str]], fmt: str, dpi: float = DPI) -> None:
-    """Each ``(path, svg_text)`` written in ``fmt``: all converted first — one browser for every
-    PDF and PNG — then all written, so a failure (named by its file) writes none of them."""
-    if fmt == "svg":
-        data = [convert(svg, fmt) for _, svg in figures]
-    else:
-        with Browser() as browser:
-            data = []
-            for path, svg in figures:
-                try:
-                    data.append(convert(svg, fmt, dpi, browser))
-                except GraphmechError as e:
-                    raise GraphmechError(f"{Path(path).name}: {e}") from None
-    for (path, _), content in zip(figures, data):
-        write_atomic(path, content)
 
 
 # ---------------------------------------------------------------------------- the two prints

@@ -28,7 +28,6 @@ from graphmech.render.export import (
     format_of,
     png_size,
     save,
-    save_all,
     with_dpi,
 )
 from graphmech.scene import render_scene
@@ -241,16 +240,6 @@ def test_save_writes_nothing_when_the_browser_fails(tmp_path, zh_svg):
             save(zh_svg, out, browser=dead)
     assert out.read_bytes() == b"before"
     assert [p.name for p in tmp_path.iterdir()] == ["a.pdf"]  # no temporary file left
-
-
-def test_a_batch_is_all_or_nothing_and_names_the_file_that_failed(tmp_path, zh_svg, browser):
-    broken = '<svg xmlns="http://www.w3.org/2000/svg" width="10mm" height="10mm"><text>a & b</text></svg>'
-    figures = [(tmp_path / "good.png", zh_svg), (tmp_path / "bad.png", broken)]
-    with pytest.raises(GraphmechError, match=r"^bad.png: headless Chromium could not read the SVG"):
-        save_all(figures, "png", 96)
-    assert list(tmp_path.iterdir()) == []
-    save_all(figures[:1], "png", 96)
-    assert [p.name for p in tmp_path.iterdir()] == ["good.png"]
 
 
 def test_a_broken_svg_is_refused_not_printed(browser):
