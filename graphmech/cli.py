@@ -16,8 +16,6 @@ import warnings
 from pathlib import Path
 from typing import Any, NoReturn, Sequence
 
-import numpy as np
-
 from graphmech.errors import COMMAND_LINE, GraphmechError, SceneError, printable
 from graphmech.files import write_atomic
 from graphmech.scales import FIT, PAPER
@@ -76,6 +74,8 @@ def say(text: str) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    import numpy as np  # here, not at the top: --help and --version need no numpy (~50 ms)
+
     args.current = None  # the scene being read, for the messages
     try:
         # Numerical trouble is ours to detect and say in words (a warning naming the value, or a
@@ -224,9 +224,6 @@ def _bench(args: argparse.Namespace) -> int:
         out = Path(args.output)
         out.mkdir(parents=True, exist_ok=True)
         write_atomic(out / "bench.json", text + "\n")
-        from graphmech.render.plots import error_time_plots  # matplotlib only when plots are asked for
-
-        error_time_plots(doc["records"], out)
     if args.json:
         print(text)
     else:
@@ -236,6 +233,10 @@ def _bench(args: argparse.Namespace) -> int:
             print(f"{r['method']:<18} {r['case']:<24} n={r['n']:<6}{r['seconds'] * 1e6:>12.1f} µs   {tail}")
         for note in doc.get("notes", []):
             print(note)
+    if args.output:  # the plots last: without graphmech[plots] the results above still stand
+        from graphmech.render.plots import error_time_plots  # matplotlib only when plots are asked for
+
+        error_time_plots(doc["records"], Path(args.output))
     return EXIT_OK
 
 

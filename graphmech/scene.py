@@ -195,7 +195,7 @@ def render_scene(path: str | os.PathLike[str], page: str | None = None) -> tuple
     """The SVG text of a scene file and the warnings found while making it; ``page`` replaces
     the scene's ``[page] size`` (see :func:`parse_scene`)."""
     import graphmech
-    from graphmech.render.svg import render_svg  # svgwrite only when a drawing is made
+    from graphmech.render.svg import render_svg  # the SVG backend only when a drawing is made
 
     scene = load_scene(path, page)
     drawing, warnings = sheet(scene, (f"graphmech {graphmech.__version__}",))
