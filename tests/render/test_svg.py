@@ -129,6 +129,18 @@ def test_clean_text_keeps_what_xml_allows() -> None:
     assert clean_text("\x01\x08\x0b\x0c\x1f\uffff\udfff") == ""
 
 
+def test_clean_text_keeps_exactly_xml_s_chars_less_the_bidi_overrides() -> None:
+    """Every code point: kept iff XML 1.0's Char production allows it
+    (#x9 | #xA | #xD | [#x20-#xD7FF] | [#xE000-#xFFFD] | [#x10000-#x10FFFF]) and it is not a
+    bidirectional override (U+202A–202E, U+2066–2069)."""
+    def allowed(c: int) -> bool:
+        char = c in (0x9, 0xA, 0xD) or 0x20 <= c <= 0xD7FF or 0xE000 <= c <= 0xFFFD or 0x10000 <= c <= 0x10FFFF
+        return char and not (0x202A <= c <= 0x202E or 0x2066 <= c <= 0x2069)
+
+    everything = "".join(map(chr, range(0x110000)))
+    assert clean_text(everything) == "".join(chr(c) for c in range(0x110000) if allowed(c))
+
+
 def test_ids_are_prefixed_and_unique() -> None:
     sheet = Sheet(
         "t",
@@ -229,7 +241,7 @@ def test_backend_misuse_is_refused() -> None:
 def test_only_the_svg_backend_writes_xml_and_nothing_imports_svgwrite() -> None:
     """svgwrite is no dependency (README, Dependencies); render/svg.py alone knows how SVG is written."""
     root = pathlib.Path(__file__).resolve().parents[2] / "graphmech"
-    importing = re.compile(r"^\s*(?:import|from)\s+(svgwrite|xml)\b", re.M)
+    importing = re.compile(r"^\s*(?:import|from)\s+(svgwrite|xml)\b", re.MULTILINE)
     found = sorted(
         (m, p.relative_to(root).as_posix())
         for p in root.rglob("*.py")
