@@ -182,7 +182,8 @@ def test_bench_plots_without_matplotlib_keep_the_results_and_exit_2(tmp_path):
     """The plots are asked for but cannot be drawn: the results are printed and bench.json written,
     then one line says what to install, exit 2 — a requested output is missing, so a script must
     not carry on as if it were there, and -q (which silences warnings) must not hide it."""
-    doc = {"records": [{"method": "m", "case": "c", "n": 10, "seconds": 1e-3, "max_rel_error": 1e-9}], "notes": ["a note"]}
+    record = {"method": "m", "case": "c", "n": 10, "seconds": 1e-3, "max_rel_error": 1e-9}
+    doc = {"records": [record], "notes": ["a note"]}
     code = ("import graphmech.bench\n"
             f"graphmech.bench.run_bench = lambda quick=False: {doc!r}\n"
             "from graphmech.cli import main\n"

@@ -12,9 +12,9 @@ id is explicit and starts with the caller's ``id_prefix`` (a short hash of the s
 figures inline on one HTML page do not clash), and nothing depends on time or chance.
 
 Scene text (titles, labels, notes) goes only into text nodes — and the document's ``<title>``
-— with the characters XML 1.0 forbids removed; ElementTree escapes ``&``, ``<`` and ``>`` (and quotes in attributes). No
-``<style>``, ``<script>`` or event attribute is ever written; presentation is given by fixed
-attributes taken from the :class:`~graphmech.render.style.Style`.
+— with the characters XML 1.0 forbids removed; ElementTree escapes ``&``, ``<`` and ``>`` (and
+quotes in attributes). No ``<style>``, ``<script>`` or event attribute is ever written;
+presentation is given by fixed attributes taken from the :class:`~graphmech.render.style.Style`.
 
 Examples
 --------

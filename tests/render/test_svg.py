@@ -134,7 +134,7 @@ def test_clean_text_keeps_exactly_xml_s_chars_less_the_bidi_overrides() -> None:
     (#x9 | #xA | #xD | [#x20-#xD7FF] | [#xE000-#xFFFD] | [#x10000-#x10FFFF]) and it is not a
     bidirectional override (U+202A–202E, U+2066–2069)."""
     def allowed(c: int) -> bool:
-        char = c in (0x9, 0xA, 0xD) or 0x20 <= c <= 0xD7FF or 0xE000 <= c <= 0xFFFD or 0x10000 <= c <= 0x10FFFF
+        char = c in (0x9, 0xA, 0xD) or 0x20 <= c <= 0xD7FF or 0xE000 <= c <= 0xFFFD or c >= 0x10000
         return char and not (0x202A <= c <= 0x202E or 0x2066 <= c <= 0x2069)
 
     everything = "".join(map(chr, range(0x110000)))
@@ -265,7 +265,8 @@ def test_the_document_is_written_in_svgwrite_s_form() -> None:
         '<svg baseProfile="full" height="210mm" id="gm1-svg" version="1.1" viewBox="0 0 297.5 210" '
         'width="297.5mm" xmlns="http://www.w3.org/2000/svg" xmlns:ev="http://www.w3.org/2001/xml-events" '
         'xmlns:xlink="http://www.w3.org/1999/xlink"><title>T</title><defs /><g id="gm1-a-b">'
-        '<line stroke="black" stroke-linecap="round" stroke-width="0.700" x1="1.000" x2="3.000" y1="2.000" y2="4.000" />'
+        '<line stroke="black" stroke-linecap="round" stroke-width="0.700" '
+        'x1="1.000" x2="3.000" y1="2.000" y2="4.000" />'
         '<polyline fill="none" points="0.000,0.000 1.000,2.500" stroke="black" stroke-linecap="round" '
         'stroke-linejoin="round" stroke-width="0.700" />'
         "</g></svg>"
