@@ -137,6 +137,8 @@ def say(text: str) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    import numpy as np  # here, not at the top: --help and --version need no numpy (~50 ms)
+
     args.current = None  # the scene being read, for the messages
     try:
         import numpy as np
@@ -399,9 +401,6 @@ def _bench(args: argparse.Namespace) -> int:
         out = Path(args.output)
         out.mkdir(parents=True, exist_ok=True)
         write_atomic(out / "bench.json", text + "\n")
-        from graphmech.render.plots import error_time_plots  # matplotlib only when plots are asked for
-
-        error_time_plots(doc["records"], out)
     if args.json:
         print(text)
     else:
@@ -411,6 +410,10 @@ def _bench(args: argparse.Namespace) -> int:
             print(f"{r['method']:<18} {r['case']:<24} n={r['n']:<6}{r['seconds'] * 1e6:>12.1f} µs   {tail}")
         for note in doc.get("notes", []):
             print(note)
+    if args.output:  # the plots last: without graphmech[plots] the results above still stand
+        from graphmech.render.plots import error_time_plots  # matplotlib only when plots are asked for
+
+        error_time_plots(doc["records"], Path(args.output))
     return EXIT_OK
 
 

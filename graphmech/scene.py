@@ -211,7 +211,7 @@ def render_scene(path: str | os.PathLike[str], page: str | None = None) -> tuple
 def draw(scene: Scene[Any], prefix: str) -> tuple[str, list[str]]:
     """The SVG text of a scene and the warnings found while making it; element ids start with
     ``prefix`` (:func:`id_prefix`)."""
-    from graphmech.render.svg import render_svg  # svgwrite only when a drawing is made
+    from graphmech.render.svg import render_svg  # the SVG backend only when a drawing is made
     from graphmech.version import __version__
 
     drawing, warnings = sheet(scene, (f"graphmech {__version__}",))

@@ -132,13 +132,68 @@ def test_only_what_is_asked_is_built(tmp_path):
     assert "Velocity polygon" not in svg and "Kinematic diagram" in svg
 
 
-def test_check_without_plots_does_not_import_matplotlib(tmp_path):
-    code = ("import sys; from graphmech.cli import main; "
-            f"rc = main(['check', r'{SCENES / 'linkage.slider_crank_offset.toml'}', '--json']); "
-            f"main(['render', r'{SCENES / 'kin.oscillating_block.toml'}', '-o', r'{tmp_path / 'o.svg'}']); "
-            "assert 'matplotlib' not in sys.modules, 'matplotlib imported'; sys.exit(rc)")
-    r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True)
+# Python source that makes matplotlib and svgwrite unimportable, as in an install without the
+# plots extra (svgwrite is no dependency at all): the dependencies by need.
+BLOCK = (
+    "import sys\n"
+    "class Block:\n"
+    "    def find_spec(self, name, path=None, target=None):\n"
+    "        if name.split('.')[0] in ('matplotlib', 'svgwrite'):\n"
+    "            raise ModuleNotFoundError(f'No module named {name!r} (blocked)', name=name)\n"
+    "sys.meta_path.insert(0, Block())\n"
+)
+
+
+def _python(code: str, *args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-c", BLOCK + code, *args], cwd=ROOT, capture_output=True, text=True)
+
+
+def test_render_and_check_need_neither_matplotlib_nor_svgwrite(tmp_path):
+    """With both unimportable: the zh figure is the committed one byte for byte, the check runs,
+    and neither was even tried."""
+    code = ("from graphmech.cli import main\n"
+            f"rc = main(['check', r'{SCENES / 'linkage.slider_crank_offset.toml'}', '--json'])\n"
+            f"rc += main(['render', r'{SCENES / 'kin.oscillating_block-zh.toml'}', '-o', r'{tmp_path / 'o.svg'}'])\n"
+            "print(sorted(m for m in sys.modules if m.split('.')[0] in ('matplotlib', 'svgwrite')))\n"
+            "sys.exit(rc)")
+    r = _python(code)
     assert r.returncode == 0, r.stderr
+    *table, written, imported = r.stdout.splitlines()
+    assert (written, imported) == (str(tmp_path / "o.svg"), "[]")
+    assert json.loads("\n".join(table))["quantities"][0]["name"] == "theta_2@50"
+    assert (tmp_path / "o.svg").read_bytes() == (ROOT / "figures" / "kin.oscillating_block-zh.svg").read_bytes()
+
+
+def test_help_and_the_cli_module_do_not_import_numpy():
+    """`graphmech --help` (and --version) need no numpy: it is imported in main() once a command runs."""
+    code = ("import graphmech.cli\n"
+            "assert 'numpy' not in sys.modules, 'numpy imported by graphmech.cli'\n"
+            "try:\n"
+            "    graphmech.cli.main(sys.argv[1:])\n"
+            "except SystemExit as e:\n"
+            "    print('exit', e.code, 'numpy' in sys.modules)\n")
+    for argv in (["--help"], ["render", "--help"], ["--version"]):
+        r = _python(code, *argv)
+        assert r.returncode == 0 and r.stderr == "", r.stderr
+        assert r.stdout.splitlines()[-1] == "exit 0 False", (argv, r.stdout)
+
+
+def test_bench_plots_without_matplotlib_keep_the_results_and_exit_2(tmp_path):
+    """The plots are asked for but cannot be drawn: the results are printed and bench.json written,
+    then one line says what to install, exit 2 — a requested output is missing, so a script must
+    not carry on as if it were there, and -q (which silences warnings) must not hide it."""
+    record = {"method": "m", "case": "c", "n": 10, "seconds": 1e-3, "max_rel_error": 1e-9}
+    doc = {"records": [record], "notes": ["a note"]}
+    code = ("import graphmech.bench\n"
+            f"graphmech.bench.run_bench = lambda quick=False: {doc!r}\n"
+            "from graphmech.cli import main\n"
+            f"sys.exit(main(['bench', '--quick', '-o', r'{tmp_path / 'b'}']))")
+    r = _python(code)
+    assert r.returncode == 2
+    assert r.stderr == 'graphmech: the log-log plots need matplotlib: pip install "graphmech[plots]"\n'
+    assert "max rel error 1.0e-09" in r.stdout and r.stdout.endswith("a note\n")
+    assert json.loads((tmp_path / "b" / "bench.json").read_text(encoding="utf-8")) == doc
+    assert sorted(p.name for p in (tmp_path / "b").iterdir()) == ["bench.json"]
 
 
 def test_python_dash_m_runs():

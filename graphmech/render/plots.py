@@ -1,7 +1,9 @@
 """Plots of the benchmark: error and run time against n, one SVG per method.
 
 This is the only module that uses matplotlib, and it imports it inside the function, so that
-``graphmech render`` and ``graphmech check`` never load it. The SVG is deterministic: a fixed
+``graphmech render`` and ``graphmech check`` never load it. matplotlib is an extra
+(``pip install "graphmech[plots]"``): without it the plots are refused in one line
+(:class:`~graphmech.errors.GraphmechError`) and nothing is written. The SVG is deterministic: a fixed
 hash salt for its ids, no date in its metadata, text drawn as paths.
 """
 from __future__ import annotations
@@ -10,7 +12,11 @@ import re
 from pathlib import Path
 from typing import Any
 
+from graphmech.errors import GraphmechError
 from graphmech.files import write_atomic
+
+#: What a user without the extra is told (the command prints it and exits 2).
+NEEDS_PLOTS = 'the log-log plots need matplotlib: pip install "graphmech[plots]"'
 
 _MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*")
 
@@ -40,10 +46,18 @@ def error_time_plots(records: list[dict[str, Any]], out_dir: Path) -> list[Path]
     One line per case. An error of exactly 0 or None (a record that measures steps, not accuracy),
     or a time ≤ 0, cannot be shown on a log axis: such points are left out and counted in the panel.
     The same records give byte-identical files.
+
+    Raises
+    ------
+    GraphmechError
+        matplotlib is not installed (the ``plots`` extra); nothing is written.
     """
     import io
 
-    import matplotlib
+    try:
+        import matplotlib
+    except ImportError as e:
+        raise GraphmechError(NEEDS_PLOTS) from e
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

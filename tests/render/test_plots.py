@@ -3,6 +3,7 @@ are closed) and what is left off a log axis. Byte-stability is tested with the c
 (tests/problems/cam/test_bench.py)."""
 from __future__ import annotations
 
+import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -81,3 +82,15 @@ def test_file_names_keep_letters_digits_dots_dashes() -> None:
     assert _file_name("four-bar 1.2 (exact)") == "four-bar_1.2_exact"  # and no "_" left at the ends
     assert _file_name("runs/four-bar") == "runs_four-bar"  # never a path into another folder
     assert _file_name("...") == _file_name("") == "method"
+
+
+def test_without_matplotlib_the_plots_are_refused_in_one_line_and_nothing_is_written(tmp_path, monkeypatch) -> None:
+    """matplotlib is the plots extra: an install without it gets one line saying what to install."""
+    from graphmech.errors import GraphmechError
+
+    monkeypatch.setitem(sys.modules, "matplotlib", None)  # `import matplotlib` now raises ImportError
+    with pytest.raises(GraphmechError) as refused:
+        error_time_plots(RECORDS, tmp_path)
+    assert str(refused.value) == 'the log-log plots need matplotlib: pip install "graphmech[plots]"'
+    assert isinstance(refused.value.__cause__, ImportError)
+    assert list(tmp_path.iterdir()) == []

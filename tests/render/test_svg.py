@@ -5,6 +5,7 @@ import math
 import pathlib
 import re
 import xml.etree.ElementTree as ET
+from dataclasses import replace
 
 import pytest
 
@@ -128,6 +129,18 @@ def test_clean_text_keeps_what_xml_allows() -> None:
     assert clean_text("\x01\x08\x0b\x0c\x1f\uffff\udfff") == ""
 
 
+def test_clean_text_keeps_exactly_xml_s_chars_less_the_bidi_overrides() -> None:
+    """Every code point: kept iff XML 1.0's Char production allows it
+    (#x9 | #xA | #xD | [#x20-#xD7FF] | [#xE000-#xFFFD] | [#x10000-#x10FFFF]) and it is not a
+    bidirectional override (U+202A–202E, U+2066–2069)."""
+    def allowed(c: int) -> bool:
+        char = c in (0x9, 0xA, 0xD) or 0x20 <= c <= 0xD7FF or 0xE000 <= c <= 0xFFFD or c >= 0x10000
+        return char and not (0x202A <= c <= 0x202E or 0x2066 <= c <= 0x2069)
+
+    everything = "".join(map(chr, range(0x110000)))
+    assert clean_text(everything) == "".join(chr(c) for c in range(0x110000) if allowed(c))
+
+
 def test_ids_are_prefixed_and_unique() -> None:
     sheet = Sheet(
         "t",
@@ -225,15 +238,57 @@ def test_backend_misuse_is_refused() -> None:
         b.line((0.0, 0.0), (1.0, 1.0), "bold")
 
 
-def test_svgwrite_is_imported_by_the_svg_backend_only() -> None:
+def test_only_the_svg_backend_writes_xml_and_nothing_imports_svgwrite() -> None:
+    """svgwrite is no dependency (README, Dependencies); render/svg.py alone knows how SVG is written."""
     root = pathlib.Path(__file__).resolve().parents[2] / "graphmech"
-    importers = sorted(
-        p.relative_to(root).as_posix()
+    importing = re.compile(r"^\s*(?:import|from)\s+(svgwrite|xml)\b", re.MULTILINE)
+    found = sorted(
+        (m, p.relative_to(root).as_posix())
         for p in root.rglob("*.py")
-        if "import svgwrite" in p.read_text(encoding="utf-8")
-        or "from svgwrite" in p.read_text(encoding="utf-8")
+        for m in importing.findall(p.read_text(encoding="utf-8"))
     )
-    assert importers == ["render/svg.py"]
+    assert found == [("xml", "render/svg.py")]
+
+
+def test_the_document_is_written_in_svgwrite_s_form() -> None:
+    """The form the reference figures were written in (by svgwrite, through ElementTree): the
+    root's attributes, then <title> and an empty <defs />, every element's attributes sorted by
+    name, an empty one left out, polyline points "x,y x,y", no XML declaration."""
+    b = SvgBackend("gm1", replace(DEFAULT, given=replace(DEFAULT.given, dash=())))
+    b.begin(297.5, 210.0, "T")
+    b.begin_group("a b")
+    b.line((1.0, 2.0), (3.0, 4.0), "given", dashed=True)  # an empty dash pattern: no attribute
+    b.polyline([(0.0, 0.0), (1.0, 2.5)], "given")
+    b.end_group()
+    svg = b.finish()
+    assert svg == (
+        '<svg baseProfile="full" height="210mm" id="gm1-svg" version="1.1" viewBox="0 0 297.5 210" '
+        'width="297.5mm" xmlns="http://www.w3.org/2000/svg" xmlns:ev="http://www.w3.org/2001/xml-events" '
+        'xmlns:xlink="http://www.w3.org/1999/xlink"><title>T</title><defs /><g id="gm1-a-b">'
+        '<line stroke="black" stroke-linecap="round" stroke-width="0.700" '
+        'x1="1.000" x2="3.000" y1="2.000" y2="4.000" />'
+        '<polyline fill="none" points="0.000,0.000 1.000,2.500" stroke="black" stroke-linecap="round" '
+        'stroke-linejoin="round" stroke-width="0.700" />'
+        "</g></svg>"
+    )
+
+
+def test_every_element_s_attributes_are_sorted_in_a_whole_figure() -> None:
+    svg = render_svg(demo_sheet(label="M_{b}′"), "gm1")
+    tags = re.findall(r"<([a-z]+)((?: [a-zA-Z0-9:-]+=\"[^\"]*\")*) ?/?>", svg)
+    assert {t for t, _ in tags} >= {"svg", "title", "defs", "g", "line", "polygon", "circle", "text", "tspan"}
+    for tag, attrs in tags:
+        names = re.findall(r' ([a-zA-Z0-9:-]+)="', attrs)
+        assert names == sorted(names), (tag, names)
+
+
+def test_markup_in_a_subscript_or_quotes_stays_text() -> None:
+    svg = render_svg(demo_sheet(title='say "hi" & <b>', label="M_{</tspan><script>}"), "gm1")
+    root = ET.fromstring(svg)
+    assert root.find(NS + "title").text == 'say "hi" & <b>'
+    assert "<script" not in svg and "&lt;/tspan&gt;&lt;script&gt;" in svg
+    [text] = [t for t in root.iter(NS + "text") if t.text == "M"]
+    assert [s.text for s in text] == ["</tspan><script>"]
 
 
 def test_a_subscript_is_a_tspan_lowered_by_dy_and_the_next_run_comes_back() -> None:
