@@ -42,7 +42,7 @@ from pathlib import Path
 from typing import Any, overload
 
 from graphmech.accuracy import percent
-from graphmech.errors import GraphmechError, SceneError
+from graphmech.errors import GraphmechError, SceneError, UnknownName
 from graphmech.problems import check as check_scene
 from graphmech.problems import steps
 from graphmech.problems import with_precision
@@ -190,7 +190,7 @@ class CheckTable:
         for row in self.rows:
             if row.name == key:
                 return row
-        raise KeyError(f"{key!r}: not in the check table (it has {', '.join(r.name for r in self.rows)})")
+        raise UnknownName(f"{key!r}: not in the check table (it has {', '.join(r.name for r in self.rows)})")
 
     @property
     def ok(self) -> bool:
@@ -276,7 +276,7 @@ class Drawing:
     warnings: tuple[str, ...] = ()
     name: str = "scene"
 
-    def save(self, path: str | os.PathLike[str], format: str | None = None, dpi: float | None = None) -> Path:
+    def save(self, path: str | Path, format: str | None = None, dpi: float | None = None) -> Path:
         """Write the drawing as SVG, PDF (true size) or PNG (at ``dpi``), by the extension or
         ``format``; atomically. Returns the path."""
         from graphmech.render.export import DPI, save

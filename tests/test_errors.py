@@ -133,6 +133,8 @@ ALLOWED_ELSEWHERE = {
     ("graphmech/render/svg.py", "ValueError"): 3,
     # a drawing asked to letter NaN or ∞: a programming error (the methods refuse such input)
     ("graphmech/drawing/lettering.py", "ValueError"): 1,
+    # PEP 562: a module's __getattr__ answers a missing name with AttributeError (hasattr relies on it)
+    ("graphmech/__init__.py", "AttributeError"): 1,
 }
 
 
@@ -158,7 +160,7 @@ def test_the_methods_and_the_exact_solutions_raise_no_bare_builtin():
 def test_elsewhere_only_the_named_programming_errors_stay_builtin():
     over = {k: n for k, n in bare_builtin_raises().items() if n > ALLOWED_ELSEWHERE.get(k, 0)}
     assert not over, f"a new bare built-in raise (use graphmech.errors, or name it here with why): {over}"
-    assert sum(ALLOWED_ELSEWHERE.values()) == 35
+    assert sum(ALLOWED_ELSEWHERE.values()) == 36
 
 
 # ---------------------------------------------------------------------------- through the command
