@@ -8,11 +8,8 @@ job that succeeded (each all-or-nothing) and reports the others in one line each
 """
 from __future__ import annotations
 
-import multiprocessing
-import multiprocessing.util
 import os
 from collections.abc import Callable, Iterable, Sequence
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -134,6 +131,8 @@ def _browser() -> Browser:
         return _BROWSER[0]
     _close_browser()
     _BROWSER.append(Browser())
+    import multiprocessing.util
+
     if multiprocessing.parent_process() is not None:  # a pool's worker: closed when it exits
         multiprocessing.util.Finalize(None, _close_browser, exitpriority=10)
     return _BROWSER[0]
@@ -159,6 +158,8 @@ def run(todo: Sequence[Job], options: Options, workers: int | None = None,
         finally:
             _close_browser()
         return results
+    from concurrent.futures import ProcessPoolExecutor  # only for a pool: a single check starts faster
+
     with ProcessPoolExecutor(max_workers=workers) as pool:
         for result in pool.map(make, todo, [options] * len(todo), chunksize=max(1, len(todo) // (4 * workers))):
             results.append(result)
