@@ -100,8 +100,9 @@ def make(job: Job, options: Options) -> Result:
         if table is not None:  # the drawing's and the check's, each once
             warnings = tuple(dict.fromkeys([*warnings, *table.warnings]))
         return Result(job, p.name, figure, table, tuple(warnings))
-    except GraphmechError as e:
-        return Result(job, error=one_line(e, job.label))
+    except GraphmechError as e:  # the file named once, with the variant: "x.toml [driver.angle=30]: …"
+        line = one_line(e, job.file)
+        return Result(job, error=job.label + line[len(job.file):] if line.startswith(job.file + ": ") else line)
     except OSError as e:
         return Result(job, error=f"{job.label}: {e.filename or ''}{': ' if e.filename else ''}{e.strerror or e}")
     except RecursionError:

@@ -146,7 +146,7 @@ def parse_value(text: str, path: str) -> Any:
         if re.fullmatch(r"[\w\-+.]+", text) and not re.fullmatch(r"[\d\-+.eE]+", text):
             return text
         raise SceneError([(f"--set {path}", f"{say(text)} is not a value: write a number, "
-                                            "[a, b] or a word")], COMMAND_LINE) from None
+                                            "[a, b], a word or \"quoted text\"")], COMMAND_LINE) from None
 
 
 def parse_assignment(text: str) -> tuple[str, list[Any]]:

@@ -25,7 +25,7 @@ def test_jobs_are_every_scene_with_every_variant():
 
 def test_a_job_that_fails_is_a_result_with_its_one_line_never_an_exception():
     bad = batch.make(batch.Job(str(BLOCK), {"driver.angel": 1}), batch.Options(check=True))
-    assert not bad.ok and bad.error == ("kin.oscillating_block.toml [driver.angel=1]: kin.oscillating_block.toml: "
+    assert not bad.ok and bad.error == ("kin.oscillating_block.toml [driver.angel=1]: "
                                         "driver.angel: not in the scene; did you mean angle? (--set changes a value "
                                         "the scene has; add a new key in the file)")
     missing = batch.make(batch.Job("nowhere/x.toml"), batch.Options())
