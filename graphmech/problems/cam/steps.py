@@ -78,7 +78,7 @@ PHRASES: Phrases = {
     "largest value": ("the largest |{v}| by the law at the divisions is at division {k}: {sym} = {value} {unit}{basis}",
                       "按运动规律，各分点中|{v}|最大在分点{k}：{sym} = {value} {unit}{basis}",
                       "наибольшее |{v}| по закону движения в точках деления — в точке {k}: {sym} = {value} {unit}{basis}"),
-    "where": ("it is at {d} = {value}°{basis}", "其位置为{d} = {value}°{basis}", "оно при {d} = {value}°{basis}"),
+    "where": ("{sym} is at {d} = {value}°{basis}", "{sym}的位置为{d} = {value}°{basis}", "{sym} — при {d} = {value}°{basis}"),
     "stroke": ("measure the stroke: {mm} mm: {sym} = {mm} × {scale} = {value} {unit}",
                "量得行程{mm} mm：{sym} = {mm} × {scale} = {value} {unit}",
                "измеряем ход: {mm} mm: {sym} = {mm} × {scale} = {value} {unit}"),
@@ -358,7 +358,7 @@ class _Words:
                                     basis=self.basis(row.name)))
         at = self.rows.get(f"{q}_max_at")
         if at is not None:
-            out.append(self.say("where", d=self.d, value=num(at.graphical), basis=self.basis(at.name)))
+            out.append(self.say("where", sym=f"{q}_max", d=self.d, value=num(at.graphical), basis=self.basis(at.name)))
         return out
 
     def _division_of_max(self, q: str) -> int:
