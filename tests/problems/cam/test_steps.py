@@ -205,4 +205,4 @@ def test_a_clockwise_cam_reads_its_maxima_and_places_off_the_diagrams():
     assert "the cam turns clockwise: keep it still and turn the follower the opposite way, −ω (counter-clockwise)" in lines
     # a place asked for without its maximum still names what it is the place of
     assert any(x.startswith("a_max is at δ = ") for x in lines)
-    assert lines[_index(lines, "a_max is at")] > lines[_index(lines, "the a–δ diagram")]
+    assert _index(lines, "a_max is at") > _index(lines, "the a–δ diagram")
