@@ -418,8 +418,8 @@ def test_steps_prints_the_numbered_construction_protocol():
 
 
 def test_steps_of_a_kind_without_a_protocol_is_refused_in_one_line():
-    err = assert_refused(run_cli("steps", str(SCENES / "cam.oscillating_roller.toml")), "cam.oscillating_roller.toml",
-                         "no construction protocol for a cam scene yet")
+    err = assert_refused(run_cli("steps", str(SCENES / "fly.ic_engine_flywheel.toml")), "fly.ic_engine_flywheel.toml",
+                         "no construction protocol for a flywheel scene yet")
     assert "linkage" in err
 
 

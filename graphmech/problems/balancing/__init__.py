@@ -44,5 +44,11 @@ def _sheet(scene: Scene[BalancingProblem], footer: Footer) -> tuple[Sheet, list[
     return balancing_figure(an, page_size(scene), footer), list(an.warnings)
 
 
+def _steps(scene: Scene[BalancingProblem]) -> list[str]:
+    from graphmech.problems.balancing.steps import balancing_steps
+
+    return balancing_steps(scene)
+
+
 # its records ("mass-radius-polygon") are timed with the efficiency kind's, as one bench of forces alone
-KIND = Kind("balancing", ("balancing",), _read, _analyse, _judge, _sheet)
+KIND = Kind("balancing", ("balancing",), _read, _analyse, _judge, _sheet, steps=_steps)

@@ -52,6 +52,12 @@ def _extras(an: CamAnalysis) -> dict[str, Any]:
     return {"impacts": an.impacts, **({"divisions": an.divisions} if an.divisions else {})}
 
 
+def _steps(scene: Scene[CamScene]) -> list[str]:
+    from graphmech.problems.cam.steps import cam_steps
+
+    return cam_steps(scene)
+
+
 def _bench(quick: bool) -> Bench:
     from graphmech.problems.cam.bench import bench
 
@@ -68,4 +74,5 @@ def _mixture(data: Mapping[str, Any]) -> tuple[str, str] | None:
     return None
 
 
-KIND = Kind("cam", ("cam",), _read, _analyse, _judge, _sheet, _extras, bench=_bench, mixture=_mixture)
+KIND = Kind("cam", ("cam",), _read, _analyse, _judge, _sheet, _extras, bench=_bench, mixture=_mixture,
+            steps=_steps)

@@ -480,7 +480,7 @@ def _segment_name(kind: str, angle: float, room: float) -> str:
     return ""
 
 
-def _kind_word(cam: DiscCam, k: int) -> str:
+def kind_word(cam: DiscCam, k: int) -> str:
     """The key of segment ``k``'s name in :data:`WORDS`: a dwell is far (远休止) at the top of the
     stroke, near (近休止) at the bottom."""
     seg = cam.program.segments[k]
@@ -558,7 +558,7 @@ def diagram_items(cam: DiscCam, panel: str, mu: float, mu_phi: float, delta: np.
         for j in joints:  # the segments named under the numbers, parted at the joints
             items.append(Segment((j / mu_phi, -NAMES_ROW[0]), (j / mu_phi, -NAMES_ROW[1]), "label"))
         for k, (seg, a, b) in enumerate(zip(cam.program.segments, joints[:-1], joints[1:])):
-            name = _segment_name(word(_kind_word(cam, k), notation, WORDS), seg.angle, (b - a) / mu_phi)
+            name = _segment_name(word(kind_word(cam, k), notation, WORDS), seg.angle, (b - a) / mu_phi)
             if name:
                 labels.append(Label(name, ((a + b) / 2.0 / mu_phi, -NAMES_ROW[0]),
                                     ((0.0, 1.0), (1.0, 0.0), (-1.0, 0.0)), NAME_SIZE, italic=False))

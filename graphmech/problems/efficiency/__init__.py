@@ -50,4 +50,10 @@ def _bench(quick: bool) -> Bench:
     return bench(quick)
 
 
-KIND = Kind("efficiency", ("efficiency",), _read, _analyse, _judge, _sheet, bench=_bench)
+def _steps(scene: Scene[EfficiencyProblem]) -> list[str]:
+    from graphmech.problems.efficiency.steps import efficiency_steps
+
+    return efficiency_steps(scene)
+
+
+KIND = Kind("efficiency", ("efficiency",), _read, _analyse, _judge, _sheet, bench=_bench, steps=_steps)

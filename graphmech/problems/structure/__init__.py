@@ -51,5 +51,11 @@ def _lines(an: StructureAnalysis) -> list[str]:
     return text_summary(an)
 
 
+def _steps(scene: Scene[StructureScene]) -> list[str]:
+    from graphmech.problems.structure.steps import structure_steps
+
+    return structure_steps(scene)
+
+
 KIND = Kind("structure", ("structure",), _read, _analyse, _judge, _sheet,
-            lambda an: {"structure": an.summary()}, _lines)
+            lambda an: {"structure": an.summary()}, _lines, steps=_steps)
