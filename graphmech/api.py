@@ -35,6 +35,7 @@ one-line message the command prints.
 from __future__ import annotations
 
 import json
+import math
 import os
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -49,6 +50,7 @@ from graphmech.problems import with_precision
 from graphmech.problems.judging import Row, Verdict
 from graphmech.problems.reader import Scene
 from graphmech.scene import draw, id_prefix, parse_scene, parse_toml, read_data
+from graphmech.tolerances import MAX_PRECISION_MM
 from graphmech.variants import Assignment, replace, value_text, variant_name
 
 #: The fields of a check row, as ``check --json`` writes them (:meth:`Row.as_dict`).
@@ -100,8 +102,12 @@ class Problem:
               precision: float | None = None) -> CheckTable:
         """The check table; ``measured`` judges your own values (``{"pc": 40.5}`` drawn mm,
         ``{"v_C": 0.26}`` SI) within ``precision`` mm of drawing (default: the scene's)."""
-        pairs = tuple((measured.items() if isinstance(measured, Mapping) else measured) or ())
-        extra = tuple((str(k), _number(k, v)) for k, v in pairs)
+        pairs = list((measured.items() if isinstance(measured, Mapping) else measured) or ())
+        if not all(isinstance(kv, tuple) and len(kv) == 2 and isinstance(kv[0], str) for kv in pairs):
+            raise TypeError("measured: a dict {name: value} or (name, value) pairs")
+        extra = tuple((k, _number(k, v)) for k, v in pairs)
+        if precision is not None and not (isinstance(precision, (int, float)) and 0 < precision <= MAX_PRECISION_MM):
+            raise SceneError([("precision", f"a number of mm above 0 and at most {MAX_PRECISION_MM:g}")], "check")
         an, verdicts, doc, lines = check_scene(with_precision(self.scene, precision), extra)
         return CheckTable(title=self.title, rows=tuple(an.rows), measured=tuple(verdicts),
                           warnings=tuple(an.warnings), scales=dict(an.scales),
@@ -116,6 +122,8 @@ class Problem:
     def replace(self, changes: Mapping[str, Any]) -> Problem:
         """A variant: the scene with the values at the key paths changed (``{"driver.angle": 60}``,
         ``{"dyad[0].lengths[1]": 55}``), in the unit the scene states; validated like the file."""
+        if not isinstance(changes, Mapping) or not all(isinstance(k, str) for k in changes):
+            raise TypeError("replace: a dict {key path: value}, such as {'driver.angle': 60}")
         data = replace(self.data, changes, self.source)
         return Problem(data, self.source, raw=self._raw, page=self.page, variant={**self.variant, **changes})
 
@@ -135,9 +143,11 @@ def load(path: str | os.PathLike[str], page: str | None = None) -> Problem:
     return Problem(data, Path(path).name, raw=raw, page=page)
 
 
-def loads(text: str, name: str = "scene.toml", page: str | None = None) -> Problem:
+def loads(text: str | bytes, name: str = "scene.toml", page: str | None = None) -> Problem:
     """A scene from TOML text; ``name`` is the file name messages give."""
-    raw = text.encode("utf-8")
+    if not isinstance(text, (str, bytes)):
+        raise TypeError(f"loads: TOML text (str or UTF-8 bytes), not {type(text).__name__}")
+    raw = text.encode("utf-8") if isinstance(text, str) else text
     return Problem(parse_toml(raw, name), name, raw=raw, page=page)
 
 
@@ -145,12 +155,32 @@ def from_dict(data: Mapping[str, Any], name: str = "scene.toml", page: str | Non
     """A scene from a dict shaped as the TOML (``{"driver": {"angle_deg": 30, …}, …}``)."""
     if not isinstance(data, Mapping):
         raise SceneError([("", "a scene must be a table (a dict)")], name)
+    bad = _non_string_key(data, "")
+    if bad is not None:  # TOML's keys are strings; the reader may rely on it
+        raise SceneError([bad], name)
     return Problem(dict(data), name, page=page)
 
 
+def _non_string_key(node: Any, path: str) -> tuple[str, str] | None:
+    """(key path, reason) for the first key that is not a string, in tables and arrays alike."""
+    if isinstance(node, Mapping):
+        for k, v in node.items():
+            if not isinstance(k, str):
+                return (path or "(top)", f"key {k!r} is not a string: a scene's keys are TOML keys")
+            found = _non_string_key(v, f"{path}.{k}" if path else k)
+            if found is not None:
+                return found
+    elif isinstance(node, (list, tuple)):
+        for i, v in enumerate(node):
+            found = _non_string_key(v, f"{path}[{i}]")
+            if found is not None:
+                return found
+    return None
+
+
 def _number(name: object, value: object) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise SceneError([(f"measured.{name}", "must be a number")], "measured")
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise SceneError([(f"measured.{name}", "must be a finite number")], "measured")
     return float(value)
 
 

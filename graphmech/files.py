@@ -17,6 +17,8 @@ def write_atomic(path: str | os.PathLike[str], text: str | bytes) -> None:
     path = Path(os.path.realpath(path))
     if path.is_dir():
         raise OSError(f"{path}: is a folder")
+    if not path.parent.is_dir():  # said so, not as mkstemp's complaint about a temporary name
+        raise FileNotFoundError(f"{path.parent}: folder does not exist")
     if path.exists() and not path.is_file():
         with open(path, "wb") as f:
             f.write(data)

@@ -48,8 +48,14 @@ def test_measured_values_are_judged_as_on_the_command_line():
     code, out, _ = run_cli("check", str(BLOCK), "--json", f"--measured=v_E={exact * 1.001!r},omega_2=99")
     assert code == 1 and json.loads(out)["measured"] == [v.as_dict() for v in table.measured]
     assert p.check([("v_E", exact)], precision=0.01).measured[0].tolerance < table.measured[0].tolerance
-    with pytest.raises(SceneError, match="measured.v_E: must be a number"):
-        p.check(measured={"v_E": "fast"})
+    for bad in ("fast", float("nan"), float("inf"), None, True):
+        with pytest.raises(SceneError, match="measured.v_E: must be a finite number"):
+            p.check(measured={"v_E": bad})
+    with pytest.raises(TypeError, match="measured: a dict"):
+        p.check(measured=["pe"])
+    for precision in (-1, 0, float("nan"), 11):
+        with pytest.raises(SceneError, match="precision: a number of mm above 0 and at most 10"):
+            p.check(precision=precision)
 
 
 def test_to_pandas_is_a_data_frame_with_the_row_fields():
@@ -158,3 +164,21 @@ def test_the_drawing_saves_as_pdf_and_png_by_extension(tmp_path):
     with pytest.raises(GraphmechError, match="unknown format .jpg"):
         drawing.save(tmp_path / "a.jpg")
     assert not (tmp_path / "a.jpg").exists()
+
+
+def test_wrong_python_types_are_told_plainly(tmp_path):
+    p = gm.load(BLOCK)
+    with pytest.raises(TypeError, match="loads: TOML text"):
+        gm.loads({"title": "x"})  # type: ignore[arg-type]
+    assert gm.loads(BLOCK.read_bytes(), "kin.oscillating_block.toml").render().svg == p.render().svg
+    with pytest.raises(SceneError, match=r"^scene.toml: driver: key 1 is not a string"):
+        gm.from_dict({"driver": {1: 2}})
+    with pytest.raises(SceneError, match=r"dyad\[0\]: key 2 is not a string"):
+        gm.from_dict({"dyad": [{2: 3}]})
+    for bad in ([("driver.angle", 3)], {3: 4}):
+        with pytest.raises(TypeError, match="replace: a dict"):
+            p.replace(bad)  # type: ignore[arg-type]
+    assert p.replace({}).name == p.name
+    with pytest.raises(FileNotFoundError, match="nowhere: folder does not exist"):
+        p.render().save(tmp_path / "nowhere" / "x.svg")
+    assert list(tmp_path.iterdir()) == []

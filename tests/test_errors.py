@@ -114,6 +114,7 @@ ALLOWED_ELSEWHERE = {
     ("graphmech/drawing/primitives.py", "ValueError"): 2,
     # the file system's own refusal: the command maps OSError to exit 2 with the path
     ("graphmech/files.py", "OSError"): 1,
+    ("graphmech/files.py", "FileNotFoundError"): 1,  # the folder to write in is missing: an OSError the command reports
     # a motion law validate() has rejected first
     ("graphmech/mechanisms/motion.py", "AssertionError"): 1,
     # a bare `raise ValueError` caught on the next line (a name's "@" part is not a number)
@@ -135,6 +136,8 @@ ALLOWED_ELSEWHERE = {
     ("graphmech/drawing/lettering.py", "ValueError"): 1,
     # PEP 562: a module's __getattr__ answers a missing name with AttributeError (hasattr relies on it)
     ("graphmech/__init__.py", "AttributeError"): 1,
+    # the Python API given a plainly wrong Python type (a list for a dict): Python's own convention
+    ("graphmech/api.py", "TypeError"): 3,
 }
 
 
@@ -160,7 +163,7 @@ def test_the_methods_and_the_exact_solutions_raise_no_bare_builtin():
 def test_elsewhere_only_the_named_programming_errors_stay_builtin():
     over = {k: n for k, n in bare_builtin_raises().items() if n > ALLOWED_ELSEWHERE.get(k, 0)}
     assert not over, f"a new bare built-in raise (use graphmech.errors, or name it here with why): {over}"
-    assert sum(ALLOWED_ELSEWHERE.values()) == 36
+    assert sum(ALLOWED_ELSEWHERE.values()) == 40
 
 
 # ---------------------------------------------------------------------------- through the command
