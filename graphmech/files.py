@@ -23,7 +23,10 @@ def write_atomic(path: str | os.PathLike[str], text: str | bytes) -> None:
         with open(path, "wb") as f:
             f.write(data)
         return
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    except OSError as e:  # the folder refuses a new file: name the file asked for, not the temporary one
+        raise OSError(e.errno, f"cannot write {path} ({e.strerror})") from None
     try:
         with os.fdopen(fd, "wb") as f:
             f.write(data)

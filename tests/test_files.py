@@ -76,3 +76,23 @@ def test_a_fifo_is_written_into_not_replaced(tmp_path):
     finally:
         os.close(reader)
     assert stat.S_ISFIFO(fifo.stat().st_mode)
+
+
+def test_a_folder_that_refuses_new_files_is_named_with_the_file_asked_for(tmp_path):
+    import os
+
+    import pytest
+
+    from graphmech.files import write_atomic
+
+    if os.geteuid() == 0:  # root writes anywhere but /proc
+        target = "/proc/graphmech-test.svg"
+    else:
+        locked = tmp_path / "locked"
+        locked.mkdir(mode=0o500)
+        target = str(locked / "x.svg")
+    with pytest.raises(OSError) as e:
+        write_atomic(target, "x")
+    assert f"cannot write {target}" in str(e.value) and ".tmp" not in str(e.value)
+    with pytest.raises(FileNotFoundError, match="folder does not exist"):
+        write_atomic(tmp_path / "none" / "x.svg", "x")
