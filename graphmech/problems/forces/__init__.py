@@ -44,6 +44,12 @@ def _bench(quick: bool) -> Bench:
     return bench(quick)
 
 
+def _steps(scene: Scene[ForceScene]) -> list[str]:
+    from graphmech.problems.forces.steps import forces_steps
+
+    return forces_steps(scene)
+
+
 def _mixture(data: Mapping[str, Any]) -> tuple[str, str] | None:
     others = [t for t in ("cam", "flywheel", "efficiency", "balancing") if t in data]
     if not others:
@@ -54,4 +60,4 @@ def _mixture(data: Mapping[str, Any]) -> tuple[str, str] | None:
 
 
 KIND = Kind("forces", ("forces",), _read, _analyse, lambda an, extra: an.verdicts, _sheet, _extras,
-            bench=_bench, mixture=_mixture)
+            bench=_bench, mixture=_mixture, steps=_steps)
