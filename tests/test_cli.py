@@ -418,9 +418,9 @@ def test_steps_prints_the_numbered_construction_protocol():
 
 
 def test_steps_of_a_kind_without_a_protocol_is_refused_in_one_line():
-    err = assert_refused(run_cli("steps", str(SCENES / "fly.ic_engine_flywheel.toml")), "fly.ic_engine_flywheel.toml",
-                         "no construction protocol for a flywheel scene yet")
-    assert "linkage" in err
+    err = assert_refused(run_cli("steps", str(SCENES / "linkage.slider_crank_offset-cycle.toml")),
+                         "linkage.slider_crank_offset-cycle.toml", "no construction protocol for a cycle scene yet")
+    assert "linkage" in err and "flywheel" in err and "forces" in err
 
 
 def test_help_points_to_the_installed_scene_format_and_lists_the_exit_codes(capsys):

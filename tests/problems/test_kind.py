@@ -77,6 +77,6 @@ def test_the_registry_refuses_a_protocol_a_kind_does_not_have():
     from graphmech.errors import NotApplicable
     from graphmech.problems import steps
 
-    assert KINDS["linkage"].steps is not None and KINDS["flywheel"].steps is None
-    with pytest.raises(NotApplicable, match="no construction protocol for a flywheel scene yet"):
-        steps(SimpleNamespace(kind="flywheel"))
+    assert KINDS["linkage"].steps is not None and KINDS["cycle"].steps is None
+    with pytest.raises(NotApplicable, match="no construction protocol for a cycle scene yet"):
+        steps(SimpleNamespace(kind="cycle"))

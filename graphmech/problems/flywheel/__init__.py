@@ -65,4 +65,10 @@ def _bench(quick: bool) -> Bench:
     return bench(quick)
 
 
-KIND = Kind("flywheel", ("flywheel",), _read, _analyse, _judge, _sheet, _extras, _lines, bench=_bench)
+def _steps(scene: Scene[FlywheelScene]) -> list[str]:
+    from graphmech.problems.flywheel.steps import flywheel_steps
+
+    return flywheel_steps(scene)
+
+
+KIND = Kind("flywheel", ("flywheel",), _read, _analyse, _judge, _sheet, _extras, _lines, bench=_bench, steps=_steps)
