@@ -417,7 +417,12 @@ def test_steps_prints_the_numbered_construction_protocol():
     assert lines[-1] == "31. measure p′e′ = 56.68 mm: a_E = p′e′·μa = 2.834 m/s²"
 
 
-def test_steps_of_a_kind_without_a_protocol_is_refused_in_one_line():
+def test_steps_of_a_kind_without_a_protocol_is_refused_in_one_line(monkeypatch):
+    import dataclasses
+
+    from graphmech.problems import KINDS
+
+    monkeypatch.setitem(KINDS, "cycle", dataclasses.replace(KINDS["cycle"], steps=None))  # a kind to come
     err = assert_refused(run_cli("steps", str(SCENES / "linkage.slider_crank_offset-cycle.toml")),
                          "linkage.slider_crank_offset-cycle.toml", "no construction protocol for a cycle scene yet")
     assert "linkage" in err and "flywheel" in err and "forces" in err

@@ -19,8 +19,10 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
+from graphmech.accuracy import percent
 from graphmech.drawing.lettering import number, runs
 from graphmech.drawing.notation import word
+from graphmech.problems.judging import Row
 from graphmech.scales import ANGLE_SCALES, SCALE_INFO
 
 #: A kind's phrases: key → (English, 中文, русский) templates with ``str.format`` fields.
@@ -37,6 +39,9 @@ PHRASES: Phrases = {
     "chosen": ("chosen to fit the page", "按图幅选取", "выбран по формату листа"),
     "counter-clockwise": ("counter-clockwise", "逆时针", "против часовой стрелки"),
     "clockwise": ("clockwise", "顺时针", "по часовой стрелке"),
+    "read": ("read {name} = {drawn} mm × {mu} = {value}{unit}{acc}", "量得{name} = {drawn} mm × {mu} = {value}{unit}{acc}",
+             "измеряем {name} = {drawn} mm × {mu} = {value}{unit}{acc}"),
+    "value": ("{name} = {value}{unit}{acc}", "{name} = {value}{unit}{acc}", "{name} = {value}{unit}{acc}"),
 }
 
 
@@ -78,6 +83,17 @@ def scale_choice(symbol: str, value: float, stated: bool, notation: str) -> str:
     return f"{scale(symbol, value)}（{why}）" if notation == "zh" else f"{scale(symbol, value)} ({why})"
 
 
+def read_row(row: Row, notation: str) -> str:
+    """A check table's row as the protocol reads it: ``read R_12 = 63.49 mm × 25 = 1587 N`` (drawn
+    length × μ), or the value alone where nothing is drawn to be measured; a discretised or
+    read-off value says how accurate its method estimates it, as the table does."""
+    acc = f" (±{percent(row.error_estimate)}, {row.basis or row.error_source})" if row.error_estimate is not None else ""
+    fields = {"name": row.name, "value": num(row.graphical), "unit": f" {row.unit}" if row.unit else "", "acc": acc}
+    if row.drawn_mm is None or row.scale == 1.0:
+        return phrase("value", notation, PHRASES, **fields)
+    return phrase("read", notation, PHRASES, drawn=num(row.drawn_mm), mu=num(row.scale), **fields)
+
+
 def sense(value: float, notation: str) -> str:
     """The sense of a signed angular rate (+ counter-clockwise), in words; "" for zero."""
     if value == 0.0:
@@ -85,4 +101,4 @@ def sense(value: float, notation: str) -> str:
     return phrase("counter-clockwise" if value > 0 else "clockwise", notation, PHRASES)
 
 
-__all__ = ["PHRASES", "Phrases", "num", "phrase", "scale", "scale_choice", "sense", "text"]
+__all__ = ["PHRASES", "Phrases", "num", "phrase", "read_row", "scale", "scale_choice", "sense", "text"]

@@ -54,5 +54,11 @@ def _bench(quick: bool) -> Bench:
     return bench(quick)
 
 
+def _steps(scene: Scene[CycleScene]) -> list[str]:
+    from graphmech.problems.cycle.steps import cycle_steps
+
+    return cycle_steps(scene)
+
+
 KIND = Kind("cycle", ("cycle", "characteristics"), _read, _analyse, _judge, _sheet,
-            lambda an: dict(an.summary), lambda an: an.summary_lines(), bench=_bench)
+            lambda an: dict(an.summary), lambda an: an.summary_lines(), bench=_bench, steps=_steps)

@@ -11,11 +11,9 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from graphmech.accuracy import percent
 from graphmech.problems.flywheel.check import analyse_flywheel
-from graphmech.problems.judging import Row
 from graphmech.problems.protocol import PHRASES as COMMON
-from graphmech.problems.protocol import Phrases, num, phrase, scale_choice
+from graphmech.problems.protocol import Phrases, num, phrase, read_row, scale_choice
 
 if TYPE_CHECKING:
     from graphmech.problems.flywheel.scene import FlywheelScene
@@ -69,9 +67,6 @@ PHRASES: Phrases = {
                 "制动过程：ω自{w0} rad/s以ε = M/J = {M} N·m / {J} kg·m²均匀减小；作ω(t)直线，量取ω = 0处的时间",
                 "выбег: ω падает от {w0} rad/s с ε = M/J = {M} N·m / {J} kg·m²; строим ω(t) — прямую — и "
                 "находим, где ω = 0"),
-    "read": ("read {name} = {drawn} mm × {mu} = {value} {unit}{acc}", "量得{name} = {drawn} mm × {mu} = {value} {unit}{acc}",
-             "измеряем {name} = {drawn} mm × {mu} = {value} {unit}{acc}"),
-    "value": ("{name} = {value} {unit}{acc}", "{name} = {value} {unit}{acc}", "{name} = {value} {unit}{acc}"),
 }
 
 
@@ -104,17 +99,8 @@ def flywheel_steps(scene: Scene[FlywheelScene]) -> list[str]:
             out += [say("wittenbauer"), say("tangents"), say("J_F")]
         else:
             out += [say("indicator"), say("J_F indicator")]
-    out += [_read(r, say) for r in an.rows]
+    out += [read_row(r, notation) for r in an.rows]
     return out
-
-
-def _read(r: Row, say: object) -> str:
-    assert callable(say)
-    acc = f" (±{percent(r.error_estimate)}, {r.basis or r.error_source})" if r.error_estimate is not None else ""
-    if r.drawn_mm is None or r.scale == 1.0:
-        return str(say("value", name=r.name, value=num(r.graphical), unit=r.unit, acc=acc)).replace("  (", " (")
-    return str(say("read", name=r.name, drawn=num(r.drawn_mm), mu=num(r.scale), value=num(r.graphical), unit=r.unit,
-                   acc=acc))
 
 
 __all__ = ["PHRASES", "flywheel_steps"]

@@ -16,9 +16,8 @@ import math
 from typing import TYPE_CHECKING
 
 from graphmech.problems.forces.check import ForceAnalysis, analyse_forces
-from graphmech.problems.judging import Row
 from graphmech.problems.protocol import PHRASES as COMMON
-from graphmech.problems.protocol import Phrases, num, phrase, scale_choice
+from graphmech.problems.protocol import Phrases, num, phrase, read_row, scale_choice
 
 if TYPE_CHECKING:
     from graphmech.problems.forces.scene import ForceScene
@@ -60,9 +59,6 @@ PHRASES: Phrases = {
               "按{name}的已知方向封闭力多边形：量得{mm} mm，方向{th}°：{name} = {mm} × μF = {F} N",
               "замыкаем план сил по известному направлению {name}: измеряем {mm} mm под углом {th}°: "
               "{name} = {mm} × μF = {F} N"),
-    "read": ("read {name} = {drawn} mm × {mu} = {value} {unit}", "量得{name} = {drawn} mm × {mu} = {value} {unit}",
-             "измеряем {name} = {drawn} mm × {mu} = {value} {unit}"),
-    "computed": ("{name} = {value} {unit}", "{name} = {value} {unit}", "{name} = {value} {unit}"),
     "impossible": ("position φ₁ = {phi}°: the polygons cannot be drawn here", "位置φ₁ = {phi}°：此位置无法作图",
                    "положение φ₁ = {phi}°: здесь планы построить нельзя"),
 }
@@ -89,27 +85,20 @@ def forces_steps(scene: Scene[ForceScene]) -> list[str]:
         out.append(say("kinematics", mu=scale_choice("a", fa.scales["a"], "a" in fa.stated, notation)))
         for r in rows:  # the accelerations the table asks for
             if r.unit in ("m/s²", "rad/s²"):
-                out.append(_read(r, say))
+                out.append(read_row(r, notation))
                 done.add(r.name)
         out += _inertia(fa, i, say)
         out.append(say("choose", mu=scale_choice("F", fa.scales["F"], "F" in fa.stated, notation)))
         out += _polygons(fa, i, say)
         for r in rows:  # every value of the table as the table reads it
             if r.name not in done:
-                out.append(_read(r, say))
+                out.append(read_row(r, notation))
     return out
 
 
 def _at(name: str, label: str, several: bool) -> bool:
     """Whether a row belongs to the position ``label`` (``R_12@120`` when there are several)."""
     return name.endswith(f"@{label}") if several else "@" not in name
-
-
-def _read(r: Row, say: object) -> str:
-    assert callable(say)
-    if r.drawn_mm is None:
-        return str(say("computed", name=r.name, value=num(r.graphical), unit=r.unit))
-    return str(say("read", name=r.name, drawn=num(r.drawn_mm), mu=num(r.scale), value=num(r.graphical), unit=r.unit))
 
 
 def _inertia(fa: ForceAnalysis, i: int, say: object) -> list[str]:
