@@ -229,12 +229,17 @@ class CheckTable:
                     flag += f"  ±{percent(r.error_estimate)} ({r.basis or r.error_source})"
                 lines.append(f"{r.name:<16} {drawn:>11} {r.scale:>11.5g} {r.graphical:>16.9g} {r.exact:>16.9g}"
                              f" {r.rel_error:>9.1e}  {r.unit}{flag}")
-        if self.measured:
-            lines.append(f"{'measured':<16} {'value':>11} {'expected':>13} {'± tol':>9}  verdict")
-            for v in self.measured:
-                lines.append(f"{v.name:<16} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
-                             f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
-        return "\n".join([*lines, *self.lines])
+        return "\n".join([*lines, *self.verdict_lines(), *self.lines])
+
+    def verdict_lines(self) -> list[str]:
+        """The verdicts on the measured values as ``graphmech check`` prints them (none: no lines)."""
+        if not self.measured:
+            return []
+        lines = [f"{'measured':<16} {'value':>11} {'expected':>13} {'± tol':>9}  verdict"]
+        for v in self.measured:
+            lines.append(f"{v.name:<16} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
+                         f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
+        return lines
 
     def __str__(self) -> str:
         return self.text()
