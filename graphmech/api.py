@@ -35,6 +35,7 @@ one-line message the command prints.
 from __future__ import annotations
 
 import json
+import math
 import os
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -49,6 +50,7 @@ from graphmech.problems import with_precision
 from graphmech.problems.judging import Row, Verdict
 from graphmech.problems.reader import Scene
 from graphmech.scene import draw, id_prefix, parse_scene, parse_toml, read_data
+from graphmech.tolerances import MAX_PRECISION_MM
 from graphmech.variants import Assignment, replace, value_text, variant_name
 
 #: The fields of a check row, as ``check --json`` writes them (:meth:`Row.as_dict`).
@@ -70,13 +72,13 @@ class Problem:
 
     def __init__(self, data: Mapping[str, Any], source: str = "scene", *, raw: bytes | None = None,
                  page: str | None = None, variant: Assignment | None = None) -> None:
-        self.data = data
+        self.data = _plain(data, "", source, ())
         self.source = source
         self.page = page
         self.variant: Assignment = dict(variant or {})
-        self.scene: Scene[Any] = parse_scene(dict(data), source, page)
+        self.scene: Scene[Any] = parse_scene(self.data, source, page)
         # ids as the command gives them for the same file; a variant's differ from its original's
-        base = raw if raw is not None else json.dumps(data, sort_keys=True, default=str).encode()
+        base = raw if raw is not None else json.dumps(self.data, sort_keys=True, default=str).encode()
         self._raw = base
         tail = "".join(f"\n{k}={value_text(v)}" for k, v in self.variant.items()).encode()
         self.prefix = id_prefix(base + tail)
@@ -100,9 +102,8 @@ class Problem:
               precision: float | None = None) -> CheckTable:
         """The check table; ``measured`` judges your own values (``{"pc": 40.5}`` drawn mm,
         ``{"v_C": 0.26}`` SI) within ``precision`` mm of drawing (default: the scene's)."""
-        pairs = tuple((measured.items() if isinstance(measured, Mapping) else measured) or ())
-        extra = tuple((str(k), _number(k, v)) for k, v in pairs)
-        an, verdicts, doc, lines = check_scene(with_precision(self.scene, precision), extra)
+        extra = tuple((str(k), _number(k, v, self.source)) for k, v in _pairs(measured))
+        an, verdicts, doc, lines = check_scene(with_precision(self.scene, _precision(precision, self.source)), extra)
         return CheckTable(title=self.title, rows=tuple(an.rows), measured=tuple(verdicts),
                           warnings=tuple(an.warnings), scales=dict(an.scales),
                           scale_notes=tuple(an.scale_notes()), lines=tuple(lines), extras=doc,
@@ -116,6 +117,8 @@ class Problem:
     def replace(self, changes: Mapping[str, Any]) -> Problem:
         """A variant: the scene with the values at the key paths changed (``{"driver.angle": 60}``,
         ``{"dyad[0].lengths[1]": 55}``), in the unit the scene states; validated like the file."""
+        if not isinstance(changes, Mapping) or not all(isinstance(k, str) for k in changes):
+            raise TypeError("replace takes a mapping of key paths to values: {\"driver.angle\": 60}")
         data = replace(self.data, changes, self.source)
         return Problem(data, self.source, raw=self._raw, page=self.page, variant={**self.variant, **changes})
 
@@ -135,9 +138,12 @@ def load(path: str | os.PathLike[str], page: str | None = None) -> Problem:
     return Problem(data, Path(path).name, raw=raw, page=page)
 
 
-def loads(text: str, name: str = "scene.toml", page: str | None = None) -> Problem:
-    """A scene from TOML text; ``name`` is the file name messages give."""
-    raw = text.encode("utf-8")
+def loads(text: str | bytes, name: str = "scene.toml", page: str | None = None) -> Problem:
+    """A scene from TOML text (or its UTF-8 bytes); ``name`` is the file name messages give."""
+    if not isinstance(text, (str, bytes, bytearray)):
+        raise TypeError(f"loads takes the TOML text (str or bytes), not {type(text).__name__}")
+    # a lone surrogate goes through, for parse_toml to refuse as not UTF-8 with its line
+    raw = text.encode("utf-8", "surrogatepass") if isinstance(text, str) else bytes(text)
     return Problem(parse_toml(raw, name), name, raw=raw, page=page)
 
 
@@ -145,12 +151,55 @@ def from_dict(data: Mapping[str, Any], name: str = "scene.toml", page: str | Non
     """A scene from a dict shaped as the TOML (``{"driver": {"angle_deg": 30, …}, …}``)."""
     if not isinstance(data, Mapping):
         raise SceneError([("", "a scene must be a table (a dict)")], name)
-    return Problem(dict(data), name, page=page)
+    return Problem(data, name, page=page)
 
 
-def _number(name: object, value: object) -> float:
+def _plain(value: Any, path: str, source: str, within: tuple[int, ...]) -> Any:
+    """A copy of scene data as TOML has it — tables with text keys, arrays — so the reader meets
+    nothing else (a dict of a user's is copied: changing it later changes no Problem)."""
+    if isinstance(value, (Mapping, list)):
+        if id(value) in within:
+            raise SceneError([(path, "contains itself")], source)
+        within = (*within, id(value))
+    if isinstance(value, Mapping):
+        out = {}
+        for k, v in value.items():
+            if not isinstance(k, str):
+                raise SceneError([(f"{path}.{k!r}" if path else repr(k), "a key must be text (a str)")], source)
+            out[k] = _plain(v, f"{path}.{k}" if path else k, source, within)
+        return out
+    if isinstance(value, list):
+        return [_plain(v, f"{path}[{i}]", source, within) for i, v in enumerate(value)]
+    return value
+
+
+def _pairs(measured: object) -> Sequence[tuple[object, object]]:
+    """``measured`` as (name, value) pairs: a mapping, or a sequence of pairs (None: none)."""
+    if measured is None:
+        return ()
+    if isinstance(measured, Mapping):
+        return tuple(measured.items())
+    if not isinstance(measured, (str, bytes)) and isinstance(measured, Sequence) and all(
+            isinstance(p, Sequence) and not isinstance(p, (str, bytes)) and len(p) == 2 for p in measured):
+        return tuple((p[0], p[1]) for p in measured)
+    raise TypeError('measured takes {"pc": 40.5, …} or [("pc", 40.5), …]')
+
+
+def _number(name: object, value: object, source: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise SceneError([(f"measured.{name}", f"must be a finite number, not {value!r}")], source)
+    return float(value)
+
+
+def _precision(value: float | None, source: str) -> float | None:
+    """The drawing precision asked (None: the scene's), as ``--precision`` takes it."""
+    if value is None:
+        return None
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise SceneError([(f"measured.{name}", "must be a number")], "measured")
+        raise TypeError(f"precision is a number of mm, not {type(value).__name__}")
+    if not 0 < value <= MAX_PRECISION_MM:
+        raise SceneError([("precision", f"must be a number of mm above 0 and at most {MAX_PRECISION_MM:g}, "
+                                        f"not {value:g}")], source)
     return float(value)
 
 

@@ -1,6 +1,7 @@
 """Writing output files safely: the one place graphmech writes files."""
 from __future__ import annotations
 
+import errno
 import os
 import tempfile
 from pathlib import Path
@@ -14,9 +15,13 @@ def write_atomic(path: str | os.PathLike[str], text: str | bytes) -> None:
     The new file gets the usual permissions (0666 less the umask), not mkstemp's 0600.
     """
     data = text.encode("utf-8") if isinstance(text, str) else text
+    given = os.fspath(path)
     path = Path(os.path.realpath(path))
+    # the errors name the path as given (not the temporary file), with the usual errno and strerror
     if path.is_dir():
-        raise OSError(f"{path}: is a folder")
+        raise IsADirectoryError(errno.EISDIR, "is a folder", given)
+    if not path.parent.is_dir():
+        raise FileNotFoundError(errno.ENOENT, "folder does not exist", given)
     if path.exists() and not path.is_file():
         with open(path, "wb") as f:
             f.write(data)

@@ -53,6 +53,15 @@ def test_a_folder_is_refused_and_nothing_left_behind(tmp_path):
     assert leftovers(tmp_path) == []
 
 
+def test_a_missing_folder_is_named_as_given_not_the_temporary_file(tmp_path):
+    with pytest.raises(FileNotFoundError) as e:
+        write_atomic(tmp_path / "none" / "out.svg", "x")
+    assert (e.value.filename, e.value.strerror) == (str(tmp_path / "none" / "out.svg"), "folder does not exist")
+    with pytest.raises(IsADirectoryError) as d:
+        write_atomic(tmp_path, "x")
+    assert (d.value.filename, d.value.strerror) == (str(tmp_path), "is a folder")
+
+
 def test_a_failed_write_leaves_the_old_file_and_no_temporary(tmp_path, monkeypatch):
     path = tmp_path / "out.svg"
     path.write_text("old")
