@@ -198,8 +198,8 @@ def _precision(value: float | None, source: str) -> float | None:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise TypeError(f"precision is a number of mm, not {type(value).__name__}")
     if not 0 < value <= MAX_PRECISION_MM:
-        raise SceneError([("precision", f"must be a number of mm above 0 and at most {MAX_PRECISION_MM:g}, "
-                                        f"not {value:g}")], source)
+        reason = f"must be a number of mm above 0 and at most {MAX_PRECISION_MM:g}, not {value:g}"
+        raise SceneError([("precision", reason)], source)
     return float(value)
 
 
