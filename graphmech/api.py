@@ -72,13 +72,13 @@ class Problem:
 
     def __init__(self, data: Mapping[str, Any], source: str = "scene", *, raw: bytes | None = None,
                  page: str | None = None, variant: Assignment | None = None) -> None:
-        self.data = data
+        self.data = _plain(data, "", source, ())
         self.source = source
         self.page = page
         self.variant: Assignment = dict(variant or {})
-        self.scene: Scene[Any] = parse_scene(dict(data), source, page)
+        self.scene: Scene[Any] = parse_scene(self.data, source, page)
         # ids as the command gives them for the same file; a variant's differ from its original's
-        base = raw if raw is not None else json.dumps(data, sort_keys=True, default=str).encode()
+        base = raw if raw is not None else json.dumps(self.data, sort_keys=True, default=str).encode()
         self._raw = base
         tail = "".join(f"\n{k}={value_text(v)}" for k, v in self.variant.items()).encode()
         self.prefix = id_prefix(base + tail)
@@ -102,13 +102,8 @@ class Problem:
               precision: float | None = None) -> CheckTable:
         """The check table; ``measured`` judges your own values (``{"pc": 40.5}`` drawn mm,
         ``{"v_C": 0.26}`` SI) within ``precision`` mm of drawing (default: the scene's)."""
-        pairs = list((measured.items() if isinstance(measured, Mapping) else measured) or ())
-        if not all(isinstance(kv, tuple) and len(kv) == 2 and isinstance(kv[0], str) for kv in pairs):
-            raise TypeError("measured: a dict {name: value} or (name, value) pairs")
-        extra = tuple((k, _number(k, v)) for k, v in pairs)
-        if precision is not None and not (isinstance(precision, (int, float)) and 0 < precision <= MAX_PRECISION_MM):
-            raise SceneError([("precision", f"a number of mm above 0 and at most {MAX_PRECISION_MM:g}")], "check")
-        an, verdicts, doc, lines = check_scene(with_precision(self.scene, precision), extra)
+        extra = tuple((str(k), _number(k, v, self.source)) for k, v in _pairs(measured))
+        an, verdicts, doc, lines = check_scene(with_precision(self.scene, _precision(precision, self.source)), extra)
         return CheckTable(title=self.title, rows=tuple(an.rows), measured=tuple(verdicts),
                           warnings=tuple(an.warnings), scales=dict(an.scales),
                           scale_notes=tuple(an.scale_notes()), lines=tuple(lines), extras=doc,
@@ -123,7 +118,7 @@ class Problem:
         """A variant: the scene with the values at the key paths changed (``{"driver.angle": 60}``,
         ``{"dyad[0].lengths[1]": 55}``), in the unit the scene states; validated like the file."""
         if not isinstance(changes, Mapping) or not all(isinstance(k, str) for k in changes):
-            raise TypeError("replace: a dict {key path: value}, such as {'driver.angle': 60}")
+            raise TypeError("replace takes a mapping of key paths to values: {\"driver.angle\": 60}")
         data = replace(self.data, changes, self.source)
         return Problem(data, self.source, raw=self._raw, page=self.page, variant={**self.variant, **changes})
 
@@ -144,10 +139,11 @@ def load(path: str | os.PathLike[str], page: str | None = None) -> Problem:
 
 
 def loads(text: str | bytes, name: str = "scene.toml", page: str | None = None) -> Problem:
-    """A scene from TOML text; ``name`` is the file name messages give."""
-    if not isinstance(text, (str, bytes)):
-        raise TypeError(f"loads: TOML text (str or UTF-8 bytes), not {type(text).__name__}")
-    raw = text.encode("utf-8") if isinstance(text, str) else text
+    """A scene from TOML text (or its UTF-8 bytes); ``name`` is the file name messages give."""
+    if not isinstance(text, (str, bytes, bytearray)):
+        raise TypeError(f"loads takes the TOML text (str or bytes), not {type(text).__name__}")
+    # a lone surrogate goes through, for parse_toml to refuse as not UTF-8 with its line
+    raw = text.encode("utf-8", "surrogatepass") if isinstance(text, str) else bytes(text)
     return Problem(parse_toml(raw, name), name, raw=raw, page=page)
 
 
@@ -155,32 +151,55 @@ def from_dict(data: Mapping[str, Any], name: str = "scene.toml", page: str | Non
     """A scene from a dict shaped as the TOML (``{"driver": {"angle_deg": 30, …}, …}``)."""
     if not isinstance(data, Mapping):
         raise SceneError([("", "a scene must be a table (a dict)")], name)
-    bad = _non_string_key(data, "")
-    if bad is not None:  # TOML's keys are strings; the reader may rely on it
-        raise SceneError([bad], name)
-    return Problem(dict(data), name, page=page)
+    return Problem(data, name, page=page)
 
 
-def _non_string_key(node: Any, path: str) -> tuple[str, str] | None:
-    """(key path, reason) for the first key that is not a string, in tables and arrays alike."""
-    if isinstance(node, Mapping):
-        for k, v in node.items():
+def _plain(value: Any, path: str, source: str, within: tuple[int, ...]) -> Any:
+    """A copy of scene data as TOML has it — tables with text keys, arrays — so the reader meets
+    nothing else (a dict of a user's is copied: changing it later changes no Problem)."""
+    if isinstance(value, (Mapping, list)):
+        if id(value) in within:
+            raise SceneError([(path, "contains itself")], source)
+        within = (*within, id(value))
+    if isinstance(value, Mapping):
+        out = {}
+        for k, v in value.items():
             if not isinstance(k, str):
-                return (path or "(top)", f"key {k!r} is not a string: a scene's keys are TOML keys")
-            found = _non_string_key(v, f"{path}.{k}" if path else k)
-            if found is not None:
-                return found
-    elif isinstance(node, (list, tuple)):
-        for i, v in enumerate(node):
-            found = _non_string_key(v, f"{path}[{i}]")
-            if found is not None:
-                return found
-    return None
+                raise SceneError([(f"{path}.{k!r}" if path else repr(k), "a key must be text (a str)")], source)
+            out[k] = _plain(v, f"{path}.{k}" if path else k, source, within)
+        return out
+    if isinstance(value, list):
+        return [_plain(v, f"{path}[{i}]", source, within) for i, v in enumerate(value)]
+    return value
 
 
-def _number(name: object, value: object) -> float:
+def _pairs(measured: object) -> Sequence[tuple[object, object]]:
+    """``measured`` as (name, value) pairs: a mapping, or a sequence of pairs (None: none)."""
+    if measured is None:
+        return ()
+    if isinstance(measured, Mapping):
+        return tuple(measured.items())
+    if not isinstance(measured, (str, bytes)) and isinstance(measured, Sequence) and all(
+            isinstance(p, Sequence) and not isinstance(p, (str, bytes)) and len(p) == 2 for p in measured):
+        return tuple((p[0], p[1]) for p in measured)
+    raise TypeError('measured takes {"pc": 40.5, …} or [("pc", 40.5), …]')
+
+
+def _number(name: object, value: object, source: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise SceneError([(f"measured.{name}", "must be a finite number")], "measured")
+        raise SceneError([(f"measured.{name}", f"must be a finite number, not {value!r}")], source)
+    return float(value)
+
+
+def _precision(value: float | None, source: str) -> float | None:
+    """The drawing precision asked (None: the scene's), as ``--precision`` takes it."""
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise TypeError(f"precision is a number of mm, not {type(value).__name__}")
+    if not 0 < value <= MAX_PRECISION_MM:
+        reason = f"must be a number of mm above 0 and at most {MAX_PRECISION_MM:g}, not {value:g}"
+        raise SceneError([("precision", reason)], source)
     return float(value)
 
 
@@ -259,12 +278,17 @@ class CheckTable:
                     flag += f"  ±{percent(r.error_estimate)} ({r.basis or r.error_source})"
                 lines.append(f"{r.name:<16} {drawn:>11} {r.scale:>11.5g} {r.graphical:>16.9g} {r.exact:>16.9g}"
                              f" {r.rel_error:>9.1e}  {r.unit}{flag}")
-        if self.measured:
-            lines.append(f"{'measured':<16} {'value':>11} {'expected':>13} {'± tol':>9}  verdict")
-            for v in self.measured:
-                lines.append(f"{v.name:<16} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
-                             f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
-        return "\n".join([*lines, *self.lines])
+        return "\n".join([*lines, *self.verdict_lines(), *self.lines])
+
+    def verdict_lines(self) -> list[str]:
+        """The verdicts on the measured values as ``graphmech check`` prints them (none: no lines)."""
+        if not self.measured:
+            return []
+        lines = [f"{'measured':<16} {'value':>11} {'expected':>13} {'± tol':>9}  verdict"]
+        for v in self.measured:
+            lines.append(f"{v.name:<16} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
+                         f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
+        return lines
 
     def __str__(self) -> str:
         return self.text()

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from graphmech.api import CheckTable, Problem, load
 from graphmech.errors import GraphmechError, one_line, printable
-from graphmech.variants import Assignment, value_text
+from graphmech.variants import Assignment, value_text, variant_name
 
 if TYPE_CHECKING:
     from graphmech.render.chromium import Browser
@@ -38,16 +38,36 @@ class Job:
         return Path(self.scene).name
 
     @property
+    def name(self) -> str:
+        """The stem of the files it writes: ``crank`` or ``crank-driver.angle=30`` (its problem's name)."""
+        return variant_name(Path(self.scene).stem, self.variant)
+
+    @property
     def label(self) -> str:
         """The job as messages name it: ``crank.toml`` or ``crank.toml [driver.angle=30]``."""
+        return self._with_values(self.file)
+
+    def _with_values(self, head: str) -> str:
         if not self.variant:
-            return self.file
-        return f"{self.file} [{', '.join(f'{k}={value_text(v)}' for k, v in self.variant.items())}]"
+            return head
+        return f"{head} [{', '.join(f'{k}={value_text(v)}' for k, v in self.variant.items())}]"
 
 
 def jobs(scenes: Iterable[str], variants: Sequence[Assignment], page: str | None = None) -> list[Job]:
     """Every scene with every variant, scene by scene."""
     return [Job(s, v, page) for s in scenes for v in (variants or [{}])]
+
+
+def distinct_names(todo: Iterable[Job]) -> None:
+    """Refuse (one line) jobs that would write the same files — one scene given twice, two
+    ``crank.toml`` in two folders, values that name alike (``30`` and ``30.0``) — before any is
+    done: else the last would silently replace the others."""
+    first: dict[str, Job] = {}
+    for job in todo:
+        other = first.setdefault(job.name, job)
+        if other is not job:
+            raise GraphmechError(f"{other._with_values(other.scene)} and {job._with_values(job.scene)} would both "
+                                 f"be written as {job.name}: give each its own file name or values")
 
 
 @dataclass(frozen=True)
@@ -171,7 +191,8 @@ def run(todo: Sequence[Job], options: Options, workers: int | None = None,
 
 def variants_table(results: Sequence[Result]) -> str:
     """The check of many variants, one row per variant, one column per quantity (the graphical
-    value; ``check --json`` has everything): a teacher's answer key."""
+    value; ``check --json`` has everything): a teacher's answer key; then each variant's verdicts
+    on the measured values, if any were given."""
     tables = [(r.name, r.table) for r in results if r.table is not None]
     names: list[str] = []
     units: dict[str, str] = {}
@@ -188,6 +209,9 @@ def variants_table(results: Sequence[Result]) -> str:
         by = {row.name: row for row in t}
         cells = [f"{by[n].graphical:>{c}.6g}" if n in by else f"{'':>{c}}" for n, c in zip(names, cols)]
         lines.append("  ".join([f"{name:<{width}}", *cells]))
+    for name, t in tables:  # the verdicts on measured values, under the variant they judge
+        if t.measured:
+            lines += ["", f"{name}:", *t.verdict_lines()]
     return "\n".join(lines)
 
 
@@ -196,5 +220,5 @@ def check_documents(results: Sequence[Result]) -> list[dict[str, Any]]:
     return [{"name": r.name, **r.table.to_dict()} for r in results if r.table is not None]
 
 
-__all__ = ["POOL_FROM", "Job", "Options", "Result", "check_documents", "jobs", "make", "problem", "run",
+__all__ = ["POOL_FROM", "Job", "Options", "Result", "check_documents", "distinct_names", "jobs", "make", "problem", "run",
            "variants_table"]

@@ -137,11 +137,9 @@ def say(text: str) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
-    import numpy as np  # here, not at the top: --help and --version need no numpy (~50 ms)
-
     args.current = None  # the scene being read, for the messages
     try:
-        import numpy as np
+        import numpy as np  # here, not at the top: --help and --version need no numpy (~50 ms)
 
         # Numerical trouble is ours to detect and say in words (a warning naming the value, or a
         # refusal); numpy's and the libraries' own warnings never reach the user's stderr.
@@ -213,10 +211,15 @@ def _render(args: argparse.Namespace) -> int:
 
     variants = _variants(args)
     todo = batch.jobs(args.scenes, variants, args.page)
+    if args.output and args.directory:
+        say("graphmech: give -o FILE or -d DIR, not both")
+        return EXIT_BAD_INPUT
     if args.output and len(todo) > 1:
         many = "scene" if len(args.scenes) > 1 else "variant"
         say(f"graphmech: -o takes one figure; this makes {len(todo)} (one per {many}): use -d DIR")
         return EXIT_BAD_INPUT
+    if not args.output:
+        batch.distinct_names(todo)
     fmt, dpi = _figure_format(args)
     options = batch.Options(figure=fmt, dpi=dpi)
     out_dir = Path(args.directory or ".")
@@ -304,11 +307,12 @@ def _batch(args: argparse.Namespace) -> int:
 
     out_dir = Path(args.directory)
     if not out_dir.is_dir():
-        say(f"graphmech: {out_dir}: folder does not exist")
+        say(f"graphmech: {out_dir}: {'not a folder' if out_dir.exists() else 'folder does not exist'}")
         return EXIT_BAD_INPUT
     args.output = None
     fmt, dpi = _figure_format(args)
     todo = batch.jobs(args.scenes, _variants(args), args.page)
+    batch.distinct_names(todo)
     failed = 0
 
     def write(r: batch.Result) -> None:  # as each job is done: the others go on whatever it met

@@ -1,6 +1,7 @@
 """Writing output files safely: the one place graphmech writes files."""
 from __future__ import annotations
 
+import errno
 import os
 import tempfile
 from pathlib import Path
@@ -14,11 +15,13 @@ def write_atomic(path: str | os.PathLike[str], text: str | bytes) -> None:
     The new file gets the usual permissions (0666 less the umask), not mkstemp's 0600.
     """
     data = text.encode("utf-8") if isinstance(text, str) else text
+    given = os.fspath(path)
     path = Path(os.path.realpath(path))
+    # the errors name the path as given (not the temporary file), with the usual errno and strerror
     if path.is_dir():
-        raise OSError(f"{path}: is a folder")
-    if not path.parent.is_dir():  # said so, not as mkstemp's complaint about a temporary name
-        raise FileNotFoundError(f"{path.parent}: folder does not exist")
+        raise IsADirectoryError(errno.EISDIR, "is a folder", given)
+    if not path.parent.is_dir():
+        raise FileNotFoundError(errno.ENOENT, "folder does not exist", given)
     if path.exists() and not path.is_file():
         with open(path, "wb") as f:
             f.write(data)
@@ -26,7 +29,7 @@ def write_atomic(path: str | os.PathLike[str], text: str | bytes) -> None:
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     except OSError as e:  # the folder refuses a new file: name the file asked for, not the temporary one
-        raise OSError(e.errno, f"cannot write {path} ({e.strerror})") from None
+        raise OSError(e.errno, f"cannot write here ({e.strerror})", given) from None
     try:
         with os.fdopen(fd, "wb") as f:
             f.write(data)

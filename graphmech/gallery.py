@@ -20,6 +20,7 @@ from urllib.parse import quote
 from graphmech.accuracy import percent
 from graphmech.errors import GraphmechError, printable
 from graphmech.files import write_atomic
+from graphmech.scene import MAX_BYTES
 
 if TYPE_CHECKING:
     from graphmech.batch import Result
@@ -66,11 +67,14 @@ def entry(path: Path, r: Result) -> Entry:
     """One scene's entry from its batch result (and its file, copied beside the page)."""
     name, file = path.name[:-5], path.name
     try:
-        source: bytes | None = path.read_bytes()
+        with open(path, "rb") as fh:
+            source: bytes | None = fh.read(MAX_BYTES + 1)
     except OSError as e:
         source = None
         if r.error is None:
             r = replace(r, error=printable(f"{file}: cannot read the file ({e.strerror or e})"))
+    if source is not None and len(source) > MAX_BYTES:  # refused as a scene: no copy of it either
+        source = None
     t = r.table
     if r.error is not None or t is None or r.figure is None:
         return Entry(name, source, error=r.error or f"{file}: not made")
@@ -90,12 +94,23 @@ def scene_files(folder: str | os.PathLike[str]) -> list[Path]:
     return files
 
 
+def _shown(text: object) -> str:
+    """``text`` as the page shows it: a file name's undecodable bytes (surrogate escapes) as U+FFFD."""
+    return str(text).encode("utf-8", "surrogateescape").decode("utf-8", "replace")
+
+
 def _e(text: object) -> str:
-    return html.escape(str(text), quote=True)
+    return html.escape(_shown(text), quote=True)
 
 
 def _href(file: str) -> str:
-    return _e(quote(file))
+    """A link to ``file``, its bytes percent-encoded as the file system has them."""
+    return _e(quote(os.fsencode(file)))
+
+
+def _anchor(name: str) -> str:
+    """The id of a scene's section (the contents link to ``#`` and it, percent-encoded)."""
+    return "scene-" + _shown(name)
 
 
 def _check_table(e: Entry) -> list[str]:
@@ -134,7 +149,7 @@ def _verdict_table(e: Entry) -> list[str]:
 
 def _section(e: Entry) -> list[str]:
     heading = e.title or e.name
-    out = [f'<section id="{_e("scene-" + e.name)}">', f"<h2>{_e(heading)}</h2>"]
+    out = [f'<section id="{_e(_anchor(e.name))}">', f"<h2>{_e(heading)}</h2>"]
     links = [f'<a href="{_href(e.name + ".toml")}">{_e(e.name)}.toml</a>'] if e.source is not None else []
     if e.error is not None:
         out.append(f'<p class="failed">failed: {_e(e.error)}</p>')
@@ -168,7 +183,7 @@ def page(entries: Sequence[Entry], heading: str) -> str:
            '<nav><ul class="contents">']
     for e in entries:
         mark = ' <span class="failed">(failed)</span>' if e.error is not None else ""
-        out.append(f'<li><a href="#{_href("scene-" + e.name)}">{_e(e.name)}</a>{mark}</li>')
+        out.append(f'<li><a href="#{_e(quote(_anchor(e.name)))}">{_e(e.name)}</a>{mark}</li>')
     out.append("</ul></nav>")
     for e in entries:
         out += _section(e)
@@ -184,7 +199,8 @@ def make_gallery(folder: str | os.PathLike[str], site: str | os.PathLike[str]) -
     out = Path(site)
     if out.exists() and not out.is_dir():
         raise GraphmechError(f"{site}: is not a folder")
-    made = entries(files)  # everything made before anything is written
+    made = entries(files)  # everything made, and the page, before anything is written
+    text = page(made, f"graphmech gallery: {Path(folder).resolve().name}")
     out.mkdir(parents=True, exist_ok=True)
     for e in made:
         if e.source is not None:
@@ -192,7 +208,7 @@ def make_gallery(folder: str | os.PathLike[str], site: str | os.PathLike[str]) -
         if e.svg is not None:
             write_atomic(out / f"{e.name}.svg", e.svg)
     index = out / INDEX
-    write_atomic(index, page(made, f"graphmech gallery: {Path(folder).resolve().name}"))
+    write_atomic(index, text)
     return index, made
 
 

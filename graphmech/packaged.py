@@ -55,9 +55,9 @@ def example_names() -> list[str]:
 
 
 def _unknown(what: str, name: str, known: list[str], listing: str) -> GraphmechError:
-    close = difflib.get_close_matches(name, known, n=1, cutoff=0.5)
-    hint = f"did you mean {close[0]!r}? " if close else ""
-    return GraphmechError(f"unknown {what} {printable(name)!r}: {hint}({listing})")
+    close = difflib.get_close_matches(name.casefold(), known, n=1, cutoff=0.5)
+    hint = f"; did you mean {close[0]!r}?" if close else ""
+    return GraphmechError(f"unknown {what} {printable(name)!r}{hint} ({listing})")
 
 
 def example(name: str) -> Traversable:

@@ -24,6 +24,7 @@ A value is a TOML value (``30``, ``1.5e-3``, ``[0, 90]``, ``"zh"``); a bare word
 from __future__ import annotations
 
 import copy
+import hashlib
 import itertools
 import math
 import re
@@ -38,6 +39,9 @@ from graphmech.problems.reader import did_you_mean, say
 _STEP = re.compile(r"([^.\[\]]+)((?:\[\d+\])*)")
 #: At most this many variants from one command (a product of --set lists grows fast).
 MAX_VARIANTS = 10_000
+#: bytes: the longest name :func:`variant_name` gives. A file system holds 255 bytes a name, and
+#: the name gets an extension (``.json``) and, while it is written, a temporary file's affixes.
+MAX_NAME_BYTES = 200
 
 Assignment = dict[str, Any]
 
@@ -181,14 +185,29 @@ def value_text(value: Any) -> str:
         return repr(value)
     if isinstance(value, list):
         return "[" + ",".join(value_text(v) for v in value) + "]"
+    if isinstance(value, dict):  # an inline table, as TOML writes it
+        return "{" + ",".join(f"{k}={value_text(v)}" for k, v in value.items()) + "}"
     return str(value)
 
 
 def variant_name(stem: str, assignment: Assignment) -> str:
-    """``<stem>-<key>=<value>[-…]``; characters a file name cannot hold become ``_``."""
+    """``<stem>-<key>=<value>[-…]``; characters a file name cannot hold become ``_``. A name longer
+    than :data:`MAX_NAME_BYTES` is cut there and ends with a hash of the whole, so it can still
+    be written and two long names stay two."""
     name = stem + "".join(f"-{k}={value_text(v)}" for k, v in assignment.items())
-    return re.sub(r'[\\/:*?"<>|\x00-\x1f\s]', "_", name)
+    name = re.sub(r'[\\/:*?"<>|\x00-\x1f\s]', "_", name)
+    raw = name.encode("utf-8", "surrogatepass")  # a lone surrogate (a file name's undecodable byte) counts 3
+    if len(raw) <= MAX_NAME_BYTES:
+        return name
+    digest = "~" + hashlib.sha256(raw).hexdigest()[:10]
+    head, size = "", len(digest)
+    for ch in name:  # whole characters only: a name cut inside one would not be UTF-8
+        size += len(ch.encode("utf-8", "surrogatepass"))
+        if size > MAX_NAME_BYTES:
+            break
+        head += ch
+    return head + digest
 
 
-__all__ = ["MAX_VARIANTS", "combinations", "parse_assignment", "parse_value", "replace", "value_text",
+__all__ = ["MAX_NAME_BYTES", "MAX_VARIANTS", "combinations", "parse_assignment", "parse_value", "replace", "value_text",
            "variant_name"]

@@ -51,11 +51,34 @@ def test_measured_values_are_judged_as_on_the_command_line():
     for bad in ("fast", float("nan"), float("inf"), None, True):
         with pytest.raises(SceneError, match="measured.v_E: must be a finite number"):
             p.check(measured={"v_E": bad})
-    with pytest.raises(TypeError, match="measured: a dict"):
+    with pytest.raises(TypeError, match="measured takes"):
         p.check(measured=["pe"])
     for precision in (-1, 0, float("nan"), 11):
-        with pytest.raises(SceneError, match="precision: a number of mm above 0 and at most 10"):
+        with pytest.raises(SceneError, match="precision: must be a number of mm above 0 and at most 10"):
             p.check(precision=precision)
+
+
+@pytest.mark.parametrize("value", [float("nan"), float("inf")])
+def test_a_measured_value_that_is_no_finite_number_is_refused(value):
+    """A NaN was judged (ok=False) and then to_json raised ValueError."""
+    with pytest.raises(SceneError) as e:
+        gm.load(BLOCK).check(measured={"pe": value})
+    assert str(e.value) == f"kin.oscillating_block.toml: measured.pe: must be a finite number, not {value!r}"
+
+
+@pytest.mark.parametrize("measured", ["pe=34", [34.0], [("pe",)], 5])
+def test_measured_in_another_shape_is_a_type_error_saying_the_shape(measured):
+    with pytest.raises(TypeError, match=r'measured takes \{"pc": 40.5, …\} or \[\("pc", 40.5\), …\]'):
+        gm.load(BLOCK).check(measured=measured)
+
+
+@pytest.mark.parametrize("precision", [0, -1, float("nan"), 11])
+def test_a_precision_the_command_would_refuse_is_refused(precision):
+    """A negative or NaN tolerance was used as given (every verdict 'out of tolerance')."""
+    with pytest.raises(SceneError, match="precision: must be a number of mm above 0 and at most 10"):
+        gm.load(BLOCK).check(measured={"pe": 34.4}, precision=precision)
+    with pytest.raises(TypeError, match="precision is a number of mm"):
+        gm.load(BLOCK).check(precision="1")  # type: ignore[arg-type]
 
 
 def test_to_pandas_is_a_data_frame_with_the_row_fields():
@@ -89,6 +112,39 @@ def test_loads_and_from_dict_read_as_the_file_does():
     c = gm.from_dict(tomllib.loads(text), "block.toml")
     assert c.check().to_dict() == b.check().to_dict() and c.name == "block" and c.kind == "linkage"
     assert repr(c) == "<graphmech.Problem 'block': linkage, " + repr(b.title) + ">"
+
+
+def test_loads_takes_bytes_and_refuses_what_is_no_text():
+    text = BLOCK.read_text(encoding="utf-8")
+    assert gm.loads(text.encode("utf-8")).check().to_dict() == gm.loads(text).check().to_dict()
+    with pytest.raises(TypeError, match="loads takes the TOML text"):
+        gm.loads(None)  # type: ignore[arg-type]
+    with pytest.raises(SceneError, match="line 2: not UTF-8 text"):  # a lone surrogate: not an encoder's crash
+        gm.loads("# x\ntitle = '\ud800'\n")
+
+
+def test_from_dict_refuses_keys_that_are_no_text_and_data_that_contains_itself():
+    """Both reached the scene reader and crashed there (AttributeError)."""
+    data = gm.load(BLOCK).data
+    with pytest.raises(SceneError, match=r"^scene.toml: driver.5: a key must be text"):
+        gm.from_dict({**data, "driver": {**data["driver"], 5: 1}})
+    loop: dict = {**data, "point": [dict(data["point"][0])]}
+    loop["point"][0]["self"] = loop["point"]
+    with pytest.raises(SceneError, match=r"^scene.toml: point\[0\].self: contains itself"):
+        gm.from_dict(loop)
+
+
+def test_from_dict_copies_the_dict_it_is_given():
+    data = {k: (dict(v) if isinstance(v, dict) else v) for k, v in gm.load(BLOCK).data.items()}
+    p = gm.from_dict(data)
+    data["driver"]["angle"] = 60
+    assert p.data["driver"]["angle"] == 45 and p.replace({"driver.omega": 10}).data["driver"]["angle"] == 45
+
+
+@pytest.mark.parametrize("changes", [None, "driver.angle=60", [("driver.angle", 60)], {1: 60}])
+def test_replace_takes_a_mapping_of_key_paths(changes):
+    with pytest.raises(TypeError, match="replace takes a mapping of key paths to values"):
+        gm.load(BLOCK).replace(changes)
 
 
 def test_bad_scenes_raise_the_one_line_message():
@@ -142,6 +198,16 @@ def test_steps_is_the_construction_protocol_with_the_tables_numbers():
     assert gm.load(BLOCK).replace({"driver.angle": 60}).steps()[0].endswith("φ₁ = 60°")
 
 
+def test_the_drawing_saved_where_it_cannot_be_names_the_path_given(tmp_path):
+    drawing = gm.load(BLOCK).render()
+    with pytest.raises(FileNotFoundError) as e:  # it named the temporary file, ".x.svg.k2j4.tmp"
+        drawing.save(tmp_path / "none" / "x.svg")
+    assert (e.value.filename, e.value.strerror) == (str(tmp_path / "none" / "x.svg"), "folder does not exist")
+    with pytest.raises(IsADirectoryError):
+        drawing.save(tmp_path)
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_the_drawing_saves_as_pdf_and_png_by_extension(tmp_path):
     import os
 
@@ -168,17 +234,17 @@ def test_the_drawing_saves_as_pdf_and_png_by_extension(tmp_path):
 
 def test_wrong_python_types_are_told_plainly(tmp_path):
     p = gm.load(BLOCK)
-    with pytest.raises(TypeError, match="loads: TOML text"):
+    with pytest.raises(TypeError, match="loads takes the TOML text"):
         gm.loads({"title": "x"})  # type: ignore[arg-type]
     assert gm.loads(BLOCK.read_bytes(), "kin.oscillating_block.toml").render().svg == p.render().svg
-    with pytest.raises(SceneError, match=r"^scene.toml: driver: key 1 is not a string"):
+    with pytest.raises(SceneError, match=r"^scene.toml: driver.1: a key must be text"):
         gm.from_dict({"driver": {1: 2}})
-    with pytest.raises(SceneError, match=r"dyad\[0\]: key 2 is not a string"):
+    with pytest.raises(SceneError, match=r"dyad\[0\].2: a key must be text"):
         gm.from_dict({"dyad": [{2: 3}]})
     for bad in ([("driver.angle", 3)], {3: 4}):
-        with pytest.raises(TypeError, match="replace: a dict"):
+        with pytest.raises(TypeError, match="replace takes a mapping"):
             p.replace(bad)  # type: ignore[arg-type]
     assert p.replace({}).name == p.name
-    with pytest.raises(FileNotFoundError, match="nowhere: folder does not exist"):
+    with pytest.raises(FileNotFoundError, match="folder does not exist: .*nowhere/x.svg"):
         p.render().save(tmp_path / "nowhere" / "x.svg")
     assert list(tmp_path.iterdir()) == []

@@ -82,6 +82,18 @@ def test_check_set_prints_one_row_per_variant():
     assert docs[1]["quantities"] == gm.load(BLOCK).replace({"driver.angle": 45}).check().to_dict()["quantities"]
 
 
+def test_check_set_prints_each_variants_verdicts_on_the_measured_values():
+    """Exit 1 says a measured value is out: the text says which, in which variant."""
+    code, out, _ = run_cli("check", str(BLOCK), "--set", "driver.angle=30,45", "--measured", "pe=3", "-q")
+    expected = [gm.load(BLOCK).replace({"driver.angle": a}).check({"pe": 3}).measured[0].expected for a in (30, 45)]
+    blocks = out.split("\n\n")
+    assert code == 1 and len(blocks) == 3 and len(blocks[0].splitlines()) == 3
+    for block, angle, value in zip(blocks[1:], (30, 45), expected):
+        head, columns, verdict = block.splitlines()
+        assert head == f"kin.oscillating_block-driver.angle={angle}:" and columns.split()[0] == "measured"
+        assert verdict.split()[:3] == ["pe", "3", f"{value:.6g}"] and "OUT OF TOLERANCE (mm)" in verdict
+
+
 def test_check_set_with_a_failing_variant_reports_it_and_exits_2():
     code, out, err = run_cli("check", str(CRANK), "--set", "driver.omega=10,fast", "-q")
     assert code == 2 and len(out.splitlines()) == 2  # the header and the one variant that could be made
@@ -106,6 +118,40 @@ def test_batch_writes_the_good_jobs_and_reports_each_failure(tmp_path):
     assert doc["variant"] == {"driver.angle": 50}
     assert doc["quantities"] == gm.load(CRANK).replace({"driver.angle": 50}).check().to_dict()["quantities"]
     assert len(out.split()) == 4
+
+
+@pytest.mark.parametrize("command", ["render", "batch"])
+def test_jobs_that_would_write_the_same_files_are_refused_before_anything_is_made(tmp_path, command):
+    """Two crank.toml in two folders, one scene twice, 30 and 30.0: else the last silently replaced the others."""
+    out_dir = tmp_path / "out"
+    out_dir.mkdir()
+    for folder in ("a", "b"):
+        (tmp_path / folder).mkdir()
+        (tmp_path / folder / "s.toml").write_bytes(BLOCK.read_bytes())
+    a, b = str(tmp_path / "a" / "s.toml"), str(tmp_path / "b" / "s.toml")
+    for args, words in [([a, b], f"{a} and {b} would both be written as s: "),
+                        ([a, a], f"{a} and {a} would both be written as s: "),
+                        ([a, "--set", "driver.angle=30,30.0"],
+                         f"{a} [driver.angle=30] and {a} [driver.angle=30] would both be written as s-driver.angle=30: ")]:
+        code, out, err = run_cli(command, *args, "-d", str(out_dir))
+        assert code == 2 and out == "" and err.startswith("graphmech: " + words) and err.count("\n") == 1, err
+        assert list(out_dir.iterdir()) == []
+
+
+def test_render_refuses_an_output_file_and_a_folder_together(tmp_path):
+    code, out, err = run_cli("render", str(BLOCK), "-o", str(tmp_path / "x.svg"), "-d", str(tmp_path))
+    assert (code, out, err) == (2, "", "graphmech: give -o FILE or -d DIR, not both\n")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_variant_whose_name_is_too_long_for_a_file_is_written_under_a_shorter_one(tmp_path):
+    """A 150-character Chinese title is 450 bytes: as a file name it could not be written (a batch
+    once wrote its figure and failed on its check's .json)."""
+    code, out, err = run_cli("batch", str(BLOCK), "--set", 'title="' + "长" * 150 + '"', "-d", str(tmp_path), "-q")
+    made = sorted(p.name for p in tmp_path.iterdir())
+    assert code == 0 and err == "" and len(made) == 2 and out.split() == [str(tmp_path / made[1])]
+    assert made[0].endswith(".json") and made[1] == made[0][:-5] + ".svg"
+    assert made[0].startswith("kin.oscillating_block-title=长长") and len(made[0].encode()) <= 200 + len(".json")
 
 
 def test_batch_refuses_a_missing_folder_and_bad_job_counts(tmp_path):

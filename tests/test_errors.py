@@ -113,8 +113,9 @@ ALLOWED_ELSEWHERE = {
     ("graphmech/drawing/diagrams.py", "TypeError"): 1,
     ("graphmech/drawing/primitives.py", "ValueError"): 2,
     # the file system's own refusal: the command maps OSError to exit 2 with the path
-    ("graphmech/files.py", "OSError"): 2,  # a folder given as the file; a folder that refuses a new file
+    ("graphmech/files.py", "OSError"): 1,  # a folder that refuses a new file (named as given, not the temporary file)
     ("graphmech/files.py", "FileNotFoundError"): 1,  # the folder to write in is missing: an OSError the command reports
+    ("graphmech/files.py", "IsADirectoryError"): 1,  # a folder given as the file to write
     # a motion law validate() has rejected first
     ("graphmech/mechanisms/motion.py", "AssertionError"): 1,
     # a bare `raise ValueError` caught on the next line (a name's "@" part is not a number)
@@ -137,7 +138,7 @@ ALLOWED_ELSEWHERE = {
     # PEP 562: a module's __getattr__ answers a missing name with AttributeError (hasattr relies on it)
     ("graphmech/__init__.py", "AttributeError"): 1,
     # the Python API given a plainly wrong Python type (a list for a dict): Python's own convention
-    ("graphmech/api.py", "TypeError"): 3,
+    ("graphmech/api.py", "TypeError"): 4,
 }
 
 
@@ -163,7 +164,7 @@ def test_the_methods_and_the_exact_solutions_raise_no_bare_builtin():
 def test_elsewhere_only_the_named_programming_errors_stay_builtin():
     over = {k: n for k, n in bare_builtin_raises().items() if n > ALLOWED_ELSEWHERE.get(k, 0)}
     assert not over, f"a new bare built-in raise (use graphmech.errors, or name it here with why): {over}"
-    assert sum(ALLOWED_ELSEWHERE.values()) == 41
+    assert sum(ALLOWED_ELSEWHERE.values()) == 42
 
 
 # ---------------------------------------------------------------------------- through the command

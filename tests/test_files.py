@@ -53,6 +53,15 @@ def test_a_folder_is_refused_and_nothing_left_behind(tmp_path):
     assert leftovers(tmp_path) == []
 
 
+def test_a_missing_folder_is_named_as_given_not_the_temporary_file(tmp_path):
+    with pytest.raises(FileNotFoundError) as e:
+        write_atomic(tmp_path / "none" / "out.svg", "x")
+    assert (e.value.filename, e.value.strerror) == (str(tmp_path / "none" / "out.svg"), "folder does not exist")
+    with pytest.raises(IsADirectoryError) as d:
+        write_atomic(tmp_path, "x")
+    assert (d.value.filename, d.value.strerror) == (str(tmp_path), "is a folder")
+
+
 def test_a_failed_write_leaves_the_old_file_and_no_temporary(tmp_path, monkeypatch):
     path = tmp_path / "out.svg"
     path.write_text("old")
@@ -93,6 +102,6 @@ def test_a_folder_that_refuses_new_files_is_named_with_the_file_asked_for(tmp_pa
         target = str(locked / "x.svg")
     with pytest.raises(OSError) as e:
         write_atomic(target, "x")
-    assert f"cannot write {target}" in str(e.value) and ".tmp" not in str(e.value)
+    assert e.value.filename == target and "cannot write here" in str(e.value) and ".tmp" not in str(e.value)
     with pytest.raises(FileNotFoundError, match="folder does not exist"):
         write_atomic(tmp_path / "none" / "x.svg", "x")

@@ -167,6 +167,31 @@ def test_no_scenes_or_no_folder_is_refused_and_nothing_is_written(tmp_path):
     assert not (tmp_path / "site").exists()
 
 
+def test_a_file_name_that_is_not_utf8_is_shown_and_linked_by_its_bytes(tmp_path):
+    """It was an internal error (exit 3) after the figures were written, with no page."""
+    folder = tmp_path / "scenes"
+    folder.mkdir()
+    name = os.fsdecode(b"x\xff")
+    shutil.copy2(SCENES / "bal.disc_static.toml", folder / f"{name}.toml")
+    code, out, err = run_cli("gallery", str(folder), "-d", str(tmp_path / "site"))
+    assert (code, err) == (0, "") and out.strip() == str(tmp_path / "site" / "index.html")
+    parsed = Page()
+    parsed.feed((tmp_path / "site" / "index.html").read_text(encoding="utf-8"))
+    assert parsed.images == ["x%FF.svg"] and {"x%FF.toml", "x%FF.svg", "#scene-x%EF%BF%BD"} <= set(parsed.links)
+    assert (tmp_path / "site" / f"{name}.svg").is_file()
+
+
+def test_a_scene_over_a_mebibyte_is_refused_and_not_copied(tmp_path):
+    folder = tmp_path / "scenes"
+    folder.mkdir()
+    (folder / "big.toml").write_bytes(b'title = "x"\n' + b"#" * (1 << 20))
+    shutil.copy2(SCENES / "bal.disc_static.toml", folder)
+    code, _, err = run_cli("gallery", str(folder), "-d", str(tmp_path / "site"))
+    assert code == 2 and err.startswith("graphmech gallery: big.toml: file is larger than 1 MiB")
+    assert sorted(p.name for p in (tmp_path / "site").iterdir()) == ["bal.disc_static.svg", "bal.disc_static.toml",
+                                                                     "index.html"]
+
+
 # ---------------------------------------------------------------------------- in the browser
 
 IMAGES_JS = """(async function () {

@@ -118,6 +118,7 @@ def test_an_unknown_example_is_refused_with_the_closest_name(tmp_path):
     assert "did you mean 'linkage.slider_crank_offset'?" in err
     err = assert_refused(run_cli("examples", "zzzz\x1b[31m"), "graphmech", "unknown example")
     assert "did you mean" not in err and "\x1b" not in err
+    assert err.endswith("' (graphmech examples lists them)")  # not "…'; (graphmech …"
     assert list(tmp_path.iterdir()) == []
 
 
@@ -180,6 +181,7 @@ def test_new_prints_to_stdout_and_never_overwrites(tmp_path):
 def test_an_unknown_template_is_refused_with_the_closest_kind():
     err = assert_refused(run_cli("new", "fly"), "graphmech", "unknown template")
     assert "did you mean 'flywheel'?" in err and "choose from linkage, cam, flywheel, forces" in err
+    err = assert_refused(run_cli("new", "LINKAGE"), "graphmech", "unknown template 'LINKAGE'; did you mean 'linkage'?")
 
 
 def test_the_templates_on_disk_are_the_kinds_listed():

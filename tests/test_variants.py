@@ -4,7 +4,7 @@ from __future__ import annotations
 import pytest
 
 from graphmech.errors import SceneError
-from graphmech.variants import MAX_VARIANTS, combinations, parse_assignment, replace, value_text, variant_name
+from graphmech.variants import MAX_NAME_BYTES, MAX_VARIANTS, combinations, parse_assignment, replace, value_text, variant_name
 
 DATA = {"title": "t", "driver": {"angle_deg": [0, 90], "omega": 10, "omega_rpm": 1},
         "dyad": [{"lengths": [40, 50], "guide": {"angle": 0}}], "page": {"notation": "en"}}
@@ -75,3 +75,14 @@ def test_variant_names_are_file_names():
     assert value_text([0, 90.0]) == "[0,90]"
     assert variant_name("s", {"title": "a/b c"}) == "s-title=a_b_c"
     assert variant_name("s", {}) == "s"
+    assert value_text({"name": "E", "along": 50.0}) == "{name=E,along=50}"  # an inline table, not Python's repr
+
+
+def test_a_long_variant_name_is_cut_whole_characters_and_stays_distinct():
+    """A title of 100 Chinese characters is 300 bytes: as a file name it could not be written."""
+    long_a, long_b = variant_name("s", {"title": "长" * 100}), variant_name("s", {"title": "长" * 99 + "短"})
+    for name in (long_a, long_b):
+        assert len(name.encode("utf-8")) <= MAX_NAME_BYTES and name.startswith("s-title=长长")
+        name.encode("utf-8")  # whole characters: still UTF-8
+    assert long_a != long_b
+    assert variant_name("s", {"title": "x" * 180}) == "s-title=" + "x" * 180  # short enough: as it was

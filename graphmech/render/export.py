@@ -75,14 +75,15 @@ def format_of(path: str | Path, fmt: str | None = None) -> str:
     an extension that is not one of :data:`FORMATS`, or one that disagrees with ``fmt``, is
     refused with a one-line :class:`GraphmechError`.
 
-    >>> format_of("fig.PDF"), format_of("fig.png", "png"), format_of("fig"), format_of("fig", "png")
-    ('pdf', 'png', 'svg', 'png')
+    >>> format_of("fig.PDF"), format_of("fig.png", "png"), format_of("fig"), format_of("fig", "png"), format_of(".png")
+    ('pdf', 'png', 'svg', 'png', 'png')
     """
     name = Path(path).name
     wanted = None if fmt is None else fmt.lower()
     if wanted is not None and wanted not in FORMATS:
         raise GraphmechError(f"unknown format {fmt!r}: choose from {', '.join(FORMATS)}")
-    suffix = Path(path).suffix.lower().removeprefix(".")
+    # the text after the name's last dot, as a user reads it: ".png" is a PNG (pathlib sees no suffix)
+    suffix = name.rpartition(".")[2].lower() if "." in name else ""
     if not suffix:
         return wanted or "svg"
     if suffix not in FORMATS:

@@ -74,6 +74,7 @@ def png_image(data: bytes) -> Image.Image:
 @pytest.mark.parametrize("path, fmt, kind", [
     ("a.svg", None, "svg"), ("a.PDF", None, "pdf"), ("dir.v2/a.Png", None, "png"), ("a.pdf", "pdf", "pdf"),
     ("a.png", "PNG", "png"), ("a", None, "svg"), ("a", "pdf", "pdf"), ("", "png", "png"),
+    (".png", None, "png"), ("dir/.PDF", None, "pdf"),  # a name that is all extension: never SVG in it
 ])
 def test_the_format_is_the_extension_or_the_one_asked(path, fmt, kind):
     assert format_of(path, fmt) == kind
@@ -84,6 +85,7 @@ def test_the_format_is_the_extension_or_the_one_asked(path, fmt, kind):
     ("out.svgz", "svg", "out.svgz: unknown format .svgz"),
     ("out.pdf", "png", "out.pdf: the extension .pdf is not the format png"),
     ("out.png", "gif", "unknown format 'gif': choose from svg, pdf, png"),
+    (".png", "svg", ".png: the extension .png is not the format svg"),
 ])
 def test_an_unknown_or_mismatched_format_is_refused_in_one_line(path, fmt, words):
     with pytest.raises(GraphmechError) as e:
@@ -317,6 +319,7 @@ def test_render_into_a_folder_in_the_format_asked(tmp_path, browser):
 @pytest.mark.parametrize("args, words", [
     (["-o", "{}/out.jpg"], "out.jpg: unknown format .jpg: write .svg, .pdf or .png (or --format)"),
     (["-o", "{}/out.png", "--format", "svg"], "out.png: the extension .png is not the format svg"),
+    (["-o", "{}/.png", "--format", "svg"], ".png: the extension .png is not the format svg"),
     (["-o", "{}/out.pdf", "--format", "tiff"], "unknown format 'tiff'"),
     (["-d", "{}", "--format", "jpg"], "unknown format 'jpg'"),
     (["-o", "{}/out.png", "--dpi", "0"], "--dpi must be a number from"),
