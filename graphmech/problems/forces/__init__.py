@@ -38,6 +38,12 @@ def _extras(an: ForceAnalysis) -> dict[str, Any]:
     return {"friction": an.friction_summary()} if an.scene.problem.model.has_friction else {}
 
 
+def _steps(scene: Scene[ForceScene]) -> list[str]:
+    from graphmech.problems.forces.steps import force_steps
+
+    return force_steps(scene)
+
+
 def _bench(quick: bool) -> Bench:
     from graphmech.problems.forces.bench import bench
 
@@ -54,4 +60,4 @@ def _mixture(data: Mapping[str, Any]) -> tuple[str, str] | None:
 
 
 KIND = Kind("forces", ("forces",), _read, _analyse, lambda an, extra: an.verdicts, _sheet, _extras,
-            bench=_bench, mixture=_mixture)
+            bench=_bench, mixture=_mixture, steps=_steps)
