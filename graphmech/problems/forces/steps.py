@@ -205,7 +205,7 @@ def protocol(fa: ForceAnalysis) -> list[str]:
     if not sol.groups:  # the check keeps the polygons only when it draws them: the same round, kept
         sol = _with_groups(fa)
     out: list[str] = []
-    kin = _kinematic_targets(fa)
+    kin = _kinematic_targets(fa, _Forces(fa, sol, 0).groups_needed() > 0 if fa.labels else False)
     b = fa.build
     # the polygons the force analysis reads its accelerations from, evaluated as it evaluates them
     # (with the measurements the protocol states)
@@ -232,9 +232,10 @@ def _with_groups(fa: ForceAnalysis) -> KinetostaticSolution:
     return kinetostatics(fa.build.linkage, fa.scene.problem.model, fa.kin, polygons=True)
 
 
-def _kinematic_targets(fa: ForceAnalysis) -> tuple[str, ...]:
+def _kinematic_targets(fa: ForceAnalysis, groups: bool) -> tuple[str, ...]:
     """What the loads need from the polygons (a_S of each mass, α of each link with J_S; the
-    velocities the lever and the friction's senses read), and what the scene itself asks."""
+    velocities the lever and the friction's senses read), what the scene itself asks, and, when
+    groups are solved, the dyads' sides on the diagram (the arms of the moments about C)."""
     b, model = fa.build, fa.scene.problem.model
     linkage = b.linkage
     fixed = set(linkage.frame_points)
@@ -251,6 +252,11 @@ def _kinematic_targets(fa: ForceAnalysis) -> tuple[str, ...]:
         out += [f"v_{lm.point}" for lm in model.masses if lm.mass > 0 and lm.point not in fixed]
     if model.has_friction:
         out += [f"omega_{link}" for link in b.omega if link != linkage.driver.link]
+    if groups:
+        for y in linkage.dyads:
+            ends = (y.p, y.q) if isinstance(y, (RRR, RPR)) else (y.p,)
+            out += [f"l_{P}{y.c}" for P in ends if not isinstance(y, RPR)] + (
+                [f"l_{y.p}{y.q}"] if isinstance(y, RPR) else [])
     return tuple(n for n in dict.fromkeys(out) if split_name(n)[0] in b.quantities)
 
 
