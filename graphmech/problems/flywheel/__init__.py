@@ -59,16 +59,16 @@ def _lines(an: FlywheelAnalysis) -> list[str]:
     return [f"stopping time {br['t_stop']:.6g} s{verdict}"]
 
 
-def _bench(quick: bool) -> Bench:
-    from graphmech.problems.flywheel.bench import bench
-
-    return bench(quick)
-
-
 def _steps(scene: Scene[FlywheelScene]) -> list[str]:
     from graphmech.problems.flywheel.steps import flywheel_steps
 
     return flywheel_steps(scene)
+
+
+def _bench(quick: bool) -> Bench:
+    from graphmech.problems.flywheel.bench import bench
+
+    return bench(quick)
 
 
 KIND = Kind("flywheel", ("flywheel",), _read, _analyse, _judge, _sheet, _extras, _lines, bench=_bench, steps=_steps)

@@ -404,7 +404,7 @@ def _rel(g: float, e: float, scale: float) -> float:
 def _row(an: FlywheelAnalysis, name: str) -> Row:
     base, at = split(name)
     unit = QUANTITIES[base][0]
-    g, e, drawn, scale, ill = _values(an, base, None if at is None else int(at) - 1)
+    g, e, drawn, scale, ill = quantity_values(an, base, None if at is None else int(at) - 1)
     rel = _rel(g, e, scale)
     if base in POSITION_ANGLES:  # where in the cycle: 0° and 353.47° are 6.53° apart, not 353.47°
         cycle = math.degrees(an.machine.cycle)
@@ -415,7 +415,7 @@ def _row(an: FlywheelAnalysis, name: str) -> Row:
     return Row(name, unit, drawn, scale, g, e, rel, ill)
 
 
-def _values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, float, float | None, float, bool]:
+def quantity_values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[float, float, float | None, float, bool]:
     """(graphical, exact, drawn mm or None, μ, ill-conditioned) of one quantity."""
     d, m = an.design, an.machine
     wm, delta = m.omega_m, m.delta
@@ -548,13 +548,13 @@ def _estimate(an: FlywheelAnalysis, needs: set[str]) -> None:
             err = abs(_wrapped(an, base, r.graphical - fine)) * scale_down
             an.rows[k] = r.estimated(DISCRETISATION, relative(err, den), f"{an.motion.solver} rtol {an.motion.rtol:g}")
             continue
-        v2 = _values(at(2), base, None if i is None else 2 * i)[0]
+        v2 = quantity_values(at(2), base, None if i is None else 2 * i)[0]
         if base in ("phi_DeltaT_max", "phi_DeltaT_min"):
             top = base.endswith("max")
             err = abs(_wrapped(an, base, r.graphical - _refined_angle(at(2), top)))
             an.rows[k] = r.estimated(READING, relative(err, den), f"{basis}, read at a position")
             continue
-        v4 = _values(at(4), base, None if i is None else 4 * i)[0]
+        v4 = quantity_values(at(4), base, None if i is None else 4 * i)[0]
         err = estimate_from_three(r.graphical, v2, v4)
         if base in SAMPLED_EXTREMES:  # the extreme between the positions, as N and 2N place it
             err = max(err, abs(_between_positions(an, base)),
@@ -667,11 +667,11 @@ def judge_flywheel(an: FlywheelAnalysis, precision_mm: float | None = None) -> l
             out.append(Verdict(name, value, kl, prec, abs(value - kl) <= prec, "mm"))
             continue
         base, at = split(name)
-        g, _e, drawn, scale, _ = _values(an, base, None if at is None else int(at) - 1)
+        g, _e, drawn, scale, _ = quantity_values(an, base, None if at is None else int(at) - 1)
         unit = QUANTITIES[base][0]
         tol = prec * abs(scale) if drawn is not None else max(abs(g) * 1e-3, EPS)
         out.append(Verdict(name, value, g, tol, abs(value - g) <= tol + 1e-12 * abs(g), unit))
     return out
 
 
-__all__ = ["FlywheelAnalysis", "analyse_flywheel", "judge_flywheel", "QUANTITIES", "requested"]
+__all__ = ["FlywheelAnalysis", "analyse_flywheel", "judge_flywheel", "QUANTITIES", "quantity_values", "requested"]

@@ -38,16 +38,16 @@ def _extras(an: ForceAnalysis) -> dict[str, Any]:
     return {"friction": an.friction_summary()} if an.scene.problem.model.has_friction else {}
 
 
+def _steps(scene: Scene[ForceScene]) -> list[str]:
+    from graphmech.problems.forces.steps import force_steps
+
+    return force_steps(scene)
+
+
 def _bench(quick: bool) -> Bench:
     from graphmech.problems.forces.bench import bench
 
     return bench(quick)
-
-
-def _steps(scene: Scene[ForceScene]) -> list[str]:
-    from graphmech.problems.forces.steps import forces_steps
-
-    return forces_steps(scene)
 
 
 def _mixture(data: Mapping[str, Any]) -> tuple[str, str] | None:

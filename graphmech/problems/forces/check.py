@@ -127,7 +127,7 @@ def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, fl
     with np.errstate(all="ignore"):
         fa = _analyse_forces(scene, extra_measured, {})
         drawn = any(p in FORCE_PANELS for p in scene.show) and len(positions_of(scene).values) == 1
-        if not (drawn and _ok(fa, 0)):
+        if not (drawn and solved(fa, 0)):
             return fa
         if (largest := _largest_force(fa)) > FORCE_LIMIT_N:  # the table is exact still; the drawing is not
             raise SceneError([("forces", f"the forces reach {largest:.3g} N, more than {FORCE_LIMIT_N:g} N: their "
@@ -239,7 +239,7 @@ def _analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, f
     return fa
 
 
-def _ok(fa: ForceAnalysis, i: int) -> bool:
+def solved(fa: ForceAnalysis, i: int) -> bool:
     return bool(fa.kin.valid[i] and fa.exact.valid[i] and fa.kinematics.solutions[i] is not None)
 
 
@@ -269,9 +269,9 @@ def _asked_forces(fa: ForceAnalysis) -> list[tuple[str, float]]:
         if not is_force_name(base) or _known(fa, base) is not None or (at is not None and at not in fa.labels):
             continue
         for i in ([fa.labels.index(at)] if at is not None else range(len(fa.labels))):
-            if not _ok(fa, i):
+            if not solved(fa, i):
                 continue
-            drawn, _, g, _, unit = _value(fa, base, i)
+            drawn, _, g, _, unit = force_value(fa, base, i)
             if unit == "N" and drawn is not None and math.isfinite(g) and abs(g) > 1e-9 * size:
                 out.append((f"{base}@{fa.labels[i]}" if multi else base, abs(float(g))))
     return out
@@ -346,7 +346,7 @@ def _conditioning(fa: ForceAnalysis) -> None:
             fa.warnings.append(f"{where}: the equilibrium equations are singular (condition number "
                                f"{float(fa.exact.condition[i]):.2g}): the transmission angle is 0° and the "
                                "reactions are unbounded; no force values here")
-        if not _ok(fa, i):
+        if not solved(fa, i):
             continue
         for name, sin in fa.solution.closing.items():
             s = float(sin[i])
@@ -363,12 +363,12 @@ def _characteristic_force(fa: ForceAnalysis) -> float:
     """The scene's force size: its largest reaction over every position solved (N). A relative
     error divides by max(|exact|, this) — per scene, as the kinematic rows do: a position where
     every load vanishes has only round-off to compare (4e-13 N against 4.5e-13 N read 6 %)."""
-    ok = np.array([_ok(fa, i) for i in range(len(fa.labels))], dtype=bool)
+    ok = np.array([solved(fa, i) for i in range(len(fa.labels))], dtype=bool)
     out = max((float(np.max(np.abs(r[ok]), initial=0.0)) for r in fa.solution.reactions.values()), default=0.0)
     return max(out, 1e-300)
 
 
-def _value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, float, float, str]:
+def force_value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, float, float, float, str]:
     """(drawn mm or None, scale, graphical, exact, unit) of a force quantity at position i."""
     m = FORCE_NAME.fullmatch(base)
     assert m is not None
@@ -517,9 +517,9 @@ def _rows(fa: ForceAnalysis) -> None:
             problems.append((f"find[{k}]", f"no position {at!r} (positions: {', '.join(fa.labels)})"))
             continue
         for i in idx:
-            if not _ok(fa, i):
+            if not solved(fa, i):
                 continue
-            drawn, scale, g, e, unit = _value(fa, base, i)
+            drawn, scale, g, e, unit = force_value(fa, base, i)
             ch = force_size
             if unit == "N·m":
                 ch *= fa.kinematics.size
@@ -535,8 +535,8 @@ def _rows(fa: ForceAnalysis) -> None:
             row = Row(f"{base}@{fa.labels[i]}" if multi else base, unit, None if drawn is None else float(drawn),
                       float(scale), g, e, err, bool(fa.ill.get(i, False)))
             if before is not None and earlier is not None:  # friction stopped at its tolerance: how close?
-                estimate = relative(iteration_error(g, float(_value(before, base, i)[2]),
-                                                    float(_value(earlier, base, i)[2])), max(abs(e), ch))
+                estimate = relative(iteration_error(g, float(force_value(before, base, i)[2]),
+                                                    float(force_value(earlier, base, i)[2])), max(abs(e), ch))
                 if estimate > ROUND_OFF:
                     row = row.estimated(DISCRETISATION, estimate, basis)
             fa.rows.append(row)
@@ -566,10 +566,10 @@ def _judge_forces(fa: ForceAnalysis, entries: list[tuple[str, str, float]]) -> l
             problems.append((key, why))
             continue
         i = fa.labels.index(at) if at is not None else 0
-        if not _ok(fa, i):
+        if not solved(fa, i):
             problems.append((key, f"position {fa.labels[i]} could not be solved"))
             continue
-        drawn, scale, g, e, unit = _value(fa, base, i)
+        drawn, scale, g, e, unit = force_value(fa, base, i)
         tol = prec * fa.scales["F"]
         if unit == "N·m":  # a polygon length off by the precision, times the arm it acts at
             tol *= getattr(fa.build.linkage.driver, "length", fa.kinematics.size)
@@ -596,7 +596,7 @@ def render_forces(scene: Scene[ForceScene], footer: tuple[str, ...] = ()) -> tup
                                    f"{len(cast('Positions', scene.positions).values)}: give the driver one angle "
                                    "(graphmech check takes them all)")], scene.source)
     fa = analyse_forces(scene)
-    if drawn and not _ok(fa, 0):
+    if drawn and not solved(fa, 0):
         an = fa.kinematics
         raise SceneError([("driver", f"{position_text(an.build, an.labels[0])} cannot be solved: "
                                      f"{an.failures[0] or 'the exact solution is undefined here'}")], scene.source)
@@ -635,4 +635,4 @@ def _sheet(fa: ForceAnalysis, footer: tuple[str, ...] = ()) -> Sheet:
                        scene.page.notation, fa.details)
 
 
-__all__ = ["ForceAnalysis", "analyse_forces", "is_force_name", "FORCE_NAME", "render_forces", "FORCE_PANELS"]
+__all__ = ["ForceAnalysis", "analyse_forces", "force_value", "solved", "is_force_name", "FORCE_NAME", "render_forces", "FORCE_PANELS"]

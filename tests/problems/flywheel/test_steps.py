@@ -1,54 +1,103 @@
-"""The flywheel's construction protocol: the positions, the scales, the method's diagrams in the
-book's order, and every value of the check table read off as the table reads it."""
+"""The construction protocol of a flywheel scene (graphmech/problems/flywheel/steps.py): Jп and Mп at
+the N positions, the scales, the integration by chords, the constant moment, ΔT, and J_F from the
+Wittenbauer diagram's tangents or the energy indicator — every number the check table's."""
 from __future__ import annotations
 
 import tomllib
 
-from graphmech.problems.flywheel.check import analyse_flywheel
-from graphmech.problems.flywheel.steps import flywheel_steps
+import pytest
+
+from graphmech.problems import check, steps
 from graphmech.problems.protocol import num
 from graphmech.scene import load_scene, parse_scene
 from tests.conftest import SCENES, run_cli
 
-COMPRESSOR = SCENES / "fly.compressor_course_project.toml"
+
+def _index(lines: list[str], text: str) -> int:
+    found = [k for k, line in enumerate(lines) if text in line]
+    assert found, (text, lines)
+    return found[0]
 
 
-def test_every_value_of_the_check_table_is_in_the_protocol():
-    for name in ("fly.compressor_course_project", "fly.ic_engine_flywheel", "fly.brake_time",
-                 "fly.compressor_course_project-stiff"):
-        scene = load_scene(SCENES / f"{name}.toml")
-        text = "\n".join(flywheel_steps(scene))
-        for row in analyse_flywheel(scene).rows:
-            assert f"{row.name} = " in text and num(row.graphical) in text, (name, row.name)
+def _protocol(name: str) -> tuple[list[str], list]:
+    scene = load_scene(SCENES / f"{name}.toml")
+    return steps(scene), check(scene)[0].rows
 
 
-def test_the_wittenbauer_steps_come_in_the_books_order_and_kl_gives_J_F():
-    lines = flywheel_steps(load_scene(COMPRESSOR))
-    order = [next(k for k, line in enumerate(lines) if line.startswith(start)) for start in
-             ("divide the cycle into 12 positions", "choose μφ", "draw Mп(φ)", "integrate Mп(φ) by chords",
-              "draw the energy–mass (Wittenbauer) diagram", "draw its tangents", "J_F = kl·μT", "read J_F")]
-    assert order == sorted(order)
-    # J_F's drawn length is kl = |k − l|, the two cut-offs read before it
-    assert "read k = −10.97 mm × 13.09 = −143.6 J (±7.5 %, 12 positions)" in lines
-    assert "read l = −29.06 mm × 13.09 = −380.4 J (±0.83 %, 12 positions)" in lines
-    assert "read J_F = 18.09 mm × 0.03238 = 0.5859 kg·m² (±7.7 %, 12 positions)" in lines
+def test_the_compressor_is_protocolled_in_the_course_projects_order():
+    lines, _ = _protocol("fly.compressor_course_project")
+    order = [
+        "divide the cycle Φ = 360° into N = 12 positions, Δφ = 30° (every value below read off these 12 positions)",
+        "position 4 (φ = 90°): from its velocity polygon Jп = Σ(m·v_S² + J_S·ω²)/ω₁² = 0.0918 kg·m²",
+        "choose μφ = 2.5 °/mm (chosen to fit the page), μM = 10 (N·m)/mm (chosen to fit the page) and the pole "
+        "distance H = 30 mm (chosen to fit the page): μT = μM·μφ·H = 13.09 J/mm",
+        "lay off the ordinates Mп/μM at φ/μφ and Jп/μJ (mm):",
+        "integrate Mп by chords",
+        "the ray from P parallel to it cuts the M axis at 5.294 mm: Md = 5.294 × 10 = 52.94 N·m",
+        "ΔT at 9 = 16.45 mm: ΔT = 16.45 × 13.09 = 215.3 J",
+        "the highest ordinate of ΔT is at position 9 (φ = 240°): 16.45 mm: DeltaT_max = 16.45 × 13.09 = 215.3 J",
+        "draw the Wittenbauer diagram ΔT(Jп)",
+        "tan ψmax = μJ·ωmax²/(2μT) = 0.002 × 102.5²/(2 × 13.09) = 0.8033: ψmax = 38.77°",
+        "draw the upper tangent at ψmax touching the diagram (at position 8); it cuts the ΔT axis at k = −10.97 mm",
+        "draw the lower tangent at ψmin touching the diagram (at position 3); it cuts the ΔT axis at l = −29.06 mm",
+        "measure kl = 18.09 mm: J_F = μT·kl/(ω_m²·δ) = 13.09 × 18.09/(100.5² × 0.04) = 0.5859 kg·m²",
+        "with this flywheel the equation of motion is integrated (not a construction): delta_achieved = 0.04301",
+    ]
+    at = [_index(lines, text) for text in order]
+    assert at == sorted(at), at
+    # N ordinates and N chords, one line each
+    assert sum(line.startswith("position ") and ": x = " in line for line in lines) == 12
+    assert sum(line.startswith("interval ") for line in lines) == 12
+    # the chord polygon ends at Aп(Φ), the constant moment's work line runs to −Aп(Φ)
+    assert lines[_index(lines, "interval 12–13 (= 1)")].endswith("Aп at 13 (= 1) = −25.41 mm")
+    assert "straight line from the origin to −Aп(Φ) = 25.41 mm" in lines[_index(lines, "the constant moment's work")]
 
 
-def test_the_indicator_and_the_brake_have_their_own_steps():
-    ind = flywheel_steps(load_scene(SCENES / "fly.ic_engine_flywheel.toml"))
-    assert any(line.startswith("draw the energy indicator") for line in ind)
-    assert not any("Wittenbauer" in line for line in ind)
-    brake = flywheel_steps(load_scene(SCENES / "fly.brake_time.toml"))
-    assert brake[-1] == "read t_stop = 125 mm × 0.02 = 2.5 s" and "ε = M/J = 20 N·m / 0.5 kg·m²" in brake[1]
+def _check_rows(lines: list[str], rows: list) -> None:
+    """Every row's value (and drawn length) of the check table is in the protocol (4 s.f.)."""
+    text = "\n".join(lines)
+    for r in rows:
+        assert f"{num(r.graphical)}" in text, (r.name, num(r.graphical))
+        if r.drawn_mm is not None:
+            assert f"{num(r.drawn_mm)} mm" in text, (r.name, num(r.drawn_mm))
 
 
-def test_the_protocol_speaks_the_scenes_notation():
-    for notation, words in (("zh", "能量—质量（维滕鲍尔）图"), ("ru", "диаграмму энергомасс")):
-        data = tomllib.loads(COMPRESSOR.read_text(encoding="utf-8"))
-        data.setdefault("page", {})["notation"] = notation
-        assert any(words in line for line in flywheel_steps(parse_scene(data, "x.toml"))), notation
+@pytest.mark.parametrize("name", ["fly.compressor_course_project", "fly.ic_engine_flywheel",
+                                  "fly.compressor_course_project-stiff"])
+def test_every_number_read_is_the_check_tables(name):
+    lines, rows = _protocol(name)
+    assert len(rows) > 3
+    _check_rows(lines, rows)
 
 
-def test_the_command_prints_it_numbered():
-    code, out, _ = run_cli("steps", str(SCENES / "fly.brake_time.toml"))
-    assert code == 0 and out.splitlines()[-1] == "3. read t_stop = 125 mm × 0.02 = 2.5 s"
+def test_the_energy_indicator_reads_delta_w_max_at_its_own_scale():
+    lines, rows = _protocol("fly.ic_engine_flywheel")
+    value = {r.name: r for r in rows}
+    w = value["DeltaW_max"]
+    assert (f"the highest and lowest points of the chain are c and b: measure {num(w.drawn_mm)} mm: "
+            f"ΔW_max = {num(w.drawn_mm)} × {num(w.scale)} = {num(w.graphical)} J") in lines
+    assert lines[_index(lines, "draw the energy indicator")].count(" mm") == 4  # a, b, c, a′
+    jf = lines[_index(lines, "J_F = ΔW_max/(ω_m²·δ) − J_mean")]
+    assert f"= {num(value['J_F'].graphical)} kg·m²" in jf
+    assert "Mr = −11.67 × 10 = −116.7 N·m" in lines[_index(lines, "cuts the M axis at")]
+    assert not any("Wittenbauer" in line for line in lines)
+
+
+def test_chinese_and_russian_wording():
+    text = (SCENES / "fly.ic_engine_flywheel.toml").read_text(encoding="utf-8")
+    zh = steps(parse_scene(tomllib.loads(text.replace("[page]\n", '[page]\nnotation = "zh"\n')), "zh.toml"))
+    assert zh[0] == "将一个周期Φ = 180°等分为N = 36个位置，Δφ = 5°（以下各值均由这36个位置求得）"
+    assert any(line.startswith("用弦线法对Mп图解积分") for line in zh)
+    assert any(line.startswith("指示图的最高点c、最低点b：量得43.63 mm") for line in zh)
+    ru = steps(parse_scene(tomllib.loads(text.replace("[page]\n", '[page]\nnotation = "ru"\n')), "ru.toml"))
+    assert ru[0].startswith("делим цикл Φ = 180° на N = 36 положений")
+    assert any(line.startswith("строим диаграмму избыточных работ") for line in ru)
+    assert len(zh) == len(ru) == len(steps(load_scene(SCENES / "fly.ic_engine_flywheel.toml")))
+
+
+def test_the_cli_prints_it_numbered():
+    code, out, err = run_cli("steps", str(SCENES / "fly.ic_engine_flywheel.toml"))
+    lines = out.splitlines()
+    assert code == 0 and err == ""
+    assert [line.split(". ", 1)[0] for line in lines] == [str(k) for k in range(1, len(lines) + 1)]
+    assert lines[-1] == f"{len(lines)}. n_max = 65.25·30/π = 623.1 r/min"
