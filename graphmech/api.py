@@ -206,6 +206,14 @@ def _precision(value: float | None, source: str) -> float | None:
 # ------------------------------------------------------------------------------ the check table
 
 
+def estimate_text(row: Row) -> str:
+    """How accurate a discretised or read-off row says it is, as every check table prints it:
+    ``±8 % (12 positions)``; ``""`` for a row with no estimate."""
+    if row.error_estimate is None:
+        return ""
+    return f"±{percent(row.error_estimate)} ({row.basis or row.error_source})"
+
+
 @dataclass(frozen=True, repr=False)
 class CheckTable:
     """The check of a scene: iterate for its rows (:class:`~graphmech.problems.judging.Row`:
@@ -275,7 +283,7 @@ class CheckTable:
                 drawn = "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}"
                 flag = "  ILL-CONDITIONED" if r.ill_conditioned else ""
                 if r.error_estimate is not None:  # a discretised or read-off value: how accurate it says it is
-                    flag += f"  ±{percent(r.error_estimate)} ({r.basis or r.error_source})"
+                    flag += "  " + estimate_text(r)
                 lines.append(f"{r.name:<16} {drawn:>11} {r.scale:>11.5g} {r.graphical:>16.9g} {r.exact:>16.9g}"
                              f" {r.rel_error:>9.1e}  {r.unit}{flag}")
         return "\n".join([*lines, *self.verdict_lines(), *self.lines])
@@ -305,8 +313,7 @@ class CheckTable:
         body = []
         for r in self.rows:
             acc = "ill-conditioned" if r.ill_conditioned else ""
-            if r.error_estimate is not None:
-                acc += f" ±{percent(r.error_estimate)} ({r.basis or r.error_source})"
+            acc += " " + estimate_text(r)
             cells = (r.name, "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}", f"{r.scale:.5g}",
                      f"{r.graphical:.9g}", f"{r.exact:.9g}", f"{r.rel_error:.1e}", r.unit, acc.strip())
             body.append("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in cells) + "</tr>")
@@ -350,4 +357,4 @@ class Drawing:
         return f"<graphmech.Drawing {self.name!r}: {page}, {len(self.warnings)} warnings>"
 
 
-__all__ = ["ROW_FIELDS", "CheckTable", "Drawing", "Problem", "from_dict", "load", "loads"]
+__all__ = ["ROW_FIELDS", "CheckTable", "Drawing", "Problem", "estimate_text", "from_dict", "load", "loads"]

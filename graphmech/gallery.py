@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 from urllib.parse import quote
 
-from graphmech.accuracy import percent
+from graphmech.api import estimate_text
 from graphmech.errors import GraphmechError, printable
 from graphmech.files import write_atomic
 from graphmech.scene import MAX_BYTES
@@ -123,10 +123,9 @@ def _check_table(e: Entry) -> list[str]:
     for r in e.rows:
         drawn = "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}"
         source = r.error_source + (" (ill-conditioned)" if r.ill_conditioned else "")
-        estimate = "" if r.error_estimate is None else f"±{percent(r.error_estimate)} ({r.basis or r.error_source})"
         cells = [(r.name, ""), (drawn, "n"), (f"{r.scale:.5g}", "n"), (f"{r.graphical:.9g}", "n"),
                  (f"{r.exact:.9g}", "n"), (f"{r.rel_error:.1e}", "n"), (r.unit, ""), (source, ""),
-                 (estimate, "")]
+                 (estimate_text(r), "")]
         out.append("<tr>" + "".join(f'<td class="{c}">{_e(v)}</td>' if c else f"<td>{_e(v)}</td>"
                                     for v, c in cells) + "</tr>")
     out += ["</tbody>", "</table>"]
