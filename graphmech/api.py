@@ -42,12 +42,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, overload
 
-from graphmech.accuracy import percent
 from graphmech.errors import GraphmechError, SceneError, UnknownName
 from graphmech.problems import check as check_scene
 from graphmech.problems import steps
 from graphmech.problems import with_precision
-from graphmech.problems.judging import Row, Verdict
+from graphmech.problems.judging import Row, Verdict, estimate_text
 from graphmech.problems.reader import Scene
 from graphmech.scene import draw, id_prefix, parse_scene, parse_toml, read_data
 from graphmech.tolerances import MAX_PRECISION_MM
@@ -206,14 +205,6 @@ def _precision(value: float | None, source: str) -> float | None:
 # ------------------------------------------------------------------------------ the check table
 
 
-def estimate_text(row: Row) -> str:
-    """How accurate a discretised or read-off row says it is, as every check table prints it:
-    ``±8 % (12 positions)``; ``""`` for a row with no estimate."""
-    if row.error_estimate is None:
-        return ""
-    return f"±{percent(row.error_estimate)} ({row.basis or row.error_source})"
-
-
 @dataclass(frozen=True, repr=False)
 class CheckTable:
     """The check of a scene: iterate for its rows (:class:`~graphmech.problems.judging.Row`:
@@ -357,4 +348,4 @@ class Drawing:
         return f"<graphmech.Drawing {self.name!r}: {page}, {len(self.warnings)} warnings>"
 
 
-__all__ = ["ROW_FIELDS", "CheckTable", "Drawing", "Problem", "estimate_text", "from_dict", "load", "loads"]
+__all__ = ["ROW_FIELDS", "CheckTable", "Drawing", "Problem", "from_dict", "load", "loads"]

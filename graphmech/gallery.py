@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 from urllib.parse import quote
 
-from graphmech.api import estimate_text
+from graphmech.problems.judging import estimate_text
 from graphmech.errors import GraphmechError, printable
 from graphmech.files import write_atomic
 from graphmech.scene import MAX_BYTES

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 import numpy as np
 
 from graphmech import tolerances as T
-from graphmech.accuracy import CONSTRUCTION
+from graphmech.accuracy import CONSTRUCTION, percent
 from graphmech.errors import DegenerateConstruction
 
 if TYPE_CHECKING:
@@ -54,6 +54,14 @@ class Row:
     def estimated(self, source: str, estimate: float, basis: str) -> "Row":
         """This row as a discretised or read-off value with its own error estimate."""
         return replace(self, error_source=source, error_estimate=float(estimate), basis=basis)
+
+
+def estimate_text(row: Row) -> str:
+    """How accurate a discretised or read-off row says it is, as every check table prints it:
+    ``±8 % (12 positions)``; ``""`` for a row with no estimate."""
+    if row.error_estimate is None:
+        return ""
+    return f"±{percent(row.error_estimate)} ({row.basis or row.error_source})"
 
 
 @dataclass(frozen=True)

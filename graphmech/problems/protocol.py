@@ -19,10 +19,9 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
-from graphmech.accuracy import percent
 from graphmech.drawing.lettering import number, runs
 from graphmech.drawing.notation import word
-from graphmech.problems.judging import Row
+from graphmech.problems.judging import Row, estimate_text
 from graphmech.scales import ANGLE_SCALES, SCALE_INFO
 
 #: A kind's phrases: key → (English, 中文, русский) templates with ``str.format`` fields.
@@ -87,7 +86,7 @@ def read_row(row: Row, notation: str) -> str:
     """A check table's row as the protocol reads it: ``read R_12 = 63.49 mm × 25 = 1587 N`` (drawn
     length × μ), or the value alone where nothing is drawn to be measured; a discretised or
     read-off value says how accurate its method estimates it, as the table does."""
-    acc = f" (±{percent(row.error_estimate)}, {row.basis or row.error_source})" if row.error_estimate is not None else ""
+    acc = f" {estimate_text(row)}" if row.error_estimate is not None else ""
     fields = {"name": row.name, "value": num(row.graphical), "unit": f" {row.unit}" if row.unit else "", "acc": acc}
     if row.drawn_mm is None or row.scale == 1.0:
         return phrase("value", notation, PHRASES, **fields)

@@ -30,7 +30,7 @@ def test_the_sheet_is_drawn_in_the_books_order():
               "the diagrams against φ", "read s_C@4 = −22.92 mm × 0.005 = −0.1146 m")
     order = [next(k for k, line in enumerate(lines) if line.startswith(s)) for s in starts]
     assert order == sorted(order)
-    assert "read v_C_diagram@3.5 = −28.26 mm × 0.03581 = −1.012 m/s (±1.4 %, 12 positions)" in lines
+    assert "read v_C_diagram@3.5 = −28.26 mm × 0.03581 = −1.012 m/s ±1.4 % (12 positions)" in lines
 
 
 def test_the_protocol_speaks_the_scenes_notation():
