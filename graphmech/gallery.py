@@ -17,14 +17,14 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 from urllib.parse import quote
 
-from graphmech.problems.judging import estimate_text
 from graphmech.errors import GraphmechError, printable
 from graphmech.files import write_atomic
+from graphmech.problems.judging import estimate_text
 from graphmech.scene import MAX_BYTES
 
 if TYPE_CHECKING:
+    from graphmech.api import CheckTable
     from graphmech.batch import Result
-    from graphmech.problems.judging import Row, Verdict
 
 INDEX = "index.html"
 
@@ -45,13 +45,9 @@ class Entry:
 
     name: str  # the scene file's name without .toml (the figure and the copy are <name>.svg, <name>.toml)
     source: bytes | None  # the scene file, copied beside the page (None: it could not be read)
-    title: str = ""
     svg: str | None = None
-    rows: tuple[Row, ...] = ()
-    verdicts: tuple[Verdict, ...] = ()
-    scales: tuple[str, ...] = ()
-    notes: tuple[str, ...] = ()
-    warnings: tuple[str, ...] = ()
+    table: CheckTable | None = None  # its check: rows, verdicts, scales, notes
+    warnings: tuple[str, ...] = ()  # the drawing's and the check's, each once
     error: str | None = None  # one line: why the scene failed
 
 
@@ -78,8 +74,7 @@ def entry(path: Path, r: Result) -> Entry:
     t = r.table
     if r.error is not None or t is None or r.figure is None:
         return Entry(name, source, error=r.error or f"{file}: not made")
-    return Entry(name, source, t.title, r.figure.decode("utf-8"), t.rows, t.measured, t.scale_notes, t.lines,
-                 r.warnings)
+    return Entry(name, source, r.figure.decode("utf-8"), t, r.warnings)
 
 
 def scene_files(folder: str | os.PathLike[str]) -> list[Path]:
@@ -113,14 +108,14 @@ def _anchor(name: str) -> str:
     return "scene-" + _shown(name)
 
 
-def _check_table(e: Entry) -> list[str]:
-    if not e.rows:
+def _check_table(t: CheckTable) -> list[str]:
+    if not t.rows:
         return []
     head = ["quantity", "drawn mm", "μ", "graphical", "exact", "rel. error", "unit", "error source",
             "estimate"]
     out = ['<table class="check">', "<thead><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr></thead>",
            "<tbody>"]
-    for r in e.rows:
+    for r in t.rows:
         drawn = "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}"
         source = r.error_source + (" (ill-conditioned)" if r.ill_conditioned else "")
         cells = [(r.name, ""), (drawn, "n"), (f"{r.scale:.5g}", "n"), (f"{r.graphical:.9g}", "n"),
@@ -132,13 +127,13 @@ def _check_table(e: Entry) -> list[str]:
     return out
 
 
-def _verdict_table(e: Entry) -> list[str]:
-    if not e.verdicts:
+def _verdict_table(t: CheckTable) -> list[str]:
+    if not t.measured:
         return []
     head = ["measured", "value", "expected", "± tol", "verdict", "unit"]
     out = ['<table class="measured">', "<thead><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr></thead>",
            "<tbody>"]
-    for v in e.verdicts:
+    for v in t.measured:
         verdict = '<td>ok</td>' if v.ok else '<td class="bad">OUT OF TOLERANCE</td>'
         out.append(f'<tr><td>{_e(v.name)}</td><td class="n">{v.measured:.6g}</td><td class="n">{v.expected:.6g}'
                    f'</td><td class="n">{v.tolerance:.3g}</td>{verdict}<td>{_e(v.unit)}</td></tr>')
@@ -147,19 +142,20 @@ def _verdict_table(e: Entry) -> list[str]:
 
 
 def _section(e: Entry) -> list[str]:
-    heading = e.title or e.name
+    heading = (e.table.title if e.table is not None else "") or e.name
     out = [f'<section id="{_e(_anchor(e.name))}">', f"<h2>{_e(heading)}</h2>"]
     links = [f'<a href="{_href(e.name + ".toml")}">{_e(e.name)}.toml</a>'] if e.source is not None else []
-    if e.error is not None:
+    if e.error is not None or e.table is None:
         out.append(f'<p class="failed">failed: {_e(e.error)}</p>')
     else:
+        t = e.table
         links.append(f'<a href="{_href(e.name + ".svg")}">{_e(e.name)}.svg</a>')
         out.append(f'<figure><img src="{_href(e.name + ".svg")}" alt="{_e(heading)}"></figure>')
-        if e.scales:
-            out.append(f'<p class="scales">{_e(" · ".join(e.scales))}</p>')
-        out += _check_table(e) + _verdict_table(e)
-        if e.notes:
-            out += ['<ul class="notes">', *(f"<li>{_e(n)}</li>" for n in e.notes), "</ul>"]
+        if t.scale_notes:
+            out.append(f'<p class="scales">{_e(" · ".join(t.scale_notes))}</p>')
+        out += _check_table(t) + _verdict_table(t)
+        if t.lines:
+            out += ['<ul class="notes">', *(f"<li>{_e(n)}</li>" for n in t.lines), "</ul>"]
         if e.warnings:
             out += ['<ul class="warnings">', *(f"<li>warning: {_e(w)}</li>" for w in e.warnings), "</ul>"]
     if links:
