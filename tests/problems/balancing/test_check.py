@@ -7,25 +7,12 @@ from functools import partial
 import pytest
 
 from tests.conftest import SCENES, check_json, run_cli, values
-from tests.scenes import write_scene
+from tests.scenes import scene_text, write_scene
 
 write = partial(write_scene, name="r.toml")
 
 
-BALANCED = """
-title = "two equal masses opposite"
-[balancing]
-type = "static"
-correction_radius_mm = 100
-[[balancing.mass]]
-m_kg = 2
-r_mm = 50
-angle_deg = 30
-[[balancing.mass]]
-m_kg = 1
-r_mm = 100
-angle_deg = 210
-"""
+BALANCED = scene_text("balancing/balanced_opposite")
 
 
 def test_an_already_balanced_rotor_needs_no_correction_and_gets_no_angle(tmp_path):

@@ -12,6 +12,7 @@ from graphmech.problems.protocol import num
 from graphmech.scene import load_scene
 from graphmech.scene import parse_scene as parse
 from tests.conftest import SCENES, run_cli
+from tests.scenes import scene_text
 
 
 def parse_scene(text: str, source: str = "b.toml"):
@@ -91,19 +92,7 @@ z_mm = 150
 
 
 def test_a_balanced_rotor_says_its_polygon_closes():
-    lines = steps(parse_scene("""
-[balancing]
-type = "static"
-correction_radius_mm = 100
-[[balancing.mass]]
-m_kg = 2
-r_mm = 50
-angle_deg = 30
-[[balancing.mass]]
-m_kg = 1
-r_mm = 100
-angle_deg = 210
-"""))
+    lines = steps(parse_scene(scene_text("balancing/balanced_opposite")))
     assert lines[-2] == "the polygon closes by itself: W_b = 0, no correction mass needed"
     assert not any("θ_b" in x for x in lines)
 
