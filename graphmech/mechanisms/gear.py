@@ -1,0 +1,64 @@
+"""Involute spur gears: the basic rack's tooth system, a gear, and a pair in mesh.
+
+Frozen dataclasses in SI (m, rad), no drawing and no checking: the construction
+(:mod:`graphmech.methods.involute`, :mod:`graphmech.methods.gear_meshing`) and the exact solution
+(:mod:`graphmech.exact.gear`) both start from these.
+
+Conventions (docs/scene-format.md, [gear]):
+
+- an internal gear (a ring) has its own positive tooth number z; its tooth *space* at the
+  reference circle is πm/2 + 2xm·tan α, its tip circle d − 2(h*a − x)m and its root circle
+  d + 2(h*a + c* + x)m, so that inv α′ = 2 tan α (x₂ − x₁)/(z₂ − z₁) + inv α holds for an
+  internal pair as the book writes it;
+- gear 1 is the pinion and the driver; in a rack-and-pinion pair the rack is the second member
+  (``gears`` holds the pinion alone);
+- the stated centre distance a′ is the distance O₁O₂, or for a rack the distance from the
+  pinion's centre to the rack's reference line.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+#: How two members mesh: two external gears, a pinion inside a ring, a pinion on a rack.
+Meshing = Literal["external", "internal", "rack"]
+MESHINGS: tuple[Meshing, ...] = ("external", "internal", "rack")
+
+
+@dataclass(frozen=True)
+class ToothSystem:
+    """The basic rack's profile shared by the gears of a set: module m (m), pressure angle α at
+    the reference circle (rad), addendum and clearance coefficients h*a, c*."""
+
+    m: float
+    alpha: float
+    ha_star: float = 1.0
+    c_star: float = 0.25
+
+
+@dataclass(frozen=True)
+class SpurGear:
+    """A spur gear: tooth number z, profile shift coefficient x, internal (a ring) or not."""
+
+    z: int
+    x: float = 0.0
+    internal: bool = False
+
+
+@dataclass(frozen=True)
+class GearSet:
+    """One gear (``meshing`` None), or a pair in mesh: ``gears`` = (pinion, wheel) for an external
+    or internal pair, (pinion,) for a rack and pinion. ``centre_distance`` is the stated a′ (None:
+    the distance at which the pair meshes without backlash)."""
+
+    system: ToothSystem
+    gears: tuple[SpurGear, ...]
+    meshing: Meshing | None = None
+    centre_distance: float | None = None
+
+    @property
+    def pair(self) -> bool:
+        return self.meshing is not None
+
+
+__all__ = ["GearSet", "MESHINGS", "Meshing", "SpurGear", "ToothSystem"]
