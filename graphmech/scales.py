@@ -52,6 +52,9 @@ SCALE_INFO = {
     "omega": ("μω", "(rad/s)/mm"),
     "F": ("μF", "N/mm"),
     "W": ("μW", "(kg·m)/mm"),
+    # a gear sheet's tooth and contact-zone panels: each drawing is lettered μl, as the book does
+    "tooth": ("μl", "m/mm"),
+    "zones": ("μl", "m/mm"),
 }
 
 

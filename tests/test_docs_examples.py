@@ -49,6 +49,16 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
         for row in san.rows:
             assert row.graphical == row.exact, row
         return
+    if scene.kind == "gears":  # the constructions against the closed forms
+        from graphmech.problems.gears.check import analyse as analyse_gear, judge as judge_gear
+
+        gan = analyse_gear(scene)
+        assert gan.rows
+        for row in gan.rows:
+            assert row.rel_error <= 1e-9, row
+        for verdict in judge_gear(gan):
+            assert verdict.ok, verdict
+        return
     if scene.kind == "cam":
         from graphmech.problems.cam.check import analyse_cam, judge_cam
 

@@ -1,0 +1,528 @@
+"""Checking a gear scene: the constructions (the involute by points, the line of action cut by the
+tip circles, the caliper over k teeth, the pins) against the closed forms.
+
+Every row is a length or an angle measured on a construction of :mod:`graphmech.methods.involute`
+or :mod:`graphmech.methods.gear_meshing` — divided by its panel's μl it is the drawn length — set
+against :mod:`graphmech.exact.gear` (inv α, ε from the tip pressure angles, W_k, M). Only what the
+scene's ``find`` (or ``[measured]``) names is constructed.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from graphmech.errors import GraphmechError, NoSolution, NotApplicable, OutOfDomain, SceneError
+from graphmech.exact import gear as ex
+from graphmech.geometry.kernels import ScalarOps, intersect_lines
+from graphmech.mechanisms.gear import GearSet, SpurGear
+from graphmech.methods import gear_meshing as gmesh
+from graphmech.methods import involute as inv
+from graphmech.problems.gears.scene import (
+    AT_RADIUS,
+    GEAR_SHOW_CHOICES,
+    PAIR_QUANTITIES,
+    SET_QUANTITIES,
+    TOOTH_QUANTITIES,
+    GearScene,
+    quantity_unit,
+)
+from graphmech.problems.judging import Row, Verdict, in_double_precision, judge_value, measured_entries
+from graphmech.scales import format_scale, round_scale
+
+if TYPE_CHECKING:
+    from graphmech.problems.reader import Scene
+
+#: About how long the main figure's features are drawn, mm: three teeth across the tooth panel,
+#: B₁B₂ along the zones panel, the pair (or the neighbourhood of B₁B₂) across the meshing panel.
+TOOTH_MM, ZONES_MM, MESH_MM = 110.0, 120.0, 170.0
+#: On the meshing panel B₁B₂ is drawn at least this long; a pair too large for that is drawn
+#: around the line of action (the circles as arcs).
+MESH_B1B2_MM = 25.0
+#: The book's least tip thickness, as a multiple of m (s_a ≥ 0.25m … 0.4m).
+SA_MIN = 0.25
+
+#: Default finds: one gear, a pair.
+DEFAULT_TOOTH = ("d", "db", "da", "df", "s_pitch", "sa", "alpha_a", "rho_pitch", "rho_a")
+DEFAULT_PAIR = ("a_w", "alpha_w", "alpha_a1", "alpha_a2", "B1B2", "pb", "eps_alpha")
+
+
+@dataclass
+class GearAnalysis:
+    """What one gear scene produced: the constructions it needed, rows, warnings, scales."""
+
+    scene: Scene[GearScene]
+    problem: GearScene
+    names: list[str] = field(default_factory=list)
+    rows: list[Row] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    scales: dict[str, float] = field(default_factory=dict)
+    stated: set[str] = field(default_factory=set)
+    extra_measured: tuple[tuple[str, float], ...] = ()
+    panels: tuple[str, ...] = ()
+    # the constructions, by gear label ("" for one gear, "1", "2" in a pair), made when first asked
+    radii: dict[tuple[str, float], inv.AtRadius] = field(default_factory=dict)
+    pointed: dict[str, inv.AtRadius] = field(default_factory=dict)
+    spans: dict[str, inv.SpanMeasurement] = field(default_factory=dict)
+    pins: dict[str, inv.PinMeasurement] = field(default_factory=dict)
+    mesh: gmesh.MeshConstruction | None = None
+    exact_mesh: Any = None
+    root_base: tuple[float, float] | None = None
+
+    def scale_notes(self) -> list[str]:
+        words = {"l": "", "tooth": "tooth, ", "zones": "contact zones, "}
+        return [format_scale(k, v) + (f" ({words[k]}stated)" if k in self.stated and words[k] else
+                                      "" if k in self.stated else f" ({words[k]}chosen)")
+                for k, v in self.scales.items()]
+
+    @property
+    def gears(self) -> GearSet:
+        return self.problem.gears
+
+    def gear(self, label: str) -> SpurGear:
+        return self.gears.gears[int(label) - 1] if label else self.gears.gears[0]
+
+    def index(self, label: str) -> int:
+        return int(label) - 1 if label else 0
+
+
+def default_find(p: GearScene) -> tuple[str, ...]:
+    if not p.gears.pair:
+        return DEFAULT_TOOTH
+    out = [n for n in DEFAULT_PAIR if quantity_unit(n, p) is not None]
+    return tuple(out)
+
+
+def split_gear(name: str, p: GearScene) -> tuple[str, str, float | None]:
+    """``"s_k1@85"`` → (stem ``s_k``, gear label ``1``, radius 0.085 m); ``"B1B2"`` → (``B1B2``, "", None)."""
+    base, _, at = name.partition("@")
+    for label in p.labels:
+        if label and not base.endswith(label):
+            continue
+        stem = base[: len(base) - len(label)] if label else base
+        if (at and stem in AT_RADIUS) or (not at and stem in TOOTH_QUANTITIES):
+            return stem, label, (float(at) / 1000.0 if at else None)
+    return base, "", None
+
+
+def panels_for(names: list[str], p: GearScene) -> tuple[str, ...]:
+    """The panels that draw what ``names`` measure, in the sheet's order."""
+    want = set()
+    for name in names:
+        stem, _, _ = split_gear(name, p)
+        if stem in ("W", "d_pin", "M"):
+            want.add("measurement")
+        elif stem in TOOTH_QUANTITIES or stem in AT_RADIUS or stem == "p":
+            want.add("tooth")
+        elif stem == "z_root_eq_base":
+            want.add("root_base")
+        elif stem in ("B1B2", "eps_alpha", "single_contact", "double_contact", "pb") and p.gears.pair:
+            want.update(("meshing", "zones"))
+        elif stem in PAIR_QUANTITIES:
+            want.add("meshing")
+        elif stem == "pb":
+            want.add("tooth")
+    return tuple(s for s in GEAR_SHOW_CHOICES if s in want)
+
+
+def analyse(scene: Scene[GearScene], extra_measured: tuple[tuple[str, float], ...] = ()) -> GearAnalysis:
+    """Construct what the scene asks for and build its check table."""
+    p = scene.problem
+    an = GearAnalysis(scene, p, extra_measured=tuple(extra_measured))
+    problems = [(k, f"unknown gear quantity {n!r}") for k, n, _ in measured_entries(scene, extra_measured)
+                if quantity_unit(n, p) is None]
+    if problems:
+        raise SceneError(problems, scene.source)
+    an.names = list(scene.find) or list(default_find(p))
+    an.panels = scene.show or panels_for(an.names + [n for _, n, _ in measured_entries(scene, extra_measured)], p)
+    with in_double_precision("the gear construction"):
+        _warn(an)
+        _choose_scales(an)
+        for name in an.names:
+            row = _row(an, name)
+            if row is not None:
+                an.rows.append(row)
+    return an
+
+
+def _refuse(an: GearAnalysis, err: GraphmechError, key: str = "gear") -> SceneError:
+    return SceneError([(key, str(err))], an.scene.source)
+
+
+def _mesh(an: GearAnalysis) -> gmesh.MeshConstruction:
+    if an.mesh is None:
+        key = "gear.centre_distance" if an.gears.centre_distance is not None else "gear"
+        try:
+            an.exact_mesh = ex.meshing(an.gears)
+            an.mesh = gmesh.construct_meshing(an.gears)
+        except (NoSolution, NotApplicable, OutOfDomain) as err:
+            raise _refuse(an, err, key) from None
+    return an.mesh
+
+
+def _warn(an: GearAnalysis) -> None:
+    """What a student must be told whatever was asked: undercut, pointed or thin tips, ε < 1,
+    interference, a ring's tip circle inside its base circle."""
+    s = an.gears.system
+    for label in an.problem.labels:
+        g = an.gear(label)
+        name = f"gear {label}" if label else "the gear"
+        if not g.internal:
+            z_min, x_min, undercut = ex.undercut(s, g)
+            if undercut:
+                an.warnings.append(f"{name} (z = {g.z}, x = {g.x:g}) is undercut by a rack cutter: z < z_min = "
+                                   f"{z_min:.4g} for this shift (x_min = {x_min:.4g}); the fillet cuts into the "
+                                   "involute above the base circle")
+        t = ex.tooth(s, g)
+        if t.sa is not None and t.sa <= 0.0:
+            ra = ex.pointed_tip(s, g)[0]
+            an.warnings.append(f"{name}'s tooth is pointed below its tip circle (at r = {ra * 1000:.4g} mm): s_a "
+                               "would be negative")
+        elif t.sa is not None and t.sa < SA_MIN * s.m:
+            an.warnings.append(f"{name}'s tip is thin: s_a = {t.sa * 1000:.4g} mm < {SA_MIN:g}m = "
+                               f"{SA_MIN * s.m * 1000:.4g} mm (the book asks s_a ≥ 0.25m … 0.4m)")
+        if g.internal and t.da / 2.0 < t.db / 2.0:
+            an.warnings.append(f"{name} is a ring whose tip circle (r_a = {t.da * 500:.4g} mm) lies inside its base "
+                               f"circle (r_b = {t.db * 500:.4g} mm): its teeth are not involute there")
+    if an.gears.pair:
+        em = ex.meshing(an.gears)
+        an.exact_mesh = em
+        for note in em.notes:
+            an.warnings.append(note)
+
+
+def _choose_scales(an: GearAnalysis) -> None:
+    s = an.gears.system
+    stated = an.scene.scales
+    for key in ("l", "tooth", "zones"):
+        if key in stated:
+            an.scales[key] = stated[key]
+            an.stated.add(key)
+    if "tooth" not in an.scales and {"tooth", "measurement"} & set(an.panels):
+        g = an.gear(an.problem.labels[0])
+        t = ex.tooth(s, g)
+        across = 3.0 * t.p + 2.0 * (t.ha + t.hf)
+        if "measurement" in an.panels:
+            across = max(across, min(t.da, 6.0 * t.p * max(2, ex.span_teeth(s, g) if not g.internal else 2)))
+        an.scales["tooth"] = round_scale(across / TOOTH_MM)
+    if an.gears.pair and ({"meshing", "zones"} & set(an.panels)):
+        em = an.exact_mesh
+        if "zones" not in an.scales and "zones" in an.panels:
+            an.scales["zones"] = round_scale(max(em.B1B2, em.pb) / ZONES_MM)
+        if "l" not in an.scales and "meshing" in an.panels:
+            whole = _pair_extent(an)
+            mu = round_scale(whole / MESH_MM)
+            if em.B1B2 / mu < MESH_B1B2_MM:  # a large pair: drawn around the line of action
+                mu = round_scale(max(em.B1B2, em.pb) * 4.0 / MESH_MM)
+            an.scales["l"] = mu
+    if "root_base" in an.panels or any(split_gear(n, an.problem)[0] == "z_root_eq_base" for n in an.names):
+        an.scales.setdefault("l", round_scale(s.m))
+
+
+def _pair_extent(an: GearAnalysis) -> float:
+    s = an.gears.system
+    tips = [ex.tooth(s, g).da / 2.0 for g in an.gears.gears]
+    a_w = an.exact_mesh.a_w
+    if an.gears.meshing == "external":
+        return a_w + tips[0] + tips[1]
+    if an.gears.meshing == "internal":
+        return 2.0 * ex.tooth(s, an.gears.gears[1]).df / 2.0
+    return 2.0 * a_w
+
+
+def _at(an: GearAnalysis, label: str, r: float) -> inv.AtRadius:
+    key = (label, r)
+    if key not in an.radii:
+        try:
+            an.radii[key] = inv.at_radius(an.gears.system, an.gear(label), r)
+        except (OutOfDomain, NotApplicable) as err:
+            raise _refuse(an, err, "find") from None
+    return an.radii[key]
+
+
+def _rad(an: GearAnalysis, label: str, which: str) -> float:
+    t = ex.tooth(an.gears.system, an.gear(label))
+    return {"r": t.d / 2.0, "ra": t.da / 2.0, "rb": t.db / 2.0}[which]
+
+
+def _values(an: GearAnalysis, name: str) -> tuple[float, float, float | None, float] | None:
+    """(graphical, exact, the length on the drawing in mm or None, μ) of a name, in SI (angles in rad)."""
+    p = an.problem
+    s = p.gears.system
+    stem, label, r_k = split_gear(name, p)
+    mu_t = an.scales.get("tooth", 1.0)
+    if stem in AT_RADIUS:
+        assert r_k is not None
+        c = _at(an, label, r_k)
+        e = ex.at_radius(s, an.gear(label), r_k)
+        return {"s_k": (c.s_k, e.s_k, c.s_k / mu_t, mu_t), "alpha_k": (c.alpha_k, e.alpha_k, None, 1.0),
+                "rho_k": (c.rho_k, e.rho_k, c.rho_k / mu_t, mu_t),
+                "theta_k": (c.theta_k, e.theta_k, None, 1.0)}[stem]
+    if stem in TOOTH_QUANTITIES:
+        return _tooth_value(an, stem, label, mu_t)
+    if stem == "z_root_eq_base":
+        z, _ = _root_base(an)
+        return z, ex.z_root_eq_base(s, an.gear(p.labels[0]).x), None, 1.0
+    if stem == "p" or (stem == "pb" and not p.gears.pair):
+        g = an.gear(p.labels[0])
+        t = ex.tooth(s, g)
+        if stem == "p":  # the arc between like flanks of two neighbouring teeth on the reference circle
+            c = _at(an, p.labels[0], t.d / 2.0)
+            pitch = 2.0 * math.pi * (t.d / 2.0) / g.z
+            return pitch, t.p, pitch / mu_t, mu_t if c else mu_t
+        cb = _at(an, p.labels[0], t.db / 2.0)
+        pitch_b = 2.0 * math.pi * math.hypot(*cb.N_left) / g.z
+        return pitch_b, t.pb, pitch_b / mu_t, mu_t
+    return _pair_value(an, stem)
+
+
+def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float) -> tuple[float, float, float | None, float]:
+    s = an.gears.system
+    g = an.gear(label)
+    t = ex.tooth(s, g)
+    if stem in ("d", "db", "da", "df"):
+        v = getattr(t, stem)
+        return v, v, v / mu, mu  # a circle is drawn at its radius: nothing is constructed
+    if stem in ("ha", "hf"):
+        v = getattr(t, stem)
+        return v, v, v / mu, mu
+    if stem in ("s_pitch", "e_pitch", "rho_pitch"):
+        c = _at(an, label, t.d / 2.0)
+        pitch = 2.0 * math.pi * (t.d / 2.0) / g.z
+        got = {"s_pitch": c.s_k, "e_pitch": pitch - c.s_k, "rho_pitch": c.rho_k}[stem]
+        want = {"s_pitch": t.s, "e_pitch": t.e, "rho_pitch": t.rho_pitch}[stem]
+        return got, want, got / mu, mu
+    if stem in ("sa", "alpha_a", "rho_a"):
+        if t.alpha_a is None:
+            raise SceneError([("find", f"{stem}{label}: the tip circle lies inside the base circle: no involute "
+                                       "there")], an.scene.source)
+        c = _at(an, label, t.da / 2.0)
+        if stem == "alpha_a":
+            return c.alpha_k, t.alpha_a, None, 1.0
+        got = c.s_k if stem == "sa" else c.rho_k
+        return got, t.sa if stem == "sa" else t.rho_a, got / mu, mu
+    if stem == "sb":
+        c = _at(an, label, t.db / 2.0)
+        return c.s_k, t.sb, c.s_k / mu, mu
+    if stem in ("ra_pointed", "alpha_a_pointed", "inv_alpha_a_pointed"):
+        if label not in an.pointed:
+            try:
+                an.pointed[label] = inv.pointed_tip(s, g)
+            except (OutOfDomain, NotApplicable, NoSolution) as err:
+                raise _refuse(an, err, "find") from None
+        c = an.pointed[label]
+        ra, alpha, invv = ex.pointed_tip(s, g)
+        if stem == "ra_pointed":
+            return c.r_k, ra, c.r_k / mu, mu
+        if stem == "alpha_a_pointed":
+            return c.alpha_k, alpha, None, 1.0
+        return c.theta_k, invv, None, 1.0
+    if stem == "W":
+        if g.internal:
+            raise SceneError([("find", f"W{label}: a ring's span cannot be measured with a caliper: measure over "
+                                       "pins (M)")], an.scene.source)
+        k = an.problem.span_teeth[an.index(label)] or ex.span_teeth(s, g)
+        if label not in an.spans:
+            an.spans[label] = inv.span(s, g, k)
+        w = an.spans[label].W
+        return w, ex.span(s, g, k), w / mu, mu
+    # pins
+    d_pin = an.problem.pin_diameter[an.index(label)]
+    if label not in an.pins:
+        try:
+            an.pins[label] = inv.over_pins(s, g, d_pin)
+        except (OutOfDomain, NotApplicable, NoSolution) as err:
+            raise _refuse(an, err, "gear.pin_diameter") from None
+    c2 = an.pins[label]
+    want_d = d_pin if d_pin is not None else ex.pin_diameter(s, g)
+    if stem == "d_pin":
+        return c2.d_pin, want_d, c2.d_pin / mu, mu
+    return c2.M, ex.over_pins(s, g, want_d)[1], c2.M / mu, mu
+
+
+def _pair_value(an: GearAnalysis, stem: str) -> tuple[float, float, float | None, float] | None:
+    c = _mesh(an)
+    e = an.exact_mesh
+    mu_l = an.scales.get("l", 1.0)
+    mu_z = an.scales.get("zones", mu_l)
+    s = an.gears.system
+    if stem == "a":
+        r = [ex.tooth(s, g).d / 2.0 for g in an.gears.gears]
+        got = r[0] + r[1] if an.gears.meshing == "external" else r[1] - r[0] if an.gears.meshing == "internal" \
+            else r[0] + an.gears.gears[0].x * s.m
+        return got, e.a, got / mu_l, mu_l
+    if stem in ("alpha_w",):
+        return c.alpha_w, e.alpha_w, None, 1.0
+    if stem in ("a_w", "rw1", "rw2", "N1N2"):
+        got = {"a_w": c.a_w, "rw1": c.r_w1, "rw2": c.r_w2, "N1N2": c.N1N2}[stem]
+        want = {"a_w": e.a_w, "rw1": e.r_w1, "rw2": e.r_w2, "N1N2": e.N1N2}[stem]
+        if got is None or want is None:
+            return None
+        return got, want, got / mu_l, mu_l
+    if stem in ("B1B2", "pb"):
+        got = c.B1B2 if stem == "B1B2" else c.pb
+        return got, getattr(e, stem), got / mu_z, mu_z
+    if stem == "eps_alpha":
+        return c.eps_alpha, e.eps_alpha, None, 1.0
+    if stem in ("single_contact", "double_contact"):
+        got_z = getattr(c, stem)
+        want_z = getattr(e, stem)
+        if got_z is None or want_z is None:
+            return None
+        return got_z, want_z, got_z / mu_z, mu_z
+    if stem.startswith("eta_"):
+        got_eta = _sliding(an, c, stem)
+        return got_eta, getattr(e, stem), None, 1.0
+    if stem == "backlash":
+        if c.backlash is None or e.backlash is None:
+            return None
+        return c.backlash, e.backlash, c.backlash / mu_l, mu_l
+    return None
+
+
+def _sliding(an: GearAnalysis, c: gmesh.MeshConstruction, stem: str) -> float:
+    """Specific sliding from the radii of curvature measured on the line of action."""
+    z = [g.z for g in an.gears.gears]
+    at = "B1" if stem in ("eta_tip1", "eta_root2") else "B2"
+    r1 = c.rho[f"N1{at}"]
+    if an.gears.meshing == "rack":
+        n1p = math.hypot(c.P[0] - c.N1[0], c.P[1] - c.N1[1])
+        return 1.0 - n1p / r1 if stem.endswith("1") else 1.0 - r1 / n1p
+    u = z[1] / z[0]
+    r2 = c.rho[f"N2{at}"]
+    return 1.0 - r2 / (u * r1) if stem.endswith("1") else 1.0 - u * r1 / r2
+
+
+def _root_base(an: GearAnalysis) -> tuple[float, float]:
+    """z at which the root circle is the base circle, constructed: r_f/m and r_b/m against z are
+    two straight lines (z/2 − h*a − c* + x and z·cos α/2); where they cross."""
+    if an.root_base is None:
+        s = an.gears.system
+        x = an.gear(an.problem.labels[0]).x
+        ops = ScalarOps()
+        f0 = -(s.ha_star + s.c_star - x)
+        # a line as (point, direction): r_f from (0, f0) with slope ½; r_b from (0, 0) with slope cos α/2
+        l1 = ((0.0, f0), (1.0, 0.5))
+        l2 = ((0.0, 0.0), (1.0, math.cos(s.alpha) / 2.0))
+        z, r = _cross(ops, l1, l2)
+        an.root_base = (z, r)
+    return an.root_base
+
+
+def _cross(ops: ScalarOps, l1: Any, l2: Any) -> tuple[float, float]:
+    (ax, ay), (ux, uy) = l1
+    (bx, by), (vx, vy) = l2
+    nu, nv = math.hypot(ux, uy), math.hypot(vx, vy)  # the kernel takes unit directions
+    ux, uy, vx, vy = ux / nu, uy / nu, vx / nv, vy / nv
+    got = intersect_lines(ops, (ax, ay, ux, uy), (bx, by, vx, vy))
+    return float(got[0]), float(got[1])
+
+
+def _row(an: GearAnalysis, name: str) -> Row | None:
+    v = _values(an, name)
+    if v is None:
+        an.warnings.append(f"{name}: not defined for this set (see the notes above)")
+        return None
+    g, e, drawn, scale = v
+    unit = quantity_unit(name, an.problem) or ""
+    if unit == "deg":
+        g, e = math.degrees(g), math.degrees(e)
+    return Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), 1e-300))
+
+
+def judge(an: GearAnalysis, precision_mm: float | None = None) -> list[Verdict]:
+    """A student's values against the construction: a length within the drawing precision × its
+    μl; an angle within the angle a precision-long slip turns its shorter arm by; ε within what
+    the precision does to B₁B₂/p_b measured on the same drawing."""
+    prec = precision_mm if precision_mm is not None else an.scene.precision_mm
+    out = []
+    for _key, name, value in measured_entries(an.scene, an.extra_measured):
+        v = _values(an, name)
+        unit = quantity_unit(name, an.problem) or ""
+        if v is None:
+            out.append(Verdict(name, value, 0.0, 0.0, False, unit))
+            continue
+        g, _e, drawn, scale = v
+        if unit == "deg":
+            arm = _arm_mm(an, name)
+            tol = math.degrees(math.atan2(prec, max(arm, prec)))
+            gd = math.degrees(g)
+            out.append(Verdict(name, value, gd, tol, abs(value - gd) <= tol, unit))
+        elif name == "eps_alpha":
+            c = _mesh(an)
+            mu_z = an.scales.get("zones", an.scales.get("l", 1.0))
+            tol = g * (prec * mu_z / c.B1B2 + prec * mu_z / c.pb)
+            out.append(Verdict(name, value, g, tol, abs(value - g) <= tol, unit))
+        else:
+            out.append(judge_value(name, value, g, drawn, scale, prec, unit))
+    return out
+
+
+def _arm_mm(an: GearAnalysis, name: str) -> float:
+    """The shorter arm of a measured angle on the drawing, mm."""
+    stem, label, r_k = split_gear(name, an.problem)
+    if stem == "alpha_w":
+        c = _mesh(an)
+        return c.B1B2 / an.scales.get("l", 1.0)
+    mu = an.scales.get("tooth", 1.0)
+    t = ex.tooth(an.gears.system, an.gear(label))
+    return t.db / 2.0 / mu
+
+
+def lines(an: GearAnalysis) -> list[str]:
+    """Under the text table: the contact ratio said in words when it matters, the span's k."""
+    out = []
+    for label, sp in an.spans.items():
+        out.append(f"W{label}: the span over k = {sp.k} teeth")
+    if an.mesh is not None:
+        eps = an.mesh.eps_alpha
+        if eps < 1.0:
+            out.append(f"ε = {eps:.4g} < 1: the drive is not continuous — one pair leaves contact before the next "
+                       "begins")
+        elif eps < 2.0:
+            out.append(f"ε = {eps:.4g}: two pairs in contact over {(eps - 1) * 100:.0f} % of each base pitch "
+                       f"(the two ends of B₁B₂), one pair over the middle {(2 - eps) * 100:.0f} %")
+    return out
+
+
+def extras(an: GearAnalysis) -> dict[str, Any]:
+    """``check --json``'s "gear" section: the span's k per gear and, for a pair, where the zones lie."""
+    out: dict[str, Any] = {}
+    if an.spans:
+        out["span_teeth"] = {label or "gear": sp.k for label, sp in an.spans.items()}
+    if an.mesh is not None:
+        out["continuous"] = an.mesh.eps_alpha >= 1.0
+    return {"gear": out} if out else {}
+
+
+def gear_figure(an: GearAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Any:
+    """The sheet of the scene's panels."""
+    from graphmech.problems.gears.figures import GearDrawing, gear_sheet
+
+    p = an.problem
+    s = p.gears.system
+    labels = [lab for lab in p.labels if _asks_tooth(an, lab)] or [p.labels[0]]
+    teeth = []
+    if "tooth" in an.panels or "measurement" in an.panels:
+        for lab in labels:
+            teeth.append((lab, inv.tooth_outline(s, an.gear(lab))))
+    if "meshing" in an.panels or "zones" in an.panels:
+        _mesh(an)
+    if "root_base" in an.panels:
+        _root_base(an)
+    drawing = GearDrawing(
+        gears=p.gears, scales=dict(an.scales), teeth=tuple(teeth),
+        at_radii=tuple((lab, c) for (lab, _r), c in an.radii.items()),
+        pointed=tuple(an.pointed.items()), span=tuple(an.spans.items()), pins=tuple(an.pins.items()),
+        mesh=an.mesh, root_base=(an.root_base[0], float(an.gear(p.labels[0]).z)) if an.root_base else None)
+    return gear_sheet(an.scene.title, an.panels, drawing, page, footer, an.scene.page.notation)
+
+
+def _asks_tooth(an: GearAnalysis, label: str) -> bool:
+    return any(split_gear(n, an.problem)[1] == label and split_gear(n, an.problem)[0] in {**TOOTH_QUANTITIES,
+                                                                                      **AT_RADIUS}
+               for n in an.names)
+
+
+__all__ = ["GearAnalysis", "analyse", "default_find", "extras", "gear_figure", "judge", "lines", "panels_for",
+           "split_gear"]

@@ -1,0 +1,314 @@
+"""Read a gear scene (``[gear]``): one involute spur gear, or a pair in mesh.
+
+``z = 20`` poses one gear (its tooth, its span and pins); ``z = [19, 42]`` with ``meshing``
+poses a pair (``"external"``, ``"internal"``: gear 2 is the ring; ``"rack"``: ``z = [z1]`` and
+a rack). The names a scene may find are fixed here (:data:`GEAR_QUANTITIES`, a gear's own with
+its number in a pair) and checked on reading, so a misspelt name is one line naming ``find[i]``.
+"""
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from graphmech.mechanisms.gear import MESHINGS, GearSet, Meshing, SpurGear, ToothSystem
+from graphmech.problems.judging import close_names
+from graphmech.problems.reader import (
+    MISSING,
+    Reader,
+    Scene,
+    is_choice,
+    one_of,
+    raise_sorted,
+    read_header,
+    read_measured,
+    read_scales,
+    read_tail,
+    say,
+    type_name,
+)
+
+#: What a gear scene may show (figures.PANELS in this order).
+GEAR_SHOW_CHOICES = ("tooth", "meshing", "zones", "measurement", "root_base")
+#: A gear's own quantities (a number suffix in a pair) → unit in ``check``.
+TOOTH_QUANTITIES = {
+    "d": "m", "db": "m", "da": "m", "df": "m", "ha": "m", "hf": "m",
+    "s_pitch": "m", "e_pitch": "m", "sa": "m", "sb": "m", "alpha_a": "deg", "rho_pitch": "m", "rho_a": "m",
+    "ra_pointed": "m", "alpha_a_pointed": "deg", "inv_alpha_a_pointed": "",
+    "W": "m", "d_pin": "m", "M": "m",
+}
+#: Quantities at a stated radius, named ``s_k@85`` (the radius in mm).
+AT_RADIUS = {"s_k": "m", "alpha_k": "deg", "rho_k": "m", "theta_k": "deg"}
+#: The set's quantities (no suffix).
+SET_QUANTITIES = {"p": "m", "pb": "m", "z_root_eq_base": ""}
+#: A pair's quantities.
+PAIR_QUANTITIES = {
+    "a": "m", "a_w": "m", "alpha_w": "deg", "rw1": "m", "rw2": "m", "N1N2": "m", "B1B2": "m", "eps_alpha": "",
+    "single_contact": "m", "double_contact": "m", "eta_tip1": "", "eta_root1": "", "eta_tip2": "", "eta_root2": "",
+    "backlash": "m",
+}
+#: The largest tooth number (z = 1000 is the book's "rack limit"; beyond 1e5 a tooth is a rack's).
+MAX_Z = 100_000
+#: The module's sane range, m (a watch gear 0.05 mm … a mill gear 100 mm, with margins).
+MODULE_RANGE = (1e-6, 10.0)
+#: |x| above this is no gear anyone cuts (the tooth is pointed long before).
+MAX_SHIFT = 10.0
+#: The radius in a name ``s_k@85``: mm.
+RADIUS_AT = re.compile(r"[0-9]+(?:\.[0-9]+)?")
+
+
+@dataclass(frozen=True)
+class GearScene:
+    """A [gear] table in SI: the set, and per gear the span's k and the pin diameter when stated."""
+
+    gears: GearSet
+    span_teeth: tuple[int | None, ...] = ()
+    pin_diameter: tuple[float | None, ...] = ()
+
+    @property
+    def labels(self) -> tuple[str, ...]:
+        """The gears' suffixes: ``("",)`` for one gear, ``("1", "2")`` for a pair, ``("1",)`` for a pinion on a rack."""
+        if not self.gears.pair:
+            return ("",)
+        return tuple(str(i + 1) for i in range(len(self.gears.gears)))
+
+
+def quantity_unit(name: str, problem: GearScene) -> str | None:
+    """The unit of a find/measured name in this scene, or None when the scene has no such quantity.
+
+    >>> g = GearScene(GearSet(ToothSystem(0.005, math.radians(20)), (SpurGear(19), SpurGear(42)), "external"))
+    >>> quantity_unit("da2", g), quantity_unit("s_k1@85", g), quantity_unit("da", g), quantity_unit("B1B2", g)
+    ('m', 'm', None, 'm')
+    """
+    base, _, at = name.partition("@")
+    labels = problem.labels
+    for label in labels:
+        if label and not base.endswith(label):
+            continue
+        stem = base[: len(base) - len(label)] if label else base
+        if at:
+            if stem in AT_RADIUS and RADIUS_AT.fullmatch(at):
+                return AT_RADIUS[stem]
+        elif stem in TOOTH_QUANTITIES:
+            return TOOTH_QUANTITIES[stem]
+    if at:
+        return None
+    if base in SET_QUANTITIES:
+        return SET_QUANTITIES[base]
+    if problem.gears.pair and base in PAIR_QUANTITIES:
+        if problem.gears.meshing == "rack" and base in ("rw2", "N1N2"):
+            return None
+        return PAIR_QUANTITIES[base]
+    return None
+
+
+def known_names(problem: GearScene) -> list[str]:
+    """Every plain name the scene can find (for 'did you mean')."""
+    names = [stem + label for label in problem.labels for stem in TOOTH_QUANTITIES]
+    names += [f"{stem}{label}@r" for label in problem.labels for stem in AT_RADIUS]
+    names += list(SET_QUANTITIES)
+    if problem.gears.pair:
+        names += [n for n in PAIR_QUANTITIES if quantity_unit(n, problem) is not None]
+    return names
+
+
+def parse_gear_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[GearScene]:
+    """The rest of :func:`graphmech.scene.parse_scene` for a scene with a [gear] table.
+
+    Examples
+    --------
+    >>> from graphmech.scene import parse_scene
+    >>> s = parse_scene({"gear": {"m_mm": 5, "z": [19, 42], "meshing": "external"}}, "g.toml")
+    >>> s.problem.gears.gears, s.problem.labels
+    ((SpurGear(z=19, x=0.0, internal=False), SpurGear(z=42, x=0.0, internal=False)), ('1', '2'))
+    >>> parse_scene({"gear": {"m_mm": 5, "z": [19, 42]}}, "g.toml")
+    Traceback (most recent call last):
+    ...
+    graphmech.errors.SceneError: g.toml: gear.meshing: missing: a pair of gears needs meshing = "external", "internal" or "rack"
+    """
+    title, show, find = read_header(top, GEAR_SHOW_CHOICES, ())
+    scales = read_scales(top, entries=(("l", "length"), ("tooth", "length"), ("zones", "length")))
+    for key in data:
+        if key in ("frame", "driver", "dyad", "point", "cam", "flywheel", "forces", "structure", "cycle",
+                   "characteristics", "efficiency", "balancing"):
+            top.used.add(key)
+            top.problem(key, "belongs to another kind of problem; this is a gear scene ([gear]): put each in a "
+                             "scene of its own")
+    g = top.table_at("gear", required=True)
+    problem = None if g is None else _read_gear(g)
+    if problem is not None:
+        for i, name in enumerate(find):
+            if quantity_unit(name, problem) is None:
+                top.problem(f"find[{i}]", _unknown(name, problem))
+    measured = read_measured(top, None, cam=False)
+    if problem is not None:
+        for name, _ in measured:
+            if quantity_unit(name, problem) is None:
+                top.problem(f"measured.{name}", _unknown(name, problem))
+    precision, page = read_tail(top)
+    if top.problems or problem is None:
+        raise_sorted(top.problems, data, order, "gear", source)
+    return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
+                 precision_mm=precision, page=page, kind="gears", problem=problem)
+
+
+def _unknown(name: str, problem: GearScene) -> str:
+    base, _, at = name.partition("@")
+    if at and not RADIUS_AT.fullmatch(at):
+        return f"{say(name)}: the radius after @ is a number of mm (s_k@85)"
+    if not problem.gears.pair and base in PAIR_QUANTITIES:
+        return f"{say(name)} belongs to a pair of gears: give z = [z1, z2] and meshing"
+    what = "one gear" if not problem.gears.pair else f"an {problem.gears.meshing} pair" \
+        if problem.gears.meshing == "external" or problem.gears.meshing == "internal" else "a rack and pinion"
+    hint = close_names(base, known_names(problem))
+    if not hint and not problem.gears.pair and close_names(base, PAIR_QUANTITIES):
+        hint = close_names(base, PAIR_QUANTITIES) + " (a pair's: give z = [z1, z2] and meshing)"
+    return f"unknown gear quantity {say(name)} for {what}{hint}"
+
+
+def _read_gear(g: Reader) -> GearScene | None:
+    bad = len(g.problems)
+    m = g.scalar("m", "length", positive=True)
+    if m is not None and not MODULE_RANGE[0] <= m <= MODULE_RANGE[1]:
+        g.problem(g.at(g.present("m") or "m"), f"a module of {m * 1000:g} mm is no gear's (1e-3 … 1e4 mm)")
+        m = None
+    alpha = g.scalar("alpha", "angle", required=False, default=math.radians(20.0))
+    if alpha is not None and not math.radians(5.0) <= alpha <= math.radians(45.0):
+        g.problem(g.at(g.present("alpha") or "alpha"), f"a pressure angle of {math.degrees(alpha):g}° is no "
+                                                       "involute gear's (5° … 45°)")
+        alpha = None
+    ha = _coefficient(g, "ha_star", 1.0, 0.0, 3.0)
+    c = _coefficient(g, "c_star", 0.25, 0.0, 1.0)
+    zs = _teeth(g)
+    count = len(zs) if zs is not None else 1
+    xs = _per_gear(g, "x", count, 0.0)
+    meshing_value = g.raw("meshing")
+    meshing: Meshing | None = None
+    if meshing_value is not MISSING:
+        if not is_choice(meshing_value, MESHINGS):
+            g.problem(g.at("meshing"), f"unknown value {say(meshing_value)}: use {one_of(MESHINGS)}")
+        else:
+            meshing = meshing_value
+    internal = g.flag("internal")
+    if zs is not None:
+        if len(zs) == 2 and meshing is None and meshing_value is MISSING:
+            g.problem(g.at("meshing"), 'missing: a pair of gears needs meshing = "external", "internal" or "rack"')
+        elif meshing == "rack" and len(zs) != 1:
+            g.problem(g.at("z"), "a rack and pinion gives the pinion's z alone: z = [z1]")
+        elif meshing in ("external", "internal") and len(zs) != 2:
+            g.problem(g.at("z"), f"an {meshing} pair needs z = [z1, z2]")
+        elif meshing == "internal" and zs[1] <= zs[0]:
+            g.problem(g.at("z"), f"the ring (gear 2) must have more teeth than the pinion: z = {list(zs)}")
+        if internal and meshing is not None:
+            g.problem(g.at("internal"), 'a pair says which gear is a ring by meshing = "internal"')
+    a_w = g.scalar("centre_distance", "length", required=False, positive=True)
+    if a_w is not None and meshing is None:
+        g.problem(g.at(g.present("centre_distance") or "centre_distance"), "one gear has no centre distance: "
+                                                                          "give z = [z1, z2] and meshing")
+    ks = _span_teeth(g, count, zs)
+    pins = _per_gear(g, "pin_diameter", count, None, kind="length")
+    g.finish()
+    if len(g.problems) > bad or None in (m, alpha, ha, c, zs, xs, ks, pins) or zs is None or xs is None:
+        return None
+    assert m is not None and alpha is not None and ha is not None and c is not None and ks is not None \
+        and pins is not None
+    ring = [meshing == "internal" and i == 1 or (meshing is None and bool(internal)) for i in range(len(zs))]
+    gears = tuple(SpurGear(z, float(x), r) for z, x, r in zip(zs, xs, ring))
+    system = ToothSystem(m, alpha, ha, c)
+    return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins))
+
+
+def _coefficient(g: Reader, key: str, default: float, lo: float, hi: float) -> float | None:
+    value = g.raw(key)
+    if value is MISSING:
+        return default
+    x = g.number(value, g.at(key))
+    if x is not None and not lo <= x <= hi:
+        g.problem(g.at(key), f"{x:g} is outside {lo:g} … {hi:g}")
+        return None
+    return x
+
+
+def _teeth(g: Reader) -> tuple[int, ...] | None:
+    value = g.raw("z", required=True, hint="the tooth number: z = 20, or z = [z1, z2] for a pair")
+    if value is MISSING:
+        return None
+    items = value if isinstance(value, list) else [value]
+    path = g.at("z")
+    if isinstance(value, list) and not 1 <= len(value) <= 2:
+        g.problem(path, f"one or two tooth numbers, not {len(value)}")
+        return None
+    out = []
+    for i, v in enumerate(items):
+        p = g.at("z") + (f"[{i}]" if isinstance(value, list) else "")
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or (isinstance(v, float) and not v.is_integer()):
+            g.problem(p, "a tooth number is a whole number, not "
+                        + (f"{v:g}" if isinstance(v, float) else type_name(v)))
+            return None
+        z = int(v)
+        if not 1 <= z <= MAX_Z:
+            g.problem(p, f"a gear needs at least 1 tooth and at most {MAX_Z}, not {z}")
+            return None
+        out.append(z)
+    return tuple(out)
+
+
+def _per_gear(g: Reader, base: str, count: int, default: float | None, kind: str | None = None
+              ) -> tuple[float | None, ...] | None:
+    """One value for every gear or a list of ``count``: a shift (plain number) or a length."""
+    if kind is None:
+        value = g.raw(base)
+        if value is MISSING:
+            return (default,) * count
+        path = g.at(base)
+        si = 1.0
+    else:
+        given = g.quantity(base, kind, required=False)
+        if given is None:
+            return (default,) * count if g.present(base) is None else None
+        value, path, si = given.value, g.at(given.key), given.si(1.0)
+    if isinstance(value, list):
+        xs = g.numbers(value, path, count, positive=kind is not None)
+        if xs is None:
+            return None
+        out: tuple[float | None, ...] = tuple(x * si for x in xs)
+    else:
+        x = g.number(value, path, positive=kind is not None)
+        if x is None:
+            return None
+        out = (x * si,) * count
+    if kind is None and any(v is not None and abs(v) > MAX_SHIFT for v in out):
+        g.problem(path, f"a shift coefficient beyond ±{MAX_SHIFT:g} is no gear's")
+        return None
+    if kind is not None and any(v is not None and not 1e-9 <= v <= 100.0 for v in out):
+        g.problem(path, "an absurd pin diameter (1e-6 mm … 100 m)")
+        return None
+    return out
+
+
+def _span_teeth(g: Reader, count: int, zs: tuple[int, ...] | None) -> tuple[int | None, ...] | None:
+    value = g.raw("span_teeth")
+    if value is MISSING:
+        return (None,) * count
+    items = value if isinstance(value, list) else [value] * count
+    if len(items) != count:
+        g.problem(g.at("span_teeth"), f"one k per gear ({count}), not {len(items)}")
+        return None
+    out: list[int | None] = []
+    for i, v in enumerate(items):
+        path = g.at("span_teeth") + (f"[{i}]" if isinstance(value, list) else "")
+        if isinstance(v, bool) or not isinstance(v, int):
+            g.problem(path, f"k is a whole number of teeth, not {say(v) if isinstance(v, (int, float)) else type_name(v)}")
+            return None
+        z = zs[i] if zs is not None and i < len(zs) else None
+        if v < 1 or (z is not None and v >= z):
+            g.problem(path, f"the span covers 1 … z − 1 teeth{f' (z = {z})' if z is not None else ''}, not {v}")
+            return None
+        out.append(v)
+    return tuple(out)
+
+
+__all__ = ["AT_RADIUS", "GEAR_SHOW_CHOICES", "GearScene", "PAIR_QUANTITIES", "SET_QUANTITIES", "TOOTH_QUANTITIES",
+           "known_names", "parse_gear_scene", "quantity_unit"]

@@ -1,0 +1,97 @@
+"""The protocol of a gear scene, as the book words the construction: the circles from m, z, α,
+h*a, c*, x; the involute by points (divide the base circle, draw the tangents, lay the unwound
+arcs off along them); for a pair, O₁O₂ = a′, the line of action tangent to both base circles,
+B₁ and B₂ where the tip circles cut it, ε = B₁B₂/p_b — each value read off the check's rows.
+"""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from graphmech.exact import gear as ex  # the circles' sizes are definitions, not constructions
+from graphmech.problems.gears.check import GearAnalysis, analyse
+from graphmech.problems.judging import Row
+from graphmech.problems.protocol import PHRASES as COMMON
+from graphmech.problems.protocol import Phrases, num, phrase, read_row, scale_choice
+
+if TYPE_CHECKING:
+    from graphmech.problems.gears.scene import GearScene
+    from graphmech.problems.reader import Scene
+
+#: The gear protocol's phrases: key → (English, 中文 (孙桓), русский).
+PHRASES: Phrases = {
+    **COMMON,
+    "circles": ("gear{g}: z = {z}, x = {x}: d = mz = {d} mm, d_b = d·cos α = {db} mm, d_a = {da} mm, d_f = {df} mm",
+                "齿轮{g}：z = {z}，x = {x}：d = mz = {d} mm，d_b = d·cos α = {db} mm，d_a = {da} mm，d_f = {df} mm",
+                "колесо{g}: z = {z}, x = {x}: d = mz = {d} mm, d_b = d·cos α = {db} mm, d_a = {da} mm, "
+                "d_f = {df} mm"),
+    "choose": ("choose {mu}", "取{mu}", "выбираем {mu}"),
+    "involute": ("the involute by points: divide the base circle from the flank's start, at each division N draw "
+                 "the tangent and lay off along it the arc unwound from the start (NK = arc); join the points K",
+                 "用展成点法作渐开线：自齿廓起点将基圆等分，过各分点N作基圆切线，在切线上量取NK等于相应的弧长，"
+                 "光滑连接各K点",
+                 "эвольвенту строим по точкам: делим основную окружность от начала профиля, в каждой точке деления N "
+                 "проводим касательную и откладываем на ней длину развёрнутой дуги (NK = дуга); соединяем точки K"),
+    "radius": ("at r_k = {r} mm: the tangent from K to the base circle touches at N, NK = √(r_k² − r_b²)",
+               "在r_k = {r} mm处：自K作基圆切线，切点N，NK = √(r_k² − r_b²)",
+               "при r_k = {r} mm: касательная из K к основной окружности касается её в N, NK = √(r_k² − r_b²)"),
+    "pair": ("draw O₁O₂ = a′ = {aw} mm, the base circles, and their common tangent N₁N₂ through P (the line of "
+             "action); α′ is its angle with the common tangent of the pitch circles",
+             "作O₁O₂ = a′ = {aw} mm及两基圆，作两基圆的内公切线N₁N₂（啮合线），交O₁O₂于节点P；"
+             "N₁N₂与节圆公切线的夹角即啮合角α′",
+             "проводим O₁O₂ = a′ = {aw} mm, основные окружности и их общую касательную N₁N₂ через P (линию "
+             "зацепления); α′ — её угол с общей касательной начальных окружностей"),
+    "tips": ("the tip circle of gear 2 cuts N₁N₂ at B₂ (contact begins), that of gear 1 at B₁ (contact ends)",
+             "从动轮2的齿顶圆与N₁N₂交于B₂（开始啮合点），主动轮1的齿顶圆与N₁N₂交于B₁（终止啮合点）",
+             "окружность выступов колеса 2 пересекает N₁N₂ в B₂ (начало зацепления), колеса 1 — в B₁ (конец)"),
+    "zones": ("lay p_b = {pb} mm off from B₁ and from B₂: two pairs are in contact at the ends (each (ε − 1)p_b), "
+              "one pair in the middle ((2 − ε)p_b)",
+              "自B₁、B₂分别量取p_b = {pb} mm：两端各(ε − 1)p_b为两对齿啮合区，中间(2 − ε)p_b为单对齿啮合区",
+              "от B₁ и B₂ откладываем p_b = {pb} mm: у концов (по (ε − 1)p_b) — двухпарное зацепление, "
+              "в середине ((2 − ε)p_b) — однопарное"),
+    "eps": ("ε = B₁B₂/p_b = {eps}", "ε = B₁B₂/p_b = {eps}", "ε = B₁B₂/p_b = {eps}"),
+    "not continuous": ("ε < 1: the drive is not continuous", "ε < 1：传动不连续", "ε < 1: передача не непрерывна"),
+}
+
+
+def gear_steps(scene: Scene[GearScene]) -> list[str]:
+    """The protocol of a gear scene, one line per step (not numbered)."""
+    return protocol(analyse(scene, ()))
+
+
+def protocol(an: GearAnalysis) -> list[str]:
+    """The steps of an analysed gear scene."""
+    notation = getattr(an.scene.page, "notation", "en")
+    s = an.gears.system
+    rows: dict[str, Row] = {r.name: r for r in an.rows}
+
+    def say(key: str, **fields: str) -> str:
+        return phrase(key, notation, PHRASES, **fields)
+
+    out = []
+    for label in an.problem.labels:
+        g = an.gear(label)
+        t = ex.tooth(s, g)
+        out.append(say("circles", g=f" {label}" if label else "", z=str(g.z), x=num(g.x), d=num(t.d * 1000),
+                       db=num(t.db * 1000), da=num(t.da * 1000), df=num(t.df * 1000)))
+    for key in an.scales:
+        out.append(say("choose", mu=scale_choice(key, an.scales[key], key in an.stated, notation)))
+    if an.radii or an.pointed or an.spans or an.pins:
+        out.append(say("involute"))
+    for (_label, r) in an.radii:
+        out.append(say("radius", r=num(r * 1000)))
+    if an.mesh is not None:
+        out.append(say("pair", aw=num(an.mesh.a_w * 1000)))
+        out.append(say("tips"))
+        if 1.0 <= an.mesh.eps_alpha < 2.0:
+            out.append(say("zones", pb=num(an.mesh.pb * 1000)))
+    for name in an.names:
+        if name in rows:
+            out.append(read_row(rows[name], notation))
+    if an.mesh is not None:
+        out.append(say("eps", eps=num(an.mesh.eps_alpha)))
+        if an.mesh.eps_alpha < 1.0:
+            out.append(say("not continuous"))
+    return out
+
+
+__all__ = ["gear_steps", "protocol"]

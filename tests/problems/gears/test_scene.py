@@ -1,0 +1,98 @@
+"""Reading the [gear] table: the set in SI; each bad scene refused in one line naming its key."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from graphmech.mechanisms.gear import SpurGear
+from graphmech.problems.gears.scene import GearScene, known_names, quantity_unit
+from graphmech.scene import load_scene, parse_scene
+from tests.conftest import SCENES
+from tests.scenes import only_problem
+
+import tomllib
+
+
+def read(text: str) -> GearScene:
+    scene = parse_scene(tomllib.loads(text), "g.toml")
+    assert scene.kind == "gears"
+    return scene.problem
+
+
+def test_one_gear_in_si_with_the_book_defaults():
+    p = read("[gear]\nm_mm = 8\nz = 20\n")
+    s = p.gears.system
+    assert (s.m, s.alpha, s.ha_star, s.c_star) == (0.008, math.radians(20.0), 1.0, 0.25)
+    assert p.gears.gears == (SpurGear(20),) and p.gears.meshing is None and p.labels == ("",)
+
+
+def test_pairs_internal_and_rack():
+    p = read('[gear]\nm_cm = 0.4\nz = [20, 80]\nx = [0.1, -0.2]\nmeshing = "internal"\ncentre_distance_mm = 121\n')
+    assert p.gears.gears == (SpurGear(20, 0.1), SpurGear(80, -0.2, internal=True))
+    assert p.gears.system.m == pytest.approx(0.004) and p.gears.centre_distance == pytest.approx(0.121)
+    assert p.labels == ("1", "2")
+    r = read('[gear]\nm_mm = 4\nz = [18]\nmeshing = "rack"\n')
+    assert r.gears.gears == (SpurGear(18),) and r.labels == ("1",)
+    ring = read("[gear]\nm_mm = 4\nz = 60\ninternal = true\n")
+    assert ring.gears.gears == (SpurGear(60, 0.0, internal=True),)
+
+
+def test_span_and_pins_per_gear():
+    p = read('[gear]\nm_mm = 5\nz = [18, 40]\nmeshing = "external"\nspan_teeth = [3, 5]\npin_diameter_mm = 8\n')
+    assert p.span_teeth == (3, 5) and p.pin_diameter == pytest.approx((0.008, 0.008))
+
+
+@pytest.mark.parametrize("name, unit", [("da2", "m"), ("alpha_a1", "deg"), ("s_k1@85", "m"), ("alpha_k2@200.5", "deg"),
+                                        ("B1B2", "m"), ("eps_alpha", ""), ("eta_root2", ""), ("z_root_eq_base", "")])
+def test_pair_names(name, unit):
+    p = read('[gear]\nm_mm = 5\nz = [19, 42]\nmeshing = "external"\n')
+    assert quantity_unit(name, p) == unit
+
+
+@pytest.mark.parametrize("name", ["da", "s_k@85", "B1B2x", "da3", "s_k1@x", "rw2"])
+def test_names_a_scene_does_not_have(name):
+    rack = read('[gear]\nm_mm = 5\nz = [19]\nmeshing = "rack"\n')
+    assert quantity_unit(name, rack) is None
+    assert "rw2" not in known_names(rack) and "rw1" in known_names(rack)
+
+
+@pytest.mark.parametrize("body, where, words", [
+    ("z = [19, 42]\nm_mm = 5", "gear.meshing", "needs meshing"),
+    ('z = [0]\nm_mm = 5\nmeshing = "rack"', "gear.z[0]", "at least 1 tooth"),
+    ("z = 20.5\nm_mm = 5", "gear.z", "whole number, not 20.5"),
+    ("z = 20\nm = 5", "gear.m", "unit not stated"),
+    ('z = [20, 10]\nm_mm = 5\nmeshing = "internal"', "gear.z", "more teeth than the pinion"),
+    ("z = 20\nm_mm = 5\ncentre_distance_mm = 100", "gear.centre_distance_mm", "no centre distance"),
+    ('z = [20, 30]\nm_mm = 5\nmeshing = "external"\nspan_teeth = [3, 40]', "gear.span_teeth[1]", "1 … z − 1"),
+    ('z = [20, 30]\nm_mm = 5\nmeshing = "external"\nx = [0, 11]', "gear.x", "±10"),
+    ('z = [20, 30]\nm_mm = 5\nmeshing = "helical"', "gear.meshing", "use external, internal or rack"),
+    ('z = [20, 30, 40]\nm_mm = 5\nmeshing = "external"', "gear.z", "one or two"),
+    ("z = 20\nm_mm = 5\nalpha_deg = 60", "gear.alpha_deg", "no involute gear's"),
+    ("z = 20\nm_mm = 0", "gear.m_mm", "> 0"),
+    ("z = 20\nm_mm = 5\nha_star = -1", "gear.ha_star", "outside"),
+    ('z = 20\nm_mm = 5\nmeshing = "external"\n', "gear.z", "needs z = [z1, z2]"),
+    ('z = [20, 30]\nm_mm = 5\nmeshing = "rack"\n', "gear.z", "z = [z1]"),
+    ("z = 20\nm_mm = 5\npin_diameter_mm = -3", "gear.pin_diameter_mm", "> 0"),
+    ("z = 20\nm_mm = 5\nfoo = 1", "gear.foo", "unknown key"),
+])
+def test_bad_gear_tables_are_refused_in_one_line(body, where, words):
+    path, reason = only_problem(f"[gear]\n{body}\n", "g.toml")
+    assert path == where and words in reason, (path, reason)
+
+
+@pytest.mark.parametrize("find, words", [('["eps"]', "did you mean eps_alpha"), ('["s_k@abc"]', "number of mm"),
+                                         ('["B1B2"]', "belongs to a pair")])
+def test_unknown_names_are_refused_naming_find(find, words):
+    path, reason = only_problem(f"find = {find}\n[gear]\nz = 20\nm_mm = 5\n", "g.toml")
+    assert path == "find[0]" and words in reason, reason
+
+
+def test_a_linkage_table_in_a_gear_scene_is_refused():
+    path, reason = only_problem('[gear]\nz = 20\nm_mm = 5\n[frame]\nA_mm = [0, 0]\n', "g.toml")
+    assert path == "frame" and "gear scene" in reason
+
+
+def test_reference_scenes_read():
+    for name in ("gear.involute_z20_m8", "gear.contact_ratio_19_42", "gear.root_circle_equals_base_circle"):
+        assert load_scene(SCENES / f"{name}.toml").kind == "gears"
