@@ -162,10 +162,17 @@ def _unknown(name: str, problem: GearScene) -> str:
         return f"{say(name)} belongs to a pair of gears: give z = [z1, z2] and meshing"
     what = "one gear" if not problem.gears.pair else f"an {problem.gears.meshing} pair" \
         if problem.gears.meshing == "external" or problem.gears.meshing == "internal" else "a rack and pinion"
-    hint = close_names(base, known_names(problem))
-    if not hint and not problem.gears.pair and close_names(base, PAIR_QUANTITIES):
-        hint = close_names(base, PAIR_QUANTITIES) + " (a pair's: give z = [z1, z2] and meshing)"
+    hint = _close(base, known_names(problem))
+    if not hint and not problem.gears.pair and _close(base, PAIR_QUANTITIES):
+        hint = _close(base, PAIR_QUANTITIES) + " (a pair's: give z = [z1, z2] and meshing)"
     return f"unknown gear quantity {say(name)} for {what}{hint}"
+
+
+def _close(base: str, names: Any) -> str:
+    """'; did you mean …?' by spelling, or by a name that begins with what was written (eps → eps_alpha)."""
+    hint = close_names(base, names)
+    starts = sorted(n for n in names if n.startswith(base) and len(base) >= 2)
+    return hint or (f"; did you mean {', '.join(starts[:3])}?" if starts else "")
 
 
 def _read_gear(g: Reader) -> GearScene | None:
