@@ -168,14 +168,14 @@ def _warn(an: GearAnalysis) -> None:
         g = an.gear(label)
         name = f"gear {label}" if label else "the gear"
         if not g.internal:
-            z_min, x_min, undercut = ex.undercut(s, g)
-            if undercut:
+            u = ex.undercut(s, g)
+            if u.undercut:
                 an.warnings.append(f"{name} (z = {g.z}, x = {g.x:g}) is undercut by a rack cutter: z < z_min = "
-                                   f"{z_min:.4g} for this shift (x_min = {x_min:.4g}); the fillet cuts into the "
-                                   "involute above the base circle")
+                                   f"{u.z_min_exact:.4g} for this shift (x_min = {u.x_min_exact:.4g}); the fillet "
+                                   "cuts into the involute above the base circle")
         t = ex.tooth(s, g)
         if t.sa is not None and t.sa <= 0.0:
-            ra = ex.pointed_tip(s, g)[0]
+            ra = ex.pointed_tip(s, g).ra_pointed
             an.warnings.append(f"{name}'s tooth is pointed below its tip circle (at r = {ra * 1000:.4g} mm): s_a "
                                "would be negative")
         elif t.sa is not None and t.sa < SA_MIN * s.m:
@@ -311,12 +311,12 @@ def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float) -> tuple[fl
             except (OutOfDomain, NotApplicable, NoSolution) as err:
                 raise _refuse(an, err, "find") from None
         c = an.pointed[label]
-        ra, alpha, invv = ex.pointed_tip(s, g)
+        e = ex.pointed_tip(s, g)
         if stem == "ra_pointed":
-            return c.r_k, ra, c.r_k / mu, mu
+            return c.r_k, e.ra_pointed, c.r_k / mu, mu
         if stem == "alpha_a_pointed":
-            return c.alpha_k, alpha, None, 1.0
-        return c.theta_k, invv, None, 1.0
+            return c.alpha_k, e.alpha_a_pointed, None, 1.0
+        return c.theta_k, e.inv_alpha_a_pointed, None, 1.0
     if stem == "W":
         if g.internal:
             raise SceneError([("find", f"W{label}: a ring's span cannot be measured with a caliper: measure over "
@@ -337,7 +337,7 @@ def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float) -> tuple[fl
     want_d = d_pin if d_pin is not None else ex.pin_diameter(s, g)
     if stem == "d_pin":
         return c2.d_pin, want_d, c2.d_pin / mu, mu
-    return c2.M, ex.over_pins(s, g, want_d)[1], c2.M / mu, mu
+    return c2.M, ex.over_pins(s, g, want_d).M, c2.M / mu, mu
 
 
 def _pair_value(an: GearAnalysis, stem: str) -> tuple[float, float, float | None, float] | None:
@@ -371,8 +371,10 @@ def _pair_value(an: GearAnalysis, stem: str) -> tuple[float, float, float | None
             return None
         return got_z, want_z, got_z / mu_z, mu_z
     if stem.startswith("eta_"):
-        got_eta = _sliding(an, c, stem)
-        return got_eta, getattr(e, stem), None, 1.0
+        want_eta = getattr(e, stem)
+        if want_eta is None:  # a contact at N: the radius of curvature there is 0, the sliding infinite
+            return None
+        return _sliding(an, c, stem), want_eta, None, 1.0
     if stem == "backlash":
         if c.backlash is None or e.backlash is None:
             return None

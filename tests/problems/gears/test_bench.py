@@ -1,0 +1,28 @@
+"""The gear benchmark's records: the involute by points converges as 1/n², the meshing is exact
+(speed is measured there, not here)."""
+from __future__ import annotations
+
+import math
+
+from graphmech.problems.gears.bench import bench, gear_records
+
+REQUIRED = {"method", "case", "n", "seconds", "max_rel_error"}
+
+
+def test_records_and_the_involutes_order_of_convergence():
+    recs = gear_records(repeat=1, points=(8, 16, 32, 64))
+    assert all(REQUIRED <= set(r) for r in recs)
+    inv = [r for r in recs if r["method"] == "involute"]
+    assert [r["n"] for r in inv] == [8, 16, 32, 64]
+    for a, b in zip(inv, inv[1:]):
+        order = math.log(a["max_rel_error"] / b["max_rel_error"]) / math.log(2)
+        assert 1.8 < order < 2.2, (a, b)  # the chords' sag ~ 1/n²
+    assert inv[-1]["max_rel_error"] < 1e-3
+    mesh = [r for r in recs if r["method"] == "gear-mesh"]
+    assert {r["case"] for r in mesh} >= {"contact-ratio-19-42", "internal-20-80", "rack-z18"}
+    assert max(r["max_rel_error"] for r in mesh) < 1e-9
+
+
+def test_quick_bench_notes():
+    records, notes = bench(quick=True)
+    assert records and any("n^−2" in n for n in notes)
