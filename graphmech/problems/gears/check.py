@@ -153,7 +153,6 @@ def _mesh(an: GearAnalysis) -> gmesh.MeshConstruction:
     if an.mesh is None:
         key = "gear.centre_distance" if an.gears.centre_distance is not None else "gear"
         try:
-            an.exact_mesh = ex.meshing(an.gears)
             an.mesh = gmesh.construct_meshing(an.gears)
         except (NoSolution, NotApplicable, OutOfDomain) as err:
             raise _refuse(an, err, key) from None
@@ -185,10 +184,12 @@ def _warn(an: GearAnalysis) -> None:
             an.warnings.append(f"{name} is a ring whose tip circle (r_a = {t.da * 500:.4g} mm) lies inside its base "
                                f"circle (r_b = {t.db * 500:.4g} mm): its teeth are not involute there")
     if an.gears.pair:
-        em = ex.meshing(an.gears)
-        an.exact_mesh = em
-        for note in em.notes:
-            an.warnings.append(note)
+        key = "gear.centre_distance" if an.gears.centre_distance is not None else "gear"
+        try:
+            an.exact_mesh = ex.meshing(an.gears)
+        except (NoSolution, NotApplicable, OutOfDomain) as err:
+            raise _refuse(an, err, key) from None
+        an.warnings.extend(an.exact_mesh.notes)
 
 
 def _choose_scales(an: GearAnalysis) -> None:

@@ -24,7 +24,10 @@ PHRASES: Phrases = {
                 "齿轮{g}：z = {z}，x = {x}：d = mz = {d} mm，d_b = d·cos α = {db} mm，d_a = {da} mm，d_f = {df} mm",
                 "колесо{g}: z = {z}, x = {x}: d = mz = {d} mm, d_b = d·cos α = {db} mm, d_a = {da} mm, "
                 "d_f = {df} mm"),
-    "choose": ("choose {mu}", "取{mu}", "выбираем {mu}"),
+    "choose": ("choose {mu}{panel}", "取{mu}{panel}", "выбираем {mu}{panel}"),
+    "for l": ("", "", ""),
+    "for tooth": (" for the teeth", "（画轮齿）", " для зубьев"),
+    "for zones": (" for the contact zones", "（画啮合区）", " для зон зацепления"),
     "involute": ("the involute by points: divide the base circle from the flank's start, at each division N draw "
                  "the tangent and lay off along it the arc unwound from the start (NK = arc); join the points K",
                  "用展成点法作渐开线：自齿廓起点将基圆等分，过各分点N作基圆切线，在切线上量取NK等于相应的弧长，"
@@ -74,7 +77,8 @@ def protocol(an: GearAnalysis) -> list[str]:
         out.append(say("circles", g=f" {label}" if label else "", z=str(g.z), x=num(g.x), d=num(t.d * 1000),
                        db=num(t.db * 1000), da=num(t.da * 1000), df=num(t.df * 1000)))
     for key in an.scales:
-        out.append(say("choose", mu=scale_choice(key, an.scales[key], key in an.stated, notation)))
+        out.append(say("choose", mu=scale_choice(key, an.scales[key], key in an.stated, notation),
+                       panel=say(f"for {key}")))
     if an.radii or an.pointed or an.spans or an.pins:
         out.append(say("involute"))
     for (_label, r) in an.radii:
