@@ -28,17 +28,36 @@ Every size fixed here is paper millimetres.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
-from typing import Iterable, Sequence
+from itertools import pairwise
 
 from graphmech.drawing.lettering import LETTER, number, scale_text
 from graphmech.drawing.notation import word
-from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Polyline, Primitive, Segment,
-                                          Sheet, Text, angle_arc)
+from graphmech.drawing.primitives import (
+    ArcArrow,
+    Arrow,
+    Circle,
+    Hinge,
+    Label,
+    Panel,
+    Polyline,
+    Primitive,
+    Segment,
+    Sheet,
+    Text,
+    angle_arc,
+)
 from graphmech.errors import OutOfDomain
 from graphmech.mechanisms.gear import GearSet, SpurGear
 from graphmech.methods.gear_meshing import MeshConstruction
-from graphmech.methods.involute import AtRadius, Flank, PinMeasurement, SpanMeasurement, ToothOutline
+from graphmech.methods.involute import (
+    AtRadius,
+    Flank,
+    PinMeasurement,
+    SpanMeasurement,
+    ToothOutline,
+)
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]  # xmin, ymin, xmax, ymax (mm)
@@ -87,7 +106,7 @@ DOT = 0.35
 NUMBER_GAP = 4.5
 #: The zone band's height above B₁B₂ and its hatching's spacing; dimension rows below, mm.
 BAND, HATCH = 4.0, 1.5
-DIM_ROWS = (-7.0, -15.0, -23.0, -31.0)
+DIM_ROWS = (-11.0, -19.0, -27.0, -35.0)
 #: The root–base diagram's width, mm.
 DIAGRAM_W = 120.0
 
@@ -172,7 +191,7 @@ def arc_points(c: XY, r: float, a0: float, a1: float) -> tuple[XY, ...]:
     >>> len(arc_points((0.0, 0.0), 10.0, 0.0, math.pi / 2))
     33
     """
-    n = min(ARC_MOST, max(2, int(math.ceil(abs(a1 - a0) * r / CHORD))))
+    n = min(ARC_MOST, max(2, math.ceil(abs(a1 - a0) * r / CHORD)))
     return tuple(_polar(r, a0 + (a1 - a0) * k / n, c) for k in range(n + 1))
 
 
@@ -362,7 +381,7 @@ def _numbers(points: Sequence[XY]) -> list[int]:
         return []
     for k in range(1, n + 1):
         idx = list(range(0, n, k))
-        if all(math.dist(points[a], points[b]) >= NUMBER_GAP for a, b in zip(idx, idx[1:])):
+        if all(math.dist(points[a], points[b]) >= NUMBER_GAP for a, b in pairwise(idx)):
             return idx
     return [0]
 
@@ -395,7 +414,7 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
     z = gear.z
     runs = [tuple(_sc(p, mu) for p in r) for r in outline_runs(t)]
     i0 = _tooth0(t)
-    left, right = t.teeth[i0]
+    right = t.teeth[i0][1]
     step = math.tau / z
     # the construction by points on the left flank of the rightmost tooth drawn (its strings run
     # off to the right), ρ and α_k on the right flank of the leftmost (theirs run off to the
@@ -476,16 +495,16 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
     side = (-math.sin(a_sp) * sgn, math.cos(a_sp) * sgn)
     items += dimension(at_r, ha_end, "h_{a}", side) + dimension(hf_end, at_r, "h_{f}", side)
     # α_k at the other stated radii: at K between the normal NK and the velocity ⟂ OK
-    for a in mine:
-        if a is ref_l or a is tip_l or abs(a.r_k - t.rb) <= 1e-9 * t.rb:
+    for ak in mine:
+        if ak is ref_l or ak is tip_l or abs(ak.r_k - t.rb) <= 1e-9 * t.rb:
             continue
-        items += _alpha_k(a, mu)
-    for a in pointed:
-        k = _sc(a.K_left, mu)
-        items += clipped_circle(O, a.r_k / mu, window, "construction", dashed=True)
+        items += _alpha_k(ak, mu)
+    for pt in pointed:  # the flanks meet at K: the tip circle may not pass this radius
+        k = _sc(pt.K_left, mu)
+        items += clipped_circle(O, pt.r_k / mu, window, "construction", dashed=True)
         items.append(Circle(k, 2.0 * DOT, "result"))
-        labels.append(_label(f"{word('pointed', notation, WORDS)}: r = {_mm(a.r_k)}", k, ((0.0, -1.0),), LETTER,
-                            italic=False))
+        labels.append(_label(f"{word('pointed', notation, WORDS)}: r = {_mm(pt.r_k)}", k, ((0.0, -1.0),), LETTER,
+                             italic=False))
     if t.undercut:
         at = _sc(right.points[0], mu) if right.points else _polar(t.rb / mu, math.pi / 2.0)
         labels.append(_label(word("undercut", notation, WORDS), at, ((0.0, 1.0), (-1.0, 0.0)), LETTER, italic=False))
@@ -564,7 +583,6 @@ def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
         if internal:
             circles.append((O2, _ring_rim(gears) / mu, False))
     # the window: the whole gears when they fit, else around the line of action
-    ends = [N1, P, B1, B2] + ([N2] if N2 is not None else [])
     whole = _box([p for c, r, _ in circles for p in ((c[0] - r, c[1] - r), (c[0] + r, c[1] + r))], MARGIN)
     if rack:
         y_ref, _ = _rack_lines(m, gears)
@@ -572,10 +590,12 @@ def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
                      0.0)
     if whole[2] - whole[0] <= WHOLE_MOST and whole[3] - whole[1] <= WHOLE_MOST:
         window = whole
-    else:
-        core = _box(ends)
-        grow = max(3.0 * MARGIN, 0.25 * max(core[2] - core[0], core[3] - core[1]))
-        window = _box(ends, grow)
+    else:  # about B₁B₂ and P; N₁, N₂ shown if near, else the line runs out of the window towards them
+        core = _box([P, B1, B2])
+        grow = max(4.0 * MARGIN, 0.5 * max(core[2] - core[0], core[3] - core[1]))
+        window = _box([P, B1, B2], grow)
+        near = [q for q in (N1, N2) if q is not None and _inside(q, _box([P, B1, B2], 2.0 * grow))]
+        window = _box([(window[0], window[1]), (window[2], window[3])] + near, 0.0 if not near else MARGIN)
     items: list[Primitive] = []
     labels: list[Primitive] = []
     for c, r, dd in circles:
@@ -597,10 +617,10 @@ def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
         items.append(Segment(seg[0], seg[1], "construction", dashdot=True))
     # the line of action N₁N₂ thin, B₁B₂ bold; a rack's runs on past B₂ to its reference line
     u = _unit(_sub(P, N1))
-    if N2 is not None:
-        items.append(Segment(N1, N2, "label"))
-    else:
-        items.append(Segment(N1, _add(P, u, max(math.dist(P, B1), 10.0) + 6.0), "label"))
+    far_end = N2 if N2 is not None else _add(P, u, max(math.dist(P, B1), 10.0) + 6.0)
+    seg = clipped_segment(N1, far_end, window)
+    if seg is not None:
+        items.append(Segment(seg[0], seg[1], "label"))
     items.append(Segment(B2, B1, "result"))
     # the common tangent at P and α′ against it
     t = (1.0, 0.0) if u[0] >= 0.0 else (-1.0, 0.0)
@@ -617,7 +637,7 @@ def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
             items.append(Hinge(p))
             labels.append(_label(name, p, ((0.0, 1.0), (0.0, -1.0)), LETTER))
     for name, p in (("P", P), ("N_{1}", N1), ("N_{2}", N2), ("B_{1}", B1), ("B_{2}", B2)):
-        if p is not None:
+        if p is not None and _inside(p, window):
             items.append(Circle(p, 2.0 * DOT, "result"))
             labels.append(_label(name, p, (u, _neg(u)), LETTER))
     # senses: ω₁ clockwise about O₁; ω₂ counter-clockwise (external), clockwise (ring), v₂ (rack)
@@ -732,8 +752,8 @@ def _hdim(x0: float, x1: float, y: float, text: str) -> list[Primitive]:
 
 def zones_notes(drawing: GearDrawing, m: MeshConstruction) -> tuple[str, ...]:
     notes = [scale_text("l", drawing.scales["zones"]),
-             f"p_{{b}} = {_mm(m.pb)}, B_{{1}}B_{{2}} = {_mm(m.B1B2)}, ε_{{α}} = B_{{1}}B_{{2}}/p_{{b}} = "
-             f"{number(m.eps_alpha)}"]
+             (f"p_{{b}} = {_mm(m.pb)}, B_{{1}}B_{{2}} = {_mm(m.B1B2)}, ε_{{α}} = B_{{1}}B_{{2}}/p_{{b}} = "
+              f"{number(m.eps_alpha)}")]
     if m.double_contact is not None and m.single_contact is not None:
         notes.append(f"(ε_{{α}}−1)p_{{b}} = {_mm(m.double_contact)}, (2−ε_{{α}})p_{{b}} = {_mm(m.single_contact)}")
     return tuple(notes)
@@ -752,7 +772,7 @@ def span_items(drawing: GearDrawing, name: str, sp: SpanMeasurement) -> list[Pri
     if t is not None:
         a1, a2 = sorted((_angle(sp.K1), _angle(sp.K2)))
         step = math.tau / z
-        js = range(int(math.floor((a1 - math.pi / 2) / step)) - 1, int(math.ceil((a2 - math.pi / 2) / step)) + 2)
+        js = range(math.floor((a1 - math.pi / 2) / step) - 1, math.ceil((a2 - math.pi / 2) / step) + 2)
         line = tuple(_sc(p, mu) for p in replicated(t, z, list(js)))
         if len(line) >= 2:
             items.append(Polyline(line, "result"))
@@ -797,7 +817,7 @@ def pins_items(drawing: GearDrawing, name: str, pm: PinMeasurement) -> tuple[lis
             js: list[int] = list(range(z))
         else:
             a = _angle(pm.centres[0]) - math.pi / 2.0
-            j0 = int(round(a / (math.tau / z)))
+            j0 = round(a / (math.tau / z))
             js = [j0 - 2, j0 - 1, j0, j0 + 1, j0 + 2]
         line = tuple(_sc(p, mu) for p in replicated(t, z, js))
         if len(line) >= 2:
@@ -821,7 +841,7 @@ def pins_items(drawing: GearDrawing, name: str, pm: PinMeasurement) -> tuple[lis
             e0, e1 = _add(C[0], d, rp), _add(C[1], d, -rp)
         else:
             e0, e1 = _add(C[0], d, -rp), _add(C[1], d, rp)
-        off = rp + 8.0
+        off = (max(t.ra, t.rf) / mu if t is not None else reach) + 8.0  # beside the gear, parallel to the pins' line
         for e in (e0, e1):
             items.append(Segment(e, _add(e, n, off + 1.5), "label"))
         items += dimension(_add(e0, n, off), _add(e1, n, off), f"M = {_mm(pm.M)}", n)
@@ -949,7 +969,7 @@ def gear_sheet(title: str, show: Sequence[str], drawing: GearDrawing, page: tupl
                                 (("l", mu),)))
         for name, pm in drawing.pins:
             items, whole = pins_items(drawing, name, pm)
-            notes = (scale_text("l", mu), f"d_{{p}} = {_mm(pm.d_pin)}, M = {_mm(pm.M)}")
+            notes: tuple[str, ...] = (scale_text("l", mu), f"d_{{p}} = {_mm(pm.d_pin)}, M = {_mm(pm.M)}")
             if not whole:
                 notes += (word("not to scale", notation, WORDS),)
             panels.append(Panel(f"pins{name}", _caption("pins", name, notation), tuple(items), notes, row,
@@ -961,6 +981,23 @@ def gear_sheet(title: str, show: Sequence[str], drawing: GearDrawing, page: tupl
     return Sheet(title, tuple(panels), page, footer)
 
 
-__all__ = ["GearDrawing", "PANELS", "WORDS", "arc_dimension", "arc_points", "circle_in", "clipped_circle",
-           "clipped_segment", "dimension", "gear_sheet", "meshing_items", "outline_runs", "pins_items",
-           "replicated", "root_base_items", "span_items", "tooth_items", "zones_items"]
+__all__ = [
+    "PANELS",
+    "WORDS",
+    "GearDrawing",
+    "arc_dimension",
+    "arc_points",
+    "circle_in",
+    "clipped_circle",
+    "clipped_segment",
+    "dimension",
+    "gear_sheet",
+    "meshing_items",
+    "outline_runs",
+    "pins_items",
+    "replicated",
+    "root_base_items",
+    "span_items",
+    "tooth_items",
+    "zones_items",
+]
