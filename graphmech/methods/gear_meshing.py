@@ -10,9 +10,19 @@ construction; the closed forms are :mod:`graphmech.exact.gear`'s.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
-from graphmech.mechanisms.gear import GearSet
+from graphmech.errors import NoSolution, NotApplicable, OutOfDomain
+from graphmech.geometry.kernels import (
+    ScalarOps,
+    intersect_circle_line,
+    intersect_circles,
+    intersect_lines,
+    unit,
+)
+from graphmech.mechanisms.gear import GearSet, SpurGear, ToothSystem
+from graphmech.methods.involute import _bisect, at_radius, circles
 
 XY = tuple[float, float]
 
@@ -56,8 +66,198 @@ class MeshConstruction:
     interference: tuple[str, ...]
 
 
-def construct_meshing(gears: GearSet) -> MeshConstruction:
-    raise NotImplementedError
+def _dist(a: XY, b: XY) -> float:
+    return math.hypot(a[0] - b[0], a[1] - b[1])
 
+
+def _along(a: XY, u: tuple[float, float], length: float) -> XY:
+    return (a[0] + length * u[0], a[1] + length * u[1])
+
+
+@dataclass(frozen=True)
+class _Line:
+    """The line of action drawn at a′: N₁, N₂ (None for a rack), P, and its direction."""
+
+    O2: XY | None
+    N1: XY
+    N2: XY | None
+    P: XY
+    u: tuple[float, float]
+
+
+def _line_of_action(system: ToothSystem, g1: SpurGear, g2: SpurGear | None, meshing: str, a_w: float) -> _Line:
+    """O₁O₂ drawn at a′ and the common tangent of the base circles rising to the right: the
+    tangent from O₁ to the circle (O₂, r_b1 ± r_b2) — Thales' circle on O₁O₂ — touches it at T;
+    N₂ is O₂ + r_b2·O₂T/|O₂T| and N₁ is O₁ ± r_b1 along the same direction (internal tangent of an
+    external pair: opposite; external tangent for a ring: the same). P = N₁N₂ ∩ O₁O₂.
+    A rack: its flank's normal at α tangent to the base circle (α′ = α)."""
+    ops = ScalarOps()
+    _, rb1, _, _ = circles(system, g1)
+    O1 = (0.0, 0.0)
+    if meshing == "rack":
+        N1 = (-rb1 * math.sin(system.alpha), rb1 * math.cos(system.alpha))
+        u = (math.cos(system.alpha), math.sin(system.alpha))
+        ops.step = "P = line of action ∩ O1's normal to the rack"
+        P = intersect_lines(ops, (N1[0], N1[1], u[0], u[1]), (0.0, 0.0, 0.0, 1.0))
+        return _Line(None, N1, None, (float(P[0]), float(P[1])), u)
+    assert g2 is not None
+    _, rb2, _, _ = circles(system, g2)
+    ring = meshing == "internal"
+    O2 = (0.0, -a_w) if ring else (0.0, a_w)
+    aux = rb2 - rb1 if ring else rb1 + rb2
+    ops.step = "T = circle (O2, rb2 ∓ rb1) ∩ circle on O1O2"
+    mid = (O2[0] / 2.0, O2[1] / 2.0)
+    candidates = [intersect_circles(ops, O2, aux, mid, a_w / 2.0, side,
+                                    lambda d: "the base circles have no common tangent at this centre distance")
+                  for side in (1.0, -1.0)]
+    # the tangent rising to the right has N₁ (hence T seen from O₂, for either kind) up and left
+    T = min(candidates, key=lambda t: t[0])
+    n = unit(ops, O2, (float(T[0]), float(T[1])))
+    N2 = _along(O2, n, rb2)
+    N1 = _along(O1, n, rb1) if ring else _along(O1, n, -rb1)
+    if N1[0] > 0.0:  # the other tangent was taken: mirror it
+        N1, N2 = (-N1[0], N1[1]), (-N2[0], N2[1])
+    u3 = unit(ops, N1, N2) if not ring else unit(ops, N2, N1)
+    u = (u3[0], u3[1])
+    ops.step = "P = N1N2 ∩ O1O2"
+    P = intersect_lines(ops, (N1[0], N1[1], u[0], u[1]), (0.0, 0.0, 0.0, 1.0))
+    return _Line(O2, N1, N2, (float(P[0]), float(P[1])), u)
+
+
+def _backlash(system: ToothSystem, gears: GearSet, line: _Line, a_w: float) -> float:
+    """The circumferential backlash on the working pitch circle: the working pitch 2π r_w1/z₁ less
+    the two teeth's arc thicknesses constructed there (a rack: its space on its working pitch line
+    less the pinion's tooth)."""
+    g1 = gears.gears[0]
+    r_w1 = math.hypot(*line.P)
+    s1 = at_radius(system, g1, r_w1).s_k
+    if gears.meshing == "rack":
+        # the rack's flanks are straight at α: its space on the line y = r_w1, a′ − r_w1 below its
+        # reference line where the space is πm/2
+        depth = a_w - r_w1
+        return math.pi * system.m / 2.0 + 2.0 * depth * math.tan(system.alpha) - s1
+    g2 = gears.gears[1]
+    assert line.O2 is not None
+    s2 = at_radius(system, g2, _dist(line.O2, line.P)).s_k
+    return 2.0 * math.pi * r_w1 / g1.z - s1 - s2
+
+
+def construct_meshing(gears: GearSet) -> MeshConstruction:
+    """The pair drawn at a′ (stated, or the distance without backlash: a bisection on a′ of the
+    backlash constructed from the flanks on the working pitch circles, to the last bit of a′),
+    the line of action and B₁B₂ cut from it by the tip circles (a rack: its addendum line)."""
+    if gears.meshing is None:
+        raise NotApplicable("one gear alone does not mesh: state meshing = external, internal or rack")
+    system, meshing = gears.system, gears.meshing
+    need = 1 if meshing == "rack" else 2
+    if len(gears.gears) != need:
+        raise OutOfDomain(f"a {meshing} pair has {need} gear(s) here, not {len(gears.gears)}")
+    g1 = gears.gears[0]
+    g2 = gears.gears[1] if need == 2 else None
+    if g1.internal or (meshing == "external" and g2 is not None and g2.internal):
+        raise OutOfDomain("in an external pair neither gear is a ring; in an internal pair only gear 2 is")
+    if meshing == "internal" and g2 is not None and not g2.internal:
+        raise OutOfDomain("in an internal pair gear 2 is the ring (internal = true)")
+    r1, rb1, _, _ = circles(system, g1)
+    m = system.m
+
+    def drawn(a_w: float) -> _Line:
+        return _line_of_action(system, g1, g2, meshing, a_w)
+
+    if gears.centre_distance is not None:
+        a_w = gears.centre_distance
+        if not (a_w > 0 and math.isfinite(a_w)):
+            raise OutOfDomain(f"the centre distance must be positive and finite, not {a_w!r}")
+        line = drawn(a_w)
+        backlash: float | None = _backlash(system, gears, line, a_w)
+        assert backlash is not None
+        if backlash < -1e-12 * m:
+            raise NoSolution(f"the teeth overlap by {-backlash * 1e3:.6g} mm on the working pitch circle at "
+                             f"a′ = {a_w * 1e3:.6g} mm: the pair cannot be assembled this close")
+    else:
+        backlash = None
+        if meshing == "rack":
+            a_w = r1 + g1.x * m
+        else:
+            assert g2 is not None
+            _, rb2, _, _ = circles(system, g2)
+            lo = abs(rb2 - rb1) * (1.0 + 1e-9) if meshing == "internal" else (rb1 + rb2) * (1.0 + 1e-9)
+            hi = 2.0 * (r1 + circles(system, g2)[0] + 4.0 * m)
+            if meshing == "internal":
+                hi = rb2 + rb1
+            grid = [lo + (hi - lo) * i / 256 for i in range(257)]
+
+            def gap(a: float) -> float:
+                return _backlash(system, gears, drawn(a), a)
+
+            values = []
+            found = None
+            for i, a in enumerate(grid):
+                try:
+                    values.append(gap(a))
+                except (NoSolution, OutOfDomain, ArithmeticError):
+                    values.append(math.nan)
+                if i and not math.isnan(values[-1]) and not math.isnan(values[-2]) and \
+                        (values[-1] > 0.0) != (values[-2] > 0.0):
+                    found = i
+                    break
+            if found is None:
+                raise NoSolution("no centre distance lets these teeth mesh without backlash")
+            a_w = _bisect(gap, grid[found - 1], grid[found])
+        line = drawn(a_w)
+    return _measure(gears, line, a_w, backlash)
+
+
+def _measure(gears: GearSet, line: _Line, a_w: float, backlash: float | None) -> MeshConstruction:
+    system, meshing = gears.system, gears.meshing
+    g1 = gears.gears[0]
+    _, rb1, ra1, _ = circles(system, g1)
+    ops = ScalarOps()
+    P, u, N1, N2 = line.P, line.u, line.N1, line.N2
+    lo = (P[0], P[1], u[0], u[1])
+    ops.step = "B1 = gear 1's tip circle ∩ N1N2"
+    B1 = intersect_circle_line(ops, (0.0, 0.0), ra1, lo, 1.0,
+                               lambda e: "gear 1's tip circle misses the line of action")
+    if meshing == "rack":
+        ops.step = "B2 = the rack's addendum line ∩ N1N2"
+        B2 = intersect_lines(ops, (0.0, a_w - system.ha_star * system.m, 1.0, 0.0), lo)
+    else:
+        g2 = gears.gears[1]
+        _, rb2, ra2, _ = circles(system, g2)
+        assert line.O2 is not None
+        if meshing == "internal" and ra2 < rb2:
+            raise NotApplicable(f"the ring's tip circle (r_a2 = {ra2 * 1e3:.6g} mm) lies inside its base circle "
+                                f"(r_b2 = {rb2 * 1e3:.6g} mm): it never reaches the line of action")
+        ops.step = "B2 = gear 2's tip circle ∩ N1N2"
+        B2 = intersect_circle_line(ops, line.O2, ra2, lo, -1.0 if meshing == "external" else 1.0,
+                                   lambda e: "gear 2's tip circle misses the line of action")
+    B1 = (float(B1[0]), float(B1[1]))
+    B2 = (float(B2[0]), float(B2[1]))
+    pb = 2.0 * math.pi * rb1 / g1.z
+    B1B2 = _dist(B1, B2)
+    if (B1[0] - B2[0]) * u[0] + (B1[1] - B2[1]) * u[1] < 0.0:
+        raise NoSolution("the tip circles cut the line of action in the wrong order: the teeth do not come into contact")
+    eps = B1B2 / pb
+    zone: tuple[XY, ...] = ()
+    single = double = None
+    if 1.0 <= eps < 2.0:
+        Za = _along(B1, u, -pb)
+        Zb = _along(B2, u, pb)
+        zone = (Za, Zb)
+        single, double = _dist(Za, Zb), _dist(B2, Za)
+    rho = {"N1B1": _dist(N1, B1), "N1B2": _dist(N1, B2)}
+    notes = []
+    if (B2[0] - N1[0]) * u[0] + (B2[1] - N1[1]) * u[1] < 0.0:
+        notes.append("B2 beyond N1")
+    if N2 is not None:
+        rho["N2B1"], rho["N2B2"] = _dist(N2, B1), _dist(N2, B2)
+        if meshing == "external" and (B1[0] - N2[0]) * u[0] + (B1[1] - N2[1]) * u[1] > 0.0:
+            notes.append("B1 beyond N2")
+    alpha_w = math.atan2(u[1], u[0])
+    return MeshConstruction(
+        O1=(0.0, 0.0), O2=line.O2, P=P, N1=N1, N2=N2, B1=B1, B2=B2, a_w=a_w, alpha_w=alpha_w,
+        r_w1=math.hypot(*P), r_w2=None if line.O2 is None else _dist(line.O2, P), pb=pb, B1B2=B1B2,
+        N1N2=None if N2 is None else _dist(N1, N2), eps_alpha=eps, zone_points=zone, single_contact=single,
+        double_contact=double, rho=rho, backlash=backlash, interference=tuple(notes))
 
 __all__ = ["MeshConstruction", "construct_meshing"]
