@@ -22,7 +22,7 @@ from graphmech.geometry.kernels import (
     unit,
 )
 from graphmech.mechanisms.gear import GearSet, SpurGear, ToothSystem
-from graphmech.methods.involute import _bisect, at_radius, circles
+from graphmech.methods.involute import at_radius, bisect_root, circles
 
 XY = tuple[float, float]
 
@@ -160,6 +160,11 @@ def construct_meshing(gears: GearSet) -> MeshConstruction:
         raise OutOfDomain("in an internal pair gear 2 is the ring (internal = true)")
     r1, rb1, _, _ = circles(system, g1)
     m = system.m
+    if meshing == "internal" and g2 is not None:
+        _, rb2, ra2, _ = circles(system, g2)
+        if ra2 < rb2:
+            raise NotApplicable(f"the ring's tip circle (r_a2 = {ra2 * 1e3:.6g} mm) lies inside its base circle "
+                                f"(r_b2 = {rb2 * 1e3:.6g} mm): it never reaches the line of action")
 
     def drawn(a_w: float) -> _Line:
         return _line_of_action(system, g1, g2, meshing, a_w)
@@ -203,7 +208,7 @@ def construct_meshing(gears: GearSet) -> MeshConstruction:
                     break
             if found is None:
                 raise NoSolution("no centre distance lets these teeth mesh without backlash")
-            a_w = _bisect(gap, grid[found - 1], grid[found])
+            a_w = bisect_root(gap, grid[found - 1], grid[found])
         line = drawn(a_w)
     return _measure(gears, line, a_w, backlash)
 
@@ -223,11 +228,8 @@ def _measure(gears: GearSet, line: _Line, a_w: float, backlash: float | None) ->
         B2 = intersect_lines(ops, (0.0, a_w - system.ha_star * system.m, 1.0, 0.0), lo)
     else:
         g2 = gears.gears[1]
-        _, rb2, ra2, _ = circles(system, g2)
+        _, _, ra2, _ = circles(system, g2)
         assert line.O2 is not None
-        if meshing == "internal" and ra2 < rb2:
-            raise NotApplicable(f"the ring's tip circle (r_a2 = {ra2 * 1e3:.6g} mm) lies inside its base circle "
-                                f"(r_b2 = {rb2 * 1e3:.6g} mm): it never reaches the line of action")
         ops.step = "B2 = gear 2's tip circle ∩ N1N2"
         B2 = intersect_circle_line(ops, line.O2, ra2, lo, -1.0 if meshing == "external" else 1.0,
                                    lambda e: "gear 2's tip circle misses the line of action")

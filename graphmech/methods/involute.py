@@ -263,7 +263,7 @@ def at_radius(system: ToothSystem, gear: SpurGear, r_k: float) -> AtRadius:
     )
 
 
-def _bisect(f: Callable[[float], float], lo: float, hi: float) -> float:
+def bisect_root(f: Callable[[float], float], lo: float, hi: float) -> float:
     """The root of f between lo and hi (f changes sign there), halved until the interval stops
     shrinking in floating point (≈ 1e-16 relative)."""
     f_lo = f(lo)
@@ -298,7 +298,7 @@ def pointed_tip(system: ToothSystem, gear: SpurGear) -> AtRadius:
     lo = 0.0
     while thickness(lo + 0.05) > 0.0:
         lo += 0.05
-    phi = _bisect(thickness, lo, lo + 0.05)
+    phi = bisect_root(thickness, lo, lo + 0.05)
     return at_radius(system, gear, rb * math.hypot(1.0, phi))
 
 
@@ -393,9 +393,9 @@ def _fillet_and_start(system: ToothSystem, gear: SpurGear) -> tuple[list[XY], fl
         # to the base circle it lies inside the tooth: between the two it crosses the involute
         lo = cut.beta0
         if math.hypot(*cut.envelope(lo)) < rb:
-            lo = _bisect(lambda beta: math.hypot(*cut.envelope(beta)) - rb, cut.beta0, cut.beta1)
+            lo = bisect_root(lambda beta: math.hypot(*cut.envelope(beta)) - rb, cut.beta0, cut.beta1)
         if (off(lo) > 0.0) != (off(cut.beta1) > 0.0):
-            end = _bisect(off, lo, cut.beta1)
+            end = bisect_root(off, lo, cut.beta1)
             undercut = True
     n = 24
     fillet = [cut.envelope(cut.beta0 + (end - cut.beta0) * i / (n - 1)) for i in range(n)]
@@ -592,7 +592,7 @@ def over_pins(system: ToothSystem, gear: SpurGear, d_pin: float | None = None) -
         found = next((i for i in range(steps) if (values[i] > 0.0) != (values[i + 1] > 0.0)), None)
         if found is None:
             raise NoSolution(f"no pin of diameter {d:g} m touches both flanks of a space")
-        R = _bisect(gap, grid[found], grid[found + 1])
+        R = bisect_root(gap, grid[found], grid[found + 1])
         X = (R * math.cos(axis), R * math.sin(axis))
         K = flank.through(_tangent_point(rb, X, flank.sigma))
     reach = math.hypot(*K)
@@ -608,5 +608,5 @@ def over_pins(system: ToothSystem, gear: SpurGear, d_pin: float | None = None) -
     across = math.hypot(X[0] - X2[0], X[1] - X2[1])
     return PinMeasurement(d_pin=d, centres=(X, X2), contacts=contacts, M=across - d if gear.internal else across + d)
 
-__all__ = ["AtRadius", "Flank", "PinMeasurement", "SpanMeasurement", "ToothOutline", "at_radius", "circles",
-           "involute_polyline", "over_pins", "pointed_tip", "span", "span_teeth", "tooth_outline"]
+__all__ = ["AtRadius", "Flank", "PinMeasurement", "SpanMeasurement", "ToothOutline", "at_radius", "bisect_root",
+           "circles", "involute_polyline", "over_pins", "pointed_tip", "span", "span_teeth", "tooth_outline"]
