@@ -387,14 +387,18 @@ def test_pins_refused() -> None:
 # Meshing against the line of action cut by the tip circles
 
 
-def line_cuts(gears: GearSet) -> tuple[float, float, float]:
-    """(B₁B₂, N₁B₁, N₁B₂) from coordinates: O₁ at 0, the line of action through P = (0, r_w1)."""
+def line_cuts(gears: GearSet) -> tuple[float, float, float, dict[str, float]]:
+    """(B₁B₂, N₁B₁, N₁B₂, the specific slidings at B₁ and B₂) from coordinates: O₁ at 0, the line of
+    action through P = (0, r_w1), gear 1 turning at ω₁ = 1 counter-clockwise. The slidings by their
+    definition: the velocities of the two teeth's points at K have the same component along the
+    line of action (the contact holds); η = 1 − (the other's tangential component)/(its own)."""
     mv = meshing(gears)
     system, kind = gears.system, gears.meshing
     g1 = gears.gears[0]
     t1 = tooth(system, g1)
     p = np.array([0.0, mv.r_w1])
     d = np.array([math.cos(mv.alpha_w), -math.sin(mv.alpha_w)])
+    tangent = np.array([math.sin(mv.alpha_w), math.cos(mv.alpha_w)])
 
     def foot(o: np.ndarray) -> float:
         return float((o - p) @ d)
@@ -404,21 +408,35 @@ def line_cuts(gears: GearSet) -> tuple[float, float, float]:
         h = math.sqrt(radius**2 - float(np.linalg.norm(o - p - tn * d)) ** 2)
         return tn + math.copysign(h, towards - tn)
 
+    def turning(omega: float, o: np.ndarray):
+        return lambda k: omega * np.array([-(k - o)[1], (k - o)[0]])
+
     o1 = np.zeros(2)
     tn1 = foot(o1)
+    v1 = turning(1.0, o1)
     if kind == "rack":
         tb1 = cut(o1, t1.da / 2, -tn1)
         tb2 = (mv.a_w - system.ha_star * system.m - p[1]) / d[1]   # the rack's addendum line
+        def v2(k: np.ndarray) -> np.ndarray:
+            return np.array([-mv.r_w1, 0.0])                      # the rack moves with P
     else:
+        z1, z2 = g1.z, gears.gears[1].z
         t2 = tooth(system, gears.gears[1])
         o2 = np.array([0.0, mv.a_w if kind == "external" else -mv.a_w])
+        v2 = turning(-z1 / z2 if kind == "external" else z1 / z2, o2)
         tn2 = foot(o2)
         if kind == "external":
             tb1, tb2 = cut(o1, t1.da / 2, tn2), cut(o2, t2.da / 2, tn1)
         else:
             tb1, tb2 = cut(o1, t1.da / 2, -tn1), cut(o2, t2.da / 2, 0.0)
         assert close(abs(tn1 - tn2), mv.N1N2, 1e-12)
-    return abs(tb1 - tb2), abs(tb1 - tn1), math.copysign(abs(tb2 - tn1), (tb2 - tn1) * (0.0 - tn1))
+    eta = {}
+    for end, tb in (("B1", tb1), ("B2", tb2)):
+        k = p + tb * d
+        assert abs(float((v1(k) - v2(k)) @ d)) <= 1e-12 * mv.r_w1
+        w1, w2 = float(v1(k) @ tangent), float(v2(k) @ tangent)
+        eta[f"1{end}"], eta[f"2{end}"] = 1 - w2 / w1, 1 - w1 / w2
+    return abs(tb1 - tb2), abs(tb1 - tn1), math.copysign(abs(tb2 - tn1), (tb2 - tn1) * (0.0 - tn1)), eta
 
 
 PAIRS = [
@@ -435,8 +453,10 @@ PAIRS = [
 @pytest.mark.parametrize("gears", PAIRS)
 def test_meshing_against_the_line_of_action(gears: GearSet) -> None:
     mv = meshing(gears)
-    b1b2, n1b1, n1b2 = line_cuts(gears)
+    b1b2, n1b1, n1b2, eta = line_cuts(gears)
     assert close(mv.B1B2, b1b2, 1e-12) and close(mv.N1B1, n1b1, 1e-12) and close(mv.N1B2, n1b2, 1e-12)
+    assert close(mv.eta_tip1, eta["1B1"], 1e-10) and close(mv.eta_root2, eta["2B1"], 1e-10)
+    assert close(mv.eta_root1, eta["1B2"], 1e-10) and close(mv.eta_tip2, eta["2B2"], 1e-10)
     assert close(mv.eps_alpha, mv.B1B2 / (math.pi * gears.system.m * math.cos(gears.system.alpha)), 1e-14)
     # The specific slidings at each end: (1 − η₁)(1 − η₂) = 1 at the same point.
     assert close((1 - mv.eta_tip1) * (1 - mv.eta_root2), 1.0, 1e-12)
