@@ -69,7 +69,7 @@ def inv_inverse(v: float) -> float:
         raise OutOfDomain(f"inv α = {v!r} has no pressure angle: the involute function takes values ≥ 0")
     if v == 0.0:
         return 0.0
-    alpha = min((3.0 * v) ** (1.0 / 3.0), math.atan(v + HALF_PI))
+    alpha = min(math.cbrt(3.0 * v), math.atan(v + HALF_PI))
     alpha = min(alpha, math.nextafter(HALF_PI, 0.0))
     for _ in range(200):
         t = math.tan(alpha)
@@ -187,8 +187,8 @@ def tooth(system: ToothSystem, gear: SpurGear) -> ToothValues:
     rho_a: float | None
     if ra < rb:
         alpha_a = sa = rho_a = None
-        notes.append(f"the ring's tip circle (ra = {ra:.6g} m) lies inside its base circle (rb = {rb:.6g} m): "
-                     "its teeth have no involute near their tips")
+        notes.append(f"the tip circle (ra = {ra:.6g} m) lies inside the base circle (rb = {rb:.6g} m): "
+                     "the teeth have no involute near their tips")
     else:
         alpha_a = _pressure_angle(rb, ra)
         sa = _thickness(s, r, alpha, ra, alpha_a, gear.internal)
@@ -489,6 +489,15 @@ def _pair_check(gears: GearSet) -> None:
         raise OutOfDomain(f"the centre distance a′ must be a positive length, not {a_w!r} m")
 
 
+def _tip_angle(rb: float, ra: float, i: int) -> float:
+    """α_a of gear i, refused where its tip circle lies inside its base circle (no involute there)."""
+    if ra < rb:
+        raise NotApplicable(f"gear {i}'s tip circle (ra = {ra:.6g} m) lies inside its base circle (rb = {rb:.6g} m): "
+                            "it has no tip pressure angle and does not cut the line of action, "
+                            f"so there is no B{'₁' if i == 1 else '₂'}")
+    return _pressure_angle(rb, ra)
+
+
 def _eta(rho_own: float, rho_other: float, ratio: float) -> float | None:
     """1 − ρ_other/(ratio·ρ_own), None where ρ_own = 0 (infinite)."""
     return None if rho_own == 0.0 else 1.0 - rho_other / (ratio * rho_own)
@@ -514,7 +523,7 @@ def meshing(gears: GearSet) -> MeshValues:
     tan_a, inv_a = math.tan(alpha), inv(alpha)
     g1 = gears.gears[0]
     r1, rb1, ra1, _ = _radii(system, g1)
-    alpha_a1 = _pressure_angle(rb1, ra1)
+    alpha_a1 = _tip_angle(rb1, ra1, 1)
     notes: list[str] = []
     stated = gears.centre_distance
     tol = COINCIDENT_REL * math.pi * m
@@ -540,27 +549,33 @@ def meshing(gears: GearSet) -> MeshValues:
         internal = kind == "internal"
         g2 = gears.gears[1]
         r2, rb2, ra2, _ = _radii(system, g2)
-        if ra2 < rb2:
-            raise NotApplicable(f"the ring's tip circle (ra₂ = {ra2:.6g} m) lies inside its base circle "
-                                f"(rb₂ = {rb2:.6g} m): it has no tip pressure angle and does not cut the "
-                                "line of action, so there is no B₂")
-        alpha_a2 = _pressure_angle(rb2, ra2)
+        alpha_a2 = _tip_angle(rb2, ra2, 2)
         sign = -1.0 if internal else 1.0
         zsum = g2.z - g1.z if internal else g1.z + g2.z
         a = 0.5 * m * zsum
         xsum = g2.x - g1.x if internal else g1.x + g2.x
+        # The backlash at α′ is j = (cos α/cos α′)·m(z₁ ± z₂)·±(inv α′ − v): it grows with a′ for an
+        # external pair but shrinks for a ring (the pinion moves into the ring's teeth), so a′ from
+        # the shifts is the least distance of an external pair and the greatest of an internal one.
         v = 2.0 * tan_a * xsum / zsum + inv_a
-        if v < 0.0:
+        bound = "greatest" if internal else "least"
+        a_free = a * math.cos(alpha) / math.cos(inv_inverse(v)) if v >= 0.0 else None
+        if a_free is None and (internal or stated is None):
             raise NoSolution(f"the shifts ({'x₂ − x₁' if internal else 'x₁ + x₂'} = {xsum:.6g}) are so negative "
-                             "that the teeth cannot mesh without backlash at any centre distance")
-        a_free = a * math.cos(alpha) / math.cos(inv_inverse(v))
+                             "that the teeth cannot mesh without backlash at any centre distance"
+                             + (" (in this ring they overlap at every one)" if internal else ""))
         if stated is None:
+            assert a_free is not None
             a_w, alpha_w = a_free, inv_inverse(v)
         else:
             a_w = stated
             if a * math.cos(alpha) / a_w > 1.0:
-                raise NoSolution(f"at a′ = {a_w:.6g} m the teeth overlap (the base circles would cross): "
-                                 f"the least centre distance for these shifts is {a_free:.6g} m")
+                if internal:
+                    raise NoSolution(f"at a′ = {a_w:.6g} m the pinion's base circle lies inside the ring's "
+                                     f"without touching it (a′ < rb₂ − rb₁ = {a * math.cos(alpha):.6g} m): "
+                                     "there is no line of action")
+                raise NoSolution(f"at a′ = {a_w:.6g} m the teeth overlap (the base circles would cross): the least "
+                                 f"centre distance for these shifts is {a_free if a_free is not None else a * math.cos(alpha):.6g} m")
             alpha_w = math.acos(a * math.cos(alpha) / a_w)
         tan_w, inv_w = math.tan(alpha_w), inv(alpha_w)
         r_w1, r_w2 = rb1 / math.cos(alpha_w), rb2 / math.cos(alpha_w)
@@ -575,7 +590,7 @@ def meshing(gears: GearSet) -> MeshValues:
                 backlash = 2.0 * math.pi * r_w1 / g1.z - s1 - s2
             if backlash < -tol:
                 raise NoSolution(f"at a′ = {a_w:.6g} m the teeth overlap (backlash {backlash:.6g} m < 0): "
-                                 f"the least centre distance for these shifts is {a_free:.6g} m")
+                                 f"the {bound} centre distance for these shifts is {a_free:.6g} m")
         pb1 = rb1 * (math.tan(alpha_a1) - tan_w)
         pb2 = sign * rb2 * (math.tan(alpha_a2) - tan_w)
         # Positions on the line of action from P, positive towards N₁: N₁, N₂, B₁, B₂.
