@@ -43,6 +43,7 @@ from graphmech.drawing.primitives import (
     Panel,
     Polyline,
     Primitive,
+    Role,
     Segment,
     Sheet,
     Text,
@@ -57,6 +58,7 @@ from graphmech.methods.involute import (
     PinMeasurement,
     SpanMeasurement,
     ToothOutline,
+    circles,
 )
 
 XY = tuple[float, float]
@@ -226,14 +228,14 @@ def circle_in(c: XY, r: float, box: Box) -> list[tuple[float, float]]:
     return [(a - math.tau, b - math.tau) if a >= math.pi else (a, b) for a, b in out]
 
 
-def clipped_circle(c: XY, r: float, box: Box, role: str = "construction", dashdot: bool = False,
+def clipped_circle(c: XY, r: float, box: Box, role: Role = "construction", dashdot: bool = False,
                    dashed: bool = False) -> list[Primitive]:
     """A circle as much of it as ``box`` shows: a :class:`Circle` when it is wholly inside, else
     its arcs in the box as polylines; nothing when none of it is."""
     runs = circle_in(c, r, box)
     if runs == [(0.0, math.tau)]:
-        return [Circle(c, r, role, dashed=dashed, dashdot=dashdot)]  # type: ignore[arg-type]
-    return [Polyline(arc_points(c, r, a, b), role, dashed=dashed, dashdot=dashdot)  # type: ignore[arg-type]
+        return [Circle(c, r, role, dashed=dashed, dashdot=dashdot)]
+    return [Polyline(arc_points(c, r, a, b), role, dashed=dashed, dashdot=dashdot)
             for a, b in runs if (b - a) * r > CHORD]
 
 
@@ -425,12 +427,14 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
     turn = round((centres[i_left] - math.pi / 2.0) / step) * step  # tooth 0 → the leftmost
     mine = [_turned(a, turn) for n, a in drawing.at_radii if n == name]
     pointed = [a for n, a in drawing.pointed if n == name]
-    strings = [(_sc(n_, mu), _sc(k, mu)) for n_, k in t.teeth[i_right][0].strings]
+    # (a ring's flanks are the other way round: its left flank's strings run off to the left)
+    strings = [(_sc(n_, mu), _sc(k, mu)) for n_, k in t.teeth[i_right][int(gear.internal)].strings]
+    flank = "left" if gear.internal else "right"  # the flank of the leftmost tooth carrying ρ and α_k
     teeth_box = _box([p for r in runs for p in r] + [_sc(p, mu) for a in mine + pointed for p in (a.K_left, a.K_right)],
                      MARGIN)
     # the strings' ends N on the base circle too, unless they lie far off (a large gear's strings
     # are long: then they run out of the window towards N)
-    ns_all = [n_ for n_, _ in strings] + [_sc(a.N_right, mu) for a in mine]
+    ns_all = [n_ for n_, _ in strings] + [_sc(_nk(a, flank)[0], mu) for a in mine]
     wide = _box([(teeth_box[0], teeth_box[1]), (teeth_box[2], teeth_box[3])] + ns_all, 0.0)
     w0, h0 = teeth_box[2] - teeth_box[0], teeth_box[3] - teeth_box[1]
     fits = wide[2] - wide[0] <= max(1.6 * w0, w0 + 60.0) and wide[3] - wide[1] <= max(1.6 * h0, h0 + 60.0)
@@ -478,15 +482,15 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
         items += arc_dimension(O, rp, aR - step, aR, "p")
         # ρ at the reference circle: N K on the left flank
         if ref_l is not None:
-            items += _rho("ρ", ref_l, mu, window)
-    if tip is not None and math.dist(tip.K_left, tip.K_right) > 1e-12:
+            items += _rho("ρ", ref_l, flank, mu, window)
+    if tip is not None and tip.s_k > 0.0:  # a pointed tooth has no s_a
         aL, aR = _angle(tip.K_left), _angle(tip.K_right)
         ra = outer + DIM_IN
         for a in (aL, aR):
             items.append(Segment(_polar(t.ra / mu, a), _polar(ra + 1.5, a), "label"))
         items += arc_dimension(O, ra, aR, aL, "s_{a}")
         if tip_l is not None:
-            items += _rho("ρ_{a}", tip_l, mu, window)
+            items += _rho("ρ_{a}", tip_l, flank, mu, window)
     # h_a and h_f radially in the space left of tooth 0
     a_sp = math.pi / 2.0 + step / 2.0
     sgn = -1.0 if gear.internal else 1.0  # a ring's tip is inside its reference circle
@@ -498,7 +502,7 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
     for ak in mine:
         if ak is ref_l or ak is tip_l or abs(ak.r_k - t.rb) <= 1e-9 * t.rb:
             continue
-        items += _alpha_k(ak, mu)
+        items += _alpha_k(ak, flank, mu)
     for pt in pointed:  # the flanks meet at K: the tip circle may not pass this radius
         k = _sc(pt.K_left, mu)
         items += clipped_circle(O, pt.r_k / mu, window, "construction", dashed=True)
@@ -511,9 +515,15 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
     return items + labels
 
 
-def _rho(text: str, a: AtRadius, mu: float, window: Box) -> list[Primitive]:
-    """ρ at r_k: the segment N K of the right flank (as much as the window shows), labelled."""
-    seg = clipped_segment(_sc(a.N_right, mu), _sc(a.K_right, mu), window)
+def _nk(a: AtRadius, flank: str) -> tuple[XY, XY]:
+    """N and K of the construction at r_k on its ``flank`` ("left" or "right"), m."""
+    return (a.N_left, a.K_left) if flank == "left" else (a.N_right, a.K_right)
+
+
+def _rho(text: str, a: AtRadius, flank: str, mu: float, window: Box) -> list[Primitive]:
+    """ρ at r_k: the segment N K of ``flank`` (as much as the window shows), labelled."""
+    n_, k = _nk(a, flank)
+    seg = clipped_segment(_sc(n_, mu), _sc(k, mu), window)
     if seg is None:
         return []
     d = _sub(seg[1], seg[0])
@@ -521,9 +531,9 @@ def _rho(text: str, a: AtRadius, mu: float, window: Box) -> list[Primitive]:
             _label(text, ((seg[0][0] + seg[1][0]) / 2.0, (seg[0][1] + seg[1][1]) / 2.0), (d, _neg(d)))]
 
 
-def _alpha_k(a: AtRadius, mu: float) -> list[Primitive]:
-    """α_k at K on the right flank: the normal K–N continued past K, the velocity ⟂ OK, the arc."""
-    k, n_ = _sc(a.K_right, mu), _sc(a.N_right, mu)
+def _alpha_k(a: AtRadius, flank: str, mu: float) -> list[Primitive]:
+    """α_k at K on ``flank``: the normal K–N continued past K, the velocity ⟂ OK, the arc."""
+    n_, k = (_sc(q, mu) for q in _nk(a, flank))
     u = _unit(_sub(k, n_))
     ok = _unit(k)
     v = (-ok[1], ok[0])
@@ -560,9 +570,8 @@ def _rack_lines(m: MeshConstruction, gears: GearSet) -> tuple[float, float]:
 
 
 def _ring_rim(gears: GearSet) -> float:
-    """A ring's root radius (gear.py's convention: d + 2(h*a + c* + x)m, halved), m."""
-    s, g = gears.system, gears.gears[1]
-    return s.m * g.z / 2.0 + (s.ha_star + s.c_star + g.x) * s.m
+    """A ring's root radius, m."""
+    return circles(gears.system, gears.gears[1])[3]
 
 
 def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en") -> list[Primitive]:
@@ -576,14 +585,14 @@ def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
     P, N1, B1, B2 = _sc(m.P, mu), _sc(m.N1, mu), _sc(m.B1, mu), _sc(m.B2, mu)
     N2 = _sc(m.N2, mu) if m.N2 is not None else None
     rb1, ra1 = math.dist(m.O1, m.N1) / mu, math.dist(m.O1, m.B1) / mu
-    circles: list[tuple[XY, float, bool]] = [(O1, m.r_w1 / mu, True), (O1, rb1, False), (O1, ra1, False)]
+    drawn: list[tuple[XY, float, bool]] = [(O1, m.r_w1 / mu, True), (O1, rb1, False), (O1, ra1, False)]
     if O2 is not None and m.O2 is not None and m.N2 is not None and m.r_w2 is not None:
-        circles += [(O2, m.r_w2 / mu, True), (O2, math.dist(m.O2, m.N2) / mu, False),
+        drawn += [(O2, m.r_w2 / mu, True), (O2, math.dist(m.O2, m.N2) / mu, False),
                     (O2, math.dist(m.O2, m.B2) / mu, False)]
         if internal:
-            circles.append((O2, _ring_rim(gears) / mu, False))
+            drawn.append((O2, _ring_rim(gears) / mu, False))
     # the window: the whole gears when they fit, else around the line of action
-    whole = _box([p for c, r, _ in circles for p in ((c[0] - r, c[1] - r), (c[0] + r, c[1] + r))], MARGIN)
+    whole = _box([p for c, r, _ in drawn for p in ((c[0] - r, c[1] - r), (c[0] + r, c[1] + r))], MARGIN)
     if rack:
         y_ref, _ = _rack_lines(m, gears)
         whole = _box([(whole[0], whole[1]), (whole[2], whole[3]), (whole[0], y_ref / mu + 3 * gears.system.m / mu)],
@@ -598,7 +607,7 @@ def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
         window = _box([(window[0], window[1]), (window[2], window[3])] + near, 0.0 if not near else MARGIN)
     items: list[Primitive] = []
     labels: list[Primitive] = []
-    for c, r, dd in circles:
+    for c, r, dd in drawn:
         items += clipped_circle(c, r, window, "construction", dashdot=dd)
     if internal and O2 is not None:  # the ring's body: its rim, bold, just outside the root circle
         items += clipped_circle(O2, _ring_rim(gears) / mu + 4.0, window, "given")
@@ -772,7 +781,7 @@ def span_items(drawing: GearDrawing, name: str, sp: SpanMeasurement) -> list[Pri
     if t is not None:
         a1, a2 = sorted((_angle(sp.K1), _angle(sp.K2)))
         step = math.tau / z
-        js = range(math.floor((a1 - math.pi / 2) / step) - 1, math.ceil((a2 - math.pi / 2) / step) + 2)
+        js = range(round((a1 - math.pi / 2) / step), round((a2 - math.pi / 2) / step) + 1)  # the teeth K₁, K₂ touch and between
         line = tuple(_sc(p, mu) for p in replicated(t, z, list(js)))
         if len(line) >= 2:
             items.append(Polyline(line, "result"))
@@ -976,8 +985,11 @@ def gear_sheet(title: str, show: Sequence[str], drawing: GearDrawing, page: tupl
                                 (("l", mu),)))
         row += 1
     if "root_base" in show:
+        s = drawing.gears.system
+        note = (f"r_{{b}}/m = (z/2)·cos α, r_{{f}}/m = z/2 − (h_{{a}}* + c* − x); α = {number(math.degrees(s.alpha))}°, "
+                f"h_{{a}}* = {number(s.ha_star)}, c* = {number(s.c_star)}")
         panels.append(Panel("root_base", word("root_base", notation, WORDS), tuple(root_base_items(drawing, notation)),
-                            (), row))
+                            (note,), row))
     return Sheet(title, tuple(panels), page, footer)
 
 

@@ -93,7 +93,7 @@ def outline(s: ToothSystem, g: SpurGear, teeth: int = 3, n: int = 8, undercut: b
         pts += [polar(rf, a_root + gap * (1.0 - i / 6.0)) for i in range(6)]
         pts += [polar(rf, a_root)] + left + right[::-1] + [polar(rf, math.pi / 2 - half(s, g, lo) + rot)]
     pts.append((0.0, 0.0))  # the sector closed through O: the figure must leave that out
-    return ToothOutline(r, rb, ra, rf, tuple(drawn), (), tuple(pts), undercut)
+    return ToothOutline(r, rb, ra, rf, tuple(drawn), (), tuple(pts), undercut, lo)
 
 
 def mesh(s: ToothSystem, z1: int, z2: int, meshing: str = "external") -> MeshConstruction:
@@ -373,3 +373,33 @@ def test_outline_runs_leave_out_what_closes_the_sector():
     t = outline(SYSTEM, SpurGear(20))
     runs = outline_runs(t)
     assert len(runs) == 1 and (0.0, 0.0) not in runs[0] and len(runs[0]) == len(t.outline) - 1
+
+
+# ----------------------------------------------------------------------------- on the real constructions
+def test_the_constructions_drawn_a_pointed_tip_a_ring_and_contact_below_one():
+    from graphmech.methods import involute
+    from graphmech.methods.gear_meshing import construct_meshing
+
+    s = ToothSystem(0.004, ALPHA)
+    g = SpurGear(10, 0.8)  # x = 0.8 on 10 teeth: the flanks meet inside the tip circle
+    ra = involute.circles(s, g)[2]
+    tip = involute.pointed_tip(s, g)
+    assert tip.r_k < ra
+    d = GearDrawing(GearSet(s, (g,)), {"tooth": 0.0005}, teeth=(("", involute.tooth_outline(s, g)),),
+                    at_radii=(("", involute.at_radius(s, g, ra)),), pointed=(("", tip),))
+    words = texts(gear_sheet("g", ["tooth"], d, A3))
+    assert "pointed tip: r = 26.99 mm" in words and "s_{a}" not in words
+    # a ring: the construction by points runs off to the right, ρ off to the left
+    ring = SpurGear(60, internal=True)
+    r = involute.circles(s, ring)[0]
+    d = GearDrawing(GearSet(s, (ring,)), {"tooth": 0.0005}, teeth=(("", involute.tooth_outline(s, ring)),),
+                    at_radii=(("", involute.at_radius(s, ring, r)),))
+    its = items(gear_sheet("g", ["tooth"], d, A3), "tooth")
+    strings = [x for x in its if isinstance(x, Segment) and x.role == "construction" and not x.dashdot]
+    assert strings and all(x.p0[0] > x.p1[0] for x in strings if math.dist(x.p0, x.p1) > 1.0)  # N right of K
+    rho = next(x for x in its if isinstance(x, Label) and x.text == "ρ")
+    assert rho.anchor[0] < 0.0
+    low = GearSet(ToothSystem(0.004, ALPHA, 0.5), (SpurGear(19), SpurGear(42)), "external")
+    m = construct_meshing(low)
+    d = GearDrawing(low, {"zones": 0.00025}, mesh=m)
+    assert m.eps_alpha < 1.0 and "ε_{α} < 1: not continuous" in texts(gear_sheet("g", ["zones"], d, A3))
