@@ -35,10 +35,10 @@ if TYPE_CHECKING:
 
 #: About how long the main figure's features are drawn, mm: three teeth across the tooth panel,
 #: B₁B₂ along the zones panel, the pair (or the neighbourhood of B₁B₂) across the meshing panel.
-TOOTH_MM, ZONES_MM, MESH_MM = 110.0, 120.0, 170.0
+TOOTH_MM, ZONES_MM, MESH_MM = 225.0, 100.0, 150.0
 #: On the meshing panel B₁B₂ is drawn at least this long; a pair too large for that is drawn
 #: around the line of action (the circles as arcs).
-MESH_B1B2_MM = 25.0
+MESH_B1B2_MM = 5.0
 #: The book's least tip thickness, as a multiple of m (s_a ≥ 0.25m … 0.4m).
 SA_MIN = 0.25
 
