@@ -110,7 +110,7 @@ NUMBER_GAP = 4.5
 BAND, HATCH = 4.0, 1.5
 DIM_ROWS = (-11.0, -19.0, -27.0, -35.0)
 #: The root–base diagram's width, mm.
-DIAGRAM_W = 120.0
+DIAGRAM_W = 75.0
 
 
 @dataclass(frozen=True)
