@@ -28,14 +28,15 @@ from graphmech.problems.gears.scene import (
     quantity_unit,
 )
 from graphmech.problems.judging import Row, Verdict, in_double_precision, judge_value, measured_entries
+from graphmech.problems.reader import page_size
 from graphmech.scales import format_scale, round_scale
 
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
 
-#: About how long the main figure's features are drawn, mm: three teeth across the tooth panel,
-#: B₁B₂ along the zones panel, the pair (or the neighbourhood of B₁B₂) across the meshing panel.
-TOOTH_MM, ZONES_MM, MESH_MM = 225.0, 100.0, 150.0
+#: The page's parts, mm: the title above the panels, the notes under each, the side margins;
+#: three teeth take up to TOOTH_MM of a 225 mm wide row (the construction's strings run beside them).
+TITLE_MM, CAPTION_MM, SIDE_MM, TOOTH_MM = 38.0, 40.0, 40.0, 200.0
 #: On the meshing panel B₁B₂ is drawn at least this long; a pair too large for that is drawn
 #: around the line of action (the circles as arcs).
 MESH_B1B2_MM = 5.0
@@ -68,6 +69,7 @@ class GearAnalysis:
     mesh: gmesh.MeshConstruction | None = None
     exact_mesh: Any = None
     root_base: tuple[float, float] | None = None
+    mesh_whole: bool = True
 
     def scale_notes(self) -> list[str]:
         words = {"l": "", "tooth": "tooth, ", "zones": "contact zones, "}
@@ -193,42 +195,65 @@ def _warn(an: GearAnalysis) -> None:
 
 
 def _choose_scales(an: GearAnalysis) -> None:
+    """μl of each drawing, stated or chosen round so that its panel fits its share of the page:
+    the rows are the teeth (one per gear drawn), the pair (meshing beside zones), the measurement
+    (span beside pins), the root–base diagram; a panel's notes take about CAPTION_MM under it."""
     s = an.gears.system
     stated = an.scene.scales
     for key in ("l", "tooth", "zones"):
         if key in stated:
             an.scales[key] = stated[key]
             an.stated.add(key)
-    if "tooth" not in an.scales and {"tooth", "measurement"} & set(an.panels):
-        g = an.gear(an.problem.labels[0])
-        t = ex.tooth(s, g)
-        across = 3.0 * t.p + 2.0 * (t.ha + t.hf)
-        if "measurement" in an.panels:
-            across = max(across, min(t.da, 6.0 * t.p * max(2, ex.span_teeth(s, g) if not g.internal else 2)))
-        an.scales["tooth"] = round_scale(across / TOOTH_MM)
-    if an.gears.pair and ({"meshing", "zones"} & set(an.panels)):
+    panels = set(an.panels)
+    w, h = page_size(an.scene)
+    n_rows = (len(_drawn_labels(an)) if "tooth" in panels else 0) + bool({"meshing", "zones"} & panels) \
+        + ("measurement" in panels) + ("root_base" in panels)
+    room_h = max((h - TITLE_MM) / max(n_rows, 1) - CAPTION_MM, 30.0)
+    room_w = w - SIDE_MM
+    if "tooth" not in an.scales and {"tooth", "measurement"} & panels:
+        need = []
+        for label in _drawn_labels(an):
+            t = ex.tooth(s, an.gear(label))
+            depth = t.ha + t.hf
+            if "tooth" in panels:  # three teeth and the strings of the construction beside them
+                need += [(3.0 * t.p + 2.0 * depth) / (TOOTH_MM / 225.0 * room_w), 2.0 * depth / room_h]
+            if "measurement" in panels:
+                g = an.gear(label)
+                k = 2 if g.internal else an.problem.span_teeth[an.index(label)] or ex.span_teeth(s, g)
+                need.append((k * t.p + 2.0 * depth) / (0.45 * room_w))
+                need.append((max(t.da, t.df) + 4.0 * t.p) / room_h)  # the whole gear with its pins
+        an.scales["tooth"] = round_scale(max(need))
+    if an.gears.pair and ({"meshing", "zones"} & panels):
         em = an.exact_mesh
-        if "zones" not in an.scales and "zones" in an.panels:
-            an.scales["zones"] = round_scale(max(em.B1B2, em.pb) / ZONES_MM)
-        if "l" not in an.scales and "meshing" in an.panels:
-            whole = _pair_extent(an)
-            mu = round_scale(whole / MESH_MM)
+        share = 0.5 if {"meshing", "zones"} <= panels else 1.0
+        if "zones" not in an.scales and "zones" in panels:
+            an.scales["zones"] = round_scale(max(em.B1B2, em.pb) * 1.3 / (share * room_w - 20.0))
+        if "l" not in an.scales and "meshing" in panels:
+            tall, wide = _pair_extent(an)
+            mu = round_scale(max(tall / room_h, wide / (share * room_w)))
             if em.B1B2 / mu < MESH_B1B2_MM:  # a large pair: drawn around the line of action
-                mu = round_scale(max(em.B1B2, em.pb) * 4.0 / MESH_MM)
+                mu = round_scale(max(em.B1B2, em.pb) * 4.0 / min(room_h, share * room_w))
+                an.mesh_whole = False
             an.scales["l"] = mu
-    if "root_base" in an.panels or any(split_gear(n, an.problem)[0] == "z_root_eq_base" for n in an.names):
-        an.scales.setdefault("l", round_scale(s.m))
 
 
-def _pair_extent(an: GearAnalysis) -> float:
+def _pair_extent(an: GearAnalysis) -> tuple[float, float]:
+    """How tall (along O₁O₂) and how wide the whole pair is drawn, m."""
     s = an.gears.system
     tips = [ex.tooth(s, g).da / 2.0 for g in an.gears.gears]
     a_w = an.exact_mesh.a_w
     if an.gears.meshing == "external":
-        return a_w + tips[0] + tips[1]
+        return a_w + tips[0] + tips[1], 2.0 * max(tips)
     if an.gears.meshing == "internal":
-        return 2.0 * ex.tooth(s, an.gears.gears[1]).df / 2.0
-    return 2.0 * a_w
+        rim = ex.tooth(s, an.gears.gears[1]).df + 2.0 * s.m
+        return rim, rim
+    return a_w + tips[0] + 2.0 * s.m, max(2.0 * tips[0], 4.0 * s.m * math.pi)
+
+
+def _drawn_labels(an: GearAnalysis) -> list[str]:
+    """The gears whose teeth are drawn: those the names ask about (the first gear if none)."""
+    p = an.problem
+    return [lab for lab in p.labels if _asks_tooth(an, lab)] or [p.labels[0]]
 
 
 def _at(an: GearAnalysis, label: str, r: float) -> inv.AtRadius:
@@ -251,13 +276,13 @@ def _values(an: GearAnalysis, name: str) -> tuple[float, float, float | None, fl
     p = an.problem
     s = p.gears.system
     stem, label, r_k = split_gear(name, p)
-    mu_t = an.scales.get("tooth", 1.0)
+    mu_t = an.scales.get("tooth")
     if stem in AT_RADIUS:
         assert r_k is not None
         c = _at(an, label, r_k)
         e = ex.at_radius(s, an.gear(label), r_k)
-        return {"s_k": (c.s_k, e.s_k, c.s_k / mu_t, mu_t), "alpha_k": (c.alpha_k, e.alpha_k, None, 1.0),
-                "rho_k": (c.rho_k, e.rho_k, c.rho_k / mu_t, mu_t),
+        return {"s_k": (c.s_k, e.s_k, *_drawn(c.s_k, mu_t)), "alpha_k": (c.alpha_k, e.alpha_k, None, 1.0),
+                "rho_k": (c.rho_k, e.rho_k, *_drawn(c.rho_k, mu_t)),
                 "theta_k": (c.theta_k, e.theta_k, None, 1.0)}[stem]
     if stem in TOOTH_QUANTITIES:
         return _tooth_value(an, stem, label, mu_t)
@@ -267,32 +292,37 @@ def _values(an: GearAnalysis, name: str) -> tuple[float, float, float | None, fl
     if stem == "p" or (stem == "pb" and not p.gears.pair):
         g = an.gear(p.labels[0])
         t = ex.tooth(s, g)
-        if stem == "p":  # the arc between like flanks of two neighbouring teeth on the reference circle
-            c = _at(an, p.labels[0], t.d / 2.0)
+        if stem == "p":  # the reference circle divided into z: a definition, as d = mz is
             pitch = 2.0 * math.pi * (t.d / 2.0) / g.z
-            return pitch, t.p, pitch / mu_t, mu_t if c else mu_t
+            return pitch, t.p, *_drawn(pitch, mu_t)
         cb = _at(an, p.labels[0], t.db / 2.0)
         pitch_b = 2.0 * math.pi * math.hypot(*cb.N_left) / g.z
-        return pitch_b, t.pb, pitch_b / mu_t, mu_t
+        return pitch_b, t.pb, *_drawn(pitch_b, mu_t)
     return _pair_value(an, stem)
 
 
-def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float) -> tuple[float, float, float | None, float]:
+def _drawn(value: float, mu: float | None) -> tuple[float | None, float]:
+    """(the length on the drawing, mm; its μ) — (None, 1) where the scene draws no panel for it."""
+    return (None, 1.0) if mu is None else (value / mu, mu)
+
+
+def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float | None
+                 ) -> tuple[float, float, float | None, float]:
     s = an.gears.system
     g = an.gear(label)
     t = ex.tooth(s, g)
     if stem in ("d", "db", "da", "df"):
         v = getattr(t, stem)
-        return v, v, v / mu, mu  # a circle is drawn at its radius: nothing is constructed
+        return v, v, *_drawn(v, mu)  # a circle is drawn at its radius: nothing is constructed
     if stem in ("ha", "hf"):
         v = getattr(t, stem)
-        return v, v, v / mu, mu
+        return v, v, *_drawn(v, mu)
     if stem in ("s_pitch", "e_pitch", "rho_pitch"):
         c = _at(an, label, t.d / 2.0)
         pitch = 2.0 * math.pi * (t.d / 2.0) / g.z
         got = {"s_pitch": c.s_k, "e_pitch": pitch - c.s_k, "rho_pitch": c.rho_k}[stem]
         want = {"s_pitch": t.s, "e_pitch": t.e, "rho_pitch": t.rho_pitch}[stem]
-        return got, want, got / mu, mu
+        return got, want, *_drawn(got, mu)
     if stem in ("sa", "alpha_a", "rho_a"):
         if t.alpha_a is None:
             raise SceneError([("find", f"{stem}{label}: the tip circle lies inside the base circle: no involute "
@@ -301,10 +331,10 @@ def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float) -> tuple[fl
         if stem == "alpha_a":
             return c.alpha_k, t.alpha_a, None, 1.0
         got = c.s_k if stem == "sa" else c.rho_k
-        return got, t.sa if stem == "sa" else t.rho_a, got / mu, mu
+        return got, t.sa if stem == "sa" else t.rho_a, *_drawn(got, mu)
     if stem == "sb":
         c = _at(an, label, t.db / 2.0)
-        return c.s_k, t.sb, c.s_k / mu, mu
+        return c.s_k, t.sb, *_drawn(c.s_k, mu)
     if stem in ("ra_pointed", "alpha_a_pointed", "inv_alpha_a_pointed"):
         if label not in an.pointed:
             try:
@@ -314,7 +344,7 @@ def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float) -> tuple[fl
         c = an.pointed[label]
         e = ex.pointed_tip(s, g)
         if stem == "ra_pointed":
-            return c.r_k, e.ra_pointed, c.r_k / mu, mu
+            return c.r_k, e.ra_pointed, *_drawn(c.r_k, mu)
         if stem == "alpha_a_pointed":
             return c.alpha_k, e.alpha_a_pointed, None, 1.0
         return c.theta_k, e.inv_alpha_a_pointed, None, 1.0
@@ -326,7 +356,7 @@ def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float) -> tuple[fl
         if label not in an.spans:
             an.spans[label] = inv.span(s, g, k)
         w = an.spans[label].W
-        return w, ex.span(s, g, k), w / mu, mu
+        return w, ex.span(s, g, k), *_drawn(w, mu)
     # pins
     d_pin = an.problem.pin_diameter[an.index(label)]
     if label not in an.pins:
@@ -337,21 +367,21 @@ def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float) -> tuple[fl
     c2 = an.pins[label]
     want_d = d_pin if d_pin is not None else ex.pin_diameter(s, g)
     if stem == "d_pin":
-        return c2.d_pin, want_d, c2.d_pin / mu, mu
-    return c2.M, ex.over_pins(s, g, want_d).M, c2.M / mu, mu
+        return c2.d_pin, want_d, *_drawn(c2.d_pin, mu)
+    return c2.M, ex.over_pins(s, g, want_d).M, *_drawn(c2.M, mu)
 
 
 def _pair_value(an: GearAnalysis, stem: str) -> tuple[float, float, float | None, float] | None:
     c = _mesh(an)
     e = an.exact_mesh
-    mu_l = an.scales.get("l", 1.0)
-    mu_z = an.scales.get("zones", mu_l)
+    mu_l = an.scales.get("l")
+    mu_z = an.scales.get("zones")
     s = an.gears.system
     if stem == "a":
         r = [ex.tooth(s, g).d / 2.0 for g in an.gears.gears]
         got = r[0] + r[1] if an.gears.meshing == "external" else r[1] - r[0] if an.gears.meshing == "internal" \
             else r[0] + an.gears.gears[0].x * s.m
-        return got, e.a, got / mu_l, mu_l
+        return got, e.a, *_drawn(got, mu_l)
     if stem in ("alpha_w",):
         return c.alpha_w, e.alpha_w, None, 1.0
     if stem in ("a_w", "rw1", "rw2", "N1N2"):
@@ -359,10 +389,10 @@ def _pair_value(an: GearAnalysis, stem: str) -> tuple[float, float, float | None
         want = {"a_w": e.a_w, "rw1": e.r_w1, "rw2": e.r_w2, "N1N2": e.N1N2}[stem]
         if got is None or want is None:
             return None
-        return got, want, got / mu_l, mu_l
+        return got, want, *_drawn(got, mu_l)
     if stem in ("B1B2", "pb"):
         got = c.B1B2 if stem == "B1B2" else c.pb
-        return got, getattr(e, stem), got / mu_z, mu_z
+        return got, getattr(e, stem), *_drawn(got, mu_z)
     if stem == "eps_alpha":
         return c.eps_alpha, e.eps_alpha, None, 1.0
     if stem in ("single_contact", "double_contact"):
@@ -370,7 +400,7 @@ def _pair_value(an: GearAnalysis, stem: str) -> tuple[float, float, float | None
         want_z = getattr(e, stem)
         if got_z is None or want_z is None:
             return None
-        return got_z, want_z, got_z / mu_z, mu_z
+        return got_z, want_z, *_drawn(got_z, mu_z)
     if stem.startswith("eta_"):
         want_eta = getattr(e, stem)
         if want_eta is None:  # a contact at N: the radius of curvature there is 0, the sliding infinite
@@ -379,7 +409,7 @@ def _pair_value(an: GearAnalysis, stem: str) -> tuple[float, float, float | None
     if stem == "backlash":
         if c.backlash is None or e.backlash is None:
             return None
-        return c.backlash, e.backlash, c.backlash / mu_l, mu_l
+        return c.backlash, e.backlash, *_drawn(c.backlash, mu_l)
     return None
 
 
@@ -453,8 +483,9 @@ def judge(an: GearAnalysis, precision_mm: float | None = None) -> list[Verdict]:
             out.append(Verdict(name, value, gd, tol, abs(value - gd) <= tol, unit))
         elif name == "eps_alpha":
             c = _mesh(an)
-            mu_z = an.scales.get("zones", an.scales.get("l", 1.0))
-            tol = g * (prec * mu_z / c.B1B2 + prec * mu_z / c.pb)
+            mu_z = an.scales.get("zones", an.scales.get("l"))
+            # B₁B₂ and p_b both measured on the drawing: their errors add in the ratio
+            tol = g * (prec * mu_z / c.B1B2 + prec * mu_z / c.pb) if mu_z is not None else 1e-3 * g
             out.append(Verdict(name, value, g, tol, abs(value - g) <= tol, unit))
         else:
             out.append(judge_value(name, value, g, drawn, scale, prec, unit))
@@ -466,10 +497,9 @@ def _arm_mm(an: GearAnalysis, name: str) -> float:
     stem, label, r_k = split_gear(name, an.problem)
     if stem == "alpha_w":
         c = _mesh(an)
-        return c.B1B2 / an.scales.get("l", 1.0)
-    mu = an.scales.get("tooth", 1.0)
+        return c.B1B2 / an.scales.get("l", c.B1B2 / 10.0)
     t = ex.tooth(an.gears.system, an.gear(label))
-    return t.db / 2.0 / mu
+    return t.db / 2.0 / an.scales.get("tooth", t.db / 20.0)  # no drawing: a protractor on a 10 mm arm
 
 
 def lines(an: GearAnalysis) -> list[str]:
@@ -504,10 +534,9 @@ def gear_figure(an: GearAnalysis, page: tuple[float, float], footer: tuple[str, 
 
     p = an.problem
     s = p.gears.system
-    labels = [lab for lab in p.labels if _asks_tooth(an, lab)] or [p.labels[0]]
     teeth = []
     if "tooth" in an.panels or "measurement" in an.panels:
-        for lab in labels:
+        for lab in _drawn_labels(an):
             teeth.append((lab, inv.tooth_outline(s, an.gear(lab))))
     if "meshing" in an.panels or "zones" in an.panels:
         _mesh(an)
@@ -517,7 +546,7 @@ def gear_figure(an: GearAnalysis, page: tuple[float, float], footer: tuple[str, 
         gears=p.gears, scales=dict(an.scales), teeth=tuple(teeth),
         at_radii=tuple((lab, c) for (lab, _r), c in an.radii.items()),
         pointed=tuple(an.pointed.items()), span=tuple(an.spans.items()), pins=tuple(an.pins.items()),
-        mesh=an.mesh, root_base=(an.root_base[0], float(an.gear(p.labels[0]).z)) if an.root_base else None)
+        mesh=an.mesh, mesh_whole=an.mesh_whole, root_base=(an.root_base[0], float(an.gear(p.labels[0]).z)) if an.root_base else None)
     return gear_sheet(an.scene.title, an.panels, drawing, page, footer, an.scene.page.notation)
 
 

@@ -130,6 +130,9 @@ class GearDrawing:
     pins: tuple[tuple[str, PinMeasurement], ...] = ()
     mesh: MeshConstruction | None = None
     root_base: tuple[float, float] | None = None
+    #: the meshing panel shows the whole gears (False: a window about B₁B₂ — a large pair's, whose
+    #: μl the check chose for the line of action)
+    mesh_whole: bool = True
 
 
 # ----------------------------------------------------------------------------- geometry on paper
@@ -597,7 +600,7 @@ def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
         y_ref, _ = _rack_lines(m, gears)
         whole = _box([(whole[0], whole[1]), (whole[2], whole[3]), (whole[0], y_ref / mu + 3 * gears.system.m / mu)],
                      0.0)
-    if whole[2] - whole[0] <= WHOLE_MOST and whole[3] - whole[1] <= WHOLE_MOST:
+    if drawing.mesh_whole and whole[2] - whole[0] <= WHOLE_MOST and whole[3] - whole[1] <= WHOLE_MOST:
         window = whole
     else:  # about B₁B₂ and P; N₁, N₂ shown if near, else the line runs out of the window towards them
         core = _box([P, B1, B2])
