@@ -61,4 +61,4 @@ class GearSet:
         return self.meshing is not None
 
 
-__all__ = ["GearSet", "MESHINGS", "Meshing", "SpurGear", "ToothSystem"]
+__all__ = ["MESHINGS", "GearSet", "Meshing", "SpurGear", "ToothSystem"]

@@ -71,11 +71,17 @@ def gear_records(repeat: int = 7, points: tuple[int, ...] = POINTS) -> list[dict
     system, gear = Z20
     t = ex.tooth(system, gear)
     for n in points:
-        secs, outline = best_time(lambda n=n: inv.tooth_outline(system, gear, teeth=1, points=n), repeat)
+        def draw(n: int = n) -> inv.ToothOutline:
+            return inv.tooth_outline(system, gear, teeth=1, points=n)
+
+        secs, outline = best_time(draw, repeat)
         records.append({"method": "involute", "case": "z20-m8", "n": n, "seconds": secs,
                         "max_rel_error": flank_error(outline, t.db / 2.0, t.da / 2.0)})
     for case, gears in MESH_CASES:
-        secs, c = best_time(lambda gears=gears: gm.construct_meshing(gears), repeat)
+        def mesh(gears: GearSet = gears) -> gm.MeshConstruction:
+            return gm.construct_meshing(gears)
+
+        secs, c = best_time(mesh, repeat)
         e = ex.meshing(gears)
         err = max(abs(c.a_w - e.a_w) / e.a_w, abs(c.alpha_w - e.alpha_w) / e.alpha_w,
                   abs(c.B1B2 - e.B1B2) / e.B1B2, abs(c.eps_alpha - e.eps_alpha) / e.eps_alpha)

@@ -12,7 +12,13 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from graphmech.errors import GraphmechError, NoSolution, NotApplicable, OutOfDomain, SceneError
+from graphmech.errors import (
+    GraphmechError,
+    NoSolution,
+    NotApplicable,
+    OutOfDomain,
+    SceneError,
+)
 from graphmech.exact import gear as ex
 from graphmech.geometry.kernels import ScalarOps, intersect_lines
 from graphmech.mechanisms.gear import GearSet, SpurGear
@@ -22,12 +28,17 @@ from graphmech.problems.gears.scene import (
     AT_RADIUS,
     GEAR_SHOW_CHOICES,
     PAIR_QUANTITIES,
-    SET_QUANTITIES,
     TOOTH_QUANTITIES,
     GearScene,
     quantity_unit,
 )
-from graphmech.problems.judging import Row, Verdict, in_double_precision, judge_value, measured_entries
+from graphmech.problems.judging import (
+    Row,
+    Verdict,
+    in_double_precision,
+    judge_value,
+    measured_entries,
+)
 from graphmech.problems.reader import page_size
 from graphmech.scales import format_scale, round_scale
 
@@ -331,7 +342,9 @@ def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float | None
         if stem == "alpha_a":
             return c.alpha_k, t.alpha_a, None, 1.0
         got = c.s_k if stem == "sa" else c.rho_k
-        return got, t.sa if stem == "sa" else t.rho_a, *_drawn(got, mu)
+        tip = t.sa if stem == "sa" else t.rho_a
+        assert tip is not None  # with α_a (the tip circle outside the base circle) come s_a and ρ_a
+        return got, tip, *_drawn(got, mu)
     if stem == "sb":
         c = _at(an, label, t.db / 2.0)
         return c.s_k, t.sb, *_drawn(c.s_k, mu)
@@ -385,11 +398,11 @@ def _pair_value(an: GearAnalysis, stem: str) -> tuple[float, float, float | None
     if stem in ("alpha_w",):
         return c.alpha_w, e.alpha_w, None, 1.0
     if stem in ("a_w", "rw1", "rw2", "N1N2"):
-        got = {"a_w": c.a_w, "rw1": c.r_w1, "rw2": c.r_w2, "N1N2": c.N1N2}[stem]
-        want = {"a_w": e.a_w, "rw1": e.r_w1, "rw2": e.r_w2, "N1N2": e.N1N2}[stem]
-        if got is None or want is None:
+        got_l = {"a_w": c.a_w, "rw1": c.r_w1, "rw2": c.r_w2, "N1N2": c.N1N2}[stem]
+        want_l = {"a_w": e.a_w, "rw1": e.r_w1, "rw2": e.r_w2, "N1N2": e.N1N2}[stem]
+        if got_l is None or want_l is None:
             return None
-        return got, want, *_drawn(got, mu_l)
+        return got_l, want_l, *_drawn(got_l, mu_l)
     if stem in ("B1B2", "pb"):
         got = c.B1B2 if stem == "B1B2" else c.pb
         return got, getattr(e, stem), *_drawn(got, mu_z)
@@ -494,7 +507,7 @@ def judge(an: GearAnalysis, precision_mm: float | None = None) -> list[Verdict]:
 
 def _arm_mm(an: GearAnalysis, name: str) -> float:
     """The shorter arm of a measured angle on the drawing, mm."""
-    stem, label, r_k = split_gear(name, an.problem)
+    stem, label, _ = split_gear(name, an.problem)
     if stem == "alpha_w":
         c = _mesh(an)
         return c.B1B2 / an.scales.get("l", c.B1B2 / 10.0)

@@ -222,7 +222,7 @@ def _read_gear(g: Reader) -> GearScene | None:
     assert m is not None and alpha is not None and ha is not None and c is not None and ks is not None \
         and pins is not None
     ring = [meshing == "internal" and i == 1 or (meshing is None and bool(internal)) for i in range(len(zs))]
-    gears = tuple(SpurGear(z, float(x), r) for z, x, r in zip(zs, xs, ring))
+    gears = tuple(SpurGear(z, float(x or 0.0), r) for z, x, r in zip(zs, xs, ring))
     system = ToothSystem(m, alpha, ha, c)
     return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins))
 
@@ -317,5 +317,14 @@ def _span_teeth(g: Reader, count: int, zs: tuple[int, ...] | None) -> tuple[int 
     return tuple(out)
 
 
-__all__ = ["AT_RADIUS", "GEAR_SHOW_CHOICES", "GearScene", "PAIR_QUANTITIES", "SET_QUANTITIES", "TOOTH_QUANTITIES",
-           "known_names", "parse_gear_scene", "quantity_unit"]
+__all__ = [
+    "AT_RADIUS",
+    "GEAR_SHOW_CHOICES",
+    "PAIR_QUANTITIES",
+    "SET_QUANTITIES",
+    "TOOTH_QUANTITIES",
+    "GearScene",
+    "known_names",
+    "parse_gear_scene",
+    "quantity_unit",
+]

@@ -7,7 +7,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from graphmech.exact import gear as ex  # the circles' sizes are definitions, not constructions
+from graphmech.exact import (
+    gear as ex,  # the circles' sizes are definitions, not constructions
+)
 from graphmech.problems.gears.check import GearAnalysis, analyse
 from graphmech.problems.judging import Row
 from graphmech.problems.protocol import PHRASES as COMMON

@@ -10,7 +10,7 @@ import pytest
 from graphmech.errors import SceneError
 from graphmech.problems import check
 from graphmech.problems.gears.check import analyse, judge, panels_for
-from graphmech.scene import load_scene, parse_scene
+from graphmech.scene import parse_scene
 from tests.conftest import SCENES, check_json, run_cli, values
 from tests.scenes import scene_path
 
@@ -141,7 +141,7 @@ def test_z_1000_tends_to_the_rack():
 def test_too_close_a_centre_distance_is_refused_in_one_line(tmp_path):
     p = tmp_path / "g.toml"
     p.write_text('[gear]\nm_mm = 5\nz = [20, 30]\nmeshing = "external"\ncentre_distance_mm = 124\n')
-    code, out, err = run_cli("check", str(p))
+    code, _, err = run_cli("check", str(p))
     assert code == 2 and err.startswith("g.toml: gear.centre_distance") and err.count("\n") == 1, err
 
 

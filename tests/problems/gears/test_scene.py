@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import math
+import tomllib
 
 import pytest
 
@@ -10,8 +11,6 @@ from graphmech.problems.gears.scene import GearScene, known_names, quantity_unit
 from graphmech.scene import load_scene, parse_scene
 from tests.conftest import SCENES
 from tests.scenes import only_problem
-
-import tomllib
 
 
 def read(text: str) -> GearScene:

@@ -25,7 +25,7 @@ def test_every_row_is_read_in_the_protocol(name):
 
 def test_the_pair_protocol_draws_the_line_of_action_then_the_zones():
     lines = steps(load_scene(SCENES / "gear.contact_ratio_19_42.toml"))
-    first = lambda words: next(i for i, x in enumerate(lines) if words in x)  # noqa: E731
+    first = lambda words: next(i for i, x in enumerate(lines) if words in x)
     assert first("d = mz = 95 mm") < first("O₁O₂ = a′ = 152.5 mm") < first("cuts N₁N₂ at B₂") < first("p_b = 14.76 mm")
     assert lines[-1] == "ε = B₁B₂/p_b = 1.633"
 
