@@ -9,7 +9,7 @@ scene's ``find`` (or ``[measured]``) names is constructed.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 from graphmech.errors import (
@@ -164,12 +164,27 @@ def _refuse(an: GearAnalysis, err: GraphmechError, key: str = "gear") -> SceneEr
 
 def _mesh(an: GearAnalysis) -> gmesh.MeshConstruction:
     if an.mesh is None:
-        key = "gear.centre_distance" if an.gears.centre_distance is not None else "gear"
         try:
             an.mesh = gmesh.construct_meshing(an.gears)
         except (NoSolution, NotApplicable, OutOfDomain) as err:
-            raise _refuse(an, err, key) from None
+            raise _mesh_refused(an, err) from None
     return an.mesh
+
+
+def _mesh_refused(an: GearAnalysis, err: GraphmechError) -> SceneError:
+    """A pair that cannot mesh, in the scene's words: a stated a′ too small for the shifts (too
+    large for a ring) says which centre distance would do, in mm."""
+    a_w = an.gears.centre_distance
+    if a_w is None or not isinstance(err, NoSolution):
+        return _refuse(an, err, "gear")
+    try:
+        free = ex.meshing(replace(an.gears, centre_distance=None)).a_w
+    except GraphmechError:
+        return _refuse(an, err, an.problem.centre_distance_key)
+    bound = "greatest" if an.gears.meshing == "internal" else "least"
+    return SceneError([(an.problem.centre_distance_key,
+                        f"at a′ = {a_w * 1000:.6g} mm the teeth overlap: the {bound} centre distance for these "
+                        f"shifts is {free * 1000:.6g} mm")], an.scene.source)
 
 
 def _warn(an: GearAnalysis) -> None:
@@ -197,11 +212,10 @@ def _warn(an: GearAnalysis) -> None:
             an.warnings.append(f"{name} is a ring whose tip circle (r_a = {t.da * 500:.4g} mm) lies inside its base "
                                f"circle (r_b = {t.db * 500:.4g} mm): its teeth are not involute there")
     if an.gears.pair:
-        key = "gear.centre_distance" if an.gears.centre_distance is not None else "gear"
         try:
             an.exact_mesh = ex.meshing(an.gears)
         except (NoSolution, NotApplicable, OutOfDomain) as err:
-            raise _refuse(an, err, key) from None
+            raise _mesh_refused(an, err) from None
         an.warnings.extend(an.exact_mesh.notes)
 
 

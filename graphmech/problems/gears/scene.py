@@ -66,6 +66,8 @@ class GearScene:
     gears: GearSet
     span_teeth: tuple[int | None, ...] = ()
     pin_diameter: tuple[float | None, ...] = ()
+    #: the key path of the stated centre distance as written (``gear.centre_distance_mm``), for messages
+    centre_distance_key: str = "gear.centre_distance"
 
     @property
     def labels(self) -> tuple[str, ...]:
@@ -224,7 +226,8 @@ def _read_gear(g: Reader) -> GearScene | None:
     ring = [meshing == "internal" and i == 1 or (meshing is None and bool(internal)) for i in range(len(zs))]
     gears = tuple(SpurGear(z, float(x or 0.0), r) for z, x, r in zip(zs, xs, ring))
     system = ToothSystem(m, alpha, ha, c)
-    return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins))
+    return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins),
+                     g.at(g.present("centre_distance") or "centre_distance"))
 
 
 def _coefficient(g: Reader, key: str, default: float, lo: float, hi: float) -> float | None:
