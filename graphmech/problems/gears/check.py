@@ -40,7 +40,7 @@ from graphmech.problems.judging import (
     measured_entries,
 )
 from graphmech.problems.reader import page_size
-from graphmech.scales import format_scale, round_scale
+from graphmech.scales import drawn_size_problem, format_scale, round_scale
 
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
@@ -230,24 +230,28 @@ def _choose_scales(an: GearAnalysis) -> None:
             an.scales[key] = stated[key]
             an.stated.add(key)
     panels = set(an.panels)
+    _legible(an)
     w, h = page_size(an.scene)
     n_rows = (len(_drawn_labels(an)) if "tooth" in panels else 0) + bool({"meshing", "zones"} & panels) \
         + ("measurement" in panels) + ("root_base" in panels)
     room_h = max((h - TITLE_MM) / max(n_rows, 1) - CAPTION_MM, 30.0)
     room_w = w - SIDE_MM
-    if "tooth" not in an.scales and {"tooth", "measurement"} & panels:
+    if "tooth" not in an.scales and "tooth" in panels:  # three teeth, the construction's strings beside them
         need = []
         for label in _drawn_labels(an):
             t = ex.tooth(s, an.gear(label))
             depth = t.ha + t.hf
-            if "tooth" in panels:  # three teeth and the strings of the construction beside them
-                need += [(3.0 * t.p + 2.0 * depth) / (TOOTH_MM / 225.0 * room_w), 2.0 * depth / room_h]
-            if "measurement" in panels:
-                g = an.gear(label)
-                k = 2 if g.internal else an.problem.span_teeth[an.index(label)] or ex.span_teeth(s, g)
-                need.append((k * t.p + 2.0 * depth) / (0.45 * room_w))
-                need.append((max(t.da, t.df) + 4.0 * t.p) / room_h)  # the whole gear with its pins
+            need += [(3.0 * t.p + 2.0 * depth) / (TOOTH_MM / 225.0 * room_w), 2.0 * depth / room_h]
         an.scales["tooth"] = round_scale(max(need))
+    if "l" not in an.scales and "measurement" in panels and not ({"meshing", "zones"} & panels):
+        need = []  # the whole gear with its pins, the caliper over k teeth beside it
+        for label in _drawn_labels(an):
+            g = an.gear(label)
+            t = ex.tooth(s, g)
+            k = 2 if g.internal else an.problem.span_teeth[an.index(label)] or ex.span_teeth(s, g)
+            need += [(min(k, g.z / 2.0) * t.p + 2.0 * (t.ha + t.hf)) / (0.45 * room_w),
+                     (max(t.da, t.df) + 4.0 * t.p) / room_h]
+        an.scales["l"] = round_scale(max(need))
     if an.gears.pair and ({"meshing", "zones"} & panels):
         em = an.exact_mesh
         share = 0.5 if {"meshing", "zones"} <= panels else 1.0
@@ -260,6 +264,23 @@ def _choose_scales(an: GearAnalysis) -> None:
                 mu = round_scale(max(em.B1B2, em.pb) * 4.0 / min(room_h, share * room_w))
                 an.mesh_whole = False
             an.scales["l"] = mu
+
+
+def _legible(an: GearAnalysis) -> None:
+    """Refuse a stated μ that draws its panel beyond any page (graphmech.scales.DRAWN_SIZE_RANGE_MM,
+    the rule every kind keeps): a pair at 1e-12 m/mm would be kilometres of arcs to dash."""
+    s = an.gears.system
+    g = an.gears.gears[0]
+    t = ex.tooth(s, g)
+    sizes = {"tooth": ("the teeth", 3.0 * t.p + 2.0 * (t.ha + t.hf)),
+             "l": ("the gears", max(max(ex.tooth(s, x).da, ex.tooth(s, x).df) for x in an.gears.gears)
+                   + (an.exact_mesh.a_w if an.gears.pair else 0.0)),
+             "zones": ("B₁B₂", an.exact_mesh.B1B2 if an.gears.pair else t.pb)}
+    for key in an.stated:
+        what, size = sizes[key]
+        why = drawn_size_problem(size, an.scales[key], key, what)
+        if why is not None:
+            raise SceneError([(f"scales.{key}", why)], an.scene.source)
 
 
 def _pair_extent(an: GearAnalysis) -> tuple[float, float]:
@@ -375,6 +396,7 @@ def _tooth_value(an: GearAnalysis, stem: str, label: str, mu: float | None
         if stem == "alpha_a_pointed":
             return c.alpha_k, e.alpha_a_pointed, None, 1.0
         return c.theta_k, e.inv_alpha_a_pointed, None, 1.0
+    mu = an.scales.get("l")  # the span and the pins are drawn with the whole gear
     if stem == "W":
         if g.internal:
             raise SceneError([("find", f"W{label}: a ring's span cannot be measured with a caliper: measure over "

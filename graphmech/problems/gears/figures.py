@@ -18,7 +18,7 @@ meshing (at μ "l")
 zones (at μ "zones")
     B₁B₂ laid off large (孙桓 Fig. 5-19), the points at p_b from each end, the double-contact
     zones hatched at both ends and the single-contact zone between, dimensioned; ε < 1: the gap.
-measurement (at μ "tooth")
+measurement (at μ "l", the whole gear's scale)
     the caliper over k teeth (its jaws, W_k dimensioned); the pins with M dimensioned.
 root_base
     r_f/m and r_b/m against z, two straight lines crossing where the root circle is the base circle.
@@ -109,6 +109,11 @@ NUMBER_GAP = 4.5
 #: The zone band's height above B₁B₂ and its hatching's spacing; dimension rows below, mm.
 BAND, HATCH = 4.0, 1.5
 DIM_ROWS = (-11.0, -19.0, -27.0, -35.0)
+#: The most teeth a whole gear is drawn with (a larger one: the teeth about its pins, and its
+#: tip and root circles).
+WHOLE_TEETH_MOST = 200
+#: The most teeth a span panel draws whole; a longer span draws the two teeth at each end.
+SPAN_TEETH_MOST = 12
 #: The root–base diagram's width, mm.
 DIAGRAM_W = 75.0
 
@@ -116,7 +121,7 @@ DIAGRAM_W = 75.0
 @dataclass(frozen=True)
 class GearDrawing:
     """What a gear sheet draws: the model, the scales (m/mm: ``"l"`` the meshing panel or a single
-    gear's whole view, ``"tooth"`` the tooth and measurement panels, ``"zones"`` the enlarged
+    gear's whole view and the measurement panels, ``"tooth"`` the tooth panel, ``"zones"`` the enlarged
     B₁B₂), and the constructions, each tagged with its gear's name ("" for a single gear, "1"
     or "2" in a pair). ``root_base``: (z at which the root circle equals the base circle, the
     gear's own z or 0)."""
@@ -773,9 +778,9 @@ def zones_notes(drawing: GearDrawing, m: MeshConstruction) -> tuple[str, ...]:
 
 # ----------------------------------------------------------------------------- measurement
 def span_items(drawing: GearDrawing, name: str, sp: SpanMeasurement) -> list[Primitive]:
-    """The caliper over k teeth at μ "tooth": the teeth between, the line K₁K₂ tangent to the
+    """The caliper over k teeth at μ "l": the teeth between, the line K₁K₂ tangent to the
     base circle at N, the jaws ⟂ to it at K₁, K₂, W_k dimensioned outside."""
-    mu = drawing.scales["tooth"]
+    mu = drawing.scales["l"]
     z = _gear(drawing.gears, name).z
     t = dict(drawing.teeth).get(name)
     K1, K2, N = _sc(sp.K1, mu), _sc(sp.K2, mu), _sc(sp.N, mu)
@@ -784,11 +789,15 @@ def span_items(drawing: GearDrawing, name: str, sp: SpanMeasurement) -> list[Pri
     if t is not None:
         a1, a2 = sorted((_angle(sp.K1), _angle(sp.K2)))
         step = math.tau / z
-        js = range(round((a1 - math.pi / 2) / step), round((a2 - math.pi / 2) / step) + 1)  # the teeth K₁, K₂ touch and between
-        line = tuple(_sc(p, mu) for p in replicated(t, z, list(js)))
-        if len(line) >= 2:
-            items.append(Polyline(line, "result"))
-            pts += list(line)
+        js = list(range(round((a1 - math.pi / 2) / step), round((a2 - math.pi / 2) / step) + 1))  # the teeth K₁, K₂ touch and between
+        # a long span (k of a large gear) draws the two teeth at each end; those between are the
+        # same teeth, and drawing thousands of them would only take time
+        groups = [js] if len(js) <= SPAN_TEETH_MOST else [js[:2], js[-2:]]
+        for group in groups:
+            line = tuple(_sc(p, mu) for p in replicated(t, z, group))
+            if len(line) >= 2:
+                items.append(Polyline(line, "result"))
+                pts += list(line)
     window = _box(pts, MARGIN + 6.0)
     if t is not None:
         items += clipped_circle((0.0, 0.0), t.rb / mu, window, "construction", dashdot=True)
@@ -811,9 +820,9 @@ def span_items(drawing: GearDrawing, name: str, sp: SpanMeasurement) -> list[Pri
 
 
 def pins_items(drawing: GearDrawing, name: str, pm: PinMeasurement) -> tuple[list[Primitive], bool]:
-    """The pins in their spaces and M over them at μ "tooth"; the whole gear when it fits
+    """The pins in their spaces and M over them at μ "l"; the whole gear when it fits
     :data:`WHOLE_MOST`, else the first pin's region only (False: M not to scale)."""
-    mu = drawing.scales["tooth"]
+    mu = drawing.scales["l"]
     gear = _gear(drawing.gears, name)
     z = gear.z
     t = dict(drawing.teeth).get(name)
@@ -825,16 +834,22 @@ def pins_items(drawing: GearDrawing, name: str, pm: PinMeasurement) -> tuple[lis
     shown = C if whole else C[:1]
     pts: list[XY] = [p for c in shown for p in ((c[0] - rp, c[1] - rp), (c[0] + rp, c[1] + rp))]
     if t is not None:
-        if whole:
-            js: list[int] = list(range(z))
-        else:
-            a = _angle(pm.centres[0]) - math.pi / 2.0
-            j0 = round(a / (math.tau / z))
-            js = [j0 - 2, j0 - 1, j0, j0 + 1, j0 + 2]
-        line = tuple(_sc(p, mu) for p in replicated(t, z, js))
-        if len(line) >= 2:
-            items.append(Polyline(line, "result", closed=whole))
-            pts += list(line)
+        groups: list[list[int]] = []
+        if whole and z <= WHOLE_TEETH_MOST:
+            groups = [list(range(z))]
+        else:  # the teeth about each pin shown; a large gear's others are its tip and root circles
+            for c in (pm.centres if whole else pm.centres[:1]):
+                j0 = round((_angle(c) - math.pi / 2.0) / (math.tau / z))
+                groups.append([j0 - 2, j0 - 1, j0, j0 + 1, j0 + 2])
+        closed = whole and z <= WHOLE_TEETH_MOST
+        for group in groups:
+            line = tuple(_sc(p, mu) for p in replicated(t, z, group))
+            if len(line) >= 2:
+                items.append(Polyline(line, "result", closed=closed))
+                pts += list(line)
+        if whole and not closed:
+            for r in (t.ra, t.rf):
+                items.append(Circle((0.0, 0.0), r / mu, "construction"))
     window = _box(pts, MARGIN)
     if t is not None:
         items += clipped_circle((0.0, 0.0), t.r / mu, window, "construction", dashdot=True)
@@ -944,7 +959,7 @@ def gear_sheet(title: str, show: Sequence[str], drawing: GearDrawing, page: tupl
     bad = [p for p in show if p not in PANELS]
     if bad:
         raise OutOfDomain(f"unknown panel(s) {', '.join(map(repr, bad))}; use {', '.join(PANELS)}")
-    need = {"tooth": "tooth", "meshing": "l", "zones": "zones", "measurement": "tooth"}
+    need = {"tooth": "tooth", "meshing": "l", "zones": "zones", "measurement": "l"}
     for p in PANELS:
         if p in show and p in need:
             mu = drawing.scales.get(need[p], 0.0)
@@ -973,7 +988,7 @@ def gear_sheet(title: str, show: Sequence[str], drawing: GearDrawing, page: tupl
                                 zones_notes(drawing, drawing.mesh), row, (("l", drawing.scales["zones"]),)))
         row += 1
     if "measurement" in show:
-        mu = drawing.scales["tooth"]
+        mu = drawing.scales["l"]
         for name, sp in drawing.span:
             panels.append(Panel(f"measurement{name}", _caption("measurement", name, notation),
                                 tuple(span_items(drawing, name, sp)),

@@ -301,7 +301,7 @@ def test_circle_in_a_window():
 
 def test_measurement_span_and_pins():
     d = single()
-    mu = d.scales["tooth"]
+    mu = d.scales["l"]  # the span and the pins are drawn with the whole gear
     sheet = gear_sheet("g", ["measurement"], d, A3)
     assert [p.name for p in sheet.panels] == ["measurement", "pins"]
     sp = d.span[0][1]
