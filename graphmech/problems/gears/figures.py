@@ -32,7 +32,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 from itertools import pairwise
 
-from graphmech.drawing.lettering import LETTER, number, scale_text
+from graphmech.drawing.lettering import LETTER, number, scale_text, text_box_size
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (
     ArcArrow,
@@ -760,11 +760,15 @@ def zones_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en")
 
 
 def _hdim(x0: float, x1: float, y: float, text: str) -> list[Primitive]:
-    """A horizontal dimension from x0 to x1 at height y, its text set just above its middle."""
+    """A horizontal dimension from x0 to x1 at height y, its text set just above its middle — or
+    left out where it is wider than the dimension (the notes under the panel give the value)."""
     items = dimension((x0, y), (x1, y), text)
     lab = items.pop()
     assert isinstance(lab, Label)
-    return items + [Text(text, ((x0 + x1) / 2.0, y + 2.2), LETTER * 0.85, italic=True)]
+    size = LETTER * 0.85
+    if text_box_size(text, size)[0] > abs(x1 - x0) - 1.0:
+        return items
+    return items + [Text(text, ((x0 + x1) / 2.0, y + 2.8), size, italic=True)]
 
 
 def zones_notes(drawing: GearDrawing, m: MeshConstruction) -> tuple[str, ...]:
