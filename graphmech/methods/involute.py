@@ -341,20 +341,30 @@ def _cutter(system: ToothSystem, gear: SpurGear) -> _Cutter:
     r, _, _, _ = circles(system, gear)
     m, alpha = system.m, system.alpha
     ops = ScalarOps()
-    rho = system.c_star * m / (1.0 - math.sin(alpha))
     datum = r + gear.x * m  # the cutter's reference line, x·m beyond the rolling line
     tip = datum - (system.ha_star + system.c_star) * m
-    # The cutter's right flank through (πm/4, datum) inclined at α to the vertical; the rounding
-    # is tangent to it and to the tip line: its centre on both lines drawn ρ_f inside them.
-    ops.step = "rounding centre = (flank moved ρ_f in) ∩ (tip line moved ρ_f up)"
-    xc, yc = intersect_lines(
-        ops,
-        (math.pi * m / 4.0 - rho * math.cos(alpha), datum + rho * math.sin(alpha), math.sin(alpha), math.cos(alpha)),
-        (0.0, tip + rho, 1.0, 0.0),
-    )
-    if xc < 0.0:
-        raise NotApplicable(f"the cutter's tip roundings (ρ_f = c*m/(1 − sin α) = {rho:g} m) overlap across its "
-                            "tip: c* is too large for this rounding")
+
+    def centre(rho: float) -> tuple[float, float]:
+        # The cutter's right flank through (πm/4, datum) inclined at α to the vertical; the
+        # rounding is tangent to it and to the tip line: its centre on both lines drawn ρ_f inside.
+        ops.step = "rounding centre = (flank moved ρ_f in) ∩ (tip line moved ρ_f up)"
+        x, y = intersect_lines(
+            ops,
+            (math.pi * m / 4.0 - rho * math.cos(alpha), datum + rho * math.sin(alpha), math.sin(alpha),
+             math.cos(alpha)),
+            (0.0, tip + rho, 1.0, 0.0),
+        )
+        return float(x), float(y)
+
+    sharp = centre(0.0)[0]  # half the basic rack's tip width: πm/4 − (h*a + c*)m·tan α
+    if sharp <= 0.0:
+        raise NotApplicable(f"the basic rack's tooth is pointed before its tip line at α = {math.degrees(alpha):g}° "
+                            "(its tip width πm/2 − 2(h*a + c*)m·tan α ≤ 0): no cutter has these teeth")
+    rho = system.c_star * m / (1.0 - math.sin(alpha))  # the full rounding that fills the clearance
+    xc, yc = centre(rho)
+    if xc < 0.0:  # the two roundings would overlap across the tip: they meet at its middle instead
+        rho *= sharp / (sharp - xc)  # the centre's x is linear in ρ_f
+        xc, yc = 0.0, centre(rho)[1]
     # Q, the rounding's tangent point with the flank; it is in contact when its normal (the
     # flank's, (cos α, −sin α)) passes through the pole: the cutter has moved −x_cross.
     Q = (xc + rho * math.cos(alpha), yc - rho * math.sin(alpha))

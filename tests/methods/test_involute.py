@@ -236,3 +236,19 @@ def test_random_gears(z: int, x: float, m: float, alpha_deg: float, internal: bo
         for f in pair:
             for p in f.points:
                 assert lo * (1 - 1e-12) <= math.hypot(*p) <= hi * (1 + 1e-12)
+
+
+def test_the_cutters_rounding_is_capped_where_the_two_meet_and_a_pointed_rack_is_refused():
+    """c*m/(1 − sin α) fills the clearance at 20°; from about 22° the two roundings of the cutter's
+    tip would overlap, so they meet at its middle (a full-round tip); past 32° (h*a + c* = 1.25)
+    the basic rack's tooth is pointed before its tip line and no cutter exists."""
+    from graphmech.errors import NotApplicable
+    from graphmech.methods.involute import tooth_outline
+
+    for deg in (22.0, 25.0, 30.0):
+        out = tooth_outline(ToothSystem(0.004, math.radians(deg)), SpurGear(30), teeth=1)
+        rs = [math.hypot(*p) for p in out.outline if p != (0.0, 0.0)]  # the sector closes through O
+        assert min(rs) == pytest.approx(out.rf, rel=1e-9)  # the fillet still reaches the root circle
+        assert max(rs) <= out.ra * (1 + 1e-12)
+    with pytest.raises(NotApplicable, match="pointed before its tip line"):
+        tooth_outline(ToothSystem(0.004, math.radians(35.0)), SpurGear(30))

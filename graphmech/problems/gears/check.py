@@ -151,8 +151,13 @@ def analyse(scene: Scene[GearScene], extra_measured: tuple[tuple[str, float], ..
     with in_double_precision("the gear construction"):
         _warn(an)
         _choose_scales(an)
-        for name in an.names:
-            row = _row(an, name)
+        for i, name in enumerate(an.names):
+            try:
+                row = _row(an, name)
+            except SceneError:
+                raise
+            except GraphmechError as err:  # a construction that cannot be made for this gear, said at its name
+                raise SceneError([(f"find[{i}]" if scene.find else "gear", f"{name}: {err}")], scene.source) from None
             if row is not None:
                 an.rows.append(row)
     return an
@@ -248,7 +253,7 @@ def _choose_scales(an: GearAnalysis) -> None:
         for label in _drawn_labels(an):
             g = an.gear(label)
             t = ex.tooth(s, g)
-            k = 2 if g.internal else an.problem.span_teeth[an.index(label)] or ex.span_teeth(s, g)
+            k = 2 if g.internal or g.z < 2 else an.problem.span_teeth[an.index(label)] or ex.span_teeth(s, g)
             need += [(min(k, g.z / 2.0) * t.p + 2.0 * (t.ha + t.hf)) / (0.45 * room_w),
                      (max(t.da, t.df) + 4.0 * t.p) / room_h]
         an.scales["l"] = round_scale(max(need))
@@ -586,7 +591,10 @@ def gear_figure(an: GearAnalysis, page: tuple[float, float], footer: tuple[str, 
     teeth = []
     if "tooth" in an.panels or "measurement" in an.panels:
         for lab in _drawn_labels(an):
-            teeth.append((lab, inv.tooth_outline(s, an.gear(lab))))
+            try:
+                teeth.append((lab, inv.tooth_outline(s, an.gear(lab))))
+            except (NotApplicable, OutOfDomain, NoSolution) as err:
+                raise _refuse(an, err, "gear") from None
     if "meshing" in an.panels or "zones" in an.panels:
         _mesh(an)
     if "root_base" in an.panels:
