@@ -172,3 +172,13 @@ def test_shared_pairs_check(name):
     doc = check_json(scene_path(name))
     for r in doc["quantities"]:
         assert r["rel_error"] <= 1e-9 or abs(r["graphical"] - r["exact"]) < 1e-12, r
+
+
+def test_a_students_span_and_pins_are_judged_at_the_drawings_scale():
+    an = analyse(scene('find = ["W", "M"]\n[scales]\nl_mm_per_mm = 1\n[gear]\nm_mm = 5\nz = 18\n'
+                       '[measured]\nW = 0.0380\nM = 0.1025\n'))
+    v = {x.name: x for x in judge(an)}
+    # 0.5 mm of precision at μl = 1 mm/mm: ±0.5 mm; W₃ = 38.16 mm, M = 101.97 mm
+    assert v["W"].tolerance == pytest.approx(0.5e-3) and v["W"].ok
+    assert v["M"].tolerance == pytest.approx(0.5e-3) and not v["M"].ok
+    assert v["M"].expected == pytest.approx(0.10197016294, rel=1e-9)
