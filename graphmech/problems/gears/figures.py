@@ -148,7 +148,11 @@ def _label(text: str, at: XY, avoid: Sequence[XY] = (), size: float = LETTER, it
 
 
 def _mm(x: float) -> str:
-    return f"{number(x * 1e3)} mm"
+    """A length in mm as gear drawings give it: to 0.01 mm (101.97 mm, not 102), at least four
+    significant figures for a small one."""
+    v = x * 1e3
+    sig = max(4, math.floor(math.log10(abs(v))) + 3) if v != 0.0 and math.isfinite(v) else 4
+    return f"{number(v, sig)} mm"
 
 
 def _sc(p: XY, mu: float) -> XY:

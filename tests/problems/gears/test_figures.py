@@ -313,7 +313,7 @@ def test_measurement_span_and_pins():
     dims = [a for a in items(sheet, "pins") if isinstance(a, Arrow)]
     ends = [a.p1 for a in dims]
     assert math.dist(*ends) * mu == pytest.approx(pm.M, rel=1e-12)
-    assert "M = 178.2 mm" in texts(sheet, "pins")
+    assert "M = 178.24 mm" in texts(sheet, "pins")
 
 
 def test_root_base_lines_cross_at_the_stated_z():
