@@ -96,6 +96,29 @@ class Polyline:
         object.__setattr__(self, "points", pts)
 
 
+def clip_interval(a: XY, b: XY, box: tuple[float, float, float, float]) -> tuple[float, float] | None:
+    """The part (t0, t1) of the segment a + t·(b − a), 0 ≤ t ≤ 1, inside ``box`` = (x0, y0, x1, y1)
+    (Liang–Barsky); None when no stretch of it is (a point on an edge is none).
+
+    >>> clip_interval((-1.0, 0.5), (3.0, 0.5), (0.0, 0.0, 1.0, 1.0))
+    (0.25, 0.5)
+    """
+    x0, y0, x1, y1 = box
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, a[0] - x0), (dx, x1 - a[0]), (-dy, a[1] - y0), (dy, y1 - a[1])):
+        if p == 0.0:
+            if q < 0.0:
+                return None
+            continue
+        t = q / p
+        if p < 0.0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+    return (t0, t1) if t0 < t1 else None
+
+
 def angle_arc(at: XY, d1: XY, d2: XY, r: float, role: Role = "label") -> Polyline | None:
     """The arc of radius ``r`` (mm) about ``at`` marking the smaller angle between directions
     ``d1`` and ``d2``: chords of about 0.5 mm, at most ``ARC_MOST`` of them (a drawing at a stated

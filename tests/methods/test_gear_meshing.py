@@ -8,21 +8,12 @@ import pytest
 from graphmech.errors import NoSolution, NotApplicable
 from graphmech.mechanisms.gear import GearSet, SpurGear, ToothSystem
 from graphmech.methods.gear_meshing import construct_meshing
+from tests.methods.test_involute import arc_inv, inv  # the closed forms the tests hold the constructions to
 
 ALPHA = math.radians(20.0)
 REL = 1e-9
 
 
-def inv(a: float) -> float:
-    return math.tan(a) - a
-
-
-def arc_inv(value: float) -> float:
-    lo, hi = 0.0, math.pi / 2 - 1e-9
-    for _ in range(200):
-        mid = (lo + hi) / 2
-        lo, hi = (mid, hi) if inv(mid) < value else (lo, mid)
-    return (lo + hi) / 2
 
 
 def closed(m: float, z1: int, z2: int, x1: float = 0.0, x2: float = 0.0, a_w: float | None = None,

@@ -34,7 +34,7 @@ import numpy as np
 from graphmech.drawing.lettering import LETTER, number, point_name, scale_text
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Role, Segment,
-                                         Sheet, Slider)
+                                         Sheet, Slider, clip_interval)
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Linkage
 from graphmech.methods.kinetostatics import (GroupPolygon, GuideReaction, KinetostaticSolution, Lever,
                                             PolygonKinematics)
@@ -443,20 +443,7 @@ def polygon_detail(group: GroupPolygon, mu_F: float, i: int) -> Detail | None:
 
 def _clip(a: complex, b: complex, box: tuple[float, float, float, float]) -> tuple[float, float] | None:
     """The part (t0, t1) of the segment a + t·(b − a), 0 ≤ t ≤ 1, inside ``box`` (Liang–Barsky)."""
-    x0, y0, x1, y1 = box
-    d = b - a
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-d.real, a.real - x0), (d.real, x1 - a.real), (-d.imag, a.imag - y0), (d.imag, y1 - a.imag)):
-        if p == 0.0:
-            if q < 0.0:
-                return None
-            continue
-        t = q / p
-        if p < 0.0:
-            t0 = max(t0, t)
-        else:
-            t1 = min(t1, t)
-    return (t0, t1) if t0 < t1 else None
+    return clip_interval((a.real, a.imag), (b.real, b.imag), box)
 
 
 def polygon_items(group: GroupPolygon, mu_F: float, i: int, detail: Detail | None = None,

@@ -36,6 +36,7 @@ from graphmech.drawing.lettering import LETTER, number, scale_text, text_box_siz
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (
     ArcArrow,
+    clip_interval,
     Arrow,
     Circle,
     Hinge,
@@ -253,21 +254,11 @@ def clipped_circle(c: XY, r: float, box: Box, role: Role = "construction", dashd
 
 def clipped_segment(p0: XY, p1: XY, box: Box) -> tuple[XY, XY] | None:
     """The part of p0p1 inside ``box`` (Liang–Barsky), None when none is."""
-    t0, t1 = 0.0, 1.0
-    d = _sub(p1, p0)
-    for p, q in ((-d[0], p0[0] - box[0]), (d[0], box[2] - p0[0]), (-d[1], p0[1] - box[1]), (d[1], box[3] - p0[1])):
-        if p == 0.0:
-            if q < 0.0:
-                return None
-            continue
-        t = q / p
-        if p < 0.0:
-            t0 = max(t0, t)
-        else:
-            t1 = min(t1, t)
-    if t0 > t1:
+    part = clip_interval(p0, p1, box)
+    if part is None:
         return None
-    return _add(p0, d, t0), _add(p0, d, t1)
+    d = _sub(p1, p0)
+    return _add(p0, d, part[0]), _add(p0, d, part[1])
 
 
 def dimension(p0: XY, p1: XY, text: str, side: XY | None = None) -> list[Primitive]:
