@@ -45,9 +45,10 @@ from graphmech.scales import drawn_size_problem, format_scale, round_scale
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
 
-#: The page's parts, mm: the title above the panels, the notes under each, the side margins;
-#: three teeth take up to TOOTH_MM of a 225 mm wide row (the construction's strings run beside them).
-TITLE_MM, CAPTION_MM, SIDE_MM, TOOTH_MM = 38.0, 40.0, 40.0, 200.0
+#: The page's parts, mm: the title above the panels, the notes under each, the side margins.
+TITLE_MM, CAPTION_MM, SIDE_MM = 38.0, 40.0, 40.0
+#: Three teeth take up to this share of a row's width (the construction's strings run beside them).
+TOOTH_SHARE = 0.9
 #: On the meshing panel B₁B₂ is drawn at least this long; a pair too large for that is drawn
 #: around the line of action (the circles as arcs).
 MESH_B1B2_MM = 5.0
@@ -246,7 +247,7 @@ def _choose_scales(an: GearAnalysis) -> None:
         for label in _drawn_labels(an):
             t = ex.tooth(s, an.gear(label))
             depth = t.ha + t.hf
-            need += [(3.0 * t.p + 2.0 * depth) / (TOOTH_MM / 225.0 * room_w), 2.0 * depth / room_h]
+            need += [(3.0 * t.p + 2.0 * depth) / (TOOTH_SHARE * room_w), 2.0 * depth / room_h]
         an.scales["tooth"] = round_scale(max(need))
     if "l" not in an.scales and "measurement" in panels and not ({"meshing", "zones"} & panels):
         need = []  # the whole gear with its pins, the caliper over k teeth beside it
