@@ -355,6 +355,11 @@ def pin_diameter(system: ToothSystem, gear: SpurGear) -> float:
     _check(system, gear)
     _, rb, _, _ = _radii(system, gear)
     alpha, z, t = system.alpha, gear.z, math.tan(system.alpha)
+    # the space on the reference circle, e/m = π/2 + 2x tan α (a ring's) or π/2 − 2x tan α: where it
+    # is closed no pin touches the flanks there
+    if (HALF_PI + 2.0 * gear.x * t if gear.internal else HALF_PI - 2.0 * gear.x * t) <= 0.0:
+        raise NoSolution("the tooth space on the reference circle is closed (e = πm/2 ∓ 2xm·tan α ≤ 0): no pin "
+                         "touches the flanks there — state pin_diameter")
     if gear.internal:
         alpha_m = alpha - (HALF_PI + 2.0 * gear.x * t) / z
         if not alpha_m > 0.0:

@@ -38,7 +38,8 @@ class MeshConstruction:
     ``zone_points``: the points at p_b from B₁ and from B₂ on B₁B₂ (bounding the double-contact
     zones at its ends and the single-contact zone between), empty when ε < 1 or ε ≥ 2;
     ``single_contact``/``double_contact`` their lengths (None likewise). ``rho``: the radii of
-    curvature at the ends of contact, {"N1B1", "N1B2", "N2B1", "N2B2"} (N2… absent for a rack).
+    curvature at the ends of contact, {"N1B1", "N1B2", "N2B1", "N2B2"} (N2… absent for a rack),
+    signed: negative where the contact lies beyond N (interference).
     ``backlash``: circumferential, on the working pitch circle, from the flanks constructed there
     (None unless the set states both a′ and the shifts). ``interference``: B₁ or B₂ beyond N₂ or
     N₁ ("B1 beyond N2" …), empty when the contact lies within N₁N₂."""
@@ -174,11 +175,11 @@ def construct_meshing(gears: GearSet) -> MeshConstruction:
         if not (a_w > 0 and math.isfinite(a_w)):
             raise OutOfDomain(f"the centre distance must be positive and finite, not {a_w!r}")
         line = drawn(a_w)
-        backlash: float | None = _backlash(system, gears, line, a_w)
-        assert backlash is not None
-        if backlash < -1e-12 * m:
-            raise NoSolution(f"the teeth overlap by {-backlash * 1e3:.6g} mm on the working pitch circle at "
+        j = _backlash(system, gears, line, a_w)
+        if j < -1e-12 * m:
+            raise NoSolution(f"the teeth overlap by {-j * 1e3:.6g} mm on the working pitch circle at "
                              f"a′ = {a_w * 1e3:.6g} mm: the pair cannot be assembled this close")
+        backlash: float | None = j
     else:
         backlash = None
         if meshing == "rack":
@@ -247,12 +248,18 @@ def _measure(gears: GearSet, line: _Line, a_w: float, backlash: float | None) ->
         Zb = _along(B2, u, pb)
         zone = (Za, Zb)
         single, double = _dist(Za, Zb), _dist(B2, Za)
-    rho = {"N1B1": _dist(N1, B1), "N1B2": _dist(N1, B2)}
+    def along(frm: XY, to: XY) -> float:  # (to − frm)·u: a length on N₁N₂, signed along it
+        return (to[0] - frm[0]) * u[0] + (to[1] - frm[1]) * u[1]
+
+    # the radii of curvature at B₁, B₂, negative where the contact point lies beyond N (interference)
+    rho = {"N1B1": along(N1, B1), "N1B2": along(N1, B2)}
     notes = []
     if (B2[0] - N1[0]) * u[0] + (B2[1] - N1[1]) * u[1] < 0.0:
         notes.append("B2 beyond N1")
     if N2 is not None:
-        rho["N2B1"], rho["N2B2"] = _dist(N2, B1), _dist(N2, B2)
+        # gear 2's centre of curvature N₂ lies ahead of P along u for an external pair, behind N₁ for a ring
+        sign = 1.0 if meshing == "internal" else -1.0
+        rho["N2B1"], rho["N2B2"] = sign * along(N2, B1), sign * along(N2, B2)
         if meshing == "external" and (B1[0] - N2[0]) * u[0] + (B1[1] - N2[1]) * u[1] > 0.0:
             notes.append("B1 beyond N2")
     alpha_w = math.atan2(u[1], u[0])

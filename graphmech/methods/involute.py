@@ -540,25 +540,6 @@ def span(system: ToothSystem, gear: SpurGear, k: int) -> SpanMeasurement:
     return SpanMeasurement(k=k, N=N, K1=K1, K2=K2, W=math.hypot(K1[0] - K2[0], K1[1] - K2[1]))
 
 
-def span_teeth(system: ToothSystem, gear: SpurGear) -> int:
-    """k chosen as the book does: the jaws touch the flanks nearest the circle r + xm (for x = 0
-    the reference circle: k = zα/180° + 0.5 rounded) — here the k whose jaws' string length φ on
-    the flank is nearest that circle's."""
-    r, rb, _, _ = circles(system, gear)
-    target = _unwound(rb, max(r + gear.x * system.m, rb))
-    left = _flank(system, gear, math.pi / 2.0, right=False)
-    pitch = 2.0 * math.pi / gear.z
-    best, best_gap = 1, math.inf
-    for k in range(1, gear.z):
-        axis = math.pi / 2.0 - (k - 1) * pitch / 2.0
-        phi = left.theta0 - axis  # the left flank unwinds clockwise: φ is the arc from its start to N
-        gap = abs(phi - target)
-        if gap >= best_gap:
-            break
-        best, best_gap = k, gap
-    return best
-
-
 def over_pins(system: ToothSystem, gear: SpurGear, d_pin: float | None = None) -> PinMeasurement:
     """Pins in space 0 (centred on the axis at 90° − 180°/z, between tooth 0 and tooth 1) and in
     the space opposite (even z) or the one nearest opposite (odd z).
@@ -576,6 +557,9 @@ def over_pins(system: ToothSystem, gear: SpurGear, d_pin: float | None = None) -
     ops = ScalarOps()
     if d_pin is None:
         N, C = flank.at(r)
+        if math.atan2(C[1], C[0]) <= axis:  # the flank's reference point lies past the space's axis
+            raise NoSolution("the tooth space on the reference circle is closed: no pin touches the flanks there "
+                             "— state pin_diameter")
         ops.step = "X = normal at C ∩ the space's axis"
         u = unit(ops, N, C)
         x, y = intersect_lines(ops, (N[0], N[1], u[0], u[1]), (0.0, 0.0, math.cos(axis), math.sin(axis)))
@@ -619,4 +603,4 @@ def over_pins(system: ToothSystem, gear: SpurGear, d_pin: float | None = None) -
     return PinMeasurement(d_pin=d, centres=(X, X2), contacts=contacts, M=across - d if gear.internal else across + d)
 
 __all__ = ["AtRadius", "Flank", "PinMeasurement", "SpanMeasurement", "ToothOutline", "at_radius", "bisect_root",
-           "circles", "involute_polyline", "over_pins", "pointed_tip", "span", "span_teeth", "tooth_outline"]
+           "circles", "involute_polyline", "over_pins", "pointed_tip", "span", "tooth_outline"]

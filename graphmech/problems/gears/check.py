@@ -318,11 +318,6 @@ def _at(an: GearAnalysis, label: str, r: float) -> inv.AtRadius:
     return an.radii[key]
 
 
-def _rad(an: GearAnalysis, label: str, which: str) -> float:
-    t = ex.tooth(an.gears.system, an.gear(label))
-    return {"r": t.d / 2.0, "ra": t.da / 2.0, "rb": t.db / 2.0}[which]
-
-
 def _values(an: GearAnalysis, name: str) -> tuple[float, float, float | None, float] | None:
     """(graphical, exact, the length on the drawing in mm or None, μ) of a name, in SI (angles in rad)."""
     p = an.problem
@@ -333,6 +328,14 @@ def _values(an: GearAnalysis, name: str) -> tuple[float, float, float | None, fl
         assert r_k is not None
         c = _at(an, label, r_k)
         e = ex.at_radius(s, an.gear(label), r_k)
+        ra = ex.tooth(s, an.gear(label)).da / 2.0
+        beyond = r_k < ra if an.gear(label).internal else r_k > ra
+        where = f"r = {r_k * 1000:g} mm"
+        note = (f"{where} lies beyond the tip circle (r_a = {ra * 1000:.4g} mm): the involute extended, not the tooth"
+                if beyond else f"at {where} the flanks have crossed (s_k < 0): the tooth is pointed below it"
+                if c.s_k < 0.0 else "")
+        if note and note not in an.warnings:
+            an.warnings.append(note)
         return {"s_k": (c.s_k, e.s_k, *_drawn(c.s_k, mu_t)), "alpha_k": (c.alpha_k, e.alpha_k, None, 1.0),
                 "rho_k": (c.rho_k, e.rho_k, *_drawn(c.rho_k, mu_t)),
                 "theta_k": (c.theta_k, e.theta_k, None, 1.0)}[stem]
@@ -509,7 +512,8 @@ def _cross(ops: ScalarOps, l1: Any, l2: Any) -> tuple[float, float]:
 def _row(an: GearAnalysis, name: str) -> Row | None:
     v = _values(an, name)
     if v is None:
-        an.warnings.append(f"{name}: not defined for this set (see the notes above)")
+        an.warnings.append(f"{name}: " + ("needs a stated centre_distance (without it the pair meshes with none)"
+                                          if name == "backlash" else "not defined for this set (see the notes above)"))
         return None
     g, e, drawn, scale = v
     unit = quantity_unit(name, an.problem) or ""
@@ -570,6 +574,10 @@ def lines(an: GearAnalysis) -> list[str]:
         elif eps < 2.0:
             out.append(f"ε = {eps:.4g}: two pairs in contact over {(eps - 1) * 100:.0f} % of each base pitch "
                        f"(the two ends of B₁B₂), one pair over the middle {(2 - eps) * 100:.0f} %")
+        else:
+            n = math.floor(eps)
+            out.append(f"ε = {eps:.4g} ≥ 2: {n + 1} pairs in contact over {(eps - n) * 100:.0f} % of each base "
+                       f"pitch, {n} over the rest")
     return out
 
 

@@ -36,7 +36,6 @@ from graphmech.drawing.lettering import LETTER, number, scale_text, text_box_siz
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (
     ArcArrow,
-    clip_interval,
     Arrow,
     Circle,
     Hinge,
@@ -49,6 +48,7 @@ from graphmech.drawing.primitives import (
     Sheet,
     Text,
     angle_arc,
+    clip_interval,
 )
 from graphmech.errors import OutOfDomain
 from graphmech.mechanisms.gear import GearSet, SpurGear
@@ -61,6 +61,7 @@ from graphmech.methods.involute import (
     ToothOutline,
     circles,
 )
+from graphmech.scales import round_scale
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]  # xmin, ymin, xmax, ymax (mm)
@@ -84,7 +85,8 @@ WORDS: dict[str, tuple[str, str, str]] = {
     "one pair": ("one pair", "单对齿啮合区", "однопарное зацепление"),
     "not continuous": ("ε_{α} < 1: not continuous", "ε_{α} < 1：不能连续传动", "ε_{α} < 1: зацепление прерывается"),
     "gap": ("gap", "间断", "разрыв"),
-    "three pairs": ("ε_{α} ≥ 2: two or three pairs", "ε_{α} ≥ 2：两对或三对齿啮合", "ε_{α} ≥ 2: двух- и трёхпарное"),
+    "three pairs": ("ε_{α} ≥ 2: at least two pairs always in contact", "ε_{α} ≥ 2：始终至少有两对齿啮合",
+                    "ε_{α} ≥ 2: в зацеплении всегда не менее двух пар"),
     "undercut": ("undercut", "根切", "подрез"),
     "pointed": ("pointed tip", "齿顶变尖", "заострение"),
     "alpha_w": ("α′", "α′", "α_{w}"),
@@ -886,7 +888,7 @@ def root_base_items(drawing: GearDrawing, notation: str = "en") -> list[Primitiv
     assert drawing.root_base is not None
     z0, zg = drawing.root_base
     ca = math.cos(drawing.gears.system.alpha)
-    z_max = _nice(1.4 * max(z0, zg, 10.0))
+    z_max = round_scale(1.4 * max(z0, zg, 10.0))
     k = DIAGRAM_W / z_max  # mm per tooth and per unit of r/m
 
     def rb(z: float) -> float:
@@ -901,7 +903,7 @@ def root_base_items(drawing: GearDrawing, notation: str = "en") -> list[Primitiv
                               Arrow((0.0, 0.0), (DIAGRAM_W + 8.0, 0.0), "label")]
     labels: list[Primitive] = [_label("r/m", (0.0, y_hi * k + 8.0), ((0.0, -1.0),), LETTER),
                                _label("z", (DIAGRAM_W + 8.0, 0.0), ((-1.0, 0.0),), LETTER)]
-    tick = _nice(z_max / 6.0)
+    tick = round_scale(z_max / 6.0)
     v = tick
     while v <= z_max + 1e-9:
         items.append(Segment((v * k, 0.0), (v * k, -1.5), "label"))
@@ -927,15 +929,6 @@ def root_base_items(drawing: GearDrawing, notation: str = "en") -> list[Primitiv
         labels.append(_label(f"z = {number(zg)}", (zg * k, max(rb(zg), rf(zg)) * k + 6.0), ((0.0, -1.0),), LETTER,
                             italic=False))
     return items + labels
-
-
-def _nice(x: float) -> float:
-    """The least of 1, 2, 2.5, 5 × 10^k not below ``x``."""
-    k = math.floor(math.log10(x))
-    for mant in (1.0, 2.0, 2.5, 5.0, 10.0):
-        if mant * 10.0 ** k >= x * (1.0 - 1e-12):
-            return float(f"{mant}e{k}")
-    return float(f"1e{k + 1}")
 
 
 # ----------------------------------------------------------------------------- the sheet
