@@ -186,11 +186,11 @@ def construct_meshing(gears: GearSet) -> MeshConstruction:
             a_w = r1 + g1.x * m
         else:
             assert g2 is not None
-            _, rb2, _, _ = circles(system, g2)
-            lo = abs(rb2 - rb1) * (1.0 + 1e-9) if meshing == "internal" else (rb1 + rb2) * (1.0 + 1e-9)
-            hi = 2.0 * (r1 + circles(system, g2)[0] + 4.0 * m)
-            if meshing == "internal":
-                hi = rb2 + rb1
+            r2, rb2, _, _ = circles(system, g2)
+            if meshing == "internal":  # between the base circles crossing and touching inside
+                lo, hi = abs(rb2 - rb1) * (1.0 + 1e-9), rb2 + rb1
+            else:
+                lo, hi = (rb1 + rb2) * (1.0 + 1e-9), 2.0 * (r1 + r2 + 4.0 * m)
             grid = [lo + (hi - lo) * i / 256 for i in range(257)]
 
             def gap(a: float) -> float:

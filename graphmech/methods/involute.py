@@ -228,22 +228,6 @@ def _flanks(system: ToothSystem, gear: SpurGear, centre: float) -> tuple[_Involu
     return _flank(system, gear, centre, right=False), _flank(system, gear, centre, right=True)
 
 
-def involute_polyline(rb: float, points: int, r_end: float, r_start: float | None = None) -> tuple[XY, ...]:
-    """One flank by ``points`` points as the book draws it: the base circle divided evenly from
-    the string's φ at r_start (default: the base circle itself) to its φ at r_end, the arc
-    unwound laid off along each tangent. The flank starts at (r_b, 0) and unwinds
-    counter-clockwise; the chords between the points are the drawn curve (the bench's
-    ``involute`` record measures them against the exact curve)."""
-    if points < 2:
-        raise OutOfDomain(f"a flank needs at least 2 points, not {points}")
-    if not (rb > 0 and math.isfinite(rb)):
-        raise OutOfDomain(f"the base radius must be positive and finite, not {rb!r}")
-    ev = _Involute(rb, 0.0, 1)
-    p0 = _unwound(rb, rb if r_start is None else r_start)
-    p1 = _unwound(rb, r_end)
-    return tuple(ev.string(p0 + (p1 - p0) * i / (points - 1))[1] for i in range(points))
-
-
 # ------------------------------------------------------------------------------ at a radius
 
 def at_radius(system: ToothSystem, gear: SpurGear, r_k: float) -> AtRadius:
@@ -603,4 +587,4 @@ def over_pins(system: ToothSystem, gear: SpurGear, d_pin: float | None = None) -
     return PinMeasurement(d_pin=d, centres=(X, X2), contacts=contacts, M=across - d if gear.internal else across + d)
 
 __all__ = ["AtRadius", "Flank", "PinMeasurement", "SpanMeasurement", "ToothOutline", "at_radius", "bisect_root",
-           "circles", "involute_polyline", "over_pins", "pointed_tip", "span", "tooth_outline"]
+           "circles", "over_pins", "pointed_tip", "span", "tooth_outline"]

@@ -13,7 +13,6 @@ from graphmech.mechanisms.gear import SpurGear, ToothSystem
 from graphmech.methods.involute import (
     at_radius,
     circles,
-    involute_polyline,
     over_pins,
     pointed_tip,
     span,
@@ -198,19 +197,6 @@ def test_outline_shapes() -> None:
     assert math.hypot(*left.points[1]) == pytest.approx(ring.rb, rel=REL)
     assert math.atan2(*left.points[0][::-1]) == pytest.approx(math.atan2(*left.points[1][::-1]), rel=REL)
     assert math.hypot(*left.points[-1]) == pytest.approx(ring.rf, rel=REL)
-
-
-def test_involute_polyline_lies_on_the_curve() -> None:
-    rb = 0.05
-    pts = involute_polyline(rb, 9, 0.06)
-    assert len(pts) == 9 and pts[0] == pytest.approx((rb, 0.0))
-    for p in pts:
-        rk = math.hypot(*p)
-        # polar angle of the involute at r_k is inv α_k (α_k = arccos r_b/r_k)
-        assert math.atan2(p[1], p[0]) == pytest.approx(inv(math.acos(min(rb / rk, 1.0))), rel=1e-7, abs=1e-12)
-    assert math.hypot(*pts[-1]) == pytest.approx(0.06, rel=REL)
-    with pytest.raises(OutOfDomain):
-        involute_polyline(rb, 1, 0.06)
 
 
 @settings(max_examples=60, deadline=None)
