@@ -104,14 +104,14 @@ def _check(system: ToothSystem, gear: SpurGear) -> None:
 
 
 def _radii(system: ToothSystem, gear: SpurGear) -> tuple[float, float, float, float]:
-    """(r, rb, ra, rf) of a gear (no tip shortening)."""
+    """(r, rb, ra, rf) of a gear (its tips shortened by Δy·m when the pair asks for it)."""
     m, x = system.m, gear.x
     r = 0.5 * m * gear.z
     if gear.internal:
         ra = r - (system.ha_star - x) * m
         rf = r + (system.ha_star + system.c_star + x) * m
     else:
-        ra = r + (system.ha_star + x) * m
+        ra = r + (system.ha_star + x - gear.delta_y) * m  # Δy: the tips shortened in a shifted pair
         rf = r - (system.ha_star + system.c_star - x) * m
     return r, r * math.cos(system.alpha), ra, rf
 
@@ -198,7 +198,7 @@ def tooth(system: ToothSystem, gear: SpurGear) -> ToothValues:
                          "its flanks meet before they reach ra")
     if not gear.internal and gear.x < system.ha_star - 0.5 * gear.z * math.sin(alpha) ** 2:
         notes.append(f"z = {gear.z} with x = {gear.x:g} is undercut when cut by a rack")
-    ha = (system.ha_star - gear.x if gear.internal else system.ha_star + gear.x) * m
+    ha = (system.ha_star - gear.x if gear.internal else system.ha_star + gear.x - gear.delta_y) * m
     hf = (system.ha_star + system.c_star + (gear.x if gear.internal else -gear.x)) * m
     return ToothValues(d=2.0 * r, db=2.0 * rb, da=2.0 * ra, df=2.0 * rf, ha=ha, hf=hf, h=ha + hf,
                        p=p, pb=p * math.cos(alpha), s=s, e=p - s, sa=sa, sb=sb, alpha_a=alpha_a,

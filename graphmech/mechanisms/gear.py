@@ -38,11 +38,14 @@ class ToothSystem:
 
 @dataclass(frozen=True)
 class SpurGear:
-    """A spur gear: tooth number z, profile shift coefficient x, internal (a ring) or not."""
+    """A spur gear: tooth number z, profile shift coefficient x, internal (a ring) or not, and
+    the tip shortening coefficient Δy of a shifted external pair (its tip circle
+    d + 2(h*a + x − Δy)m keeps the standard clearance at the pair's centre distance)."""
 
     z: int
     x: float = 0.0
     internal: bool = False
+    delta_y: float = 0.0
 
 
 @dataclass(frozen=True)

@@ -76,7 +76,7 @@ def _along(a: XY, u: tuple[float, float], length: float) -> XY:
 
 
 @dataclass(frozen=True)
-class _Line:
+class ActionLine:
     """The line of action drawn at a′: N₁, N₂ (None for a rack), P, and its direction."""
 
     O2: XY | None
@@ -86,7 +86,7 @@ class _Line:
     u: tuple[float, float]
 
 
-def _line_of_action(system: ToothSystem, g1: SpurGear, g2: SpurGear | None, meshing: str, a_w: float) -> _Line:
+def line_of_action(system: ToothSystem, g1: SpurGear, g2: SpurGear | None, meshing: str, a_w: float) -> ActionLine:
     """O₁O₂ drawn at a′ and the common tangent of the base circles rising to the right: the
     tangent from O₁ to the circle (O₂, r_b1 ± r_b2) — Thales' circle on O₁O₂ — touches it at T;
     N₂ is O₂ + r_b2·O₂T/|O₂T| and N₁ is O₁ ± r_b1 along the same direction (internal tangent of an
@@ -100,7 +100,7 @@ def _line_of_action(system: ToothSystem, g1: SpurGear, g2: SpurGear | None, mesh
         u = (math.cos(system.alpha), math.sin(system.alpha))
         ops.step = "P = line of action ∩ O1's normal to the rack"
         P = intersect_lines(ops, (N1[0], N1[1], u[0], u[1]), (0.0, 0.0, 0.0, 1.0))
-        return _Line(None, N1, None, (float(P[0]), float(P[1])), u)
+        return ActionLine(None, N1, None, (float(P[0]), float(P[1])), u)
     assert g2 is not None
     _, rb2, _, _ = circles(system, g2)
     ring = meshing == "internal"
@@ -122,10 +122,10 @@ def _line_of_action(system: ToothSystem, g1: SpurGear, g2: SpurGear | None, mesh
     u = (u3[0], u3[1])
     ops.step = "P = N1N2 ∩ O1O2"
     P = intersect_lines(ops, (N1[0], N1[1], u[0], u[1]), (0.0, 0.0, 0.0, 1.0))
-    return _Line(O2, N1, N2, (float(P[0]), float(P[1])), u)
+    return ActionLine(O2, N1, N2, (float(P[0]), float(P[1])), u)
 
 
-def _backlash(system: ToothSystem, gears: GearSet, line: _Line, a_w: float) -> float:
+def _backlash(system: ToothSystem, gears: GearSet, line: ActionLine, a_w: float) -> float:
     """The circumferential backlash on the working pitch circle: the working pitch 2π r_w1/z₁ less
     the two teeth's arc thicknesses constructed there (a rack: its space on its working pitch line
     less the pinion's tooth)."""
@@ -167,8 +167,8 @@ def construct_meshing(gears: GearSet) -> MeshConstruction:
             raise NotApplicable(f"the ring's tip circle (r_a2 = {ra2 * 1e3:.6g} mm) lies inside its base circle "
                                 f"(r_b2 = {rb2 * 1e3:.6g} mm): it never reaches the line of action")
 
-    def drawn(a_w: float) -> _Line:
-        return _line_of_action(system, g1, g2, meshing, a_w)
+    def drawn(a_w: float) -> ActionLine:
+        return line_of_action(system, g1, g2, meshing, a_w)
 
     if gears.centre_distance is not None:
         a_w = gears.centre_distance
@@ -214,7 +214,7 @@ def construct_meshing(gears: GearSet) -> MeshConstruction:
     return _measure(gears, line, a_w, backlash)
 
 
-def _measure(gears: GearSet, line: _Line, a_w: float, backlash: float | None) -> MeshConstruction:
+def _measure(gears: GearSet, line: ActionLine, a_w: float, backlash: float | None) -> MeshConstruction:
     system, meshing = gears.system, gears.meshing
     g1 = gears.gears[0]
     _, rb1, ra1, _ = circles(system, g1)

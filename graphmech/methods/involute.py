@@ -120,7 +120,7 @@ def circles(system: ToothSystem, gear: SpurGear) -> tuple[float, float, float, f
     rb = r * math.cos(system.alpha)
     if gear.internal:
         return r, rb, r - (system.ha_star - gear.x) * m, r + (system.ha_star + system.c_star + gear.x) * m
-    return r, rb, r + (system.ha_star + gear.x) * m, r - (system.ha_star + system.c_star - gear.x) * m
+    return r, rb, r + (system.ha_star + gear.x - gear.delta_y) * m, r - (system.ha_star + system.c_star - gear.x) * m
 
 
 def _thickness(system: ToothSystem, gear: SpurGear) -> float:

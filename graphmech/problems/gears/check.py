@@ -20,10 +20,12 @@ from graphmech.errors import (
     SceneError,
 )
 from graphmech.exact import gear as ex
+from graphmech.exact import profile_shift as exs
 from graphmech.geometry.kernels import ScalarOps, intersect_lines
 from graphmech.mechanisms.gear import GearSet, SpurGear
 from graphmech.methods import gear_meshing as gmesh
 from graphmech.methods import involute as inv
+from graphmech.methods import profile_shift as shift
 from graphmech.problems.gears.scene import (
     AT_RADIUS,
     GEAR_SHOW_CHOICES,
@@ -82,6 +84,7 @@ class GearAnalysis:
     exact_mesh: Any = None
     root_base: tuple[float, float] | None = None
     mesh_whole: bool = True
+    shift_sum: float | None = None
 
     def scale_notes(self) -> list[str]:
         words = {"l": "", "tooth": "tooth, ", "zones": "contact zones, "}
@@ -339,6 +342,8 @@ def _values(an: GearAnalysis, name: str) -> tuple[float, float, float | None, fl
         return {"s_k": (c.s_k, e.s_k, *_drawn(c.s_k, mu_t)), "alpha_k": (c.alpha_k, e.alpha_k, None, 1.0),
                 "rho_k": (c.rho_k, e.rho_k, *_drawn(c.rho_k, mu_t)),
                 "theta_k": (c.theta_k, e.theta_k, None, 1.0)}[stem]
+    if stem in SHIFT_STEMS:
+        return _shift_value(an, stem, label)
     if stem in TOOTH_QUANTITIES:
         return _tooth_value(an, stem, label, mu_t)
     if stem == "z_root_eq_base":
@@ -354,6 +359,82 @@ def _values(an: GearAnalysis, name: str) -> tuple[float, float, float | None, fl
         pitch_b = 2.0 * math.pi * math.hypot(*cb.N_left) / g.z
         return pitch_b, t.pb, *_drawn(pitch_b, mu_t)
     return _pair_value(an, stem)
+
+
+#: The names of the shift's design: not lengths on a panel, each a construction or the book's rule.
+SHIFT_STEMS = ("x", "x_min", "x_min_exact", "z_min", "z_min_exact", "x_sum", "y", "delta_y")
+
+
+def _shift_value(an: GearAnalysis, stem: str, label: str) -> tuple[float, float, float | None, float]:
+    """A shift coefficient constructed — the undercut limit from N₁ drawn on the generating rack's
+    line of action, the shifts for a′ from the flanks' thickness on the working pitch circles, a
+    repair's from the wheel's reference thickness — or by the book's rule (x_min with z_min = 17:
+    a rule, equal to itself)."""
+    s = an.gears.system
+    g = an.gear(label)
+    if stem == "x_min":
+        v = exs.x_min_book(s, g.z)
+        return v, v, None, 1.0
+    if stem == "z_min":
+        zb = float(exs.z_min_book(s))
+        return zb, zb, None, 1.0
+    if stem in ("x_min_exact", "z_min_exact"):
+        lim = shift.undercut_limit(s, g.z)
+        if stem == "z_min_exact":
+            return lim.z_min, exs.z_min_exact(s), None, 1.0
+        return lim.x_min, exs.x_min_exact(s, g.z), None, 1.0
+    if stem in ("x_sum", "y", "delta_y"):
+        return _pair_shift(an, stem)
+    how = an.problem.shift
+    if how == "least":
+        return g.x, exs.x_min_book(s, g.z), None, 1.0  # the rule's value, stated as the shift
+    if how == "least_exact":
+        return shift.undercut_limit(s, g.z).x_min, g.x, None, 1.0
+    if how == "repair":
+        x2 = shift.shift_for_thickness(s, an.gears.gears[1].z, -float(an.problem.thickness_loss or 0.0))
+        return (x2 if an.index(label) == 1 else -x2), g.x, None, 1.0
+    if how == "for_centre_distance":
+        if an.gears.meshing == "rack":  # the pinion's reference circle a′ − xm from the rack's reference line
+            a_w = float(an.gears.centre_distance or 0.0)
+            return (a_w - ex.tooth(s, g).d / 2.0) / s.m, g.x, None, 1.0
+        x_sum = _shift_sum(an)
+        x1 = an.problem.x1_stated if an.problem.x1_stated is not None else 0.5 * x_sum
+        return (x1 if an.index(label) == 0 else x_sum - x1), g.x, None, 1.0
+    return g.x, g.x, None, 1.0  # stated
+
+
+def _shift_sum(an: GearAnalysis) -> float:
+    """x₁ + x₂ constructed from the distance at which the pair meshes without backlash: the stated
+    a′ when the shifts were chosen for it, else the constructed pair's own."""
+    if an.shift_sum is None:
+        s = an.gears.system
+        g1, g2 = an.gears.gears
+        if an.problem.shift == "for_centre_distance" and an.gears.centre_distance is not None:
+            a_w = an.gears.centre_distance
+        elif an.gears.centre_distance is None:
+            a_w = _mesh(an).a_w
+        else:
+            a_w = gmesh.construct_meshing(replace(an.gears, centre_distance=None)).a_w
+        an.shift_sum = shift.shift_for_centre_distance(s, g1.z, g2.z, a_w).x_sum
+    return an.shift_sum
+
+
+def _pair_shift(an: GearAnalysis, stem: str) -> tuple[float, float, float | None, float]:
+    """x₁ + x₂, y = (a′ − a)/m with a′ the pair's drawn centre distance and a = r₁ ± r₂, and the
+    tip shortening Δy = x₁ + x₂ − y (0 when nothing is to be shortened)."""
+    s = an.gears.system
+    g1, g2 = an.gears.gears
+    e = an.exact_mesh
+    r1, r2 = ex.tooth(s, g1).d / 2.0, ex.tooth(s, g2).d / 2.0
+    a = r2 - r1 if an.gears.meshing == "internal" else r1 + r2
+    y = (_mesh(an).a_w - a) / s.m
+    want_y = (e.a_w - e.a) / s.m
+    if stem == "y":
+        return y, want_y, None, 1.0
+    x_sum = _shift_sum(an)
+    if stem == "x_sum":
+        return x_sum, g1.x + g2.x, None, 1.0
+    return max(0.0, x_sum - y), exs.tip_shortening(s, g1.z, g2.z, g1.x + g2.x, e.a_w), None, 1.0
 
 
 def _drawn(value: float, mu: float | None) -> tuple[float | None, float]:
@@ -566,6 +647,13 @@ def lines(an: GearAnalysis) -> list[str]:
     out = []
     for label, sp in an.spans.items():
         out.append(f"W{label}: the span over k = {sp.k} teeth")
+    drive = _drive(an)
+    if drive is not None:
+        g1, g2 = an.gears.gears
+        dy = g1.delta_y
+        out.append(f"{drive} drive: x₁ = {g1.x:.6g}, x₂ = {g2.x:.6g}, x₁ + x₂ = {g1.x + g2.x:.6g}"
+                   + (f"; tips shortened by Δy·m = {dy * an.gears.system.m * 1000:.6g} mm (Δy = {dy:.6g})" if dy
+                      else ""))
     if an.mesh is not None:
         eps = an.mesh.eps_alpha
         if eps < 1.0:
@@ -588,7 +676,18 @@ def extras(an: GearAnalysis) -> dict[str, Any]:
         out["span_teeth"] = {label or "gear": sp.k for label, sp in an.spans.items()}
     if an.mesh is not None:
         out["continuous"] = an.mesh.eps_alpha >= 1.0
+    drive = _drive(an)
+    if drive is not None:
+        out["drive"] = drive
     return {"gear": out} if out else {}
+
+
+def _drive(an: GearAnalysis) -> str | None:
+    """The kind of an external pair's drive by its shifts (standard, equal and opposite, positive, negative)."""
+    if an.gears.meshing != "external":
+        return None
+    g1, g2 = an.gears.gears
+    return exs.drive_kind(g1.x, g2.x)
 
 
 def gear_figure(an: GearAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Any:

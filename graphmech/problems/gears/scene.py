@@ -38,17 +38,20 @@ TOOTH_QUANTITIES = {
     "s_pitch": "m", "e_pitch": "m", "sa": "m", "sb": "m", "alpha_a": "deg", "rho_pitch": "m", "rho_a": "m",
     "ra_pointed": "m", "alpha_a_pointed": "deg", "inv_alpha_a_pointed": "",
     "W": "m", "d_pin": "m", "M": "m",
+    "x": "", "x_min": "", "x_min_exact": "",
 }
 #: Quantities at a stated radius, named ``s_k@85`` (the radius in mm).
 AT_RADIUS = {"s_k": "m", "alpha_k": "deg", "rho_k": "m", "theta_k": "deg"}
 #: The set's quantities (no suffix).
-SET_QUANTITIES = {"p": "m", "pb": "m", "z_root_eq_base": ""}
+SET_QUANTITIES = {"p": "m", "pb": "m", "z_root_eq_base": "", "z_min": "", "z_min_exact": ""}
 #: A pair's quantities.
 PAIR_QUANTITIES = {
     "a": "m", "a_w": "m", "alpha_w": "deg", "rw1": "m", "rw2": "m", "N1N2": "m", "B1B2": "m", "eps_alpha": "",
     "single_contact": "m", "double_contact": "m", "eta_tip1": "", "eta_root1": "", "eta_tip2": "", "eta_root2": "",
-    "backlash": "m",
+    "backlash": "m", "x_sum": "", "y": "", "delta_y": "",
 }
+#: Design words for ``x`` (docs/scene-format.md, "Profile shift"): the shifts chosen, not stated.
+SHIFT_WORDS = ("least", "least_exact", "for_centre_distance", "repair")
 #: The largest tooth number (z = 1000 is the book's "rack limit"; beyond 1e5 a tooth is a rack's).
 MAX_Z = 100_000
 #: The module's sane range, m (a watch gear 0.05 mm … a mill gear 100 mm, with margins).
@@ -68,6 +71,11 @@ class GearScene:
     pin_diameter: tuple[float | None, ...] = ()
     #: the key path of the stated centre distance as written (``gear.centre_distance_mm``), for messages
     centre_distance_key: str = "gear.centre_distance"
+    #: how the shifts were chosen (a word of SHIFT_WORDS), None when stated as numbers
+    shift: str | None = None
+    #: with shift "for_centre_distance": the pinion's stated shift; with "repair": the wheel's thickness loss, m
+    x1_stated: float | None = None
+    thickness_loss: float | None = None
 
     @property
     def labels(self) -> tuple[str, ...]:
@@ -100,7 +108,9 @@ def quantity_unit(name: str, problem: GearScene) -> str | None:
     if base in SET_QUANTITIES:
         return SET_QUANTITIES[base]
     if problem.gears.pair and base in PAIR_QUANTITIES:
-        if problem.gears.meshing == "rack" and base in ("rw2", "N1N2"):
+        if problem.gears.meshing == "rack" and base in ("rw2", "N1N2", "x_sum", "y", "delta_y"):
+            return None
+        if problem.gears.meshing == "internal" and base in ("delta_y", "x_sum"):  # a ring: x₂ − x₁ counts, its tips stay
             return None
         return PAIR_QUANTITIES[base]
     return None
@@ -192,7 +202,8 @@ def _read_gear(g: Reader) -> GearScene | None:
     c = _coefficient(g, "c_star", 0.25, 0.0, 1.0)
     zs = _teeth(g)
     count = len(zs) if zs is not None else 1
-    xs = _per_gear(g, "x", count, 0.0)
+    shift = _shift_word(g)
+    xs = (0.0,) * count if shift is not None else _per_gear(g, "x", count, 0.0)
     meshing_value = g.raw("meshing")
     meshing: Meshing | None = None
     if meshing_value is not MISSING:
@@ -218,16 +229,121 @@ def _read_gear(g: Reader) -> GearScene | None:
                                                                           "give z = [z1, z2] and meshing")
     ks = _span_teeth(g, count, zs)
     pins = _per_gear(g, "pin_diameter", count, None, kind="length")
+    x1_raw = g.raw("x1")
+    x1 = None if x1_raw is MISSING else g.number(x1_raw, g.at("x1"))
+    loss = g.scalar("thickness_loss", "length", required=False, positive=True)
+    shorten = g.flag("tip_shortening")
+    _shift_keys(g, shift, meshing, a_w, x1, loss, shorten)
     g.finish()
     if len(g.problems) > bad or None in (m, alpha, ha, c, zs, xs, ks, pins) or zs is None or xs is None:
         return None
     assert m is not None and alpha is not None and ha is not None and c is not None and ks is not None \
         and pins is not None
     ring = [meshing == "internal" and i == 1 or (meshing is None and bool(internal)) for i in range(len(zs))]
-    gears = tuple(SpurGear(z, float(x or 0.0), r) for z, x, r in zip(zs, xs, ring))
     system = ToothSystem(m, alpha, ha, c)
-    return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins),
-                     g.at(g.present("centre_distance") or "centre_distance"))
+    where = g.at(g.present("centre_distance") or "centre_distance")
+    if shift is not None:
+        chosen = _choose_shifts(g, system, shift, zs, meshing, a_w, x1, loss, where)
+        if chosen is None:
+            return None
+        xs = chosen
+    gears = tuple(SpurGear(z, float(x or 0.0), r) for z, x, r in zip(zs, xs, ring))
+    if meshing == "external" and shorten is not False:
+        gears = _shortened(system, gears, a_w)
+    return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins), where, shift, x1, loss)
+
+
+def _shift_word(g: Reader) -> str | None:
+    """``x = "least"`` …: the design word, or None for stated numbers (read by _per_gear)."""
+    value = g.raw("x")
+    if not isinstance(value, str):
+        return None
+    if value not in SHIFT_WORDS:
+        g.problem(g.at("x"), f"unknown value {say(value)}: a shift coefficient, a list of them, or {one_of(SHIFT_WORDS)}")
+        return None
+    return value
+
+
+def _shift_keys(g: Reader, shift: str | None, meshing: Meshing | None, a_w: float | None, x1: float | None,
+                loss: float | None, shorten: bool | None) -> None:
+    """The keys that go with a design word, and the words that need a pair or a centre distance."""
+    if x1 is not None and shift != "for_centre_distance":
+        g.problem(g.at("x1"), 'the pinion\'s shift x1 goes with x = "for_centre_distance" (gear 2 takes the rest); '
+                              "otherwise give x = [x1, x2]")
+    if loss is not None and shift != "repair":
+        g.problem(g.at(g.present("thickness_loss") or "thickness_loss"), 'a thickness loss goes with x = "repair"')
+    if shorten is not None and meshing != "external":
+        g.problem(g.at("tip_shortening"), "only an external pair's tips are shortened (Δy)")
+    if shift == "for_centre_distance":
+        if meshing not in ("external", "rack"):
+            g.problem(g.at("x"), 'x = "for_centre_distance" chooses the shifts of an external pair or a rack and '
+                                 "pinion on the stated centre distance")
+        elif a_w is None:
+            g.problem(g.at("centre_distance"), 'missing: x = "for_centre_distance" needs the centre distance a′ '
+                                               "(centre_distance_mm = …)")
+        elif meshing == "rack" and x1 is not None:
+            g.problem(g.at("x1"), "a rack and pinion has one shift, set by the centre distance: no x1")
+    if shift == "repair":
+        if meshing != "external":
+            g.problem(g.at("x"), 'x = "repair" re-cuts the wheel of an external pair (z = [z1, z2])')
+        elif loss is None:
+            g.problem(g.at("thickness_loss"), 'missing: x = "repair" needs the wheel\'s thickness loss '
+                                              "(thickness_loss_mm = …)")
+    if shift in ("least", "least_exact") and meshing == "internal":
+        g.problem(g.at("x"), "a ring is cut by a pinion cutter, not a rack: the rack's least shift does not apply "
+                             "to it; give x = [x1, x2]")
+
+
+def _choose_shifts(g: Reader, system: ToothSystem, shift: str, zs: tuple[int, ...],
+                   meshing: Meshing | None, a_w: float | None, x1: float | None, loss: float | None, where: str
+                   ) -> tuple[float | None, ...] | None:
+    """The shifts a design word asks for, by the book's closed forms (the check then constructs
+    each one again and sets the two side by side)."""
+    from graphmech.errors import GraphmechError
+    from graphmech.exact import profile_shift as ps
+
+    try:
+        if shift == "least":
+            return tuple(ps.x_min_book(system, z) for z in zs)
+        if shift == "least_exact":
+            return tuple(ps.x_min_exact(system, z) for z in zs)
+        if shift == "repair":
+            assert loss is not None
+            x2 = ps.repair_shift(system, loss)
+            a = 0.5 * system.m * (zs[0] + zs[1])
+            if a_w is not None and abs(a_w - a) > 1e-9 * a:
+                g.problem(where, f"a zero-sum repair keeps the standard centre distance a = {a * 1000:.6g} mm, not "
+                                 f"{a_w * 1000:.6g} mm")
+                return None
+            return (-x2, x2)
+        assert a_w is not None
+        if meshing == "rack":
+            return ((a_w - 0.5 * system.m * zs[0]) / system.m,)
+        d = ps.shifts_for_centre_distance(system, zs[0], zs[1], a_w, x1)
+        return (d.x1, d.x2)
+    except GraphmechError as err:
+        g.problem(where if shift == "for_centre_distance" else g.at("x"), str(err))
+        return None
+
+
+def _shortened(system: ToothSystem, gears: tuple[SpurGear, ...], a_w: float | None) -> tuple[SpurGear, ...]:
+    """An external pair with x₁ + x₂ ≠ 0: both tips shortened by Δy·m for the standard clearance at
+    the pair's centre distance (stated, or where it meshes without backlash)."""
+    from graphmech.errors import GraphmechError
+    from graphmech.exact import gear as ex
+    from graphmech.exact import profile_shift as ps
+
+    g1, g2 = gears
+    if g1.x + g2.x == 0.0:
+        return gears
+    try:
+        at = a_w if a_w is not None else ex.meshing(GearSet(system, gears, "external")).a_w
+        dy = ps.tip_shortening(system, g1.z, g2.z, g1.x + g2.x, at)
+    except GraphmechError:  # a pair that cannot mesh: the check says why
+        return gears
+    if dy <= 0.0:
+        return gears
+    return tuple(SpurGear(g.z, g.x, g.internal, dy) for g in gears)
 
 
 def _coefficient(g: Reader, key: str, default: float, lo: float, hi: float) -> float | None:
@@ -325,6 +441,7 @@ __all__ = [
     "GEAR_SHOW_CHOICES",
     "PAIR_QUANTITIES",
     "SET_QUANTITIES",
+    "SHIFT_WORDS",
     "TOOTH_QUANTITIES",
     "GearScene",
     "known_names",
