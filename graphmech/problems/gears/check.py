@@ -600,7 +600,9 @@ def _row(an: GearAnalysis, name: str) -> Row | None:
     unit = quantity_unit(name, an.problem) or ""
     if unit == "deg":
         g, e = math.degrees(g), math.degrees(e)
-    return Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), 1e-300))
+    # a shift coefficient is a length in modules: its error is relative to m where x is near 0
+    floor = 1.0 if split_gear(name, an.problem)[0] in SHIFT_STEMS[:3] + SHIFT_STEMS[5:] else 1e-300
+    return Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), floor))
 
 
 def judge(an: GearAnalysis, precision_mm: float | None = None) -> list[Verdict]:

@@ -560,7 +560,8 @@ def tooth_notes(drawing: GearDrawing, name: str, t: ToothOutline) -> tuple[str, 
     g = _gear(drawing.gears, name)
     s = drawing.gears.system
     data = (f"m = {_mm(s.m)}, z{_sub_name(name)} = {g.z}, α = {number(math.degrees(s.alpha))}°, "
-            f"h_{{a}}* = {number(s.ha_star)}, c* = {number(s.c_star)}, x{_sub_name(name)} = {number(g.x)}")
+            f"h_{{a}}* = {number(s.ha_star)}, c* = {number(s.c_star)}, x{_sub_name(name)} = {number(g.x)}"
+            + (f", Δy = {number(g.delta_y)} (tip shortened)" if g.delta_y else ""))
     vals = [f"r = {_mm(t.r)}", f"r_{{b}} = {_mm(t.rb)}", f"r_{{a}} = {_mm(t.ra)}", f"r_{{f}} = {_mm(t.rf)}"]
     for n, a in drawing.at_radii:
         if n == name and abs(a.r_k - t.r) > 1e-9 * t.r and abs(a.r_k - t.ra) > 1e-9 * t.ra:
@@ -682,6 +683,10 @@ def meshing_notes(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
             f"α′ = {number(math.degrees(m.alpha_w))}°")
     line2 = f"B_{{1}}B_{{2}} = {_mm(m.B1B2)}, p_{{b}} = {_mm(m.pb)}, ε_{{α}} = {number(m.eps_alpha)}"
     notes = [scale_text("l", drawing.scales["l"]), line, line2]
+    if any(x.x for x in g.gears):  # a shifted pair: its shifts and the tips' shortening
+        xs = ", ".join(f"x_{{{k + 1}}} = {number(x.x)}" for k, x in enumerate(g.gears))
+        dy = g.gears[0].delta_y
+        notes.insert(2, xs + (f", Δy = {number(dy)}" if dy else ""))
     if m.interference:
         notes.append(f"{word('interference', notation, WORDS)}: {', '.join(m.interference)}")
     return tuple(notes)
