@@ -5,11 +5,13 @@ B₁ and B₂ where the tip circles cut it, ε = B₁B₂/p_b — each value rea
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from graphmech.exact import (
     gear as ex,  # the circles' sizes are definitions, not constructions
 )
+from graphmech.exact import profile_shift as exs
 from graphmech.problems.gears.check import GearAnalysis, analyse
 from graphmech.problems.judging import Row
 from graphmech.problems.protocol import PHRASES as COMMON
@@ -54,6 +56,28 @@ PHRASES: Phrases = {
               "от B₁ и B₂ откладываем p_b = {pb} mm: у концов (по (ε − 1)p_b) — двухпарное зацепление, "
               "в середине ((2 − ε)p_b) — однопарное"),
     "eps": ("ε = B₁B₂/p_b = {eps}", "ε = B₁B₂/p_b = {eps}", "ε = B₁B₂/p_b = {eps}"),
+    "drive": ("a = m(z₁ + z₂)/2 = {a} mm {cmp} a′ = {aw} mm: {kind}",
+              "a = m(z₁ + z₂)/2 = {a} mm {cmp} a′ = {aw} mm，故为{kind}",
+              "a = m(z₁ + z₂)/2 = {a} mm {cmp} a′ = {aw} mm: {kind}"),
+    "standard": ("a standard drive", "标准齿轮传动", "передача без смещения"),
+    "equal and opposite": ("an equal and opposite shift (x₁ + x₂ = 0)", "等变位（高度变位）齿轮传动",
+                           "равносмещённая передача (x₁ + x₂ = 0)"),
+    "positive": ("a positive drive (x₁ + x₂ > 0)", "正传动（x₁ + x₂ > 0）", "положительная передача (x₁ + x₂ > 0)"),
+    "negative": ("a negative drive (x₁ + x₂ < 0)", "负传动（x₁ + x₂ < 0）", "отрицательная передача (x₁ + x₂ < 0)"),
+    "shift sum": ("no backlash at a′: on the working pitch circles the two teeth fill the working pitch, s₁′ + s₂′ = "
+                  "p′; each s′ grows in proportion to x, so x₁ + x₂ = {xs}",
+                  "无侧隙啮合：两轮节圆上 s₁′ + s₂′ = p′，s′ 与 x 成线性关系，得 x₁ + x₂ = {xs}",
+                  "беззазорное зацепление при a′: на начальных окружностях s₁′ + s₂′ = p′, s′ растёт "
+                  "пропорционально x, откуда x₁ + x₂ = {xs}"),
+    "shortening": ("y = (a′ − a)/m = {y}, Δy = x₁ + x₂ − y = {dy}: the tips shortened by Δy·m = {dym} mm",
+                   "中心距变动系数 y = (a′ − a)/m = {y}，齿顶高降低系数 Δy = x₁ + x₂ − y = {dy}，齿顶降低 Δy·m = {dym} mm",
+                   "y = (a′ − a)/m = {y}, Δy = x₁ + x₂ − y = {dy}: вершины укорочены на Δy·m = {dym} mm"),
+    "least": ("no undercut: x ≥ x_min = h*a(z_min − z)/z_min = {x} (z_min = {zm})",
+              "不根切：x ≥ x_min = h*a(z_min − z)/z_min = {x}（z_min = {zm}）",
+              "без подреза: x ≥ x_min = h*a(z_min − z)/z_min = {x} (z_min = {zm})"),
+    "repair": ("the wheel re-cut {loss} mm thinner: x₂ = −Δs/(2m·tan α) = {x2}; the new pinion x₁ = −x₂ = {x1}",
+               "大齿轮修复：齿厚减薄 {loss} mm，x₂ = −Δs/(2m·tan α) = {x2}；新小齿轮 x₁ = −x₂ = {x1}",
+               "колесо перерезается тоньше на {loss} mm: x₂ = −Δs/(2m·tg α) = {x2}; новая шестерня x₁ = −x₂ = {x1}"),
     "not continuous": ("ε < 1: the drive is not continuous", "ε < 1：传动不连续", "ε < 1: передача не непрерывна"),
 }
 
@@ -72,7 +96,7 @@ def protocol(an: GearAnalysis) -> list[str]:
     def say(key: str, **fields: str) -> str:
         return phrase(key, notation, PHRASES, **fields)
 
-    out = []
+    out = _shift_steps(an, say)
     for label in an.problem.labels:
         g = an.gear(label)
         t = ex.tooth(s, g)
@@ -97,6 +121,33 @@ def protocol(an: GearAnalysis) -> list[str]:
         out.append(say("eps", eps=num(an.mesh.eps_alpha)))
         if an.mesh.eps_alpha < 1.0:
             out.append(say("not continuous"))
+    return out
+
+
+def _shift_steps(an: GearAnalysis, say: Callable[..., str]) -> list[str]:
+    """How the shifts were chosen, before the circles they give."""
+    p = an.problem
+    s = an.gears.system
+    out = []
+    if p.shift in ("least", "least_exact"):
+        for label in p.labels:
+            g = an.gear(label)
+            out.append(say("least", x=num(g.x), zm=num(exs.z_min_book(s) if p.shift == "least" else exs.z_min_exact(s))))
+    if p.shift == "repair":
+        g1, g2 = an.gears.gears
+        out.append(say("repair", loss=num(float(p.thickness_loss or 0.0) * 1000), x1=num(g1.x), x2=num(g2.x)))
+    if an.gears.meshing == "external":
+        g1, g2 = an.gears.gears
+        e = an.exact_mesh
+        kind = exs.drive_kind(g1.x, g2.x)
+        if p.shift == "for_centre_distance" or kind != "standard":
+            cmp = "=" if kind in ("standard", "equal and opposite") else "<" if kind == "positive" else ">"
+            out.append(say("drive", a=num(e.a * 1000), aw=num(e.a_w * 1000), cmp=cmp, kind=say(kind)))
+        if p.shift == "for_centre_distance":
+            out.append(say("shift sum", xs=num(g1.x + g2.x)))
+        if g1.delta_y:
+            out.append(say("shortening", y=num((e.a_w - e.a) / s.m), dy=num(g1.delta_y),
+                           dym=num(g1.delta_y * s.m * 1000)))
     return out
 
 
