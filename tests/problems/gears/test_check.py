@@ -182,3 +182,33 @@ def test_a_students_span_and_pins_are_judged_at_the_drawings_scale():
     assert v["W"].tolerance == pytest.approx(0.5e-3) and v["W"].ok
     assert v["M"].tolerance == pytest.approx(0.5e-3) and not v["M"].ok
     assert v["M"].expected == pytest.approx(0.10197016294, rel=1e-9)
+
+
+# ------------------------------------------------------------------ profile shift: rows and the drive
+
+PAIR = '[gear]\nm_mm = 10\nz = [12, 12]\nmeshing = "external"\n'
+
+
+def shift_scene(tmp_path, text: str, find: list[str] | None = None):
+    f = tmp_path / "g.toml"
+    f.write_text((f"find = {find!r}\n".replace("'", '"') if find else "") + text)
+    return f
+
+def test_every_shift_row_agrees_and_says_the_drive(tmp_path):
+    f = shift_scene(tmp_path, PAIR + 'centre_distance_mm = 130\nx = "for_centre_distance"\n',
+              ["x_sum", "x1", "x2", "x_min1", "x_min_exact1", "z_min", "z_min_exact", "y", "delta_y", "da1", "sa1"])
+    doc = check_json(f)
+    q = values(doc)
+    for name in q:
+        assert q[name]["graphical"] == pytest.approx(q[name]["exact"], rel=1e-9, abs=1e-12), name
+    assert q["z_min"]["graphical"] == 17 and q["z_min_exact"]["exact"] == pytest.approx(17.097264340826062)
+    assert doc["gear"]["drive"] == "positive"
+    code, out, _ = run_cli("check", str(f))
+    assert "positive drive" in out and "tips shortened by Δy·m = 2.50498 mm" in out
+
+
+@pytest.mark.parametrize("x, kind", [("[0, 0]", "standard"), ("[0.4, -0.4]", "equal and opposite"),
+                                     ("[0.4, 0.2]", "positive"), ("[-0.3, 0.1]", "negative")])
+def test_the_kind_of_drive_in_json(tmp_path, x, kind):
+    f = shift_scene(tmp_path, '[gear]\nm_mm = 2\nz = [30, 40]\nmeshing = "external"\n' + f"x = {x}\n", ["a_w"])
+    assert check_json(f)["gear"]["drive"] == kind

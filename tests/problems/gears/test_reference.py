@@ -3,6 +3,8 @@ scenes: the construction and the closed form both against the bank's exact value
 printed answers within its flag."""
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from tests.conftest import SCENES, check_json, values
@@ -54,3 +56,48 @@ def test_the_misprinted_alpha_a2_is_the_books_not_ours(problems):
     q = values(check_json(SCENES / "gear.contact_ratio_19_42.toml"))
     book = problems["gear.contact_ratio_19_42"]["book"]["alpha_a2_deg"]
     assert abs(q["alpha_a2"]["graphical"] - book) > 0.05  # 26°19′ printed, 26°14.2′ true
+
+
+# ------------------------------------------------------------------ issue 18: profile shift (000 齿轮 5, 7, 8)
+def bank(problems, pid, scene_name, names):
+    p = problems[pid]
+    q = values(check_json(SCENES / f"{scene_name}.toml"))
+    for key, name in names.items():
+        want = p["exact"][key]
+        got = q[name]["graphical"] * (1e3 if key.endswith("_mm") else 1.0)
+        assert got == pytest.approx(want, rel=1e-9, abs=1e-12), key
+        book = p["book"].get(key)
+        if book is not None:
+            assert got == pytest.approx(book, rel=abs(p["rel_diff"][key]) + 1e-4, abs=1e-9), key
+    return q
+
+
+def test_profile_shifted_12_12_a130(problems):
+    bank(problems, "gear.profile_shifted_12_12_a130", "gear.profile_shifted_12_12_a130", {
+        "a_mm": "a", "alpha_w_deg": "alpha_w", "x_sum": "x_sum", "x1": "x1", "x_min": "x_min1", "y": "y",
+        "delta_y": "delta_y", "ha_mm": "ha1", "hf_mm": "hf1", "d_mm": "d1", "da_mm": "da1", "df_mm": "df1",
+        "db_mm": "db1", "s_mm": "s_pitch1", "alpha_a_deg": "alpha_a1", "eps_alpha": "eps_alpha", "sa_mm": "sa1"})
+    # the book's check: s_a ≥ 0.25m holds
+    q = values(check_json(SCENES / "gear.profile_shifted_12_12_a130.toml"))
+    assert q["sa1"]["graphical"] > 0.25 * 0.010
+
+
+def test_reverted_train_scheme_1(problems):
+    ex = problems["gear.reverted_train_centre_distances"]["exact"]
+    q12 = values(check_json(SCENES / "gear.reverted_train_centre_distances-12.toml"))
+    doc34 = check_json(SCENES / "gear.reverted_train_centre_distances-34.toml")
+    q34 = values(doc34)
+    assert q12["a"]["graphical"] * 1e3 == pytest.approx(ex["a12_mm"], rel=1e-12)
+    assert q34["a"]["graphical"] * 1e3 == pytest.approx(ex["a34_mm"], rel=1e-12)
+    assert q34["a_w"]["graphical"] == pytest.approx(q12["a_w"]["graphical"], rel=1e-12)   # one centre distance
+    assert doc34["gear"]["drive"] == "positive" and q34["x_sum"]["graphical"] > 0
+
+
+def test_repair_shift_17_118(problems):
+    names = {"a_mm": "a", "x1": "x1", "x2": "x2", "d1_mm": "d1", "ha1_mm": "ha1", "hf1_mm": "hf1", "da1_mm": "da1",
+             "df1_mm": "df1", "db1_mm": "db1", "s1_mm": "s_pitch1", "e1_mm": "e_pitch1", "d2_mm": "d2",
+             "ha2_mm": "ha2", "hf2_mm": "hf2", "da2_mm": "da2", "df2_mm": "df2", "db2_mm": "db2",
+             "s2_mm": "s_pitch2", "e2_mm": "e_pitch2", "p_mm": "p"}
+    q = bank(problems, "gear.repair_shift_17_118", "gear.repair_shift_17_118", names)
+    # the re-cut wheel is 0.75 mm thinner than a standard tooth, the new pinion 0.75 mm thicker
+    assert (q["s_pitch1"]["graphical"] - math.pi * 0.005 / 2) * 1e3 == pytest.approx(0.75, rel=1e-12)

@@ -9,7 +9,7 @@ import pytest
 from graphmech.mechanisms.gear import SpurGear
 from graphmech.problems.gears.scene import GearScene, known_names, quantity_unit
 from graphmech.scene import load_scene, parse_scene
-from tests.conftest import SCENES
+from tests.conftest import SCENES, assert_refused, run_cli
 from tests.scenes import only_problem
 
 
@@ -95,3 +95,73 @@ def test_a_linkage_table_in_a_gear_scene_is_refused():
 def test_reference_scenes_read():
     for name in ("gear.involute_z20_m8", "gear.contact_ratio_19_42", "gear.root_circle_equals_base_circle"):
         assert load_scene(SCENES / f"{name}.toml").kind == "gears"
+
+
+# ------------------------------------------------------------------ profile shift: the design words
+
+PAIR = '[gear]\nm_mm = 10\nz = [12, 12]\nmeshing = "external"\n'
+
+
+def shift_scene(tmp_path, text: str, find: list[str] | None = None):
+    f = tmp_path / "g.toml"
+    f.write_text((f"find = {find!r}\n".replace("'", '"') if find else "") + text)
+    return f
+
+def test_x_for_the_centre_distance_equal_or_with_x1():
+    p = read(PAIR + 'centre_distance_mm = 130\nx = "for_centre_distance"\n')
+    g1, g2 = p.gears.gears
+    assert p.shift == "for_centre_distance"
+    assert g1.x == g2.x == pytest.approx(0.625249092245772, rel=1e-13)
+    assert g1.delta_y == g2.delta_y == pytest.approx(0.25049818449154393, rel=1e-12)   # tips shortened
+    p = read(PAIR + 'centre_distance_mm = 130\nx = "for_centre_distance"\nx1 = 0.7\n')
+    assert (p.gears.gears[0].x, p.gears.gears[1].x) == (0.7, pytest.approx(1.250498184491544 - 0.7, rel=1e-12))
+
+
+def test_tip_shortening_can_be_switched_off_and_is_nil_for_a_zero_sum():
+    p = read(PAIR + 'centre_distance_mm = 130\nx = "for_centre_distance"\ntip_shortening = false\n')
+    assert p.gears.gears[0].delta_y == 0.0
+    p = read(PAIR + "x = [0.3, -0.3]\n")
+    assert p.gears.gears[0].delta_y == 0.0
+    # stated shifts, no a′: shortened at the distance without backlash, as the book does
+    p = read(PAIR + "x = [0.5, 0.5]\n")
+    assert p.gears.gears[0].delta_y > 0.0
+
+
+def test_least_shifts_by_the_rule_and_exactly():
+    p = read('[gear]\nm_mm = 4\nz = 15\nx = "least"\n')
+    assert p.gears.gears[0].x == pytest.approx(2.0 / 17.0, rel=1e-15)
+    p = read('[gear]\nm_mm = 4\nz = 15\nx = "least_exact"\n')
+    assert p.gears.gears[0].x == pytest.approx(1.0 - 7.5 * math.sin(math.radians(20)) ** 2, rel=1e-14)
+
+
+def test_a_rack_pinion_takes_its_shift_from_the_centre_distance():
+    p = read('[gear]\nm_mm = 2\nz = [12]\nmeshing = "rack"\ncentre_distance_mm = 12.8\nx = "for_centre_distance"\n')
+    assert p.gears.gears[0].x == pytest.approx(0.4, rel=1e-12)
+
+
+@pytest.mark.parametrize("body, where, words", [
+    ('x = "maximal"\n', "gear.x", ("unknown value", "for_centre_distance")),
+    ('x = "for_centre_distance"\n', "gear.centre_distance", ("missing", "a′")),
+    ('x = "repair"\n', "gear.thickness_loss", ("missing", "thickness loss")),
+    ('x = [0.1, 0.2]\nx1 = 0.1\n', "gear.x1", ('x = "for_centre_distance"',)),
+    ('thickness_loss_mm = 1\n', "gear.thickness_loss_mm", ('x = "repair"',)),
+    ('x = "repair"\nthickness_loss_mm = 0.5\ncentre_distance_mm = 121\n', "gear.centre_distance_mm",
+     ("zero-sum", "120 mm")),
+    ('x = "for_centre_distance"\ncentre_distance_mm = 100\n', "gear.centre_distance_mm", ("base circles",)),
+])
+def test_bad_design_keys_are_refused_in_one_line(tmp_path, body, where, words):
+    f = shift_scene(tmp_path, PAIR + body)
+    err = assert_refused(run_cli("check", str(f)), "g.toml", *words)
+    assert f"{where}: " in err
+
+
+def test_design_words_that_do_not_fit_the_set_are_refused(tmp_path):
+    ring = '[gear]\nm_mm = 2\nz = [20, 80]\nmeshing = "internal"\nx = "least"\n'
+    assert_refused(run_cli("check", str(shift_scene(tmp_path, ring))), "g.toml", "gear.x", "pinion cutter")
+    one = '[gear]\nm_mm = 2\nz = 20\nx = "repair"\nthickness_loss_mm = 0.5\n'
+    assert_refused(run_cli("check", str(shift_scene(tmp_path, one))), "g.toml", "gear.x", "external pair")
+    short = '[gear]\nm_mm = 2\nz = 20\ntip_shortening = true\n'
+    assert_refused(run_cli("check", str(shift_scene(tmp_path, short))), "g.toml", "gear.tip_shortening")
+    find_dy = '[gear]\nm_mm = 2\nz = [20, 80]\nmeshing = "internal"\n'
+    assert_refused(run_cli("check", str(shift_scene(tmp_path, find_dy, ["delta_y"]))), "g.toml",
+                   "find[0]", "delta_y")

@@ -37,3 +37,26 @@ def test_the_protocol_in_chinese(tmp_path):
     code, out, err = run_cli("steps", str(p))
     assert code == 0, err
     assert "作O₁O₂ = a′ = 152.5 mm" in out and "两对齿啮合区" in out
+
+
+def test_the_shift_design_comes_before_the_circles_it_gives():
+    lines = steps(load_scene(SCENES / "gear.profile_shifted_12_12_a130.toml"))
+    first = lambda words: next(i for i, x in enumerate(lines) if words in x)
+    assert first("120 mm < a′ = 130 mm: a positive drive") < first("x₁ + x₂ = 1.25") \
+        < first("Δy = x₁ + x₂ − y = 0.2505") < first("d_a = 147.5 mm")
+    repair = steps(load_scene(SCENES / "gear.repair_shift_17_118.toml"))
+    assert repair[0].startswith("the wheel re-cut 0.75 mm thinner: x₂ = −Δs/(2m·tan α) = −0.2061")
+    assert any("equal and opposite" in x for x in repair)
+
+
+def test_the_least_shift_and_the_drive_in_chinese(tmp_path):
+    p = tmp_path / "g.toml"
+    p.write_text('[gear]\nm_mm = 4\nz = 15\nx = "least"\n[page]\nnotation = "zh"\n', encoding="utf-8")
+    code, out, err = run_cli("steps", str(p))
+    assert code == 0, err
+    assert "不根切：x ≥ x_min = h*a(z_min − z)/z_min = 0.1176（z_min = 17）" in out
+    p.write_text((SCENES / "gear.profile_shifted_12_12_a130.toml").read_text(encoding="utf-8")
+                 .replace('size = "A4-portrait"', 'size = "A4-portrait"\nnotation = "zh"'), encoding="utf-8")
+    code, out, err = run_cli("steps", str(p))
+    assert code == 0, err
+    assert "故为正传动" in out and "齿顶降低 Δy·m = 2.505 mm" in out
