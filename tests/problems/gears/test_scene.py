@@ -148,6 +148,10 @@ def test_a_rack_pinion_takes_its_shift_from_the_centre_distance():
     ('x = "repair"\nthickness_loss_mm = 0.5\ncentre_distance_mm = 121\n', "gear.centre_distance_mm",
      ("zero-sum", "120 mm")),
     ('x = "for_centre_distance"\ncentre_distance_mm = 100\n', "gear.centre_distance_mm", ("base circles",)),
+    ('x = "for_centre_distance"\ncentre_distance_mm = 1e6\n', "gear.centre_distance_mm", ("beyond ±10",)),
+    ('x = "for_centre_distance"\ncentre_distance_mm = 130\nx1 = 50\n', "gear.x1", ("x = 50, -48.7495",)),
+    ('x = "repair"\nthickness_loss_mm = 1e5\n', "gear.thickness_loss_mm", ("beyond ±10",)),
+    ('x = "for_centre_distance"\ncentre_distance_mm = 130\nx1 = nan\n', "gear.x1", ("finite",)),
 ])
 def test_bad_design_keys_are_refused_in_one_line(tmp_path, body, where, words):
     f = shift_scene(tmp_path, PAIR + body)
