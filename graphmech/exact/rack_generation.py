@@ -124,7 +124,8 @@ class GeneratedProfile:
         """The involute's start angle through each (ρ, δ) less the flank's: r_b times it is the
         normal distance (the involutes of one base circle are parallel curves)."""
         a = np.arccos(np.clip(self.rb / rho, -1.0, 1.0))
-        return delta + (np.tan(a) - a) - (self.psi + inv(self.alpha))
+        out: Points = delta + (np.tan(a) - a) - (self.psi + inv(self.alpha))
+        return out
 
     def fold(self, points: Points) -> tuple[Points, Points]:
         """(ρ, δ) of points folded onto the half pitch from the tooth's axis (δ = 0, the tooth at
@@ -190,7 +191,8 @@ class GeneratedProfile:
         start = self.fillet(np.array([self.beta0]))[0]
         d_root = half + self.beta0
         out = np.minimum(out, np.where(d >= d_root, np.abs(rho - self.rf), np.hypot(*(xy - start).T)))
-        return np.minimum(out, self._fillet_distance(xy))
+        nearest: Points = np.minimum(out, self._fillet_distance(xy))
+        return nearest
 
     def _fillet_distance(self, xy: Points) -> Points:
         lo, hi = sorted((self.beta0, self.beta_end))
@@ -219,7 +221,8 @@ class GeneratedProfile:
         interior = (b > lo) & (b < hi)
         ends = self.fillet(np.array([lo, hi]))
         to_end = np.minimum(np.hypot(*(xy - ends[0]).T), np.hypot(*(xy - ends[1]).T))
-        return np.where(interior, np.abs(np.hypot(*(xy - C).T) - self.rho), to_end)
+        dist: Points = np.where(interior, np.abs(np.hypot(*(xy - C).T) - self.rho), to_end)
+        return dist
 
 
 def rounding(system: ToothSystem) -> tuple[float, float, float]:

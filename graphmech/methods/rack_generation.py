@@ -153,7 +153,7 @@ def generate(system: ToothSystem, gear: SpurGear, positions: int = 12,
     reach = math.sqrt(max(ra * ra - tip_line * tip_line, 0.0)) + 2.0 * math.pi * m
     step = 2.0 * half / positions
     J = math.ceil(min(reach / r, 0.45 * math.pi) / step)
-    phis = (np.arange(-J, J + 1) + stagger) * step
+    phis = np.asarray((np.arange(-J, J + 1) + stagger) * step, dtype=np.float64)
     cut = shapely.union_all(shapely.polygons(place(np.asarray(cutter), phis, r, L)))
     n_arc = max(16, math.ceil(2.0 * half * TIP_CHORDS_PER_RAD))
     t = np.linspace(0.5 * math.pi - half, 0.5 * math.pi + half, n_arc + 1)

@@ -25,9 +25,9 @@ from typing import Any
 import numpy as np
 
 from graphmech.exact import gear as ex
+from graphmech.exact import rack_generation as erg
 from graphmech.mechanisms.gear import GearSet, SpurGear, ToothSystem
 from graphmech.methods import gear_meshing as gm
-from graphmech.exact import rack_generation as erg
 from graphmech.methods import involute as inv
 from graphmech.methods import rack_generation as rgen
 from graphmech.timing import best_time
@@ -63,7 +63,7 @@ def generation_records(repeat: int = 3, positions: tuple[int, ...] = GENERATION_
     for case, system, gear in GENERATION_CASES:
         exact = erg.generated_profile(system, gear)
         for n in positions:
-            def cut(n: int = n) -> rgen.Generation:
+            def cut(n: int = n, system: ToothSystem = system, gear: SpurGear = gear) -> rgen.Generation:
                 return rgen.generate(system, gear, n)
 
             secs, gen = best_time(cut, repeat)

@@ -22,7 +22,16 @@ from typing import Any
 import numpy as np
 
 from graphmech.accuracy import DISCRETISATION
-from graphmech.drawing.primitives import ArcArrow, Arrow, Hinge, Label, Panel, Polyline, Primitive, Segment
+from graphmech.drawing.primitives import (
+    ArcArrow,
+    Arrow,
+    Hinge,
+    Label,
+    Panel,
+    Polyline,
+    Primitive,
+    Segment,
+)
 from graphmech.errors import GraphmechError, SceneError
 from graphmech.exact import gear as ex
 from graphmech.exact import rack_generation as erg
@@ -96,17 +105,19 @@ def read_generation(g: Reader, module: float | None) -> GenerationReading | None
             g.used.add(g.present(key) or key)
             g.problem(g.at(g.present(key) or key), "over-determined: blank_speed and datum_distance already set "
                                                    "z = 2r/m and x = (L − r)/m; give z (and x) or them, not both")
+    # refused: a table that poses z itself still answers for it (no "z missing" besides)
+    posed = None if w is None or L is None else GenerationReading(RackGeneration(1.0), 1, 0.0)
     if len(t.problems) > bad or v is None:
-        return None
+        return posed
     model = RackGeneration(v, w, L, n)
     if w is None or L is None:
         return GenerationReading(model)
     if module is None:
-        return None
+        return posed
     z = 2.0 * v / (w * module)
     if not 1.0 <= z <= 1e5:
         g.problem(t.at(t.present("blank_speed") or "blank_speed"), f"r = v/ω gives z = 2r/m = {z:.6g}: no gear")
-        return None
+        return posed
     z_drawn = max(1, round(z))
     return GenerationReading(model, z_drawn, (L - module * z_drawn / 2.0) / module)
 
@@ -212,18 +223,27 @@ def generation_value(an: GearAnalysis, stem: str) -> tuple[float, float, float |
 
 
 def estimate(an: GearAnalysis, row: Any) -> Any:
-    """A thickness row with its own error: its difference from the same N positions shifted half a
-    step (the scallops there fall between; N and 2N would share positions, among them the whole
-    pitches, and agree where one of those cuts the circle whatever the error)."""
+    """A thickness row with its own error: half its difference from the same N positions shifted
+    half a step (their scallops fall in the other phase, so the two errors are alike in size and
+    their difference up to twice either; N and 2N would share positions, among them the whole
+    pitches, and agree where one of those cuts the circle whatever the error). On the reference
+    circle the flank's point passes the pitch point at φ = (πm/4 − xm·tan α)/r: where that is one
+    of the positions, the cutter's flank goes through it and the thickness there is exact."""
     ga: GenerationAnalysis = an.generation
     if row.name not in ("s_pitch_generated", "sa_generated"):
         return row
+    s, g, n = ga.system, ga.gear, ga.model.positions
+    if row.name == "s_pitch_generated":
+        phi = (math.pi * s.m / 4.0 - g.x * s.m * math.tan(s.alpha)) / ga.construction.r
+        k = phi / (2.0 * math.pi / (g.z * n))
+        if abs(k - round(k)) < 1e-9:
+            return row
     other = ga.staggered()
     t2 = rg.thickness(other, other.r if row.name == "s_pitch_generated" else other.ra)
     if t2 is None:
         return row
-    err = abs(row.graphical - t2) / max(abs(row.graphical), 1e-300)
-    return row.estimated(DISCRETISATION, err, f"{ga.model.positions} positions per pitch, against those halfway")
+    err = 0.5 * abs(row.graphical - t2) / max(abs(row.graphical), 1e-300)
+    return row.estimated(DISCRETISATION, err, f"{n} positions per pitch, against those halfway")
 
 
 # ------------------------------------------------------------------------------ the panel
@@ -323,13 +343,12 @@ def generation_panel(ga: GenerationAnalysis, notation: str = "en") -> Panel:
         labels.append(Label(_word("undercut", notation), (float(right[k, 0]), float(right[k, 1])),
                             ((-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)), LETTER, False))
     v = ga.values
-    notes = [scale_text("l", mu),
-             f"v = {number(ga.model.cutter_speed, 4)} m/s, ω = {number(v.omega, 5)} rad/s (n = {number(v.n, 5)} r/min): "
-             f"r = v/ω = {number(v.r * 1000, 6)} mm",
-             f"z = 2r/m = {number(v.z, 6)}, x = (L − r)/m = {number(v.x, 5)}" + (
-                 f"; drawn with z = {g.z}, x = {number(g.x, 5)}" if abs(v.z - g.z) > 1e-9 * g.z else ""),
-             f"{ga.model.positions} cutter positions per pitch, πm/N = {number(math.pi * m / ga.model.positions * 1000, 4)}"
-             " mm apart"]
+    speeds = (f"v = {number(ga.model.cutter_speed, 4)} m/s, ω = {number(v.omega, 5)} rad/s "
+              f"(n = {number(v.n, 5)} r/min): r = v/ω = {number(v.r * 1000, 6)} mm")
+    drawn = f"; drawn with z = {g.z}, x = {number(g.x, 5)}" if abs(v.z - g.z) > 1e-9 * g.z else ""
+    apart = number(math.pi * m / ga.model.positions * 1000, 4)
+    notes = [scale_text("l", mu), speeds, f"z = 2r/m = {number(v.z, 6)}, x = (L − r)/m = {number(v.x, 5)}{drawn}",
+             f"{ga.model.positions} cutter positions per pitch, πm/N = {apart} mm apart"]
     notes += list(ga.notes)
     return Panel("generation", _word("generation", notation), tuple(items + labels), tuple(notes), None,
                  (("l", mu),))

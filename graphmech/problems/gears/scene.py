@@ -13,7 +13,14 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from graphmech.mechanisms.gear import MESHINGS, GearSet, Meshing, RackGeneration, SpurGear, ToothSystem
+from graphmech.mechanisms.gear import (
+    MESHINGS,
+    GearSet,
+    Meshing,
+    RackGeneration,
+    SpurGear,
+    ToothSystem,
+)
 from graphmech.problems.gears.generation import GENERATION_QUANTITIES, read_generation
 from graphmech.problems.judging import close_names
 from graphmech.problems.reader import (
