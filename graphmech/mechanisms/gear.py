@@ -64,4 +64,17 @@ class GearSet:
         return self.meshing is not None
 
 
-__all__ = ["MESHINGS", "GearSet", "Meshing", "SpurGear", "ToothSystem"]
+@dataclass(frozen=True)
+class RackGeneration:
+    """Generation by the rack cutter (范成法): the cutter's speed v (m/s); the blank's angular
+    speed ω (rad/s) and the distance L from the blank's centre to the cutter's datum line (m),
+    each None when the gear's z and x set them (ω = v/r, L = r + xm with r = mz/2); the cutter
+    positions drawn per tooth pitch (the cutter moves πm/N between two)."""
+
+    cutter_speed: float
+    blank_speed: float | None = None
+    datum_distance: float | None = None
+    positions: int = 12
+
+
+__all__ = ["MESHINGS", "GearSet", "Meshing", "RackGeneration", "SpurGear", "ToothSystem"]

@@ -357,6 +357,14 @@ def _cutter(system: ToothSystem, gear: SpurGear) -> _Cutter:
     return _Cutter(r, xc, yc, rho, -xc / r, -x_cross / r)
 
 
+def cutter_rounding(system: ToothSystem, gear: SpurGear) -> tuple[float, float, float]:
+    """The rack cutter's right tip rounding as :func:`tooth_outline`'s fillet constructs it: its
+    centre's distance x_c from the cutter tooth's axis, its height above the cutter's datum line
+    (negative: below it) and ρ_f (what :mod:`graphmech.methods.rack_generation` draws the cutter with)."""
+    c = _cutter(system, gear)
+    return c.xc, c.yc - (c.r + gear.x * system.m), c.rho
+
+
 def _fillet_and_start(system: ToothSystem, gear: SpurGear) -> tuple[list[XY], float, bool]:
     """The fillet under the left flank of the tooth right of the space centred on +y, from the
     root circle up to where the profile starts, that radius, and whether the gear is undercut.
@@ -587,4 +595,4 @@ def over_pins(system: ToothSystem, gear: SpurGear, d_pin: float | None = None) -
     return PinMeasurement(d_pin=d, centres=(X, X2), contacts=contacts, M=across - d if gear.internal else across + d)
 
 __all__ = ["AtRadius", "Flank", "PinMeasurement", "SpanMeasurement", "ToothOutline", "at_radius", "bisect_root",
-           "circles", "over_pins", "pointed_tip", "span", "tooth_outline"]
+           "circles", "cutter_rounding", "over_pins", "pointed_tip", "span", "tooth_outline"]

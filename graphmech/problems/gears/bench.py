@@ -8,7 +8,12 @@ Records as in :mod:`graphmech.bench`: ``{"method", "case", "n", "seconds", "max_
   falls as 1/n²; the points themselves are exact;
 * ``gear-mesh`` / each case: the line of action cut by the tip circles, constructed ``n`` = 1
   times per call; the error is the largest relative difference of a′, α′, B₁B₂ and ε from the
-  closed forms.
+  closed forms;
+* ``rack-generation`` / each case: the tooth the rack cutter's ``n`` positions per pitch leave
+  (:func:`graphmech.methods.rack_generation.generate`); the error is the largest distance of the
+  generated outline (its vertices: the cusps between positions and the cutter's own points) from
+  the exact profile — involute, fillet (trochoid offset), root and tip arcs — over the module m;
+  the scallops fall as 1/n².
 
 Speed is measured here, never in timed tests.
 """
@@ -20,9 +25,11 @@ from typing import Any
 import numpy as np
 
 from graphmech.exact import gear as ex
+from graphmech.exact import rack_generation as erg
 from graphmech.mechanisms.gear import GearSet, SpurGear, ToothSystem
 from graphmech.methods import gear_meshing as gm
 from graphmech.methods import involute as inv
+from graphmech.methods import rack_generation as rgen
 from graphmech.timing import best_time
 
 #: The involute's point counts per flank.
@@ -40,6 +47,29 @@ MESH_CASES: tuple[tuple[str, GearSet], ...] = (
     ("rack-z18", GearSet(ToothSystem(0.004, math.radians(20.0)), (SpurGear(18),), "rack")),
     ("external-20-1000", GearSet(ToothSystem(0.002, math.radians(20.0)), (SpurGear(20), SpurGear(1000)), "external")),
 )
+
+
+#: Cutter positions per pitch for the generation.
+GENERATION_POSITIONS = (4, 8, 16, 32, 64, 128, 256)
+GENERATION_CASES: tuple[tuple[str, ToothSystem, SpurGear], ...] = (
+    ("z15-x0", ToothSystem(0.004, math.radians(20.0)), SpurGear(15)),
+    ("z18-x-1.5-undercut", ToothSystem(0.004, math.radians(20.0)), SpurGear(18, -1.5)),
+)
+
+
+def generation_records(repeat: int = 3, positions: tuple[int, ...] = GENERATION_POSITIONS) -> list[dict[str, Any]]:
+    """The generated tooth against the exact profile, and its time, for each N."""
+    records: list[dict[str, Any]] = []
+    for case, system, gear in GENERATION_CASES:
+        exact = erg.generated_profile(system, gear)
+        for n in positions:
+            def cut(n: int = n, system: ToothSystem = system, gear: SpurGear = gear) -> rgen.Generation:
+                return rgen.generate(system, gear, n)
+
+            secs, gen = best_time(cut, repeat)
+            err = float(exact.distance(np.asarray(gen.profile)).max()) / system.m
+            records.append({"method": "rack-generation", "case": case, "n": n, "seconds": secs, "max_rel_error": err})
+    return records
 
 
 def flank_error(outline: inv.ToothOutline, rb: float, ra: float) -> float:
@@ -100,9 +130,18 @@ def bench(quick: bool = False) -> tuple[list[dict[str, Any]], list[str]]:
         notes.append(f"involute by points: the chords' sag falls as n^−{order:.2g} "
                      f"({a['max_rel_error']:.2g} of the flank's height at {a['n']} points, {b['max_rel_error']:.2g} at "
                      f"{b['n']}); the points themselves are exact")
+    gen = generation_records(repeat=1 if quick else 3,
+                             positions=GENERATION_POSITIONS[:3] if quick else GENERATION_POSITIONS)
+    records += gen
+    for case, _, _ in GENERATION_CASES:
+        mine = [r for r in gen if r["case"] == case]
+        a, b = mine[-2], mine[-1]
+        order = math.log(a["max_rel_error"] / b["max_rel_error"]) / math.log(b["n"] / a["n"])
+        notes.append(f"rack generation {case}: the scallops fall as N^−{order:.2g} ({a['max_rel_error']:.2g}·m at "
+                     f"{a['n']} positions per pitch, {b['max_rel_error']:.2g}·m at {b['n']}, {b['seconds']:.2g} s)")
     mesh = [r for r in records if r["method"] == "gear-mesh"]
     notes.append(f"meshing: {len(mesh)} cases, worst relative error {max(r['max_rel_error'] for r in mesh):.2g}")
     return records, notes
 
 
-__all__ = ["bench", "flank_error", "gear_records"]
+__all__ = ["bench", "flank_error", "gear_records", "generation_records"]

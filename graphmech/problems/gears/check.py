@@ -26,6 +26,7 @@ from graphmech.mechanisms.gear import GearSet, SpurGear
 from graphmech.methods import gear_meshing as gmesh
 from graphmech.methods import involute as inv
 from graphmech.methods import profile_shift as shift
+from graphmech.problems.gears import generation as gen
 from graphmech.problems.gears.scene import (
     AT_RADIUS,
     GEAR_SHOW_CHOICES,
@@ -85,6 +86,7 @@ class GearAnalysis:
     root_base: tuple[float, float] | None = None
     mesh_whole: bool = True
     shift_sum: float | None = None
+    generation: gen.GenerationAnalysis | None = None  # [gear.generation] (problems/gears/generation.py)
 
     def scale_notes(self) -> list[str]:
         words = {"l": "", "tooth": "tooth, ", "zones": "contact zones, "}
@@ -127,7 +129,9 @@ def panels_for(names: list[str], p: GearScene) -> tuple[str, ...]:
     want = set()
     for name in names:
         stem, _, _ = split_gear(name, p)
-        if stem in ("W", "d_pin", "M"):
+        if p.generation is not None and name in gen.GENERATION_QUANTITIES:
+            want.add("generation")
+        elif stem in ("W", "d_pin", "M"):
             want.add("measurement")
         elif stem in TOOTH_QUANTITIES or stem in AT_RADIUS or stem == "p":
             want.add("tooth")
@@ -155,6 +159,7 @@ def analyse(scene: Scene[GearScene], extra_measured: tuple[tuple[str, float], ..
     with in_double_precision("the gear construction"):
         _warn(an)
         _choose_scales(an)
+        gen.analyse_generation(an)
         for i, name in enumerate(an.names):
             try:
                 row = _row(an, name)
@@ -325,6 +330,9 @@ def _values(an: GearAnalysis, name: str) -> tuple[float, float, float | None, fl
     """(graphical, exact, the length on the drawing in mm or None, μ) of a name, in SI (angles in rad)."""
     p = an.problem
     s = p.gears.system
+    if an.generation is not None and name in gen.GENERATION_QUANTITIES \
+            and (name != "x" or an.generation.model.blank_speed is not None):  # else the shift's own row
+        return gen.generation_value(an, name)
     stem, label, r_k = split_gear(name, p)
     mu_t = an.scales.get("tooth")
     if stem in AT_RADIUS:
@@ -602,7 +610,8 @@ def _row(an: GearAnalysis, name: str) -> Row | None:
         g, e = math.degrees(g), math.degrees(e)
     # a shift coefficient is a length in modules: its error is relative to m where x is near 0
     floor = 1.0 if split_gear(name, an.problem)[0] in SHIFT_STEMS[:3] + SHIFT_STEMS[5:] else 1e-300
-    return Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), floor))
+    row = Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), floor))
+    return gen.estimate(an, row) if an.generation is not None else row
 
 
 def judge(an: GearAnalysis, precision_mm: float | None = None) -> list[Verdict]:
@@ -713,7 +722,9 @@ def gear_figure(an: GearAnalysis, page: tuple[float, float], footer: tuple[str, 
         gears=p.gears, scales=dict(an.scales), teeth=tuple(teeth),
         at_radii=tuple((lab, c) for (lab, _r), c in an.radii.items()),
         pointed=tuple(an.pointed.items()), span=tuple(an.spans.items()), pins=tuple(an.pins.items()),
-        mesh=an.mesh, mesh_whole=an.mesh_whole, root_base=(an.root_base[0], float(an.gear(p.labels[0]).z)) if an.root_base else None)
+        mesh=an.mesh, mesh_whole=an.mesh_whole, root_base=(an.root_base[0], float(an.gear(p.labels[0]).z)) if an.root_base else None,
+        generation=gen.generation_panel(an.generation, an.scene.page.notation) if an.generation is not None
+        and "generation" in an.panels else None)
     return gear_sheet(an.scene.title, an.panels, drawing, page, footer, an.scene.page.notation)
 
 

@@ -67,7 +67,7 @@ XY = tuple[float, float]
 Box = tuple[float, float, float, float]  # xmin, ymin, xmax, ymax (mm)
 
 #: The panels a gear sheet can show, in this order.
-PANELS = ("tooth", "meshing", "zones", "measurement", "root_base")
+PANELS = ("tooth", "meshing", "zones", "measurement", "root_base", "generation")
 
 #: The gear sheet's words (graphmech.drawing.notation's shape): key → (English, 中文 (孙桓), русский).
 WORDS: dict[str, tuple[str, str, str]] = {
@@ -141,6 +141,8 @@ class GearDrawing:
     #: the meshing panel shows the whole gears (False: a window about B₁B₂ — a large pair's, whose
     #: μl the check chose for the line of action)
     mesh_whole: bool = True
+    #: the generation by the rack cutter, its panel built by problems/gears/generation.py
+    generation: Panel | None = None
 
 
 # ----------------------------------------------------------------------------- geometry on paper
@@ -1005,6 +1007,9 @@ def gear_sheet(title: str, show: Sequence[str], drawing: GearDrawing, page: tupl
                 f"h_{{a}}* = {number(s.ha_star)}, c* = {number(s.c_star)}")
         panels.append(Panel("root_base", word("root_base", notation, WORDS), tuple(root_base_items(drawing, notation)),
                             (note,), row))
+        row += 1
+    if "generation" in show and drawing.generation is not None:
+        panels.append(replace(drawing.generation, row=row))
     return Sheet(title, tuple(panels), page, footer)
 
 

@@ -13,7 +13,15 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from graphmech.mechanisms.gear import MESHINGS, GearSet, Meshing, SpurGear, ToothSystem
+from graphmech.mechanisms.gear import (
+    MESHINGS,
+    GearSet,
+    Meshing,
+    RackGeneration,
+    SpurGear,
+    ToothSystem,
+)
+from graphmech.problems.gears.generation import GENERATION_QUANTITIES, read_generation
 from graphmech.problems.judging import close_names
 from graphmech.problems.reader import (
     MISSING,
@@ -31,7 +39,7 @@ from graphmech.problems.reader import (
 )
 
 #: What a gear scene may show (figures.PANELS in this order).
-GEAR_SHOW_CHOICES = ("tooth", "meshing", "zones", "measurement", "root_base")
+GEAR_SHOW_CHOICES = ("tooth", "meshing", "zones", "measurement", "root_base", "generation")
 #: A gear's own quantities (a number suffix in a pair) → unit in ``check``.
 TOOTH_QUANTITIES = {
     "d": "m", "db": "m", "da": "m", "df": "m", "ha": "m", "hf": "m",
@@ -76,6 +84,8 @@ class GearScene:
     #: with shift "for_centre_distance": the pinion's stated shift; with "repair": the wheel's thickness loss, m
     x1_stated: float | None = None
     thickness_loss: float | None = None
+    #: [gear.generation]: the rack cutter's generation (problems/gears/generation.py)
+    generation: RackGeneration | None = None
 
     @property
     def labels(self) -> tuple[str, ...]:
@@ -93,6 +103,8 @@ def quantity_unit(name: str, problem: GearScene) -> str | None:
     ('m', 'm', None, 'm')
     """
     base, _, at = name.partition("@")
+    if problem.generation is not None and base in GENERATION_QUANTITIES and not at:
+        return GENERATION_QUANTITIES[base]
     labels = problem.labels
     for label in labels:
         if label and not base.endswith(label):
@@ -120,7 +132,7 @@ def known_names(problem: GearScene) -> list[str]:
     """Every plain name the scene can find (for 'did you mean')."""
     names = [stem + label for label in problem.labels for stem in TOOTH_QUANTITIES]
     names += [f"{stem}{label}@r" for label in problem.labels for stem in AT_RADIUS]
-    names += list(SET_QUANTITIES)
+    names += list(SET_QUANTITIES) + (list(GENERATION_QUANTITIES) if problem.generation is not None else [])
     if problem.gears.pair:
         names += [n for n in PAIR_QUANTITIES if quantity_unit(n, problem) is not None]
     return names
@@ -200,10 +212,12 @@ def _read_gear(g: Reader) -> GearScene | None:
         alpha = None
     ha = _coefficient(g, "ha_star", 1.0, 0.0, 3.0)
     c = _coefficient(g, "c_star", 0.25, 0.0, 1.0)
-    zs = _teeth(g)
+    gen = read_generation(g, m)  # [gear.generation]: a blank speed and L set z and x
+    zs = _teeth(g) if gen is None or gen.z_drawn is None else (gen.z_drawn,)
     count = len(zs) if zs is not None else 1
     shift = _shift_word(g)
-    xs = (0.0,) * count if shift is not None else _per_gear(g, "x", count, 0.0)
+    xs = (0.0,) * count if shift is not None else _per_gear(g, "x", count, 0.0) \
+        if gen is None or gen.x_drawn is None else (gen.x_drawn,)
     meshing_value = g.raw("meshing")
     meshing: Meshing | None = None
     if meshing_value is not MISSING:
@@ -256,7 +270,8 @@ def _read_gear(g: Reader) -> GearScene | None:
     gears = tuple(SpurGear(z, float(x or 0.0), r) for z, x, r in zip(zs, xs, ring))
     if meshing == "external" and shorten is not False:
         gears = _shortened(system, gears, a_w)
-    return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins), where, shift, x1, loss)
+    return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins), where, shift, x1, loss,
+                     None if gen is None else gen.model)
 
 
 def _shift_word(g: Reader) -> str | None:

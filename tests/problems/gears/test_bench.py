@@ -26,3 +26,17 @@ def test_records_and_the_involutes_order_of_convergence():
 def test_quick_bench_notes():
     records, notes = bench(quick=True)
     assert records and any("n^−2" in n for n in notes)
+
+
+def test_rack_generation_records_fall_as_one_over_n_squared():
+    from graphmech.problems.gears.bench import generation_records
+
+    recs = generation_records(repeat=1, positions=(8, 16, 32))
+    assert {r["method"] for r in recs} == {"rack-generation"} and all(REQUIRED <= set(r) for r in recs)
+    for case in ("z15-x0", "z18-x-1.5-undercut"):
+        mine = [r for r in recs if r["case"] == case]
+        assert [r["n"] for r in mine] == [8, 16, 32]
+        for a, b in zip(mine, mine[1:]):
+            assert 1.5 < math.log2(a["max_rel_error"] / b["max_rel_error"]) < 2.6, (a, b)
+    _, notes = bench(quick=True)
+    assert any(n.startswith("rack generation z15-x0: the scallops fall as N^−") for n in notes)

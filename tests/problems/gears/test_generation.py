@@ -1,0 +1,129 @@
+"""Generation by the rack cutter in a gear scene: [gear.generation] read (a blank speed and L give
+z and x), refused in one line at its key, its rows against the bank's four cases, the undercut said,
+the panel drawn, the SVG byte-identical."""
+from __future__ import annotations
+
+import math
+import tomllib
+
+import pytest
+
+from graphmech.mechanisms.gear import RackGeneration, SpurGear
+from graphmech.scene import parse_scene
+from tests.conftest import ROOT, SCENES, assert_refused, check_json, run_cli, values
+from tests.scenes import only_problem
+
+PID = "gear.rack_cutter_generation_cases"
+CASES = [SCENES / f"{PID}-{i}.toml" for i in (1, 2, 3, 4)]
+GEN = "[gear.generation]\ncutter_speed_m_s = 0.002\n"
+#: Bank key (case, name) → (check name, factor from SI to the bank's unit).
+KEYS = {"r_mm": ("r", 1e3), "L_mm": ("L", 1e3), "n_r_min": ("n_blank", 1.0), "z": ("z", 1.0), "x": ("x", 1.0)}
+
+
+def read(text: str):
+    return parse_scene(tomllib.loads(text), "g.toml").problem
+
+
+def test_a_cutter_speed_with_z_and_x():
+    p = read("[gear]\nm_mm = 4\nz = 15\nx = 0.1\n" + GEN + "positions = 24\n")
+    assert p.generation == RackGeneration(0.002, None, None, 24)
+    assert p.gears.gears == (SpurGear(15, 0.1),)
+
+
+def test_a_blank_speed_and_datum_distance_give_z_and_x():
+    p = read("[gear]\nm_mm = 4\n" + GEN + "blank_speed_rpm = 0.7958\ndatum_distance_mm = 30\n")
+    g = p.generation
+    assert g.blank_speed == pytest.approx(0.7958 * math.pi / 30.0) and g.datum_distance == pytest.approx(0.030)
+    assert g.positions == 12
+    assert p.gears.gears[0].z == 12 and p.gears.gears[0].x == pytest.approx(1.5)  # the whole z drawn on the same L
+
+
+@pytest.mark.parametrize("body, where, words", [
+    ("m_mm = 4\nz = 15\n" + GEN + "blank_speed_rpm = 0.7958\ndatum_distance_mm = 30", "gear.z", "over-determined"),
+    ("m_mm = 4\nz = 15\n" + GEN + "blank_speed_rpm = 0.7958", "gear.generation.blank_speed_rpm",
+     "needs datum_distance"),
+    ("m_mm = 4\nz = 15\n" + GEN + "datum_distance_mm = 30", "gear.generation.datum_distance_mm", "state x"),
+    ('m_mm = 4\nz = [15, 30]\nmeshing = "external"\n' + GEN, "gear.generation", "poses one gear"),
+    ("m_mm = 4\nz = 15\n" + GEN + "positions = 1", "gear.generation.positions", "2 … 400"),
+    ("m_mm = 4\nz = 15\n" + GEN + "positions = 12.5", "gear.generation.positions", "whole number"),
+    ("m_mm = 4\n[gear.generation]\nblank_speed_rpm = 1\ndatum_distance_mm = 30",
+     "gear.generation.cutter_speed", "missing"),
+    ("m_mm = 4\nz = 15\n" + GEN + "cutter = 1", "gear.generation.cutter", "unknown key"),
+    ("m_mm = 4\n" + GEN + "blank_speed_rpm = 1e-9\ndatum_distance_mm = 30", "gear.generation.blank_speed_rpm",
+     "no gear"),
+])
+def test_bad_generation_tables_are_refused_in_one_line(body, where, words):
+    path, reason = only_problem(f"[gear]\n{body}\n", "g.toml")
+    assert path == where and words in reason, (path, reason)
+
+
+def test_a_refusal_on_the_command_line_is_one_line(tmp_path):
+    f = tmp_path / "g.toml"
+    f.write_text("[gear]\nm_mm = 4\nz = 15\n" + GEN + "blank_speed_rpm = 0.7958\n")
+    assert_refused(run_cli("check", str(f)), "g.toml", "gear.generation.blank_speed_rpm")
+
+
+def test_generation_names_need_the_table(tmp_path):
+    path, reason = only_problem('find = ["n_blank"]\n[gear]\nm_mm = 4\nz = 15\n', "g.toml")
+    assert path == "find[0]" and "n_blank" in reason
+    f = tmp_path / "g.toml"
+    f.write_text('show = ["generation"]\n[gear]\nm_mm = 4\nz = 15\n')
+    assert_refused(run_cli("check", str(f)), "g.toml", "show", "[gear.generation]")
+
+
+@pytest.mark.parametrize("case", [1, 2, 3, 4])
+def test_the_books_four_cases_against_the_bank(problems, case):
+    p = problems[PID]
+    q = values(check_json(CASES[case - 1]))
+    checked = 0
+    for key, want in p["exact"].items():
+        c, _, rest = key.partition("_")
+        if c != f"c{case}" or rest not in KEYS:
+            continue
+        name, factor = KEYS[rest]
+        assert q[name]["exact"] * factor == pytest.approx(want, rel=1e-12), key
+        assert q[name]["graphical"] * factor == pytest.approx(want, rel=1e-9), key
+        book = p["book"].get(key)
+        if book is not None:
+            assert q[name]["graphical"] * factor == pytest.approx(book, rel=abs(p["rel_diff"].get(key, 0.0)) + 1e-4), key
+        checked += 1
+    assert checked >= 3
+
+
+def test_the_generated_tooth_rows_state_their_own_error():
+    q = values(check_json(CASES[1]))
+    for name in ("s_pitch_generated", "sa_generated"):
+        row = q[name]
+        assert row["error_source"] == "discretisation" and "12 positions" in row["basis"]
+        assert 0.0 < row["rel_error"] < 1e-2
+        assert row["rel_error"] < 10.0 * row["error_estimate"]  # the estimate is of the error's size
+    one = values(check_json(CASES[0]))
+    assert one["s_pitch_generated"]["rel_error"] < 1e-9  # φ = 0 rolls through the pitch point: exact there
+    assert one["omega_blank"]["graphical"] == pytest.approx(0.002 / 0.030, rel=1e-14)
+
+
+def test_the_undercut_and_the_rounded_speed_are_said():
+    doc = check_json(CASES[3])
+    text = " ".join(doc.get("warnings", []))
+    assert "undercut" in text and "z = 2r/m = 18.0006" in text and "z = 18" in text
+    q = values(doc)
+    sa = q["sa_generated"]
+    assert sa["exact"] < 0.00244309 * 1.0001  # the fillet's thickness on the tip circle, not the involute's
+    _, _, err = run_cli("check", str(CASES[2]))
+    assert "11.9996" in err and "drawn with z = 12" in err
+
+
+def test_the_figure_has_the_generation_panel_and_is_byte_identical(tmp_path):
+    a, b = tmp_path / "a.svg", tmp_path / "b.svg"
+    for f in (a, b):
+        code, _, err = run_cli("render", str(CASES[3]), "-o", str(f))
+        assert code == 0, err
+    svg = a.read_text()
+    assert a.read_bytes() == b.read_bytes()
+    assert "Generation by the rack cutter" in svg and "undercut" in svg and "L = 30 mm" in svg
+    assert "v = 0.002 m/s" in svg and "x_{min}" not in svg
+
+
+def test_the_committed_figures_are_the_scenes():
+    for f in CASES:
+        assert (ROOT / "figures" / f"{f.stem}.svg").exists()
