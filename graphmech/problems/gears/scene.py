@@ -13,7 +13,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from graphmech.mechanisms.gear import MESHINGS, GearSet, Meshing, SpurGear, ToothSystem
+from graphmech.mechanisms.gear import MESHINGS, SPATIAL_MESHINGS, GearSet, Meshing, SpurGear, ToothSystem
+from graphmech.problems.gears.spatial_scene import read_spatial, spatial_names, spatial_unit, spatial_unknown
 from graphmech.problems.judging import close_names
 from graphmech.problems.reader import (
     MISSING,
@@ -31,7 +32,7 @@ from graphmech.problems.reader import (
 )
 
 #: What a gear scene may show (figures.PANELS in this order).
-GEAR_SHOW_CHOICES = ("tooth", "meshing", "zones", "measurement", "root_base")
+GEAR_SHOW_CHOICES = ("tooth", "meshing", "zones", "measurement", "root_base", "helix")
 #: A gear's own quantities (a number suffix in a pair) → unit in ``check``.
 TOOTH_QUANTITIES = {
     "d": "m", "db": "m", "da": "m", "df": "m", "ha": "m", "hf": "m",
@@ -84,6 +85,8 @@ def quantity_unit(name: str, problem: GearScene) -> str | None:
     >>> quantity_unit("da2", g), quantity_unit("s_k1@85", g), quantity_unit("da", g), quantity_unit("B1B2", g)
     ('m', 'm', None, 'm')
     """
+    if problem.gears.meshing in SPATIAL_MESHINGS:  # helical, bevel, worm: spatial_scene's names
+        return spatial_unit(name, problem.gears)
     base, _, at = name.partition("@")
     labels = problem.labels
     for label in labels:
@@ -108,6 +111,8 @@ def quantity_unit(name: str, problem: GearScene) -> str | None:
 
 def known_names(problem: GearScene) -> list[str]:
     """Every plain name the scene can find (for 'did you mean')."""
+    if problem.gears.meshing in SPATIAL_MESHINGS:
+        return spatial_names(problem.gears)
     names = [stem + label for label in problem.labels for stem in TOOTH_QUANTITIES]
     names += [f"{stem}{label}@r" for label in problem.labels for stem in AT_RADIUS]
     names += list(SET_QUANTITIES)
@@ -157,6 +162,8 @@ def parse_gear_scene(data: Mapping[str, Any], source: str, top: Reader, order: M
 
 
 def _unknown(name: str, problem: GearScene) -> str:
+    if problem.gears.meshing in SPATIAL_MESHINGS:
+        return spatial_unknown(name, problem.gears)
     base, _, at = name.partition("@")
     if at and not RADIUS_AT.fullmatch(at):
         return f"{say(name)}: the radius after @ is a number of mm (s_k@85)"
@@ -218,6 +225,9 @@ def _read_gear(g: Reader) -> GearScene | None:
                                                                           "give z = [z1, z2] and meshing")
     ks = _span_teeth(g, count, zs)
     pins = _per_gear(g, "pin_diameter", count, None, kind="length")
+    spatial, zs, xs = read_spatial(g, meshing, zs, xs, m)  # helical, bevel, worm: spatial_scene.py
+    if spatial is not None and zs is not None:
+        ks, pins = (None,) * len(zs), (None,) * len(zs)
     g.finish()
     if len(g.problems) > bad or None in (m, alpha, ha, c, zs, xs, ks, pins) or zs is None or xs is None:
         return None
@@ -226,7 +236,7 @@ def _read_gear(g: Reader) -> GearScene | None:
     ring = [meshing == "internal" and i == 1 or (meshing is None and bool(internal)) for i in range(len(zs))]
     gears = tuple(SpurGear(z, float(x or 0.0), r) for z, x, r in zip(zs, xs, ring))
     system = ToothSystem(m, alpha, ha, c)
-    return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins),
+    return GearScene(GearSet(system, gears, meshing, a_w, spatial), tuple(ks), tuple(pins),
                      g.at(g.present("centre_distance") or "centre_distance"))
 
 
