@@ -131,9 +131,12 @@ def main_extent(an: SpatialAnalysis) -> tuple[float, float]:
         return STRIP_TEETH * d.pt + abs(d.advance), d.height
     if an.gears.meshing == "worm":
         return c.pi_d1, c.pz1 + c.px * len(c.threads)
-    xs = [0.0, c.P[0], c.A[0][0], c.A[1][0], c.V1[0], c.V2[0]]
-    ys = [0.0, c.P[1], c.A[0][1], c.A[1][1], c.V1[1], c.V2[1]]
-    return 2.0 * (max(xs) - min(xs)), 2.0 * (max(ys) - min(ys))
+    pts = [(0.0, 0.0), c.P, *c.A, *c.F, c.V1, c.V2]
+    for u in ((1.0, 0.0), c.u2):  # each gear's section is symmetric about its axis
+        pts += [(2.0 * (p[0] * u[0] + p[1] * u[1]) * u[0] - p[0], 2.0 * (p[0] * u[0] + p[1] * u[1]) * u[1] - p[1])
+                for p in (c.P, *c.A, *c.F)]
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    return max(xs) - min(xs), max(ys) - min(ys)
 
 
 def _choose_scale(an: SpatialAnalysis) -> None:
@@ -148,7 +151,8 @@ def _choose_scale(an: SpatialAnalysis) -> None:
         return
     w, h = page_size(an.scene)
     room_w = (w - SIDE_MM) * MAIN_SHARE
-    room_h = max((h - TITLE_MM) / 2.0 - CAPTION_MM, 30.0)
+    rows = 2 if an.gears.meshing == "helical" else 1
+    room_h = max((h - TITLE_MM) / rows - CAPTION_MM - (30.0 if rows == 2 else 0.0), 15.0)
     an.scales["l"] = round_scale(max(wide / room_w, tall / room_h))
 
 
