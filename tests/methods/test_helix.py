@@ -9,7 +9,12 @@ import pytest
 from graphmech.errors import NotApplicable, OutOfDomain
 from graphmech.exact import gear_spatial as ex
 from graphmech.mechanisms.gear import GearSet, SpatialPair, SpurGear, ToothSystem
-from graphmech.methods.helix import construct_bevel, construct_helical, construct_worm, normal_section
+from graphmech.methods.helix import (
+    construct_bevel,
+    construct_helical,
+    construct_worm,
+    normal_section,
+)
 
 DEG = math.radians
 TOL = 1e-9

@@ -53,33 +53,37 @@ def _analyse(scene: Scene[GearScene], extra: Extra) -> GearAnalysis:
 
 def _judge(an: GearAnalysis, extra: Extra) -> list[Verdict]:
     from graphmech.problems.gears.check import judge
-    from graphmech.problems.gears.spatial import SpatialAnalysis, judge as judge_spatial
+    from graphmech.problems.gears.spatial import SpatialAnalysis
+    from graphmech.problems.gears.spatial import judge as judge_spatial
 
     return judge_spatial(an) if isinstance(an, SpatialAnalysis) else judge(an)
 
 
 def _sheet(scene: Scene[GearScene], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.gears.check import gear_figure
-    from graphmech.problems.gears.spatial import SpatialAnalysis, figure
+    from graphmech.problems.gears.helix_figure import helix_sheet
+    from graphmech.problems.gears.spatial import SpatialAnalysis
     from graphmech.problems.judging import finite
     from graphmech.problems.reader import page_size
 
     an = finite(_analyse(scene, ()))
-    sheet = figure(an, page_size(scene), footer) if isinstance(an, SpatialAnalysis) else \
+    sheet = helix_sheet(an, page_size(scene), footer) if isinstance(an, SpatialAnalysis) else \
         gear_figure(an, page_size(scene), footer)
     return sheet, list(an.warnings)
 
 
 def _extras(an: GearAnalysis) -> dict[str, Any]:
     from graphmech.problems.gears.check import extras
-    from graphmech.problems.gears.spatial import SpatialAnalysis, extras as extras_spatial
+    from graphmech.problems.gears.spatial import SpatialAnalysis
+    from graphmech.problems.gears.spatial import extras as extras_spatial
 
     return extras_spatial(an) if isinstance(an, SpatialAnalysis) else extras(an)
 
 
 def _lines(an: GearAnalysis) -> list[str]:
     from graphmech.problems.gears.check import lines
-    from graphmech.problems.gears.spatial import SpatialAnalysis, lines as lines_spatial
+    from graphmech.problems.gears.spatial import SpatialAnalysis
+    from graphmech.problems.gears.spatial import lines as lines_spatial
 
     return lines_spatial(an) if isinstance(an, SpatialAnalysis) else lines(an)
 

@@ -25,12 +25,30 @@ from typing import TYPE_CHECKING
 
 from graphmech.drawing.lettering import LETTER, number, scale_text
 from graphmech.drawing.notation import word
-from graphmech.drawing.primitives import Circle, Label, Panel, Polyline, Primitive, Segment, Sheet, angle_arc
-from graphmech.problems.gears.figures import GearDrawing, arc_points, dimension, meshing_items
+from graphmech.drawing.primitives import (
+    Circle,
+    Label,
+    Panel,
+    Polyline,
+    Primitive,
+    Segment,
+    Sheet,
+    angle_arc,
+)
+from graphmech.problems.gears.figures import (
+    GearDrawing,
+    arc_points,
+    dimension,
+    meshing_items,
+)
 from graphmech.scales import round_scale
 
 if TYPE_CHECKING:
-    from graphmech.methods.helix import BevelConstruction, HelicalConstruction, WormConstruction
+    from graphmech.methods.helix import (
+        BevelConstruction,
+        HelicalConstruction,
+        WormConstruction,
+    )
     from graphmech.problems.gears.spatial import SpatialAnalysis
 
 XY = tuple[float, float]
@@ -51,7 +69,7 @@ WORDS: dict[str, tuple[str, str, str]] = {
     "window": ("a window of πd_{1} = «w»", "πd_{1} = «w» 的一段", "часть πd_{1} = «w»"),
 }
 #: The secondary drawings' room, mm (the main drawing takes spatial.MAIN_SHARE of the page's width).
-SIDE_ROOM = (60.0, 32.0)
+SIDE_ROOM = (80.0, 36.0)
 #: Offsets of dimension lines from what they measure, mm.
 DIM = 6.0
 
@@ -187,11 +205,11 @@ def helical_panels(an: SpatialAnalysis, notation: str) -> list[Panel]:
         mu_l = _scale_for(ld.pz, ld.pi_d)
         panels.append(Panel("lead", word("lead", notation, WORDS), tuple(lead_items(c, mu_l)),
                             (scale_text("l", mu_l), f"β_{{b}} = {_deg(ld.beta_b)}, p_{{z2}} = {_mm(c.leads[1].pz)}"),
-                            0, (("l", mu_l),)))
+                            1, (("l", mu_l),)))
     m = c.mesh
     assert m.O2 is not None
     r_a = [ri + an.gears.system.ha_star * an.gears.system.m for ri in (m.r_w1, m.r_w2 or 0.0)]
-    mu_m = _scale_for(2.0 * max(r_a), m.a_w + r_a[0] + r_a[1], (150.0, 40.0))
+    mu_m = _scale_for(2.0 * max(r_a), m.a_w + r_a[0] + r_a[1], (120.0, 40.0))
     whole = m.B1B2 / mu_m >= 5.0
     if not whole:  # as the spur meshing panel does: a window about the line of action
         mu_m = round_scale(max(m.B1B2, m.pb) * 4.0 / 40.0)
@@ -264,8 +282,8 @@ def cone_items(c: BevelConstruction, face: float, mu: float) -> list[Primitive]:
     items: list[Primitive] = [Segment((0.0, 0.0), (reach * u1[0], reach * u1[1]), "construction", dashdot=True),
                               Segment((0.0, 0.0), (reach * u2[0], reach * u2[1]), "construction", dashdot=True)]
     for i, u in enumerate((u1, u2)):
-        for side in (False, True):
-            f = (lambda p, uu=u: _mirror(p, uu)) if side else (lambda p: p)
+        for mirrored in (False, True):
+            f = (lambda p, uu=u: _mirror(p, uu)) if mirrored else (lambda p: p)
             a, fl, pp = f(A[i]), f(F[i]), f(P)
             tooth = (fl, a, (a[0] * k, a[1] * k), (fl[0] * k, fl[1] * k))
             items += [Polyline(tooth, "result", closed=True),

@@ -13,8 +13,20 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from graphmech.mechanisms.gear import MESHINGS, SPATIAL_MESHINGS, GearSet, Meshing, SpurGear, ToothSystem
-from graphmech.problems.gears.spatial_scene import read_spatial, spatial_names, spatial_unit, spatial_unknown
+from graphmech.mechanisms.gear import (
+    MESHINGS,
+    SPATIAL_MESHINGS,
+    GearSet,
+    Meshing,
+    SpurGear,
+    ToothSystem,
+)
+from graphmech.problems.gears.spatial_scene import (
+    read_spatial,
+    spatial_names,
+    spatial_unit,
+    spatial_unknown,
+)
 from graphmech.problems.judging import close_names
 from graphmech.problems.reader import (
     MISSING,

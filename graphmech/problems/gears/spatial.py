@@ -12,13 +12,25 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from graphmech.errors import GraphmechError, NoSolution, NotApplicable, OutOfDomain, SceneError
+from graphmech.errors import (
+    GraphmechError,
+    NoSolution,
+    NotApplicable,
+    OutOfDomain,
+    SceneError,
+)
 from graphmech.exact import gear_spatial as ex
 from graphmech.methods import helix
 from graphmech.problems.gears.check import GearAnalysis
 from graphmech.problems.gears.scene import GearScene, quantity_unit
 from graphmech.problems.gears.spatial_scene import NEEDS_B
-from graphmech.problems.judging import Row, Verdict, in_double_precision, judge_value, measured_entries
+from graphmech.problems.judging import (
+    Row,
+    Verdict,
+    in_double_precision,
+    judge_value,
+    measured_entries,
+)
 from graphmech.problems.protocol import PHRASES as COMMON
 from graphmech.problems.protocol import Phrases, num, phrase, read_row, scale_choice
 from graphmech.problems.reader import page_size
@@ -401,12 +413,5 @@ def protocol(an: SpatialAnalysis) -> list[str]:
     return out
 
 
-def figure(an: SpatialAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Any:
-    """The sheet of the helix panel (:mod:`graphmech.problems.gears.helix_figure`)."""
-    from graphmech.problems.gears.helix_figure import helix_sheet
-
-    return helix_sheet(an, page, footer)
-
-
 __all__ = ["DEFAULT_BEVEL", "DEFAULT_HELICAL", "DEFAULT_WORM", "NEEDS_B", "SpatialAnalysis", "analyse_spatial",
-           "default_find", "extras", "figure", "judge", "lines", "main_extent", "protocol"]
+           "default_find", "extras", "judge", "lines", "main_extent", "protocol"]
