@@ -49,14 +49,14 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
         for row in san.rows:
             assert row.graphical == row.exact, row
         return
-    if scene.kind == "gears":  # the constructions against the closed forms
-        from graphmech.problems.gears.check import analyse as analyse_gear, judge as judge_gear
+    if scene.kind == "gears":  # the constructions against the closed forms (spur or helical/bevel/worm: the kind decides)
+        from graphmech.problems import check as check_kind
 
-        gan = analyse_gear(scene)
+        gan, verdicts, _, _ = check_kind(scene)
         assert gan.rows
         for row in gan.rows:
             assert row.rel_error <= 1e-9, row
-        for verdict in judge_gear(gan):
+        for verdict in verdicts:
             assert verdict.ok, verdict
         return
     if scene.kind == "cam":

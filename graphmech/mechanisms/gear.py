@@ -17,12 +17,16 @@ Conventions (docs/scene-format.md, [gear]):
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Literal
 
-#: How two members mesh: two external gears, a pinion inside a ring, a pinion on a rack.
-Meshing = Literal["external", "internal", "rack"]
-MESHINGS: tuple[Meshing, ...] = ("external", "internal", "rack")
+#: How two members mesh: two external gears, a pinion inside a ring, a pinion on a rack; a helical
+#: pair on parallel axes, a bevel pair on intersecting axes, a worm and its wheel on crossed axes.
+Meshing = Literal["external", "internal", "rack", "helical", "bevel", "worm"]
+MESHINGS: tuple[Meshing, ...] = ("external", "internal", "rack", "helical", "bevel", "worm")
+#: The meshings whose teeth are not straight spur teeth (their geometry is :class:`SpatialPair`'s).
+SPATIAL_MESHINGS: tuple[Meshing, ...] = ("helical", "bevel", "worm")
 
 
 @dataclass(frozen=True)
@@ -49,6 +53,23 @@ class SpurGear:
 
 
 @dataclass(frozen=True)
+class SpatialPair:
+    """What a helical, bevel or worm pair adds to its tooth system (SI, rad). ``ToothSystem.m`` is
+    then the normal module m_n (helical), the module at the large end (bevel) or the worm's axial
+    module (= the wheel's transverse module), and α, h*a, c* the normal (helical) or axial (worm)
+    values.
+
+    helical: ``beta`` the helix angle as stated — the pair's, or with a stated centre distance a
+    the initial one, the pair's then being cos β = m_n(z₁ + z₂)/(2a); bevel: ``shaft_angle`` Σ;
+    worm: ``worm_diameter`` d₁ (gear 1 is the worm, its z the number of starts). ``face_width`` B (helical: for ε_β; bevel: along the cone), None if not given."""
+
+    beta: float = 0.0
+    face_width: float | None = None
+    shaft_angle: float = 0.5 * math.pi
+    worm_diameter: float | None = None
+
+
+@dataclass(frozen=True)
 class GearSet:
     """One gear (``meshing`` None), or a pair in mesh: ``gears`` = (pinion, wheel) for an external
     or internal pair, (pinion,) for a rack and pinion. ``centre_distance`` is the stated a′ (None:
@@ -58,6 +79,8 @@ class GearSet:
     gears: tuple[SpurGear, ...]
     meshing: Meshing | None = None
     centre_distance: float | None = None
+    #: a helical, bevel or worm pair's own geometry (None for spur gears)
+    spatial: SpatialPair | None = None
 
     @property
     def pair(self) -> bool:
@@ -77,4 +100,5 @@ class RackGeneration:
     positions: int = 12
 
 
-__all__ = ["MESHINGS", "GearSet", "Meshing", "RackGeneration", "SpurGear", "ToothSystem"]
+__all__ = ["MESHINGS", "SPATIAL_MESHINGS", "GearSet", "Meshing", "RackGeneration", "SpatialPair", "SpurGear",
+           "ToothSystem"]

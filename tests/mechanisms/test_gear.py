@@ -14,6 +14,6 @@ def test_a_set_is_a_pair_when_it_meshes():
     assert (s.ha_star, s.c_star) == (1.0, 0.25)
     one = GearSet(s, (SpurGear(20),))
     pair = GearSet(s, (SpurGear(19), SpurGear(42)), "external", 0.1525)
-    assert not one.pair and pair.pair and MESHINGS == ("external", "internal", "rack")
+    assert not one.pair and pair.pair and MESHINGS == ("external", "internal", "rack", "helical", "bevel", "worm")
     with pytest.raises(dataclasses.FrozenInstanceError):
         pair.centre_distance = 0.2  # type: ignore[misc]

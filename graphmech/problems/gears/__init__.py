@@ -27,7 +27,25 @@ def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str,
     return parse_gear_scene(data, source, top, order)
 
 
+def _spatial(scene: Scene[GearScene]) -> bool:
+    """A helical, bevel or worm pair: graphmech.problems.gears.spatial analyses, judges and draws it."""
+    from graphmech.errors import SceneError
+    from graphmech.mechanisms.gear import SPATIAL_MESHINGS
+
+    spatial = scene.problem.gears.meshing in SPATIAL_MESHINGS
+    wrong = [i for i, p in enumerate(scene.show) if (p == "helix") != spatial]
+    if wrong:
+        i = wrong[0]
+        raise SceneError([(f"show[{i}]", 'a helical, bevel or worm pair draws the panel "helix" alone' if spatial else
+                           'the panel "helix" belongs to a helical, bevel or worm pair')], scene.source)
+    return spatial
+
+
 def _analyse(scene: Scene[GearScene], extra: Extra) -> GearAnalysis:
+    if _spatial(scene):
+        from graphmech.problems.gears.spatial import analyse_spatial
+
+        return analyse_spatial(scene, extra)
     from graphmech.problems.gears.check import analyse
 
     return analyse(scene, extra)
@@ -35,29 +53,39 @@ def _analyse(scene: Scene[GearScene], extra: Extra) -> GearAnalysis:
 
 def _judge(an: GearAnalysis, extra: Extra) -> list[Verdict]:
     from graphmech.problems.gears.check import judge
+    from graphmech.problems.gears.spatial import SpatialAnalysis
+    from graphmech.problems.gears.spatial import judge as judge_spatial
 
-    return judge(an)
+    return judge_spatial(an) if isinstance(an, SpatialAnalysis) else judge(an)
 
 
 def _sheet(scene: Scene[GearScene], footer: Footer) -> tuple[Sheet, list[str]]:
-    from graphmech.problems.gears.check import analyse, gear_figure
+    from graphmech.problems.gears.check import gear_figure
+    from graphmech.problems.gears.helix_figure import helix_sheet
+    from graphmech.problems.gears.spatial import SpatialAnalysis
     from graphmech.problems.judging import finite
     from graphmech.problems.reader import page_size
 
-    an = finite(analyse(scene, ()))
-    return gear_figure(an, page_size(scene), footer), list(an.warnings)
+    an = finite(_analyse(scene, ()))
+    sheet = helix_sheet(an, page_size(scene), footer) if isinstance(an, SpatialAnalysis) else \
+        gear_figure(an, page_size(scene), footer)
+    return sheet, list(an.warnings)
 
 
 def _extras(an: GearAnalysis) -> dict[str, Any]:
     from graphmech.problems.gears.check import extras
+    from graphmech.problems.gears.spatial import SpatialAnalysis
+    from graphmech.problems.gears.spatial import extras as extras_spatial
 
-    return extras(an)
+    return extras_spatial(an) if isinstance(an, SpatialAnalysis) else extras(an)
 
 
 def _lines(an: GearAnalysis) -> list[str]:
     from graphmech.problems.gears.check import lines
+    from graphmech.problems.gears.spatial import SpatialAnalysis
+    from graphmech.problems.gears.spatial import lines as lines_spatial
 
-    return lines(an)
+    return lines_spatial(an) if isinstance(an, SpatialAnalysis) else lines(an)
 
 
 def _bench(quick: bool) -> Bench:
@@ -67,6 +95,10 @@ def _bench(quick: bool) -> Bench:
 
 
 def _steps(scene: Scene[GearScene]) -> list[str]:
+    if _spatial(scene):
+        from graphmech.problems.gears.spatial import analyse_spatial, protocol
+
+        return protocol(analyse_spatial(scene, ()))
     from graphmech.problems.gears.steps import gear_steps
 
     return gear_steps(scene)

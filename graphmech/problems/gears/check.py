@@ -149,6 +149,8 @@ def panels_for(names: list[str], p: GearScene) -> tuple[str, ...]:
 def analyse(scene: Scene[GearScene], extra_measured: tuple[tuple[str, float], ...] = ()) -> GearAnalysis:
     """Construct what the scene asks for and build its check table."""
     p = scene.problem
+    if p.gears.spatial is not None:  # the kind sends these to problems/gears/spatial.py
+        raise NotApplicable(f"a {p.gears.meshing} pair is analysed by graphmech.problems.gears.spatial, not as spur gears")
     an = GearAnalysis(scene, p, extra_measured=tuple(extra_measured))
     problems = [(k, f"unknown gear quantity {n!r}") for k, n, _ in measured_entries(scene, extra_measured)
                 if quantity_unit(n, p) is None]

@@ -67,7 +67,7 @@ XY = tuple[float, float]
 Box = tuple[float, float, float, float]  # xmin, ymin, xmax, ymax (mm)
 
 #: The panels a gear sheet can show, in this order.
-PANELS = ("tooth", "meshing", "zones", "measurement", "root_base", "generation")
+PANELS = ("tooth", "meshing", "zones", "measurement", "root_base", "generation", "helix")  # helix: helix_figure.py
 
 #: The gear sheet's words (graphmech.drawing.notation's shape): key → (English, 中文 (孙桓), русский).
 WORDS: dict[str, tuple[str, str, str]] = {

@@ -15,6 +15,7 @@ from typing import Any
 
 from graphmech.mechanisms.gear import (
     MESHINGS,
+    SPATIAL_MESHINGS,
     GearSet,
     Meshing,
     RackGeneration,
@@ -22,6 +23,12 @@ from graphmech.mechanisms.gear import (
     ToothSystem,
 )
 from graphmech.problems.gears.generation import GENERATION_QUANTITIES, read_generation
+from graphmech.problems.gears.spatial_scene import (
+    read_spatial,
+    spatial_names,
+    spatial_unit,
+    spatial_unknown,
+)
 from graphmech.problems.judging import close_names
 from graphmech.problems.reader import (
     MISSING,
@@ -39,7 +46,7 @@ from graphmech.problems.reader import (
 )
 
 #: What a gear scene may show (figures.PANELS in this order).
-GEAR_SHOW_CHOICES = ("tooth", "meshing", "zones", "measurement", "root_base", "generation")
+GEAR_SHOW_CHOICES = ("tooth", "meshing", "zones", "measurement", "root_base", "generation", "helix")
 #: A gear's own quantities (a number suffix in a pair) → unit in ``check``.
 TOOTH_QUANTITIES = {
     "d": "m", "db": "m", "da": "m", "df": "m", "ha": "m", "hf": "m",
@@ -102,6 +109,8 @@ def quantity_unit(name: str, problem: GearScene) -> str | None:
     >>> quantity_unit("da2", g), quantity_unit("s_k1@85", g), quantity_unit("da", g), quantity_unit("B1B2", g)
     ('m', 'm', None, 'm')
     """
+    if problem.gears.meshing in SPATIAL_MESHINGS:  # helical, bevel, worm: spatial_scene's names
+        return spatial_unit(name, problem.gears)
     base, _, at = name.partition("@")
     if problem.generation is not None and base in GENERATION_QUANTITIES and not at:
         return GENERATION_QUANTITIES[base]
@@ -130,6 +139,8 @@ def quantity_unit(name: str, problem: GearScene) -> str | None:
 
 def known_names(problem: GearScene) -> list[str]:
     """Every plain name the scene can find (for 'did you mean')."""
+    if problem.gears.meshing in SPATIAL_MESHINGS:
+        return spatial_names(problem.gears)
     names = [stem + label for label in problem.labels for stem in TOOTH_QUANTITIES]
     names += [f"{stem}{label}@r" for label in problem.labels for stem in AT_RADIUS]
     names += list(SET_QUANTITIES) + (list(GENERATION_QUANTITIES) if problem.generation is not None else [])
@@ -179,6 +190,8 @@ def parse_gear_scene(data: Mapping[str, Any], source: str, top: Reader, order: M
 
 
 def _unknown(name: str, problem: GearScene) -> str:
+    if problem.gears.meshing in SPATIAL_MESHINGS:
+        return spatial_unknown(name, problem.gears)
     base, _, at = name.partition("@")
     if at and not RADIUS_AT.fullmatch(at):
         return f"{say(name)}: the radius after @ is a number of mm (s_k@85)"
@@ -248,6 +261,9 @@ def _read_gear(g: Reader) -> GearScene | None:
     loss = g.scalar("thickness_loss", "length", required=False, positive=True)
     shorten = g.flag("tip_shortening")
     _shift_keys(g, shift, meshing, a_w, x1, loss, shorten)
+    spatial, zs, xs = read_spatial(g, meshing, zs, xs, m)  # helical, bevel, worm: spatial_scene.py
+    if spatial is not None and zs is not None:
+        ks, pins = (None,) * len(zs), (None,) * len(zs)
     g.finish()
     if len(g.problems) > bad or None in (m, alpha, ha, c, zs, xs, ks, pins) or zs is None or xs is None:
         return None
@@ -270,7 +286,7 @@ def _read_gear(g: Reader) -> GearScene | None:
     gears = tuple(SpurGear(z, float(x or 0.0), r) for z, x, r in zip(zs, xs, ring))
     if meshing == "external" and shorten is not False:
         gears = _shortened(system, gears, a_w)
-    return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins), where, shift, x1, loss,
+    return GearScene(GearSet(system, gears, meshing, a_w, spatial), tuple(ks), tuple(pins), where, shift, x1, loss,
                      None if gen is None else gen.model)
 
 
@@ -310,6 +326,8 @@ def _shift_keys(g: Reader, shift: str | None, meshing: Meshing | None, a_w: floa
         elif loss is None:
             g.problem(g.at("thickness_loss"), 'missing: x = "repair" needs the wheel\'s thickness loss '
                                               "(thickness_loss_mm = …)")
+    if shift is not None and meshing in SPATIAL_MESHINGS:
+        g.problem(g.at("x"), f"shifted {meshing} gears are not posed yet: give x = 0 (or leave x out)")
     if shift in ("least", "least_exact") and meshing == "internal":
         g.problem(g.at("x"), "a ring is cut by a pinion cutter, not a rack: the rack's least shift does not apply "
                              "to it; give x = [x1, x2]")

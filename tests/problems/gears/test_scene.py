@@ -65,7 +65,7 @@ def test_names_a_scene_does_not_have(name):
     ("z = 20\nm_mm = 5\ncentre_distance_mm = 100", "gear.centre_distance_mm", "no centre distance"),
     ('z = [20, 30]\nm_mm = 5\nmeshing = "external"\nspan_teeth = [3, 40]', "gear.span_teeth[1]", "1 … z − 1"),
     ('z = [20, 30]\nm_mm = 5\nmeshing = "external"\nx = [0, 11]', "gear.x", "±10"),
-    ('z = [20, 30]\nm_mm = 5\nmeshing = "helical"', "gear.meshing", "use external, internal or rack"),
+    ('z = [20, 30]\nm_mm = 5\nmeshing = "crossed"', "gear.meshing", "use external, internal, rack, helical, bevel or worm"),
     ('z = [20, 30, 40]\nm_mm = 5\nmeshing = "external"', "gear.z", "one or two"),
     ("z = 20\nm_mm = 5\nalpha_deg = 60", "gear.alpha_deg", "no involute gear's"),
     ("z = 20\nm_mm = 0", "gear.m_mm", "> 0"),
