@@ -55,6 +55,7 @@ SCALE_INFO = {
     # a gear sheet's tooth and contact-zone panels: each drawing is lettered μl, as the book does
     "tooth": ("μl", "m/mm"),
     "zones": ("μl", "m/mm"),
+    "generation": ("μl", "m/mm"),
 }
 
 

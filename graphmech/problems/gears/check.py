@@ -89,7 +89,7 @@ class GearAnalysis:
     generation: gen.GenerationAnalysis | None = None  # [gear.generation] (problems/gears/generation.py)
 
     def scale_notes(self) -> list[str]:
-        words = {"l": "", "tooth": "tooth, ", "zones": "contact zones, "}
+        words = {"l": "", "tooth": "tooth, ", "zones": "contact zones, ", "generation": "generation, "}
         return [format_scale(k, v) + (f" ({words[k]}stated)" if k in self.stated and words[k] else
                                       "" if k in self.stated else f" ({words[k]}chosen)")
                 for k, v in self.scales.items()]
@@ -241,7 +241,7 @@ def _choose_scales(an: GearAnalysis) -> None:
     (span beside pins), the root–base diagram; a panel's notes take about CAPTION_MM under it."""
     s = an.gears.system
     stated = an.scene.scales
-    for key in ("l", "tooth", "zones"):
+    for key in ("l", "tooth", "zones", "generation"):
         if key in stated:
             an.scales[key] = stated[key]
             an.stated.add(key)
@@ -291,7 +291,8 @@ def _legible(an: GearAnalysis) -> None:
     sizes = {"tooth": ("the teeth", 3.0 * t.p + 2.0 * (t.ha + t.hf)),
              "l": ("the gears", max(max(ex.tooth(s, x).da, ex.tooth(s, x).df) for x in an.gears.gears)
                    + (an.exact_mesh.a_w if an.gears.pair else 0.0)),
-             "zones": ("B₁B₂", an.exact_mesh.B1B2 if an.gears.pair else t.pb)}
+             "zones": ("B₁B₂", an.exact_mesh.B1B2 if an.gears.pair else t.pb),
+             "generation": ("the blank and the cutter", t.da)}
     for key in an.stated:
         what, size = sizes[key]
         why = drawn_size_problem(size, an.scales[key], key, what)

@@ -182,7 +182,8 @@ def analyse_generation(an: GearAnalysis) -> None:
     wide = 3.0 * math.pi * s.m * max(1.0, construction.L / construction.r) + 2.0 * s.m
     from graphmech.scales import round_scale
 
-    mu = round_scale(max(tall / min(h - 80.0, ROOM_H_MOST), wide / (w - 60.0)))
+    mu = an.scales.get("generation") or round_scale(max(tall / min(h - 80.0, ROOM_H_MOST), wide / (w - 60.0)))
+    an.scales["generation"] = mu
     an.generation = GenerationAnalysis(s, g, model, values, r_c, construction, profile, mu, notes=tuple(notes))
 
 

@@ -164,7 +164,8 @@ def parse_gear_scene(data: Mapping[str, Any], source: str, top: Reader, order: M
     graphmech.errors.SceneError: g.toml: gear.meshing: missing: a pair of gears needs meshing = "external", "internal" or "rack"
     """
     title, show, find = read_header(top, GEAR_SHOW_CHOICES, ())
-    scales = read_scales(top, entries=(("l", "length"), ("tooth", "length"), ("zones", "length")))
+    scales = read_scales(top, entries=(("l", "length"), ("tooth", "length"), ("zones", "length"),
+                                       ("generation", "length")))
     for key in data:
         if key in ("frame", "driver", "dyad", "point", "cam", "flywheel", "forces", "structure", "cycle",
                    "characteristics", "efficiency", "balancing"):

@@ -127,3 +127,16 @@ def test_the_figure_has_the_generation_panel_and_is_byte_identical(tmp_path):
 def test_the_committed_figures_are_the_scenes():
     for f in CASES:
         assert (ROOT / "figures" / f"{f.stem}.svg").exists()
+
+
+def test_the_generation_scale_is_chosen_or_stated_and_said(tmp_path):
+    text = (SCENES / "gear.rack_cutter_generation_cases-1.toml").read_text(encoding="utf-8")
+    code, out, _ = run_cli("check", str(SCENES / "gear.rack_cutter_generation_cases-1.toml"))
+    assert code == 0 and "μl = 0.0005 m/mm (generation, chosen)" in out
+    f = tmp_path / "g.toml"
+    f.write_text(text + "\n[scales]\ngeneration_mm_per_mm = 0.2\n", encoding="utf-8")
+    code, out, _ = run_cli("check", str(f))
+    assert code == 0 and "μl = 0.0002 m/mm (generation, stated)" in out
+    f.write_text(text + "\n[scales]\ngeneration_mm_per_mm = 1e-12\n", encoding="utf-8")
+    code, out, err = run_cli("check", str(f))
+    assert code == 2 and "scales.generation" in err

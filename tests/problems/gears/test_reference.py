@@ -9,7 +9,8 @@ import pytest
 
 from tests.conftest import SCENES, check_json, values
 
-#: The gear problems issue 17 poses (profile shift, the rack cutter, helical and worm gears are the next issue's).
+#: The gear problems issue 17 poses; issue 18's (profile shift, the rack cutter, helical and worm gears) are
+#: tested below and in test_generation.py and test_spatial.py.
 POSED = ("gear.involute_z20_m8", "gear.root_circle_equals_base_circle", "gear.contact_ratio_19_42")
 #: Bank key → (check name, factor from the check's SI value to the bank's unit).
 KEYS = {"d_mm": ("d", 1e3), "da_mm": ("da", 1e3), "db_mm": ("db", 1e3), "rho_pitch_mm": ("rho_pitch", 1e3),
@@ -101,3 +102,17 @@ def test_repair_shift_17_118(problems):
     q = bank(problems, "gear.repair_shift_17_118", "gear.repair_shift_17_118", names)
     # the re-cut wheel is 0.75 mm thinner than a standard tooth, the new pinion 0.75 mm thicker
     assert (q["s_pitch1"]["graphical"] - math.pi * 0.005 / 2) * 1e3 == pytest.approx(0.75, rel=1e-12)
+
+
+ISSUE18 = ("gear.profile_shifted_12_12_a130", "gear.rack_cutter_generation_cases", "gear.reverted_train_centre_distances",
+           "gear.repair_shift_17_118", "gear.helical_20_40_mn8", "gear.worm_i20.5_m5")
+
+
+@pytest.mark.parametrize("pid", ISSUE18)
+def test_each_issue18_problem_has_its_scenes_and_figures(problems, pid):
+    scenes = sorted(SCENES.glob(f"{pid}.toml")) + sorted(SCENES.glob(f"{pid}-*.toml"))
+    assert scenes and problems[pid]["area"] == "gear"
+    for scene in scenes:
+        assert (SCENES.parent / f"{scene.stem}.svg").is_file(), scene.stem
+        doc = check_json(scene)
+        assert doc["quantities"], scene.stem
