@@ -256,6 +256,13 @@ def _read_gear(g: Reader) -> GearScene | None:
     gears = tuple(SpurGear(z, float(x or 0.0), r) for z, x, r in zip(zs, xs, ring))
     if meshing == "external" and shorten is not False:
         gears = _shortened(system, gears, a_w)
+        dy = gears[0].delta_y
+        if dy >= 2.0 * ha + c:  # the tip circle would lie on or inside the root circle: no tooth left
+            g.problem(where if a_w is not None else g.at("x"),
+                      f"the tips shortened by Δy = x₁ + x₂ − y = {dy:.6g} would fall below the roots (Δy ≥ 2h*a + c* "
+                      f"= {2.0 * ha + c:g}): the shifts x = {gears[0].x:.6g}, {gears[1].x:.6g} are too large for "
+                      f"z = {gears[0].z}, {gears[1].z}")
+            return None
     return GearScene(GearSet(system, gears, meshing, a_w), tuple(ks), tuple(pins), where, shift, x1, loss)
 
 

@@ -152,6 +152,9 @@ def test_a_rack_pinion_takes_its_shift_from_the_centre_distance():
     ('x = "for_centre_distance"\ncentre_distance_mm = 130\nx1 = 50\n', "gear.x1", ("x = 50, -48.7495",)),
     ('x = "repair"\nthickness_loss_mm = 1e5\n', "gear.thickness_loss_mm", ("beyond ±10",)),
     ('x = "for_centre_distance"\ncentre_distance_mm = 130\nx1 = nan\n', "gear.x1", ("finite",)),
+    # Δy past 2h*a + c*: the shortened tip circle inside the root circle (was a keyless scale error)
+    ('x = "for_centre_distance"\ncentre_distance_mm = 200\n', "gear.centre_distance_mm", ("below the roots", "7.76414")),
+    ('x = [4, 4]\n', "gear.x", ("below the roots", "2.25")),
 ])
 def test_bad_design_keys_are_refused_in_one_line(tmp_path, body, where, words):
     f = shift_scene(tmp_path, PAIR + body)
