@@ -155,6 +155,8 @@ def test_a_rack_pinion_takes_its_shift_from_the_centre_distance():
     # Δy past 2h*a + c*: the shortened tip circle inside the root circle (was a keyless scale error)
     ('x = "for_centre_distance"\ncentre_distance_mm = 200\n', "gear.centre_distance_mm", ("below the roots", "7.76414")),
     ('x = [4, 4]\n', "gear.x", ("below the roots", "2.25")),
+    # a′ is where these shifts mesh: not "the teeth overlap … the least centre distance is 155 mm"
+    ('x = "for_centre_distance"\ncentre_distance_mm = 155\n', "gear.centre_distance_mm", ("do not come into contact",)),
 ])
 def test_bad_design_keys_are_refused_in_one_line(tmp_path, body, where, words):
     f = shift_scene(tmp_path, PAIR + body)
