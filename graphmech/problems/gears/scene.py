@@ -94,13 +94,15 @@ def quantity_unit(name: str, problem: GearScene) -> str | None:
     """
     base, _, at = name.partition("@")
     labels = problem.labels
-    for label in labels:
+    for i, label in enumerate(labels):
         if label and not base.endswith(label):
             continue
         stem = base[: len(base) - len(label)] if label else base
         if at:
             if stem in AT_RADIUS and RADIUS_AT.fullmatch(at):
                 return AT_RADIUS[stem]
+        elif stem in ("x_min", "x_min_exact") and problem.gears.gears[i].internal:
+            continue  # a ring is cut by a pinion cutter: the rack's least shift is not its
         elif stem in TOOTH_QUANTITIES:
             return TOOTH_QUANTITIES[stem]
     if at:
@@ -118,7 +120,8 @@ def quantity_unit(name: str, problem: GearScene) -> str | None:
 
 def known_names(problem: GearScene) -> list[str]:
     """Every plain name the scene can find (for 'did you mean')."""
-    names = [stem + label for label in problem.labels for stem in TOOTH_QUANTITIES]
+    names = [n for n in (stem + label for label in problem.labels for stem in TOOTH_QUANTITIES)
+             if quantity_unit(n, problem) is not None]
     names += [f"{stem}{label}@r" for label in problem.labels for stem in AT_RADIUS]
     names += list(SET_QUANTITIES)
     if problem.gears.pair:
