@@ -15,6 +15,7 @@ from typing import Literal
 from graphmech.errors import NoSolution, NotApplicable, OutOfDomain
 from graphmech.exact.gear import inv
 from graphmech.mechanisms.gear import ToothSystem
+from graphmech.tolerances import EPS
 
 #: The kinds of drive by the sum of the shifts (external pairs).
 Drive = Literal["standard", "equal and opposite", "positive", "negative"]
@@ -94,7 +95,8 @@ def shifts_for_centre_distance(system: ToothSystem, z1: int, z2: int, a_w: float
     if c > 1.0:
         raise NoSolution(f"at a′ = {a_w:.6g} m the base circles would cross (a′ < a·cos α = "
                          f"{a * math.cos(alpha):.6g} m): no shifts fit it")
-    alpha_w = math.acos(c)
+    # at a′ = a (to a few ulps) the pair is standard: acos(cos α) would leave x₁ + x₂ ≈ 1e-15, a "shift" of noise
+    alpha_w = alpha if abs(a_w - a) <= 4.0 * EPS * a else math.acos(c)
     x_sum = (inv(alpha_w) - inv(alpha)) * (z1 + z2) / (2.0 * math.tan(alpha))
     first = 0.5 * x_sum if x1 is None else x1
     y = (a_w - a) / m

@@ -43,6 +43,13 @@ def test_the_shifts_for_a_centre_distance_close_the_backlash():
     assert (uneven.x1, uneven.x2) == (0.8, pytest.approx(d.x_sum - 0.8))
 
 
+def test_on_the_standard_distance_the_shifts_are_zero():
+    # 000 齿轮 7: pair 1, 2 (z = 20, 48, m = 2 mm) on a′ = a = 68 mm is standard, not "equal and opposite"
+    d = ps.shifts_for_centre_distance(ToothSystem(0.002, math.radians(20.0)), 20, 48, 0.068)
+    assert (d.x_sum, d.x1, d.x2, d.delta_y) == (0.0, 0.0, 0.0, 0.0)
+    assert ps.drive_kind(d.x1, d.x2) == "standard"
+
+
 def test_below_the_standard_distance_the_shifts_are_negative():
     d = ps.shifts_for_centre_distance(S20, 30, 40, 0.345)
     assert d.x_sum < 0 and d.y == pytest.approx(-0.5) and d.delta_y > 0

@@ -44,6 +44,7 @@ from graphmech.problems.judging import (
 )
 from graphmech.problems.reader import page_size
 from graphmech.scales import drawn_size_problem, format_scale, round_scale
+from graphmech.tolerances import COINCIDENT_REL
 
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
@@ -198,6 +199,8 @@ def _mesh_refused(an: GearAnalysis, err: GraphmechError) -> SceneError:
     except GraphmechError:
         return _refuse(an, err, an.problem.centre_distance_key)
     bound = "greatest" if an.gears.meshing == "internal" else "least"
+    if abs(a_w - free) <= COINCIDENT_REL * free:  # a′ is where they mesh: the pair fails for another reason
+        return _refuse(an, err, an.problem.centre_distance_key)
     return SceneError([(an.problem.centre_distance_key,
                         f"at a′ = {a_w * 1000:.6g} mm the teeth overlap: the {bound} centre distance for these "
                         f"shifts is {free * 1000:.6g} mm")], an.scene.source)

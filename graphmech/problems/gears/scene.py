@@ -115,13 +115,15 @@ def quantity_unit(name: str, problem: GearScene) -> str | None:
     if problem.generation is not None and base in GENERATION_QUANTITIES and not at:
         return GENERATION_QUANTITIES[base]
     labels = problem.labels
-    for label in labels:
+    for i, label in enumerate(labels):
         if label and not base.endswith(label):
             continue
         stem = base[: len(base) - len(label)] if label else base
         if at:
             if stem in AT_RADIUS and RADIUS_AT.fullmatch(at):
                 return AT_RADIUS[stem]
+        elif stem in ("x_min", "x_min_exact") and problem.gears.gears[i].internal:
+            continue  # a ring is cut by a pinion cutter: the rack's least shift is not its
         elif stem in TOOTH_QUANTITIES:
             return TOOTH_QUANTITIES[stem]
     if at:
@@ -141,7 +143,8 @@ def known_names(problem: GearScene) -> list[str]:
     """Every plain name the scene can find (for 'did you mean')."""
     if problem.gears.meshing in SPATIAL_MESHINGS:
         return spatial_names(problem.gears)
-    names = [stem + label for label in problem.labels for stem in TOOTH_QUANTITIES]
+    names = [n for n in (stem + label for label in problem.labels for stem in TOOTH_QUANTITIES)
+             if quantity_unit(n, problem) is not None]
     names += [f"{stem}{label}@r" for label in problem.labels for stem in AT_RADIUS]
     names += list(SET_QUANTITIES) + (list(GENERATION_QUANTITIES) if problem.generation is not None else [])
     if problem.gears.pair:
@@ -287,6 +290,13 @@ def _read_gear(g: Reader) -> GearScene | None:
     gears = tuple(SpurGear(z, float(x or 0.0), r) for z, x, r in zip(zs, xs, ring))
     if meshing == "external" and shorten is not False:
         gears = _shortened(system, gears, a_w)
+        dy = gears[0].delta_y
+        if dy >= 2.0 * ha + c:  # the tip circle would lie on or inside the root circle: no tooth left
+            g.problem(where if a_w is not None else g.at("x"),
+                      f"the tips shortened by Δy = x₁ + x₂ − y = {dy:.6g} would fall below the roots (Δy ≥ 2h*a + c* "
+                      f"= {2.0 * ha + c:g}): the shifts x = {gears[0].x:.6g}, {gears[1].x:.6g} are too large for "
+                      f"z = {gears[0].z}, {gears[1].z}")
+            return None
     return GearScene(GearSet(system, gears, meshing, a_w, spatial), tuple(ks), tuple(pins), where, shift, x1, loss,
                      None if gen is None else gen.model)
 

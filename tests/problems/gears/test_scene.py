@@ -9,7 +9,7 @@ import pytest
 from graphmech.mechanisms.gear import SpurGear
 from graphmech.problems.gears.scene import GearScene, known_names, quantity_unit
 from graphmech.scene import load_scene, parse_scene
-from tests.conftest import SCENES, assert_refused, run_cli
+from tests.conftest import SCENES, assert_refused, check_json, run_cli, values
 from tests.scenes import only_problem
 
 
@@ -152,6 +152,11 @@ def test_a_rack_pinion_takes_its_shift_from_the_centre_distance():
     ('x = "for_centre_distance"\ncentre_distance_mm = 130\nx1 = 50\n', "gear.x1", ("x = 50, -48.7495",)),
     ('x = "repair"\nthickness_loss_mm = 1e5\n', "gear.thickness_loss_mm", ("beyond ±10",)),
     ('x = "for_centre_distance"\ncentre_distance_mm = 130\nx1 = nan\n', "gear.x1", ("finite",)),
+    # Δy past 2h*a + c*: the shortened tip circle inside the root circle (was a keyless scale error)
+    ('x = "for_centre_distance"\ncentre_distance_mm = 200\n', "gear.centre_distance_mm", ("below the roots", "7.76414")),
+    ('x = [4, 4]\n', "gear.x", ("below the roots", "2.25")),
+    # a′ is where these shifts mesh: not "the teeth overlap … the least centre distance is 155 mm"
+    ('x = "for_centre_distance"\ncentre_distance_mm = 155\n', "gear.centre_distance_mm", ("do not come into contact",)),
 ])
 def test_bad_design_keys_are_refused_in_one_line(tmp_path, body, where, words):
     f = shift_scene(tmp_path, PAIR + body)
@@ -166,6 +171,12 @@ def test_design_words_that_do_not_fit_the_set_are_refused(tmp_path):
     assert_refused(run_cli("check", str(shift_scene(tmp_path, one))), "g.toml", "gear.x", "external pair")
     short = '[gear]\nm_mm = 2\nz = 20\ntip_shortening = true\n'
     assert_refused(run_cli("check", str(shift_scene(tmp_path, short))), "g.toml", "gear.tip_shortening")
+    # a ring has no rack's least shift to find either (it was −1.35 for z = 40), the pinion has
+    err = assert_refused(run_cli("check", str(shift_scene(tmp_path, ring.replace('x = "least"\n', ""), ["x_min2"]))),
+                         "g.toml", "find[0]", "x_min2")
+    assert "did you mean x_min1" in err and "x_min2," not in err
+    q = values(check_json(shift_scene(tmp_path, ring.replace('x = "least"\n', ""), ["x_min1"])))
+    assert q["x_min1"]["exact"] == pytest.approx(-3.0 / 17.0, rel=1e-15)
     find_dy = '[gear]\nm_mm = 2\nz = [20, 80]\nmeshing = "internal"\n'
     assert_refused(run_cli("check", str(shift_scene(tmp_path, find_dy, ["delta_y"]))), "g.toml",
                    "find[0]", "delta_y")
