@@ -283,8 +283,10 @@ def _read_gear(g: Reader) -> GearScene | None:
         if any(abs(x or 0.0) > MAX_SHIFT for x in chosen):
             key = {"for_centre_distance": g.at("x1") if x1 is not None and abs(x1) > MAX_SHIFT else where,
                    "repair": g.at(g.present("thickness_loss") or "thickness_loss")}.get(shift, g.at("x"))
-            g.problem(key, f"the shifts chosen come to x = {', '.join(f'{x:.6g}' for x in chosen if x is not None)}: "
-                           f"beyond ±{MAX_SHIFT:g}, no gear's")
+            said = ', '.join(f'{x:.6g}' for x in chosen if x is not None)
+            g.problem(key, f"the least shift x_min = {said} is far below −{MAX_SHIFT:g}: a gear of so many teeth needs "
+                           "no shift against undercut (leave x out)" if shift in ("least", "least_exact") else
+                           f"the shifts chosen come to x = {said}: beyond ±{MAX_SHIFT:g}, no gear's")
             return None
         xs = chosen
     gears = tuple(SpurGear(z, float(x or 0.0), r) for z, x, r in zip(zs, xs, ring))

@@ -6,9 +6,6 @@ import pytest
 
 from tests.conftest import check_json, run_cli, values
 
-PAIR = '[gear]\nm_mm = 10\nz = [12, 12]\nmeshing = "external"\n'
-
-
 def shift_scene(tmp_path, text: str, find: list[str] | None = None):
     f = tmp_path / "g.toml"
     f.write_text((f"find = {find!r}\n".replace("'", '"') if find else "") + text)

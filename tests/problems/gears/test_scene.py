@@ -180,3 +180,8 @@ def test_design_words_that_do_not_fit_the_set_are_refused(tmp_path):
     find_dy = '[gear]\nm_mm = 2\nz = [20, 80]\nmeshing = "internal"\n'
     assert_refused(run_cli("check", str(shift_scene(tmp_path, find_dy, ["delta_y"]))), "g.toml",
                    "find[0]", "delta_y")
+
+
+def test_a_least_shift_far_below_minus_10_says_no_shift_is_needed(tmp_path):
+    f = shift_scene(tmp_path, '[gear]\nm_mm = 2\nz = [12, 400]\nmeshing = "external"\nx = "least"\n')
+    assert_refused(run_cli("check", str(f)), "g.toml", "gear.x", "far below −10", "needs no shift")
