@@ -146,13 +146,13 @@ class GearDrawing:
 
 
 # ----------------------------------------------------------------------------- geometry on paper
-def _label(text: str, at: XY, avoid: Sequence[XY] = (), size: float = LETTER, italic: bool = True) -> Label:
+def paper_label(text: str, at: XY, avoid: Sequence[XY] = (), size: float = LETTER, italic: bool = True) -> Label:
     """A label avoiding the given directions (made unit; a zero one, a degenerate line, dropped)."""
     dirs = tuple(_unit(d) for d in avoid if math.hypot(d[0], d[1]) > 1e-12)
     return Label(text, at, dirs, size, italic)
 
 
-def _mm(x: float) -> str:
+def mm_text(x: float) -> str:
     """A length in mm as gear drawings give it: to 0.01 mm (101.97 mm, not 102), at least four
     significant figures for a small one."""
     v = x * 1e3
@@ -160,7 +160,7 @@ def _mm(x: float) -> str:
     return f"{number(v, sig)} mm"
 
 
-def _sc(p: XY, mu: float) -> XY:
+def to_paper(p: XY, mu: float) -> XY:
     return (p[0] / mu, p[1] / mu)
 
 
@@ -278,7 +278,7 @@ def dimension(p0: XY, p1: XY, text: str, side: XY | None = None) -> list[Primiti
         items = [Segment(p0, p1, "label"), Arrow(_add(p0, d, -ARROW - 1.5), p0, "label"),
                  Arrow(_add(p1, d, ARROW + 1.5), p1, "label")]
     avoid = (d, _neg(d)) + ((_neg(side),) if side else ())
-    return items + [_label(text, mid, avoid, LETTER, italic=False)]
+    return items + [paper_label(text, mid, avoid, LETTER, italic=False)]
 
 
 def arc_dimension(c: XY, r: float, a0: float, a1: float, text: str) -> list[Primitive]:
@@ -298,7 +298,7 @@ def arc_dimension(c: XY, r: float, a0: float, a1: float, text: str) -> list[Prim
         items.append(Arrow(back, tip, "label"))
     mid = (a0 + a1) / 2.0
     out = (math.cos(mid), math.sin(mid))
-    return items + [_label(text, _polar(r, mid, c), ((-out[0], -out[1]), (-out[1], out[0]), (out[1], -out[0])),
+    return items + [paper_label(text, _polar(r, mid, c), ((-out[0], -out[1]), (-out[1], out[0]), (out[1], -out[0])),
                           LETTER)]
 
 
@@ -421,7 +421,7 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
     mu = drawing.scales["tooth"]
     gear = _gear(drawing.gears, name)
     z = gear.z
-    runs = [tuple(_sc(p, mu) for p in r) for r in outline_runs(t)]
+    runs = [tuple(to_paper(p, mu) for p in r) for r in outline_runs(t)]
     i0 = _tooth0(t)
     right = t.teeth[i0][1]
     step = math.tau / z
@@ -435,13 +435,13 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
     mine = [_turned(a, turn) for n, a in drawing.at_radii if n == name]
     pointed = [a for n, a in drawing.pointed if n == name]
     # (a ring's flanks are the other way round: its left flank's strings run off to the left)
-    strings = [(_sc(n_, mu), _sc(k, mu)) for n_, k in t.teeth[i_right][int(gear.internal)].strings]
+    strings = [(to_paper(n_, mu), to_paper(k, mu)) for n_, k in t.teeth[i_right][int(gear.internal)].strings]
     flank = "left" if gear.internal else "right"  # the flank of the leftmost tooth carrying ρ and α_k
-    teeth_box = _box([p for r in runs for p in r] + [_sc(p, mu) for a in mine + pointed for p in (a.K_left, a.K_right)],
+    teeth_box = _box([p for r in runs for p in r] + [to_paper(p, mu) for a in mine + pointed for p in (a.K_left, a.K_right)],
                      MARGIN)
     # the strings' ends N on the base circle too, unless they lie far off (a large gear's strings
     # are long: then they run out of the window towards N)
-    ns_all = [n_ for n_, _ in strings] + [_sc(_nk(a, flank)[0], mu) for a in mine]
+    ns_all = [n_ for n_, _ in strings] + [to_paper(_nk(a, flank)[0], mu) for a in mine]
     wide = _box([(teeth_box[0], teeth_box[1]), (teeth_box[2], teeth_box[3])] + ns_all, 0.0)
     w0, h0 = teeth_box[2] - teeth_box[0], teeth_box[3] - teeth_box[1]
     fits = wide[2] - wide[0] <= max(1.6 * w0, w0 + 60.0) and wide[3] - wide[1] <= max(1.6 * h0, h0 + 60.0)
@@ -454,7 +454,7 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
         items += clipped_circle(O, r / mu, window, "construction", dashdot=dashdot)
     if _inside(O, window):
         items.append(Hinge(O))
-        labels.append(_label("O", O, ((0.0, 1.0),), LETTER))
+        labels.append(paper_label("O", O, ((0.0, 1.0),), LETTER))
     # the tooth axis of tooth 0, dash-dot, from the root circle past the tip
     r_lo, r_hi = min(t.rf, t.ra) / mu, max(t.rf, t.ra) / mu
     items.append(Segment((0.0, r_lo - 3.0), (0.0, r_hi + 3.0), "construction", dashdot=True))
@@ -469,11 +469,11 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
         items += [Circle(q, DOT, "result") for q in (n_, k) if _inside(q, window)]
     for i in _numbers(ks):  # K_i numbered i′, N_i (when in the window) i
         n_, k = strings[i]
-        labels.append(_label(f"{i}′", k, (_sub(n_, k),), LETTER * 0.8, italic=False))
+        labels.append(paper_label(f"{i}′", k, (_sub(n_, k),), LETTER * 0.8, italic=False))
     on_base = [i for i, (n_, _) in enumerate(strings) if _inside(n_, window)]
     for j in _numbers([strings[i][0] for i in on_base]):
         n_, k = strings[on_base[j]]
-        labels.append(_label(str(on_base[j]), n_, (_sub(k, n_), n_), LETTER * 0.8, italic=False))
+        labels.append(paper_label(str(on_base[j]), n_, (_sub(k, n_), n_), LETTER * 0.8, italic=False))
     # p, s, e on the reference circle; s_a over the tip
     ref, tip = _at(drawing.at_radii, name, t.r), _at(drawing.at_radii, name, t.ra)
     ref_l, tip_l = _at(mine, "", t.r), _at(mine, "", t.ra)
@@ -511,14 +511,14 @@ def tooth_items(drawing: GearDrawing, name: str, t: ToothOutline, notation: str 
             continue
         items += _alpha_k(ak, flank, mu)
     for pt in pointed:  # the flanks meet at K: the tip circle may not pass this radius
-        k = _sc(pt.K_left, mu)
+        k = to_paper(pt.K_left, mu)
         items += clipped_circle(O, pt.r_k / mu, window, "construction", dashed=True)
         items.append(Circle(k, 2.0 * DOT, "result"))
-        labels.append(_label(f"{word('pointed', notation, WORDS)}: r = {_mm(pt.r_k)}", k, ((0.0, -1.0),), LETTER,
+        labels.append(paper_label(f"{word('pointed', notation, WORDS)}: r = {mm_text(pt.r_k)}", k, ((0.0, -1.0),), LETTER,
                              italic=False))
     if t.undercut:
-        at = _sc(right.points[0], mu) if right.points else _polar(t.rb / mu, math.pi / 2.0)
-        labels.append(_label(word("undercut", notation, WORDS), at, ((0.0, 1.0), (-1.0, 0.0)), LETTER, italic=False))
+        at = to_paper(right.points[0], mu) if right.points else _polar(t.rb / mu, math.pi / 2.0)
+        labels.append(paper_label(word("undercut", notation, WORDS), at, ((0.0, 1.0), (-1.0, 0.0)), LETTER, italic=False))
     return items + labels
 
 
@@ -530,17 +530,17 @@ def _nk(a: AtRadius, flank: str) -> tuple[XY, XY]:
 def _rho(text: str, a: AtRadius, flank: str, mu: float, window: Box) -> list[Primitive]:
     """ρ at r_k: the segment N K of ``flank`` (as much as the window shows), labelled."""
     n_, k = _nk(a, flank)
-    seg = clipped_segment(_sc(n_, mu), _sc(k, mu), window)
+    seg = clipped_segment(to_paper(n_, mu), to_paper(k, mu), window)
     if seg is None:
         return []
     d = _sub(seg[1], seg[0])
     return [Segment(seg[0], seg[1], "label"),
-            _label(text, ((seg[0][0] + seg[1][0]) / 2.0, (seg[0][1] + seg[1][1]) / 2.0), (d, _neg(d)))]
+            paper_label(text, ((seg[0][0] + seg[1][0]) / 2.0, (seg[0][1] + seg[1][1]) / 2.0), (d, _neg(d)))]
 
 
 def _alpha_k(a: AtRadius, flank: str, mu: float) -> list[Primitive]:
     """α_k at K on ``flank``: the normal K–N continued past K, the velocity ⟂ OK, the arc."""
-    n_, k = (_sc(q, mu) for q in _nk(a, flank))
+    n_, k = (to_paper(q, mu) for q in _nk(a, flank))
     u = _unit(_sub(k, n_))
     ok = _unit(k)
     v = (-ok[1], ok[0])
@@ -552,22 +552,22 @@ def _alpha_k(a: AtRadius, flank: str, mu: float) -> list[Primitive]:
     if arc is not None:
         items.append(arc)
     mid = _unit(_add(u, v))
-    items += [_label(f"α_{{k}} = {number(math.degrees(a.alpha_k))}°", _add(k, mid, 8.0), (_neg(mid),), LETTER,
+    items += [paper_label(f"α_{{k}} = {number(math.degrees(a.alpha_k))}°", _add(k, mid, 8.0), (_neg(mid),), LETTER,
                     italic=False),
-              _label("K", k, (_neg(u), _neg(v)), LETTER)]
+              paper_label("K", k, (_neg(u), _neg(v)), LETTER)]
     return items
 
 
 def tooth_notes(drawing: GearDrawing, name: str, t: ToothOutline) -> tuple[str, ...]:
     g = _gear(drawing.gears, name)
     s = drawing.gears.system
-    data = (f"m = {_mm(s.m)}, z{_sub_name(name)} = {g.z}, α = {number(math.degrees(s.alpha))}°, "
+    data = (f"m = {mm_text(s.m)}, z{_sub_name(name)} = {g.z}, α = {number(math.degrees(s.alpha))}°, "
             f"h_{{a}}* = {number(s.ha_star)}, c* = {number(s.c_star)}, x{_sub_name(name)} = {number(g.x)}"
             + (f", Δy = {number(g.delta_y)} (tip shortened)" if g.delta_y else ""))
-    vals = [f"r = {_mm(t.r)}", f"r_{{b}} = {_mm(t.rb)}", f"r_{{a}} = {_mm(t.ra)}", f"r_{{f}} = {_mm(t.rf)}"]
+    vals = [f"r = {mm_text(t.r)}", f"r_{{b}} = {mm_text(t.rb)}", f"r_{{a}} = {mm_text(t.ra)}", f"r_{{f}} = {mm_text(t.rf)}"]
     for n, a in drawing.at_radii:
         if n == name and abs(a.r_k - t.r) > 1e-9 * t.r and abs(a.r_k - t.ra) > 1e-9 * t.ra:
-            vals.append(f"r_{{k}} = {_mm(a.r_k)}: s_{{k}} = {_mm(a.s_k)}, ρ_{{k}} = {_mm(a.rho_k)}")
+            vals.append(f"r_{{k}} = {mm_text(a.r_k)}: s_{{k}} = {mm_text(a.s_k)}, ρ_{{k}} = {mm_text(a.rho_k)}")
     return (scale_text("l", drawing.scales["tooth"]), data, ", ".join(vals))
 
 
@@ -588,10 +588,10 @@ def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
     gears = drawing.gears
     rack = gears.meshing == "rack"
     internal = gears.meshing == "internal"
-    O1 = _sc(m.O1, mu)
-    O2 = _sc(m.O2, mu) if m.O2 is not None else None
-    P, N1, B1, B2 = _sc(m.P, mu), _sc(m.N1, mu), _sc(m.B1, mu), _sc(m.B2, mu)
-    N2 = _sc(m.N2, mu) if m.N2 is not None else None
+    O1 = to_paper(m.O1, mu)
+    O2 = to_paper(m.O2, mu) if m.O2 is not None else None
+    P, N1, B1, B2 = to_paper(m.P, mu), to_paper(m.N1, mu), to_paper(m.B1, mu), to_paper(m.B2, mu)
+    N2 = to_paper(m.N2, mu) if m.N2 is not None else None
     rb1, ra1 = math.dist(m.O1, m.N1) / mu, math.dist(m.O1, m.B1) / mu
     drawn: list[tuple[XY, float, bool]] = [(O1, m.r_w1 / mu, True), (O1, rb1, False), (O1, ra1, False)]
     if O2 is not None and m.O2 is not None and m.N2 is not None and m.r_w2 is not None:
@@ -625,7 +625,7 @@ def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
             seg = clipped_segment((window[0], y), (window[2], y), window)
             if seg is not None:
                 items.append(Segment(seg[0], seg[1], "construction", dashdot=dd))
-        labels.append(_label(word("rack", notation, WORDS), (window[0] + 6.0, y_ref / mu), ((0.0, -1.0),), LETTER,
+        labels.append(paper_label(word("rack", notation, WORDS), (window[0] + 6.0, y_ref / mu), ((0.0, -1.0),), LETTER,
                             italic=False))
     # the centre line O₁O₂ (to the rack's line), dash-dot
     far = O2 if O2 is not None else (0.0, _rack_lines(m, gears)[0] / mu + 5.0)
@@ -647,33 +647,33 @@ def meshing_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
     if arc is not None:
         items.append(arc)
         mid = _unit(_add(t, u))
-        labels.append(_label(word("alpha_w", notation, WORDS), _add(P, mid, 12.0), (_neg(mid),), LETTER))
+        labels.append(paper_label(word("alpha_w", notation, WORDS), _add(P, mid, 12.0), (_neg(mid),), LETTER))
     # points
     for name, p in (("O_{1}", O1), ("O_{2}", O2)):
         if p is not None and _inside(p, window):
             items.append(Hinge(p))
-            labels.append(_label(name, p, ((0.0, 1.0), (0.0, -1.0)), LETTER))
+            labels.append(paper_label(name, p, ((0.0, 1.0), (0.0, -1.0)), LETTER))
     for name, p in (("P", P), ("N_{1}", N1), ("N_{2}", N2), ("B_{1}", B1), ("B_{2}", B2)):
         if p is not None and _inside(p, window):
             items.append(Circle(p, 2.0 * DOT, "result"))
-            labels.append(_label(name, p, (u, _neg(u)), LETTER))
+            labels.append(paper_label(name, p, (u, _neg(u)), LETTER))
     # senses: ω₁ clockwise about O₁; ω₂ counter-clockwise (external), clockwise (ring), v₂ (rack)
     if _inside(O1, window):
         r_arc = min(10.0, 0.5 * rb1)
         w1 = ArcArrow(O1, r_arc, math.radians(-40.0), math.radians(-80.0), "given")
         items.append(w1)
-        labels.append(_label("ω_{1}", w1.points(2)[1], ((0.0, 1.0),), LETTER))
+        labels.append(paper_label("ω_{1}", w1.points(2)[1], ((0.0, 1.0),), LETTER))
     if O2 is not None and _inside(O2, window) and m.N2 is not None and m.O2 is not None:
         r_arc = min(10.0, 0.5 * math.dist(m.O2, m.N2) / mu)
         sweep = math.radians(-80.0) if internal else math.radians(80.0)
         w2 = ArcArrow(O2, r_arc, math.radians(220.0 if not internal else 140.0), sweep, "given")
         items.append(w2)
-        labels.append(_label("ω_{2}", w2.points(2)[1], ((0.0, -1.0),), LETTER))
+        labels.append(paper_label("ω_{2}", w2.points(2)[1], ((0.0, -1.0),), LETTER))
     if rack:
         y_ref = _rack_lines(m, gears)[0] / mu
         a0 = (P[0] + 10.0, y_ref + 6.0)
         items.append(Arrow(a0, _add(a0, (12.0, 0.0)), "given"))
-        labels.append(_label("v_{2}", _add(a0, (6.0, 0.0)), ((0.0, -1.0),), LETTER))
+        labels.append(paper_label("v_{2}", _add(a0, (6.0, 0.0)), ((0.0, -1.0),), LETTER))
     return items + labels
 
 
@@ -681,9 +681,9 @@ def meshing_notes(drawing: GearDrawing, m: MeshConstruction, notation: str = "en
     g = drawing.gears
     s = g.system
     zs = ", ".join(f"z_{{{k + 1}}} = {x.z}" for k, x in enumerate(g.gears))
-    line = (f"m = {_mm(s.m)}, {zs}, α = {number(math.degrees(s.alpha))}°; a′ = {_mm(m.a_w)}, "
+    line = (f"m = {mm_text(s.m)}, {zs}, α = {number(math.degrees(s.alpha))}°; a′ = {mm_text(m.a_w)}, "
             f"α′ = {number(math.degrees(m.alpha_w))}°")
-    line2 = f"B_{{1}}B_{{2}} = {_mm(m.B1B2)}, p_{{b}} = {_mm(m.pb)}, ε_{{α}} = {number(m.eps_alpha)}"
+    line2 = f"B_{{1}}B_{{2}} = {mm_text(m.B1B2)}, p_{{b}} = {mm_text(m.pb)}, ε_{{α}} = {number(m.eps_alpha)}"
     notes = [scale_text("l", drawing.scales["l"]), line, line2]
     if any(x.x for x in g.gears):  # a shifted pair: its shifts and the tips' shortening
         xs = ", ".join(f"x_{{{k + 1}}} = {number(x.x)}" for k, x in enumerate(g.gears))
@@ -719,7 +719,7 @@ def zones_items(drawing: GearDrawing, m: MeshConstruction, notation: str = "en")
     items.append(Segment((0.0, 0.0), (L, 0.0), "result"))
     for name, x in named:
         items.append(Segment((x, -1.5), (x, 1.5), "label"))
-        labels.append(_label(name, (x, 0.0), ((1.0, 0.0), (-1.0, 0.0), (0.0, 1.0)), LETTER))
+        labels.append(paper_label(name, (x, 0.0), ((1.0, 0.0), (-1.0, 0.0), (0.0, 1.0)), LETTER))
     zx = sorted(x_of(p) for p in m.zone_points)
     eps = m.eps_alpha
     label_y = BAND + 2.5
@@ -777,10 +777,10 @@ def _hdim(x0: float, x1: float, y: float, text: str) -> list[Primitive]:
 
 def zones_notes(drawing: GearDrawing, m: MeshConstruction) -> tuple[str, ...]:
     notes = [scale_text("l", drawing.scales["zones"]),
-             (f"p_{{b}} = {_mm(m.pb)}, B_{{1}}B_{{2}} = {_mm(m.B1B2)}, ε_{{α}} = B_{{1}}B_{{2}}/p_{{b}} = "
+             (f"p_{{b}} = {mm_text(m.pb)}, B_{{1}}B_{{2}} = {mm_text(m.B1B2)}, ε_{{α}} = B_{{1}}B_{{2}}/p_{{b}} = "
               f"{number(m.eps_alpha)}")]
     if m.double_contact is not None and m.single_contact is not None:
-        notes.append(f"(ε_{{α}}−1)p_{{b}} = {_mm(m.double_contact)}, (2−ε_{{α}})p_{{b}} = {_mm(m.single_contact)}")
+        notes.append(f"(ε_{{α}}−1)p_{{b}} = {mm_text(m.double_contact)}, (2−ε_{{α}})p_{{b}} = {mm_text(m.single_contact)}")
     return tuple(notes)
 
 
@@ -791,7 +791,7 @@ def span_items(drawing: GearDrawing, name: str, sp: SpanMeasurement) -> list[Pri
     mu = drawing.scales["l"]
     z = _gear(drawing.gears, name).z
     t = dict(drawing.teeth).get(name)
-    K1, K2, N = _sc(sp.K1, mu), _sc(sp.K2, mu), _sc(sp.N, mu)
+    K1, K2, N = to_paper(sp.K1, mu), to_paper(sp.K2, mu), to_paper(sp.N, mu)
     items: list[Primitive] = []
     pts = [K1, K2, N]
     if t is not None:
@@ -802,7 +802,7 @@ def span_items(drawing: GearDrawing, name: str, sp: SpanMeasurement) -> list[Pri
         # same teeth, and drawing thousands of them would only take time
         groups = [js] if len(js) <= SPAN_TEETH_MOST else [js[:2], js[-2:]]
         for group in groups:
-            line = tuple(_sc(p, mu) for p in replicated(t, z, group))
+            line = tuple(to_paper(p, mu) for p in replicated(t, z, group))
             if len(line) >= 2:
                 items.append(Polyline(line, "result"))
                 pts += list(line)
@@ -821,9 +821,9 @@ def span_items(drawing: GearDrawing, name: str, sp: SpanMeasurement) -> list[Pri
         items.append(Segment(_add(k, n, -jaw), _add(k, n, off + 2.0), "given"))
         items.append(Circle(k, 2.0 * DOT, "result"))
     items.append(Circle(N, 2.0 * DOT, "result"))
-    items += dimension(_add(K1, n, off), _add(K2, n, off), f"W_{{{sp.k}}} = {_mm(sp.W)}", n)
-    items += [_label("K_{1}", K1, (d, _neg(n)), LETTER), _label("K_{2}", K2, (_neg(d), _neg(n)), LETTER),
-              _label("N", N, (d, _neg(d)), LETTER)]
+    items += dimension(_add(K1, n, off), _add(K2, n, off), f"W_{{{sp.k}}} = {mm_text(sp.W)}", n)
+    items += [paper_label("K_{1}", K1, (d, _neg(n)), LETTER), paper_label("K_{2}", K2, (_neg(d), _neg(n)), LETTER),
+              paper_label("N", N, (d, _neg(d)), LETTER)]
     return items
 
 
@@ -835,7 +835,7 @@ def pins_items(drawing: GearDrawing, name: str, pm: PinMeasurement) -> tuple[lis
     z = gear.z
     t = dict(drawing.teeth).get(name)
     rp = pm.d_pin / 2.0 / mu
-    C = [_sc(c, mu) for c in pm.centres]
+    C = [to_paper(c, mu) for c in pm.centres]
     reach = max(math.hypot(*c) + rp for c in C)
     items: list[Primitive] = []
     whole = 2.0 * reach <= WHOLE_MOST
@@ -851,7 +851,7 @@ def pins_items(drawing: GearDrawing, name: str, pm: PinMeasurement) -> tuple[lis
                 groups.append([j0 - 2, j0 - 1, j0, j0 + 1, j0 + 2])
         closed = whole and z <= WHOLE_TEETH_MOST
         for group in groups:
-            line = tuple(_sc(p, mu) for p in replicated(t, z, group))
+            line = tuple(to_paper(p, mu) for p in replicated(t, z, group))
             if len(line) >= 2:
                 items.append(Polyline(line, "result", closed=closed))
                 pts += list(line)
@@ -866,7 +866,7 @@ def pins_items(drawing: GearDrawing, name: str, pm: PinMeasurement) -> tuple[lis
     for c in shown:
         items += [Circle(c, rp, "given"), Circle(c, 2.0 * DOT, "result")]
     for q in pm.contacts:
-        qq = _sc(q, mu)
+        qq = to_paper(q, mu)
         if _inside(qq, window):
             items.append(Circle(qq, DOT, "result"))
     d = _unit(_sub(C[1], C[0]))
@@ -879,12 +879,12 @@ def pins_items(drawing: GearDrawing, name: str, pm: PinMeasurement) -> tuple[lis
         off = (max(t.ra, t.rf) / mu if t is not None else reach) + 8.0  # beside the gear, parallel to the pins' line
         for e in (e0, e1):
             items.append(Segment(e, _add(e, n, off + 1.5), "label"))
-        items += dimension(_add(e0, n, off), _add(e1, n, off), f"M = {_mm(pm.M)}", n)
+        items += dimension(_add(e0, n, off), _add(e1, n, off), f"M = {mm_text(pm.M)}", n)
     else:
         e0 = _add(C[0], d, -rp) if not gear.internal else _add(C[0], d, rp)
         items += [Segment(e0, _add(e0, n, rp + 6.0), "label"),
                   Arrow(_add(_add(e0, n, rp + 4.5), d, 25.0), _add(e0, n, rp + 4.5), "label"),
-                  _label(f"M = {_mm(pm.M)}", _add(_add(e0, n, rp + 4.5), d, 25.0), (_neg(d),), LETTER, italic=False)]
+                  paper_label(f"M = {mm_text(pm.M)}", _add(_add(e0, n, rp + 4.5), d, 25.0), (_neg(d),), LETTER, italic=False)]
     return items, whole
 
 
@@ -908,32 +908,32 @@ def root_base_items(drawing: GearDrawing, notation: str = "en") -> list[Primitiv
     y_hi = max(rb(z_max), rf(z_max))
     items: list[Primitive] = [Arrow((0.0, y_lo * k - 2.0), (0.0, y_hi * k + 8.0), "label"),
                               Arrow((0.0, 0.0), (DIAGRAM_W + 8.0, 0.0), "label")]
-    labels: list[Primitive] = [_label("r/m", (0.0, y_hi * k + 8.0), ((0.0, -1.0),), LETTER),
-                               _label("z", (DIAGRAM_W + 8.0, 0.0), ((-1.0, 0.0),), LETTER)]
+    labels: list[Primitive] = [paper_label("r/m", (0.0, y_hi * k + 8.0), ((0.0, -1.0),), LETTER),
+                               paper_label("z", (DIAGRAM_W + 8.0, 0.0), ((-1.0, 0.0),), LETTER)]
     tick = round_scale(z_max / 6.0)
     v = tick
     while v <= z_max + 1e-9:
         items.append(Segment((v * k, 0.0), (v * k, -1.5), "label"))
-        labels.append(_label(number(v), (v * k, -1.5), ((0.0, 1.0),), LETTER * 0.8, italic=False))
+        labels.append(paper_label(number(v), (v * k, -1.5), ((0.0, 1.0),), LETTER * 0.8, italic=False))
         v += tick
     v = tick / 2.0 if tick >= 2.0 else tick
     while v <= y_hi + 1e-9:
         items.append(Segment((0.0, v * k), (-1.5, v * k), "label"))
-        labels.append(_label(number(v), (-1.5, v * k), ((1.0, 0.0),), LETTER * 0.8, italic=False))
+        labels.append(paper_label(number(v), (-1.5, v * k), ((1.0, 0.0),), LETTER * 0.8, italic=False))
         v += tick / 2.0 if tick >= 2.0 else tick
     items.append(Polyline(((0.0, 0.0), (z_max * k, rb(z_max) * k)), "result"))
     z_f0 = z0 * (1.0 - ca)  # where r_f = 0
     items.append(Polyline(((0.0, rf(0.0) * k), (z_max * k, rf(z_max) * k)), "result", dashed=True))
     items.append(Segment((0.0, rf(0.0) * k), (z_f0 * k, 0.0), "construction"))
-    labels += [_label("r_{b}/m", (z_max * k, rb(z_max) * k), ((-1.0, -0.4),), LETTER),
-               _label("r_{f}/m", (z_max * k, rf(z_max) * k), ((-1.0, -0.5),), LETTER)]
+    labels += [paper_label("r_{b}/m", (z_max * k, rb(z_max) * k), ((-1.0, -0.4),), LETTER),
+               paper_label("r_{f}/m", (z_max * k, rf(z_max) * k), ((-1.0, -0.5),), LETTER)]
     cross = (z0 * k, rb(z0) * k)
     items += [Circle(cross, 0.8, "result"), Segment(cross, (z0 * k, 0.0), "construction", dashed=True)]
-    labels.append(_label(word("root=base", notation, WORDS).replace("«z»", number(z0)), cross, ((1.0, 0.5), (0.0, -1.0)),
+    labels.append(paper_label(word("root=base", notation, WORDS).replace("«z»", number(z0)), cross, ((1.0, 0.5), (0.0, -1.0)),
                         LETTER, italic=False))
     if zg > 0.0:
         items.append(Segment((zg * k, 0.0), (zg * k, max(rb(zg), rf(zg)) * k + 6.0), "label", dashdot=True))
-        labels.append(_label(f"z = {number(zg)}", (zg * k, max(rb(zg), rf(zg)) * k + 6.0), ((0.0, -1.0),), LETTER,
+        labels.append(paper_label(f"z = {number(zg)}", (zg * k, max(rb(zg), rf(zg)) * k + 6.0), ((0.0, -1.0),), LETTER,
                             italic=False))
     return items + labels
 
@@ -991,11 +991,11 @@ def gear_sheet(title: str, show: Sequence[str], drawing: GearDrawing, page: tupl
         for name, sp in drawing.span:
             panels.append(Panel(f"measurement{name}", _caption("measurement", name, notation),
                                 tuple(span_items(drawing, name, sp)),
-                                (scale_text("l", mu), f"k = {sp.k}, W_{{{sp.k}}} = {_mm(sp.W)}"), row,
+                                (scale_text("l", mu), f"k = {sp.k}, W_{{{sp.k}}} = {mm_text(sp.W)}"), row,
                                 (("l", mu),)))
         for name, pm in drawing.pins:
             items, whole = pins_items(drawing, name, pm)
-            notes: tuple[str, ...] = (scale_text("l", mu), f"d_{{p}} = {_mm(pm.d_pin)}, M = {_mm(pm.M)}")
+            notes: tuple[str, ...] = (scale_text("l", mu), f"d_{{p}} = {mm_text(pm.d_pin)}, M = {mm_text(pm.M)}")
             if not whole:
                 notes += (word("not to scale", notation, WORDS),)
             panels.append(Panel(f"pins{name}", _caption("pins", name, notation), tuple(items), notes, row,
@@ -1025,11 +1025,14 @@ __all__ = [
     "dimension",
     "gear_sheet",
     "meshing_items",
+    "mm_text",
     "outline_runs",
+    "paper_label",
     "pins_items",
     "replicated",
     "root_base_items",
     "span_items",
+    "to_paper",
     "tooth_items",
     "zones_items",
 ]

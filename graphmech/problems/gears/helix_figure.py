@@ -40,6 +40,9 @@ from graphmech.problems.gears.figures import (
     arc_points,
     dimension,
     meshing_items,
+    mm_text,
+    paper_label,
+    to_paper,
 )
 from graphmech.scales import round_scale
 
@@ -74,16 +77,8 @@ SIDE_ROOM = (80.0, 36.0)
 DIM = 6.0
 
 
-def _mm(v: float) -> str:
-    return f"{number(v * 1e3)} mm"
-
-
 def _deg(v: float) -> str:
     return f"{number(math.degrees(v))}°"
-
-
-def _sc(p: XY, mu: float) -> XY:
-    return (p[0] / mu, p[1] / mu)
 
 
 def _scale_for(wide: float, tall: float, room: XY = SIDE_ROOM) -> float:
@@ -91,8 +86,7 @@ def _scale_for(wide: float, tall: float, room: XY = SIDE_ROOM) -> float:
 
 
 def _lbl(text: str, at: XY, *avoid: XY, italic: bool = True) -> Label:
-    dirs = tuple((d[0] / math.hypot(*d), d[1] / math.hypot(*d)) for d in avoid if math.hypot(*d) > 1e-12)
-    return Label(text, at, dirs, LETTER, italic)
+    return paper_label(text, at, avoid, LETTER, italic)
 
 
 # ----------------------------------------------------------------------------- helical
@@ -111,9 +105,9 @@ def development_items(c: HelicalConstruction, mu: float) -> list[Primitive]:
             items.append(Segment((x0 + st, 0.0), (x0 + st + adv, B), "result"))
     # p_t and s_t along the circumference, below the strip
     # p_t along the top face (between the ends of two tooth lines), s_t along the bottom one
-    items += dimension((2 * pt + adv, B + DIM), (3 * pt + adv, B + DIM), f"p_{{t}} = {_mm(d.pt)}", (0.0, 1.0))
+    items += dimension((2 * pt + adv, B + DIM), (3 * pt + adv, B + DIM), f"p_{{t}} = {mm_text(d.pt)}", (0.0, 1.0))
     items += [Segment((x + adv, B), (x + adv, B + DIM + 1.5), "label") for x in (2 * pt, 3 * pt)]
-    items += dimension((0.0, -DIM), (st, -DIM), f"s_{{t}} = {_mm(d.st)}", (0.0, -1.0))
+    items += dimension((0.0, -DIM), (st, -DIM), f"s_{{t}} = {mm_text(d.st)}", (0.0, -1.0))
     items += [Segment((x, 0.0), (x, -DIM - 1.5), "label") for x in (0.0, st)]
     # p_n normal to the tooth lines, from the middle of the third one
     u = (math.sin(d.beta), math.cos(d.beta))
@@ -121,11 +115,11 @@ def development_items(c: HelicalConstruction, mu: float) -> list[Primitive]:
     q0 = (pt + 0.5 * adv, 0.5 * B)
     pn = math.hypot(*d.Pn) / mu
     q1 = (q0[0] + pn * nrm[0], q0[1] + pn * nrm[1])
-    items += dimension(q0, q1, f"p_{{n}} = {_mm(math.hypot(*d.Pn))}", u)
+    items += dimension(q0, q1, f"p_{{n}} = {mm_text(math.hypot(*d.Pn))}", u)
     # B at the left, the advance B·tan β on top
-    items += dimension((-DIM, 0.0), (-DIM, B), f"B = {_mm(d.height)}", (-1.0, 0.0))
+    items += dimension((-DIM, 0.0), (-DIM, B), f"B = {mm_text(d.height)}", (-1.0, 0.0))
     if adv > 0.5:
-        items += dimension((0.0, B + DIM), (adv, B + DIM), f"B·tan β = {_mm(d.advance)}", (0.0, 1.0))
+        items += dimension((0.0, B + DIM), (adv, B + DIM), f"B·tan β = {mm_text(d.advance)}", (0.0, 1.0))
         items.append(Segment((adv, B), (adv, B + DIM + 1.5), "label"))
         items.append(Segment((0.0, B), (0.0, B + DIM + 1.5), "label"))
         arc = angle_arc((0.0, 0.0), (0.0, 1.0), u, 0.45 * B)
@@ -141,7 +135,7 @@ def section_items(c: HelicalConstruction, mu: float) -> list[Primitive]:
     curvature K at the pitch point, the osculating circle ρ (dashed)."""
     s = c.sections[0]
     a, b, rho = s.a_e / mu, s.b_e / mu, s.rho / mu
-    K = _sc(s.K, mu)
+    K = to_paper(s.K, mu)
     ell = tuple((a * math.cos(t), b * math.sin(t)) for t in (math.tau * k / 240 for k in range(241)))
     items: list[Primitive] = [
         Polyline(ell, "result"),
@@ -157,7 +151,7 @@ def section_items(c: HelicalConstruction, mu: float) -> list[Primitive]:
     items += dimension((0.0, -b - DIM), (a, -b - DIM), "r/cos β", (0.0, -1.0))
     items += [_lbl("K", K, (0.0, 1.0)), _lbl("C", (a, b), (-1.0, 0.0), (0.0, -1.0)),
               _lbl("P", (0.0, b), (0.0, -1.0), (1.0, 0.0)),
-              _lbl(f"ρ = r/cos²β = {_mm(s.rho)}", (-0.7 * rho, K[1] + 0.7 * rho), (1.0, -1.0), italic=False),
+              _lbl(f"ρ = r/cos²β = {mm_text(s.rho)}", (-0.7 * rho, K[1] + 0.7 * rho), (1.0, -1.0), italic=False),
               _lbl("r", (-2.0, 0.5 * b), (0.0, 1.0), (0.0, -1.0))]
     return items
 
@@ -173,8 +167,8 @@ def lead_items(c: HelicalConstruction, mu: float) -> list[Primitive]:
                               Segment((0.0, 0.0), (h, 0.0), "construction", dashdot=True),
                               Segment((0.0, 0.0), (h, w), "result"), Segment((0.0, 0.0), (h, wb), "result", dashed=True),
                               Segment((h, wb), (h, w), "construction", dashed=True)]
-    items += dimension((-DIM, 0.0), (-DIM, w), f"πd_{{1}} = {_mm(ld.pi_d)}", (-1.0, 0.0))
-    items += dimension((0.0, w + DIM), (h, w + DIM), f"p_{{z1}} = {_mm(ld.pz)}", (0.0, 1.0))
+    items += dimension((-DIM, 0.0), (-DIM, w), f"πd_{{1}} = {mm_text(ld.pi_d)}", (-1.0, 0.0))
+    items += dimension((0.0, w + DIM), (h, w + DIM), f"p_{{z1}} = {mm_text(ld.pz)}", (0.0, 1.0))
     r = min(0.6 * h, 30.0)
     for end, rr, text in (((h, w), r, "β"), ((h, wb), 0.7 * r, "β_{b}")):
         arc = angle_arc((0.0, 0.0), (1.0, 0.0), end, rr)
@@ -191,7 +185,7 @@ def helical_panels(an: SpatialAnalysis, notation: str) -> list[Panel]:
     mu = an.scales["l"]
     d = c.development
     panels = [Panel("development", word("development", notation, WORDS), tuple(development_items(c, mu)),
-                    (scale_text("l", mu) + "; " + word("window", notation, WORDS).replace("«w»", _mm(d.width)),
+                    (scale_text("l", mu) + "; " + word("window", notation, WORDS).replace("«w»", mm_text(d.width)),
                      f"β = {_deg(d.beta)}" + (f", ε_{{β}} = B·tan β/p_{{t}} = {number(c.eps_beta)}"
                                               if c.eps_beta is not None else "")),
                     0, (("l", mu),))]
@@ -204,7 +198,7 @@ def helical_panels(an: SpatialAnalysis, notation: str) -> list[Panel]:
         ld = c.leads[0]
         mu_l = _scale_for(ld.pz, ld.pi_d)
         panels.append(Panel("lead", word("lead", notation, WORDS), tuple(lead_items(c, mu_l)),
-                            (scale_text("l", mu_l), f"β_{{b}} = {_deg(ld.beta_b)}, p_{{z2}} = {_mm(c.leads[1].pz)}"),
+                            (scale_text("l", mu_l), f"β_{{b}} = {_deg(ld.beta_b)}, p_{{z2}} = {mm_text(c.leads[1].pz)}"),
                             1, (("l", mu_l),)))
     m = c.mesh
     assert m.O2 is not None
@@ -215,7 +209,7 @@ def helical_panels(an: SpatialAnalysis, notation: str) -> list[Panel]:
         mu_m = round_scale(max(m.B1B2, m.pb) * 4.0 / 40.0)
     drawing = GearDrawing(gears=c.transverse, scales={"l": mu_m}, mesh=m, mesh_whole=whole)
     panels.append(Panel("transverse", word("transverse", notation, WORDS), tuple(meshing_items(drawing, m, notation)),
-                        (scale_text("l", mu_m) + f"; m_{{t}} = p_{{t}}/π = {_mm(d.mt)}, α_{{t}} = {_deg(d.alpha_t)}",
+                        (scale_text("l", mu_m) + f"; m_{{t}} = p_{{t}}/π = {mm_text(d.mt)}, α_{{t}} = {_deg(d.alpha_t)}",
                          f"ε_{{α}} = B_{{1}}B_{{2}}/p_{{bt}} = {number(m.eps_alpha)}"
                          + (f", ε_{{γ}} = ε_{{α}} + ε_{{β}} = {number(e.eps_gamma)}" if e.eps_gamma is not None else "")),
                         1, (("l", mu_m),)))
@@ -239,9 +233,9 @@ def thread_items(c: WormConstruction, mu: float) -> list[Primitive]:
             a = (p0[0] + t0 * (p1[0] - p0[0]), p0[1] + t0 * (p1[1] - p0[1]))
             b = (p0[0] + t1 * (p1[0] - p0[0]), p0[1] + t1 * (p1[1] - p0[1]))
             items.append(Segment(a, b, "result"))
-    items += dimension((0.0, -DIM), (w, -DIM), f"πd_{{1}} = {_mm(c.pi_d1)}", (0.0, -1.0))
-    items += dimension((w + DIM, 0.0), (w + DIM, pz), f"p_{{z}} = z_{{1}}p_{{x}} = {_mm(c.pz1)}", (1.0, 0.0))
-    items += dimension((-DIM, 0.0), (-DIM, px), f"p_{{x}} = {_mm(c.px)}", (-1.0, 0.0))
+    items += dimension((0.0, -DIM), (w, -DIM), f"πd_{{1}} = {mm_text(c.pi_d1)}", (0.0, -1.0))
+    items += dimension((w + DIM, 0.0), (w + DIM, pz), f"p_{{z}} = z_{{1}}p_{{x}} = {mm_text(c.pz1)}", (1.0, 0.0))
+    items += dimension((-DIM, 0.0), (-DIM, px), f"p_{{x}} = {mm_text(c.px)}", (-1.0, 0.0))
     r = min(0.3 * w, 30.0)
     arc = angle_arc((0.0, 0.0), (1.0, 0.0), c.T, r)
     if arc is not None:
@@ -259,8 +253,8 @@ def worm_panels(an: SpatialAnalysis, notation: str) -> list[Panel]:
     return [Panel("thread", word("thread", notation, WORDS), tuple(thread_items(c, mu)),
                   (scale_text("l", mu), f"z_{{1}} = {z[0].z}, q = d_{{1}}/m = {number(e.q)}, γ_{{1}} = β_{{2}} = "
                                         f"{_deg(c.gamma1)}",
-                   f"d_{{1}} = {_mm(e.d1)}, d_{{a1}} = {_mm(e.da1)}, d_{{f1}} = {_mm(e.df1)}; z_{{2}} = {z[1].z}, "
-                   f"d_{{2}} = {_mm(e.d2)}, d_{{a2}} = {_mm(e.da2)}, d_{{f2}} = {_mm(e.df2)}; a = {_mm(e.a)}"),
+                   f"d_{{1}} = {mm_text(e.d1)}, d_{{a1}} = {mm_text(e.da1)}, d_{{f1}} = {mm_text(e.df1)}; z_{{2}} = {z[1].z}, "
+                   f"d_{{2}} = {mm_text(e.d2)}, d_{{a2}} = {mm_text(e.da2)}, d_{{f2}} = {mm_text(e.df2)}; a = {mm_text(e.a)}"),
                   0, (("l", mu),))]
 
 
@@ -274,9 +268,9 @@ def _mirror(p: XY, u: XY) -> XY:
 def cone_items(c: BevelConstruction, face: float, mu: float) -> list[Primitive]:
     """The bevel pair's axial section at μ (see the module's docstring)."""
     u1, u2 = (1.0, 0.0), c.u2
-    P, V1, V2 = _sc(c.P, mu), _sc(c.V1, mu), _sc(c.V2, mu)
-    A = [_sc(a, mu) for a in c.A]
-    F = [_sc(f, mu) for f in c.F]
+    P, V1, V2 = to_paper(c.P, mu), to_paper(c.V1, mu), to_paper(c.V2, mu)
+    A = [to_paper(a, mu) for a in c.A]
+    F = [to_paper(f, mu) for f in c.F]
     k = max(0.0, (c.R - face) / c.R)
     reach = 1.15 * max(math.hypot(*V1), math.hypot(*V2), math.hypot(*A[0]), math.hypot(*A[1]))
     items: list[Primitive] = [Segment((0.0, 0.0), (reach * u1[0], reach * u1[1]), "construction", dashdot=True),
@@ -298,7 +292,7 @@ def cone_items(c: BevelConstruction, face: float, mu: float) -> list[Primitive]:
     op = (P[0] / math.hypot(*P), P[1] / math.hypot(*P))
     side = (-op[1], op[0])
     off = (side[0] * 2.0 * DIM, side[1] * 2.0 * DIM)
-    items += dimension((off[0], off[1]), (P[0] + off[0], P[1] + off[1]), f"R = {_mm(c.R)}", side)
+    items += dimension((off[0], off[1]), (P[0] + off[0], P[1] + off[1]), f"R = {mm_text(c.R)}", side)
     for i, (u, text) in enumerate(((u1, "δ_{1}"), (u2, "δ_{2}"))):
         r = (0.3 + 0.08 * i) * math.hypot(*P)
         arc = angle_arc((0.0, 0.0), u, op, r)
@@ -306,8 +300,8 @@ def cone_items(c: BevelConstruction, face: float, mu: float) -> list[Primitive]:
             items.append(arc)
             mid = arc.points[len(arc.points) // 2]
             items.append(_lbl(text, mid, (-mid[0], -mid[1])))
-    items.append(_lbl(f"r_{{v1}} = {_mm(c.r_v[0])}", ((P[0] + V1[0]) / 2.0, (P[1] + V1[1]) / 2.0), side, italic=False))
-    items.append(_lbl(f"r_{{v2}} = {_mm(c.r_v[1])}", ((P[0] + V2[0]) / 2.0, (P[1] + V2[1]) / 2.0), side, italic=False))
+    items.append(_lbl(f"r_{{v1}} = {mm_text(c.r_v[0])}", ((P[0] + V1[0]) / 2.0, (P[1] + V1[1]) / 2.0), side, italic=False))
+    items.append(_lbl(f"r_{{v2}} = {mm_text(c.r_v[1])}", ((P[0] + V2[0]) / 2.0, (P[1] + V2[1]) / 2.0), side, italic=False))
     return items
 
 
@@ -339,8 +333,8 @@ def bevel_panels(an: SpatialAnalysis, notation: str) -> list[Panel]:
     panels = [Panel("cones", word("cones", notation, WORDS), tuple(cone_items(c, face, mu)),
                     (scale_text("l", mu), f"Σ = {_deg(sigma)}, δ_{{1}} = {_deg(c.delta[0])}, δ_{{2}} = {_deg(c.delta[1])}, "
                                           f"θ_{{a}} = {_deg(c.theta_a)}, θ_{{f}} = {_deg(c.theta_f)}",
-                     f"d_{{a1}} = {_mm(c.da[0])}, d_{{a2}} = {_mm(c.da[1])}, d_{{f1}} = {_mm(c.df[0])}, "
-                     f"d_{{f2}} = {_mm(c.df[1])}"), 0, (("l", mu),))]
+                     f"d_{{a1}} = {mm_text(c.da[0])}, d_{{a2}} = {mm_text(c.da[1])}, d_{{f1}} = {mm_text(c.df[0])}, "
+                     f"d_{{f2}} = {mm_text(c.df[1])}"), 0, (("l", mu),))]
     mu_v = _scale_for(2.0 * c.r_v[0] * math.sin(0.5), c.r_v[0] + c.r_v[1], (70.0, 110.0))
     panels.append(Panel("virtual", word("virtual", notation, WORDS), tuple(virtual_items(c, mu_v)),
                         (scale_text("l", mu_v), f"z_{{v1}} = z_{{1}}/cos δ_{{1}} = {number(e.zv[0])}, "
