@@ -140,3 +140,17 @@ def test_the_generation_scale_is_chosen_or_stated_and_said(tmp_path):
     f.write_text(text + "\n[scales]\ngeneration_mm_per_mm = 1e-12\n", encoding="utf-8")
     code, out, err = run_cli("check", str(f))
     assert code == 2 and "scales.generation" in err
+
+
+@pytest.mark.parametrize("z, x, n", [(8, 0.5, 8), (12, -0.5, 12), (15, 0.0, 8), (18, 0.5, 12), (25, -1.5, 8),
+                                     (40, 1.0, 12)])
+def test_each_generated_thickness_is_within_the_error_it_states(tmp_path, z, x, n):
+    f = tmp_path / "g.toml"
+    f.write_text(f'find = ["s_pitch_generated", "sa_generated"]\n[gear]\nm_mm = 4\nz = {z}\nx = {x}\n'
+                 f"[gear.generation]\ncutter_speed_m_s = 0.002\npositions = {n}\n", encoding="utf-8")
+    rows = check_json(f)["quantities"]
+    assert rows
+    for row in rows:
+        assert row["error_source"] == "discretisation" or row["rel_error"] < 1e-9, row
+        if row["error_estimate"] is not None:
+            assert row["rel_error"] <= row["error_estimate"], row
