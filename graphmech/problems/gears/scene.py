@@ -160,7 +160,7 @@ def parse_gear_scene(data: Mapping[str, Any], source: str, top: Reader, order: M
     >>> from graphmech.scene import parse_scene
     >>> s = parse_scene({"gear": {"m_mm": 5, "z": [19, 42], "meshing": "external"}}, "g.toml")
     >>> s.problem.gears.gears, s.problem.labels
-    ((SpurGear(z=19, x=0.0, internal=False), SpurGear(z=42, x=0.0, internal=False)), ('1', '2'))
+    ((SpurGear(z=19, x=0.0, internal=False, delta_y=0.0), SpurGear(z=42, x=0.0, internal=False, delta_y=0.0)), ('1', '2'))
     >>> parse_scene({"gear": {"m_mm": 5, "z": [19, 42]}}, "g.toml")
     Traceback (most recent call last):
     ...
