@@ -278,9 +278,14 @@ class BevelConstruction:
     zv: tuple[float, float]
 
 
-def _from_axis(p: XY, u: XY) -> float:
-    """The distance of p from the line through O along the unit u."""
-    return abs(p[0] * u[1] - p[1] * u[0])
+def _from_axis(p: XY, u: XY, side: XY | None = None) -> float:
+    """The distance of p from the line through O along the unit u; with ``side``, negative when p
+    lies beyond the axis from it (a root point past the axis of a gear of few teeth: d_f < 0, as a
+    spur gear's)."""
+    d = p[0] * u[1] - p[1] * u[0]
+    if side is not None and d * (side[0] * u[1] - side[1] * u[0]) < 0.0:
+        return -abs(d)
+    return abs(d)
 
 
 def construct_bevel(gears: GearSet) -> BevelConstruction:
@@ -312,7 +317,7 @@ def construct_bevel(gears: GearSet) -> BevelConstruction:
         A.append(a_pt)
         F.append(f_pt)
         da.append(2.0 * _from_axis(a_pt, u))
-        df.append(2.0 * _from_axis(f_pt, u))
+        df.append(2.0 * _from_axis(f_pt, u, P))
     r_v = (_dist(V1, P), _dist(V2, P))
     return BevelConstruction(u2=u2, P=P, V1=V1, V2=V2, A=(A[0], A[1]), F=(F[0], F[1]), delta=(delta[0], delta[1]),
                              R=R, theta_a=_angle(op, A[0]), theta_f=_angle(op, F[0]), da=(da[0], da[1]),

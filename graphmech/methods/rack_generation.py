@@ -41,6 +41,9 @@ ROUNDING_POINTS = 24
 TIP_CHORDS_PER_RAD = 4000
 #: The cutter's body above its root line, in modules (it only closes the polygon).
 BODY = 1.0
+#: The most outline vertices one generation unites (:func:`work`): about 6 s of shapely's union;
+#: the check refuses a generation beyond it rather than run for minutes (z = 10⁵ at N = 12).
+WORK_MOST = 4_000_000
 
 
 @dataclass(frozen=True)
@@ -85,8 +88,11 @@ def rolling_radius(v: float, omega: float) -> float:
         raise OutOfDomain(f"the speeds must be positive and finite, not v = {v!r}, ω = {omega!r}")
     ops = ScalarOps()
     ops.step = "pitch point = (ω·y on the radius) ∩ (the cutter's v)"
-    n = math.hypot(1.0, omega)
-    y, _ = intersect_lines(ops, (0.0, 0.0, 1.0 / n, omega / n), (0.0, v, 1.0, 0.0))
+    # the velocities drawn at a round scale k that lays the ω·y line at 0.3 … 3 when ω is extreme
+    # (at ω = 1e-299 rad/s it would run parallel to the radius and miss the v line)
+    k = 1.0 if 1e-6 <= omega <= 1e6 else 10.0 ** -round(math.log10(omega))
+    n = math.hypot(1.0, omega * k)
+    y, _ = intersect_lines(ops, (0.0, 0.0, 1.0 / n, omega * k / n), (0.0, v * k, 1.0, 0.0))
     return float(y)
 
 
@@ -148,11 +154,8 @@ def generate(system: ToothSystem, gear: SpurGear, positions: int = 12,
     npts = rounding_points if rounding_points is not None else max(ROUNDING_POINTS, 4 * positions)
     cutter = cutter_outline(system, gear, npts)
     half = math.pi / gear.z
-    # the engagement: the cutter's teeth inside the tip circle, one pitch beyond on each side
-    tip_line = L - (system.ha_star + system.c_star) * m
-    reach = math.sqrt(max(ra * ra - tip_line * tip_line, 0.0)) + 2.0 * math.pi * m
     step = 2.0 * half / positions
-    J = math.ceil(min(reach / r, 0.45 * math.pi) / step)
+    J = _half_engagement(system, gear, positions)
     phis = np.asarray((np.arange(-J, J + 1) + stagger) * step, dtype=np.float64)
     cut = shapely.union_all(shapely.polygons(place(np.asarray(cutter), phis, r, L)))
     n_arc = max(16, math.ceil(2.0 * half * TIP_CHORDS_PER_RAD))
@@ -169,6 +172,22 @@ def generate(system: ToothSystem, gear: SpurGear, positions: int = 12,
         raise NoSolution("the cutter leaves nothing of the blank near its root circle")
     return Generation(system=system, gear=gear, r=r, L=L, ra=ra, rf=rf, positions=positions,
                       phis=tuple(float(p) for p in phis), cutter=cutter, profile=_profile(body, half))
+
+
+def _half_engagement(system: ToothSystem, gear: SpurGear, positions: int) -> int:
+    """J: the positions on each side of φ = 0 over the engagement (the cutter's teeth inside the
+    tip circle, one pitch beyond on each side)."""
+    m = system.m
+    r, _, ra, _ = circles(system, gear)
+    tip_line = r + gear.x * m - (system.ha_star + system.c_star) * m
+    reach = math.sqrt(max(ra * ra - tip_line * tip_line, 0.0)) + 2.0 * math.pi * m
+    return math.ceil(min(reach / r, 0.45 * math.pi) / (2.0 * (math.pi / gear.z) / positions))
+
+
+def work(system: ToothSystem, gear: SpurGear, positions: int) -> int:
+    """The outline vertices :func:`generate` unites at N = ``positions`` (default rounding): the
+    cost of the cut, which grows as N² and with √z."""
+    return (2 * _half_engagement(system, gear, positions) + 1) * max(ROUNDING_POINTS, 4 * positions)
 
 
 def _profile(body: object, half: float) -> tuple[XY, ...]:
@@ -223,4 +242,5 @@ def thickness(gen: Generation, rho: float) -> float | None:
     return rho * (gen.pitch_angle - (left - right))
 
 
-__all__ = ["Generation", "crossings", "cutter_outline", "generate", "place", "rolling_radius", "thickness"]
+__all__ = ["WORK_MOST", "Generation", "crossings", "cutter_outline", "generate", "place", "rolling_radius", "thickness",
+           "work"]

@@ -80,6 +80,16 @@ def test_bevel_construction_against_the_closed_forms(sigma):
     assert worst(got) < TOL
 
 
+@pytest.mark.parametrize("z, sigma", [((1, 1), 30.0), ((1, 40), 90.0), ((1, 1), 90.0)])
+def test_a_bevel_root_past_the_axis_is_a_negative_diameter_as_the_closed_form(z, sigma):
+    """Few teeth: the root point F lies beyond the gear's axis; its d_f is negative (as a spur
+    gear's d − 2h_f), not the distance's absolute value."""
+    g = pair("bevel", z=z, m=0.005, shaft_angle=DEG(sigma))
+    c, e = construct_bevel(g), ex.bevel(g)
+    assert e.df[0] < 0.0 and c.df[0] < 0.0
+    assert worst([(c.df[i], e.df[i]) for i in (0, 1)] + [(c.da[i], e.da[i]) for i in (0, 1)]) < TOL
+
+
 def test_bevel_crown_refused():
     with pytest.raises(NotApplicable, match="90°"):
         construct_bevel(pair("bevel", shaft_angle=DEG(130)))

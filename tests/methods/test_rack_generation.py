@@ -87,3 +87,10 @@ def test_refusals():
         rg.generate(M4, SpurGear(40, internal=True))
     with pytest.raises(OutOfDomain):
         rg.generate(M4, SpurGear(20), 1)
+
+
+@pytest.mark.parametrize("v, omega", [(1e-300, 1e-298), (1e-12, 3e-11), (1e300, 1e301), (5.0, 1e12)])
+def test_the_rolling_radius_at_extreme_speeds_is_v_over_omega(v, omega):
+    """A blank turning at 1e-298 rad/s or 1e12 rad/s: the velocities are drawn at a round scale,
+    so the ω·y line still crosses the cutter's v (unscaled it ran parallel to it)."""
+    assert rg.rolling_radius(v, omega) == pytest.approx(v / omega, rel=1e-12)

@@ -146,7 +146,7 @@ class GenerationAnalysis:
         construction's (a shared position would leave the same scallop where it cuts a circle)."""
         if self.finer is None:
             n = self.model.positions
-            self.finer = rg.generate(self.system, self.gear, min(REFINE * n, max(2 * n, REFINE_MOST)), stagger=0.5)
+            self.finer = rg.generate(self.system, self.gear, reference_positions(n), stagger=0.5)
         return self.finer
 
 
@@ -161,6 +161,7 @@ def analyse_generation(an: GearAnalysis) -> None:
     s = an.gears.system
     g = an.gears.gears[0]
     values = erg.kinematics(s, model, None if model.blank_speed is not None else g.z, g.x)
+    _within_work(an, s, g, model.positions)
     try:
         construction = rg.generate(s, g, model.positions)
         profile = erg.generated_profile(s, g)
@@ -189,6 +190,27 @@ def analyse_generation(an: GearAnalysis) -> None:
     mu = an.scales.get("generation") or round_scale(max(tall / min(h - 80.0, ROOM_H_MOST), wide / (w - 60.0)))
     an.scales["generation"] = mu
     an.generation = GenerationAnalysis(s, g, model, values, r_c, construction, profile, mu, notes=tuple(notes))
+
+
+def reference_positions(n: int) -> int:
+    """The positions per pitch of the error estimate's reference for N = n."""
+    return min(REFINE * n, max(2 * n, REFINE_MOST))
+
+
+def _within_work(an: GearAnalysis, s: ToothSystem, g: SpurGear, n: int) -> None:
+    """Refuse a generation whose cut (or its reference's) would unite more than rg.WORK_MOST
+    vertices — minutes of work — naming the most positions per pitch that fit."""
+    def fits(k: int) -> bool:
+        return max(rg.work(s, g, k), rg.work(s, g, reference_positions(k))) <= rg.WORK_MOST
+
+    if g.internal or fits(n):
+        return
+    most = next((k for k in range(n - 1, POSITIONS_RANGE[0] - 1, -1) if fits(k)), None)
+    said = f"at most positions = {most} fit" if most is not None else "even 2 are too many for so many teeth"
+    key = "gear.generation.positions" if n != POSITIONS else "gear.generation"
+    why = (f"{n} cutter positions per pitch on z = {g.z} (and the error estimate's {reference_positions(n)}) are too "
+           f"many to cut in reasonable time; {said}")
+    raise SceneError([(key, why)], an.scene.source)
 
 
 def generation_value(an: GearAnalysis, stem: str) -> tuple[float, float, float | None, float] | None:

@@ -264,7 +264,7 @@ def _read_gear(g: Reader) -> GearScene | None:
     x1 = None if x1_raw is MISSING else g.number(x1_raw, g.at("x1"))
     loss = g.scalar("thickness_loss", "length", required=False, positive=True)
     shorten = g.flag("tip_shortening")
-    _shift_keys(g, shift, meshing, a_w, x1, loss, shorten)
+    _shift_keys(g, shift, meshing, a_w, x1, loss, shorten, bool(internal) and meshing is None)
     spatial, zs, xs = read_spatial(g, meshing, zs, xs, m)  # helical, bevel, worm: spatial_scene.py
     if spatial is not None and zs is not None:
         ks, pins = (None,) * len(zs), (None,) * len(zs)
@@ -315,7 +315,7 @@ def _shift_word(g: Reader) -> str | None:
 
 
 def _shift_keys(g: Reader, shift: str | None, meshing: Meshing | None, a_w: float | None, x1: float | None,
-                loss: float | None, shorten: bool | None) -> None:
+                loss: float | None, shorten: bool | None, ring: bool = False) -> None:
     """The keys that go with a design word, and the words that need a pair or a centre distance."""
     if x1 is not None and shift != "for_centre_distance":
         g.problem(g.at("x1"), 'the pinion\'s shift x1 goes with x = "for_centre_distance" (gear 2 takes the rest); '
@@ -341,9 +341,9 @@ def _shift_keys(g: Reader, shift: str | None, meshing: Meshing | None, a_w: floa
                                               "(thickness_loss_mm = …)")
     if shift is not None and meshing in SPATIAL_MESHINGS:
         g.problem(g.at("x"), f"shifted {meshing} gears are not posed yet: give x = 0 (or leave x out)")
-    if shift in ("least", "least_exact") and meshing == "internal":
+    if shift in ("least", "least_exact") and (meshing == "internal" or ring):
         g.problem(g.at("x"), "a ring is cut by a pinion cutter, not a rack: the rack's least shift does not apply "
-                             "to it; give x = [x1, x2]")
+                             f"to it; give {'x = [x1, x2]' if meshing == 'internal' else 'x as a number'}")
 
 
 def _choose_shifts(g: Reader, system: ToothSystem, shift: str, zs: tuple[int, ...],

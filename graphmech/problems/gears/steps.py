@@ -32,6 +32,7 @@ PHRASES: Phrases = {
     "for l": ("", "", ""),
     "for tooth": (" for the teeth", "（画轮齿）", " для зубьев"),
     "for zones": (" for the contact zones", "（画啮合区）", " для зон зацепления"),
+    "for generation": (" for the generation", "（画范成）", " для нарезания"),
     "involute": ("the involute by points: divide the base circle from the flank's start, at each division N draw "
                  "the tangent and lay off along it the arc unwound from the start (NK = arc); join the points K",
                  "用展成点法作渐开线：自齿廓起点将基圆等分，过各分点N作基圆切线，在切线上量取NK等于相应的弧长，"

@@ -99,3 +99,23 @@ def test_specific_sliding_with_the_contact_beyond_N_keeps_its_sign():
     assert an.mesh is not None and an.mesh.rho["N1B2"] < 0.0
     assert r["eta_root1"].graphical == pytest.approx(5.42946839, rel=1e-8) and r["eta_root1"].rel_error < 1e-9
     assert r["eta_tip2"].graphical == pytest.approx(1.22576073, rel=1e-8) and r["eta_tip2"].rel_error < 1e-9
+
+
+@pytest.mark.parametrize("gear, positions, most", [("z = 15", 400, 48), ("z = 100000", None, 7)])
+def test_a_generation_too_large_to_cut_is_refused_naming_the_positions_that_fit(gear, positions, most):
+    """400 positions per pitch (an error estimate of 800), or z = 10⁵ at the default 12, would run
+    for minutes: refused in one line with the most positions that fit."""
+    n = "" if positions is None else f"positions = {positions}\n"
+    with pytest.raises(SceneError) as e:
+        check(_scene(f'show = ["generation"]\n[gear]\nm_mm = 4\n{gear}\n[gear.generation]\ncutter_speed_m_s = 0.002\n{n}'))
+    line = e.value.one_line("g.toml")
+    assert line.startswith("g.toml: gear.generation" + (".positions" if positions else "") + ": ")
+    assert f"at most positions = {most} fit" in line, line
+
+
+@pytest.mark.parametrize("word", ["least", "least_exact"])
+def test_the_rack_s_least_shift_is_refused_for_one_ring_as_for_a_ring_in_a_pair(word):
+    with pytest.raises(SceneError) as e:
+        _scene(f'find = ["x"]\n[gear]\nm_mm = 4\nz = 15\ninternal = true\nx = "{word}"\n')
+    assert e.value.one_line("g.toml") == ("g.toml: gear.x: a ring is cut by a pinion cutter, not a rack: the rack's "
+                                          "least shift does not apply to it; give x as a number")

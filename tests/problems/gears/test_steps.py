@@ -60,3 +60,10 @@ def test_the_least_shift_and_the_drive_in_chinese(tmp_path):
     code, out, err = run_cli("steps", str(p))
     assert code == 0, err
     assert "故为正传动" in out and "齿顶降低 Δy·m = 2.505 mm" in out
+
+
+@pytest.mark.parametrize("name", ["gear.rack_cutter_generation_cases-1", "gear.rack_cutter_generation_cases-3"])
+def test_a_generation_scene_has_a_protocol_with_its_scale(name):
+    """The generation panel's μl is chosen in the protocol like the others' (it was a KeyError)."""
+    lines = steps(load_scene(SCENES / f"{name}.toml"))
+    assert any(x.startswith("choose") and x.endswith(" for the generation") for x in lines), lines
