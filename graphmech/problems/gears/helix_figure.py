@@ -240,8 +240,12 @@ def thread_items(c: WormConstruction, mu: float) -> list[Primitive]:
     arc = angle_arc((0.0, 0.0), (1.0, 0.0), c.T, r)
     if arc is not None:
         items.append(arc)
-        mid = 0.5 * c.gamma1
-        items.append(_lbl("γ_{1}", (1.1 * r * math.cos(mid), 1.1 * r * math.sin(mid)), (-1.0, 0.0)))
+        # γ₁ inside its angle, beyond the arc where the wedge is a letter and a half high, and short of
+        # where the next start wraps in (x = πd₁/z₁): at 1.1r the wedge of a small γ₁ was lower than the
+        # letter and the label went across the thread, outside the angle
+        tg = math.tan(c.gamma1)
+        x = min(max(1.15 * r, 1.5 * LETTER / tg), 0.8 * w / z1) if tg > 0.0 else 1.15 * r
+        items.append(_lbl("γ_{1}", (x, 0.5 * x * tg), (-1.0, 0.0)))
     return items
 
 

@@ -36,6 +36,11 @@ NEEDS_B = ("eps_beta", "eps_gamma")
 #: The book's helix angles: helical gears 8° … 20°, double-helical up to about 40°; 45° is a limit
 #: no gear reaches (the reader refuses β ≥ 45°).
 BETA_WORDS = "0 ≤ β < 45° (helical gears are cut with β = 8° … 20°, double-helical up to about 40°)"
+#: The least helix angle drawn, rad: below it the lead πd/tan β (10⁹·πd) cannot be cut on the
+#: developed turn (the helix and the line x = πd are parallel to double precision).
+BETA_LEAST = 1e-9
+#: The widest face, in modules: a strip a million modules long leaves p_t no drawn length.
+FACE_MOST_M = 1000.0
 #: How close to whole z₂ = i·z₁ must be.
 WHOLE_REL = 1e-9
 
@@ -111,6 +116,9 @@ def read_spatial(g: Reader, meshing: Meshing | None, zs: tuple[int, ...] | None,
         got = g.scalar("beta", "angle", required=True)
         if got is not None and not 0.0 <= got < 0.25 * math.pi:
             g.problem(g.at(g.present("beta") or "beta"), f"a helix angle of {math.degrees(got):g}° is outside {BETA_WORDS}")
+        elif got is not None and 0.0 < got < BETA_LEAST:
+            g.problem(g.at(g.present("beta") or "beta"), f"a helix angle of {math.degrees(got):g}° has no drawable lead "
+                      f"(β < {BETA_LEAST:g} rad): give beta = 0 for a spur pair")
         elif got is not None:
             beta = got
     else:
@@ -118,6 +126,10 @@ def read_spatial(g: Reader, meshing: Meshing | None, zs: tuple[int, ...] | None,
                 + (" (the wheel's β₂ equals the worm's lead angle γ₁)" if meshing == "worm" else ""))
     if meshing in ("helical", "bevel"):
         face = g.scalar("face_width", "length", required=False, positive=True)
+        if face is not None and m is not None and face > FACE_MOST_M * m:
+            g.problem(g.at(g.present("face_width") or "face_width"), f"a face width of {face * 1e3:g} mm is no gear's "
+                      f"(at most {FACE_MOST_M:g}·m = {FACE_MOST_M * m * 1e3:g} mm)")
+            face = None
     else:
         not_for(g, ["face_width"], "a worm drive's face width is not read (its sizes follow from m, z and d₁)")
     if meshing == "bevel":

@@ -50,3 +50,18 @@ def test_the_worms_threads_one_per_start_and_their_wraps():
     items = thread_items(an.construction, an.scales["l"])
     texts = {i.text for i in items if isinstance(i, Label)}
     assert "γ_{1}" in texts and any(t.startswith("p_{z} = z_{1}p_{x} = 94.25") for t in texts)
+
+
+
+def test_the_lead_angle_is_lettered_inside_its_angle():
+    # the bank's worm (γ₁ = 11.3°): at 1.1r the wedge was lower than the letter and γ₁ went across the
+    # thread, outside the angle, on a leader
+    from graphmech.problems.gears.helix_figure import worm_panels
+    from graphmech.render.sheet import panel_labels, panel_shapes
+    an = analysed('[gear]\nm_mm = 5\nz = [2]\nratio = 20.5\nmeshing = "worm"\nq = 10\n')
+    (panel,) = worm_panels(an, "en")
+    (placed,) = [p for p in panel_labels(panel, panel_shapes(panel)) if p.label.text == "γ_{1}"]
+    x0, y0, x1, y1 = placed.box
+    tg, w = math.tan(an.construction.gamma1), an.construction.pi_d1 / an.scales["l"]
+    assert placed.leader is None
+    assert 0.0 < y0 and y1 < x0 * tg and x1 < w / 2, placed.box   # under the thread, short of the wrap

@@ -52,6 +52,10 @@ BASE = '[gear]\nm_mm = 8\nz = [20, 40]\n'
     ('meshing = "bevel"\nbeta_deg = 10', "gear.beta_deg", "not a bevel pair"),
     ('meshing = "helical"\nbeta_deg = 10\nratio = 3', "gear.ratio", "disagrees with z2/z1"),
     ('meshing = "helical"\nbeta_deg = 10\nspan_teeth = 3', "gear.span_teeth", "spur gear's"),
+    # β so small that the helix and x = πd are parallel to double precision: it ended in a keyless line
+    ('meshing = "helical"\nbeta_deg = 1e-12', "gear.beta_deg", "no drawable lead"),
+    # a strip 10²⁰ mm long left p_t no drawn length: an internal error in render
+    ('meshing = "helical"\nbeta_deg = 15\nface_width_mm = 1e20', "gear.face_width_mm", "at most 1000·m = 8000 mm"),
 ])
 def test_bad_tables_refused(body, where, words):
     path, reason = only_problem(BASE + body + "\n", "g.toml")
