@@ -98,7 +98,7 @@ def helix_angle(gears: GearSet) -> tuple[float, float]:
     if not c <= 1.0:
         raise OutOfDomain(f"a = {a * 1e3:.6g} mm is less than m_n(z₁ + z₂)/2 = {half * 1e3:.6g} mm, the spur "
                           "pair's (β = 0): no helix angle gives it")
-    beta = math.acos(c)
+    beta = math.atan2(math.sqrt((a - half) * (a + half)), half)  # acos(half/a), accurate as a → half
     if beta >= BETA_MAX:
         raise OutOfDomain(f"a = {a * 1e3:.6g} mm needs β = {math.degrees(beta):.6g}°, outside 0 ≤ β < 45°")
     return beta, a_initial
@@ -149,7 +149,7 @@ class BevelValues:
 
     delta: the pitch cone angles, tan δ₁ = sin Σ/(z₂/z₁ + cos Σ), δ₂ = Σ − δ₁; R = d/(2 sin δ) the
     cone distance; theta_a = atan(h_a/R), theta_f = atan(h_f/R) (the tip and root angles of a
-    contracting-clearance pair, the book's standard); d = mz, da = d + 2h_a cos δ,
+    contracting-clearance pair; the equal-clearance pair of GB 12369, θ_a1 = θ_f2, is not offered); d = mz, da = d + 2h_a cos δ,
     df = d − 2h_f cos δ; zv = z/cos δ (Tredgold: the back cone developed is a spur gear of radius
     r/cos δ)."""
 
