@@ -143,7 +143,7 @@ def test_the_generation_scale_is_chosen_or_stated_and_said(tmp_path):
 
 
 @pytest.mark.parametrize("z, x, n", [(8, 0.5, 8), (12, -0.5, 12), (15, 0.0, 8), (18, 0.5, 12), (25, -1.5, 8),
-                                     (40, 1.0, 12)])
+                                     (40, 1.0, 12), (14, 0.6, 8), (9, 0.6, 20), (20, 0.4, 10), (20, 0.8, 32)])
 def test_each_generated_thickness_is_within_the_error_it_states(tmp_path, z, x, n):
     f = tmp_path / "g.toml"
     f.write_text(f'find = ["s_pitch_generated", "sa_generated"]\n[gear]\nm_mm = 4\nz = {z}\nx = {x}\n'
