@@ -134,9 +134,7 @@ class TrainSolution:
 
     def speed(self, name: str) -> float:
         """ω of a member, or of the member carrying the gear ``name``."""
-        if name in self.omega:
-            return self.omega[name]
-        return self.omega[self.train.gear(name).member]
+        return self.omega[self.train.member_of(name)]
 
     def ratio(self, a: str, b: str) -> float:
         """i_ab = ω_a/ω_b."""
@@ -191,8 +189,7 @@ def converted_train_ratio(train: GearTrain, a: str, b: str, carrier: str) -> flo
     their central gears). Refused when it does not fix ω_a from ω_b (a or b outside that train).
     """
     index = {m.name: k for k, m in enumerate(train.members)}
-    ma = a if a in index else train.gear(a).member
-    mb = b if b in index else train.gear(b).member
+    ma, mb = train.member_of(a), train.member_of(b)
     rows = [(mesh_row(train, mesh, index), Fraction(0)) for mesh in train.meshes if train.mesh_frame(mesh) == carrier]
     rows += [({index[carrier]: Fraction(1)}, Fraction(0)), ({index[mb]: Fraction(1)}, Fraction(1))]
     red = reduce(rows, len(index))

@@ -113,6 +113,11 @@ class GearTrain:
         for name in (*self.fixed, *self.inputs):
             if name not in known:
                 raise OutOfDomain(f"no member {name!r} (fixed or input)")
+        for name, w in self.inputs.items():
+            if name in self.fixed:
+                raise OutOfDomain(f"member {name} is both fixed and an input")
+            if isinstance(w, bool) or not isinstance(w, (int, float)) or not math.isfinite(w):
+                raise OutOfDomain(f"the input speed of {name} is a finite number, not {w!r}")
 
     def member(self, name: str) -> Member:
         for m in self.members:
@@ -125,6 +130,12 @@ class GearTrain:
             if g.name == name:
                 return g
         raise KeyError(name)
+
+    def member_of(self, name: str) -> str:
+        """A member's name, or the name of the member carrying the gear ``name`` (members first)."""
+        if any(m.name == name for m in self.members):
+            return name
+        return self.gear(name).member
 
     @property
     def carriers(self) -> tuple[str, ...]:

@@ -49,30 +49,41 @@ def test_with_inputs_drives_the_same_train_otherwise():
     assert rpm(30.0) == pytest.approx(math.pi, rel=1e-15)
 
 
-@pytest.mark.parametrize("change, message", [
-    (dict(members=(Member("1"), Member("1"))), "member names repeat"),
-    (dict(gears=(Gear("1", 18, "1"), Gear("1", 36, "2"))), "gear names repeat"),
-    (dict(gears=(Gear("1", 0, "1"),)), "whole number ≥ 1"),
-    (dict(gears=(Gear("1", 18.5, "1"),)), "whole number ≥ 1"),
-    (dict(gears=(Gear("9", 18, "nine"),)), "no member 'nine'"),
-    (dict(members=(Member("1"), Member("2", "X"))), "its carrier 'X' is not another member"),
-    (dict(members=(Member("1", "2"), Member("2", "3"), Member("3"))), "is itself a planet"),
-    (dict(meshes=(Mesh("2", "2'"),)), "both gears on one member"),
-    (dict(meshes=(Mesh("1", "2", "spur"),)), "kind 'spur'"),
-    (dict(meshes=(Mesh("1", "2", "worm", 2),)), "sign 2 is not"),
-    (dict(fixed=("5",)), "no member '5'"),
-    (dict(inputs={"K": 1.0}), "no member 'K'"),
+M = (Member("1"), Member("2"))
+G = (Gear("1", 18, "1"), Gear("2", 36, "2"))
+
+
+@pytest.mark.parametrize("args, message", [
+    ((M + (Member("1"),), ()), "member names repeat"),
+    ((M, G + (Gear("1", 20, "2"),)), "gear names repeat"),
+    ((M, (Gear("1", 0, "1"),)), "whole number ≥ 1, not 0"),
+    ((M, (Gear("1", 18.5, "1"),)), "whole number ≥ 1, not 18.5"),
+    ((M, (Gear("9", 18, "nine"),)), "gear 9: no member 'nine'"),
+    ((M + (Member("3", "X"),), ()), "member 3: its carrier 'X' is not another member"),
+    ((M + (Member("3", "2"), Member("4", "3")), ()), "member 4: its carrier 3 is itself a planet"),
+    ((M, G + (Gear("2'", 20, "2"),), (Mesh("2", "2'"),)), "mesh 2–2': both gears on one member"),
+    ((M, G, (Mesh("1", "2", "spur"),)), "kind 'spur' is not one of"),
+    ((M, G, (Mesh("1", "2", "worm", 2),)), "sign 2 is not"),
+    ((M, G, (), ("5",)), "no member '5'"),
+    ((M, G, (), (), {"K": 1.0}), "no member 'K'"),
+    ((M, G, (), ("1",), {"1": 1.0}), "member 1 is both fixed and an input"),
+    ((M, G, (), (), {"1": math.inf}), "finite number, not inf"),
 ])
-def test_what_the_model_refuses(change, message):
-    base = dict(members=planetary().members, gears=planetary().gears, meshes=(), fixed=(), inputs={})
-    kept = {k: v for k, v in base.items() if k not in change or k in ("members", "gears")}
-    if "members" in change and "gears" not in change:
-        kept["gears"] = ()
+def test_what_the_model_refuses(args, message):
+    members, gears, *rest = args
+    meshes = rest[0] if rest else ()
     with pytest.raises(OutOfDomain, match=message):
-        GearTrain(**(kept | change))
+        GearTrain(members, gears, meshes, *rest[1:])
 
 
 def test_planets_of_two_carriers_do_not_mesh():
     with pytest.raises(OutOfDomain, match=r"planets of two carriers \(H1, H2\)"):
         GearTrain((Member("2", "H1"), Member("5", "H2"), Member("H1"), Member("H2")),
                   (Gear("2", 16, "2"), Gear("5", 16, "5")), (Mesh("2", "5"),))
+
+
+def test_a_name_is_a_member_first_then_the_member_of_a_gear():
+    t = planetary()
+    assert [t.member_of(n) for n in ("2", "2'", "H", "4")] == ["2", "2", "H", "4"]
+    with pytest.raises(KeyError):
+        t.member_of("9")
