@@ -123,13 +123,13 @@ class GearTrain:
         for m in self.members:
             if m.name == name:
                 return m
-        raise KeyError(name)
+        raise OutOfDomain(f"the train has no member {name!r}")
 
     def gear(self, name: str) -> Gear:
         for g in self.gears:
             if g.name == name:
                 return g
-        raise KeyError(name)
+        raise OutOfDomain(f"the train has no gear {name!r}")
 
     def member_of(self, name: str) -> str:
         """A member's name, or the name of the member carrying the gear ``name`` (members first)."""

@@ -85,5 +85,5 @@ def test_planets_of_two_carriers_do_not_mesh():
 def test_a_name_is_a_member_first_then_the_member_of_a_gear():
     t = planetary()
     assert [t.member_of(n) for n in ("2", "2'", "H", "4")] == ["2", "2", "H", "4"]
-    with pytest.raises(KeyError):
+    with pytest.raises(OutOfDomain, match="no gear '9'"):
         t.member_of("9")
