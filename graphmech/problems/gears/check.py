@@ -130,7 +130,7 @@ def panels_for(names: list[str], p: GearScene) -> tuple[str, ...]:
     want = set()
     for name in names:
         stem, _, _ = split_gear(name, p)
-        if p.generation is not None and name in gen.GENERATION_QUANTITIES:
+        if gen.answers(p.generation, name):
             want.add("generation")
         elif stem in ("W", "d_pin", "M"):
             want.add("measurement")
@@ -336,8 +336,7 @@ def _values(an: GearAnalysis, name: str) -> tuple[float, float, float | None, fl
     """(graphical, exact, the length on the drawing in mm or None, μ) of a name, in SI (angles in rad)."""
     p = an.problem
     s = p.gears.system
-    if an.generation is not None and name in gen.GENERATION_QUANTITIES \
-            and (name != "x" or an.generation.model.blank_speed is not None):  # else the shift's own row
+    if an.generation is not None and gen.answers(an.generation.model, name):
         return gen.generation_value(an, name)
     stem, label, r_k = split_gear(name, p)
     mu_t = an.scales.get("tooth")
@@ -377,6 +376,8 @@ def _values(an: GearAnalysis, name: str) -> tuple[float, float, float | None, fl
 
 #: The names of the shift's design: not lengths on a panel, each a construction or the book's rule.
 SHIFT_STEMS = ("x", "x_min", "x_min_exact", "z_min", "z_min_exact", "x_sum", "y", "delta_y")
+#: Those that are shift coefficients (lengths in modules; z_min is a tooth number).
+COEFFICIENT_STEMS = ("x", "x_min", "x_min_exact", "x_sum", "y", "delta_y")
 
 
 def _shift_value(an: GearAnalysis, stem: str, label: str) -> tuple[float, float, float | None, float]:
@@ -615,7 +616,7 @@ def _row(an: GearAnalysis, name: str) -> Row | None:
     if unit == "deg":
         g, e = math.degrees(g), math.degrees(e)
     # a shift coefficient is a length in modules: its error is relative to m where x is near 0
-    floor = 1.0 if split_gear(name, an.problem)[0] in SHIFT_STEMS[:3] + SHIFT_STEMS[5:] else 1e-300
+    floor = 1.0 if split_gear(name, an.problem)[0] in COEFFICIENT_STEMS else 1e-300
     row = Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), floor))
     return gen.estimate(an, row) if an.generation is not None else row
 

@@ -22,6 +22,8 @@ from typing import Any
 import numpy as np
 
 from graphmech.accuracy import DISCRETISATION
+from graphmech.drawing.lettering import LETTER, number, scale_text
+from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (
     ArcArrow,
     Arrow,
@@ -39,7 +41,9 @@ from graphmech.exact.profile_shift import x_min_book, z_min_book
 from graphmech.mechanisms.gear import RackGeneration, SpurGear, ToothSystem
 from graphmech.methods import involute as inv
 from graphmech.methods import rack_generation as rg
+from graphmech.problems.gears.figures import clipped_circle, dimension
 from graphmech.problems.reader import MISSING, Reader, page_size, type_name
+from graphmech.scales import round_scale
 
 #: problems/gears/check.py's GearAnalysis (not imported: check imports this module)
 GearAnalysis = Any
@@ -144,8 +148,8 @@ class GenerationAnalysis:
     halfway: rg.Generation | None = None
     notes: tuple[str, ...] = ()
 
-    def staggered(self) -> rg.Generation:
-        """A reference cut by REFINE·N positions (at least 2N), staggered so that none is one of the
+    def reference(self) -> rg.Generation:
+        """The reference cut by REFINE·N positions (at least 2N), staggered so that none is one of the
         construction's (a shared position would leave the same scallop where it cuts a circle)."""
         if self.finer is None:
             n = self.model.positions
@@ -186,8 +190,6 @@ def analyse_generation(an: GearAnalysis) -> None:
     if profile.undercut:
         x_book = x_min_book(s, g.z)
         x_exact = ex.undercut(s, g).x_min_exact
-        from graphmech.drawing.lettering import number
-
         below = (f"x = {number(g.x, 4)} < x_{{min}} = {number(x_book, 4)} (h_{{a}}*({z_min_book(s)} − z)/{z_min_book(s)})"
                  if g.x < x_book - 1e-12 else f"x = {number(g.x, 4)} ≥ the book's x_{{min}} = {number(x_book, 4)}")
         notes.append(f"{below}, exact limit h_{{a}}* − z·sin²α/2 = {number(x_exact, 4)}: undercut — the fillet cuts "
@@ -195,8 +197,6 @@ def analyse_generation(an: GearAnalysis) -> None:
     w, h = page_size(an.scene)
     tall = construction.L + (s.ha_star + s.c_star + 1.0) * s.m
     wide = 3.0 * math.pi * s.m * max(1.0, construction.L / construction.r) + 2.0 * s.m
-    from graphmech.scales import round_scale
-
     mu = an.scales.get("generation") or round_scale(max(tall / min(h - 80.0, ROOM_H_MOST), wide / (w - 60.0)))
     an.scales["generation"] = mu
     an.generation = GenerationAnalysis(s, g, model, values, r_c, construction, profile, mu, notes=tuple(notes))
@@ -221,6 +221,12 @@ def _within_work(an: GearAnalysis, s: ToothSystem, g: SpurGear, n: int) -> None:
     why = (f"{n} cutter positions per pitch on z = {g.z} (and the error estimate's {reference_positions(n)}) are too "
            f"many to cut in reasonable time; {said}")
     raise SceneError([(key, why)], an.scene.source)
+
+
+def answers(model: RackGeneration | None, name: str) -> bool:
+    """Whether the generation gives the row ``name``: its own names, and x only when a blank speed
+    found it (a stated or designed shift is the shift's own row, problems/gears/check.py)."""
+    return model is not None and name in GENERATION_QUANTITIES and (name != "x" or model.blank_speed is not None)
 
 
 def generation_value(an: GearAnalysis, stem: str) -> tuple[float, float, float | None, float] | None:
@@ -278,7 +284,7 @@ def estimate(an: GearAnalysis, row: Any) -> Any:
         k = phi / (2.0 * math.pi / (g.z * n))
         if abs(k - round(k)) < 1e-9:
             return row
-    other, half = ga.staggered(), ga.shifted()
+    other, half = ga.reference(), ga.shifted()
     rho = other.r if row.name == "s_pitch_generated" else other.ra
     t2, t_half = rg.thickness(other, rho), rg.thickness(half, rho)
     if t2 is None:
@@ -295,8 +301,6 @@ def estimate(an: GearAnalysis, row: Any) -> Any:
 # ------------------------------------------------------------------------------ the panel
 
 def _word(key: str, notation: str) -> str:
-    from graphmech.drawing.notation import word
-
     return word(key, notation, WORDS)
 
 
@@ -321,8 +325,6 @@ def generation_panel(ga: GenerationAnalysis, notation: str = "en") -> Panel:
     with tip and root circles, O and L to the datum line, the cutter's pitch line tangent at P, the
     cutter at its successive positions thin and at φ = 0 medium, the generated teeth bold, v and ω,
     the undercut marked where the fillet cuts the involute."""
-    from graphmech.drawing.lettering import LETTER, number, scale_text
-    from graphmech.problems.gears.figures import clipped_circle, dimension
 
     c = ga.construction
     s, g = ga.system, ga.gear
@@ -400,5 +402,5 @@ def generation_panel(ga: GenerationAnalysis, notation: str = "en") -> Panel:
                  (("l", mu),))
 
 
-__all__ = ["GENERATION_QUANTITIES", "GenerationAnalysis", "GenerationReading", "analyse_generation", "estimate",
-           "generation_panel", "generation_value", "read_generation"]
+__all__ = ["GENERATION_QUANTITIES", "GenerationAnalysis", "GenerationReading", "analyse_generation", "answers",
+           "estimate", "generation_panel", "generation_value", "read_generation"]

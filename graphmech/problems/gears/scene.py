@@ -13,6 +13,9 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from graphmech.errors import GraphmechError
+from graphmech.exact import gear as ex
+from graphmech.exact import profile_shift as ps
 from graphmech.mechanisms.gear import (
     MESHINGS,
     SPATIAL_MESHINGS,
@@ -351,9 +354,6 @@ def _choose_shifts(g: Reader, system: ToothSystem, shift: str, zs: tuple[int, ..
                    ) -> tuple[float | None, ...] | None:
     """The shifts a design word asks for, by the book's closed forms (the check then constructs
     each one again and sets the two side by side)."""
-    from graphmech.errors import GraphmechError
-    from graphmech.exact import profile_shift as ps
-
     try:
         if shift == "least":
             return tuple(ps.x_min_book(system, z) for z in zs)
@@ -381,10 +381,6 @@ def _choose_shifts(g: Reader, system: ToothSystem, shift: str, zs: tuple[int, ..
 def _shortened(system: ToothSystem, gears: tuple[SpurGear, ...], a_w: float | None) -> tuple[SpurGear, ...]:
     """An external pair with x₁ + x₂ ≠ 0: both tips shortened by Δy·m for the standard clearance at
     the pair's centre distance (stated, or where it meshes without backlash)."""
-    from graphmech.errors import GraphmechError
-    from graphmech.exact import gear as ex
-    from graphmech.exact import profile_shift as ps
-
     g1, g2 = gears
     if g1.x + g2.x == 0.0:
         return gears

@@ -124,9 +124,17 @@ def test_the_figure_has_the_generation_panel_and_is_byte_identical(tmp_path):
     assert "v = 0.002 m/s" in svg and "x_{min}" not in svg
 
 
-def test_the_committed_figures_are_the_scenes():
-    for f in CASES:
-        assert (ROOT / "figures" / f"{f.stem}.svg").exists()
+def test_the_committed_figures_are_the_scenes(tmp_path):
+    """Each committed figure is what its scene renders today, and draws the generation: its caption,
+    the cutter's pitch line, and the undercut where the case is undercut (1, 2 and 4)."""
+    for i, f in enumerate(CASES, start=1):
+        out = tmp_path / f"{f.stem}.svg"
+        assert run_cli("render", str(f), "-o", str(out))[0] == 0
+        committed = (ROOT / "figures" / f"{f.stem}.svg").read_bytes()
+        assert out.read_bytes() == committed, f.stem
+        text = committed.decode("utf-8")
+        assert "Generation by the rack cutter" in text and "cutter&#x27;s pitch line" in text.replace("'", "&#x27;")
+        assert (">undercut<" in text) == (i != 3), f.stem
 
 
 def test_the_generation_scale_is_chosen_or_stated_and_said(tmp_path):

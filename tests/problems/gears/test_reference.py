@@ -3,7 +3,9 @@ scenes: the construction and the closed form both against the bank's exact value
 printed answers within its flag."""
 from __future__ import annotations
 
+import html
 import math
+import tomllib
 
 import pytest
 
@@ -113,6 +115,13 @@ def test_each_issue18_problem_has_its_scenes_and_figures(problems, pid):
     scenes = sorted(SCENES.glob(f"{pid}.toml")) + sorted(SCENES.glob(f"{pid}-*.toml"))
     assert scenes and problems[pid]["area"] == "gear"
     for scene in scenes:
-        assert (SCENES.parent / f"{scene.stem}.svg").is_file(), scene.stem
+        svg = (SCENES.parent / f"{scene.stem}.svg").read_text(encoding="utf-8")
         doc = check_json(scene)
-        assert doc["quantities"], scene.stem
+        data = tomllib.loads(scene.read_text(encoding="utf-8"))
+        assert html.escape(data["title"], quote=False) in svg, scene.stem     # the figure is this scene's
+        # every value the scene asks for is found, and agrees with its closed form (or within its estimate)
+        asked = data.get("find", [])
+        names = [q["name"] for q in doc["quantities"]]
+        assert names == asked if asked else len(names) >= 10, scene.stem   # no find: the bank's default list
+        for q in doc["quantities"]:
+            assert q["rel_error"] <= (q["error_estimate"] if q["error_estimate"] is not None else 1e-9), q
