@@ -25,7 +25,13 @@ from graphmech.errors import NoSolution, OutOfDomain
 from graphmech.exact.efficiency import screw_efficiency
 from graphmech.exact.gear_train import Row, mesh_row, reduce, solve
 from graphmech.mechanisms.gear_train import GearTrain, Member
-from graphmech.mechanisms.train_dynamics import Body, MeshLosses, axis_cos, check_body, planet_arm
+from graphmech.mechanisms.train_dynamics import (
+    Body,
+    MeshLosses,
+    axis_cos,
+    check_body,
+    planet_arm,
+)
 
 
 def angular_parts(train: GearTrain, omega: Mapping[str, float], member: str,
@@ -216,7 +222,6 @@ def _drivers(train: GearTrain, omega: Mapping[str, float], flow: Flow) -> dict[i
 def _balance(train: GearTrain, omega: Mapping[str, float], losses: MeshLosses, src: str, snk: str,
              keep: Sequence[int], drivers: Mapping[int, str | None], *, ideal: bool = False) -> Flow:
     names = [m.name for m in train.members]
-    index = {name: i for i, name in enumerate(names)}
     n_mesh = len(keep)
     forces = {k: _forces(train, k, None if ideal else drivers[k],
                          1.0 if ideal else mesh_eta(train, losses, k, drivers[k])) for k in keep}

@@ -11,9 +11,16 @@ from hypothesis import strategies as st
 
 from graphmech.errors import NoSolution, OutOfDomain
 from graphmech.exact.gear_train import solve
-from graphmech.exact.train_dynamics import (angular_parts, converted_driver, converted_efficiency,
-                                            independent_meshes, power_flow, reduced_inertia, reduced_moment,
-                                            train_efficiency)
+from graphmech.exact.train_dynamics import (
+    angular_parts,
+    converted_driver,
+    converted_efficiency,
+    independent_meshes,
+    power_flow,
+    reduced_inertia,
+    reduced_moment,
+    train_efficiency,
+)
 from graphmech.mechanisms.gear_train import Gear, GearTrain, Member, Mesh
 from graphmech.mechanisms.train_dynamics import Body, MeshLosses, Worm
 

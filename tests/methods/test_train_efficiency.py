@@ -10,8 +10,15 @@ from graphmech.exact.gear_train import solve
 from graphmech.exact.train_dynamics import train_efficiency
 from graphmech.mechanisms.gear_train import Gear, GearTrain, Member, Mesh
 from graphmech.mechanisms.train_dynamics import MeshLosses, Worm
-from graphmech.methods.train_efficiency import (book_train_efficiency, converted_eta, planetary_efficiency,
-                                                self_locks, series, train_path, worm_efficiency)
+from graphmech.methods.train_efficiency import (
+    book_train_efficiency,
+    converted_eta,
+    planetary_efficiency,
+    self_locks,
+    series,
+    train_path,
+    worm_efficiency,
+)
 
 
 def planetary(z: tuple[int, int, int, int], ring: bool) -> GearTrain:

@@ -10,7 +10,11 @@ from graphmech.exact.gear_train import solve
 from graphmech.exact.train_dynamics import reduced_inertia, reduced_moment
 from graphmech.mechanisms.gear_train import Gear, GearTrain, Member, Mesh
 from graphmech.mechanisms.train_dynamics import Body
-from graphmech.methods.train_reduction import book_reduced_inertia, book_reduced_moment, ratios
+from graphmech.methods.train_reduction import (
+    book_reduced_inertia,
+    book_reduced_moment,
+    ratios,
+)
 
 
 def seed() -> GearTrain:

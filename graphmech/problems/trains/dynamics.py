@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 from graphmech.errors import GraphmechError, SceneError
 from graphmech.mechanisms.gear_train import GearTrain
@@ -23,7 +23,6 @@ from graphmech.problems.reader import MISSING, Reader, say
 
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
-    from graphmech.problems.trains.scene import TrainScene
 
 
 @dataclass(frozen=True)
@@ -70,6 +69,19 @@ class TrainDynamics:
     worms: tuple[WormEntry, ...] = ()
     has_dynamics: bool = False
     has_efficiency: bool = False
+
+
+class TrainTables(Protocol):
+    """What this part reads of a TrainScene (scene.py imports this module: no import back)."""
+
+    @property
+    def train(self) -> GearTrain: ...
+    @property
+    def module(self) -> float: ...
+    @property
+    def axes(self) -> Mapping[str, str]: ...
+    @property
+    def dynamics(self) -> TrainDynamics | None: ...
 
 
 # ----------------------------------------------------------------------------------- reading
@@ -247,8 +259,8 @@ def check_dynamics(dyn: TrainDynamics, train: GearTrain, problems: list[tuple[st
                      b.arm if b.arm is not None else a0)
         carrier = train.member(m).carrier
         if carrier is None and (b.mass or b.arm is not None or b.count != 1):
-            problems.append((b.path, f"member {m} turns about a fixed axis through its centre: its mass, arm "
-                                     "and count add nothing (give its inertia)"))
+            problems.append((b.path, (f"member {m} turns about a fixed axis through its centre: its mass, arm "
+                                      "and count add nothing (give its inertia)")))
     bodies = tuple(Body(m, s["inertia"], extras[m][0], s["mass"], extras[m][1], s["moment"], counts[m])
                    for m, s in summed.items())
     reduce_to = member(dyn.reduce_to, f"{path}.dynamics.reduce_to")
@@ -289,8 +301,8 @@ def check_dynamics(dyn: TrainDynamics, train: GearTrain, problems: list[tuple[st
             worms[train.meshes[k].a] = worm
         missing = [k for k in range(n) if k not in {w.mesh for w in wlist}]
         if etas is None and missing and dyn.eta_mesh is None:
-            problems.append((f"{path}.efficiency.eta_mesh", "missing: the efficiency of each mesh (a number, or "
-                                                            "one per [[train.mesh]])"))
+            problems.append((f"{path}.efficiency.eta_mesh",
+                             "missing: the efficiency of each mesh (a number, or one per [[train.mesh]])"))
         if etas is not None or not missing:
             losses = MeshLosses(etas or (1.0,) * n, tuple(wlist))
         if sink is None and dyn.sink is None:
@@ -327,7 +339,7 @@ def _rel(g: float, e: float) -> float:
     return abs(g - e) / max(abs(e), 1e-300)
 
 
-def dynamics_rows(scene: Scene[TrainScene], omega: Mapping[str, float],
+def dynamics_rows(scene: Scene[TrainTables], omega: Mapping[str, float],
                   names: Sequence[str] | None = None) -> list[Row]:
     """The rows of the names asked (default: those of ``scene.find`` that are this part's):
     graphical = the book's method at the speeds ``omega`` (rad/s, every member), exact = the
@@ -335,7 +347,10 @@ def dynamics_rows(scene: Scene[TrainScene], omega: Mapping[str, float],
     from graphmech.exact import train_dynamics as ex
     from graphmech.exact.gear_train import solve
     from graphmech.methods import train_efficiency as bk
-    from graphmech.methods.train_reduction import book_reduced_inertia, book_reduced_moment
+    from graphmech.methods.train_reduction import (
+        book_reduced_inertia,
+        book_reduced_moment,
+    )
 
     ts = scene.problem
     dyn = ts.dynamics
@@ -408,7 +423,7 @@ def dynamics_rows(scene: Scene[TrainScene], omega: Mapping[str, float],
     return rows
 
 
-def dynamics_lines(scene: Scene[TrainScene], rows: Sequence[Row] = ()) -> list[str]:
+def dynamics_lines(scene: Scene[TrainTables], rows: Sequence[Row] = ()) -> list[str]:
     """The sentences of this part: each worm's self-locking said, a train whose η ≤ 0 said."""
     from graphmech.methods.train_efficiency import self_locks, worm_efficiency
 
