@@ -55,7 +55,8 @@ class TrainScene:
     dynamics : the dynamics and efficiency tables (None: not posed; [train.dynamics] and
         [train.efficiency] are read by problems/trains/dynamics.py).
     coaxial_sets : gear of ``solved_z`` → the meshes that closed it, (z_central, z_planet, kind)
-        with None for the missing number (what exact.gear_train.coaxial_tooth_number takes).
+        with None for the missing number (what exact.gear_train.coaxial_tooth_number takes);
+        coaxial_equations the book's equation for it (``z3 = z1 + 2·z2 = 74``).
     coaxial_notes : planet sets (or coaxial pairs) whose arms differ with one module, said.
     """
 
@@ -74,6 +75,7 @@ class TrainScene:
     dynamics: TrainDynamics | None = None
     coaxial_notes: tuple[str, ...] = ()
     coaxial_sets: Mapping[str, tuple[tuple[int | None, int | None, str], ...]] = field(default_factory=dict)
+    coaxial_equations: Mapping[str, str] = field(default_factory=dict)
 
     @property
     def parallel(self) -> bool:
@@ -381,6 +383,7 @@ def _read_train(t: Reader) -> TrainScene | None:
     planet_of = {name: c for name, (c, _) in members.items()}
     solved: dict[str, int] = {}
     solved_sets: dict[str, tuple[tuple[int | None, int | None, str], ...]] = {}
+    equations: dict[str, str] = {}
     for g in coax_z:
         sets = _arm_sets(g, meshes, member_of, planet_of, zs, coaxial)
         if not sets:
@@ -388,7 +391,7 @@ def _read_train(t: Reader) -> TrainScene | None:
                       + (" (or a coaxial pair's countershaft)" if coaxial else ""))
             continue
         try:
-            solved[g], _ = solve_missing(g, sets[0])
+            solved[g], equations[g] = solve_missing(g, sets[0])
             solved_sets[g] = tuple((a.z_central, a.z_planet, a.kind) for a in sets[0])
         except GraphmechError as e:
             t.problem(f"{t.at('z')}.{g}", str(e))
@@ -416,7 +419,7 @@ def _read_train(t: Reader) -> TrainScene | None:
         return None
     axes = {n: ax for n, (_, ax) in members.items()}
     return TrainScene(train, module, m is not None, axes, sides, towards_d, hands, tuple(coaxial), solved, inputs,
-                      stated, None if poles is None else poles[0], None, tuple(notes), solved_sets)
+                      stated, None if poles is None else poles[0], None, tuple(notes), solved_sets, equations)
 
 
 def _all_arm_sets(meshes: Sequence[Mesh], member_of: Mapping[str, str], planet_of: Mapping[str, str | None],
