@@ -399,6 +399,11 @@ def _read_train(t: Reader) -> TrainScene | None:
         return None
     zfull = {g: (z if z is not None else solved[g]) for g, z in zs.items()}
     notes = [note for sets in _all_arm_sets(meshes, member_of, planet_of, zfull, coaxial) for note in _not_coaxial(sets)]
+    # the members in the order of their first gear in train.z (bare carriers last): the book's
+    # basic trains start from the lowest-numbered gear whatever order the members were declared in
+    first = {g: k for k, g in enumerate(zs)}
+    rank = {n: min((first[g] for g, mm in member_of.items() if mm == n), default=len(first)) for n in members}
+    members = dict(sorted(members.items(), key=lambda kv: rank[kv[0]]))
     try:
         train = GearTrain(tuple(Member(n, c) for n, (c, _) in members.items()),
                           tuple(Gear(g, z, member_of[g]) for g, z in zfull.items()), tuple(meshes), tuple(fixed),
