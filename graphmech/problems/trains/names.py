@@ -110,10 +110,9 @@ def known_names(train: GearTrain, solved_z: Mapping[str, int]) -> list[str]:
 
 
 def _suggest(text: str, train: GearTrain, solved_z: Mapping[str, int]) -> str:
-    import difflib
+    from graphmech.problems.reader import did_you_mean
 
-    close = difflib.get_close_matches(text, known_names(train, solved_z), n=3)
-    return f"; did you mean {', '.join(close)}?" if close else ""
+    return did_you_mean(text, known_names(train, solved_z))
 
 
 __all__ = ["Name", "UNITS", "known_names", "parse_name"]
