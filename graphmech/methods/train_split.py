@@ -185,7 +185,8 @@ def _path_ratios(train: GearTrain, frame: str | None, meshes: Sequence[int], roo
             ratio[there.member] = (r * m.relative_sign * Fraction(there.z, here.z), dn + (there.name,),
                                    dg + (here.name,))
             frontier.append(there.member)
-    same, contra = [], []
+    same: list[int] = []
+    contra: list[int] = []
     for k in meshes:
         if k in used:
             continue
@@ -266,18 +267,18 @@ def split(train: GearTrain) -> Split:
             forms[bt.root] = {bt.root: Fraction(1)}
             for r in bt.ratios:
                 forms[r.b] = {bt.root: 1 / r.value}  # n_x = n_root/i_root,x
-    for m in train.members:
-        if m.carrier is None and m.name not in forms:
-            forms[m.name] = {m.name: Fraction(1)}
+    for member in train.members:
+        if member.carrier is None and member.name not in forms:
+            forms[member.name] = {member.name: Fraction(1)}
     equations: list[Form] = []
     for bt in basics:
         if bt.carrier is None:
             continue
-        h = forms[bt.carrier]
+        nh = forms[bt.carrier]
         for r in bt.ratios:
             if r.b in bt.centrals:  # Willis: (n_r − n_H) − i^H_rb (n_b − n_H) = 0
-                equations.append(_combine((1, forms[bt.root]), (-r.value, forms[r.b]), (r.value - 1, h)))
-    for bt, k in loops:  # a loop whose ratios disagree holds its root to its frame (cannot turn)
+                equations.append(_combine((1, forms[bt.root]), (-r.value, forms[r.b]), (r.value - 1, nh)))
+    for bt, _k in loops:  # a loop whose ratios disagree holds its root to its frame (cannot turn)
         equations.append(_combine((1, forms[bt.root]), (-1, forms[bt.carrier] if bt.carrier else {})))
     equations += [dict(forms[f]) for f in train.fixed]
     unknowns = sorted({p for f in forms.values() for p in f}, key=order.__getitem__)

@@ -5,7 +5,13 @@ from __future__ import annotations
 import pytest
 
 from graphmech.errors import OutOfDomain
-from graphmech.methods.train_senses import arrow, bevel_sign, parallel_sign, senses, worm_sign
+from graphmech.methods.train_senses import (
+    arrow,
+    bevel_sign,
+    parallel_sign,
+    senses,
+    worm_sign,
+)
 
 
 def test_parallel_meshes_take_their_sign_from_the_kind_and_the_axes():

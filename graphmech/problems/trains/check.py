@@ -12,7 +12,7 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from graphmech.errors import SceneError
+from graphmech.errors import SceneError, UnknownName
 from graphmech.exact import gear_train as ex
 from graphmech.methods.train_senses import arrow
 from graphmech.methods.train_split import Split, SplitSolution, solve, split
@@ -68,7 +68,7 @@ def requested(scene: Scene[TrainScene], extra: Extra = ()) -> list[Name]:
     for key, name, _ in measured_entries(scene, extra):
         try:
             parse_name(name, p.train, p.solved_z, count)
-        except Exception as e:  # an UnknownName, said with its key
+        except UnknownName as e:  # said with its key
             problems.append((key, str(e)))
     if problems:
         raise SceneError(problems, scene.source)

@@ -71,7 +71,7 @@ def parse_name(text: str, train: GearTrain, solved_z: Mapping[str, int], count: 
         return Name(text, "z", text[1:].lstrip("_"))
     m = _RATIO.fullmatch(text)
     if m:
-        reads = []
+        reads: list[tuple[tuple[str, ...], Name]] = []
         for toks in _tokenisations(m.group(1), known):
             if len(toks) == 2 and train.member_of(toks[0]) != train.member_of(toks[1]):
                 reads.append((toks, Name(text, "i", toks[0], toks[1])))
@@ -115,4 +115,4 @@ def _suggest(text: str, train: GearTrain, solved_z: Mapping[str, int]) -> str:
     return did_you_mean(text, known_names(train, solved_z))
 
 
-__all__ = ["Name", "UNITS", "known_names", "parse_name"]
+__all__ = ["UNITS", "Name", "known_names", "parse_name"]

@@ -11,11 +11,32 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from graphmech.errors import GraphmechError, OutOfDomain
-from graphmech.mechanisms.gear_train import MESH_KINDS, PARALLEL_SIGN, Gear, GearTrain, Member, Mesh
+from graphmech.mechanisms.gear_train import (
+    MESH_KINDS,
+    PARALLEL_SIGN,
+    Gear,
+    GearTrain,
+    Member,
+    Mesh,
+)
 from graphmech.methods.train_coaxial import ArmMesh, arms, solve_missing
-from graphmech.methods.train_senses import DIRECTIONS, HANDS, bevel_sign, parallel_sign, worm_sign
+from graphmech.methods.train_senses import (
+    DIRECTIONS,
+    HANDS,
+    bevel_sign,
+    parallel_sign,
+    worm_sign,
+)
 from graphmech.methods.train_split import split
-from graphmech.problems.reader import MISSING, Reader, maybe, one_of, pole_distances, say, type_name
+from graphmech.problems.reader import (
+    MISSING,
+    Reader,
+    maybe,
+    one_of,
+    pole_distances,
+    say,
+    type_name,
+)
 
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
@@ -96,7 +117,14 @@ def parse_train_scene(data: Mapping[str, Any], source: str, top: Reader, order: 
     ('trains', -1, ('schematic', 'velocity'))
     """
     from graphmech.problems import tables
-    from graphmech.problems.reader import Scene, raise_sorted, read_header, read_measured, read_scales, read_tail
+    from graphmech.problems.reader import (
+        Scene,
+        raise_sorted,
+        read_header,
+        read_measured,
+        read_scales,
+        read_tail,
+    )
     from graphmech.problems.trains.names import parse_name
 
     title, show, find = read_header(top, TRAIN_SHOW_CHOICES, ())
@@ -324,8 +352,8 @@ def _read_train(t: Reader) -> TrainScene | None:
     inputs: dict[str, tuple[float, ...]] = {}
     listed = 0
     for ir in t.tables_at("input"):
-        n = ir.raw("member", required=True)
-        who = None if n is MISSING else member_name(n, ir.at("member"))
+        given_member = ir.raw("member", required=True)
+        who = None if given_member is MISSING else member_name(given_member, ir.at("member"))
         given = ir.quantity("speed", "omega", required=True)
         ir.finish()
         if given is None:

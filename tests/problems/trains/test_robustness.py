@@ -165,7 +165,7 @@ speed_rpm = 500
     q = values(doc)
     assert q["nH"]["graphical"] == q["nH"]["exact"] == 100.0  # i1H = 1 + 80/20
     assert q["dof"]["graphical"] == 1 and doc["train"]["redundant_meshes"] == 2  # the second and third planets repeat the first
-    code, out, _ = run_cli("check", str(tmp_path / "t.toml"))
+    _code, out, _ = run_cli("check", str(tmp_path / "t.toml"))
     assert "redundant meshes counted once: 2" in out
 
 

@@ -89,5 +89,6 @@ def test_coaxial_pairs_solve_and_check():
     assert s.problem.solved_z == {"3": 80, "5": 100}
     assert s.problem.coaxial == (("3", "5"),)
     winch = load_scene(SCENES / "train.ysj10_8_winch_reducer.toml").problem
-    assert winch.coaxial_notes == ("not coaxial with one module: (z1 + z2)/2 = 38, (z4 − z3)/2 = 28.5 module units "
-                                   "(the gears' modules must differ)",)
+    note = ("not coaxial with one module: (z1 + z2)/2 = 38, (z4 − z3)/2 = 28.5 module units "
+            "(the gears' modules must differ)")
+    assert winch.coaxial_notes == (note,)
