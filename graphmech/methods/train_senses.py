@@ -50,7 +50,7 @@ def _pitch_velocity(axis: str, towards: str, who: str) -> Vec:
     """û × t: the direction the pitch point of a positive speed moves; refused along the axis."""
     v = cross(direction(axis), direction(towards))
     if v == (0, 0, 0):
-        raise OutOfDomain(f"{towards!r} is along {who}'s axis, not towards its pitch point")
+        raise OutOfDomain(f'"{towards}" is along {who}\'s axis, not towards its pitch point')
     return v
 
 

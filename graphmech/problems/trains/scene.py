@@ -116,7 +116,6 @@ def parse_train_scene(data: Mapping[str, Any], source: str, top: Reader, order: 
     >>> s.kind, s.problem.train.meshes[0].relative_sign, s.show
     ('trains', -1, ('schematic', 'velocity'))
     """
-    from graphmech.problems import tables
     from graphmech.problems.reader import (
         Scene,
         raise_sorted,
@@ -129,11 +128,6 @@ def parse_train_scene(data: Mapping[str, Any], source: str, top: Reader, order: 
 
     title, show, find = read_header(top, TRAIN_SHOW_CHOICES, ())
     scales = read_scales(top, entries=(("l", "length"), ("v", "velocity"), ("omega", "omega")))
-    for key in data:
-        if key in tables() and key != "train":
-            top.used.add(key)
-            top.problem(key, "belongs to another kind of problem; this is a gear-train scene ([train]): put each in "
-                             "a scene of its own")
     t = top.table_at("train", required=True)
     problem = None if t is None else _read_train(t)
     if problem is not None:
@@ -299,6 +293,8 @@ def _read_train(t: Reader) -> TrainScene | None:
         missing = [g for g in (a, b) if g not in zs]
         if missing:
             mr.problem(mr.at("gears"), f"no gear {missing[0]} in train.z" + maybe(missing[0], zs))
+            continue
+        if a not in member_of or b not in member_of:  # its gear is on no member: said at train.z
             continue
         spatial = kind in ("bevel", "worm")
         if hand is not None and kind != "worm":

@@ -3,9 +3,20 @@
 said or solved."""
 from __future__ import annotations
 
-import pytest
+import math
+import tomllib
 
-from tests.conftest import assert_refused, check_json, run_cli, values
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from graphmech.errors import GraphmechError, SceneError
+from graphmech.problems import check
+from tests.conftest import SCENES, assert_refused, check_json, run_cli, values
+from tests.mutation import mutate, scene_or_refusal, toml_values
+
+train_values = toml_values(["external", "internal", "bevel", "worm", "right", "left", "coaxial", "+x", "-y", "+z",
+                            "H", "1", "2", "2'", "3", 0, 1, 2, -1, 100000, 1e300, 0.5], max_leaves=10)
 
 SIMPLE = """
 find = {find}
@@ -217,3 +228,22 @@ def test_an_unknown_name_gets_a_suggestion(tmp_path):
     text = SIMPLE.format(find='["n3", "omeg2"]', extra="", mesh="")
     err = assert_refused(run_cli("check", str(write(tmp_path, text))), "t.toml", "find[0]", "unknown gear-train quantity")
     assert "find[1]" in err or "(and 1 more)" in err
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.data())
+def test_any_mutation_of_a_bank_train_checks_or_is_refused_in_one_line(data):
+    stem = data.draw(st.sampled_from(sorted(p.stem for p in SCENES.glob("train.*.toml"))))
+    base = tomllib.loads((SCENES / f"{stem}.toml").read_text(encoding="utf-8"))
+    scene = scene_or_refusal(mutate(data, base, train_values, most=2))
+    if scene is None:
+        return
+    assert all(1 <= g.z <= 100_000 for g in scene.problem.train.gears)
+    try:
+        an, _, _, _ = check(scene)
+        for r in an.rows:
+            assert math.isfinite(r.graphical) and math.isfinite(r.exact)
+            assert r.rel_error <= 1e-9, r  # the split and the linear system agree whatever the train
+    except GraphmechError as err:
+        text = err.one_line(scene.source) if isinstance(err, SceneError) else str(err)
+        assert "\n" not in text and text
