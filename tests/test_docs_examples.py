@@ -49,6 +49,16 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
         for row in san.rows:
             assert row.graphical == row.exact, row
         return
+    if scene.kind == "trains":  # the book's split against the exact linear system
+        from graphmech.problems import check as check_train
+
+        tan, verdicts, _, _ = check_train(scene)
+        assert tan.rows
+        for row in tan.rows:
+            assert row.rel_error <= 1e-12, row
+        for verdict in verdicts:
+            assert verdict.ok, verdict
+        return
     if scene.kind == "gears":  # the constructions against the closed forms (spur or helical/bevel/worm: the kind decides)
         from graphmech.problems import check as check_kind
 
