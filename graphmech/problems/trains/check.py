@@ -17,6 +17,7 @@ from graphmech.exact import gear_train as ex
 from graphmech.methods.train_senses import arrow
 from graphmech.methods.train_split import Split, SplitSolution, solve, split
 from graphmech.problems.judging import Row, Verdict, judge_value, measured_entries
+from graphmech.problems.trains.dynamics import dynamics_lines, dynamics_rows, is_dynamics_name
 from graphmech.problems.trains.names import Name, parse_name
 from graphmech.scales import format_scale
 
@@ -66,13 +67,15 @@ def requested(scene: Scene[TrainScene], extra: Extra = ()) -> list[Name]:
                                  if m.name not in p.train.fixed and m.name not in p.input_values] + ["dof"]
     problems = []
     for key, name, _ in measured_entries(scene, extra):
+        if is_dynamics_name(name):
+            continue
         try:
             parse_name(name, p.train, p.solved_z, count)
         except UnknownName as e:  # said with its key
             problems.append((key, str(e)))
     if problems:
         raise SceneError(problems, scene.source)
-    return [parse_name(t, p.train, p.solved_z, count) for t in texts]
+    return [parse_name(t, p.train, p.solved_z, count) for t in texts if not is_dynamics_name(t)]
 
 
 def analyse(scene: Scene[TrainScene], extra: Extra = ()) -> TrainAnalysis:
@@ -88,6 +91,10 @@ def analyse(scene: Scene[TrainScene], extra: Extra = ()) -> TrainAnalysis:
     an.warnings += list(p.coaxial_notes)
     for n in names:
         an.rows += _rows(an, n)
+    asked = [t for t in scene.find if is_dynamics_name(t)]
+    if asked:  # reduced J and M at the book's speeds; efficiency by the converted train
+        book = {k: float(v) for k, v in an.solutions[0].speeds.items()}
+        an.rows += dynamics_rows(scene, book, asked)
     return an
 
 
@@ -182,13 +189,13 @@ def lines(an: TrainAnalysis) -> list[str]:
         out.append("a spatial train: its rows come from the book's equations (no velocity diagram)")
     if an.solutions:
         out += _senses(an)
-    return out
+    return out + dynamics_lines(an.scene, an.rows)
 
 
 def _senses(an: TrainAnalysis) -> list[str]:
     p = an.problem
     sol = an.solutions[0]
-    asked = [r.name for r in an.rows]
+    asked = [r.name for r in an.rows if not is_dynamics_name(r.name)]
     shown = []
     for n in (parse_name(t.split("[")[0], p.train, p.solved_z, len(an.solutions)) for t in asked):
         if n.what in ("n", "omega") and n.a is not None:

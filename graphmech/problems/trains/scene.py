@@ -28,6 +28,7 @@ from graphmech.methods.train_senses import (
     worm_sign,
 )
 from graphmech.methods.train_split import split
+from graphmech.problems.trains.dynamics import check_dynamics, is_dynamics_name, read_dynamics
 from graphmech.problems.reader import (
     MISSING,
     Reader,
@@ -133,6 +134,10 @@ def parse_train_scene(data: Mapping[str, Any], source: str, top: Reader, order: 
     if problem is not None:
         count = max((len(v) for v in problem.input_values.values()), default=1)
         for i, name in enumerate(find):
+            if is_dynamics_name(name):  # answered by [train.dynamics] / [train.efficiency] (their rows check it)
+                if problem.dynamics is None:
+                    top.problem(f"find[{i}]", f"{name} needs [train.dynamics] or [train.efficiency]")
+                continue
             try:
                 parse_name(name, problem.train, problem.solved_z, count)
             except GraphmechError as e:
@@ -399,6 +404,7 @@ def _read_train(t: Reader) -> TrainScene | None:
                 if got[0] is not None and got[1] is not None:
                     coaxial.append((got[0], got[1]))
     poles = pole_distances(t)
+    dyn = read_dynamics(t)
     t.finish()
     if len(t.problems) > bad:
         return None
@@ -446,9 +452,13 @@ def _read_train(t: Reader) -> TrainScene | None:
         t.problem(t.at("input"), f"the train has mobility {f} ({MOBILITY_WORDS.get(f, f'{f} inputs')}) but "
                                  f"{given_n} input{'' if given_n == 1 else 's'} {'is' if given_n == 1 else 'are'} given")
         return None
+    if dyn is not None:
+        check_dynamics(dyn, train, t.problems, t.path or "train")
+        if len(t.problems) > bad:
+            return None
     axes = {n: ax for n, (_, ax) in members.items()}
     return TrainScene(train, module, m is not None, axes, sides, towards_d, hands, tuple(coaxial), solved, inputs,
-                      stated, None if poles is None else poles[0], None, tuple(notes), solved_sets, equations)
+                      stated, None if poles is None else poles[0], dyn, tuple(notes), solved_sets, equations)
 
 
 def _all_arm_sets(meshes: Sequence[Mesh], member_of: Mapping[str, str], planet_of: Mapping[str, str | None],
