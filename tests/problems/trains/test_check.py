@@ -46,3 +46,87 @@ def test_omega_rows_and_measured_values(tmp_path):
     assert ok == {"omega2": True, "i12": False}
     code, _, _ = run_cli("check", str(p))
     assert code == 1
+
+
+DYNAMICS = """
+find = {find}
+[train]
+m_mm = 10
+fixed = ["3"]
+z = {{ "1" = 20, "2" = 40, "2'" = 20, "3" = 40 }}
+[[train.member]]
+name = "2"
+gears = ["2", "2'"]
+carrier = "H"
+[[train.member]]
+name = "H"
+gears = []
+[[train.mesh]]
+gears = ["1", "2"]
+[[train.mesh]]
+gears = ["2'", "3"]
+[[train.input]]
+member = "1"
+speed_rad_s = 100
+{tables}
+"""
+
+
+def test_dynamics_and_efficiency_rows_come_with_the_train_s(tmp_path):
+    """[train.dynamics] and [train.efficiency] read with the scene, their rows beside the speeds:
+    i_1H = 1 − (40·40)/(20·20) = −3, η = 1 − (1 − η^H)(i − 1)/i with η^H = 0.98² (two meshes)."""
+    p = tmp_path / "d.toml"
+    p.write_text(DYNAMICS.format(find='["nH", "J_red_1", "M_red_1", "eta_train"]', tables="""
+[train.dynamics]
+reduce_to = "1"
+[[train.dynamics.member]]
+name = "H"
+inertia_kgm2 = 0.18
+moment_Nm = 60
+[train.efficiency]
+eta_mesh = 0.98
+output = "H"
+"""), encoding="utf-8")
+    q = values(check_json(p))
+    assert list(q) == ["nH", "J_red_1", "M_red_1", "eta_train"]
+    assert q["J_red_1"]["exact"] == pytest.approx(0.18 / 9, rel=1e-14)
+    assert q["M_red_1"]["exact"] == pytest.approx(-20.0, rel=1e-14)
+    eta_h = 0.98 ** 2
+    assert q["eta_train"]["graphical"] == pytest.approx(1 - (1 - eta_h) * 4 / 3, rel=1e-14)
+    assert q["eta_train"]["rel_error"] < 1e-14
+
+
+def test_a_dynamics_name_without_its_table_is_refused_when_read(tmp_path):
+    p = tmp_path / "d.toml"
+    p.write_text(DYNAMICS.format(find='["nH", "eta_train"]', tables=""), encoding="utf-8")
+    assert run_cli("check", str(p)) == (2, "", f"{p.name}: find[1]: eta_train needs [train.dynamics] or [train.efficiency]\n")
+
+
+def test_a_self_locking_worm_is_said_under_the_table(tmp_path):
+    p = tmp_path / "w.toml"
+    p.write_text("""
+find = ["n2", "eta_worm_reverse_1"]
+[train]
+z = { "1" = 1, "2" = 40 }
+[[train.mesh]]
+gears = ["1", "2"]
+kind = "worm"
+hand = "right"
+sign = 1
+[[train.input]]
+member = "1"
+speed_rpm = 1440
+[train.efficiency]
+eta_mesh = 0.9
+output = "2"
+[[train.efficiency.worm]]
+q = 10
+f_v = 0.12
+""", encoding="utf-8")
+    an, _, _, lines = check(load_scene(p))
+    gamma = math.atan(0.1)
+    phi = math.atan(0.12)
+    assert an.rows[1].exact == pytest.approx(math.tan(gamma - phi) / math.tan(gamma), rel=1e-14)
+    assert an.rows[1].exact < 0
+    assert [ln for ln in lines if ln.startswith("self_locking")] == [
+        "self_locking: worm 1 self-locks: γ = 5.711° ≤ φ_v = 6.843°, the wheel cannot drive it (η′ = -0.1976)"]
