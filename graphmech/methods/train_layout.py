@@ -161,6 +161,10 @@ def _tangents(train: GearTrain, mesh: Mesh, k: int, axis: Mapping[str, XYZ], sid
     eb = axis[train.gear(mesh.b).member]
     if k in towards:
         ta, tb = direction(towards[k][0]), direction(towards[k][1])
+        for g, t, e in ((mesh.a, ta, ea), (mesh.b, tb, eb)):
+            if _dot(t, e) != 0.0:
+                raise OutOfDomain(f"mesh {prime(mesh.a)}–{prime(mesh.b)}: the direction toward the pitch point from "
+                                  f"{prime(g)}'s axis lies along that axis")
         return ta, tb
     if mesh.kind in ("external", "internal"):
         if abs(abs(_dot(ea, eb)) - 1.0) > 1e-12:
@@ -275,17 +279,17 @@ def layout(train: GearTrain, module: float, axes: Mapping[str, str] | None = Non
         return _add(d, e, -_dot(d, e))
 
     for a, b in same:
-        d = off_axis(b, origin[a])
+        d = off_axis(b, origin[a])  # the carrier's or the pair's axes, one line
         if math.sqrt(_dot(d, d)) > tol:
             raise NoSolution(f"{prime(a)} and {prime(b)} are not coaxial: their axes are {_mm(math.sqrt(_dot(d, d)))} "
                              "apart")
     for k, mesh in enumerate(train.meshes):
         ma, mb = train.gear(mesh.a).member, train.gear(mesh.b).member
-        q, p = through(k, ma)
-        d = off_axis(mb, p)
+        _, where = through(k, ma)  # where mesh k would put b's axis, from a's
+        d = off_axis(mb, where)
         if math.sqrt(_dot(d, d)) <= tol:
             continue
-        raise NoSolution(_not_closed(train, k, ma, mb, p, origin))
+        raise NoSolution(_not_closed(train, k, ma, mb, where, origin))
     pitch = {k: _add(_add(origin[train.gear(m.a).member], unsigned(train.gear(m.a).member), slot[m.a] * gap),
                      tangent[k][0], radius[m.a]) for k, m in enumerate(train.meshes)}
     return TrainLayout(train, module, gap, radius, axis, origin, slot, pitch, tangent, parallel)

@@ -184,6 +184,10 @@ def velocity_diagram(lay: TrainLayout, mu_l: float, mu_v: float, H: float,
         undrawn = next((n for n in names if n not in lines and points[n]), None)
         if undrawn is None:
             undrawn = next((n for n in names if n not in lines), None)
+        for s in shared:  # every point a line passes through, for drawing it across them all
+            for p in (s.a, s.b):
+                if p in lines:
+                    points[p].append((lines[p].x_at(s.y / mu_l), s.y / mu_l))
         lines = {n: VelocityLine(n, ln.slope, ln.x0, ln.y0, tuple(sorted(set(points[n]), key=lambda p: (p[1], p[0]))))
                  for n, ln in lines.items()}
         return lines, misclosure, undrawn
@@ -192,11 +196,11 @@ def velocity_diagram(lay: TrainLayout, mu_l: float, mu_v: float, H: float,
     lines, mis, undrawn = construct(trial)
     while undrawn is not None:  # a closed loop: one more member drawn by trial
         if not base_points[undrawn] and not any(undrawn in (s.a, s.b) for s in shared):
-            raise DegenerateConstruction(f"no mesh ties member {undrawn} to the inputs: its velocity line cannot be drawn")
+            raise DegenerateConstruction(f"the velocity line of {undrawn}", "no mesh ties it to the inputs")
         trial[undrawn] = 0.0
         lines, mis, undrawn = construct(trial)
         if len(trial) > len(names):
-            raise DegenerateConstruction("the velocity diagram does not close")
+            raise DegenerateConstruction("the velocity diagram", "it does not close")
     if trial:
         # false position: the misclosures are linear in the trial slopes; two trials per slope
         keys = list(trial)
@@ -207,7 +211,7 @@ def velocity_diagram(lay: TrainLayout, mu_l: float, mu_v: float, H: float,
             cols.append(np.array(m1) - base)
         A = np.array(cols).T
         if np.linalg.matrix_rank(A) < len(keys):
-            raise DegenerateConstruction("the trial lines do not close the loop: the train's speeds are not fixed")
+            raise DegenerateConstruction("the trial lines", "they do not close the loop: the train's speeds are not fixed")
         sol = np.linalg.lstsq(A, -base, rcond=None)[0]
         trial = {k: float(v) for k, v in zip(keys, sol)}
         lines, mis, _ = construct(trial)

@@ -82,18 +82,21 @@ def test_slots_share_a_stage_and_the_closed_differential_closes():
 
 def test_a_spatial_train_is_placed_from_its_towards():
     # worm 1 (axis +x, 2 starts) drives the wheel 2 (axis +z, 40 teeth) below it; 2′ a bevel pinion
-    # (20) on the wheel's shaft drives the bevel 3 (axis +y, 30)
+    # (20) on the wheel's shaft drives the bevel 3 (axis +y, 30) standing on top of it
     t = train({"1": None, "2": None, "3": None}, [("1", 2, "1"), ("2", 40, "2"), ("2'", 20, "2"), ("3", 30, "3")],
               [Mesh("1", "2", "worm", +1), Mesh("2'", "3", "bevel", -1)], inputs={"1": 1.0})
-    lay = layout(t, 1e-3, axes={"2": "+z", "3": "+y"}, towards={0: ("-y", "+y"), 1: ("+x", "-y")})
+    lay = layout(t, 1e-3, axes={"2": "+z", "3": "+y"}, towards={0: ("-y", "+y"), 1: ("+y", "+z")})
     assert lay.radius["1"] == pytest.approx(1e-3 * WORM_Q / 2) and not lay.parallel
     c2 = lay.centre("2")
     assert c2[:2] == pytest.approx((0.0, -(0.005 + 0.020)))  # the wheel's centre r1 + r2 below the worm
-    # the bevel 3's pitch circle touches 2′'s at P = centre(2′) + r2′·x̂
-    p = lay.pitch[1]
-    assert p == pytest.approx((lay.centre("2'")[0] + 0.010, lay.centre("2'")[1], lay.centre("2'")[2]))
-    c3 = lay.centre("3")
-    assert (c3[0], c3[1] - p[1]) == pytest.approx((p[0], 0.015))  # P − r3·(−ŷ): above P, on x = P's
+    # the bevels touch at P = centre(2′) + r2′·ŷ; 3's centre is P − r3·ẑ, its axis vertical through it
+    c2p, p, c3 = lay.centre("2'"), lay.pitch[1], lay.centre("3")
+    assert p == pytest.approx((c2p[0], c2p[1] + 0.010, c2p[2]))
+    assert c3 == pytest.approx((p[0], p[1], p[2] - 0.015))
+    # the same without towards: a bevel pair's defaults (t_a along b's axis, t_b along a's) agree
+    assert layout(t, 1e-3, axes={"2": "+z", "3": "+y"}, towards={0: ("-y", "+y")}).centre("3") == pytest.approx(c3)
+    with pytest.raises(OutOfDomain, match="from 3's axis lies along that axis"):
+        layout(t, 1e-3, axes={"2": "+z", "3": "+y"}, towards={1: ("+x", "-y")})
 
 
 def test_refusals():

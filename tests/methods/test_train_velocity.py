@@ -4,8 +4,6 @@ tests/exact/test_gear_train.py infers them; the sides of the meshes as the book'
 random chains and planetary trains; the spatial trains refused."""
 from __future__ import annotations
 
-import math
-
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
