@@ -63,7 +63,7 @@ TRAIN_WORDS: dict[str, tuple[str, str, str]] = {
 
 #: The paper sizes of the symbols, mm: the axial pitch of the slots, a gear's width, a ring's rim,
 #: a shaft's overhang past its last gear, the gap of a hollow shaft, a bearing's box.
-SLOT_MM, GEAR_W, RIM_T, OVERHANG, HOLLOW = 16.0, 3.0, 2.0, 9.0, 1.0
+SLOT_MM, GEAR_W, RIM_T, OVERHANG, HOLLOW = 16.0, 3.0, 2.0, 11.0, 1.0
 BEARING = (4.0, 3.0)
 #: Where a carrier's arm and a ring's web stand from their slot's middle (fractions of a slot).
 ARM_AT, WEB_AT = 0.3, 0.45
@@ -470,7 +470,7 @@ class _Drawer:
         gears = self.gears_of(m)
         if e is None:  # along ±z: a curved arrow, counter-clockwise for a positive speed toward the viewer
             c = self.p(self.lay.origin[m])
-            r = (self.R(gears[0]) if gears else 4.0) * 0.55
+            r = max([self.R(g) for g in gears], default=5.0) * 0.75  # clear of a smaller gear on it
             sweep = math.radians(70.0) * (1.0 if w * sense[2] > 0 else -1.0)
             arc = ArcArrow(c, r, math.radians(200.0) - sweep / 2, sweep, "given")
             self.items.append(arc)
@@ -487,6 +487,9 @@ class _Drawer:
             if g in self.rings:  # beside its web, halfway out on the side away from the planet
                 mid = _v(_v(c, (-e[1], e[0]), self._far_side(g) * self.R(g) * 0.6), e,
                          self.ring_side(g) * (WEB_AT * SLOT_MM + 2.5))
+            elif g in self.bevels:  # behind its back face, away from the apex
+                away = 1.0 if e[0] != 0.0 else -1.0  # the side away from its bearings' frame
+                mid = _v(_v(c, e, -self._apex(g) * 5.0), (-e[1], e[0]), away * self.R(g) * 0.5)
             else:  # beside the gear, halfway out on the side away from its mesh
                 mid = _v(_v(c, (-e[1], e[0]), self._far_side(g) * self.R(g) * 0.5), e, GEAR_W / 2 + 2.5)
         else:  # a bare carrier: beside its arm

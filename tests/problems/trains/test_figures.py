@@ -67,11 +67,12 @@ def chain() -> Scene[TrainScene]:
 
 def worm_bevel() -> Scene[TrainScene]:
     # worm 1 (axis +x, 2 starts, right-hand) drives the wheel 2 (axis +z, 40) below it; the bevel
-    # pinion 2′ (20) on the wheel's shaft drives the bevel 3 (axis +y, 30)
+    # pinion 2′ (20) on the wheel's shaft drives the bevel 3 (axis +y, 30) below its axis;
+    # the signs as the reader resolves them from the arrows (docs: the pitch points move together)
     t = train({"1": None, "2": None, "3": None}, [("1", 2, "1"), ("2", 40, "2"), ("2'", 20, "2"), ("3", 30, "3")],
-              [Mesh("1", "2", "worm", +1), Mesh("2'", "3", "bevel", -1)], inputs={"1": rpm(1450.0)})
+              [Mesh("1", "2", "worm", +1), Mesh("2'", "3", "bevel", +1)], inputs={"1": rpm(1450.0)})
     return scene(TrainScene(t, module=2e-3, axes={"1": "+x", "2": "+z", "3": "+y"},
-                            towards={0: ("-y", "+y"), 1: ("+y", "+z")}, hands={0: "right"}),
+                            towards={0: ("-y", "+y"), 1: ("-y", "+z")}, hands={0: "right"}),
                  "Worm and bevel train", ("n3",))
 
 
