@@ -139,6 +139,24 @@ def test_a_minus_x_axis_reverses_the_sense_read():
     assert abs(d.omega("4") + solve(t).omega["4"]) <= 1e-12 * abs(solve(t).omega["4"])
 
 
+@pytest.mark.parametrize("pid", ["hand_hoist_i15", "ysj10_4_worm_train", "ysj10_11_worm_differential"])
+def test_the_banks_spatial_trains_are_refused(pid):
+    # their worms (and ysj10_11's bevel differential) cross the axes: the book solves them by the
+    # equations and the arrows, not by the diagram (the topologies of tests/exact/test_gear_train.py)
+    worm = Mesh("3'", "4", "worm", +1)
+    t = {"hand_hoist_i15": train({"1": None, "3": None, "4": None}, [("1", 20, "1"), ("3'", 1, "3"), ("4", 40, "4")],
+                                 [("1", "3'"), worm], inputs={"1": 1.0}),
+         "ysj10_4_worm_train": train({"3": None, "4": None}, [("3'", 1, "3"), ("4", 40, "4")], [worm],
+                                     inputs={"3": 1.0}),
+         "ysj10_11_worm_differential": train({"2": None, "3": "H", "4": None, "H": None},
+                                             [("2'", 20, "2"), ("3", 20, "3"), ("4", 20, "4")],
+                                             [Mesh("2'", "3", "bevel", -1), Mesh("3", "4", "bevel", +1)],
+                                             inputs={"2": 1.0, "4": 1.0})}[pid]
+    axes = {"4": "+z"} if pid != "ysj10_11_worm_differential" else {"3": "+y"}
+    with pytest.raises(NotApplicable, match="axes are all parallel"):
+        velocity_diagram(layout(t, 1e-3, axes=axes), 0.001, 0.01, 20.0)
+
+
 def test_a_spatial_train_is_refused():
     t = train({"1": None, "2": None}, [("1", 1, "1"), ("2", 40, "2")], [Mesh("1", "2", "worm", +1)],
               inputs={"1": 1.0})

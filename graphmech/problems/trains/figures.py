@@ -599,8 +599,8 @@ def train_sheet(scene: Scene[TrainScene], footer: Footer) -> tuple[Sheet, list[s
     bad = [s for s in show if s not in ("schematic", "velocity")]
     if bad:
         raise OutOfDomain(f"unknown panel(s) {', '.join(map(repr, bad))}; use schematic, velocity")
+    lay0 = layout(train, p.module, p.axes, p.sides, p.towards, p.coaxial)  # a loop that does not close: said first
     sol = solve(train)
-    lay0 = layout(train, p.module, p.axes, p.sides, p.towards, p.coaxial)
     if "l" in scene.scales:
         mu_l = scene.scales["l"]
     else:

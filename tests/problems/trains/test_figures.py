@@ -16,11 +16,11 @@ from graphmech.drawing.primitives import (
     Polyline,
     Segment,
 )
-from graphmech.errors import OutOfDomain
+from graphmech.errors import NoSolution, OutOfDomain
 from graphmech.exact.gear_train import solve
 from graphmech.mechanisms.gear_train import Mesh, rpm
 from graphmech.methods.train_layout import layout
-from graphmech.problems.reader import Scene
+from graphmech.problems.reader import Page, Scene
 from graphmech.problems.trains.figures import (
     SLOT_MM,
     schematic,
@@ -29,6 +29,7 @@ from graphmech.problems.trains.figures import (
 )
 from graphmech.problems.trains.scene import TrainScene
 from graphmech.render.svg import render_svg
+from tests.conftest import reference_problem
 from tests.methods.test_train_velocity import (
     bank,
     closed_differential,
@@ -225,3 +226,21 @@ def test_the_svg_is_byte_identical_twice(name):
     b = render_svg(train_sheet(SCENES[name](), ("f",))[0], "gtest")
     assert a == b
     assert "<svg" in a and a.count("<line") > 10
+
+
+def test_captions_in_the_scenes_notation():
+    sc = conveyor()
+    sc = Scene(sc.source, sc.title, (), sc.find, {}, page=Page(notation="zh"), kind="trains", problem=sc.problem)
+    sheet, _ = train_sheet(sc, ())
+    assert [p.title for p in sheet.panels] == ["轮系运动简图", "速度图"]
+    assert sheet.panels[0].notes[1] == "轴向位置未按比例"
+
+
+def test_a_train_that_is_not_coaxial_at_one_module_is_refused():
+    # the bank's winch reducer (ysj10_8): z1 + z2 = 76 but z4 − z3 = 57 — its figure has two modules
+    i = reference_problem("train.ysj10_8_winch_reducer")["inputs"]
+    t = train({"1": None, "2": "7", "4": None, "7": None},
+              [("1", i["z1"], "1"), ("2", i["z2"], "2"), ("3", i["z3"], "2"), ("4", i["z4"], "4"),
+               ("7", i["z7"], "7")], [("1", "2"), ("3", "4", "internal")], ["7"], {"1": 1.0})
+    with pytest.raises(NoSolution, match="the planet 2–3 is not coaxial: arms 38 mm and 28.5 mm"):
+        train_sheet(scene(TrainScene(t, module=1e-3), "winch"), ())
