@@ -1,0 +1,246 @@
+"""The gear-train figures (graphmech/problems/trains/figures.py): the schematic in the book's
+symbols and the velocity diagram, for scenes built as TrainScene objects (the conveyor's planetary
+reducer, the electric screwdriver's two stages, the closed differential, an ordinary three-stage
+chain, a worm and bevel spatial train); what each panel holds, the arrows of rotation against the
+speeds' signs, the velocity diagram's ω against the exact solve, byte-identical output."""
+from __future__ import annotations
+
+import pytest
+
+from graphmech.drawing.primitives import (
+    ArcArrow,
+    Arrow,
+    Circle,
+    GuideLine,
+    Label,
+    Polyline,
+    Segment,
+)
+from graphmech.errors import NoSolution, OutOfDomain
+from graphmech.exact.gear_train import solve
+from graphmech.mechanisms.gear_train import Mesh, rpm
+from graphmech.methods.train_layout import layout
+from graphmech.problems.reader import Page, Scene
+from graphmech.problems.trains.figures import (
+    SLOT_MM,
+    schematic,
+    train_sheet,
+    train_velocity,
+)
+from graphmech.problems.trains.scene import TrainScene
+from graphmech.render.svg import render_svg
+from tests.conftest import reference_problem
+from tests.methods.test_train_velocity import (
+    bank,
+    closed_differential,
+    screwdriver,
+    train,
+)
+
+
+def scene(problem: TrainScene, title: str, find=(), show=(), scales=None) -> Scene[TrainScene]:
+    return Scene("t.toml", title, tuple(show), tuple(find), dict(scales or {}), kind="trains", problem=problem)
+
+
+def conveyor() -> Scene[TrainScene]:
+    t, _ = bank()["conveyor_planetary_n4"]
+    return scene(TrainScene(t, module=2e-3, module_stated=True, axes={m.name: "+x" for m in t.members},
+                            sides={0: 1, 1: 1, 2: 1}, solved_z={"3": 74}),
+                 "Conveyor planetary reducer", ("n4", "nH", "i14"))
+
+
+def screwdriver_scene() -> Scene[TrainScene]:
+    return scene(TrainScene(screwdriver(), module=0.5e-3), "Electric screwdriver", ("i1H2", "nH2"))
+
+
+def closed_differential_scene() -> Scene[TrainScene]:
+    return scene(TrainScene(closed_differential(), module=2e-3, sides={2: -1, 3: -1, 6: -1, 7: -1}),
+                 "Closed differential", ("n3", "n5"))
+
+
+def chain() -> Scene[TrainScene]:
+    # 1 (20) – 2 (40) | 2′ (18) – 3 (36) | 3′ (20) – 4 (50): three external stages on fixed axes
+    t = train({"1": None, "2": None, "3": None, "4": None},
+              [("1", 20, "1"), ("2", 40, "2"), ("2'", 18, "2"), ("3", 36, "3"), ("3'", 20, "3"), ("4", 50, "4")],
+              [("1", "2"), ("2'", "3"), ("3'", "4")], inputs={"1": rpm(960.0)})
+    return scene(TrainScene(t, module=2e-3, sides={2: -1}), "Three-stage reducer", ("i14", "n4"))
+
+
+def worm_bevel() -> Scene[TrainScene]:
+    # worm 1 (axis +x, 2 starts, right-hand) drives the wheel 2 (axis +z, 40) below it; the bevel
+    # pinion 2′ (20) on the wheel's shaft drives the bevel 3 (axis +y, 30) below its axis;
+    # the signs as the reader resolves them from the arrows (docs: the pitch points move together)
+    t = train({"1": None, "2": None, "3": None}, [("1", 2, "1"), ("2", 40, "2"), ("2'", 20, "2"), ("3", 30, "3")],
+              [Mesh("1", "2", "worm", +1), Mesh("2'", "3", "bevel", +1)], inputs={"1": rpm(1450.0)})
+    return scene(TrainScene(t, module=2e-3, axes={"1": "+x", "2": "+z", "3": "+y"},
+                            towards={0: ("-y", "+y"), 1: ("-y", "+z")}, hands={0: "right"}),
+                 "Worm and bevel train", ("n3",))
+
+
+SCENES = {"conveyor": conveyor, "screwdriver": screwdriver_scene, "closed_differential": closed_differential_scene,
+          "chain": chain, "worm_bevel": worm_bevel}
+
+
+def panels(sc):
+    sheet, warnings = train_sheet(sc, ("footer",))
+    return {p.name: p for p in sheet.panels}, warnings
+
+
+def labels(panel):
+    return [it.text for it in panel.items if isinstance(it, Label)]
+
+
+def arrow_agrees(a, w, axis):
+    """A straight arrow shows where the near side moves: ω·û × ẑ (down for +x, right for +y); a
+    curved one turns counter-clockwise for a positive speed toward the viewer."""
+    if isinstance(a, ArcArrow):
+        return (a.sweep > 0) == (w * axis[2] > 0)
+    d = (a.p1[0] - a.p0[0], a.p1[1] - a.p0[1])
+    want = (axis[1] * w, -axis[0] * w)  # (ω·û) × ẑ
+    return d[0] * want[0] + d[1] * want[1] > 0 and abs(d[0] * want[1] - d[1] * want[0]) < 1e-9
+
+
+@pytest.mark.parametrize("name", list(SCENES))
+def test_every_moving_member_has_its_arrow_of_rotation(name):
+    sc = SCENES[name]()
+    t = sc.problem.train
+    w = solve(t).omega
+    lay = layout(t, sc.problem.module, sc.problem.axes, sc.problem.sides, sc.problem.towards, sc.problem.coaxial)
+    sch = schematic(lay, 0.002, w, list(t.inputs))
+    moving = {m for m, v in w.items() if v != 0.0 and m not in t.fixed}
+    assert set(sch.arrows) == moving
+    for m, a in sch.arrows.items():
+        assert arrow_agrees(a, w[m], lay.axis[m]), m
+
+
+def test_an_arrow_follows_a_reversed_axis():
+    sc = conveyor()
+    t = sc.problem.train
+    w = solve(t).omega
+    plain = schematic(layout(t, 2e-3), 0.002, w).arrows["4"]
+    flipped = schematic(layout(t, 2e-3, axes={"4": "-x"}), 0.002, {**w, "4": -w["4"]}).arrows["4"]
+    assert isinstance(plain, Arrow) and isinstance(flipped, Arrow)
+    # the same motion, the speed read along −x: the same arrow
+    assert (plain.p1[1] - plain.p0[1]) == pytest.approx(flipped.p1[1] - flipped.p0[1]) and plain.p1[1] < plain.p0[1]
+
+
+def test_the_conveyors_sheet():
+    ps, warnings = panels(conveyor())
+    assert list(ps) == ["schematic", "velocity"] and warnings == []
+    sch, vel = ps["schematic"], ps["velocity"]
+    assert {"1", "2", "2′", "3", "4", "H"} <= set(labels(sch))
+    assert sch.notes[0] == "μ_{l} = 0.002 m/mm" and sch.scales == (("l", 0.002),)
+    # the fixed ring 3 is hatched to the frame at both rims; the input 1 in one bearing at the left,
+    # H and the hollow shaft of 4 in one each at the right: three bearings on the hatched frame
+    guides = [it for it in sch.items if isinstance(it, GuideLine)]
+    assert len(guides) == 2 + 3
+    # the gears: 1, 2, 2′ rectangles, the rings' rims (two each), the three bearings' boxes
+    closed = [it for it in sch.items if isinstance(it, Polyline) and it.closed]
+    assert len(closed) == 3 + 4 + 3
+    # the velocity diagram: every moving member's line labelled, the pitch points, the pole and H
+    assert {"1", "2", "4", "H", "O", "P_{12}", "P_{23}", "P_{2′4}"} <= set(labels(vel))
+    assert vel.notes[:3] == ("μ_{l} = 0.002 m/mm", "μ_{v} = 0.05 (m/s)/mm", "H = 10 mm, μ_{ω} = 2.5 (rad/s)/mm")
+    assert vel.notes[3] == "ℓ_{1} = 60.74 mm, ω_{1} = 151.8 rad/s; ℓ_{2} = −9.49 mm, ω_{2} = −23.73 rad/s"
+    assert vel.notes[4] == "ℓ_{4} = 0.2636 mm, ω_{4} = 0.659 rad/s; ℓ_{H} = 7.231 mm, ω_{H} = 18.08 rad/s"
+
+
+@pytest.mark.parametrize("name", ["conveyor", "screwdriver", "closed_differential", "chain"])
+def test_the_velocity_diagram_reads_the_exact_speeds(name):
+    sc = SCENES[name]()
+    t = sc.problem.train
+    lay = layout(t, sc.problem.module, sc.problem.axes, sc.problem.sides, sc.problem.towards, sc.problem.coaxial,
+                 gap=SLOT_MM * 0.002)
+    d = train_velocity(lay, sc, 0.002)
+    exact = solve(t).omega
+    top = max(abs(v) for v in exact.values())
+    assert max(abs(d.omega(m) - v) for m, v in exact.items()) <= 1e-9 * top
+    assert d.H >= 10.0 and d.mu_omega == pytest.approx(d.mu_v / (d.mu_l * d.H), rel=1e-15)
+
+
+def test_the_scenes_scales_and_pole_distance_are_kept():
+    sc = conveyor()
+    sc = Scene(sc.source, sc.title, sc.show, sc.find, {"l": 0.0025, "v": 0.1}, kind="trains",
+               problem=TrainScene(sc.problem.train, module=2e-3, pole_distance=25.0))
+    vel = panels(sc)[0]["velocity"]
+    assert vel.notes[:3] == ("μ_{l} = 0.0025 m/mm", "μ_{v} = 0.1 (m/s)/mm", "H = 25 mm, μ_{ω} = 1.6 (rad/s)/mm")
+    sc = Scene(sc.source, sc.title, ("velocity",), sc.find, {"l": 0.0025, "v": 0.1, "omega": 4.0}, kind="trains",
+               problem=TrainScene(sc.problem.train, module=2e-3))
+    ps, _ = panels(sc)
+    assert list(ps) == ["velocity"] and ps["velocity"].notes[2] == "H = 10 mm, μ_{ω} = 4 (rad/s)/mm"
+
+
+def test_the_closed_differential_says_its_trial_line():
+    vel = panels(closed_differential_scene())[0]["velocity"]
+    assert vel.notes[-1] == "the loop closed by false position (trial line 2)"
+    assert {"P_{12}", "P_{16}", "P_{3′4}", "P_{3′7}"} <= set(labels(vel))
+
+
+def test_the_screwdrivers_two_carriers():
+    sch = panels(screwdriver_scene())[0]["schematic"]
+    assert {"1", "2", "3", "4", "5", "6", "H1", "H2"} <= set(labels(sch))
+    # the two fixed rings hatched at both rims, the input and the output each in a bearing
+    assert len([it for it in sch.items if isinstance(it, GuideLine)]) == 4 + 2
+
+
+def test_the_chains_shafts_each_in_two_bearings():
+    sch = panels(chain())[0]["schematic"]
+    assert len([it for it in sch.items if isinstance(it, GuideLine)]) == 4 * 2
+    assert {"1", "2", "2′", "3", "3′", "4"} <= set(labels(sch))
+    # four gears' rectangles and eight bearings' boxes; the pitch points marked dash-dot
+    assert len([it for it in sch.items if isinstance(it, Polyline) and it.closed]) == 6 + 8
+    assert len([it for it in sch.items if isinstance(it, Segment) and it.dashdot]) == 3
+
+
+def test_a_spatial_train_has_the_schematic_only():
+    ps, warnings = panels(worm_bevel())
+    assert list(ps) == ["schematic"] and warnings == []
+    sc = worm_bevel()
+    sc = Scene(sc.source, sc.title, ("schematic", "velocity"), sc.find, {}, kind="trains", problem=sc.problem)
+    ps, warnings = panels(sc)
+    assert list(ps) == ["schematic"] and warnings == [
+        "the velocity diagram is drawn for trains whose axes are all parallel: not drawn for this spatial train"]
+    assert ps["schematic"].notes[-1] == "a spatial train: no velocity diagram (its axes are not parallel)"
+    sch = ps["schematic"]
+    # the worm: a box and five thread lines; the wheel and the bevel 2′ seen along their axis:
+    # circles; the bevel 3 a trapezoid
+    threads = [it for it in sch.items if isinstance(it, Segment) and it.role == "construction" and not it.dashdot]
+    assert len(threads) == 5
+    # a right-hand worm's near threads fall to the right: down as x grows
+    assert all((s.p1[0] - s.p0[0]) * (s.p1[1] - s.p0[1]) < 0 for s in threads)
+    assert len([it for it in sch.items if isinstance(it, Circle) and it.r > 5.0]) == 2
+    trapezoids = [it for it in sch.items if isinstance(it, Polyline) and it.closed and len(it.points) == 4
+                  and abs(abs(it.points[0][0] - it.points[3][0]) - abs(it.points[1][0] - it.points[2][0])) > 1.0]
+    assert len(trapezoids) == 1
+
+
+def test_unknown_panels_are_refused():
+    sc = conveyor()
+    sc = Scene(sc.source, sc.title, ("schematic", "polygon"), sc.find, {}, kind="trains", problem=sc.problem)
+    with pytest.raises(OutOfDomain, match="unknown panel"):
+        panels(sc)
+
+
+@pytest.mark.parametrize("name", list(SCENES))
+def test_the_svg_is_byte_identical_twice(name):
+    a = render_svg(train_sheet(SCENES[name](), ("f",))[0], "gtest")
+    b = render_svg(train_sheet(SCENES[name](), ("f",))[0], "gtest")
+    assert a == b
+    assert "<svg" in a and a.count("<line") > 10
+
+
+def test_captions_in_the_scenes_notation():
+    sc = conveyor()
+    sc = Scene(sc.source, sc.title, (), sc.find, {}, page=Page(notation="zh"), kind="trains", problem=sc.problem)
+    sheet, _ = train_sheet(sc, ())
+    assert [p.title for p in sheet.panels] == ["轮系运动简图", "速度图"]
+    assert sheet.panels[0].notes[1] == "轴向位置未按比例"
+
+
+def test_a_train_that_is_not_coaxial_at_one_module_is_refused():
+    # the bank's winch reducer (ysj10_8): z1 + z2 = 76 but z4 − z3 = 57 — its figure has two modules
+    i = reference_problem("train.ysj10_8_winch_reducer")["inputs"]
+    t = train({"1": None, "2": "7", "4": None, "7": None},
+              [("1", i["z1"], "1"), ("2", i["z2"], "2"), ("3", i["z3"], "2"), ("4", i["z4"], "4"),
+               ("7", i["z7"], "7")], [("1", "2"), ("3", "4", "internal")], ["7"], {"1": 1.0})
+    with pytest.raises(NoSolution, match="the planet 2–3 is not coaxial: arms 38 mm and 28.5 mm"):
+        train_sheet(scene(TrainScene(t, module=1e-3), "winch"), ())
