@@ -188,8 +188,15 @@ def _tangents(train: GearTrain, mesh: Mesh, k: int, axis: Mapping[str, XYZ], sid
 
 def layout(train: GearTrain, module: float, axes: Mapping[str, str] | None = None,
            sides: Mapping[int, int] | None = None, towards: Mapping[int, tuple[str, str]] | None = None,
-           coaxial: tuple[tuple[str, str], ...] = (), gap: float | None = None) -> TrainLayout:
+           coaxial: tuple[tuple[str, str], ...] = (), gap: float | None = None,
+           modules: Mapping[str, float] | None = None) -> TrainLayout:
     """Place every member's axis by walking the meshes (the carriers' and ``coaxial`` axes first).
+
+    ``modules`` gives a gear's own module where its stage has one (gear → m), else ``module``. A
+    parallel mesh whose members are both placed already closes a loop: its side is the one that
+    closes it (the sun–planet mesh of a planet set placed from the ring), so ``sides`` matter only
+    for the meshes that place a member. A spatial mesh's loop is drawn, not checked (a worm's
+    diameter here is a drawing's choice).
 
     Raises
     ------
@@ -204,7 +211,7 @@ def layout(train: GearTrain, module: float, axes: Mapping[str, str] | None = Non
     axes, sides, towards = axes or {}, sides or {}, towards or {}
     names = [m.name for m in train.members]
     axis = {n: direction(axes.get(n, "+x")) for n in names}
-    radius = {g.name: pitch_radius(train, g.name, module) for g in train.gears}
+    radius = {g.name: pitch_radius(train, g.name, (modules or {}).get(g.name, module)) for g in train.gears}
     slot = slots(train)
     big = max(radius.values(), default=module)
     gap = 0.8 * big if gap is None else gap
@@ -283,12 +290,22 @@ def layout(train: GearTrain, module: float, axes: Mapping[str, str] | None = Non
         if math.sqrt(_dot(d, d)) > tol:
             raise NoSolution(f"{prime(a)} and {prime(b)} are not coaxial: their axes are {_mm(math.sqrt(_dot(d, d)))} "
                              "apart")
-    for k, mesh in enumerate(train.meshes):
-        ma, mb = train.gear(mesh.a).member, train.gear(mesh.b).member
+    def closes(k: int, ma: str, mb: str) -> tuple[bool, XYZ]:
         _, where = through(k, ma)  # where mesh k would put b's axis, from a's
         d = off_axis(mb, where)
-        if math.sqrt(_dot(d, d)) <= tol:
+        return math.sqrt(_dot(d, d)) <= tol, where
+
+    for k, mesh in enumerate(train.meshes):
+        ma, mb = train.gear(mesh.a).member, train.gear(mesh.b).member
+        ok, where = closes(k, ma, mb)
+        if ok or mesh.kind not in ("external", "internal"):
             continue
+        if k not in towards:  # the other side of a's axis may close it
+            ta, tb = tangent[k]
+            tangent[k] = ((-ta[0], -ta[1], -ta[2]), (-tb[0], -tb[1], -tb[2]))
+            if closes(k, ma, mb)[0]:
+                continue
+            tangent[k] = (ta, tb)
         raise NoSolution(_not_closed(train, k, ma, mb, where, origin))
     pitch = {k: _add(_add(origin[train.gear(m.a).member], unsigned(train.gear(m.a).member), slot[m.a] * gap),
                      tangent[k][0], radius[m.a]) for k, m in enumerate(train.meshes)}

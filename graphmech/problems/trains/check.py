@@ -1,22 +1,28 @@
-"""Checking a gear-train scene: the book's solution against every mesh solved as one linear system.
+"""Checking a gear-train scene: the velocity diagram and the book's solution against every mesh
+solved as one linear system.
 
-The graphical column is the book's method for now (:mod:`graphmech.methods.train_split`: the
-split into basic trains, Willis' equation per carrier, the ordinary ratios, solved together);
-the exact column is :func:`graphmech.exact.gear_train.solve`, which shares none of it. The
-velocity diagram's lengths (drawn mm × μ) come in at one place, :func:`_graphical`. Only what
-``find`` asks is put in the table (by default every free member's speed and the mobility).
+The graphical column of a speed is its length on the velocity diagram's ω line × μω, a ratio the
+ratio of two lengths (:mod:`graphmech.problems.trains.diagram`, the diagram the sheet draws) —
+for a train whose axes are all parallel; a spatial train's (and the converted ratios, tooth
+numbers, mobility) come from the book's method (:mod:`graphmech.methods.train_split`: the split
+into basic trains, Willis' equation per carrier, the ordinary ratios, solved together). The exact
+column is :func:`graphmech.exact.gear_train.solve`, which shares none of it. Only what ``find``
+asks is put in the table (by default every free member's speed and the mobility).
 """
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
-from graphmech.errors import SceneError, UnknownName
+from graphmech.accuracy import percent
+from graphmech.errors import NoSolution, SceneError, UnknownName
 from graphmech.exact import gear_train as ex
 from graphmech.methods.train_senses import arrow
+from graphmech.methods.train_velocity import TrainVelocityDiagram
 from graphmech.methods.train_split import Split, SplitSolution, solve, split
 from graphmech.problems.judging import Row, Verdict, judge_value, measured_entries
+from graphmech.problems.trains.diagram import drawn
 from graphmech.problems.trains.dynamics import dynamics_lines, dynamics_rows, is_dynamics_name
 from graphmech.problems.trains.names import Name, parse_name
 from graphmech.scales import format_scale
@@ -43,6 +49,9 @@ class TrainAnalysis:
     warnings: list[str] = field(default_factory=list)
     scales: dict[str, float] = field(default_factory=dict)
     extra_measured: Extra = ()
+    diagrams: dict[int, TrainVelocityDiagram | None] = field(default_factory=dict)
+    #: row name → the book's value (the split's solution) of a row read off the velocity diagram
+    book: dict[str, float] = field(default_factory=dict)
 
     def scale_notes(self) -> list[str]:
         return [format_scale(k, v) for k, v in self.scales.items()]
@@ -91,6 +100,7 @@ def analyse(scene: Scene[TrainScene], extra: Extra = ()) -> TrainAnalysis:
     an.warnings += list(p.coaxial_notes)
     for n in names:
         an.rows += _rows(an, n)
+    _short_lengths(an)
     asked = [t for t in scene.find if is_dynamics_name(t)]
     if asked:  # reduced J and M at the book's speeds; efficiency by the converted train
         book = {k: float(v) for k, v in an.solutions[0].speeds.items()}
@@ -105,23 +115,69 @@ def _indices(an: TrainAnalysis, n: Name) -> list[int | None]:
     return [None] if len(an.solutions) == 1 else list(range(len(an.solutions)))
 
 
-def _graphical(an: TrainAnalysis, n: Name, j: int) -> tuple[float, float | None, float]:
-    """(value, drawn mm or None, μ) of a speed or ratio by the book's method.
+def _diagram(an: TrainAnalysis, j: int) -> TrainVelocityDiagram | None:
+    """The velocity diagram of solve j as the sheet draws it (None: a spatial train, or one whose
+    layout does not close — said once, and its rows are the book's equations)."""
+    if j not in an.diagrams:
+        d = None
+        if an.problem.parallel:
+            try:
+                d = drawn(an.scene, value_sets(an.problem)[j] if j else None).velocity
+            except NoSolution as e:
+                if not any(w.startswith("no velocity diagram") for w in an.warnings):
+                    an.warnings.append(f"no velocity diagram: {e}; the speeds are the book's equations'")
+        an.diagrams[j] = d
+    return an.diagrams[j]
 
-    The one place the velocity diagram comes in: once it is drawn (methods/train_velocity.py),
-    a parallel-axis train's speeds are its lengths × μ (drawn_mm, scale) instead of Willis'.
-    """
+
+def _graphical(an: TrainAnalysis, n: Name, j: int) -> tuple[float, float | None, float]:
+    """(value, drawn mm or None, μ) of a speed or ratio: read off the velocity diagram where the
+    train has one — a speed is its length ℓ on the ω line × μω (signed along the member's axis), a
+    ratio the ratio of two lengths — else by the book's equations (the split, Willis)."""
+    d = _diagram(an, j)
+    if d is not None and n.what in ("n", "omega", "i"):
+        ell = {m: d.sense[m] * d.lengths[m] for m in d.lengths}
+        if n.what in ("n", "omega"):
+            drawn_mm = ell[an.problem.train.member_of(n.a or "")]
+            mu = d.mu_omega * (RPM if n.what == "n" else 1.0)
+            return drawn_mm * mu, drawn_mm, mu
+        lb = ell[an.problem.train.member_of(n.b or "")]
+        if lb == 0.0:
+            raise NoSolution(f"{n.text} has no value: {n.b} is at rest")
+        return ell[an.problem.train.member_of(n.a or "")] / lb, None, 1.0
+    return _book(an, n, j), None, 1.0
+
+
+def _book(an: TrainAnalysis, n: Name, j: int) -> float:
+    """A speed or ratio by the book's equations (the split's solution)."""
     sol = an.solutions[j]
     if n.what == "n":
-        return sol.speed(n.a or "") * RPM, None, 1.0
+        return sol.speed(n.a or "") * RPM
     if n.what == "omega":
-        return sol.speed(n.a or ""), None, 1.0
+        return sol.speed(n.a or "")
     wb = sol.speed(n.b or "")
     if wb == 0.0:
-        from graphmech.errors import NoSolution
-
         raise NoSolution(f"{n.text} has no value: {n.b} is at rest")
-    return sol.speed(n.a or "") / wb, None, 1.0
+    return sol.speed(n.a or "") / wb
+
+
+#: A length on the ω line read within the drawing precision to worse than this fraction is flagged.
+SHORT_READING = 0.05
+
+
+def _short_lengths(an: TrainAnalysis) -> None:
+    """Flag the speeds whose length ℓ on the ω line is too short to read on paper (a slow output
+    beside a fast input at one pole distance: the method's limit), and say how to draw it longer."""
+    prec = an.scene.precision_mm
+    short = [r for r in an.rows if r.drawn_mm is not None and r.drawn_mm != 0.0 and prec / abs(r.drawn_mm) > SHORT_READING]
+    if not short:
+        return
+    an.rows = [replace(r, ill_conditioned=True) if r in short else r for r in an.rows]
+    said = ", ".join(f"{r.name} ({abs(r.drawn_mm or 0.0):.3g} mm, ±{percent(prec / abs(r.drawn_mm or 1.0))})"
+                     for r in short)
+    an.warnings.append(f"short lengths on the ω line, read at {prec:g} mm: {said}; a larger pole distance "
+                       "([train] pole_distance_mm or [scales] omega) draws them longer, and the fast members' "
+                       "longer still: one diagram cannot read a large ratio's both ends on paper")
 
 
 def _rows(an: TrainAnalysis, n: Name) -> list[Row]:
@@ -150,6 +206,8 @@ def _rows(an: TrainAnalysis, n: Name) -> list[Row]:
             e = sol.speed(n.a or "") * (RPM if n.what == "n" else 1.0)
             char = max(abs(w) for w in sol.omega.values()) * (RPM if n.what == "n" else 1.0)
         name = n.text if j is None or n.index is not None else f"{n.text}[{j}]"
+        if an.diagrams.get(k) is not None:
+            an.book[name] = _book(an, n, k)
         out.append(Row(name, n.unit, drawn, mu, g, e, abs(g - e) / max(abs(e), char, 1e-300)))
     return out
 

@@ -40,15 +40,15 @@ from graphmech.drawing.primitives import (
     Segment,
     Sheet,
 )
-from graphmech.errors import NotApplicable, OutOfDomain
+from graphmech.errors import OutOfDomain
 from graphmech.exact.gear_train import solve
 from graphmech.mechanisms.gear_train import GearTrain
-from graphmech.methods.train_layout import TrainLayout, layout, prime
-from graphmech.methods.train_velocity import TrainVelocityDiagram, velocity_diagram
+from graphmech.methods.train_layout import TrainLayout, prime
+from graphmech.methods.train_velocity import TrainVelocityDiagram
 from graphmech.problems.kind import Footer
 from graphmech.problems.reader import Scene, page_size
+from graphmech.problems.trains.diagram import SLOT_MM, drawn
 from graphmech.problems.trains.scene import TrainScene
-from graphmech.scales import round_scale, round_scale_below
 
 #: The train's words (laid out as graphmech.drawing.notation.WORDS: English, 中文, русский).
 TRAIN_WORDS: dict[str, tuple[str, str, str]] = {
@@ -61,16 +61,12 @@ TRAIN_WORDS: dict[str, tuple[str, str, str]] = {
                 "空间轮系：各轴不平行，不作速度图", "пространственная передача: план скоростей не строится"),
 }
 
-#: The paper sizes of the symbols, mm: the axial pitch of the slots, a gear's width, a ring's rim,
+#: The paper sizes of the symbols, mm (the axial pitch of the slots: diagram.SLOT_MM): a gear's width, a ring's rim,
 #: a shaft's overhang past its last gear, the gap of a hollow shaft, a bearing's box.
-SLOT_MM, GEAR_W, RIM_T, OVERHANG, HOLLOW = 16.0, 3.0, 2.0, 11.0, 1.0
+GEAR_W, RIM_T, OVERHANG, HOLLOW = 3.0, 2.0, 11.0, 1.0
 BEARING = (4.0, 3.0)
 #: Where a carrier's arm and a ring's web stand from their slot's middle (fractions of a slot).
 ARM_AT, WEB_AT = 0.3, 0.45
-#: The schematic's height and the velocity diagram's width on the paper, about, mm.
-SCHEMATIC_MM, VELOCITY_MM, OMEGA_MM = 80.0, 40.0, 40.0
-#: The shortest pole distance chosen, mm (a slow member's ℓ is then short: the method's limit).
-H_LEAST = 10.0
 #: A worm's half length in its radii.
 WORM_L = 2.2
 #: A rotation arrow's length, mm.
@@ -599,18 +595,9 @@ def train_sheet(scene: Scene[TrainScene], footer: Footer) -> tuple[Sheet, list[s
     bad = [s for s in show if s not in ("schematic", "velocity")]
     if bad:
         raise OutOfDomain(f"unknown panel(s) {', '.join(map(repr, bad))}; use schematic, velocity")
-    lay0 = layout(train, p.module, p.axes, p.sides, p.towards, p.coaxial)  # a loop that does not close: said first
+    dr = drawn(scene)  # a loop that does not close is said first
+    lay, mu_l = dr.layout, dr.mu_l
     sol = solve(train)
-    if "l" in scene.scales:
-        mu_l = scene.scales["l"]
-    else:
-        # the drawing's height: every gear's centre ± its radius (a spatial train: its width too)
-        cs = [(lay0.centre(g.name), lay0.radius[g.name]) for g in train.gears]
-        ext = max(q[1] + r for q, r in cs) - min(q[1] - r for q, r in cs)
-        if not lay0.parallel:
-            ext = max(ext, max(q[0] + r for q, r in cs) - min(q[0] - r for q, r in cs))
-        mu_l = round_scale(max(ext, 1e-9) / SCHEMATIC_MM)
-    lay = layout(train, p.module, p.axes, p.sides, p.towards, p.coaxial, gap=SLOT_MM * mu_l)
     panels: list[Panel] = []
     if "schematic" in show:
         sch = schematic(lay, mu_l, sol.omega, _exits(scene), p.hands)
@@ -619,8 +606,8 @@ def train_sheet(scene: Scene[TrainScene], footer: Footer) -> tuple[Sheet, list[s
             notes += (train_word("spatial", notation),)
         panels.append(Panel("schematic", train_word("schematic", notation), sch.items, notes, row=0,
                             scales=(("l", mu_l),)))
-    if "velocity" in show and lay.parallel:
-        d = train_velocity(lay, scene, mu_l)
+    if "velocity" in show and dr.velocity is not None:
+        d = dr.velocity
         panels.append(Panel("velocity", train_word("velocity", notation), tuple(velocity_items(d, lay)),
                             velocity_notes(d, train, notation), row=0, scales=(("l", mu_l), ("v", d.mu_v))))
     elif "velocity" in show and scene.show:
@@ -629,24 +616,5 @@ def train_sheet(scene: Scene[TrainScene], footer: Footer) -> tuple[Sheet, list[s
     return Sheet(scene.title, tuple(panels), page_size(scene), footer), warnings
 
 
-def train_velocity(lay: TrainLayout, scene: Scene[TrainScene], mu_l: float) -> TrainVelocityDiagram:
-    """The velocity diagram at the scene's scales (μv, then H from ``pole_distance`` or μω), else
-    chosen: the fastest pitch point about :data:`VELOCITY_MM` wide, the longest ℓ about
-    :data:`OMEGA_MM`."""
-    if not lay.parallel:
-        raise NotApplicable("the velocity diagram is drawn for trains whose axes are all parallel")
-    probe = velocity_diagram(lay, mu_l, 1.0, 1.0)
-    vmax = max([abs(ln.x_at(p[1])) for ln in probe.lines.values() for p in ln.points] + [1e-300])
-    mu_v = scene.scales.get("v") or round_scale(vmax / VELOCITY_MM)
-    if scene.problem.pole_distance is not None:
-        H = scene.problem.pole_distance
-    elif "omega" in scene.scales:
-        H = mu_v / (mu_l * scene.scales["omega"])
-    else:
-        smax = max(abs(ln.slope) for ln in probe.lines.values()) * 1.0 / mu_v
-        H = max(round_scale_below(OMEGA_MM / smax), H_LEAST) if smax > 0 else 20.0
-    return velocity_diagram(lay, mu_l, mu_v, H)
-
-
-__all__ = ["TRAIN_WORDS", "Schematic", "schematic", "train_sheet", "train_velocity", "train_word", "velocity_items",
+__all__ = ["TRAIN_WORDS", "Schematic", "schematic", "train_sheet", "train_word", "velocity_items",
            "velocity_notes"]

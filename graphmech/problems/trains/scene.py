@@ -98,6 +98,7 @@ class TrainScene:
     coaxial_notes: tuple[str, ...] = ()
     coaxial_sets: Mapping[str, tuple[tuple[int | None, int | None, str], ...]] = field(default_factory=dict)
     coaxial_equations: Mapping[str, str] = field(default_factory=dict)
+    gear_modules: Mapping[str, float] = field(default_factory=dict)
 
     @property
     def parallel(self) -> bool:
@@ -275,6 +276,7 @@ def _read_train(t: Reader) -> TrainScene | None:
     sides: dict[int, int] = {}
     towards_d: dict[int, tuple[str, str]] = {}
     hands: dict[int, str] = {}
+    gear_modules: dict[str, float] = {}
     items = t.tables_at("mesh")
     if not items and "mesh" not in t.table:
         t.problem(t.at("mesh"), "no [[train.mesh]]: a train needs its meshes")
@@ -285,6 +287,7 @@ def _read_train(t: Reader) -> TrainScene | None:
         side = mr.string("side", choices=("above", "below"))
         tw = mr.raw("towards")
         sign = mr.raw("sign")
+        mesh_m = mr.value("m", "length", required=False, positive=True)
         mr.finish()
         if pair is MISSING:
             continue
@@ -347,6 +350,17 @@ def _read_train(t: Reader) -> TrainScene | None:
         except OutOfDomain as e:
             mr.problem(mr.at("towards") if tw is not MISSING else mr.at("kind"), str(e))
             continue
+        if mesh_m is not None:  # the stage's module: both gears cut with it
+            if not MODULE_RANGE[0] <= mesh_m.si <= MODULE_RANGE[1]:
+                mr.problem(mesh_m.path, f"{mesh_m.text()} is no module (between {MODULE_RANGE[0] * 1e3:g} and "
+                                        f"{MODULE_RANGE[1] * 1e3:g} mm)")
+                continue
+            clash = [g for g in (a, b) if g in gear_modules and gear_modules[g] != mesh_m.si]
+            if clash:
+                mr.problem(mesh_m.path, f"gear {clash[0]} meshes elsewhere at m = {gear_modules[clash[0]] * 1e3:g} mm: "
+                                        "a gear has one module")
+                continue
+            gear_modules.update({a: mesh_m.si, b: mesh_m.si})
         meshes.append(Mesh(a, b, kind, s))  # type: ignore[arg-type]  # kind is one of MESH_KINDS
 
     # inputs
@@ -420,6 +434,11 @@ def _read_train(t: Reader) -> TrainScene | None:
             t.problem(f"{t.at('z')}.{g}", f'"coaxial" needs a planet set to close: gear {g} meshes no planet'
                       + (" (or a coaxial pair's countershaft)" if coaxial else ""))
             continue
+        stage_m = {gear_modules.get(a.central, module) for a in sets[0]}
+        if len(stage_m) > 1:  # the book's z3 = z1 + 2·z2 is the arms' equality in one module
+            t.problem(f"{t.at('z')}.{g}", f'"coaxial" solves with one module: the meshes of its planet set are cut '
+                                          f"at {' and '.join(f'{x * 1e3:g} mm' for x in sorted(stage_m))}")
+            continue
         try:
             solved[g], equations[g] = solve_missing(g, sets[0])
             solved_sets[g] = tuple((a.z_central, a.z_planet, a.kind) for a in sets[0])
@@ -428,7 +447,8 @@ def _read_train(t: Reader) -> TrainScene | None:
     if len(t.problems) > bad:
         return None
     zfull = {g: (z if z is not None else solved[g]) for g, z in zs.items()}
-    notes = [note for sets in _all_arm_sets(meshes, member_of, planet_of, zfull, coaxial) for note in _not_coaxial(sets)]
+    notes = [note for sets in _all_arm_sets(meshes, member_of, planet_of, zfull, coaxial)
+             for note in _not_coaxial(sets, {g: gear_modules.get(g, module) for g in zfull}, module)]
     # the members in the order of their first gear in train.z (bare carriers last): the book's
     # basic trains start from the lowest-numbered gear whatever order the members were declared in
     first = {g: k for k, g in enumerate(zs)}
@@ -458,7 +478,8 @@ def _read_train(t: Reader) -> TrainScene | None:
             return None
     axes = {n: ax for n, (_, ax) in members.items()}
     return TrainScene(train, module, m is not None, axes, sides, towards_d, hands, tuple(coaxial), solved, inputs,
-                      stated, None if poles is None else poles[0], dyn, tuple(notes), solved_sets, equations)
+                      stated, None if poles is None else poles[0], dyn, tuple(notes), solved_sets, equations,
+                      gear_modules)
 
 
 def _all_arm_sets(meshes: Sequence[Mesh], member_of: Mapping[str, str], planet_of: Mapping[str, str | None],
@@ -501,10 +522,18 @@ def _arm_sets(gear: str, meshes: Sequence[Mesh], member_of: Mapping[str, str],
             if any(gear in (a.central, a.planet) for a in s)]
 
 
-def _not_coaxial(arm_set: Sequence[ArmMesh]) -> list[str]:
-    """A line when the set's arms differ with one module (the book's modules then differ)."""
+def _not_coaxial(arm_set: Sequence[ArmMesh], module_of: Mapping[str, float], module: float) -> list[str]:
+    """A line when the set's arms differ: in module units with one module (the book's modules then
+    differ), in mm where the meshes state their modules."""
     values = arms(arm_set)
-    if len(set(values)) == 1:
+    ms = [module_of[a.central] for a in arm_set]
+    if len(set(ms)) == 1 and ms[0] == module:
+        if len(set(values)) == 1:
+            return []
+        said = ", ".join(f"{a.text()} = {float(v):g}" for a, v in zip(arm_set, values))
+        return [f"not coaxial with one module: {said} module units (the gears' modules must differ)"]
+    mm = [float(v) * m * 1e3 for v, m in zip(values, ms)]
+    if max(mm) - min(mm) <= 1e-9 * max(mm):
         return []
-    said = ", ".join(f"{a.text()} = {float(v):g}" for a, v in zip(arm_set, values))
-    return [f"not coaxial with one module: {said} module units (the gears' modules must differ)"]
+    said = ", ".join(f"{a.text()}·m = {x:g} mm" for a, x in zip(arm_set, mm))
+    return [f"not coaxial with the meshes' modules: {said}"]

@@ -5,10 +5,11 @@ check table reads — the numbers are those of the check's own split and solutio
 """
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from graphmech.problems.protocol import PHRASES as COMMON
-from graphmech.problems.protocol import Phrases, phrase, read_row
+from graphmech.problems.protocol import Phrases, num, phrase, read_row
 from graphmech.problems.trains.check import TrainAnalysis, analyse
 
 if TYPE_CHECKING:
@@ -35,6 +36,14 @@ PHRASES: Phrases = {
     "links": ("join them: {links}", "联立条件：{links}", "связи: {links}"),
     "fixed": ("{m} is fixed: n{m} = 0", "{m}固定：n{m} = 0", "{m} неподвижно: n{m} = 0"),
     "solve": ("solve the equations together", "联立求解", "решаем уравнения совместно"),
+    "diagram": ("by the velocity diagram (μl = {mu_l} m/mm, μv = {mu_v} (m/s)/mm): each member's velocities a line "
+                "through its axis and its pitch points; from the pole O at H = {H} mm the rays parallel to them cut "
+                "the ω line, ω = ℓ·μv/(μl·H) = ℓ × {mu_w} (rad/s)/mm",
+                "用速度图法（μl = {mu_l} m/mm，μv = {mu_v} (m/s)/mm）：各构件的速度线过其轴心和节点；自极点O作其平行线，"
+                "截距H = {H} mm处的ω线，ω = ℓ·μv/(μl·H) = ℓ × {mu_w} (rad/s)/mm",
+                "по плану скоростей (μl = {mu_l} м/мм, μv = {mu_v} (м/с)/мм): скорости звена — прямая через его ось и "
+                "полюсы зацепления; лучи из полюса O параллельно им отсекают на прямой ω на расстоянии H = {H} мм "
+                "отрезки ℓ, ω = ℓ·μv/(μl·H) = ℓ × {mu_w} (рад/с)/мм"),
 }
 
 
@@ -59,7 +68,13 @@ def protocol(an: TrainAnalysis) -> list[str]:
         out.append(phrase("links", nt, PHRASES, links="; ".join(sp.links)))
     out += [phrase("fixed", nt, PHRASES, m=m) for m in p.train.fixed]
     out.append(phrase("solve", nt, PHRASES))
-    out += [read_row(r, nt) for r in an.rows]
+    out += [read_row(replace(r, drawn_mm=None, graphical=an.book[r.name]) if r.name in an.book else r, nt)
+            for r in an.rows]
+    d = next((d for d in an.diagrams.values() if d is not None), None)
+    if d is not None and an.book:  # the graphical method, and what it reads
+        out.append(phrase("diagram", nt, PHRASES, mu_l=num(d.mu_l), mu_v=num(d.mu_v), H=num(d.H),
+                          mu_w=num(d.mu_omega)))
+        out += [read_row(r, nt) for r in an.rows if r.name in an.book]
     return out
 
 

@@ -15,7 +15,10 @@ def test_rows_and_lines_of_the_electric_screwdriver():
     an, verdicts, extras, lines = check(load_scene(SCENES / "train.electric_screwdriver.toml"))
     assert [r.name for r in an.rows] == ["i1H2", "nH2"]
     assert [r.unit for r in an.rows] == ["", "r/min"]
-    assert all(r.drawn_mm is None and r.rel_error < 1e-15 for r in an.rows)
+    # i1H2 a ratio of two lengths on the ω line, nH2 a length × μω (H2 is slow: 0.73 mm, flagged)
+    assert an.rows[0].drawn_mm is None and an.rows[0].rel_error < 1e-15
+    assert an.rows[1].drawn_mm == pytest.approx(69.47069943289226 / an.rows[1].scale, rel=1e-12)
+    assert an.rows[1].graphical == an.rows[1].drawn_mm * an.rows[1].scale and an.rows[1].ill_conditioned
     assert lines[0] == ("split: planetary 1-2-3-H1 (carrier H1) + planetary 4-5-6-H2 (carrier H2); joined by "
                         "n4 = nH1: member H1 is in 1-2-3-H1, 4-5-6-H2")
     assert lines[-1] == "sense: H2 turns the same way as the input 1"

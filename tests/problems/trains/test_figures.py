@@ -21,12 +21,8 @@ from graphmech.exact.gear_train import solve
 from graphmech.mechanisms.gear_train import Mesh, rpm
 from graphmech.methods.train_layout import layout
 from graphmech.problems.reader import Page, Scene
-from graphmech.problems.trains.figures import (
-    SLOT_MM,
-    schematic,
-    train_sheet,
-    train_velocity,
-)
+from graphmech.problems.trains.diagram import SLOT_MM, train_velocity
+from graphmech.problems.trains.figures import schematic, train_sheet
 from graphmech.problems.trains.scene import TrainScene
 from graphmech.render.svg import render_svg
 from tests.conftest import reference_problem

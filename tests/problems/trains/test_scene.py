@@ -3,6 +3,7 @@ arrows, the coaxial condition, list inputs, the stated mobility; refusals by key
 from __future__ import annotations
 
 import math
+import tomllib
 
 import pytest
 
@@ -88,7 +89,12 @@ def test_coaxial_pairs_solve_and_check():
     s = load_scene(SCENES / "train.closed_differential_n3_n5.toml")
     assert s.problem.solved_z == {"3": 80, "5": 100}
     assert s.problem.coaxial == (("3", "5"),)
-    winch = load_scene(SCENES / "train.ysj10_8_winch_reducer.toml").problem
+    text = (SCENES / "train.ysj10_8_winch_reducer.toml").read_text(encoding="utf-8")
+    assert load_scene(SCENES / "train.ysj10_8_winch_reducer.toml").problem.coaxial_notes == ()  # stage modules
+    one = tomllib.loads(text.replace("m_mm = 3\n", "").replace("m_mm = 4\n", ""))
     note = ("not coaxial with one module: (z1 + z2)/2 = 38, (z4 − z3)/2 = 28.5 module units "
             "(the gears' modules must differ)")
-    assert winch.coaxial_notes == (note,)
+    assert parse_scene(one, "w.toml").problem.coaxial_notes == (note,)
+    wrong = tomllib.loads(text.replace("m_mm = 4\n", "m_mm = 5\n"))
+    assert parse_scene(wrong, "w.toml").problem.coaxial_notes == (
+        "not coaxial with the meshes' modules: (z1 + z2)/2·m = 114 mm, (z4 − z3)/2·m = 142.5 mm",)

@@ -18,7 +18,11 @@ def test_the_closed_differential_as_the_book_solves_it():
     assert ("in the differential 1-2-2'-3-6-6'-5 (carrier 5), the converted train (carrier held): "
             "i^5_1,3 = (n1 − n5)/(n3 − n5) = −z2·z3/(z1·z2') = −8") in lines
     assert "in the ordinary train 3'-4-5-7: i3',5 = n3'/n5 = −z5/z3' = −5" in lines
-    assert lines[-2:] == ["n5 = 20 r/min", "n3 = −100 r/min"]
+    solved = lines.index("solve the equations together")
+    assert lines[solved + 4:solved + 6] == ["n5 = 20 r/min", "n3 = −100 r/min"]  # the book's values
+    assert lines[-3].startswith("by the velocity diagram (μl = 0.002 m/mm, μv = 0.05 (m/s)/mm)")
+    assert lines[-3].endswith("ω = ℓ·μv/(μl·H) = ℓ × 2.5 (rad/s)/mm")
+    assert lines[-2:] == ["read n5 = 0.8378 mm × 23.87 = 20 r/min", "read n3 = −4.189 mm × 23.87 = −100 r/min"]
 
 
 def test_other_notations():

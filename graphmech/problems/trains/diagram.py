@@ -1,0 +1,86 @@
+"""The geometry a gear-train scene is drawn with, shared by its figure and its check: the layout at
+the schematic's μl and the velocity diagram at μv and the pole distance H — stated, or chosen so
+that the drawing fits — so that the lengths the check reports are the ones on the sheet.
+"""
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from graphmech.errors import NotApplicable
+from graphmech.methods.train_layout import TrainLayout, layout
+from graphmech.methods.train_velocity import TrainVelocityDiagram, velocity_diagram
+from graphmech.problems.reader import Scene
+from graphmech.problems.trains.scene import TrainScene
+from graphmech.scales import round_scale, round_scale_below
+
+#: The axial pitch of the schematic's slots on the paper, mm.
+SLOT_MM = 16.0
+#: The schematic's height and the velocity diagram's width on the paper, about, mm.
+SCHEMATIC_MM, VELOCITY_MM, OMEGA_MM = 80.0, 40.0, 40.0
+#: The shortest pole distance chosen, mm (a slow member's ℓ is then short: the method's limit).
+H_LEAST = 10.0
+
+
+@dataclass(frozen=True)
+class Drawn:
+    """The layout at μl (m per drawing mm) and, for a parallel-axis train, the velocity diagram."""
+
+    layout: TrainLayout
+    mu_l: float
+    velocity: TrainVelocityDiagram | None
+
+
+def _layout(scene: Scene[TrainScene], inputs: Mapping[str, float] | None, gap: float | None) -> TrainLayout:
+    p = scene.problem
+    train = p.train if inputs is None else p.train.with_inputs(inputs)
+    return layout(train, p.module, p.axes, p.sides, p.towards, p.coaxial, gap=gap, modules=p.gear_modules)
+
+
+def drawn(scene: Scene[TrainScene], inputs: Mapping[str, float] | None = None) -> Drawn:
+    """The scene's layout and velocity diagram (None for a spatial train) at the scene's scales.
+
+    ``inputs`` (another value of a list input) draws the diagram again at the scales chosen for the
+    first value, so every row of one scene reads one μω. A loop that does not close (the coaxial
+    condition) raises NoSolution from the layout.
+    """
+    lay0 = _layout(scene, None, None)
+    if "l" in scene.scales:
+        mu_l = scene.scales["l"]
+    else:
+        # the drawing's height: every gear's centre ± its radius (a spatial train: its width too)
+        cs = [(lay0.centre(g.name), lay0.radius[g.name]) for g in lay0.train.gears]
+        ext = max(q[1] + r for q, r in cs) - min(q[1] - r for q, r in cs)
+        if not lay0.parallel:
+            ext = max(ext, max(q[0] + r for q, r in cs) - min(q[0] - r for q, r in cs))
+        mu_l = round_scale(max(ext, 1e-9) / SCHEMATIC_MM)
+    lay = _layout(scene, None, SLOT_MM * mu_l)
+    if not lay.parallel:
+        return Drawn(lay, mu_l, None)
+    d = train_velocity(lay, scene, mu_l)
+    if inputs is not None:
+        lay = _layout(scene, inputs, SLOT_MM * mu_l)
+        d = velocity_diagram(lay, mu_l, d.mu_v, d.H)
+    return Drawn(lay, mu_l, d)
+
+
+def train_velocity(lay: TrainLayout, scene: Scene[TrainScene], mu_l: float) -> TrainVelocityDiagram:
+    """The velocity diagram at the scene's scales (μv, then H from ``pole_distance`` or μω), else
+    chosen: the fastest pitch point about :data:`VELOCITY_MM` wide, the longest ℓ about
+    :data:`OMEGA_MM`."""
+    if not lay.parallel:
+        raise NotApplicable("the velocity diagram is drawn for trains whose axes are all parallel")
+    probe = velocity_diagram(lay, mu_l, 1.0, 1.0)
+    vmax = max([abs(ln.x_at(p[1])) for ln in probe.lines.values() for p in ln.points] + [1e-300])
+    mu_v = scene.scales.get("v") or round_scale(vmax / VELOCITY_MM)
+    if scene.problem.pole_distance is not None:
+        H = scene.problem.pole_distance
+    elif "omega" in scene.scales:
+        H = mu_v / (mu_l * scene.scales["omega"])
+    else:
+        smax = max(abs(ln.slope) for ln in probe.lines.values()) * 1.0 / mu_v
+        H = max(round_scale_below(OMEGA_MM / smax), H_LEAST) if smax > 0 else 20.0
+    return velocity_diagram(lay, mu_l, mu_v, H)
+
+
+__all__ = ["Drawn", "H_LEAST", "OMEGA_MM", "SCHEMATIC_MM", "SLOT_MM", "VELOCITY_MM", "drawn", "train_velocity"]
