@@ -357,7 +357,9 @@ class _Drawer:
             label_at = _v(c, (-e[1], e[0]), R + RIM_T)
         else:
             self.items.append(_rect(c, e, GEAR_W / 2, -R, R))
-            label_at = _v(c, (-e[1], e[0]), self._far_side(g) * R)
+            # at its far rim, unless a ring meshes there (a planet): then beside its face, halfway out
+            ring_far = any(g in (mesh.a, mesh.b) and self.rings & {mesh.a, mesh.b} for mesh in self.train.meshes)
+            label_at = _v(c, (-e[1], e[0]), self._far_side(g) * R * (0.5 if ring_far else 1.0))
         self.items.append(Label(prime(g), label_at, ((0.0, 1.0), (0.0, -1.0)), LETTER, italic=False))
 
     def _far_side(self, g: str) -> float:
@@ -435,6 +437,13 @@ class _Drawer:
                 continue
             p = self.p(self.lay.pitch[k])
             self.items.append(Segment(_v(p, e, -GEAR_W), _v(p, e, GEAR_W), "construction", dashdot=True))
+            pl = next((self.train.gear(g).member for g in (mesh.a, mesh.b)
+                       if self.mirrored(self.train.gear(g).member)), None)
+            if pl is not None:  # the mirrored planet's pitch point too
+                h = self.train.member(pl).carrier
+                assert h is not None
+                q = self.reflect(h, p)
+                self.items.append(Segment(_v(q, e, -GEAR_W), _v(q, e, GEAR_W), "construction", dashdot=True))
 
     # ------------------------------------------------------------------ planets and carriers
     def _planet(self, pl: str) -> None:
@@ -455,6 +464,49 @@ class _Drawer:
         mid = _v(self.at(pl, arm), _v(foot, self.at(pl, arm), -1.0), 0.5)
         if not any(isinstance(it, Label) and it.text == prime(h) for it in self.items):
             self.items.append(Label(prime(h), mid, ((0.0, 1.0), (0.0, -1.0)), LETTER, italic=False))
+        if self.mirrored(pl):
+            self._mirror_planet(pl, lo - (GEAR_W if arm > lo else 0.0), hi + (GEAR_W if arm < hi else 0.0), arm)
+
+    def mirrored(self, pl: str) -> bool:
+        """Whether the planet is drawn a second time across its carrier's axis, as the book draws
+        a planet set (one above, one below; the carrier a fork to both): unless the scene lists a
+        planet of the same carrier on that side already (the closed differential's copies)."""
+        h = self.train.member(pl).carrier
+        e = self.e2(pl)
+        if h is None or e is None or self.e2(h) != e:
+            return False
+        side = self._across(h, self.p(self.lay.origin[pl]))
+        if abs(side) < 1e-9:
+            return False
+        return not any(self._across(h, self.p(self.lay.origin[o])) * side < 0 for o in self.train.planets(h)
+                       if o != pl and self.e2(o) == e)
+
+    def _across(self, h: str, q: XY) -> float:
+        """The signed distance of a paper point from the carrier's axis line."""
+        e = self.e2(h)
+        assert e is not None
+        o = self.p(self.lay.origin[h])
+        return (q[0] - o[0]) * -e[1] + (q[1] - o[1]) * e[0]
+
+    def reflect(self, h: str, q: XY) -> XY:
+        """A paper point reflected across the carrier's axis line."""
+        e = self.e2(h)
+        assert e is not None
+        d = self._across(h, q)
+        return _v(q, (-e[1], e[0]), -2.0 * d)
+
+    def _mirror_planet(self, pl: str, lo: float, hi: float, arm: float) -> None:
+        """The planet's copy across the carrier's axis: its gears, its pin and the arm (no letters,
+        no arrow: it turns as the planet drawn above)."""
+        h = self.train.member(pl).carrier
+        assert h is not None
+        e = self.e2(pl)
+        assert e is not None
+        for g in self.gears_of(pl):
+            self.items.append(_rect(self.reflect(h, self.p(self.lay.centre(g))), e, GEAR_W / 2, -self.R(g), self.R(g)))
+        self.items.append(Segment(self.reflect(h, self.at(pl, lo)), self.reflect(h, self.at(pl, hi)), "given"))
+        foot = self.at(h, self.along(h, self.at(pl, arm)))
+        self.items.append(Segment(self.reflect(h, self.at(pl, arm)), foot, "given"))
 
     # ------------------------------------------------------------------ arrows of rotation
     def _arrow(self, m: str) -> None:
@@ -528,6 +580,7 @@ def velocity_items(d: TrainVelocityDiagram, lay: TrainLayout) -> list[Primitive]
             items.append(Label(name, (x, y), ((-1.0 if x > 0 else 1.0, 0.0),), LETTER))
         else:
             items.append(Label(name, (0.0, y), ((0.0, 1.0), (0.0, -1.0)), LETTER))
+    ends: dict[str, tuple[XY, XY, XY]] = {}
     for m, ln in d.lines.items():
         if m in train.fixed:
             continue
@@ -539,7 +592,22 @@ def velocity_items(d: TrainVelocityDiagram, lay: TrainLayout) -> list[Primitive]
         # past its extreme points by a few mm along itself
         a, b = _v((ln.x_at(y0), y0), t, -4.0), _v((ln.x_at(y1), y1), t, 4.0)
         items.append(Segment(a, b, "result"))
-        items.append(Label(prime(m), b, ((-t[0], -t[1]),), LETTER, italic=False))
+        ends[m] = (a, b, t)
+    # each line's name at the end of it farthest from the names already set and the other lines' ends
+    # (two lines that meet at one pitch point would otherwise stack their names there)
+    taken: list[XY] = []
+    for m, (a, b, t) in ends.items():
+        others = [q for o, (p0, p1, _) in ends.items() if o != m for q in (p0, p1)]
+
+        def room(q: XY, near: list[XY] = taken + others) -> float:
+            return min((math.dist(q, r) for r in near), default=math.inf)
+
+        back = (-t[0], -t[1])
+        cands = [(b, t), (a, back)] + [(_v(a, _v(b, a, -1.0), k), t) for k in (0.8, 0.2)]
+        # an end if it has room, else the point with the most
+        at, out = next((c for c in cands[:2] if room(c[0]) >= 6.0), max(cands, key=lambda c: room(c[0])))
+        taken.append(at)
+        items.append(Label(prime(m), at, ((-out[0], -out[1]),), LETTER, italic=False))
     # the pole, the ω line at H above it, the rays
     O = d.pole
     cuts = {m: d.cut(m) for m in d.lines}

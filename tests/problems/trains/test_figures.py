@@ -130,9 +130,10 @@ def test_the_conveyors_sheet():
     # H and the hollow shaft of 4 in one each at the right: three bearings on the hatched frame
     guides = [it for it in sch.items if isinstance(it, GuideLine)]
     assert len(guides) == 2 + 3
-    # the gears: 1, 2, 2′ rectangles, the rings' rims (two each), the three bearings' boxes
+    # the gears: 1, 2, 2′ rectangles and the planet 2–2′ again below the axis, the rings' rims (two
+    # each), the three bearings' boxes
     closed = [it for it in sch.items if isinstance(it, Polyline) and it.closed]
-    assert len(closed) == 3 + 4 + 3
+    assert len(closed) == 3 + 2 + 4 + 3
     # the velocity diagram: every moving member's line labelled, the pitch points, the pole and H
     assert {"1", "2", "4", "H", "O", "P_{12}", "P_{23}", "P_{2′4}"} <= set(labels(vel))
     assert vel.notes[:3] == ("μ_{l} = 0.002 m/mm", "μ_{v} = 0.05 (m/s)/mm", "H = 10 mm, μ_{ω} = 2.5 (rad/s)/mm")
@@ -240,3 +241,49 @@ def test_a_train_that_is_not_coaxial_at_one_module_is_refused():
                ("7", i["z7"], "7")], [("1", "2"), ("3", "4", "internal")], ["7"], {"1": 1.0})
     with pytest.raises(NoSolution, match="the planet 2–3 is not coaxial: arms 38 mm and 28.5 mm"):
         train_sheet(scene(TrainScene(t, module=1e-3), "winch"), ())
+
+
+@pytest.mark.parametrize("name", ["conveyor", "screwdriver", "closed_differential"])
+def test_a_planet_set_is_drawn_symmetric_about_its_carriers_axis(name):
+    # the book's planetary train: a planet above the central axis and its copy below, the carrier a
+    # fork to both; the copy has no letter and no arrow (it turns as the one above). The closed
+    # differential lists its copies itself (6–6′ below, 3′… above): nothing is added there.
+    sc = SCENES[name]()
+    t = sc.problem.train
+    w = solve(t).omega
+    lay = layout(t, sc.problem.module, sc.problem.axes, sc.problem.sides, sc.problem.towards, sc.problem.coaxial)
+    sch = schematic(lay, 0.002, w, list(t.inputs))
+    rects = [(round(sum(p[0] for p in r.points) / 4, 6), round(sum(p[1] for p in r.points) / 4, 6),
+              round(max(p[1] for p in r.points) - min(p[1] for p in r.points), 6))
+             for r in sch.items if isinstance(r, Polyline) and r.closed and len(r.points) == 4]
+    copies = 0
+    for g in t.gears:
+        h = t.member(g.member).carrier
+        if h is None:
+            continue
+        x, y = lay.centre(g.name)[0] / 0.002, lay.centre(g.name)[1] / 0.002
+        mirror = (round(x, 6), round(2 * lay.height(h) / 0.002 - y, 6), round(2 * lay.radius[g.name] / 0.002, 6))
+        copies += mirror in rects
+    n_planet_gears = len([g for g in t.gears if t.member(g.member).carrier is not None])
+    assert copies == n_planet_gears
+    # one rectangle per planet gear and one per copy: the scene's own copies are not drawn again
+    heights = {round(2 * lay.radius[g.name] / 0.002, 6) for g in t.gears if t.member(g.member).carrier is not None}
+    assert len([r for r in rects if r[2] in heights]) >= n_planet_gears
+    assert set(sch.arrows) == {m for m, v in w.items() if v != 0.0 and m not in t.fixed}
+    # a letter per gear and per carrier, none for a copy
+    assert len([it for it in sch.items if isinstance(it, Label)]) == len(t.gears) + len(t.carriers)
+
+@pytest.mark.parametrize("name", list(SCENES))
+def test_no_two_velocity_lines_are_named_at_one_point(name):
+    if name == "worm_bevel":
+        return
+    vel = panels(SCENES[name]())[0]["velocity"]
+    t = SCENES[name]().problem.train
+    members = {m.name for m in t.members} - set(t.fixed)
+    # the velocity lines' names come before the ω line's (which follow the pole "O")
+    names = [it for it in vel.items if isinstance(it, Label) and it.text.replace("′", "'") in members]
+    lines = names[:len(names) - len([n for n in names if n.anchor[1] == names[-1].anchor[1]])]
+    for i, a in enumerate(lines):
+        for b in lines[i + 1:]:
+            d = ((a.anchor[0] - b.anchor[0]) ** 2 + (a.anchor[1] - b.anchor[1]) ** 2) ** 0.5
+            assert d >= 5.0, (a.text, b.text, d)
