@@ -96,7 +96,7 @@ def arrow(axis: str, omega: float) -> str:
     or ``"ccw"``/``"cw"`` for an axis toward or away from the viewer; ``""`` at rest.
 
     >>> arrow("+x", 2.0), arrow("+x", -2.0), arrow("+z", 1.0), arrow("-y", 1.0)
-    ('-y', '+y', 'ccw', '+x')
+    ('-y', '+y', 'ccw', '-x')
     """
     if omega == 0.0:
         return ""
