@@ -317,8 +317,8 @@ def check_dynamics(dyn: TrainDynamics, train: GearTrain, problems: list[tuple[st
                 k = hits[0]
             gamma = w.gamma if w.gamma is not None else math.atan(train.gear(train.meshes[k].a).z / (w.q or 1.0))
             if not 0.0 < gamma < math.pi / 2:  # q = 1e-300 or 1e300: tan γ = z₁/q leaves double precision
-                problems.append((f"{w.path}.q", f"{w.q:g} gives a lead angle of {math.degrees(gamma):g}°: a lead "
-                                                "angle lies between 0° and 90°"))
+                problems.append((f"{w.path}.q", (f"{w.q:g} gives a lead angle of {math.degrees(gamma):g}°: a lead "
+                                                "angle lies between 0° and 90°")))
                 continue
             worm = Worm(k, gamma, w.phi_v)
             wlist.append(worm)

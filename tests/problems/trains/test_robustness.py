@@ -312,14 +312,14 @@ def _swap(text: str, old: str, new: str) -> str:
 HOSTILE = {
     # a planet held in the frame or driven (a KeyError in the split before)
     "planet fixed": (_swap(PLANETARY, 'fixed = ["3"]', 'fixed = ["3", "2"]'),
-                     "train.fixed[1]: member 2 is a planet of H: its axis moves with the carrier, it cannot be held "
-                     "in the frame"),
+                     ("train.fixed[1]: member 2 is a planet of H: its axis moves with the carrier, it cannot be held "
+                     "in the frame")),
     "planet driven": (_swap(PLANETARY, 'member = "1"', 'member = "2"'),
                       "train.input[0].member: member 2 is a planet of H: drive its carrier or a central gear"),
     # a planet meshing a gear on its own arm (an unsolvable converted train, said without a key before)
     "planet meshes its carrier's gear": (_swap(PLANETARY, 'carrier = "H"', 'carrier = "1"'),
-                                         "train.mesh[0].gears: gear 1 is on 2's own carrier 1: a planet meshes a gear "
-                                         "coaxial with its carrier, not one on its arm"),
+                                         ("train.mesh[0].gears: gear 1 is on 2's own carrier 1: a planet meshes a gear "
+                                         "coaxial with its carrier, not one on its arm")),
     "two gears mesh twice": (SIMPLE.format(find='["i12"]', extra="", mesh='[[train.mesh]]\ngears = ["2", "1"]\n'
                                                                          'kind = "internal"'),
                              "train.mesh[1].gears: gears 2 and 1 already mesh in train.mesh[0]"),
@@ -333,11 +333,11 @@ HOSTILE = {
                   "train.mesh: no [[train.mesh]]: a train needs its meshes"),
     # 1.7e308 r/min overflowed to inf in rad/s: "train: the input speed of 1 is a finite number, not inf"
     "an input beyond double precision": (_swap(PLANETARY, "speed_rpm = 100", "speed_rpm = 1.7e308"),
-                                         "train.input[0].speed_rpm: 1.7e+308 r/min is faster than the work limit of "
-                                         "1e+12 rad/s (the powers and reduced moments would leave double precision)"),
+                                         ("train.input[0].speed_rpm: 1.7e+308 r/min is faster than the work limit of "
+                                         "1e+12 rad/s (the powers and reduced moments would leave double precision)")),
     "a list input too fast": (_swap(PLANETARY, "speed_rpm = 100", "speed_rad_s = [1, 1e300]"),
-                              "train.input[0].speed_rad_s[1]: 1e+300 rad/s is faster than the work limit of 1e+12 "
-                              "rad/s (the powers and reduced moments would leave double precision)"),
+                              ("train.input[0].speed_rad_s[1]: 1e+300 rad/s is faster than the work limit of 1e+12 "
+                              "rad/s (the powers and reduced moments would leave double precision)")),
     "61 gears": (_chain(61), "train.z: too many gears (61 > 60, the work limit of a train)"),
     # a ratio to a member at rest: said at the name asked (no key before)
     "a ratio to the fixed member": (_swap(PLANETARY, 'find = ["nH"]', 'find = ["nH", "i13"]'),
@@ -349,26 +349,26 @@ HOSTILE = {
     "a worm's pitch point not between the axes": (
         SIMPLE.format(find='["i12"]', extra='[[train.member]]\nname = "2"\naxis = "+z"',
                       mesh='kind = "worm"\nhand = "right"\ntowards = ["+y", "+y"]'),
-        "train.mesh[0].towards: the pitch point lies between the axes: from wheel 2's axis toward +y, so from worm "
-        "1's toward the opposite, not +y"),
+        ("train.mesh[0].towards: the pitch point lies between the axes: from wheel 2's axis toward +y, so from worm "
+        "1's toward the opposite, not +y")),
     "a bevel pair on parallel axes": (
         SIMPLE.format(find='["i12"]', extra='[[train.member]]\nname = "2"\naxis = "-x"',
                       mesh='kind = "bevel"\ntowards = ["+y", "-y"]'),
-        "train.mesh[0].towards: a bevel pair's axes meet at an angle: 1 (+x) and 2 (-x) are parallel (an external "
-        "or internal mesh)"),
+        ("train.mesh[0].towards: a bevel pair's axes meet at an angle: 1 (+x) and 2 (-x) are parallel (an external "
+        "or internal mesh)")),
     # efficiency and dynamics tables beyond double precision (η = 1e-300 raised an OverflowError)
     "a mesh efficiency of 1e-300": (PLANETARY + '[train.efficiency]\neta_mesh = 1e-300\noutput = "H"\n',
-                                    "train.efficiency.eta_mesh: 1e-300 is below 0.01, the poorest mesh efficiency "
-                                    "read (such a mesh transmits nothing)"),
+                                    ("train.efficiency.eta_mesh: 1e-300 is below 0.01, the poorest mesh efficiency "
+                                    "read (such a mesh transmits nothing)")),
     "a worm's q of 1e-300": (WORM_EFF + "q = 1e-300\nf_v = 0.1\n",
-                             "train.efficiency.worm[0].q: 1e-300 gives a lead angle of 90°: a lead angle lies "
-                             "between 0° and 90°"),
+                             ("train.efficiency.worm[0].q: 1e-300 gives a lead angle of 90°: a lead angle lies "
+                             "between 0° and 90°")),
     "a worm's f_v of 1e300": (WORM_EFF + "q = 10\nf_v = 1e300\n",
-                              "train.efficiency.worm[0].f_v: 1e+300 makes the friction angle 90°: a friction angle "
-                              "lies in [0°, 90°)"),
+                              ("train.efficiency.worm[0].f_v: 1e+300 makes the friction angle 90°: a friction angle "
+                              "lies in [0°, 90°)")),
     "a moment of -1e308": (DYN + "moment_Nm = -1e308\n",
-                           "train.dynamics.member[0].moment_Nm: -1e+308 in SI units is beyond the work limit of 1e+15 "
-                           "(reduced through the train, it would leave double precision)"),
+                           ("train.dynamics.member[0].moment_Nm: -1e+308 in SI units is beyond the work limit of 1e+15 "
+                           "(reduced through the train, it would leave double precision)")),
 }
 
 
