@@ -249,8 +249,13 @@ def _balance(train: GearTrain, omega: Mapping[str, float], losses: MeshLosses, s
                          "(a train of mobility 1 is needed)")
     mesh_forces = {k: {m: c * lam for m, c in forces[k].items()} for k, lam in zip(keep, lams) if lam is not None}
     p_in = m_in * Fraction(omega[src])
-    eta = math.inf if p_in == 0 else float(1 / p_in)
-    return Flow(eta, float(m_in), dict(drivers), mesh_forces)
+    try:
+        eta = math.inf if p_in == 0 else float(1 / p_in)
+        m_in_f = float(m_in)
+    except OverflowError:  # the losses of many poor meshes compound beyond double precision
+        raise NoSolution(f"the input moment to drive {snk} is beyond double precision: the meshes' efficiencies "
+                         "compound to nothing") from None
+    return Flow(eta, m_in_f, dict(drivers), mesh_forces)
 
 
 def train_efficiency(train: GearTrain, omega: Mapping[str, float], losses: MeshLosses, source: str,

@@ -26,6 +26,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Literal
 
 from graphmech.errors import OutOfDomain
@@ -119,21 +120,27 @@ class GearTrain:
             if isinstance(w, bool) or not isinstance(w, (int, float)) or not math.isfinite(w):
                 raise OutOfDomain(f"the input speed of {name} is a finite number, not {w!r}")
 
+    @cached_property
+    def _by_name(self) -> tuple[dict[str, Member], dict[str, Gear]]:
+        # looked up once per mesh in every pass of the split and the exact solution: a linear
+        # search made a train of a few hundred members take seconds
+        return {m.name: m for m in self.members}, {g.name: g for g in self.gears}
+
     def member(self, name: str) -> Member:
-        for m in self.members:
-            if m.name == name:
-                return m
-        raise OutOfDomain(f"the train has no member {name!r}")
+        m = self._by_name[0].get(name)
+        if m is None:
+            raise OutOfDomain(f"the train has no member {name!r}")
+        return m
 
     def gear(self, name: str) -> Gear:
-        for g in self.gears:
-            if g.name == name:
-                return g
-        raise OutOfDomain(f"the train has no gear {name!r}")
+        g = self._by_name[1].get(name)
+        if g is None:
+            raise OutOfDomain(f"the train has no gear {name!r}")
+        return g
 
     def member_of(self, name: str) -> str:
         """A member's name, or the name of the member carrying the gear ``name`` (members first)."""
-        if any(m.name == name for m in self.members):
+        if name in self._by_name[0]:
             return name
         return self.gear(name).member
 

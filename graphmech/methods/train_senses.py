@@ -71,6 +71,9 @@ def bevel_sign(axis_a: str, axis_b: str, towards: tuple[str, str], a: str = "a",
     if cross(va, vb) != (0, 0, 0):
         raise OutOfDomain(f"the pitch points do not meet: from {towards[0]} of {a}'s axis and {towards[1]} of "
                           f"{b}'s axis they move across each other")
+    if cross(direction(axis_a), direction(axis_b)) == (0, 0, 0):
+        raise OutOfDomain(f"a bevel pair's axes meet at an angle: {a} ({axis_a}) and {b} ({axis_b}) are parallel "
+                          "(an external or internal mesh)")
     return 1 if dot(va, vb) > 0 else -1
 
 
@@ -87,6 +90,9 @@ def worm_sign(axis_worm: str, axis_wheel: str, towards: tuple[str, str], hand: s
     if d == 0:
         raise OutOfDomain(f"the pitch points do not meet: wheel {b}'s pitch point (from {towards[1]} of its axis) "
                           f"moves across worm {a}'s axis, not along it")
+    if direction(towards[0]) != tuple(-x for x in direction(towards[1])):  # on the axes' common perpendicular
+        raise OutOfDomain(f"the pitch point lies between the axes: from wheel {b}'s axis toward {towards[1]}, so from "
+                          f"worm {a}'s toward the opposite, not {towards[0]}")
     return 1 if along * d > 0 else -1
 
 

@@ -32,6 +32,8 @@ def test_bevel_pitch_points_move_together():
         bevel_sign("+x", "+y", ("+x", "+x"))
     with pytest.raises(OutOfDomain, match="do not meet"):
         bevel_sign("+x", "+y", ("+z", "+x"))
+    with pytest.raises(OutOfDomain, match=r"a bevel pair's axes meet at an angle: a \(\+x\) and b \(-x\) are parallel"):
+        bevel_sign("+x", "-x", ("+y", "-y"))  # the pitch points agree, but no bevel pair has parallel axes
 
 
 def test_the_worm_hand_rule():
@@ -39,7 +41,10 @@ def test_the_worm_hand_rule():
     # whose pitch point is below its axis (t = −y) moves along z × (−y) = +x when it turns +
     assert worm_sign("+x", "+z", ("+y", "-y"), "right") == -1
     assert worm_sign("+x", "+z", ("+y", "-y"), "left") == 1
-    assert worm_sign("+x", "+z", ("+y", "+y"), "right") == 1
+    assert worm_sign("+x", "+z", ("-y", "+y"), "right") == 1
+    with pytest.raises(OutOfDomain, match="the pitch point lies between the axes: from wheel b's axis toward "
+                                          r"\+y, so from worm a's toward the opposite, not \+y"):
+        worm_sign("+x", "+z", ("+y", "+y"), "right")  # both axes below the pitch point: the gears overlap
     with pytest.raises(OutOfDomain, match="along wheel b's axis"):
         worm_sign("+x", "+z", ("+y", "+z"), "right")
     with pytest.raises(OutOfDomain, match="do not meet"):

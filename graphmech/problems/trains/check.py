@@ -99,7 +99,12 @@ def analyse(scene: Scene[TrainScene], extra: Extra = ()) -> TrainAnalysis:
         an.exact.append(ex.solve(t))
     an.warnings += list(p.coaxial_notes)
     for n in names:
-        an.rows += _rows(an, n)
+        try:
+            an.rows += _rows(an, n)
+        except NoSolution as e:  # a ratio to a member at rest: said at the name asked
+            if n.text not in scene.find:
+                raise
+            raise SceneError([(f"find[{list(scene.find).index(n.text)}]", str(e))], scene.source) from None
     _short_lengths(an)
     asked = [t for t in scene.find if is_dynamics_name(t)]
     if asked:  # reduced J and M at the book's speeds; efficiency by the converted train

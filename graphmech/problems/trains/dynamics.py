@@ -87,10 +87,21 @@ class TrainTables(Protocol):
 # ----------------------------------------------------------------------------------- reading
 
 
+#: The largest inertia, mass, arm or moment read, in SI (the flywheel kind's bound).
+MAX_TABLE_SI = 1e15
+#: The poorest mesh efficiency read: below it a mesh transmits nothing, and a chain of such meshes
+#: compounds beyond double precision.
+MIN_ETA = 0.01
+
+
 def _eta(r: Reader, value: object, path: str) -> float | None:
     x = r.number(value, path)
     if x is not None and not 0.0 < x <= 1.0:
         r.problem(path, f"an efficiency lies in (0, 1], not {x:g}")
+        return None
+    if x is not None and x < MIN_ETA:
+        r.problem(path, f"{x:g} is below {MIN_ETA:g}, the poorest mesh efficiency read (such a mesh transmits "
+                        "nothing)")
         return None
     return x
 
@@ -124,6 +135,13 @@ def _read_body(m: Reader) -> BodyEntry | None:
     for key, v in (("inertia", inertia), ("inertia_transverse", transverse), ("mass", mass)):
         if v is not None and v < 0:
             m.problem(m.at(m.present(key) or key), "must be ≥ 0")
+            return None
+    for key, v in (("inertia", inertia), ("inertia_transverse", transverse), ("mass", mass), ("arm", arm),
+                   ("moment", moment)):
+        if v is not None and abs(v) > MAX_TABLE_SI:
+            m.problem(m.at(m.present(key) or key), f"{v:g} in SI units is beyond the work limit of "
+                                                   f"{MAX_TABLE_SI:g} (reduced through the train, it would leave "
+                                                   "double precision)")
             return None
     if arm is not None and not arm > 0:
         m.problem(m.at(m.present("arm") or "arm"), "must be > 0")
@@ -165,6 +183,8 @@ def _read_worm(w: Reader) -> WormEntry | None:
     elif f is not None:
         if f < 0:
             w.problem(w.at("f_v"), "must be ≥ 0")
+        elif not math.atan(f) < math.pi / 2:  # 1e300 gives 90° in double precision
+            w.problem(w.at("f_v"), f"{f:g} makes the friction angle 90°: a friction angle lies in [0°, 90°)")
         else:
             phi_v = math.atan(f)
     w.finish()
@@ -296,6 +316,10 @@ def check_dynamics(dyn: TrainDynamics, train: GearTrain, problems: list[tuple[st
                     continue
                 k = hits[0]
             gamma = w.gamma if w.gamma is not None else math.atan(train.gear(train.meshes[k].a).z / (w.q or 1.0))
+            if not 0.0 < gamma < math.pi / 2:  # q = 1e-300 or 1e300: tan γ = z₁/q leaves double precision
+                problems.append((f"{w.path}.q", (f"{w.q:g} gives a lead angle of {math.degrees(gamma):g}°: a lead "
+                                                "angle lies between 0° and 90°")))
+                continue
             worm = Worm(k, gamma, w.phi_v)
             wlist.append(worm)
             worms[train.meshes[k].a] = worm

@@ -53,6 +53,15 @@ MAX_Z = 100_000
 MODULE_RANGE = (1e-6, 10.0)
 #: The most values of a list input.
 MAX_LIST = 100
+#: The work limit: the most gears and meshes of one train (the book's largest has 12 gears). The
+#: exact elimination and the split grow with the cube of the members, the sheet's labels faster:
+#: 60 gears check in under a second and render in a few.
+MAX_GEARS = 60
+MAX_MESHES = 120
+#: The largest input speed, rad/s: beyond it the reduced moments and the powers leave double
+#: precision (ω², M·ω), and no machine turns so fast.
+MAX_SPEED = 1e12
+SPEED_UNITS = {"rpm": " r/min", "rad_s": " rad/s"}
 #: A mobility in words.
 MOBILITY_WORDS = {0: "it cannot move", 1: "planetary or ordinary: one input", 2: "a differential: two inputs"}
 
@@ -185,6 +194,9 @@ def _read_train(t: Reader) -> TrainScene | None:
                 zs[key] = value
         if not zt.table:
             zt.problem(zt.path, "no gears: give each gear's tooth number")
+        elif len(zt.table) > MAX_GEARS:
+            zt.problem(zt.path, f"too many gears ({len(zt.table)} > {MAX_GEARS}, the work limit of a train)")
+            return None
     module = 1e-3
     m = t.value("m", "length", required=False, positive=True)
     if m is not None and not MODULE_RANGE[0] <= m.si <= MODULE_RANGE[1]:
@@ -268,7 +280,12 @@ def _read_train(t: Reader) -> TrainScene | None:
         else:
             for i, v in enumerate(fv):
                 n = member_name(v, f"{t.at('fixed')}[{i}]")
-                if n is not None and n not in fixed:
+                if n is not None and members[n][0] is not None:
+                    t.problem(f"{t.at('fixed')}[{i}]", f"member {n} is a planet of {members[n][0]}: its axis moves "
+                                                       "with the carrier, it cannot be held in the frame")
+                elif n is not None and n in fixed:
+                    t.problem(f"{t.at('fixed')}[{i}]", f"member {n} is listed twice")
+                elif n is not None:
                     fixed.append(n)
 
     # meshes, their senses from the arrows
@@ -278,8 +295,16 @@ def _read_train(t: Reader) -> TrainScene | None:
     hands: dict[int, str] = {}
     gear_modules: dict[str, float] = {}
     items = t.tables_at("mesh")
-    if not items and "mesh" not in t.table:
+    if not items and (t.table.get("mesh", []) == []):
         t.problem(t.at("mesh"), "no [[train.mesh]]: a train needs its meshes")
+    elif len(items) > MAX_MESHES:
+        t.problem(t.at("mesh"), f"too many meshes ({len(items)} > {MAX_MESHES}, the work limit of a train)")
+        return None
+    if len(t.tables_at("member")) > MAX_GEARS:
+        t.problem(t.at("member"), f"too many members ({len(t.tables_at('member'))} > {MAX_GEARS}, the work limit "
+                                  "of a train)")
+        return None
+    meshed: dict[frozenset[str], int] = {}
     for k, mr in enumerate(items):
         pair = mr.raw("gears", required=True, hint='gears = ["1", "2"]')
         kind = mr.string("kind", choices=MESH_KINDS, default="external") or "external"
@@ -303,6 +328,16 @@ def _read_train(t: Reader) -> TrainScene | None:
             mr.problem(mr.at("gears"), f"no gear {missing[0]} in train.z" + maybe(missing[0], zs))
             continue
         if a not in member_of or b not in member_of:  # its gear is on no member: said at train.z
+            continue
+        if frozenset((a, b)) in meshed and a != b:  # two gears mesh once (identical planets are other gears)
+            mr.problem(mr.at("gears"), f"gears {a} and {b} already mesh in {t.at('mesh')}[{meshed[frozenset((a, b))]}]")
+            continue
+        meshed[frozenset((a, b))] = k
+        pa, pb = (members.get(member_of[g], (None, ""))[0] for g in (a, b))
+        if pa is not None and pa == member_of[b] or pb is not None and pb == member_of[a]:
+            planet, on = (a, b) if pa is not None and pa == member_of[b] else (b, a)
+            mr.problem(mr.at("gears"), f"gear {on} is on {member_of[planet]}'s own carrier {member_of[on]}: a planet "
+                                       "meshes a gear coaxial with its carrier, not one on its arm")
             continue
         spatial = kind in ("bevel", "worm")
         if hand is not None and kind != "worm":
@@ -390,7 +425,17 @@ def _read_train(t: Reader) -> TrainScene | None:
             values = None if x is None else [given.si(x)]
         if values is None or who is None:
             continue
-        if who in inputs:
+        raw = given.value if isinstance(given.value, list) else [given.value]
+        fast = next((i for i, v in enumerate(values) if not abs(v) <= MAX_SPEED), None)  # inf: an overflow of the unit
+        if fast is not None:
+            ir.problem(path + (f"[{fast}]" if isinstance(given.value, list) else ""),
+                       f"{float(raw[fast]):g}{SPEED_UNITS.get(given.key.removeprefix('speed_'), '')} is faster than the work limit of {MAX_SPEED:g} rad/s (the powers and "
+                       "reduced moments would leave double precision)")
+            continue
+        if members[who][0] is not None:
+            ir.problem(ir.at("member"), f"member {who} is a planet of {members[who][0]}: drive its carrier or a "
+                                        "central gear")
+        elif who in inputs:
             ir.problem(ir.at("member"), f"member {who} is driven twice")
         elif who in fixed:
             ir.problem(ir.at("member"), f"member {who} is fixed (train.fixed): it cannot be driven")
@@ -416,7 +461,12 @@ def _read_train(t: Reader) -> TrainScene | None:
                     continue
                 got = [member_name(x, f"{t.at('coaxial')}[{i}][{j}]") for j, x in enumerate(pv)]
                 if got[0] is not None and got[1] is not None:
-                    coaxial.append((got[0], got[1]))
+                    if got[0] == got[1]:
+                        t.problem(f"{t.at('coaxial')}[{i}]", f"a pair of two members, not {got[0]} twice")
+                    elif {got[0], got[1]} in [set(c) for c in coaxial]:
+                        t.problem(f"{t.at('coaxial')}[{i}]", f"{got[0]} and {got[1]} are listed twice")
+                    else:
+                        coaxial.append((got[0], got[1]))
     poles = pole_distances(t)
     dyn = read_dynamics(t)
     t.finish()

@@ -247,3 +247,150 @@ def test_any_mutation_of_a_bank_train_checks_or_is_refused_in_one_line(data):
     except GraphmechError as err:
         text = err.one_line(scene.source) if isinstance(err, SceneError) else str(err)
         assert "\n" not in text and text
+
+
+#: sun 1 – planet 2 on carrier H – ring 3 fixed: the hostile inputs below each change one thing.
+PLANETARY = """
+find = ["nH"]
+[train]
+fixed = ["3"]
+z = { "1" = 20, "2" = 30, "3" = 80 }
+[[train.member]]
+name = "2"
+carrier = "H"
+[[train.member]]
+name = "H"
+gears = []
+[[train.mesh]]
+gears = ["1", "2"]
+[[train.mesh]]
+gears = ["2", "3"]
+kind = "internal"
+[[train.input]]
+member = "1"
+speed_rpm = 100
+"""
+WORM_EFF = """
+find = ["eta_train"]
+[train]
+z = { "1" = 1, "2" = 40 }
+[[train.member]]
+name = "2"
+axis = "+z"
+[[train.mesh]]
+gears = ["1", "2"]
+kind = "worm"
+hand = "right"
+towards = ["+y", "-y"]
+[[train.input]]
+member = "1"
+speed_rpm = 1450
+[train.efficiency]
+eta_mesh = 0.9
+output = "2"
+[[train.efficiency.worm]]
+"""
+DYN = PLANETARY + """
+[train.dynamics]
+reduce_to = "1"
+[[train.dynamics.member]]
+name = "H"
+"""
+
+
+def _chain(n: int) -> str:
+    z = ", ".join(f'"{i}" = 20' for i in range(1, n + 1))
+    meshes = "".join(f'[[train.mesh]]\ngears = ["{i}", "{i + 1}"]\n' for i in range(1, n))
+    return f'[train]\nz = {{ {z} }}\n{meshes}[[train.input]]\nmember = "1"\nspeed_rpm = 100\n'
+
+
+def _swap(text: str, old: str, new: str) -> str:
+    assert old in text, old
+    return text.replace(old, new, 1)
+
+
+HOSTILE = {
+    # a planet held in the frame or driven (a KeyError in the split before)
+    "planet fixed": (_swap(PLANETARY, 'fixed = ["3"]', 'fixed = ["3", "2"]'),
+                     ("train.fixed[1]: member 2 is a planet of H: its axis moves with the carrier, it cannot be held "
+                     "in the frame")),
+    "planet driven": (_swap(PLANETARY, 'member = "1"', 'member = "2"'),
+                      "train.input[0].member: member 2 is a planet of H: drive its carrier or a central gear"),
+    # a planet meshing a gear on its own arm (an unsolvable converted train, said without a key before)
+    "planet meshes its carrier's gear": (_swap(PLANETARY, 'carrier = "H"', 'carrier = "1"'),
+                                         ("train.mesh[0].gears: gear 1 is on 2's own carrier 1: a planet meshes a gear "
+                                         "coaxial with its carrier, not one on its arm")),
+    "two gears mesh twice": (SIMPLE.format(find='["i12"]', extra="", mesh='[[train.mesh]]\ngears = ["2", "1"]\n'
+                                                                         'kind = "internal"'),
+                             "train.mesh[1].gears: gears 2 and 1 already mesh in train.mesh[0]"),
+    "a fixed member twice": (_swap(PLANETARY, 'fixed = ["3"]', 'fixed = ["3", "3"]'),
+                             "train.fixed[1]: member 3 is listed twice"),
+    "a coaxial pair of one member": (_swap(PLANETARY, "[train]\n", '[train]\ncoaxial = [["1", "1"]]\n'),
+                                     "train.coaxial[0]: a pair of two members, not 1 twice"),
+    "a coaxial pair twice": (_swap(PLANETARY, "[train]\n", '[train]\ncoaxial = [["1", "3"], ["3", "1"]]\n'),
+                             "train.coaxial[1]: 3 and 1 are listed twice"),
+    "no meshes": (SIMPLE.format(find='["n1"]', extra="mesh = []", mesh="").replace('[[train.mesh]]\ngears = ["1", "2"]\n', ""),
+                  "train.mesh: no [[train.mesh]]: a train needs its meshes"),
+    # 1.7e308 r/min overflowed to inf in rad/s: "train: the input speed of 1 is a finite number, not inf"
+    "an input beyond double precision": (_swap(PLANETARY, "speed_rpm = 100", "speed_rpm = 1.7e308"),
+                                         ("train.input[0].speed_rpm: 1.7e+308 r/min is faster than the work limit of "
+                                         "1e+12 rad/s (the powers and reduced moments would leave double precision)")),
+    "a list input too fast": (_swap(PLANETARY, "speed_rpm = 100", "speed_rad_s = [1, 1e300]"),
+                              ("train.input[0].speed_rad_s[1]: 1e+300 rad/s is faster than the work limit of 1e+12 "
+                              "rad/s (the powers and reduced moments would leave double precision)")),
+    "61 gears": (_chain(61), "train.z: too many gears (61 > 60, the work limit of a train)"),
+    # a ratio to a member at rest: said at the name asked (no key before)
+    "a ratio to the fixed member": (_swap(PLANETARY, 'find = ["nH"]', 'find = ["nH", "i13"]'),
+                                    "find[1]: i13 has no value: 3 is at rest"),
+    "a ratio to a member stopped": (_swap(_swap(PLANETARY, 'find = ["nH"]', 'find = ["i1H"]'), "speed_rpm = 100",
+                                          "speed_rpm = 0"),
+                                    "find[0]: i1H has no value: H is at rest"),
+    # worms and bevels whose arrows cannot be drawn
+    "a worm's pitch point not between the axes": (
+        SIMPLE.format(find='["i12"]', extra='[[train.member]]\nname = "2"\naxis = "+z"',
+                      mesh='kind = "worm"\nhand = "right"\ntowards = ["+y", "+y"]'),
+        ("train.mesh[0].towards: the pitch point lies between the axes: from wheel 2's axis toward +y, so from worm "
+        "1's toward the opposite, not +y")),
+    "a bevel pair on parallel axes": (
+        SIMPLE.format(find='["i12"]', extra='[[train.member]]\nname = "2"\naxis = "-x"',
+                      mesh='kind = "bevel"\ntowards = ["+y", "-y"]'),
+        ("train.mesh[0].towards: a bevel pair's axes meet at an angle: 1 (+x) and 2 (-x) are parallel (an external "
+        "or internal mesh)")),
+    # efficiency and dynamics tables beyond double precision (η = 1e-300 raised an OverflowError)
+    "a mesh efficiency of 1e-300": (PLANETARY + '[train.efficiency]\neta_mesh = 1e-300\noutput = "H"\n',
+                                    ("train.efficiency.eta_mesh: 1e-300 is below 0.01, the poorest mesh efficiency "
+                                    "read (such a mesh transmits nothing)")),
+    "a worm's q of 1e-300": (WORM_EFF + "q = 1e-300\nf_v = 0.1\n",
+                             ("train.efficiency.worm[0].q: 1e-300 gives a lead angle of 90°: a lead angle lies "
+                             "between 0° and 90°")),
+    "a worm's f_v of 1e300": (WORM_EFF + "q = 10\nf_v = 1e300\n",
+                              ("train.efficiency.worm[0].f_v: 1e+300 makes the friction angle 90°: a friction angle "
+                              "lies in [0°, 90°)")),
+    "a moment of -1e308": (DYN + "moment_Nm = -1e308\n",
+                           ("train.dynamics.member[0].moment_Nm: -1e+308 in SI units is beyond the work limit of 1e+15 "
+                           "(reduced through the train, it would leave double precision)")),
+}
+
+
+@pytest.mark.parametrize("case", sorted(HOSTILE))
+def test_a_hostile_train_is_refused_in_one_line(tmp_path, case):
+    text, line = HOSTILE[case]
+    for command in (["check"], ["check", "--json"], ["steps"]):
+        err = assert_refused(run_cli(*command, str(write(tmp_path, text))), "t.toml")
+        assert err == f"t.toml: {line}", (command, err)
+    out = tmp_path / "t.svg"
+    if case.startswith("a ratio to"):  # a find name's value: the figures do not need it
+        return
+    assert_refused(run_cli("render", str(tmp_path / "t.toml"), "-o", str(out)), "t.toml")
+    assert not out.exists()
+
+
+def test_a_train_at_the_work_limit_checks():
+    from graphmech.problems.trains.scene import MAX_GEARS
+
+    doc = tomllib.loads(f'find = ["n{MAX_GEARS}"]\n' + _chain(MAX_GEARS))
+    from graphmech.scene import parse_scene
+
+    an, _, _, _ = check(parse_scene(doc, "t.toml"))
+    # 59 external meshes of equal gears: the last turns against the first, as fast
+    assert [(r.name, r.exact) for r in an.rows] == [(f"n{MAX_GEARS}", pytest.approx(-100.0, rel=1e-12))]
