@@ -7,7 +7,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from graphmech.errors import NotApplicable
+from graphmech.errors import NoSolution, NotApplicable
 from graphmech.methods.train_layout import TrainLayout, layout
 from graphmech.methods.train_velocity import TrainVelocityDiagram, velocity_diagram
 from graphmech.problems.reader import Scene
@@ -17,9 +17,11 @@ from graphmech.scales import round_scale, round_scale_below
 #: The axial pitch of the schematic's slots on the paper, mm.
 SLOT_MM = 16.0
 #: The schematic's height and the velocity diagram's width on the paper, about, mm.
-SCHEMATIC_MM, VELOCITY_MM, OMEGA_MM = 80.0, 40.0, 40.0
+SCHEMATIC_MM, VELOCITY_MM, OMEGA_MM = 80.0, 40.0, 60.0
 #: The shortest pole distance chosen, mm (a slow member's ℓ is then short: the method's limit).
 H_LEAST = 10.0
+#: The pole distances a scene may state, mm (the reader's range): a chosen one stays within them.
+H_STATED = (1.0, 1000.0)
 
 
 @dataclass(frozen=True)
@@ -34,7 +36,10 @@ class Drawn:
 def _layout(scene: Scene[TrainScene], inputs: Mapping[str, float] | None, gap: float | None) -> TrainLayout:
     p = scene.problem
     train = p.train if inputs is None else p.train.with_inputs(inputs)
-    return layout(train, p.module, p.axes, p.sides, p.towards, p.coaxial, gap=gap, modules=p.gear_modules)
+    try:
+        return layout(train, p.module, p.axes, p.sides, p.towards, p.coaxial, gap=gap, modules=p.gear_modules)
+    except NoSolution as e:  # the scene's remedy, where the book's stages have their own modules
+        raise NoSolution(f"{e}: give each stage its module ([[train.mesh]] m) as the book's gears have them") from None
 
 
 def drawn(scene: Scene[TrainScene], inputs: Mapping[str, float] | None = None) -> Drawn:
@@ -66,20 +71,25 @@ def drawn(scene: Scene[TrainScene], inputs: Mapping[str, float] | None = None) -
 
 def train_velocity(lay: TrainLayout, scene: Scene[TrainScene], mu_l: float) -> TrainVelocityDiagram:
     """The velocity diagram at the scene's scales (μv, then H from ``pole_distance`` or μω), else
-    chosen: the fastest pitch point about :data:`VELOCITY_MM` wide, the longest ℓ about
-    :data:`OMEGA_MM`."""
+    chosen: the fastest pitch point at most :data:`VELOCITY_MM` wide and the longest ℓ about
+    :data:`OMEGA_MM` at a pole distance of at least :data:`H_LEAST` — μv is coarsened where a
+    small fast gear beside large slow ones would otherwise run its ray off the sheet."""
     if not lay.parallel:
         raise NotApplicable("the velocity diagram is drawn for trains whose axes are all parallel")
-    probe = velocity_diagram(lay, mu_l, 1.0, 1.0)
-    vmax = max([abs(ln.x_at(p[1])) for ln in probe.lines.values() for p in ln.points] + [1e-300])
-    mu_v = scene.scales.get("v") or round_scale(vmax / VELOCITY_MM)
+    probe = velocity_diagram(lay, mu_l, 1.0, 1.0)  # at μv = 1: X is v in m/s, slopes ω·μl
+    vmax = max((abs(ln.x_at(p[1])) for ln in probe.lines.values() for p in ln.points), default=0.0)
+    smax = max(abs(ln.slope) for ln in probe.lines.values())
+    need = max(vmax / VELOCITY_MM, H_LEAST * smax / OMEGA_MM)
+    mu_v = scene.scales.get("v") or (round_scale(need) if need > 0.0 else 1.0)  # 1: every member at rest
     if scene.problem.pole_distance is not None:
         H = scene.problem.pole_distance
     elif "omega" in scene.scales:
         H = mu_v / (mu_l * scene.scales["omega"])
+    elif smax > 0.0:
+        fits = OMEGA_MM * mu_v / smax
+        H = min(max(round_scale_below(fits), H_LEAST if "v" not in scene.scales else H_STATED[0]), H_STATED[1])
     else:
-        smax = max(abs(ln.slope) for ln in probe.lines.values()) * 1.0 / mu_v
-        H = max(round_scale_below(OMEGA_MM / smax), H_LEAST) if smax > 0 else 20.0
+        H = 20.0
     return velocity_diagram(lay, mu_l, mu_v, H)
 
 

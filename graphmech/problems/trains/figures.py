@@ -663,9 +663,9 @@ def train_sheet(scene: Scene[TrainScene], footer: Footer) -> tuple[Sheet, list[s
     bad = [s for s in show if s not in ("schematic", "velocity")]
     if bad:
         raise OutOfDomain(f"unknown panel(s) {', '.join(map(repr, bad))}; use schematic, velocity")
-    dr = drawn(scene)  # a loop that does not close is said first
+    sol = solve(train)  # a train that locks is said first, then a loop that does not close
+    dr = drawn(scene)
     lay, mu_l = dr.layout, dr.mu_l
-    sol = solve(train)
     panels: list[Panel] = []
     if "schematic" in show:
         sch = schematic(lay, mu_l, sol.omega, _exits(scene), p.hands)

@@ -12,7 +12,7 @@ from graphmech.exact.gear_train import solve
 from graphmech.mechanisms.gear_train import rpm
 from graphmech.problems.trains.diagram import drawn
 from graphmech.scene import load_scene, parse_scene
-from tests.conftest import SCENES
+from tests.conftest import SCENES, run_cli
 
 
 def test_the_conveyor_s_lengths_are_its_speeds():
@@ -53,3 +53,48 @@ def test_stage_modules_close_the_winch_reducer_s_planet_set():
                                          "input": [{"member": "1", "speed_rpm": 100}]}}, "w.toml")
     with pytest.raises(NoSolution, match="not coaxial: arms 38 mm and 28.5 mm"):
         drawn(one_module)
+
+
+PLANET_1_49999 = """
+title = "p"
+[train]
+fixed = ["3"]
+z = {{ "1" = 1, "2" = 49999, "3" = 99999 }}
+[[train.member]]
+name = "2"
+carrier = "H"
+[[train.member]]
+name = "H"
+gears = []
+[[train.mesh]]
+gears = ["1", "2"]
+[[train.mesh]]
+gears = ["2", "3"]
+kind = "internal"
+[[train.input]]
+member = "1"
+speed_rpm = {n}
+"""
+
+
+@pytest.mark.parametrize("n", ["100", "1e-300", "0"])
+def test_extreme_trains_stay_on_the_sheet(tmp_path, n):
+    """A sun of 1 tooth in a ring of 99 999 (the sun's ray 10⁵ times steeper than the carrier's), a
+    speed of 10⁻³⁰⁰ r/min, a train at rest: the scales are chosen so that the sheet holds them."""
+    p = tmp_path / "p.toml"
+    p.write_text(PLANET_1_49999.format(n=n), encoding="utf-8")
+    code, out, err = run_cli("render", str(p), "-o", str(tmp_path / "p.svg"))
+    assert (code, err) == (0, "")
+    d = drawn(load_scene(p)).velocity
+    assert d is not None and 1.0 <= d.H <= 1000.0
+    assert max(abs(x) for x in d.lengths.values()) <= 60.0 + 1e-9
+
+
+def test_a_locked_train_is_said_before_its_drawing(tmp_path):
+    p = tmp_path / "l.toml"
+    p.write_text('[train]\nfixed = ["3"]\nz = { "1" = 80, "2" = 30, "3" = "coaxial" }\n'
+                 '[[train.member]]\nname = "2"\ncarrier = "H"\n[[train.member]]\nname = "H"\ngears = []\n'
+                 '[[train.mesh]]\ngears = ["2", "1"]\nkind = "internal"\n[[train.mesh]]\ngears = ["2", "3"]\n'
+                 'kind = "internal"\n[[train.input]]\nmember = "1"\nspeed_rpm = 100\n', encoding="utf-8")
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "l.svg"))
+    assert code == 2 and err.startswith("l.toml: the train locks") and not (tmp_path / "l.svg").exists()

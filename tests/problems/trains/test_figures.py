@@ -136,9 +136,10 @@ def test_the_conveyors_sheet():
     assert len(closed) == 3 + 2 + 4 + 3
     # the velocity diagram: every moving member's line labelled, the pitch points, the pole and H
     assert {"1", "2", "4", "H", "O", "P_{12}", "P_{23}", "P_{2′4}"} <= set(labels(vel))
-    assert vel.notes[:3] == ("μ_{l} = 0.002 m/mm", "μ_{v} = 0.05 (m/s)/mm", "H = 10 mm, μ_{ω} = 2.5 (rad/s)/mm")
-    assert vel.notes[3] == "ℓ_{1} = 60.74 mm, ω_{1} = 151.8 rad/s; ℓ_{2} = −9.49 mm, ω_{2} = −23.73 rad/s"
-    assert vel.notes[4] == "ℓ_{4} = 0.2636 mm, ω_{4} = 0.659 rad/s; ℓ_{H} = 7.231 mm, ω_{H} = 18.08 rad/s"
+    # μv coarsened so that the fast sun's ray stays on the sheet at H = 10 mm (60.74 mm at 0.05)
+    assert vel.notes[:3] == ("μ_{l} = 0.002 m/mm", "μ_{v} = 0.1 (m/s)/mm", "H = 10 mm, μ_{ω} = 5 (rad/s)/mm")
+    assert vel.notes[3] == "ℓ_{1} = 30.37 mm, ω_{1} = 151.8 rad/s; ℓ_{2} = −4.745 mm, ω_{2} = −23.73 rad/s"
+    assert vel.notes[4] == "ℓ_{4} = 0.1318 mm, ω_{4} = 0.659 rad/s; ℓ_{H} = 3.615 mm, ω_{H} = 18.08 rad/s"
 
 
 @pytest.mark.parametrize("name", ["conveyor", "screwdriver", "closed_differential", "chain"])
