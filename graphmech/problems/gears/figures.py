@@ -267,9 +267,12 @@ def clipped_segment(p0: XY, p1: XY, box: Box) -> tuple[XY, XY] | None:
 
 def dimension(p0: XY, p1: XY, text: str, side: XY | None = None) -> list[Primitive]:
     """A linear dimension between p0 and p1 (arrowheads at both ends, inward; outward when too
-    short) and its text beside the middle (on ``side`` if given)."""
-    d = _unit(_sub(p1, p0))
+    short) and its text beside the middle (on ``side`` if given); nothing for a length of zero
+    (an addendum of h*a = 0 has no extent to dimension)."""
     n = math.dist(p0, p1)
+    if not n > 0.0:
+        return []
+    d = _unit(_sub(p1, p0))
     mid = _add(p0, p1)
     mid = (mid[0] / 2.0, mid[1] / 2.0)
     if n >= 2.0 * ARROW + 1.0:

@@ -30,11 +30,13 @@ from graphmech.problems.gears.figures import (
     GearDrawing,
     circle_in,
     clipped_circle,
+    dimension,
     gear_sheet,
     outline_runs,
 )
 from graphmech.render.layout import item_box
 from graphmech.render.svg import render_svg
+from tests.conftest import SCENES, run_cli
 
 A3 = (420.0, 297.0)
 ALPHA = math.radians(20.0)
@@ -403,3 +405,16 @@ def test_the_constructions_drawn_a_pointed_tip_a_ring_and_contact_below_one():
     m = construct_meshing(low)
     d = GearDrawing(low, {"zones": 0.00025}, mesh=m)
     assert m.eps_alpha < 1.0 and "ε_{α} < 1: not continuous" in texts(gear_sheet("g", ["zones"], d, A3))
+
+
+def test_a_zero_addendum_is_not_dimensioned(tmp_path):
+    """h*a = 0 (found by the mutation test on gear.root_circle_equals_base_circle): the tip circle is
+    the reference circle, so the addendum's dimension has no length and is left out — not an arrow
+    between one point and itself."""
+    assert dimension((1.0, 2.0), (1.0, 2.0), "h_{a}") == []
+    assert len(dimension((0.0, 0.0), (20.0, 0.0), "h_{a}")) == 3
+    text = (SCENES / "gear.root_circle_equals_base_circle.toml").read_text(encoding="utf-8")
+    p = tmp_path / "g.toml"
+    p.write_text(text.replace("ha_star = 1", "ha_star = 0", 1), encoding="utf-8")
+    code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "g.svg"))
+    assert code == 0 and "Traceback" not in err
