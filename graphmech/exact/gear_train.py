@@ -1,8 +1,10 @@
 """A gear train's angular speeds from its meshing constraints, as one linear system.
 
 The independent reference for the gear-train kind: no converted train is built and no compound
-train split — every mesh is one equation in the members' absolute speeds, written in the frame of
-the member carrying both axes (the frame, or the planets' carrier H):
+train split, and a spatial mesh's sense is found here from its geometry (the pitch points' velocity
+vectors), not from the arrows the scene reader followed — every mesh is one equation in the
+members' absolute speeds, written in the frame of the member carrying both axes (the frame, or the
+planets' carrier H):
 
     z_a·(ω_a − ω_H) − s·z_b·(ω_b − ω_H) = 0,   s = −1 external, +1 internal, stated if spatial,
 
@@ -24,16 +26,51 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from graphmech.errors import NoSolution, OutOfDomain
-from graphmech.mechanisms.gear_train import GearTrain, Mesh
+from graphmech.mechanisms.gear_train import AXES, HANDS, PARALLEL_SIGN, GearTrain, Mesh
 
 #: One equation: coefficients by member index, and the right-hand side.
 Row = tuple[dict[int, Fraction], Fraction]
 
 
+def _cross(u: tuple[int, int, int], v: tuple[int, int, int]) -> tuple[int, int, int]:
+    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+
+
+def mesh_sign(train: GearTrain, mesh: Mesh) -> int:
+    """s of ω_a − ω_H = s·(z_b/z_a)(ω_b − ω_H), from the geometry where the train has it.
+
+    The pitch point's velocity, per unit speed and radius: û × t on a gear (û its axis, t toward
+    the pitch point); along −h·û on a worm's thread (h = +1 right hand), its axial lead z·p_x
+    against the wheel's z·p_x per turn. The two agree at the pitch point, so s is the cosine of
+    their directions. Parallel axes without ``towards``: the kind's sign, reversed when the axes
+    are drawn opposite; a spatial mesh without geometry: the sign stated for it.
+    """
+    ua = AXES[train.member(train.gear(mesh.a).member).axis]
+    ub = AXES[train.member(train.gear(mesh.b).member).axis]
+    if mesh.towards is None:
+        if mesh.kind in PARALLEL_SIGN:
+            cos = sum(x * y for x, y in zip(ua, ub))
+            if cos == 0:
+                raise OutOfDomain(f"the {mesh.kind} mesh {mesh.a}–{mesh.b} joins axes that are not parallel")
+            return PARALLEL_SIGN[mesh.kind] * cos
+        return mesh.relative_sign
+    ta, tb = AXES[mesh.towards[0]], AXES[mesh.towards[1]]
+    if mesh.kind == "worm":
+        h = HANDS[mesh.hand or "right"]
+        va = (-h * ua[0], -h * ua[1], -h * ua[2])
+    else:
+        va = _cross(ua, ta)
+    vb = _cross(ub, tb)
+    cos = sum(x * y for x, y in zip(va, vb))
+    if cos == 0 or _cross(va, vb) != (0, 0, 0):
+        raise OutOfDomain(f"mesh {mesh.a}–{mesh.b}: its pitch points move across each other ({mesh.towards})")
+    return 1 if cos > 0 else -1
+
+
 def mesh_row(train: GearTrain, mesh: Mesh, index: Mapping[str, int]) -> dict[int, Fraction]:
     """z_a(ω_a − ω_H) − s·z_b(ω_b − ω_H) as coefficients (ω_H = 0 in the frame)."""
     ga, gb = train.gear(mesh.a), train.gear(mesh.b)
-    s = mesh.relative_sign
+    s = mesh_sign(train, mesh)
     row: dict[int, Fraction] = {}
 
     def add(member: str, c: int) -> None:

@@ -54,7 +54,7 @@ def angular_parts(train: GearTrain, omega: Mapping[str, float], member: str,
 
 
 def kinetic_energy(train: GearTrain, omega: Mapping[str, float], bodies: Sequence[Body], module: float,
-                   axes: Mapping[str, str] | None = None) -> float:
+                   axes: Mapping[str, str] | None = None, modules: Mapping[str, float] | None = None) -> float:
     """T of the bodies at the speeds ``omega`` (J)."""
     axes = axes or {}
     t = 0.0
@@ -67,27 +67,29 @@ def kinetic_energy(train: GearTrain, omega: Mapping[str, float], bodies: Sequenc
         e = b.inertia * axial * axial + (b.inertia_transverse or 0.0) * across * across
         h = train.member(b.member).carrier
         if h is not None and b.mass:
-            arm = b.arm if b.arm is not None else _arm(train, module, b.member, axes)
+            arm = b.arm if b.arm is not None else _arm(train, module, b.member, axes, modules)
             v = omega[h] * arm
             e += b.mass * v * v
         t += 0.5 * b.count * e
     return t
 
 
-def _arm(train: GearTrain, module: float, planet: str, axes: Mapping[str, str]) -> float:
+def _arm(train: GearTrain, module: float, planet: str, axes: Mapping[str, str],
+         modules: Mapping[str, float] | None) -> float:
     h = train.member(planet).carrier
     assert h is not None
     if abs(axis_cos(axes, h, planet)) != 1.0:
         raise OutOfDomain(f"member {planet} is a bevel planet: state its arm (its centre's distance from "
                           f"the axis of {h})")
-    return planet_arm(train, module, planet)
+    return planet_arm(train, module, planet, modules)
 
 
 def reduced_inertia(train: GearTrain, omega: Mapping[str, float], bodies: Sequence[Body], to: str,
-                    module: float, axes: Mapping[str, str] | None = None) -> float:
+                    module: float, axes: Mapping[str, str] | None = None,
+                    modules: Mapping[str, float] | None = None) -> float:
     """J_red = 2T/ω_r² (kg·m²)."""
     wr = _speed_of(train, omega, to)
-    return 2.0 * kinetic_energy(train, omega, bodies, module, axes) / (wr * wr)
+    return 2.0 * kinetic_energy(train, omega, bodies, module, axes, modules) / (wr * wr)
 
 
 def reduced_moment(train: GearTrain, omega: Mapping[str, float], bodies: Sequence[Body], to: str,

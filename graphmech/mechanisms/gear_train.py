@@ -36,13 +36,23 @@ MeshKind = Literal["external", "internal", "bevel", "worm"]
 PARALLEL_SIGN: Mapping[str, int] = {"external": -1, "internal": +1}
 MESH_KINDS: tuple[str, ...] = ("external", "internal", "bevel", "worm")
 
+#: The directions a scene names an axis or a pitch point's direction by, as unit vectors of the
+#: drawing (x right, y up, z toward the viewer): the one table of them.
+AXES: Mapping[str, tuple[int, int, int]] = {
+    "+x": (1, 0, 0), "-x": (-1, 0, 0), "+y": (0, 1, 0), "-y": (0, -1, 0), "+z": (0, 0, 1), "-z": (0, 0, -1),
+}
+#: A worm's hand as h = ±1 (right, left).
+HANDS: Mapping[str, int] = {"right": +1, "left": -1}
+
 
 @dataclass(frozen=True)
 class Member:
-    """A rigid rotating body; ``carrier`` is the member whose arm carries its axis (a planet)."""
+    """A rigid rotating body; ``carrier`` is the member whose arm carries its axis (a planet);
+    ``axis`` its axis in the drawing (:data:`AXES`), along which its speed is signed."""
 
     name: str
     carrier: str | None = None
+    axis: str = "+x"
 
 
 @dataclass(frozen=True)
@@ -56,12 +66,17 @@ class Gear:
 
 @dataclass(frozen=True)
 class Mesh:
-    """Gears ``a`` and ``b`` in mesh; ``sign`` of ω_a/ω_b in the carrier's frame when stated."""
+    """Gears ``a`` and ``b`` in mesh; ``sign`` of ω_a/ω_b in the carrier's frame when stated (or
+    found from the arrows by the book's rule); a spatial mesh's geometry where the scene draws it:
+    ``towards`` (the directions from a's and b's axes to the pitch point, :data:`AXES`) and a worm's
+    ``hand`` (the worm is ``a``)."""
 
     a: str
     b: str
     kind: MeshKind = "external"
     sign: int | None = None
+    towards: tuple[str, str] | None = None
+    hand: str | None = None
 
     @property
     def relative_sign(self) -> int:
@@ -92,6 +107,8 @@ class GearTrain:
             raise OutOfDomain(f"gear names repeat: {gear_names}")
         known = set(names)
         for m in self.members:
+            if m.axis not in AXES:
+                raise OutOfDomain(f"member {m.name}: axis {m.axis!r} is not one of {tuple(AXES)}")
             if m.carrier is not None:
                 if m.carrier not in known or m.carrier == m.name:
                     raise OutOfDomain(f"member {m.name}: its carrier {m.carrier!r} is not another member")
@@ -107,6 +124,10 @@ class GearTrain:
                 raise OutOfDomain(f"mesh {mesh.a}–{mesh.b}: kind {mesh.kind!r} is not one of {MESH_KINDS}")
             if mesh.sign not in (None, 1, -1):
                 raise OutOfDomain(f"mesh {mesh.a}–{mesh.b}: sign {mesh.sign!r} is not +1 or −1")
+            if mesh.towards is not None and not all(t in AXES for t in mesh.towards):
+                raise OutOfDomain(f"mesh {mesh.a}–{mesh.b}: towards {mesh.towards!r} are not directions {tuple(AXES)}")
+            if mesh.hand is not None and mesh.hand not in HANDS:
+                raise OutOfDomain(f"mesh {mesh.a}–{mesh.b}: hand {mesh.hand!r} is not right or left")
             _ = mesh.relative_sign  # a spatial mesh without its sign is refused here
             if self.gear(mesh.a).member == self.gear(mesh.b).member:
                 raise OutOfDomain(f"mesh {mesh.a}–{mesh.b}: both gears on one member")

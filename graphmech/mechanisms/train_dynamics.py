@@ -10,13 +10,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from graphmech.errors import OutOfDomain
-from graphmech.mechanisms.gear_train import GearTrain
-
-#: Unit vectors of the drawing axes a member may have (docs/scene-format.md, ``[[train.member]]``).
-AXIS_VECTORS: Mapping[str, tuple[float, float, float]] = {
-    "+x": (1.0, 0.0, 0.0), "-x": (-1.0, 0.0, 0.0), "+y": (0.0, 1.0, 0.0),
-    "-y": (0.0, -1.0, 0.0), "+z": (0.0, 0.0, 1.0), "-z": (0.0, 0.0, -1.0),
-}
+from graphmech.mechanisms.gear_train import AXES, GearTrain
 
 
 @dataclass(frozen=True)
@@ -63,13 +57,14 @@ class MeshLosses:
 
 def axis_cos(axes: Mapping[str, str], a: str, b: str) -> float:
     """cos of the angle between members a's and b's axes (``"+x"`` when not listed)."""
-    u, v = AXIS_VECTORS[axes.get(a, "+x")], AXIS_VECTORS[axes.get(b, "+x")]
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+    u, v = AXES[axes.get(a, "+x")], AXES[axes.get(b, "+x")]
+    return float(u[0] * v[0] + u[1] * v[1] + u[2] * v[2])
 
 
-def planet_arm(train: GearTrain, module: float, planet: str) -> float:
-    """The distance of a planet's axis from its carrier's, m: m(z_c + z_p)/2 from its first
-    external mesh with a central gear, m|z_c − z_p|/2 from an internal one (one module)."""
+def planet_arm(train: GearTrain, module: float, planet: str, modules: Mapping[str, float] | None = None) -> float:
+    """The distance of a planet's axis from its carrier's, m: m(z_c + z_p)/2 from its first mesh
+    with a central gear if external, m|z_c − z_p|/2 if internal — m that mesh's module
+    (``modules``: gear → its stage's module; else ``module``)."""
     carrier = train.member(planet).carrier
     if carrier is None:
         raise OutOfDomain(f"member {planet} is not a planet: it has no arm")
@@ -78,7 +73,7 @@ def planet_arm(train: GearTrain, module: float, planet: str) -> float:
         for p, c in ((ga, gb), (gb, ga)):
             if p.member == planet and train.member(c.member).carrier is None and mesh.kind in ("external", "internal"):
                 zs = c.z + p.z if mesh.kind == "external" else abs(c.z - p.z)
-                return module * zs / 2.0
+                return (modules or {}).get(p.name, module) * zs / 2.0
     raise OutOfDomain(f"planet {planet} meshes no central gear on a parallel axis: state its arm")
 
 
@@ -97,4 +92,4 @@ def check_body(train: GearTrain, body: Body) -> None:
                           "and count add nothing (give its inertia)")
 
 
-__all__ = ["AXIS_VECTORS", "Body", "MeshLosses", "Worm", "axis_cos", "check_body", "planet_arm"]
+__all__ = ["Body", "MeshLosses", "Worm", "axis_cos", "check_body", "planet_arm"]

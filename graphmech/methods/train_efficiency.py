@@ -187,11 +187,19 @@ def train_path(train: GearTrain, losses: MeshLosses, source: str, sink: str) -> 
     walk(src, {src}, [])
     if not paths:
         raise NoSolution(f"no path of meshes carries the power from {src} to {snk}")
-    if len(paths) > 1:
-        raise OutOfDomain(f"the power from {src} to {snk} has {len(paths)} paths: it divides, and the book's "
-                          "series rule does not give the train's efficiency")
+    staged = [_stages(train, losses, path) for path in paths]
+    # power that divides among branches of one efficiency (identical idlers, a copied planet set)
+    # loses the same fraction whichever way it divides: the series rule holds for each branch
+    if len({series([s.eta for s in st]) for st in staged}) > 1:
+        raise OutOfDomain(f"the power from {src} to {snk} has {len(paths)} paths of different efficiencies: it "
+                          "divides, and the book's series rule does not give the train's efficiency")
+    return staged[0]
+
+
+def _stages(train: GearTrain, losses: MeshLosses, path: Sequence[tuple[str, str, str, int | str]]) -> tuple[Stage, ...]:
+    """The stages of one path of the power, each with its η."""
     stages: list[Stage] = []
-    for kind, p, q, ref in paths[0]:
+    for kind, p, q, ref in path:
         if kind == "mesh":
             assert isinstance(ref, int)
             stages.append(Stage("mesh", p, q, _mesh_eta(train, losses, ref, p)))

@@ -26,8 +26,9 @@ def ratios(train: GearTrain, omega: Mapping[str, float], to: str) -> dict[str, f
 
 
 def book_reduced_inertia(train: GearTrain, omega: Mapping[str, float], bodies: Sequence[Body], to: str,
-                         module: float, axes: Mapping[str, str] | None = None) -> float:
-    """J_red, kg·m²."""
+                         module: float, axes: Mapping[str, str] | None = None,
+                         modules: Mapping[str, float] | None = None) -> float:
+    """J_red, kg·m² (``modules``: a gear's stage module where it has one, for a planet's arm)."""
     axes = axes or {}
     u = ratios(train, omega, to)
     j = 0.0
@@ -43,7 +44,7 @@ def book_reduced_inertia(train: GearTrain, omega: Mapping[str, float], bodies: S
                 term = b.inertia * u[b.member] ** 2
                 arm = b.arm
                 if arm is None and b.mass:
-                    arm = planet_arm(train, module, b.member)
+                    arm = planet_arm(train, module, b.member, modules)
             else:  # ω_p = ω_H + ω^H_p: along the planet's axis and across it
                 along = u[h] * c + (u[b.member] - u[h])
                 across = u[h] * math.sqrt(1.0 - c * c)

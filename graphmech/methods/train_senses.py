@@ -18,24 +18,16 @@ a member for the sense of its speed.
 """
 from __future__ import annotations
 
-from collections.abc import Mapping
-
 from graphmech.errors import OutOfDomain
+from graphmech.mechanisms.gear_train import AXES, HANDS, PARALLEL_SIGN
 
 Vec = tuple[int, int, int]
 
-#: The drawing's directions as unit vectors (x right, y up, z toward the viewer).
-DIRECTIONS: Mapping[str, Vec] = {
-    "+x": (1, 0, 0), "-x": (-1, 0, 0), "+y": (0, 1, 0), "-y": (0, -1, 0), "+z": (0, 0, 1), "-z": (0, 0, -1),
-}
-#: A worm's hand as h: the wheel moves along −h·ω⃗_worm at the pitch point.
-HANDS: Mapping[str, int] = {"right": +1, "left": -1}
-
 
 def direction(name: str) -> Vec:
-    if name not in DIRECTIONS:
-        raise OutOfDomain(f"{name!r} is not a direction: use {', '.join(DIRECTIONS)}")
-    return DIRECTIONS[name]
+    if name not in AXES:
+        raise OutOfDomain(f"{name!r} is not a direction: use {', '.join(AXES)}")
+    return AXES[name]
 
 
 def cross(u: Vec, v: Vec) -> Vec:
@@ -61,7 +53,7 @@ def parallel_sign(kind: str, axis_a: str, axis_b: str, a: str = "a", b: str = "b
     if d == 0:
         raise OutOfDomain(f"an {kind} mesh needs parallel axes: {a} is along {axis_a}, {b} along {axis_b} "
                           "(a bevel pair: kind = \"bevel\")")
-    return (-1 if kind == "external" else +1) * d
+    return PARALLEL_SIGN[kind] * d
 
 
 def bevel_sign(axis_a: str, axis_b: str, towards: tuple[str, str], a: str = "a", b: str = "b") -> int:
@@ -112,12 +104,7 @@ def arrow(axis: str, omega: float) -> str:
         return "ccw" if s * u[2] > 0 else "cw"
     v = cross(u, (0, 0, 1))  # the near side (toward the viewer) of a positive speed moves along û × ẑ
     v = (s * v[0], s * v[1], s * v[2])
-    return next(name for name, d in DIRECTIONS.items() if d == v)
+    return next(name for name, d in AXES.items() if d == v)
 
 
-def senses(axes: Mapping[str, str], omega: Mapping[str, float]) -> dict[str, str]:
-    """Each member's arrow (:func:`arrow`) from its axis and its speed."""
-    return {name: arrow(axes.get(name, "+x"), w) for name, w in omega.items()}
-
-
-__all__ = ["DIRECTIONS", "HANDS", "arrow", "bevel_sign", "parallel_sign", "senses", "worm_sign"]
+__all__ = ["arrow", "bevel_sign", "parallel_sign", "worm_sign"]

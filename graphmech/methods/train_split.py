@@ -22,12 +22,12 @@ which writes every mesh as one equation and eliminates them all at once.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from typing import Literal
 
 from graphmech.errors import NoSolution, OutOfDomain
-from graphmech.mechanisms.gear_train import GearTrain, Mesh
+from graphmech.mechanisms.gear_train import GearTrain
 
 BasicKind = Literal["ordinary", "planetary", "differential"]
 #: A speed as an affine form in the unknown speeds of the split (parameter → coefficient; ``1``: constant).
@@ -290,8 +290,6 @@ def split(train: GearTrain) -> Split:
 
 def _with_names(train: GearTrain, bt: BasicTrain, basics: Sequence[BasicTrain]) -> BasicTrain:
     """``bt`` with the gear name of each member in its meshes and the members whose ratio is shown."""
-    import dataclasses
-
     names: dict[str, str] = {}
     degree: dict[str, int] = {}
     for k in bt.meshes:
@@ -305,7 +303,7 @@ def _with_names(train: GearTrain, bt: BasicTrain, basics: Sequence[BasicTrain]) 
         others = {x for b in basics if b is not bt and b.label != bt.label for x in b.members}
         shown = tuple(x for x in bt.members
                       if x in others or x in train.fixed or x in train.inputs or degree.get(x, 0) == 1)
-    return dataclasses.replace(bt, names=names, shown=tuple(x for x in shown if x != bt.root))
+    return replace(bt, names=names, shown=tuple(x for x in shown if x != bt.root))
 
 
 def _combine(*terms: tuple[Fraction | int, Form]) -> Form:
@@ -360,8 +358,7 @@ def _links(train: GearTrain, basics: Sequence[BasicTrain]) -> list[str]:
                     if train.gear(g).member == m.name and g not in gears:
                         gears.append(g)
         roles = ", ".join(b.label for b in where)
-        names = [g for g in gears] + ([m.name] if any(b.carrier == m.name for b in where) else [])
-        names = list(dict.fromkeys(names))
+        names = list(dict.fromkeys(gears + ([m.name] if any(b.carrier == m.name for b in where) else [])))
         same = " = ".join(f"n{g}" for g in names) if len(names) > 1 else f"n{m.name}"
         out.append(f"{same}: member {m.name} is in {roles}")
     return out
@@ -437,9 +434,4 @@ def _lock_words(sp: Split, name: str) -> str:
     return ""
 
 
-def mesh_sign_words(mesh: Mesh) -> str:
-    """How a mesh's sense was found, for the protocol: by the kind or by the arrows."""
-    return {"external": "external: −", "internal": "internal: +"}.get(mesh.kind, f"{mesh.kind}: from the arrows")
-
-
-__all__ = ["BasicTrain", "Ratio", "Split", "SplitSolution", "mesh_sign_words", "solve", "split"]
+__all__ = ["BasicTrain", "Ratio", "Split", "SplitSolution", "solve", "split"]

@@ -364,3 +364,27 @@ def test_an_ordinary_chain_ratio_is_the_tooth_product(stages, z_first):
     m = sum(kind == "external" for _, _, kind in stages)
     s = solve(train(members, gears, meshes, inputs={"0": 1.0}))
     close(s.ratio("0", str(len(stages))), (-1) ** m * math.prod(driven) / math.prod(driving[:-1]), rel=1e-14)
+
+
+def test_a_spatial_mesh_s_sense_is_found_from_its_geometry_not_from_the_arrows_read():
+    """The reference finds a bevel pair's and a worm's sense from the pitch points' velocity vectors
+    itself: a wrong sign carried by the mesh (as a slip in the book's arrow rule would carry it)
+    does not reach the exact solution, so the check sees the disagreement."""
+    # bevel: 1 on +x with its pitch point up (+y), 2 on +y with its pitch point right (+x): 1's
+    # pitch point moves along +x × +y = +z, 2's along +y × +x = −z: opposite senses, s = −1
+    bevel = GearTrain((Member("1", None, "+x"), Member("2", None, "+y")), (Gear("1", 20, "1"), Gear("2", 40, "2")),
+                      (Mesh("1", "2", "bevel", +1, ("+y", "+x")),), (), {"1": 1.0})
+    close(solve(bevel).speed("2"), -0.5)
+    # a right-hand worm 1 on +x above its wheel 2 on +z: the wheel's pitch point moves against the
+    # thumb (−x) for ω1 > 0; +z × (+y) = −x, so ω2 > 0: s = +1 whatever the mesh carries
+    for carried in (+1, -1):
+        worm = GearTrain((Member("1", None, "+x"), Member("2", None, "+z")), (Gear("1", 2, "1"), Gear("2", 40, "2")),
+                         (Mesh("1", "2", "worm", carried, ("-y", "+y"), "right"),), (), {"1": 1.0})
+        close(solve(worm).speed("2"), 2 / 40)
+        left = GearTrain(worm.members, worm.gears, (Mesh("1", "2", "worm", carried, ("-y", "+y"), "left"),), (),
+                         {"1": 1.0})
+        close(solve(left).speed("2"), -2 / 40)
+    # parallel axes drawn opposite: an external mesh's −1 times û_a·û_b = −1
+    reversed_axes = GearTrain((Member("1"), Member("2", None, "-x")), (Gear("1", 20, "1"), Gear("2", 40, "2")),
+                              (Mesh("1", "2"),), (), {"1": 1.0})
+    close(solve(reversed_axes).speed("2"), 0.5)

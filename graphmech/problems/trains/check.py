@@ -13,11 +13,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from graphmech import tolerances as T
 from graphmech.accuracy import percent
 from graphmech.errors import NoSolution, SceneError, UnknownName
 from graphmech.exact import gear_train as ex
+from graphmech.mechanisms.gear_train import AXES, GearTrain
 from graphmech.methods.train_senses import arrow
 from graphmech.methods.train_velocity import TrainVelocityDiagram
 from graphmech.methods.train_split import Split, SplitSolution, solve, split
@@ -141,7 +144,9 @@ def _graphical(an: TrainAnalysis, n: Name, j: int) -> tuple[float, float | None,
     ratio the ratio of two lengths — else by the book's equations (the split, Willis)."""
     d = _diagram(an, j)
     if d is not None and n.what in ("n", "omega", "i"):
-        ell = {m: d.sense[m] * d.lengths[m] for m in d.lengths}
+        longest = max(abs(x) for x in d.lengths.values())
+        # a cut within round-off of the pole's foot is the foot: that member is at rest
+        ell = {m: 0.0 if abs(x) <= T.COINCIDENT_REL * longest else d.sense[m] * x for m, x in d.lengths.items()}
         if n.what in ("n", "omega"):
             drawn_mm = ell[an.problem.train.member_of(n.a or "")]
             mu = d.mu_omega * (RPM if n.what == "n" else 1.0)
@@ -153,13 +158,31 @@ def _graphical(an: TrainAnalysis, n: Name, j: int) -> tuple[float, float | None,
     return _book(an, n, j), None, 1.0
 
 
+def spin_carrier(train: GearTrain, member: str) -> str | None:
+    """The carrier a member's speed is counted relative to: a planet whose axis is not parallel
+    to its carrier's (a bevel planet) turns about no fixed axis, and the book's speed of it is its
+    spin about its own axis relative to the carrier, n_k − n_H; None for every other member."""
+    m = train.member(member)
+    if m.carrier is None:
+        return None
+    u, v = AXES[m.axis], AXES[train.member(m.carrier).axis]
+    return None if abs(u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) == 1 else m.carrier
+
+
+def speed_of(train: GearTrain, speed: Callable[[str], float], name: str) -> float:
+    """ω of a member or gear as the rows report it: absolute, or a bevel planet's spin relative to
+    its carrier (:func:`spin_carrier`); ``speed`` gives the solution's absolute speeds."""
+    h = spin_carrier(train, train.member_of(name))
+    return speed(name) - (speed(h) if h is not None else 0.0)
+
+
 def _book(an: TrainAnalysis, n: Name, j: int) -> float:
     """A speed or ratio by the book's equations (the split's solution)."""
     sol = an.solutions[j]
     if n.what == "n":
-        return sol.speed(n.a or "") * RPM
+        return speed_of(an.problem.train, sol.speed, n.a or "") * RPM
     if n.what == "omega":
-        return sol.speed(n.a or "")
+        return speed_of(an.problem.train, sol.speed, n.a or "")
     wb = sol.speed(n.b or "")
     if wb == 0.0:
         raise NoSolution(f"{n.text} has no value: {n.b} is at rest")
@@ -198,7 +221,8 @@ def _rows(an: TrainAnalysis, n: Name) -> list[Row]:
         h, a, b = n.carrier or "", n.a or "", n.b or ""
         g = float(an.split.converted_ratio(a, b, h))
         e = ex.converted_train_ratio(p.train, a, b, h)
-        return [Row(n.text, "", None, 1.0, g, e, abs(g - e) / max(abs(e), 1e-300))]
+        return [Row(n.text, "", None, 1.0, g, e, abs(g - e) / max(abs(e), 1e-300),
+                    basis="the converted train's tooth numbers")]
     out = []
     for j in _indices(an, n):
         k = 0 if j is None else j
@@ -208,12 +232,15 @@ def _rows(an: TrainAnalysis, n: Name) -> list[Row]:
             e = sol.ratio(n.a or "", n.b or "")
             char = abs(e)
         else:
-            e = sol.speed(n.a or "") * (RPM if n.what == "n" else 1.0)
+            e = speed_of(p.train, sol.speed, n.a or "") * (RPM if n.what == "n" else 1.0)
             char = max(abs(w) for w in sol.omega.values()) * (RPM if n.what == "n" else 1.0)
         name = n.text if j is None or n.index is not None else f"{n.text}[{j}]"
-        if an.diagrams.get(k) is not None:
+        on_diagram = an.diagrams.get(k) is not None
+        if on_diagram:
             an.book[name] = _book(an, n, k)
-        out.append(Row(name, n.unit, drawn, mu, g, e, abs(g - e) / max(abs(e), char, 1e-300)))
+        basis = (("a length on the ω line × μω" if drawn is not None else "a ratio of lengths on the ω line")
+                 if on_diagram else "the book's equations (the split, Willis)")
+        out.append(Row(name, n.unit, drawn, mu, g, e, abs(g - e) / max(abs(e), char, 1e-300), basis=basis))
     return out
 
 
@@ -233,8 +260,9 @@ def extras(an: TrainAnalysis) -> dict[str, Any]:
     """``check --json``'s ``"train"``: the basic trains and their equations, how they join, the
     mobility, the redundant meshes, each member's arrow."""
     sp = an.split
-    senses = {} if not an.solutions else {k: arrow(an.problem.axes.get(k, "+x"), v)
-                                           for k, v in an.solutions[0].speeds.items()}
+    train, sol = an.problem.train, an.solutions[0] if an.solutions else None
+    senses = {} if sol is None else {k: arrow(an.problem.axes.get(k, "+x"), speed_of(train, sol.speed, k))
+                                     for k in sol.speeds}
     return {"train": {"basic_trains": [b.as_dict() for b in sp.trains], "links": list(sp.links),
                       "mobility": sp.mobility, "redundant_meshes": sp.redundant, "senses": senses}}
 
@@ -269,9 +297,13 @@ def _senses(an: TrainAnalysis) -> list[str]:
     for inp in list(p.input_values)[:1]:
         w_in = sol.exact_speeds[inp]
         for m in shown:
-            w = sol.exact_speeds[m]
+            w = speed_of(p.train, lambda k: float(sol.exact_speeds[k]), m)
+            h = spin_carrier(p.train, m)
             if w == 0:
-                out.append(f"sense: {m} is at rest")
+                out.append(f"sense: {m} is at rest" + (f" relative to its carrier {h}" if h else ""))
+            elif h is not None:
+                out.append(f"sense: {m} spins {'+' if w > 0 else '−'} about its axis {p.axes.get(m, '+x')} relative "
+                           f"to its carrier {h} (arrow {arrow(p.axes.get(m, '+x'), float(w))}; its axis turns with {h})")
             elif p.axes.get(m, "+x") == p.axes.get(inp, "+x"):
                 out.append(f"sense: {m} turns {'the same way as' if (w > 0) == (w_in > 0) else 'against'} the input "
                            f"{inp}")

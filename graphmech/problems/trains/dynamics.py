@@ -79,6 +79,8 @@ class TrainTables(Protocol):
     @property
     def module(self) -> float: ...
     @property
+    def gear_modules(self) -> Mapping[str, float]: ...
+    @property
     def axes(self) -> Mapping[str, str]: ...
     @property
     def dynamics(self) -> TrainDynamics | None: ...
@@ -409,8 +411,8 @@ def dynamics_rows(scene: Scene[TrainTables], omega: Mapping[str, float],
                 if res.reduce_to is not None and r != res.reduce_to:
                     raise refuse(name, f"[train.dynamics] reduces to {res.reduce_to}, not {r}")
                 if base == "J_red":
-                    g = book_reduced_inertia(train, omega, res.bodies, r, ts.module, ts.axes)
-                    e = ex.reduced_inertia(train, exact_omega, res.bodies, r, ts.module, ts.axes)
+                    g = book_reduced_inertia(train, omega, res.bodies, r, ts.module, ts.axes, ts.gear_modules)
+                    e = ex.reduced_inertia(train, exact_omega, res.bodies, r, ts.module, ts.axes, ts.gear_modules)
                 else:
                     g = book_reduced_moment(train, omega, res.bodies, r, ts.axes)
                     e = ex.reduced_moment(train, exact_omega, res.bodies, r, ts.axes)

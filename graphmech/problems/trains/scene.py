@@ -12,6 +12,8 @@ from typing import TYPE_CHECKING, Any
 
 from graphmech.errors import GraphmechError, OutOfDomain
 from graphmech.mechanisms.gear_train import (
+    AXES,
+    HANDS,
     MESH_KINDS,
     PARALLEL_SIGN,
     Gear,
@@ -20,13 +22,7 @@ from graphmech.mechanisms.gear_train import (
     Mesh,
 )
 from graphmech.methods.train_coaxial import ArmMesh, arms, solve_missing
-from graphmech.methods.train_senses import (
-    DIRECTIONS,
-    HANDS,
-    bevel_sign,
-    parallel_sign,
-    worm_sign,
-)
+from graphmech.methods.train_senses import bevel_sign, parallel_sign, worm_sign
 from graphmech.methods.train_split import split
 from graphmech.problems.trains.dynamics import check_dynamics, is_dynamics_name, read_dynamics
 from graphmech.problems.reader import (
@@ -212,7 +208,7 @@ def _read_train(t: Reader) -> TrainScene | None:
         name = _name(mr, mr.raw("name", required=True), mr.at("name"), "a member name")
         gears_v = mr.raw("gears")
         carrier = mr.raw("carrier")
-        axis = mr.string("axis", choices=tuple(DIRECTIONS), default="+x") or "+x"
+        axis = mr.string("axis", choices=tuple(AXES), default="+x") or "+x"
         mr.finish()
         if name is None:
             continue
@@ -370,8 +366,8 @@ def _read_train(t: Reader) -> TrainScene | None:
                 continue
             else:
                 if (not isinstance(tw, list) or len(tw) != 2
-                        or not all(isinstance(x, str) and x in DIRECTIONS for x in tw)):
-                    mr.problem(mr.at("towards"), f"must be two directions from {one_of(DIRECTIONS)}, as [\"-y\", \"+x\"]")
+                        or not all(isinstance(x, str) and x in AXES for x in tw)):
+                    mr.problem(mr.at("towards"), f"must be two directions from {one_of(AXES)}, as [\"-y\", \"+x\"]")
                     continue
                 pair_t = (str(tw[0]), str(tw[1]))
                 if kind == "worm" and hand is None:
@@ -396,7 +392,8 @@ def _read_train(t: Reader) -> TrainScene | None:
                                         "a gear has one module")
                 continue
             gear_modules.update({a: mesh_m.si, b: mesh_m.si})
-        meshes.append(Mesh(a, b, kind, s))  # type: ignore[arg-type]  # kind is one of MESH_KINDS
+        # the arrows' sign for the book's method; the geometry too, for the exact solution's own
+        meshes.append(Mesh(a, b, kind, s, towards_d.get(k), hand))  # type: ignore[arg-type]  # one of MESH_KINDS
 
     # inputs
     inputs: dict[str, tuple[float, ...]] = {}
@@ -505,7 +502,7 @@ def _read_train(t: Reader) -> TrainScene | None:
     rank = {n: min((first[g] for g, mm in member_of.items() if mm == n), default=len(first)) for n in members}
     members = dict(sorted(members.items(), key=lambda kv: rank[kv[0]]))
     try:
-        train = GearTrain(tuple(Member(n, c) for n, (c, _) in members.items()),
+        train = GearTrain(tuple(Member(n, c, ax) for n, (c, ax) in members.items()),
                           tuple(Gear(g, z, member_of[g]) for g, z in zfull.items()), tuple(meshes), tuple(fixed),
                           {k: v[0] for k, v in inputs.items()})
         the_split = split(train)

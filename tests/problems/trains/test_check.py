@@ -9,6 +9,7 @@ import pytest
 from graphmech.problems import check
 from graphmech.scene import load_scene, parse_scene
 from tests.conftest import SCENES, check_json, run_cli, values
+from tests.scenes import scene_path
 
 
 def test_rows_and_lines_of_the_electric_screwdriver():
@@ -133,3 +134,58 @@ f_v = 0.12
     assert an.rows[1].exact < 0
     assert [ln for ln in lines if ln.startswith("self_locking")] == [
         "self_locking: worm 1 self-locks: γ = 5.711° ≤ φ_v = 6.843°, the wheel cannot drive it (η′ = -0.1976)"]
+
+
+def test_a_bevel_planet_s_speed_is_its_spin_relative_to_the_carrier():
+    """The automobile differential, one wheel held: the case turns at 1500·15/45 = 500 r/min, the free
+    wheel at 2·500 (i^H_13 = −1); the bevel planet's axis turns with the case, so its row is its spin
+    about its own axis relative to the case, (n1 − nH)·z1/z2 = 500·20/12 — not nH + that, a sum
+    across perpendicular axes."""
+    an, _, extras, lines = check(load_scene(scene_path("trains/automobile_differential")))
+    q = {r.name: r for r in an.rows}
+    assert q["nH"].exact == pytest.approx(500.0, rel=1e-14) and q["n1"].exact == pytest.approx(1000.0, rel=1e-14)
+    assert q["n2"].graphical == pytest.approx(500.0 * 20 / 12, rel=1e-14)
+    assert q["n2"].exact == pytest.approx(500.0 * 20 / 12, rel=1e-14) and q["iH13"].exact == -1.0
+    assert "sense: 2 spins + about its axis +y relative to its carrier H (arrow +x; its axis turns with H)" in lines
+    assert extras["train"]["senses"]["2"] == "+x"
+
+
+def test_identical_idlers_divide_the_power_at_one_efficiency(tmp_path):
+    """Two idlers between 1 and 3: the power divides, but both branches lose the same fraction, so
+    the book's series rule holds (η = 0.98²) — as the exact power balance finds."""
+    p = tmp_path / "i.toml"
+    p.write_text("""
+find = ["eta_train", "n3"]
+[train]
+z = { "1" = 20, "2" = 30, "2b" = 30, "3" = 40 }
+[[train.mesh]]
+gears = ["1", "2"]
+[[train.mesh]]
+gears = ["2", "3"]
+[[train.mesh]]
+gears = ["1", "2b"]
+[[train.mesh]]
+gears = ["2b", "3"]
+[[train.input]]
+member = "1"
+speed_rpm = 100
+[train.efficiency]
+eta_mesh = 0.98
+output = "3"
+""", encoding="utf-8")
+    q = values(check_json(p))
+    assert q["eta_train"]["graphical"] == pytest.approx(0.98 ** 2, rel=1e-15)
+    assert q["eta_train"]["rel_error"] < 1e-14
+
+
+def test_a_member_at_rest_reads_zero_off_the_diagram(tmp_path):
+    """i^H_13 = (50·100)/(100·50) = 1 with the carrier driven: the sun 1 stays at rest; its ray falls
+    on the pole's foot within round-off, read as 0 — not as −4e-12 r/min with a warning."""
+    p = tmp_path / "r.toml"
+    p.write_text('find = ["n1"]\n[train]\nfixed = ["3"]\nz = { "1" = 100, "2" = 50, "2\'" = 50, "3" = 100 }\n'
+                 '[[train.member]]\nname = "2"\ngears = ["2", "2\'"]\ncarrier = "H"\n[[train.member]]\nname = "H"\n'
+                 'gears = []\n[[train.mesh]]\ngears = ["1", "2"]\n[[train.mesh]]\ngears = ["2\'", "3"]\n'
+                 '[[train.input]]\nmember = "H"\nspeed_rpm = 10000\n', encoding="utf-8")
+    an, _, _, lines = check(load_scene(p))
+    assert (an.rows[0].drawn_mm, an.rows[0].graphical, an.rows[0].exact) == (0.0, 0.0, 0.0)
+    assert an.warnings == [] and "sense: 1 is at rest" in lines

@@ -22,6 +22,7 @@ from graphmech.problems.trains.dynamics import (
     split_name,
 )
 from graphmech.problems.trains.scene import TrainScene
+from tests.conftest import check_json, values
 
 SEED = """
 [train.dynamics]
@@ -176,3 +177,39 @@ def test_a_self_locking_worm_is_said() -> None:
     lines = dynamics_lines(sc, list(rows.values()))
     assert lines[0].startswith("self_locking: worm 1 self-locks: γ = 5.711° ≤ φ_v = 6.843°")
     assert "the train self-locks from 2 to 1" in lines[1]
+
+
+def test_a_planet_s_arm_takes_its_stage_s_module(tmp_path) -> None:
+    """A planet of 1 kg on the arm 4·(20 + 30)/2 = 100 mm (the stages' module 4 mm, the train's
+    unstated): i_1H = 1 + 80/20 = 5, so J_red_1 = m·(arm/i_1H)² = 1·0.02² = 4e-4 kg·m² — the
+    stage's module, not the train's default 1 mm."""
+    p = tmp_path / "a.toml"
+    p.write_text("""
+find = ["J_red_1"]
+[train]
+fixed = ["3"]
+z = { "1" = 20, "2" = 30, "3" = 80 }
+[[train.member]]
+name = "2"
+carrier = "H"
+[[train.member]]
+name = "H"
+gears = []
+[[train.mesh]]
+gears = ["1", "2"]
+m_mm = 4
+[[train.mesh]]
+gears = ["2", "3"]
+kind = "internal"
+m_mm = 4
+[[train.input]]
+member = "1"
+speed_rad_s = 100
+[train.dynamics]
+reduce_to = "1"
+[[train.dynamics.member]]
+name = "2"
+mass_kg = 1
+""", encoding="utf-8")
+    q = values(check_json(p))["J_red_1"]
+    assert q["graphical"] == pytest.approx(4e-4, rel=1e-13) and q["exact"] == pytest.approx(4e-4, rel=1e-13)
