@@ -47,7 +47,8 @@ from graphmech.methods.train_layout import TrainLayout, prime
 from graphmech.methods.train_velocity import TrainVelocityDiagram
 from graphmech.problems.kind import Footer
 from graphmech.problems.reader import Scene, page_size
-from graphmech.problems.trains.diagram import SLOT_MM, drawn
+from graphmech.problems.gears.figures import dimension
+from graphmech.problems.trains.diagram import OMEGA_MM, SLOT_MM, drawn
 from graphmech.problems.trains.scene import TrainScene
 
 #: The train's words (laid out as graphmech.drawing.notation.WORDS: English, 中文, русский).
@@ -57,6 +58,9 @@ TRAIN_WORDS: dict[str, tuple[str, str, str]] = {
     "not axial": ("axial positions not to scale", "轴向位置未按比例", "осевые размеры не в масштабе"),
     "false position": ("the loop closed by false position (trial line «m»)", "封闭环路用试位法求得（试作 «m» 的速度线）",
                        "контур замкнут методом ложного положения (пробная линия «m»)"),
+    "clipped": ("the rays of «m» clipped at the ω line's end (ℓ above: H is chosen for the speeds asked)",
+                "«m»的射线在ω线端部截断（ℓ见上；极距H按所求转速选取）",
+                "лучи «m» обрезаны у конца прямой ω (ℓ выше: H выбрано для искомых скоростей)"),
     "spatial": ("a spatial train: no velocity diagram (its axes are not parallel)",
                 "空间轮系：各轴不平行，不作速度图", "пространственная передача: план скоростей не строится"),
 }
@@ -71,6 +75,8 @@ ARM_AT, WEB_AT = 0.3, 0.45
 WORM_L = 2.2
 #: A rotation arrow's length, mm.
 TURN_MM = 6.0
+#: The ω line's reach either side of the pole's foot, mm: a ray cutting it farther is drawn clipped there.
+CLIP_MM = OMEGA_MM + 10.0
 
 
 def train_word(key: str, notation: str = "en") -> str:
@@ -608,13 +614,22 @@ def velocity_items(d: TrainVelocityDiagram, lay: TrainLayout) -> list[Primitive]
         at, out = next((c for c in cands[:2] if room(c[0]) >= 6.0), max(cands, key=lambda c: room(c[0])))
         taken.append(at)
         items.append(Label(prime(m), at, ((-out[0], -out[1]),), LETTER, italic=False))
-    # the pole, the ω line at H above it, the rays
+    # the pole, the ω line at H above it, the rays (one longer than the sheet allows clipped at its end)
     O = d.pole
-    cuts = {m: d.cut(m) for m in d.lines}
+    clipped = clipped_rays(d, train)
+    cuts = {m: d.cut(m) for m in d.lines if m not in clipped}
     xs = [c[0] for c in cuts.values()] + [O[0]]
-    items.append(Segment((min(xs) - 5.0, O[1] + d.H), (max(xs) + 5.0, O[1] + d.H), "construction"))
-    items.append(Segment(O, (O[0], O[1] + d.H), "construction", dashed=True))
-    items.append(Label("H", (O[0], O[1] + d.H / 2), ((1.0, 0.0), (-1.0, 0.0)), LETTER))
+    x_lo = O[0] - CLIP_MM if any(d.lengths[m] < 0 for m in clipped) else min(xs) - 5.0
+    x_hi = O[0] + CLIP_MM if any(d.lengths[m] > 0 for m in clipped) else max(xs) + 5.0
+    top = O[1] + d.H
+    items.append(Segment((x_lo, top), (x_hi, top), "construction"))
+    items.append(Segment(O, (O[0], top), "construction", dashed=True))
+    # the pole distance dimensioned left of the rays with its value: a bare "H" beside the carriers'
+    # rays H, H1, H2 would read as one of them
+    xd = x_lo - 6.0
+    items.append(Segment((O[0], O[1]), (xd - 2.0, O[1]), "label"))
+    items.append(Segment((x_lo, top), (xd - 2.0, top), "label"))
+    items += dimension((xd, O[1]), (xd, top), f"H = {number(d.H)} mm", (-1.0, 0.0))
     items.append(Circle(O, 0.8, "result"))
     items.append(Label("O", O, ((0.0, 1.0),), LETTER, italic=False))
     seen: dict[tuple[float, float], str] = {}
@@ -624,9 +639,22 @@ def velocity_items(d: TrainVelocityDiagram, lay: TrainLayout) -> list[Primitive]
         items.append(Segment(O, c, "construction"))
         key = (round(c[0], 3), round(c[1], 3))
         seen[key] = seen.get(key, "") + ("," if key in seen else "") + prime(m)
+    for m in clipped:  # toward its cut, stopped at the ω line's end: the arrow says it runs on
+        x = x_hi if d.lengths[m] > 0 else x_lo
+        end = (x, O[1] + d.H * (x - O[0]) / d.lengths[m])
+        items.append(Arrow(O, end, "construction"))
+        key = (round(end[0], 3), round(end[1], 3))
+        seen[key] = seen.get(key, "") + ("," if key in seen else "") + prime(m)
     for (x, y), text in seen.items():
-        items.append(Label(text, (x, y), ((0.0, -1.0),), LETTER, italic=False))
+        avoid = ((0.0, -1.0),) if y == top else ((-1.0 if x < O[0] else 1.0, 0.0), (0.0, -1.0))
+        items.append(Label(text, (x, y), avoid, LETTER, italic=False))
     return items
+
+
+def clipped_rays(d: TrainVelocityDiagram, train: GearTrain) -> tuple[str, ...]:
+    """The moving members whose cut on the ω line lies farther than :data:`CLIP_MM` from the
+    pole's foot: the pole distance was chosen for slower members the scene asks about."""
+    return tuple(m for m in d.lines if m not in train.fixed and abs(d.lengths[m]) > CLIP_MM)
 
 
 def velocity_notes(d: TrainVelocityDiagram, train: GearTrain, notation: str) -> tuple[str, ...]:
@@ -635,6 +663,9 @@ def velocity_notes(d: TrainVelocityDiagram, train: GearTrain, notation: str) -> 
     read = [f"ℓ_{{{prime(m)}}} = {number(d.lengths[m])} mm, ω_{{{prime(m)}}} = {number(d.omega(m))} rad/s"
             for m in d.lines if m not in train.fixed]
     notes += ["; ".join(read[k:k + 2]) for k in range(0, len(read), 2)]  # two members a line
+    clipped = clipped_rays(d, train)
+    if clipped:
+        notes.append(train_word("clipped", notation).replace("«m»", ", ".join(prime(m) for m in clipped)))
     if d.trials:
         notes.append(train_word("false position", notation).replace("«m»", ", ".join(prime(t) for t in d.trials)))
     return tuple(notes)
@@ -684,5 +715,5 @@ def train_sheet(scene: Scene[TrainScene], footer: Footer) -> tuple[Sheet, list[s
     return Sheet(scene.title, tuple(panels), page_size(scene), footer), warnings
 
 
-__all__ = ["TRAIN_WORDS", "Schematic", "schematic", "train_sheet", "train_word", "velocity_items",
+__all__ = ["CLIP_MM", "TRAIN_WORDS", "Schematic", "clipped_rays", "schematic", "train_sheet", "train_word", "velocity_items",
            "velocity_notes"]
