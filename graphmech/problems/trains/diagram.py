@@ -4,6 +4,7 @@ that the drawing fits — so that the lengths the check reports are the ones on 
 """
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -21,8 +22,9 @@ SLOT_MM = 16.0
 SCHEMATIC_MM, VELOCITY_MM, OMEGA_MM = 80.0, 40.0, 60.0
 #: The shortest pole distance chosen, mm (a slow member's ℓ is then short: the method's limit).
 H_LEAST = 10.0
-#: The longest pole distance chosen, mm: the schematic's height, H and the notes fill the sheet's height.
-H_MOST = 40.0
+#: The longest pole distance chosen, mm, and the height the lines' diagram and H share at most: with
+#: the notes below they fill the sheet's height.
+H_MOST, TALL_MM = 40.0, 115.0
 #: The pole distances a scene may state, mm (the reader's range): a chosen one stays within them.
 H_STATED = (1.0, 1000.0)
 
@@ -114,10 +116,12 @@ def train_velocity(lay: TrainLayout, scene: Scene[TrainScene], mu_l: float) -> T
     elif smax > 0.0:
         fits = OMEGA_MM * mu_v / smax
         least = H_LEAST if "v" not in scene.scales else H_STATED[0]
-        H = min(max(round_scale_below(fits), least), max(H_MOST, least), H_STATED[1])
+        ys = [p[1] for ln in probe.lines.values() for p in ln.points]
+        most = max(5.0 * math.floor(min(H_MOST, TALL_MM - (max(ys) - min(ys))) / 5.0), least)  # whole 5 mm
+        H = min(max(round_scale_below(fits), least), most, H_STATED[1])
     else:
         H = 20.0
     return velocity_diagram(lay, mu_l, mu_v, H)
 
 
-__all__ = ["Drawn", "H_LEAST", "H_MOST", "asked", "OMEGA_MM", "SCHEMATIC_MM", "SLOT_MM", "VELOCITY_MM", "drawn", "train_velocity"]
+__all__ = ["Drawn", "H_LEAST", "H_MOST", "TALL_MM", "asked", "OMEGA_MM", "SCHEMATIC_MM", "SLOT_MM", "VELOCITY_MM", "drawn", "train_velocity"]

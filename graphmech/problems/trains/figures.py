@@ -224,11 +224,60 @@ class _Drawer:
             out.setdefault(key, []).append(m.name)
         return out
 
+    def cross_planets(self, h: str) -> list[str]:
+        """The planets of ``h`` whose axis stands across h's in the side view: a bevel
+        differential's planets on the cross pin of its case."""
+        e = self.e2(h)
+        return [pl for pl in self.train.planets(h) if e is not None and (f := self.e2(pl)) is not None
+                and abs(f[0] * e[0] + f[1] * e[1]) < 1e-9]
+
+    def case(self, h: str) -> tuple[float, float, float]:
+        """A differential's case round its planets and side gears: (start, end) along h's axis and
+        its half height."""
+        pls = self.cross_planets(h)
+        sides = [g for pl in pls for mesh in self.train.meshes if pl in (self.train.gear(mesh.a).member,
+                 self.train.gear(mesh.b).member) for g in (mesh.a, mesh.b) if self.train.gear(g).member != pl]
+        ss = [self.along(h, self.p(self.lay.centre(g))) for g in sides + self.gears_of(h)]
+        half = max([abs(self._across(h, self.p(self.lay.centre(g)))) for pl in pls for g in self.gears_of(pl)]
+                   + [self.R(g) for g in sides]) + 3.0
+        return min(ss) - 2.0, max(ss) + 2.0, half
+
+    def _differential(self, members: list[str], h: str) -> None:
+        """A bevel differential's line: the case of h (hubs in bearings, the cross pin drawn with its
+        planets), each side gear's shaft out through the hub on its back, a fixed one held."""
+        lo, hi, half = self.case(h)
+        e = self.e2(h)
+        assert e is not None
+        self.level[h] = 1
+        self.items.append(_rect(self.at(h, (lo + hi) / 2), e, (hi - lo) / 2, -half, half))
+        for a, b in ((lo - OVERHANG / 2, lo), (hi, hi + OVERHANG / 2)):  # the case's hollow hubs
+            self._shaft(h, a, b, 1)
+        self._bearing(h, lo - OVERHANG / 2 + BEARING[0] / 2, 1)
+        self._bearing(h, hi + OVERHANG / 2 - BEARING[0] / 2, 1)
+        for m in members:
+            if m == h:
+                continue
+            for g in self.gears_of(m):
+                at = self.along(m, self.p(self.lay.centre(g)))
+                end = lo - OVERHANG if self._apex(g) > 0 else hi + OVERHANG
+                self._shaft(m, min(at, end), max(at, end), 0)
+                if m in self.train.fixed:
+                    self._ground_across(m, end)
+        pin = [self.at(h, self.along(h, self.p(self.lay.origin[pl])), t * half) for pl in self.cross_planets(h)
+               for t in (-1.0, 1.0)]
+        for a, b in zip(pin[::2], pin[1::2]):
+            self.items.append(Segment(a, b, "given"))
+        self.items.append(Label(prime(h), self.at(h, hi - 2.0, -half), ((0.0, 1.0), (1.0, 0.0)), LETTER, italic=False))
+
     def _group(self, members: list[str]) -> None:
         if self.e2(members[0]) is None:
             for m in members:  # a shaft seen end-on: its section
                 c = self.p(self.lay.origin[m])
                 self.items.append(Circle(c, 1.0, "given"))
+            return
+        diff = next((m for m in members if self.cross_planets(m)), None)
+        if diff is not None:
+            self._differential(members, diff)
             return
         fixed = [m for m in members if m in self.train.fixed]
         moving = [m for m in members if m not in self.train.fixed]
@@ -425,8 +474,8 @@ class _Drawer:
                 return 1.0 if d[0] * e[0] + d[1] * e[1] >= 0 else -1.0
         return 1.0
 
-    def _bevel(self, g: str, c: XY, e: XY, R: float) -> None:
-        apex_dir = self._apex(g)
+    def _bevel(self, g: str, c: XY, e: XY, R: float, flip: bool = False) -> None:
+        apex_dir = -self._apex(g) if flip else self._apex(g)
         depth = 0.35 * R
         n = (-e[1], e[0])
         pts = (_v(c, n, R), _v(_v(c, e, apex_dir * depth), n, 0.6 * R), _v(_v(c, e, apex_dir * depth), n, -0.6 * R),
@@ -456,7 +505,14 @@ class _Drawer:
         h = self.train.member(pl).carrier
         assert h is not None
         e = self.e2(pl)
-        if e is None or self.e2(h) != e:  # a bevel planet: its pin from the carrier's axis
+        if pl in self.cross_planets(h):  # on the case's cross pin (drawn with the case); its twin below
+            for g in self.gears_of(pl):
+                c = self.p(self.lay.centre(g))
+                if not any(self._across(h, self.p(self.lay.origin[o])) * self._across(h, c) < 0
+                           for o in self.cross_planets(h) if o != pl):
+                    self._bevel(g, self.reflect(h, c), e, self.R(g), flip=True)
+            return
+        if e is None or self.e2(h) != e:  # a planet across the carrier: its pin from the carrier's axis
             c = self.p(self.lay.origin[pl])
             self.items.append(Segment(self.p(self.lay.origin[h]), c, "given"))
             return
@@ -642,8 +698,9 @@ def velocity_items(d: TrainVelocityDiagram, lay: TrainLayout) -> list[Primitive]
     for m in clipped:  # toward its cut, stopped at the ω line's end: the arrow says it runs on
         x = x_hi if d.lengths[m] > 0 else x_lo
         end = (x, O[1] + d.H * (x - O[0]) / d.lengths[m])
-        items.append(Arrow(O, end, "construction"))
         key = (round(end[0], 3), round(end[1], 3))
+        if key not in seen:  # members turning alike (the closed differential's 2 and 6) share one ray
+            items.append(Arrow(O, end, "construction"))
         seen[key] = seen.get(key, "") + ("," if key in seen else "") + prime(m)
     for (x, y), text in seen.items():
         avoid = ((0.0, -1.0),) if y == top else ((-1.0 if x < O[0] else 1.0, 0.0), (0.0, -1.0))
