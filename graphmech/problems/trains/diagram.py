@@ -124,4 +124,4 @@ def train_velocity(lay: TrainLayout, scene: Scene[TrainScene], mu_l: float) -> T
     return velocity_diagram(lay, mu_l, mu_v, H)
 
 
-__all__ = ["Drawn", "H_LEAST", "H_MOST", "TALL_MM", "asked", "OMEGA_MM", "SCHEMATIC_MM", "SLOT_MM", "VELOCITY_MM", "drawn", "train_velocity"]
+__all__ = ["H_LEAST", "H_MOST", "OMEGA_MM", "SCHEMATIC_MM", "SLOT_MM", "TALL_MM", "VELOCITY_MM", "Drawn", "asked", "drawn", "train_velocity"]

@@ -45,9 +45,9 @@ from graphmech.exact.gear_train import solve
 from graphmech.mechanisms.gear_train import GearTrain
 from graphmech.methods.train_layout import TrainLayout, prime
 from graphmech.methods.train_velocity import TrainVelocityDiagram
+from graphmech.problems.gears.figures import dimension
 from graphmech.problems.kind import Footer
 from graphmech.problems.reader import Scene, page_size
-from graphmech.problems.gears.figures import dimension
 from graphmech.problems.trains.diagram import OMEGA_MM, SLOT_MM, drawn
 from graphmech.problems.trains.scene import TrainScene
 
@@ -265,8 +265,8 @@ class _Drawer:
                     self._ground_across(m, end)
         pin = [self.at(h, self.along(h, self.p(self.lay.origin[pl])), t * half) for pl in self.cross_planets(h)
                for t in (-1.0, 1.0)]
-        for a, b in zip(pin[::2], pin[1::2]):
-            self.items.append(Segment(a, b, "given"))
+        for p0, p1 in zip(pin[::2], pin[1::2]):
+            self.items.append(Segment(p0, p1, "given"))
         self.items.append(Label(prime(h), self.at(h, hi - 2.0, -half), ((0.0, 1.0), (1.0, 0.0)), LETTER, italic=False))
 
     def _group(self, members: list[str]) -> None:
@@ -505,7 +505,7 @@ class _Drawer:
         h = self.train.member(pl).carrier
         assert h is not None
         e = self.e2(pl)
-        if pl in self.cross_planets(h):  # on the case's cross pin (drawn with the case); its twin below
+        if e is not None and pl in self.cross_planets(h):  # on the case's cross pin (drawn with it); its twin
             for g in self.gears_of(pl):
                 c = self.p(self.lay.centre(g))
                 if not any(self._across(h, self.p(self.lay.origin[o])) * self._across(h, c) < 0

@@ -83,7 +83,7 @@ def test_extreme_trains_stay_on_the_sheet(tmp_path, n):
     speed of 10⁻³⁰⁰ r/min, a train at rest: the scales are chosen so that the sheet holds them."""
     p = tmp_path / "p.toml"
     p.write_text(PLANET_1_49999.format(n=n), encoding="utf-8")
-    code, out, err = run_cli("render", str(p), "-o", str(tmp_path / "p.svg"))
+    code, _out, err = run_cli("render", str(p), "-o", str(tmp_path / "p.svg"))
     assert (code, err) == (0, "")
     d = drawn(load_scene(p)).velocity
     assert d is not None and 1.0 <= d.H <= 1000.0
