@@ -253,6 +253,35 @@ def layout(train: GearTrain, module: float, axes: Mapping[str, str] | None = Non
         return ga.member, _add(ca, unsigned(ga.member), -slot[mesh.a] * gap)
 
     origin: dict[str, XYZ] = {}
+    slid: set[str] = set()
+
+    def twin(q: str) -> bool:
+        """Whether the planet q was just put on the axis of another planet of its carrier."""
+        h = train.member(q).carrier
+        if h is None:
+            return False
+        return any(o != q and o in origin and math.dist(origin[o], origin[q]) <= CLOSURE_REL * big
+                   and unsigned(o) == unsigned(q) for o in train.planets(h))
+
+    def axial(fixed: set[str]) -> None:
+        """Slide a central member coaxial with its carrier along its axis to where a spatial mesh
+        with a member placed puts it (the side bevels of a differential, one each side of the
+        planet): the slots' axial pitch is the side view's, a bevel planet's cone fixes its own."""
+        grew = True
+        while grew:
+            grew = False
+            for k, mesh in enumerate(train.meshes):
+                if mesh.kind in ("external", "internal"):
+                    continue
+                ma, mb = train.gear(mesh.a).member, train.gear(mesh.b).member
+                for p, q in ((ma, mb), (mb, ma)):
+                    if p in fixed and q not in fixed:
+                        e = unsigned(q)
+                        d = _add(through(k, p)[1], origin[q], -1.0)
+                        origin[q] = _add(origin[q], e, _dot(d, e))
+                        fixed.add(q)
+                        grew = True
+
     pending = list(names)
     while pending:
         origin[pending[0]] = (0.0, 0.0, 0.0)
@@ -263,6 +292,7 @@ def layout(train: GearTrain, module: float, axes: Mapping[str, str] | None = Non
                 for p, q in ((a, b), (b, a)):
                     if p in origin and q not in origin:
                         origin[q] = origin[p]
+                        slid.add(q)  # its line is its carrier's; where along it, a bevel mesh may say
                         grew = True
             if grew:
                 continue
@@ -271,11 +301,18 @@ def layout(train: GearTrain, module: float, axes: Mapping[str, str] | None = Non
                 for p, q in ((ma, mb), (mb, ma)):
                     if p in origin and q not in origin:
                         origin[q] = through(k, p)[1]
+                        if twin(q) and k not in towards:
+                            # an identical planet listed again (its side the default, or one the scene
+                            # gives it would draw it over the first): across the carrier's axis
+                            ta, tb = tangent[k]
+                            tangent[k] = ((-ta[0], -ta[1], -ta[2]), (-tb[0], -tb[1], -tb[2]))
+                            origin[q] = through(k, p)[1]
                         grew = True
                         break
                 if grew:
                     break
         pending = [n for n in names if n not in origin]
+    axial(set(names) - slid)
 
     tol = CLOSURE_REL * big
 

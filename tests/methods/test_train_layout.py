@@ -107,3 +107,25 @@ def test_refusals():
         layout(t, 1e-3, axes={"1": "x"})
     with pytest.raises(OutOfDomain, match="not parallel"):
         layout(t, 1e-3, axes={"2": "+y"})
+
+
+def test_an_identical_planet_listed_again_goes_across_the_carrier_s_axis():
+    # 2K-H: the sun 1 (20), two planets 2 and 2a (30) both meshing the ring 3 (80), every side "above":
+    # 2a would stand on 2's pin; it is put below the carrier's axis, its meshes closed from there
+    t = train({"1": None, "2": "H", "2a": "H", "3": None, "H": None},
+              [("1", 20, "1"), ("2", 30, "2"), ("2a", 30, "2a"), ("3", 80, "3")],
+              [("1", "2"), ("2", "3", "internal"), ("1", "2a"), ("2a", "3", "internal")], inputs={"3": 1.0})
+    lay = layout(t, 2e-3, sides={0: 1, 1: 1, 2: 1, 3: 1})
+    assert lay.arm("2") == pytest.approx(0.050) and lay.arm("2a") == pytest.approx(-0.050)
+    assert [round(lay.pitch[k][1], 12) for k in range(4)] == [0.020, 0.080, -0.020, -0.080]
+
+
+def test_a_bevel_differential_s_side_gears_face_each_other_across_the_planet():
+    # the side gears 1 and 3 (20) on the case H's axis, the planet 2 (12, axis +y) on H's cross pin
+    t = train({"1": None, "2": "H", "3": None, "H": None}, [("1", 20, "1"), ("2", 12, "2"), ("3", 20, "3")],
+              [Mesh("1", "2", "bevel", -1), Mesh("2", "3", "bevel", -1)], inputs={"H": 1.0}, fixed=("3",))
+    lay = layout(t, 1e-3, axes={"2": "+y"}, towards={0: ("+y", "-x"), 1: ("+x", "+y")})
+    c1, c2, c3 = lay.centre("1"), lay.centre("2"), lay.centre("3")
+    # one axis; the side gears 2·r2 = 12 mm apart, the planet's centre between them at r1 = 10 mm above it
+    assert c1[1:] == c3[1:] == pytest.approx((0.0, 0.0)) and c3[0] - c1[0] == pytest.approx(0.012, abs=1e-15)
+    assert c2 == pytest.approx(((c1[0] + c3[0]) / 2, 0.010, 0.0), abs=1e-15)

@@ -4,13 +4,15 @@ that the drawing fits — so that the lengths the check reports are the ones on 
 """
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from graphmech.errors import NoSolution, NotApplicable
+from graphmech.errors import GraphmechError, NoSolution, NotApplicable
 from graphmech.methods.train_layout import TrainLayout, layout
 from graphmech.methods.train_velocity import TrainVelocityDiagram, velocity_diagram
 from graphmech.problems.reader import Scene
+from graphmech.problems.trains.names import parse_name
 from graphmech.problems.trains.scene import TrainScene
 from graphmech.scales import round_scale, round_scale_below
 
@@ -20,6 +22,9 @@ SLOT_MM = 16.0
 SCHEMATIC_MM, VELOCITY_MM, OMEGA_MM = 80.0, 40.0, 60.0
 #: The shortest pole distance chosen, mm (a slow member's ℓ is then short: the method's limit).
 H_LEAST = 10.0
+#: The longest pole distance chosen, mm, and the height the lines' diagram and H share at most: with
+#: the notes below they fill the sheet's height.
+H_MOST, TALL_MM = 40.0, 115.0
 #: The pole distances a scene may state, mm (the reader's range): a chosen one stays within them.
 H_STATED = (1.0, 1000.0)
 
@@ -69,16 +74,39 @@ def drawn(scene: Scene[TrainScene], inputs: Mapping[str, float] | None = None) -
     return Drawn(lay, mu_l, d)
 
 
+def asked(scene: Scene[TrainScene]) -> tuple[str, ...]:
+    """The members whose lengths ℓ the scene's ``find`` reads off the ω line: a speed's member, a
+    ratio's two (Willis' ratios, tooth numbers and the rest are the book's equations')."""
+    p = scene.problem
+    out: list[str] = []
+    for text in scene.find:
+        try:
+            n = parse_name(text.split("[")[0], p.train, p.solved_z)
+        except GraphmechError:  # a dynamics name, read elsewhere
+            continue
+        if n.what in ("n", "omega", "i"):
+            for g in (n.a, n.b):
+                if g is not None and p.train.member_of(g) not in out:
+                    out.append(p.train.member_of(g))
+    return tuple(out)
+
+
 def train_velocity(lay: TrainLayout, scene: Scene[TrainScene], mu_l: float) -> TrainVelocityDiagram:
     """The velocity diagram at the scene's scales (μv, then H from ``pole_distance`` or μω), else
-    chosen: the fastest pitch point at most :data:`VELOCITY_MM` wide and the longest ℓ about
-    :data:`OMEGA_MM` at a pole distance of at least :data:`H_LEAST` — μv is coarsened where a
-    small fast gear beside large slow ones would otherwise run its ray off the sheet."""
+    chosen for the speeds the scene asks (:func:`asked`; none: every member): the fastest pitch
+    point at most :data:`VELOCITY_MM` wide, the longest ℓ asked about :data:`OMEGA_MM` at a pole
+    distance between :data:`H_LEAST` and :data:`H_MOST` — so a slow output is drawn as long as the
+    sheet allows, and a faster member's ray that would cut the ω line beyond it is drawn clipped at
+    the line's end (its ℓ in the notes). μv is coarsened where a small fast gear asked beside large
+    slow ones would otherwise run its ray off the sheet at H_LEAST."""
     if not lay.parallel:
         raise NotApplicable("the velocity diagram is drawn for trains whose axes are all parallel")
     probe = velocity_diagram(lay, mu_l, 1.0, 1.0)  # at μv = 1: X is v in m/s, slopes ω·μl
     vmax = max((abs(ln.x_at(p[1])) for ln in probe.lines.values() for p in ln.points), default=0.0)
-    smax = max(abs(ln.slope) for ln in probe.lines.values())
+    every = max(abs(ln.slope) for ln in probe.lines.values())
+    # a member asked at rest (to rounding: the Ferguson train's sun) has ℓ = 0 at any H
+    want = [m for m in asked(scene) if abs(probe.lines[m].slope) > 1e-9 * every] or list(probe.lines)
+    smax = max(abs(probe.lines[m].slope) for m in want)
     need = max(vmax / VELOCITY_MM, H_LEAST * smax / OMEGA_MM)
     mu_v = scene.scales.get("v") or (round_scale(need) if need > 0.0 else 1.0)  # 1: every member at rest
     if scene.problem.pole_distance is not None:
@@ -87,10 +115,13 @@ def train_velocity(lay: TrainLayout, scene: Scene[TrainScene], mu_l: float) -> T
         H = mu_v / (mu_l * scene.scales["omega"])
     elif smax > 0.0:
         fits = OMEGA_MM * mu_v / smax
-        H = min(max(round_scale_below(fits), H_LEAST if "v" not in scene.scales else H_STATED[0]), H_STATED[1])
+        least = H_LEAST if "v" not in scene.scales else H_STATED[0]
+        ys = [p[1] for ln in probe.lines.values() for p in ln.points]
+        most = max(5.0 * math.floor(min(H_MOST, TALL_MM - (max(ys) - min(ys))) / 5.0), least)  # whole 5 mm
+        H = min(max(round_scale_below(fits), least), most, H_STATED[1])
     else:
         H = 20.0
     return velocity_diagram(lay, mu_l, mu_v, H)
 
 
-__all__ = ["Drawn", "H_LEAST", "OMEGA_MM", "SCHEMATIC_MM", "SLOT_MM", "VELOCITY_MM", "drawn", "train_velocity"]
+__all__ = ["H_LEAST", "H_MOST", "OMEGA_MM", "SCHEMATIC_MM", "SLOT_MM", "TALL_MM", "VELOCITY_MM", "Drawn", "asked", "drawn", "train_velocity"]

@@ -45,9 +45,10 @@ from graphmech.exact.gear_train import solve
 from graphmech.mechanisms.gear_train import GearTrain
 from graphmech.methods.train_layout import TrainLayout, prime
 from graphmech.methods.train_velocity import TrainVelocityDiagram
+from graphmech.problems.gears.figures import dimension
 from graphmech.problems.kind import Footer
 from graphmech.problems.reader import Scene, page_size
-from graphmech.problems.trains.diagram import SLOT_MM, drawn
+from graphmech.problems.trains.diagram import OMEGA_MM, SLOT_MM, drawn
 from graphmech.problems.trains.scene import TrainScene
 
 #: The train's words (laid out as graphmech.drawing.notation.WORDS: English, 中文, русский).
@@ -57,6 +58,9 @@ TRAIN_WORDS: dict[str, tuple[str, str, str]] = {
     "not axial": ("axial positions not to scale", "轴向位置未按比例", "осевые размеры не в масштабе"),
     "false position": ("the loop closed by false position (trial line «m»)", "封闭环路用试位法求得（试作 «m» 的速度线）",
                        "контур замкнут методом ложного положения (пробная линия «m»)"),
+    "clipped": ("the rays of «m» clipped at the ω line's end (ℓ above: H is chosen for the speeds asked)",
+                "«m»的射线在ω线端部截断（ℓ见上；极距H按所求转速选取）",
+                "лучи «m» обрезаны у конца прямой ω (ℓ выше: H выбрано для искомых скоростей)"),
     "spatial": ("a spatial train: no velocity diagram (its axes are not parallel)",
                 "空间轮系：各轴不平行，不作速度图", "пространственная передача: план скоростей не строится"),
 }
@@ -71,6 +75,8 @@ ARM_AT, WEB_AT = 0.3, 0.45
 WORM_L = 2.2
 #: A rotation arrow's length, mm.
 TURN_MM = 6.0
+#: The ω line's reach either side of the pole's foot, mm: a ray cutting it farther is drawn clipped there.
+CLIP_MM = OMEGA_MM + 10.0
 
 
 def train_word(key: str, notation: str = "en") -> str:
@@ -218,11 +224,60 @@ class _Drawer:
             out.setdefault(key, []).append(m.name)
         return out
 
+    def cross_planets(self, h: str) -> list[str]:
+        """The planets of ``h`` whose axis stands across h's in the side view: a bevel
+        differential's planets on the cross pin of its case."""
+        e = self.e2(h)
+        return [pl for pl in self.train.planets(h) if e is not None and (f := self.e2(pl)) is not None
+                and abs(f[0] * e[0] + f[1] * e[1]) < 1e-9]
+
+    def case(self, h: str) -> tuple[float, float, float]:
+        """A differential's case round its planets and side gears: (start, end) along h's axis and
+        its half height."""
+        pls = self.cross_planets(h)
+        sides = [g for pl in pls for mesh in self.train.meshes if pl in (self.train.gear(mesh.a).member,
+                 self.train.gear(mesh.b).member) for g in (mesh.a, mesh.b) if self.train.gear(g).member != pl]
+        ss = [self.along(h, self.p(self.lay.centre(g))) for g in sides + self.gears_of(h)]
+        half = max([abs(self._across(h, self.p(self.lay.centre(g)))) for pl in pls for g in self.gears_of(pl)]
+                   + [self.R(g) for g in sides]) + 3.0
+        return min(ss) - 2.0, max(ss) + 2.0, half
+
+    def _differential(self, members: list[str], h: str) -> None:
+        """A bevel differential's line: the case of h (hubs in bearings, the cross pin drawn with its
+        planets), each side gear's shaft out through the hub on its back, a fixed one held."""
+        lo, hi, half = self.case(h)
+        e = self.e2(h)
+        assert e is not None
+        self.level[h] = 1
+        self.items.append(_rect(self.at(h, (lo + hi) / 2), e, (hi - lo) / 2, -half, half))
+        for a, b in ((lo - OVERHANG / 2, lo), (hi, hi + OVERHANG / 2)):  # the case's hollow hubs
+            self._shaft(h, a, b, 1)
+        self._bearing(h, lo - OVERHANG / 2 + BEARING[0] / 2, 1)
+        self._bearing(h, hi + OVERHANG / 2 - BEARING[0] / 2, 1)
+        for m in members:
+            if m == h:
+                continue
+            for g in self.gears_of(m):
+                at = self.along(m, self.p(self.lay.centre(g)))
+                end = lo - OVERHANG if self._apex(g) > 0 else hi + OVERHANG
+                self._shaft(m, min(at, end), max(at, end), 0)
+                if m in self.train.fixed:
+                    self._ground_across(m, end)
+        pin = [self.at(h, self.along(h, self.p(self.lay.origin[pl])), t * half) for pl in self.cross_planets(h)
+               for t in (-1.0, 1.0)]
+        for p0, p1 in zip(pin[::2], pin[1::2]):
+            self.items.append(Segment(p0, p1, "given"))
+        self.items.append(Label(prime(h), self.at(h, hi - 2.0, -half), ((0.0, 1.0), (1.0, 0.0)), LETTER, italic=False))
+
     def _group(self, members: list[str]) -> None:
         if self.e2(members[0]) is None:
             for m in members:  # a shaft seen end-on: its section
                 c = self.p(self.lay.origin[m])
                 self.items.append(Circle(c, 1.0, "given"))
+            return
+        diff = next((m for m in members if self.cross_planets(m)), None)
+        if diff is not None:
+            self._differential(members, diff)
             return
         fixed = [m for m in members if m in self.train.fixed]
         moving = [m for m in members if m not in self.train.fixed]
@@ -419,8 +474,8 @@ class _Drawer:
                 return 1.0 if d[0] * e[0] + d[1] * e[1] >= 0 else -1.0
         return 1.0
 
-    def _bevel(self, g: str, c: XY, e: XY, R: float) -> None:
-        apex_dir = self._apex(g)
+    def _bevel(self, g: str, c: XY, e: XY, R: float, flip: bool = False) -> None:
+        apex_dir = -self._apex(g) if flip else self._apex(g)
         depth = 0.35 * R
         n = (-e[1], e[0])
         pts = (_v(c, n, R), _v(_v(c, e, apex_dir * depth), n, 0.6 * R), _v(_v(c, e, apex_dir * depth), n, -0.6 * R),
@@ -450,7 +505,14 @@ class _Drawer:
         h = self.train.member(pl).carrier
         assert h is not None
         e = self.e2(pl)
-        if e is None or self.e2(h) != e:  # a bevel planet: its pin from the carrier's axis
+        if e is not None and pl in self.cross_planets(h):  # on the case's cross pin (drawn with it); its twin
+            for g in self.gears_of(pl):
+                c = self.p(self.lay.centre(g))
+                if not any(self._across(h, self.p(self.lay.origin[o])) * self._across(h, c) < 0
+                           for o in self.cross_planets(h) if o != pl):
+                    self._bevel(g, self.reflect(h, c), e, self.R(g), flip=True)
+            return
+        if e is None or self.e2(h) != e:  # a planet across the carrier: its pin from the carrier's axis
             c = self.p(self.lay.origin[pl])
             self.items.append(Segment(self.p(self.lay.origin[h]), c, "given"))
             return
@@ -608,13 +670,22 @@ def velocity_items(d: TrainVelocityDiagram, lay: TrainLayout) -> list[Primitive]
         at, out = next((c for c in cands[:2] if room(c[0]) >= 6.0), max(cands, key=lambda c: room(c[0])))
         taken.append(at)
         items.append(Label(prime(m), at, ((-out[0], -out[1]),), LETTER, italic=False))
-    # the pole, the ω line at H above it, the rays
+    # the pole, the ω line at H above it, the rays (one longer than the sheet allows clipped at its end)
     O = d.pole
-    cuts = {m: d.cut(m) for m in d.lines}
+    clipped = clipped_rays(d, train)
+    cuts = {m: d.cut(m) for m in d.lines if m not in clipped}
     xs = [c[0] for c in cuts.values()] + [O[0]]
-    items.append(Segment((min(xs) - 5.0, O[1] + d.H), (max(xs) + 5.0, O[1] + d.H), "construction"))
-    items.append(Segment(O, (O[0], O[1] + d.H), "construction", dashed=True))
-    items.append(Label("H", (O[0], O[1] + d.H / 2), ((1.0, 0.0), (-1.0, 0.0)), LETTER))
+    x_lo = O[0] - CLIP_MM if any(d.lengths[m] < 0 for m in clipped) else min(xs) - 5.0
+    x_hi = O[0] + CLIP_MM if any(d.lengths[m] > 0 for m in clipped) else max(xs) + 5.0
+    top = O[1] + d.H
+    items.append(Segment((x_lo, top), (x_hi, top), "construction"))
+    items.append(Segment(O, (O[0], top), "construction", dashed=True))
+    # the pole distance dimensioned left of the rays with its value: a bare "H" beside the carriers'
+    # rays H, H1, H2 would read as one of them
+    xd = x_lo - 6.0
+    items.append(Segment((O[0], O[1]), (xd - 2.0, O[1]), "label"))
+    items.append(Segment((x_lo, top), (xd - 2.0, top), "label"))
+    items += dimension((xd, O[1]), (xd, top), f"H = {number(d.H)} mm", (-1.0, 0.0))
     items.append(Circle(O, 0.8, "result"))
     items.append(Label("O", O, ((0.0, 1.0),), LETTER, italic=False))
     seen: dict[tuple[float, float], str] = {}
@@ -624,9 +695,23 @@ def velocity_items(d: TrainVelocityDiagram, lay: TrainLayout) -> list[Primitive]
         items.append(Segment(O, c, "construction"))
         key = (round(c[0], 3), round(c[1], 3))
         seen[key] = seen.get(key, "") + ("," if key in seen else "") + prime(m)
+    for m in clipped:  # toward its cut, stopped at the ω line's end: the arrow says it runs on
+        x = x_hi if d.lengths[m] > 0 else x_lo
+        end = (x, O[1] + d.H * (x - O[0]) / d.lengths[m])
+        key = (round(end[0], 3), round(end[1], 3))
+        if key not in seen:  # members turning alike (the closed differential's 2 and 6) share one ray
+            items.append(Arrow(O, end, "construction"))
+        seen[key] = seen.get(key, "") + ("," if key in seen else "") + prime(m)
     for (x, y), text in seen.items():
-        items.append(Label(text, (x, y), ((0.0, -1.0),), LETTER, italic=False))
+        avoid = ((0.0, -1.0),) if y == top else ((-1.0 if x < O[0] else 1.0, 0.0), (0.0, -1.0))
+        items.append(Label(text, (x, y), avoid, LETTER, italic=False))
     return items
+
+
+def clipped_rays(d: TrainVelocityDiagram, train: GearTrain) -> tuple[str, ...]:
+    """The moving members whose cut on the ω line lies farther than :data:`CLIP_MM` from the
+    pole's foot: the pole distance was chosen for slower members the scene asks about."""
+    return tuple(m for m in d.lines if m not in train.fixed and abs(d.lengths[m]) > CLIP_MM)
 
 
 def velocity_notes(d: TrainVelocityDiagram, train: GearTrain, notation: str) -> tuple[str, ...]:
@@ -635,6 +720,9 @@ def velocity_notes(d: TrainVelocityDiagram, train: GearTrain, notation: str) -> 
     read = [f"ℓ_{{{prime(m)}}} = {number(d.lengths[m])} mm, ω_{{{prime(m)}}} = {number(d.omega(m))} rad/s"
             for m in d.lines if m not in train.fixed]
     notes += ["; ".join(read[k:k + 2]) for k in range(0, len(read), 2)]  # two members a line
+    clipped = clipped_rays(d, train)
+    if clipped:
+        notes.append(train_word("clipped", notation).replace("«m»", ", ".join(prime(m) for m in clipped)))
     if d.trials:
         notes.append(train_word("false position", notation).replace("«m»", ", ".join(prime(t) for t in d.trials)))
     return tuple(notes)
@@ -684,5 +772,5 @@ def train_sheet(scene: Scene[TrainScene], footer: Footer) -> tuple[Sheet, list[s
     return Sheet(scene.title, tuple(panels), page_size(scene), footer), warnings
 
 
-__all__ = ["TRAIN_WORDS", "Schematic", "schematic", "train_sheet", "train_word", "velocity_items",
+__all__ = ["CLIP_MM", "TRAIN_WORDS", "Schematic", "clipped_rays", "schematic", "train_sheet", "train_word", "velocity_items",
            "velocity_notes"]

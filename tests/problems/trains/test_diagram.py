@@ -10,7 +10,7 @@ import pytest
 from graphmech.errors import NoSolution
 from graphmech.exact.gear_train import solve
 from graphmech.mechanisms.gear_train import rpm
-from graphmech.problems.trains.diagram import drawn
+from graphmech.problems.trains.diagram import asked, drawn
 from graphmech.scene import load_scene, parse_scene
 from tests.conftest import SCENES, run_cli
 
@@ -83,7 +83,7 @@ def test_extreme_trains_stay_on_the_sheet(tmp_path, n):
     speed of 10⁻³⁰⁰ r/min, a train at rest: the scales are chosen so that the sheet holds them."""
     p = tmp_path / "p.toml"
     p.write_text(PLANET_1_49999.format(n=n), encoding="utf-8")
-    code, out, err = run_cli("render", str(p), "-o", str(tmp_path / "p.svg"))
+    code, _out, err = run_cli("render", str(p), "-o", str(tmp_path / "p.svg"))
     assert (code, err) == (0, "")
     d = drawn(load_scene(p)).velocity
     assert d is not None and 1.0 <= d.H <= 1000.0
@@ -98,3 +98,19 @@ def test_a_locked_train_is_said_before_its_drawing(tmp_path):
                  'kind = "internal"\n[[train.input]]\nmember = "1"\nspeed_rpm = 100\n', encoding="utf-8")
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "l.svg"))
     assert code == 2 and err.startswith("l.toml: the train locks") and not (tmp_path / "l.svg").exists()
+
+
+def test_the_pole_distance_is_chosen_for_the_speeds_asked():
+    # the closed differential asks n3 and n5: H = 40 mm (the sheet's most) draws ℓ5 = 3.35 mm, four
+    # times the 0.84 mm an H fitted to the input's ray gave; the input's ray runs 164 mm, clipped
+    s = load_scene(SCENES / "train.closed_differential_n3_n5.toml")
+    assert asked(s) == ("5", "3")
+    d = drawn(s).velocity
+    assert d is not None and d.H == 40.0 and d.mu_v == 0.05
+    assert d.lengths["5"] == pytest.approx(3.3510321638291125, rel=1e-12)
+    assert d.lengths["1"] == pytest.approx(164.2, rel=1e-3)
+    exact = solve(s.problem.train).omega
+    assert d.omega("5") == pytest.approx(exact["5"], rel=1e-12)
+    # the conveyor asks i14: the input's ray is asked too, so H stays where ℓ1 fits the ω line
+    c = drawn(load_scene(SCENES / "train.conveyor_planetary_n4.toml")).velocity
+    assert c is not None and c.H == 10.0 and abs(c.lengths["1"]) <= 60.0

@@ -21,11 +21,13 @@ from graphmech.exact.gear_train import solve
 from graphmech.mechanisms.gear_train import Mesh, rpm
 from graphmech.methods.train_layout import layout
 from graphmech.problems.reader import Page, Scene
-from graphmech.problems.trains.diagram import SLOT_MM, train_velocity
-from graphmech.problems.trains.figures import schematic, train_sheet
+from graphmech.problems.trains.diagram import SLOT_MM, drawn, train_velocity
+from graphmech.problems.trains.figures import CLIP_MM, schematic, train_sheet
 from graphmech.problems.trains.scene import TrainScene
 from graphmech.render.svg import render_svg
-from tests.conftest import reference_problem
+from graphmech.scene import load_scene
+from tests.conftest import ROOT, reference_problem
+from tests.conftest import SCENES as SCENE_DIR
 from tests.methods.test_train_velocity import (
     bank,
     closed_differential,
@@ -288,3 +290,64 @@ def test_no_two_velocity_lines_are_named_at_one_point(name):
         for b in lines[i + 1:]:
             d = ((a.anchor[0] - b.anchor[0]) ** 2 + (a.anchor[1] - b.anchor[1]) ** 2) ** 0.5
             assert d >= 5.0, (a.text, b.text, d)
+
+
+def test_the_pole_distance_is_dimensioned_apart_from_the_carriers_rays():
+    # the screwdriver's rays H1, H2 on the ω line: the pole distance is "H = 10 mm", a dimension
+    vel = panels(screwdriver_scene())[0]["velocity"]
+    texts = labels(vel)
+    assert "H" not in texts and texts.count("H = 10 mm") == 1 and {"H1", "H2"} <= set(texts)
+    dim = next(it for it in vel.items if isinstance(it, Label) and it.text == "H = 10 mm")
+    o = next(it for it in vel.items if isinstance(it, Label) and it.text == "O").anchor
+    assert dim.anchor[0] < min(it.anchor[0] for it in vel.items if isinstance(it, Label) and it.text in ("H1", "H2"))
+    assert o[1] < dim.anchor[1] < o[1] + 10.0  # halfway up the pole distance
+    assert vel.notes[2].startswith("H = 10 mm, μ_{ω} = ")
+
+
+def test_rays_past_the_omega_line_s_end_are_clipped_and_said():
+    sc = load_scene(SCENE_DIR / "train.closed_differential_n3_n5.toml")
+    vel = panels(sc)[0]["velocity"]
+    assert vel.notes[-2] == "the rays of 1, 2, 6 clipped at the ω line's end (ℓ above: H is chosen for the speeds asked)"
+    assert any(n.startswith("ℓ_{1} = 164.2 mm") for n in vel.notes)
+    o = next(it for it in vel.items if isinstance(it, Label) and it.text == "O").anchor
+    rays = [it for it in vel.items if isinstance(it, Arrow) and it.p0 == o]
+    assert len(rays) == 2  # 1 to the right; 2 and 6 (one ray) to the left, each to the ω line's end
+    assert sorted(abs(r.p1[0] - o[0]) for r in rays) == pytest.approx([CLIP_MM, CLIP_MM])
+    assert all(r.p1[1] < o[1] + 40.0 for r in rays)  # below the ω line: they run on past its end
+
+
+def test_an_identical_planet_is_drawn_across_the_carrier_s_axis(tmp_path):
+    # 2 and 2a both mesh the sun and the ring: one above, one below, neither drawn twice
+    lay_planets = panels(load_scene(ROOT / "tests" / "scenes" / "trains" / "twin_planets.toml"))
+    sch = lay_planets[0]["schematic"]
+    assert {"2", "2a"} <= set(labels(sch))
+    rects = [it for it in sch.items if isinstance(it, Polyline) and it.closed and len(it.points) == 4
+             and abs(it.points[1][0] - it.points[0][0]) == pytest.approx(3.0)]
+    ys = sorted(round(sum(p[1] for p in r.points) / 4, 6) for r in rects)
+    assert len(ys) == len(set(ys)) == 3  # the sun and the two planets, none on top of another
+
+
+def test_the_bevel_differential_s_case_cross_pin_and_side_gears():
+    sc = load_scene(ROOT / "tests" / "scenes" / "trains" / "bevel_differential.toml")
+    sheet_panels, warnings = panels(sc)
+    sch = sheet_panels["schematic"]
+    assert warnings == [] and {"1", "2", "3", "4", "5", "H"} <= set(labels(sch))
+    lay = drawn(sc).layout
+    mu = 0.001  # the scene's μl (the figure's note)
+    assert sch.notes[0] == "μ_{l} = 0.001 m/mm"
+    x1, x3 = lay.centre("1")[0] / mu, lay.centre("3")[0] / mu
+    bevels = {round(sum(p[0] for p in it.points) / 4, 3): it for it in sch.items
+              if isinstance(it, Polyline) and it.closed and len(it.points) == 4}
+    # the side gears' trapezoids narrow toward each other (their apexes meet at the cross pin)
+    left = next(it for x, it in bevels.items() if abs(it.points[0][0] - x1) < 1e-6 and abs(it.points[3][0] - x1) < 1e-6)
+    right = next(it for x, it in bevels.items() if abs(it.points[0][0] - x3) < 1e-6 and abs(it.points[3][0] - x3) < 1e-6)
+    assert left.points[1][0] > x1 and right.points[1][0] < x3
+    # the case: a rectangle round both side gears and the planet (and its twin below the axis)
+    case = max((it for it in sch.items if isinstance(it, Polyline) and it.closed and len(it.points) == 4),
+               key=lambda it: abs(it.points[2][0] - it.points[0][0]) * abs(it.points[2][1] - it.points[0][1]))
+    xs, ys = [p[0] for p in case.points], [p[1] for p in case.points]
+    assert min(xs) < x1 and max(xs) > x3 and min(ys) < -10.0 and max(ys) > 10.0
+    # the cross pin: a vertical segment across the case at the apexes' point, midway between 1 and 3
+    mid = (x1 + x3) / 2
+    assert any(isinstance(it, Segment) and abs(it.p0[0] - mid) < 1e-6 and abs(it.p1[0] - mid) < 1e-6
+               and it.p0[1] == pytest.approx(min(ys)) and it.p1[1] == pytest.approx(max(ys)) for it in sch.items)
