@@ -141,7 +141,7 @@ def test_a_bevel_planet_s_speed_is_its_spin_relative_to_the_carrier():
     wheel at 2·500 (i^H_13 = −1); the bevel planet's axis turns with the case, so its row is its spin
     about its own axis relative to the case, (n1 − nH)·z1/z2 = 500·20/12 — not nH + that, a sum
     across perpendicular axes."""
-    an, _, extras, lines = check(load_scene(scene_path("trains/automobile_differential")))
+    an, _, extras, lines = check(load_scene(scene_path("trains/bevel_differential")))
     q = {r.name: r for r in an.rows}
     assert q["nH"].exact == pytest.approx(500.0, rel=1e-14) and q["n1"].exact == pytest.approx(1000.0, rel=1e-14)
     assert q["n2"].graphical == pytest.approx(500.0 * 20 / 12, rel=1e-14)

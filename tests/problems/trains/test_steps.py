@@ -21,8 +21,9 @@ def test_the_closed_differential_as_the_book_solves_it():
     solved = lines.index("solve the equations together")
     assert lines[solved + 4:solved + 6] == ["n5 = 20 r/min", "n3 = −100 r/min"]  # the book's values
     assert lines[-3].startswith("by the velocity diagram (μl = 0.002 m/mm, μv = 0.05 (m/s)/mm)")
-    assert lines[-3].endswith("ω = ℓ·μv/(μl·H) = ℓ × 2.5 (rad/s)/mm")
-    assert lines[-2:] == ["read n5 = 0.8378 mm × 23.87 = 20 r/min", "read n3 = −4.189 mm × 23.87 = −100 r/min"]
+    # H chosen for the speeds asked (40 mm): the input's ray is clipped, n5 and n3 long enough to read
+    assert lines[-3].endswith("H = 40 mm the rays parallel to them cut the ω line, ω = ℓ·μv/(μl·H) = ℓ × 0.625 (rad/s)/mm")
+    assert lines[-2:] == ["read n5 = 3.351 mm × 5.968 = 20 r/min", "read n3 = −16.76 mm × 5.968 = −100 r/min"]
 
 
 def test_other_notations():
