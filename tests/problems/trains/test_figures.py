@@ -5,6 +5,8 @@ chain, a worm and bevel spatial train); what each panel holds, the arrows of rot
 speeds' signs, the velocity diagram's ω against the exact solve, byte-identical output."""
 from __future__ import annotations
 
+import warnings
+
 import pytest
 
 from graphmech.drawing.primitives import (
@@ -24,6 +26,7 @@ from graphmech.problems.reader import Page, Scene
 from graphmech.problems.trains.diagram import SLOT_MM, drawn, train_velocity
 from graphmech.problems.trains.figures import CLIP_MM, schematic, train_sheet
 from graphmech.problems.trains.scene import TrainScene
+from graphmech.render.sheet import LayoutWarning
 from graphmech.render.svg import render_svg
 from graphmech.scene import load_scene
 from tests.conftest import ROOT, reference_problem
@@ -222,8 +225,12 @@ def test_unknown_panels_are_refused():
 
 @pytest.mark.parametrize("name", list(SCENES))
 def test_the_svg_is_byte_identical_twice(name):
-    a = render_svg(train_sheet(SCENES[name](), ("f",))[0], "gtest")
-    b = render_svg(train_sheet(SCENES[name](), ("f",))[0], "gtest")
+    # (the closed differential built here asks nothing, so every ray counts and its sheet runs a
+    # little off A4: the renderer's warning says so, and is not what this test is about)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", LayoutWarning)
+        a = render_svg(train_sheet(SCENES[name](), ("f",))[0], "gtest")
+        b = render_svg(train_sheet(SCENES[name](), ("f",))[0], "gtest")
     assert a == b
     assert "<svg" in a and a.count("<line") > 10
 
