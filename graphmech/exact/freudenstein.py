@@ -24,10 +24,11 @@ from typing import Callable
 import numpy as np
 
 from graphmech.errors import OutOfDomain
+from graphmech.timing import best_time
 from graphmech.exact.linkage import solve
 from graphmech.mechanisms.linkage import RRR, Crank, Linkage
 
-__all__ = ["FourBar", "StructuralError", "output_angle", "structural_error"]
+__all__ = ["FourBar", "StructuralError", "convergence", "output_angle", "structural_error"]
 
 #: Sampled points of the error over the range (the default).
 SAMPLES = 2001
@@ -80,8 +81,8 @@ class StructuralError:
     """The structural error of a function generator over its range (angles in rad).
 
     ``assembles``: False when the linkage cannot be assembled on the branch through the first
-    precision point somewhere in the range (``why`` says where); then the error arrays are NaN
-    where it does not assemble and ``max_error`` is ``inf``.
+    precision point somewhere in the range, or at that point on either branch (``why`` says
+    where); then the error arrays are NaN where it does not assemble and ``max_error`` is ``inf``.
     ``phi``, ``error``: the sampled curve e(φ) = ψ(φ) − ψ_d(φ); ``error_y`` the same in units of y.
     ``extremes_phi`` / ``extremes``: the located extremes of e (ends included), in φ order.
     ``max_error``: max |e| (rad), ``max_error_y`` in units of y.
@@ -117,8 +118,7 @@ def structural_error(bar: FourBar, f: _Fn, x0: float, x1: float, phi0: float, dp
     Raises
     ------
     OutOfDomain
-        ``samples`` < 3, Δφ or Δψ = 0, x₀ = x₁, f(x₀) = f(x₁), no precision point, or a linkage
-        that assembles at the first precision point on neither branch.
+        ``samples`` < 3, Δφ or Δψ = 0, x₀ = x₁, f(x₀) = f(x₁), or no precision point.
     """
     if samples < 3:
         raise OutOfDomain(f"samples = {samples}: at least 3")
@@ -143,14 +143,18 @@ def structural_error(bar: FourBar, f: _Fn, x0: float, x1: float, phi0: float, dp
             miss = abs(float(_near(psi1, desired(pp[:1]))[0]))
             if miss < best:
                 best, branch = miss, side
+    phi = phi0 + dphi * np.linspace(0.0, 1.0, samples)
+    empty = np.full(0, np.nan)
     if not branch:
-        raise OutOfDomain("the four-bar cannot be assembled at the first precision point")
+        at = f"{math.degrees(float(pp[0])):.4f}°"
+        return StructuralError("", False, f"cannot be assembled at the first precision point φ = {at} "
+                               "on either branch", phi, np.full(samples, np.nan), np.full(samples, np.nan),
+                               empty, empty, math.inf, math.inf, np.full(pp.size, np.nan), "")
 
     def err(phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         psi, ok = output_angle(bar, phi, branch)
         return _near(psi, desired(phi)), ok
 
-    phi = phi0 + dphi * np.linspace(0.0, 1.0, samples)
     e, ok = err(phi)
     at_points = err(pp)[0]
     scale_y = (y1 - y0) / dpsi
@@ -159,10 +163,9 @@ def structural_error(bar: FourBar, f: _Fn, x0: float, x1: float, phi0: float, dp
               f"to {_ZOOM_TOL:g} rad")
     if not np.all(ok):
         first = float(np.degrees(phi[~ok][0]))
-        nan = np.full(0, np.nan)
         return StructuralError(branch, False, f"cannot be assembled on the {branch} branch from φ = "
                                f"{first:.4f}° on (no continuous motion over the range)", phi, e,
-                               e * scale_y, nan, nan, math.inf, math.inf, at_points, method)
+                               e * scale_y, empty, empty, math.inf, math.inf, at_points, method)
 
     # sampled local extremes of e: |e| not below either neighbour (interior), plus the two ends
     mag = np.abs(e)
@@ -182,3 +185,27 @@ def structural_error(bar: FourBar, f: _Fn, x0: float, x1: float, phi0: float, dp
     peak = float(np.max(np.abs(np.concatenate([ext, e]))))
     return StructuralError(branch, True, "", phi, e, e * scale_y, ext_phi, ext, peak,
                            peak * abs(scale_y), at_points, method)
+
+
+def convergence(bar: FourBar, f: _Fn, x0: float, x1: float, phi0: float, dphi: float, psi0: float,
+                dpsi: float, precision_phi: np.ndarray,
+                samples: tuple[int, ...] = (11, 21, 51, 101, 201, 501, 2001),
+                repeat: int = 3) -> list[dict[str, float]]:
+    """For a bench: the located max |e|, the sampled-only max and the largest located interior
+    extreme at each number of samples, their deviations from those at the most samples (rad), and
+    the seconds per call (best of ``repeat``). A coarse sampling may miss an extreme altogether (then its deviation is large).
+    """
+    rows: list[dict[str, float]] = []
+    for n in samples:
+        secs, out = best_time(lambda: structural_error(bar, f, x0, x1, phi0, dphi, psi0, dpsi,
+                                                      precision_phi, n), repeat)
+        inner = np.abs(out.extremes[1:-1])
+        rows.append({"n": float(n), "located": out.max_error,
+                     "sampled": float(np.max(np.abs(out.error))),
+                     "interior": float(np.max(inner)) if inner.size else 0.0, "seconds": secs})
+    ref, ref_in = rows[-1]["located"], rows[-1]["interior"]
+    for row in rows:
+        row["located_dev"] = abs(row["located"] - ref)
+        row["sampled_dev"] = abs(row["sampled"] - ref)
+        row["interior_dev"] = abs(row["interior"] - ref_in)
+    return rows

@@ -37,7 +37,7 @@ __all__ = ["FUNCTIONS", "Design", "Function", "chebyshev_points", "design", "nam
 _Fn = Callable[[np.ndarray], np.ndarray]
 
 #: Condition number of the precision points' equations above which they count as dependent.
-_MAX_CONDITION = 1e10
+_MAX_CONDITION = 1e8
 
 #: The numbers of precision points offered.
 POINTS = (2, 3, 4, 5)
