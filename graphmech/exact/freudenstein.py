@@ -18,15 +18,16 @@ is below 1e-13 rad. The ends of the range are extremes too (the error there is n
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
+from functools import partial
 
 import numpy as np
 
 from graphmech.errors import OutOfDomain
-from graphmech.timing import best_time
 from graphmech.exact.linkage import solve
 from graphmech.mechanisms.linkage import RRR, Crank, Linkage
+from graphmech.timing import best_time
 
 __all__ = ["FourBar", "StructuralError", "convergence", "output_angle", "structural_error"]
 
@@ -73,7 +74,7 @@ def output_angle(bar: FourBar, phi: np.ndarray, branch: str) -> tuple[np.ndarray
 
 def _near(psi: np.ndarray, want: np.ndarray) -> np.ndarray:
     """ψ − ψ_want folded into (−π, π]."""
-    return np.angle(np.exp(1j * (psi - want)))
+    return np.asarray(np.angle(np.exp(1j * (psi - want))), dtype=float)
 
 
 @dataclass(frozen=True)
@@ -197,8 +198,8 @@ def convergence(bar: FourBar, f: _Fn, x0: float, x1: float, phi0: float, dphi: f
     """
     rows: list[dict[str, float]] = []
     for n in samples:
-        secs, out = best_time(lambda: structural_error(bar, f, x0, x1, phi0, dphi, psi0, dpsi,
-                                                      precision_phi, n), repeat)
+        secs, out = best_time(partial(structural_error, bar, f, x0, x1, phi0, dphi, psi0, dpsi,
+                                      precision_phi, n), repeat)
         inner = np.abs(out.extremes[1:-1])
         rows.append({"n": float(n), "located": out.max_error,
                      "sampled": float(np.max(np.abs(out.error))),

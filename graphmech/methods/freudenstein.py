@@ -24,8 +24,9 @@ angles of sin, cos and tan are in radians.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable, Literal
+from typing import Literal
 
 import numpy as np
 
@@ -175,7 +176,8 @@ class Design:
     def psi_of(self, x: np.ndarray) -> np.ndarray:
         """The desired output angle for ``x``: ``ψ₀ + Δψ·(f(x) − y₀)/(y₁ − y₀)``."""
         y0, y1 = self.function(np.array([self.x0, self.x1]))
-        return self.psi0 + self.dpsi * (self.function(np.asarray(x, dtype=float)) - y0) / (y1 - y0)
+        y = self.function(np.asarray(x, dtype=float))
+        return np.asarray(self.psi0 + self.dpsi * (y - y0) / (y1 - y0), dtype=float)
 
     def precision_positions(self) -> dict[str, np.ndarray]:
         """Joints at the precision points as complex numbers: A, D (scalars), B_k, C_k (arrays).

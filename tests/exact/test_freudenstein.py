@@ -9,7 +9,12 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from graphmech.errors import OutOfDomain
-from graphmech.exact.freudenstein import FourBar, convergence, output_angle, structural_error
+from graphmech.exact.freudenstein import (
+    FourBar,
+    convergence,
+    output_angle,
+    structural_error,
+)
 from graphmech.methods.freudenstein import Function, design, named_function
 
 D = math.radians
@@ -21,7 +26,7 @@ def error_of(r, samples=2001):
 
 
 def log10(spacing="chebyshev", **kw):
-    args = dict(x0=1.0, x1=2.0, phi0=D(45), dphi=D(60), psi0=D(135), dpsi=D(90), spacing=spacing)
+    args = {"x0": 1.0, "x1": 2.0, "phi0": D(45), "dphi": D(60), "psi0": D(135), "dpsi": D(90), "spacing": spacing}
     args.update(kw)
     return design(named_function("log10"), **args)
 

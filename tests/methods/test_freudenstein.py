@@ -23,7 +23,7 @@ D = math.radians
 
 def log10_design(**kw):
     # the textbook's classic: y = log10 x on [1, 2], Δφ = 60°, Δψ = 90°; started at φ₀ = 45°, ψ₀ = 135°
-    args = dict(x0=1.0, x1=2.0, phi0=D(45), dphi=D(60), psi0=D(135), dpsi=D(90))
+    args = {"x0": 1.0, "x1": 2.0, "phi0": D(45), "dphi": D(60), "psi0": D(135), "dpsi": D(90)}
     args.update(kw)
     return design(named_function("log10"), **args)
 
@@ -111,11 +111,11 @@ def test_function_table_and_power():
 
 
 @pytest.mark.parametrize("kw, words", [
-    (dict(dpsi=0.0), "Δψ = 0"), (dict(dphi=0.0), "Δφ = 0"), (dict(x1=1.0), "x₀ = x₁"),
-    (dict(d=0.0), "frame d"), (dict(n=6), "2 … 5"), (dict(n=1), "2 … 5"),
-    (dict(dphi=1e-9), "nearly\\) dependent"), (dict(dpsi=math.nan), "not finite"),
-    (dict(points=np.array([1.2, 1.2, 1.8])), "coincide"),
-    (dict(points=np.array([0.5, 1.2, 1.8])), "must lie in"),
+    ({"dpsi": 0.0}, "Δψ = 0"), ({"dphi": 0.0}, "Δφ = 0"), ({"x1": 1.0}, "x₀ = x₁"),
+    ({"d": 0.0}, "frame d"), ({"n": 6}, "2 … 5"), ({"n": 1}, "2 … 5"),
+    ({"dphi": 1e-9}, "nearly\\) dependent"), ({"dpsi": math.nan}, "not finite"),
+    ({"points": np.array([1.2, 1.2, 1.8])}, "coincide"),
+    ({"points": np.array([0.5, 1.2, 1.8])}, "must lie in"),
 ])
 def test_extremes_refused_in_words(kw, words):
     with pytest.raises(OutOfDomain, match=words):
