@@ -21,6 +21,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import partial
+from typing import Any
 
 import numpy as np
 
@@ -85,7 +86,8 @@ class StructuralError:
     precision point somewhere in the range, or at that point on either branch (``why`` says
     where); then the error arrays are NaN where it does not assemble and ``max_error`` is ``inf``.
     ``phi``, ``error``: the sampled curve e(φ) = ψ(φ) − ψ_d(φ); ``error_y`` the same in units of y.
-    ``extremes_phi`` / ``extremes``: the located extremes of e (ends included), in φ order.
+    ``extremes_phi`` / ``extremes``: the located extremes of e (ends included), in φ order;
+    ``extremes_sampled``: e at the samples they were refined from (the sampling's own estimate).
     ``max_error``: max |e| (rad), ``max_error_y`` in units of y.
     ``at_points``: e at the precision points (≈ 0 when the equation is met there).
     """
@@ -98,6 +100,7 @@ class StructuralError:
     error_y: np.ndarray
     extremes_phi: np.ndarray
     extremes: np.ndarray
+    extremes_sampled: np.ndarray
     max_error: float
     max_error_y: float
     at_points: np.ndarray
@@ -150,7 +153,7 @@ def structural_error(bar: FourBar, f: _Fn, x0: float, x1: float, phi0: float, dp
         at = f"{math.degrees(float(pp[0])):.4f}°"
         return StructuralError("", False, f"cannot be assembled at the first precision point φ = {at} "
                                "on either branch", phi, np.full(samples, np.nan), np.full(samples, np.nan),
-                               empty, empty, math.inf, math.inf, np.full(pp.size, np.nan), "")
+                               empty, empty, empty, math.inf, math.inf, np.full(pp.size, np.nan), "")
 
     def err(phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         psi, ok = output_angle(bar, phi, branch)
@@ -166,12 +169,13 @@ def structural_error(bar: FourBar, f: _Fn, x0: float, x1: float, phi0: float, dp
         first = float(np.degrees(phi[~ok][0]))
         return StructuralError(branch, False, f"cannot be assembled on the {branch} branch from φ = "
                                f"{first:.4f}° on (no continuous motion over the range)", phi, e,
-                               e * scale_y, empty, empty, math.inf, math.inf, at_points, method)
+                               e * scale_y, empty, empty, empty, math.inf, math.inf, at_points, method)
 
     # sampled local extremes of e: |e| not below either neighbour (interior), plus the two ends
     mag = np.abs(e)
     inner = np.flatnonzero((mag[1:-1] >= mag[:-2]) & (mag[1:-1] >= mag[2:])) + 1
     inner = inner[mag[inner] > 0.0]
+    sampled = np.concatenate([e[:1], e[inner], e[-1:]])
     lo, hi = phi[inner - 1], phi[inner + 1]
     while inner.size and float(np.max(np.abs(hi - lo))) > _ZOOM_TOL:
         t = np.linspace(0.0, 1.0, _ZOOM_POINTS)
@@ -180,33 +184,32 @@ def structural_error(bar: FourBar, f: _Fn, x0: float, x1: float, phi0: float, dp
         k = np.clip(np.argmax(g, axis=1), 1, _ZOOM_POINTS - 2)
         rows = np.arange(grid.shape[0])
         lo, hi = grid[rows, k - 1], grid[rows, k + 1]
-    ext_phi = np.concatenate([phi[:1], (lo + hi) / 2.0, phi[-1:]])
-    ext_phi = np.sort(ext_phi)
+    ext_phi = np.concatenate([phi[:1], (lo + hi) / 2.0, phi[-1:]])  # in φ order, as the samples
     ext = err(ext_phi)[0]
     peak = float(np.max(np.abs(np.concatenate([ext, e]))))
-    return StructuralError(branch, True, "", phi, e, e * scale_y, ext_phi, ext, peak,
+    return StructuralError(branch, True, "", phi, e, e * scale_y, ext_phi, ext, sampled, peak,
                            peak * abs(scale_y), at_points, method)
 
 
 def convergence(bar: FourBar, f: _Fn, x0: float, x1: float, phi0: float, dphi: float, psi0: float,
-                dpsi: float, precision_phi: np.ndarray,
+                dpsi: float, precision_phi: np.ndarray, case: str = "",
                 samples: tuple[int, ...] = (11, 21, 51, 101, 201, 501, 2001),
-                repeat: int = 3) -> list[dict[str, float]]:
-    """For a bench: the located max |e|, the sampled-only max and the largest located interior
-    extreme at each number of samples, their deviations from those at the most samples (rad), and
-    the seconds per call (best of ``repeat``). A coarse sampling may miss an extreme altogether (then its deviation is large).
+                repeat: int = 3) -> list[dict[str, Any]]:
+    """Bench records (as :mod:`graphmech.bench`'s) of the structural error at each number of samples.
+
+    ``max_rel_error``: the located max |e| against the one at the most samples (relative);
+    ``sampled_rel_error``: the largest sampled extreme (not refined) against that same reference;
+    ``max_error_deg``: the located max |e| in degrees; ``seconds``: per call, best of ``repeat``.
+    Without the refinement the max is only as good as the sampling (``sampled_rel_error``); a
+    coarse sampling may also miss an extreme altogether.
     """
-    rows: list[dict[str, float]] = []
+    outs = []
     for n in samples:
         secs, out = best_time(partial(structural_error, bar, f, x0, x1, phi0, dphi, psi0, dpsi,
                                       precision_phi, n), repeat)
-        inner = np.abs(out.extremes[1:-1])
-        rows.append({"n": float(n), "located": out.max_error,
-                     "sampled": float(np.max(np.abs(out.error))),
-                     "interior": float(np.max(inner)) if inner.size else 0.0, "seconds": secs})
-    ref, ref_in = rows[-1]["located"], rows[-1]["interior"]
-    for row in rows:
-        row["located_dev"] = abs(row["located"] - ref)
-        row["sampled_dev"] = abs(row["sampled"] - ref)
-        row["interior_dev"] = abs(row["interior"] - ref_in)
-    return rows
+        outs.append((n, secs, out))
+    ref = outs[-1][2].max_error
+    return [{"method": "freudenstein structural error", "case": case, "n": n, "seconds": secs,
+             "max_rel_error": abs(out.max_error - ref) / ref,
+             "sampled_rel_error": abs(float(np.max(np.abs(out.extremes_sampled))) - ref) / ref,
+             "max_error_deg": math.degrees(out.max_error)} for n, secs, out in outs]

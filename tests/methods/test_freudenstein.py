@@ -151,7 +151,8 @@ def test_a_four_bars_own_function_gives_back_its_lengths(a, b, c, phi0, dphi, si
     psi = own_output(a, b, c, 1.0, side)
     phis = phi0 + dphi * np.linspace(0, 1, 201)
     DB = np.abs(a * np.exp(1j * phis) + 1.0)
-    assume(np.all(np.abs(c * c + DB * DB - b * b) < 0.95 * 2 * c * DB))  # assembles, away from toggles
+    assume(np.all(np.abs(c * c + DB * DB - b * b) < 0.95 * 2 * c * DB))
+    assume(np.min(DB) > 0.1)  # B well away from D: ψ defined (no change point)  # assembles, away from toggles
     ref = float(psi(np.array(phi0))[()])
     f = Function("own", lambda x: ref + np.angle(np.exp(1j * (psi(x) - ref))))
     y0, y1 = f(np.array([phi0, phi0 + dphi]))
