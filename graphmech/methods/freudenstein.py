@@ -56,7 +56,8 @@ class Function:
     refuse: Callable[[float, float], str] = field(default=lambda x0, x1: "")  # no domain limit
 
     def __call__(self, x: np.ndarray) -> np.ndarray:
-        return np.asarray(self.f(np.asarray(x, dtype=float)), dtype=float)
+        with np.errstate(all="ignore"):  # an overflow is refused by the callers (not finite)
+            return np.asarray(self.f(np.asarray(x, dtype=float)), dtype=float)
 
 
 def _positive(what: str) -> Callable[[float, float], str]:
@@ -225,6 +226,7 @@ def design(function: Function, x0: float, x1: float, phi0: float, dphi: float, p
     why = function.refuse(x0, x1)
     if why:
         raise OutOfDomain(f"{function.name} over [{x0:g}, {x1:g}]: {why}")
+    label: str = spacing
     if points is None:
         if n not in POINTS:
             raise OutOfDomain(f"n = {n} precision points: 2 … 5 are offered")
@@ -236,7 +238,7 @@ def design(function: Function, x0: float, x1: float, phi0: float, dphi: float, p
             raise OutOfDomain(f"spacing {spacing!r}: 'chebyshev' or 'uniform'")
     else:
         xs = np.asarray(points, dtype=float).ravel()
-        spacing = "given"  # type: ignore[assignment]
+        label = "given"
         if xs.size not in POINTS:
             raise OutOfDomain(f"{xs.size} precision points: 2 … 5 are offered")
         lo, hi = min(x0, x1), max(x0, x1)
@@ -245,7 +247,9 @@ def design(function: Function, x0: float, x1: float, phi0: float, dphi: float, p
         if np.unique(xs).size < xs.size:
             raise OutOfDomain("two precision points coincide: their equations are the same")
     y_ends = function(np.array([x0, x1]))
-    if not np.all(np.isfinite(y_ends)) or y_ends[0] == y_ends[1]:
+    if not np.all(np.isfinite(y_ends)):
+        raise OutOfDomain(f"{function.name} is not finite at the ends of [{x0:g}, {x1:g}]")
+    if y_ends[0] == y_ends[1]:
         raise OutOfDomain(f"f(x₀) = f(x₁) = {y_ends[0]:g}: the output swing cannot be mapped to y")
     phi = phi0 + dphi * (xs - x0) / (x1 - x0)
     ys = function(xs)
@@ -280,5 +284,5 @@ def design(function: Function, x0: float, x1: float, phi0: float, dphi: float, p
     if not b2 > 0.0:
         raise OutOfDomain(f"no real coupler: b² = a² + c² + d² − 2ac·R₃ = {b2:.6g} ≤ 0")
     return Design(function, float(x0), float(x1), float(phi0), float(dphi), float(psi0), float(dpsi),
-                  str(spacing), xs, phi, psi, (r1, r2, r3), abs(a_s), math.sqrt(b2), abs(c_s), float(d),
+                  label, xs, phi, psi, (r1, r2, r3), abs(a_s), math.sqrt(b2), abs(c_s), float(d),
                   a_s < 0.0, c_s < 0.0, m @ r - rhs, cond, method)

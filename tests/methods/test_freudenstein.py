@@ -45,7 +45,7 @@ def test_log10_classic_link_lengths():
     assert r.input_reversed and not r.output_reversed  # R₂ < 0: AB points at φ + 180°
     assert r.n == 3 and r.spacing == "chebyshev" and "exactly" in r.method
     assert np.max(np.abs(r.residuals)) < 1e-14
-    assert np.allclose(np.degrees(r.phi), 45 + 60 * (r.x - 1))
+    assert np.allclose(np.degrees(r.phi), 45 + 60 * (r.x - 1)) and np.allclose(r.phi_of(r.x), r.phi)
     assert np.allclose(r.psi, r.psi_of(r.x)) and r.psi_of(np.array([2.0]))[0] == pytest.approx(D(225))
     # the joints at the precision points: the coupler has the same length b at all three
     p = r.precision_positions()
@@ -125,6 +125,11 @@ def test_extremes_refused_in_words(kw, words):
 def test_small_swing_still_designed():
     r = log10_design(dphi=D(5), dpsi=D(5))  # well conditioned enough: a result, not a refusal
     assert r.condition < 1e8 and np.max(np.abs(r.residuals)) < 1e-12
+
+
+def test_overflow_refused():
+    with pytest.raises(OutOfDomain, match="exp is not finite at the ends"):
+        design(named_function("exp"), 0.0, 1000.0, 0.0, 1.0, 0.0, 1.0)
 
 
 def test_equal_ends_refused():
