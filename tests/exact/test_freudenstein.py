@@ -159,3 +159,14 @@ def test_a_four_bars_own_function_has_zero_structural_error(a, b, c, phi0, dphi,
     assert s.assembles and s.branch in ("left", "right")
     assert s.zero_at_points(1e-9)
     assert s.max_error < 1e-9
+
+
+def test_log10_ends_by_the_law_of_cosines():
+    # the error at x = 1 and x = 2 recomputed apart: AB reversed (R₂ < 0), C on the side −1
+    r = log10()
+    psi = own_output(r.a, r.b, r.c, 1.0, -1.0)
+    x = np.array([1.0, 2.0])
+    e = np.angle(np.exp(1j * (psi(r.phi_of(x) + math.pi) - r.psi_of(x))))
+    s = error_of(r)
+    assert e == pytest.approx(s.extremes[[0, -1]], abs=1e-13)
+    assert np.degrees(e) == pytest.approx([-0.1686366204, 0.0521220], abs=1e-6)
