@@ -158,11 +158,11 @@ class SliderCrankDesign:
 
 
 def _distinct(points: Sequence[XY], labels: Sequence[str]) -> None:
+    # relative to the whole figure: two of three positions 1e-150 m apart are one point
+    size = max(abs(x) + abs(y) for x, y in points) + max(_dist(p, q) for p in points for q in points)
     for i in range(len(points)):
         for j in range(i + 1, len(points)):
-            (ax, ay), (bx, by) = points[i], points[j]
-            size = abs(ax) + abs(ay) + abs(bx) + abs(by)
-            if math.hypot(bx - ax, by - ay) <= COINCIDENT_REL * size:
+            if _dist(points[i], points[j]) <= COINCIDENT_REL * size:
                 raise DegenerateConstruction(
                     f"{labels[i]}{labels[j]}", f"{labels[i]} and {labels[j]} coincide: two positions of one point "
                     "give no bisector (the positions must be distinct)")
