@@ -33,7 +33,7 @@ from graphmech.exact.characteristics import (
     slider_crank,
 )
 from graphmech.exact.linkage import solve
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage
+from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage, LinkPoint
 
 __all__ = ["Reanalysis", "circumcentre", "reanalyse_coupler", "reanalyse_fourbar", "reanalyse_rocker_slider",
            "reanalyse_slider_crank"]
@@ -121,10 +121,13 @@ def _positions(n: int, *seqs: Sequence[object]) -> None:
 
 
 def _fourbar_check(A: complex, D: complex, a: float, b: float, c: float, phi: np.ndarray,
-                   branch: Literal["left", "right"], sides: list[Literal["left", "right"]], prescribed: list[complex], B_given: list[complex] | None) -> Reanalysis:
-    """Assemble A B C D on ``branch``, drive AB to φ and compare C (and B) with the prescribed."""
+                   branch: Literal["left", "right"], sides: list[Literal["left", "right"]],
+                   prescribed: list[complex], B_given: list[complex] | None,
+                   extra: tuple[LinkPoint, list[complex]] | None = None) -> Reanalysis:
+    """Assemble A B C D on ``branch``, drive AB to φ and compare C (and B, and a coupler point)
+    with the prescribed."""
     lk = Linkage({"A": (A.real, A.imag), "D": (D.real, D.imag)}, Crank("1", "A", "B", a, 1.0),
-                 (RRR("B", "C", "D", ("2", "3"), (b, c), branch),))
+                 (RRR("B", "C", "D", ("2", "3"), (b, c), branch),), (extra[0],) if extra else ())
     kin = solve(lk, phi)
     d = abs(D - A)
     size = max(a, b, c, d)
@@ -133,6 +136,9 @@ def _fourbar_check(A: complex, D: complex, a: float, b: float, c: float, phi: np
     err = max(abs(Cs[i] - prescribed[i]) for i in range(len(phi)))
     if B_given is not None:
         err = max(err, *(abs(Bs[i] - B_given[i]) for i in range(len(phi))))
+    if extra is not None:
+        Es = [complex(*xy) for xy in kin.point[extra[0].name]]
+        err = max(err, *(abs(Es[i] - extra[1][i]) for i in range(len(phi))))
     if not bool(np.all(kin.valid)):
         err = math.inf
     one = all(s == branch for s in sides)
@@ -153,13 +159,19 @@ def _fourbar_check(A: complex, D: complex, a: float, b: float, c: float, phi: np
     return Reanalysis(err / size, tuple(Cs), branch, one, grashof, ch, gamma, "; ".join(notes))
 
 
-def reanalyse_coupler(A: complex, D: complex, B: Sequence[complex], C: Sequence[complex]) -> Reanalysis:
+def reanalyse_coupler(A: complex, D: complex, B: Sequence[complex], C: Sequence[complex],
+                      E: Sequence[complex] | None = None) -> Reanalysis:
     """The four-bar A B C D (pivots designed, coupler positions B_i C_i prescribed) driven by AB to
-    the angles of A B_i: B_i and C_i reached?"""
-    _positions(len(B), B, C)
+    the angles of A B_i: B_i and C_i reached? With ``E``, a coupler point fixed on BC at its place
+    in position 1, its prescribed positions E_i too."""
+    _positions(len(B), B, C, *([E] if E is not None else []))
     a, b, c = abs(B[0] - A), abs(C[0] - B[0]), abs(C[0] - D)
     sides = [_side(B[i], D, C[i]) for i in range(len(B))]
-    return _fourbar_check(A, D, a, b, c, _angles(B, A), sides[0], sides, list(C), list(B))
+    extra = None
+    if E is not None:
+        rel = (E[0] - B[0]) / ((C[0] - B[0]) / b)  # E in the frame of B → C: along, left
+        extra = (LinkPoint("E", "2", ("B", "C"), rel.real, rel.imag), list(E))
+    return _fourbar_check(A, D, a, b, c, _angles(B, A), sides[0], sides, list(C), list(B), extra)
 
 
 def reanalyse_fourbar(A: complex, D: complex, l_AB: float, l_BC: float, l_CD: float, phi: Sequence[float],

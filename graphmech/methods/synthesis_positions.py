@@ -25,7 +25,7 @@ figure. Lengths in metres, angles in radians (CCW positive). The independent che
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from graphmech.errors import DegenerateConstruction, OutOfDomain
@@ -33,6 +33,7 @@ from graphmech.geometry.kernels import (
     Components,
     ScalarOps,
     intersect_circle_line,
+    intersect_circles,
     intersect_lines,
     line_fixed,
     line_perpendicular_to,
@@ -41,9 +42,24 @@ from graphmech.geometry.kernels import (
 from graphmech.tolerances import COINCIDENT_REL
 
 __all__ = [
-    "Arc", "Bisector", "CouplerDesign", "FourbarDesign", "Inversion", "JointDesign", "SliderCrankDesign",
-    "circumcentre", "coupler_positions", "fourbar_positions", "invert_rotation", "invert_translation",
-    "joint_by_inversion", "perpendicular_bisector", "slider_crank_positions",
+    "Arc",
+    "Bisector",
+    "CouplerDesign",
+    "CouplerPointDesign",
+    "FourbarDesign",
+    "Inversion",
+    "JointDesign",
+    "SliderCrankDesign",
+    "circumcentre",
+    "coupler_positions",
+    "fourbar_positions",
+    "fourbar_through_coupler_points",
+    "invert_rigid",
+    "invert_rotation",
+    "invert_translation",
+    "joint_by_inversion",
+    "perpendicular_bisector",
+    "slider_crank_positions",
 ]
 
 XY = tuple[float, float]
@@ -86,6 +102,9 @@ class Inversion:
     centre: XY | None
     angle: float = 0.0
     shift: XY = (0.0, 0.0)
+    #: for a point carried with a moving link: the link's two points at position i, then at 1
+    #: (the triangle drawn on the one copied onto the other)
+    carried: tuple[XY, XY, XY, XY] | None = None
 
 
 @dataclass(frozen=True)
@@ -137,6 +156,27 @@ class FourbarDesign:
 
 
 @dataclass(frozen=True)
+class CouplerPointDesign:
+    """A four-bar A B C D whose coupler point E passes through E_i (seed 000 连杆 5's form).
+
+    ``B``, ``C``, ``E`` every joint at every position; the links (m), ``l_BE`` fixing E on BC.
+    """
+
+    A: XY
+    D: XY
+    B: tuple[XY, ...]
+    C: tuple[XY, ...]
+    E: tuple[XY, ...]
+    l_AB: float
+    l_BC: float
+    l_CD: float
+    l_AD: float
+    l_EC: float
+    l_BE: float
+    construction: JointDesign
+
+
+@dataclass(frozen=True)
 class SliderCrankDesign:
     """A slider-crank taking crank angles φ_i with slider displacements s_i.
 
@@ -157,9 +197,10 @@ class SliderCrankDesign:
 # --------------------------------------------------------------------------------- the kernels
 
 
-def _distinct(points: Sequence[XY], labels: Sequence[str]) -> None:
-    # relative to the whole figure: two of three positions 1e-150 m apart are one point
-    size = max(abs(x) + abs(y) for x, y in points) + max(_dist(p, q) for p in points for q in points)
+def _distinct(points: Sequence[XY], labels: Sequence[str], scale: float = 0.0) -> None:
+    # relative to the whole figure (``scale`` the linkage's size where known): two of three
+    # positions 1e-150 m apart are one point
+    size = max(abs(x) + abs(y) for x, y in points) + max(_dist(p, q) for p in points for q in points) + scale
     for i in range(len(points)):
         for j in range(i + 1, len(points)):
             if _dist(points[i], points[j]) <= COINCIDENT_REL * size:
@@ -178,14 +219,16 @@ def perpendicular_bisector(P: XY, Q: XY, label: str) -> Bisector:
     return Bisector(label, (P, Q), (float(px), float(py), float(dx), float(dy)))
 
 
-def circumcentre(points: Sequence[XY], labels: Sequence[str], centre: str = "O") -> tuple[XY, tuple[Bisector, Bisector]]:
+def circumcentre(points: Sequence[XY], labels: Sequence[str], centre: str = "O",
+                 scale: float = 0.0) -> tuple[XY, tuple[Bisector, Bisector]]:
     """The centre of the circle through three points: the bisectors of 1–2 and 2–3 meet there.
 
-    Raises DegenerateConstruction, in words, when two points coincide or the three lie on one line.
+    Raises DegenerateConstruction, in words, when two points coincide (to rounding, relative to the
+    points or to ``scale``, the linkage's size) or the three lie on one line.
     """
     if len(points) != 3 or len(labels) != 3:
         raise OutOfDomain(f"a circle is drawn through three points, not {len(points)}")
-    _distinct(points, labels)
+    _distinct(points, labels, scale)
     (x1, y1), (x2, y2), (x3, y3) = points
     # collinear: the sine of the angle between 1→2 and 1→3 (the bisectors would be parallel)
     cr = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
@@ -212,6 +255,20 @@ def invert_rotation(P: XY, centre: XY, angle: float, label: str) -> Inversion:
 def invert_translation(P: XY, shift: XY, label: str) -> Inversion:
     """P shifted by ``shift`` (m): the inversion on a translating link (the slider)."""
     return Inversion(label, P, (P[0] + shift[0], P[1] + shift[1]), None, 0.0, shift)
+
+
+def invert_rigid(P: XY, at_i: tuple[XY, XY], at_1: tuple[XY, XY], label: str) -> Inversion:
+    """P carried with a moving link from its position i (points ``at_i``) to its position 1
+    (``at_1``): the triangle P·at_i copied onto at_1 — the inversion on a coupler."""
+    (p, q), (p1, q1) = at_i, at_1
+    if abs(_dist(p, q) - _dist(p1, q1)) > 1e-9 * _dist(p1, q1):
+        raise OutOfDomain(f"the link is not rigid: its two points are {_dist(p, q):.6g} m and {_dist(p1, q1):.6g} m "
+                          "apart in the two positions")
+    turn = math.atan2(q1[1] - p1[1], q1[0] - p1[0]) - math.atan2(q[1] - p[1], q[0] - p[0])
+    c, s = math.cos(turn), math.sin(turn)
+    dx, dy = P[0] - p[0], P[1] - p[1]
+    return Inversion(label, P, (p1[0] + c * dx - s * dy, p1[1] + s * dx + c * dy), None, turn,
+                     carried=(p, q, p1, q1))
 
 
 def _on_bisector(b: Bisector, centre: XY, radius: float, side: float, step: str) -> XY:
@@ -263,14 +320,15 @@ def joint_by_inversion(points: Sequence[XY], pivot: XY, rotations: Sequence[floa
     inv = tuple(invert_rotation(points[i], pivot, -(rotations[i] - rotations[0]), f"{label[i]}'") for i in range(1, n))
     images = [points[0], *(v.image for v in inv)]
     image_labels = [label[0], *(v.label for v in inv)]
+    scale = max(_dist(p, pivot) for p in points)
     if n == 3:
-        centre, bis = circumcentre(images, image_labels, f"{joint}1")
+        centre, bis = circumcentre(images, image_labels, f"{joint}1", scale)
         return JointDesign(centre, inv, bis)
     if length is None:
         raise OutOfDomain(f"with two positions the joint {joint}1 lies anywhere on the bisector: state its length "
                           "from the pivot")
     _positive(f"the length of the pivot to {joint}", length)
-    _distinct(images, image_labels)
+    _distinct(images, image_labels, scale)
     b = perpendicular_bisector(images[0], images[1], f"b{image_labels[0]}{image_labels[1]}")
     at = _on_bisector(b, pivot, length, side, f"{joint}1 = arc ∩ {b.label}")
     return JointDesign(at, inv, (b,), (Arc(f"{joint}1", pivot, length),))
@@ -358,3 +416,45 @@ def slider_crank_positions(A: XY, l_AB: float, phi: Sequence[float], s: Sequence
         j = JointDesign(C1, inv, (b,))
     offset = g[0] * (A[1] - C1[1]) - g[1] * (A[0] - C1[0])
     return SliderCrankDesign(A, B[0], C1, l_AB, _dist(B[0], C1), offset, guide_angle, j)
+
+
+def _out_of_reach(point: str, r1: float, r2: float) -> Callable[[float], str]:
+    def explain(d: float) -> str:
+        return (f"{point} is {d:.6g} m from D: the arcs CD = {r1:.6g} m and EC = {r2:.6g} m do not meet "
+                f"(they reach from {abs(r1 - r2):.6g} m to {r1 + r2:.6g} m)")
+    return explain
+
+
+def fourbar_through_coupler_points(A: XY, D: XY, E: Sequence[XY], l_CD: float, l_EC: float,
+                                   side: float | Sequence[float] = 1.0) -> CouplerPointDesign:
+    """A four-bar with given pivots A, D whose coupler point E passes through three given E_i.
+
+    The book's steps (seed 000 连杆 5): the arc of radius l_CD about D and the arcs of radius l_EC
+    about E_i give C_i (``side`` +1 / −1: to the left / right of D → E_i, one for all positions or
+    one for each); then, seen from the
+    coupler CE, the pivot A moves: carry A with the coupler from each position i back to position 1
+    (A_i′), and the coupler's joint B₁ is the centre of the circle through A, A₂′, A₃′.
+    """
+    _positive("CD", l_CD)
+    _positive("EC", l_EC)
+    if len(E) != 3:
+        raise OutOfDomain(f"a coupler point is led through three positions, not {len(E)}")
+    _distinct(E, ("E1", "E2", "E3"))
+    sides = [float(side)] * 3 if isinstance(side, (int, float)) else [float(x) for x in side]
+    if len(sides) != 3:
+        raise OutOfDomain(f"one side for all three positions or one for each, not {len(sides)}")
+    ops = ScalarOps()
+    C: list[XY] = []
+    for i, Ei in enumerate(E):
+        ops.step = f"C{i + 1} = arc D ∩ arc E{i + 1}"
+        C.append(_xy(intersect_circles(ops, D, l_CD, Ei, l_EC, sides[i], _out_of_reach(f"E{i + 1}", l_CD, l_EC))))
+    inv = tuple(invert_rigid(A, (C[i], E[i]), (C[0], E[0]), f"A{i + 1}'") for i in (1, 2))
+    # A on the coupler (a kite folded: C on A) carries back onto itself: refused as coincident
+    B1, bis = circumcentre([A, *(v.image for v in inv)], ["A", "A2'", "A3'"], "B1", l_CD + l_EC + _dist(A, D))
+    B = [B1]
+    for i in (1, 2):  # B carried forward with the coupler: the inverse of each inversion
+        back = invert_rigid(B1, (C[0], E[0]), (C[i], E[i]), f"B{i + 1}")
+        B.append(back.image)
+    arcs = (Arc("C", D, l_CD), *(Arc(f"C{i + 1}", E[i], l_EC) for i in range(3)))
+    return CouplerPointDesign(A, D, tuple(B), tuple(C), tuple(E), _dist(A, B1), _dist(B1, C[0]), l_CD, _dist(A, D),
+                              l_EC, _dist(B1, E[0]), JointDesign(B1, inv, bis, arcs))

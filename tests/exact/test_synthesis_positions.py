@@ -10,7 +10,7 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from graphmech.errors import NoSolution, OutOfDomain
+from graphmech.errors import DegenerateConstruction, NoSolution, OutOfDomain
 from graphmech.exact import characteristics as XC
 from graphmech.exact.linkage import solve
 from graphmech.exact.synthesis_positions import (
@@ -59,6 +59,9 @@ def draw(sample):
     B, C = got
     psi = [cmath.phase(p - D) for p in C]
     assume(min(turned(psi[1] - psi[0]), turned(psi[2] - psi[1]), turned(psi[2] - psi[0])) > math.radians(5.0))
+    # away from a dead point (γ = 0 at a prescribed position the re-analysis keeps only √ε of its digits)
+    assume(min(turned(cmath.phase((B[i] - C[i]) / (D - C[i]))) for i in range(3)) > 0.01)
+    assume(max(turned(cmath.phase((B[i] - C[i]) / (D - C[i]))) for i in range(3)) < math.pi - 0.01)
     return A, D, a, b, c, branch, phi, psi, B, C
 
 
@@ -107,7 +110,15 @@ def test_the_coupler_design_reaches_its_positions(sample) -> None:
 @given(fourbars)
 def test_the_inversion_design_reaches_its_positions(sample) -> None:
     A, D, a, b, c, branch, phi, psi, _B, C = draw(sample)
-    des = M.fourbar_positions((A.real, A.imag), (D.real, D.imag), a, phi, psi)
+    try:
+        des = M.fourbar_positions((A.real, A.imag), (D.real, D.imag), a, phi, psi)
+    except DegenerateConstruction as e:
+        # B₃′ on B₁ (positions 1 and 3 alike as seen from DC): no circle, rightly refused
+        assert "coincide" in str(e) or "one straight line" in str(e)
+        assume(False)
+    # B₁, B₂′, B₃′ close together (positions alike as seen from DC): the circle is ill-conditioned
+    images = [des.B1, *(v.image for v in des.construction.inversions)]
+    assume(min(math.dist(p, q) for k, p in enumerate(images) for q in images[k + 1:]) > 0.01 * max(a, b, c))
     r = reanalyse_fourbar(A, D, des.l_AB, des.l_BC, des.l_CD, phi, psi, z(des.C1))
     assert r.error <= 1e-9 and r.branch == branch
     assert [abs(x - y) for x, y in zip(r.reached, C)] == pytest.approx([0, 0, 0], abs=1e-9 * max(a, b, c))
@@ -187,3 +198,22 @@ def test_position_counts_are_checked() -> None:
         reanalyse_fourbar(0j, 1 + 0j, 0.3, 1.0, 1.0, [0.0], [0.0], 1 + 1j)
     with pytest.raises(OutOfDomain, match="two or three"):
         reanalyse_slider_crank(0j, 0.3, 1.0, [0.0, 1.0], [0.0, 0.1, 0.2], 0.0, 1 + 0j)
+
+
+def test_a_coupler_point_design_with_the_lengths_of_seed_000_linkage_5() -> None:
+    """l_CD = 95 mm, l_EC = 70 mm as the seed gives; its A, D and E_i stand in a figure the seed has
+    lost, so these are our own: E_i on the line y = 120 mm, as the seed's lie on one line."""
+    E = [(-0.05, 0.12), (0.0, 0.12), (0.05, 0.12)]
+    des = M.fourbar_through_coupler_points((-0.1, 0.0), (0.0, 0.0), E, 0.095, 0.07, side=-1.0)
+    assert (des.l_AB, des.l_BC, des.l_BE) == pytest.approx((0.04022, 0.15343, 0.15292), abs=5e-6)
+    r = reanalyse_coupler(z(des.A), z(des.D), [z(p) for p in des.B], [z(p) for p in des.C], [z(p) for p in E])
+    assert r.error <= 1e-12 and r.grashof == "crank_rocker_AB" and r.note == ""
+    # γ_min where the crank lies along the frame, folded: BD = AD − AB (the cosine rule, by hand)
+    bd = des.l_AD - des.l_AB
+    cos_delta = (des.l_BC ** 2 + des.l_CD ** 2 - bd ** 2) / (2 * des.l_BC * des.l_CD)
+    assert r.characteristics is not None and r.characteristics.gamma_min == pytest.approx(math.acos(cos_delta))
+    assert math.degrees(r.characteristics.gamma_min) == pytest.approx(5.9885, abs=1e-4)
+    # a coupler point off its line is seen: E₃ moved 1 mm
+    off = reanalyse_coupler(z(des.A), z(des.D), [z(p) for p in des.B], [z(p) for p in des.C],
+                            [z(E[0]), z(E[1]), z(E[2]) + 0.001])
+    assert off.error == pytest.approx(0.001 / max(des.l_AB, des.l_BC, des.l_CD, des.l_AD), rel=1e-6)

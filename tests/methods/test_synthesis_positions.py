@@ -11,11 +11,12 @@ from hypothesis import strategies as st
 
 from graphmech.errors import DegenerateConstruction, OutOfDomain
 from graphmech.exact.linkage import solve
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage
+from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage, LinkPoint
 from graphmech.methods.synthesis_positions import (
     circumcentre,
     coupler_positions,
     fourbar_positions,
+    fourbar_through_coupler_points,
     invert_rotation,
     joint_by_inversion,
     slider_crank_positions,
@@ -86,7 +87,15 @@ def test_coupler_through_three_positions_recovers_the_pivots(sample) -> None:
 @given(fourbars)
 def test_inversion_recovers_the_coupler_and_the_output(sample) -> None:
     A, D, a, b, c, phi, psi, B, C = draw(sample)
-    des = fourbar_positions(A, D, a, phi, psi)
+    try:
+        des = fourbar_positions(A, D, a, phi, psi)
+    except DegenerateConstruction as e:
+        # B₃′ on B₁ (positions 1 and 3 alike as seen from DC): no circle, rightly refused
+        assert "coincide" in str(e) or "one straight line" in str(e)
+        assume(False)
+    # B₁, B₂′, B₃′ close together (positions alike as seen from DC): the circle is ill-conditioned
+    images = [des.B1, *(v.image for v in des.construction.inversions)]
+    assume(min(math.dist(p, q) for k, p in enumerate(images) for q in images[k + 1:]) > 0.01 * max(a, b, c))
     size = max(a, b, c, math.dist(A, D))
     assert close(des.C1, C[0], size) and close(des.B1, B[0], size)
     assert (des.l_BC, des.l_CD, des.l_AD) == pytest.approx((b, c, math.dist(A, D)), rel=1e-9)
@@ -196,3 +205,48 @@ def test_bad_data_are_refused() -> None:
         fourbar_positions((0.0, 0.0), (5.0, 0.0), 1.0, [0.0, 1.0], [0.0, 0.3], l_CD=0.01)
     with pytest.raises(OutOfDomain, match="positive"):
         fourbar_positions((0.0, 0.0), (5.0, 0.0), -1.0, [0.0, 1.0, 2.0], [0.0, 0.3, 0.5])
+
+
+def sampled_with_coupler_point(A, D, a, b, c, branch, phi, along, left):
+    lk = Linkage({"A": A, "D": D}, Crank("1", "A", "B", a, 1.0), (RRR("B", "C", "D", ("2", "3"), (b, c), branch),),
+                 (LinkPoint("E", "2", ("B", "C"), along, left),))
+    kin = solve(lk, np.asarray(phi))
+    if not kin.valid.all():
+        return None
+    return tuple([tuple(map(float, p)) for p in kin.point[k]] for k in "BCE")
+
+
+@SETTINGS
+@given(fourbars, st.floats(-0.1, 0.1), st.floats(-0.1, 0.1))
+def test_a_coupler_point_through_three_positions(sample, along, left) -> None:
+    """Seed 000 连杆 5's form: A, D, E_i, l_CD and l_EC given; C_i from the arcs, B₁ by carrying A
+    back with the coupler."""
+    ax, ay, d, tilt, a, b, c, branch, phi1, g1, g2 = sample
+    A, D = (ax, ay), (ax + d * math.cos(tilt), ay + d * math.sin(tilt))
+    got = sampled_with_coupler_point(A, D, a, b, c, branch, [phi1, phi1 + g1, phi1 + g1 + g2], along, left)
+    assume(got is not None)
+    B, C, E = got
+    turns = [angle(C[i], B[i]) for i in range(3)]
+    assume(min(turned(turns[1] - turns[0]), turned(turns[2] - turns[1]), turned(turns[2] - turns[0])) > 0.1)
+    l_EC = math.dist(E[0], C[0])
+    # the arcs meet at an angle
+    assume(l_EC > 0.01 and min(abs(math.sin(angle(C[i], D) - angle(E[i], C[i]))) for i in range(3)) > 0.05)
+    sides = [1.0 if (E[i][0] - D[0]) * (C[i][1] - D[1]) - (E[i][1] - D[1]) * (C[i][0] - D[0]) > 0 else -1.0
+             for i in range(3)]
+    try:
+        des = fourbar_through_coupler_points(A, D, E, c, l_EC, sides)
+    except DegenerateConstruction as e:
+        # a kite folded with C on A: A rides on the coupler and carries back onto itself
+        assert "A and A2' coincide" in str(e) and math.dist(C[0], A) <= 1e-9 * max(c, d)
+        assume(False)
+    size = max(a, b, c, d)
+    assert all(close(des.C[i], C[i], size, 1e-8) for i in range(3))
+    assert all(close(des.B[i], B[i], size, 1e-7) for i in range(3))
+    assert (des.l_AB, des.l_BC) == pytest.approx((a, b), rel=1e-7)
+    assert [v.label for v in des.construction.inversions] == ["A2'", "A3'"]
+    assert [x.label for x in des.construction.arcs] == ["C", "C1", "C2", "C3"]
+
+
+def test_a_coupler_point_out_of_reach_is_said() -> None:
+    with pytest.raises(DegenerateConstruction, match="E2 is 0.5 m from D: the arcs CD = 0.095 m and EC = 0.07 m"):
+        fourbar_through_coupler_points((0.0, 0.0), (0.1, 0.0), [(0.1, 0.1), (0.6, 0.0), (0.0, 0.1)], 0.095, 0.07)
