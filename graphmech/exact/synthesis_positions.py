@@ -82,8 +82,8 @@ class Reanalysis:
 def circumcentre(p1: complex, p2: complex, p3: complex) -> complex:
     """The centre of the circle through three points, from the linear equations of equal distance.
 
-    >>> circumcentre(1 + 0j, 1j, -1 + 0j)
-    0j
+    >>> circumcentre(0j, 4 + 0j, 4j)
+    (2+2j)
     """
     # about p1: 2(p_k − p₁)·(X − p₁) = |p_k − p₁|², coordinates the size of the figure, not of its
     # distance from the origin
