@@ -60,7 +60,7 @@ class Reanalysis:
         to pass through them: the branch defect).
     grashof : str
         The class of the loop (:func:`~graphmech.exact.characteristics.fourbar_class`), or for a
-        slider ``"crank"`` / ``"no_crank"``.
+        slider-crank ``"crank"`` / ``"no_crank"``, for a rocker driving a slider ``"rocker"``.
     characteristics : ExactCharacteristics or None
         θ, ψ or H, K, γ_min of the whole cycle where the input turns fully, else None.
     gamma : tuple of float
