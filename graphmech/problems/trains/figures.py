@@ -557,8 +557,17 @@ class _Drawer:
                     self._bevel(g, self.reflect(h, c), e, self.R(g), flip=True)
             return
         if e is None or self.e2(h) != e:  # a planet across the carrier: its pin from the carrier's axis
-            c = self.p(self.lay.origin[pl])
-            self.items.append(Segment(self.p(self.lay.origin[h]), c, "given"))
+            for g in self.gears_of(pl):
+                c = self.p(self.lay.centre(g))
+                if e is None:  # the pin seen end-on, on the carrier's arm from its axis
+                    self.items.append(Segment(self.at(h, self.along(h, c)), c, "given"))
+                    self.items.append(Circle(c, 1.0, "given"))
+                    continue
+                # from the apex on the carrier's axis (seen end-on: its point) through the gear, past its back
+                foot = self.p(self.lay.origin[h]) if self.e2(h) is None else self.at(h, self.along(h, c))
+                d = math.dist(foot, c)
+                out = (e[0], e[1]) if d == 0.0 else ((c[0] - foot[0]) / d, (c[1] - foot[1]) / d)
+                self.items.append(Segment(foot, _v(c, out, GEAR_W), "given"))
             return
         ss = [self.along(pl, self.p(self.lay.centre(g))) for g in self.gears_of(pl)]
         arm = self.arm_s(pl)

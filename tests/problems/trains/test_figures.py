@@ -437,3 +437,21 @@ def test_each_worm_reaches_its_wheel_s_pitch_circle(name):
         along_g = sum(u * v for u, v in zip(d, eg))
         assert abs(along_w) < 1e-12 and abs(along_g) < 1e-12  # the wheel's mid-plane through the worm's centre
         assert math.hypot(*d) == pytest.approx(lay.radius[m.a] + lay.radius[m.b], rel=1e-12)
+
+
+def test_a_bevel_planet_s_pin_runs_from_the_carrier_s_axis_past_its_gear():
+    # the side gears 1 and 3 (20) and the case H seen end-on (axis +z); the planet 2 (12, axis +x) on
+    # H's pin: the pin from H's axis (the apex) through the planet's centre to past its back
+    from graphmech.problems.trains.figures import GEAR_W
+
+    t = train({"1": None, "2": "H", "3": None, "H": None}, [("1", 20, "1"), ("2", 12, "2"), ("3", 20, "3")],
+              [Mesh("1", "2", "bevel", -1), Mesh("2", "3", "bevel", -1)], inputs={"H": 1.0}, fixed=("3",))
+    lay = layout(t, 1e-3, axes={"1": "+z", "3": "+z", "H": "+z", "2": "+x"}, gap=0.016,
+                 towards={0: ("+x", "-z"), 1: ("-z", "+x")})
+    mu = 1e-3
+    c2 = (lay.centre("2")[0] / mu, lay.centre("2")[1] / mu)
+    h = (lay.origin["H"][0] / mu, lay.origin["H"][1] / mu)
+    assert c2 == pytest.approx((10.0, 0.0)) and h == pytest.approx((0.0, 0.0))
+    sch = schematic(lay, mu, solve(t).omega)
+    pins = [it for it in sch.items if isinstance(it, Segment) and it.p0 == pytest.approx(h)]
+    assert len(pins) == 1 and pins[0].p1 == pytest.approx((c2[0] + GEAR_W, 0.0))
