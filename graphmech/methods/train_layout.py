@@ -3,13 +3,17 @@
 Every gear's pitch radius is r = m·z/2 (a worm's: m·q/2 with the diametral quotient
 :data:`WORM_Q`, its z being its starts). Each member's axis is a line in space: a point ``origin``
 on it and its direction (the scene's ``axes``, sign dropped: ``"-x"`` lies along x as ``"+x"``
-does). The gears of a member sit on its axis at ``origin + slot·gap·e``: one slot per mesh stage
-(the gears that mesh, directly or through a chain of meshes, share a slot, so meshing spur gears
-stand in one plane), ``gap`` the axial pitch of the slots.
+does). The gears of a member sit on its axis at ``origin + offset·e``: for a spur gear its slot's
+``slot·gap``, one slot per mesh stage (the gears that mesh, directly or through a chain of meshes,
+share a slot, so meshing spur gears stand in one plane), ``gap`` the axial pitch of the slots; a
+gear of a spatial mesh where its partner's axis puts it (a bevel pair meets at the apex on both
+axes, a worm and its wheel are centred on each other's axis), so two bevels of one stage do not
+share a slot's plane and a worm reaches the wheel whatever the slots say.
 
 The axes are found by walking the meshes from the first member, as the book's schematic is drawn:
 a mesh puts b's gear at a's gear + r_a·t_a − r_b·t_b, with t the directions from each axis to the
-pitch point P. For parallel axes (every axis along x, the side view) t_a = side·ŷ, and
+pitch point P. For parallel axes (every axis along x, the side view) t_a = side·ŷ (axes along y
+or seen end-on along z: side·x̂, the pair beside each other), and
 
     external: y_b = y_a + side·(r_a + r_b),   internal: y_b = y_a + side·(r_a − r_b),
 
@@ -23,7 +27,8 @@ closes is the coaxial condition, and a loop that does not close is refused namin
 Spatial meshes (bevel, worm) use the scene's ``towards`` directions as they are; without them
 t_a = the direction of b's axis (a bevel pair's apex on both axes), t_b = a's (for a worm: the
 common perpendicular, the wheel below). A drawing, not a check: an axial mismatch in a spatial
-loop is left as it is, only the radial closure is checked.
+loop is left as it is, only the radial closure is checked; a worm on a loop (placed from its own
+shaft's spur pair) takes the diameter that reaches its wheel.
 """
 from __future__ import annotations
 
@@ -84,6 +89,9 @@ class TrainLayout:
     axis : member → its axis' unit direction as the scene gives it (signed: the speed's sense).
     origin : member → the point of its axis at slot 0.
     slot : gear → its axial slot (0, 1, …; meshing gears share one).
+    offset : gear → where it sits along its member's axis from ``origin``: its slot's ``slot·gap``,
+        a gear of a spatial mesh where the mesh puts it (a bevel pair's gears meet at the apex, a
+        worm and its wheel centred on each other's axis).
     pitch : mesh index → the pitch point P.
     tangent : mesh index → (t_a, t_b), the directions from each gear's centre to P.
     parallel : every axis along x and every mesh external or internal: the side view.
@@ -99,6 +107,7 @@ class TrainLayout:
     pitch: Mapping[int, XYZ]
     tangent: Mapping[int, tuple[XYZ, XYZ]]
     parallel: bool
+    offset: Mapping[str, float] | None = None
 
     def line(self, member: str) -> XYZ:
         """The member's axis direction without its sign (the line the gears sit along)."""
@@ -108,7 +117,8 @@ class TrainLayout:
     def centre(self, gear: str) -> XYZ:
         """The centre of a gear's pitch circle."""
         m = self.train.gear(gear).member
-        return _add(self.origin[m], self.line(m), self.slot[gear] * self.gap)
+        at = self.slot[gear] * self.gap if self.offset is None else self.offset[gear]
+        return _add(self.origin[m], self.line(m), at)
 
     def height(self, member: str) -> float:
         """A member's axis height y (the side view of a parallel train)."""
@@ -170,8 +180,9 @@ def _tangents(train: GearTrain, mesh: Mesh, k: int, axis: Mapping[str, XYZ], sid
         if abs(abs(_dot(ea, eb)) - 1.0) > 1e-12:
             raise OutOfDomain(f"the {mesh.kind} mesh {prime(mesh.a)}–{prime(mesh.b)} joins axes that are not parallel")
         s = sides.get(k, 1)
-        # the side view's ŷ unless the axes themselves are vertical (then x̂)
-        up: XYZ = (0.0, 1.0, 0.0) if abs(ea[1]) < 0.5 else (1.0, 0.0, 0.0)
+        # the side view's ŷ for axes along x; x̂ for axes along y (vertical) or seen end-on (z): the
+        # pair beside each other, as the book draws the spur pair between two worm shafts
+        up: XYZ = (0.0, 1.0, 0.0) if abs(ea[0]) > 0.5 else (1.0, 0.0, 0.0)
         t = (s * up[0], s * up[1], s * up[2])
         return (t, t) if mesh.kind == "internal" else (t, (-t[0], -t[1], -t[2]))
     if mesh.kind == "worm":
@@ -344,9 +355,34 @@ def layout(train: GearTrain, module: float, axes: Mapping[str, str] | None = Non
                 continue
             tangent[k] = (ta, tb)
         raise NoSolution(_not_closed(train, k, ma, mb, where, origin))
-    pitch = {k: _add(_add(origin[train.gear(m.a).member], unsigned(train.gear(m.a).member), slot[m.a] * gap),
-                     tangent[k][0], radius[m.a]) for k, m in enumerate(train.meshes)}
-    return TrainLayout(train, module, gap, radius, axis, origin, slot, pitch, tangent, parallel)
+    for k, mesh in enumerate(train.meshes):
+        if mesh.kind != "worm":
+            continue
+        # a worm on a loop the other meshes closed (the double-worm reducer's second worm, placed from
+        # its spur pair) takes the diameter that reaches its wheel: q is a drawing's choice
+        mw, mg = train.gear(mesh.a).member, train.gear(mesh.b).member
+        across = _cross(unsigned(mw), unsigned(mg))
+        reach = abs(_dot(_add(origin[mw], origin[mg], -1.0), across)) - radius[mesh.b]
+        if reach > 0.0 and abs(reach - radius[mesh.a]) > tol:
+            radius[mesh.a] = reach
+    offset = {g: slot[g] * gap for g in slot}
+    for k, mesh in enumerate(train.meshes):
+        if mesh.kind in ("external", "internal"):
+            continue
+        # across axes the partner's axis fixes where along its own axis a gear stands:
+        # c_g = c_o + r_o·t_o − r_g·t_g, and c_o·e_g = origin_o·e_g since e_o ⊥ e_g
+        ends: tuple[tuple[str, str, XYZ, XYZ], ...] = ((mesh.a, mesh.b, tangent[k][0], tangent[k][1]),
+                                                       (mesh.b, mesh.a, tangent[k][1], tangent[k][0]))
+        for g, o, t_g, t_o in ends:
+            mg, mo = train.gear(g).member, train.gear(o).member
+            e = unsigned(mg)
+            if abs(_dot(e, unsigned(mo))) > 1e-12:
+                continue
+            at = _add(_add(origin[mo], t_o, radius[o]), t_g, -radius[g])
+            offset[g] = _dot(_add(at, origin[mg], -1.0), e)
+    lay = TrainLayout(train, module, gap, radius, axis, origin, slot, {}, tangent, parallel, offset)
+    pitch = {k: _add(lay.centre(m.a), tangent[k][0], radius[m.a]) for k, m in enumerate(train.meshes)}
+    return TrainLayout(train, module, gap, radius, axis, origin, slot, pitch, tangent, parallel, offset)
 
 
 def _not_closed(train: GearTrain, k: int, ma: str, mb: str, p: XYZ, origin: Mapping[str, XYZ]) -> str:

@@ -129,3 +129,31 @@ def test_a_bevel_differential_s_side_gears_face_each_other_across_the_planet():
     # one axis; the side gears 2·r2 = 12 mm apart, the planet's centre between them at r1 = 10 mm above it
     assert c1[1:] == c3[1:] == pytest.approx((0.0, 0.0)) and c3[0] - c1[0] == pytest.approx(0.012, abs=1e-15)
     assert c2 == pytest.approx(((c1[0] + c3[0]) / 2, 0.010, 0.0), abs=1e-15)
+
+
+def test_a_double_worm_reducer_s_gears_stand_where_their_spatial_meshes_put_them():
+    # 杨可桢 10-11 as its scene lays it out: worms 1 and 5 seen end-on (axis −z) over the wheels 2 and
+    # 4′ (axis x, coaxial with the case H); 1′–5′ beside each other; the bevels 2′ and 4 either side of
+    # the planet 3 (axis −y) on H's cross pin
+    t = train({"1": None, "2": None, "5": None, "4": None, "3": "H", "H": None},
+              [("1", 1, "1"), ("1'", 101, "1"), ("2", 99, "2"), ("2'", 20, "2"), ("3", 20, "3"), ("4", 20, "4"),
+               ("4'", 100, "4"), ("5", 1, "5"), ("5'", 100, "5")],
+              [Mesh("1", "2", "worm", 1), Mesh("1'", "5'", "external"), Mesh("5", "4'", "worm", 1),
+               Mesh("2'", "3", "bevel", -1), Mesh("3", "4", "bevel", 1)], inputs={"1": 1.0})
+    lay = layout(t, 1e-3, axes={"1": "-z", "5": "-z", "3": "-y"}, gap=0.016,
+                 towards={0: ("-y", "+y"), 2: ("-y", "+y"), 3: ("+y", "-x"), 4: ("+x", "+y")})
+    r = lay.radius
+    c = {g: lay.centre(g) for g in r}
+    # the end-on spur pair beside each other: one height, r1′ + r5′ apart along x
+    assert c["5'"][1] == c["1'"][1] and c["5'"][0] - c["1'"][0] == pytest.approx(0.1005, abs=1e-15)
+    # the bevels meet at the apex on the planet's axis: 2′ and 4 r3 either side of it, not in one plane
+    assert c["2'"][0] == pytest.approx(c["3"][0] - r["3"], abs=1e-15)
+    assert c["4"][0] == pytest.approx(c["3"][0] + r["3"], abs=1e-15)
+    # each wheel centred under its worm, at r_worm + r_wheel: the second worm takes the diameter that
+    # reaches 4′ (the wheels' radii differ by half a module; q is the drawing's choice)
+    for w, g in (("1", "2"), ("5", "4'")):
+        assert c[g][0] == pytest.approx(c[w][0], abs=1e-15) and c[w][2] == pytest.approx(c[g][2], abs=1e-15)
+        assert c[w][1] - c[g][1] == pytest.approx(r[w] + r[g], abs=1e-15)
+    assert r["1"] == pytest.approx(1e-3 * WORM_Q / 2) and r["5"] == pytest.approx(0.0045, abs=1e-15)
+    # the differential between the wheels, the wheel 4′ past the bevel 4 on its own shaft
+    assert c["2"][0] < c["2'"][0] < c["4"][0] < c["4'"][0]

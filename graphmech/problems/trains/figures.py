@@ -8,7 +8,8 @@ schematic
     ends, a hollow shaft drawn as two lines round the shaft inside it; the carrier H a crank from
     its shaft to the planet's pin; a fixed member hatched to the frame; a bevel gear a trapezoid
     toward its cone's apex; a worm a rectangle with its thread lines (slanting as its hand), a gear
-    seen along its axis a circle. The axial positions are not to scale (one slot per mesh stage).
+    seen along its axis a circle (dashed where a nearer one hides it). The axial positions are not to
+    scale (one slot per mesh stage; a spatial mesh's gears where the mesh puts them).
     Every moving member has its arrow of rotation: in the side view a straight arrow showing where
     its near side moves (a positive speed along +x: down), on a gear seen along its axis a curved
     arrow (positive along +z: counter-clockwise).
@@ -101,6 +102,29 @@ def _rect(c: XY, e: XY, half_along: float, lo: float, hi: float) -> Polyline:
     n = (-e[1], e[0])
     pts = [_v(_v(c, e, s * half_along), n, t) for s, t in ((-1, lo), (1, lo), (1, hi), (-1, hi))]
     return Polyline(tuple(pts), "given", closed=True)
+
+
+def hidden(q: XY, near: Sequence[tuple[XY, float]]) -> bool:
+    """Whether the paper point q lies inside one of the nearer discs."""
+    return any(math.dist(q, c) < r for c, r in near)
+
+
+def _hidden_circle(c: XY, R: float, near: Sequence[tuple[XY, float]], n: int = 240) -> list[Primitive]:
+    """A circle behind nearer discs: solid where seen, dashed where hidden (the drawing's hidden
+    line), as runs of a polyline through n points."""
+    pts = [(c[0] + R * math.cos(2 * math.pi * k / n), c[1] + R * math.sin(2 * math.pi * k / n)) for k in range(n)]
+    flags = [hidden(q, near) for q in pts]
+    start = next((k for k in range(n) if flags[k] != flags[k - 1]), 0)
+    out: list[Primitive] = []
+    run = [pts[start]]
+    for j in range(1, n + 1):
+        k = (start + j) % n
+        run.append(pts[k])
+        if flags[k] != flags[(k - 1) % n] or j == n:
+            h = flags[(k - 1) % n]
+            out.append(Polyline(tuple(run), "construction" if h else "given", dashed=h))
+            run = [pts[k]]
+    return out
 
 
 class _Drawer:
@@ -392,14 +416,34 @@ class _Drawer:
         self.items.append(GuideLine(a, b) if out > 0 else GuideLine(b, a))
 
     # ------------------------------------------------------------------ gears
+    def nearer(self, g: str) -> list[tuple[XY, float]]:
+        """The discs (centre, radius on the paper) of the gears seen end-on nearer the viewer (+z)
+        than the end-on gear g that cover part of its circle: another member's, a slot in front."""
+        m = self.train.gear(g).member
+        c, R = self.p(self.lay.centre(g)), self.R(g)
+        z = self.lay.centre(g)[2]
+        out = []
+        for o in self.train.gears:
+            mo = o.member
+            if mo == m or self.e2(mo) is not None or self.lay.centre(o.name)[2] <= z + 1e-9 * self.mu_l:
+                continue
+            co, Ro = self.p(self.lay.centre(o.name)), self.R(o.name)
+            if math.dist(c, co) < R + Ro and math.dist(c, co) + R > Ro:  # crosses its rim, not wholly hidden
+                out.append((co, Ro))
+        return out
+
     def _gear(self, g: str) -> None:
         m = self.train.gear(g).member
         c = self.p(self.lay.centre(g))
         R = self.R(g)
         e = self.e2(m)
         label_at: XY
-        if e is None:  # seen along its axis
-            self.items.append(Circle(c, R, "given"))
+        if e is None:  # seen along its axis; behind a nearer gear seen so (toward +z), that part hidden
+            near = self.nearer(g)
+            if near:
+                self.items += _hidden_circle(c, R, near)
+            else:
+                self.items.append(Circle(c, R, "given"))
             label_at = _v(c, (R * 0.7071, R * 0.7071))
         elif g in self.worms:
             self._worm(g, c, e, R)
@@ -513,8 +557,17 @@ class _Drawer:
                     self._bevel(g, self.reflect(h, c), e, self.R(g), flip=True)
             return
         if e is None or self.e2(h) != e:  # a planet across the carrier: its pin from the carrier's axis
-            c = self.p(self.lay.origin[pl])
-            self.items.append(Segment(self.p(self.lay.origin[h]), c, "given"))
+            for g in self.gears_of(pl):
+                c = self.p(self.lay.centre(g))
+                if e is None:  # the pin seen end-on, on the carrier's arm from its axis
+                    self.items.append(Segment(self.at(h, self.along(h, c)), c, "given"))
+                    self.items.append(Circle(c, 1.0, "given"))
+                    continue
+                # from the apex on the carrier's axis (seen end-on: its point) through the gear, past its back
+                foot = self.p(self.lay.origin[h]) if self.e2(h) is None else self.at(h, self.along(h, c))
+                d = math.dist(foot, c)
+                out = (e[0], e[1]) if d == 0.0 else ((c[0] - foot[0]) / d, (c[1] - foot[1]) / d)
+                self.items.append(Segment(foot, _v(c, out, GEAR_W), "given"))
             return
         ss = [self.along(pl, self.p(self.lay.centre(g))) for g in self.gears_of(pl)]
         arm = self.arm_s(pl)

@@ -5,6 +5,7 @@ chain, a worm and bevel spatial train); what each panel holds, the arrows of rot
 speeds' signs, the velocity diagram's ω against the exact solve, byte-identical output."""
 from __future__ import annotations
 
+import math
 import warnings
 
 import pytest
@@ -358,3 +359,99 @@ def test_the_bevel_differential_s_case_cross_pin_and_side_gears():
     mid = (x1 + x3) / 2
     assert any(isinstance(it, Segment) and abs(it.p0[0] - mid) < 1e-6 and abs(it.p1[0] - mid) < 1e-6
                and it.p0[1] == pytest.approx(min(ys)) and it.p1[1] == pytest.approx(max(ys)) for it in sch.items)
+
+
+SPATIAL_BANK = ("train.ysj10_11_worm_differential", "train.hand_hoist_i15", "train.ysj10_4_worm_train")
+
+
+def _meshing(lay):
+    return {frozenset((m.a, m.b)) for m in lay.train.meshes}
+
+
+@pytest.mark.parametrize("name", SPATIAL_BANK)
+def test_no_two_gears_of_a_spatial_bank_train_overlap(name):
+    """Side-on symbols (a gear's width across its pitch diameter, a worm its length) do not overlap
+    unless the gears mesh; end-on circles in one plane do not either; an end-on circle behind a
+    nearer end-on gear is dashed where that gear hides it, solid elsewhere."""
+    from graphmech.problems.trains.figures import GEAR_W, WORM_L
+
+    sc = load_scene(SCENE_DIR / f"{name}.toml")
+    dr = drawn(sc)
+    lay, mu = dr.layout, dr.mu_l
+    worms = {m.a for m in lay.train.meshes if m.kind == "worm"}
+    meshing = _meshing(lay)
+    boxes, discs = {}, {}
+    for g in lay.radius:
+        e = lay.line(lay.train.gear(g).member)
+        c = [v / mu for v in lay.centre(g)]
+        R = lay.radius[g] / mu
+        if e[2] > 0.5:
+            discs[g] = ((c[0], c[1]), c[2], R)
+            continue
+        half = WORM_L * R if g in worms else GEAR_W / 2
+        ax, ay = (half, R) if e[0] > 0.5 else (R, half)
+        boxes[g] = (c[0] - ax, c[0] + ax, c[1] - ay, c[1] + ay)
+    names = sorted(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if frozenset((a, b)) in meshing:
+                continue
+            A, B = boxes[a], boxes[b]
+            ox = min(A[1], B[1]) - max(A[0], B[0])
+            oy = min(A[3], B[3]) - max(A[2], B[2])
+            assert ox <= 1e-6 or oy <= 1e-6, (a, b, ox, oy)
+    ends = sorted(discs)
+    for i, a in enumerate(ends):
+        for b in ends[i + 1:]:
+            (ca, za, ra), (cb, zb, rb) = discs[a], discs[b]
+            same_member = lay.train.gear(a).member == lay.train.gear(b).member
+            if abs(za - zb) < GEAR_W and not same_member:
+                assert math.dist(ca, cb) >= ra + rb - 1e-6, (a, b)
+    sch = schematic(lay, mu, solve(lay.train).omega)
+    hidden = [it for it in sch.items if isinstance(it, Polyline) and it.dashed and not it.closed]
+    covered = [(a, b) for a in ends for b in ends
+               if discs[b][1] > discs[a][1] + GEAR_W / 2 and lay.train.gear(a).member != lay.train.gear(b).member
+               and abs(discs[a][2] - discs[b][2]) < math.dist(discs[a][0], discs[b][0]) < discs[a][2] + discs[b][2]]
+    assert bool(hidden) == bool(covered)
+    for a, b in covered:  # a's circle: dashed inside b's disc, solid outside it
+        (ca, _, ra), (cb, _, rb) = discs[a], discs[b]
+        runs = [it for it in sch.items if isinstance(it, Polyline) and not it.closed
+                and all(abs(math.dist(p, ca) - ra) < 1e-6 for p in it.points)]
+        assert any(it.dashed for it in runs) and any(not it.dashed for it in runs)
+        for it in runs:
+            inner = it.points[1:-1]
+            assert all((math.dist(p, cb) < rb) == it.dashed for p in inner)
+
+
+@pytest.mark.parametrize("name", SPATIAL_BANK)
+def test_each_worm_reaches_its_wheel_s_pitch_circle(name):
+    # the worm's axis at r_worm + r_wheel from the wheel's centre, the two centred on each other's axis
+    lay = drawn(load_scene(SCENE_DIR / f"{name}.toml")).layout
+    worms = [m for m in lay.train.meshes if m.kind == "worm"]
+    assert worms
+    for m in worms:
+        cw, cg = lay.centre(m.a), lay.centre(m.b)
+        ew, eg = (lay.line(lay.train.gear(g).member) for g in (m.a, m.b))
+        d = [q - p for p, q in zip(cw, cg)]
+        along_w = sum(u * v for u, v in zip(d, ew))
+        along_g = sum(u * v for u, v in zip(d, eg))
+        assert abs(along_w) < 1e-12 and abs(along_g) < 1e-12  # the wheel's mid-plane through the worm's centre
+        assert math.hypot(*d) == pytest.approx(lay.radius[m.a] + lay.radius[m.b], rel=1e-12)
+
+
+def test_a_bevel_planet_s_pin_runs_from_the_carrier_s_axis_past_its_gear():
+    # the side gears 1 and 3 (20) and the case H seen end-on (axis +z); the planet 2 (12, axis +x) on
+    # H's pin: the pin from H's axis (the apex) through the planet's centre to past its back
+    from graphmech.problems.trains.figures import GEAR_W
+
+    t = train({"1": None, "2": "H", "3": None, "H": None}, [("1", 20, "1"), ("2", 12, "2"), ("3", 20, "3")],
+              [Mesh("1", "2", "bevel", -1), Mesh("2", "3", "bevel", -1)], inputs={"H": 1.0}, fixed=("3",))
+    lay = layout(t, 1e-3, axes={"1": "+z", "3": "+z", "H": "+z", "2": "+x"}, gap=0.016,
+                 towards={0: ("+x", "-z"), 1: ("-z", "+x")})
+    mu = 1e-3
+    c2 = (lay.centre("2")[0] / mu, lay.centre("2")[1] / mu)
+    h = (lay.origin["H"][0] / mu, lay.origin["H"][1] / mu)
+    assert c2 == pytest.approx((10.0, 0.0)) and h == pytest.approx((0.0, 0.0))
+    sch = schematic(lay, mu, solve(t).omega)
+    pins = [it for it in sch.items if isinstance(it, Segment) and it.p0 == pytest.approx(h)]
+    assert len(pins) == 1 and pins[0].p1 == pytest.approx((c2[0] + GEAR_W, 0.0))
