@@ -1,0 +1,223 @@
+"""The synthesis task ``time_ratio``: a crank-rocker designed from its time ratio K.
+
+Read: ``mechanism``, ``K``, the rocker ``rocker`` (l_CD), the frame ``frame`` (l_AD) and either the
+swing ``swing`` (ψ) or one limit position ``limit_angle`` (∠ADC₁). Analysed: every design the
+construction (:mod:`graphmech.methods.synthesis_time_ratio`) draws, its lengths measured at μl
+against the closed forms (:mod:`graphmech.exact.synthesis`), then re-analysed as a linkage —
+drawn (:func:`graphmech.methods.characteristics.draw_characteristics`) against exact
+(:func:`graphmech.exact.characteristics.fourbar`) — so that its K, ψ and γ_min are in the table and
+the re-analysis error against what was asked (K; ψ or the limit angle) is said under it.
+"""
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from graphmech.errors import SceneError
+from graphmech.problems.reader import MISSING, Reader
+
+if TYPE_CHECKING:
+    from graphmech.exact.synthesis import Design
+    from graphmech.methods.synthesis_time_ratio import DrawnDesign
+    from graphmech.problems.synthesis.check import SynthesisAnalysis
+
+#: The mechanisms the time-ratio task designs (the slider-crank and the guide bar are to come).
+MECHANISMS = ("crank_rocker",)
+#: K at and above this asks θ ≥ 90°: no crank-rocker is designed so (the θ-circle's arc
+#: would lie on the rocker's side).
+K_MAX = 3.0
+#: What each design's rows are called, with their units (the bank's keys without a unit).
+SOLUTION_NAMES = {"AC1": "m", "AC2": "m", "lAB": "m", "lBC": "m", "K": "", "psi": "deg", "gamma_min": "deg"}
+#: The most designs one construction gives (two rays, two cuts each).
+MAX_SOLUTIONS = 4
+
+
+@dataclass(frozen=True)
+class TimeRatio:
+    """A crank-rocker to design, SI: K, the rocker c = l_CD, the frame d = l_AD and the swing ψ
+    or the limit angle λ = ∠ADC₁ (exactly one of them)."""
+
+    mechanism: str
+    K: float
+    rocker: float
+    frame: float
+    swing: float | None = None
+    limit_angle: float | None = None
+
+    @property
+    def theta(self) -> float:
+        """θ = 180°(K − 1)/(K + 1), rad."""
+        return math.pi * (self.K - 1.0) / (self.K + 1.0)
+
+
+def read_time_ratio(r: Reader) -> TimeRatio | None:
+    """The rest of [synthesis] for ``task = "time_ratio"`` (None after reporting)."""
+    mech = r.string("mechanism", choices=MECHANISMS, required=True)
+    raw = r.raw("K", required=True, hint="the time ratio, a number ≥ 1")
+    K = None if raw is MISSING else r.number(raw, r.at("K"))
+    if K is not None and K < 1.0:
+        r.problem(r.at("K"), f"K = {K:g} < 1: the time ratio (180° + θ)/(180° − θ) is at least 1 "
+                             "(K = 1: no quick return)")
+        K = None
+    elif K is not None and K >= K_MAX:
+        r.problem(r.at("K"), f"K = {K:g} ≥ 3 asks θ = {180 * (K - 1) / (K + 1):.4g}° ≥ 90°: no crank-rocker "
+                             "is designed so (the crank angle between the limits stays below 90°)")
+        K = None
+    c = r.scalar("rocker", "length", positive=True)
+    d = r.scalar("frame", "length", positive=True)
+    swing = r.scalar("swing", "angle", required=False)
+    limit = r.scalar("limit_angle", "angle", required=False)
+    given = [k for k in ("swing", "limit_angle") if r.present(k) is not None]
+    if not given:
+        r.problem(r.at("swing"), "missing: write swing_deg (the rocker's swing ψ) or limit_angle_deg "
+                                 "(∠ADC₁ of one limit position)")
+    elif len(given) == 2:
+        r.problem(r.at(r.present("limit_angle") or "limit_angle"),
+                  "give the swing or one limit position, not both")
+    for value, base, what in ((swing, "swing", "ψ"), (limit, "limit_angle", "∠ADC₁")):
+        if value is not None and not 0.0 < value < math.pi:
+            r.problem(r.at(r.present(base) or base), f"{what} must lie between 0 and 180°")
+            return None
+    for value, base in ((c, "rocker"), (d, "frame")):
+        if value is not None and not 1e-9 <= value <= 1e9:
+            r.problem(r.at(r.present(base) or base), f"{value:g} m is absurd for a link (1e-9 … 1e9 m)")
+            return None
+    if mech is None or K is None or c is None or d is None or len(given) != 1 or (swing is None and limit is None):
+        return None
+    return TimeRatio(mech, K, c, d, swing, limit)
+
+
+def prefix(k: int, count: int) -> str:
+    """``sol1_`` … where the construction gives several designs, nothing for one."""
+    return f"sol{k + 1}_" if count > 1 else ""
+
+
+def names(count: int) -> list[str]:
+    """Every row name of a scene whose construction gives ``count`` designs."""
+    return ["theta"] + [prefix(k, count) + n for k in range(count) for n in SOLUTION_NAMES]
+
+
+def designs(p: TimeRatio, mu_l: float) -> tuple[list[DrawnDesign], list[Design]]:
+    """The drawn designs (mm) and the exact ones (m), longest coupler first, paired by order."""
+    from graphmech.exact import synthesis as ex
+    from graphmech.methods import synthesis_time_ratio as gm
+
+    c_mm, d_mm = p.rocker / mu_l, p.frame / mu_l
+    if p.limit_angle is not None:
+        return (gm.draw_from_limit(c_mm, d_mm, p.limit_angle, gm.theta_of_K(p.K)),
+                ex.crank_rocker_from_limit(p.rocker, p.frame, p.limit_angle, ex.theta_of_K(p.K)))
+    assert p.swing is not None
+    return (gm.draw_from_swing(c_mm, d_mm, p.swing, gm.theta_of_K(p.K)),
+            ex.crank_rocker_from_swing(p.rocker, p.frame, p.swing, ex.theta_of_K(p.K)))
+
+
+def choose_scale(p: TimeRatio) -> float:
+    """μl that draws the rocker and the frame together about 100 mm across."""
+    from graphmech.scales import round_scale
+
+    return round_scale((p.rocker + p.frame) / 100.0)
+
+
+def analyse_time_ratio(an: SynthesisAnalysis) -> None:
+    """Fill ``an``: the designs, their rows, the re-analysis and the words under the table."""
+    from graphmech.exact.characteristics import fourbar, fourbar_class
+    from graphmech.mechanisms.linkage import RRR, Crank, Linkage
+    from graphmech.methods.characteristics import draw_characteristics
+    from graphmech.problems.judging import Row
+
+    p: TimeRatio = an.scene.problem.problem
+    mu = an.scales["l"]
+    drawn, exact = designs(p, mu)
+    key = "synthesis." + ("limit_angle" if p.limit_angle is not None else "swing")
+    if not exact:
+        asked = (f"the limit angle {math.degrees(p.limit_angle):.4g}°" if p.limit_angle is not None
+                 else f"the swing {math.degrees(p.swing or 0.0):.4g}°")
+        raise SceneError([(key, f"no Grashof crank: no crank-rocker with l_CD = {p.rocker:g} m, l_AD = {p.frame:g} m, "
+                                f"{asked} and K = {p.K:g} (θ = {math.degrees(p.theta):.4g}°) — every cut of the "
+                                "construction gives a crank that does not turn fully or changes branch")], an.scene.source)
+    if len(drawn) != len(exact):  # the construction and the closed forms disagree: say so, do not pair
+        raise SceneError([(key, f"the construction draws {len(drawn)} design(s) and the closed forms find "
+                                f"{len(exact)}: a limiting case (a cut that just touches) — move the data off it")],
+                         an.scene.source)
+    an.drawn, an.exact = drawn, exact
+    if p.K == 1.0:
+        an.warnings.append("K = 1: θ = 0, no quick return — the crank pin's limits lie on one line through A")
+    n = len(exact)
+    theta = math.degrees(p.theta)
+    rows = [Row("theta", "deg", None, 1.0, math.degrees(drawn[0].theta), theta,
+                abs(math.degrees(drawn[0].theta) - theta) / 180.0)]
+    for k, (g, e) in enumerate(zip(drawn, exact)):
+        pre = prefix(k, n)
+        for name, mm, si in (("AC1", g.AC1_mm, e.AC1), ("AC2", g.AC2_mm, e.AC2), ("lAB", g.lAB_mm, e.lAB),
+                             ("lBC", g.lBC_mm, e.lBC)):
+            rows.append(Row(pre + name, "m", mm, mu, mm * mu, si, abs(mm * mu - si) / si))
+        # the designed linkage re-analysed: drawn as a linkage of its own, and exactly
+        A, D = g.points["A"], g.points["D"]
+        lk = Linkage({"A": (A[0] * mu, A[1] * mu), "D": (D[0] * mu, D[1] * mu)},
+                     Crank("1", "A", "B", g.lAB_mm * mu, 1.0),
+                     (RRR("B", "C", "D", ("2", "3"), (g.lBC_mm * mu, g.lCD_mm * mu), g.branch),))
+        dc = draw_characteristics(lk, mu)
+        xc = fourbar(e.A, e.D, e.lAB, e.lBC, e.lCD, e.branch)
+        assert dc.theta is not None and dc.psi is not None and xc.theta is not None and xc.psi is not None
+        K_g = (math.pi + dc.theta) / (math.pi - dc.theta)
+        K_e = xc.K or 1.0
+        rows.append(Row(pre + "K", "", None, 1.0, K_g, K_e, abs(K_g - K_e) / K_e))
+        for name, gv, ev in (("psi", dc.psi, xc.psi), ("gamma_min", dc.gamma_min, xc.gamma_min)):
+            rows.append(Row(pre + name, "deg", None, 1.0, math.degrees(gv), math.degrees(ev),
+                            abs(gv - ev) / math.pi))
+        # the re-analysis against what was asked: K, and ψ or the limit angle
+        if p.limit_angle is not None:
+            limits = [cmath.phase((e.A - e.D) / (C - e.D)) for C in _extreme_pins(e, xc)]
+            got = min(limits, key=lambda x: abs(abs(x) - p.limit_angle))  # type: ignore[operator]
+            asked_err = abs(abs(got) - p.limit_angle)
+            asked = "limit_angle"
+        else:
+            asked_err = abs(xc.psi - (p.swing or 0.0))
+            asked = "psi"
+        cls = fourbar_class(e.lAB, e.lBC, e.lCD, e.lAD)
+        an.solutions.append({"name": pre.rstrip("_") or "design", "lAB": e.lAB, "lBC": e.lBC, "AC1": e.AC1,
+                             "AC2": e.AC2, "grashof": cls, "branch": e.branch,
+                             "reanalysis": {"K": K_e, "K_error": abs(K_e - p.K) / p.K,
+                                            f"{asked}_error_deg": math.degrees(asked_err),
+                                            "psi_deg": math.degrees(xc.psi),
+                                            "gamma_min_deg": math.degrees(xc.gamma_min)}})
+    wanted = set(an.scene.find) or None
+    an.rows.extend(r for r in rows if wanted is None or r.name in wanted)
+
+
+def _extreme_pins(e: Design, xc: object) -> list[complex]:
+    """The rocker pin C at the re-analysed linkage's two extremes (from the crank's angles)."""
+    from graphmech.exact.characteristics import ExactCharacteristics
+
+    assert isinstance(xc, ExactCharacteristics) and xc.phi_start is not None and xc.phi_end is not None
+    out = []
+    for phi in (xc.phi_start, xc.phi_end):
+        B = e.A + e.lAB * cmath.exp(1j * phi)
+        # C at l_BC from B and l_CD from D, on the design's branch
+        bd = abs(e.D - B)
+        x = (e.lBC ** 2 - e.lCD ** 2 + bd ** 2) / (2.0 * bd)
+        h = math.sqrt(max(e.lBC ** 2 - x * x, 0.0))
+        u = (e.D - B) / bd
+        side = 1.0 if e.branch == "left" else -1.0
+        out.append(B + u * (x + 1j * side * h))
+    return out
+
+
+def grashof_line(s: dict[str, object], p: TimeRatio) -> str:
+    """One design said under the table: its lengths, Grashof's class and the re-analysis error."""
+    re = s["reanalysis"]
+    assert isinstance(re, dict)
+    a, b = float(s["lAB"]), float(s["lBC"])  # type: ignore[arg-type]
+    longest = max(b, p.rocker, p.frame)
+    others = b + p.rocker + p.frame - longest
+    what = "crank-rocker, the crank AB the Grashof crank" if s["grashof"] == "crank_rocker_AB" else str(s["grashof"])
+    err = next(f"{k[:-10]} {v:.1e}°" for k, v in re.items() if k.endswith("_error_deg"))
+    return (f"{s['name']}: l_AB = {a * 1000:.6g} mm, l_BC = {b * 1000:.6g} mm: {what} "
+            f"({a * 1000:.4g} + {longest * 1000:.4g} < {others * 1000:.4g} mm); re-analysed: K = {re['K']:.12g} "
+            f"(error {re['K_error']:.1e}), {err} off, ψ = {re['psi_deg']:.6g}°, γ_min = {re['gamma_min_deg']:.6g}°")
+
+
+__all__ = ["K_MAX", "MECHANISMS", "SOLUTION_NAMES", "TimeRatio", "analyse_time_ratio", "choose_scale", "designs",
+           "grashof_line", "names", "prefix", "read_time_ratio"]
