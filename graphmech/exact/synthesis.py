@@ -22,6 +22,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass
+from typing import Literal
 
 from graphmech.exact.characteristics import fourbar_class
 
@@ -65,7 +66,7 @@ class Design:
         return abs(self.D - self.A)
 
     @property
-    def branch(self) -> str:
+    def branch(self) -> Literal["left", "right"]:
         """The side of the directed line B₁ → D that C₁ lies to (the dyad's branch), B₁ the crank
         pin at C₁'s limit: on AC₁, ahead of A when C₁ is the extended position."""
         u = (self.C1 - self.A) / self.AC1

@@ -23,9 +23,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Literal
 
 from graphmech.errors import AssemblyError, DegenerateConstruction
-from graphmech.geometry.kernels import ScalarOps, intersect_circle_line, intersect_circles, intersect_lines
+from graphmech.geometry.kernels import (
+    ScalarOps,
+    intersect_circle_line,
+    intersect_circles,
+    intersect_lines,
+)
 from graphmech.methods.characteristics import grashof_class
 
 __all__ = ["DrawnDesign", "draw_from_limit", "draw_from_swing", "theta_of_K"]
@@ -67,7 +73,7 @@ class DrawnDesign:
         return _dist(self.points["A"], self.points["D"])
 
     @property
-    def branch(self) -> str:
+    def branch(self) -> Literal["left", "right"]:
         """The side of the directed line B₁ → D that C₁ lies to."""
         return "left" if _left(self.points["B1"], self.points["D"], self.points["C1"]) > 0.0 else "right"
 

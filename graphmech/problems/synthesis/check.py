@@ -11,7 +11,13 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from graphmech.errors import SceneError
-from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
+from graphmech.problems.judging import (
+    Row,
+    Verdict,
+    close_names,
+    judge_value,
+    measured_entries,
+)
 from graphmech.problems.synthesis import time_ratio
 from graphmech.scales import drawn_size_problem, format_scale
 
@@ -53,15 +59,28 @@ def analyse_synthesis(scene: Scene[SynthesisScene], extra: tuple[tuple[str, floa
             raise SceneError([("scales", why)], scene.source)
     else:
         an.scales["l"] = time_ratio.choose_scale(p)
-    time_ratio.analyse_time_ratio(an)
+    found = time_ratio.analyse_time_ratio(p, an.scales["l"], scene.find, scene.source)
+    an.drawn, an.exact, an.rows, an.warnings, an.solutions = (found.drawn, found.exact, found.rows, found.warnings,
+                                                               found.solutions)
     known = time_ratio.names(len(an.exact))
-    wrong = [(f"find[{i}]", f"unknown synthesis quantity {n!r}{close_names(n, known)}")
-             for i, n in enumerate(scene.find) if n not in known]
-    wrong += [(key, f"unknown synthesis quantity {n!r}{close_names(n, known)}")
+    wrong = [(f"find[{i}]", _unknown(n, known, len(an.exact))) for i, n in enumerate(scene.find) if n not in known]
+    wrong += [(key, _unknown(n, known, len(an.exact)))
               for key, n, _ in measured_entries(scene, an.extra_measured) if n not in known]
     if wrong:
         raise SceneError(wrong, scene.source)
     return an
+
+
+def _unknown(name: str, known: list[str], count: int) -> str:
+    """Why ``name`` is not a row, with the name meant: a design's prefix that the count of designs
+    does not take (one design: ``lAB``; several: ``sol1_lAB`` …) is said as such."""
+    bare = name.split("_", 1)[1] if name.startswith("sol") and "_" in name else name
+    if count == 1 and bare in known:
+        return f"unknown synthesis quantity {name!r}: the construction gives one design, its names take no sol prefix ({bare})"
+    if count > 1 and f"sol1_{bare}" in known:
+        return (f"unknown synthesis quantity {name!r}: the construction gives {count} designs, "
+                f"sol1_{bare} … sol{count}_{bare}")
+    return f"unknown synthesis quantity {name!r}{close_names(name, known)}"
 
 
 def judge_synthesis(an: SynthesisAnalysis) -> list[Verdict]:

@@ -8,8 +8,18 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from graphmech.drawing.lettering import number, scale_text
-from graphmech.drawing.primitives import (Circle, FixedPivot, Hinge, Label, Panel, Polyline, Primitive, Segment,
-                                          Sheet, angle_arc)
+from graphmech.drawing.primitives import (
+    Circle,
+    FixedPivot,
+    Hinge,
+    Label,
+    Panel,
+    Polyline,
+    Primitive,
+    Segment,
+    Sheet,
+    angle_arc,
+)
 
 if TYPE_CHECKING:
     from graphmech.methods.synthesis_time_ratio import DrawnDesign
@@ -72,8 +82,8 @@ def synthesis_sheet(an: SynthesisAnalysis, page: tuple[float, float], footer: tu
         name = f"solution {k + 1}" if n > 1 else "design"
         notes = (scale_text("l", mu),
                  f"AC_{{1}} = {number(g.AC1_mm)} mm, AC_{{2}} = {number(g.AC2_mm)} mm (drawn)",
-                 f"l_{{AB}} = (AC_{{2}} − AC_{{1}})/2 = {number(g.lAB_mm * mu * 1000)} mm, "
-                 f"l_{{BC}} = (AC_{{1}} + AC_{{2}})/2 = {number(g.lBC_mm * mu * 1000)} mm")
+                 (f"l_{{AB}} = (AC_{{2}} − AC_{{1}})/2 = {number(g.lAB_mm * mu * 1000)} mm, "
+                  f"l_{{BC}} = (AC_{{1}} + AC_{{2}})/2 = {number(g.lBC_mm * mu * 1000)} mm"))
         panels.append(Panel(f"design{k + 1}", f"Crank-rocker from K, {name}", tuple(design_items(g, mu)), notes,
                             row=0, scales=(("l", mu),)))
     p = an.scene.problem.problem

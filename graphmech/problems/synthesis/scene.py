@@ -10,7 +10,15 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from graphmech.problems.reader import Reader, Scene, raise_sorted, read_header, read_measured, read_scales, read_tail
+from graphmech.problems.reader import (
+    Reader,
+    Scene,
+    raise_sorted,
+    read_header,
+    read_measured,
+    read_scales,
+    read_tail,
+)
 from graphmech.problems.synthesis.time_ratio import TimeRatio, read_time_ratio
 
 #: What a synthesis scene may show: the construction with the designed linkages.
@@ -50,4 +58,4 @@ def parse_synthesis_scene(data: Mapping[str, Any], source: str, top: Reader,
                  precision_mm=precision, page=page, kind="synthesis", problem=SynthesisScene(task, problem))
 
 
-__all__ = ["SYNTHESIS_SHOW_CHOICES", "SynthesisScene", "TASKS", "parse_synthesis_scene"]
+__all__ = ["SYNTHESIS_SHOW_CHOICES", "TASKS", "SynthesisScene", "parse_synthesis_scene"]

@@ -13,7 +13,7 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from graphmech.errors import SceneError
 from graphmech.problems.reader import MISSING, Reader
@@ -21,13 +21,18 @@ from graphmech.problems.reader import MISSING, Reader
 if TYPE_CHECKING:
     from graphmech.exact.synthesis import Design
     from graphmech.methods.synthesis_time_ratio import DrawnDesign
-    from graphmech.problems.synthesis.check import SynthesisAnalysis
+    from graphmech.problems.judging import Row
 
-#: The mechanisms the time-ratio task designs (the slider-crank and the guide bar are to come).
+#: The mechanisms the time-ratio task designs.
 MECHANISMS = ("crank_rocker",)
+#: Named in docs/scene-format.md, still to be built (refused in words).
+TO_COME = ("slider_crank", "guide_bar")
 #: K at and above this asks θ ≥ 90°: no crank-rocker is designed so (the θ-circle's arc
 #: would lie on the rocker's side).
 K_MAX = 3.0
+#: Above 1 and below this, θ (< 1.6e-6 rad) draws a θ-circle more than 10⁶ chords across: the
+#: design is K = 1's to the drawing's precision, and its construction would be round-off.
+K_NEAR_1 = 1.0 + 1e-6
 #: What each design's rows are called, with their units (the bank's keys without a unit).
 SOLUTION_NAMES = {"AC1": "m", "AC2": "m", "lAB": "m", "lBC": "m", "K": "", "psi": "deg", "gamma_min": "deg"}
 #: The most designs one construction gives (two rays, two cuts each).
@@ -45,6 +50,8 @@ class TimeRatio:
     frame: float
     swing: float | None = None
     limit_angle: float | None = None
+    #: The key the swing or the limit angle was written under (``swing_deg``), for messages.
+    key: str = ""
 
     @property
     def theta(self) -> float:
@@ -54,12 +61,20 @@ class TimeRatio:
 
 def read_time_ratio(r: Reader) -> TimeRatio | None:
     """The rest of [synthesis] for ``task = "time_ratio"`` (None after reporting)."""
-    mech = r.string("mechanism", choices=MECHANISMS, required=True)
+    mech = r.string("mechanism", choices=MECHANISMS + TO_COME, required=True)
+    if mech in TO_COME:
+        r.problem(r.at("mechanism"), f"{mech}: not designed from K yet (issue 20): only \"crank_rocker\"")
+        r.ignore(*r.table)
+        return None
     raw = r.raw("K", required=True, hint="the time ratio, a number ≥ 1")
     K = None if raw is MISSING else r.number(raw, r.at("K"))
     if K is not None and K < 1.0:
         r.problem(r.at("K"), f"K = {K:g} < 1: the time ratio (180° + θ)/(180° − θ) is at least 1 "
                              "(K = 1: no quick return)")
+        K = None
+    elif K is not None and 1.0 < K < K_NEAR_1:
+        r.problem(r.at("K"), f"K = {K!r} is within 1e-6 of 1: θ = {180 * (K - 1) / (K + 1):.3g}° draws a θ-circle "
+                             "millions of chords across — write K = 1 (no quick return)")
         K = None
     elif K is not None and K >= K_MAX:
         r.problem(r.at("K"), f"K = {K:g} ≥ 3 asks θ = {180 * (K - 1) / (K + 1):.4g}° ≥ 90°: no crank-rocker "
@@ -86,7 +101,7 @@ def read_time_ratio(r: Reader) -> TimeRatio | None:
             return None
     if mech is None or K is None or c is None or d is None or len(given) != 1 or (swing is None and limit is None):
         return None
-    return TimeRatio(mech, K, c, d, swing, limit)
+    return TimeRatio(mech, K, c, d, swing, limit, r.at(r.present(given[0]) or given[0]))
 
 
 def prefix(k: int, count: int) -> str:
@@ -120,30 +135,42 @@ def choose_scale(p: TimeRatio) -> float:
     return round_scale((p.rocker + p.frame) / 100.0)
 
 
-def analyse_time_ratio(an: SynthesisAnalysis) -> None:
-    """Fill ``an``: the designs, their rows, the re-analysis and the words under the table."""
+@dataclass
+class Designed:
+    """What the task found: the drawn and the exact designs (paired by order), the rows, the
+    warnings and, per design, what ``check --json`` adds."""
+
+    drawn: list[DrawnDesign]
+    exact: list[Design]
+    rows: list[Row]
+    warnings: list[str]
+    solutions: list[dict[str, Any]]
+
+
+def analyse_time_ratio(p: TimeRatio, mu: float, find: tuple[str, ...] = (), source: str = "") -> Designed:
+    """The designs at μl = ``mu``, their rows (those ``find`` asks; all when it is empty), the
+    re-analysis and the words under the table; ``source`` names the file in a refusal."""
     from graphmech.exact.characteristics import fourbar, fourbar_class
     from graphmech.mechanisms.linkage import RRR, Crank, Linkage
     from graphmech.methods.characteristics import draw_characteristics
     from graphmech.problems.judging import Row
 
-    p: TimeRatio = an.scene.problem.problem
-    mu = an.scales["l"]
     drawn, exact = designs(p, mu)
-    key = "synthesis." + ("limit_angle" if p.limit_angle is not None else "swing")
+    key = p.key
     if not exact:
         asked = (f"the limit angle {math.degrees(p.limit_angle):.4g}°" if p.limit_angle is not None
                  else f"the swing {math.degrees(p.swing or 0.0):.4g}°")
-        raise SceneError([(key, f"no Grashof crank: no crank-rocker with l_CD = {p.rocker:g} m, l_AD = {p.frame:g} m, "
-                                f"{asked} and K = {p.K:g} (θ = {math.degrees(p.theta):.4g}°) — every cut of the "
-                                "construction gives a crank that does not turn fully or changes branch")], an.scene.source)
+        raise SceneError([(key, (f"no Grashof crank: no crank-rocker with l_CD = {p.rocker:g} m, l_AD = {p.frame:g} m, "
+                                 f"{asked} and K = {p.K:g} (θ = {math.degrees(p.theta):.4g}°) — every cut of the "
+                                 "construction gives a crank that does not turn fully or changes branch"))],
+                         source)
     if len(drawn) != len(exact):  # the construction and the closed forms disagree: say so, do not pair
-        raise SceneError([(key, f"the construction draws {len(drawn)} design(s) and the closed forms find "
-                                f"{len(exact)}: a limiting case (a cut that just touches) — move the data off it")],
-                         an.scene.source)
-    an.drawn, an.exact = drawn, exact
+        raise SceneError([(key, (f"the construction draws {len(drawn)} design(s) and the closed forms find "
+                                 f"{len(exact)}: a limiting case (a cut that just touches) — move the data off it"))],
+                         source)
+    out = Designed(drawn, exact, [], [], [])
     if p.K == 1.0:
-        an.warnings.append("K = 1: θ = 0, no quick return — the crank pin's limits lie on one line through A")
+        out.warnings.append("K = 1: θ = 0, no quick return — the crank pin's limits lie on one line through A")
     n = len(exact)
     theta = math.degrees(p.theta)
     rows = [Row("theta", "deg", None, 1.0, math.degrees(drawn[0].theta), theta,
@@ -177,14 +204,15 @@ def analyse_time_ratio(an: SynthesisAnalysis) -> None:
             asked_err = abs(xc.psi - (p.swing or 0.0))
             asked = "psi"
         cls = fourbar_class(e.lAB, e.lBC, e.lCD, e.lAD)
-        an.solutions.append({"name": pre.rstrip("_") or "design", "lAB": e.lAB, "lBC": e.lBC, "AC1": e.AC1,
+        out.solutions.append({"name": pre.rstrip("_") or "design", "lAB": e.lAB, "lBC": e.lBC, "AC1": e.AC1,
                              "AC2": e.AC2, "grashof": cls, "branch": e.branch,
                              "reanalysis": {"K": K_e, "K_error": abs(K_e - p.K) / p.K,
                                             f"{asked}_error_deg": math.degrees(asked_err),
                                             "psi_deg": math.degrees(xc.psi),
                                             "gamma_min_deg": math.degrees(xc.gamma_min)}})
-    wanted = set(an.scene.find) or None
-    an.rows.extend(r for r in rows if wanted is None or r.name in wanted)
+    wanted = set(find) or None
+    out.rows.extend(r for r in rows if wanted is None or r.name in wanted)
+    return out
 
 
 def _extreme_pins(e: Design, xc: object) -> list[complex]:
@@ -219,5 +247,17 @@ def grashof_line(s: dict[str, object], p: TimeRatio) -> str:
             f"(error {re['K_error']:.1e}), {err} off, ψ = {re['psi_deg']:.6g}°, γ_min = {re['gamma_min_deg']:.6g}°")
 
 
-__all__ = ["K_MAX", "MECHANISMS", "SOLUTION_NAMES", "TimeRatio", "analyse_time_ratio", "choose_scale", "designs",
-           "grashof_line", "names", "prefix", "read_time_ratio"]
+__all__ = [
+    "K_MAX",
+    "MECHANISMS",
+    "SOLUTION_NAMES",
+    "Designed",
+    "TimeRatio",
+    "analyse_time_ratio",
+    "choose_scale",
+    "designs",
+    "grashof_line",
+    "names",
+    "prefix",
+    "read_time_ratio",
+]

@@ -1,0 +1,61 @@
+"""The closed-form designs from the time ratio: the bank's two crank-rockers, and every design
+re-analysed by exact/characteristics reproduces the K and the limit angle or swing it was made for."""
+from __future__ import annotations
+
+import cmath
+import math
+
+import pytest
+
+from graphmech.exact.characteristics import fourbar
+from graphmech.exact.synthesis import (
+    crank_rocker_from_limit,
+    crank_rocker_from_swing,
+    theta_of_K,
+)
+from tests.conftest import reference_problem
+
+
+def test_the_banks_two_designs_are_its_exact_values():
+    ref = reference_problem("linkage.crank_rocker_synthesis_K1.5")
+    i, ex = ref["inputs"], ref["exact"]
+    got = crank_rocker_from_limit(i["lCD_mm"], i["lAD_mm"], math.radians(i["psi_limit_deg"]), theta_of_K(i["K"]))
+    assert len(got) == 2
+    for k, d in enumerate(got, 1):
+        for name, value in (("lAB", d.lAB), ("lBC", d.lBC), ("AC1", d.AC1), ("AC2", d.AC2)):
+            assert value == pytest.approx(ex[f"sol{k}_{name}_mm"], rel=1e-12)
+
+
+@pytest.mark.parametrize("K", [1.0, 1.2, 1.5, 2.0])
+@pytest.mark.parametrize("c, d, limit", [(75, 100, 45), (75, 100, 30), (150, 100, 90)])
+def test_each_limit_design_reanalysed_has_its_K_and_its_limit(K, c, d, limit):
+    designs = crank_rocker_from_limit(c, d, math.radians(limit), theta_of_K(K))
+    for x in designs:
+        ch = fourbar(x.A, x.D, x.lAB, x.lBC, x.lCD, x.branch)
+        assert ch.grashof == "crank_rocker_AB"
+        assert ch.K == pytest.approx(K, rel=1e-9, abs=1e-9)
+        # one extreme of the re-analysed linkage has the rocker at the stated limit: ∠ADC at ψ's ends
+        to_C1 = math.degrees(abs(cmath.phase((x.A - x.D) / (x.C1 - x.D))))
+        assert to_C1 == pytest.approx(limit, abs=1e-9)
+        psi = math.degrees(abs(cmath.phase((x.C2 - x.D) / (x.C1 - x.D))))
+        assert math.degrees(ch.psi) == pytest.approx(psi, abs=1e-9)
+
+
+@pytest.mark.parametrize("K", [1.0, 1.4, 2.9])
+@pytest.mark.parametrize("c, d, psi", [(75, 100, 40), (150, 100, 90), (150, 100, 60)])
+def test_each_swing_design_reanalysed_has_its_K_and_its_swing(K, c, d, psi):
+    for x in crank_rocker_from_swing(c, d, math.radians(psi), theta_of_K(K)):
+        ch = fourbar(x.A, x.D, x.lAB, x.lBC, x.lCD, x.branch)
+        assert ch.K == pytest.approx(K, rel=1e-9, abs=1e-9)
+        assert math.degrees(ch.psi) == pytest.approx(psi, abs=1e-9)
+        assert abs(x.D - x.A) == pytest.approx(d, rel=1e-12)
+
+
+def test_K_near_3_still_designs_and_a_short_rocker_admits_no_crank():
+    assert len(crank_rocker_from_swing(150, 100, math.radians(90), theta_of_K(2.99))) == 1
+    assert crank_rocker_from_swing(50, 100, math.radians(60), theta_of_K(1.5)) == []
+
+
+def test_K_1_gives_the_limits_on_one_line_through_A():
+    (x,) = crank_rocker_from_limit(75, 100, math.radians(45), 0.0)
+    assert abs(cmath.phase((x.C2 - x.A) / (x.C1 - x.A))) < 1e-12 and x.lAB > 1.0

@@ -1,0 +1,32 @@
+"""The synthesis sheet: a panel per design, the θ-circle, the linkage bold, the lengths in the notes."""
+from __future__ import annotations
+
+import math
+
+from graphmech.drawing.primitives import Circle, Segment
+from graphmech.problems.synthesis.check import analyse_synthesis
+from graphmech.problems.synthesis.figures import synthesis_sheet
+from graphmech.scene import load_scene, render_scene
+from tests.conftest import SCENES
+
+BANK = SCENES / "linkage.crank_rocker_synthesis_K1.5.toml"
+
+
+def test_each_design_has_its_panel_with_its_theta_circle_and_its_lengths():
+    an = analyse_synthesis(load_scene(BANK))
+    sheet = synthesis_sheet(an, (297.0, 210.0))
+    assert [p.name for p in sheet.panels] == ["design1", "design2"]
+    for panel, g in zip(sheet.panels, an.drawn):
+        circles = [i for i in panel.items if isinstance(i, Circle)]
+        O, R = g.circle
+        assert any(c.center == O and c.r == R for c in circles)  # the θ-circle, thin
+        bold = [i for i in panel.items if isinstance(i, Segment) and i.role == "result"]
+        assert sorted(round(math.dist(s.p0, s.p1), 9) for s in bold) == sorted(
+            round(x, 9) for x in (g.lAB_mm, g.lBC_mm, g.lCD_mm))
+        assert any("l_{AB} = (AC_{2} − AC_{1})/2" in n for n in panel.notes)
+    assert "49.31 mm" in sheet.panels[0].notes[2] and "22.51 mm" in sheet.panels[1].notes[2]
+
+
+def test_the_reference_figure_is_the_scene_rendered():
+    svg, _ = render_scene(BANK)
+    assert svg.lstrip().startswith(("<?xml", "<svg")) and "</svg>" in svg
