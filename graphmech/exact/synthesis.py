@@ -26,7 +26,7 @@ from typing import Literal
 
 from graphmech.exact.characteristics import fourbar_class
 
-__all__ = ["Design", "crank_rocker_from_limit", "crank_rocker_from_swing", "theta_of_K"]
+__all__ = ["Design", "crank_rocker_from_limit", "crank_rocker_from_swing", "guide_bar_from_K", "theta_of_K"]
 
 #: Below this, relative to the linkage's size, a crank has no length (C₂ on C₁).
 NO_CRANK = 1e-9
@@ -131,7 +131,7 @@ def crank_rocker_from_swing(c: float, d: float, psi: float, theta: float) -> lis
     pair: A left of the rocker's middle position), longest l_BC first.
 
     >>> [round(x.lAB, 6) for x in crank_rocker_from_swing(75.0, 100.0, math.radians(40), math.radians(36))]
-    [22.719891]
+    [22.037387]
     """
     C1, C2 = c * cmath.exp(1j * (math.pi / 2 + psi / 2)), c * cmath.exp(1j * (math.pi / 2 - psi / 2))
     chord, mid = abs(C2 - C1), c * math.cos(psi / 2.0)
@@ -153,3 +153,14 @@ def crank_rocker_from_swing(c: float, d: float, psi: float, theta: float) -> lis
             if s * (A.imag - mid) > 0.0:  # on the arc that sees C₁C₂ at θ: the centre's side
                 found.append(Design(A, 0j, C1, C2))
     return sorted(_distinct([x for x in found if _keep(x)]), key=lambda x: -x.lBC)
+
+
+def guide_bar_from_K(d: float, theta: float, H: float | None = None) -> tuple[float, float | None]:
+    """(l_AB, l_CD) of the guide bar with l_AC = d and θ = ψ: the crank is ⟂ the bar at the limits,
+    so l_AB = d·sin(θ/2); the ram's stroke H = 2·l_CD·sin(ψ/2) gives the bar (None without H).
+
+    >>> [round(x, 9) for x in guide_bar_from_K(100.0, math.radians(60), 100.0)]
+    [50.0, 100.0]
+    """
+    s = math.sin(theta / 2.0)
+    return d * s, None if H is None else H / (2.0 * s)

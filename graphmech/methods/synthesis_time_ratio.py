@@ -34,7 +34,7 @@ from graphmech.geometry.kernels import (
 )
 from graphmech.methods.characteristics import grashof_class
 
-__all__ = ["DrawnDesign", "draw_from_limit", "draw_from_swing", "theta_of_K"]
+__all__ = ["DrawnDesign", "DrawnGuideBar", "draw_from_limit", "draw_from_swing", "draw_guide_bar", "theta_of_K"]
 
 _XY = tuple[float, float]
 #: Below this, relative to the linkage's size on paper, the crank has no length (C₂ on C₁).
@@ -202,3 +202,39 @@ def draw_from_swing(c_mm: float, d_mm: float, psi: float, theta: float) -> list[
             if _left(C1, C2, A) * _left(C1, C2, O) > 0.0 and A[0] < 0.0:
                 found.append(_design(ops, A, D, C1, C2))
     return _distinct([x for x in found if x is not None])
+
+
+@dataclass(frozen=True)
+class DrawnGuideBar:
+    """A guide bar (shaper) designed from K on the drawing, mm: the bar's pivot C, the crank's A
+    above it, the crank pins B₁, B₂ where the bar is tangent to the crank circle and — with a
+    stroke — the bar's ends D₁, D₂, the ram's stroke apart."""
+
+    points: dict[str, _XY] = field(hash=False)
+    lAB_mm: float
+    lCD_mm: float | None
+
+
+def draw_guide_bar(d_mm: float, theta: float, H_mm: float | None = None) -> DrawnGuideBar:
+    """The guide bar with l_AC = d_mm and θ (= ψ): the bar's limit lines from C at ψ/2 either side
+    of CA; the perpendicular from A to a limit line is the crank AB₁ (the crank circle touches the
+    bar there). With the ram's stroke H: D₁D₂ = H laid off ⟂ CA, cut by the limit lines: l_CD = CD₂.
+
+    >>> g = draw_guide_bar(100.0, math.radians(60), 100.0)
+    >>> round(g.lAB_mm, 9), round(g.lCD_mm, 9)
+    (50.0, 100.0)
+    """
+    ops = ScalarOps()
+    C, A = (0.0, 0.0), (0.0, d_mm)
+    pts: dict[str, _XY] = {"A": A, "C": C}
+    lengths = []
+    for name, s in (("1", 1.0), ("2", -1.0)):
+        u = (-s * math.sin(theta / 2.0), math.cos(theta / 2.0))  # the limit line's direction from C
+        ops.step = f"B{name} = perpendicular(A, C-limit line {name})"
+        B = intersect_lines(ops, (C[0], C[1], u[0], u[1]), (A[0], A[1], -u[1], u[0]))
+        pts["B" + name] = B
+        lengths.append(_dist(A, B))
+        if H_mm is not None:
+            ops.step = f"D{name} = limit line {name} ∩ (H/2 from CA)"
+            pts["D" + name] = intersect_lines(ops, (C[0], C[1], u[0], u[1]), (-s * H_mm / 2.0, 0.0, 0.0, 1.0))
+    return DrawnGuideBar(pts, lengths[0], None if H_mm is None else _dist(C, pts["D2"]))

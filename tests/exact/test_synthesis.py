@@ -7,10 +7,11 @@ import math
 
 import pytest
 
-from graphmech.exact.characteristics import fourbar
+from graphmech.exact.characteristics import fourbar, guide_bar
 from graphmech.exact.synthesis import (
     crank_rocker_from_limit,
     crank_rocker_from_swing,
+    guide_bar_from_K,
     theta_of_K,
 )
 from tests.conftest import reference_problem
@@ -59,3 +60,12 @@ def test_K_near_3_still_designs_and_a_short_rocker_admits_no_crank():
 def test_K_1_gives_the_limits_on_one_line_through_A():
     (x,) = crank_rocker_from_limit(75, 100, math.radians(45), 0.0)
     assert abs(cmath.phase((x.C2 - x.A) / (x.C1 - x.A))) < 1e-12 and x.lAB > 1.0
+
+
+@pytest.mark.parametrize("K", [1.1, 1.5, 2.0, 3.0, 10.0])
+def test_a_guide_bar_reanalysed_has_its_K_and_its_stroke(K):
+    a, l_cd = guide_bar_from_K(300.0, theta_of_K(K), 400.0)
+    ch = guide_bar(300j, 0j, a)
+    assert ch.K == pytest.approx(K, rel=1e-12) and ch.psi == pytest.approx(theta_of_K(K), rel=1e-12)
+    assert 2 * l_cd * math.sin(ch.psi / 2) == pytest.approx(400.0, rel=1e-12)
+    assert guide_bar_from_K(300.0, theta_of_K(K))[1] is None

@@ -6,10 +6,15 @@ import math
 
 import pytest
 
-from graphmech.exact.synthesis import crank_rocker_from_limit, crank_rocker_from_swing
+from graphmech.exact.synthesis import (
+    crank_rocker_from_limit,
+    crank_rocker_from_swing,
+    guide_bar_from_K,
+)
 from graphmech.methods.synthesis_time_ratio import (
     draw_from_limit,
     draw_from_swing,
+    draw_guide_bar,
     theta_of_K,
 )
 
@@ -55,3 +60,16 @@ def test_the_banks_drawing_lengths_are_the_books_within_its_reading():
 
 def test_no_design_where_the_rocker_is_too_short_for_a_crank():
     assert draw_from_swing(25.0, 50.0, math.radians(60), theta_of_K(1.5)) == []
+
+
+@pytest.mark.parametrize("K", [1.1, 2.0, 10.0])
+def test_the_guide_bar_construction_draws_the_closed_forms(K):
+    g = draw_guide_bar(150.0, theta_of_K(K), 200.0)
+    a, l_cd = guide_bar_from_K(300.0, theta_of_K(K), 400.0)
+    assert g.lAB_mm * 2 == pytest.approx(a, rel=1e-12) and g.lCD_mm * 2 == pytest.approx(l_cd, rel=1e-12)
+    # the crank pins are where the bar touches the crank circle: AB ⟂ CB
+    A, C = g.points["A"], g.points["C"]
+    for B in (g.points["B1"], g.points["B2"]):
+        assert abs((B[0] - A[0]) * (B[0] - C[0]) + (B[1] - A[1]) * (B[1] - C[1])) < 1e-9
+    assert math.dist(g.points["D1"], g.points["D2"]) == pytest.approx(200.0, rel=1e-12)
+    assert draw_guide_bar(150.0, theta_of_K(K)).lCD_mm is None

@@ -23,7 +23,7 @@ from graphmech.scales import drawn_size_problem, format_scale
 
 if TYPE_CHECKING:
     from graphmech.exact.synthesis import Design
-    from graphmech.methods.synthesis_time_ratio import DrawnDesign
+    from graphmech.methods.synthesis_time_ratio import DrawnDesign, DrawnGuideBar
     from graphmech.problems.reader import Scene
     from graphmech.problems.synthesis.scene import SynthesisScene
 
@@ -41,6 +41,7 @@ class SynthesisAnalysis:
     drawn: list[DrawnDesign] = field(default_factory=list)
     exact: list[Design] = field(default_factory=list)
     solutions: list[dict[str, Any]] = field(default_factory=list)
+    guide: DrawnGuideBar | None = None
     extra_measured: tuple[tuple[str, float], ...] = ()
 
     def scale_notes(self) -> list[str]:
@@ -54,7 +55,7 @@ def analyse_synthesis(scene: Scene[SynthesisScene], extra: tuple[tuple[str, floa
     if "l" in scene.scales:
         an.scales["l"] = scene.scales["l"]
         an.stated.add("l")
-        why = drawn_size_problem(p.rocker + p.frame, scene.scales["l"])
+        why = drawn_size_problem(time_ratio.size(p), scene.scales["l"])
         if why:
             raise SceneError([("scales", why)], scene.source)
     else:
@@ -62,7 +63,8 @@ def analyse_synthesis(scene: Scene[SynthesisScene], extra: tuple[tuple[str, floa
     found = time_ratio.analyse_time_ratio(p, an.scales["l"], scene.find, scene.source)
     an.drawn, an.exact, an.rows, an.warnings, an.solutions = (found.drawn, found.exact, found.rows, found.warnings,
                                                                found.solutions)
-    known = time_ratio.names(len(an.exact))
+    an.guide = found.guide
+    known = found.names
     wrong = [(f"find[{i}]", _unknown(n, known, len(an.exact))) for i, n in enumerate(scene.find) if n not in known]
     wrong += [(key, _unknown(n, known, len(an.exact)))
               for key, n, _ in measured_entries(scene, an.extra_measured) if n not in known]

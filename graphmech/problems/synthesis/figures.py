@@ -22,7 +22,7 @@ from graphmech.drawing.primitives import (
 )
 
 if TYPE_CHECKING:
-    from graphmech.methods.synthesis_time_ratio import DrawnDesign
+    from graphmech.methods.synthesis_time_ratio import DrawnDesign, DrawnGuideBar
     from graphmech.problems.synthesis.check import SynthesisAnalysis
 
 _XY = tuple[float, float]
@@ -73,10 +73,45 @@ def _unit(p: _XY, q: _XY) -> _XY:
     return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
 
 
+def guide_bar_items(g: DrawnGuideBar) -> list[Primitive]:
+    """The guide bar: the line CA, the bar's limit lines from C, the crank circle tangent to them
+    thin; the linkage bold at B₁ (dashed at B₂); with a stroke, the bar to D₁, D₂ and H between."""
+    p = g.points
+    A, C, B1, B2 = p["A"], p["C"], p["B1"], p["B2"]
+    items: list[Primitive] = [Segment(C, A, "construction", dashdot=True), Circle(A, g.lAB_mm, "construction")]
+    ends = [p.get("D1", B1), p.get("D2", B2)]
+    items += [Segment(C, ends[0], "result"), Segment(C, ends[1], "given", dashed=True),
+              Segment(A, B1, "result"), Segment(A, B2, "given", dashed=True),
+              FixedPivot(A), FixedPivot(C), Hinge(B1), Hinge(B2)]
+    arc = angle_arc(C, _unit(C, B1), _unit(C, B2), 0.3 * _dist(C, A))
+    items += [] if arc is None else [arc]
+    items += [Label("A", A, (_unit(A, C), _unit(A, B1), _unit(A, B2))), Label("C", C, (_unit(C, A),)),
+              Label("B_{1}", B1), Label("B_{2}", B2), Label("ψ = θ", (C[0], C[1] + 0.38 * _dist(C, A)))]
+    if "D1" in p:
+        D1, D2 = p["D1"], p["D2"]
+        items += [Segment(D1, D2, "construction"), Label("D_{1}", D1), Label("D_{2}", D2),
+                  Label("H", ((D1[0] + D2[0]) / 2, D1[1]), ((1.0, 0.0), (-1.0, 0.0)))]
+    return items
+
+
+def _dist(p: _XY, q: _XY) -> float:
+    import math
+
+    return math.hypot(q[0] - p[0], q[1] - p[1])
+
+
 def synthesis_sheet(an: SynthesisAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
     """The sheet: one panel per design, its dimensions in the notes."""
     mu = an.scales["l"]
+    p = an.scene.problem.problem
     panels = []
+    if an.guide is not None:
+        gb = an.guide
+        bar = () if gb.lCD_mm is None else (f"l_{{CD}} = H/(2 sin(ψ/2)) = {number(gb.lCD_mm * mu * 1000)} mm",)
+        notes = (scale_text("l", mu), f"l_{{AB}} = l_{{AC}} sin(θ/2) = {number(gb.lAB_mm * mu * 1000)} mm", *bar)
+        panels.append(Panel("design", "Guide bar from K", tuple(guide_bar_items(gb)), notes, row=0,
+                            scales=(("l", mu),)))
+        return Sheet(an.scene.title or f"Guide bar from its time ratio K = {p.K:g}", tuple(panels), page, footer)
     n = len(an.drawn)
     for k, g in enumerate(an.drawn):
         name = f"solution {k + 1}" if n > 1 else "design"
@@ -86,7 +121,6 @@ def synthesis_sheet(an: SynthesisAnalysis, page: tuple[float, float], footer: tu
                   f"l_{{BC}} = (AC_{{1}} + AC_{{2}})/2 = {number(g.lBC_mm * mu * 1000)} mm"))
         panels.append(Panel(f"design{k + 1}", f"Crank-rocker from K, {name}", tuple(design_items(g, mu)), notes,
                             row=0, scales=(("l", mu),)))
-    p = an.scene.problem.problem
     title = an.scene.title or f"Crank-rocker from its time ratio K = {p.K:g}"
     return Sheet(title, tuple(panels), page, footer)
 

@@ -16,17 +16,22 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from graphmech.errors import SceneError
-from graphmech.problems.reader import MISSING, Reader
+from graphmech.problems.reader import MISSING, Reader, not_for, one_of
 
 if TYPE_CHECKING:
     from graphmech.exact.synthesis import Design
-    from graphmech.methods.synthesis_time_ratio import DrawnDesign
+    from graphmech.methods.synthesis_time_ratio import DrawnDesign, DrawnGuideBar
     from graphmech.problems.judging import Row
 
 #: The mechanisms the time-ratio task designs.
-MECHANISMS = ("crank_rocker",)
+MECHANISMS = ("crank_rocker", "guide_bar")
 #: Named in docs/scene-format.md, still to be built (refused in words).
-TO_COME = ("slider_crank", "guide_bar")
+TO_COME = ("slider_crank",)
+#: A guide bar's K at and above this asks θ = ψ ≥ 170°: a crank all but as long as the frame (at
+#: θ = 180° the bar turns fully).
+K_MAX_GUIDE = 35.0
+#: A guide bar's rows (one design: no prefix).
+GUIDE_NAMES = {"theta": "deg", "lAB": "m", "lCD": "m", "K": "", "psi": "deg", "gamma_min": "deg"}
 #: K at and above this asks θ ≥ 90°: no crank-rocker is designed so (the θ-circle's arc
 #: would lie on the rocker's side).
 K_MAX = 3.0
@@ -59,13 +64,61 @@ class TimeRatio:
         return math.pi * (self.K - 1.0) / (self.K + 1.0)
 
 
-def read_time_ratio(r: Reader) -> TimeRatio | None:
+@dataclass(frozen=True)
+class GuideBar:
+    """A guide bar (shaper) to design, SI: K, the frame l_AC (crank pivot A to the bar's pivot C)
+    and, optionally, the ram's stroke H (it gives the bar's length l_CD)."""
+
+    K: float
+    frame: float
+    stroke: float | None = None
+    mechanism: str = "guide_bar"
+
+    @property
+    def theta(self) -> float:
+        """θ = ψ = 180°(K − 1)/(K + 1), rad."""
+        return math.pi * (self.K - 1.0) / (self.K + 1.0)
+
+
+def read_time_ratio(r: Reader) -> TimeRatio | GuideBar | None:
     """The rest of [synthesis] for ``task = "time_ratio"`` (None after reporting)."""
     mech = r.string("mechanism", choices=MECHANISMS + TO_COME, required=True)
     if mech in TO_COME:
-        r.problem(r.at("mechanism"), f"{mech}: not designed from K yet (issue 20): only \"crank_rocker\"")
+        r.problem(r.at("mechanism"), f"{mech}: not designed from K yet (issue 20): only {one_of(MECHANISMS)}")
         r.ignore(*r.table)
         return None
+    K = _read_K(r)
+    if mech == "guide_bar":
+        return _read_guide_bar(r, K)
+    if K is not None and K >= K_MAX:
+        r.problem(r.at("K"), f"K = {K:g} ≥ 3 asks θ = {180 * (K - 1) / (K + 1):.4g}° ≥ 90°: no crank-rocker "
+                             "is designed so (the crank angle between the limits stays below 90°)")
+        K = None
+    return _read_crank_rocker(r, mech, K)
+
+
+def _read_guide_bar(r: Reader, K: float | None) -> GuideBar | None:
+    not_for(r, ("rocker", "swing", "limit_angle"), "not for a guide bar: its bar swings ψ = θ, set by K")
+    if K == 1.0:
+        r.problem(r.at("K"), "K = 1: a guide bar's θ is its swing ψ > 0, it always returns quick — no guide bar "
+                             "has K = 1")
+        K = None
+    elif K is not None and K >= K_MAX_GUIDE:
+        r.problem(r.at("K"), f"K = {K:g} asks θ = ψ = {180 * (K - 1) / (K + 1):.4g}° ≥ 170°: a crank all but as "
+                             "long as the frame (at 180° the bar turns fully)")
+        K = None
+    d = r.scalar("frame", "length", positive=True)
+    H = r.scalar("stroke", "length", required=False, positive=True)
+    for value, base in ((d, "frame"), (H, "stroke")):
+        if value is not None and not 1e-9 <= value <= 1e9:
+            r.problem(r.at(r.present(base) or base), f"{value:g} m is absurd for a link (1e-9 … 1e9 m)")
+            return None
+    if K is None or d is None or (H is None and r.present("stroke") is not None):
+        return None
+    return GuideBar(K, d, H)
+
+
+def _read_K(r: Reader) -> float | None:
     raw = r.raw("K", required=True, hint="the time ratio, a number ≥ 1")
     K = None if raw is MISSING else r.number(raw, r.at("K"))
     if K is not None and K < 1.0:
@@ -76,10 +129,11 @@ def read_time_ratio(r: Reader) -> TimeRatio | None:
         r.problem(r.at("K"), f"K = {K!r} is within 1e-6 of 1: θ = {180 * (K - 1) / (K + 1):.3g}° draws a θ-circle "
                              "millions of chords across — write K = 1 (no quick return)")
         K = None
-    elif K is not None and K >= K_MAX:
-        r.problem(r.at("K"), f"K = {K:g} ≥ 3 asks θ = {180 * (K - 1) / (K + 1):.4g}° ≥ 90°: no crank-rocker "
-                             "is designed so (the crank angle between the limits stays below 90°)")
-        K = None
+    return K
+
+
+def _read_crank_rocker(r: Reader, mech: str | None, K: float | None) -> TimeRatio | None:
+    not_for(r, ("stroke",), "not for a crank-rocker: its rocker swings (swing or limit_angle)")
     c = r.scalar("rocker", "length", positive=True)
     d = r.scalar("frame", "length", positive=True)
     swing = r.scalar("swing", "angle", required=False)
@@ -128,11 +182,20 @@ def designs(p: TimeRatio, mu_l: float) -> tuple[list[DrawnDesign], list[Design]]
             ex.crank_rocker_from_swing(p.rocker, p.frame, p.swing, ex.theta_of_K(p.K)))
 
 
-def choose_scale(p: TimeRatio) -> float:
-    """μl that draws the rocker and the frame together about 100 mm across."""
+def size(p: TimeRatio | GuideBar) -> float:
+    """The designed linkage's size, m: the rocker and the frame; the frame or the bar."""
+    if isinstance(p, GuideBar):
+        from graphmech.exact.synthesis import guide_bar_from_K
+
+        return max(p.frame, guide_bar_from_K(p.frame, p.theta, p.stroke)[1] or 0.0)
+    return p.rocker + p.frame
+
+
+def choose_scale(p: TimeRatio | GuideBar) -> float:
+    """μl that draws the linkage about 100 mm across."""
     from graphmech.scales import round_scale
 
-    return round_scale((p.rocker + p.frame) / 100.0)
+    return round_scale(size(p) / 100.0)
 
 
 @dataclass
@@ -145,11 +208,17 @@ class Designed:
     rows: list[Row]
     warnings: list[str]
     solutions: list[dict[str, Any]]
+    #: Every name the scene could ask for.
+    names: list[str]
+    #: A guide bar's drawing (None for a crank-rocker).
+    guide: DrawnGuideBar | None = None
 
 
-def analyse_time_ratio(p: TimeRatio, mu: float, find: tuple[str, ...] = (), source: str = "") -> Designed:
+def analyse_time_ratio(p: TimeRatio | GuideBar, mu: float, find: tuple[str, ...] = (), source: str = "") -> Designed:
     """The designs at μl = ``mu``, their rows (those ``find`` asks; all when it is empty), the
     re-analysis and the words under the table; ``source`` names the file in a refusal."""
+    if isinstance(p, GuideBar):
+        return _analyse_guide_bar(p, mu, find)
     from graphmech.exact.characteristics import fourbar, fourbar_class
     from graphmech.mechanisms.linkage import RRR, Crank, Linkage
     from graphmech.methods.characteristics import draw_characteristics
@@ -168,7 +237,7 @@ def analyse_time_ratio(p: TimeRatio, mu: float, find: tuple[str, ...] = (), sour
         raise SceneError([(key, (f"the construction draws {len(drawn)} design(s) and the closed forms find "
                                  f"{len(exact)}: a limiting case (a cut that just touches) — move the data off it"))],
                          source)
-    out = Designed(drawn, exact, [], [], [])
+    out = Designed(drawn, exact, [], [], [], names(len(exact)))
     if p.K == 1.0:
         out.warnings.append("K = 1: θ = 0, no quick return — the crank pin's limits lie on one line through A")
     n = len(exact)
@@ -215,6 +284,43 @@ def analyse_time_ratio(p: TimeRatio, mu: float, find: tuple[str, ...] = (), sour
     return out
 
 
+def _analyse_guide_bar(p: GuideBar, mu: float, find: tuple[str, ...]) -> Designed:
+    """The guide bar drawn and in closed form, re-analysed drawn and exact."""
+    from graphmech.exact.characteristics import guide_bar
+    from graphmech.exact.synthesis import guide_bar_from_K
+    from graphmech.mechanisms.linkage import RPR, Crank, Linkage
+    from graphmech.methods.characteristics import draw_characteristics
+    from graphmech.methods.synthesis_time_ratio import draw_guide_bar
+    from graphmech.problems.judging import Row
+
+    g = draw_guide_bar(p.frame / mu, p.theta, None if p.stroke is None else p.stroke / mu)
+    a, l_cd = guide_bar_from_K(p.frame, p.theta, p.stroke)
+    A, C, B1, B2 = g.points["A"], g.points["C"], g.points["B1"], g.points["B2"]
+    u, v = (B1[0] - C[0], B1[1] - C[1]), (B2[0] - C[0], B2[1] - C[1])
+    swing = abs(math.atan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1]))  # ∠B₁CB₂ on the drawing
+    theta = math.degrees(p.theta)
+    rows = [Row("theta", "deg", None, 1.0, math.degrees(swing), theta, abs(math.degrees(swing) - theta) / 180.0),
+            Row("lAB", "m", g.lAB_mm, mu, g.lAB_mm * mu, a, abs(g.lAB_mm * mu - a) / a)]
+    if g.lCD_mm is not None and l_cd is not None:
+        rows.append(Row("lCD", "m", g.lCD_mm, mu, g.lCD_mm * mu, l_cd, abs(g.lCD_mm * mu - l_cd) / l_cd))
+    lk = Linkage({"A": (A[0] * mu, A[1] * mu), "C": (C[0] * mu, C[1] * mu)}, Crank("1", "A", "B", g.lAB_mm * mu, 1.0),
+                 (RPR("B", "C", ("2", "3"), "second"),))
+    dc = draw_characteristics(lk, mu)
+    xc = guide_bar(complex(0.0, p.frame), 0j, a)
+    assert dc.theta is not None and dc.psi is not None and xc.theta is not None and xc.psi is not None
+    K_g, K_e = (math.pi + dc.theta) / (math.pi - dc.theta), xc.K or 1.0
+    rows.append(Row("K", "", None, 1.0, K_g, K_e, abs(K_g - K_e) / K_e))
+    for name, gv, ev in (("psi", dc.psi, xc.psi), ("gamma_min", dc.gamma_min, xc.gamma_min)):
+        rows.append(Row(name, "deg", None, 1.0, math.degrees(gv), math.degrees(ev), abs(gv - ev) / math.pi))
+    solution = {"name": "design", "lAB": a, "lCD": l_cd, "grashof": xc.grashof,
+                "reanalysis": {"K": K_e, "K_error": abs(K_e - p.K) / p.K, "psi_deg": math.degrees(xc.psi),
+                               "psi_error_deg": abs(math.degrees(xc.psi) - theta),
+                               "gamma_min_deg": math.degrees(xc.gamma_min)}}
+    known = [n for n in GUIDE_NAMES if n != "lCD" or p.stroke is not None]
+    wanted = set(find) or None
+    return Designed([], [], [r for r in rows if wanted is None or r.name in wanted], [], [solution], known, g)
+
+
 def _extreme_pins(e: Design, xc: object) -> list[complex]:
     """The rocker pin C at the re-analysed linkage's two extremes (from the crank's angles)."""
     from graphmech.exact.characteristics import ExactCharacteristics
@@ -233,10 +339,15 @@ def _extreme_pins(e: Design, xc: object) -> list[complex]:
     return out
 
 
-def grashof_line(s: dict[str, object], p: TimeRatio) -> str:
+def grashof_line(s: dict[str, object], p: TimeRatio | GuideBar) -> str:
     """One design said under the table: its lengths, Grashof's class and the re-analysis error."""
     re = s["reanalysis"]
     assert isinstance(re, dict)
+    if isinstance(p, GuideBar):
+        bar = "" if s["lCD"] is None else f", the bar l_CD = {float(s['lCD']) * 1000:.6g} mm"  # type: ignore[arg-type]
+        return (f"design: l_AB = {float(s['lAB']) * 1000:.6g} mm{bar}: a swinging guide bar (l_AB < l_AC); "  # type: ignore[arg-type]
+                f"re-analysed: K = {re['K']:.12g} (error {re['K_error']:.1e}), ψ = θ = {re['psi_deg']:.6g}° "
+                f"(ψ {re['psi_error_deg']:.1e}° off), γ = 90° throughout")
     a, b = float(s["lAB"]), float(s["lBC"])  # type: ignore[arg-type]
     longest = max(b, p.rocker, p.frame)
     others = b + p.rocker + p.frame - longest

@@ -30,3 +30,16 @@ def test_each_design_has_its_panel_with_its_theta_circle_and_its_lengths():
 def test_the_reference_figure_is_the_scene_rendered():
     svg, _ = render_scene(BANK)
     assert svg.lstrip().startswith(("<?xml", "<svg")) and "</svg>" in svg
+
+
+def test_a_guide_bar_is_drawn_with_its_limit_lines_and_stroke():
+    from graphmech.drawing.primitives import Label
+    from tests.scenes import parse_text
+
+    an = analyse_synthesis(parse_text('[synthesis]\ntask = "time_ratio"\nmechanism = "guide_bar"\nK = 2\n'
+                                      "frame_mm = 300\nstroke_mm = 400\n"))
+    sheet = synthesis_sheet(an, (297.0, 210.0))
+    (panel,) = sheet.panels
+    assert {i.text for i in panel.items if isinstance(i, Label)} >= {"A", "C", "B_{1}", "B_{2}", "D_{1}", "D_{2}", "H"}
+    assert any(isinstance(i, Circle) and i.r == an.guide.lAB_mm for i in panel.items)  # the crank circle
+    assert "150 mm" in panel.notes[1] and "400 mm" in panel.notes[2]

@@ -38,7 +38,8 @@ def test_the_tasks_are_the_readers_listed():
     ("rocker_mm = 75", "rocker_mm = -75", "synthesis.rocker_mm", "> 0"),
     ("frame_mm = 100", "frame = 100", "synthesis.frame", "unit not stated"),
     ('mechanism = "crank_rocker"', 'mechanism = "slider_crank"', "synthesis.mechanism",
-     'slider_crank: not designed from K yet (issue 20): only "crank_rocker"'),
+     "slider_crank: not designed from K yet (issue 20): only crank_rocker or guide_bar"),
+    ("swing_deg = 40", "swing_deg = 40\nstroke_mm = 10", "synthesis.stroke_mm", "not for a crank-rocker"),
     ('mechanism = "crank_rocker"', 'mechanism = "crank"', "synthesis.mechanism", "unknown value"),
     ('task = "time_ratio"', 'task = "positions"', "synthesis.task", "unknown value"),
     ("swing_deg = 40", "swing_deg = 40\nhandle = 1", "synthesis.handle", "unknown key"),
@@ -51,6 +52,27 @@ def test_bad_synthesis_scenes_are_refused_in_one_line(old, new, where, words):
 def test_a_refusal_on_the_command_line_is_one_line(tmp_path):
     p = write_scene(tmp_path, replace_once(SWING, "K = 1.4", "K = 0.5"), "s.toml")
     assert_refused(run_cli("check", str(p)), "s.toml", "synthesis.K: K = 0.5 < 1")
+
+
+GUIDE = '[synthesis]\ntask = "time_ratio"\nmechanism = "guide_bar"\nK = 2\nframe_mm = 300\nstroke_mm = 400\n'
+
+
+def test_a_guide_bar_reads_its_frame_and_stroke():
+    p = parse_text(GUIDE).problem.problem
+    assert (p.mechanism, p.K, p.frame, p.stroke) == ("guide_bar", 2.0, 0.3, 0.4)
+    assert math.degrees(p.theta) == pytest.approx(60.0)
+
+
+@pytest.mark.parametrize("old, new, where, words", [
+    ("K = 2", "K = 1", "synthesis.K", "no guide bar has K = 1"),
+    ("K = 2", "K = 40", "synthesis.K", "≥ 170°"),
+    ("stroke_mm = 400", "stroke_mm = 400\nswing_deg = 30", "synthesis.swing_deg", "not for a guide bar"),
+    ("stroke_mm = 400", "stroke_mm = 0", "synthesis.stroke_mm", "> 0"),
+    ("frame_mm = 300\n", "", "synthesis.frame", "missing"),
+])
+def test_bad_guide_bars_are_refused_in_one_line(old, new, where, words):
+    path, reason = only_problem(replace_once(GUIDE, old, new))
+    assert path == where and words in reason, (path, reason)
 
 
 def test_the_bank_scene_reads_its_limit_angle():

@@ -91,3 +91,27 @@ def test_any_asked_design_is_designed_to_1e_9_or_refused_in_words(K, c, ratio, a
     for s in extras["synthesis"]["solutions"]:
         assert s["reanalysis"]["K_error"] < 1e-9 and s["grashof"] == "crank_rocker_AB"
         assert next(v for k, v in s["reanalysis"].items() if k.endswith("_error_deg")) < 1e-7
+
+
+def test_a_guide_bar_is_designed_and_reanalysed():
+    text = '[synthesis]\ntask = "time_ratio"\nmechanism = "guide_bar"\nK = 2\nframe_mm = 300\nstroke_mm = 400\n'
+    rows, extras, lines = _rows(parse_text(text))
+    assert list(rows) == ["theta", "lAB", "lCD", "K", "psi", "gamma_min"]
+    assert rows["lAB"].graphical == pytest.approx(0.15, rel=1e-12) and rows["lCD"].graphical == pytest.approx(0.4, rel=1e-12)
+    assert rows["K"].exact == pytest.approx(2.0, rel=1e-12) and rows["gamma_min"].exact == pytest.approx(90.0)
+    assert all(r.rel_error < 1e-12 for r in rows.values())
+    re = extras["synthesis"]["solutions"][0]["reanalysis"]
+    assert re["K_error"] < 1e-9 and re["psi_error_deg"] < 1e-9
+    assert lines[0].startswith("design: l_AB = 150 mm, the bar l_CD = 400 mm: a swinging guide bar")
+    rows, _, _ = _rows(parse_text(text.replace("stroke_mm = 400\n", "")))
+    assert "lCD" not in rows
+
+
+@settings(max_examples=200, deadline=None)
+@given(K=st.floats(1.000001, 34.99), d=st.floats(1.0, 1000.0), H=st.one_of(st.none(), st.floats(1.0, 1000.0)))
+def test_any_guide_bar_is_designed_to_1e_9(K, d, H):
+    stroke = "" if H is None else f"stroke_mm = {H!r}\n"
+    text = f'[synthesis]\ntask = "time_ratio"\nmechanism = "guide_bar"\nK = {K!r}\nframe_mm = {d!r}\n{stroke}'
+    an, _, extras, _ = check(parse_text(text))
+    assert all(r.rel_error < 1e-9 for r in an.rows), an.rows
+    assert extras["synthesis"]["solutions"][0]["reanalysis"]["K_error"] < 1e-9
