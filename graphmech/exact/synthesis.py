@@ -26,7 +26,8 @@ from typing import Literal
 
 from graphmech.exact.characteristics import fourbar_class
 
-__all__ = ["Design", "crank_rocker_from_limit", "crank_rocker_from_swing", "guide_bar_from_K", "theta_of_K"]
+__all__ = ["Design", "crank_rocker_from_limit", "crank_rocker_from_swing", "guide_bar_from_K", "slider_crank_from_K",
+           "theta_of_K"]
 
 #: Below this, relative to the linkage's size, a crank has no length (C₂ on C₁).
 NO_CRANK = 1e-9
@@ -164,3 +165,26 @@ def guide_bar_from_K(d: float, theta: float, H: float | None = None) -> tuple[fl
     """
     s = math.sin(theta / 2.0)
     return d * s, None if H is None else H / (2.0 * s)
+
+
+def slider_crank_from_K(H: float, e: float, theta: float) -> tuple[complex, float, float] | None:
+    """(A, AC₁, AC₂) of the slider-crank with stroke H, offset e ≥ 0 and θ > 0, the slider's limits
+    at 0 and H on the x axis: A at height e on the circle of radius H/(2 sin θ) about
+    (H/2, H/(2 tan θ)), behind C₁; None where there is none or the crank does not turn fully.
+
+    >>> A, ac1, ac2 = slider_crank_from_K(50.0, 10.0, math.radians(36))
+    >>> round((ac2 - ac1) / 2, 6), round((ac1 + ac2) / 2, 6)
+    (23.318878, 37.341945)
+    """
+    R, h = H / (2.0 * math.sin(theta)), H / (2.0 * math.tan(theta))
+    disc = R * R - (e - h) ** 2
+    if disc < 0.0:
+        return None
+    A = complex(H / 2.0 - math.sqrt(disc), e)
+    if not A.real < -NO_CRANK * H:  # behind C₁, not on it
+        return None
+    ac1, ac2 = abs(A), abs(A - H)
+    a, b = (ac2 - ac1) / 2.0, (ac1 + ac2) / 2.0
+    if a <= NO_CRANK * b or a + e >= b:
+        return None
+    return A, ac1, ac2

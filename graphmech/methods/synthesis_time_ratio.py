@@ -34,7 +34,8 @@ from graphmech.geometry.kernels import (
 )
 from graphmech.methods.characteristics import grashof_class
 
-__all__ = ["DrawnDesign", "DrawnGuideBar", "draw_from_limit", "draw_from_swing", "draw_guide_bar", "theta_of_K"]
+__all__ = ["DrawnDesign", "DrawnGuideBar", "DrawnSlider", "draw_from_limit", "draw_from_swing", "draw_guide_bar",
+           "draw_slider_crank", "theta_of_K"]
 
 _XY = tuple[float, float]
 #: Below this, relative to the linkage's size on paper, the crank has no length (C₂ on C₁).
@@ -238,3 +239,54 @@ def draw_guide_bar(d_mm: float, theta: float, H_mm: float | None = None) -> Draw
             ops.step = f"D{name} = limit line {name} ∩ (H/2 from CA)"
             pts["D" + name] = intersect_lines(ops, (C[0], C[1], u[0], u[1]), (-s * H_mm / 2.0, 0.0, 0.0, 1.0))
     return DrawnGuideBar(pts, lengths[0], None if H_mm is None else _dist(C, pts["D2"]))
+
+
+@dataclass(frozen=True)
+class DrawnSlider:
+    """A slider-crank designed from K on the drawing, mm: the slider's limits C₁, C₂ on the guide
+    (the x axis), the crank's pivot A at the offset, the crank pins B₁, B₂, the θ-circle."""
+
+    points: dict[str, _XY] = field(hash=False)
+    AC1_mm: float
+    AC2_mm: float
+    circle: tuple[_XY, float]
+
+    @property
+    def lAB_mm(self) -> float:
+        return (self.AC2_mm - self.AC1_mm) / 2.0
+
+    @property
+    def lBC_mm(self) -> float:
+        return (self.AC1_mm + self.AC2_mm) / 2.0
+
+
+def draw_slider_crank(H_mm: float, e_mm: float, theta: float) -> DrawnSlider | None:
+    """The slider-crank with stroke H, offset e and θ > 0: C₁C₂ = H on the guide; the θ-circle on
+    it (from C₁ a line at 90° − θ to C₁C₂ meets the bisector at O); the line at the offset e from
+    the guide cuts it at A — the cut behind C₁, so that the slider stays ahead of A at both limits.
+    None where there is none, or its crank does not turn fully (l_AB + e ≥ l_BC).
+
+    >>> s = draw_slider_crank(50.0, 10.0, math.radians(36))
+    >>> round(s.lAB_mm, 6), round(s.lBC_mm, 6)
+    (23.318878, 37.341945)
+    """
+    ops = ScalarOps()
+    C1, C2 = (0.0, 0.0), (H_mm, 0.0)
+    turn = math.pi / 2 - theta  # towards the offset's side (+y)
+    ops.step = "O = line(C₁, 90° − θ to C₁C₂) ∩ bisector(C₁C₂)"
+    O = intersect_lines(ops, (0.0, 0.0, math.cos(turn), math.sin(turn)), _bisector(ops, C1, C2))
+    R = _dist(O, C1)
+    ops.step = "A = θ-circle ∩ line(offset e ∥ guide)"
+    try:
+        A = intersect_circle_line(ops, O, R, (0.0, e_mm, 1.0, 0.0), -1.0, lambda e: "the offset line misses the θ-circle")
+    except AssemblyError:
+        return None
+    if not A[0] < -NO_CRANK * H_mm:  # A between the limits: the slider would change sides of A (two branches)
+        return None
+    ac1, ac2 = _dist(A, C1), _dist(A, C2)
+    a, b = (ac2 - ac1) / 2.0, (ac1 + ac2) / 2.0
+    if a <= NO_CRANK * b or a + e_mm >= b:
+        return None
+    B1 = (A[0] - a * (C1[0] - A[0]) / ac1, A[1] - a * (C1[1] - A[1]) / ac1)
+    B2 = (A[0] + a * (C2[0] - A[0]) / ac2, A[1] + a * (C2[1] - A[1]) / ac2)
+    return DrawnSlider({"A": A, "B1": B1, "B2": B2, "C1": C1, "C2": C2}, ac1, ac2, (O, R))

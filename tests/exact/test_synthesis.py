@@ -7,11 +7,12 @@ import math
 
 import pytest
 
-from graphmech.exact.characteristics import fourbar, guide_bar
+from graphmech.exact.characteristics import fourbar, guide_bar, slider_crank
 from graphmech.exact.synthesis import (
     crank_rocker_from_limit,
     crank_rocker_from_swing,
     guide_bar_from_K,
+    slider_crank_from_K,
     theta_of_K,
 )
 from tests.conftest import reference_problem
@@ -69,3 +70,17 @@ def test_a_guide_bar_reanalysed_has_its_K_and_its_stroke(K):
     assert ch.K == pytest.approx(K, rel=1e-12) and ch.psi == pytest.approx(theta_of_K(K), rel=1e-12)
     assert 2 * l_cd * math.sin(ch.psi / 2) == pytest.approx(400.0, rel=1e-12)
     assert guide_bar_from_K(300.0, theta_of_K(K))[1] is None
+
+
+@pytest.mark.parametrize("K, H, e", [(1.5, 50, 10), (1.2, 50, 0.1), (2.9, 50, 1), (1.5, 50, 60)])
+def test_a_slider_crank_reanalysed_has_its_K_and_its_stroke(K, H, e):
+    A, ac1, ac2 = slider_crank_from_K(H, e, theta_of_K(K))
+    a, b = (ac2 - ac1) / 2, (ac1 + ac2) / 2
+    ch = slider_crank(A, 0j, 0.0, a, b, "forward")
+    assert ch.K == pytest.approx(K, rel=1e-9) and ch.stroke == pytest.approx(H, rel=1e-9)
+    assert A.imag == e and a + e < b
+
+
+def test_a_slider_crank_with_no_crank_or_no_offset_is_none():
+    assert slider_crank_from_K(50, 60, theta_of_K(2.5)) is None  # l_AB + e ≥ l_BC
+    assert slider_crank_from_K(50, 0, theta_of_K(1.5)) is None  # A would fall on C₁

@@ -10,11 +10,13 @@ from graphmech.exact.synthesis import (
     crank_rocker_from_limit,
     crank_rocker_from_swing,
     guide_bar_from_K,
+    slider_crank_from_K,
 )
 from graphmech.methods.synthesis_time_ratio import (
     draw_from_limit,
     draw_from_swing,
     draw_guide_bar,
+    draw_slider_crank,
     theta_of_K,
 )
 
@@ -73,3 +75,15 @@ def test_the_guide_bar_construction_draws_the_closed_forms(K):
         assert abs((B[0] - A[0]) * (B[0] - C[0]) + (B[1] - A[1]) * (B[1] - C[1])) < 1e-9
     assert math.dist(g.points["D1"], g.points["D2"]) == pytest.approx(200.0, rel=1e-12)
     assert draw_guide_bar(150.0, theta_of_K(K)).lCD_mm is None
+
+
+@pytest.mark.parametrize("K, H, e", [(1.5, 50, 10), (1.2, 50, 0.1), (2.9, 50, 1), (1.5, 50, 60), (2.5, 50, 60)])
+def test_the_slider_crank_construction_draws_the_closed_forms(K, H, e):
+    g = draw_slider_crank(H / 2, e / 2, theta_of_K(K))
+    x = slider_crank_from_K(H, e, theta_of_K(K))
+    assert (g is None) == (x is None)
+    if g is not None:
+        assert g.AC1_mm * 2 == pytest.approx(x[1], rel=1e-12) and g.AC2_mm * 2 == pytest.approx(x[2], rel=1e-12)
+        O, R = g.circle
+        for p in ("A", "C1", "C2"):  # the θ-circle through A, C₁, C₂
+            assert math.dist(O, g.points[p]) == pytest.approx(R, rel=1e-12)

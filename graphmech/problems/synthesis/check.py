@@ -23,7 +23,11 @@ from graphmech.scales import drawn_size_problem, format_scale
 
 if TYPE_CHECKING:
     from graphmech.exact.synthesis import Design
-    from graphmech.methods.synthesis_time_ratio import DrawnDesign, DrawnGuideBar
+    from graphmech.methods.synthesis_time_ratio import (
+        DrawnDesign,
+        DrawnGuideBar,
+        DrawnSlider,
+    )
     from graphmech.problems.reader import Scene
     from graphmech.problems.synthesis.scene import SynthesisScene
 
@@ -42,6 +46,7 @@ class SynthesisAnalysis:
     exact: list[Design] = field(default_factory=list)
     solutions: list[dict[str, Any]] = field(default_factory=list)
     guide: DrawnGuideBar | None = None
+    slider: DrawnSlider | None = None
     extra_measured: tuple[tuple[str, float], ...] = ()
 
     def scale_notes(self) -> list[str]:
@@ -63,7 +68,7 @@ def analyse_synthesis(scene: Scene[SynthesisScene], extra: tuple[tuple[str, floa
     found = time_ratio.analyse_time_ratio(p, an.scales["l"], scene.find, scene.source)
     an.drawn, an.exact, an.rows, an.warnings, an.solutions = (found.drawn, found.exact, found.rows, found.warnings,
                                                                found.solutions)
-    an.guide = found.guide
+    an.guide, an.slider = found.guide, found.slider
     known = found.names
     wrong = [(f"find[{i}]", _unknown(n, known, len(an.exact))) for i, n in enumerate(scene.find) if n not in known]
     wrong += [(key, _unknown(n, known, len(an.exact)))

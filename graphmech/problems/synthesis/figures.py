@@ -11,6 +11,7 @@ from graphmech.drawing.lettering import number, scale_text
 from graphmech.drawing.primitives import (
     Circle,
     FixedPivot,
+    GuideLine,
     Hinge,
     Label,
     Panel,
@@ -18,11 +19,16 @@ from graphmech.drawing.primitives import (
     Primitive,
     Segment,
     Sheet,
+    Slider,
     angle_arc,
 )
 
 if TYPE_CHECKING:
-    from graphmech.methods.synthesis_time_ratio import DrawnDesign, DrawnGuideBar
+    from graphmech.methods.synthesis_time_ratio import (
+        DrawnDesign,
+        DrawnGuideBar,
+        DrawnSlider,
+    )
     from graphmech.problems.synthesis.check import SynthesisAnalysis
 
 _XY = tuple[float, float]
@@ -94,6 +100,31 @@ def guide_bar_items(g: DrawnGuideBar) -> list[Primitive]:
     return items
 
 
+def slider_crank_items(g: DrawnSlider) -> list[Primitive]:
+    """The slider-crank: the guide through C₁C₂ = H, the θ-circle on it and the offset line thin,
+    the arcs about A; the linkage bold at C₂ (the extended limit), dashed at C₁."""
+    p = g.points
+    A, B1, B2, C1, C2 = p["A"], p["B1"], p["B2"], p["C1"], p["C2"]
+    left = min(A[0], C1[0]) - 5.0
+    items: list[Primitive] = [
+        GuideLine((left, 0.0), (C2[0] + 8.0, 0.0)), Circle(g.circle[0], g.circle[1], "construction"),
+        Segment((left, A[1]), (C2[0], A[1]), "construction", dashdot=True),
+        Segment(A, C1, "construction"), Segment(A, C2, "construction"),
+        _arc(A, g.AC1_mm, C1), _arc(A, g.AC2_mm, C2),
+        Segment(A, B2, "result"), Segment(B2, C2, "result"), Slider(C2, 0.0),
+        Segment(A, B1, "given", dashed=True), Segment(B1, C1, "given", dashed=True),
+        FixedPivot(A), Hinge(B1), Hinge(B2), Hinge(C1), Hinge(C2),
+    ]
+    r = g.AC1_mm * 0.6
+    arc = angle_arc(A, _unit(A, C1), _unit(A, C2), r)
+    items += [] if arc is None else [arc]
+    items += [Label("A", A, (_unit(A, C1), _unit(A, C2))), Label("B_{1}", B1), Label("B_{2}", B2),
+              Label("C_{1}", C1, ((0.0, 1.0),)), Label("C_{2}", C2, ((0.0, 1.0),)),
+              Label("H", ((C1[0] + C2[0]) / 2.0, 0.0), ((1.0, 0.0), (-1.0, 0.0))),
+              Label("e", (left, A[1] / 2.0), ((0.0, 1.0), (0.0, -1.0)))]
+    return items
+
+
 def _dist(p: _XY, q: _XY) -> float:
     import math
 
@@ -105,6 +136,15 @@ def synthesis_sheet(an: SynthesisAnalysis, page: tuple[float, float], footer: tu
     mu = an.scales["l"]
     p = an.scene.problem.problem
     panels = []
+    if an.slider is not None:
+        sc = an.slider
+        notes = (scale_text("l", mu),
+                 f"AC_{{1}} = {number(sc.AC1_mm)} mm, AC_{{2}} = {number(sc.AC2_mm)} mm (drawn)",
+                 (f"l_{{AB}} = (AC_{{2}} − AC_{{1}})/2 = {number(sc.lAB_mm * mu * 1000)} mm, "
+                  f"l_{{BC}} = (AC_{{1}} + AC_{{2}})/2 = {number(sc.lBC_mm * mu * 1000)} mm"))
+        panels.append(Panel("design", "Slider-crank from K", tuple(slider_crank_items(sc)), notes, row=0,
+                            scales=(("l", mu),)))
+        return Sheet(an.scene.title or f"Slider-crank from its time ratio K = {p.K:g}", tuple(panels), page, footer)
     if an.guide is not None:
         gb = an.guide
         bar = () if gb.lCD_mm is None else (f"l_{{CD}} = H/(2 sin(ψ/2)) = {number(gb.lCD_mm * mu * 1000)} mm",)
@@ -125,4 +165,4 @@ def synthesis_sheet(an: SynthesisAnalysis, page: tuple[float, float], footer: tu
     return Sheet(title, tuple(panels), page, footer)
 
 
-__all__ = ["design_items", "synthesis_sheet"]
+__all__ = ["design_items", "guide_bar_items", "slider_crank_items", "synthesis_sheet"]

@@ -16,20 +16,25 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from graphmech.errors import SceneError
-from graphmech.problems.reader import MISSING, Reader, not_for, one_of
+from graphmech.problems.reader import MISSING, Reader, not_for
 
 if TYPE_CHECKING:
     from graphmech.exact.synthesis import Design
-    from graphmech.methods.synthesis_time_ratio import DrawnDesign, DrawnGuideBar
+    from graphmech.methods.synthesis_time_ratio import (
+        DrawnDesign,
+        DrawnGuideBar,
+        DrawnSlider,
+    )
     from graphmech.problems.judging import Row
 
 #: The mechanisms the time-ratio task designs.
-MECHANISMS = ("crank_rocker", "guide_bar")
-#: Named in docs/scene-format.md, still to be built (refused in words).
-TO_COME = ("slider_crank",)
+MECHANISMS = ("crank_rocker", "slider_crank", "guide_bar")
 #: A guide bar's K at and above this asks θ = ψ ≥ 170°: a crank all but as long as the frame (at
 #: θ = 180° the bar turns fully).
 K_MAX_GUIDE = 35.0
+#: A slider-crank's rows (one design: no prefix); ``stroke`` is the re-analysed H.
+SLIDER_NAMES = {"theta": "deg", "AC1": "m", "AC2": "m", "lAB": "m", "lBC": "m", "K": "", "stroke": "m",
+                "gamma_min": "deg"}
 #: A guide bar's rows (one design: no prefix).
 GUIDE_NAMES = {"theta": "deg", "lAB": "m", "lCD": "m", "K": "", "psi": "deg", "gamma_min": "deg"}
 #: K at and above this asks θ ≥ 90°: no crank-rocker is designed so (the θ-circle's arc
@@ -80,21 +85,65 @@ class GuideBar:
         return math.pi * (self.K - 1.0) / (self.K + 1.0)
 
 
-def read_time_ratio(r: Reader) -> TimeRatio | GuideBar | None:
+@dataclass(frozen=True)
+class SliderCrank:
+    """A slider-crank to design, SI: K, the stroke H and the offset e ≥ 0 of A from the guide."""
+
+    K: float
+    stroke: float
+    offset: float
+    mechanism: str = "slider_crank"
+    #: The key the offset was written under (``synthesis.offset_mm``), for messages.
+    key: str = "synthesis.offset"
+
+    @property
+    def theta(self) -> float:
+        """θ = 180°(K − 1)/(K + 1), rad."""
+        return math.pi * (self.K - 1.0) / (self.K + 1.0)
+
+
+#: What the time-ratio task designs.
+Problem = TimeRatio | SliderCrank | GuideBar
+
+
+def read_time_ratio(r: Reader) -> TimeRatio | SliderCrank | GuideBar | None:
     """The rest of [synthesis] for ``task = "time_ratio"`` (None after reporting)."""
-    mech = r.string("mechanism", choices=MECHANISMS + TO_COME, required=True)
-    if mech in TO_COME:
-        r.problem(r.at("mechanism"), f"{mech}: not designed from K yet (issue 20): only {one_of(MECHANISMS)}")
-        r.ignore(*r.table)
-        return None
+    mech = r.string("mechanism", choices=MECHANISMS, required=True)
     K = _read_K(r)
     if mech == "guide_bar":
         return _read_guide_bar(r, K)
     if K is not None and K >= K_MAX:
-        r.problem(r.at("K"), f"K = {K:g} ≥ 3 asks θ = {180 * (K - 1) / (K + 1):.4g}° ≥ 90°: no crank-rocker "
+        what = "crank-rocker" if mech == "crank_rocker" else "slider-crank"
+        r.problem(r.at("K"), f"K = {K:g} ≥ 3 asks θ = {180 * (K - 1) / (K + 1):.4g}° ≥ 90°: no {what} "
                              "is designed so (the crank angle between the limits stays below 90°)")
         K = None
+    if mech == "slider_crank":
+        return _read_slider_crank(r, K)
     return _read_crank_rocker(r, mech, K)
+
+
+def _read_slider_crank(r: Reader, K: float | None) -> SliderCrank | None:
+    not_for(r, ("rocker", "frame", "swing", "limit_angle"), "not for a slider-crank: give stroke and offset")
+    if K == 1.0:
+        r.problem(r.at("K"), "K = 1: θ = 0 asks a centred slider-crank, l_AB = H/2 with any l_BC — K does not "
+                             "fix the design (give K > 1 and the offset)")
+        K = None
+    H = r.scalar("stroke", "length", positive=True)
+    e = r.scalar("offset", "length")
+    if e is not None and e < 0.0:
+        r.problem(r.at(r.present("offset") or "offset"), "the offset is a distance ≥ 0 (the drawing puts A above the guide)")
+        e = None
+    elif e == 0.0:
+        r.problem(r.at(r.present("offset") or "offset"), "e = 0: a centred slider-crank has θ = 0, K = 1 — a quick "
+                                                         "return needs an offset")
+        e = None
+    for value, base in ((H, "stroke"), (e, "offset")):
+        if value is not None and not 1e-9 <= value <= 1e9:
+            r.problem(r.at(r.present(base) or base), f"{value:g} m is absurd for a slider-crank (1e-9 … 1e9 m)")
+            return None
+    if K is None or H is None or e is None:
+        return None
+    return SliderCrank(K, H, e, key=r.at(r.present("offset") or "offset"))
 
 
 def _read_guide_bar(r: Reader, K: float | None) -> GuideBar | None:
@@ -182,8 +231,11 @@ def designs(p: TimeRatio, mu_l: float) -> tuple[list[DrawnDesign], list[Design]]
             ex.crank_rocker_from_swing(p.rocker, p.frame, p.swing, ex.theta_of_K(p.K)))
 
 
-def size(p: TimeRatio | GuideBar) -> float:
-    """The designed linkage's size, m: the rocker and the frame; the frame or the bar."""
+def size(p: Problem) -> float:
+    """The designed linkage's size, m: the rocker and the frame; the frame or the bar; the
+    θ-circle's diameter H/sin θ and the offset."""
+    if isinstance(p, SliderCrank):
+        return p.stroke / math.sin(p.theta) + p.offset
     if isinstance(p, GuideBar):
         from graphmech.exact.synthesis import guide_bar_from_K
 
@@ -191,7 +243,7 @@ def size(p: TimeRatio | GuideBar) -> float:
     return p.rocker + p.frame
 
 
-def choose_scale(p: TimeRatio | GuideBar) -> float:
+def choose_scale(p: Problem) -> float:
     """μl that draws the linkage about 100 mm across."""
     from graphmech.scales import round_scale
 
@@ -212,13 +264,17 @@ class Designed:
     names: list[str]
     #: A guide bar's drawing (None for a crank-rocker).
     guide: DrawnGuideBar | None = None
+    #: A slider-crank's drawing.
+    slider: DrawnSlider | None = None
 
 
-def analyse_time_ratio(p: TimeRatio | GuideBar, mu: float, find: tuple[str, ...] = (), source: str = "") -> Designed:
+def analyse_time_ratio(p: Problem, mu: float, find: tuple[str, ...] = (), source: str = "") -> Designed:
     """The designs at μl = ``mu``, their rows (those ``find`` asks; all when it is empty), the
     re-analysis and the words under the table; ``source`` names the file in a refusal."""
     if isinstance(p, GuideBar):
         return _analyse_guide_bar(p, mu, find)
+    if isinstance(p, SliderCrank):
+        return _analyse_slider_crank(p, mu, find, source)
     from graphmech.exact.characteristics import fourbar, fourbar_class
     from graphmech.mechanisms.linkage import RRR, Crank, Linkage
     from graphmech.methods.characteristics import draw_characteristics
@@ -321,6 +377,57 @@ def _analyse_guide_bar(p: GuideBar, mu: float, find: tuple[str, ...]) -> Designe
     return Designed([], [], [r for r in rows if wanted is None or r.name in wanted], [], [solution], known, g)
 
 
+def _analyse_slider_crank(p: SliderCrank, mu: float, find: tuple[str, ...], source: str) -> Designed:
+    """The slider-crank drawn and in closed form, re-analysed drawn and exact."""
+    from graphmech.exact.characteristics import slider_crank
+    from graphmech.exact.synthesis import slider_crank_from_K
+    from graphmech.mechanisms.linkage import RRP, Crank, Guide, Linkage
+    from graphmech.methods.characteristics import draw_characteristics
+    from graphmech.methods.synthesis_time_ratio import draw_slider_crank
+    from graphmech.problems.judging import Row
+
+    g = draw_slider_crank(p.stroke / mu, p.offset / mu, p.theta)
+    x = slider_crank_from_K(p.stroke, p.offset, p.theta)
+    if g is None or x is None:
+        if g is not None or x is not None:
+            raise SceneError([(p.key, ("the construction and the closed forms disagree on whether there is a "
+                                       "design: a limiting case — move the data off it"))], source)
+        raise SceneError([(p.key, (f"no crank: no slider-crank with H = {p.stroke:g} m, e = {p.offset:g} m and "
+                                         f"K = {p.K:g} (θ = {math.degrees(p.theta):.4g}°) — the offset line misses the "
+                                         "θ-circle's arc behind C₁, or its crank does not turn fully (l_AB + e ≥ l_BC)"))],
+                         source)
+    A_e, ac1, ac2 = x
+    a, b = (ac2 - ac1) / 2.0, (ac1 + ac2) / 2.0
+    rows = [Row("theta", "deg", None, 1.0, math.degrees(_angle_at(g.points["A"], g.points["C1"], g.points["C2"])),
+                math.degrees(p.theta), abs(_angle_at(g.points["A"], g.points["C1"], g.points["C2"]) - p.theta) / math.pi)]
+    for name, mm, si in (("AC1", g.AC1_mm, ac1), ("AC2", g.AC2_mm, ac2), ("lAB", g.lAB_mm, a), ("lBC", g.lBC_mm, b)):
+        rows.append(Row(name, "m", mm, mu, mm * mu, si, abs(mm * mu - si) / si))
+    A = g.points["A"]
+    lk = Linkage({"A": (A[0] * mu, A[1] * mu)}, Crank("1", "A", "B", g.lAB_mm * mu, 1.0),
+                 (RRP("B", "C", ("2", "3"), g.lBC_mm * mu, Guide((0.0, 0.0), 0.0), "forward"),))
+    dc = draw_characteristics(lk, mu)
+    xc = slider_crank(A_e, 0j, 0.0, a, b, "forward")
+    assert dc.theta is not None and dc.stroke_mm is not None and xc.theta is not None and xc.stroke is not None
+    K_g, K_e = (math.pi + dc.theta) / (math.pi - dc.theta), xc.K or 1.0
+    rows.append(Row("K", "", None, 1.0, K_g, K_e, abs(K_g - K_e) / K_e))
+    rows.append(Row("stroke", "m", dc.stroke_mm, mu, dc.stroke_mm * mu, xc.stroke, abs(dc.stroke_mm * mu - xc.stroke) / xc.stroke))
+    rows.append(Row("gamma_min", "deg", None, 1.0, math.degrees(dc.gamma_min), math.degrees(xc.gamma_min),
+                    abs(dc.gamma_min - xc.gamma_min) / math.pi))
+    solution = {"name": "design", "lAB": a, "lBC": b, "AC1": ac1, "AC2": ac2, "grashof": xc.grashof,
+                "reanalysis": {"K": K_e, "K_error": abs(K_e - p.K) / p.K, "stroke": xc.stroke,
+                               "stroke_error": abs(xc.stroke - p.stroke) / p.stroke,
+                               "gamma_min_deg": math.degrees(xc.gamma_min)}}
+    wanted = set(find) or None
+    return Designed([], [], [r for r in rows if wanted is None or r.name in wanted], [], [solution],
+                    list(SLIDER_NAMES), slider=g)
+
+
+def _angle_at(A: tuple[float, float], P: tuple[float, float], Q: tuple[float, float]) -> float:
+    """∠PAQ measured on the drawing, rad."""
+    u, v = (P[0] - A[0], P[1] - A[1]), (Q[0] - A[0], Q[1] - A[1])
+    return abs(math.atan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1]))
+
+
 def _extreme_pins(e: Design, xc: object) -> list[complex]:
     """The rocker pin C at the re-analysed linkage's two extremes (from the crank's angles)."""
     from graphmech.exact.characteristics import ExactCharacteristics
@@ -339,10 +446,14 @@ def _extreme_pins(e: Design, xc: object) -> list[complex]:
     return out
 
 
-def grashof_line(s: dict[str, object], p: TimeRatio | GuideBar) -> str:
+def grashof_line(s: dict[str, object], p: Problem) -> str:
     """One design said under the table: its lengths, Grashof's class and the re-analysis error."""
     re = s["reanalysis"]
     assert isinstance(re, dict)
+    if isinstance(p, SliderCrank):
+        return (f"design: l_AB = {float(s['lAB']) * 1000:.6g} mm, l_BC = {float(s['lBC']) * 1000:.6g} mm: "  # type: ignore[arg-type]
+                f"the crank turns fully (l_AB + e < l_BC); re-analysed: K = {re['K']:.12g} (error {re['K_error']:.1e}), "
+                f"H = {re['stroke'] * 1000:.6g} mm (error {re['stroke_error']:.1e}), γ_min = {re['gamma_min_deg']:.6g}°")
     if isinstance(p, GuideBar):
         bar = "" if s["lCD"] is None else f", the bar l_CD = {float(s['lCD']) * 1000:.6g} mm"  # type: ignore[arg-type]
         return (f"design: l_AB = {float(s['lAB']) * 1000:.6g} mm{bar}: a swinging guide bar (l_AB < l_AC); "  # type: ignore[arg-type]

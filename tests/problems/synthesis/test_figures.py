@@ -43,3 +43,16 @@ def test_a_guide_bar_is_drawn_with_its_limit_lines_and_stroke():
     assert {i.text for i in panel.items if isinstance(i, Label)} >= {"A", "C", "B_{1}", "B_{2}", "D_{1}", "D_{2}", "H"}
     assert any(isinstance(i, Circle) and i.r == an.guide.lAB_mm for i in panel.items)  # the crank circle
     assert "150 mm" in panel.notes[1] and "400 mm" in panel.notes[2]
+
+
+def test_a_slider_crank_is_drawn_on_its_guide_with_its_theta_circle():
+    from graphmech.drawing.primitives import GuideLine, Slider
+    from tests.scenes import parse_text
+
+    an = analyse_synthesis(parse_text('[synthesis]\ntask = "time_ratio"\nmechanism = "slider_crank"\nK = 1.5\n'
+                                      "stroke_mm = 50\noffset_mm = 10\n"))
+    (panel,) = synthesis_sheet(an, (297.0, 210.0)).panels
+    O, R = an.slider.circle
+    assert any(isinstance(i, Circle) and i.center == O and i.r == R for i in panel.items)
+    assert sum(isinstance(i, GuideLine) for i in panel.items) == 1 and sum(isinstance(i, Slider) for i in panel.items) == 1
+    assert "23.32 mm" in panel.notes[2] and "37.34 mm" in panel.notes[2]

@@ -37,8 +37,6 @@ def test_the_tasks_are_the_readers_listed():
     ("swing_deg = 40", "swing_deg = 190", "synthesis.swing_deg", "between 0 and 180°"),
     ("rocker_mm = 75", "rocker_mm = -75", "synthesis.rocker_mm", "> 0"),
     ("frame_mm = 100", "frame = 100", "synthesis.frame", "unit not stated"),
-    ('mechanism = "crank_rocker"', 'mechanism = "slider_crank"', "synthesis.mechanism",
-     "slider_crank: not designed from K yet (issue 20): only crank_rocker or guide_bar"),
     ("swing_deg = 40", "swing_deg = 40\nstroke_mm = 10", "synthesis.stroke_mm", "not for a crank-rocker"),
     ('mechanism = "crank_rocker"', 'mechanism = "crank"', "synthesis.mechanism", "unknown value"),
     ('task = "time_ratio"', 'task = "positions"', "synthesis.task", "unknown value"),
@@ -72,6 +70,27 @@ def test_a_guide_bar_reads_its_frame_and_stroke():
 ])
 def test_bad_guide_bars_are_refused_in_one_line(old, new, where, words):
     path, reason = only_problem(replace_once(GUIDE, old, new))
+    assert path == where and words in reason, (path, reason)
+
+
+SLIDER = '[synthesis]\ntask = "time_ratio"\nmechanism = "slider_crank"\nK = 1.5\nstroke_mm = 50\noffset_mm = 10\n'
+
+
+def test_a_slider_crank_reads_its_stroke_and_offset():
+    p = parse_text(SLIDER).problem.problem
+    assert (p.mechanism, p.K, p.stroke, p.offset, p.key) == ("slider_crank", 1.5, 0.05, 0.01, "synthesis.offset_mm")
+
+
+@pytest.mark.parametrize("old, new, where, words", [
+    ("K = 1.5", "K = 1", "synthesis.K", "K does not fix the design"),
+    ("K = 1.5", "K = 3.5", "synthesis.K", "no slider-crank is designed so"),
+    ("offset_mm = 10", "offset_mm = -10", "synthesis.offset_mm", "a distance ≥ 0"),
+    ("offset_mm = 10\n", "", "synthesis.offset", "missing"),
+    ("offset_mm = 10", "offset_mm = 0", "synthesis.offset_mm", "a quick return needs an offset"),
+    ("stroke_mm = 50", "stroke_mm = 50\nframe_mm = 3", "synthesis.frame_mm", "not for a slider-crank"),
+])
+def test_bad_slider_cranks_are_refused_in_one_line(old, new, where, words):
+    path, reason = only_problem(replace_once(SLIDER, old, new))
     assert path == where and words in reason, (path, reason)
 
 

@@ -115,3 +115,39 @@ def test_any_guide_bar_is_designed_to_1e_9(K, d, H):
     an, _, extras, _ = check(parse_text(text))
     assert all(r.rel_error < 1e-9 for r in an.rows), an.rows
     assert extras["synthesis"]["solutions"][0]["reanalysis"]["K_error"] < 1e-9
+
+
+def test_a_slider_crank_is_designed_and_reanalysed():
+    text = '[synthesis]\ntask = "time_ratio"\nmechanism = "slider_crank"\nK = 1.5\nstroke_mm = 50\noffset_mm = 10\n'
+    rows, extras, lines = _rows(parse_text(text))
+    assert list(rows) == ["theta", "AC1", "AC2", "lAB", "lBC", "K", "stroke", "gamma_min"]
+    assert all(r.rel_error < 1e-12 for r in rows.values())
+    assert rows["K"].exact == pytest.approx(1.5, rel=1e-12) and rows["stroke"].exact == pytest.approx(0.05, rel=1e-12)
+    re = extras["synthesis"]["solutions"][0]["reanalysis"]
+    assert re["K_error"] < 1e-9 and re["stroke_error"] < 1e-9
+    assert lines[0].startswith("design: l_AB = 23.3189 mm, l_BC = 37.3419 mm: the crank turns fully")
+
+
+def test_a_slider_crank_with_no_crank_is_said_in_one_line():
+    text = '[synthesis]\ntask = "time_ratio"\nmechanism = "slider_crank"\nK = 2.5\nstroke_mm = 50\noffset_mm = 60\n'
+    with pytest.raises(SceneError) as e:
+        check(parse_text(text))
+    ((where, why),) = e.value.problems
+    assert where == "synthesis.offset_mm" and why.startswith("no crank: no slider-crank with H = 0.05 m")
+
+
+@settings(max_examples=200, deadline=None)
+@given(K=st.floats(1.01, 2.999), H=st.floats(1.0, 1000.0), ratio=st.floats(0.01, 2.0))
+def test_any_slider_crank_is_designed_to_1e_9_or_refused(K, H, ratio):
+    # (an offset under 1 % of the stroke puts A all but on C₁, and K within 1 % of 1 a θ-circle
+    # hundreds of strokes across: l_AB is then a difference of nearly equal lengths — the
+    # problem's conditioning, not the construction's error)
+    text = (f'[synthesis]\ntask = "time_ratio"\nmechanism = "slider_crank"\nK = {K!r}\nstroke_mm = {H!r}\n'
+            f"offset_mm = {H * ratio!r}\n")
+    try:
+        an, _, extras, _ = check(parse_text(text))
+    except SceneError as e:
+        assert len(e.problems) == 1
+        return
+    assert all(r.rel_error < (1e-9 if r.unit == "m" else 1e-7) for r in an.rows), an.rows
+    assert extras["synthesis"]["solutions"][0]["reanalysis"]["K_error"] < 1e-9
