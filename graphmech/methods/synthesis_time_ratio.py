@@ -12,7 +12,12 @@ crank-rocker from l_CD, l_AD and the swing ψ: draw C₁, C₂ on the rocker's c
     centre O (either side of the chord), radius OC₁; every point of the arc on O's side sees
     C₁C₂ at θ. The circle of radius l_AD about D cuts it at A.
 
-Each design's θ-circle (through A, C₁, C₂: the centre where the bisectors of AC₁ and C₁C₂ meet) is
+slider-crank from the stroke H and the offset e: C₁C₂ = H on the guide, the θ-circle on that chord,
+    cut by the line at e from the guide at A (behind C₁).
+guide bar from the frame l_AC (and the ram's stroke H): the bar's limit lines from C at ψ/2 = θ/2
+    either side of CA; the perpendicular from A to one is the crank; D₁D₂ = H gives the bar.
+
+Each crank-rocker's θ-circle (through A, C₁, C₂: the centre where the bisectors of AC₁ and C₁C₂ meet) is
 drawn for both variants. A design is kept where C₁ and C₂ lie on one side of the frame line (one
 assembly branch) and the crank is the Grashof crank (:func:`graphmech.methods.characteristics.
 grashof_class` on the measured lengths); mirror images are one design. Everything is drawn in

@@ -1,6 +1,7 @@
 """Linkage synthesis (``[synthesis]``): a linkage designed by the book's construction — for now
 from its time ratio K (``task = "time_ratio"``: a crank-rocker from the rocker, the frame and the
-swing or one limit position; the θ-circle, both designs) — its lengths measured at μl against the
+swing or one limit position, every design; an offset slider-crank from the stroke and the offset;
+a guide bar from the frame and the ram's stroke) — its lengths measured at μl against the
 closed forms, and each design re-analysed (Grashof, K, ψ, γ_min). The task is read, checked and
 drawn by its own module (``time_ratio``); the positions and function tasks join beside it.
 """

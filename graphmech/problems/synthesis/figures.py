@@ -67,8 +67,9 @@ def design_items(g: DrawnDesign, mu: float) -> list[Primitive]:
     u1, u2 = _unit(A, C1), _unit(A, C2)
     mid = _unit((0.0, 0.0), (u1[0] + u2[0], u1[1] + u2[1])) if u1 != (-u2[0], -u2[1]) else u1
     items += [Label("A", A, (u1, u2, _unit(A, D))), Label("D", D, (_unit(D, A), _unit(D, C1), _unit(D, C2))),
-              Label("B_{1}", B1), Label("B_{2}", B2), Label("C_{1}", C1), Label("C_{2}", C2),
-              Label("θ", (A[0] + 1.3 * r * mid[0], A[1] + 1.3 * r * mid[1]))]
+              Label("B_{1}", B1), Label("B_{2}", B2), Label("C_{1}", C1), Label("C_{2}", C2)]
+    if theta is not None:  # K = 1: no angle to mark
+        items.append(Label("θ", (A[0] + 1.3 * r * mid[0], A[1] + 1.3 * r * mid[1])))
     return items
 
 

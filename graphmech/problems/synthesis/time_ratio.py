@@ -1,12 +1,14 @@
-"""The synthesis task ``time_ratio``: a crank-rocker designed from its time ratio K.
+"""The synthesis task ``time_ratio``: a linkage designed from its time ratio K.
 
-Read: ``mechanism``, ``K``, the rocker ``rocker`` (l_CD), the frame ``frame`` (l_AD) and either the
-swing ``swing`` (ψ) or one limit position ``limit_angle`` (∠ADC₁). Analysed: every design the
-construction (:mod:`graphmech.methods.synthesis_time_ratio`) draws, its lengths measured at μl
-against the closed forms (:mod:`graphmech.exact.synthesis`), then re-analysed as a linkage —
-drawn (:func:`graphmech.methods.characteristics.draw_characteristics`) against exact
-(:func:`graphmech.exact.characteristics.fourbar`) — so that its K, ψ and γ_min are in the table and
-the re-analysis error against what was asked (K; ψ or the limit angle) is said under it.
+Read, by ``mechanism``: a crank-rocker from ``K``, the rocker ``rocker`` (l_CD), the frame
+``frame`` (l_AD) and either the swing ``swing`` (ψ) or one limit position ``limit_angle`` (∠ADC₁);
+an offset slider-crank from ``K``, ``stroke`` (H) and ``offset`` (e); a guide bar from ``K``,
+``frame`` (l_AC) and optionally ``stroke`` (the ram's H). Analysed: every design the construction
+(:mod:`graphmech.methods.synthesis_time_ratio`) draws, its lengths measured at μl against the
+closed forms (:mod:`graphmech.exact.synthesis`), then re-analysed as a linkage — drawn
+(:func:`graphmech.methods.characteristics.draw_characteristics`) against exact
+(:mod:`graphmech.exact.characteristics`) — so that its K, ψ (or H) and γ_min are in the table and
+the re-analysis error against what was asked is said under it.
 """
 from __future__ import annotations
 
