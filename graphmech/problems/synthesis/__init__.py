@@ -58,4 +58,10 @@ def _lines(an: SynthesisAnalysis) -> list[str]:
     return text_lines(an)
 
 
-KIND = Kind("synthesis", ("synthesis",), _read, _analyse, _judge, _sheet, _extras, _lines)
+def _steps(scene: Scene[SynthesisScene]) -> list[str]:
+    from graphmech.problems.synthesis.steps import synthesis_steps
+
+    return synthesis_steps(scene)
+
+
+KIND = Kind("synthesis", ("synthesis",), _read, _analyse, _judge, _sheet, _extras, _lines, steps=_steps)
