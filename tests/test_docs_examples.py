@@ -59,6 +59,16 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
         for verdict in verdicts:
             assert verdict.ok, verdict
         return
+    if scene.kind == "synthesis":  # the construction against the closed forms, each design re-analysed
+        from graphmech.problems import check as check_synthesis
+
+        san, verdicts, _, _ = check_synthesis(scene)
+        assert san.rows
+        for row in san.rows:
+            assert row.rel_error <= 1e-9, row
+        for verdict in verdicts:
+            assert verdict.ok, verdict
+        return
     if scene.kind == "gears":  # the constructions against the closed forms (spur or helical/bevel/worm: the kind decides)
         from graphmech.problems import check as check_kind
 

@@ -104,7 +104,7 @@ def test_each_doc_example_parses(index: int, tmp_path: Path) -> None:
     if scene.kind == "flywheel" and scene.linkage is None:  # a machine without a linkage
         assert scene.positions is None
         return
-    if scene.kind in ("efficiency", "balancing", "structure", "gears", "trains"):  # no linkage
+    if scene.kind in ("efficiency", "balancing", "structure", "gears", "trains", "synthesis"):  # no linkage
         assert scene.linkage is None and scene.positions is None
         return
     assert scene.linkage.frame_link not in scene.linkage.links()
@@ -220,6 +220,12 @@ def test_any_mutation_gives_a_scene_or_a_scene_error(data: st.DataObject) -> Non
     if scene.kind == "gears":  # fuzzed further in tests/problems/gears/test_robustness.py
         g = scene.problem.gears
         assert scene.linkage is None and g.system.m > 0 and all(x.z >= 1 for x in g.gears)
+        return
+    if scene.kind == "synthesis":  # a design asked in SI: its analysis is fuzzed in tests/problems/synthesis
+        p = scene.problem.problem
+        from graphmech.problems.synthesis.time_ratio import size
+
+        assert scene.linkage is None and 1.0 <= p.K < 35.0 and size(p) > 0
         return
     if scene.kind == "structure":  # a topology: its analysis must not fail either
         import json

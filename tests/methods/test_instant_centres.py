@@ -325,7 +325,7 @@ def _linkage_examples():
     out = [(f"doc{i}", b) for i, b in enumerate(blocks)]
     out += [(p.stem, p.read_text(encoding="utf-8")) for p in sorted(SCENES.glob("*.toml"))
             if p.stem != "ic.parallelogram_change_point"]
-    no_linkage = ("cam", "flywheel", "structure", "efficiency", "balancing", "gear", "train")
+    no_linkage = ("cam", "flywheel", "structure", "efficiency", "balancing", "gear", "train", "synthesis")
     return [(n, t) for n, t in out if not any(k in tomllib.loads(t) for k in no_linkage)]
 
 
