@@ -60,7 +60,7 @@ def analyse_synthesis(scene: Scene[SynthesisScene], extra: tuple[tuple[str, floa
     """Draw the scene's designs and build the check table."""
     an = SynthesisAnalysis(scene, extra_measured=tuple(extra))
     p = scene.problem.problem
-    task = positions if isinstance(p, positions.CouplerPositions) else time_ratio
+    task = positions if isinstance(p, positions.CouplerPositions | positions.FourbarPositions) else time_ratio
     if "l" in scene.scales:
         an.scales["l"] = scene.scales["l"]
         an.stated.add("l")
@@ -69,7 +69,7 @@ def analyse_synthesis(scene: Scene[SynthesisScene], extra: tuple[tuple[str, floa
             raise SceneError([("scales", why)], scene.source)
     else:
         an.scales["l"] = task.choose_scale(p)
-    if isinstance(p, positions.CouplerPositions):
+    if isinstance(p, positions.CouplerPositions | positions.FourbarPositions):
         pf = positions.analyse_positions(p, an.scales["l"], scene.find, scene.source)
         an.positions, an.rows, an.warnings, an.solutions = pf, pf.rows, pf.warnings, pf.solutions
         known = pf.names
@@ -115,7 +115,7 @@ def judge_synthesis(an: SynthesisAnalysis) -> list[Verdict]:
 def text_lines(an: SynthesisAnalysis) -> list[str]:
     """Under the table: each design's Grashof class and its re-analysis error."""
     p = an.scene.problem.problem
-    if isinstance(p, positions.CouplerPositions):
+    if isinstance(p, positions.CouplerPositions | positions.FourbarPositions):
         return [positions.grashof_line(s) for s in an.solutions]
     return [time_ratio.grashof_line(s, p) for s in an.solutions]
 

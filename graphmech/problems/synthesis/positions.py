@@ -16,11 +16,12 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from graphmech.errors import GraphmechError, SceneError
+from graphmech.problems.reader import MISSING
 
 if TYPE_CHECKING:
     from graphmech.drawing.primitives import Primitive
     from graphmech.exact.synthesis_positions import Reanalysis
-    from graphmech.methods.synthesis_positions import CouplerDesign
+    from graphmech.methods.synthesis_positions import CouplerDesign, FourbarDesign
     from graphmech.problems.judging import Row
     from graphmech.problems.reader import Reader
 
@@ -40,8 +41,60 @@ class CouplerPositions:
     key: str
 
 
-def read_positions(r: Reader) -> CouplerPositions | None:
-    """``[[synthesis.position]]`` with B and C; ``frame_through``, ``frame_angle`` with two."""
+@dataclass(frozen=True)
+class FourbarPositions:
+    """Corresponding positions of the input AB (φ_i) and the output DC (ψ_i): A, D (m), l_AB and,
+    with two positions, l_CD and the side of the bisector's foot C₁ is taken on."""
+
+    A: XY
+    D: XY
+    l_AB: float
+    phi: tuple[float, ...]
+    psi: tuple[float, ...]
+    l_CD: float | None
+    side: float
+    key: str
+
+
+def _angles(r: Reader, base: str) -> tuple[float, ...] | None:
+    g = r.quantity(base, "angle")
+    if g is None:
+        return None
+    n = len(g.value) if isinstance(g.value, list) and len(g.value) in (2, 3) else 3
+    xs = r.numbers(g.value, r.at(g.key), n, shape=f"[{base}1, {base}2, {base}3] or two")
+    return None if xs is None else tuple(g.si(x) for x in xs)
+
+
+def _read_fourbar(r: Reader) -> FourbarPositions | None:
+    A, D = r.pair("A"), r.pair("D")
+    a = r.scalar("l_AB", "length", positive=True)
+    phi, psi = _angles(r, "phi"), _angles(r, "psi")
+    c = r.scalar("l_CD", "length", required=False, positive=True)
+    side_raw = r.raw("side")
+    side = 1.0
+    if side_raw is not MISSING:
+        if side_raw not in (1, -1) or isinstance(side_raw, bool):
+            r.problem(r.at("side"), "must be 1 or -1 (C₁ ahead of or behind the foot of D on the bisector)")
+            return None
+        side = float(side_raw)
+    if phi is not None and psi is not None and len(phi) != len(psi):
+        r.problem(r.at(r.present("psi") or "psi"), f"{len(psi)} output angles for {len(phi)} input angles: "
+                                                   "give as many of each")
+        return None
+    if phi is not None and len(phi) == 2 and c is None:
+        r.problem(r.at("l_CD"), "with two positions C₁ lies anywhere on the bisector: give l_CD_mm (the output link)")
+    if phi is not None and len(phi) == 3 and (c is not None or side_raw is not MISSING):
+        r.problem(r.at(r.present("l_CD") or "side"), "three positions fix C₁: no l_CD or side is taken")
+    if A is None or D is None or a is None or phi is None or psi is None or (len(phi) == 2 and c is None):
+        return None
+    return FourbarPositions(A, D, a, phi, psi, c, side, r.at(r.present("psi") or "psi"))
+
+
+def read_positions(r: Reader) -> CouplerPositions | FourbarPositions | None:
+    """``[[synthesis.position]]`` with B and C; ``frame_through``, ``frame_angle`` with two. Or
+    the input/output form: ``A``, ``D``, ``l_AB``, ``phi``, ``psi`` (``l_CD``, ``side`` with two)."""
+    if r.present("phi") is not None:
+        return _read_fourbar(r)
     tables = r.tables_at("position")
     B: list[XY] = []
     C: list[XY] = []
@@ -70,19 +123,27 @@ def read_positions(r: Reader) -> CouplerPositions | None:
     return CouplerPositions(tuple(B), tuple(C), frame, key)
 
 
-def size(p: CouplerPositions) -> float:
+def size(p: CouplerPositions | FourbarPositions) -> float:
     """The drawing's spread, m: the given points and the pivots (where they exist; a refusal is
     said by the analysis)."""
-    pts = [*p.B, *p.C]
-    try:
-        pts += [(z.real, z.imag) for z in exact_pivots(p)]
-    except GraphmechError:
-        pass
+    if isinstance(p, FourbarPositions):
+        pts = [p.A, p.D, *((p.A[0] + p.l_AB * math.cos(f), p.A[1] + p.l_AB * math.sin(f)) for f in p.phi)]
+        try:
+            z = exact_C1(p)
+            pts.append((z.real, z.imag))
+        except GraphmechError:
+            pass
+    else:
+        pts = [*p.B, *p.C]
+        try:
+            pts += [(z.real, z.imag) for z in exact_pivots(p)]
+        except GraphmechError:
+            pass
     xs, ys = [x for x, _ in pts], [y for _, y in pts]
     return max(max(xs) - min(xs), max(ys) - min(ys))
 
 
-def choose_scale(p: CouplerPositions) -> float:
+def choose_scale(p: CouplerPositions | FourbarPositions) -> float:
     """μl that draws the linkage about 100 mm across."""
     from graphmech.scales import round_scale
 
@@ -110,13 +171,39 @@ def exact_pivots(p: CouplerPositions) -> tuple[complex, complex]:
     return on_line(B[0], B[1]), on_line(C[0], C[1])
 
 
+def exact_C1(p: FourbarPositions, near: complex | None = None) -> complex:
+    """C₁ by the exact side: B_i turned back about D by ψ_i − ψ₁ (complex rotation); the
+    circumcentre of B₁, B₂′, B₃′, or with two the point of the bisector of B₁B₂′ at l_CD from D
+    (of the two, the one nearer ``near``, the construction's: the side is a choice, not a value)."""
+    import cmath
+
+    from graphmech.exact.synthesis_positions import circumcentre
+
+    A, D = complex(*p.A), complex(*p.D)
+    B = [A + p.l_AB * cmath.exp(1j * f) for f in p.phi]
+    im = [D + (B[i] - D) * cmath.exp(-1j * (p.psi[i] - p.psi[0])) for i in range(len(B))]
+    if len(B) == 3:
+        return circumcentre(*im)
+    assert p.l_CD is not None
+    mid, u = (im[0] + im[1]) / 2, (im[1] - im[0]) * 1j
+    if abs(u) == 0.0:
+        raise GraphmechError("B1 and its inverted image B2' coincide: no bisector")
+    u /= abs(u)
+    t0 = ((D - mid) * u.conjugate()).real  # the foot of D on the bisector
+    h2 = p.l_CD ** 2 - abs(mid + t0 * u - D) ** 2
+    if h2 < 0.0:
+        raise GraphmechError(f"the arc of l_CD = {p.l_CD:.6g} m about D does not reach the bisector of B1B2'")
+    cands = [mid + (t0 + k * math.sqrt(h2)) * u for k in (1.0, -1.0)]
+    return min(cands, key=lambda z: abs(z - (near if near is not None else cands[0])))
+
+
 @dataclass
 class PositionsFound:
     """The drawn design (mm), the exact pivots, both re-analyses, the rows, the warnings and what
     ``check --json`` adds."""
 
-    drawn: CouplerDesign
-    mm: CouplerPositions
+    drawn: CouplerDesign | FourbarDesign
+    mm: CouplerPositions | FourbarPositions
     A: complex
     D: complex
     drawn_re: Reanalysis
@@ -127,8 +214,51 @@ class PositionsFound:
     names: list[str]
 
 
-def analyse_positions(p: CouplerPositions, mu: float, find: tuple[str, ...] = (), source: str = "") -> PositionsFound:
+def analyse_fourbar(p: FourbarPositions, mu: float, find: tuple[str, ...] = (), source: str = "") -> PositionsFound:
+    """The inversion at μl = ``mu`` against the exact C₁, both designs driven through φ_i."""
+    from graphmech.exact.synthesis_positions import reanalyse_fourbar
+    from graphmech.methods.synthesis_positions import fourbar_positions
+    from graphmech.problems.judging import Row
+
+    pm = FourbarPositions((p.A[0] / mu, p.A[1] / mu), (p.D[0] / mu, p.D[1] / mu), p.l_AB / mu, p.phi, p.psi,
+                          None if p.l_CD is None else p.l_CD / mu, p.side, p.key)
+    try:
+        fourbar_positions(p.A, p.D, p.l_AB, p.phi, p.psi, p.l_CD, p.side)  # refused in metres, as given
+        g = fourbar_positions(pm.A, pm.D, pm.l_AB, pm.phi, pm.psi, pm.l_CD, pm.side)
+        C1 = exact_C1(p, complex(*g.C1) * mu)
+    except GraphmechError as e:
+        raise SceneError([(p.key, str(e))], source) from None
+    A, D = complex(*p.A), complex(*p.D)
+    B1 = A + p.l_AB * complex(math.cos(p.phi[0]), math.sin(p.phi[0]))
+    ex = {"lBC": abs(C1 - B1), "lCD": abs(C1 - D), "xC1": C1.real, "yC1": C1.imag}
+    dr = {"lBC": g.l_BC, "lCD": g.l_CD, "xC1": g.C1[0], "yC1": g.C1[1]}
+    xr = reanalyse_fourbar(A, D, p.l_AB, ex["lBC"], ex["lCD"], p.phi, p.psi, C1)
+    gC1 = complex(*g.C1) * mu
+    gr = reanalyse_fourbar(A, D, p.l_AB, g.l_BC * mu, g.l_CD * mu, p.phi, p.psi, gC1)
+    size_m = max(p.l_AB, ex["lBC"], ex["lCD"], abs(D - A))
+    rows = [Row(n, "m", dr[n], mu, dr[n] * mu, ex[n], abs(dr[n] * mu - ex[n]) / size_m) for n in dr]
+    rows.append(Row("reanalysis_error", "", None, 1.0, gr.error, xr.error, abs(gr.error - xr.error)))
+    names = [*dr, "reanalysis_error"]
+    if gr.characteristics is not None and xr.characteristics is not None:
+        gg, ge = gr.characteristics.gamma_min, xr.characteristics.gamma_min
+        rows.append(Row("gamma_min", "deg", None, 1.0, math.degrees(gg), math.degrees(ge), abs(gg - ge) / math.pi))
+        names.append("gamma_min")
+    sol = {"name": "design", "lAB": p.l_AB, "lBC": ex["lBC"], "lCD": ex["lCD"], "lAD": abs(D - A),
+           "C1": [C1.real, C1.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
+           "reanalysis": {"error": xr.error, "gamma_deg": [math.degrees(x) for x in xr.gamma],
+                          **({} if xr.characteristics is None
+                             else {"gamma_min_deg": math.degrees(xr.characteristics.gamma_min)})},
+           "note": xr.note}
+    wanted = set(find) or None
+    return PositionsFound(g, pm, A, D, gr, xr, [r for r in rows if wanted is None or r.name in wanted],
+                          [xr.note] if xr.note else [], [sol], names)
+
+
+def analyse_positions(p: CouplerPositions | FourbarPositions, mu: float, find: tuple[str, ...] = (),
+                      source: str = "") -> PositionsFound:
     """The construction at μl = ``mu`` against the exact pivots, both re-analysed."""
+    if isinstance(p, FourbarPositions):
+        return analyse_fourbar(p, mu, find, source)
     from graphmech.exact.synthesis_positions import reanalyse_coupler
     from graphmech.methods.synthesis_positions import coupler_positions
     from graphmech.problems.judging import Row
@@ -203,8 +333,12 @@ def coupler_items(pf: PositionsFound) -> list[Primitive]:
     to the pivots and the arcs about A through the B_i, about D through the C_i thin; the designed
     linkage bold at position 1 (A B₁ C₁ D)."""
     from graphmech.drawing.primitives import FixedPivot, Hinge, Label, Segment
+    from graphmech.methods.synthesis_positions import FourbarDesign
 
+    if isinstance(pf.drawn, FourbarDesign):
+        return fourbar_items(pf.drawn)
     g, pm = pf.drawn, pf.mm
+    assert isinstance(pm, CouplerPositions)
     n = len(pm.B)
     items: list[Primitive] = []
     for b in g.bisectors:  # from the chord's midpoint on through the pivot it meets
@@ -232,6 +366,53 @@ def coupler_items(pf: PositionsFound) -> list[Primitive]:
               Label("A", g.A, (_unit(g.A, B1), _unit(g.A, g.D))), Label("D", g.D, (_unit(g.D, C1), _unit(g.D, g.A)))]
     items += [Label(f"B_{{{i + 1}}}", pm.B[i]) for i in range(n)] + [Label(f"C_{{{i + 1}}}", pm.C[i]) for i in range(n)]
     return items
+
+
+def fourbar_items(g: FourbarDesign) -> list[Primitive]:
+    """The inversion as the book draws it: the input AB_i and the output's turns given, each B_i
+    turned back about D on a thin arc to B_i′, the bisectors of B₁B₂′ (B₂′B₃′) to C₁ (with two,
+    the arc of l_CD about D), the four-bar A B₁ C₁ D bold."""
+    from graphmech.drawing.primitives import (
+        Circle,
+        FixedPivot,
+        Hinge,
+        Label,
+        Polyline,
+        Segment,
+    )
+
+    j = g.construction
+    items: list[Primitive] = []
+    for v in j.inversions:  # the arc of the turn back about D, from B_i to B_i′
+        assert v.centre is not None
+        r = math.hypot(v.original[0] - v.centre[0], v.original[1] - v.centre[1])
+        a0 = math.atan2(v.original[1] - v.centre[1], v.original[0] - v.centre[0])
+        items.append(Polyline(tuple((v.centre[0] + r * math.cos(a0 + v.angle * k / 30),
+                                     v.centre[1] + r * math.sin(a0 + v.angle * k / 30)) for k in range(31)),
+                              "construction"))
+        items += [Segment(g.A, v.original, "given", dashed=True), Segment(g.D, v.image, "construction", dashed=True),
+                  Segment(g.D, v.original, "construction", dashed=True), Hinge(v.original), Hinge(v.image),
+                  Label(f"{v.label[0]}_{{{v.label[1:-1]}}}′", v.image),
+                  Label(f"{v.label[0]}_{{{v.label[1:-1]}}}", v.original)]
+    for b in j.bisectors:
+        mid = b.line[:2]
+        t = (g.C1[0] - mid[0]) * b.line[2] + (g.C1[1] - mid[1]) * b.line[3]
+        ext = 8.0 if t >= 0 else -8.0
+        items += [Segment(b.ends[0], b.ends[1], "construction", dashed=True),
+                  Segment((mid[0] - 0.3 * ext * b.line[2], mid[1] - 0.3 * ext * b.line[3]),
+                          (mid[0] + (t + ext) * b.line[2], mid[1] + (t + ext) * b.line[3]), "construction")]
+    items += [Circle(a.centre, a.radius, "construction") for a in j.arcs]
+    items += [Segment(g.A, g.B1, "result"), Segment(g.B1, g.C1, "result"), Segment(g.C1, g.D, "result"),
+              Segment(g.A, g.D, "construction", dashdot=True), FixedPivot(g.A), FixedPivot(g.D), Hinge(g.B1),
+              Hinge(g.C1), Label("A", g.A, (_unit(g.A, g.B1), _unit(g.A, g.D))),
+              Label("D", g.D, (_unit(g.D, g.C1), _unit(g.D, g.A))), Label("B_{1}", g.B1), Label("C_{1}", g.C1)]
+    return items
+
+
+def panel_title(pf: PositionsFound) -> str:
+    """The panel's (and a title-less sheet's) name."""
+    return ("Four-bar from corresponding positions, by inversion" if isinstance(pf.mm, FourbarPositions)
+            else "Coupler through given positions")
 
 
 def notes(pf: PositionsFound, mu: float) -> tuple[str, ...]:
@@ -277,6 +458,22 @@ PHRASES: dict[str, tuple[str, str, str]] = {
     "measure": ("measure AB₁ = {a} mm, C₁D = {c} mm, AD = {d} mm: l_AB = {la} m, l_CD = {lc} m, l_AD = {ld} m",
                 "量得AB₁ = {a} mm，C₁D = {c} mm，AD = {d} mm：l_AB = {la} m，l_CD = {lc} m，l_AD = {ld} m",
                 "измеряем AB₁ = {a} mm, C₁D = {c} mm, AD = {d} mm: l_AB = {la} m, l_CD = {lc} m, l_AD = {ld} m"),
+    "inputs": ("draw A, D and the input AB_i (AB = {mm} mm) at its {n} given angles φ_i",
+               "作A、D及输入杆的{n}个给定位置AB_i（AB = {mm} mm）",
+               "строим A, D и входное звено AB_i (AB = {mm} mm) в {n} заданных углах φ_i"),
+    "invert three": (("turn each B_i about D back by the output's turn ψ_i − ψ₁ to B_i′ (the inversion); "
+                      "C₁ is the centre of the circle through B₁, B₂′, B₃′: the bisectors of B₁B₂′ and B₂′B₃′ meet there"),
+                     "将各B_i绕D反转ψ_i − ψ₁得B_i′（反转法）；B₁、B₂′、B₃′所定圆之圆心即C₁：B₁B₂′与B₂′B₃′的中垂线交于C₁",
+                     ("каждую B_i поворачиваем около D назад на ψ_i − ψ₁ в B_i′ (обращение движения); C₁ — центр "
+                      "окружности через B₁, B₂′, B₃′: серединные перпендикуляры к B₁B₂′ и B₂′B₃′ пересекаются в C₁")),
+    "invert two": (("turn B₂ about D back by ψ₂ − ψ₁ to B₂′ (the inversion); the arc of radius l_CD = {c} mm "
+                    "about D cuts the bisector of B₁B₂′ at C₁"),
+                   "将B₂绕D反转ψ₂ − ψ₁得B₂′（反转法）；以D为圆心、l_CD = {c} mm为半径作弧，与B₁B₂′的中垂线交于C₁",
+                   ("B₂ поворачиваем около D назад на ψ₂ − ψ₁ в B₂′ (обращение движения); дуга радиуса "
+                    "l_CD = {c} mm около D пересекает серединный перпендикуляр к B₁B₂′ в C₁")),
+    "measure C": ("measure B₁C₁ = {b} mm, C₁D = {c} mm: l_BC = {lb} m, l_CD = {lc} m",
+                  "量得B₁C₁ = {b} mm，C₁D = {c} mm：l_BC = {lb} m，l_CD = {lc} m",
+                  "измеряем B₁C₁ = {b} mm, C₁D = {c} mm: l_BC = {lb} m, l_CD = {lc} m"),
     "recheck": ("check: the four-bar driven through the positions reaches them to {err} (of its longest link)",
                 "校核：该四杆机构经过给定位置，误差{err}（相对最长杆）",
                 "проверка: четырёхзвенник проходит заданные положения с погрешностью {err} (от длиннейшего звена)"),
@@ -286,6 +483,13 @@ PHRASES: dict[str, tuple[str, str, str]] = {
 def steps(pf: PositionsFound, mu: float, say: Callable[..., str], num: Callable[[float], str]) -> list[str]:
     """The construction protocol's lines after μl is chosen: the numbers the check's rows read."""
     g = pf.drawn
+    if isinstance(pf.mm, FourbarPositions):
+        n = len(pf.mm.phi)
+        return [say("inputs", n=str(n), mm=num(pf.mm.l_AB)),
+                say("invert three" if n == 3 else "invert two", **({} if pf.mm.l_CD is None else {"c": num(pf.mm.l_CD)})),
+                say("measure C", b=num(g.l_BC), c=num(g.l_CD), lb=num(g.l_BC * mu), lc=num(g.l_CD * mu)),
+                say("recheck", err=f"{pf.exact_re.error:.1e}")]
+    assert isinstance(pf.mm, CouplerPositions)
     return [say("given", n=str(len(pf.mm.B)), mm=num(g.l_BC)), say("three" if pf.mm.frame is None else "two"),
             say("measure", a=num(g.l_AB), c=num(g.l_CD), d=num(g.l_AD), la=num(g.l_AB * mu),
                 lc=num(g.l_CD * mu), ld=num(g.l_AD * mu)),

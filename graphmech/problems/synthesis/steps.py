@@ -96,7 +96,7 @@ def protocol(an: SynthesisAnalysis) -> list[str]:
     if an.positions is not None:  # the positions task words its own construction
         return [say("choose", mu=scale_choice("l", mu, "l" in an.stated, notation)),
                 *positions.steps(an.positions, mu, say, num)]
-    assert not isinstance(p, positions.CouplerPositions)
+    assert not isinstance(p, positions.CouplerPositions | positions.FourbarPositions)
     th = math.degrees(p.theta)
     out = [say("theta", K=num(p.K), th=num(th)), say("choose", mu=scale_choice("l", mu, "l" in an.stated, notation))]
     if isinstance(p, GuideBar):

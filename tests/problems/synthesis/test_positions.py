@@ -128,3 +128,72 @@ def test_the_steps_read_the_checks_numbers():
     assert lines[3] == ("measure AB₁ = 50 mm, C₁D = 81.62 mm, AD = 83.5 mm: l_AB = 0.05 m, l_CD = 0.08162 m, "
                         "l_AD = 0.0835 m")
     assert lines[2].startswith("A is the centre of the circle through B₁, B₂, B₃")
+
+
+FOURBAR = (ROOT / "figures" / "scenes" / "synthesis.fourbar_three_positions.toml").read_text(encoding="utf-8")
+FOURBAR_TWO = """
+[synthesis]
+task = "positions"
+A_mm = [0, 0]
+D_mm = [100, 0]
+l_AB_mm = 30
+phi_deg = [45, 90]
+psi_deg = [60, 80]
+l_CD_mm = 60
+side = -1
+"""
+
+
+def test_three_corresponding_positions_give_C1_by_inversion():
+    import cmath
+    import math
+
+    an = analyse_synthesis(parse_text(FOURBAR))
+    rows = {r.name: r for r in an.rows}
+    assert list(rows) == ["lBC", "lCD", "xC1", "yC1", "reanalysis_error", "gamma_min"]
+    assert (rows["xC1"].exact, rows["yC1"].exact) == pytest.approx((0.10838657, 0.0525162563), rel=1e-8)
+    C1, D = complex(rows["xC1"].exact, rows["yC1"].exact), 0.1 + 0j
+    B = [0.03 * cmath.exp(1j * math.radians(f)) for f in (45, 90, 135)]
+    # C₁ equally far from B₁ and from each B_i turned back about D by ψ_i − ψ₁
+    back = [D + (B[i] - D) * cmath.exp(-1j * math.radians(d)) for i, d in ((1, 20), (2, 45))]
+    assert all(abs(C1 - b) == pytest.approx(abs(C1 - B[0]), rel=1e-12) for b in back)
+    assert rows["reanalysis_error"].exact < 1e-9 and all(r.rel_error < 1e-12 for r in an.rows)
+    assert an.solutions[0]["grashof"] == "crank_rocker_AB"
+    assert protocol(an)[3] == "measure B₁C₁ = 92.62 mm, C₁D = 53.18 mm: l_BC = 0.09262 m, l_CD = 0.05318 m"
+
+
+def test_two_positions_take_l_CD_and_the_side():
+    behind = {r.name: r.exact for r in analyse_synthesis(parse_text(FOURBAR_TWO)).rows}
+    ahead_an = analyse_synthesis(parse_text(FOURBAR_TWO.replace("side = -1", "side = 1")))
+    ahead = {r.name: r.exact for r in ahead_an.rows}
+    assert behind["lCD"] == pytest.approx(0.06) and ahead["lCD"] == pytest.approx(0.06)
+    assert behind["lBC"] == pytest.approx(0.109066, rel=1e-5) and ahead["lBC"] == pytest.approx(0.048957, rel=1e-5)
+    assert behind["reanalysis_error"] < 1e-9 and ahead["reanalysis_error"] < 1e-9
+    # the other cut admits no Grashof crank: said, not refused
+    assert ahead_an.warnings == ["the positions admit no Grashof crank (double rocker): AB does not turn fully"]
+    assert "gamma_min" not in ahead
+
+
+def test_bad_input_output_positions_are_refused_in_one_line():
+    with pytest.raises(SceneError) as e:
+        analyse_synthesis(parse_text(FOURBAR_TWO.replace("l_CD_mm = 60", "l_CD_mm = 50")))
+    assert e.value.problems == [("synthesis.psi_deg", (
+        "C1 = arc ∩ bB1B2': cannot be assembled: the bisector bB1B2' passes 0.0511498 m from the centre, "
+        "farther than the stated length 0.05 m: the arc does not reach it"))]
+    with pytest.raises(SceneError) as e:
+        parse_text(FOURBAR_TWO.replace("l_CD_mm = 60\n", ""))
+    assert e.value.problems[0][0] == "synthesis.l_CD"
+    with pytest.raises(SceneError) as e:
+        parse_text(FOURBAR.replace("psi_deg = [60, 80, 105]", "psi_deg = [60, 80]"))
+    assert e.value.problems[0] == ("synthesis.psi_deg", "2 output angles for 3 input angles: give as many of each")
+    with pytest.raises(SceneError) as e:
+        parse_text(FOURBAR_TWO.replace("side = -1", "side = 2"))
+    assert e.value.problems[0][0] == "synthesis.side"
+
+
+def test_the_inversion_is_drawn_with_its_arcs_and_images():
+    from graphmech.drawing.primitives import Label, Polyline
+
+    items = synthesis_sheet(analyse_synthesis(parse_text(FOURBAR)), (297.0, 210.0)).panels[0].items
+    assert len([i for i in items if isinstance(i, Polyline)]) == 2  # B₂ → B₂′, B₃ → B₃′ about D
+    assert {"B_{2}′", "B_{3}′", "C_{1}"} <= {i.text for i in items if isinstance(i, Label)}
