@@ -223,9 +223,13 @@ def test_any_mutation_gives_a_scene_or_a_scene_error(data: st.DataObject) -> Non
         return
     if scene.kind == "synthesis":  # a design asked in SI: its analysis is fuzzed in tests/problems/synthesis
         p = scene.problem.problem
+        from graphmech.problems.synthesis import positions
         from graphmech.problems.synthesis.time_ratio import size
 
-        assert scene.linkage is None and 1.0 <= p.K < 35.0 and size(p) > 0
+        if isinstance(p, positions.CouplerPositions):
+            assert scene.linkage is None and len(p.B) == len(p.C) in (2, 3) and positions.size(p) > 0
+        else:
+            assert scene.linkage is None and 1.0 <= p.K < 35.0 and size(p) > 0
         return
     if scene.kind == "structure":  # a topology: its analysis must not fail either
         import json

@@ -18,7 +18,7 @@ from graphmech.problems.judging import (
     judge_value,
     measured_entries,
 )
-from graphmech.problems.synthesis import time_ratio
+from graphmech.problems.synthesis import positions, time_ratio
 from graphmech.scales import drawn_size_problem, format_scale
 
 if TYPE_CHECKING:
@@ -29,6 +29,7 @@ if TYPE_CHECKING:
         DrawnSlider,
     )
     from graphmech.problems.reader import Scene
+    from graphmech.problems.synthesis.positions import PositionsFound
     from graphmech.problems.synthesis.scene import SynthesisScene
 
 
@@ -48,6 +49,8 @@ class SynthesisAnalysis:
     guide: DrawnGuideBar | None = None
     slider: DrawnSlider | None = None
     extra_measured: tuple[tuple[str, float], ...] = ()
+    #: the positions task's design (None for the time-ratio task)
+    positions: PositionsFound | None = None
 
     def scale_notes(self) -> list[str]:
         return [format_scale(k, v) + ("" if k in self.stated else " (chosen)") for k, v in self.scales.items()]
@@ -57,19 +60,25 @@ def analyse_synthesis(scene: Scene[SynthesisScene], extra: tuple[tuple[str, floa
     """Draw the scene's designs and build the check table."""
     an = SynthesisAnalysis(scene, extra_measured=tuple(extra))
     p = scene.problem.problem
+    task = positions if isinstance(p, positions.CouplerPositions | positions.FourbarPositions) else time_ratio
     if "l" in scene.scales:
         an.scales["l"] = scene.scales["l"]
         an.stated.add("l")
-        why = drawn_size_problem(time_ratio.size(p), scene.scales["l"])
+        why = drawn_size_problem(task.size(p), scene.scales["l"])
         if why:
             raise SceneError([("scales", why)], scene.source)
     else:
-        an.scales["l"] = time_ratio.choose_scale(p)
-    found = time_ratio.analyse_time_ratio(p, an.scales["l"], scene.find, scene.source)
-    an.drawn, an.exact, an.rows, an.warnings, an.solutions = (found.drawn, found.exact, found.rows, found.warnings,
-                                                               found.solutions)
-    an.guide, an.slider = found.guide, found.slider
-    known = found.names
+        an.scales["l"] = task.choose_scale(p)
+    if isinstance(p, positions.CouplerPositions | positions.FourbarPositions):
+        pf = positions.analyse_positions(p, an.scales["l"], scene.find, scene.source)
+        an.positions, an.rows, an.warnings, an.solutions = pf, pf.rows, pf.warnings, pf.solutions
+        known = pf.names
+    else:
+        found = time_ratio.analyse_time_ratio(p, an.scales["l"], scene.find, scene.source)
+        an.drawn, an.exact, an.rows, an.warnings, an.solutions = (found.drawn, found.exact, found.rows,
+                                                                   found.warnings, found.solutions)
+        an.guide, an.slider = found.guide, found.slider
+        known = found.names
     wrong = [(f"find[{i}]", _unknown(n, known, len(an.exact))) for i, n in enumerate(scene.find) if n not in known]
     wrong += [(key, _unknown(n, known, len(an.exact)))
               for key, n, _ in measured_entries(scene, an.extra_measured) if n not in known]
@@ -105,7 +114,10 @@ def judge_synthesis(an: SynthesisAnalysis) -> list[Verdict]:
 
 def text_lines(an: SynthesisAnalysis) -> list[str]:
     """Under the table: each design's Grashof class and its re-analysis error."""
-    return [time_ratio.grashof_line(s, an.scene.problem.problem) for s in an.solutions]
+    p = an.scene.problem.problem
+    if isinstance(p, positions.CouplerPositions | positions.FourbarPositions):
+        return [positions.grashof_line(s) for s in an.solutions]
+    return [time_ratio.grashof_line(s, p) for s in an.solutions]
 
 
 __all__ = ["SynthesisAnalysis", "analyse_synthesis", "judge_synthesis", "text_lines"]

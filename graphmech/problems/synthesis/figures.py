@@ -137,6 +137,15 @@ def synthesis_sheet(an: SynthesisAnalysis, page: tuple[float, float], footer: tu
     mu = an.scales["l"]
     p = an.scene.problem.problem
     panels = []
+    if an.positions is not None:  # the positions task draws its own panel
+        from graphmech.problems.synthesis.positions import coupler_items, panel_title
+        from graphmech.problems.synthesis.positions import notes as positions_notes
+
+        name = panel_title(an.positions)
+        panels.append(Panel("design", name, tuple(coupler_items(an.positions)), positions_notes(an.positions, mu),
+                            row=0, scales=(("l", mu),)))
+        return Sheet(an.scene.title or name, tuple(panels), page, footer)
+    assert hasattr(p, "K")  # a time-ratio problem from here on
     if an.slider is not None:
         sc = an.slider
         notes = (scale_text("l", mu),

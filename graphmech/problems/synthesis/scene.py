@@ -19,12 +19,18 @@ from graphmech.problems.reader import (
     read_scales,
     read_tail,
 )
+from graphmech.problems.synthesis.positions import (
+    CouplerPositions,
+    FourbarPositions,
+    read_positions,
+)
 from graphmech.problems.synthesis.time_ratio import Problem, read_time_ratio
 
 #: What a synthesis scene may show: the construction with the designed linkages.
 SYNTHESIS_SHOW_CHOICES = ("design",)
-#: The tasks and their readers (the positions and function tasks of issue 20 join here).
-TASKS: dict[str, Callable[[Reader], Problem | None]] = {"time_ratio": read_time_ratio}
+#: The tasks and their readers (the function task of issue 20 joins here).
+TASKS: dict[str, Callable[[Reader], Problem | CouplerPositions | FourbarPositions | None]] = {
+    "time_ratio": read_time_ratio, "positions": read_positions}
 
 
 @dataclass(frozen=True)
@@ -32,7 +38,7 @@ class SynthesisScene:
     """What [synthesis] asks: its task and that task's problem (a :class:`TimeRatio` …)."""
 
     task: str
-    problem: Problem
+    problem: Problem | CouplerPositions | FourbarPositions
 
 
 def parse_synthesis_scene(data: Mapping[str, Any], source: str, top: Reader,

@@ -1,0 +1,496 @@
+"""The synthesis task ``positions``: a coupler led through two or three given positions.
+
+Read: ``[[synthesis.position]]`` tables, each the coupler's joints ``B`` and ``C`` (points); with
+two positions the frame line ``frame_through`` (a point) and ``frame_angle`` (its direction).
+Analysed: the construction (:func:`graphmech.methods.synthesis_positions.coupler_positions`, the
+perpendicular bisectors of B₁B₂, B₂B₃ meet at A, of C₁C₂, C₂C₃ at D) drawn at μl, its lengths and
+pivots measured against the exact circumcentres (:mod:`graphmech.exact.synthesis_positions`), and
+both designs re-analysed through the positions (the re-analysis error, γ_min), Grashof's class and
+the note (no Grashof crank; positions on two branches) said under the table.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from graphmech.errors import GraphmechError, SceneError
+from graphmech.problems.reader import MISSING
+
+if TYPE_CHECKING:
+    from graphmech.drawing.primitives import Primitive
+    from graphmech.exact.synthesis_positions import Reanalysis
+    from graphmech.methods.synthesis_positions import CouplerDesign, FourbarDesign
+    from graphmech.problems.judging import Row
+    from graphmech.problems.reader import Reader
+
+XY = tuple[float, float]
+#: The rows of a coupler design, with their units.
+COUPLER_NAMES = {"lAB": "m", "lBC": "m", "lCD": "m", "lAD": "m", "xA": "m", "yA": "m", "xD": "m", "yD": "m",
+                 "reanalysis_error": "", "gamma_min": "deg"}
+
+
+@dataclass(frozen=True)
+class CouplerPositions:
+    """The coupler's joints at each given position (m) and, with two, the frame line."""
+
+    B: tuple[XY, ...]
+    C: tuple[XY, ...]
+    frame: tuple[XY, float] | None
+    key: str
+
+
+@dataclass(frozen=True)
+class FourbarPositions:
+    """Corresponding positions of the input AB (φ_i) and the output DC (ψ_i): A, D (m), l_AB and,
+    with two positions, l_CD and the side of the bisector's foot C₁ is taken on."""
+
+    A: XY
+    D: XY
+    l_AB: float
+    phi: tuple[float, ...]
+    psi: tuple[float, ...]
+    l_CD: float | None
+    side: float
+    key: str
+
+
+def _angles(r: Reader, base: str) -> tuple[float, ...] | None:
+    g = r.quantity(base, "angle")
+    if g is None:
+        return None
+    n = len(g.value) if isinstance(g.value, list) and len(g.value) in (2, 3) else 3
+    xs = r.numbers(g.value, r.at(g.key), n, shape=f"[{base}1, {base}2, {base}3] or two")
+    return None if xs is None else tuple(g.si(x) for x in xs)
+
+
+def _read_fourbar(r: Reader) -> FourbarPositions | None:
+    A, D = r.pair("A"), r.pair("D")
+    a = r.scalar("l_AB", "length", positive=True)
+    phi, psi = _angles(r, "phi"), _angles(r, "psi")
+    c = r.scalar("l_CD", "length", required=False, positive=True)
+    side_raw = r.raw("side")
+    side = 1.0
+    if side_raw is not MISSING:
+        if side_raw not in (1, -1) or isinstance(side_raw, bool):
+            r.problem(r.at("side"), "must be 1 or -1 (C₁ ahead of or behind the foot of D on the bisector)")
+            return None
+        side = float(side_raw)
+    if phi is not None and psi is not None and len(phi) != len(psi):
+        r.problem(r.at(r.present("psi") or "psi"), f"{len(psi)} output angles for {len(phi)} input angles: "
+                                                   "give as many of each")
+        return None
+    if phi is not None and len(phi) == 2 and c is None:
+        r.problem(r.at("l_CD"), "with two positions C₁ lies anywhere on the bisector: give l_CD_mm (the output link)")
+    if phi is not None and len(phi) == 3 and (c is not None or side_raw is not MISSING):
+        r.problem(r.at(r.present("l_CD") or "side"), "three positions fix C₁: no l_CD or side is taken")
+    if A is None or D is None or a is None or phi is None or psi is None or (len(phi) == 2 and c is None):
+        return None
+    return FourbarPositions(A, D, a, phi, psi, c, side, r.at(r.present("psi") or "psi"))
+
+
+def read_positions(r: Reader) -> CouplerPositions | FourbarPositions | None:
+    """``[[synthesis.position]]`` with B and C; ``frame_through``, ``frame_angle`` with two. Or
+    the input/output form: ``A``, ``D``, ``l_AB``, ``phi``, ``psi`` (``l_CD``, ``side`` with two)."""
+    if r.present("phi") is not None:
+        return _read_fourbar(r)
+    tables = r.tables_at("position")
+    B: list[XY] = []
+    C: list[XY] = []
+    for t in tables:
+        b, c = t.pair("B"), t.pair("C")
+        t.finish()
+        if b is not None and c is not None:
+            B.append(b)
+            C.append(c)
+    key = r.at("position")
+    if len(tables) not in (2, 3):
+        r.problem(key, f"give two or three [[{key}]] tables (the coupler's positions), not {len(tables)}")
+    through = r.pair("frame_through", required=False)
+    angle = r.scalar("frame_angle", "angle", required=False)
+    if len(tables) == 2 and (through is None or angle is None):
+        r.problem(r.at("frame_through"), "with two positions each pivot lies anywhere on its bisector: "
+                                         "give frame_through_mm and frame_angle_deg (the frame line)")
+    if len(tables) == 3 and (r.present("frame_through") or r.present("frame_angle")):
+        r.problem(r.at(r.present("frame_through") or r.present("frame_angle") or "frame_through"),
+                  "three positions fix both pivots: no frame line is taken")
+    if len(B) != len(tables) or len(B) not in (2, 3):
+        return None
+    frame = (through, angle) if len(B) == 2 and through is not None and angle is not None else None
+    if len(B) == 2 and frame is None:
+        return None
+    return CouplerPositions(tuple(B), tuple(C), frame, key)
+
+
+def size(p: CouplerPositions | FourbarPositions) -> float:
+    """The drawing's spread, m: the given points and the pivots (where they exist; a refusal is
+    said by the analysis)."""
+    if isinstance(p, FourbarPositions):
+        pts = [p.A, p.D, *((p.A[0] + p.l_AB * math.cos(f), p.A[1] + p.l_AB * math.sin(f)) for f in p.phi)]
+        try:
+            z = exact_C1(p)
+            pts.append((z.real, z.imag))
+        except GraphmechError:
+            pass
+    else:
+        pts = [*p.B, *p.C]
+        try:
+            pts += [(z.real, z.imag) for z in exact_pivots(p)]
+        except GraphmechError:
+            pass
+    xs, ys = [x for x, _ in pts], [y for _, y in pts]
+    return max(max(xs) - min(xs), max(ys) - min(ys))
+
+
+def choose_scale(p: CouplerPositions | FourbarPositions) -> float:
+    """μl that draws the linkage about 100 mm across."""
+    from graphmech.scales import round_scale
+
+    return round_scale(size(p) / 100.0)
+
+
+def exact_pivots(p: CouplerPositions) -> tuple[complex, complex]:
+    """A and D by the exact side: the circumcentres solved as linear systems, or with two
+    positions the frame line's point equally far from B₁ and B₂ (C₁ and C₂)."""
+    from graphmech.exact.synthesis_positions import circumcentre
+
+    B = [complex(*b) for b in p.B]
+    C = [complex(*c) for c in p.C]
+    if p.frame is None:
+        return circumcentre(*B), circumcentre(*C)
+    P, u = complex(*p.frame[0]), complex(math.cos(p.frame[1]), math.sin(p.frame[1]))
+
+    def on_line(Q1: complex, Q2: complex) -> complex:
+        # |P + tu − Q1|² = |P + tu − Q2|²: linear in t
+        den = 2.0 * ((Q2 - Q1) * u.conjugate()).real
+        if den == 0.0:
+            raise GraphmechError("the frame line runs along a bisector: it does not cut it")
+        return P + u * (abs(Q2 - P) ** 2 - abs(Q1 - P) ** 2) / den
+
+    return on_line(B[0], B[1]), on_line(C[0], C[1])
+
+
+def exact_C1(p: FourbarPositions, near: complex | None = None) -> complex:
+    """C₁ by the exact side: B_i turned back about D by ψ_i − ψ₁ (complex rotation); the
+    circumcentre of B₁, B₂′, B₃′, or with two the point of the bisector of B₁B₂′ at l_CD from D
+    (of the two, the one nearer ``near``, the construction's: the side is a choice, not a value)."""
+    import cmath
+
+    from graphmech.exact.synthesis_positions import circumcentre
+
+    A, D = complex(*p.A), complex(*p.D)
+    B = [A + p.l_AB * cmath.exp(1j * f) for f in p.phi]
+    im = [D + (B[i] - D) * cmath.exp(-1j * (p.psi[i] - p.psi[0])) for i in range(len(B))]
+    if len(B) == 3:
+        return circumcentre(*im)
+    assert p.l_CD is not None
+    mid, u = (im[0] + im[1]) / 2, (im[1] - im[0]) * 1j
+    if abs(u) == 0.0:
+        raise GraphmechError("B1 and its inverted image B2' coincide: no bisector")
+    u /= abs(u)
+    t0 = ((D - mid) * u.conjugate()).real  # the foot of D on the bisector
+    h2 = p.l_CD ** 2 - abs(mid + t0 * u - D) ** 2
+    if h2 < 0.0:
+        raise GraphmechError(f"the arc of l_CD = {p.l_CD:.6g} m about D does not reach the bisector of B1B2'")
+    cands = [mid + (t0 + k * math.sqrt(h2)) * u for k in (1.0, -1.0)]
+    return min(cands, key=lambda z: abs(z - (near if near is not None else cands[0])))
+
+
+@dataclass
+class PositionsFound:
+    """The drawn design (mm), the exact pivots, both re-analyses, the rows, the warnings and what
+    ``check --json`` adds."""
+
+    drawn: CouplerDesign | FourbarDesign
+    mm: CouplerPositions | FourbarPositions
+    A: complex
+    D: complex
+    drawn_re: Reanalysis
+    exact_re: Reanalysis
+    rows: list[Row]
+    warnings: list[str]
+    solutions: list[dict[str, Any]]
+    names: list[str]
+
+
+def analyse_fourbar(p: FourbarPositions, mu: float, find: tuple[str, ...] = (), source: str = "") -> PositionsFound:
+    """The inversion at μl = ``mu`` against the exact C₁, both designs driven through φ_i."""
+    from graphmech.exact.synthesis_positions import reanalyse_fourbar
+    from graphmech.methods.synthesis_positions import fourbar_positions
+    from graphmech.problems.judging import Row
+
+    pm = FourbarPositions((p.A[0] / mu, p.A[1] / mu), (p.D[0] / mu, p.D[1] / mu), p.l_AB / mu, p.phi, p.psi,
+                          None if p.l_CD is None else p.l_CD / mu, p.side, p.key)
+    try:
+        fourbar_positions(p.A, p.D, p.l_AB, p.phi, p.psi, p.l_CD, p.side)  # refused in metres, as given
+        g = fourbar_positions(pm.A, pm.D, pm.l_AB, pm.phi, pm.psi, pm.l_CD, pm.side)
+        C1 = exact_C1(p, complex(*g.C1) * mu)
+    except GraphmechError as e:
+        raise SceneError([(p.key, str(e))], source) from None
+    A, D = complex(*p.A), complex(*p.D)
+    B1 = A + p.l_AB * complex(math.cos(p.phi[0]), math.sin(p.phi[0]))
+    ex = {"lBC": abs(C1 - B1), "lCD": abs(C1 - D), "xC1": C1.real, "yC1": C1.imag}
+    dr = {"lBC": g.l_BC, "lCD": g.l_CD, "xC1": g.C1[0], "yC1": g.C1[1]}
+    xr = reanalyse_fourbar(A, D, p.l_AB, ex["lBC"], ex["lCD"], p.phi, p.psi, C1)
+    gC1 = complex(*g.C1) * mu
+    gr = reanalyse_fourbar(A, D, p.l_AB, g.l_BC * mu, g.l_CD * mu, p.phi, p.psi, gC1)
+    size_m = max(p.l_AB, ex["lBC"], ex["lCD"], abs(D - A))
+    rows = [Row(n, "m", dr[n], mu, dr[n] * mu, ex[n], abs(dr[n] * mu - ex[n]) / size_m) for n in dr]
+    rows.append(Row("reanalysis_error", "", None, 1.0, gr.error, xr.error, abs(gr.error - xr.error)))
+    names = [*dr, "reanalysis_error"]
+    if gr.characteristics is not None and xr.characteristics is not None:
+        gg, ge = gr.characteristics.gamma_min, xr.characteristics.gamma_min
+        rows.append(Row("gamma_min", "deg", None, 1.0, math.degrees(gg), math.degrees(ge), abs(gg - ge) / math.pi))
+        names.append("gamma_min")
+    sol = {"name": "design", "lAB": p.l_AB, "lBC": ex["lBC"], "lCD": ex["lCD"], "lAD": abs(D - A),
+           "C1": [C1.real, C1.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
+           "reanalysis": {"error": xr.error, "gamma_deg": [math.degrees(x) for x in xr.gamma],
+                          **({} if xr.characteristics is None
+                             else {"gamma_min_deg": math.degrees(xr.characteristics.gamma_min)})},
+           "note": xr.note}
+    wanted = set(find) or None
+    return PositionsFound(g, pm, A, D, gr, xr, [r for r in rows if wanted is None or r.name in wanted],
+                          [xr.note] if xr.note else [], [sol], names)
+
+
+def analyse_positions(p: CouplerPositions | FourbarPositions, mu: float, find: tuple[str, ...] = (),
+                      source: str = "") -> PositionsFound:
+    """The construction at μl = ``mu`` against the exact pivots, both re-analysed."""
+    if isinstance(p, FourbarPositions):
+        return analyse_fourbar(p, mu, find, source)
+    from graphmech.exact.synthesis_positions import reanalyse_coupler
+    from graphmech.methods.synthesis_positions import coupler_positions
+    from graphmech.problems.judging import Row
+
+    def mm(q: XY) -> XY:
+        return (q[0] / mu, q[1] / mu)
+
+    pm = CouplerPositions(tuple(mm(b) for b in p.B), tuple(mm(c) for c in p.C),
+                          None if p.frame is None else (mm(p.frame[0]), p.frame[1]), p.key)
+    try:
+        coupler_positions(p.B, p.C, p.frame)  # refused in metres, as given
+        g = coupler_positions(pm.B, pm.C, pm.frame)
+        A, D = exact_pivots(p)
+    except GraphmechError as e:
+        raise SceneError([(p.key, str(e))], source) from None
+    B = [complex(*b) for b in p.B]
+    C = [complex(*c) for c in p.C]
+    xr = reanalyse_coupler(A, D, B, C)
+    gr = reanalyse_coupler(complex(*g.A) * mu, complex(*g.D) * mu, B, C)
+    ex = {"lAB": abs(B[0] - A), "lBC": abs(C[0] - B[0]), "lCD": abs(C[0] - D), "lAD": abs(D - A),
+          "xA": A.real, "yA": A.imag, "xD": D.real, "yD": D.imag}
+    dr = {"lAB": g.l_AB, "lBC": g.l_BC, "lCD": g.l_CD, "lAD": g.l_AD, "xA": g.A[0], "yA": g.A[1],
+          "xD": g.D[0], "yD": g.D[1]}
+    size_m = max(ex["lAB"], ex["lBC"], ex["lCD"], ex["lAD"])
+    rows = [Row(n, "m", dr[n], mu, dr[n] * mu, ex[n], abs(dr[n] * mu - ex[n]) / size_m) for n in dr]
+    rows.append(Row("reanalysis_error", "", None, 1.0, gr.error, xr.error, abs(gr.error - xr.error)))
+    names = [*dr, "reanalysis_error"]
+    if gr.characteristics is not None and xr.characteristics is not None:
+        gg, ge = gr.characteristics.gamma_min, xr.characteristics.gamma_min
+        rows.append(Row("gamma_min", "deg", None, 1.0, math.degrees(gg), math.degrees(ge), abs(gg - ge) / math.pi))
+        names.append("gamma_min")
+    warnings = [xr.note] if xr.note else []
+    sol = {"name": "design", **{n: ex[n] for n in ("lAB", "lBC", "lCD", "lAD")}, "A": [A.real, A.imag],
+           "D": [D.real, D.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
+           "reanalysis": {"error": xr.error, "gamma_deg": [math.degrees(x) for x in xr.gamma],
+                          **({} if xr.characteristics is None
+                             else {"gamma_min_deg": math.degrees(xr.characteristics.gamma_min)})},
+           "note": xr.note}
+    wanted = set(find) or None
+    return PositionsFound(g, pm, A, D, gr, xr, [r for r in rows if wanted is None or r.name in wanted], warnings,
+                          [sol], names)
+
+
+def grashof_line(s: dict[str, Any]) -> str:
+    """The design said under the table: Grashof's class, the re-analysis error, the note."""
+    cls = str(s["grashof"]).replace("_", " ")
+    note = f"; {s['note']}" if s["note"] else ""
+    return (f"design: l_AB = {s['lAB'] * 1000:.6g} mm, l_BC = {s['lBC'] * 1000:.6g} mm, l_CD = {s['lCD'] * 1000:.6g} mm, "
+            f"l_AD = {s['lAD'] * 1000:.6g} mm: {cls}; re-analysed through the positions: error "
+            f"{s['reanalysis']['error']:.1e}{note}")
+
+
+__all__ = [
+    "COUPLER_NAMES",
+    "PHRASES",
+    "CouplerPositions",
+    "PositionsFound",
+    "analyse_positions",
+    "choose_scale",
+    "coupler_items",
+    "exact_pivots",
+    "grashof_line",
+    "notes",
+    "read_positions",
+    "size",
+    "steps",
+]
+
+
+def coupler_items(pf: PositionsFound) -> list[Primitive]:
+    """The figure as the book draws it: the given positions B_iC_i, the perpendicular bisectors
+    to the pivots and the arcs about A through the B_i, about D through the C_i thin; the designed
+    linkage bold at position 1 (A B₁ C₁ D)."""
+    from graphmech.drawing.primitives import FixedPivot, Hinge, Label, Segment
+    from graphmech.methods.synthesis_positions import FourbarDesign
+
+    if isinstance(pf.drawn, FourbarDesign):
+        return fourbar_items(pf.drawn)
+    g, pm = pf.drawn, pf.mm
+    assert isinstance(pm, CouplerPositions)
+    n = len(pm.B)
+    items: list[Primitive] = []
+    for b in g.bisectors:  # from the chord's midpoint on through the pivot it meets
+        mid = b.line[:2]
+        pivot = g.A if b.label.startswith("bB") else g.D
+        t = (pivot[0] - mid[0]) * b.line[2] + (pivot[1] - mid[1]) * b.line[3]
+        ext = 8.0 if t >= 0 else -8.0
+        items.append(Segment((mid[0] - 0.3 * ext * b.line[2], mid[1] - 0.3 * ext * b.line[3]),
+                             (mid[0] + (t + ext) * b.line[2], mid[1] + (t + ext) * b.line[3]), "construction"))
+        items.append(Segment(b.ends[0], b.ends[1], "construction", dashed=True))
+    for centre, pts in ((g.A, pm.B), (g.D, pm.C)):
+        items.append(_arc_through(centre, pts))
+    if pm.frame is not None:
+        (fx, fy), ang = pm.frame
+        u = (math.cos(ang), math.sin(ang))
+        ts = [(q[0] - fx) * u[0] + (q[1] - fy) * u[1] for q in (g.A, g.D)]
+        lo, hi = min(ts) - 10.0, max(ts) + 10.0
+        items.append(Segment((fx + lo * u[0], fy + lo * u[1]), (fx + hi * u[0], fy + hi * u[1]), "construction",
+                             dashdot=True))
+    for i in range(1, n):  # the other positions as given, dashed
+        items += [Segment(pm.B[i], pm.C[i], "given", dashed=True), Hinge(pm.B[i]), Hinge(pm.C[i])]
+    B1, C1 = pm.B[0], pm.C[0]
+    items += [Segment(g.A, B1, "result"), Segment(B1, C1, "result"), Segment(C1, g.D, "result"),
+              Segment(g.A, g.D, "construction", dashdot=True), FixedPivot(g.A), FixedPivot(g.D), Hinge(B1), Hinge(C1),
+              Label("A", g.A, (_unit(g.A, B1), _unit(g.A, g.D))), Label("D", g.D, (_unit(g.D, C1), _unit(g.D, g.A)))]
+    items += [Label(f"B_{{{i + 1}}}", pm.B[i]) for i in range(n)] + [Label(f"C_{{{i + 1}}}", pm.C[i]) for i in range(n)]
+    return items
+
+
+def fourbar_items(g: FourbarDesign) -> list[Primitive]:
+    """The inversion as the book draws it: the input AB_i and the output's turns given, each B_i
+    turned back about D on a thin arc to B_i′, the bisectors of B₁B₂′ (B₂′B₃′) to C₁ (with two,
+    the arc of l_CD about D), the four-bar A B₁ C₁ D bold."""
+    from graphmech.drawing.primitives import (
+        Circle,
+        FixedPivot,
+        Hinge,
+        Label,
+        Polyline,
+        Segment,
+    )
+
+    j = g.construction
+    items: list[Primitive] = []
+    for v in j.inversions:  # the arc of the turn back about D, from B_i to B_i′
+        assert v.centre is not None
+        r = math.hypot(v.original[0] - v.centre[0], v.original[1] - v.centre[1])
+        a0 = math.atan2(v.original[1] - v.centre[1], v.original[0] - v.centre[0])
+        items.append(Polyline(tuple((v.centre[0] + r * math.cos(a0 + v.angle * k / 30),
+                                     v.centre[1] + r * math.sin(a0 + v.angle * k / 30)) for k in range(31)),
+                              "construction"))
+        items += [Segment(g.A, v.original, "given", dashed=True), Segment(g.D, v.image, "construction", dashed=True),
+                  Segment(g.D, v.original, "construction", dashed=True), Hinge(v.original), Hinge(v.image),
+                  Label(f"{v.label[0]}_{{{v.label[1:-1]}}}′", v.image),
+                  Label(f"{v.label[0]}_{{{v.label[1:-1]}}}", v.original)]
+    for b in j.bisectors:
+        mid = b.line[:2]
+        t = (g.C1[0] - mid[0]) * b.line[2] + (g.C1[1] - mid[1]) * b.line[3]
+        ext = 8.0 if t >= 0 else -8.0
+        items += [Segment(b.ends[0], b.ends[1], "construction", dashed=True),
+                  Segment((mid[0] - 0.3 * ext * b.line[2], mid[1] - 0.3 * ext * b.line[3]),
+                          (mid[0] + (t + ext) * b.line[2], mid[1] + (t + ext) * b.line[3]), "construction")]
+    items += [Circle(a.centre, a.radius, "construction") for a in j.arcs]
+    items += [Segment(g.A, g.B1, "result"), Segment(g.B1, g.C1, "result"), Segment(g.C1, g.D, "result"),
+              Segment(g.A, g.D, "construction", dashdot=True), FixedPivot(g.A), FixedPivot(g.D), Hinge(g.B1),
+              Hinge(g.C1), Label("A", g.A, (_unit(g.A, g.B1), _unit(g.A, g.D))),
+              Label("D", g.D, (_unit(g.D, g.C1), _unit(g.D, g.A))), Label("B_{1}", g.B1), Label("C_{1}", g.C1)]
+    return items
+
+
+def panel_title(pf: PositionsFound) -> str:
+    """The panel's (and a title-less sheet's) name."""
+    return ("Four-bar from corresponding positions, by inversion" if isinstance(pf.mm, FourbarPositions)
+            else "Coupler through given positions")
+
+
+def notes(pf: PositionsFound, mu: float) -> tuple[str, ...]:
+    """The dimensions under the panel, measured at μl."""
+    from graphmech.drawing.lettering import number, scale_text
+
+    g = pf.drawn
+    return (scale_text("l", mu),
+            (f"l_{{AB}} = {number(g.l_AB * mu * 1000)} mm, l_{{BC}} = {number(g.l_BC * mu * 1000)} mm, "
+             f"l_{{CD}} = {number(g.l_CD * mu * 1000)} mm, l_{{AD}} = {number(g.l_AD * mu * 1000)} mm"))
+
+
+def _unit(p: XY, q: XY) -> XY:
+    n = math.hypot(q[0] - p[0], q[1] - p[1]) or 1.0
+    return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
+
+
+def _arc_through(centre: XY, pts: tuple[XY, ...]) -> Primitive:
+    """The thin arc about ``centre`` through the points, a little past the first and the last."""
+    from graphmech.drawing.primitives import Polyline
+
+    r = math.hypot(pts[0][0] - centre[0], pts[0][1] - centre[1])
+    a = [math.atan2(q[1] - centre[1], q[0] - centre[0]) for q in pts]
+    a = [a[0] + math.remainder(x - a[0], 2 * math.pi) for x in a]
+    lo, hi = min(a) - 0.12, max(a) + 0.12
+    return Polyline(tuple((centre[0] + r * math.cos(lo + (hi - lo) * k / 40), centre[1] + r * math.sin(lo + (hi - lo) * k / 40))
+                          for k in range(41)), "construction")
+
+
+#: The positions task's phrases: key → (English, 中文, русский). 孙桓 §8: 按连杆给定位置设计.
+PHRASES: dict[str, tuple[str, str, str]] = {
+    "given": ("draw the coupler's {n} given positions B_iC_i (BC = {mm} mm)",
+              "画出连杆的{n}个给定位置B_iC_i（BC = {mm} mm）",
+              "строим {n} заданных положения шатуна B_iC_i (BC = {mm} mm)"),
+    "three": (("A is the centre of the circle through B₁, B₂, B₃: the perpendicular bisectors of B₁B₂ and B₂B₃ "
+               "meet at A; D likewise from C₁, C₂, C₃"),
+              "A为过B₁、B₂、B₃之圆的圆心：B₁B₂与B₂B₃的中垂线交于A；同理由C₁、C₂、C₃得D",
+              ("A — центр окружности через B₁, B₂, B₃: серединные перпендикуляры к B₁B₂ и B₂B₃ пересекаются в A; "
+               "D так же из C₁, C₂, C₃")),
+    "two": ("the frame line cuts the perpendicular bisector of B₁B₂ at A and that of C₁C₂ at D",
+            "机架线与B₁B₂的中垂线交于A，与C₁C₂的中垂线交于D",
+            "линия стойки пересекает серединный перпендикуляр к B₁B₂ в A, к C₁C₂ — в D"),
+    "measure": ("measure AB₁ = {a} mm, C₁D = {c} mm, AD = {d} mm: l_AB = {la} m, l_CD = {lc} m, l_AD = {ld} m",
+                "量得AB₁ = {a} mm，C₁D = {c} mm，AD = {d} mm：l_AB = {la} m，l_CD = {lc} m，l_AD = {ld} m",
+                "измеряем AB₁ = {a} mm, C₁D = {c} mm, AD = {d} mm: l_AB = {la} m, l_CD = {lc} m, l_AD = {ld} m"),
+    "inputs": ("draw A, D and the input AB_i (AB = {mm} mm) at its {n} given angles φ_i",
+               "作A、D及输入杆的{n}个给定位置AB_i（AB = {mm} mm）",
+               "строим A, D и входное звено AB_i (AB = {mm} mm) в {n} заданных углах φ_i"),
+    "invert three": (("turn each B_i about D back by the output's turn ψ_i − ψ₁ to B_i′ (the inversion); "
+                      "C₁ is the centre of the circle through B₁, B₂′, B₃′: the bisectors of B₁B₂′ and B₂′B₃′ meet there"),
+                     "将各B_i绕D反转ψ_i − ψ₁得B_i′（反转法）；B₁、B₂′、B₃′所定圆之圆心即C₁：B₁B₂′与B₂′B₃′的中垂线交于C₁",
+                     ("каждую B_i поворачиваем около D назад на ψ_i − ψ₁ в B_i′ (обращение движения); C₁ — центр "
+                      "окружности через B₁, B₂′, B₃′: серединные перпендикуляры к B₁B₂′ и B₂′B₃′ пересекаются в C₁")),
+    "invert two": (("turn B₂ about D back by ψ₂ − ψ₁ to B₂′ (the inversion); the arc of radius l_CD = {c} mm "
+                    "about D cuts the bisector of B₁B₂′ at C₁"),
+                   "将B₂绕D反转ψ₂ − ψ₁得B₂′（反转法）；以D为圆心、l_CD = {c} mm为半径作弧，与B₁B₂′的中垂线交于C₁",
+                   ("B₂ поворачиваем около D назад на ψ₂ − ψ₁ в B₂′ (обращение движения); дуга радиуса "
+                    "l_CD = {c} mm около D пересекает серединный перпендикуляр к B₁B₂′ в C₁")),
+    "measure C": ("measure B₁C₁ = {b} mm, C₁D = {c} mm: l_BC = {lb} m, l_CD = {lc} m",
+                  "量得B₁C₁ = {b} mm，C₁D = {c} mm：l_BC = {lb} m，l_CD = {lc} m",
+                  "измеряем B₁C₁ = {b} mm, C₁D = {c} mm: l_BC = {lb} m, l_CD = {lc} m"),
+    "recheck": ("check: the four-bar driven through the positions reaches them to {err} (of its longest link)",
+                "校核：该四杆机构经过给定位置，误差{err}（相对最长杆）",
+                "проверка: четырёхзвенник проходит заданные положения с погрешностью {err} (от длиннейшего звена)"),
+}
+
+
+def steps(pf: PositionsFound, mu: float, say: Callable[..., str], num: Callable[[float], str]) -> list[str]:
+    """The construction protocol's lines after μl is chosen: the numbers the check's rows read."""
+    g = pf.drawn
+    if isinstance(pf.mm, FourbarPositions):
+        n = len(pf.mm.phi)
+        return [say("inputs", n=str(n), mm=num(pf.mm.l_AB)),
+                say("invert three" if n == 3 else "invert two", **({} if pf.mm.l_CD is None else {"c": num(pf.mm.l_CD)})),
+                say("measure C", b=num(g.l_BC), c=num(g.l_CD), lb=num(g.l_BC * mu), lc=num(g.l_CD * mu)),
+                say("recheck", err=f"{pf.exact_re.error:.1e}")]
+    assert isinstance(pf.mm, CouplerPositions)
+    return [say("given", n=str(len(pf.mm.B)), mm=num(g.l_BC)), say("three" if pf.mm.frame is None else "two"),
+            say("measure", a=num(g.l_AB), c=num(g.l_CD), d=num(g.l_AD), la=num(g.l_AB * mu),
+                lc=num(g.l_CD * mu), ld=num(g.l_AD * mu)),
+            say("recheck", err=f"{pf.exact_re.error:.1e}")]
