@@ -111,6 +111,8 @@ def _angles(points: Sequence[complex], pivot: complex) -> np.ndarray:
 
 def _gamma(B: complex, C: complex, D: complex) -> float:
     """The transmission angle at C: ∠BCD or its supplement, whichever is acute."""
+    if C == D or B == C:
+        raise OutOfDomain("a link of the design has no length (C on D or on B): no transmission angle")
     delta = abs(cmath.phase((B - C) / (D - C)))
     return min(delta, math.pi - delta)
 

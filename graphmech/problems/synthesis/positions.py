@@ -85,6 +85,9 @@ def _read_fourbar(r: Reader) -> FourbarPositions | None:
         r.problem(r.at("l_CD"), "with two positions C₁ lies anywhere on the bisector: give l_CD_mm (the output link)")
     if phi is not None and len(phi) == 3 and (c is not None or side_raw is not MISSING):
         r.problem(r.at(r.present("l_CD") or "side"), "three positions fix C₁: no l_CD or side is taken")
+    if A is not None and D is not None and math.dist(A, D) <= 1e-12 * max(abs(x) for x in (*A, *D, 1e-3)):
+        r.problem(r.at(r.present("D") or "D"), "A and D coincide: the frame AD has no length")
+        return None
     if A is None or D is None or a is None or phi is None or psi is None or (len(phi) == 2 and c is None):
         return None
     return FourbarPositions(A, D, a, phi, psi, c, side, r.at(r.present("psi") or "psi"))

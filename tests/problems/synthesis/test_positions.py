@@ -13,7 +13,7 @@ from graphmech.problems.synthesis.check import (
 from graphmech.problems.synthesis.figures import synthesis_sheet
 from graphmech.problems.synthesis.positions import CouplerPositions, exact_pivots
 from graphmech.problems.synthesis.steps import protocol
-from tests.conftest import ROOT
+from tests.conftest import ROOT, run_cli
 from tests.scenes import parse_text, replace_once
 
 THREE = (ROOT / "figures" / "scenes" / "synthesis.coupler_three_positions.toml").read_text(encoding="utf-8")
@@ -197,3 +197,12 @@ def test_the_inversion_is_drawn_with_its_arcs_and_images():
     items = synthesis_sheet(analyse_synthesis(parse_text(FOURBAR)), (297.0, 210.0)).panels[0].items
     assert len([i for i in items if isinstance(i, Polyline)]) == 2  # B₂ → B₂′, B₃ → B₃′ about D
     assert {"B_{2}′", "B_{3}′", "C_{1}"} <= {i.text for i in items if isinstance(i, Label)}
+
+
+@pytest.mark.parametrize("A", ["[100, 0]", "[0, 0]"])
+def test_a_frame_of_no_length_is_refused_at_D(A, tmp_path):
+    """A and D coinciding (found by the mutation campaign: the re-analysis divided by CD = 0)."""
+    p = tmp_path / "f.toml"
+    p.write_text(f'[synthesis]\ntask = "positions"\nA_mm = {A}\nD_mm = {A}\nl_AB_mm = 30\n'
+                 'phi_deg = [45, 90, 135]\npsi_deg = [60, 80, 105]\n', encoding="utf-8")
+    assert run_cli("check", str(p)) == (2, "", "f.toml: synthesis.D_mm: A and D coincide: the frame AD has no length\n")
