@@ -65,11 +65,38 @@ def _angles(r: Reader, base: str) -> tuple[float, ...] | None:
     return None if xs is None else tuple(g.si(x) for x in xs)
 
 
+#: The largest coordinate or length a positions design takes, m: beyond it the bisectors' and the
+#: re-analysis's squares leave double precision (and no mechanism is a thousand kilometres across).
+MAX_SIZE = 1e6
+
+
+def _sized(r: Reader, base: str, value: XY | float | None) -> XY | float | None:
+    """``value`` unless a coordinate or a length exceeds :data:`MAX_SIZE` (then said at its key)."""
+    if value is None:
+        return None
+    xs = value if isinstance(value, tuple) else (value,)
+    if any(abs(x) > MAX_SIZE for x in xs):
+        r.problem(r.at(r.present(base) or base), f"{max(abs(x) for x in xs):g} m is beyond {MAX_SIZE:g} m: "
+                                                 "too large for a linkage to be designed in double precision")
+        return None
+    return value
+
+
+def _point(r: Reader, base: str, required: bool = True) -> XY | None:
+    v = _sized(r, base, r.pair(base, required=required))
+    return v if isinstance(v, tuple) else None
+
+
+def _length(r: Reader, base: str, required: bool = True) -> float | None:
+    v = _sized(r, base, r.scalar(base, "length", positive=True, required=required))
+    return v if isinstance(v, float) else None
+
+
 def _read_fourbar(r: Reader) -> FourbarPositions | None:
-    A, D = r.pair("A"), r.pair("D")
-    a = r.scalar("l_AB", "length", positive=True)
+    A, D = _point(r, "A"), _point(r, "D")
+    a = _length(r, "l_AB")
     phi, psi = _angles(r, "phi"), _angles(r, "psi")
-    c = r.scalar("l_CD", "length", required=False, positive=True)
+    c = _length(r, "l_CD", required=False)
     side_raw = r.raw("side")
     side = 1.0
     if side_raw is not MISSING:
@@ -102,7 +129,7 @@ def read_positions(r: Reader) -> CouplerPositions | FourbarPositions | None:
     B: list[XY] = []
     C: list[XY] = []
     for t in tables:
-        b, c = t.pair("B"), t.pair("C")
+        b, c = _point(t, "B"), _point(t, "C")
         t.finish()
         if b is not None and c is not None:
             B.append(b)
@@ -110,7 +137,7 @@ def read_positions(r: Reader) -> CouplerPositions | FourbarPositions | None:
     key = r.at("position")
     if len(tables) not in (2, 3):
         r.problem(key, f"give two or three [[{key}]] tables (the coupler's positions), not {len(tables)}")
-    through = r.pair("frame_through", required=False)
+    through = _point(r, "frame_through", required=False)
     angle = r.scalar("frame_angle", "angle", required=False)
     if len(tables) == 2 and (through is None or angle is None):
         r.problem(r.at("frame_through"), "with two positions each pivot lies anywhere on its bisector: "

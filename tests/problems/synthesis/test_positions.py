@@ -206,3 +206,19 @@ def test_a_frame_of_no_length_is_refused_at_D(A, tmp_path):
     p.write_text(f'[synthesis]\ntask = "positions"\nA_mm = {A}\nD_mm = {A}\nl_AB_mm = 30\n'
                  'phi_deg = [45, 90, 135]\npsi_deg = [60, 80, 105]\n', encoding="utf-8")
     assert run_cli("check", str(p)) == (2, "", "f.toml: synthesis.D_mm: A and D coincide: the frame AD has no length\n")
+
+
+@pytest.mark.parametrize("edit,key", [
+    ('D_mm = [100, 0]', "synthesis.D_mm"),
+    ('l_AB_mm = 30', "synthesis.l_AB_mm"),
+])
+def test_a_size_beyond_double_precision_is_refused_at_its_key(edit, key, tmp_path):
+    """Coordinates and lengths of 1e300 mm (found by the mutation campaign: the bisectors and the
+    re-analysis overflowed) are refused where they are written."""
+    text = ('[synthesis]\ntask = "positions"\nA_mm = [0, 0]\nD_mm = [100, 0]\nl_AB_mm = 30\n'
+            'phi_deg = [45, 90, 135]\npsi_deg = [60, 80, 105]\n')
+    p = tmp_path / "s.toml"
+    p.write_text(text.replace(edit, edit.split("=")[0] + ("= [1e300, 0]" if "[" in edit else "= 1e300")),
+                 encoding="utf-8")
+    code, out, err = run_cli("check", str(p))
+    assert (code, out) == (2, "") and err.startswith(f"s.toml: {key}: 1e+297 m is beyond 1e+06 m")
