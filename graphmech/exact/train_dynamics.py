@@ -87,9 +87,11 @@ def _arm(train: GearTrain, module: float, planet: str, axes: Mapping[str, str],
 def reduced_inertia(train: GearTrain, omega: Mapping[str, float], bodies: Sequence[Body], to: str,
                     module: float, axes: Mapping[str, str] | None = None,
                     modules: Mapping[str, float] | None = None) -> float:
-    """J_red = 2T/ω_r² (kg·m²)."""
+    """J_red = 2T/ω_r² (kg·m²), T taken at the speeds divided by ω_r (the same J_red: T scales
+    as ω², and ω_r² may underflow where the ratios do not)."""
     wr = _speed_of(train, omega, to)
-    return 2.0 * kinetic_energy(train, omega, bodies, module, axes, modules) / (wr * wr)
+    unit = {k: v / wr for k, v in omega.items()}
+    return 2.0 * kinetic_energy(train, unit, bodies, module, axes, modules)
 
 
 def reduced_moment(train: GearTrain, omega: Mapping[str, float], bodies: Sequence[Body], to: str,

@@ -45,6 +45,10 @@ from graphmech.problems.gears.figures import clipped_circle, dimension
 from graphmech.problems.reader import MISSING, Reader, page_size, type_name
 from graphmech.scales import round_scale
 
+#: |x| above this is no gear anyone cuts (the tooth is pointed long before); the gear reader's
+#: limit too (problems/gears/scene.py imports this module, so the constant lives here).
+MAX_SHIFT = 10.0
+
 #: problems/gears/check.py's GearAnalysis (not imported: check imports this module)
 GearAnalysis = Any
 
@@ -126,7 +130,12 @@ def read_generation(g: Reader, module: float | None) -> GenerationReading | None
         g.problem(t.at(t.present("blank_speed") or "blank_speed"), f"r = v/ω gives z = 2r/m = {z:.6g}: no gear")
         return posed
     z_drawn = max(1, round(z))
-    return GenerationReading(model, z_drawn, (L - module * z_drawn / 2.0) / module)
+    x = (L - module * z_drawn / 2.0) / module
+    if abs(x) > MAX_SHIFT:  # the cutter's datum line that far from the rolling circle cuts no gear
+        g.problem(t.at(t.present("datum_distance") or "datum_distance"),
+                  f"L = r + xm gives x = {x:.6g}: a shift coefficient beyond ±{MAX_SHIFT:g} is no gear's")
+        return posed
+    return GenerationReading(model, z_drawn, x)
 
 
 # ------------------------------------------------------------------------------ the check

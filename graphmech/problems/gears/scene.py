@@ -25,7 +25,7 @@ from graphmech.mechanisms.gear import (
     SpurGear,
     ToothSystem,
 )
-from graphmech.problems.gears.generation import GENERATION_QUANTITIES, read_generation
+from graphmech.problems.gears.generation import GENERATION_QUANTITIES, MAX_SHIFT, read_generation
 from graphmech.problems.gears.spatial_scene import (
     read_spatial,
     spatial_names,
@@ -74,8 +74,6 @@ SHIFT_WORDS = ("least", "least_exact", "for_centre_distance", "repair")
 MAX_Z = 100_000
 #: The module's sane range, m (a watch gear 0.05 mm … a mill gear 100 mm, with margins).
 MODULE_RANGE = (1e-6, 10.0)
-#: |x| above this is no gear anyone cuts (the tooth is pointed long before).
-MAX_SHIFT = 10.0
 #: The radius in a name ``s_k@85``: mm.
 RADIUS_AT = re.compile(r"[0-9]+(?:\.[0-9]+)?")
 

@@ -57,6 +57,9 @@ MAX_MESHES = 120
 #: The largest input speed, rad/s: beyond it the reduced moments and the powers leave double
 #: precision (ω², M·ω), and no machine turns so fast.
 MAX_SPEED = 1e12
+#: The slowest input speed that is not 0, rad/s: below it the speeds through a train of 10⁶ run
+#: into the subnormal numbers, where a ratio keeps few digits.
+MIN_SPEED = 1e-200
 SPEED_UNITS = {"rpm": " r/min", "rad_s": " rad/s"}
 #: A mobility in words.
 MOBILITY_WORDS = {0: "it cannot move", 1: "planetary or ordinary: one input", 2: "a differential: two inputs"}
@@ -428,6 +431,12 @@ def _read_train(t: Reader) -> TrainScene | None:
             ir.problem(path + (f"[{fast}]" if isinstance(given.value, list) else ""),
                        f"{float(raw[fast]):g}{SPEED_UNITS.get(given.key.removeprefix('speed_'), '')} is faster than the work limit of {MAX_SPEED:g} rad/s (the powers and "
                        "reduced moments would leave double precision)")
+            continue
+        slow = next((i for i, v in enumerate(values) if 0.0 < abs(v) < MIN_SPEED), None)
+        if slow is not None:
+            ir.problem(path + (f"[{slow}]" if isinstance(given.value, list) else ""),
+                       f"{float(raw[slow]):g}{SPEED_UNITS.get(given.key.removeprefix('speed_'), '')} is slower than "
+                       f"{MIN_SPEED:g} rad/s: the train's speeds would underflow double precision (0 is at rest)")
             continue
         if members[who][0] is not None:
             ir.problem(ir.at("member"), f"member {who} is a planet of {members[who][0]}: drive its carrier or a "

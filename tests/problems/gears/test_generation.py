@@ -51,6 +51,9 @@ def test_a_blank_speed_and_datum_distance_give_z_and_x():
     ("m_mm = 4\nz = 15\n" + GEN + "cutter = 1", "gear.generation.cutter", "unknown key"),
     ("m_mm = 4\n" + GEN + "blank_speed_rpm = 1e-9\ndatum_distance_mm = 30", "gear.generation.blank_speed_rpm",
      "no gear"),
+    # found by a mutation campaign: x = (L − r)/m of 4.6e18 reached the involute function unchecked
+    ("m_mm = 4\n" + GEN + "blank_speed_rpm = 0.7958\ndatum_distance_mm = 18446744073709551616",
+     "gear.generation.datum_distance_mm", "beyond ±10 is no gear's"),
 ])
 def test_bad_generation_tables_are_refused_in_one_line(body, where, words):
     path, reason = only_problem(f"[gear]\n{body}\n", "g.toml")

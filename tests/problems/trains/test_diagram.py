@@ -77,10 +77,10 @@ speed_rpm = {n}
 """
 
 
-@pytest.mark.parametrize("n", ["100", "1e-300", "0"])
+@pytest.mark.parametrize("n", ["100", "1e-150", "0"])
 def test_extreme_trains_stay_on_the_sheet(tmp_path, n):
     """A sun of 1 tooth in a ring of 99 999 (the sun's ray 10⁵ times steeper than the carrier's), a
-    speed of 10⁻³⁰⁰ r/min, a train at rest: the scales are chosen so that the sheet holds them."""
+    speed of 10⁻¹⁵⁰ r/min, a train at rest: the scales are chosen so that the sheet holds them."""
     p = tmp_path / "p.toml"
     p.write_text(PLANET_1_49999.format(n=n), encoding="utf-8")
     code, _out, err = run_cli("render", str(p), "-o", str(tmp_path / "p.svg"))

@@ -395,3 +395,13 @@ def test_a_train_at_the_work_limit_checks():
     an, _, _, _ = check(parse_scene(doc, "t.toml"))
     # 59 external meshes of equal gears: the last turns against the first, as fast
     assert [(r.name, r.exact) for r in an.rows] == [(f"n{MAX_GEARS}", pytest.approx(-100.0, rel=1e-12))]
+
+
+def test_a_subnormal_input_speed_is_refused_at_its_key(tmp_path):
+    """−5e-324 rad/s (found by a mutation campaign: the reduced inertia divided by ω² = 0): the
+    speeds through the train would keep a digit or none."""
+    p = write(tmp_path, SIMPLE.format(find='["n2"]', extra="", mesh="").replace("speed_rpm = 100", "speed_rad_s = -5e-324"))
+    code, out, err = run_cli("check", str(p))
+    assert (code, out) == (2, "")
+    assert err == ("t.toml: train.input[0].speed_rad_s: -4.94066e-324 rad/s is slower than 1e-200 rad/s: the train's "
+                   "speeds would underflow double precision (0 is at rest)\n")
