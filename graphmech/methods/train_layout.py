@@ -37,7 +37,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from graphmech.errors import NoSolution, OutOfDomain
-from graphmech.mechanisms.gear_train import GearTrain, Mesh
+from graphmech.mechanisms.gear_train import AXES, GearTrain, Mesh
 
 XYZ = tuple[float, float, float]
 
@@ -48,9 +48,8 @@ WORM_Q = 10.0
 #: A loop closes when its two positions agree to this fraction of the train's largest radius.
 CLOSURE_REL = 1e-9
 
-#: The unit vectors the scene names an axis or a direction by.
-DIRECTIONS: Mapping[str, XYZ] = {"+x": (1.0, 0.0, 0.0), "-x": (-1.0, 0.0, 0.0), "+y": (0.0, 1.0, 0.0),
-                                 "-y": (0.0, -1.0, 0.0), "+z": (0.0, 0.0, 1.0), "-z": (0.0, 0.0, -1.0)}
+#: The unit vectors the scene names an axis or a direction by (the model's one table, as floats).
+DIRECTIONS: Mapping[str, XYZ] = {k: (float(v[0]), float(v[1]), float(v[2])) for k, v in AXES.items()}
 
 
 def _add(p: XYZ, q: XYZ, k: float = 1.0) -> XYZ:

@@ -244,11 +244,25 @@ class PositionsFound:
     names: list[str]
 
 
+def _rows(drawn: dict[str, float], exact: dict[str, float], mu: float, size_m: float, gr: Reanalysis,
+          xr: Reanalysis) -> tuple[list[Row], list[str]]:
+    """Both forms' rows: each length and coordinate drawn (mm × μl) against exact (its error
+    relative to the design's largest link), then the re-analysis error and γ_min of the drawn
+    design against the exact one; and the names they answer."""
+    from graphmech.problems.judging import Row
+
+    rows = [Row(n, "m", d, mu, d * mu, exact[n], abs(d * mu - exact[n]) / size_m) for n, d in drawn.items()]
+    rows.append(Row("reanalysis_error", "", None, 1.0, gr.error, xr.error, abs(gr.error - xr.error)))
+    if gr.characteristics is not None and xr.characteristics is not None:
+        gg, ge = gr.characteristics.gamma_min, xr.characteristics.gamma_min
+        rows.append(Row("gamma_min", "deg", None, 1.0, math.degrees(gg), math.degrees(ge), abs(gg - ge) / math.pi))
+    return rows, [r.name for r in rows]
+
+
 def analyse_fourbar(p: FourbarPositions, mu: float, find: tuple[str, ...] = (), source: str = "") -> PositionsFound:
     """The inversion at μl = ``mu`` against the exact C₁, both designs driven through φ_i."""
     from graphmech.exact.synthesis_positions import reanalyse_fourbar
     from graphmech.methods.synthesis_positions import fourbar_positions
-    from graphmech.problems.judging import Row
 
     pm = FourbarPositions((p.A[0] / mu, p.A[1] / mu), (p.D[0] / mu, p.D[1] / mu), p.l_AB / mu, p.phi, p.psi,
                           None if p.l_CD is None else p.l_CD / mu, p.side, p.key)
@@ -265,14 +279,7 @@ def analyse_fourbar(p: FourbarPositions, mu: float, find: tuple[str, ...] = (), 
     xr = reanalyse_fourbar(A, D, p.l_AB, ex["lBC"], ex["lCD"], p.phi, p.psi, C1)
     gC1 = complex(*g.C1) * mu
     gr = reanalyse_fourbar(A, D, p.l_AB, g.l_BC * mu, g.l_CD * mu, p.phi, p.psi, gC1)
-    size_m = max(p.l_AB, ex["lBC"], ex["lCD"], abs(D - A))
-    rows = [Row(n, "m", dr[n], mu, dr[n] * mu, ex[n], abs(dr[n] * mu - ex[n]) / size_m) for n in dr]
-    rows.append(Row("reanalysis_error", "", None, 1.0, gr.error, xr.error, abs(gr.error - xr.error)))
-    names = [*dr, "reanalysis_error"]
-    if gr.characteristics is not None and xr.characteristics is not None:
-        gg, ge = gr.characteristics.gamma_min, xr.characteristics.gamma_min
-        rows.append(Row("gamma_min", "deg", None, 1.0, math.degrees(gg), math.degrees(ge), abs(gg - ge) / math.pi))
-        names.append("gamma_min")
+    rows, names = _rows(dr, ex, mu, max(p.l_AB, ex["lBC"], ex["lCD"], abs(D - A)), gr, xr)
     sol = {"name": "design", "lAB": p.l_AB, "lBC": ex["lBC"], "lCD": ex["lCD"], "lAD": abs(D - A),
            "C1": [C1.real, C1.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
            "reanalysis": {"error": xr.error, "gamma_deg": [math.degrees(x) for x in xr.gamma],
@@ -291,7 +298,6 @@ def analyse_positions(p: CouplerPositions | FourbarPositions, mu: float, find: t
         return analyse_fourbar(p, mu, find, source)
     from graphmech.exact.synthesis_positions import reanalyse_coupler
     from graphmech.methods.synthesis_positions import coupler_positions
-    from graphmech.problems.judging import Row
 
     def mm(q: XY) -> XY:
         return (q[0] / mu, q[1] / mu)
@@ -312,14 +318,7 @@ def analyse_positions(p: CouplerPositions | FourbarPositions, mu: float, find: t
           "xA": A.real, "yA": A.imag, "xD": D.real, "yD": D.imag}
     dr = {"lAB": g.l_AB, "lBC": g.l_BC, "lCD": g.l_CD, "lAD": g.l_AD, "xA": g.A[0], "yA": g.A[1],
           "xD": g.D[0], "yD": g.D[1]}
-    size_m = max(ex["lAB"], ex["lBC"], ex["lCD"], ex["lAD"])
-    rows = [Row(n, "m", dr[n], mu, dr[n] * mu, ex[n], abs(dr[n] * mu - ex[n]) / size_m) for n in dr]
-    rows.append(Row("reanalysis_error", "", None, 1.0, gr.error, xr.error, abs(gr.error - xr.error)))
-    names = [*dr, "reanalysis_error"]
-    if gr.characteristics is not None and xr.characteristics is not None:
-        gg, ge = gr.characteristics.gamma_min, xr.characteristics.gamma_min
-        rows.append(Row("gamma_min", "deg", None, 1.0, math.degrees(gg), math.degrees(ge), abs(gg - ge) / math.pi))
-        names.append("gamma_min")
+    rows, names = _rows(dr, ex, mu, max(ex["lAB"], ex["lBC"], ex["lCD"], ex["lAD"]), gr, xr)
     warnings = [xr.note] if xr.note else []
     sol = {"name": "design", **{n: ex[n] for n in ("lAB", "lBC", "lCD", "lAD")}, "A": [A.real, A.imag],
            "D": [D.real, D.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,

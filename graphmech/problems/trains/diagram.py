@@ -15,6 +15,7 @@ from graphmech.problems.reader import Scene
 from graphmech.problems.trains.names import parse_name
 from graphmech.problems.trains.scene import TrainScene
 from graphmech.scales import round_scale, round_scale_below
+from graphmech.tolerances import POLE_RANGE_MM  # a chosen H stays within what a scene may state
 
 #: The axial pitch of the schematic's slots on the paper, mm.
 SLOT_MM = 16.0
@@ -25,8 +26,6 @@ H_LEAST = 10.0
 #: The longest pole distance chosen, mm, and the height the lines' diagram and H share at most: with
 #: the notes below they fill the sheet's height.
 H_MOST, TALL_MM = 40.0, 115.0
-#: The pole distances a scene may state, mm (the reader's range): a chosen one stays within them.
-H_STATED = (1.0, 1000.0)
 
 
 @dataclass(frozen=True)
@@ -115,10 +114,10 @@ def train_velocity(lay: TrainLayout, scene: Scene[TrainScene], mu_l: float) -> T
         H = mu_v / (mu_l * scene.scales["omega"])
     elif smax > 0.0:
         fits = OMEGA_MM * mu_v / smax
-        least = H_LEAST if "v" not in scene.scales else H_STATED[0]
+        least = H_LEAST if "v" not in scene.scales else POLE_RANGE_MM[0]
         ys = [p[1] for ln in probe.lines.values() for p in ln.points]
         most = max(5.0 * math.floor(min(H_MOST, TALL_MM - (max(ys) - min(ys))) / 5.0), least)  # whole 5 mm
-        H = min(max(round_scale_below(fits), least), most, H_STATED[1])
+        H = min(max(round_scale_below(fits), least), most, POLE_RANGE_MM[1])
     else:
         H = 20.0
     return velocity_diagram(lay, mu_l, mu_v, H)
