@@ -27,6 +27,8 @@ Meshing = Literal["external", "internal", "rack", "helical", "bevel", "worm"]
 MESHINGS: tuple[Meshing, ...] = ("external", "internal", "rack", "helical", "bevel", "worm")
 #: The meshings whose teeth are not straight spur teeth (their geometry is :class:`SpatialPair`'s).
 SPATIAL_MESHINGS: tuple[Meshing, ...] = ("helical", "bevel", "worm")
+#: |x| above this is no gear anyone cuts (the tooth is pointed long before): the readers' limit.
+MAX_SHIFT = 10.0
 
 
 @dataclass(frozen=True)

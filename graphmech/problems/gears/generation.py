@@ -38,16 +38,12 @@ from graphmech.errors import GraphmechError, SceneError
 from graphmech.exact import gear as ex
 from graphmech.exact import rack_generation as erg
 from graphmech.exact.profile_shift import x_min_book, z_min_book
-from graphmech.mechanisms.gear import RackGeneration, SpurGear, ToothSystem
+from graphmech.mechanisms.gear import MAX_SHIFT, RackGeneration, SpurGear, ToothSystem
 from graphmech.methods import involute as inv
 from graphmech.methods import rack_generation as rg
 from graphmech.problems.gears.figures import clipped_circle, dimension
 from graphmech.problems.reader import MISSING, Reader, page_size, type_name
 from graphmech.scales import round_scale
-
-#: |x| above this is no gear anyone cuts (the tooth is pointed long before); the gear reader's
-#: limit too (problems/gears/scene.py imports this module, so the constant lives here).
-MAX_SHIFT = 10.0
 
 #: problems/gears/check.py's GearAnalysis (not imported: check imports this module)
 GearAnalysis = Any

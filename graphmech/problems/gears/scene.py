@@ -17,6 +17,7 @@ from graphmech.errors import GraphmechError
 from graphmech.exact import gear as ex
 from graphmech.exact import profile_shift as ps
 from graphmech.mechanisms.gear import (
+    MAX_SHIFT,
     MESHINGS,
     SPATIAL_MESHINGS,
     GearSet,
@@ -25,7 +26,7 @@ from graphmech.mechanisms.gear import (
     SpurGear,
     ToothSystem,
 )
-from graphmech.problems.gears.generation import GENERATION_QUANTITIES, MAX_SHIFT, read_generation
+from graphmech.problems.gears.generation import GENERATION_QUANTITIES, read_generation
 from graphmech.problems.gears.spatial_scene import (
     read_spatial,
     spatial_names,
