@@ -29,8 +29,15 @@ if TYPE_CHECKING:
         DrawnSlider,
     )
     from graphmech.problems.reader import Scene
-    from graphmech.problems.synthesis.positions import PositionsFound
     from graphmech.problems.synthesis.scene import SynthesisScene
+
+
+#: The tasks that analyse, word and draw themselves, by task name. Each module gives ``size(p)``,
+#: ``choose_scale(p)``, ``analyse(p, mu, find, source)`` (a record with ``rows``, ``warnings``,
+#: ``solutions``, ``names``), ``lines(found)``, ``panels(found, mu)`` (the sheet's title and
+#: panels), ``steps(found, mu, say, num)`` and ``PHRASES``. The time-ratio task predates it and is
+#: wired below by hand.
+SELF_CONTAINED: dict[str, Any] = {"positions": positions}
 
 
 @dataclass
@@ -49,8 +56,8 @@ class SynthesisAnalysis:
     guide: DrawnGuideBar | None = None
     slider: DrawnSlider | None = None
     extra_measured: tuple[tuple[str, float], ...] = ()
-    #: the positions task's design (None for the time-ratio task)
-    positions: PositionsFound | None = None
+    #: a self-contained task's record (:data:`SELF_CONTAINED`; None for the time-ratio task)
+    found: Any = None
 
     def scale_notes(self) -> list[str]:
         return [format_scale(k, v) + ("" if k in self.stated else " (chosen)") for k, v in self.scales.items()]
@@ -59,8 +66,9 @@ class SynthesisAnalysis:
 def analyse_synthesis(scene: Scene[SynthesisScene], extra: tuple[tuple[str, float], ...] = ()) -> SynthesisAnalysis:
     """Draw the scene's designs and build the check table."""
     an = SynthesisAnalysis(scene, extra_measured=tuple(extra))
-    p = scene.problem.problem
-    task = positions if isinstance(p, positions.CouplerPositions | positions.FourbarPositions) else time_ratio
+    p: Any = scene.problem.problem
+    own = SELF_CONTAINED.get(scene.problem.task)
+    task: Any = own or time_ratio
     if "l" in scene.scales:
         an.scales["l"] = scene.scales["l"]
         an.stated.add("l")
@@ -69,9 +77,9 @@ def analyse_synthesis(scene: Scene[SynthesisScene], extra: tuple[tuple[str, floa
             raise SceneError([("scales", why)], scene.source)
     else:
         an.scales["l"] = task.choose_scale(p)
-    if isinstance(p, positions.CouplerPositions | positions.FourbarPositions):
-        pf = positions.analyse_positions(p, an.scales["l"], scene.find, scene.source)
-        an.positions, an.rows, an.warnings, an.solutions = pf, pf.rows, pf.warnings, pf.solutions
+    if own is not None:
+        pf = own.analyse(p, an.scales["l"], scene.find, scene.source)
+        an.found, an.rows, an.warnings, an.solutions = pf, pf.rows, pf.warnings, pf.solutions
         known = pf.names
     else:
         found = time_ratio.analyse_time_ratio(p, an.scales["l"], scene.find, scene.source)
@@ -114,10 +122,11 @@ def judge_synthesis(an: SynthesisAnalysis) -> list[Verdict]:
 
 def text_lines(an: SynthesisAnalysis) -> list[str]:
     """Under the table: each design's Grashof class and its re-analysis error."""
-    p = an.scene.problem.problem
-    if isinstance(p, positions.CouplerPositions | positions.FourbarPositions):
-        return [positions.grashof_line(s) for s in an.solutions]
+    p: Any = an.scene.problem.problem
+    own = SELF_CONTAINED.get(an.scene.problem.task)
+    if own is not None:
+        return list(own.lines(an.found))
     return [time_ratio.grashof_line(s, p) for s in an.solutions]
 
 
-__all__ = ["SynthesisAnalysis", "analyse_synthesis", "judge_synthesis", "text_lines"]
+__all__ = ["SELF_CONTAINED", "SynthesisAnalysis", "analyse_synthesis", "judge_synthesis", "text_lines"]

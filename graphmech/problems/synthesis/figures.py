@@ -134,17 +134,15 @@ def _dist(p: _XY, q: _XY) -> float:
 
 def synthesis_sheet(an: SynthesisAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
     """The sheet: one panel per design, its dimensions in the notes."""
+    from graphmech.problems.synthesis.check import SELF_CONTAINED
+
     mu = an.scales["l"]
     p = an.scene.problem.problem
     panels = []
-    if an.positions is not None:  # the positions task draws its own panel
-        from graphmech.problems.synthesis.positions import coupler_items, panel_title
-        from graphmech.problems.synthesis.positions import notes as positions_notes
-
-        name = panel_title(an.positions)
-        panels.append(Panel("design", name, tuple(coupler_items(an.positions)), positions_notes(an.positions, mu),
-                            row=0, scales=(("l", mu),)))
-        return Sheet(an.scene.title or name, tuple(panels), page, footer)
+    own = SELF_CONTAINED.get(an.scene.problem.task)
+    if own is not None:  # the task draws its own panels
+        name, own_panels = own.panels(an.found, mu)
+        return Sheet(an.scene.title or name, tuple(own_panels), page, footer)
     assert hasattr(p, "K")  # a time-ratio problem from here on
     if an.slider is not None:
         sc = an.slider

@@ -19,7 +19,7 @@ from graphmech.errors import GraphmechError, SceneError
 from graphmech.problems.reader import MISSING
 
 if TYPE_CHECKING:
-    from graphmech.drawing.primitives import Primitive
+    from graphmech.drawing.primitives import Panel, Primitive
     from graphmech.exact.synthesis_positions import Reanalysis
     from graphmech.methods.synthesis_positions import CouplerDesign, FourbarDesign
     from graphmech.problems.judging import Row
@@ -331,6 +331,23 @@ def analyse_positions(p: CouplerPositions | FourbarPositions, mu: float, find: t
                           [sol], names)
 
 
+#: The task's protocol names (:data:`graphmech.problems.synthesis.check.SELF_CONTAINED`).
+analyse = analyse_positions
+
+
+def lines(pf: PositionsFound) -> list[str]:
+    """Under the table: the design's Grashof class, re-analysis error and note."""
+    return [grashof_line(s) for s in pf.solutions]
+
+
+def panels(pf: PositionsFound, mu: float) -> tuple[str, list[Panel]]:
+    """The sheet's title and its one panel: the construction with the design bold."""
+    from graphmech.drawing.primitives import Panel
+
+    name = panel_title(pf)
+    return name, [Panel("design", name, tuple(coupler_items(pf)), notes(pf, mu), row=0, scales=(("l", mu),))]
+
+
 def grashof_line(s: dict[str, Any]) -> str:
     """The design said under the table: Grashof's class, the re-analysis error, the note."""
     cls = str(s["grashof"]).replace("_", " ")
@@ -345,12 +362,15 @@ __all__ = [
     "PHRASES",
     "CouplerPositions",
     "PositionsFound",
+    "analyse",
     "analyse_positions",
     "choose_scale",
     "coupler_items",
     "exact_pivots",
     "grashof_line",
+    "lines",
     "notes",
+    "panels",
     "read_positions",
     "size",
     "steps",

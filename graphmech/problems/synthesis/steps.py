@@ -12,9 +12,8 @@ from typing import TYPE_CHECKING
 
 from graphmech.problems.protocol import PHRASES as COMMON
 from graphmech.problems.protocol import Phrases, num, phrase, scale_choice
-from graphmech.problems.synthesis import positions
-from graphmech.problems.synthesis.check import SynthesisAnalysis, analyse_synthesis
-from graphmech.problems.synthesis.time_ratio import GuideBar, SliderCrank, prefix
+from graphmech.problems.synthesis.check import SELF_CONTAINED, SynthesisAnalysis, analyse_synthesis
+from graphmech.problems.synthesis.time_ratio import GuideBar, Problem, SliderCrank, prefix
 
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
@@ -23,7 +22,7 @@ if TYPE_CHECKING:
 #: The synthesis phrases: key → (English, 中文, русский). 孙桓 §8: 极位夹角 θ, 行程速比系数 K.
 PHRASES: Phrases = {
     **COMMON,
-    **positions.PHRASES,
+    **{k: v for own in SELF_CONTAINED.values() for k, v in own.PHRASES.items()},
     "theta": ("θ = 180°(K − 1)/(K + 1) = 180° × ({K} − 1)/({K} + 1) = {th}°",
               "极位夹角 θ = 180°(K − 1)/(K + 1) = 180° × ({K} − 1)/({K} + 1) = {th}°",
               "угол перекрытия θ = 180°(K − 1)/(K + 1) = 180° × ({K} − 1)/({K} + 1) = {th}°"),
@@ -93,10 +92,11 @@ def protocol(an: SynthesisAnalysis) -> list[str]:
     def say(key: str, **fields: str) -> str:
         return phrase(key, notation, PHRASES, **fields)
 
-    if an.positions is not None:  # the positions task words its own construction
+    own = SELF_CONTAINED.get(an.scene.problem.task)
+    if own is not None:  # the task words its own construction
         return [say("choose", mu=scale_choice("l", mu, "l" in an.stated, notation)),
-                *positions.steps(an.positions, mu, say, num)]
-    assert not isinstance(p, positions.CouplerPositions | positions.FourbarPositions)
+                *own.steps(an.found, mu, say, num)]
+    assert isinstance(p, Problem)
     th = math.degrees(p.theta)
     out = [say("theta", K=num(p.K), th=num(th)), say("choose", mu=scale_choice("l", mu, "l" in an.stated, notation))]
     if isinstance(p, GuideBar):
