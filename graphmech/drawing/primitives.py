@@ -142,6 +142,27 @@ def angle_arc(at: XY, d1: XY, d2: XY, r: float, role: Role = "label") -> Polylin
 ARC_MOST = 720
 
 
+def arc_through(centre: XY, points: tuple[XY, ...], margin: float = 0.12, margin_mm: float | None = None,
+                role: Role = "construction") -> Polyline:
+    """The arc about ``centre`` through ``points`` (on one circle; the first sets the radius),
+    ``margin`` radians (or ``margin_mm`` along the arc) past the first and the last: a compass arc,
+    or a huge circle's stretch that the drawing needs (the whole would run far off the sheet).
+
+    >>> len(arc_through((0.0, 0.0), ((1.0, 0.0), (0.0, 1.0))).points)
+    41
+    """
+    import math
+
+    r = math.hypot(points[0][0] - centre[0], points[0][1] - centre[1])
+    a = [math.atan2(q[1] - centre[1], q[0] - centre[0]) for q in points]
+    a = [a[0] + math.remainder(x - a[0], math.tau) for x in a]
+    if margin_mm is not None and r > 0.0:
+        margin = margin_mm / r
+    lo, hi = min(a) - margin, max(a) + margin
+    return Polyline(tuple((centre[0] + r * math.cos(lo + (hi - lo) * k / 40),
+                           centre[1] + r * math.sin(lo + (hi - lo) * k / 40)) for k in range(41)), role)
+
+
 @dataclass(frozen=True)
 class Circle:
     """A circle; ``dashdot`` for a centre circle (a cam's base or offset circle, a gear's

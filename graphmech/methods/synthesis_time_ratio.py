@@ -61,6 +61,9 @@ class DrawnDesign:
     AC1_mm: float
     AC2_mm: float
     circle: tuple[_XY, float] | None
+    #: the largest condition number of the cuts that placed the design (≈ 1/sin of their angle):
+    #: K near 1 makes the θ-circle huge and its cuts shallow
+    cond: float = 1.0
 
     @property
     def lAB_mm(self) -> float:
@@ -111,6 +114,7 @@ def _bisector(ops: ScalarOps, p: _XY, q: _XY) -> tuple[float, float, float, floa
 
 def _design(ops: ScalarOps, A: _XY, D: _XY, C1: _XY, C2: _XY) -> DrawnDesign | None:
     """Measure AC₁, AC₂; keep a one-branch Grashof crank-rocker; its θ-circle."""
+    cond = max(ops.conds.values(), default=1.0)  # the cuts so far placed A, C₁, C₂
     ac1, ac2 = _dist(A, C1), _dist(A, C2)
     a, b, c, d = abs(ac2 - ac1) / 2.0, (ac1 + ac2) / 2.0, _dist(D, C1), _dist(A, D)
     if a <= NO_CRANK * (b + c + d) or _left(A, D, C1) * _left(A, D, C2) <= 0.0:
@@ -122,13 +126,14 @@ def _design(ops: ScalarOps, A: _XY, D: _XY, C1: _XY, C2: _XY) -> DrawnDesign | N
         t = a if ac > min(ac1, ac2) else -a  # ahead of A at the extended limit, behind at the folded
         pins[name] = (A[0] + t * (C[0] - A[0]) / ac, A[1] + t * (C[1] - A[1]) / ac)
     circle = None
-    ops.step = "O = bisector(AC₁) ∩ bisector(C₁C₂)"
+    drawing = ScalarOps()  # the circle is drawn, not measured: its cut is not the design's
+    drawing.step = "O = bisector(AC₁) ∩ bisector(C₁C₂)"
     try:
-        O = intersect_lines(ops, _bisector(ops, A, C1), _bisector(ops, C1, C2))
+        O = intersect_lines(drawing, _bisector(drawing, A, C1), _bisector(drawing, C1, C2))
         circle = ((O[0], O[1]), _dist(O, C1))
     except DegenerateConstruction:  # θ = 0: A on the line C₁C₂, no circle
         pass
-    return DrawnDesign({"A": A, "D": D, "C1": C1, "C2": C2, **pins}, ac1, ac2, circle)
+    return DrawnDesign({"A": A, "D": D, "C1": C1, "C2": C2, **pins}, ac1, ac2, circle, float(cond))
 
 
 def _distinct(designs: list[DrawnDesign]) -> list[DrawnDesign]:
@@ -168,16 +173,23 @@ def draw_from_limit(c_mm: float, d_mm: float, limit: float, theta: float) -> lis
     return _distinct(found)
 
 
-def draw_from_swing(c_mm: float, d_mm: float, psi: float, theta: float) -> list[DrawnDesign]:
+def draw_from_swing(c_mm: float, d_mm: float, psi: float, theta: float,
+                    middle: float = math.pi / 2) -> list[DrawnDesign]:
     """The crank-rockers with rocker c_mm, frame d_mm, swing ψ and θ, drawn with D at the origin
-    and C₁, C₂ at 90° ± ψ/2; one of each mirror pair (A to the left); longest coupler first.
+    and C₁, C₂ at ``middle`` ± ψ/2 (the rocker's middle position upright by default); one of each
+    mirror pair (A to the left of the middle position DC); longest coupler first.
 
     >>> [round(x.lAB_mm, 6) for x in draw_from_swing(37.5, 50.0, math.radians(40), math.radians(36))]
     [11.018694]
     """
     ops = ScalarOps()
     D = (0.0, 0.0)
-    C1, C2 = _polar(D, c_mm, math.pi / 2 + psi / 2), _polar(D, c_mm, math.pi / 2 - psi / 2)
+    C1, C2 = _polar(D, c_mm, middle + psi / 2), _polar(D, c_mm, middle - psi / 2)
+    ux, uy = math.cos(middle), math.sin(middle)
+
+    def left(P: _XY) -> bool:  # of the middle position's line from D
+        return ux * P[1] - uy * P[0] > 0.0
+
     chord = _dist(C1, C2)
     u = ((C2[0] - C1[0]) / chord, (C2[1] - C1[1]) / chord)
     found = []
@@ -188,7 +200,7 @@ def draw_from_swing(c_mm: float, d_mm: float, psi: float, theta: float) -> list[
                 A = intersect_circle_line(ops, D, d_mm, (C1[0], C1[1], u[0], u[1]), side, lambda e: "no A")
             except AssemblyError:
                 break
-            if A[0] < 0.0:
+            if left(A):
                 found.append(_design(ops, A, D, C1, C2))
         return _distinct([x for x in found if x is not None])
     mid = _bisector(ops, C1, C2)
@@ -205,7 +217,7 @@ def draw_from_swing(c_mm: float, d_mm: float, psi: float, theta: float) -> list[
             except AssemblyError:
                 break
             # on the arc that sees C₁C₂ at θ (O's side of the chord), left of the middle position
-            if _left(C1, C2, A) * _left(C1, C2, O) > 0.0 and A[0] < 0.0:
+            if _left(C1, C2, A) * _left(C1, C2, O) > 0.0 and left(A):
                 found.append(_design(ops, A, D, C1, C2))
     return _distinct([x for x in found if x is not None])
 
@@ -255,6 +267,8 @@ class DrawnSlider:
     AC1_mm: float
     AC2_mm: float
     circle: tuple[_XY, float]
+    #: the largest condition number of the cuts that placed A (as :attr:`DrawnDesign.cond`)
+    cond: float = 1.0
 
     @property
     def lAB_mm(self) -> float:
@@ -294,4 +308,5 @@ def draw_slider_crank(H_mm: float, e_mm: float, theta: float) -> DrawnSlider | N
         return None
     B1 = (A[0] - a * (C1[0] - A[0]) / ac1, A[1] - a * (C1[1] - A[1]) / ac1)
     B2 = (A[0] + a * (C2[0] - A[0]) / ac2, A[1] + a * (C2[1] - A[1]) / ac2)
-    return DrawnSlider({"A": A, "B1": B1, "B2": B2, "C1": C1, "C2": C2}, ac1, ac2, (O, R))
+    return DrawnSlider({"A": A, "B1": B1, "B2": B2, "C1": C1, "C2": C2}, ac1, ac2, (O, R),
+                       float(max(ops.conds.values(), default=1.0)))

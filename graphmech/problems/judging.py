@@ -56,6 +56,29 @@ class Row:
         return replace(self, error_source=source, error_estimate=float(estimate), basis=basis)
 
 
+def conditioning_warning(where: str, step: str, cond: float, what: str = "") -> tuple[bool, str | None]:
+    """Whether a cut of condition number ``cond`` (≈ 1/sin of the angle at which its loci meet)
+    makes what depends on it ill-conditioned, and the warning to print: ill-conditioned past
+    ``tolerances.COND_WARN`` (the round-off estimate passes the agreement asked), shallow for a hand
+    construction past 1/sin ``SHALLOW_DEG``; None below both. ``what`` names what depends on it.
+
+    >>> conditioning_warning("φ = 30°", "A = c1 ∩ c2", 2.0)
+    (False, None)
+    >>> conditioning_warning("sol1", "A = c1 ∩ c2", 1e4)[0]
+    True
+    """
+    angle = math.degrees(math.asin(min(1.0, 1.0 / cond))) if cond > 0 else 90.0
+    if cond > T.COND_WARN:
+        est = T.COND_SAFETY * cond * cond * T.EPS
+        return True, (f"{where}: ill-conditioned intersection '{step}': the loci meet at {angle:.3g}° "
+                      f"(condition number {cond:.3g}); {what or 'the drawing'} may be wrong by about "
+                      f"{est:.1g} relative or more")
+    if cond > 1.0 / math.sin(math.radians(T.SHALLOW_DEG)):
+        return False, (f"{where}: shallow intersection '{step}' at {angle:.3g}°: a hand construction "
+                       f"is unreliable here (a 0.5 mm error becomes about {0.5 * cond:.2g} mm)")
+    return False, None
+
+
 def estimate_text(row: Row) -> str:
     """How accurate a discretised or read-off row says it is, as every check table prints it:
     ``±8 % (12 positions)``; ``""`` for a row with no estimate."""

@@ -27,6 +27,7 @@ from graphmech.problems.judging import (
     SEGMENT,
     Verdict,
     close_names,
+    conditioning_warning,
     in_double_precision,
     is_segment,
     measured_entries,
@@ -370,7 +371,6 @@ def _ill(an: Analysis, slot: str, i: int) -> bool:
 def _conditioning_warnings(an: Analysis, quantities: list[str]) -> list[str]:
     """Name every intersection that is ill-conditioned (numerically) or shallow (for drafting)."""
     out = []
-    shallow = 1.0 / math.sin(math.radians(T.SHALLOW_DEG))
     relevant: dict[str, list[str]] = {}
     for q in dict.fromkeys(quantities):
         slot = an.build.quantities[q].slot
@@ -387,16 +387,9 @@ def _conditioning_warnings(an: Analysis, quantities: list[str]) -> list[str]:
         for text, c in sol.conds.items():
             if text not in relevant:
                 continue
-            qs = ", ".join(relevant[text])
-            angle = math.degrees(math.asin(min(1.0, 1.0 / c))) if c > 0 else 90.0
-            if c > T.COND_WARN:
-                est = T.COND_SAFETY * c * c * T.EPS
-                out.append(f"{where}: ill-conditioned intersection '{text}': the loci meet at {angle:.3g}° "
-                           f"(condition number {c:.3g}); {qs or 'the drawing'} may be wrong by about "
-                           f"{est:.1g} relative or more")
-            elif c > shallow:
-                out.append(f"{where}: shallow intersection '{text}' at {angle:.3g}°: a hand construction "
-                           f"is unreliable here (a 0.5 mm error becomes about {0.5 * c:.2g} mm)")
+            _, said = conditioning_warning(where, text, c, ", ".join(relevant[text]))
+            if said:
+                out.append(said)
     return out
 
 

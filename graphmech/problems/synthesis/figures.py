@@ -21,6 +21,7 @@ from graphmech.drawing.primitives import (
     Sheet,
     Slider,
     angle_arc,
+    arc_through,
 )
 
 if TYPE_CHECKING:
@@ -56,7 +57,7 @@ def design_items(g: DrawnDesign, mu: float) -> list[Primitive]:
         _arc(A, g.AC1_mm, C1), _arc(A, g.AC2_mm, C2),
     ]
     if g.circle is not None:
-        items.append(Circle(g.circle[0], g.circle[1], "construction"))
+        items.append(theta_circle(g.circle, (A, C1, C2)))
     r = min(g.AC1_mm, g.AC2_mm) * 0.35
     theta = angle_arc(A, (C1[0] - A[0], C1[1] - A[1]), (C2[0] - A[0], C2[1] - A[1]), r)
     items += [] if theta is None else [theta]
@@ -71,6 +72,20 @@ def design_items(g: DrawnDesign, mu: float) -> list[Primitive]:
     if theta is not None:  # K = 1: no angle to mark
         items.append(Label("θ", (A[0] + 1.3 * r * mid[0], A[1] + 1.3 * r * mid[1])))
     return items
+
+
+#: A θ-circle wider than this many times the design's own points is drawn as its arc through them.
+_FULL_CIRCLE_MOST = 3.0
+
+
+def theta_circle(circle: tuple[_XY, float], through: tuple[_XY, ...]) -> Circle | Polyline:
+    """The θ-circle whole, as the book draws it; as its arc through A, C₁, C₂ where θ is small and
+    the circle huge (K near 1: its radius C₁C₂/(2 sin θ) grows without bound)."""
+    (cx, cy), r = circle
+    span = max(_dist(p, q) for p in through for q in through)
+    if 2.0 * r <= _FULL_CIRCLE_MOST * span:
+        return Circle((cx, cy), r, "construction")
+    return arc_through((cx, cy), through, margin_mm=0.15 * span)
 
 
 def _unit(p: _XY, q: _XY) -> _XY:
@@ -108,7 +123,7 @@ def slider_crank_items(g: DrawnSlider) -> list[Primitive]:
     A, B1, B2, C1, C2 = p["A"], p["B1"], p["B2"], p["C1"], p["C2"]
     left = min(A[0], C1[0]) - 5.0
     items: list[Primitive] = [
-        GuideLine((left, 0.0), (C2[0] + 8.0, 0.0)), Circle(g.circle[0], g.circle[1], "construction"),
+        GuideLine((left, 0.0), (C2[0] + 8.0, 0.0)), theta_circle(g.circle, (A, C1, C2)),
         Segment((left, A[1]), (C2[0], A[1]), "construction", dashdot=True),
         Segment(A, C1, "construction"), Segment(A, C2, "construction"),
         _arc(A, g.AC1_mm, C1), _arc(A, g.AC2_mm, C2),

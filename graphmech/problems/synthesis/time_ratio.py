@@ -64,6 +64,8 @@ class TimeRatio:
     limit_angle: float | None = None
     #: The key the swing or the limit angle was written under (``swing_deg``), for messages.
     key: str = ""
+    #: The direction of the rocker's middle position DC on the drawing (with the swing), rad.
+    middle: float = math.pi / 2
 
     @property
     def theta(self) -> float:
@@ -189,6 +191,11 @@ def _read_crank_rocker(r: Reader, mech: str | None, K: float | None) -> TimeRati
     d = r.scalar("frame", "length", positive=True)
     swing = r.scalar("swing", "angle", required=False)
     limit = r.scalar("limit_angle", "angle", required=False)
+    middle = r.scalar("rocker_middle", "angle", required=False)
+    if middle is not None and limit is not None:
+        r.problem(r.at(r.present("rocker_middle") or "rocker_middle"),
+                  "with limit_angle the frame line is drawn level and sets the rocker's direction: "
+                  "rocker_middle goes with swing")
     given = [k for k in ("swing", "limit_angle") if r.present(k) is not None]
     if not given:
         r.problem(r.at("swing"), "missing: write swing_deg (the rocker's swing ψ) or limit_angle_deg "
@@ -206,7 +213,8 @@ def _read_crank_rocker(r: Reader, mech: str | None, K: float | None) -> TimeRati
             return None
     if mech is None or K is None or c is None or d is None or len(given) != 1 or (swing is None and limit is None):
         return None
-    return TimeRatio(mech, K, c, d, swing, limit, r.at(r.present(given[0]) or given[0]))
+    return TimeRatio(mech, K, c, d, swing, limit, r.at(r.present(given[0]) or given[0]),
+                     math.pi / 2 if middle is None else middle)
 
 
 def prefix(k: int, count: int) -> str:
@@ -229,7 +237,7 @@ def designs(p: TimeRatio, mu_l: float) -> tuple[list[DrawnDesign], list[Design]]
         return (gm.draw_from_limit(c_mm, d_mm, p.limit_angle, gm.theta_of_K(p.K)),
                 ex.crank_rocker_from_limit(p.rocker, p.frame, p.limit_angle, ex.theta_of_K(p.K)))
     assert p.swing is not None
-    return (gm.draw_from_swing(c_mm, d_mm, p.swing, gm.theta_of_K(p.K)),
+    return (gm.draw_from_swing(c_mm, d_mm, p.swing, gm.theta_of_K(p.K), p.middle),
             ex.crank_rocker_from_swing(p.rocker, p.frame, p.swing, ex.theta_of_K(p.K)))
 
 
@@ -304,9 +312,11 @@ def analyse_time_ratio(p: Problem, mu: float, find: tuple[str, ...] = (), source
                 abs(math.degrees(drawn[0].theta) - theta) / 180.0)]
     for k, (g, e) in enumerate(zip(drawn, exact)):
         pre = prefix(k, n)
+        ill = _conditioning(out.warnings, pre.rstrip("_") or "design", g.cond,
+                            "the θ-circle's centre O and its cut" if p.limit_angle is None else "the ray's cut with the rocker's circle")
         for name, mm, si in (("AC1", g.AC1_mm, e.AC1), ("AC2", g.AC2_mm, e.AC2), ("lAB", g.lAB_mm, e.lAB),
                              ("lBC", g.lBC_mm, e.lBC)):
-            rows.append(Row(pre + name, "m", mm, mu, mm * mu, si, abs(mm * mu - si) / si))
+            rows.append(Row(pre + name, "m", mm, mu, mm * mu, si, abs(mm * mu - si) / si, ill))
         # the designed linkage re-analysed: drawn as a linkage of its own, and exactly
         A, D = g.points["A"], g.points["D"]
         lk = Linkage({"A": (A[0] * mu, A[1] * mu), "D": (D[0] * mu, D[1] * mu)},
@@ -400,10 +410,12 @@ def _analyse_slider_crank(p: SliderCrank, mu: float, find: tuple[str, ...], sour
                          source)
     A_e, ac1, ac2 = x
     a, b = (ac2 - ac1) / 2.0, (ac1 + ac2) / 2.0
+    warnings: list[str] = []
+    ill = _conditioning(warnings, "design", g.cond, "the θ-circle's cut with the offset line")
     rows = [Row("theta", "deg", None, 1.0, math.degrees(_angle_at(g.points["A"], g.points["C1"], g.points["C2"])),
                 math.degrees(p.theta), abs(_angle_at(g.points["A"], g.points["C1"], g.points["C2"]) - p.theta) / math.pi)]
     for name, mm, si in (("AC1", g.AC1_mm, ac1), ("AC2", g.AC2_mm, ac2), ("lAB", g.lAB_mm, a), ("lBC", g.lBC_mm, b)):
-        rows.append(Row(name, "m", mm, mu, mm * mu, si, abs(mm * mu - si) / si))
+        rows.append(Row(name, "m", mm, mu, mm * mu, si, abs(mm * mu - si) / si, ill))
     A = g.points["A"]
     lk = Linkage({"A": (A[0] * mu, A[1] * mu)}, Crank("1", "A", "B", g.lAB_mm * mu, 1.0),
                  (RRP("B", "C", ("2", "3"), g.lBC_mm * mu, Guide((0.0, 0.0), 0.0), "forward"),))
@@ -420,8 +432,19 @@ def _analyse_slider_crank(p: SliderCrank, mu: float, find: tuple[str, ...], sour
                                "stroke_error": abs(xc.stroke - p.stroke) / p.stroke,
                                "gamma_min_deg": math.degrees(xc.gamma_min)}}
     wanted = set(find) or None
-    return Designed([], [], [r for r in rows if wanted is None or r.name in wanted], [], [solution],
+    return Designed([], [], [r for r in rows if wanted is None or r.name in wanted], warnings, [solution],
                     list(SLIDER_NAMES), slider=g)
+
+
+def _conditioning(warnings: list[str], design: str, cond: float, step: str) -> bool:
+    """Warn where the cut that placed a design is shallow (K near 1: θ small, the θ-circle huge);
+    True where its measured lengths are ill-conditioned."""
+    from graphmech.problems.judging import conditioning_warning
+
+    ill, said = conditioning_warning(design, step, cond, "AC₁, AC₂, l_AB, l_BC")
+    if said:
+        warnings.append(said)
+    return ill
 
 
 def _angle_at(A: tuple[float, float], P: tuple[float, float], Q: tuple[float, float]) -> float:

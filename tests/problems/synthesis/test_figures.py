@@ -56,3 +56,19 @@ def test_a_slider_crank_is_drawn_on_its_guide_with_its_theta_circle():
     assert any(isinstance(i, Circle) and i.center == O and i.r == R for i in panel.items)
     assert sum(isinstance(i, GuideLine) for i in panel.items) == 1 and sum(isinstance(i, Slider) for i in panel.items) == 1
     assert "23.32 mm" in panel.notes[2] and "37.34 mm" in panel.notes[2]
+
+
+def test_a_huge_theta_circle_is_drawn_as_its_arc_through_A_C1_C2():
+    from graphmech.drawing.primitives import Polyline
+    from tests.scenes import parse_text, replace_once, scene_text
+
+    an = analyse_synthesis(parse_text(replace_once(scene_text("synthesis/swing"), "K = 1.4", "K = 1.0001")))
+    sheet = synthesis_sheet(an, (297.0, 210.0))
+    for panel, g in zip(sheet.panels, an.drawn):
+        O, R = g.circle
+        assert R > 1e4 and not any(isinstance(i, Circle) and i.r == R for i in panel.items)
+        arcs = [i for i in panel.items if isinstance(i, Polyline) and all(
+            abs(math.dist(p, O) - R) < 1e-6 * R for p in i.points)]
+        assert len(arcs) == 1
+        xs = [p[0] for p in arcs[0].points]
+        assert max(xs) - min(xs) < 3 * max(g.lAD_mm, g.AC2_mm)  # on the sheet, not kilometres off it

@@ -151,3 +151,54 @@ def test_any_slider_crank_is_designed_to_1e_9_or_refused(K, H, ratio):
         return
     assert all(r.rel_error < (1e-9 if r.unit == "m" else 1e-7) for r in an.rows), an.rows
     assert extras["synthesis"]["solutions"][0]["reanalysis"]["K_error"] < 1e-9
+
+
+def test_K_near_1_flags_its_lengths_ill_conditioned_and_says_which_cut():
+    # θ = 0.009°: the θ-circle's centre O is where two lines meet at θ, its radius ~ 1/θ
+    found = analyse_time_ratio(parse_text(replace_once(SWING, "K = 1.4", "K = 1.0001")).problem.problem, 0.002)
+    rows = {r.name: r for r in found.rows}
+    for k in (1, 2):
+        assert all(rows[f"sol{k}_{n}"].ill_conditioned for n in ("AC1", "AC2", "lAB", "lBC"))
+        assert not rows[f"sol{k}_K"].ill_conditioned
+    assert sum("ill-conditioned intersection" in w and "θ-circle" in w for w in found.warnings) == 2
+    # a clear K says nothing of the kind
+    clear = analyse_time_ratio(parse_text(SWING).problem.problem, 0.002)
+    assert not any(r.ill_conditioned for r in clear.rows) and not clear.warnings
+
+
+def test_K_near_1_in_a_slider_crank_is_flagged_too():
+    text = ('[synthesis]\ntask = "time_ratio"\nmechanism = "slider_crank"\nK = 1.0002\nstroke_mm = 50\n'
+            "offset_mm = 10\n")
+    an, _, _, _ = check(parse_text(text))
+    rows = {r.name: r for r in an.rows}
+    assert rows["lAB"].ill_conditioned and any("ill-conditioned intersection" in w for w in an.warnings)
+
+
+def test_rocker_middle_turns_the_drawing_not_the_design():
+    level = parse_text(SWING.replace("swing_deg = 40", "swing_deg = 40\nrocker_middle_deg = 0"))
+    upright = analyse_time_ratio(parse_text(SWING).problem.problem, 0.002)
+    turned = analyse_time_ratio(level.problem.problem, 0.002)
+    assert [r.graphical for r in turned.rows] == pytest.approx([r.graphical for r in upright.rows], rel=1e-12)
+    g = turned.drawn[0]
+    C1, C2, D, A = g.points["C1"], g.points["C2"], g.points["D"], g.points["A"]
+    assert (C1[1] + C2[1]) / 2 == pytest.approx(D[1], abs=1e-12) and C1[0] > D[0]  # level, C right of D
+    assert A[1] > D[1]  # A on the left of the middle position DC: above it
+
+
+def test_rocker_middle_with_a_limit_angle_is_refused():
+    text = (SCENES / f"{BANK}.toml").read_text()
+    with pytest.raises(SceneError) as e:
+        check(parse_text(text.replace("limit_angle_deg = 45", "limit_angle_deg = 45\nrocker_middle_deg = 0"), "s.toml"))
+    ((where, why),) = e.value.problems
+    assert where == "synthesis.rocker_middle_deg" and "goes with swing" in why
+
+
+def test_the_cotton_gin_treadle_seed_001_2_5_is_its_closed_form():
+    # K = 1: A on the line C1C2 (vertical), 1000 mm from D: l_AB = l_CD sin 10°, l_BC = √(l_AD² − (l_CD cos 10°)²)
+    rows, extras, _ = _rows(load_scene(SCENES / "synthesis.cotton_gin_pedal.toml"))
+    import math
+
+    assert rows["lAB"].graphical == pytest.approx(0.5 * math.sin(math.radians(10)), rel=1e-12)
+    assert rows["lBC"].graphical == pytest.approx(math.sqrt(1.0 - (0.5 * math.cos(math.radians(10))) ** 2), rel=1e-12)
+    assert rows["K"].exact == pytest.approx(1.0, abs=1e-12) and rows["psi"].exact == pytest.approx(20.0, abs=1e-9)
+    assert extras["synthesis"]["solutions"][0]["grashof"] == "crank_rocker_AB"
