@@ -202,3 +202,20 @@ def test_the_cotton_gin_treadle_seed_001_2_5_is_its_closed_form():
     assert rows["lBC"].graphical == pytest.approx(math.sqrt(1.0 - (0.5 * math.cos(math.radians(10))) ** 2), rel=1e-12)
     assert rows["K"].exact == pytest.approx(1.0, abs=1e-12) and rows["psi"].exact == pytest.approx(20.0, abs=1e-9)
     assert extras["synthesis"]["solutions"][0]["grashof"] == "crank_rocker_AB"
+
+
+def test_the_shaper_and_the_offset_slider_crank_scenes_are_their_closed_forms():
+    import math
+
+    rows, _, _ = _rows(load_scene(SCENES / "synthesis.shaper_guide_bar.toml"))
+    assert rows["lAB"].graphical == pytest.approx(0.3 * math.sin(math.radians(30)), rel=1e-12)
+    assert rows["lCD"].graphical == pytest.approx(0.4 / (2 * math.sin(math.radians(30))), rel=1e-12)
+    assert rows["K"].exact == pytest.approx(2.0, rel=1e-12) and rows["psi"].exact == pytest.approx(60.0, rel=1e-12)
+    rows, _, _ = _rows(load_scene(SCENES / "synthesis.offset_slider_crank_K1.5.toml"))
+    a, b = rows["lAB"].exact, rows["lBC"].exact
+    assert rows["lAB"].rel_error < 1e-12 and rows["lBC"].rel_error < 1e-12
+    # the designed slider-crank's own limits: stroke √((b+a)²−e²) − √((b−a)²−e²) and θ between them
+    e = 0.01
+    assert math.sqrt((b + a) ** 2 - e * e) - math.sqrt((b - a) ** 2 - e * e) == pytest.approx(0.05, rel=1e-12)
+    theta = math.asin(e / (b - a)) - math.asin(e / (b + a))
+    assert math.degrees(theta) == pytest.approx(36.0, rel=1e-12)
