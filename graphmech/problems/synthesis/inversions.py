@@ -678,11 +678,11 @@ _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 #: The phrases of these forms: key → (English, 中文, русский). 孙桓 §8 反转法.
 PHRASES: dict[str, tuple[str, str, str]] = {
-    "slider given": (("draw A, the crank AB_i (AB = {mm} mm) at its {n} angles φ_i and the guide at {g}°, "
-                     "the slider's C_i at s_i on it"),
-                     "作A及曲柄的{n}个位置AB_i（AB = {mm} mm）和与水平成{g}°的导路，滑块位置C_i按s_i取在导路上",
-                     ("строим A, кривошип AB_i (AB = {mm} mm) в {n} углах φ_i и направляющую под {g}°, "
-                     "на ней положения ползуна C_i по s_i")),
+    "slider given": (("draw A, the crank AB_i (AB = {l}/μl = {mm} mm) at its {n} angles φ_i and the guide at {g}°, "
+                      "the slider's C_i at s_i/μl on it"),
+                     "作A及曲柄的{n}个位置AB_i（AB = {l}/μl = {mm} mm）和与水平成{g}°的导路，滑块位置C_i按s_i/μl取在导路上",
+                     ("строим A, кривошип AB_i (AB = {l}/μl = {mm} mm) в {n} углах φ_i и направляющую под {g}°, "
+                      "на ней положения ползуна C_i по s_i/μl")),
     "slider three": (("seen from the slider the frame translates back: shift each B_i along the guide by "
                       "−(s_i − s₁) to B_i′; C₁ is the centre of the circle through B₁, B₂′, B₃′: the bisectors of "
                       "B₁B₂′ and B₂′B₃′ meet there"),
@@ -704,25 +704,25 @@ PHRASES: dict[str, tuple[str, str, str]] = {
                      "положении {k} (DC{ks} неподвижно)")),
     "rocker three": (("seen from the rocker the frame turns back: turn each F_i about D by the rocker's turn "
                       "from position i to position {k} (∠C_iDC{ks}) to F_i′; E{ks} is the centre of the circle through "
-                      "{pts}: the bisectors of {chords} meet there"),
-                     "以摇杆为参考（反转法）：将各F_i绕D转过∠C_iDC{ks}得F_i′；{pts}所定圆之圆心即E{ks}：{chords}的中垂线交于E{ks}",
+                      "{f1}, {f2}, {f3}: the bisectors of {f1}{f2} and {f2}{f3} meet there"),
+                     "以摇杆为参考（反转法）：将各F_i绕D转过∠C_iDC{ks}得F_i′；{f1}、{f2}、{f3}所定圆之圆心即E{ks}：{f1}{f2}与{f2}{f3}的中垂线交于E{ks}",
                      ("относительно коромысла стойка поворачивается назад: каждую F_i поворачиваем около D на "
-                      "∠C_iDC{ks} в F_i′; E{ks} — центр окружности через {pts}: серединные перпендикуляры к {chords} "
-                      "пересекаются в E{ks}")),
-    "rocker two": (("turn the other F_i about D by ∠C_iDC{ks} to F_i′; the arc of l_DE = {d} mm about D cuts the "
-                    "bisector of {chords} at E{ks}"),
-                   "将另一F_i绕D转过∠C_iDC{ks}得F_i′；以D为圆心、l_DE = {d} mm为半径作弧，与{chords}的中垂线交于E{ks}",
-                   ("другую F_i поворачиваем около D на ∠C_iDC{ks} в F_i′; дуга l_DE = {d} mm около D пересекает "
-                    "серединный перпендикуляр к {chords} в E{ks}")),
+                      "∠C_iDC{ks} в F_i′; E{ks} — центр окружности через {f1}, {f2}, {f3}: серединные перпендикуляры к "
+                      "{f1}{f2} и {f2}{f3} пересекаются в E{ks}")),
+    "rocker two": (("turn {f0} about D by ∠{c0}DC{ks} to {f2}; the arc of radius DE = {d}/μl = {dm} mm about D cuts "
+                    "the bisector of {f1}{f2} at E{ks}"),
+                   "将{f0}绕D转过∠{c0}DC{ks}得{f2}；以D为圆心、DE = {d}/μl = {dm} mm为半径作弧，与{f1}{f2}的中垂线交于E{ks}",
+                   ("{f0} поворачиваем около D на ∠{c0}DC{ks} в {f2}; дуга радиуса DE = {d}/μl = {dm} mm около D "
+                    "пересекает серединный перпендикуляр к {f1}{f2} в E{ks}")),
     "rocker measure": ("measure DE{ks} = {d} mm, E{ks}F{ks} = {f} mm: l_DE = {ld} m, l_EF = {lf} m",
                        "量得DE{ks} = {d} mm，E{ks}F{ks} = {f} mm：l_DE = {ld} m，l_EF = {lf} m",
                        "измеряем DE{ks} = {d} mm, E{ks}F{ks} = {f} mm: l_DE = {ld} m, l_EF = {lf} m"),
-    "point arcs": (("draw A, D and E₁, E₂, E₃; the arc of l_CD = {c} mm about D is cut by the arcs of l_EC = {e} mm "
-                   "about E₁, E₂, E₃ at C₁, C₂, C₃"),
-                   ("作A、D及E₁、E₂、E₃；以D为圆心、l_CD = {c} mm为半径作弧，分别以E₁、E₂、E₃为圆心、l_EC = {e} mm为半径"
-                   "作弧交之于C₁、C₂、C₃"),
-                   ("строим A, D и E₁, E₂, E₃; дугу l_CD = {c} mm около D пересекаем дугами l_EC = {e} mm около E₁, "
-                   "E₂, E₃ в C₁, C₂, C₃")),
+    "point arcs": (("draw A, D and E₁, E₂, E₃; the arc of radius CD = {c}/μl = {cm} mm about D is cut by the arcs of "
+                   "radius EC = {e}/μl = {em} mm about E₁, E₂, E₃ at C₁, C₂, C₃"),
+                   ("作A、D及E₁、E₂、E₃；以D为圆心、CD = {c}/μl = {cm} mm为半径作弧，分别以E₁、E₂、E₃为圆心、"
+                   "EC = {e}/μl = {em} mm为半径作弧交之于C₁、C₂、C₃"),
+                   ("строим A, D и E₁, E₂, E₃; дугу радиуса CD = {c}/μl = {cm} mm около D пересекаем дугами радиуса "
+                   "EC = {e}/μl = {em} mm около E₁, E₂, E₃ в C₁, C₂, C₃")),
     "point invert": (("seen from the coupler CE the pivot A moves: carry A with the coupler from positions 2 and 3 "
                       "back to position 1 (the triangles C₂E₂A, C₃E₃A copied onto C₁E₁) to A₂′, A₃′; B₁ is the "
                       "centre of the circle through A, A₂′, A₃′: the bisectors of AA₂′ and A₂′A₃′ meet there"),
@@ -754,25 +754,29 @@ def steps(f: InversionFound, mu: float, say: Callable[..., str], num: Callable[[
     if isinstance(p, SliderCrankPositions):
         assert isinstance(g, SliderCrankDesign)
         b, e = g.l_BC, g.offset
-        out = [say("slider given", n=str(len(p.phi)), mm=num(p.l_AB), g=num(math.degrees(p.guide_angle))),
+        out = [say("slider given", n=str(len(p.phi)), l=num(p.l_AB * mu), mm=num(p.l_AB),
+                   g=num(math.degrees(p.guide_angle))),
                say("slider three" if len(p.phi) == 3 else "slider two"),
                say("slider measure", b=num(b), e=num(e), lb=num(b * mu), le=num(e * mu))]
     elif isinstance(p, RockerSliderPositions):
         assert isinstance(g, JointDesign)
         k, ks = p.invert_to, str(p.invert_to).translate(_SUB)
-        first = f"F{ks}"
-        imgs = [f"F{str(int(v.label[1:-1])).translate(_SUB)}′" for v in g.inversions]
-        pts, chords = ", ".join([first, *imgs]), ", ".join([f"{first}{imgs[0]}", *(f"{imgs[0]}{x}" for x in imgs[1:])])
+        fs = [f"F{ks}", *(f"F{v.label[1:-1].translate(_SUB)}′" for v in g.inversions)]
         E = g.joint
         d, fl = math.dist(E, p.D), math.dist(E, p.F[k - 1])
-        out = [say("rocker given", n=str(len(p.F)), k=str(k), ks=ks),
-               say("rocker three", k=str(k), ks=ks, pts=pts, chords=chords) if len(p.F) == 3 else
-               say("rocker two", ks=ks, d=num(p.l_DE or 0.0), chords=chords),
+        if len(p.F) == 3:
+            how = say("rocker three", k=str(k), ks=ks, f1=fs[0], f2=fs[1], f3=fs[2])
+        else:
+            assert p.l_DE is not None
+            how = say("rocker two", ks=ks, f0=fs[1][:-1], c0=f"C{fs[1][1:-1]}", f1=fs[0], f2=fs[1],
+                      d=num(p.l_DE * mu), dm=num(p.l_DE))
+        out = [say("rocker given", n=str(len(p.F)), k=str(k), ks=ks), how,
                say("rocker measure", ks=ks, d=num(d), f=num(fl), ld=num(d * mu), lf=num(fl * mu))]
     else:
         assert isinstance(g, CouplerPointDesign)
         a, b, e = g.l_AB, g.l_BC, g.l_BE
-        out = [say("point arcs", c=num(p.l_CD), e=num(p.l_EC)), say("point invert"),
+        out = [say("point arcs", c=num(p.l_CD * mu), cm=num(p.l_CD), e=num(p.l_EC * mu), em=num(p.l_EC)),
+               say("point invert"),
                say("point measure", a=num(a), b=num(b), e=num(e), la=num(a * mu), lb=num(b * mu), le=num(e * mu))]
     return [*out, say("recheck linkage", err=f"{f.exact_re.error:.1e}")]
 

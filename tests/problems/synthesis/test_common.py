@@ -50,7 +50,7 @@ def test_conditioning_marks_the_rows_of_a_shallow_cut_only():
     kept, said = conditioning([("A = b1 ∩ b2", math.sin(math.radians(2.0)), ("lAB", "xA")),
                                ("D = b3 ∩ b4", math.sin(math.radians(30.0)), ("lCD",))], rows)
     assert [r.ill_conditioned for r in kept] == [True, False]
-    assert said == ["shallow intersection 'A = b1 ∩ b2' at 2°: a hand construction is unreliable here (a 0.5 mm "
-                    "error becomes about 14 mm); lAB marked ill-conditioned"]
+    assert said == [("shallow intersection 'A = b1 ∩ b2' at 2°: a hand construction is unreliable here (a 0.5 mm "
+                    "error becomes about 14 mm); lAB marked ill-conditioned")]
     _, said = conditioning([("X", 1e-4, ("lCD",))], rows)
     assert said[0].startswith("ill-conditioned intersection 'X': the loci meet at 0.00573° (condition number 1e+04)")

@@ -66,8 +66,8 @@ def test_two_slider_positions_take_the_pins_path():
      "three positions fix the slider's pin: no guide_through is taken"),
     ("phi_deg = [180, 255, 315]\ns_mm = [0, 20, 51]\nguide_angle_deg = 0",
      "phi_deg = [0, 90, 180]\ns_mm = [0, 30, 0]\nguide_angle_deg = 90", "synthesis.s_mm",
-     "C1 = bB1B2' ∩ bB2'B3': B1, B2', B3' lie on one straight line: no circle passes through them, so no fixed "
-     "pivot can carry them"),
+     ("C1 = bB1B2' ∩ bB2'B3': B1, B2', B3' lie on one straight line: no circle passes through them, so no fixed "
+     "pivot can carry them")),
 ])
 def test_impossible_slider_data_are_refused_in_one_line(old, new, key, reason, tmp_path):
     p = tmp_path / "s.toml"
@@ -112,11 +112,13 @@ def test_two_rocker_positions_take_l_DE_and_the_side():
     assert rows["lEF"].exact == pytest.approx(0.1238157555, rel=1e-9)
     # the other cut of the arc: the slider would change branch between the positions (said, not refused)
     an = analyse_synthesis(parse_text(text.replace("l_DE_mm = 80", "l_DE_mm = 80\nside = -1")))
-    assert an.warnings == ["the prescribed positions lie on both branches: the linkage cannot pass through them "
-                           "without being taken apart"]
+    assert an.warnings == [("the prescribed positions lie on both branches: the linkage cannot pass through them "
+                           "without being taken apart")]
     with pytest.raises(SceneError) as e:
         parse_text(text.replace("l_DE_mm = 80\n", ""))
     assert e.value.problems[0][0] == "synthesis.l_DE"
+    steps = protocol(analyse_synthesis(parse_text(text)))
+    assert steps[2] == "turn F₁ about D by ∠C₁DC₂ to F₁′; the arc of radius DE = 0.08/μl = 40 mm about D cuts the bisector of F₂F₁′ at E₂"
 
 
 @pytest.mark.parametrize(("old", "new", "key", "reason"), [
@@ -156,8 +158,8 @@ def test_seed_linkage_5_leads_the_coupler_point_through_its_three_points():
 
 @pytest.mark.parametrize(("old", "new", "key", "reason"), [
     ("E_mm = [20, 140]", "E_mm = [200, 0]", "synthesis.position",
-     "C2 = arc D ∩ arc E2: cannot be assembled: E2 is 0.2 m from D: the arcs CD = 0.095 m and EC = 0.07 m do not "
-     "meet (they reach from 0.025 m to 0.165 m)"),
+     ("C2 = arc D ∩ arc E2: cannot be assembled: E2 is 0.2 m from D: the arcs CD = 0.095 m and EC = 0.07 m do not "
+     "meet (they reach from 0.025 m to 0.165 m)")),
     ("\nside = 1\n", "\nside = 2\n", "synthesis.side", "must be 1 or -1, or a list of three (C_i left or right of D → E_i)"),
     ("E_mm = [60, 140]", "E_mm = [-20, 140]", "synthesis.position",
      "E1E3: E1 and E3 coincide: two positions of one point give no bisector (the positions must be distinct)"),
@@ -221,14 +223,14 @@ def test_the_steps_read_the_checks_numbers_in_three_languages(notation, line):
     text = ROCKER if notation == "en" else ROCKER + f'\n[page]\nnotation = "{notation}"\n'
     lines = protocol(analyse_synthesis(parse_text(text)))
     assert lines[3] == line
-    assert "F₂, F₁′, F₃′" in lines[2] and lines[-1].endswith(("link)", "最长杆）", "звена)"))
+    assert ("F₂、F₁′、F₃′" if notation == "zh" else "F₂, F₁′, F₃′") in lines[2] and lines[-1].endswith(("link)", "最长杆）", "звена)"))
 
 
 def test_the_slider_and_coupler_point_steps():
     s = protocol(analyse_synthesis(parse_text(SLIDER)))
     assert s[3] == "measure B₁C₁ = 120 mm and the offset of A from the guide e = 20.03 mm: l_BC = 0.05998 m, e = 0.01001 m"
     c = protocol(analyse_synthesis(parse_text(POINT)))
-    assert c[1].startswith("draw A, D and E₁, E₂, E₃; the arc of l_CD = 47.5 mm about D")
+    assert c[1].startswith("draw A, D and E₁, E₂, E₃; the arc of radius CD = 0.095/μl = 47.5 mm about D")
     assert c[3] == ("measure AB₁ = 18.17 mm, B₁C₁ = 69.24 mm, B₁E₁ = 103.4 mm: l_AB = 0.03634 m, l_BC = 0.1385 m, "
                     "l_BE = 0.2068 m")
 
@@ -239,8 +241,8 @@ def test_the_slider_and_coupler_point_steps():
 def test_bisectors_meeting_shallow_are_flagged_in_the_slider_form():
     text = replace_once(replace_once(SLIDER, "[180, 255, 315]", "[60, 105, 150]"), "[0, 20, 51]", "[0, -24, -36]")
     an = analyse_synthesis(parse_text(text.replace("l_mm_per_mm = 0.5", "l_mm_per_mm = 5")))
-    assert an.warnings == ["shallow intersection 'C1 = bB1B2' ∩ bB2'B3'' at 1.57°: a hand construction is unreliable "
-                           "here (a 0.5 mm error becomes about 18 mm); lBC, e, xC1, yC1 marked ill-conditioned"]
+    assert an.warnings == [("shallow intersection 'C1 = bB1B2' ∩ bB2'B3'' at 1.57°: a hand construction is unreliable "
+                           "here (a 0.5 mm error becomes about 18 mm); lBC, e, xC1, yC1 marked ill-conditioned")]
     assert [r.name for r in an.rows if r.ill_conditioned] == ["lBC", "e", "xC1", "yC1"]
 
 
