@@ -499,7 +499,8 @@ def arc_about(centre: XY, pts: list[XY], margin: float = 0.12, n: int = 40) -> P
                           for k in range(n + 1)), "construction")
 
 
-def _turn_arc(centre: XY, P: XY, angle: float) -> Primitive:
+def turn_arc(centre: XY, P: XY, angle: float) -> Primitive:
+    """The thin arc of a turn about ``centre`` by ``angle`` (rad) from P: the inversion drawn."""
     from graphmech.drawing.primitives import Polyline
 
     r = math.hypot(P[0] - centre[0], P[1] - centre[1])
@@ -563,7 +564,7 @@ def rocker_items(g: JointDesign, p: RockerSliderPositions) -> list[Primitive]:
     items: list[Primitive] = [GuideLine((F[0][0] + lo * u[0], F[0][1] + lo * u[1]),
                                         (F[0][0] + hi * u[0], F[0][1] + hi * u[1]))]
     for v in g.inversions:
-        items += [_turn_arc(p.D, v.original, v.angle), Segment(p.D, v.original, "construction", dashed=True),
+        items += [turn_arc(p.D, v.original, v.angle), Segment(p.D, v.original, "construction", dashed=True),
                   Segment(p.D, v.image, "construction", dashed=True), Hinge(v.image), Label(_sub(v.label), v.image)]
     items += bisector_items(g.bisectors, g.joint)
     items.append(arc_about(g.joint, [F[k], *(v.image for v in g.inversions)]))
@@ -807,4 +808,5 @@ __all__ = [
     "size",
     "slider_items",
     "steps",
+    "turn_arc",
 ]

@@ -371,7 +371,7 @@ def coupler_items(pf: PositionsFound) -> list[Primitive]:
                              (mid[0] + (t + ext) * b.line[2], mid[1] + (t + ext) * b.line[3]), "construction"))
         items.append(Segment(b.ends[0], b.ends[1], "construction", dashed=True))
     for centre, pts in ((g.A, pm.B), (g.D, pm.C)):
-        items.append(_arc_through(centre, pts))
+        items.append(inversions.arc_about(centre, list(pts)))
     if pm.frame is not None:
         (fx, fy), ang = pm.frame
         u = (math.cos(ang), math.sin(ang))
@@ -398,7 +398,6 @@ def fourbar_items(g: FourbarDesign) -> list[Primitive]:
         FixedPivot,
         Hinge,
         Label,
-        Polyline,
         Segment,
     )
 
@@ -406,22 +405,12 @@ def fourbar_items(g: FourbarDesign) -> list[Primitive]:
     items: list[Primitive] = []
     for v in j.inversions:  # the arc of the turn back about D, from B_i to B_i′
         assert v.centre is not None
-        r = math.hypot(v.original[0] - v.centre[0], v.original[1] - v.centre[1])
-        a0 = math.atan2(v.original[1] - v.centre[1], v.original[0] - v.centre[0])
-        items.append(Polyline(tuple((v.centre[0] + r * math.cos(a0 + v.angle * k / 30),
-                                     v.centre[1] + r * math.sin(a0 + v.angle * k / 30)) for k in range(31)),
-                              "construction"))
+        items.append(inversions.turn_arc(v.centre, v.original, v.angle))
         items += [Segment(g.A, v.original, "given", dashed=True), Segment(g.D, v.image, "construction", dashed=True),
                   Segment(g.D, v.original, "construction", dashed=True), Hinge(v.original), Hinge(v.image),
                   Label(f"{v.label[0]}_{{{v.label[1:-1]}}}′", v.image),
                   Label(f"{v.label[0]}_{{{v.label[1:-1]}}}", v.original)]
-    for b in j.bisectors:
-        mid = b.line[:2]
-        t = (g.C1[0] - mid[0]) * b.line[2] + (g.C1[1] - mid[1]) * b.line[3]
-        ext = 8.0 if t >= 0 else -8.0
-        items += [Segment(b.ends[0], b.ends[1], "construction", dashed=True),
-                  Segment((mid[0] - 0.3 * ext * b.line[2], mid[1] - 0.3 * ext * b.line[3]),
-                          (mid[0] + (t + ext) * b.line[2], mid[1] + (t + ext) * b.line[3]), "construction")]
+    items += inversions.bisector_items(j.bisectors, g.C1)
     items += [Circle(a.centre, a.radius, "construction") for a in j.arcs]
     items += [Segment(g.A, g.B1, "result"), Segment(g.B1, g.C1, "result"), Segment(g.C1, g.D, "result"),
               Segment(g.A, g.D, "construction", dashdot=True), FixedPivot(g.A), FixedPivot(g.D), Hinge(g.B1),
@@ -449,18 +438,6 @@ def notes(pf: PositionsFound, mu: float) -> tuple[str, ...]:
 def _unit(p: XY, q: XY) -> XY:
     n = math.hypot(q[0] - p[0], q[1] - p[1]) or 1.0
     return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
-
-
-def _arc_through(centre: XY, pts: tuple[XY, ...]) -> Primitive:
-    """The thin arc about ``centre`` through the points, a little past the first and the last."""
-    from graphmech.drawing.primitives import Polyline
-
-    r = math.hypot(pts[0][0] - centre[0], pts[0][1] - centre[1])
-    a = [math.atan2(q[1] - centre[1], q[0] - centre[0]) for q in pts]
-    a = [a[0] + math.remainder(x - a[0], 2 * math.pi) for x in a]
-    lo, hi = min(a) - 0.12, max(a) + 0.12
-    return Polyline(tuple((centre[0] + r * math.cos(lo + (hi - lo) * k / 40), centre[1] + r * math.sin(lo + (hi - lo) * k / 40))
-                          for k in range(41)), "construction")
 
 
 #: The positions task's phrases: key → (English, 中文, русский). 孙桓 §8: 按连杆给定位置设计.
