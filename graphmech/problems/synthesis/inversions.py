@@ -547,7 +547,6 @@ def rocker_items(g: JointDesign, p: RockerSliderPositions) -> list[Primitive]:
     a thin arc (DF_i, DF_i′ dashed), the bisectors to E; the rocker D C E and E F bold in the
     position turned to."""
     from graphmech.drawing.primitives import (
-        Circle,
         FixedPivot,
         GuideLine,
         Hinge,
@@ -568,7 +567,7 @@ def rocker_items(g: JointDesign, p: RockerSliderPositions) -> list[Primitive]:
                   Segment(p.D, v.image, "construction", dashed=True), Hinge(v.image), Label(_sub(v.label), v.image)]
     items += bisector_items(g.bisectors, g.joint)
     items.append(arc_about(g.joint, [F[k], *(v.image for v in g.inversions)]))
-    items += [Circle(a.centre, a.radius, "construction") for a in g.arcs]  # two positions: the arc of l_DE
+    items += [arc_about(a.centre, [g.joint], 0.35, 20) for a in g.arcs]  # two positions: the arc of l_DE at E
     for i in range(len(F)):
         if i != k:
             items.append(Segment(p.D, p.C[i], "given", dashed=True))
