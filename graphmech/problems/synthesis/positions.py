@@ -6,7 +6,9 @@ Analysed: the construction (:func:`graphmech.methods.synthesis_positions.coupler
 perpendicular bisectors of B₁B₂, B₂B₃ meet at A, of C₁C₂, C₂C₃ at D) drawn at μl, its lengths and
 pivots measured against the exact circumcentres (:mod:`graphmech.exact.synthesis_positions`), and
 both designs re-analysed through the positions (the re-analysis error, γ_min), Grashof's class and
-the note (no Grashof crank; positions on two branches) said under the table.
+the note (no Grashof crank; positions on two branches) said under the table. The four-bar from
+corresponding input/output positions by inversion is here too; the slider-crank, the rocker
+leading a slider and the coupler point are in :mod:`.inversions`, dispatched from here.
 """
 from __future__ import annotations
 
