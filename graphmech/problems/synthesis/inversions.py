@@ -172,6 +172,15 @@ def read_rocker_slider(r: Reader) -> RockerSliderPositions | None:
     if min(arms) <= 0.0 or max(arms) - min(arms) > 1e-9 * max(arms):
         r.problem(key, f"the rocker is not rigid: DC_i = {', '.join(f'{x:.6g}' for x in arms)} m differ")
         return None
+    size = max(arms) + max(math.dist(f, D) for f in F)
+    for i in range(len(C)):
+        for j in range(i + 1, len(C)):
+            if math.dist(C[i], C[j]) <= 1e-12 * size:
+                r.problem(key, f"C{i + 1} and C{j + 1} coincide: the rocker must turn from one position to the next")
+                return None
+    if max(math.dist(f, g) for f in F for g in F) <= 1e-12 * size:
+        r.problem(key, "the slider's positions coincide: it stands still, no guide and no coupler are found")
+        return None
     if len(F) == 3:
         u, v = (F[1][0] - F[0][0], F[1][1] - F[0][1]), (F[2][0] - F[0][0], F[2][1] - F[0][1])
         if abs(u[0] * v[1] - u[1] * v[0]) > COLLINEAR_SIN * math.hypot(*u) * math.hypot(*v):
@@ -273,6 +282,8 @@ def exact_coupler_point(p: CouplerPointPositions) -> tuple[list[complex], list[c
     C = []
     for Ei, side in zip(p.E, p.side):
         d = _z(Ei) - D
+        if d == 0:
+            raise GraphmechError("a point E_i on D: the arcs about D and E_i are concentric, they do not cut")
         along = (p.l_CD ** 2 - p.l_EC ** 2 + abs(d) ** 2) / (2 * abs(d))
         h2 = p.l_CD ** 2 - along ** 2
         if h2 < 0.0:
@@ -542,6 +553,13 @@ def slider_items(g: SliderCrankDesign, p: SliderCrankPositions) -> list[Primitiv
     return items
 
 
+def guide_direction(F: tuple[XY, ...]) -> XY:
+    """The slider's guide, F₁ → F_n; where it comes back to F₁, along its farthest two positions."""
+    a, b = (F[0], F[-1]) if math.dist(F[0], F[-1]) > 0.0 else max(((f, g) for f in F for g in F),
+                                                                 key=lambda fg: math.dist(*fg))
+    return _unit(a, b)
+
+
 def rocker_items(g: JointDesign, p: RockerSliderPositions) -> list[Primitive]:
     """The rocker's positions DC_i and the slider's F_i given, each F_i turned about D to F_i′ on
     a thin arc (DF_i, DF_i′ dashed), the bisectors to E; the rocker D C E and E F bold in the
@@ -557,7 +575,7 @@ def rocker_items(g: JointDesign, p: RockerSliderPositions) -> list[Primitive]:
 
     k = p.invert_to - 1
     F = p.F
-    u = _unit(F[0], F[-1])
+    u = guide_direction(F)
     ts = [(q[0] - F[0][0]) * u[0] + (q[1] - F[0][1]) * u[1] for q in F]
     lo, hi = min(ts) - 12.0, max(ts) + 12.0
     items: list[Primitive] = [GuideLine((F[0][0] + lo * u[0], F[0][1] + lo * u[1]),
@@ -795,6 +813,7 @@ __all__ = [
     "exact_coupler_point",
     "exact_rocker_joint",
     "exact_slider_pin",
+    "guide_direction",
     "is_form",
     "lines",
     "panels",

@@ -267,3 +267,40 @@ def test_the_coupler_and_four_bar_forms_flag_shallow_cuts_too():
 def test_the_scenes_figures_are_committed():
     for name in ("slider_crank_positions", "rocker_slider_three_positions", "coupler_point_three_positions"):
         assert (SCENES.parent / f"synthesis.{name}.svg").is_file()
+
+
+def test_a_slider_that_comes_back_to_F1_keeps_its_slanted_guide():
+    """The rocker turns on while the slider passes its far end and returns to F₁ (found by the
+    mutation campaign: the guide was taken along F₁ → F₃, of no length, so horizontal)."""
+    turn = cmath.exp(1j * math.radians(30.0))  # the whole figure turned 30°: the guide slants
+
+    def at(z: complex) -> str:
+        w = z * turn * 1000
+        return f"[{w.real!r}, {w.imag!r}]"
+
+    def F(t: float) -> complex:  # the slider on y = 25 mm of a rocker-slider l_DE = 80, l_EF = 130 mm
+        E = 0.08 * cmath.exp(1j * t)
+        return complex(E.real + math.sqrt(0.13 ** 2 - (0.025 - E.imag) ** 2), 0.025)
+
+    t = [math.radians(x) for x in (-27.540403, 6.837065, 42.915827)]  # F(t₃) = F(t₁) to 1e-9 m
+    f = [F(t[0]), F(t[1]), F(t[0])]
+    tables = "".join(f"[[synthesis.position]]\nC_mm = {at(0.125 * cmath.exp(1j * x))}\nF_mm = {at(f[i])}\n"
+                     for i, x in enumerate(t))
+    an = analyse_synthesis(parse_text(f'[synthesis]\ntask = "positions"\nD_mm = [0, 0]\n{tables}'))
+    rows = {r.name: r.exact for r in an.rows}
+    assert (rows["lDE"], rows["lEF"]) == pytest.approx((0.08, 0.13), rel=1e-6)
+    assert rows["reanalysis_error"] < 1e-9 and an.warnings == []
+
+
+@pytest.mark.parametrize(("old", "new", "reason"), [
+    ("C_mm = [75, -100]", "C_mm = [0, -125]", "C1 and C2 coincide: the rocker must turn from one position to the next"),
+    ("F_mm = [140, 25]\n", "F_mm = [70, 25]\n", None),
+])
+def test_a_rocker_standing_or_a_slider_standing_is_refused(old, new, reason):
+    text = replace_once(ROCKER, old, new)
+    if reason is None:  # every F on F₁
+        text = replace_once(text, "F_mm = [200, 25]", "F_mm = [70, 25]")
+        reason = "the slider's positions coincide: it stands still, no guide and no coupler are found"
+    with pytest.raises(SceneError) as e:
+        parse_text(text)
+    assert e.value.problems == [("synthesis.position", reason)]
