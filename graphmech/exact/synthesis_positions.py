@@ -225,10 +225,14 @@ def reanalyse_slider_crank(A: complex, l_AB: float, l_BC: float, phi: Sequence[f
 
 def reanalyse_rocker_slider(D: complex, rocker: Sequence[float], E1: complex, F: Sequence[complex]) -> Reanalysis:
     """A rocker about D (its angles ``rocker``, rad) carrying the joint E (E₁ at position 1) drives a
-    slider on the line F₁F_n through a coupler EF: does the slider reach F_i?"""
+    slider on the line F₁F_n (where it comes back to F₁: its farthest two positions) through a
+    coupler EF: does the slider reach F_i?"""
     _positions(len(rocker), rocker, F)
     l_DE, l_EF = abs(E1 - D), abs(F[0] - E1)
-    guide_angle = cmath.phase(F[-1] - F[0])
+    # the guide along F₁ → F_n, or where the slider comes back to F₁ along the farthest pair
+    ends = (F[0], F[-1]) if abs(F[-1] - F[0]) > 1e-12 * max(abs(f - D) for f in F) else \
+        max(((f, g) for f in F for g in F), key=lambda fg: abs(fg[1] - fg[0]))
+    guide_angle = cmath.phase(ends[1] - ends[0])
     g = cmath.exp(1j * guide_angle)
     turn = np.array([cmath.phase(E1 - D) + r - rocker[0] for r in rocker])
     E = [D + l_DE * cmath.exp(1j * t) for t in turn]

@@ -307,31 +307,35 @@ def _count(**seqs: Sequence[object]) -> int:
 
 
 def joint_by_inversion(points: Sequence[XY], pivot: XY, rotations: Sequence[float], names: str = "B",
-                       joint: str = "C", length: float | None = None, side: float = 1.0) -> JointDesign:
+                       joint: str = "C", length: float | None = None, side: float = 1.0,
+                       numbers: Sequence[int] | None = None) -> JointDesign:
     """The joint on a link turning about ``pivot`` that a second link carries through ``points``.
 
     ``rotations[i]`` is the link's rotation from position 1 to position i (rad, CCW; the first is 0).
     Each point is turned about the pivot by −rotation (the inversion); the joint at position 1 is the
     circumcentre of the images (three positions), or with two the point of their bisector at
-    ``length`` from the pivot, ``side`` +1 / −1 choosing between the two.
+    ``length`` from the pivot, ``side`` +1 / −1 choosing between the two. ``numbers`` are the
+    positions' numbers as the book names them (default 1, 2, 3): the construction turned to
+    position 2 passes the points in the order 2, 1, 3 and names them so.
     """
     n = _count(points=points, rotations=rotations)
-    label = [f"{names}{i + 1}" for i in range(n)]
+    label = [f"{names}{k}" for k in (numbers or range(1, n + 1))]
+    joint = f"{joint}{(numbers or (1,))[0]}"
     inv = tuple(invert_rotation(points[i], pivot, -(rotations[i] - rotations[0]), f"{label[i]}'") for i in range(1, n))
     images = [points[0], *(v.image for v in inv)]
     image_labels = [label[0], *(v.label for v in inv)]
     scale = max(_dist(p, pivot) for p in points)
     if n == 3:
-        centre, bis = circumcentre(images, image_labels, f"{joint}1", scale)
+        centre, bis = circumcentre(images, image_labels, joint, scale)
         return JointDesign(centre, inv, bis)
     if length is None:
-        raise OutOfDomain(f"with two positions the joint {joint}1 lies anywhere on the bisector: state its length "
+        raise OutOfDomain(f"with two positions the joint {joint} lies anywhere on the bisector: state its length "
                           "from the pivot")
-    _positive(f"the length of the pivot to {joint}", length)
+    _positive(f"the length of the pivot to {joint[0]}", length)
     _distinct(images, image_labels, scale)
     b = perpendicular_bisector(images[0], images[1], f"b{image_labels[0]}{image_labels[1]}")
-    at = _on_bisector(b, pivot, length, side, f"{joint}1 = arc ∩ {b.label}")
-    return JointDesign(at, inv, (b,), (Arc(f"{joint}1", pivot, length),))
+    at = _on_bisector(b, pivot, length, side, f"{joint} = arc ∩ {b.label}")
+    return JointDesign(at, inv, (b,), (Arc(joint, pivot, length),))
 
 
 def coupler_positions(B: Sequence[XY], C: Sequence[XY], frame: tuple[XY, float] | None = None) -> CouplerDesign:

@@ -6,7 +6,9 @@ Analysed: the construction (:func:`graphmech.methods.synthesis_positions.coupler
 perpendicular bisectors of B₁B₂, B₂B₃ meet at A, of C₁C₂, C₂C₃ at D) drawn at μl, its lengths and
 pivots measured against the exact circumcentres (:mod:`graphmech.exact.synthesis_positions`), and
 both designs re-analysed through the positions (the re-analysis error, γ_min), Grashof's class and
-the note (no Grashof crank; positions on two branches) said under the table.
+the note (no Grashof crank; positions on two branches) said under the table. The four-bar from
+corresponding input/output positions by inversion is here too; the slider-crank, the rocker
+leading a slider and the coupler point are in :mod:`.inversions`, dispatched from here.
 """
 from __future__ import annotations
 
@@ -17,6 +19,18 @@ from typing import TYPE_CHECKING, Any
 
 from graphmech.errors import GraphmechError, SceneError
 from graphmech.problems.reader import MISSING
+from graphmech.problems.synthesis import inversions
+from graphmech.problems.synthesis.common import (
+    conditioning,
+    design_rows,
+    exact_joint,
+    line_arc_sin,
+    lines_sin,
+    on_line,
+    read_angles,
+    read_length,
+    read_point,
+)
 
 if TYPE_CHECKING:
     from graphmech.drawing.primitives import Panel, Primitive
@@ -56,47 +70,11 @@ class FourbarPositions:
     key: str
 
 
-def _angles(r: Reader, base: str) -> tuple[float, ...] | None:
-    g = r.quantity(base, "angle")
-    if g is None:
-        return None
-    n = len(g.value) if isinstance(g.value, list) and len(g.value) in (2, 3) else 3
-    xs = r.numbers(g.value, r.at(g.key), n, shape=f"[{base}1, {base}2, {base}3] or two")
-    return None if xs is None else tuple(g.si(x) for x in xs)
-
-
-#: The largest coordinate or length a positions design takes, m: beyond it the bisectors' and the
-#: re-analysis's squares leave double precision (and no mechanism is a thousand kilometres across).
-MAX_SIZE = 1e6
-
-
-def _sized(r: Reader, base: str, value: XY | float | None) -> XY | float | None:
-    """``value`` unless a coordinate or a length exceeds :data:`MAX_SIZE` (then said at its key)."""
-    if value is None:
-        return None
-    xs = value if isinstance(value, tuple) else (value,)
-    if any(abs(x) > MAX_SIZE for x in xs):
-        r.problem(r.at(r.present(base) or base), f"{max(abs(x) for x in xs):g} m is beyond {MAX_SIZE:g} m: "
-                                                 "too large for a linkage to be designed in double precision")
-        return None
-    return value
-
-
-def _point(r: Reader, base: str, required: bool = True) -> XY | None:
-    v = _sized(r, base, r.pair(base, required=required))
-    return v if isinstance(v, tuple) else None
-
-
-def _length(r: Reader, base: str, required: bool = True) -> float | None:
-    v = _sized(r, base, r.scalar(base, "length", positive=True, required=required))
-    return v if isinstance(v, float) else None
-
-
 def _read_fourbar(r: Reader) -> FourbarPositions | None:
-    A, D = _point(r, "A"), _point(r, "D")
-    a = _length(r, "l_AB")
-    phi, psi = _angles(r, "phi"), _angles(r, "psi")
-    c = _length(r, "l_CD", required=False)
+    A, D = read_point(r, "A"), read_point(r, "D")
+    a = read_length(r, "l_AB")
+    phi, psi = read_angles(r, "phi"), read_angles(r, "psi")
+    c = read_length(r, "l_CD", required=False)
     side_raw = r.raw("side")
     side = 1.0
     if side_raw is not MISSING:
@@ -120,16 +98,23 @@ def _read_fourbar(r: Reader) -> FourbarPositions | None:
     return FourbarPositions(A, D, a, phi, psi, c, side, r.at(r.present("psi") or "psi"))
 
 
-def read_positions(r: Reader) -> CouplerPositions | FourbarPositions | None:
+#: What the positions task reads: one of its forms.
+PositionsProblem = CouplerPositions | FourbarPositions | inversions.Form
+
+
+def read_positions(r: Reader) -> PositionsProblem | None:
     """``[[synthesis.position]]`` with B and C; ``frame_through``, ``frame_angle`` with two. Or
-    the input/output form: ``A``, ``D``, ``l_AB``, ``phi``, ``psi`` (``l_CD``, ``side`` with two)."""
+    the input/output form: ``A``, ``D``, ``l_AB``, ``phi``, ``psi`` (``l_CD``, ``side`` with two).
+    Or one of the forms by inversion on a slider, a rocker or a coupler (:mod:`.inversions`)."""
+    if inversions.is_form(r):
+        return inversions.read_form(r)
     if r.present("phi") is not None:
         return _read_fourbar(r)
     tables = r.tables_at("position")
     B: list[XY] = []
     C: list[XY] = []
     for t in tables:
-        b, c = _point(t, "B"), _point(t, "C")
+        b, c = read_point(t, "B"), read_point(t, "C")
         t.finish()
         if b is not None and c is not None:
             B.append(b)
@@ -137,7 +122,7 @@ def read_positions(r: Reader) -> CouplerPositions | FourbarPositions | None:
     key = r.at("position")
     if len(tables) not in (2, 3):
         r.problem(key, f"give two or three [[{key}]] tables (the coupler's positions), not {len(tables)}")
-    through = _point(r, "frame_through", required=False)
+    through = read_point(r, "frame_through", required=False)
     angle = r.scalar("frame_angle", "angle", required=False)
     if len(tables) == 2 and (through is None or angle is None):
         r.problem(r.at("frame_through"), "with two positions each pivot lies anywhere on its bisector: "
@@ -153,9 +138,11 @@ def read_positions(r: Reader) -> CouplerPositions | FourbarPositions | None:
     return CouplerPositions(tuple(B), tuple(C), frame, key)
 
 
-def size(p: CouplerPositions | FourbarPositions) -> float:
+def size(p: PositionsProblem) -> float:
     """The drawing's spread, m: the given points and the pivots (where they exist; a refusal is
     said by the analysis)."""
+    if not isinstance(p, (CouplerPositions, FourbarPositions)):
+        return inversions.size(p)
     if isinstance(p, FourbarPositions):
         pts = [p.A, p.D, *((p.A[0] + p.l_AB * math.cos(f), p.A[1] + p.l_AB * math.sin(f)) for f in p.phi)]
         try:
@@ -173,7 +160,7 @@ def size(p: CouplerPositions | FourbarPositions) -> float:
     return max(max(xs) - min(xs), max(ys) - min(ys))
 
 
-def choose_scale(p: CouplerPositions | FourbarPositions) -> float:
+def choose_scale(p: PositionsProblem) -> float:
     """μl that draws the linkage about 100 mm across."""
     from graphmech.scales import round_scale
 
@@ -190,15 +177,7 @@ def exact_pivots(p: CouplerPositions) -> tuple[complex, complex]:
     if p.frame is None:
         return circumcentre(*B), circumcentre(*C)
     P, u = complex(*p.frame[0]), complex(math.cos(p.frame[1]), math.sin(p.frame[1]))
-
-    def on_line(Q1: complex, Q2: complex) -> complex:
-        # |P + tu − Q1|² = |P + tu − Q2|²: linear in t
-        den = 2.0 * ((Q2 - Q1) * u.conjugate()).real
-        if den == 0.0:
-            raise GraphmechError("the frame line runs along a bisector: it does not cut it")
-        return P + u * (abs(Q2 - P) ** 2 - abs(Q1 - P) ** 2) / den
-
-    return on_line(B[0], B[1]), on_line(C[0], C[1])
+    return on_line(P, u, B[0], B[1]), on_line(P, u, C[0], C[1])
 
 
 def exact_C1(p: FourbarPositions, near: complex | None = None) -> complex:
@@ -207,24 +186,9 @@ def exact_C1(p: FourbarPositions, near: complex | None = None) -> complex:
     (of the two, the one nearer ``near``, the construction's: the side is a choice, not a value)."""
     import cmath
 
-    from graphmech.exact.synthesis_positions import circumcentre
-
     A, D = complex(*p.A), complex(*p.D)
     B = [A + p.l_AB * cmath.exp(1j * f) for f in p.phi]
-    im = [D + (B[i] - D) * cmath.exp(-1j * (p.psi[i] - p.psi[0])) for i in range(len(B))]
-    if len(B) == 3:
-        return circumcentre(*im)
-    assert p.l_CD is not None
-    mid, u = (im[0] + im[1]) / 2, (im[1] - im[0]) * 1j
-    if abs(u) == 0.0:
-        raise GraphmechError("B1 and its inverted image B2' coincide: no bisector")
-    u /= abs(u)
-    t0 = ((D - mid) * u.conjugate()).real  # the foot of D on the bisector
-    h2 = p.l_CD ** 2 - abs(mid + t0 * u - D) ** 2
-    if h2 < 0.0:
-        raise GraphmechError(f"the arc of l_CD = {p.l_CD:.6g} m about D does not reach the bisector of B1B2'")
-    cands = [mid + (t0 + k * math.sqrt(h2)) * u for k in (1.0, -1.0)]
-    return min(cands, key=lambda z: abs(z - (near if near is not None else cands[0])))
+    return exact_joint(B, D, p.psi, p.l_CD, near)
 
 
 @dataclass
@@ -242,21 +206,6 @@ class PositionsFound:
     warnings: list[str]
     solutions: list[dict[str, Any]]
     names: list[str]
-
-
-def _rows(drawn: dict[str, float], exact: dict[str, float], mu: float, size_m: float, gr: Reanalysis,
-          xr: Reanalysis) -> tuple[list[Row], list[str]]:
-    """Both forms' rows: each length and coordinate drawn (mm × μl) against exact (its error
-    relative to the design's largest link), then the re-analysis error and γ_min of the drawn
-    design against the exact one; and the names they answer."""
-    from graphmech.problems.judging import Row
-
-    rows = [Row(n, "m", d, mu, d * mu, exact[n], abs(d * mu - exact[n]) / size_m) for n, d in drawn.items()]
-    rows.append(Row("reanalysis_error", "", None, 1.0, gr.error, xr.error, abs(gr.error - xr.error)))
-    if gr.characteristics is not None and xr.characteristics is not None:
-        gg, ge = gr.characteristics.gamma_min, xr.characteristics.gamma_min
-        rows.append(Row("gamma_min", "deg", None, 1.0, math.degrees(gg), math.degrees(ge), abs(gg - ge) / math.pi))
-    return rows, [r.name for r in rows]
 
 
 def analyse_fourbar(p: FourbarPositions, mu: float, find: tuple[str, ...] = (), source: str = "") -> PositionsFound:
@@ -279,7 +228,7 @@ def analyse_fourbar(p: FourbarPositions, mu: float, find: tuple[str, ...] = (), 
     xr = reanalyse_fourbar(A, D, p.l_AB, ex["lBC"], ex["lCD"], p.phi, p.psi, C1)
     gC1 = complex(*g.C1) * mu
     gr = reanalyse_fourbar(A, D, p.l_AB, g.l_BC * mu, g.l_CD * mu, p.phi, p.psi, gC1)
-    rows, names = _rows(dr, ex, mu, max(p.l_AB, ex["lBC"], ex["lCD"], abs(D - A)), gr, xr)
+    rows, names = design_rows(dr, ex, mu, max(p.l_AB, ex["lBC"], ex["lCD"], abs(D - A)), gr, xr)
     sol = {"name": "design", "lAB": p.l_AB, "lBC": ex["lBC"], "lCD": ex["lCD"], "lAD": abs(D - A),
            "C1": [C1.real, C1.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
            "reanalysis": {"error": xr.error, "gamma_deg": [math.degrees(x) for x in xr.gamma],
@@ -287,13 +236,20 @@ def analyse_fourbar(p: FourbarPositions, mu: float, find: tuple[str, ...] = (), 
                              else {"gamma_min_deg": math.degrees(xr.characteristics.gamma_min)})},
            "note": xr.note}
     wanted = set(find) or None
-    return PositionsFound(g, pm, A, D, gr, xr, [r for r in rows if wanted is None or r.name in wanted],
-                          [xr.note] if xr.note else [], [sol], names)
+    j = g.construction
+    joint = ("lBC", "lCD", "xC1", "yC1")
+    cuts = ([(f"C1 = {j.bisectors[0].label} ∩ {j.bisectors[1].label}", lines_sin(j.bisectors[0].line, j.bisectors[1].line),
+              joint)] if len(j.bisectors) == 2 else
+            [(f"C1 = arc ∩ {j.bisectors[0].label}", line_arc_sin(j.bisectors[0].line, pm.D, g.C1), joint)])
+    kept, shallow = conditioning(cuts, [r for r in rows if wanted is None or r.name in wanted])
+    return PositionsFound(g, pm, A, D, gr, xr, kept, ([xr.note] if xr.note else []) + shallow, [sol], names)
 
 
-def analyse_positions(p: CouplerPositions | FourbarPositions, mu: float, find: tuple[str, ...] = (),
-                      source: str = "") -> PositionsFound:
+def analyse_positions(p: PositionsProblem, mu: float, find: tuple[str, ...] = (),
+                      source: str = "") -> PositionsFound | inversions.InversionFound:
     """The construction at μl = ``mu`` against the exact pivots, both re-analysed."""
+    if not isinstance(p, (CouplerPositions, FourbarPositions)):
+        return inversions.analyse(p, mu, find, source)
     if isinstance(p, FourbarPositions):
         return analyse_fourbar(p, mu, find, source)
     from graphmech.exact.synthesis_positions import reanalyse_coupler
@@ -318,7 +274,7 @@ def analyse_positions(p: CouplerPositions | FourbarPositions, mu: float, find: t
           "xA": A.real, "yA": A.imag, "xD": D.real, "yD": D.imag}
     dr = {"lAB": g.l_AB, "lBC": g.l_BC, "lCD": g.l_CD, "lAD": g.l_AD, "xA": g.A[0], "yA": g.A[1],
           "xD": g.D[0], "yD": g.D[1]}
-    rows, names = _rows(dr, ex, mu, max(ex["lAB"], ex["lBC"], ex["lCD"], ex["lAD"]), gr, xr)
+    rows, names = design_rows(dr, ex, mu, max(ex["lAB"], ex["lBC"], ex["lCD"], ex["lAD"]), gr, xr)
     warnings = [xr.note] if xr.note else []
     sol = {"name": "design", **{n: ex[n] for n in ("lAB", "lBC", "lCD", "lAD")}, "A": [A.real, A.imag],
            "D": [D.real, D.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
@@ -327,21 +283,38 @@ def analyse_positions(p: CouplerPositions | FourbarPositions, mu: float, find: t
                              else {"gamma_min_deg": math.degrees(xr.characteristics.gamma_min)})},
            "note": xr.note}
     wanted = set(find) or None
-    return PositionsFound(g, pm, A, D, gr, xr, [r for r in rows if wanted is None or r.name in wanted], warnings,
-                          [sol], names)
+    kept, shallow = conditioning(coupler_cuts(g, pm), [r for r in rows if wanted is None or r.name in wanted])
+    return PositionsFound(g, pm, A, D, gr, xr, kept, warnings + shallow, [sol], names)
+
+
+def coupler_cuts(g: CouplerDesign, pm: CouplerPositions) -> list[tuple[str, float, tuple[str, ...]]]:
+    """Where the coupler form's pivots are cut: two bisectors, or a bisector and the frame line."""
+    b = g.bisectors
+    at_A, at_D = ("lAB", "lAD", "xA", "yA"), ("lCD", "lAD", "xD", "yD")
+    if pm.frame is None:
+        return [(f"A = {b[0].label} ∩ {b[1].label}", lines_sin(b[0].line, b[1].line), at_A),
+                (f"D = {b[2].label} ∩ {b[3].label}", lines_sin(b[2].line, b[3].line), at_D)]
+    (fx, fy), ang = pm.frame
+    frame = (fx, fy, math.cos(ang), math.sin(ang))
+    return [(f"A = {b[0].label} ∩ frame line", lines_sin(b[0].line, frame), at_A),
+            (f"D = {b[1].label} ∩ frame line", lines_sin(b[1].line, frame), at_D)]
 
 
 #: The task's protocol names (:data:`graphmech.problems.synthesis.check.SELF_CONTAINED`).
 analyse = analyse_positions
 
 
-def lines(pf: PositionsFound) -> list[str]:
+def lines(pf: PositionsFound | inversions.InversionFound) -> list[str]:
     """Under the table: the design's Grashof class, re-analysis error and note."""
+    if isinstance(pf, inversions.InversionFound):
+        return inversions.lines(pf)
     return [grashof_line(s) for s in pf.solutions]
 
 
-def panels(pf: PositionsFound, mu: float) -> tuple[str, list[Panel]]:
+def panels(pf: PositionsFound | inversions.InversionFound, mu: float) -> tuple[str, list[Panel]]:
     """The sheet's title and its one panel: the construction with the design bold."""
+    if isinstance(pf, inversions.InversionFound):
+        return inversions.panels(pf, mu)
     from graphmech.drawing.primitives import Panel
 
     name = panel_title(pf)
@@ -362,6 +335,7 @@ __all__ = [
     "PHRASES",
     "CouplerPositions",
     "PositionsFound",
+    "PositionsProblem",
     "analyse",
     "analyse_positions",
     "choose_scale",
@@ -399,7 +373,7 @@ def coupler_items(pf: PositionsFound) -> list[Primitive]:
                              (mid[0] + (t + ext) * b.line[2], mid[1] + (t + ext) * b.line[3]), "construction"))
         items.append(Segment(b.ends[0], b.ends[1], "construction", dashed=True))
     for centre, pts in ((g.A, pm.B), (g.D, pm.C)):
-        items.append(_arc_through(centre, pts))
+        items.append(inversions.arc_about(centre, list(pts)))
     if pm.frame is not None:
         (fx, fy), ang = pm.frame
         u = (math.cos(ang), math.sin(ang))
@@ -426,7 +400,6 @@ def fourbar_items(g: FourbarDesign) -> list[Primitive]:
         FixedPivot,
         Hinge,
         Label,
-        Polyline,
         Segment,
     )
 
@@ -434,22 +407,12 @@ def fourbar_items(g: FourbarDesign) -> list[Primitive]:
     items: list[Primitive] = []
     for v in j.inversions:  # the arc of the turn back about D, from B_i to B_i′
         assert v.centre is not None
-        r = math.hypot(v.original[0] - v.centre[0], v.original[1] - v.centre[1])
-        a0 = math.atan2(v.original[1] - v.centre[1], v.original[0] - v.centre[0])
-        items.append(Polyline(tuple((v.centre[0] + r * math.cos(a0 + v.angle * k / 30),
-                                     v.centre[1] + r * math.sin(a0 + v.angle * k / 30)) for k in range(31)),
-                              "construction"))
+        items.append(inversions.turn_arc(v.centre, v.original, v.angle))
         items += [Segment(g.A, v.original, "given", dashed=True), Segment(g.D, v.image, "construction", dashed=True),
                   Segment(g.D, v.original, "construction", dashed=True), Hinge(v.original), Hinge(v.image),
                   Label(f"{v.label[0]}_{{{v.label[1:-1]}}}′", v.image),
                   Label(f"{v.label[0]}_{{{v.label[1:-1]}}}", v.original)]
-    for b in j.bisectors:
-        mid = b.line[:2]
-        t = (g.C1[0] - mid[0]) * b.line[2] + (g.C1[1] - mid[1]) * b.line[3]
-        ext = 8.0 if t >= 0 else -8.0
-        items += [Segment(b.ends[0], b.ends[1], "construction", dashed=True),
-                  Segment((mid[0] - 0.3 * ext * b.line[2], mid[1] - 0.3 * ext * b.line[3]),
-                          (mid[0] + (t + ext) * b.line[2], mid[1] + (t + ext) * b.line[3]), "construction")]
+    items += inversions.bisector_items(j.bisectors, g.C1)
     items += [Circle(a.centre, a.radius, "construction") for a in j.arcs]
     items += [Segment(g.A, g.B1, "result"), Segment(g.B1, g.C1, "result"), Segment(g.C1, g.D, "result"),
               Segment(g.A, g.D, "construction", dashdot=True), FixedPivot(g.A), FixedPivot(g.D), Hinge(g.B1),
@@ -479,20 +442,9 @@ def _unit(p: XY, q: XY) -> XY:
     return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
 
 
-def _arc_through(centre: XY, pts: tuple[XY, ...]) -> Primitive:
-    """The thin arc about ``centre`` through the points, a little past the first and the last."""
-    from graphmech.drawing.primitives import Polyline
-
-    r = math.hypot(pts[0][0] - centre[0], pts[0][1] - centre[1])
-    a = [math.atan2(q[1] - centre[1], q[0] - centre[0]) for q in pts]
-    a = [a[0] + math.remainder(x - a[0], 2 * math.pi) for x in a]
-    lo, hi = min(a) - 0.12, max(a) + 0.12
-    return Polyline(tuple((centre[0] + r * math.cos(lo + (hi - lo) * k / 40), centre[1] + r * math.sin(lo + (hi - lo) * k / 40))
-                          for k in range(41)), "construction")
-
-
 #: The positions task's phrases: key → (English, 中文, русский). 孙桓 §8: 按连杆给定位置设计.
 PHRASES: dict[str, tuple[str, str, str]] = {
+    **inversions.PHRASES,
     "given": ("draw the coupler's {n} given positions B_iC_i (BC = {mm} mm)",
               "画出连杆的{n}个给定位置B_iC_i（BC = {mm} mm）",
               "строим {n} заданных положения шатуна B_iC_i (BC = {mm} mm)"),
@@ -529,8 +481,11 @@ PHRASES: dict[str, tuple[str, str, str]] = {
 }
 
 
-def steps(pf: PositionsFound, mu: float, say: Callable[..., str], num: Callable[[float], str]) -> list[str]:
+def steps(pf: PositionsFound | inversions.InversionFound, mu: float, say: Callable[..., str],
+          num: Callable[[float], str]) -> list[str]:
     """The construction protocol's lines after μl is chosen: the numbers the check's rows read."""
+    if isinstance(pf, inversions.InversionFound):
+        return inversions.steps(pf, mu, say, num)
     g = pf.drawn
     if isinstance(pf.mm, FourbarPositions):
         n = len(pf.mm.phi)

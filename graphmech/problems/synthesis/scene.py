@@ -19,17 +19,13 @@ from graphmech.problems.reader import (
     read_scales,
     read_tail,
 )
-from graphmech.problems.synthesis.positions import (
-    CouplerPositions,
-    FourbarPositions,
-    read_positions,
-)
+from graphmech.problems.synthesis.positions import PositionsProblem, read_positions
 from graphmech.problems.synthesis.time_ratio import Problem, read_time_ratio
 
 #: What a synthesis scene may show: the construction with the designed linkages.
 SYNTHESIS_SHOW_CHOICES = ("design",)
 #: The tasks and their readers (the function task of issue 20 joins here).
-TASKS: dict[str, Callable[[Reader], Problem | CouplerPositions | FourbarPositions | None]] = {
+TASKS: dict[str, Callable[[Reader], Problem | PositionsProblem | None]] = {
     "time_ratio": read_time_ratio, "positions": read_positions}
 
 
@@ -38,7 +34,7 @@ class SynthesisScene:
     """What [synthesis] asks: its task and that task's problem (a :class:`TimeRatio` …)."""
 
     task: str
-    problem: Problem | CouplerPositions | FourbarPositions
+    problem: Problem | PositionsProblem
 
 
 def parse_synthesis_scene(data: Mapping[str, Any], source: str, top: Reader,
