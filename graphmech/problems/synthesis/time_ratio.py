@@ -312,11 +312,13 @@ def analyse_time_ratio(p: Problem, mu: float, find: tuple[str, ...] = (), source
                 abs(math.degrees(drawn[0].theta) - theta) / 180.0)]
     for k, (g, e) in enumerate(zip(drawn, exact)):
         pre = prefix(k, n)
+        # a length is drawn to round-off of the drawing's size (a crank of K → 1 is a hair of it)
+        size_m = max(e.AC1, e.AC2, p.rocker, p.frame)
         ill = _conditioning(out.warnings, pre.rstrip("_") or "design", g.cond,
                             "the θ-circle's centre O and its cut" if p.limit_angle is None else "the ray's cut with the rocker's circle")
         for name, mm, si in (("AC1", g.AC1_mm, e.AC1), ("AC2", g.AC2_mm, e.AC2), ("lAB", g.lAB_mm, e.lAB),
                              ("lBC", g.lBC_mm, e.lBC)):
-            rows.append(Row(pre + name, "m", mm, mu, mm * mu, si, abs(mm * mu - si) / si, ill))
+            rows.append(Row(pre + name, "m", mm, mu, mm * mu, si, abs(mm * mu - si) / size_m, ill))
         # the designed linkage re-analysed: drawn as a linkage of its own, and exactly
         A, D = g.points["A"], g.points["D"]
         lk = Linkage({"A": (A[0] * mu, A[1] * mu), "D": (D[0] * mu, D[1] * mu)},
@@ -415,7 +417,7 @@ def _analyse_slider_crank(p: SliderCrank, mu: float, find: tuple[str, ...], sour
     rows = [Row("theta", "deg", None, 1.0, math.degrees(_angle_at(g.points["A"], g.points["C1"], g.points["C2"])),
                 math.degrees(p.theta), abs(_angle_at(g.points["A"], g.points["C1"], g.points["C2"]) - p.theta) / math.pi)]
     for name, mm, si in (("AC1", g.AC1_mm, ac1), ("AC2", g.AC2_mm, ac2), ("lAB", g.lAB_mm, a), ("lBC", g.lBC_mm, b)):
-        rows.append(Row(name, "m", mm, mu, mm * mu, si, abs(mm * mu - si) / si, ill))
+        rows.append(Row(name, "m", mm, mu, mm * mu, si, abs(mm * mu - si) / max(ac1, ac2, p.stroke), ill))
     A = g.points["A"]
     lk = Linkage({"A": (A[0] * mu, A[1] * mu)}, Crank("1", "A", "B", g.lAB_mm * mu, 1.0),
                  (RRP("B", "C", ("2", "3"), g.lBC_mm * mu, Guide((0.0, 0.0), 0.0), "forward"),))
