@@ -514,8 +514,8 @@ def panels(ff: FunctionFound, mu: float) -> tuple[str, list[Panel]]:
     p, g = ff.problem, ff.drawn_bar
     d = ff.design
     title = f"Function generator for y = {_fname(p)}, {p.points} {p.spacing} precision points"
-    rev = ("AB reversed: at φ + 180°",) if d.input_reversed else ()
-    rev += ("DC reversed: at ψ + 180°",) if d.output_reversed else ()
+    rev = tuple(w for w, on in (("AB reversed: at φ + 180°", d.input_reversed),
+                                ("DC reversed: at ψ + 180°", d.output_reversed)) if on)
     notes1 = (scale_text("l", mu),
               (f"l_{{AB}} = {number(g.a * 1000)} mm, l_{{BC}} = {number(g.b * 1000)} mm, "
               f"l_{{CD}} = {number(g.c * 1000)} mm, l_{{AD}} = {number(g.d * 1000)} mm"), *rev)
