@@ -490,12 +490,13 @@ def error_items(ff: FunctionFound, mu_e: float) -> list[Primitive]:
     for k in range(math.ceil(lo / e_step - 1e-9), math.floor(hi / e_step + 1e-9) + 1):
         yt = k * e_step
         items.append(Segment((0.0, yt), (-1.0, yt), "label"))
-        texts.append(Text(f"{number(yt * mu_e)}°", (-1.8, yt), small, anchor="end"))
+        if k != 0:  # the zero line is the curve's own reference: its 0 would crowd x₁ there
+            texts.append(Text(f"{number(yt * mu_e)}°", (-1.8, yt), small, anchor="end"))
     for k, xk in enumerate(ff.design.x):  # the precision points on the zero line, dashed down to the axis
         xt = float(X(xk))
         items += [Segment((xt, 0.0), (xt, base), "construction", dashed=True), Circle((xt, 0.0), 0.8, "result")]
         texts.append(Label(f"x_{{{k + 1}}}", (xt, 0.0), ((0.0, -1.0), (1.0, 0.0), (-1.0, 0.0),
-                                                         (0.0, 1.0 if ys[min(len(ys) - 1, int(np.searchsorted(xs, xk)))] > 0 else -1.0))))
+                                                         (0.0, 1.0 if ys[int(np.argmin(np.abs(xs - xk)))] > 0 else -1.0))))
     items.append(Polyline(tuple(zip((float(v) for v in X(xs)), (float(v) for v in ys))), "result"))
     # the largest error's level, dashed across the plot, named at its right end
     k = int(np.argmax(np.abs(s.error)))
