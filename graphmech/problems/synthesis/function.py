@@ -40,6 +40,9 @@ ILL_CONDITION = 1e3
 CURVE_SAMPLES = 201
 #: The largest frame a design takes, m (as the positions task's MAX_SIZE: double precision).
 MAX_FRAME = 1e6
+#: The largest |x| and the narrowest range (relative to |x|) a scene takes: beyond them the map of
+#: x on φ and of y on ψ loses the digits the precision points need.
+MAX_X, NARROW = 1e6, 1e-9
 #: The error plot's x axis and its largest ordinate, mm.
 PLOT_WIDTH, PLOT_HEIGHT = 100.0, 40.0
 #: The task's rows, with their units.
@@ -106,6 +109,13 @@ def read_function(r: Reader) -> FunctionProblem | None:
     xs = None if xr is MISSING else r.numbers(xr, r.at("x_range"), 2, shape="[x0, x1]")
     if xs is not None and xs[0] == xs[1]:
         r.problem(r.at("x_range"), f"x₀ = x₁ = {xs[0]:g}: the range of x is empty")
+        xs = None
+    elif xs is not None and max(abs(xs[0]), abs(xs[1])) > MAX_X:
+        r.problem(r.at("x_range"), f"|x| up to {max(abs(xs[0]), abs(xs[1])):g}: beyond {MAX_X:g} (scale x first)")
+        xs = None
+    elif xs is not None and abs(xs[1] - xs[0]) < NARROW * max(abs(xs[0]), abs(xs[1])):
+        r.problem(r.at("x_range"), f"[{xs[0]:.17g}, {xs[1]:.17g}] is too narrow for double precision: "
+                                   f"x₁ − x₀ under {NARROW:g} of |x|")
         xs = None
     if xs is not None and name is not None:
         fn = named_function(name, exponent)
@@ -278,7 +288,12 @@ class FunctionFound:
 def _re(bar: FourBar, p: FunctionProblem, d: Design, samples: int) -> StructuralError:
     from graphmech.exact.freudenstein import structural_error
 
-    return structural_error(bar, p.f(), p.x0, p.x1, p.phi0, p.dphi, p.psi0, p.dpsi, d.phi, samples)
+    f, lo, hi = p.f(), min(p.x0, p.x1), max(p.x0, p.x1)
+
+    def inside(x: np.ndarray) -> np.ndarray:  # x from φ rounds a hair past an end: sqrt(−1e-17)
+        return f(np.clip(x, lo, hi))
+
+    return structural_error(bar, inside, p.x0, p.x1, p.phi0, p.dphi, p.psi0, p.dpsi, d.phi, samples)
 
 
 def _curve_max(s: StructuralError, p: FunctionProblem) -> tuple[float, float]:
@@ -327,6 +342,9 @@ def analyse_function(p: FunctionProblem, mu: float, find: tuple[str, ...] = (), 
     gr2 = _re(gbar, p, d, 2 * CURVE_SAMPLES - 1)
     if not (gr.assembles and gr2.assembles):
         raise SceneError([(p.key, f"the drawn linkage {gr.why or gr2.why}")], source)
+    if not (np.all(np.isfinite(gr.error)) and np.all(np.isfinite(gr2.error)) and math.isfinite(xr.max_error)):
+        raise SceneError([(p.key, ("the structural error is not finite over the range: f or the linkage breaks "
+                                  "down in double precision"))], source)
     size_m = max(exact.values())
     rows = [Row(n, "m", v, mu, v * mu, exact[n], abs(v * mu - exact[n]) / size_m) for n, v in drawn.items()]
     gm, xm = _miss(gr, gbar), _miss(xr, xbar)

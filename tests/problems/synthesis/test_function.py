@@ -224,3 +224,26 @@ def test_a_power_takes_its_exponent_and_only_it_does():
     with pytest.raises(SceneError) as e:
         parse_text(LOG10.replace("x_range", "exponent = 2\nx_range"))
     assert e.value.problems == [("synthesis.exponent", 'log10 takes no exponent (only function = "power" does)')]
+
+
+@pytest.mark.parametrize(("keys", "words"), [
+    ({"x_range": "[1e308, 1]"}, "|x| up to 1e+308: beyond 1e+06 (scale x first)"),
+    ({"x_range": "[1, 1.000000000000001]"}, "is too narrow for double precision"),
+    ({"x_range": "[-1, 1]", "function": '"cos"'}, "f(x₀) = f(x₁) = 0.540302: the output's swing cannot be laid on y"),
+    ({"x_range": "[1, 2]", "function": '"tan"'}, "tan has a pole at x = 1.5708 rad, inside the range"),
+])
+def test_ranges_double_precision_cannot_carry_are_refused_at_x_range(keys: dict, words: str):
+    with pytest.raises(SceneError) as e:
+        parse_text(_with(**keys))
+    assert len(e.value.problems) == 1 and e.value.problems[0][0] == "synthesis.x_range"
+    assert words in e.value.problems[0][1]
+
+
+def test_a_range_ending_on_the_domains_edge_is_sampled_inside_it():
+    # sqrt over [0.5, 0]: x from φ rounds a hair below 0 at the end (sqrt(−1e-17) is NaN): clipped
+    text = _with(function='"sqrt"', x_range="[0.5, 0]", phi_start_deg="179.9", phi_range_deg="2",
+                 psi_start_deg="179.9", psi_range_deg="10", points="4", spacing='"uniform"', frame_mm="1e9")
+    an = analyse_synthesis(parse_text(text))
+    sheet = synthesis_sheet(an, (297.0, 210.0))
+    assert all(math.isfinite(r.graphical) and math.isfinite(r.exact) for r in an.rows) and len(sheet.panels) == 2
+    assert {r.name: r for r in an.rows}["structural_error_max"].exact == pytest.approx(2.45712, rel=1e-4)
