@@ -5,9 +5,9 @@ Records as :mod:`graphmech.bench`'s, from :func:`graphmech.exact.freudenstein.co
 the log10 classic (y = log10 x over [1, 2], Δφ = 60°, Δψ = 90°, three precision points), Chebyshev
 and uniform spacing:
 
-* ``freudenstein structural error``: the largest |Δψ| located (sampled, each extreme refined),
+* ``freudenstein-structural-error``: the largest |Δψ| located (sampled, each extreme refined),
   against the one at the most samples — independent of the sampling once refined;
-* ``structural error read off the curve``: the largest sampled |Δψ| alone, as the check table's
+* ``structural-error-sampled-curve``: the largest sampled |Δψ| alone, as the check table's
   graphical value reads it off the figure's curve — a discretised value, order 2 where the
   largest error is inside the range (uniform spacing); exact where it is at an end (Chebyshev's).
   Its ``seconds`` are those of the same run (the refinement included).
@@ -20,8 +20,9 @@ from typing import Any
 #: The samples of the curve the records take (``quick``: fewer).
 SAMPLES = (11, 21, 51, 101, 201, 501, 2001)
 QUICK_SAMPLES = (11, 51, 201, 2001)
-#: The method name of the records of the curve read without refinement.
-SAMPLED = "structural error read off the curve"
+#: The method names (file names of the bench's plots: no spaces): the located extreme, and the
+#: curve read without refinement.
+LOCATED, SAMPLED = "freudenstein-structural-error", "structural-error-sampled-curve"
 
 
 def structural_error_records(quick: bool = False) -> list[dict[str, Any]]:
@@ -38,7 +39,7 @@ def structural_error_records(quick: bool = False) -> list[dict[str, Any]]:
         bar = FourBar(r.a, r.b, r.c, r.d, r.input_reversed, r.output_reversed)
         rows = convergence(bar, f, r.x0, r.x1, r.phi0, r.dphi, r.psi0, r.dpsi, r.phi, case=f"log10-{spacing}",
                            samples=QUICK_SAMPLES if quick else SAMPLES, repeat=1 if quick else 3)
-        records += rows
+        records += [{**row, "method": LOCATED} for row in rows]
         records += [{**row, "method": SAMPLED, "max_rel_error": row["sampled_rel_error"],
                      "note": "the largest sampled |Δψ| without refinement; timed with it"} for row in rows]
     return records
@@ -70,4 +71,4 @@ def bench(quick: bool = False) -> tuple[list[dict[str, Any]], list[str]]:
     return records, structural_error_notes(records)
 
 
-__all__ = ["QUICK_SAMPLES", "SAMPLED", "SAMPLES", "bench", "structural_error_notes", "structural_error_records"]
+__all__ = ["LOCATED", "QUICK_SAMPLES", "SAMPLED", "SAMPLES", "bench", "structural_error_notes", "structural_error_records"]

@@ -22,6 +22,7 @@ import numpy as np
 
 from graphmech.errors import GraphmechError, SceneError
 from graphmech.problems.reader import MISSING
+from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
     from graphmech.drawing.primitives import Panel, Primitive
@@ -40,6 +41,9 @@ ILL_CONDITION = 1e3
 CURVE_SAMPLES = 201
 #: The largest frame a design takes, m (as the positions task's MAX_SIZE: double precision).
 MAX_FRAME = 1e6
+#: The round-off of an angle found from the drawn lengths (ψ by the law of cosines, γ by acos), rad:
+#: the floor of the sampled rows' estimates (≈ 100 ε).
+ANGLE_ROUND_OFF = 100.0 * EPS
 #: The largest |x| and the narrowest range (relative to |x|) a scene takes: beyond them the map of
 #: x on φ and of y on ψ loses the digits the precision points need.
 MAX_X, NARROW = 1e6, 1e-9
@@ -249,15 +253,22 @@ def gamma_min_range(bar: FourBar, phi0: float, dphi: float) -> float:
     return math.acos(worst)
 
 
-def _sampled_gamma(bar: FourBar, phi: np.ndarray, branch: str) -> float:
-    """γ_min over the sampled positions (rad): ∠BCD of each, taken ≤ 90°."""
+def _sampled_gamma(bar: FourBar, phi: np.ndarray, branch: str) -> np.ndarray:
+    """γ at the sampled positions (rad): ∠BCD of each, taken ≤ 90°."""
     from graphmech.exact.freudenstein import output_angle
 
     psi, _ = output_angle(bar, phi, branch)
     B = (-1.0 if bar.input_reversed else 1.0) * bar.a * np.exp(1j * phi)
     C = -bar.d + (-1.0 if bar.output_reversed else 1.0) * bar.c * np.exp(1j * psi)
     cosd = np.real((B - C) * np.conj(-bar.d - C)) / (bar.b * bar.c)
-    return float(math.acos(min(1.0, float(np.max(np.abs(cosd))))))
+    return np.asarray(np.arccos(np.minimum(1.0, np.abs(cosd))), dtype=float)
+
+
+def _missed(v: np.ndarray, k: int) -> float:
+    """What samples can miss of a smooth extreme found at sample ``k``: the true one lies within half
+    a step, where the parabola through the three samples rises by at most |v[k+1] − 2v[k] + v[k−1]|/8
+    (h²|v″|/8); nothing at an end sample (the end is sampled)."""
+    return abs(float(v[k + 1] - 2.0 * v[k] + v[k - 1])) / 8.0 if 0 < k < v.size - 1 else 0.0
 
 
 # ----------------------------------------------------------------------------- the analysis
@@ -353,17 +364,25 @@ def analyse_function(p: FunctionProblem, mu: float, find: tuple[str, ...] = (), 
     (e1, x1), (e2, x2) = _curve_max(gr, p), _curve_max(gr2, p)
     k = int(np.argmax(np.abs(xr.extremes)))
     ex_x = float(p.x0 + (xr.extremes_phi[k] - p.phi0) * (p.x1 - p.x0) / p.dphi)
+    # each estimate: the curve read again at twice the samples (Richardson, order 2), at least what
+    # the samples can miss of the extreme (_missed), at least the angles' round-off (ANGLE_ROUND_OFF)
     basis = f"{CURVE_SAMPLES} samples of the curve"
+    ke = int(np.argmax(np.abs(gr.error)))
+    err_e = max(richardson(e1, e2, 2), _missed(np.abs(gr.error), ke), ANGLE_ROUND_OFF)
     rows.append(Row("structural_error_max", "deg", None, 1.0, math.degrees(e1), math.degrees(xr.max_error),
                     abs(e1 - xr.max_error) / xr.max_error if xr.max_error > 0 else abs(e1))
-                .estimated(DISCRETISATION, relative(richardson(e1, e2, 2), e1), basis))
+                .estimated(DISCRETISATION, relative(err_e, e1), basis))
     span = abs(p.x1 - p.x0)
+    half_step = 0.5 / (CURVE_SAMPLES - 1) if 0 < ke < gr.error.size - 1 else 0.0
     rows.append(Row("x_error_max", "", None, 1.0, x1, ex_x, abs(x1 - ex_x) / span)
-                .estimated(DISCRETISATION, abs(x1 - x2) / span, basis))
-    g1, g2 = _sampled_gamma(gbar, gr.phi, gr.branch), _sampled_gamma(gbar, gr2.phi, gr2.branch)
+                .estimated(DISCRETISATION, max(abs(x1 - x2) / span, half_step), basis))
+    gv, gv2 = _sampled_gamma(gbar, gr.phi, gr.branch), _sampled_gamma(gbar, gr2.phi, gr2.branch)
+    kg = int(np.argmin(gv))
+    g1, g2 = float(gv[kg]), float(gv2.min())
     gx = gamma_min_range(xbar, p.phi0, p.dphi)
+    err_g = max(richardson(g1, g2, 2), _missed(gv, kg), ANGLE_ROUND_OFF)
     rows.append(Row("gamma_min_range", "deg", None, 1.0, math.degrees(g1), math.degrees(gx), abs(g1 - gx) / math.pi)
-                .estimated(DISCRETISATION, relative(richardson(g1, g2, 2), math.pi), basis))
+                .estimated(DISCRETISATION, relative(err_g, math.pi), basis))
     warnings = []
     if d.condition > ILL_CONDITION:
         warnings.append(f"the precision points are nearly dependent: Freudenstein's system has the condition "
