@@ -232,6 +232,8 @@ def test_any_mutation_gives_a_scene_or_a_scene_error(data: st.DataObject) -> Non
             assert scene.linkage is None and len(p.phi) == len(p.psi) in (2, 3) and positions.size(p) > 0
         elif isinstance(p, positions.inversions.Form):  # the forms by inversion on a slider, rocker, coupler
             assert scene.linkage is None and positions.size(p) > 0
+        elif scene.problem.task == "function":  # Freudenstein's function generator
+            assert scene.linkage is None and 2 <= p.points <= 5 and p.dphi != 0 and p.dpsi != 0 and p.frame > 0
         else:
             assert scene.linkage is None and 1.0 <= p.K < 35.0 and size(p) > 0
         return

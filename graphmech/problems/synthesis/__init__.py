@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
-from graphmech.problems.kind import Extra, Footer, Kind
+from graphmech.problems.kind import Bench, Extra, Footer, Kind
 
 if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
     from graphmech.drawing.primitives import Sheet
@@ -64,4 +64,10 @@ def _steps(scene: Scene[SynthesisScene]) -> list[str]:
     return synthesis_steps(scene)
 
 
-KIND = Kind("synthesis", ("synthesis",), _read, _analyse, _judge, _sheet, _extras, _lines, steps=_steps)
+def _bench(quick: bool) -> Bench:
+    from graphmech.problems.synthesis.bench import bench
+
+    return bench(quick)
+
+
+KIND = Kind("synthesis", ("synthesis",), _read, _analyse, _judge, _sheet, _extras, _lines, steps=_steps, bench=_bench)

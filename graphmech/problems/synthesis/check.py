@@ -18,7 +18,7 @@ from graphmech.problems.judging import (
     judge_value,
     measured_entries,
 )
-from graphmech.problems.synthesis import positions, time_ratio
+from graphmech.problems.synthesis import function, positions, time_ratio
 from graphmech.scales import drawn_size_problem, format_scale
 
 if TYPE_CHECKING:
@@ -37,7 +37,7 @@ if TYPE_CHECKING:
 #: ``solutions``, ``names``), ``lines(found)``, ``panels(found, mu)`` (the sheet's title and
 #: panels), ``steps(found, mu, say, num)`` and ``PHRASES``. The time-ratio task predates it and is
 #: wired below by hand.
-SELF_CONTAINED: dict[str, Any] = {"positions": positions}
+SELF_CONTAINED: dict[str, Any] = {"positions": positions, "function": function}
 
 
 @dataclass

@@ -19,14 +19,15 @@ from graphmech.problems.reader import (
     read_scales,
     read_tail,
 )
+from graphmech.problems.synthesis.function import FunctionProblem, read_function
 from graphmech.problems.synthesis.positions import PositionsProblem, read_positions
 from graphmech.problems.synthesis.time_ratio import Problem, read_time_ratio
 
 #: What a synthesis scene may show: the construction with the designed linkages.
 SYNTHESIS_SHOW_CHOICES = ("design",)
 #: The tasks and their readers (the function task of issue 20 joins here).
-TASKS: dict[str, Callable[[Reader], Problem | PositionsProblem | None]] = {
-    "time_ratio": read_time_ratio, "positions": read_positions}
+TASKS: dict[str, Callable[[Reader], Problem | PositionsProblem | FunctionProblem | None]] = {
+    "time_ratio": read_time_ratio, "positions": read_positions, "function": read_function}
 
 
 @dataclass(frozen=True)
@@ -34,7 +35,7 @@ class SynthesisScene:
     """What [synthesis] asks: its task and that task's problem (a :class:`TimeRatio` …)."""
 
     task: str
-    problem: Problem | PositionsProblem
+    problem: Problem | PositionsProblem | FunctionProblem
 
 
 def parse_synthesis_scene(data: Mapping[str, Any], source: str, top: Reader,

@@ -22,7 +22,7 @@ def test_a_swing_scene_reads_in_si():
 
 
 def test_the_tasks_are_the_readers_listed():
-    assert list(TASKS) == ["time_ratio", "positions"]
+    assert list(TASKS) == ["time_ratio", "positions", "function"]
 
 
 @pytest.mark.parametrize("old, new, where, words", [
@@ -39,7 +39,7 @@ def test_the_tasks_are_the_readers_listed():
     ("frame_mm = 100", "frame = 100", "synthesis.frame", "unit not stated"),
     ("swing_deg = 40", "swing_deg = 40\nstroke_mm = 10", "synthesis.stroke_mm", "not for a crank-rocker"),
     ('mechanism = "crank_rocker"', 'mechanism = "crank"', "synthesis.mechanism", "unknown value"),
-    ('task = "time_ratio"', 'task = "function"', "synthesis.task", "unknown value"),
+    ('task = "time_ratio"', 'task = "cam"', "synthesis.task", "unknown value"),
     ("swing_deg = 40", "swing_deg = 40\nhandle = 1", "synthesis.handle", "unknown key"),
 ])
 def test_bad_synthesis_scenes_are_refused_in_one_line(old, new, where, words):
