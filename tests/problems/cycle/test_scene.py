@@ -171,11 +171,12 @@ def test_unknown_find_names_are_refused(tmp_path):
     assert code == 2 and "find[0]" in err and "interval middle" in err
 
 
-def test_a_slider_driven_linkage_has_no_cycle(tmp_path):
+def test_a_slider_driven_linkage_has_no_full_turn(tmp_path):
+    # a slider has a stroke, not a turn: its cycle needs [cycle] between (tests/problems/cycle/test_swing.py)
     p = tmp_path / "sl.toml"
     p.write_text(scene_text("cycle/slider_driven"), encoding="utf-8")
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
-    assert code == 2 and err.count("\n") == 1 and ": driver.type:" in err and "crank" in err, err
+    assert code == 2 and err.count("\n") == 1 and ": driver.type:" in err and "between_mm" in err, err
 
 
 @pytest.mark.parametrize("find, diagrams, reason", [
