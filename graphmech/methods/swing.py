@@ -24,7 +24,12 @@ import math
 import numpy as np
 
 from graphmech.errors import NotApplicable
-from graphmech.geometry.kernels import ScalarOps, intersect_circle_line, intersect_circles, intersect_lines
+from graphmech.geometry.kernels import (
+    ScalarOps,
+    intersect_circle_line,
+    intersect_circles,
+    intersect_lines,
+)
 from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage, SliderInput
 
 __all__ = ["driver_limits", "swing_positions", "toggle_dyad"]

@@ -336,7 +336,7 @@ def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], link
                                        '(a double crank); start = "driver"')
             return None, positions
         start_angle = first
-    if spec is not None:
+    if spec is not None and isinstance(linkage.driver, Crank):  # a slider's cycle is a swing (above)
         from graphmech.methods.full_cycle import cycle_positions
 
         sense = -1.0 if linkage.driver.omega < 0 else 1.0
