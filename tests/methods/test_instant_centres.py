@@ -324,10 +324,11 @@ def _linkage_examples():
     blocks = re.findall(r"```toml\n(.*?)```", (ROOT / "docs" / "scene-format.md").read_text(encoding="utf-8"), re.S)
     out = [(f"doc{i}", b) for i, b in enumerate(blocks)]
     out += [(p.stem, p.read_text(encoding="utf-8")) for p in sorted(SCENES.glob("*.toml"))
-            if p.stem not in ("ic.parallelogram_change_point", "linkage.rocker_swing")]  # polygons fail at a change
-    # point, and at a swing's limits (its dyad toggles there): tests/problems/cycle/test_swing.py
+            if p.stem != "ic.parallelogram_change_point"]
     no_linkage = ("cam", "flywheel", "structure", "efficiency", "balancing", "gear", "train", "synthesis")
-    return [(n, t) for n, t in out if not any(k in tomllib.loads(t) for k in no_linkage)]
+    # a swing out to its limits has no polygons there (its dyad toggles): tests/problems/cycle/test_check.py
+    return [(n, t) for n, t in out if not any(k in tomllib.loads(t) for k in no_linkage)
+            and tomllib.loads(t).get("cycle", {}).get("between") != "limits"]
 
 
 @pytest.mark.parametrize("name,text", _linkage_examples(), ids=[n for n, _ in _linkage_examples()])

@@ -15,6 +15,7 @@ from graphmech.mechanisms.linkage import Crank
 from graphmech.problems.cycle.check import analyse_cycle
 from graphmech.problems.protocol import PHRASES as COMMON
 from graphmech.problems.protocol import Phrases, num, phrase, read_row
+from graphmech.problems.reader import linkage_of, positions_of
 
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
@@ -64,9 +65,9 @@ def cycle_steps(scene: Scene[Any]) -> list[str]:
     out = [say("scales", mus=("，" if notation == "zh" else ", ").join(an.scale_notes()))]
     swing = scene.problem.swing
     if swing is not None:
-        crank = isinstance(scene.linkage.driver, Crank)
+        crank = isinstance(linkage_of(scene).driver, Crank)
         a, b = ((num(math.degrees(q)) + "°") if crank else (num(q * 1000) + " mm") for q in swing)
-        n = len(scene.positions.labels)
+        n = len(positions_of(scene).labels)
         how = say("limits") if scene.problem.cycle.between == "limits" else ""
         out.append(say("swing", a=a, b=b, how=how, n=str(n), h=str(n // 2 + 1), n2=str(n + 2)))
     elif scene.positions is not None and len(scene.positions.labels) > 1:
