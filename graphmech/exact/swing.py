@@ -15,18 +15,26 @@ slider B = O + s·g driving RRR B–C–D
 slider driving RRP B–C
     (O + s·g − T)·n = ±l is linear in s.
 
+The output CD of an RRR swings between the angles it takes at the swing's ends and wherever inside
+the swing it stops (ω₃ = 0): a rocker's A, B, C in one line, AC = AB ± BC, so the angle ADC has
+cos = (AD² + CD² − AC²)/(2·AD·CD); a slider's BC at right angles to its guide, so C is BC off
+the guide, (D − C)·n = … a quadratic along the guide.
+
 The limits of the swing through the driver's stated position are the nearest of these on either
 side of it. Nothing here uses the construction code (:mod:`graphmech.methods.swing` draws them).
 Lengths in m, angles in rad.
 """
 from __future__ import annotations
 
+import cmath
 import math
+
+import numpy as np
 
 from graphmech.errors import NotApplicable
 from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage, SliderInput
 
-__all__ = ["driver_limits"]
+__all__ = ["driver_limits", "output_swing"]
 
 TWO_PI = 2.0 * math.pi
 
@@ -102,3 +110,51 @@ def driver_limits(linkage: Linkage, q0: float) -> tuple[float, float]:
         raise NotApplicable("the slider's stroke has no limit " + ("behind" if not lo else "ahead of")
                             + " its position: give the stroke's ends")
     return max(lo), min(hi)
+
+
+def output_swing(linkage: Linkage, q_from: float, q_to: float) -> float:
+    """The swing (rad) of the output CD of the RRR on the driver's point over the driver's swing
+    from ``q_from`` to ``q_to``: max − min of its angle at the ends and at every stop inside."""
+    from graphmech.exact.linkage import solve
+
+    d = linkage.driver
+    tip = d.tip if isinstance(d, Crank) else d.point
+    y = next(y for y in linkage.dyads if isinstance(y, RRR) and tip in (y.p, y.q))
+    other = y.q if y.p == tip else y.p
+    D = complex(*linkage.frame_points[other])
+    bc, cd = y.lengths if y.p == tip else y.lengths[::-1]
+    stops = []
+    if isinstance(d, Crank):
+        A = complex(*linkage.frame_points[d.pivot])
+        ad = abs(A - D)
+        for ac, way in ((d.length + bc, 1.0), (abs(d.length - bc), 1.0 if d.length > bc else -1.0)):
+            c = (ad * ad + cd * cd - ac * ac) / (2.0 * ad * cd) if ac > 0 else 2.0
+            if -1.0 <= c <= 1.0:
+                for sign in (1.0, -1.0):
+                    C = D + cd * cmath.exp(1j * (cmath.phase(A - D) + sign * math.acos(c)))
+                    stops.append(cmath.phase(way * (C - A)))
+        span = q_to - q_from
+        stops = [q_from + math.copysign((math.copysign(1.0, span) * (q - q_from)) % TWO_PI, span) for q in stops]
+    else:
+        O, g = complex(*d.guide.through), complex(*d.guide.direction)
+        n = 1j * g
+        for e in (bc, -bc):  # C = O + e·n + t·g on the circle |C − D| = CD
+            P = O + e * n - D
+            b = (P * g.conjugate()).real
+            disc = b * b - (abs(P) ** 2 - cd * cd)
+            if disc >= 0.0:
+                stops += [((P + D + t * g - e * n - O) * g.conjugate()).real for t in (-b + math.sqrt(disc), -b - math.sqrt(disc))]
+    lo, hi = sorted((q_from, q_to))
+    # in order along the swing, with 1000 more between, so the angle is followed round continuously
+    qs = np.sort(np.concatenate([[q_from, q_to], [q for q in stops if lo < q < hi], np.linspace(lo, hi, 1000)]))
+    sol = solve(linkage, qs)
+    pts = sol.point[y.c][:, 0] + 1j * sol.point[y.c][:, 1]
+    for i in np.flatnonzero(~sol.valid):  # an end at the limits: the dyad in one line, C on the line BD
+        B = complex(*sol.point[tip][i])
+        u = (D - B) / abs(D - B)
+        pts[i] = min((B + bc * u, B - bc * u), key=lambda c: abs(abs(c - D) - cd))
+        if abs(abs(pts[i] - D) - cd) > 1e-9 * cd:  # not a toggle: a grid position off the assembly
+            pts[i] = np.nan
+    pts = pts[~np.isnan(pts)]
+    psi = np.unwrap(np.angle(pts - D))
+    return float(psi.max() - psi.min())

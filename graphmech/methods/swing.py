@@ -16,6 +16,11 @@ back in N/2 more (position N + 1 would be 1 again), so the driver moving uniform
 takes equal times between them, its sense reversed on the return stroke: positions 1 … N/2 leave
 in the first stroke's sense, N/2 + 1 … N in the other. Position k and position N + 2 − k are the
 same place. Checked against :mod:`graphmech.exact.swing`.
+
+The output's swing (an RRR's link CD about D) is the spread of its angle over the driver's swing:
+at the swing's ends, or inside it where the output stops (ω₃ = 0) — a rocker's AB and BC in one
+line (C on a circle of radius AB ± BC about A), a slider's BC at right angles to its guide (C on
+the guide moved sideways by ±BC) — each cut with the output's circle about D.
 """
 from __future__ import annotations
 
@@ -32,7 +37,7 @@ from graphmech.geometry.kernels import (
 )
 from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage, SliderInput
 
-__all__ = ["driver_limits", "swing_positions", "toggle_dyad"]
+__all__ = ["driver_limits", "output_swing", "swing_positions", "toggle_dyad"]
 
 TWO_PI = 2.0 * math.pi
 
@@ -161,3 +166,78 @@ def _assembles_at(linkage: Linkage, q0: float) -> None:
     if not ok:
         raise NotApplicable("the mechanism cannot be assembled at the driver's stated position: state one inside "
                             "the swing (it picks the swing whose limits are found)")
+
+
+def _in_swing(linkage: Linkage, q: float, q_from: float, q_to: float) -> float | None:
+    """``q`` as a position of the swing from ``q_from`` to ``q_to`` (a rocker's angle unwrapped
+    into it), or None when outside it."""
+    if isinstance(linkage.driver, Crank):
+        span = q_to - q_from
+        q = q_from + math.copysign((math.copysign(1.0, span) * (q - q_from)) % TWO_PI, span)
+    lo, hi = sorted((q_from, q_to))
+    return q if lo < q < hi else None
+
+
+def output_swing(linkage: Linkage, q_from: float, q_to: float) -> tuple[float, str]:
+    """The output's swing over the driver's swing from ``q_from`` to ``q_to``, constructed (rad),
+    and the output link: the RRR on the driver's point, its link pivoted on the frame.
+
+    Raises
+    ------
+    NotApplicable
+        The dyad on the driver's point is no RRR pivoted on the frame (nothing rocks about a pivot).
+    """
+    from graphmech.methods.polygons import build_polygons
+
+    y = toggle_dyad(linkage)
+    if not isinstance(y, RRR):
+        raise NotApplicable("the output's swing is that of an RRR's link pivoted on the frame; here the dyad on the "
+                            "driver's point slides")
+    d = linkage.driver
+    ops = ScalarOps()
+    tip = d.tip if isinstance(d, Crank) else d.point
+    D = linkage.frame_points[y.q if y.p == tip else y.p]
+    bc, cd = y.lengths if y.p == tip else y.lengths[::-1]
+    out_link = y.links[1] if y.p == tip else y.links[0]
+    b = build_polygons(linkage, {"l": 1.0, "v": 1.0, "a": 1.0})
+    plan = b.g.prune([b.mech[y.c]])
+    ox, oy = b.origin
+
+    def never(_: object) -> str:
+        return "no cut"
+
+    stops: list[float] = []  # driver positions inside the swing where the output stops
+    if isinstance(d, Crank):
+        A = linkage.frame_points[d.pivot]
+        for r, way in ((d.length + bc, 1.0), (abs(d.length - bc), 1.0 if d.length > bc else -1.0)):
+            dist = math.dist(A, D)
+            if r == 0.0 or not abs(r - cd) <= dist <= r + cd:
+                continue
+            for side in (1.0, -1.0):
+                C = intersect_circles(ops, A, r, D, cd, side, never)  # C on the circle AB ± BC about A
+                q = math.atan2(way * (C[1] - A[1]), way * (C[0] - A[0]))
+                stops.append(q)
+    else:
+        assert isinstance(d, SliderInput)
+        (gx, gy), (px, py) = d.guide.direction, d.guide.through
+        for e in (bc, -bc):
+            line = (px - e * gy, py + e * gx, gx, gy)  # the guide moved sideways by ±BC: BC ⟂ the guide
+            off = (D[0] - line[0]) * gy - (D[1] - line[1]) * gx
+            if abs(off) > cd:
+                continue
+            for side in (1.0, -1.0):
+                C = intersect_circle_line(ops, D, cd, line, side, never)
+                stops.append((C[0] + e * gy - px) * gx + (C[1] - e * gx - py) * gy)
+    # the stops and the ends give the extremes; a grid between them only follows the output round
+    # continuously (it may swing more than half a turn), the values are the stops' and the ends'
+    inside = [x for x in (_in_swing(linkage, q, q_from, q_to) for q in stops) if x is not None]
+    qs = np.sort(np.concatenate([[q_from, q_to], inside, np.linspace(q_from, q_to, UNWRAP_GRID)]))
+    with np.errstate(all="ignore"):
+        batch = plan.evaluate_batch({b.param: qs})
+    cx, cy = batch.values[b.mech[y.c]]
+    psi = np.unwrap(np.arctan2(np.asarray(cy) + oy - D[1], np.asarray(cx) + ox - D[0])[batch.valid])
+    return float(psi.max() - psi.min()), out_link
+
+
+#: Positions laid over a swing only to follow the output's angle continuously (never its extremes).
+UNWRAP_GRID = 256

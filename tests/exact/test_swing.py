@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from graphmech.errors import NotApplicable
@@ -46,3 +47,20 @@ def test_a_crank_that_turns_fully_has_no_limits():
                    (RRP("B", "C", ("2", "3"), 0.03, Guide((0.0, 0.01), 0.0)),))  # the guides are parallel
     with pytest.raises(NotApplicable, match="no limit"):
         driver_limits(free, 0.0)
+
+
+def test_the_outputs_swing_is_the_spread_of_its_angle_over_the_swing():
+    from graphmech.exact.swing import output_swing
+
+    lk = Linkage({"A": (0.0, 0.0), "D": (0.05, 0.0)}, Crank("1", "A", "B", 0.08, 5.0),
+                 (RRR("B", "C", "D", ("2", "3"), (0.04, 0.06), "left"),))
+    lo, hi = driver_limits(lk, 0.0)
+    # sampled (1e-12 inside the limits, where ψ moves as √(φ − φ_limit): to ~1e-6)
+    q = np.linspace(lo + 1e-12, hi - 1e-12, 400001)
+    C = solve(lk, q).point["C"]
+    psi = np.unwrap(np.arctan2(C[:, 1], C[:, 0] - 0.05))
+    assert output_swing(lk, lo, hi) == pytest.approx(psi.max() - psi.min(), abs=1e-5)
+    # by hand: from B, C, D in one line at the upper limit to A, B, C folded (AC = 40, cos ∠ADC = 0.75)
+    B = 0.08 * complex(math.cos(hi), math.sin(hi))
+    by_hand = math.atan2(B.imag, B.real - 0.05) - math.atan2(-math.sqrt(1 - 0.75 ** 2), -0.75)
+    assert output_swing(lk, lo, hi) == pytest.approx(by_hand, abs=1e-12)

@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from graphmech.errors import NotApplicable
 from graphmech.exact import swing as exact
 from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Guide, Linkage, SliderInput
-from graphmech.methods.swing import driver_limits, swing_positions, toggle_dyad
+from graphmech.methods.swing import driver_limits, output_swing, swing_positions, toggle_dyad
 
 #: AB = 80, BC = 40, CD = 60, AD = 50 mm: 80 + 40 > 60 + 50, so AB rocks (no link turns fully).
 ROCKER = Linkage({"A": (0.0, 0.0), "D": (0.05, 0.0)}, Crank("1", "A", "B", 0.08, 5.0),
@@ -102,3 +102,32 @@ def _assembles(lk, phi):
     y = lk.dyads[0]
     bd = math.dist((lk.driver.length * math.cos(phi), lk.driver.length * math.sin(phi)), lk.frame_points["D"])
     return abs(y.lengths[0] - y.lengths[1]) <= bd <= sum(y.lengths)
+
+
+def test_the_outputs_swing_runs_from_a_limit_to_where_ab_and_bc_fold():
+    # CD swings from its angle at the limit φ = 97.9° (B, C, D in one line: ψ = ∠(B − D)) to where
+    # A, B, C fold into one line inside the swing (AC = AB − BC = 40: cos ∠ADC = (50² + 60² − 40²)/(2·50·60))
+    phi = math.acos(-0.1375)
+    B = complex(80.0 * math.cos(phi), 80.0 * math.sin(phi))
+    C_fold = complex(50.0 - 60.0 * 0.75, -60.0 * math.sqrt(1.0 - 0.75 ** 2))
+    by_hand = math.atan2((B - 50.0).imag, (B - 50.0).real) - math.atan2(C_fold.imag, (C_fold - 50.0).real)
+    swing, link = output_swing(ROCKER, *driver_limits(ROCKER, 0.0))
+    assert link == "3" and swing == pytest.approx(by_hand, abs=1e-12) and math.degrees(swing) > 180.0
+    assert swing == pytest.approx(exact.output_swing(ROCKER, *exact.driver_limits(ROCKER, 0.0)), abs=1e-12)
+
+
+def test_a_sliders_output_swings_between_its_angles_at_the_strokes_ends():
+    # on this branch CD turns one way over 20 … 120 mm (its stop, BC ⟂ the guide at C = (60, 80),
+    # is on the other branch): ψ = ∠(B − D) + ∠BDC, cos ∠BDC = (BD² + CD² − BC²)/(2·BD·CD)
+    def psi(s_mm):
+        bx, by = s_mm - 100.0, -60.0
+        bd = math.hypot(bx, by)
+        return math.atan2(by, bx) + math.acos((bd * bd + 50.0 ** 2 - 80.0 ** 2) / (2 * bd * 50.0))
+
+    swing, _ = output_swing(SLIDER, 0.02, 0.12)
+    assert swing == pytest.approx(psi(120.0) - psi(20.0), abs=1e-12)
+    assert swing == pytest.approx(exact.output_swing(SLIDER, 0.02, 0.12), abs=1e-12)
+    guide_bar_like = Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.05, 1.0),
+                             (RRP("B", "C", ("2", "3"), 0.03, Guide((0.0, 0.06), 0.0)),))
+    with pytest.raises(NotApplicable, match="slides"):
+        output_swing(guide_bar_like, 1.0, 2.0)

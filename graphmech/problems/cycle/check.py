@@ -58,8 +58,9 @@ __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "
 CHARACTERISTICS = {"theta": "deg", "psi": "deg", "stroke": "m", "K": "", "gamma_min": "deg",
                    "gamma_min_at": "deg", "phi_start": "deg", "phi_end": "deg"}
 TIMING = {"phi_work": "deg", "phi_return": "deg", "t_return": "s", "crank_period": "s", "n_crank": "rpm"}
-#: A swing's ends: the driver's position (φ in °, or a slider's s in m) at position 1 and at N/2 + 1.
-SWING = ("driver_from", "driver_to")
+#: A swing's ends: the driver's position (φ in °, or a slider's s in m) at position 1 and at N/2 + 1;
+#: and the output's swing over it (°).
+SWING = ("driver_from", "driver_to", "output_swing")
 #: Round pole distances a draftsman takes, mm.
 POLES_MM = (5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 80.0, 100.0)
 #: The height a diagram is given when its scale or pole is chosen, mm; the φ axis's length.
@@ -275,7 +276,10 @@ def _return_stroke(scene: Scene[CycleScene]) -> set[str]:
 def _swing_rows(an: CycleAnalysis, raw: str) -> list[Row]:
     """``driver_from``, ``driver_to``: the swing's ends — with ``between = "limits"`` constructed
     (:mod:`graphmech.methods.swing`) and checked against the closed forms (:mod:`graphmech.exact.swing`)."""
+    from graphmech.errors import NotApplicable
     from graphmech.exact.swing import driver_limits as exact_limits
+    from graphmech.exact.swing import output_swing as exact_output
+    from graphmech.methods.swing import output_swing
 
     scene = an.scene
     base, _, at = raw.partition("@")
@@ -286,12 +290,17 @@ def _swing_rows(an: CycleAnalysis, raw: str) -> list[Row]:
         raise UnknownName(f"{base} is a property of the whole swing: write {base!r} without @")
     linkage = linkage_of(scene)
     d = linkage.driver
-    g = swing[0] if base == "driver_from" else swing[1]
-    e = g
+    ends = swing
     if cast("CycleSpec", scene.problem.cycle).between == "limits":
         lo, hi = exact_limits(linkage, cast(float, scene.problem.stated))
-        forward = swing[1] > swing[0]
-        e = (lo if forward else hi) if base == "driver_from" else (hi if forward else lo)
+        ends = (lo, hi) if swing[1] > swing[0] else (hi, lo)
+    if base == "output_swing":
+        try:
+            g = output_swing(linkage, *swing)[0]
+        except NotApplicable as why:
+            raise UnknownName(f"output_swing: {why}") from None
+        return [_row(an, base, "deg", math.degrees(g), math.degrees(exact_output(linkage, *ends)), None, 1.0)]
+    g, e = (swing[0], ends[0]) if base == "driver_from" else (swing[1], ends[1])
     if isinstance(d, Crank):
         return [_row(an, base, "deg", math.degrees(g), math.degrees(e), None, 1.0)]
     return [_row(an, base, "m", g, e, None, 1.0)]

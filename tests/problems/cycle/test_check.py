@@ -326,6 +326,11 @@ def test_a_rocker_swings_between_its_limits_and_back():
         assert q[f"omega_3@{k}"]["graphical"] == pytest.approx(sign * w3, rel=1e-9)
         assert q[f"omega_3@{k}"]["exact"] == pytest.approx(sign * w3, rel=1e-9)
     assert q["a_C@4"]["graphical"] == pytest.approx(q["a_C@10"]["graphical"], rel=1e-12)  # a ∝ ω₁² at ε₁ = 0
+    # the output CD swings from B, C, D in one line at φ = 97.9° to where A, B, C fold (AC = 40 mm)
+    B = 80.0 * complex(math.cos(math.radians(limit)), math.sin(math.radians(limit)))
+    fold = math.atan2(-60.0 * math.sqrt(1 - 0.75 ** 2), -60.0 * 0.75)  # cos ∠ADC = (50² + 60² − 40²)/(2·50·60)
+    assert q["output_swing"]["graphical"] == pytest.approx(math.degrees(math.atan2(B.imag, B.real - 50.0) - fold), abs=1e-9)
+    assert q["output_swing"]["rel_error"] < 1e-9
     ends = [w for w in doc["warnings"] if "no polygon" in w]
     assert len(ends) == 2 and all("an end of the swing" in w for w in ends)  # the toggles: the driver stops there
 
