@@ -367,3 +367,10 @@ def test_a_crank_swings_between_stated_angles_the_way_it_turns(tmp_path):
         assert q["driver_to"]["graphical"] == pytest.approx(to, abs=1e-12)
         assert q["omega_3@2"]["graphical"] == pytest.approx(-q["omega_3@8"]["graphical"], rel=1e-12)
         assert q["omega_3@2"]["rel_error"] < 1e-9
+
+
+def test_a_hand_reading_on_the_return_stroke_is_judged_with_the_driver_reversed():
+    doc = check_json(SCENES / "linkage.rocker_swing.toml", "--measured", "omega_3@12=-1.83", "--measured",
+                     "omega_3@12=1.83")
+    got = [(m["measured"], m["ok"]) for m in doc["measured"] if m["name"] == "omega_3@12"]
+    assert sorted(got) == [(-1.83, True), (1.83, False)]  # position 12: ω₃ < 0 on the way back
