@@ -21,11 +21,12 @@ The φ axis is a time axis (t = φ/ω₁) only for a crank turning uniformly, so
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Sequence
 
 import numpy as np
 
+from graphmech.construction.graph import BatchSolution
 from graphmech.errors import DegenerateConstruction
 from graphmech.geometry.kernels import Components
 from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, SliderInput
@@ -33,7 +34,8 @@ from graphmech.methods.chords import frozen_array
 from graphmech.methods.graphical_differentiation import Differentiation, differentiate_cycle
 from graphmech.methods.polygons import LinkageConstruction, build_polygons
 
-__all__ = ["CycleDiagram", "FullCycle", "cycle_positions", "diagram_subjects", "evaluate_cycle", "sliders"]
+__all__ = ["CycleDiagram", "FullCycle", "cycle_positions", "diagram_subjects", "driver_text", "evaluate_cycle",
+           "reversed_driver", "sliders"]
 
 TWO_PI = 2.0 * math.pi
 
@@ -166,6 +168,12 @@ class FullCycle:
     paths: dict[str, np.ndarray] = field(default_factory=dict, hash=False)
     polygon_failures: dict[int, str] = field(default_factory=dict, hash=False)
     conds: dict[str, np.ndarray] = field(default_factory=dict, hash=False)
+    backward: np.ndarray | None = field(default=None, hash=False)  # a swing: the positions of the return stroke
+
+    @property
+    def swing(self) -> bool:
+        """The driver goes out and back (:mod:`graphmech.methods.swing`) instead of turning."""
+        return self.backward is not None
 
     @property
     def n(self) -> int:
@@ -183,6 +191,45 @@ def _unwrap_from_first(theta: np.ndarray, sense: float) -> np.ndarray:
     return np.unwrap(theta - theta[0])
 
 
+def reversed_driver(linkage: Linkage) -> Linkage:
+    """The same linkage with its driver's ω (a slider's v) reversed: the return stroke of a swing
+    (ε = 0 there, so every velocity changes sign and every acceleration stays)."""
+    d = linkage.driver
+    rev = replace(d, omega=-d.omega) if isinstance(d, Crank) else replace(d, velocity=-d.velocity)
+    return replace(linkage, driver=rev)
+
+
+def driver_text(d: Crank | SliderInput, q: float) -> str:
+    """A driver's position as a message says it: ``φ1 = 30°``, ``s1 = 40 mm``."""
+    if isinstance(d, Crank):
+        return f"φ{d.link} = {math.degrees(q):.6g}°"
+    return f"s{d.link} = {q * 1000:.6g} mm"
+
+
+def _strokes(fwd: BatchSolution, back: BatchSolution, mask: np.ndarray) -> BatchSolution:
+    """One batch of a swing's positions: the first stroke's values, the return stroke's where ``mask``."""
+
+    def pick(f: object, r: object) -> object:
+        if isinstance(f, tuple) and isinstance(r, tuple):
+            return tuple(pick(x, y) for x, y in zip(f, r))
+        if isinstance(f, (float, int, np.ndarray)) and isinstance(r, (float, int, np.ndarray)):
+            return np.where(mask, np.broadcast_to(np.asarray(r, dtype=float), mask.shape),
+                            np.broadcast_to(np.asarray(f, dtype=float), mask.shape))
+        return f
+
+    values = {k: pick(v, back.values.get(k, v)) for k, v in fwd.values.items()}
+    conds = {k: np.where(mask, back.conds.get(k, c), c) for k, c in fwd.conds.items()}
+    none = np.zeros(mask.shape, dtype=bool)
+    failures = {}
+    for step in {**fwd.failures, **back.failures}:
+        mf, wf = fwd.failures.get(step, (none, ""))
+        mb, wb = back.failures.get(step, (none, ""))
+        m = (mf & ~mask) | (mb & mask)
+        if m.any():
+            failures[step] = (m, wf or wb)
+    return BatchSolution(values, conds, np.where(mask, back.valid, fwd.valid), failures, fwd.n)
+
+
 #: A point's path is drawn through at least this many positions (the N among them), so a coupler
 #: curve is smooth however few positions the sheet has.
 PATH_POSITIONS = 360
@@ -191,7 +238,8 @@ PATH_POSITIONS = 360
 def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarray, *,
                    polygons: Sequence[str] = (), diagrams: Sequence[str] = (), paths: Sequence[str] = (),
                    mu_phi: float, mu_s: dict[str, float] | None = None,
-                   H_mm: tuple[float, float] | dict[str, tuple[float, float]] = (30.0, 30.0)) -> FullCycle:
+                   H_mm: tuple[float, float] | dict[str, tuple[float, float]] = (30.0, 30.0),
+                   backward: np.ndarray | None = None) -> FullCycle:
     """Evaluate the construction at all positions; read off and differentiate the diagrams.
 
     Parameters
@@ -215,6 +263,11 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
     paths : sequence of str
         Points whose paths are evaluated at k·N ≥ :data:`PATH_POSITIONS` positions (the N
         among them), for a smooth curve through the N.
+    backward : ndarray of bool, shape (N,)
+        A swing (:mod:`graphmech.methods.swing`): the positions that leave on the return stroke,
+        whose polygons are drawn with the driver's ω (v) reversed; ``angles`` are then the
+        driver's positions (φ, or a slider's s), the paths run over the first stroke, and
+        no diagrams are drawn (the driver reverses at the ends).
 
     Raises
     ------
@@ -222,7 +275,8 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
         A position cannot be constructed (the crank does not turn fully): one line naming it.
     """
     d = linkage.driver
-    assert isinstance(d, Crank)
+    assert isinstance(d, Crank) or backward is not None, "a slider drives a swing"
+    assert backward is None or not diagrams, "no chord diagrams over a swing"
     n = int(np.asarray(angles).size)
     b = build_polygons(linkage, scales)
     targets = list(b.mech.values())
@@ -231,6 +285,11 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
     plan = b.g.prune(targets)
     with np.errstate(all="ignore"):
         batch = plan.evaluate_batch({b.param: np.asarray(angles, dtype=float)})
+    if backward is not None and polygons and backward.any():  # the return stroke: the same places, ω (v) reversed
+        rb = build_polygons(reversed_driver(linkage), scales)
+        with np.errstate(all="ignore"):
+            back = rb.g.prune(targets).evaluate_batch({rb.param: np.asarray(angles, dtype=float)})
+        batch = _strokes(batch, back, np.asarray(backward, dtype=bool))
     # A position the mechanism cannot take ends the cycle; a polygon that cannot be drawn at a
     # position (a change point: two of its lines parallel) only leaves that polygon out.
     panel_of = {st.text: st.panel for st in plan.steps}
@@ -240,6 +299,9 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
         for i in np.flatnonzero(mask):
             i = int(i)
             if panel_of.get(step) == "mechanism" or why.startswith("cannot be assembled"):
+                if backward is not None:
+                    raise DegenerateConstruction(step, f"{why}: the swing goes beyond the driver's limits",
+                                                 f"position {i + 1} ({driver_text(d, float(angles[i]))})")
                 raise DegenerateConstruction(step, f"{why}: the crank cannot make a full turn, so there is no full "
                                                    "cycle", f"position {i + 1} (φ{d.link} = "
                                                             f"{math.degrees(float(angles[i])):.6g}°)")
@@ -249,8 +311,9 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
     mech = {p: _xy(vals, s, n) for p, s in b.mech.items() if s in vals}
     vel = {p: _xy(vals, s, n) for p, s in b.vel.items() if s in vals} if "velocity" in polygons else {}
     acc = {p: _xy(vals, s, n) for p, s in b.acc.items() if s in vals} if "acceleration" in polygons else {}
-    sense = -1.0 if d.omega < 0 else 1.0
-    w = abs(d.omega)
+    rate = d.omega if isinstance(d, Crank) else d.velocity
+    sense = -1.0 if rate < 0 else 1.0
+    w = abs(rate)
     x = np.arange(n, dtype=float) * (TWO_PI / n) / mu_phi
     period = TWO_PI / mu_phi
     slide = sliders(linkage)
@@ -288,6 +351,9 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
     if paths:
         k = max(1, -(-PATH_POSITIONS // n))
         fine = (np.asarray(angles, dtype=float)[:, None] + sense * np.arange(k) * TWO_PI / (n * k)).ravel()
+        if backward is not None:  # a swing traces its path out and back: the first stroke, ends included
+            fine = np.linspace(float(angles[0]), float(angles[n // 2]), max(PATH_POSITIONS, n // 2 + 1))
+            k = 2
         if k == 1:
             dense = {p: mech[p] for p in paths}
         else:
@@ -299,4 +365,5 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
             else:  # a position between the N cannot be built: the path through the N only
                 dense = {p: mech[p] for p in paths}
     return FullCycle(b, plan, frozen_array(angles), mech, vel, acc, vals, tuple(out), mu_phi,
-                     sense, dense, polygon_failures, conds)
+                     sense, dense, polygon_failures, conds,
+                     None if backward is None else frozen_array(np.asarray(backward, dtype=bool)))

@@ -46,3 +46,26 @@ def test_a_slider_read_off_the_drawing_is_exact():
     assert cyc.diagrams[0].rise_mm == 0.0
     with pytest.raises(ValueError):
         cyc.diagrams[0].s_mm[0] = 1.0  # read-only arrays: the read-off cannot be changed afterwards
+
+
+def test_a_swings_return_stroke_reverses_every_velocity_and_keeps_every_acceleration():
+    from graphmech.methods.full_cycle import reversed_driver
+    from graphmech.methods.swing import driver_limits, swing_positions
+
+    rocker = Linkage({"A": (0.0, 0.0), "D": (0.05, 0.0)}, Crank("1", "A", "B", 0.08, 5.0),
+                     (RRR("B", "C", "D", ("2", "3"), (0.04, 0.06), "left"),))
+    q, back = swing_positions(*driver_limits(rocker, 0.0), 12)
+    cyc = evaluate_cycle(rocker, {"l": 0.001, "v": 0.01, "a": 0.1}, q, polygons=["velocity", "acceleration"],
+                         mu_phi=1.0, paths=["C"], backward=back)
+    assert sorted(cyc.polygon_failures) == [0, 6]  # the limits: BC and CD in one line, v_C parallel to both
+    ok = np.array([i not in (0, 6) for i in range(12)])
+    fwd, rev = solve(rocker, q), solve(reversed_driver(rocker), q)
+    expected_v = np.where(back[:, None], rev.vel["C"], fwd.vel["C"])
+    assert np.allclose(rev.vel["C"], -fwd.vel["C"], rtol=0, atol=1e-12) and np.allclose(rev.acc["C"], fwd.acc["C"])
+    v = cyc.vel["C"] * 0.01  # the images at μv
+    a = cyc.acc["C"] * 0.1
+    assert np.max(np.abs(v - expected_v)[ok]) <= 1e-9 * np.max(np.abs(expected_v[ok]))
+    assert np.max(np.abs(a - fwd.acc["C"])[ok]) <= 1e-9 * np.max(np.abs(fwd.acc["C"][ok]))
+    assert np.allclose(v[1], -v[11]) and np.allclose(a[1], a[11])  # position 2 and 12: one place, out and back
+    path = cyc.paths["C"]  # traced over the first stroke, from position 1 to position 7
+    assert np.allclose(path[0], cyc.mech["C"][0]) and np.allclose(path[-1], cyc.mech["C"][6])

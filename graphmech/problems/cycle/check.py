@@ -42,9 +42,10 @@ from graphmech.errors import SceneError, UnknownName
 from graphmech.problems.cycle.scene import MAX_POLE_MM, MIN_POLE_MM
 from graphmech.exact import characteristics as exact_ch
 from graphmech.exact.linkage import solve as solve_exact
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage
+from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage, SliderInput
 from graphmech.methods.characteristics import DrawnCharacteristics, Loop, draw_characteristics, grashof_ranges
-from graphmech.methods.full_cycle import CycleDiagram, FullCycle, evaluate_cycle, finer_positions, sliders
+from graphmech.methods.full_cycle import (CycleDiagram, FullCycle, driver_text, evaluate_cycle, finer_positions,
+                                         reversed_driver, sliders)
 from graphmech.scales import DRAWN_SIZE_RANGE_MM, drawn_size_problem, format_scale, round_scale
 
 if TYPE_CHECKING:
@@ -57,6 +58,9 @@ __all__ = ["CycleAnalysis", "analyse_cycle", "judge_cycle", "CHARACTERISTICS", "
 CHARACTERISTICS = {"theta": "deg", "psi": "deg", "stroke": "m", "K": "", "gamma_min": "deg",
                    "gamma_min_at": "deg", "phi_start": "deg", "phi_end": "deg"}
 TIMING = {"phi_work": "deg", "phi_return": "deg", "t_return": "s", "crank_period": "s", "n_crank": "rpm"}
+#: A swing's ends: the driver's position (φ in °, or a slider's s in m) at position 1 and at N/2 + 1;
+#: and the output's swing over it (°).
+SWING = ("driver_from", "driver_to", "output_swing")
 #: Round pole distances a draftsman takes, mm.
 POLES_MM = (5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0, 60.0, 80.0, 100.0)
 #: The height a diagram is given when its scale or pole is chosen, mm; the φ axis's length.
@@ -92,6 +96,7 @@ class CycleAnalysis:
     warnings: list[str] = field(default_factory=list)
     summary: dict[str, Any] = field(default_factory=dict)
     polygons: Any = None  # graphmech.problems.linkage.check.Analysis of the polygon quantities asked for
+    polygons_back: Any = None  # … of a swing's return stroke (the driver reversed)
     extra_measured: tuple[tuple[str, float], ...] = ()
     exact_series: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)  # subject → exact s, v, a
     refined: dict[tuple[str, int, bool], CycleDiagram] = field(default_factory=dict)  # the same diagram at m·N
@@ -140,6 +145,8 @@ def _kind(scene: Scene[CycleScene], name: str) -> str:
         return "char"
     if base in TIMING:
         return "timing"
+    if base in SWING:
+        return "swing"
     if base.startswith("l_") and base.endswith(("_min", "_max")) and any(
             k in base for k in ("crank_rocker", "double_crank", "double_rocker", "change_point")):
         return "ranges"
@@ -195,8 +202,6 @@ def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, fl
     stated = {k for k in ("l", "v", "a") if k in scene.scales}
     mu_l = _mech_scale(scene, linkage)
     an = CycleAnalysis(scene, {"l": mu_l}, cast("set[str]", stated), extra_measured=tuple(extra_measured))
-    d = linkage.driver
-    assert isinstance(d, Crank)
     if wants["characteristics"]:
         _characteristics(an, linkage, mu_l)
     if wants["ranges"] or (scene.problem.characteristics.ranges and "characteristics" in scene.show):
@@ -220,6 +225,8 @@ def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, fl
         try:
             if kind == "polygon":
                 poly.append(raw)
+            elif kind == "swing":
+                rows += _swing_rows(an, raw)
             else:
                 rows += _rows(an, raw, kind)
         except KeyError as e:
@@ -230,29 +237,88 @@ def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, fl
     if poly or poly_measured or any(_kind(scene, n) == "polygon" for n, _ in extra_measured):
         # the polygons at the sheet's own μ, so a drawn length means the same everywhere
         same: dict[str, float] = {k: an.scales[k] for k in ("l", "v", "a") if k in an.scales}
-        sub = replace(scene, find=tuple(poly), show=(), measured=tuple(poly_measured),
-                      scales={**scene.scales, **same})
         extra = tuple((n, v) for n, v in extra_measured if _kind(scene, n) == "polygon")
-        an.polygons = analyse(sub, extra)
-        an.warnings += _renamed(an, an.polygons.warnings)
-        rows += an.polygons.rows
+        back = _return_stroke(scene)
+        if back:  # a swing: the return stroke's positions with the driver reversed, each row where it belongs
+            ret = [n for n in poly if n.partition("@")[2] in back]
+            fwd_names = [n for n in poly if n not in ret]
+            rev = replace(scene, linkage=reversed_driver(linkage))
+            parts = []
+            for sc, names_, keep in ((scene, fwd_names, False), (rev, ret, True)):
+                def mine(n: str, keep: bool = keep) -> bool:
+                    return (n.partition("@")[2] in back) == keep
+                sub = replace(sc, find=tuple(names_), show=(), measured=tuple(e for e in poly_measured if mine(e[0])),
+                              scales={**scene.scales, **same})
+                part = analyse(sub, tuple(e for e in extra if mine(e[0])))
+                parts.append(part)
+                an.warnings += [w for w in _renamed(an, part.warnings, part) if w not in an.warnings]
+            an.polygons, an.polygons_back = parts
+            order = {n: k for k, n in enumerate(poly)}
+            rows += sorted(parts[0].rows + parts[1].rows, key=lambda r: order.get(r.name, len(order)))
+        else:
+            sub = replace(scene, find=tuple(poly), show=(), measured=tuple(poly_measured),
+                          scales={**scene.scales, **same})
+            an.polygons = analyse(sub, extra)
+            an.warnings += _renamed(an, an.polygons.warnings)
+            rows += an.polygons.rows
     an.rows = rows
     return an
 
 
-def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
+def _return_stroke(scene: Scene[CycleScene]) -> set[str]:
+    """The labels of a swing's positions that leave on the return stroke (none for a full turn)."""
+    cy = scene.problem.cycle
+    if cy is None or cy.between is None:
+        return set()
+    return {str(k) for k in range(cy.positions // 2 + 1, cy.positions + 1)}
+
+
+def _swing_rows(an: CycleAnalysis, raw: str) -> list[Row]:
+    """``driver_from``, ``driver_to``: the swing's ends — with ``between = "limits"`` constructed
+    (:mod:`graphmech.methods.swing`) and checked against the closed forms (:mod:`graphmech.exact.swing`)."""
+    from graphmech.errors import NotApplicable
+    from graphmech.exact.swing import driver_limits as exact_limits
+    from graphmech.exact.swing import output_swing as exact_output
+    from graphmech.methods.swing import output_swing
+
+    scene = an.scene
+    base, _, at = raw.partition("@")
+    swing = scene.problem.swing
+    if swing is None:
+        raise UnknownName(f"{base} is an end of a swing: [cycle] between = \"limits\" or between_deg = [from, to]")
+    if at:
+        raise UnknownName(f"{base} is a property of the whole swing: write {base!r} without @")
+    linkage = linkage_of(scene)
+    d = linkage.driver
+    ends = swing
+    if cast("CycleSpec", scene.problem.cycle).between == "limits":
+        lo, hi = exact_limits(linkage, cast(float, scene.problem.stated))
+        ends = (lo, hi) if swing[1] > swing[0] else (hi, lo)
+    if base == "output_swing":
+        try:
+            g = output_swing(linkage, *swing)[0]
+        except NotApplicable as why:
+            raise UnknownName(f"output_swing: {why}") from None
+        return [_row(an, base, "deg", math.degrees(g), math.degrees(exact_output(linkage, *ends)), None, 1.0)]
+    g, e = (swing[0], ends[0]) if base == "driver_from" else (swing[1], ends[1])
+    if isinstance(d, Crank):
+        return [_row(an, base, "deg", math.degrees(g), math.degrees(e), None, 1.0)]
+    return [_row(an, base, "m", g, e, None, 1.0)]
+
+
+def _renamed(an: CycleAnalysis, warnings: list[str], part: Any = None) -> list[str]:
     """The polygons' warnings name a cycle's positions by number and angle ("position 3 (φ1 = 60°)"),
     and leave out what the cycle has said already (a polygon that cannot be drawn)."""
     from graphmech.problems.linkage.sizes import position_text
 
     if an.scene.problem.cycle is None:
         return list(warnings)
-    build = an.polygons.build
-    link = linkage_of(an.scene).driver.link
+    build = (part or an.polygons).build
+    driver = linkage_of(an.scene).driver
     said = set(an.cycle.polygon_failures) if an.cycle is not None else set()
     labels = positions_of(an.scene).labels
     prefixes = {position_text(build, lab) + ":": i for i, lab in enumerate(labels)}
-    asked = {labels.index(r.name.partition("@")[2]) for r in an.polygons.rows if r.name.partition("@")[2] in labels}
+    asked = {labels.index(r.name.partition("@")[2]) for r in (part or an.polygons).rows if r.name.partition("@")[2] in labels}
     out = []
     for w in warnings:
         head, sep, rest = w.partition(": ")
@@ -263,8 +329,7 @@ def _renamed(an: CycleAnalysis, warnings: list[str]) -> list[str]:
                 and (i not in asked or rest.startswith("shallow")):
             continue  # the cycle's one-line summary says it for every position
         elif not (i in said and rest.startswith("construction impossible")):
-            angle = math.degrees(positions_of(an.scene).values[i])
-            out.append(f"position {i + 1} (φ{link} = {angle:.6g}°): {rest}")
+            out.append(f"position {i + 1} ({driver_text(driver, positions_of(an.scene).values[i])}): {rest}")
     return out
 
 
@@ -383,8 +448,9 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
     spec = cast("CycleSpec", scene.problem.cycle)  # analysed as a cycle: the scene has [cycle]
     angles = np.asarray(positions_of(scene).values, dtype=float)
     d = linkage.driver
-    assert isinstance(d, Crank)
     polygons = [p for p in ("velocity", "acceleration") if p in scene.show]
+    back = _return_stroke(scene)
+    backward = np.array([lab in back for lab in positions_of(scene).labels]) if back else None
     # the diagrams shown, or only those a value is asked of
     subjects = [s for s in spec.diagrams if "diagrams" in scene.show or s in named]
     mu_phi = spec.scales.get("phi", math.radians(round_scale(360.0 / PHI_AXIS_MM)))
@@ -404,7 +470,7 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
         mu_s = {s: spec.scales["psi" if s in links else "s"] for s in subjects}
         H = spec.pole_distance_mm or (20.0, 20.0)
     elif polygons or subjects:  # a provisional pass at μ = 1 gives every extent in real units
-        probe = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
+        probe = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi, backward=backward,
                                mu_s={s: 1.0 for s in subjects}, H_mm=(1.0, 1.0))
         w, h = page_size(scene)
         room = min(0.4 * w, 0.4 * h, 110.0)
@@ -437,7 +503,7 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
     else:
         mu_s, H = {}, (20.0, 20.0)
     # a stated μv (μω) fixes H₁ = μs·ω₁/(μφ·μv), a stated μa (με) H₂ = μv·ω₁/(μφ·μa)
-    w = abs(d.omega)
+    w = abs(d.omega) if isinstance(d, Crank) else abs(d.velocity)
     poles: dict[str, tuple[float, float]] = {}
     for subj in subjects:
         kv, ka = derived[subj]
@@ -459,7 +525,7 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
                                                f"{reach / mu_s[subj]:.3g} mm high: more than a page can show "
                                                f"(at most {DRAWN_SIZE_RANGE_MM[1]:g} mm)")], scene.source)
     paths = spec.paths if ("paths" in scene.show) else ()
-    an.cycle = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi,
+    an.cycle = evaluate_cycle(linkage, scales, angles, polygons=polygons, diagrams=subjects, mu_phi=mu_phi, backward=backward,
                               mu_s=mu_s, H_mm=poles, paths=paths)
     for k in polygons:
         an.scales["v" if k == "velocity" else "a"] = scales["v" if k == "velocity" else "a"]
@@ -480,9 +546,13 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
         an.summary["diagrams"].append({"subject": dg.subject, "kind": dg.kind, "H1_mm": dg.velocity.H_mm,
                                        "H2_mm": dg.acceleration.H_mm,
                                        "mu_s": dg.mu_s, "mu_v": dg.mu_v, "mu_a": dg.mu_a, **errs})
+    if spec.between is not None:  # a swing: its ends, as the driver's own coordinate
+        unit, conv = ("deg", math.degrees) if isinstance(d, Crank) else ("m", float)
+        an.summary["swing"] = {"from": conv(float(angles[0])), "to": conv(float(angles[angles.size // 2])), "unit": unit,
+                               "limits": spec.between == "limits"}
     an.summary["cycle"] = {"positions": int(angles.size), "start_deg": math.degrees(float(angles[0])),
                            "start": spec.start}
-    an.warnings += _cycle_warnings(an.cycle, d.link)
+    an.warnings += _cycle_warnings(an.cycle, d)
 
 
 def _positions_text(idx: Any, most: int = 12) -> str:
@@ -490,15 +560,16 @@ def _positions_text(idx: Any, most: int = 12) -> str:
     return ", ".join(map(str, idx[:most])) + (f" … ({len(idx)} positions)" if len(idx) > most else "")
 
 
-def _cycle_warnings(cyc: FullCycle, link: str) -> list[str]:
+def _cycle_warnings(cyc: FullCycle, driver: Crank | SliderInput) -> list[str]:
     """A polygon left out, and the positions where an intersection is ill-conditioned or shallow —
     one line each, however many positions (N may be 3600)."""
     from graphmech import tolerances as T
 
     out = []
     for i, why in sorted(cyc.polygon_failures.items())[:12]:
-        out.append(f"position {i + 1} (φ{link} = {math.degrees(float(cyc.angles[i])):.6g}°): no polygon — {why} "
-                   "(a change point: the output's motion is undetermined there)")
+        out.append(f"position {i + 1} ({driver_text(driver, float(cyc.angles[i]))}): no polygon — {why} "
+                   + ("(an end of the swing: the dyad toggles there, so the driver must stop)" if cyc.swing else
+                      "(a change point: the output's motion is undetermined there)"))
     if len(cyc.polygon_failures) > 12:
         out.append(f"… and {len(cyc.polygon_failures) - 12} more positions without a polygon")
     if not cyc.conds:
@@ -812,5 +883,5 @@ def judge_cycle(an: CycleAnalysis, precision_mm: float | None = None) -> list[Ve
     if problems:
         raise SceneError(problems, scene.source)
     if an.polygons is not None:
-        out = judge(an.polygons, precision_mm) + out
+        out = judge(an.polygons, precision_mm) + (judge(an.polygons_back, precision_mm) if an.polygons_back else []) + out
     return out

@@ -140,19 +140,43 @@ def cycle_items(cyc: Any, paths: Sequence[str] = ()) -> list[Primitive]:
             elif isinstance(it, (Hinge, Slider)):
                 items.append(it)
     numbers: list[Primitive] = []
-    A = cyc.mech[crank.pivot][0]
-    tip = cyc.mech[crank.tip]
-    every = numbers_every(cyc.n, 2.0 * math.pi * float(np.hypot(*(tip[0] - A))) / cyc.n, LETTER)
-    for i in range(0, cyc.n, every):
-        at = _pt(tip[i])
-        numbers.append(Label(str(i + 1), at, (_unit(at, _pt(A)),), LETTER, italic=False))
+    if cyc.swing:
+        numbers = _swing_numbers(cyc)
+    else:
+        A = cyc.mech[crank.pivot][0]
+        tip = cyc.mech[crank.tip]
+        every = numbers_every(cyc.n, 2.0 * math.pi * float(np.hypot(*(tip[0] - A))) / cyc.n, LETTER)
+        for i in range(0, cyc.n, every):
+            at = _pt(tip[i])
+            numbers.append(Label(str(i + 1), at, (_unit(at, _pt(A)),), LETTER, italic=False))
     curves: list[Primitive] = []
     for name in paths:
         xy = cyc.mech[name]
-        curves.append(Polyline(thinned(cyc.paths.get(name, xy)), "result", closed=True))
+        curves.append(Polyline(thinned(cyc.paths.get(name, xy)), "result", closed=not cyc.swing))
         if cyc.n <= MOST_DOTS:
             curves += [Circle(_pt(p), DOT, "result") for p in xy]
     return items + curves + first + numbers
+
+
+def _swing_numbers(cyc: Any) -> list[Primitive]:
+    """A swing's positions numbered at the driver's point: position k and N + 2 − k are one place,
+    numbered together (``2, 12``) on the side away from the rocker's pivot (a slider's: beside its guide)."""
+    from graphmech.mechanisms.linkage import Crank
+
+    d = cyc.build.linkage.driver
+    tip = cyc.mech[d.tip if isinstance(d, Crank) else d.point]
+    n, half = cyc.n, cyc.n // 2
+    out: list[Primitive] = []
+    spacing = float(np.hypot(*np.diff(tip[: half + 1], axis=0).T).mean())  # mm between neighbours
+    for i in range(0, half + 1, numbers_every(n, spacing / 2.0, LETTER)):  # "2, 12" is twice as wide
+        at = _pt(tip[i])
+        if isinstance(d, Crank):
+            away = _unit(at, _pt(cyc.mech[d.pivot][0]))
+        else:
+            away = (-d.guide.direction[1], d.guide.direction[0])
+        text = str(i + 1) if i in (0, half) else f"{i + 1}, {n + 1 - i}"
+        out.append(Label(text, at, (away,), LETTER, italic=False))
+    return out
 
 
 #: Images of the common-pole polygons closer than this (mm) share one label.
@@ -562,6 +586,20 @@ def ranges_items(ranges: Sequence[tuple[str, float, float]], crank: str, length:
     return items + labels, mu
 
 
+def _swing_note(an: Any) -> str:
+    """``12 positions: 1 … 7 out, φ = −97.9° → 97.9° (its limits), 8 … 12 back``."""
+    from graphmech.mechanisms.linkage import Crank
+
+    cyc = an.cycle
+    n, half = cyc.n, cyc.n // 2
+    d = cyc.build.linkage.driver
+    q0, q1 = float(cyc.angles[0]), float(cyc.angles[half])
+    ends = (f"φ = {number(math.degrees(q0))}° → {number(math.degrees(q1))}°" if isinstance(d, Crank)
+            else f"s = {number(q0 * 1000)} → {number(q1 * 1000)} mm")
+    limits = " (its limits)" if an.scene.problem.cycle.between == "limits" else ""
+    return f"{n} positions: 1 … {half + 1} out, {ends}{limits}, {half + 2} … {n} back"
+
+
 # ----------------------------------------------------------------------------- the sheet
 def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, float],
                 footer: tuple[str, ...] = ()) -> Sheet:
@@ -587,7 +625,7 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
                                     scales=(("l", mu),)))
         elif entry == "cycle" or (entry == "paths" and "cycle" not in show):
             items = cycle_items(cyc, paths if "paths" in show else ())
-            notes = [scale_text("l", an.scales["l"]), f"{cyc.n} positions, 1 at φ = "
+            notes = [scale_text("l", an.scales["l"]), _swing_note(an) if cyc.swing else f"{cyc.n} positions, 1 at φ = "
                      f"{number(math.degrees(float(cyc.angles[0])))}°" + (" (an extreme position)"
                                                                          if an.scene.problem.cycle.start == "extreme" else "")]
             if _which(cyc.n):
@@ -603,7 +641,8 @@ def cycle_sheet(title: str, an: Any, show: Sequence[str], page: tuple[float, flo
                 gone = sorted(cyc.polygon_failures)
                 notes.append("no polygon at position" + ("s " if len(gone) > 1 else " ")
                              + ", ".join(str(i + 1) for i in gone[:12]) + (" …" if len(gone) > 12 else "")
-                             + ": two of its lines are parallel there")
+                             + ": two of its lines are parallel there" + (" (the swing's ends: the driver stops)"
+                                                                           if cyc.swing else ""))
             head = caption(entry + " polygons, common pole", notation)
             panels.append(Panel(entry, head, tuple(polygons_items(cyc, entry)), tuple(notes),
                                 scales=((key, an.scales[key]),)))

@@ -11,6 +11,7 @@ characteristics" section of ``docs/scene-format.md``.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from collections.abc import Mapping
 from typing import Any
@@ -50,6 +51,7 @@ class CycleSpec:
     diagrams: tuple[str, ...] = ()
     scales: dict[str, float] = field(default_factory=dict, hash=False)
     pole_distance_mm: tuple[float, float] | None = None
+    between: str | tuple[float, float] | None = None  # a swing: "limits" or its ends (rad or m), as written
 
 
 @dataclass(frozen=True)
@@ -73,6 +75,8 @@ class CycleScene:
     cycle: CycleSpec | None
     characteristics: CharacteristicsSpec
     start_angle: float
+    swing: tuple[float, float] | None = None  # a swing's ends (φ unwrapped, rad; or s, m): positions 1 and N/2 + 1
+    stated: float | None = None  # a swing's driver position as stated (it picks the swing whose limits are found)
 
 
 def _names(r: Reader, key: str, check: Any) -> tuple[str, ...]:
@@ -130,6 +134,85 @@ def _loop_problem(linkage: Linkage | None) -> str:
     return ""
 
 
+def read_between(cy: Reader, top: Reader, linkage: Linkage | None, count: int | None, diagrams: tuple[str, ...],
+                 start: str | None) -> str | tuple[float, float] | None:
+    """``[cycle] between``: "limits" or the swing's two ends (a crank's angles, a slider's positions)."""
+    raw = cy.table.get("between")
+    if raw is None and cy.present("between") is None:
+        cy.known.add("between")
+        return None
+    out: str | tuple[float, float] | None = None
+    if isinstance(raw, str):
+        cy.raw("between")
+        if raw != "limits":
+            cy.problem(cy.at("between"), 'must be "limits" or the swing\'s ends [from, to] with a unit '
+                                         f"(between_deg, between_mm), not {say(raw)}")
+            return None
+        out = "limits"
+    elif linkage is not None:
+        kind = "angle" if isinstance(linkage.driver, Crank) else "length"
+        given = cy.quantity("between", kind)
+        if given is None:
+            return None
+        ends = cy.numbers(given.value, cy.at(given.key), 2, shape="[from, to]")
+        if ends is None:
+            return None
+        out = (given.si(ends[0]), given.si(ends[1]))
+        if out[0] == out[1]:
+            cy.problem(cy.at(given.key), "the swing's two ends are one position")
+            return None
+    else:
+        cy.ignore("between")
+        return None
+    if count is not None and count % 2:
+        cy.problem(cy.at("positions"), f"a swing goes out and back in equal steps: N must be even, not {count} "
+                                       "(positions 1 … N/2 + 1 out, the rest back)")
+    if diagrams:
+        cy.problem(cy.at("diagrams"), "the chord diagrams need a driver moving one way: over a swing it reverses at "
+                                      "each end, where v jumps — drop diagrams (the polygons give v, a at every position)")
+    if "start" in cy.table and start == "extreme":
+        cy.problem(cy.at("start"), 'a swing starts at its first end: drop start = "extreme"')
+    d = linkage.driver if linkage is not None else None
+    if isinstance(d, Crank) and (d.omega == 0.0 or d.epsilon != 0.0):
+        top.problem("driver.epsilon" if d.epsilon else "driver.omega",
+                    "over a swing the rocker moves uniformly at |ω| ≠ 0, reversing at the ends: ω ≠ 0, ε = 0")
+    if d is not None and not isinstance(d, Crank) and (d.velocity == 0.0 or d.acceleration != 0.0):
+        top.problem("driver.acceleration" if d.acceleration else "driver.velocity",
+                    "over a stroke the slider moves uniformly at |v| ≠ 0, reversing at the ends: v ≠ 0, acceleration 0")
+    return out
+
+
+def swing_scene(top: Reader, spec: CycleSpec, linkage: Linkage, positions: Positions,
+                characteristics: CharacteristicsSpec) -> tuple[CycleScene | None, Positions | None]:
+    """A swing's N positions: its ends stated, or its limits constructed about the driver's position."""
+    from graphmech.errors import NotApplicable
+    from graphmech.methods.swing import driver_limits, swing_positions
+
+    d = linkage.driver
+    q0 = positions.values[0]
+    sense = (1.0 if d.omega > 0 else -1.0) if isinstance(d, Crank) else (1.0 if d.velocity > 0 else -1.0)
+    crank = isinstance(d, Crank)
+    if spec.between == "limits":
+        try:
+            lower, upper = driver_limits(linkage, q0)
+        except NotApplicable as e:
+            top.problem("cycle.between", str(e))
+            return None, positions
+        q_from, q_to = (lower, upper) if sense > 0 else (upper, lower)
+    else:
+        assert isinstance(spec.between, tuple)
+        q_from, q_to = spec.between
+        if crank:  # the first stroke turns from `from` to `to` in the crank's sense
+            q_to = q_from + sense * ((sense * (q_to - q_from)) % (2.0 * math.pi))
+        elif (q_to - q_from) * sense < 0:
+            top.problem("cycle.between", f"the first stroke runs from {q_from * 1000:g} to {q_to * 1000:g} mm, against "
+                                         "the slider's velocity: swap the ends or reverse the velocity")
+            return None, positions
+    q, _ = swing_positions(q_from, q_to, spec.positions)
+    labels = tuple(str(k) for k in range(1, spec.positions + 1))
+    return CycleScene(spec, characteristics, q_from, (q_from, q_to), q0), Positions(tuple(float(x) for x in q), labels)
+
+
 def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], linkage: Linkage | None,
                positions: Positions | None) -> tuple[CycleScene | None, Positions | None]:
     """The [cycle] and [characteristics] tables; the scene's positions (N of them with a cycle).
@@ -140,10 +223,13 @@ def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], link
 
     show_list = list(show)
     crank = isinstance(linkage.driver, Crank) if linkage is not None else None
-    if crank is False:
-        top.problem("driver.type", 'a full cycle and the characteristics need a crank (type = "crank") as driver')
     cy = top.table_at("cycle")
     ch = top.table_at("characteristics")
+    if crank is False and (ch is not None or "characteristics" in show):
+        top.problem("driver.type", 'the characteristics need a crank (type = "crank") as driver')
+    elif crank is False and cy is not None and cy.present("between") is None:
+        top.problem("driver.type", 'a slider drives over a stroke, not a turn: [cycle] between_mm = [from, to] or '
+                                   'between = "limits"')
     for i, s in enumerate(show_list):
         if s == "mechanism":
             top.problem(f"show[{i}]", 'with a full cycle or the characteristics the mechanism is drawn as "cycle" '
@@ -182,6 +268,7 @@ def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], link
 
         paths = _names(cy, "paths", is_point)
         diagrams = _names(cy, "diagrams", is_subject)
+        between = read_between(cy, top, linkage, count, diagrams, start)
         scales = read_scales(cy, entries=[("phi", "angle"), ("s", "length"), ("psi", "angle"), ("v", "velocity"),
                                            ("a", "acceleration"), ("omega", "omega"), ("epsilon", "epsilon")])
         poles = _read_poles(cy)
@@ -208,10 +295,12 @@ def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], link
             top.problem("driver.epsilon", "the s–φ, v–φ, a–φ diagrams need a crank turning uniformly (ε = 0): "
                                           "their φ axis is a time axis only then")
         if positions is not None and len(positions.values) != 1:
-            top.problem("driver.angle", "one number in a scene with [cycle]: the crank's angle at position 1 "
-                                        "(the cycle's positions divide the turn from there)")
+            key, what = ("driver.angle", "crank's angle") if crank is not False else ("driver.position", "slider's position")
+            top.problem(key, f"one number in a scene with [cycle]: the {what} at position 1 "
+                             "(the cycle's positions divide the turn from there)" if between is None else
+                        f"one number in a scene with [cycle]: the {what} inside the swing")
         if count is not None and start is not None:
-            spec = CycleSpec(count, start, paths, diagrams, scales, poles)
+            spec = CycleSpec(count, start, paths, diagrams, scales, poles, between)
     t_work, ranges = None, False
     if ch is not None:
         v = ch.value("t_work", "time", required=False, positive=True)
@@ -229,8 +318,10 @@ def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], link
 
         if basic_loop(linkage).kind != "fourbar":
             top.problem("characteristics.ranges", "the Grashof ranges are those of a hinged four-bar")
-    if linkage is None or not isinstance(linkage.driver, Crank) or positions is None or top.problems:
+    if linkage is None or positions is None or top.problems:
         return None, positions
+    if spec is not None and spec.between is not None:
+        return swing_scene(top, spec, linkage, positions, CharacteristicsSpec(t_work, ranges))
     start_angle = positions.values[0]
     if spec is not None and spec.start == "extreme":
         from graphmech.methods.characteristics import draw_characteristics
@@ -245,7 +336,7 @@ def read_cycle(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], link
                                        '(a double crank); start = "driver"')
             return None, positions
         start_angle = first
-    if spec is not None:
+    if spec is not None and isinstance(linkage.driver, Crank):  # a slider's cycle is a swing (above)
         from graphmech.methods.full_cycle import cycle_positions
 
         sense = -1.0 if linkage.driver.omega < 0 else 1.0

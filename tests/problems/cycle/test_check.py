@@ -295,3 +295,82 @@ def test_an_absurd_drawing_precision_is_refused_not_an_internal_error(tmp_path):
     assert code == 2 and err == "coarse.toml: check.precision_mm: at most 10 mm, not 1e+308: coarser judges nothing\n"
     doc = check_json(scene_path, "--precision", "10")  # the coarsest accepted: finite tolerances
     assert all(math.isfinite(m["tolerance"]) for m in doc["measured"])
+
+
+# ---------------------------------------------------------------------------- a driver that swings
+
+def _fourbar_closed_form(phi, a=0.08, b=0.04, c=0.06, d=0.05, w=5.0):
+    """C and ω₃ of the rocker-driven four-bar A = (0, 0), D = (d, 0), C left of B→D, by the cosine
+    rule and the velocity equation a·ω₁·i·e^{iφ} + ω₂·i·(C − B) = ω₃·i·(C − D) (complex numbers)."""
+    B, D = a * complex(math.cos(phi), math.sin(phi)), complex(d, 0.0)
+    bd = abs(D - B)
+    along = (b * b - c * c + bd * bd) / (2 * bd)
+    C = B + (D - B) / bd * complex(along, math.sqrt(b * b - along * along))  # left of B→D
+    # real and imaginary parts: ω₂·(C − B) − ω₃·(C − D) = −a·ω₁·e^{iφ}
+    u, v, r = C - B, -(C - D), -a * w * complex(math.cos(phi), math.sin(phi))
+    det = u.real * v.imag - u.imag * v.real
+    return C, (u.real * r.imag - u.imag * r.real) / det
+
+
+def test_a_rocker_swings_between_its_limits_and_back():
+    doc = check_json(SCENES / "linkage.rocker_swing.toml")
+    q = values(doc)
+    limit = math.degrees(math.acos(-0.1375))  # BD = BC + CD = 100: cos φ = (80² + 50² − 100²)/(2·80·50)
+    assert q["driver_from"]["graphical"] == pytest.approx(-limit, abs=1e-9)
+    assert q["driver_to"]["graphical"] == pytest.approx(limit, abs=1e-9)
+    assert doc["swing"] == {"from": pytest.approx(-limit), "to": pytest.approx(limit), "unit": "deg", "limits": True}
+    step = 2 * limit / 6  # 12 positions: 1 … 7 out, 8 … 12 back
+    for k, sign in ((2, 1.0), (12, -1.0)):  # position 2 and 12: one place, ω₁ reversed on the way back
+        phi = math.radians(-limit + step)
+        _, w3 = _fourbar_closed_form(phi)
+        assert q[f"omega_3@{k}"]["graphical"] == pytest.approx(sign * w3, rel=1e-9)
+        assert q[f"omega_3@{k}"]["exact"] == pytest.approx(sign * w3, rel=1e-9)
+    assert q["a_C@4"]["graphical"] == pytest.approx(q["a_C@10"]["graphical"], rel=1e-12)  # a ∝ ω₁² at ε₁ = 0
+    # the output CD swings from B, C, D in one line at φ = 97.9° to where A, B, C fold (AC = 40 mm)
+    B = 80.0 * complex(math.cos(math.radians(limit)), math.sin(math.radians(limit)))
+    fold = math.atan2(-60.0 * math.sqrt(1 - 0.75 ** 2), -60.0 * 0.75)  # cos ∠ADC = (50² + 60² − 40²)/(2·50·60)
+    assert q["output_swing"]["graphical"] == pytest.approx(math.degrees(math.atan2(B.imag, B.real - 50.0) - fold), abs=1e-9)
+    assert q["output_swing"]["rel_error"] < 1e-9
+    ends = [w for w in doc["warnings"] if "no polygon" in w]
+    assert len(ends) == 2 and all("an end of the swing" in w for w in ends)  # the toggles: the driver stops there
+
+
+def test_a_slider_drives_over_its_stroke_and_back():
+    q = values(check_json(SCENES / "linkage.slider_stroke.toml"))
+    assert (q["driver_from"]["graphical"], q["driver_to"]["graphical"]) == (0.02, 0.12)
+    # position 2 (s = 45 mm, out) and 8 (the same place, back): B = (45, 0), C on BC = 80, CD = 50 right of B→D
+    B, D = complex(0.045, 0.0), complex(0.1, 0.06)
+    bd = abs(D - B)
+    along = (0.08 ** 2 - 0.05 ** 2 + bd * bd) / (2 * bd)
+    C = B + (D - B) / bd * complex(along, -math.sqrt(0.08 ** 2 - along * along))
+    # v_B + ω₂·i·(C − B) = ω₃·i·(C − D), v_B = 0.5 m/s along x (out; −0.5 back)
+    # divided by i: ω₂·(C − B) − ω₃·(C − D) = i·v_B, two real equations
+    u, v, r = C - B, -(C - D), complex(0.0, 0.5)
+    det = u.real * v.imag - u.imag * v.real
+    w3 = (u.real * r.imag - u.imag * r.real) / det
+    assert q["omega_3@2"]["graphical"] == pytest.approx(w3, rel=1e-9)
+    assert q["omega_3@8"]["graphical"] == pytest.approx(-w3, rel=1e-9)
+    assert q["a_C@3"]["graphical"] == pytest.approx(q["a_C@7"]["graphical"], rel=1e-12)
+
+
+def test_a_crank_swings_between_stated_angles_the_way_it_turns(tmp_path):
+    # the crank-rocker 28/52/50/72 told to swing from 30° to 90°: clockwise it goes the long way round
+    text = (SCENES / "linkage.fourbar_28_52_50_72-cycle.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?ms)^\[cycle\].*?(?=^\[|\Z)", "[cycle]\npositions = 8\nbetween_deg = [30, 90]\n\n", text)
+    text = re.sub(r"(?m)^show = .*$", 'show = ["cycle", "velocity"]', text)
+    text = re.sub(r"(?m)^find = .*$", 'find = ["driver_from", "driver_to", "omega_3@2", "omega_3@8"]', text)
+    text = text.split("[measured]")[0]
+    for sense, to in (("", 90.0), ("-", 90.0 - 360.0)):
+        p = tmp_path / f"s{sense}.toml"
+        p.write_text(re.sub(r"(?m)^omega = ([0-9.]+)$", lambda m: f"omega = {sense}{m.group(1)}", text), encoding="utf-8")
+        q = values(check_json(p))
+        assert q["driver_to"]["graphical"] == pytest.approx(to, abs=1e-12)
+        assert q["omega_3@2"]["graphical"] == pytest.approx(-q["omega_3@8"]["graphical"], rel=1e-12)
+        assert q["omega_3@2"]["rel_error"] < 1e-9
+
+
+def test_a_hand_reading_on_the_return_stroke_is_judged_with_the_driver_reversed():
+    doc = check_json(SCENES / "linkage.rocker_swing.toml", "--measured", "omega_3@12=-1.83", "--measured",
+                     "omega_3@12=1.83")
+    got = [(m["measured"], m["ok"]) for m in doc["measured"] if m["name"] == "omega_3@12"]
+    assert sorted(got) == [(-1.83, True), (1.83, False)]  # position 12: ω₃ < 0 on the way back

@@ -252,3 +252,14 @@ def test_the_characteristics_notes_are_lettered_in_the_notation(notation: str, b
     [notes] = [p.notes for p in sheet.panels if p.name == "characteristics"]
     assert any(begins in n for n in notes) and any(n.startswith(timing) for n in notes)
     assert notes[0] == "μ_{l} = 0.001 m/mm"  # symbols and numbers the same in every notation
+
+
+def test_a_swings_positions_are_numbered_together_out_and_back_and_its_path_is_open():
+    an = analyse_cycle(load_scene(SCENES / "linkage.rocker_swing.toml"))
+    items = cycle_items(an.cycle, ["E"])
+    numbers = [it.text for it in items if isinstance(it, Label) and re.fullmatch(r"[0-9, ]+", it.text)]
+    assert numbers == ["1", "2, 12", "3, 11", "4, 10", "5, 9", "6, 8", "7"]
+    paths = [it for it in items if isinstance(it, Polyline) and it.role == "result"]
+    assert len(paths) == 1 and not paths[0].closed  # out and back over one arc
+    notes = [p for p in sheet(load_scene(SCENES / "linkage.rocker_swing.toml"))[0].panels if p.name == "cycle"][0].notes
+    assert "12 positions: 1 … 7 out, φ = −97.9° → 97.9° (its limits), 8 … 12 back" in notes

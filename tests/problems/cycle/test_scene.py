@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 import re
 import tomllib
+from pathlib import Path
 
 import pytest
 
@@ -171,11 +172,12 @@ def test_unknown_find_names_are_refused(tmp_path):
     assert code == 2 and "find[0]" in err and "interval middle" in err
 
 
-def test_a_slider_driven_linkage_has_no_cycle(tmp_path):
+def test_a_slider_driven_linkage_has_no_full_turn(tmp_path):
+    # a slider has a stroke, not a turn: its cycle needs [cycle] between (tests/problems/cycle/test_swing.py)
     p = tmp_path / "sl.toml"
     p.write_text(scene_text("cycle/slider_driven"), encoding="utf-8")
     code, _, err = run_cli("render", str(p), "-o", str(tmp_path / "x.svg"))
-    assert code == 2 and err.count("\n") == 1 and ": driver.type:" in err and "crank" in err, err
+    assert code == 2 and err.count("\n") == 1 and ": driver.type:" in err and "between_mm" in err, err
 
 
 @pytest.mark.parametrize("find, diagrams, reason", [
@@ -205,3 +207,42 @@ def test_an_extreme_start_that_cannot_be_assembled_is_refused_at_cycle_start(tmp
         '[cycle]\npositions = 12\nstart = "extreme"\n')
     assert_refused(run_cli("check", str(write_scene(tmp_path, text))), "scene.toml",
                    "cycle.start: no extreme position to start from", "cannot be assembled")
+
+
+# ---------------------------------------------------------------------------- a driver that swings
+
+ROCKER = (Path(__file__).resolve().parents[3] / "figures" / "scenes" / "linkage.rocker_swing.toml").read_text(
+    encoding="utf-8")
+STROKE = (Path(__file__).resolve().parents[3] / "figures" / "scenes" / "linkage.slider_stroke.toml").read_text(
+    encoding="utf-8")
+
+
+def test_a_swing_numbers_its_positions_out_and_back():
+    sc = read(ROCKER)
+    q = sc.positions.values
+    assert sc.positions.labels == tuple(str(k) for k in range(1, 13))
+    assert q[0] == pytest.approx(-math.acos(-0.1375), abs=1e-12) and q[6] == pytest.approx(math.acos(-0.1375), abs=1e-12)
+    assert all(q[k] == q[12 - k] for k in range(1, 6))
+    assert sc.problem.swing == (q[0], q[6]) and sc.problem.stated == 0.0 and sc.problem.cycle.between == "limits"
+    stroke = read(STROKE)
+    assert stroke.positions.values == pytest.approx((0.02, 0.045, 0.07, 0.095, 0.12, 0.095, 0.07, 0.045), abs=1e-15)
+
+
+@pytest.mark.parametrize("text,where,words", [
+    (ROCKER.replace("positions = 12", "positions = 11"), "cycle.positions", ("must be even",)),
+    (ROCKER.replace('paths = ["E"]', 'paths = ["E"]\ndiagrams = ["C"]'), "cycle.diagrams", ("reverses", "v jumps")),
+    (ROCKER.replace('paths = ["E"]', 'paths = ["E"]\nstart = "extreme"'), "cycle.start", ("first end",)),
+    (ROCKER.replace('between = "limits"', 'between = "ends"'), "cycle.between", ('"limits"',)),
+    (ROCKER.replace('between = "limits"', "between_deg = [10, 10]"), "cycle.between_deg", ("one position",)),
+    (ROCKER.replace('between = "limits"', "between_deg = [10]"), "cycle.between_deg", ("[from, to]",)),
+    (ROCKER.replace("omega = 5", "omega = 5\nepsilon_rad_s2 = 2"), "driver.epsilon", ("uniformly",)),
+    (ROCKER.replace("angle = 0 ", "angle = 180 "), "cycle.between", ("cannot be assembled",)),
+    (ROCKER.replace("length = 80", "length = 20").replace("lengths = [40, 60]", "lengths = [60, 50]"),
+     "cycle.between", ("turns fully",)),
+    (STROKE.replace("between = [20, 120]", "between = [120, 20]"), "cycle.between", ("against the slider's velocity",)),
+    (STROKE.replace("velocity = 0.5 ", "velocity = 0.5\nacceleration = 1 "), "driver.acceleration", ("uniformly",)),
+    (STROKE.replace('paths = ["E"]', 'paths = ["E"]\n[characteristics]'), "driver.type", ("characteristics",)),
+])
+def test_what_a_swing_refuses_is_one_line_naming_the_key(tmp_path, text, where, words):
+    err = assert_refused(run_cli("check", str(written(tmp_path, text))), "s.toml", *words)
+    assert f": {where}:" in err, err

@@ -43,3 +43,12 @@ def test_the_protocol_speaks_the_scenes_notation():
 def test_the_command_prints_it_numbered():
     code, out, _ = run_cli("steps", str(SCENES / "linkage.quick_return_timing.toml"))
     assert code == 0 and out.splitlines()[3] == "4. K = 1.4"
+
+
+def test_a_swing_is_laid_out_out_and_back_not_as_a_turn():
+    lines = cycle_steps(load_scene(SCENES / "linkage.rocker_swing.toml"))
+    assert lines[1].startswith("the driver swings from −97.9° to 97.9° (its limits: the dyad on its point toggles")
+    assert "12 positions, 1 … 7 out" in lines[1] and "k and 14 − k are one place" in lines[1]
+    stroke = cycle_steps(load_scene(SCENES / "linkage.slider_stroke.toml"))
+    assert stroke[1].startswith("the driver swings from 20 mm to 120 mm: 8 positions, 1 … 5 out")
+    assert not any("crank's turn" in line for line in lines + stroke)

@@ -424,3 +424,23 @@ def test_friction_dissipates_exactly_the_extra_driving_power_over_the_cycle(tmp_
     np.testing.assert_allclose(gained[ok], lost[ok], rtol=1e-11)
 
 
+
+
+def test_a_rocker_drives_a_force_scene_over_several_angles_of_its_swing(tmp_path):
+    """Any link pivoted to the frame drives: AB (80 mm) cannot turn fully, yet at angles inside its
+    swing the balancing moment is M_b = −M_r·ω₃/ω₁ (virtual work, no masses), ω₃/ω₁ = P13A/P13D."""
+    import math
+
+    q = {r["name"]: r for r in check_json(write_scene(tmp_path, scene_text("forces/rocker_driven")))["quantities"]}
+    # at φ = 0, B = (80, 0) lies on the frame line, so P13 = AD ∩ BC is B itself: ω₃/ω₁ = 80/30
+    assert q["M_b@0"]["graphical"] == pytest.approx(-4.0 * 80.0 / 30.0, rel=1e-9)
+    for phi in (-60, 60):
+        B = 80.0 * complex(math.cos(math.radians(phi)), math.sin(math.radians(phi)))
+        D = complex(50.0, 0.0)
+        bd = abs(D - B)
+        along = (40.0 ** 2 - 60.0 ** 2 + bd ** 2) / (2 * bd)
+        C = B + (D - B) / bd * complex(along, math.sqrt(40.0 ** 2 - along ** 2))  # left of B→D
+        t = -(B.imag / (C - B).imag)  # P13: where line BC crosses the frame line AD (y = 0)
+        p13 = (B + t * (C - B)).real
+        assert q[f"M_b@{phi}"]["graphical"] == pytest.approx(-4.0 * p13 / (p13 - 50.0), rel=1e-9)
+        assert q[f"M_b@{phi}"]["rel_error"] < 1e-9

@@ -173,3 +173,37 @@ def test_a_zero_velocity_at_a_dead_centre_is_no_vector():
     rows = {r.name: r for r in an.rows}
     assert abs(rows["v_C"].drawn_mm) < 1e-9 and abs(rows["v_B"].drawn_mm) == pytest.approx(40.0)
     assert short_vector_warnings(an) == [] and not any("under 10 mm" in w for w in an.warnings)
+
+
+SCOTCH_YOKE = """
+title = "Scotch yoke"
+show = ["mechanism", "velocity", "acceleration"]
+find = ["v_C", "a_C", "v_B2B3"]
+[frame]
+A_mm = [0, 0]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 50
+angle_deg = [0, 30, 120, 250]
+omega_rad_s = 10
+[[dyad]]
+type = "RPP"
+joints = ["B", "C"]
+links = ["2", "3"]
+slot_angle_deg = 90
+guide = { through = "A", angle_deg = 0 }
+"""
+
+
+def test_the_scotch_yoke_is_an_rpp_dyad_with_the_slot_square_to_the_guide(tmp_path):
+    # x_C = r·cos φ: v_C = −r·ω·sin φ, a_C = −r·ω²·cos φ; the block slides in the slot at r·ω·cos φ
+    q = {r["name"]: r for r in check_json(write_scene(tmp_path, SCOTCH_YOKE))["quantities"]}
+    r, w = 0.05, 10.0
+    for phi in (0, 30, 120, 250):
+        c, s = math.cos(math.radians(phi)), math.sin(math.radians(phi))
+        assert q[f"v_C@{phi}"]["graphical"] == pytest.approx(-r * w * s, abs=1e-9 * r * w)
+        assert q[f"a_C@{phi}"]["graphical"] == pytest.approx(-r * w * w * c, abs=1e-9 * r * w * w)
+        assert abs(q[f"v_B2B3@{phi}"]["graphical"]) == pytest.approx(abs(r * w * c), abs=1e-9 * r * w)

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import json
 import math
 import tomllib
 from pathlib import Path
@@ -22,7 +23,7 @@ from graphmech.mechanisms.linkage import (
 )
 from graphmech.problems.reader import Page
 from graphmech.scene import Scene, load_scene, parse_scene
-from tests.conftest import ROOT, reference_area
+from tests.conftest import ROOT, assert_refused, reference_area, run_cli
 from tests.scenes import doc_blocks, refusal, scene_path, scene_text, write_scene
 
 DOCS = ROOT / "docs" / "scene-format.md"
@@ -357,3 +358,36 @@ def test_the_reference_kinematics_problems_can_be_written() -> None:
     d, e = s.linkage.points
     assert d.along == pytest.approx(p["lBD_mm"] / 1000)
     assert (e.along, e.left) == pytest.approx((p["lBD_mm"] / 1000, p["lDE_mm"] / 1000))
+
+
+def test_an_rpr_has_no_offset_so_an_offset_guide_bar_is_refused_in_one_line(tmp_path):
+    """The bar's line passes through the other link's pivot (docs/scene-format.md, RPR): the centred
+    guide bar goes in, one whose slot misses its pivot by e cannot."""
+    text = """
+[frame]
+A_mm = [0, 0]
+C_mm = [0, -200]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "B"
+length_mm = 100
+angle_deg = 30
+omega_rad_s = 5
+[[dyad]]
+type = "RPR"
+joints = ["B", "C"]
+links = ["2", "3"]
+bar = "second"
+"""
+    p = tmp_path / "g.toml"
+    p.write_text('find = ["omega_3"]\n' + text, encoding="utf-8")
+    code, out, _ = run_cli("check", "--json", str(p))
+    # the bar through C and B: ω₃ = ω₁·AB·cos(∠ between AB and BC)/BC, from B = (86.6, 50), C = (0, −200)
+    bx, by = 100 * math.cos(math.radians(30)), 100 * math.sin(math.radians(30))
+    bc2 = bx ** 2 + (by + 200) ** 2
+    w3 = 5.0 * (bx * bx + by * (by + 200)) / bc2  # d/dt atan2(y_B + 200, x_B) with ẋ = −ω·y_B, ẏ = ω·x_B
+    assert code == 0 and json.loads(out)["quantities"][0]["graphical"] == pytest.approx(w3, rel=1e-9)
+    p.write_text('find = ["omega_3"]\n' + text + "offset_mm = 20\n", encoding="utf-8")
+    assert_refused(run_cli("check", str(p)), "g.toml", "dyad[0].offset_mm", "unknown key")
