@@ -26,7 +26,7 @@ import numpy as np
 from graphmech.errors import NotApplicable
 from graphmech.exact.linkage import Kinematics, solve as solve_kinematics
 from graphmech.mechanisms.forces import ForceModel
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, SliderInput
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, SliderInput
 
 __all__ = ["ExactForces", "solve_forces", "pairs"]
 
@@ -87,6 +87,10 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
         on.setdefault(d.point, d.link)
     extra = {pt.name: pt.link for pt in linkage.points}
     for y in linkage.dyads:
+        if isinstance(y, PRP) or (isinstance(y, RRP) and not isinstance(y.guide, Guide)):
+            raise NotApplicable(f"the matrix method here takes RRR, RRP (on a frame guide), RPR and RPP groups, "
+                                f"not {y.kind} with a guide on a moving link" if isinstance(y, RRP) else
+                                f"the matrix method here takes RRR, RRP, RPR and RPP groups, not {y.kind}")
         for name in (y.p, getattr(y, "q", y.p)):
             if name not in on and name in extra:
                 on[name] = extra[name]
@@ -273,7 +277,8 @@ def _guide_tangent(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str
         elif isinstance(d, SliderInput) and d.link == b:
             angle = d.guide.angle
         else:
-            angle = next(y.guide.angle for y in linkage.dyads if isinstance(y, (RRP, RPP)) and y.links[1] == b)
+            angle = next(y.guide.angle for y in linkage.dyads
+                         if isinstance(y, (RRP, RPP)) and isinstance(y.guide, Guide) and y.links[1] == b)
         return np.tile([math.cos(angle), math.sin(angle)], (n, 1))
     d = kin.point[p] - kin.point[guide]
     length = np.hypot(d[:, 0], d[:, 1])

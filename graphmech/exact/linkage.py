@@ -4,7 +4,7 @@ This is the textbook's *analytical* method, kept apart from the graphical one so
 it: every dyad is a closed vector loop written with complex numbers (a plane vector ``x + iy``,
 a link of length ``l`` at angle ``θ`` is ``l·e^{iθ}``). Positions come in angle form (law of
 cosines and ``atan2`` for RRR, ``arcsin`` for RRP, ``atan2`` for RPR, a fixed-angle triangle for
-RPP); velocities and accelerations come from differentiating the loop once and twice, which gives
+RPP, two lines' intersection for PRP); velocities and accelerations come from differentiating the loop once and twice, which gives
 two linear equations in the two unknown rates, solved by Cramer's rule written out.
 
 Nothing here is taken from ``graphmech.construction``, ``graphmech.methods`` or
@@ -31,12 +31,15 @@ import numpy as np
 from graphmech.errors import OutOfDomain, SceneError
 from graphmech.tolerances import PARALLEL_SIN, TANGENT_REL
 from graphmech.mechanisms.linkage import (
+    PRP,
     RPP,
     RPR,
     RRP,
     RRR,
     Crank,
+    Guide,
     Linkage,
+    LinkGuide,
     LinkPoint,
     SliderInput,
 )
@@ -210,19 +213,23 @@ def _rrr(st: _State, y: RRR) -> None:
 
 
 def _rrp(st: _State, y: RRP) -> None:
-    """P–C, C sliding on a frame guide: loop ``P + l·e^{iθ} = G + s·u``, ``u = e^{iδ}``.
+    """P–C, C sliding on a guide: loop ``P + l·e^{iθ} = G + s·u``, ``u = e^{iδ}``.
 
     Position: the loop's component across the guide gives ``sin(θ − δ) = −h/l`` with
     ``h = u × (P − G)``, P's distance to the left of the guide; ``θ − δ = arcsin(−h/l)`` forward,
     ``π − arcsin(−h/l)`` backward; along the guide ``s = u·(P − G) + l·cos(θ − δ)``. Rates:
     ``ω·(i·l·e^{iθ}) + ṡ·(−u) = −v_P`` and ``α·(i·l·e^{iθ}) + s̈·(−u) = −a_P + ω²·l·e^{iθ}``;
     the determinant is ``l·cos(θ − δ)``, zero when the coupler stands square to the guide.
+
+    A guide on a moving link k (G its point ``through``, u turning with ``u̇ = iω_k·u``) adds its own
+    motion to the right-hand sides: ``v_G + iω_k·s·u`` and ``a_G + (iα_k − ω_k²)·s·u + 2iω_k·ṡ·u``
+    (the Coriolis term); the slider turns with k.
     """
     zp, vp, ap = st.pts[y.p]
     l = y.length
-    delta = y.guide.angle
-    u = cmath.exp(1j * delta)
-    rel = zp - complex(*y.guide.through)
+    zg, vg, ag, u, wk, alk, bad = _guide_line(st, y.guide)
+    delta = y.guide.angle if isinstance(y.guide, Guide) else np.angle(u)  # a frame guide's as given
+    rel = zp - zg
     sin_rel = -_cross(u, rel) / l  # sin(θ − δ)
     sin2 = 1.0 - sin_rel * sin_rel  # cos²(θ − δ): the discriminant relative to l²
     rel_angle = np.arcsin(np.clip(sin_rel, -1.0, 1.0))
@@ -231,6 +238,7 @@ def _rrp(st: _State, y: RRP) -> None:
     th = delta + rel_angle
     s = (rel * u.conjugate()).real + l * np.cos(rel_angle)
     name = f"RRP {y.p}-{y.c}"
+    st.fail(bad, f"{name}: the guide's two points coincide, its line is undefined")
     st.fail(sin2 < -TANGENT_REL, f"{name}: cannot be assembled ({y.p} farther than l from the guide)")
     dead = sin2 <= TANGENT_REL
     st.fail(dead, f"{name}: dead centre ({y.p}{y.c} square to the guide), rates unbounded",
@@ -238,12 +246,22 @@ def _rrp(st: _State, y: RRP) -> None:
 
     r = l * np.exp(1j * th)
     k1 = 1j * r  # coefficient of ω (and α); that of ṡ (and s̈) is −u
-    det = np.where(dead, 1.0, _cross(k1, -u))
-    w, sd = _cramer(k1, -u, -vp, det)
-    al, sdd = _cramer(k1, -u, -ap + w * w * r, det)
-    st.pts[y.c] = (complex(*y.guide.through) + s * u, sd * u, sdd * u)
+    det = np.where(dead | bad, 1.0, _cross(k1, -u))
+    w, sd = _cramer(k1, -u, vg + 1j * wk * s * u - vp, det)
+    al, sdd = _cramer(k1, -u, ag + (1j * alk - wk * wk) * s * u + 2j * wk * sd * u - ap + w * w * r, det)
+    zc = zg + s * u
+    st.pts[y.c] = (zc, vp + w * k1, ap + al * k1 - w * w * r)
     st.rotating(y.links[0], th, w, al)
-    st.translating(y.links[1], delta)
+    if isinstance(y.guide, LinkGuide):  # the guide link's point at C; the slider turns with it
+        on_slider, on_guide = y.coincident
+        st.pts[on_slider] = st.pts[y.c]
+        st.pts[on_guide] = (zc, vg + 1j * wk * s * u, ag + (1j * alk - wk * wk) * s * u)
+        st.rotating(y.links[1], np.broadcast_to(np.asarray(delta, dtype=float), (st.n,)),
+                    np.broadcast_to(wk, (st.n,)).astype(float),
+                    np.broadcast_to(alk, (st.n,)).astype(float))
+    else:
+        st.pts[y.c] = (zc, sd * u, sdd * u)  # exactly along the guide
+        st.translating(y.links[1], y.guide.angle)
 
 
 def _rpr(st: _State, y: RPR) -> None:
@@ -302,6 +320,57 @@ def _rpp(st: _State, y: RPP) -> None:
     st.translating(y.links[1], y.guide.angle)
 
 
+def _guide_line(st: _State, g: Guide | LinkGuide) -> tuple[_Vec, _Vec, _Vec, _Vec, _Array, _Array, _Array]:
+    """A guide line as ``(U, v_U, a_U, e, ω, α, bad)``: a point U on it, its direction e and the
+    rates of the link it is fixed on (0 for the frame); ``bad`` where U and V coincide."""
+    if isinstance(g, Guide):
+        zero = np.zeros(st.n)
+        return (complex(*g.through), st.zero, st.zero, np.full(st.n, cmath.exp(1j * g.angle)), zero, zero,
+                np.zeros(st.n, dtype=bool))
+    zu, vu, au = st.pts[g.through]
+    uv = st.pts[g.towards][0] - zu
+    length = np.abs(uv)
+    bad = length <= _COINCIDENT_REL * np.maximum(np.abs(zu), np.abs(zu + uv))
+    e = uv / np.where(bad, 1.0, length)
+    return zu, vu, au, e, st.omega[g.link], st.alpha[g.link], bad
+
+
+def _prp(st: _State, y: PRP) -> None:
+    """Blocks on two guides pinned at C: ``U1 + t1·e1 = U2 + t2·e2`` (each e turning with its link).
+
+    Position: Cramer's rule on ``t1·e1 − t2·e2 = U2 − U1``. With ``ė = iω·e`` the loop differentiated
+    once and twice keeps the coefficients ``e1, −e2`` and gains on the right the guides' own motion:
+    ``ṫ1·e1 − ṫ2·e2 = (v_U2 + iω2·t2·e2) − (v_U1 + iω1·t1·e1)`` and
+    ``ẗ1·e1 − ẗ2·e2 = (a_U2 + (iα2 − ω2²)·t2·e2 + 2iω2·ṫ2·e2) − (a_U1 + (iα1 − ω1²)·t1·e1 + 2iω1·ṫ1·e1)``
+    (the Coriolis terms ``2iω·ṫ·e``). The determinant ``e1 × e2`` vanishes when the guides are
+    parallel: C is then at infinity (or anywhere on them), the linkage cannot be assembled.
+    """
+    u1, v1, a1, e1, w1, al1, bad1 = _guide_line(st, y.guides[0])
+    u2, v2, a2, e2, w2, al2, bad2 = _guide_line(st, y.guides[1])
+    name = f"PRP {y.c}"
+    st.fail(bad1 | bad2, f"{name}: a guide's two points coincide, its line is undefined")
+    det = _cross(e1, e2)
+    parallel = np.abs(det) <= PARALLEL_SIN
+    st.fail(parallel, f"{name}: the two guides are parallel, {y.c} is undefined")
+    det = np.where(parallel | bad1 | bad2, 1.0, -det)  # the coefficients are e1 and −e2
+    t1, t2 = _cramer(e1, -e2, u2 - u1, det)
+    td1, td2 = _cramer(e1, -e2, v2 + 1j * w2 * t2 * e2 - v1 - 1j * w1 * t1 * e1, det)
+    rhs = (a2 + (1j * al2 - w2 * w2) * t2 * e2 + 2j * w2 * td2 * e2
+           - a1 - (1j * al1 - w1 * w1) * t1 * e1 - 2j * w1 * td1 * e1)
+    tdd1, _ = _cramer(e1, -e2, rhs, det)
+    zc = u1 + t1 * e1
+    on_guide = [(u1, v1, a1, e1, w1, al1, t1), (u2, v2, a2, e2, w2, al2, t2)]
+    st.pts[y.c] = (zc, v1 + 1j * w1 * t1 * e1 + td1 * e1,
+                   a1 + (1j * al1 - w1 * w1) * t1 * e1 + 2j * w1 * td1 * e1 + tdd1 * e1)
+    for k, (u, v, a, e, w, al, t) in enumerate(on_guide):
+        st.pts[y.c + y.links[k]] = st.pts[y.c]
+        on = y.on_guide(k)
+        if on is not None:  # the guide's link's point at C
+            st.pts[on] = (zc, v + 1j * w * t * e, a + (1j * al - w * w) * t * e)
+        st.rotating(y.links[k], np.angle(e), np.broadcast_to(w, (st.n,)).astype(float),
+                    np.broadcast_to(al, (st.n,)).astype(float))
+
+
 def _link_point(st: _State, pt: LinkPoint, frame_link: str) -> None:
     """``X = U + (along + i·left)·û`` on a rigid link: ``v = v_U + iω·UX``, ``a = a_U + (iα − ω²)·UX``."""
     zu, vu, au = st.pts[pt.base[0]]
@@ -323,7 +392,7 @@ def _link_point(st: _State, pt: LinkPoint, frame_link: str) -> None:
 # --------------------------------------------------------------------------------------------
 # Structure check and solving order (once per call; collects every problem, then raises)
 
-_Step = Union[Crank, SliderInput, RRR, RRP, RPR, RPP, LinkPoint]
+_Step = Union[Crank, SliderInput, RRR, RRP, RPR, RPP, PRP, LinkPoint]
 
 
 def _plan(linkage: Linkage) -> list[_Step]:
@@ -357,6 +426,14 @@ def _plan(linkage: Linkage) -> list[_Step]:
             if i == frame or i in links:
                 problems.append((key, f"link {i!r} is the frame or already used"))
             links.add(i)
+
+    def link_guide(key: str, g: LinkGuide) -> None:
+        """A guide on a moving link: that link solved before, the line through two of its points."""
+        need(key, g.through, g.towards)
+        if g.link == frame or g.link not in links:
+            problems.append((key + ".link", f"link {g.link!r} is not a moving link solved before"))
+        elif not {g.through, g.towards} <= set(carried[g.link]):
+            problems.append((key + ".line", f"the line's points must be points of link {g.link!r}"))
 
     def place_points() -> None:
         progress = True
@@ -398,13 +475,24 @@ def _plan(linkage: Linkage) -> list[_Step]:
                 problems.append((key + ".length", "length must be > 0"))
             if y.branch not in ("forward", "backward"):
                 problems.append((key + ".branch", "branch must be 'forward' or 'backward'"))
-            new_points(key + ".c", y.c)
-            translating.add(y.links[1])
+            new_points(key + ".c", y.c, *y.coincident)
+            if isinstance(y.guide, LinkGuide):
+                link_guide(f"{key}.guide", y.guide)
+            else:
+                translating.add(y.links[1])
         elif isinstance(y, RPR):
             need(key, y.p, y.q)
             if y.bar not in ("first", "second"):
                 problems.append((key + ".bar", "bar must be 'first' or 'second'"))
             new_points(key + ".coincident", *y.coincident)
+        elif isinstance(y, PRP):
+            for m, g in enumerate(y.guides):
+                if isinstance(g, LinkGuide):
+                    link_guide(f"{key}.guides[{m}]", g)
+            if all(isinstance(g, Guide) for g in y.guides):
+                problems.append((key + ".guides", "both guides on the frame: the dyad cannot move"))
+            new_points(key + ".c", y.c, *y.coincident)
+            translating.update(y.links[m] for m, g in enumerate(y.guides) if isinstance(g, Guide))
         elif isinstance(y, RPP):
             need(key, y.p)
             if abs(math.sin(y.slot_angle - y.guide.angle)) <= PARALLEL_SIN:
@@ -541,6 +629,8 @@ def solve(linkage: Linkage, positions: np.ndarray) -> Kinematics:
                 _rpr(st, step)
             elif isinstance(step, RPP):
                 _rpp(st, step)
+            elif isinstance(step, PRP):
+                _prp(st, step)
             else:
                 _link_point(st, step, linkage.frame_link)
 

@@ -32,7 +32,7 @@ import math
 import numpy as np
 
 from graphmech.errors import NotApplicable
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage, SliderInput
+from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage, SliderInput
 
 __all__ = ["driver_limits", "output_swing"]
 
@@ -70,6 +70,8 @@ def _toggles(linkage: Linkage) -> list[float]:
                 if disc >= 0.0:
                     out += [-b + math.sqrt(disc), -b - math.sqrt(disc)]
         return out
+    if not isinstance(dyad.guide, Guide):
+        raise NotApplicable(f"the dyad on {tip} slides on a moving link's guide: its toggle is not the driver's limit")
     (Tx, Ty), (ux, uy) = dyad.guide.through, dyad.guide.direction
     nx, ny = -uy, ux
     for e in (dyad.length, -dyad.length):

@@ -13,13 +13,20 @@ A point's name is its capital letter ("B", "C"); a link's id is the book's numbe
 Dyads (Assur groups of class II)
 --------------------------------
 ``RRR``  P–C–Q: links ``(i, j)``; i carries P and C, j carries Q and C.
-``RRP``  P–C on a frame guide: link i (coupler) carries P and C; j is the slider at C.
+``RRP``  P–C on a guide: link i (coupler) carries P and C; j is the slider at C. The guide is on
+         the frame (:class:`Guide`) or on a moving link (:class:`LinkGuide`: the slotted link drives
+         the pin C); then C<j> (= C) and C<link> name the coincident points, as for PRP.
 ``RPR``  P and Q pivots; i is pivoted at P, j at Q, and they slide on each other along PQ.
          ``bar`` tells which of the two is the guide bar (its line passes through the
          other's pivot); the other is the block. The sliding point X is the block's pivot;
          the coincident points are X<bar> (unknown) and X<block>: v_X<bar> = v_X<block> + v_rel.
 ``RPP``  P revolute on link i (a block); i slides in a straight slot of link j (slot angle
          fixed, j translates), j slides along a frame guide; C is j's point on the guide.
+``PRP``  C revolute joining two blocks i and j; i slides on a guide of a known link, j on another
+         (the tangent mechanism: a block on a turning bar, pinned to a slider on a frame guide).
+         A guide is a frame :class:`Guide` or a :class:`LinkGuide`, the line through two points of
+         a moving link; the coincident point of that link at C is C<link> ("C1"), and the blocks'
+         own points at C are C<i>, C<j> (both C): v_C = v_C1 + v_rel (∥ the guide).
 """
 from __future__ import annotations
 
@@ -49,6 +56,18 @@ class Guide:
     @property
     def direction(self) -> tuple[float, float]:
         return (math.cos(self.angle), math.sin(self.angle))
+
+
+@dataclass(frozen=True)
+class LinkGuide:
+    """A straight guide on a moving link: the line through two of its points, ``through`` → ``towards``.
+
+    It turns with its link; a block sliding on it meets the Coriolis acceleration 2ω×v_rel.
+    """
+
+    link: str
+    through: str
+    towards: str
 
 
 @dataclass(frozen=True)
@@ -94,7 +113,7 @@ class RRR:
 
 @dataclass(frozen=True)
 class RRP:
-    """Dyad P–C with slider C on a frame guide (slider-crank's coupler and slider).
+    """Dyad P–C with slider C on a guide (slider-crank's coupler and slider; a slotted link's pin).
 
     ``branch``: C lies ahead ("forward") of or behind ("backward") the foot of the
     perpendicular from P to the guide, along the guide's direction.
@@ -104,9 +123,15 @@ class RRP:
     c: str
     links: tuple[str, str]  # (coupler, slider)
     length: float  # l_PC (m)
-    guide: Guide
+    guide: Guide | LinkGuide
     branch: Literal["forward", "backward"] = "forward"
     kind: Literal["RRP"] = "RRP"
+
+    @property
+    def coincident(self) -> tuple[str, ...]:
+        """On a moving guide: the slider's point C<j> (C itself) and the guide link's C<link>."""
+        g = self.guide
+        return (self.c + self.links[1], self.c + g.link) if isinstance(g, LinkGuide) else ()
 
 
 @dataclass(frozen=True)
@@ -163,7 +188,33 @@ class RPP:
         return (self.p + self.links[0], self.p + self.links[1])
 
 
-Dyad = Union[RRR, RRP, RPR, RPP]
+@dataclass(frozen=True)
+class PRP:
+    """Blocks i and j pinned together at C, i sliding on ``guides[0]``, j on ``guides[1]``.
+
+    Each guide is on a known link: the frame (:class:`Guide`) or a moving link
+    (:class:`LinkGuide`); C is where the two guide lines meet.
+    """
+
+    c: str
+    links: tuple[str, str]  # (block on guides[0], block on guides[1])
+    guides: tuple[Guide | LinkGuide, Guide | LinkGuide]
+    kind: Literal["PRP"] = "PRP"
+
+    def on_guide(self, k: int) -> str | None:
+        """The point of guide k's link at C ("C1"); None for a frame guide (its point is fixed)."""
+        g = self.guides[k]
+        return self.c + g.link if isinstance(g, LinkGuide) else None
+
+    @property
+    def coincident(self) -> tuple[str, ...]:
+        """Every name this dyad defines besides C: the blocks' points C<i>, C<j> (both C) and
+        the guides' links' points at C."""
+        moving = tuple(n for n in (self.on_guide(0), self.on_guide(1)) if n is not None)
+        return (self.c + self.links[0], self.c + self.links[1]) + moving
+
+
+Dyad = Union[RRR, RRP, RPR, RPP, PRP]
 
 
 @dataclass(frozen=True)
@@ -221,12 +272,21 @@ class Linkage:
             elif isinstance(y, RRP):
                 add(y.links[0], y.p, y.c)
                 add(y.links[1], y.c)
+                if isinstance(y.guide, LinkGuide):
+                    add(y.guide.link, y.coincident[1])
             elif isinstance(y, RPR):
                 add(y.bar_link, y.bar_pivot, y.coincident[0])
                 add(y.block_link, y.block_pivot)
             elif isinstance(y, RPP):
                 add(y.links[0], y.p)
                 add(y.links[1], y.c)
+            elif isinstance(y, PRP):
+                add(y.links[0], y.c)
+                add(y.links[1], y.c)
+                for k, g in enumerate(y.guides):
+                    on = y.on_guide(k)
+                    if isinstance(g, LinkGuide) and on is not None:
+                        add(g.link, on)
         for pt in self.points:
             add(pt.link, pt.name)
         return out

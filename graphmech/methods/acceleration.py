@@ -16,7 +16,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from graphmech.geometry import kernels as K
-from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.mechanisms.linkage import PRP, Crank, Guide, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
 from graphmech.methods import elements as E
 from graphmech.methods import measure
 from graphmech.methods.linkage_construction import ACCELERATION_POLE
@@ -45,7 +45,7 @@ def add_pole(b: "LinkageConstruction") -> None:
 
 def add(b: "LinkageConstruction", part: Part) -> None:
     build: dict[type, Callable[..., None]] = {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp,
-                                              RPR: _rpr, RPP: _rpp, LinkPoint: _point}
+                                              RPR: _rpr, RPP: _rpp, PRP: _prp, LinkPoint: _point}
     build[type(part)](b, part)
 
 
@@ -138,18 +138,40 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
 
 
 def _rrp(b: "LinkageConstruction", y: RRP) -> None:
+    # a_C = a_P + a^n_CP + a^t_CP (⟂ PC) = a_C(guide) + a^k + a^r (∥ guide); on the frame only a^r, from p′
     P, C = y.p, y.c
-    gx, gy = y.guide.direction
     n = _normal(b, y.links[0], C, P)
     lt = _tangential_line(b, n, C, P)
-    lg = E.line(b, PANEL, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
-               f"through p′ draw ∥ the guide of {C}", say=("guide", C))
+    lg, kp = _along_guide(b, C, y.links[1], y.guide)
     img = E.image(b, PANEL, b.acc, C, label(C), K.intersect_lines, (lt, lg),
-                 f"{label(C)} = (⟂{P}{C} through {_lbl(b, n)}) ∩ (∥ guide through p′)", say=("meet",))
+                 f"{label(C)} = (⟂{P}{C} through {_lbl(b, n)}) ∩ (∥ guide through {_lbl(b, kp) if kp else 'p′'})",
+                  say=("meet",))
     b.g.extend_line(lt, img)
     b.g.extend_line(lg, img)
     E.vector(b, PANEL, POLE, img)
     _close(b, y.links[0], C, P, n, img)
+    _slides(b, C, y.links[1], y.guide, kp, img)
+
+
+def _coriolis(b: "LinkageConstruction", start: str, link: str, x: str, y: str) -> tuple[str, str]:
+    """Lay off a^k_XY = 2ω×v_XY from ``start`` (Y's image): the point k′; X slides on ``link``'s
+    guide, Y is the guide's point; v_XY is turned 90° in the sense of ω. Returns (k′'s label, step)."""
+    kk = 2.0 * b.scales["v"] / b.scales["a"]
+
+    def coriolis(ops: Ops, s: Components, vx: Components, vy: Components, om: Components) -> Components:
+        w = om[0] * om[1]
+        rx, ry = vx[0] - vy[0], vx[1] - vy[1]
+        return (s[0] - kk * w * ry, s[1] + kk * w * rx)
+
+    ktag = "k'"
+    while b.g.has(E.own(PANEL, ktag)):
+        ktag += "'"
+    k = b.g.add(E.own(PANEL, ktag), "point", coriolis, (start, b.vel[x], b.vel[y], b.omega[link]),
+                role="construction", panel=PANEL, label=ktag,
+                text=f"lay off {_lbl(b, start)}{ktag} = 2ω{link}·v_{x}{y}/μa (Coriolis)",
+                say=("coriolis", link, x, y))
+    E.vector(b, PANEL, start, k, "construction")
+    return ktag, k
 
 
 def _rpr(b: "LinkageConstruction", y: RPR) -> None:
@@ -158,23 +180,10 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     xbar, xblock = y.coincident
     bar = y.bar_link
     b.acc[xblock] = b.acc[X]
-    kk = 2.0 * b.scales["v"] / b.scales["a"]
     n = _normal(b, bar, xbar, Bp)
     lt = _tangential_line(b, n, xbar, Bp)
 
-    def coriolis(ops: Ops, start: Components, vbar: Components, vblock: Components, om: Components) -> Components:
-        w = om[0] * om[1]
-        rx, ry = vbar[0] - vblock[0], vbar[1] - vblock[1]
-        return (start[0] - kk * w * ry, start[1] + kk * w * rx)
-
-    ktag = "k'"
-    while b.g.has(E.own(PANEL, ktag)):
-        ktag += "'"
-    k = b.g.add(E.own(PANEL, ktag), "point", coriolis, (b.acc[X], b.vel[xbar], b.vel[xblock], b.omega[bar]),
-                role="construction", panel=PANEL, label=ktag,
-                text=f"lay off {_lbl(b, b.acc[X])}{ktag} = 2ω{bar}·v_{xbar}{xblock}/μa (Coriolis)",
-                say=("coriolis", bar, xbar, xblock))
-    E.vector(b, PANEL, b.acc[X], k, "construction")
+    ktag, k = _coriolis(b, b.acc[X], bar, xbar, xblock)
     lr = E.line(b, PANEL, f"∥{Bp}·{X}@{ktag}", K.line_parallel_to, (k, E.direction(b, Bp, X)), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})",
                   say=("par", Bp, X, f"a^r_{xbar}{xblock}"))
     img = E.image(b, PANEL, b.acc, xbar, label(xbar), K.intersect_lines, (lt, lr),
@@ -208,6 +217,59 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     b.acc[pslot] = img
     E.vector(b, PANEL, POLE, img)
     E.vector(b, PANEL, img, b.acc[P], "construction")
+
+
+def _along_guide(b: "LinkageConstruction", C: str, block: str, g: Guide | LinkGuide) -> tuple[str, str | None]:
+    """The line ∥ a guide that carries C's image, and the Coriolis point k′ it starts from (None on
+    the frame: the line runs through p′). On a moving link: c1′ by the link's acceleration image,
+    then a^k_C2C1 = 2ω×v_C2C1 laid off from it as its own side c1′k′, then the line ∥ the guide
+    through k′ (a^r_C2C1)."""
+    if isinstance(g, Guide):
+        gx, gy = g.direction
+        return E.line(b, PANEL, f"∥guide{C}@p'", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
+                      f"through p′ draw ∥ the guide of {C}", say=("guide", C)), None
+    U, V, on = g.through, g.towards, C + g.link
+    img = E.image(b, PANEL, b.acc, on, label(on), K.similar_point,
+                  (b.mech[U], b.mech[V], b.mech[on], b.acc[U], b.acc[V]),
+                  f"{label(on)}: △{_lbl(b, b.acc[U])}{_lbl(b, b.acc[V])}{label(on)} ∼ △{U}{V}{on} "
+                  "(acceleration image)", say=("image", U, V, on))
+    E.vector(b, PANEL, POLE, img)
+    ktag, kp = _coriolis(b, img, g.link, C + block, on)
+    measure.component(b, f"a_k_{C}{block}{on}", img, kp, ("coriolis", C + block, on, g.link))
+    line = E.line(b, PANEL, f"∥{U}·{V}@{ktag}", K.line_parallel_to, (kp, E.direction(b, U, V)),
+                  f"through {ktag} draw ∥ {U}{V} (a^r_{C}{block}{on})", say=("par", U, V, f"a^r_{C}{block}{on}"))
+    return line, kp
+
+
+def _slides(b: "LinkageConstruction", C: str, block: str, g: Guide | LinkGuide, kp: str | None, img: str) -> None:
+    """The block at C slides on g: on a moving link the side k′c′ is a^r_C2C1, and the block turns
+    (α) with that link."""
+    if not isinstance(g, LinkGuide) or kp is None:
+        return
+    on = C + g.link
+    b.acc[C + block] = img
+    E.vector(b, PANEL, kp, img, "construction")
+    measure.component(b, f"a_r_{C}{block}{on}", kp, img, ("rel_slide_a", C + block, on, g.link))
+    if g.link in b.alpha:
+        b.alpha[block] = b.alpha[g.link]
+        q = b.quantities[f"alpha_{g.link}"]
+        b.quantity(Quantity(f"alpha_{block}", q.unit, q.slot, ("alpha", block), q.panel, q.segment))
+
+
+def _prp(b: "LinkageConstruction", y: PRP) -> None:
+    # a_C = a_C1 + a^k_C2C1 (2ω1×v_C2C1) + a^r_C2C1 (∥ guide 1) = … the same along guide 2;
+    # a frame guide has no Coriolis term: the line ∥ it runs through p′.
+    C = y.c
+    found = [_along_guide(b, C, block, g) for block, g in zip(y.links, y.guides)]
+    lines = tuple(line for line, _ in found)
+    img = E.image(b, PANEL, b.acc, C, label(C), K.intersect_lines, lines,
+                  f"{label(C)} = the two lines ∥ the guides meet", say=("meet",))
+    for ln in lines:
+        b.g.extend_line(ln, img)
+    E.vector(b, PANEL, POLE, img)
+    for (_, kp), block, g in zip(found, y.links, y.guides):
+        b.acc[C + block] = img
+        _slides(b, C, block, g, kp, img)
 
 
 def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:

@@ -28,7 +28,7 @@ from dataclasses import dataclass, field
 from typing import Callable, cast
 from graphmech.errors import NotApplicable
 from graphmech.geometry.kernels import ScalarOps, intersect_circle_line, intersect_circles
-from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Linkage
+from graphmech.mechanisms.linkage import RPR, RRP, RRR, Crank, Guide, Linkage
 
 __all__ = ["Loop", "DrawnCharacteristics", "basic_loop", "draw_characteristics", "grashof_class",
            "grashof_ranges", "LOOP_KINDS"]
@@ -74,7 +74,7 @@ def basic_loop(linkage: Linkage) -> Loop:
     if isinstance(y, RRR) and y.q == d.tip and y.p in linkage.frame_points:
         names.update(C=y.c, D=y.p)
         return Loop("fourbar", names, (d.link, y.links[1], y.links[0]), d.length, y.lengths[1], y.lengths[0], sense)
-    if isinstance(y, RRP) and y.p == d.tip:
+    if isinstance(y, RRP) and isinstance(y.guide, Guide) and y.p == d.tip:
         names.update(C=y.c)
         return Loop("slider_crank", names, (d.link, *y.links), d.length, y.length, 0.0, sense)
     if isinstance(y, RPR) and y.bar == "second" and y.p == d.tip and y.q in linkage.frame_points:
@@ -284,7 +284,7 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
     elif loop.kind == "slider_crank":
         kind = "crank"
         y = linkage.dyads[0]
-        assert isinstance(y, RRP)
+        assert isinstance(y, RRP) and isinstance(y.guide, Guide)
         b = loop.b / mu_l
         G = mm(y.guide.through)
         g = y.guide.direction

@@ -1,7 +1,7 @@
 """The kinematic diagram (机构运动简图) at μl: where every point of the linkage is.
 
 Each dyad's middle joint is found the draftsman's way: as the intersection of two loci
-(two circles for RRR, circle and guide for RRP, two lines for RPP).
+(two circles for RRR, circle and guide for RRP, two lines for RPP and PRP).
 """
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from graphmech.geometry import kernels as K
-from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.mechanisms.linkage import PRP, Crank, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
 
 if TYPE_CHECKING:
     from graphmech.geometry.kernels import Components, Ops
@@ -32,7 +32,7 @@ def add_frame(b: "LinkageConstruction") -> None:
 
 def add(b: "LinkageConstruction", part: Part) -> None:
     build: dict[type, Callable[..., None]] = {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp,
-                                              RPR: _rpr, RPP: _rpp, LinkPoint: _point}
+                                              RPR: _rpr, RPP: _rpp, PRP: _prp, LinkPoint: _point}
     build[type(part)](b, part)
 
 
@@ -93,9 +93,13 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     mu = b.mu_l
     r = y.length / mu
     side = 1.0 if y.branch == "forward" else -1.0
-    line = _guide_line(b, y.guide)
     P, C = y.p, y.c
-    b.slider_dir[C] = y.guide.direction
+    g = y.guide
+    if isinstance(g, LinkGuide):  # the slotted link's line through two of its points, where it is now
+        _rrp_on_link(b, y, g, r, side)
+        return
+    line = _guide_line(b, g)
+    b.slider_dir[C] = g.direction
     b.translating.add(y.links[1])
 
     def explain(e: Any) -> str:
@@ -109,6 +113,25 @@ def _rrp(b: "LinkageConstruction", y: RRP) -> None:
     b.mech[C] = b.g.add(C, "point", joint, (b.mech[P],), role="given",
                         text=f"{C} = circle({P}, l{y.links[0]}) ∩ guide, {y.branch}", panel=PANEL,
                         label=C, say=("circle_guide", C, P))
+
+
+def _rrp_on_link(b: "LinkageConstruction", y: RRP, g: LinkGuide, r: float, side: float) -> None:
+    P, C = y.p, y.c
+
+    def explain(e: Any) -> str:
+        if hasattr(e, "shape"):
+            return f"{P} is farther than l{y.links[0]} from the line {g.through}{g.towards}"
+        return f"{P} is {e * b.mu_l:.4g} m from the line {g.through}{g.towards} > l{y.links[0]} = {y.length:.4g} m"
+
+    def joint(ops: Ops, p: Components, u: Components, v: Components) -> Components:
+        ux, uy, _ = K.unit(ops, u, v)
+        return K.intersect_circle_line(ops, p, r, K.line_fixed(ops, u, ux, uy), side, explain)
+
+    b.mech[C] = b.g.add(C, "point", joint, (b.mech[P], b.mech[g.through], b.mech[g.towards]), role="given",
+                        text=f"{C} = circle({P}, l{y.links[0]}) ∩ line {g.through}{g.towards}, {y.branch}",
+                        panel=PANEL, label=C, say=("circle_guide", C, P))
+    for name in y.coincident:
+        b.mech[name] = b.mech[C]
 
 
 def _rpr(b: "LinkageConstruction", y: RPR) -> None:
@@ -134,6 +157,39 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
                         say=("slot_guide", C, P))
     b.mech[y.coincident[0]] = b.mech[P]
     b.mech[y.coincident[1]] = b.mech[P]
+
+
+def _prp(b: "LinkageConstruction", y: PRP) -> None:
+    # C where the two guides' lines meet: a frame guide is fixed, a link's runs through two of its points
+    C = y.c
+    fixed: list[Components | None] = []
+    inputs: list[str] = []
+    for k, g in enumerate(y.guides):
+        if isinstance(g, LinkGuide):
+            fixed.append(None)
+            inputs += [b.mech[g.through], b.mech[g.towards]]
+        else:
+            fixed.append(_guide_line(b, g))
+            b.slider_dir[C] = g.direction  # v_C is read along the frame guide, signed
+            b.translating.add(y.links[k])
+
+    def joint(ops: Ops, *pts: Components) -> Components:
+        given = iter(pts)
+        lines = []
+        for line in fixed:
+            if line is None:
+                u, v = next(given), next(given)
+                ux, uy, _ = K.unit(ops, u, v)
+                line = K.line_fixed(ops, u, ux, uy)
+            lines.append(line)
+        return K.intersect_lines(ops, lines[0], lines[1])
+
+    words = [f"{g.through}{g.towards}" if isinstance(g, LinkGuide) else "the guide" for g in y.guides]
+    b.mech[C] = b.g.add(C, "point", joint, tuple(inputs), role="given",
+                        text=f"{C} = {words[0]} ∩ {words[1]}", panel=PANEL, label=C,
+                        say=("guides_meet", C))
+    for name in y.coincident:
+        b.mech[name] = b.mech[C]
 
 
 def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:

@@ -29,7 +29,7 @@ import numpy as np
 from graphmech.construction.graph import BatchSolution
 from graphmech.errors import DegenerateConstruction
 from graphmech.geometry.kernels import Components
-from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, SliderInput
+from graphmech.mechanisms.linkage import RPP, RRP, Crank, Guide, Linkage, SliderInput
 from graphmech.methods.chords import frozen_array
 from graphmech.methods.graphical_differentiation import Differentiation, differentiate_cycle
 from graphmech.methods.polygons import LinkageConstruction, build_polygons
@@ -71,7 +71,7 @@ def sliders(linkage: Linkage) -> dict[str, tuple[float, float]]:
     if isinstance(d, SliderInput):
         out[d.point] = d.guide.direction
     for y in linkage.dyads:
-        if isinstance(y, (RRP, RPP)):
+        if isinstance(y, (RRP, RPP)) and isinstance(y.guide, Guide):  # a slider on a frame guide
             out[y.c] = y.guide.direction
     return out
 
@@ -81,7 +81,7 @@ def diagram_subjects(linkage: Linkage) -> dict[str, str]:
     (``"link"``: their angle), and every other moving point (``"path"``: the distance travelled along
     its path, v its speed, a its tangential acceleration)."""
     out = {name: "point" for name in sliders(linkage)}
-    translating = {y.links[1] for y in linkage.dyads if isinstance(y, (RRP, RPP))}
+    translating = {y.links[1] for y in linkage.dyads if isinstance(y, (RRP, RPP)) and isinstance(y.guide, Guide)}
     for link, pts in linkage.links().items():
         if link not in translating and len(pts) >= 2:
             out[link] = "link"

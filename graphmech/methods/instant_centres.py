@@ -32,7 +32,15 @@ from typing import Any, Literal, Mapping
 import numpy as np
 
 from graphmech.errors import NotApplicable, OutOfDomain
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, Linkage, SliderInput
+from graphmech.mechanisms.linkage import (
+    PRP,
+    RPP,
+    RPR,
+    RRP,
+    Linkage,
+    LinkGuide,
+    SliderInput,
+)
 from graphmech.tolerances import COND_WARN, PARALLEL_SIN
 
 #: Two points or lines closer than this, relative to the mechanism's drawn size, are one.
@@ -166,7 +174,8 @@ class Direct:
     at: str | None = None  # the joint's point name
     normal: float | None = None  # for a sliding pair: the direction of the centre, rad (⟂ guide)
     on: str | None = None  # a point of the sliding pair, to draw the arrow from
-    across: tuple[str, str] | None = None  # RPR: the bar's pivot and the block's, whose line is the guide
+    across: tuple[str, str] | None = None  # RPR: the bar's pivot and the block's, whose line is the guide (a
+    # guide on a moving link, PRP: its two points)
 
 
 def direct_centres(linkage: Linkage) -> list[Direct]:
@@ -202,12 +211,22 @@ def direct_centres(linkage: Linkage) -> list[Direct]:
         slide(frame, d.link, d.guide.angle, d.point)
     for y in linkage.dyads:
         if isinstance(y, RRP):
-            slide(frame, y.links[1], y.guide.angle, y.c)
+            g = y.guide
+            if isinstance(g, LinkGuide):  # a slotted link drives the pin C
+                slide(g.link, y.links[1], None, y.c, (g.through, g.towards))
+            else:
+                slide(frame, y.links[1], g.angle, y.c)
         elif isinstance(y, RPR):
             slide(y.links[0], y.links[1], None, y.block_pivot, (y.bar_pivot, y.block_pivot))
         elif isinstance(y, RPP):
             slide(y.links[0], y.links[1], y.slot_angle, y.p)
             slide(frame, y.links[1], y.guide.angle, y.c)
+        elif isinstance(y, PRP):  # each block slides on its guide's link; the pin C is P_ij (a joint)
+            for block, g in zip(y.links, y.guides):
+                if isinstance(g, LinkGuide):
+                    slide(g.link, block, None, y.c, (g.through, g.towards))
+                else:
+                    slide(frame, block, g.angle, y.c)
     return out
 
 
@@ -316,7 +335,7 @@ def instant_centres(linkage: Linkage, pos: Mapping[str, XY], driver_omega: float
         else:
             if dc.normal is not None:
                 ang = dc.normal
-            else:  # RPR: the bar's line runs through both pivots
+            else:  # RPR: the bar's line runs through both pivots (PRP: the guide's two points)
                 (p, q) = dc.across or ("", "")
                 ang = math.atan2(pos[q][1] - pos[p][1], pos[q][0] - pos[p][0]) + math.pi / 2
             c = _as_centre(key, np.array([math.cos(ang), math.sin(ang), 0.0]), "direct", ("guide",), 1.0)

@@ -38,9 +38,9 @@ from typing import Any, cast
 
 import numpy as np
 
-from graphmech.errors import DegenerateConstruction
+from graphmech.errors import DegenerateConstruction, NotApplicable
 from graphmech.mechanisms.forces import ForceModel, LinkMass
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, SliderInput
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, LinkGuide, SliderInput
 from graphmech.tolerances import PARALLEL_SIN, SHALLOW_DEG
 
 #: |sin| of the angle between the two unknown directions of a polygon below which a hand
@@ -497,6 +497,10 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
             _rpp_group(y, kin, loads, owner, friction, found, reactions, joints, guides, groups, closing, fr,
                        frame, keep_groups)
             continue
+        if isinstance(y, PRP) or (isinstance(y, RRP) and isinstance(y.guide, LinkGuide)):
+            # refused by the forces scene; a caller of the library hears it here
+            raise NotApplicable("the force polygons take RRR, RRP (on a frame guide), RPR and RPP groups, not yet "
+                                "a PRP group or a guide on a moving link")
         i, k = y.links
         jp = Joint(y.p, owner[y.p], i)
         jc = Joint(y.c, i, k)
@@ -525,6 +529,7 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
             close_name = f"R^n_{cast(Joint, jq).a}{k}"
         else:
             # The guide's reaction: ⟂ guide, tilted by φ against the sliding velocity.
+            assert isinstance(y.guide, Guide)  # a guide on a moving link is refused above
             t = complex(math.cos(y.guide.angle), math.sin(y.guide.angle))
             nrm = 1j * t
             f = fr.f.get(k, 0.0) if fr.previous is not None else 0.0
@@ -760,7 +765,7 @@ def kinetostatics(linkage: Linkage, model: ForceModel, kin: PolygonKinematics, *
     Parameters
     ----------
     linkage : Linkage
-        Driven by a crank or a slider; any dyads (RRR, RRP, RPR, RPP).
+        Driven by a crank or a slider; RRR, RRP (on a frame guide), RPR and RPP dyads.
     model : ForceModel
         Masses, loads, friction.
     kin : PolygonKinematics

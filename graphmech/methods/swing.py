@@ -35,7 +35,7 @@ from graphmech.geometry.kernels import (
     intersect_circles,
     intersect_lines,
 )
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage, SliderInput
+from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage, SliderInput
 
 __all__ = ["driver_limits", "output_swing", "swing_positions", "toggle_dyad"]
 
@@ -65,10 +65,10 @@ def toggle_dyad(linkage: Linkage) -> RRR | RRP:
             if (y.q if y.p == tip else y.p) not in linkage.frame_points:
                 break
             return y
-        if isinstance(y, RRP) and y.p == tip:
+        if isinstance(y, RRP) and y.p == tip and isinstance(y.guide, Guide):
             return y
     raise NotApplicable("the limits are where the dyad on the driver's point toggles: it needs an RRR pivoted on the "
-                        "frame or an RRP there (give the swing's ends instead)")
+                        "frame or an RRP on a frame guide there (give the swing's ends instead)")
 
 
 def _cuts(linkage: Linkage) -> list[tuple[float, float]]:
@@ -103,6 +103,7 @@ def _cuts(linkage: Linkage) -> list[tuple[float, float]]:
                     if abs(e) <= r:
                         out.append(intersect_circle_line(ops, D, r, path, side, never))
         return out
+    assert isinstance(y.guide, Guide)  # toggle_dyad keeps frame guides only
     (tx, ty), (ux, uy) = y.guide.through, y.guide.direction
     for e in (y.length, -y.length):  # the guide moved sideways by ±BC: where B must be at the toggle
         line = (tx - e * uy, ty + e * ux, ux, uy)
@@ -161,6 +162,7 @@ def _assembles_at(linkage: Linkage, q0: float) -> None:
         D = linkage.frame_points[y.q if y.p == (d.tip if isinstance(d, Crank) else d.point) else y.p]
         ok = abs(y.lengths[0] - y.lengths[1]) <= math.dist(B, D) <= sum(y.lengths)
     else:
+        assert isinstance(y.guide, Guide)  # toggle_dyad keeps frame guides only
         (tx, ty), (ux, uy) = y.guide.through, y.guide.direction
         ok = abs((B[0] - tx) * uy - (B[1] - ty) * ux) <= y.length
     if not ok:

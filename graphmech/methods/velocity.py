@@ -14,7 +14,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from graphmech.geometry import kernels as K
-from graphmech.mechanisms.linkage import Crank, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.mechanisms.linkage import PRP, Crank, Guide, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
 from graphmech.methods import elements as E
 from graphmech.methods import measure
 from graphmech.methods.linkage_construction import VELOCITY_POLE
@@ -42,7 +42,7 @@ def add_pole(b: "LinkageConstruction") -> None:
 
 def add(b: "LinkageConstruction", part: Part) -> None:
     build: dict[type, Callable[..., None]] = {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp,
-                                              RPR: _rpr, RPP: _rpp, LinkPoint: _point}
+                                              RPR: _rpr, RPP: _rpp, PRP: _prp, LinkPoint: _point}
     build[type(part)](b, part)
 
 
@@ -90,21 +90,22 @@ def _rrr(b: "LinkageConstruction", y: RRR) -> None:
 
 
 def _rrp(b: "LinkageConstruction", y: RRP) -> None:
+    # v_C = v_P + v_CP (⟂ PC) = v_C(guide) + v_rel (∥ guide): the guide's point at C has the image p
+    # on the frame, c2 on a moving link (its velocity image)
     P, C = y.p, y.c
-    gx, gy = y.guide.direction
     lp, lc = _img_label(b, P), label(C)
     li = E.line(b, PANEL, f"⟂{P}·{C}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, C)), f"through {lp} draw ⟂ {P}{C}",
                   say=("perp", P, C))
-    lg = E.line(b, PANEL, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
-               f"through p draw ∥ the guide of {C}", say=("guide", C))
+    lg = _along_guide(b, C, y.guide)
+    through = _img_label(b, C + y.guide.link) if isinstance(y.guide, LinkGuide) else "p"
     img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, (li, lg),
-                 f"{lc} = (⟂{P}{C} through {lp}) ∩ (∥ guide through p)", say=("meet",))
+                 f"{lc} = (⟂{P}{C} through {lp}) ∩ (∥ guide through {through})", say=("meet",))
     b.g.extend_line(li, img)
     b.g.extend_line(lg, img)
     E.vector(b, PANEL, POLE, img)
     E.vector(b, PANEL, b.vel[P], img)
     measure.omega(b, y.links[0], P, C)
-    measure.zero_rate(b, y.links[1])
+    _slides(b, C, y.links[1], y.guide, img)
 
 
 def _rpr(b: "LinkageConstruction", y: RPR) -> None:
@@ -151,6 +152,52 @@ def _rpp(b: "LinkageConstruction", y: RPP) -> None:
     measure.zero_rate(b, y.links[0])
     measure.zero_rate(b, y.links[1])
     b.coincident.append((pblock, pslot))
+
+
+def _along_guide(b: "LinkageConstruction", C: str, g: Guide | LinkGuide) -> str:
+    """The line ∥ a guide that carries C's image: through p for a frame guide; for a guide on a
+    moving link, through the image c1 of that link's point C1 at C (by the link's velocity image),
+    since v_C = v_C1 + v_C2C1 (∥ the guide)."""
+    if isinstance(g, Guide):
+        gx, gy = g.direction
+        return E.line(b, PANEL, f"∥guide{C}@p", lambda ops, t: K.line_fixed(ops, t, gx, gy), (POLE,),
+                      f"through p draw ∥ the guide of {C}", say=("guide", C))
+    U, V, on = g.through, g.towards, C + g.link
+    img = E.image(b, PANEL, b.vel, on, label(on), K.similar_point,
+                  (b.mech[U], b.mech[V], b.mech[on], b.vel[U], b.vel[V]),
+                  f"{label(on)}: △{_img_label(b, U)}{_img_label(b, V)}{label(on)} ∼ △{U}{V}{on} (velocity image)",
+                  say=("image", U, V, on))
+    E.vector(b, PANEL, POLE, img)
+    return E.line(b, PANEL, f"∥{U}·{V}@{label(on)}", K.line_parallel_to, (img, E.direction(b, U, V)),
+                  f"through {label(on)} draw ∥ {U}{V}", say=("par", U, V))
+
+
+def _slides(b: "LinkageConstruction", C: str, block: str, g: Guide | LinkGuide, img: str) -> None:
+    """The block at C slides on g: on a moving link it turns with that link, and c1→c is the sliding
+    velocity v_C2C1; on the frame it translates."""
+    if isinstance(g, LinkGuide):
+        on = C + g.link
+        b.vel[C + block] = img
+        E.vector(b, PANEL, b.vel[on], img)  # v_C2C1, the sliding velocity along the guide
+        measure.same_rate(b, block, g.link)
+        b.coincident.append((C + block, on))
+    else:
+        measure.zero_rate(b, block)
+
+
+def _prp(b: "LinkageConstruction", y: PRP) -> None:
+    # v_C = v_C1 + v_C2C1 (∥ guide 1) = v_C' + v_C3C' (∥ guide 2): C1 the guide link's point at C,
+    # its image by the velocity image of that link; a frame guide's point is the pole.
+    C = y.c
+    lines = [_along_guide(b, C, g) for g in y.guides]
+    img = E.image(b, PANEL, b.vel, C, label(C), K.intersect_lines, tuple(lines),
+                  f"{label(C)} = the two lines ∥ the guides meet", say=("meet",))
+    for ln in lines:
+        b.g.extend_line(ln, img)
+    E.vector(b, PANEL, POLE, img)
+    for block, g in zip(y.links, y.guides):
+        b.vel[C + block] = img
+        _slides(b, C, block, g, img)
 
 
 def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:

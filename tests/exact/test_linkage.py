@@ -10,6 +10,7 @@ import pytest
 from graphmech.errors import SceneError
 from graphmech.exact import Kinematics, solve
 from graphmech.mechanisms.linkage import (
+    PRP,
     RPP,
     RPR,
     RRP,
@@ -17,6 +18,7 @@ from graphmech.mechanisms.linkage import (
     Crank,
     Guide,
     Linkage,
+    LinkGuide,
     LinkPoint,
     SliderInput,
 )
@@ -63,6 +65,25 @@ RPP_LINKAGE = Linkage(
     {"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.04, 100.0, 50.0),
     (RPP("B", "C", ("2", "3"), math.radians(120.0), Guide((0.0, -0.02), math.radians(5.0))),),
     (LinkPoint("M", "3", ("C",), 0.03, 0.01),),
+)
+
+# The tangent mechanism (PRP): bar 1 turns about A, block 2 slides on it, pinned at C to the
+# slider 3 on the vertical frame guide x = 0.1 m: s = h·tan φ.
+TANGENT = Linkage(
+    {"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.15, 10.0, 3.0),
+    (PRP("C", ("2", "3"), (LinkGuide("1", "A", "B"), Guide((0.1, 0.0), math.pi / 2))),),
+    (LinkPoint("K", "3", ("C",), 0.0, -0.05),),
+)
+# A PRP on two moving guides: block 5 on the crank's line AB, block 6 on the rocker's line DC.
+PRP_MOVING = Linkage(
+    FOUR_FRAME, FOUR_DRIVER, (FOUR_DYAD, PRP("E", ("5", "6"), (LinkGuide("1", "A", "B"), LinkGuide("3", "D", "C")))),
+)
+
+# A slotted link drives a pin (RRP on a moving guide): the crank 1 is a slotted bar along A→B, the
+# crank 2 about D (|AD| < l_DC: it turns all round) carries the pin C, which rides in block 3 in the slot.
+SLOTTED = Linkage(
+    {"A": (0.0, 0.0), "D": (0.02, 0.01)}, Crank("1", "A", "B", 0.15, 10.0, 20.0),
+    (RRP("D", "C", ("2", "3"), 0.05, LinkGuide("1", "A", "B"), "forward"),),
 )
 
 
@@ -192,6 +213,16 @@ def material(linkage: Linkage, kin: Kinematics, q0: np.ndarray) -> dict[str, np.
             out[on_bar] = pivot + r0[None, :, None] * np.stack((np.cos(th), np.sin(th)), -1)
         elif isinstance(y, RPP):  # the slotted link translates with C
             out[y.coincident[1]] = kin.point[y.p][None] + out[y.c] - kin.point[y.c][None]
+        elif isinstance(y, (PRP, RRP)):  # a guide link's material point at C turns with that link
+            for m, g in enumerate(y.guides if isinstance(y, PRP) else (y.guide,)):
+                if not isinstance(g, LinkGuide):
+                    continue
+                on = y.c + g.link
+                d0 = kin.point[y.c] - kin.point[g.through]
+                turn = out["__angles"][g.link] - out["__angles"][g.link][2]
+                c, s = np.cos(turn)[..., None], np.sin(turn)[..., None]
+                out[on] = out[g.through] + np.concatenate((c * d0[None, :, :1] - s * d0[None, :, 1:],
+                                                           s * d0[None, :, :1] + c * d0[None, :, 1:]), -1)
     return out
 
 
@@ -216,6 +247,10 @@ FD_CASES = {
     "slider-driven slider-crank": (SLIDER_DRIVEN, np.linspace(0.22, 0.38, 33)),
     "guide bar (bar second)": (GUIDE_BAR, np.radians(np.arange(0.0, 360.0, 5.0))),
     "RPP": (RPP_LINKAGE, np.radians(np.arange(0.0, 360.0, 5.0))),
+    "PRP tangent": (TANGENT, np.radians([a for a in np.arange(0.0, 360.0, 5.0) if a % 180.0 != 90.0])),
+    # away from the guides' parallel positions (near 97° and 310° E runs off to metres)
+    "RRP on a slotted crank": (SLOTTED, np.radians(np.arange(0.0, 360.0, 5.0))),
+    "PRP on two moving guides": (PRP_MOVING, np.radians(np.r_[0.0:80.0:5.0, 115.0:300.0:5.0, 320.0:360.0:5.0])),
 }
 
 
@@ -241,6 +276,60 @@ def test_rates_match_finite_differences(case: str) -> None:
         np.testing.assert_allclose(kin.omega[lid], d1(th), rtol=0, atol=1e-6 * scale)
         scale = max(float(np.max(np.abs(kin.alpha[lid]))), 1.0)
         np.testing.assert_allclose(kin.alpha[lid], d2(th), rtol=0, atol=1e-6 * scale)
+
+
+def test_tangent_mechanism_in_closed_form() -> None:
+    # s = h·tan φ; v = h·ω/cos²φ; a = h·(ε + 2ω²·tan φ)/cos²φ, h = 0.1 m (seed 001 1-14)
+    phi = np.radians([-60.0, 10.0, 30.0, 75.0, 200.0])
+    kin = solve(TANGENT, phi)
+    h, w, e = 0.1, 10.0, 3.0
+    np.testing.assert_allclose(kin.point["C"][:, 1], h * np.tan(phi), rtol=1e-12)
+    np.testing.assert_allclose(kin.vel["C"][:, 1], h * w / np.cos(phi) ** 2, rtol=1e-12)
+    np.testing.assert_allclose(kin.acc["C"][:, 1], h * (e + 2 * w * w * np.tan(phi)) / np.cos(phi) ** 2, rtol=1e-12)
+    np.testing.assert_allclose(kin.vel["C"][:, 0], 0.0, atol=1e-14)
+    # the block turns with the bar, the slider translates; C1 is the bar's point at C
+    np.testing.assert_array_equal(kin.omega["2"], 10.0)
+    np.testing.assert_array_equal(kin.omega["3"], 0.0)
+    r = np.hypot(*kin.point["C"].T)
+    np.testing.assert_allclose(np.hypot(*kin.vel["C1"].T), w * r, rtol=1e-12)
+    # the sliding velocity runs along the bar: v_C2C1 × e_bar = 0
+    rel = kin.vel["C2"] - kin.vel["C1"]
+    np.testing.assert_allclose(rel[:, 0] * np.sin(phi) - rel[:, 1] * np.cos(phi), 0.0, atol=1e-13)
+
+
+def test_prp_with_parallel_guides_is_not_assembled() -> None:
+    kin = solve(TANGENT, np.radians([90.0, 45.0, 270.0]))
+    assert kin.valid.tolist() == [False, True, False]
+    assert "parallel" in kin.reason[0] and kin.reason[1] == ""
+    assert float(kin.point["C"][0, 1]) == 0.0  # not assembled: 0, never inf
+
+
+def test_prp_structure_errors() -> None:
+    both_fixed = dataclasses.replace(TANGENT, dyads=(PRP("C", ("2", "3"), (Guide((0.0, 0.0), 0.0), Guide((0.1, 0.0), 1.0))),),
+                                     points=())
+    with pytest.raises(SceneError, match="both guides on the frame"):
+        solve(both_fixed, np.array([0.3]))
+    wrong_link = dataclasses.replace(TANGENT, dyads=(PRP("C", ("2", "3"), (LinkGuide("7", "A", "B"), Guide((0.1, 0.0), 1.0))),),
+                                     points=())
+    with pytest.raises(SceneError, match="not a moving link"):
+        solve(wrong_link, np.array([0.3]))
+
+
+def test_slotted_link_drives_the_pin_with_the_coriolis_term() -> None:
+    # the pin C on the rocker DC (l = 0.05 m) rides in the slot A→B of the crank: C stays on the
+    # line AB, |DC| = l, and a_C = a_C1 + 2ω1×v_C3C1 + a_r with a_r ∥ AB
+    phi = np.radians(np.arange(0.0, 360.0, 15.0))
+    kin = solve(SLOTTED, phi)
+    assert kin.valid.all()
+    c = kin.point["C"]
+    np.testing.assert_allclose(c[:, 0] * np.sin(phi) - c[:, 1] * np.cos(phi), 0.0, atol=1e-15)
+    np.testing.assert_allclose(np.hypot(*(c - kin.point["D"]).T), 0.05, rtol=1e-13)
+    np.testing.assert_array_equal(kin.omega["3"], 10.0)  # the block turns with the slotted crank
+    v_rel = kin.vel["C3"] - kin.vel["C1"]
+    k = 2.0 * 10.0 * np.stack((-v_rel[:, 1], v_rel[:, 0]), -1)
+    a_r = kin.acc["C3"] - kin.acc["C1"] - k
+    np.testing.assert_allclose(a_r[:, 0] * np.sin(phi) - a_r[:, 1] * np.cos(phi), 0.0, atol=1e-12)
+    np.testing.assert_allclose(v_rel[:, 0] * np.sin(phi) - v_rel[:, 1] * np.cos(phi), 0.0, atol=1e-14)
 
 
 def test_link_angles_follow_the_links_first_two_points() -> None:

@@ -75,7 +75,7 @@ def test_unknown_key_suggests_the_nearest() -> None:
 
 def test_unknown_choice_suggests_the_nearest() -> None:
     assert message_of(GOOD.replace('type = "RRR"', 'type = "rrr"')) == (
-        "scene.toml: dyad[0].type: unknown value 'rrr': use RRR, RRP, RPR or RPP "
+        "scene.toml: dyad[0].type: unknown value 'rrr': use RRR, RRP, RPR, RPP or PRP "
         "(did you mean RRR?)"
     )
 

@@ -42,7 +42,7 @@ from graphmech.errors import SceneError, UnknownName
 from graphmech.problems.cycle.scene import MAX_POLE_MM, MIN_POLE_MM
 from graphmech.exact import characteristics as exact_ch
 from graphmech.exact.linkage import solve as solve_exact
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage, SliderInput
+from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage, SliderInput
 from graphmech.methods.characteristics import DrawnCharacteristics, Loop, draw_characteristics, grashof_ranges
 from graphmech.methods.full_cycle import (CycleDiagram, FullCycle, driver_text, evaluate_cycle, finer_positions,
                                          reversed_driver, sliders)
@@ -372,7 +372,8 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
             branch = y.branch if getattr(y, "q", None) == n["D"] else ("right" if y.branch == "left" else "left")
             return exact_ch.fourbar(A, D, a, b, c, branch, loop.sense)
         if loop.kind == "slider_crank":
-            s = cast(RRP, linkage.dyads[0])  # a slider-crank's dyad
+            s = cast(RRP, linkage.dyads[0])  # a slider-crank's dyad, on a frame guide
+            assert isinstance(s.guide, Guide)
             return exact_ch.slider_crank(A, complex(*s.guide.through), s.guide.angle, a, b, s.branch, loop.sense)
         return exact_ch.guide_bar(A, complex(*linkage.frame_points[n["C"]]), a, loop.sense)
 

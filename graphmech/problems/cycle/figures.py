@@ -104,11 +104,12 @@ def _which(n: int) -> str:
 
 def _guide_spans(cyc: Any) -> dict[int, tuple[float, float]]:
     """The stretch of each guide its slider covers over the cycle (mm along the guide)."""
-    from graphmech.mechanisms.linkage import RPP, RRP, SliderInput
+    from graphmech.mechanisms.linkage import RPP, RRP, Guide, SliderInput
 
     linkage, b = cyc.build.linkage, cyc.build
     guides = [(-1, linkage.driver.guide, linkage.driver.point)] if isinstance(linkage.driver, SliderInput) else []
-    guides += [(k, y.guide, y.c) for k, y in enumerate(linkage.dyads) if isinstance(y, (RRP, RPP))]
+    guides += [(k, y.guide, y.c) for k, y in enumerate(linkage.dyads)
+               if isinstance(y, (RRP, RPP)) and isinstance(y.guide, Guide)]
     spans = {}
     for k, g, point in guides:
         if point in cyc.mech:

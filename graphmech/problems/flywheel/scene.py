@@ -22,7 +22,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
-from graphmech.mechanisms.linkage import RPP, RRP, Crank, Linkage, Positions
+from graphmech.mechanisms.linkage import RPP, RRP, Crank, Guide, Linkage, Positions
 from graphmech.mechanisms.machine import (
     TWO_PI,
     CrankMoment,
@@ -609,7 +609,7 @@ def _read_slider_load(r: Reader, machine: _Machine) -> SliderLoad | None:
     linkage = machine.linkage
     if point is None or during is None or sense is None or linkage is None:
         return None
-    sliders = {d.c: d.guide.angle for d in linkage.dyads if isinstance(d, (RRP, RPP))}
+    sliders = {d.c: d.guide.angle for d in linkage.dyads if isinstance(d, (RRP, RPP)) and isinstance(d.guide, Guide)}
     if point not in sliders:
         which = f"this linkage's: {', '.join(sliders)}" if sliders else "this linkage has none"
         r.problem(

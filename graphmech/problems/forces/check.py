@@ -27,6 +27,7 @@ from graphmech.problems.reader import page_size, positions_of
 from graphmech.problems.linkage.sizes import position_text
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.kinetostatics import ExactForces, solve_forces
+from graphmech.mechanisms.linkage import Guide
 from graphmech.methods.kinetostatics import (
     SHALLOW_SIN,
     GuideReaction,
@@ -409,9 +410,9 @@ def force_value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, flo
             return None, 1.0, float(g.moment[i]), float(ex.guide_moments[slider][i]), "N·m"
         # e: where the guide reaction's line of action crosses the guide, from the slider's point
         # along the guide (M = e·(t × R)), drawn on the free body at μl
-        angle = next(y.guide.angle for y in (fa.build.linkage.driver, *fa.build.linkage.dyads)
-                     if hasattr(y, "guide") and (getattr(y, "link", None) == slider
-                                                 or getattr(y, "links", (None, None))[1] == slider))
+        angle = next(guide.angle for y in (fa.build.linkage.driver, *fa.build.linkage.dyads)
+                     if isinstance(guide := getattr(y, "guide", None), Guide)
+                     and (getattr(y, "link", None) == slider or getattr(y, "links", (None, None))[1] == slider))
         t = complex(math.cos(angle), math.sin(angle))
         tr = (np.conj(t) * complex(g.force[i])).imag
         e_g = float(g.moment[i]) / tr if tr != 0 else 0.0

@@ -35,7 +35,7 @@ from graphmech.drawing.lettering import LETTER, number, point_name, scale_text
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Role, Segment,
                                          Sheet, Slider, clip_interval)
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Linkage
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Guide, Linkage
 from graphmech.methods.kinetostatics import (GroupPolygon, GuideReaction, KinetostaticSolution, Lever,
                                             PolygonKinematics)
 from graphmech.problems.linkage.figures import mechanism_items
@@ -300,7 +300,7 @@ def free_body_items(build: LinkageConstruction, kin: PolygonKinematics, group: G
                 leaving.setdefault(b, []).append(_unit(za - zb))
         drawn.update(names)
     for y in linkage.dyads:  # the blocks and slots of the group's sliding pairs
-        if isinstance(y, RRP) and y.links[1] in group.links:
+        if isinstance(y, RRP) and isinstance(y.guide, Guide) and y.links[1] in group.links:
             items.append(Slider(to_mm(complex(kin.point[y.c][i])), y.guide.angle))
         elif isinstance(y, RPR) and y.block_link in group.links:
             x, p = complex(kin.point[y.block_pivot][i]), complex(kin.point[y.bar_pivot][i])

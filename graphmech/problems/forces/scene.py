@@ -25,7 +25,7 @@ from graphmech.mechanisms.forces import (
     RevoluteFriction,
     SlidingFriction,
 )
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Linkage, LinkGuide
 from graphmech.scales import scale_out_of_range
 from graphmech.problems.linkage.scene import SHOW_CHOICES, read_linkage
 from graphmech.problems.reader import (
@@ -351,6 +351,13 @@ def parse_forces_scene(data: Mapping[str, Any], source: str, top: Reader, order:
                     "(find still takes P13, omega_3_ic … here)")
     scales = read_scales(top)
     linkage, positions, _ = read_linkage(top)
+    for k, y in enumerate(linkage.dyads if linkage is not None else ()):
+        if isinstance(y, PRP):  # its kinematics are drawn (a linkage scene); its force polygons are not built
+            top.problem(f"dyad[{k}].type", "the force analysis takes RRR, RRP, RPR and RPP groups, not yet a PRP "
+                                           "group: draw its polygons in a scene without [forces]")
+        elif isinstance(y, RRP) and isinstance(y.guide, LinkGuide):
+            top.problem(f"dyad[{k}].guide", "the force analysis takes an RRP group on a frame guide, not yet one "
+                                            "whose guide is on a moving link: draw its polygons in a scene without [forces]")
     fr = top.table_at("forces")
     forces = None if fr is None else _read_forces(fr, linkage)
     measured = read_measured(top, positions.labels if positions else None)

@@ -12,7 +12,8 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping, Sequence
 
-from graphmech.mechanisms.linkage import Crank, Linkage, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.mechanisms.linkage import (PRP, Crank, Guide, Linkage, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR,
+                                          SliderInput)
 from graphmech.drawing.notation import WORDS, word
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Primitive, Role, Segment, Sheet, Slider)
@@ -160,7 +161,7 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
 
     numbers: list[Primitive] = []
     done: set[str] = set()
-    coincident = {n for y in linkage.dyads if isinstance(y, (RPR, RPP)) for n in y.coincident}
+    coincident = {n for y in linkage.dyads if isinstance(y, (RPR, RPP, PRP, RRP)) for n in y.coincident}
     # a link with three or more joints not on one line is a plate (a ternary link's triangle)
     sliding = {y.bar_link for y in linkage.dyads if isinstance(y, RPR)} | \
               {y.links[0] for y in linkage.dyads if isinstance(y, RPP)}
@@ -190,11 +191,12 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
             items.append(Segment(pos[a], pos[b], "construction", dashed=True) if other else Segment(pos[a], pos[b], "given"))
             number(lid, ((pos[a][0] + pos[b][0]) / 2, (pos[a][1] + pos[b][1]) / 2), u)
 
-    def guide(key: int, g: Any, at: str) -> None:
+    def guide(key: int, g: Any, at: str, where: XY | None = None) -> None:
         gx, gy = g.direction
         ox, oy = build.to_drawing(g.through)
         lo, hi = (guide_span or {}).get(key, (0.0, 0.0))
-        s = (pos[at][0] - ox) * gx + (pos[at][1] - oy) * gy
+        here = pos[at] if where is None else where
+        s = (here[0] - ox) * gx + (here[1] - oy) * gy
         lo, hi = min(lo, s) - 12.0, max(hi, s) + 12.0
         nx, ny = gy, -gx  # the side GuideLine hatches (right of its direction)
         near: tuple[float, float] | None = None
@@ -245,10 +247,15 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
         elif isinstance(y, RRP):
             link(y.p, y.c, y.links[0])
             hinges += [y.p, y.c]
+            g = y.guide
+            if isinstance(g, LinkGuide):  # the pin C's block in the slotted link's line
+                if y.c in pos:
+                    _block_on_link(g, y.links[1], pos[y.c], y.c, pos, items, lines, number, other)
+                continue
             if not other:
-                guide(k, y.guide, y.c)
-            slider(y.c, y.guide.angle)
-            number(y.links[1], pos[y.c], y.guide.direction)
+                guide(k, g, y.c)
+            slider(y.c, g.angle)
+            number(y.links[1], pos[y.c], g.direction)
         elif isinstance(y, RPR):
             bp, x = pos[y.bar_pivot], pos[y.block_pivot]
             u = _unit(bp, x)
@@ -279,6 +286,9 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
             number(y.links[1], c, y.guide.direction)
             lines.setdefault(y.p, []).extend([(sx, sy), (-sx, -sy)])
             hinges.append(y.p)
+        elif isinstance(y, PRP) and y.c in pos:
+            _prp_items(y, k, pos, items, lines, guide, number, other)
+            hinges.append(y.c)
     for pt in linkage.points:
         if pt.name not in pos:
             continue
@@ -317,6 +327,49 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
             continue  # the frame is drawn once, with its letters
         items.append(Label(point_name(name) + (mark or ""), pos[name], _dirs(lines.get(name, ())), LETTER))
     return items + numbers
+
+
+def _block_on_link(g: LinkGuide, block: str, c: XY, name: str, pos: dict[str, XY], items: list[Primitive],
+                   lines: dict[str, list[XY]], number: Any, other: bool) -> None:
+    """A block at c sliding on a moving link's line through two of its points: the line drawn on to
+    c where c lies beyond them (a slotted bar), and the block along it."""
+    u0, u1 = pos.get(g.through), pos.get(g.towards)
+    if u0 is None or u1 is None or u0 == u1:
+        return
+    u = _unit(u0, u1)
+    reach = (c[0] - u0[0]) * u[0] + (c[1] - u0[1]) * u[1]
+    far = math.dist(u0, u1)
+    if reach > far or reach < 0.0:  # the bar runs on past C, as a slotted bar does
+        end = reach + (8.0 if reach > far else -8.0)
+        tip = (u0[0] + end * u[0], u0[1] + end * u[1])
+        start = u1 if reach > far else u0
+        items.append(Segment(start, tip, "construction", dashed=True) if other else Segment(start, tip, "given"))
+    items.append(Slider(c, math.atan2(u[1], u[0])))
+    lines.setdefault(name, []).extend([u, (-u[0], -u[1])])
+    number(block, c, u)
+
+
+def _prp_items(y: PRP, k: int, pos: dict[str, XY], items: list[Primitive], lines: dict[str, list[XY]],
+               guide: Any, number: Any, other: bool) -> None:
+    """A PRP dyad on the diagram: the block on a link's guide is a slider on that link's line (the
+    line drawn on to C); the block on a frame guide is a rod from C along the guide to its slider."""
+    c = pos[y.c]
+    for block, g in zip(y.links, y.guides):
+        if isinstance(g, LinkGuide):
+            _block_on_link(g, block, c, y.c, pos, items, lines, number, other)
+        else:
+            gx, gy = g.direction
+            # the rod runs away from the other guide's pivot, so it stays clear of the bar
+            other_g = y.guides[1] if g is y.guides[0] else y.guides[0]
+            base = pos.get(other_g.through) if isinstance(other_g, LinkGuide) else None
+            sense = 1.0 if base is None or (c[0] - base[0]) * gx + (c[1] - base[1]) * gy >= 0.0 else -1.0
+            at = (c[0] + sense * 14.0 * gx, c[1] + sense * 14.0 * gy)
+            items.append(Segment(c, at, "construction", dashed=True) if other else Segment(c, at, "given"))
+            if not other:
+                guide(k, g, y.c, at)
+            items.append(Slider(at, g.angle))
+            lines.setdefault(y.c, []).append((sense * gx, sense * gy))
+            number(block, at, (gx, gy))
 
 
 def _sense_marks(linkage: Linkage, pos: dict[str, XY], senses: Mapping[str, tuple[float | None, float | None]],
@@ -391,6 +444,12 @@ def polygon_items(plan: Any, values: dict[str, Any], panel: str) -> list[Primiti
                 items.append(Arrow(a, b, s.role) if s.kind == "vector" else Segment(a, b, s.role))
                 leaving.setdefault(s.inputs[0], []).append(_unit(a, b))
                 leaving.setdefault(s.inputs[1], []).append(_unit(b, a))
+    for s in plan.steps:  # the Coriolis side is named as the book names it, a^k, at its middle
+        if s.panel == panel and s.kind == "point" and s.say[:1] == ("coriolis",):
+            a, b = _pt(values[s.inputs[0]]), _pt(values[s.name])
+            if math.dist(a, b) > 1e-9:
+                u = _unit(a, b)
+                items.append(Label("a^{k}", ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2), (u, (-u[0], -u[1]))))
     for s in plan.steps:
         if s.panel == panel and s.kind == "point" and s.label and s.role != "hidden":
             at = _pt(values[s.name])
@@ -436,7 +495,8 @@ def guide_spans(linkage: Linkage, build: Any, solutions: Sequence[Any]) -> dict[
     """The stretch of each guide its slider covers over the drawn positions (mm along the guide)."""
     spans: dict[int, tuple[float, float]] = {}
     guides = [(-1, linkage.driver.guide, linkage.driver.point)] if isinstance(linkage.driver, SliderInput) else []
-    guides += [(k, y.guide, y.c) for k, y in enumerate(linkage.dyads) if isinstance(y, (RRP, RPP))]
+    guides += [(k, y.guide, y.c) for k, y in enumerate(linkage.dyads)
+               if isinstance(y, (RRP, RPP)) and isinstance(y.guide, Guide)]
     for k, g, point in guides:
         gx, gy = g.direction
         ox, oy = build.to_drawing(g.through)

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any, Literal, Mapping
 
 from graphmech.errors import SceneError
 from graphmech.mechanisms.linkage import (
+    PRP,
     RPP,
     RPR,
     RRP,
@@ -22,6 +23,7 @@ from graphmech.mechanisms.linkage import (
     Driver,
     Guide,
     Linkage,
+    LinkGuide,
     LinkPoint,
     Positions,
     SliderInput,
@@ -68,6 +70,7 @@ class _Part:
     carries: list[tuple[str, list[str]]] = field(default_factory=list)  # link → its points
     translating: list[str] = field(default_factory=list)  # links that only translate
     on: tuple[str | None, str] | None = None  # a [[point]]'s link (None if invalid), its path
+    guides_on: list[tuple[str, list[tuple[str, str]], str]] = field(default_factory=list)  # a guide's link, its line, path
     model: Any = None  # the model object, when its own values were valid
     opaque: bool = False  # its type is unknown: names and links kept, nothing checked
 
@@ -114,9 +117,9 @@ def _read_frame(top: Reader) -> tuple[dict[str, tuple[float, float] | None], str
     return points, link
 
 
-def _read_guide(parent: Reader, key: str, frame: _Frame) -> Guide | None:
+def _read_guide(parent: Reader, key: str, frame: _Frame, sub: Reader | None = None) -> Guide | None:
     """A frame guide {through = [x, y] or a frame point's name, angle (default 0)}."""
-    r = parent.table_at(
+    r = sub if sub is not None else parent.table_at(
         key, required=True, hint=f"write {key} = {{through_mm = [0, 0], angle_deg = 0}}"
     )
     if r is None:
@@ -132,6 +135,36 @@ def _read_guide(parent: Reader, key: str, frame: _Frame) -> Guide | None:
     angle = r.scalar("angle", "angle", required=False, default=0.0)
     r.finish()
     return Guide(through, angle) if through is not None and angle is not None else None
+
+
+def _read_any_guide(parent: Reader, key: str, frame: _Frame, part: _Part, sub: Reader | None = None
+                    ) -> Guide | LinkGuide | None:
+    """A frame guide, or a guide on a moving link: ``{link = "1", line = ["A", "B"]}``, the line
+    through two points of that link (defined before the dyad), turning with it."""
+    r = sub if sub is not None else parent.table_at(
+        key, required=True, hint=f"write {key} = {{through_mm = [0, 0], angle_deg = 0}}")
+    if r is None:
+        return None
+    if "line" not in r.table and "link" not in r.table:
+        return _read_guide(parent, key, frame, r)
+    value = r.raw("link", required=True, hint='the number of the moving link the guide is on, e.g. link = "1"')
+    link = None if value is MISSING else r.link_id(value, r.at("link"))
+    line = r.name_list("line", 2, r.point_name)
+    for extra in ("through", "angle"):
+        found = r.present(extra)
+        if found is not None:
+            r.used.add(found)
+            r.problem(r.at(found), "a guide on a link is the line through two of its points: give line, not " + extra)
+    r.finish()
+    (u, u_path), (v, v_path) = line
+    if u is not None and u == v:
+        r.problem(v_path, f"the line's two points must differ ({u} twice)")
+        return None
+    if link is None or u is None or v is None:
+        return None
+    part.needs += [(u, u_path), (v, v_path)]
+    part.guides_on.append((link, [(u, u_path), (v, v_path)], r.at("link")))
+    return LinkGuide(link, u, v)
 
 
 def _read_driver(
@@ -210,7 +243,7 @@ def _read_driver(
     return part, positions
 
 
-_DYAD_TYPES = ("RRR", "RRP", "RPR", "RPP")
+_DYAD_TYPES = ("RRR", "RRP", "RPR", "RPP", "PRP")
 
 
 def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
@@ -220,7 +253,7 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
     kind = r.string("type", choices=_DYAD_TYPES, required=True)
     if kind is None:
         return _opaque(r, where, ("joints",), ("links",))
-    count = 3 if kind == "RRR" else 2
+    count = 3 if kind == "RRR" else 1 if kind == "PRP" else 2
     joints = r.name_list("joints", count, r.point_name)
     links = r.name_list("links", 2, r.link_id)
     (i, i_path), (j, j_path) = links
@@ -270,13 +303,19 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
     elif kind == "RRP":
         p, c = names
         length = r.scalar("length", "length", positive=True)
-        guide = _read_guide(r, "guide", frame)
+        guide = _read_any_guide(r, "guide", frame, part)
         side = r.string("branch", choices=_RRP_BRANCHES, required=True)
         need(0)
         new(1)
         carry(i, p, c)
         carry(j, c)
-        if j is not None:
+        if isinstance(guide, LinkGuide):  # a slotted link drives the pin C: C<j> and C<link> stand at C
+            if c is not None and j is not None:
+                new(1, c + j)
+                new(1, c + guide.link)
+                carry(j, c + j)
+                carry(guide.link, c + guide.link)
+        elif j is not None:
             part.translating.append(j)
         if (p is not None and c is not None and i is not None and j is not None and length is not None
                 and guide is not None and side is not None):
@@ -299,6 +338,34 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
         else:
             carry(i, p)
             carry(j, q)
+    elif kind == "PRP":
+        c = names[0]
+        new(0)
+        guides: list[Guide | LinkGuide | None] = [None, None]
+        value = r.raw("guides", required=True,
+                      hint='the two blocks\' guides, e.g. guides = [{link = "1", line = ["A", "B"]}, '
+                           '{through_mm = [100, 0], angle_deg = 90}]')
+        if value is not MISSING:
+            if not isinstance(value, list) or len(value) != 2 or not all(isinstance(g, dict) for g in value):
+                r.problem(r.at("guides"), "must be a list of 2 guide tables, one per block, in the order of links")
+            else:
+                guides = [_read_any_guide(r, "guides", frame, part, r.sub(g, f"{r.at('guides')}[{m}]"))
+                          for m, g in enumerate(value)]
+        for m, (x, g) in enumerate(zip((i, j), guides)):
+            carry(x, c, c + x if c and x else None)
+            if isinstance(g, LinkGuide):
+                carry(g.link, c + g.link if c else None)
+                if c:
+                    new(0, c + g.link)
+            elif g is not None and x is not None:
+                part.translating.append(x)
+            if c and x:
+                new(0, c + x)
+        if all(isinstance(g, Guide) for g in guides):
+            r.problem(r.at("guides"), "both guides on the frame: the dyad cannot move (put one on a moving "
+                                      'link: {link = "1", line = ["A", "B"]})')
+        elif c is not None and i is not None and j is not None and guides[0] is not None and guides[1] is not None:
+            part.model = PRP(c, (i, j), (guides[0], guides[1]))
     else:  # RPP
         p, c = names
         slot = r.scalar("slot_angle", "angle")
@@ -515,6 +582,20 @@ def _check_structure(
             else:
                 tip = ""
             problems.append((path, f"{name} is not defined before {part.where}{tip}"))
+
+    # Guides on moving links: a link introduced before the dyad, the line through two of its points.
+    order = [driver.where] + [p.where for p in dyads]
+    for k, part in enumerate(dyads):
+        for link, line, path in part.guides_on:
+            if link not in owner or order.index(owner[link]) > k:
+                where = "the frame: give through and angle" if link == frame_link[0] else \
+                    f"not a moving link defined before {part.where}"
+                problems.append((path, f"link {link} is {where}"))
+                continue
+            for name, name_path in line:
+                if name in origin and name not in carried.get(link, []):
+                    carries = ", ".join(carried[link])
+                    problems.append((name_path, f"{name} is not a point of link {link} (it carries {carries})"))
 
     # The frame link.
     fixed, explicit = frame_link

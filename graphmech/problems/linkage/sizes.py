@@ -15,7 +15,7 @@ from graphmech import tolerances as T
 from graphmech.drawing.lettering import number, subscript
 from graphmech.errors import SceneError
 from graphmech.exact.linkage import Kinematics
-from graphmech.mechanisms.linkage import Crank, Linkage
+from graphmech.mechanisms.linkage import Crank, Guide, Linkage
 from graphmech.methods.linkage_construction import LinkageConstruction
 
 if TYPE_CHECKING:
@@ -62,8 +62,9 @@ def offset_ratio(linkage: Linkage, size: float) -> float:
     """How many times its own size the mechanism's given coordinates lie from the origin."""
     coords = [abs(c) for p in linkage.frame_points.values() for c in p]
     d = linkage.driver
-    coords += [abs(c) for g in [getattr(d, "guide", None)] + [getattr(y, "guide", None) for y in linkage.dyads]
-               if g is not None for c in g.through]
+    guides = [getattr(d, "guide", None)] + [g for y in linkage.dyads for g in (getattr(y, "guide", None),
+                                                                            *getattr(y, "guides", ()))]
+    coords += [abs(c) for g in guides if isinstance(g, Guide) for c in g.through]  # a link's guide: its points
     return max(coords + [0.0]) / size
 
 

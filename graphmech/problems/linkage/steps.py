@@ -14,7 +14,7 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from graphmech.drawing.lettering import subscript
-from graphmech.mechanisms.linkage import RPP, RRP, Crank, SliderInput
+from graphmech.mechanisms.linkage import PRP, RPP, RRP, Crank, LinkGuide, SliderInput
 from graphmech.methods.instant_centres import centre_name, pair
 from graphmech.methods.polygons import PANELS
 from graphmech.problems.instant_centres import check as ic_check
@@ -61,6 +61,9 @@ PHRASES: Phrases = {
     "slot_guide": ("{guide}; the slot through {P} at {angle}° meets it at {C}",
                    "{guide}；过{P}作与x轴成{angle}°的导槽线，与导路交于{C}",
                    "{guide}; паз через {P} под углом {angle}° пересекает её в точке {C}"),
+    "link line": ("extend the line {UV} of link {link}", "延长构件{link}上的直线{UV}",
+                  "продолжаем прямую {UV} звена {link}"),
+    "guides meet": ("{a}; {b}; they meet at {C}", "{a}；{b}；两线交于{C}", "{a}; {b}; они пересекаются в точке {C}"),
     "on_link": ("mark {D} on link {link}: {UD} = {along} mm along {U}→{V}, then {left} mm to its left",
                 "在构件{link}上定出{D}：沿{U}→{V}取{UD} = {along} mm，再向左{left} mm",
                 "отмечаем {D} на звене {link}: {UD} = {along} mm по {U}→{V}, затем {left} mm влево"),
@@ -268,6 +271,8 @@ class _Words:
         driver = self.b.linkage.driver
         g = driver.guide if isinstance(driver, SliderInput) and driver.point == C else next(
             d.guide for d in self.b.linkage.dyads if isinstance(d, (RRP, RPP)) and d.c == C)
+        if isinstance(g, LinkGuide):  # a slotted link's line, where it stands now
+            return self.say("link line", UV=letter(g.through) + letter(g.towards), link=g.link)
         x, y = self.b.to_drawing(g.through)
         return self.say("guide line", C=letter(C), x=num(x), y=num(y), angle=num(math.degrees(g.angle)))
 
@@ -347,6 +352,18 @@ class _Words:
             C, P = args
             slot = next(d.slot_angle for d in self.b.linkage.dyads if isinstance(d, RPP) and d.c == C)
             return self.say("slot_guide", guide=self.guide(C), C=letter(C), P=letter(P), angle=num(math.degrees(slot)))
+        if key == "guides_meet":  # a PRP's pin where its two guides' lines meet
+            C = args[0]
+            prp = next(d for d in self.b.linkage.dyads if isinstance(d, PRP) and d.c == C)
+            words = []
+            for g in prp.guides:
+                if isinstance(g, LinkGuide):
+                    words.append(self.say("link line", UV=letter(g.through) + letter(g.towards), link=g.link))
+                else:
+                    x, yy = self.b.to_drawing(g.through)
+                    words.append(self.say("guide line", C=letter(C), x=num(x), y=num(yy),
+                                          angle=num(math.degrees(g.angle))))
+            return self.say("guides meet", a=words[0], b=words[1], C=letter(C))
         # on_link: a point fixed on a link
         D, link, U, *V = args
         pt = self.part(D)

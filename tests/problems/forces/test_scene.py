@@ -28,6 +28,25 @@ def test_friction_circle_larger_than_the_geometry_allows(tmp_path):
                    "larger than the geometry allows: it must be smaller than half the 60 mm to the next joint\n")
 
 
+def test_a_prp_group_is_refused_at_its_type(tmp_path):
+    # the tangent mechanism's kinematics are drawn; its force polygons are not built yet
+    kin = (SCENES / "kin.tangent_mechanism.toml").read_text(encoding="utf-8")
+    text = kin.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = ["mechanism", "forces"]').replace(
+        "find = [", 'find = ["M_b", ') + '[forces]\n[[forces.force]]\nlink = "3"\npoint = "C"\nforce_N = 100\nangle = 270\n'
+    code, out, err = run_cli("check", str(_write(tmp_path, text)))
+    assert (code, out) == (2, "")
+    assert err.startswith("s.toml: dyad[0].type: the force analysis takes RRR, RRP, RPR and RPP groups, not yet a PRP")
+
+
+def test_an_rrp_group_on_a_moving_guide_is_refused_at_its_guide(tmp_path):
+    kin = scene_text("linkage/slotted_link_pin")
+    text = kin.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = ["mechanism", "forces"]').replace(
+        "find = [", 'find = ["M_b", ') + '[forces]\n[[forces.force]]\nlink = "3"\npoint = "C"\nforce_N = 100\nangle = 270\n'
+    code, out, err = run_cli("check", str(_write(tmp_path, text)))
+    assert (code, out) == (2, "")
+    assert err.startswith("s.toml: dyad[0].guide: the force analysis takes an RRP group on a frame guide, not yet")
+
+
 def test_forces_scene_keys_are_checked(tmp_path):
     text = scene_text("forces/fourbar_loaded").replace("mass_kg = 1", "mass_kg = -1\ncolour = 3")
     code, _, err = run_cli("check", str(_write(tmp_path, text)))

@@ -13,8 +13,8 @@ from graphmech.errors import SceneError
 from graphmech.problems.linkage.bench import closed_form_fourbar
 from graphmech.problems.linkage.check import analyse, exact_value, judge, rows_that_fit
 from graphmech.scene import parse_scene
-from tests.conftest import check_json, fourbar_scene
-from tests.scenes import scene_text, write_scene
+from tests.conftest import SCENES, check_json, fourbar_scene, values
+from tests.scenes import scene_path, scene_text, write_scene
 
 #: AD 120, AB 60 (link 2) at 30°, BC 120 (3), CD 90 mm (4); 100 rpm, ε = 4 rad/s²; μl, μv stated.
 FOURBAR = scene_text("linkage/fourbar_phi30")
@@ -207,3 +207,63 @@ def test_the_scotch_yoke_is_an_rpp_dyad_with_the_slot_square_to_the_guide(tmp_pa
         assert q[f"v_C@{phi}"]["graphical"] == pytest.approx(-r * w * s, abs=1e-9 * r * w)
         assert q[f"a_C@{phi}"]["graphical"] == pytest.approx(-r * w * w * c, abs=1e-9 * r * w * w)
         assert abs(q[f"v_B2B3@{phi}"]["graphical"]) == pytest.approx(abs(r * w * c), abs=1e-9 * r * w)
+
+
+def test_a_slotted_link_drives_a_pin_with_the_coriolis_side_drawn(tmp_path):
+    # an RRP group whose guide is the moving crank's slot: every value against exact/ to 1e-9, and
+    # a^k = 2ω2·v_C4C2 with the block turning with the slotted crank
+    got = values(check_json(scene_path("linkage/slotted_link_pin")))
+    assert len(got) == 8 and all(r["rel_error"] <= 1e-9 for r in got.values()), got
+    assert got["omega_4"]["graphical"] == pytest.approx(10.0, rel=1e-12)
+    assert got["a_k_C4C2"]["graphical"] == pytest.approx(2 * 10.0 * got["v_C4C2"]["exact"], rel=1e-12)
+
+
+@pytest.mark.parametrize("name", ["kin.tangent_mechanism", "ic.tangent_mechanism"])
+def test_tangent_mechanism_polygons_and_centres_agree_with_exact(name):
+    # seed 001 1-14 (PRP): every value the scene finds, graphical against exact/, to 1e-9; and the
+    # closed form v3 = ω1·h/cos²φ1, a3 = 2ω1²·h·tan φ1/cos²φ1 (h = 0.1 m, φ1 = 30°, ω1 = 10 rad/s)
+    doc = check_json(SCENES / f"{name}.toml")
+    got = values(doc)
+    assert got and all(r["rel_error"] <= 1e-9 for r in got.values()), got
+    phi = math.radians(30.0)
+    assert got["v_C"]["exact"] == pytest.approx(1.0 / math.cos(phi) ** 2, rel=1e-12)
+    if name.startswith("kin"):
+        assert got["a_C"]["exact"] == pytest.approx(20.0 * math.tan(phi) / math.cos(phi) ** 2, rel=1e-12)
+        assert got["a_k_C2C1"]["graphical"] == pytest.approx(2 * 10.0 * got["v_C2C1"]["exact"], rel=1e-12)
+        assert got["omega_2"]["graphical"] == pytest.approx(10.0, rel=1e-12)
+    else:  # P13 on the x axis at h/cos²φ1; v3 = ω1·P14P13
+        assert got["x_P13"]["graphical"] == pytest.approx(0.1 / math.cos(phi) ** 2, rel=1e-12)
+        assert got["v_C_ic"]["graphical"] == pytest.approx(got["v_C"]["exact"], rel=1e-12)
+
+
+def test_an_rpr_group_on_two_moving_pivots_already_agrees_with_exact():
+    # the pin in a rotating slot, the slot's bar pivoted on a coupler and the block on a rocker
+    got = values(check_json(scene_path("linkage/rpr_moving_pivots")))
+    assert len(got) == 6 and all(r["rel_error"] <= 1e-9 for r in got.values()), got
+    assert got["v_F5F6"]["exact"] > 0.1 and got["a_k_F5F6"]["exact"] > 0.0
+
+
+def test_tangent_mechanism_near_its_parallel_position_is_flagged(tmp_path):
+    # at φ1 = 90° the bar runs along the guide (C at infinity): refused at that position; at 88° the
+    # intersections meet at 2°, named as shallow, as for the other dyads
+    from tests.conftest import run_cli
+
+    text = (SCENES / "kin.tangent_mechanism.toml").read_text(encoding="utf-8")
+    text = text.replace("angle = 30\n", "angle = [30, 88, 90]\n").replace('find = ["v_C", ', 'find = [')
+    text = "\n".join(line for line in text.splitlines() if not line.startswith(("v_m_s_per_mm", "a_m_s2_per_mm")))
+    code, out, err = run_cli("check", str(write_scene(tmp_path, text)))
+    assert code == 0 and "v_C1@88" in out
+    assert "φ₁ = 90°: construction impossible — C = AB ∩ the guide: the two lines are parallel" in err
+    assert "φ₁ = 88°: shallow intersection 'C = AB ∩ the guide' at 2°" in err
+    assert "φ₁ = 88°: shallow intersection 'c = the two lines ∥ the guides meet' at 2°" in err
+
+
+def test_a_slotted_link_s_instant_centres_agree_with_exact(tmp_path):
+    # the block 4 slides in the crank 2's slot: P24 at infinity ⟂ AB (130° at φ2 = 40°), the rest by Kennedy
+    text = scene_text("linkage/slotted_link_pin").replace(
+        'show = ["mechanism", "velocity", "acceleration"]', 'show = ["instant_centres"]')
+    text = text.replace(text[text.index("find = "):text.index("\n", text.index("find = "))],
+                        'find = ["P23", "P34", "P24", "P45", "omega_3_ic", "v_C_ic"]')
+    got = values(check_json(write_scene(tmp_path, text)))
+    assert len(got) == 9 and all(r["rel_error"] <= 1e-9 for r in got.values()), got
+    assert got["dir_P24"]["graphical"] == pytest.approx(130.0, abs=1e-9)

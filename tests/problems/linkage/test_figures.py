@@ -134,3 +134,46 @@ def test_a_guide_through_the_crank_pivot_stops_short_of_it():
     g = next(it for it in mechanism_items(an.build, pos) if isinstance(it, GuideLine))
     ax = pos["A"][0]
     assert min(g.p0[0], g.p1[0]) == pytest.approx(ax + PIVOT_CLEAR) and max(g.p0[0], g.p1[0]) > pos["C"][0]
+
+
+def test_tangent_mechanism_draws_the_sliding_and_coriolis_sides():
+    # seed 001 1-14 (PRP): v_C = v_C1 + v_C2C1 (∥ AB); a_C = a_C1 + a^k + a^r, the Coriolis side its own
+    an, sheet = sheet_of("kin.tangent_mechanism")
+    vel, acc = panel(sheet, "velocity"), panel(sheet, "acceleration")
+    assert {i.text for i in vel.items if isinstance(i, Label)} == {"p", "b", "c₁", "c"}
+    assert {"p′", "b′", "c₁′", "k′", "c′", "a^{k}"} <= {i.text for i in acc.items if isinstance(i, Label)}
+    mv, ma = an.scales["v"], an.scales["a"]
+    # pc runs up the guide, v3 = ω1·h/cos²φ; c1c runs along the bar (30°), v_C2C1 = ω1·h·tan φ/cos φ
+    h, w, phi = 0.1, 10.0, math.radians(30.0)
+    arrows = [(a.p0, a.p1) for a in vel.items if isinstance(a, Arrow)]
+    pc = next(p1 for p0, p1 in arrows if p0 == (0.0, 0.0) and abs(p1[0]) < 1e-9)
+    assert pc[1] * mv == pytest.approx(h * w / math.cos(phi) ** 2, rel=1e-12)
+    c1c = [(p0, p1) for p0, p1 in arrows if p0 != (0.0, 0.0)]
+    assert len(c1c) == 1
+    (x0, y0), (x1, y1) = c1c[0]
+    assert math.degrees(math.atan2(y1 - y0, x1 - x0)) == pytest.approx(30.0, abs=1e-9)
+    assert math.hypot(x1 - x0, y1 - y0) * mv == pytest.approx(h * w * math.tan(phi) / math.cos(phi), rel=1e-12)
+    # the Coriolis side c1′k′ is 2ω1·v_C2C1/μa long, ⟂ the bar (v_rel turned 90° with ω1, CCW)
+    k = next(a for a in acc.items if isinstance(a, Arrow) and a.role == "construction"
+             and math.dist(a.p0, a.p1) * ma == pytest.approx(2 * w * h * w * math.tan(phi) / math.cos(phi), rel=1e-12))
+    assert math.degrees(math.atan2(k.p1[1] - k.p0[1], k.p1[0] - k.p0[0])) == pytest.approx(120.0, abs=1e-9)
+    mech = panel(sheet, "mechanism")
+    sliders = [i for i in mech.items if isinstance(i, Slider)]
+    assert sorted(round(math.degrees(s.angle)) for s in sliders) == [30, 90]  # block 2 on the bar, rod 3's slider
+    assert any(isinstance(i, GuideLine) for i in mech.items)
+    assert not {"C1", "C2", "C3"} & {i.text for i in mech.items if isinstance(i, Label)}
+
+
+def test_slotted_link_draws_the_pin_block_in_the_moving_slot(tmp_path):
+    from tests.scenes import scene_path
+
+    an = analyse(load_scene(scene_path("linkage/slotted_link_pin")))
+    b = an.build
+    sheet = linkage_sheet(an.scene.title, b.linkage, b, an.plan, an.solutions, an.labels,
+                          [position_text(b, lab) for lab in an.labels], an.scales, list(an.scene.show),
+                          page_size(an.scene))
+    mech, vel, acc = panel(sheet, "mechanism"), panel(sheet, "velocity"), panel(sheet, "acceleration")
+    assert [round(math.degrees(s.angle)) for s in mech.items if isinstance(s, Slider)] == [40]  # along the slot
+    assert not any(isinstance(i, GuideLine) for i in mech.items)  # no frame guide: the slot moves
+    assert {"p", "b", "c₂", "c"} == {i.text for i in vel.items if isinstance(i, Label)}
+    assert {"c₂′", "k′", "c′", "a^{k}", "n₃′"} <= {i.text for i in acc.items if isinstance(i, Label)}

@@ -12,12 +12,14 @@ import pytest
 
 from graphmech.errors import SceneError
 from graphmech.mechanisms.linkage import (
+    PRP,
     RPP,
     RPR,
     RRP,
     RRR,
     Crank,
     Guide,
+    LinkGuide,
     LinkPoint,
     SliderInput,
 )
@@ -272,6 +274,58 @@ guide = { through = [0, 0], angle = 0 }
     )
 
 
+def test_prp_reads_a_guide_on_a_link_and_one_on_the_frame() -> None:
+    scene = load_scene(ROOT / "figures" / "scenes" / "kin.tangent_mechanism.toml")
+    (prp,) = scene.linkage.dyads
+    assert prp == PRP("C", ("2", "3"), (LinkGuide("1", "A", "B"), Guide((0.1, 0.0), math.pi / 2)))
+    assert prp.coincident == ("C2", "C3", "C1")
+    assert scene.linkage.links()["1"] == ["A", "B", "C1"]
+
+
+#: A PRP on the four-bar of GOOD: block 5 on the coupler 3's line B→C, block 6 on a frame guide.
+PRP_ON_COUPLER = GOOD + """
+[[dyad]]
+type = "PRP"
+joints = ["G"]
+links = ["5", "6"]
+guides = [{ link = "3", line = ["B", "C"] }, { through = [0, 0], angle = 90 }]
+"""
+
+
+def test_prp_on_a_coupler_parses() -> None:
+    (_, prp) = parse_scene(tomllib.loads(PRP_ON_COUPLER), "s.toml").linkage.dyads
+    assert prp.guides[0] == LinkGuide("3", "B", "C") and prp.coincident == ("G5", "G6", "G3")
+
+
+@pytest.mark.parametrize("old, new, message", [
+    ('line = ["B", "C"]', 'line = ["B", "D"]',
+     "dyad[1].guides[0].line[1]: D is not a point of link 3 (it carries B, C, G3, E)"),
+    ('link = "3", line', 'link = "7", line', "dyad[1].guides[0].link: link 7 is not a moving link defined before dyad[1]"),
+    ('line = ["B", "C"]', 'line = ["B", "B"]', "dyad[1].guides[0].line[1]: the line's two points must differ (B twice)"),
+    ('line = ["B", "C"]', 'line = ["B", "C"], angle = 3', ("dyad[1].guides[0].angle: a guide on a link is the line "
+                                                           "through two of its points: give line, not angle")),
+    ('{ link = "3", line = ["B", "C"] }', '{ through = [0, 0], angle = 0 }',
+     ("dyad[1].guides: both guides on the frame: the dyad cannot move (put one on a moving link: "
+      '{link = "1", line = ["A", "B"]})')),
+    ('guides = [{ link = "3", line = ["B", "C"] }, ', 'guides = [',
+     "dyad[1].guides: must be a list of 2 guide tables, one per block, in the order of links"),
+    ('joints = ["G"]', 'joints = ["C"]', "dyad[1].joints[0]: C is already defined (by dyad[0])"),
+])
+def test_prp_refusals_name_the_key(old: str, new: str, message: str) -> None:
+    assert old in PRP_ON_COUPLER
+    assert message_of(PRP_ON_COUPLER.replace(old, new)) == f"scene.toml: {message}"
+
+
+def test_rrp_on_a_moving_guide_defines_the_coincident_points() -> None:
+    scene = load_scene(scene_path("linkage/slotted_link_pin"))
+    (rrp,) = scene.linkage.dyads
+    assert rrp.guide == LinkGuide("2", "A", "B") and rrp.coincident == ("C4", "C2")
+    assert scene.linkage.links() == {"2": ["A", "B", "C2"], "3": ["D", "C"], "4": ["C"]}
+    text = scene_text("linkage/slotted_link_pin")
+    assert message_of(text.replace('line = ["A", "B"]', 'line = ["A", "D"]')) == (
+        "scene.toml: dyad[0].guide.line[1]: D is not a point of link 2 (it carries A, B, C2)")
+
+
 def test_dyad_branch_is_required() -> None:
     assert message_of(GOOD.replace('branch = "left"\n', "")) == (
         'scene.toml: dyad[0].branch: missing: write branch = "left" or "right"'
@@ -303,7 +357,7 @@ def test_docs_have_an_example_of_every_feature() -> None:
     # the cam, flywheel, force and structure scenes have tests of their own
     scenes = [s for s in scenes if s.kind != "cam" and s.kind != "flywheel" and s.linkage is not None]
     dyad_types = {type(d) for s in scenes for d in s.linkage.dyads}
-    assert dyad_types == {RRR, RRP, RPR, RPP}
+    assert dyad_types == {RRR, RRP, RPR, RPP, PRP}
     assert {type(s.linkage.driver) for s in scenes} == {Crank, SliderInput}
     assert {d.bar for s in scenes for d in s.linkage.dyads if isinstance(d, RPR)} == {
         "first",
