@@ -26,7 +26,7 @@ import numpy as np
 from graphmech.errors import NotApplicable
 from graphmech.exact.linkage import Kinematics, solve as solve_kinematics
 from graphmech.mechanisms.forces import ForceModel
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, SliderInput
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, SliderInput, Triad
 
 __all__ = ["ExactForces", "solve_forces", "pairs"]
 
@@ -87,6 +87,8 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
         on.setdefault(d.point, d.link)
     extra = {pt.name: pt.link for pt in linkage.points}
     for y in linkage.dyads:
+        if isinstance(y, Triad):  # a force scene refuses it when read
+            raise NotApplicable(f"class III group {y.name}: no force analysis of a class III group yet")
         for name in (y.p, getattr(y, "q", y.p)):
             if name not in on and name in extra:
                 on[name] = extra[name]

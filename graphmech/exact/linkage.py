@@ -307,13 +307,12 @@ def _rpp(st: _State, y: RPP) -> None:
 def _triad(st: _State, y: Triad) -> None:
     """A class III group: its loops eliminated to one equation in θ2 (:mod:`graphmech.exact.triad`)."""
     sol = solve_triad(y, st.pts)
-    for k in np.flatnonzero(~sol.valid):
-        st.fail(np.arange(st.n) == k, sol.reason[k], dead_centre=bool(sol.assembled[k]))
+    for bad in np.flatnonzero(~sol.valid):
+        st.fail(np.arange(st.n) == bad, sol.reason[bad], dead_centre=bool(sol.assembled[bad]))
     for k, name in enumerate(y.inner):
         st.pts[name] = (sol.z[k], sol.v[k], sol.a[k])
-    for k, link in enumerate(y.links[:3]):
-        st.rotating(link, sol.theta[k if k == 0 else k + 1], sol.omega[k if k == 0 else k + 1],
-                    sol.alpha[k if k == 0 else k + 1])
+    for row, link in zip((0, 2, 3), y.links[:3]):  # the solution's rows: θ2, θ3, θ4, θ5
+        st.rotating(link, sol.theta[row], sol.omega[row], sol.alpha[row])
     st.rotating(y.links[3], sol.theta[1], sol.omega[1], sol.alpha[1])
 
 

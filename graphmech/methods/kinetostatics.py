@@ -38,9 +38,9 @@ from typing import Any, cast
 
 import numpy as np
 
-from graphmech.errors import DegenerateConstruction
+from graphmech.errors import DegenerateConstruction, NotApplicable
 from graphmech.mechanisms.forces import ForceModel, LinkMass
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, SliderInput
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, SliderInput, Triad
 from graphmech.tolerances import PARALLEL_SIN, SHALLOW_DEG
 
 #: |sin| of the angle between the two unknown directions of a polygon below which a hand
@@ -489,6 +489,8 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
             loads.force(j.a, Force(f"R_{j.b}{j.a}", -r_on_b, P[j.point], j.point))
 
     for y in reversed(linkage.dyads):  # the group farthest from the driver first
+        if isinstance(y, Triad):  # a force scene refuses it when read
+            raise NotApplicable(f"class III group {y.name}: no force analysis of a class III group yet")
         if isinstance(y, RPR):
             _rpr_group(y, kin, loads, owner, friction, found, reactions, joints, groups, closing, fr,
                        keep_groups)

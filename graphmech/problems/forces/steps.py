@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from graphmech.drawing.lettering import subscript
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Triad
 from graphmech.methods.kinetostatics import construction_targets, kinetostatics
 from graphmech.problems.forces.check import (
     ForceAnalysis,
@@ -254,6 +254,8 @@ def _kinematic_targets(fa: ForceAnalysis, groups: bool) -> tuple[str, ...]:
         out += [f"omega_{link}" for link in b.omega if link != linkage.driver.link]
     if groups:
         for y in linkage.dyads:
+            if isinstance(y, Triad):  # a force scene refuses it when read
+                continue
             ends = (y.p, y.q) if isinstance(y, (RRR, RPR)) else (y.p,)
             out += [f"l_{P}{y.c}" for P in ends if not isinstance(y, RPR)] + (
                 [f"l_{y.p}{y.q}"] if isinstance(y, RPR) else [])

@@ -12,8 +12,9 @@ from __future__ import annotations
 import math
 from typing import Any, Mapping, Sequence
 
-from graphmech.mechanisms.linkage import Crank, Linkage, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.mechanisms.linkage import Crank, Linkage, LinkPoint, RPP, RPR, RRP, RRR, SliderInput, Triad
 from graphmech.drawing.notation import WORDS, word
+from graphmech.methods.velocity import assur_name
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Primitive, Role, Segment, Sheet, Slider)
 from graphmech.drawing.lettering import LETTER, point_name, scale_text, subscript
@@ -279,6 +280,18 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
             number(y.links[1], c, y.guide.direction)
             lines.setdefault(y.p, []).extend([(sx, sy), (-sx, -sy)])
             hinges.append(y.p)
+        elif isinstance(y, Triad):
+            for n in range(3):
+                link(y.outer[n], y.inner[n], y.links[n])
+            for m0, m1 in ((0, 1), (1, 2), (2, 0)):
+                link(y.inner[m0], y.inner[m1], y.links[3])
+            hinges += [*y.outer, *y.inner]
+            s_at = pos.get(assur_name(y))
+            if s_at is not None and not other:  # Assur's point S: the two binary links extended to it
+                for n in y.assur:
+                    items.append(Segment(pos[y.inner[n]], s_at, "construction", dashed=True))
+                items.append(Label("S", s_at, (_unit(s_at, pos[y.inner[y.assur[0]]]),
+                                               _unit(s_at, pos[y.inner[y.assur[1]]])), LETTER))
     for pt in linkage.points:
         if pt.name not in pos:
             continue

@@ -19,6 +19,7 @@ from graphmech.mechanisms.linkage import (
     Guide,
     LinkPoint,
     SliderInput,
+    Triad,
 )
 from graphmech.problems.reader import Page
 from graphmech.scene import Scene, load_scene, parse_scene
@@ -302,7 +303,7 @@ def test_docs_have_an_example_of_every_feature() -> None:
     # the cam, flywheel, force and structure scenes have tests of their own
     scenes = [s for s in scenes if s.kind != "cam" and s.kind != "flywheel" and s.linkage is not None]
     dyad_types = {type(d) for s in scenes for d in s.linkage.dyads}
-    assert dyad_types == {RRR, RRP, RPR, RPP}
+    assert dyad_types == {RRR, RRP, RPR, RPP, Triad}
     assert {type(s.linkage.driver) for s in scenes} == {Crank, SliderInput}
     assert {d.bar for s in scenes for d in s.linkage.dyads if isinstance(d, RPR)} == {
         "first",
