@@ -478,9 +478,9 @@ def _read_point(r: Reader, index: int) -> _Part:
     return part
 
 
-#: Why a [[triad]] is refused where it is (a force or flywheel scene; the full cycle; instant centres).
-TRIAD_NOT_YET = ("a class III group is solved in a linkage scene's polygons only so far (no force analysis, "
-                 "full cycle or instant centres yet)")
+#: Why a [[triad]] is refused where it is (a force or flywheel scene; the full cycle).
+TRIAD_NOT_YET = ("a class III group is solved in a linkage scene (polygons, instant centres) only so far: no force "
+                 "analysis or full cycle yet")
 
 
 def read_linkage(
@@ -636,18 +636,11 @@ def _check_structure(
     return str(max(numeric) + 1) if numeric else "0"
 
 
-def _triad_refusals(top: Reader, data: Mapping[str, Any], show: tuple[str, ...], find: tuple[str, ...]) -> None:
+def _triad_refusals(top: Reader, data: Mapping[str, Any]) -> None:
     """What a scene with a class III group may not ask for yet: one line each."""
-    from graphmech.problems.instant_centres.check import claims
-
     for key in ("cycle", "characteristics"):
         if key in data:
             top.problem(key, TRIAD_NOT_YET)
-    if "instant_centres" in show:
-        top.problem(f"show[{show.index('instant_centres')}]", TRIAD_NOT_YET)
-    for i, name in enumerate(find):
-        if claims(name):
-            top.problem(f"find[{i}]", f"{name}: {TRIAD_NOT_YET}")
 
 
 def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
@@ -674,7 +667,7 @@ def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order
     scales = read_scales(top)
     linkage, positions, _ = read_linkage(top, triads=True)
     if "triad" in data:
-        _triad_refusals(top, data, show, find)
+        _triad_refusals(top, data)
     cycle = None
     if "cycle" in data or "characteristics" in data or any(s in CYCLE_SHOW_CHOICES for s in show):
         cycle, positions = read_cycle(top, data, show, linkage, positions)

@@ -134,3 +134,24 @@ def test_a_guide_through_the_crank_pivot_stops_short_of_it():
     g = next(it for it in mechanism_items(an.build, pos) if isinstance(it, GuideLine))
     ax = pos["A"][0]
     assert min(g.p0[0], g.p1[0]) == pytest.approx(ax + PIVOT_CLEAR) and max(g.p0[0], g.p1[0]) > pos["C"][0]
+
+
+def test_a_class_iii_group_is_drawn_with_its_plate_and_assurs_point():
+    """kin.class_iii_sixbar: the ternary link 3 a plate, B–C, F–D, G–E bars, S where BC and FD extended meet."""
+    from graphmech.drawing.primitives import Plate
+
+    an, sheet = sheet_of("kin.class_iii_sixbar")
+    mech = panel(sheet, "mechanism")
+    labels = {i.text: i.anchor for i in mech.items if isinstance(i, Label)}
+    assert {"A", "B", "C", "D", "E", "F", "G", "S", "1", "2", "3", "4", "5"} <= set(labels)
+    plates = [i for i in mech.items if isinstance(i, Plate)]
+    assert len(plates) == 1 and {labels[n] for n in "CDE"} == set(plates[0].points)
+    s = labels["S"]
+    for p, x in (("B", "C"), ("F", "D")):  # S on the lines BC and FD
+        (px, py), (xx, xy) = labels[p], labels[x]
+        assert abs((xx - px) * (s[1] - py) - (xy - py) * (s[0] - px)) < 1e-9 * math.dist(labels[p], labels[x]) ** 2
+    assert sum(isinstance(i, FixedPivot) for i in mech.items) == 3  # A, F, G
+    vel, acc = panel(sheet, "velocity"), panel(sheet, "acceleration")
+    assert {i.text for i in vel.items if isinstance(i, Label)} == {"p", "b", "c", "d", "e", "s"}
+    assert {"p′", "b′", "c′", "d′", "e′", "s′", "s₁′", "s₂′", "n₂′", "n₄′", "n₅′"} <= {
+        i.text for i in acc.items if isinstance(i, Label)}
