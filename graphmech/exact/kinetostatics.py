@@ -87,8 +87,13 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
         on.setdefault(d.point, d.link)
     extra = {pt.name: pt.link for pt in linkage.points}
     for y in linkage.dyads:
-        if isinstance(y, Triad):  # a force scene refuses it when read
-            raise NotApplicable(f"class III group {y.name}: no force analysis of a class III group yet")
+        if isinstance(y, Triad):  # three binary links on known points, each pinned to the ternary link
+            for k in range(3):
+                if y.outer[k] not in on and y.outer[k] in extra:
+                    on[y.outer[k]] = extra[y.outer[k]]
+                revolutes += [(on[y.outer[k]], y.links[k], y.outer[k]), (y.links[k], y.links[3], y.inner[k])]
+                on.setdefault(y.inner[k], y.links[3])
+            continue
         for name in (y.p, getattr(y, "q", y.p)):
             if name not in on and name in extra:
                 on[name] = extra[name]
@@ -143,7 +148,7 @@ def solve_forces(linkage: Linkage, model: ForceModel, positions: np.ndarray,
     ref = {k: kin.point[pts[k][0]] for k in links}  # moments of link k about its first point
     m = 2 * len(revolutes) + 2 * len(sliders) + 1
     if m != 3 * len(links):
-        raise NotApplicable(f"{m} unknowns for {3 * len(links)} equations: not a class-II linkage")
+        raise NotApplicable(f"{m} unknowns for {3 * len(links)} equations: not a linkage of Assur groups")
     A = np.zeros((n, m, m))
     rhs = np.zeros((n, m))
 

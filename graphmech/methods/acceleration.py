@@ -256,7 +256,7 @@ def _triad(b: "LinkageConstruction", y: Triad) -> None:
     via: dict[int, str] = {}
     for n in (i, j):
         X = y.inner[n]
-        ns = _lay_normal(b, normal[n], t, S, b.mech[X], f"s{n + 1}'",
+        ns = _lay_normal(b, normal[n], t, S, b.mech[X], f"σ{n + 1}'",
                          f"lay off ω{t}²·l_S{X}/μa ∥ S{X} (aⁿ of S about {X})", ("S", X))
         via[n] = E.line(b, PANEL, f"⟂{y.outer[n]}·{X}@S{n}", K.line_perpendicular_to,
                         (ns, E.direction(b, y.outer[n], X)), f"through it draw ⟂ {y.outer[n]}{X} (a^t_S{X} + a^t_{X}{y.outer[n]})",

@@ -478,9 +478,9 @@ def _read_point(r: Reader, index: int) -> _Part:
     return part
 
 
-#: Why a [[triad]] is refused where it is (a force or flywheel scene; the full cycle).
-TRIAD_NOT_YET = ("a class III group is solved in a linkage scene (polygons, instant centres) only so far: no force "
-                 "analysis or full cycle yet")
+#: Why a [[triad]] is refused where it is (a flywheel's machine; the full cycle).
+TRIAD_NOT_YET = ("a class III group is solved in linkage scenes (polygons, instant centres) and force scenes only "
+                 "so far: not in a full cycle or a flywheel's machine yet")
 
 
 def read_linkage(

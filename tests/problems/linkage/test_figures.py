@@ -153,5 +153,5 @@ def test_a_class_iii_group_is_drawn_with_its_plate_and_assurs_point():
     assert sum(isinstance(i, FixedPivot) for i in mech.items) == 3  # A, F, G
     vel, acc = panel(sheet, "velocity"), panel(sheet, "acceleration")
     assert {i.text for i in vel.items if isinstance(i, Label)} == {"p", "b", "c", "d", "e", "s"}
-    assert {"p′", "b′", "c′", "d′", "e′", "s′", "s₁′", "s₂′", "n₂′", "n₄′", "n₅′"} <= {
+    assert {"p′", "b′", "c′", "d′", "e′", "s′", "σ₁′", "σ₂′", "n₂′", "n₄′", "n₅′"} <= {
         i.text for i in acc.items if isinstance(i, Label)}

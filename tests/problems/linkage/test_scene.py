@@ -407,11 +407,11 @@ def test_a_wrong_triad_is_refused_in_one_line(old: str, new: str, where: str, wo
 
 @pytest.mark.parametrize("extra, where", [
     ("\n[cycle]\npositions = 12\n", "cycle"),
-    ('\n[forces]\nforce = [{link = "3", point = "C", force_N = 50, angle_deg = -90}]\n', "triad"),
+    ("\n[characteristics]\n", "characteristics"),
 ])
 def test_what_a_class_iii_group_cannot_do_yet_is_refused(extra: str, where: str) -> None:
     text = SIXBAR_III.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = []') + extra
     err = refusal(text, "six.toml")
     assert "\n" not in str(err)
-    assert any(path == where and "class III group is solved in a linkage scene (polygons, instant centres) only" in reason
+    assert any(path == where and "class III group is solved in linkage scenes (polygons, instant centres) and force scenes only" in reason
                for path, reason in err.problems), err.problems

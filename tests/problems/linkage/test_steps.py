@@ -161,7 +161,7 @@ def test_a_class_iii_group_is_protocolled_by_assurs_point():
         "through s draw a line ⟂ SE",
         "e = the intersection of the two lines",
         "draw △sec ∼ △SEC, the letters in the same order (velocity image): c:",
-        "from n₂′ lay off n₂′s₁′ ∥ SC, from S towards C",
+        "from n₂′ lay off n₂′σ₁′ ∥ SC, from S towards C",
         "s′ = the intersection of the two lines",
         "from s′ lay off s′n₃′ ∥ ES, from E towards S",
         "draw △s′e′c′ ∼ △SEC, the letters in the same order (acceleration image): c′:",
