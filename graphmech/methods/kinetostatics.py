@@ -38,7 +38,7 @@ from typing import Any, cast
 
 import numpy as np
 
-from graphmech.errors import DegenerateConstruction, NotApplicable
+from graphmech.errors import DegenerateConstruction
 from graphmech.mechanisms.forces import ForceModel, LinkMass
 from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, SliderInput, Triad
 from graphmech.tolerances import PARALLEL_SIN, SHALLOW_DEG
@@ -786,14 +786,15 @@ def _triad_group(y: Triad, kin: PolygonKinematics, loads: _Loads, owner: dict[st
     m_s = m_s + sum((_cross(P[y.outer[k]] - S, rt[k]) for k in range(3)), np.zeros(n))
     arm = _cross(P[y.outer[k3]] - S, e[k3])  # the third Rⁿ's moment per newton about S
     scale = np.abs(P[y.outer[k3]] - S) + np.abs(P[y.outer[k3]] - P[y.inner[k3]])
-    _guard_parallel(np.abs(arm) / np.where(scale > 0, scale, 1.0), kin.valid,
+    _guard_parallel(np.abs(arm) / np.where(scale > 0, scale, 1.0), kin.valid,  # the group locks
                     f"{name}: the three binary links' lines meet at one point (the group locks)")
     x3 = -m_s / np.where(np.abs(arm) > 0, arm, 1.0)
+    arm_sin = np.abs(arm) / np.where(scale > 0, scale, 1.0)  # ~ sin of the third link's line against S
     rn = {k3: x3 * e[k3]}
     s = sum(rt, np.zeros(n, complex)) + known + rn[k3]
     det = _cross(e[i], e[j2])
     closing_sin = np.abs(det)
-    closing[name] = closing_sin
+    closing[name] = np.minimum(closing_sin, arm_sin)  # flagged when either cut is shallow
     safe = np.where(closing_sin > PARALLEL_SIN, det, 1.0)
     rn[i] = _cross(-s, e[j2]) / safe * e[i]
     rn[j2] = _cross(e[i], -s) / safe * e[j2]

@@ -204,7 +204,7 @@ def mech_direction(b: "LinkageConstruction", a: str, c: str, text: str) -> str:
 
 def _triad(b: "LinkageConstruction", y: Triad) -> None:
     # Assur's special point S (on BC and FD, a point of the ternary link): v_S = v_B + (⟂BC) = v_F + (⟂FD)
-    (B, F, G), (C, D, Ec) = y.outer, y.inner
+    C, D, Ec = y.inner
     i, j = y.assur
     k = 3 - i - j  # the third binary link
     S = assur_point(b, y)

@@ -140,7 +140,7 @@ def test_a_class_iii_group_is_drawn_with_its_plate_and_assurs_point():
     """kin.class_iii_sixbar: the ternary link 3 a plate, B–C, F–D, G–E bars, S where BC and FD extended meet."""
     from graphmech.drawing.primitives import Plate
 
-    an, sheet = sheet_of("kin.class_iii_sixbar")
+    _, sheet = sheet_of("kin.class_iii_sixbar")
     mech = panel(sheet, "mechanism")
     labels = {i.text: i.anchor for i in mech.items if isinstance(i, Label)}
     assert {"A", "B", "C", "D", "E", "F", "G", "S", "1", "2", "3", "4", "5"} <= set(labels)
