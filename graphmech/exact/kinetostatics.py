@@ -26,7 +26,7 @@ import numpy as np
 from graphmech.errors import NotApplicable
 from graphmech.exact.linkage import Kinematics, solve as solve_kinematics
 from graphmech.mechanisms.forces import ForceModel
-from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, SliderInput
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, SliderInput, Triad
 
 __all__ = ["ExactForces", "solve_forces", "pairs"]
 
@@ -91,6 +91,13 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
             raise NotApplicable(f"the matrix method here takes RRR, RRP (on a frame guide), RPR and RPP groups, "
                                 f"not {y.kind} with a guide on a moving link" if isinstance(y, RRP) else
                                 f"the matrix method here takes RRR, RRP, RPR and RPP groups, not {y.kind}")
+        if isinstance(y, Triad):  # three binary links on known points, each pinned to the ternary link
+            for k in range(3):
+                if y.outer[k] not in on and y.outer[k] in extra:
+                    on[y.outer[k]] = extra[y.outer[k]]
+                revolutes += [(on[y.outer[k]], y.links[k], y.outer[k]), (y.links[k], y.links[3], y.inner[k])]
+                on.setdefault(y.inner[k], y.links[3])
+            continue
         for name in (y.p, getattr(y, "q", y.p)):
             if name not in on and name in extra:
                 on[name] = extra[name]
@@ -145,7 +152,7 @@ def solve_forces(linkage: Linkage, model: ForceModel, positions: np.ndarray,
     ref = {k: kin.point[pts[k][0]] for k in links}  # moments of link k about its first point
     m = 2 * len(revolutes) + 2 * len(sliders) + 1
     if m != 3 * len(links):
-        raise NotApplicable(f"{m} unknowns for {3 * len(links)} equations: not a class-II linkage")
+        raise NotApplicable(f"{m} unknowns for {3 * len(links)} equations: not a linkage of Assur groups")
     A = np.zeros((n, m, m))
     rhs = np.zeros((n, m))
 

@@ -42,7 +42,9 @@ from graphmech.mechanisms.linkage import (
     LinkGuide,
     LinkPoint,
     SliderInput,
+    Triad,
 )
+from graphmech.exact.triad import solve_triad
 
 __all__ = ["Kinematics", "solve"]
 
@@ -371,6 +373,18 @@ def _prp(st: _State, y: PRP) -> None:
                     np.broadcast_to(al, (st.n,)).astype(float))
 
 
+def _triad(st: _State, y: Triad) -> None:
+    """A class III group: its loops eliminated to one equation in θ2 (:mod:`graphmech.exact.triad`)."""
+    sol = solve_triad(y, st.pts)
+    for bad in np.flatnonzero(~sol.valid):
+        st.fail(np.arange(st.n) == bad, sol.reason[bad], dead_centre=bool(sol.assembled[bad]))
+    for k, name in enumerate(y.inner):
+        st.pts[name] = (sol.z[k], sol.v[k], sol.a[k])
+    for row, link in zip((0, 2, 3), y.links[:3]):  # the solution's rows: θ2, θ3, θ4, θ5
+        st.rotating(link, sol.theta[row], sol.omega[row], sol.alpha[row])
+    st.rotating(y.links[3], sol.theta[1], sol.omega[1], sol.alpha[1])
+
+
 def _link_point(st: _State, pt: LinkPoint, frame_link: str) -> None:
     """``X = U + (along + i·left)·û`` on a rigid link: ``v = v_U + iω·UX``, ``a = a_U + (iα − ω²)·UX``."""
     zu, vu, au = st.pts[pt.base[0]]
@@ -392,7 +406,7 @@ def _link_point(st: _State, pt: LinkPoint, frame_link: str) -> None:
 # --------------------------------------------------------------------------------------------
 # Structure check and solving order (once per call; collects every problem, then raises)
 
-_Step = Union[Crank, SliderInput, RRR, RRP, RPR, RPP, PRP, LinkPoint]
+_Step = Union[Crank, SliderInput, RRR, RRP, RPR, RPP, PRP, Triad, LinkPoint]
 
 
 def _plan(linkage: Linkage) -> list[_Step]:
@@ -499,6 +513,14 @@ def _plan(linkage: Linkage) -> list[_Step]:
                 problems.append((key + ".slot_angle", "slot parallel to the guide: C is undefined"))
             new_points(key + ".c", y.c, *y.coincident)
             translating.update(y.links)
+        elif isinstance(y, Triad):
+            need(key, *y.outer)
+            if not min(y.lengths + y.ternary) > 0:
+                problems.append((key + ".lengths", "lengths must be > 0"))
+            a, b, c = y.ternary
+            if not (a < b + c and b < a + c and c < a + b):
+                problems.append((key + ".ternary", "the ternary link's sides do not make a triangle"))
+            new_points(key + ".inner", *y.inner)
         else:
             problems.append((key, f"unknown dyad {type(y).__name__}"))
             continue
@@ -631,6 +653,8 @@ def solve(linkage: Linkage, positions: np.ndarray) -> Kinematics:
                 _rpp(st, step)
             elif isinstance(step, PRP):
                 _prp(st, step)
+            elif isinstance(step, Triad):
+                _triad(st, step)
             else:
                 _link_point(st, step, linkage.frame_link)
 

@@ -27,6 +27,12 @@ Dyads (Assur groups of class II)
          A guide is a frame :class:`Guide` or a :class:`LinkGuide`, the line through two points of
          a moving link; the coincident point of that link at C is C<link> ("C1"), and the blocks'
          own points at C are C<i>, C<j> (both C): v_C = v_C1 + v_rel (∥ the guide).
+
+Class III group (:class:`Triad`)
+--------------------------------
+A ternary link carrying C, D, E, each joined by a binary link to a known point (B–C, F–D,
+G–E): four links, six revolutes. It is one more entry of ``Linkage.dyads`` (the groups in
+assembly order), solved as a whole — its position has no closed form.
 """
 from __future__ import annotations
 
@@ -214,7 +220,40 @@ class PRP:
         return (self.c + self.links[0], self.c + self.links[1]) + moving
 
 
-Dyad = Union[RRR, RRP, RPR, RPP, PRP]
+@dataclass(frozen=True)
+class Triad:
+    """A class III Assur group RRR-III: ternary link ``links[3]`` carrying ``inner`` = (C, D, E);
+    binary link ``links[k]`` joins ``outer[k]`` (a known point) to ``inner[k]``.
+
+    ``lengths`` = (l_BC, l_FD, l_GE); ``ternary`` = (l_CD, l_DE, l_EC), the ternary link's sides.
+    ``start`` (m): the joints C, D, E near the wanted assembly (the book's figure) — it picks
+    the assembly (of up to six) and the ternary triangle's hand (E left or right of C→D).
+    ``assur``: the two binary links whose lines meet at the special (Assur) point S of the
+    ternary link, by index into ``outer`` (default the first two).
+    """
+
+    outer: tuple[str, str, str]
+    inner: tuple[str, str, str]
+    links: tuple[str, str, str, str]
+    lengths: tuple[float, float, float]
+    ternary: tuple[float, float, float]
+    start: tuple[tuple[float, float], tuple[float, float], tuple[float, float]]
+    assur: tuple[int, int] = (0, 1)
+    kind: Literal["RRR-III"] = "RRR-III"
+
+    @property
+    def hand(self) -> float:
+        """+1 when E lies left of C→D in ``start`` (the ternary triangle's orientation), else −1."""
+        (cx, cy), (dx, dy), (ex, ey) = self.start
+        return 1.0 if (dx - cx) * (ey - cy) - (dy - cy) * (ex - cx) >= 0.0 else -1.0
+
+    @property
+    def name(self) -> str:
+        """The group as the book names it by its joints, e.g. "B-C, F-D, G-E (CDE)"."""
+        return ", ".join(f"{o}-{i}" for o, i in zip(self.outer, self.inner)) + f" ({''.join(self.inner)})"
+
+
+Dyad = Union[RRR, RRP, RPR, RPP, PRP, Triad]
 
 
 @dataclass(frozen=True)
@@ -287,6 +326,10 @@ class Linkage:
                     on = y.on_guide(k)
                     if isinstance(g, LinkGuide) and on is not None:
                         add(g.link, on)
+            elif isinstance(y, Triad):
+                for k in range(3):
+                    add(y.links[k], y.outer[k], y.inner[k])
+                add(y.links[3], *y.inner)
         for pt in self.points:
             add(pt.link, pt.name)
         return out

@@ -16,7 +16,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from graphmech.geometry import kernels as K
-from graphmech.mechanisms.linkage import PRP, Crank, Guide, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.mechanisms.linkage import PRP, Crank, Guide, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput, Triad
 from graphmech.methods import elements as E
 from graphmech.methods import measure
 from graphmech.methods.linkage_construction import ACCELERATION_POLE
@@ -45,7 +45,7 @@ def add_pole(b: "LinkageConstruction") -> None:
 
 def add(b: "LinkageConstruction", part: Part) -> None:
     build: dict[type, Callable[..., None]] = {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp,
-                                              RPR: _rpr, RPP: _rpp, PRP: _prp, LinkPoint: _point}
+                                              RPR: _rpr, RPP: _rpp, PRP: _prp, LinkPoint: _point, Triad: _triad}
     build[type(part)](b, part)
 
 
@@ -283,3 +283,72 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
     E.vector(b, PANEL, POLE, img)
     E.vector(b, PANEL, b.acc[U], img, "construction", kind="segment")
     E.vector(b, PANEL, b.acc[V], img, "construction", kind="segment")
+
+
+def _lay_normal(b: "LinkageConstruction", start: str, link: str, X: str, Y: str, tag: str, text: str,
+                names: tuple[str, str]) -> str:
+    """Lay off ω_link²·|XY|/μa from ``start`` in the sense X→Y (X, Y steps of the kinematic diagram,
+    ``names`` their letters): a normal component of a point that is no named point (Assur's S)."""
+    k = b.mu_l / b.scales["a"]
+
+    def kern(ops: Ops, s: Components, x: Components, y: Components, om: Components) -> Components:
+        w2 = (om[0] * om[1]) ** 2
+        return (s[0] + w2 * k * (y[0] - x[0]), s[1] + w2 * k * (y[1] - x[1]))
+
+    while b.g.has(E.own(PANEL, tag)):
+        tag += "'"
+    n = b.g.add(E.own(PANEL, tag), "point", kern, (start, X, Y, b.omega[link]), role="construction", panel=PANEL,
+                label=tag, text=text, say=("normal", link, *names))
+    E.vector(b, PANEL, start, n, "construction")
+    return n
+
+
+def _triad(b: "LinkageConstruction", y: Triad) -> None:
+    # a_S = a_P + aⁿ_XP + aⁿ_SX + (⟂ PX) for both binary links whose lines meet at S (S on PX, so
+    # both tangential terms are ⟂ PX); then the third joint from S, the other two from it.
+    from graphmech.methods.velocity import assur_point, mech_direction
+
+    i, j = y.assur
+    k = 3 - i - j
+    t = y.links[3]
+    S = assur_point(b, y)
+    normal = {n: _normal(b, y.links[n], y.inner[n], y.outer[n]) for n in range(3)}
+    tline = {n: _tangential_line(b, normal[n], y.inner[n], y.outer[n]) for n in range(3)}
+    via: dict[int, str] = {}
+    for n in (i, j):
+        X = y.inner[n]
+        ns = _lay_normal(b, normal[n], t, S, b.mech[X], f"σ{n + 1}'",
+                         f"lay off ω{t}²·l_S{X}/μa ∥ S{X} (aⁿ of S about {X})", ("S", X))
+        via[n] = E.line(b, PANEL, f"⟂{y.outer[n]}·{X}@S{n}", K.line_perpendicular_to,
+                        (ns, E.direction(b, y.outer[n], X)), f"through it draw ⟂ {y.outer[n]}{X} (a^t_S{X} + a^t_{X}{y.outer[n]})",
+                        say=("perp", y.outer[n], X, f"a^t_S{X}"))
+    s = b.g.add(E.own(PANEL, "s'"), "point", K.intersect_lines, (via[i], via[j]), role="construction",
+                text="s′ = the two lines ⟂ to the binary links through S meet", panel=PANEL, label="s'", say=("meet",))
+    b.g.extend_line(via[i], s)
+    b.g.extend_line(via[j], s)
+    P3, X3 = y.outer[k], y.inner[k]
+    n3 = _lay_normal(b, s, t, b.mech[X3], S, f"n{t}'", f"lay off ω{t}²·l_{X3}S/μa ∥ {X3}S (aⁿ_{X3}S)", (X3, "S"))
+    ls = E.line(b, PANEL, f"⟂S·{X3}@{n3}", K.line_perpendicular_to, (n3, mech_direction(b, S, b.mech[X3], f"S{X3}")),
+                f"through it draw ⟂ S{X3} (a^t_{X3}S)", say=("perp", "S", X3, f"a^t_{X3}S"))
+    img3 = E.image(b, PANEL, b.acc, X3, label(X3), K.intersect_lines, (ls, tline[k]),
+                   f"{label(X3)} = (⟂S{X3}) ∩ (⟂{P3}{X3} through {_lbl(b, normal[k])})", say=("meet",))
+    b.g.extend_line(ls, img3)
+    b.g.extend_line(tline[k], img3)
+    E.vector(b, PANEL, POLE, img3)
+    _close(b, y.links[k], X3, P3, normal[k], img3)
+    # The other two joints by the acceleration image △s′x3′x′ ∼ △S X3 X; their tangential lines
+    # ⟂ the binary links pass through them, and α of each link is read there.
+    for n in (i, j):
+        P, X = y.outer[n], y.inner[n]
+        img = E.image(b, PANEL, b.acc, X, label(X), K.similar_point, (S, b.mech[X3], b.mech[X], s, img3),
+                      f"{label(X)}: △s′{label(X3)}{label(X)} ∼ △S{X3}{X} (acceleration image)",
+                      say=("image", "S", X3, X))
+        b.g.extend_line(tline[n], img)
+        E.vector(b, PANEL, POLE, img)
+        _close(b, y.links[n], X, P, normal[n], img)
+        if n == i:  # α of the ternary link from a^t_{X X3} (one is enough)
+            nt = _normal(b, t, X, X3)
+            _close(b, t, X, X3, nt, img)
+    C, D, Ec = y.inner
+    for U, V in ((C, D), (D, Ec), (Ec, C)):  # the ternary link's acceleration image
+        E.vector(b, PANEL, b.acc[U], b.acc[V], "construction", kind="segment")

@@ -10,7 +10,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from graphmech.geometry import kernels as K
-from graphmech.mechanisms.linkage import PRP, Crank, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.mechanisms.linkage import PRP, Crank, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput, Triad
 
 if TYPE_CHECKING:
     from graphmech.geometry.kernels import Components, Ops
@@ -32,7 +32,7 @@ def add_frame(b: "LinkageConstruction") -> None:
 
 def add(b: "LinkageConstruction", part: Part) -> None:
     build: dict[type, Callable[..., None]] = {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp,
-                                              RPR: _rpr, RPP: _rpp, PRP: _prp, LinkPoint: _point}
+                                              RPR: _rpr, RPP: _rpp, PRP: _prp, LinkPoint: _point, Triad: _triad}
     build[type(part)](b, part)
 
 
@@ -212,3 +212,92 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
     b.mech[pt.name] = b.g.add(pt.name, "point", placed, (b.mech[U], b.mech[V]), role="given",
                               text=f"{pt.name} on link {pt.link}", panel=PANEL, label=pt.name,
                               say=("on_link", pt.name, pt.link, U, V))
+
+
+#: Newton iterations at most for a class III group's position (quadratic convergence from a
+#: start near the assembly takes 5–8; the rest is for a start further off, steps capped).
+NEWTON_STEPS = 60
+#: The largest Newton step in either angle, rad: a far start walks instead of jumping branches.
+NEWTON_MAX_STEP = 0.5
+
+
+def triad_position(ops: Ops, b_: Components, f_: Components, g_: Components, *, lengths: tuple[float, float, float],
+                   ternary: tuple[float, float, float], hand: float, start: tuple[Components, Components, Components],
+                   name: str) -> Components:
+    """A class III group's joints (Cx, Cy, Dx, Dy, Ex, Ey) by Newton's method on its two loop equations.
+
+    Unknowns: θ2 (of BC) and θ3 (of CD); ``C = B + l2·e^{iθ2}``, ``D = C + l_CD·e^{iθ3}``, E = C +
+    l_CE·e^{i(θ3 ± γ)}; equations ``|D − F|² = l4²``, ``|E − G|² = l5²``. The start is the stated
+    figure's C, D (θ2 from B to the start's C). The condition number reported is that of the
+    Jacobian scaled by the lengths (σmax/σmin), infinite where the group locks.
+    """
+    import numpy as np
+
+    l2, l4, l5 = lengths
+    a, bb, c = ternary
+    cos_g = (a * a + c * c - bb * bb) / (2.0 * a * c)
+    rot = complex(cos_g, hand * math.sqrt(max(0.0, 1.0 - cos_g * cos_g)))
+    zb = np.asarray(b_[0], dtype=float) + 1j * np.asarray(b_[1], dtype=float)
+    zf = np.asarray(f_[0], dtype=float) + 1j * np.asarray(f_[1], dtype=float)
+    zg = np.asarray(g_[0], dtype=float) + 1j * np.asarray(g_[1], dtype=float)
+    c0, d0 = complex(*start[0]), complex(*start[1])
+    th2 = np.angle(c0 - zb) + 0.0 * zf.real
+    th3 = np.full_like(th2, np.angle(d0 - c0))
+    for _ in range(NEWTON_STEPS):
+        r2 = l2 * np.exp(1j * th2)
+        rd = a * np.exp(1j * th3)
+        re = c / a * rd * rot
+        df, eg = zb + r2 + rd - zf, zb + r2 + re - zg
+        g1 = (df * df.conjugate()).real - l4 * l4
+        g2 = (eg * eg.conjugate()).real - l5 * l5
+        # ∂|X − F|²/∂θ = 2 (X − F)·(i r): the dot product of plane vectors as Re(ū·w)
+        j11, j12 = 2 * (df.conjugate() * 1j * r2).real, 2 * (df.conjugate() * 1j * rd).real
+        j21, j22 = 2 * (eg.conjugate() * 1j * r2).real, 2 * (eg.conjugate() * 1j * re).real
+        det = j11 * j22 - j12 * j21
+        det = np.where(det == 0.0, 1e-300, det)
+        d2 = np.clip((j22 * g1 - j12 * g2) / det, -NEWTON_MAX_STEP, NEWTON_MAX_STEP)
+        d3 = np.clip((j11 * g2 - j21 * g1) / det, -NEWTON_MAX_STEP, NEWTON_MAX_STEP)
+        th2, th3 = th2 - d2, th3 - d3
+        if np.max(np.abs(d2) + np.abs(d3)) < 1e-15:
+            break
+    r2, rd = l2 * np.exp(1j * th2), a * np.exp(1j * th3)
+    re = c / a * rd * rot
+    zc = zb + r2
+    zd, ze = zc + rd, zc + re
+    miss = np.maximum(np.abs(np.abs(zd - zf) - l4) / l4, np.abs(np.abs(ze - zg) - l5) / l5)
+    bad = ops.guard(miss > 1e-9, lambda: f"{name}: Newton's method from the start found no assembly "
+                    "(out of reach, or the start is too far from it)", assembly=True)
+    # The Jacobian scaled by rows (l4, l5) and by columns (l2; l_CD for the ternary link's angle,
+    # one scale per column, so that scaling keeps a singular matrix singular)
+    m11 = ((zd - zf).conjugate() * 1j * r2).real / (l4 * l2)
+    m12 = ((zd - zf).conjugate() * 1j * rd).real / (l4 * a)
+    m21 = ((ze - zg).conjugate() * 1j * r2).real / (l5 * l2)
+    m22 = ((ze - zg).conjugate() * 1j * re).real / (l5 * a)
+    fro = m11 * m11 + m12 * m12 + m21 * m21 + m22 * m22
+    mdet = np.abs(m11 * m22 - m12 * m21)
+    cond = (fro + np.sqrt(np.maximum(fro * fro - 4.0 * mdet * mdet, 0.0))) / np.maximum(2.0 * mdet, 1e-300)
+    ops.cond(cond if ops.batch else float(cond))
+    out = (zc.real, zc.imag, zd.real, zd.imag, ze.real, ze.imag)
+    if ops.batch:
+        return tuple(ops.where(bad, 0.0, v) for v in out)
+    return tuple(float(v) for v in out)
+
+
+def _triad(b: "LinkageConstruction", y: Triad) -> None:
+    mu = b.mu_l
+    (B, F, G), (C, D, E) = y.outer, y.inner
+    start = tuple(b.to_drawing(p) for p in y.start)
+    lengths = (y.lengths[0] / mu, y.lengths[1] / mu, y.lengths[2] / mu)
+    ternary = (y.ternary[0] / mu, y.ternary[1] / mu, y.ternary[2] / mu)
+
+    def joints(ops: Ops, pb: Components, pf: Components, pg: Components) -> Components:
+        return triad_position(ops, pb, pf, pg, lengths=lengths, ternary=ternary, hand=y.hand,
+                              start=start, name=f"class III group {y.name}")  # type: ignore[arg-type]
+
+    group = b.g.add(f"m:({C}{D}{E})", "scalar", joints, (b.mech[B], b.mech[F], b.mech[G]), role="hidden",
+                    text=f"{C}, {D}, {E}: the class III group's loops solved by Newton's method from the start",
+                    panel=PANEL, say=("triad", C, D, E))
+    for k, (P, Q) in enumerate(zip(y.inner, y.outer)):
+        b.mech[P] = b.g.add(P, "point", lambda ops, t, k=k: (t[2 * k], t[2 * k + 1]), (group,), role="given",
+                            text=f"{P} of the class III group (joined to {Q})", panel=PANEL, label=P,
+                            say=("triad_joint", P, Q))

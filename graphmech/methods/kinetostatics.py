@@ -40,7 +40,7 @@ import numpy as np
 
 from graphmech.errors import DegenerateConstruction, NotApplicable
 from graphmech.mechanisms.forces import ForceModel, LinkMass
-from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, LinkGuide, SliderInput
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, LinkGuide, SliderInput, Triad
 from graphmech.tolerances import PARALLEL_SIN, SHALLOW_DEG
 
 #: |sin| of the angle between the two unknown directions of a polygon below which a hand
@@ -316,6 +316,9 @@ def carriers(linkage: Linkage) -> dict[str, str]:
             out.setdefault(y.coincident[1], y.block_link)
         elif isinstance(y, RPP):
             out.setdefault(y.c, y.links[1])
+        elif isinstance(y, Triad):
+            for x in y.inner:
+                out.setdefault(x, y.links[3])
     for pt in linkage.points:
         out.setdefault(pt.name, pt.link)
     return out
@@ -489,6 +492,9 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
             loads.force(j.a, Force(f"R_{j.b}{j.a}", -r_on_b, P[j.point], j.point))
 
     for y in reversed(linkage.dyads):  # the group farthest from the driver first
+        if isinstance(y, Triad):
+            _triad_group(y, kin, loads, owner, friction, found, reactions, joints, groups, closing, keep_groups)
+            continue
         if isinstance(y, RPR):
             _rpr_group(y, kin, loads, owner, friction, found, reactions, joints, groups, closing, fr,
                        keep_groups)
@@ -745,6 +751,74 @@ def _guide_point(C: np.ndarray, t: complex, r: np.ndarray, m: np.ndarray) -> np.
     s·(t × R) = M."""
     tr = _cross(np.full(C.shape, t), r)
     return C + np.where(np.abs(tr) > 0, m / np.where(np.abs(tr) > 0, tr, 1.0), 0.0) * t
+
+
+def _triad_group(y: Triad, kin: PolygonKinematics, loads: _Loads, owner: dict[str, str],
+                 friction: Callable[[Joint], None], found: Callable[[Joint, np.ndarray], None], reactions: _Reactions,
+                 joints: list[Joint], groups: list[GroupPolygon], closing: dict[str, np.ndarray],
+                 keep_groups: bool) -> None:
+    """A class III group by Assur's special point, as for its polygons.
+
+    Each outer joint's reaction R_k = Rᵗ_k (⟂ its binary link, from that link's moments about
+    its inner joint) + Rⁿ_k (∥ the link). S, where the lines of two binary links (``assur``) meet,
+    is the one point about which the group's moments hold only the third Rⁿ: it comes from them;
+    the group's force polygon then closes on the other two directions. Each inner joint's reaction
+    closes its binary link's polygon.
+    """
+    n = kin.valid.shape[0]
+    P = kin.point
+    t = y.links[3]
+    outer = [Joint(y.outer[k], owner[y.outer[k]], y.links[k]) for k in range(3)]
+    inner = [Joint(y.inner[k], y.links[k], t) for k in range(3)]
+    for j in (*outer, *inner):
+        friction(j)
+    rt, e = [], []
+    for k in range(3):
+        r, u = _tangential(loads, y.links[k], P[y.inner[k]], P[y.outer[k]])
+        rt.append(r)
+        e.append(u)
+    i, j2 = y.assur
+    k3 = 3 - i - j2
+    name = f"group {'–'.join(y.links)}"
+    # S = P_i + a·e_i on the line of link j2 as well
+    sin_s = _cross(e[i], e[j2])
+    _guard_parallel(np.abs(sin_s), kin.valid, f"{name}: Assur's point S is at infinity "
+                    f"({y.outer[i]}{y.inner[i]} ∥ {y.outer[j2]}{y.inner[j2]})")
+    sin_s = np.where(np.abs(sin_s) > PARALLEL_SIN, sin_s, 1.0)
+    S = P[y.outer[i]] + _cross(P[y.outer[j2]] - P[y.outer[i]], e[j2]) / sin_s * e[i]
+    known = sum((loads.total(x, n) for x in y.links), np.zeros(n, complex))
+    m_s = sum((loads.moment_about(x, S) for x in y.links), np.zeros(n))
+    m_s = m_s + sum((_cross(P[y.outer[k]] - S, rt[k]) for k in range(3)), np.zeros(n))
+    arm = _cross(P[y.outer[k3]] - S, e[k3])  # the third Rⁿ's moment per newton about S
+    scale = np.abs(P[y.outer[k3]] - S) + np.abs(P[y.outer[k3]] - P[y.inner[k3]])
+    _guard_parallel(np.abs(arm) / np.where(scale > 0, scale, 1.0), kin.valid,  # the group locks
+                    f"{name}: the three binary links' lines meet at one point (the group locks)")
+    x3 = -m_s / np.where(np.abs(arm) > 0, arm, 1.0)
+    arm_sin = np.abs(arm) / np.where(scale > 0, scale, 1.0)  # ~ sin of the third link's line against S
+    rn = {k3: x3 * e[k3]}
+    s = sum(rt, np.zeros(n, complex)) + known + rn[k3]
+    det = _cross(e[i], e[j2])
+    closing_sin = np.abs(det)
+    closing[name] = np.minimum(closing_sin, arm_sin)  # flagged when either cut is shallow
+    safe = np.where(closing_sin > PARALLEL_SIN, det, 1.0)
+    rn[i] = _cross(-s, e[j2]) / safe * e[i]
+    rn[j2] = _cross(e[i], -s) / safe * e[j2]
+    chain: list[tuple[str, np.ndarray]] = [(f"R^t_{outer[k].a}{y.links[k]}", rt[k]) for k in range(3)]
+    chain += [(f.name, f.vector) for x in y.links for f in loads.forces.get(x, [])]
+    chain += [(f"R^n_{outer[k].a}{y.links[k]}", rn[k]) for k in (k3, j2, i)]
+    body = [f for x in y.links for f in loads.forces.get(x, [])]
+    couples = [c for x in y.links for c in loads.couples.get(x, [])]
+    for k in range(3):
+        link = y.links[k]
+        r_k = rt[k] + rn[k]
+        r_tk = -(r_k + loads.total(link, n))  # the ternary link on binary link k closes k's polygon
+        found(outer[k], r_k)
+        reactions[(t, link)], reactions[(link, t)] = r_tk, -r_tk
+        joints.append(inner[k])
+        body.append(Force(f"R_{outer[k].a}{link}", r_k, P[y.outer[k]], y.outer[k]))
+    if keep_groups:  # the third Rⁿ is known (moments about S) before the polygon closes on the other two
+        unknown = tuple(f"R^n_{outer[k].a}{y.links[k]}" for k in (j2, i))
+        groups.append(GroupPolygon(name, y.links, tuple(body), tuple(couples), tuple(chain), unknown, closing_sin))
 
 
 def _guard_parallel(sin: np.ndarray, valid: np.ndarray, why: str) -> None:

@@ -14,7 +14,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from graphmech.geometry import kernels as K
-from graphmech.mechanisms.linkage import PRP, Crank, Guide, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput
+from graphmech.mechanisms.linkage import PRP, Crank, Guide, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput, Triad
 from graphmech.methods import elements as E
 from graphmech.methods import measure
 from graphmech.methods.linkage_construction import VELOCITY_POLE
@@ -42,7 +42,7 @@ def add_pole(b: "LinkageConstruction") -> None:
 
 def add(b: "LinkageConstruction", part: Part) -> None:
     build: dict[type, Callable[..., None]] = {Crank: _crank, SliderInput: _slider, RRR: _rrr, RRP: _rrp,
-                                              RPR: _rpr, RPP: _rpp, PRP: _prp, LinkPoint: _point}
+                                              RPR: _rpr, RPP: _rpp, PRP: _prp, LinkPoint: _point, Triad: _triad}
     build[type(part)](b, part)
 
 
@@ -211,3 +211,82 @@ def _point(b: "LinkageConstruction", pt: LinkPoint) -> None:
     E.vector(b, PANEL, POLE, img)
     E.vector(b, PANEL, b.vel[U], img, "construction", kind="segment")
     E.vector(b, PANEL, b.vel[V], img, "construction", kind="segment")
+
+
+def assur_name(y: Triad) -> str:
+    """The step (and ``b.mech`` key) of a class III group's special point S on the kinematic diagram."""
+    return E.own("mechanism", f"S{''.join(y.inner)}")
+
+
+def assur_point(b: "LinkageConstruction", y: Triad) -> str:
+    """The special (Assur) point S of a class III group on the kinematic diagram: where the lines
+    of two binary links meet (``y.assur``), a point of the ternary link. Made once, shared by
+    both polygons."""
+    i, j = y.assur
+    (P, X), (Q, Z) = (y.outer[i], y.inner[i]), (y.outer[j], y.inner[j])
+    name = assur_name(y)
+    if b.g.has(name):
+        return name
+    li = b.g.add(f"m:{P}{X}-line", "line", K.line_parallel_to, (b.mech[P], E.direction(b, P, X)),
+                 role="construction", text=f"extend {P}{X}", panel="mechanism")
+    lj = b.g.add(f"m:{Q}{Z}-line", "line", K.line_parallel_to, (b.mech[Q], E.direction(b, Q, Z)),
+                 role="construction", text=f"extend {Q}{Z}", panel="mechanism")
+    s = b.g.add(name, "point", K.intersect_lines, (li, lj), role="construction",
+                text=f"S = {P}{X} ∩ {Q}{Z} (Assur's special point of the ternary link)", panel="mechanism",
+                label="S", say=("assur", P, X, Q, Z))
+    b.g.extend_line(li, b.mech[X], s)
+    b.g.extend_line(lj, b.mech[Z], s)
+    b.mech[name] = s  # drawn on the kinematic diagram by its step name (no point name is one)
+    return s
+
+
+def mech_direction(b: "LinkageConstruction", a: str, c: str, text: str) -> str:
+    """The direction between two steps of the kinematic diagram (a point that is no named point: S)."""
+    name = f"dir:{a}->{c}"
+    if not b.g.has(name):
+        b.g.add(name, "scalar", K.unit, (a, c), role="hidden", text=f"direction {text}", panel="mechanism")
+    return name
+
+
+def _triad(b: "LinkageConstruction", y: Triad) -> None:
+    # Assur's special point S (on BC and FD, a point of the ternary link): v_S = v_B + (⟂BC) = v_F + (⟂FD)
+    C, D, Ec = y.inner
+    i, j = y.assur
+    k = 3 - i - j  # the third binary link
+    S = assur_point(b, y)
+    perp: dict[int, str] = {}
+    for n in range(3):
+        P, X = y.outer[n], y.inner[n]
+        lp = _img_label(b, P)
+        perp[n] = E.line(b, PANEL, f"⟂{P}·{X}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, X)),
+                         f"through {lp} draw ⟂ {P}{X}", say=("perp", P, X))
+    tag = "s"
+    s = b.g.add(E.own(PANEL, tag), "point", K.intersect_lines, (perp[i], perp[j]), role="construction",
+                text=f"s = (⟂{y.outer[i]}{y.inner[i]} through {_img_label(b, y.outer[i])}) ∩ "
+                     f"(⟂{y.outer[j]}{y.inner[j]} through {_img_label(b, y.outer[j])}) (S on both lines)",
+                panel=PANEL, label=tag, say=("meet",))
+    b.g.extend_line(perp[i], s)
+    b.g.extend_line(perp[j], s)
+    # The third joint X3 from S: v_X3 = v_S + (⟂ S X3) = v_outer + (⟂ outer X3)
+    P3, X3 = y.outer[k], y.inner[k]
+    ls = E.line(b, PANEL, f"⟂S·{X3}@s", K.line_perpendicular_to, (s, mech_direction(b, S, b.mech[X3], f"S{X3}")),
+                f"through s draw ⟂ S{X3}", say=("perp", "S", X3))
+    img3 = E.image(b, PANEL, b.vel, X3, label(X3), K.intersect_lines, (ls, perp[k]),
+                   f"{label(X3)} = (⟂S{X3} through s) ∩ (⟂{P3}{X3} through {_img_label(b, P3)})", say=("meet",))
+    b.g.extend_line(ls, s, img3)
+    b.g.extend_line(perp[k], img3)
+    # The other two joints by the velocity image of the ternary link: △s x3 x ∼ △S X3 X (they lie on
+    # the lines ⟂ their binary links through the outer joints' images too: drawn through them)
+    for n in (i, j):
+        P, X = y.outer[n], y.inner[n]
+        img = E.image(b, PANEL, b.vel, X, label(X), K.similar_point, (S, b.mech[X3], b.mech[X], s, img3),
+                      f"{label(X)}: △s{label(X3)}{label(X)} ∼ △S{X3}{X} (velocity image)", say=("image", "S", X3, X))
+        b.g.extend_line(perp[n], img)
+    for n in range(3):
+        P, X = y.outer[n], y.inner[n]
+        E.vector(b, PANEL, POLE, b.vel[X])
+        E.vector(b, PANEL, b.vel[P], b.vel[X])
+        measure.omega(b, y.links[n], P, X)
+    for U, V in ((C, D), (D, Ec), (Ec, C)):  # the ternary link's velocity image
+        E.vector(b, PANEL, b.vel[U], b.vel[V], "construction", kind="segment")
+    measure.omega(b, y.links[3], C, D)

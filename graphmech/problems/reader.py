@@ -241,7 +241,7 @@ SEGMENT_NAME = re.compile(r"(?:[a-zπ][0-9]*['′]*){2,8}" + LABEL_SUFFIX)
 COMMON_KEYS = ("title", "show", "find", "scales", "units", "measured", "check", "page")
 #: The tables of a linkage: a linkage scene's own, and read by the kinds built on a linkage
 #: (forces, a flywheel's machine).
-LINKAGE_KEYS = ("frame", "driver", "dyad", "point")
+LINKAGE_KEYS = ("frame", "driver", "dyad", "point", "triad")
 
 MISSING: Any = object()
 

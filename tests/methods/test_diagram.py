@@ -131,3 +131,50 @@ def test_a_linkage_that_cannot_close_names_the_step_and_the_lengths():
     assert str(info.value) == ("C = circle(B, l2) ∩ circle(D, l3), left of B→D: cannot be assembled at 3: "
                                "|BD| = 0.26 m > l2 + l3 = 0.21 m")
     assert isinstance(info.value, ArithmeticError)
+
+
+# ---------------------------------------------------------------------------- class III group
+
+
+def _group_kernel(ops, b, start, lengths=(75.0, 60.0, 85.0)):
+    from graphmech.methods.diagram import triad_position
+
+    return triad_position(ops, b, (150.0, -20.0), (60.0, 150.0), lengths=lengths, ternary=(55.0, 65.0, 50.0),
+                          hand=1.0, start=start, name="class III group X")
+
+
+FIGURE_START = ((85.0, 73.0), (123.0, 34.0), (128.0, 98.0))
+
+
+def test_newton_finds_the_class_iii_assembly_nearest_the_start_to_the_last_bits():
+    from graphmech.exact.triad import assemblies
+    from graphmech.geometry.kernels import ScalarOps
+    from graphmech.mechanisms.linkage import Triad
+
+    b = (40.0 * math.cos(math.radians(60)), 40.0 * math.sin(math.radians(60)))
+    ops = ScalarOps()
+    got = _group_kernel(ops, b, FIGURE_START)
+    y = Triad(("B", "F", "G"), ("C", "D", "E"), ("2", "4", "5", "3"), (75.0, 60.0, 85.0), (55.0, 65.0, 50.0),
+              FIGURE_START)
+    want = min(assemblies(y, complex(*b), complex(150, -20), complex(60, 150)),
+               key=lambda t: abs(t[0] - complex(*FIGURE_START[0])))
+    for k in range(3):
+        assert abs(complex(got[2 * k], got[2 * k + 1]) - want[k]) < 1e-12 * 100
+    assert all(isinstance(v, float) for v in got)
+    assert 1.0 <= ops.conds["?"] < 10.0  # a well-shaped group: the Jacobian's condition number
+
+
+def test_newton_for_a_class_iii_group_batch_marks_the_positions_out_of_reach():
+    from graphmech.geometry.kernels import ArrayOps, ScalarOps
+
+    phi = np.radians([60.0, 250.0, 75.0])
+    b = (40.0 * np.cos(phi), 40.0 * np.sin(phi))
+    ops = ArrayOps(3)
+    got = _group_kernel(ops, b, FIGURE_START)
+    assert list(ops.bad) == [False, True, False]
+    (why,) = [text for _, text in ops.failures.values()]
+    assert why.startswith("cannot be assembled: class III group X: Newton's method from the start found no assembly")
+    assert got[0][1] == 0.0 and np.all(np.isfinite(got[0]))
+    one = ScalarOps()  # the scalar path raises, naming the step
+    with pytest.raises(AssemblyError, match="found no assembly"):
+        _group_kernel(one, (b[0][1], b[1][1]), FIGURE_START)

@@ -35,7 +35,7 @@ from graphmech.drawing.lettering import LETTER, number, point_name, scale_text
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Role, Segment,
                                          Sheet, Slider, clip_interval)
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Guide, Linkage
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Guide, Linkage, Triad
 from graphmech.methods.kinetostatics import (GroupPolygon, GuideReaction, KinetostaticSolution, Lever,
                                             PolygonKinematics)
 from graphmech.problems.linkage.figures import mechanism_items
@@ -291,7 +291,8 @@ def free_body_items(build: LinkageConstruction, kin: PolygonKinematics, group: G
     leaving: dict[str, list[tuple[float, float]]] = {}  # point → directions of the lines drawn from it
     for link in group.links:
         names = pts[link]
-        for a, b in zip(names, names[1:]):
+        ring = [(y.inner[2], y.inner[0]) for y in linkage.dyads if isinstance(y, Triad) and y.links[3] == link]
+        for a, b in [*zip(names, names[1:]), *ring]:  # a class III group's ternary link: its whole triangle
             za, zb = complex(kin.point[a][i]), complex(kin.point[b][i])
             pa, pb = to_mm(za), to_mm(zb)
             if math.dist(pa, pb) > 1e-9:

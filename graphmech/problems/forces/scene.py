@@ -25,7 +25,7 @@ from graphmech.mechanisms.forces import (
     RevoluteFriction,
     SlidingFriction,
 )
-from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Linkage, LinkGuide
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Linkage, LinkGuide, Triad
 from graphmech.scales import scale_out_of_range
 from graphmech.problems.linkage.scene import SHOW_CHOICES, read_linkage
 from graphmech.problems.reader import (
@@ -159,6 +159,10 @@ def _joint_lengths(linkage: Linkage) -> dict[str, float]:
         if isinstance(y, RRR):
             near(y.p, y.c, y.lengths[0])
             near(y.q, y.c, y.lengths[1])
+        elif isinstance(y, Triad):
+            for k in range(3):
+                near(y.outer[k], y.inner[k], y.lengths[k])
+                near(y.inner[k], y.inner[(k + 1) % 3], y.ternary[k])
         elif isinstance(y, RRP):
             near(y.p, y.c, y.length)
     return out
@@ -176,6 +180,8 @@ def _revolute_points(linkage: Linkage) -> set[str]:
             out |= {y.p, y.q}
         elif isinstance(y, RPP):
             out.add(y.p)
+        elif isinstance(y, Triad):
+            out |= {*y.outer, *y.inner}
     return out
 
 
@@ -350,7 +356,7 @@ def parse_forces_scene(data: Mapping[str, Any], source: str, top: Reader, order:
                     "the instant centres are drawn on a linkage sheet: show them in a scene without [forces] "
                     "(find still takes P13, omega_3_ic … here)")
     scales = read_scales(top)
-    linkage, positions, _ = read_linkage(top)
+    linkage, positions, _ = read_linkage(top, triads=True)
     for k, y in enumerate(linkage.dyads if linkage is not None else ()):
         if isinstance(y, PRP):  # its kinematics are drawn (a linkage scene); its force polygons are not built
             top.problem(f"dyad[{k}].type", "the force analysis takes RRR, RRP, RPR and RPP groups, not yet a PRP "

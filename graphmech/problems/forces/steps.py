@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from graphmech.drawing.lettering import subscript
-from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Triad
 from graphmech.methods.kinetostatics import construction_targets, kinetostatics
 from graphmech.problems.forces.check import (
     ForceAnalysis,
@@ -105,6 +105,11 @@ PHRASES: Phrases = {
                    "由构件{link}对{C}点取矩：R^t_{ai}·l_{PC} = ΣM_{C}，R^t_{ai} = {F} N ⟂ {PC}（按μF为{mm} mm）",
                    "моменты звена {link} относительно {C}: R^t_{ai}·l_{PC} = ΣM_{C}: R^t_{ai} = {F} N ⟂ {PC} "
                    "({mm} mm в масштабе μF)"),
+    "assur moments": ("moments of the whole group about S, where {PX} and {QZ} meet: only R^n_{ak} of link {k} has "
+                      "an arm there: R^n_{ak} = {F} N ∥ {RY} ({mm} mm at μF)",
+                      "整个杆组对{PX}与{QZ}的交点S取矩，只有构件{k}的R^n_{ak}有力臂：R^n_{ak} = {F} N ∥ {RY}（按μF为{mm} mm）",
+                      "моменты всей группы относительно точки S пересечения {PX} и {QZ}: плечо есть только у "
+                      "R^n_{ak} звена {k}: R^n_{ak} = {F} N ∥ {RY} ({mm} mm в масштабе μF)"),
     "bar reaction": ("moments of the bar {b} about {P} and of the block {k} about {X}: the bar's reaction on the "
                      "block R_{bk} = {F} N ⟂ the bar ({mm} mm at μF)",
                      "由导杆{b}对{P}、滑块{k}对{X}取矩：导杆对滑块的反力R_{bk} = {F} N ⟂ 导杆（按μF为{mm} mm）",
@@ -254,7 +259,7 @@ def _kinematic_targets(fa: ForceAnalysis, groups: bool) -> tuple[str, ...]:
         out += [f"omega_{link}" for link in b.omega if link != linkage.driver.link]
     if groups:
         for y in linkage.dyads:
-            if isinstance(y, PRP):  # no force polygons of its own (the forces scene refuses it)
+            if isinstance(y, (PRP, Triad)):  # no force polygons of its own (the forces scene refuses both)
                 continue
             ends = (y.p, y.q) if isinstance(y, (RRR, RPR)) else (y.p,)
             out += [f"l_{P}{y.c}" for P in ends if not isinstance(y, RPR)] + (
@@ -405,6 +410,8 @@ class _Forces:
         out = [self.free_body(g, dyad)]
         if isinstance(dyad, (RRR, RRP)):
             out += self.tangential(g, dyad)
+        elif isinstance(dyad, Triad):
+            out += self.triad_moments(g, dyad)
         elif isinstance(dyad, RPR):
             b, k = dyad.bar_link, dyad.block_link
             r = self.vec(self.sol.reactions[(b, k)])
@@ -460,6 +467,24 @@ class _Forces:
                                 mm=num(abs(v) / self.mu_F)))
         return out
 
+    def triad_moments(self, g: GroupPolygon, y: Triad) -> list[str]:
+        """A class III group: each Rᵗ from its binary link's moments, the third Rⁿ from the group's about S."""
+        out = []
+        chain = dict(g.chain)
+        for link, P, X in zip(y.links, y.outer, y.inner):
+            name = next(n for n in chain if n.startswith("R^t_") and n.endswith(link))
+            v = self.vec(chain[name])
+            out.append(self.say("tangential", link=link, C=letter(X), ai=name[4:], PC=letter(P) + letter(X),
+                                F=num(abs(v)), mm=num(abs(v) / self.mu_F)))
+        i, j = y.assur
+        k = 3 - i - j
+        name = next(n for n in chain if n.startswith("R^n_") and n.endswith(y.links[k]))
+        v = self.vec(chain[name])
+        out.append(self.say("assur moments", PX=letter(y.outer[i]) + letter(y.inner[i]),
+                            QZ=letter(y.outer[j]) + letter(y.inner[j]), ak=name[4:], k=y.links[k],
+                            RY=letter(y.outer[k]) + letter(y.inner[k]), F=num(abs(v)), mm=num(abs(v) / self.mu_F)))
+        return out
+
     def laid_off(self, g: GroupPolygon) -> list[str]:
         out = []
         first = True
@@ -487,6 +512,9 @@ class _Forces:
 
     def direction(self, name: str, y: Any) -> str:
         """The direction of an unknown of the polygon, as the draftsman rules it."""
+        if name.startswith("R^n_") and isinstance(y, Triad):
+            k = next(k for k in range(3) if name.endswith(y.links[k]))
+            return self.say("par", PC=letter(y.outer[k]) + letter(y.inner[k]))
         if name.startswith("R^n_"):
             link = name[-1]
             P = y.p if link == y.links[0] else y.q
@@ -519,7 +547,20 @@ class _Forces:
             if name.startswith("R^n_"):
                 v = self.vec(dict(g.chain)[name])
                 out.append(self.say("read", name=name, mm=num(abs(v) / self.mu_F), mu=mu, F=num(abs(v))))
-        if isinstance(y, (RRR, RRP)):
+        if isinstance(y, Triad):
+            t = y.links[3]
+            for link, P, X in zip(y.links, y.outer, y.inner):
+                a = next(n for n, _ in g.chain if n.startswith("R^t_") and n.endswith(link))[4:-len(link)]
+                mm, val = self.reaction(a, link)
+                out.append(self.say("sum", ai=a + link, mm=num(mm), mu=mu, F=num(val), also=self.also(a, link)))
+                out += self.components(a, link)
+                out += self.journal(a, link, P)
+                mm, val = self.reaction(t, link)
+                out.append(self.say("middle", i=link, ki=t + link, ai=a + link, C=letter(X), mm=num(mm), mu=mu,
+                                    F=num(val), also=self.also(t, link)))
+                out += self.components(t, link)
+                out += self.journal(t, link, X)
+        elif isinstance(y, (RRR, RRP)):
             i, k = y.links
             ends = [(i, y.p)] + ([(k, y.q)] if isinstance(y, RRR) else [])
             for link, P in ends:

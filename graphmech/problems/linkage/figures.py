@@ -13,8 +13,9 @@ import math
 from typing import Any, Mapping, Sequence
 
 from graphmech.mechanisms.linkage import (PRP, Crank, Guide, Linkage, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR,
-                                          SliderInput)
+                                          SliderInput, Triad)
 from graphmech.drawing.notation import WORDS, word
+from graphmech.methods.velocity import assur_name
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Primitive, Role, Segment, Sheet, Slider)
 from graphmech.drawing.lettering import LETTER, point_name, scale_text, subscript
@@ -289,6 +290,18 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
         elif isinstance(y, PRP) and y.c in pos:
             _prp_items(y, k, pos, items, lines, guide, number, other)
             hinges.append(y.c)
+        elif isinstance(y, Triad):
+            for n in range(3):
+                link(y.outer[n], y.inner[n], y.links[n])
+            for m0, m1 in ((0, 1), (1, 2), (2, 0)):
+                link(y.inner[m0], y.inner[m1], y.links[3])
+            hinges += [*y.outer, *y.inner]
+            s_at = pos.get(assur_name(y))
+            if s_at is not None and not other:  # Assur's point S: the two binary links extended to it
+                for n in y.assur:
+                    items.append(Segment(pos[y.inner[n]], s_at, "construction", dashed=True))
+                items.append(Label("S", s_at, (_unit(s_at, pos[y.inner[y.assur[0]]]),
+                                               _unit(s_at, pos[y.inner[y.assur[1]]])), LETTER))
     for pt in linkage.points:
         if pt.name not in pos:
             continue

@@ -27,6 +27,7 @@ from graphmech.mechanisms.linkage import (
     LinkPoint,
     Positions,
     SliderInput,
+    Triad,
 )
 from graphmech.tolerances import PARALLEL_SIN
 
@@ -391,6 +392,106 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
     return part
 
 
+_TRIAD_TYPES = ("RRR-III",)
+
+
+def _read_triad(r: Reader, index: int) -> _Part:
+    """One [[triad]]: a class III group — three binary links from known points to a ternary link."""
+    where = f"triad[{index}]"
+    part = _Part(where)
+    kind = r.string("type", choices=_TRIAD_TYPES, required=True)
+    if kind is None:
+        return _opaque(r, where, ("inner",), ("links",))
+    outer = r.name_list("outer", 3, r.point_name)
+    inner = r.name_list("inner", 3, r.point_name)
+    links = r.name_list("links", 4, r.link_id)
+    part.links = [(x, p) for x, p in links if x is not None]
+    part.needs = [(n, p) for n, p in outer if n is not None]
+    part.defines = [(n, p) for n, p in inner if n is not None]
+    seen: dict[str, str] = {}
+    for x, path in links:
+        if x is not None and x in seen:
+            r.problem(path, f"a class III group's four links must differ ({x} twice)")
+        seen.setdefault(x or "", path)
+    names = [x for x, _ in outer + inner]
+    for k, x in enumerate(names):
+        if x is not None and x in names[:k]:
+            r.problem((outer + inner)[k][1], f"the group's six joints must differ ({x} twice)")
+    for k in range(3):
+        lk = links[k][0]
+        if lk is not None:
+            part.carries.append((lk, [x for x in (outer[k][0], inner[k][0]) if x]))
+    ternary_link = links[3][0]
+    if ternary_link is not None:
+        part.carries.append((ternary_link, [x for x, _ in inner if x]))
+
+    def lengths(key: str, shape: str) -> tuple[float, float, float] | None:
+        given = r.quantity(key, "length")
+        if given is None:
+            return None
+        raw = r.numbers(given.value, r.at(given.key), 3, positive=True, shape=shape)
+        return None if raw is None else (given.si(raw[0]), given.si(raw[1]), given.si(raw[2]))
+
+    binary = lengths("lengths", "[l_BC, l_FD, l_GE]")
+    sides = lengths("ternary", "[l_CD, l_DE, l_EC]")
+    if sides is not None:
+        a, b, c = sides
+        if not (a < b + c and b < a + c and c < a + b):
+            r.problem(r.at(r.present("ternary") or "ternary"),
+                      "the ternary link's sides [l_CD, l_DE, l_EC] do not make a triangle")
+            sides = None
+    start: tuple[tuple[float, float], tuple[float, float], tuple[float, float]] | None = None
+    given = r.quantity("start", "length")
+    if given is not None:
+        path = r.at(given.key)
+        value = given.value
+        if not isinstance(value, list) or len(value) != 3:
+            r.problem(path, "must be [[x, y], [x, y], [x, y]]: C, D, E near the wanted assembly")
+        else:
+            raw = [r.numbers(v, f"{path}[{k}]", 2) for k, v in enumerate(value)]
+            pts = [(given.si(p[0]), given.si(p[1])) for p in raw if p is not None]
+            if len(pts) == 3:
+                (cx, cy), (dx, dy), (ex, ey) = pts
+                if (dx - cx) * (ey - cy) - (dy - cy) * (ex - cx) == 0.0:
+                    r.problem(path, "C, D, E in line: the start must show the ternary link's triangle")
+                else:
+                    start = (pts[0], pts[1], pts[2])
+    assur: tuple[int, int] = (0, 1)
+    if r.present("assur") is not None:
+        pair = r.name_list("assur", 2, r.link_id)
+        ids = [x for x, _ in links[:3]]
+        got = [ids.index(x) if x in ids else None for x, _ in pair]
+        for (x, at), idx in zip(pair, got):
+            if x is not None and idx is None:
+                r.problem(at, f"{x} is not one of the group's binary links ({', '.join(i or '?' for i in ids)})")
+        g0, g1 = got
+        if g0 is not None and g1 is not None:
+            if g0 == g1:
+                r.problem(pair[1][1], "name two different binary links")
+            else:
+                assur = (g0, g1)
+    r.finish()
+    o = [x for x, _ in outer if x is not None]
+    i_ = [x for x, _ in inner if x is not None]
+    ln = [x for x, _ in links if x is not None]
+    if (len(o) == 3 and len(i_) == 3 and len(ln) == 4 and binary is not None and sides is not None
+            and start is not None and len(seen) == 4):
+        part.model = Triad((o[0], o[1], o[2]), (i_[0], i_[1], i_[2]), (ln[0], ln[1], ln[2], ln[3]), binary, sides,
+                           start, assur)
+    return part
+
+
+def _assembly_order(dyads: list[_Part], triads: list[_Part]) -> list[_Part]:
+    """The groups in assembly order: each class III group right after the last dyad that makes one
+    of its outer joints (first of all when the frame, the driver or points make them)."""
+    out = list(dyads)
+    for t in triads:
+        needed = {n for n, _ in t.needs}
+        at = max((k + 1 for k, d in enumerate(out) if needed & {n for n, _ in d.defines}), default=0)
+        out.insert(at, t)
+    return out
+
+
 def _read_point(r: Reader, index: int) -> _Part:
     """One [[point]]: a point fixed on a link, placed from one or two points of that link."""
     part = _Part(f"point[{index}]")
@@ -444,13 +545,19 @@ def _read_point(r: Reader, index: int) -> _Part:
     return part
 
 
+#: Why a [[triad]] is refused where it is (a flywheel's machine; the full cycle).
+TRIAD_NOT_YET = ("a class III group is solved in linkage scenes (polygons, instant centres) and force scenes only "
+                 "so far: not in a full cycle or a flywheel's machine yet")
+
+
 def read_linkage(
-    top: Reader, crank_only: str = ""
+    top: Reader, crank_only: str = "", triads: bool = False
 ) -> tuple[Linkage | None, Positions | None, _Part]:
-    """[frame], [driver], [[dyad]] and [[point]], cross-checked.
+    """[frame], [driver], [[dyad]], [[triad]] and [[point]], cross-checked.
 
     Returns the linkage (None when anything in those tables was wrong), the driver's
-    positions and the driver as read. ``crank_only``: see :func:`_read_driver`.
+    positions and the driver as read. ``crank_only``: see :func:`_read_driver`. ``triads``:
+    whether the caller solves class III groups (else a [[triad]] is refused).
     """
     data = top.table
     before = len(top.problems)
@@ -460,6 +567,9 @@ def read_linkage(
     )
     driver, positions = _read_driver(top, frame, crank_only)
     dyads = [_read_dyad(r, k, frame) for k, r in enumerate(top.tables_at("dyad"))]
+    dyads = _assembly_order(dyads, [_read_triad(r, k) for k, r in enumerate(top.tables_at("triad"))])
+    if not triads and "triad" in data:
+        top.problem("triad", TRIAD_NOT_YET)
     points = [_read_point(r, k) for k, r in enumerate(top.tables_at("point"))]
     frame_link = _check_structure(
         top.problems, frame, (link_value, frame_link_given), driver, dyads, points
@@ -607,6 +717,13 @@ def _check_structure(
     return str(max(numeric) + 1) if numeric else "0"
 
 
+def _triad_refusals(top: Reader, data: Mapping[str, Any]) -> None:
+    """What a scene with a class III group may not ask for yet: one line each."""
+    for key in ("cycle", "characteristics"):
+        if key in data:
+            top.problem(key, TRIAD_NOT_YET)
+
+
 def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
                         ) -> Scene[CycleScene | None]:
     """The rest of :func:`graphmech.scene.parse_scene` for a linkage scene (with a full cycle or
@@ -629,7 +746,9 @@ def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order
     default = ("cycle",) if "cycle" in data else ("characteristics",) if "characteristics" in data else SHOW_CHOICES
     title, show, find = read_header(top, SHOW_CHOICES + CYCLE_SHOW_CHOICES, default)
     scales = read_scales(top)
-    linkage, positions, _ = read_linkage(top)
+    linkage, positions, _ = read_linkage(top, triads=True)
+    if "triad" in data:
+        _triad_refusals(top, data)
     cycle = None
     if "cycle" in data or "characteristics" in data or any(s in CYCLE_SHOW_CHOICES for s in show):
         cycle, positions = read_cycle(top, data, show, linkage, positions)

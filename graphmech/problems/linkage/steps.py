@@ -14,7 +14,7 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from graphmech.drawing.lettering import subscript
-from graphmech.mechanisms.linkage import PRP, RPP, RRP, Crank, LinkGuide, SliderInput
+from graphmech.mechanisms.linkage import PRP, RPP, RRP, Crank, LinkGuide, SliderInput, Triad
 from graphmech.methods.instant_centres import centre_name, pair
 from graphmech.methods.polygons import PANELS
 from graphmech.problems.instant_centres import check as ic_check
@@ -73,6 +73,16 @@ PHRASES: Phrases = {
     "on_link shift": ("mark {D} on link {link}: x = {x} mm, y = {y} mm from {U}",
                       "在构件{link}上距{U} x = {x} mm、y = {y} mm处定出{D}",
                       "отмечаем {D} на звене {link}: x = {x} mm, y = {y} mm от {U}"),
+    # a class III group (Triad)
+    "triad": ("the class III group {group}: {C}, {D}, {E} where all three binary links fit the ternary link "
+              "(its loop equations solved by Newton's method from the stated start; by hand, by trial)",
+              "Ⅲ级杆组{group}：三个二副杆与三副杆同时装配时的{C}、{D}、{E}（由其封闭矢量方程从给定初位用牛顿法解出；手工作图时用试凑法）",
+              "группа III класса {group}: {C}, {D}, {E}, при которых все три поводка сходятся с базисным звеном "
+              "(уравнения замкнутости решены методом Ньютона от заданного начального положения; вручную — подбором)"),
+    "triad_joint": ("mark {P}: {QP} = {r} mm", "定出{P}：{QP} = {r} mm", "отмечаем {P}: {QP} = {r} mm"),
+    "assur": ("extend {PX} and {QZ}: they meet at S, Assur's special point of the ternary link",
+              "延长{PX}与{QZ}交于S，即三副杆上的阿苏尔特殊点",
+              "продолжаем {PX} и {QZ} до пересечения в точке S — особой точке Ассура базисного звена"),
     # the polygons
     "pole velocity": ("choose {mu} and mark the pole p of the velocity polygon",
                       "取{mu}，任取极点p作速度多边形",
@@ -364,6 +374,15 @@ class _Words:
                     words.append(self.say("guide line", C=letter(C), x=num(x), y=num(yy),
                                           angle=num(math.degrees(g.angle))))
             return self.say("guides meet", a=words[0], b=words[1], C=letter(C))
+        if key == "triad":
+            group = next(d.name for d in self.b.linkage.dyads if isinstance(d, Triad) and d.inner == tuple(args))
+            return self.say("triad", group=group, C=letter(args[0]), D=letter(args[1]), E=letter(args[2]))
+        if key == "triad_joint":
+            P, Q = args
+            return self.say("triad_joint", P=letter(P), QP=letter(Q) + letter(P), r=num(self.mm(self.b.mech[Q], s.name)))
+        if key == "assur":
+            P, X, Q, Z = args
+            return self.say("assur", PX=letter(P) + letter(X), QZ=letter(Q) + letter(Z))
         # on_link: a point fixed on a link
         D, link, U, *V = args
         pt = self.part(D)

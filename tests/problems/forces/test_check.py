@@ -444,3 +444,34 @@ def test_a_rocker_drives_a_force_scene_over_several_angles_of_its_swing(tmp_path
         p13 = (B + t * (C - B)).real
         assert q[f"M_b@{phi}"]["graphical"] == pytest.approx(-4.0 * p13 / (p13 - 50.0), rel=1e-9)
         assert q[f"M_b@{phi}"]["rel_error"] < 1e-9
+
+
+# ---------------------------------------------------------------------------- a class III group
+
+
+def test_class_iii_group_by_assurs_point_agrees_with_the_matrix_method_and_the_lever():
+    doc = check_json(SCENES / "force.class_iii_sixbar.toml")
+    rows = {r["name"]: r for r in doc["quantities"]}
+    assert len(rows) == 11 and max(r["rel_error"] for r in rows.values()) < 1e-9
+    assert rows["M_b"]["graphical"] == pytest.approx(rows["M_b_lever"]["graphical"], rel=1e-12)
+    assert rows["M_b"]["exact"] == pytest.approx(5.7397544, abs=1e-6)
+    assert rows["R_61"]["graphical"] == pytest.approx(rows["R_12"]["graphical"], rel=1e-12)  # a massless crank
+
+
+def test_class_iii_group_with_friction_converges_to_the_matrix_method(tmp_path):
+    text = (SCENES / "force.class_iii_sixbar.toml").read_text(encoding="utf-8")
+    text += "\n[[forces.journal]]\npoint = \"D\"\nf_v = 0.1\nradius_mm = 5\n"
+    doc = check_json(write_scene(tmp_path, text))
+    rows = {r["name"]: r for r in doc["quantities"]}
+    plain = {r["name"]: r for r in check_json(SCENES / "force.class_iii_sixbar.toml")["quantities"]}
+    assert rows["M_b"]["exact"] != pytest.approx(plain["M_b"]["exact"], rel=1e-6)  # friction at D changes M_b
+    assert max(r["rel_error"] for r in rows.values()) < 1e-6
+
+
+def test_a_class_iii_groups_force_polygon_finds_the_third_normal_by_moments_about_s():
+    an = analyse_forces(load_scene(SCENES / "force.class_iii_sixbar.toml"))
+    group = next(g for g in an.solution.groups if g.links == ("2", "4", "5", "3"))
+    chain = dict(group.chain)
+    assert group.unknown == ("R^n_64", "R^n_12")
+    assert abs(sum(v[0] for _, v in group.chain)) < 1e-9 * max(abs(v[0]) for _, v in group.chain)
+    assert "R^n_65" in chain and "R^n_65" not in group.unknown

@@ -267,3 +267,105 @@ def test_a_slotted_link_s_instant_centres_agree_with_exact(tmp_path):
     got = values(check_json(write_scene(tmp_path, text)))
     assert len(got) == 9 and all(r["rel_error"] <= 1e-9 for r in got.values()), got
     assert got["dir_P24"]["graphical"] == pytest.approx(130.0, abs=1e-9)
+
+
+# ---------------------------------------------------------------------------- class III groups
+
+def _class_iii(tmp_path, old: str = "", new: str = "") -> dict:
+    from tests.conftest import SCENES
+
+    text = (SCENES / "kin.class_iii_sixbar.toml").read_text(encoding="utf-8")
+    assert old in text
+    return check_json(write_scene(tmp_path, text.replace(old, new)))
+
+
+def test_class_iii_sixbar_every_value_agrees_with_the_exact_elimination(tmp_path):
+    # every ω, α, velocity, acceleration and component the polygons give, at three crank angles
+    doc = _class_iii(tmp_path, "angle = 60\n", "angle = [50, 60, 75]\n")
+    rows = doc["quantities"]
+    assert len(rows) == 14 * 3
+    assert max(r["rel_error"] for r in rows) < 1e-9
+    assert not any(r["ill_conditioned"] for r in rows)
+    got = {r["name"]: r["exact"] for r in rows}
+    # the figure's assembly (C near (84.5, 72.9) mm), not the other one: ω3 = −2.7533 rad/s at 60°
+    assert got["omega_3@60"] == pytest.approx(-2.75328271, abs=1e-8)
+    assert got["alpha_4@60"] == pytest.approx(59.8160094, abs=1e-6)
+
+
+def test_class_iii_start_picks_the_assembly(tmp_path):
+    doc = _class_iii(tmp_path, "start = [[85, 73], [123, 34], [128, 98]]", "start = [[93, 20], [145, 40], [87, 69]]")
+    got = {r["name"]: r for r in doc["quantities"]}
+    assert got["omega_3"]["exact"] == pytest.approx(2.39714462, abs=1e-8)  # the other assembly turns the other way
+    assert max(r["rel_error"] for r in doc["quantities"]) < 1e-9
+
+
+def _locked_group(tmp_path, extra_mm: float):
+    """C, D, E a triangle and B, F, G on the lines OC, OD, OE through one point O (the frame):
+    the binary links' lines concurrent — the group locks; l_GE longer by ``extra_mm`` moves it off."""
+    c, d, e = complex(100, 0), complex(0, 120), complex(-80, -50)
+    b, f, g = 2 * c, 1.6 * d, 1.8 * e
+    text = f'''show = ["mechanism", "velocity"]
+find = ["v_C", "omega_3"]
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+[frame]
+A = [0, -200]
+B = [{b.real}, {b.imag}]
+F = [{f.real}, {f.imag}]
+G = [{g.real}, {g.imag}]
+[driver]
+type = "crank"
+link = "1"
+pivot = "A"
+tip = "K"
+length = 20
+angle = 30
+omega = 10
+[[triad]]
+type = "RRR-III"
+outer = ["B", "F", "G"]
+inner = ["C", "D", "E"]
+links = ["2", "4", "5", "3"]
+lengths = [100, {abs(d - f)!r}, {abs(e - g) + extra_mm!r}]
+ternary = [{abs(d - c)!r}, {abs(e - d)!r}, {abs(c - e)!r}]
+start = [[100, 0], [0, 120], [-80, -50]]
+'''
+    return check_json(write_scene(tmp_path, text))
+
+
+def test_a_nearly_locked_class_iii_group_is_flagged_ill_conditioned(tmp_path):
+    near = _locked_group(tmp_path, 1e-4)
+    assert all(r["ill_conditioned"] for r in near["quantities"])
+    assert any("ill-conditioned intersection 'C, D, E: the class III group's loops solved by Newton's method" in w
+               for w in near["warnings"])
+    off = _locked_group(tmp_path, 1.0)
+    assert not any(r["ill_conditioned"] for r in off["quantities"])
+    assert not any("ill-conditioned" in w for w in off["warnings"])
+
+
+def test_a_locked_class_iii_group_is_not_checked(tmp_path):
+    doc = _locked_group(tmp_path, 0.0)
+    assert any("dead centre (its velocity equations are singular)" in w for w in doc["warnings"])
+    assert any("ill-conditioned" in w for w in doc["warnings"])
+
+
+def test_class_iii_sixbar_instant_centres_by_kennedy_agree_with_the_exact():
+    from tests.conftest import SCENES
+
+    doc = check_json(SCENES / "ic.class_iii_sixbar.toml")
+    rows = {r["name"]: r for r in doc["quantities"]}
+    assert max(r["rel_error"] for r in rows.values()) < 1e-9
+    # P36 is where FD and GE meet: on both lines
+    p = np.array([rows["x_P36"]["exact"], rows["y_P36"]["exact"]]) * 1000
+    f, g = np.array([150.0, -20.0]), np.array([60.0, 150.0])
+    kin = analyse(parse_scene(tomllib.loads((SCENES / "kin.class_iii_sixbar.toml").read_text(encoding="utf-8")),
+                              "six.toml")).exact
+    d, e = kin.point["D"][0] * 1000, kin.point["E"][0] * 1000
+    def cross(u, w):
+        return u[0] * w[1] - u[1] * w[0]
+
+    assert abs(cross(d - f, p - f)) < 1e-8 * np.dot(d - f, d - f)
+    assert abs(cross(e - g, p - g)) < 1e-8 * np.dot(e - g, e - g)
+    assert rows["omega_3_ic"]["exact"] == pytest.approx(-2.75328271, abs=1e-8)

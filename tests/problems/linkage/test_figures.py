@@ -177,3 +177,24 @@ def test_slotted_link_draws_the_pin_block_in_the_moving_slot(tmp_path):
     assert not any(isinstance(i, GuideLine) for i in mech.items)  # no frame guide: the slot moves
     assert {"p", "b", "c₂", "c"} == {i.text for i in vel.items if isinstance(i, Label)}
     assert {"c₂′", "k′", "c′", "a^{k}", "n₃′"} <= {i.text for i in acc.items if isinstance(i, Label)}
+
+
+def test_a_class_iii_group_is_drawn_with_its_plate_and_assurs_point():
+    """kin.class_iii_sixbar: the ternary link 3 a plate, B–C, F–D, G–E bars, S where BC and FD extended meet."""
+    from graphmech.drawing.primitives import Plate
+
+    _, sheet = sheet_of("kin.class_iii_sixbar")
+    mech = panel(sheet, "mechanism")
+    labels = {i.text: i.anchor for i in mech.items if isinstance(i, Label)}
+    assert {"A", "B", "C", "D", "E", "F", "G", "S", "1", "2", "3", "4", "5"} <= set(labels)
+    plates = [i for i in mech.items if isinstance(i, Plate)]
+    assert len(plates) == 1 and {labels[n] for n in "CDE"} == set(plates[0].points)
+    s = labels["S"]
+    for p, x in (("B", "C"), ("F", "D")):  # S on the lines BC and FD
+        (px, py), (xx, xy) = labels[p], labels[x]
+        assert abs((xx - px) * (s[1] - py) - (xy - py) * (s[0] - px)) < 1e-9 * math.dist(labels[p], labels[x]) ** 2
+    assert sum(isinstance(i, FixedPivot) for i in mech.items) == 3  # A, F, G
+    vel, acc = panel(sheet, "velocity"), panel(sheet, "acceleration")
+    assert {i.text for i in vel.items if isinstance(i, Label)} == {"p", "b", "c", "d", "e", "s"}
+    assert {"p′", "b′", "c′", "d′", "e′", "s′", "σ₁′", "σ₂′", "n₂′", "n₄′", "n₅′"} <= {
+        i.text for i in acc.items if isinstance(i, Label)}

@@ -22,10 +22,11 @@ from graphmech.mechanisms.linkage import (
     LinkGuide,
     LinkPoint,
     SliderInput,
+    Triad,
 )
 from graphmech.problems.reader import Page
 from graphmech.scene import Scene, load_scene, parse_scene
-from tests.conftest import ROOT, assert_refused, reference_area, run_cli
+from tests.conftest import ROOT, SCENES, assert_refused, reference_area, run_cli
 from tests.scenes import doc_blocks, refusal, scene_path, scene_text, write_scene
 
 DOCS = ROOT / "docs" / "scene-format.md"
@@ -357,7 +358,7 @@ def test_docs_have_an_example_of_every_feature() -> None:
     # the cam, flywheel, force and structure scenes have tests of their own
     scenes = [s for s in scenes if s.kind != "cam" and s.kind != "flywheel" and s.linkage is not None]
     dyad_types = {type(d) for s in scenes for d in s.linkage.dyads}
-    assert dyad_types == {RRR, RRP, RPR, RPP, PRP}
+    assert dyad_types == {RRR, RRP, RPR, RPP, PRP, Triad}
     assert {type(s.linkage.driver) for s in scenes} == {Crank, SliderInput}
     assert {d.bar for s in scenes for d in s.linkage.dyads if isinstance(d, RPR)} == {
         "first",
@@ -445,3 +446,60 @@ bar = "second"
     assert code == 0 and json.loads(out)["quantities"][0]["graphical"] == pytest.approx(w3, rel=1e-9)
     p.write_text('find = ["omega_3"]\n' + text + "offset_mm = 20\n", encoding="utf-8")
     assert_refused(run_cli("check", str(p)), "g.toml", "dyad[0].offset_mm", "unknown key")
+
+
+# ---------------------------------------------------------------------------- class III groups
+
+SIXBAR_III = (SCENES / "kin.class_iii_sixbar.toml").read_text(encoding="utf-8")
+
+
+def test_a_triad_is_read_and_placed_in_assembly_order() -> None:
+    # a dyad that hangs on the group's E comes after it, although written first
+    text = SIXBAR_III + """
+[[dyad]]
+type = "RRR"
+joints = ["E", "H", "A"]
+links = ["7", "8"]
+lengths = [120, 150]
+branch = "left"
+"""
+    s = parse_scene(tomllib.loads(text), "six.toml")
+    group, dyad = s.linkage.dyads
+    assert isinstance(group, Triad) and isinstance(dyad, RRR)
+    assert group.outer == ("B", "F", "G") and group.inner == ("C", "D", "E")
+    assert group.links == ("2", "4", "5", "3") and group.assur == (0, 1)
+    assert group.lengths == pytest.approx((0.075, 0.06, 0.085)) and group.ternary == pytest.approx((0.055, 0.065, 0.05))
+    assert group.start[2] == pytest.approx((0.128, 0.098)) and group.hand == 1.0
+    assert s.linkage.links()["3"] == ["C", "D", "E"]
+
+
+@pytest.mark.parametrize("old, new, where, words", [
+    ("ternary = [55, 65, 50]", "ternary = [55, 65, 130]", "triad[0].ternary", "do not make a triangle"),
+    ("start = [[85, 73], [123, 34], [128, 98]]", "start = [[0, 0], [10, 10], [20, 20]]", "triad[0].start",
+     "C, D, E in line"),
+    ('links = ["2", "4", "5", "3"]', 'links = ["2", "4", "4", "3"]', "triad[0].links[2]", "must differ (4 twice)"),
+    ('inner = ["C", "D", "E"]', 'inner = ["C", "D", "C"]', "triad[0].inner[2]", "six joints must differ"),
+    ('outer = ["B", "F", "G"]', 'outer = ["B", "F", "H"]', "triad[0].outer[2]", "H is not defined"),
+    ('type = "RRR-III"', 'type = "RRR-IV"', "triad[0].type", "RRR-III"),
+    ("start = [[85, 73], [123, 34], [128, 98]]", "start = [[85, 73], [123, 34]]", "triad[0].start",
+     "[[x, y], [x, y], [x, y]]"),
+    ("start = [[85, 73], [123, 34], [128, 98]]", 'start = [[85, 73], [123, 34], [128, 98]]\nassur = ["2", "6"]',
+     "triad[0].assur[1]", "6 is not one of the group's binary links"),
+])
+def test_a_wrong_triad_is_refused_in_one_line(old: str, new: str, where: str, words: str) -> None:
+    assert old in SIXBAR_III
+    err = refusal(SIXBAR_III.replace(old, new), "six.toml")
+    assert "\n" not in str(err)
+    assert any(path == where and words in reason for path, reason in err.problems), err.problems
+
+
+@pytest.mark.parametrize("extra, where", [
+    ("\n[cycle]\npositions = 12\n", "cycle"),
+    ("\n[characteristics]\n", "characteristics"),
+])
+def test_what_a_class_iii_group_cannot_do_yet_is_refused(extra: str, where: str) -> None:
+    text = SIXBAR_III.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = []') + extra
+    err = refusal(text, "six.toml")
+    assert "\n" not in str(err)
+    assert any(path == where and "class III group is solved in linkage scenes (polygons, instant centres) and force scenes only" in reason
+               for path, reason in err.problems), err.problems

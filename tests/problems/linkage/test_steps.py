@@ -146,3 +146,26 @@ def test_instant_centres_are_protocolled_with_kennedys_lines():
 def test_numbers_are_written_as_the_drawing_writes_them():
     assert num(-8.418688) == number(-8.418688) == "−8.419"
     assert re.fullmatch(r"ω₂|ε₃", symbol("omega_2")) and symbol("a_CB_t") == "a^t_CB"
+
+
+def test_a_class_iii_group_is_protocolled_by_assurs_point():
+    lines, rows = _protocol("kin.class_iii_sixbar")
+    order = [
+        "draw the crank AB at φ₁ = 60°",
+        "the class III group B-C, F-D, G-E (CDE): C, D, E where all three binary links fit the ternary link",
+        "mark C: BC = 37.5 mm",
+        "extend BC and FD: they meet at S, Assur's special point of the ternary link",
+        "through b draw a line ⟂ BC",
+        "through p draw a line ⟂ FD",
+        "s = the intersection of the two lines",
+        "through s draw a line ⟂ SE",
+        "e = the intersection of the two lines",
+        "draw △sec ∼ △SEC, the letters in the same order (velocity image): c:",
+        "from n₂′ lay off n₂′σ₁′ ∥ SC, from S towards C",
+        "s′ = the intersection of the two lines",
+        "from s′ lay off s′n₃′ ∥ ES, from E towards S",
+        "draw △s′e′c′ ∼ △SEC, the letters in the same order (acceleration image): c′:",
+    ]
+    at = [_index(lines, text) for text in order]
+    assert at == sorted(at), at
+    assert len(rows) == 14
