@@ -153,7 +153,10 @@ def mutate(doc: dict, rng: random.Random) -> tuple[dict, str]:
         if arrays:
             p = rng.choice(arrays)
             old = _get(m, p)
-            _set(m, p, [] if rng.random() < 0.5 or not old else (old * (3601 // max(len(old), 1) + 1))[:3601])
+            if not old:  # an empty list emptied again is no mutant: fill it with a stray value
+                _set(m, p, [copy.deepcopy(rng.choice(OTHER_TYPES))])
+            else:
+                _set(m, p, [] if rng.random() < 0.5 else (old * (3601 // len(old) + 1))[:3601])
         else:
             _set(m, rng.choice(paths), [])
     elif kind == "text":
