@@ -161,27 +161,20 @@ def conditioning(cuts: Iterable[tuple[str, float, tuple[str, ...]]], rows: list[
     """The rows with those that hang on a shallow cut marked ill-conditioned, and the warnings.
 
     ``cuts``: (the cut in words, |sin| of the angle its loci meet at, the row names it carries).
-    Worded as a linkage's intersections are (:mod:`graphmech.problems.linkage.check`): past
-    ``COND_WARN`` the round-off itself is said; below ``SHALLOW_DEG`` the hand construction.
+    Worded by :func:`graphmech.problems.judging.conditioning_warning`, as a linkage's intersections
+    are: past ``COND_WARN`` the round-off itself is said; below ``SHALLOW_DEG`` the hand construction.
     """
-    from graphmech import tolerances as T
+    from graphmech.problems.judging import conditioning_warning
 
     out: list[str] = []
     marked: set[str] = set()
     for text, s, names in cuts:
-        c = math.inf if s <= 0.0 else 1.0 / s
-        angle = math.degrees(math.asin(min(1.0, s)))
         present = [n for n in names if any(r.name == n for r in rows)]
         qs = ", ".join(present) or "the drawing"
-        if c > T.COND_WARN:
-            est = T.COND_SAFETY * c * c * T.EPS
-            out.append(f"ill-conditioned intersection '{text}': the loci meet at {angle:.3g}° (condition number "
-                       f"{c:.3g}); {qs} may be wrong by about {est:.1g} relative or more")
-        elif angle < T.SHALLOW_DEG:
-            out.append(f"shallow intersection '{text}' at {angle:.3g}°: a hand construction is unreliable here "
-                       f"(a 0.5 mm error becomes about {0.5 * c:.2g} mm); {qs} marked ill-conditioned")
-        else:
+        ill, said = conditioning_warning("", text, math.inf if s <= 0.0 else 1.0 / s, qs)
+        if said is None:
             continue
+        out.append(said if ill else f"{said}; {qs} marked ill-conditioned")
         marked.update(present)
     return [replace(r, ill_conditioned=True) if r.name in marked else r for r in rows], out
 

@@ -54,3 +54,16 @@ def test_conditioning_marks_the_rows_of_a_shallow_cut_only():
                     "error becomes about 14 mm); lAB marked ill-conditioned")]
     _, said = conditioning([("X", 1e-4, ("lCD",))], rows)
     assert said[0].startswith("ill-conditioned intersection 'X': the loci meet at 0.00573° (condition number 1e+04)")
+
+
+def test_loci_that_touch_are_said_without_an_infinite_number():
+    """Arcs that only touch (|sin| = 0, exact data) were said with "condition number inf" and
+    "wrong by about inf": the tangency is worded, with the √ε a point of contact moves by."""
+    rows = [Row("lAB", "m", 10.0, 0.001, 0.01, 0.01, 0.0)]
+    kept, said = conditioning([("C2 = arc D ∩ arc E2", 0.0, ("lAB",))], rows)
+    assert kept[0].ill_conditioned
+    assert said == ["ill-conditioned intersection 'C2 = arc D ∩ arc E2': the loci touch (they meet at 0°, a point "
+                    "of tangency); lAB may be wrong by about 3e-07 relative or more"]
+    # a cut so shallow that the round-off estimate overflows is worded the same
+    assert conditioning([("X", 1e-200, ("lAB",))], rows)[1][0].startswith("ill-conditioned intersection 'X': the loci touch")
+
