@@ -62,8 +62,8 @@ def test_loci_that_touch_are_said_without_an_infinite_number():
     rows = [Row("lAB", "m", 10.0, 0.001, 0.01, 0.01, 0.0)]
     kept, said = conditioning([("C2 = arc D ∩ arc E2", 0.0, ("lAB",))], rows)
     assert kept[0].ill_conditioned
-    assert said == ["ill-conditioned intersection 'C2 = arc D ∩ arc E2': the loci touch (they meet at 0°, a point "
-                    "of tangency); lAB may be wrong by about 3e-07 relative or more"]
+    assert said == [("ill-conditioned intersection 'C2 = arc D ∩ arc E2': the loci touch (they meet at 0°, a point "
+                     "of tangency); lAB may be wrong by about 3e-07 relative or more")]
     # a cut so shallow that the round-off estimate overflows is worded the same
     assert conditioning([("X", 1e-200, ("lAB",))], rows)[1][0].startswith("ill-conditioned intersection 'X': the loci touch")
 
