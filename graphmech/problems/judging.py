@@ -117,7 +117,8 @@ def judge_value(name: str, value: float, expected: float, drawn: float | None, s
     """A measured value against the expected one: a length read off the drawing within the
     drawing precision × its μ, any other value (a computed one) within 0.1 %."""
     tol = precision_mm * abs(scale) if drawn is not None else max(abs(expected) * 1e-3, T.EPS)
-    return Verdict(name, value, expected, tol, abs(value - expected) <= tol + 1e-12 * abs(expected), unit)
+    ok = abs(value - expected) <= tol + 1e-12 * abs(expected)
+    return Verdict(name, value, expected, tol, bool(ok), unit)  # bool: a numpy expected gives a numpy bool
 
 
 def split_name(name: str) -> tuple[str, str | None]:

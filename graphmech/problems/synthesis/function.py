@@ -357,8 +357,10 @@ def analyse_function(p: FunctionProblem, mu: float, find: tuple[str, ...] = (), 
         raise SceneError([(p.key, ("the structural error is not finite over the range: f or the linkage breaks "
                                   "down in double precision"))], source)
     size_m = max(exact.values())
-    rows = [Row(n, "m", v, mu, v * mu, exact[n], abs(v * mu - exact[n]) / size_m) for n, v in drawn.items()]
-    gm, xm = _miss(gr, gbar), _miss(xr, xbar)
+    # plain floats: numpy's scalars reach the verdicts (a numpy bool is no JSON) and the table
+    rows = [Row(n, "m", float(v), mu, float(v) * mu, exact[n], float(abs(v * mu - exact[n]) / size_m))
+            for n, v in drawn.items()]
+    gm, xm = float(_miss(gr, gbar)), float(_miss(xr, xbar))
     rows.append(Row("reanalysis_error", "", None, 1.0, gm, xm, abs(gm - xm)))
     # the structural error: read off the sampled curve, against the located extreme
     (e1, x1), (e2, x2) = _curve_max(gr, p), _curve_max(gr2, p)
