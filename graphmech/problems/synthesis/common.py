@@ -125,9 +125,15 @@ def design_rows(drawn: dict[str, float], exact: dict[str, float], mu: float, siz
                 xr: Reanalysis) -> tuple[list[Row], list[str]]:
     """Every form's rows: each length and coordinate drawn (mm × μl) against exact (its error
     relative to the design's largest link), then the re-analysis error and γ_min of the drawn
-    design against the exact one; and the names they answer."""
+    design against the exact one; and the names they answer. A re-analysis that cannot assemble a
+    prescribed position (an infinite error) is refused (GraphmechError), never a row."""
     from graphmech.problems.judging import Row
 
+    if not (math.isfinite(gr.error) and math.isfinite(xr.error)):
+        # the design passes through its positions by construction: only round-off (links too
+        # unequal for double precision) leaves one unassembled
+        raise GraphmechError("the designed linkage cannot be assembled at every prescribed position when "
+                             "re-analysed: its links are too unequal for double precision")
     rows = [Row(n, "m", d, mu, d * mu, exact[n], abs(d * mu - exact[n]) / size_m) for n, d in drawn.items()]
     rows.append(Row("reanalysis_error", "", None, 1.0, gr.error, xr.error, abs(gr.error - xr.error)))
     if gr.characteristics is not None and xr.characteristics is not None:

@@ -422,9 +422,9 @@ def analyse(p: Form, mu: float, find: tuple[str, ...] = (), source: str = "") ->
             cuts += [(f"C{i + 1} = arc D ∩ arc E{i + 1}", arcs_sin(pm.D, pm.E[i], g.C[i]), names) for i in range(3)]
             sol = {"lAB": ex["lAB"], "lBC": ex["lBC"], "lCD": p.l_CD, "lAD": abs(D - A), "lBE": ex["lBE"],
                    "lEC": p.l_EC, "B1": [B[0].real, B[0].imag], "C1": [C[0].real, C[0].imag]}
+        rows, known = design_rows(dr, ex, mu, size, gr, xr)
     except GraphmechError as err:
         raise SceneError([(p.key, str(err))], source) from None
-    rows, known = design_rows(dr, ex, mu, size, gr, xr)
     wanted = set(find) or None
     kept, shallow = conditioning(cuts, [r for r in rows if wanted is None or r.name in wanted])
     sol = {"name": "design", **sol, "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,

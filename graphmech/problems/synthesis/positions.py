@@ -219,16 +219,16 @@ def analyse_fourbar(p: FourbarPositions, mu: float, find: tuple[str, ...] = (), 
         fourbar_positions(p.A, p.D, p.l_AB, p.phi, p.psi, p.l_CD, p.side)  # refused in metres, as given
         g = fourbar_positions(pm.A, pm.D, pm.l_AB, pm.phi, pm.psi, pm.l_CD, pm.side)
         C1 = exact_C1(p, complex(*g.C1) * mu)
+        A, D = complex(*p.A), complex(*p.D)
+        B1 = A + p.l_AB * complex(math.cos(p.phi[0]), math.sin(p.phi[0]))
+        ex = {"lBC": abs(C1 - B1), "lCD": abs(C1 - D), "xC1": C1.real, "yC1": C1.imag}
+        dr = {"lBC": g.l_BC, "lCD": g.l_CD, "xC1": g.C1[0], "yC1": g.C1[1]}
+        xr = reanalyse_fourbar(A, D, p.l_AB, ex["lBC"], ex["lCD"], p.phi, p.psi, C1)
+        gC1 = complex(*g.C1) * mu
+        gr = reanalyse_fourbar(A, D, p.l_AB, g.l_BC * mu, g.l_CD * mu, p.phi, p.psi, gC1)
+        rows, names = design_rows(dr, ex, mu, max(p.l_AB, ex["lBC"], ex["lCD"], abs(D - A)), gr, xr)
     except GraphmechError as e:
         raise SceneError([(p.key, str(e))], source) from None
-    A, D = complex(*p.A), complex(*p.D)
-    B1 = A + p.l_AB * complex(math.cos(p.phi[0]), math.sin(p.phi[0]))
-    ex = {"lBC": abs(C1 - B1), "lCD": abs(C1 - D), "xC1": C1.real, "yC1": C1.imag}
-    dr = {"lBC": g.l_BC, "lCD": g.l_CD, "xC1": g.C1[0], "yC1": g.C1[1]}
-    xr = reanalyse_fourbar(A, D, p.l_AB, ex["lBC"], ex["lCD"], p.phi, p.psi, C1)
-    gC1 = complex(*g.C1) * mu
-    gr = reanalyse_fourbar(A, D, p.l_AB, g.l_BC * mu, g.l_CD * mu, p.phi, p.psi, gC1)
-    rows, names = design_rows(dr, ex, mu, max(p.l_AB, ex["lBC"], ex["lCD"], abs(D - A)), gr, xr)
     sol = {"name": "design", "lAB": p.l_AB, "lBC": ex["lBC"], "lCD": ex["lCD"], "lAD": abs(D - A),
            "C1": [C1.real, C1.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
            "reanalysis": {"error": xr.error, "gamma_deg": [math.degrees(x) for x in xr.gamma],
@@ -264,17 +264,17 @@ def analyse_positions(p: PositionsProblem, mu: float, find: tuple[str, ...] = ()
         coupler_positions(p.B, p.C, p.frame)  # refused in metres, as given
         g = coupler_positions(pm.B, pm.C, pm.frame)
         A, D = exact_pivots(p)
+        B = [complex(*b) for b in p.B]
+        C = [complex(*c) for c in p.C]
+        xr = reanalyse_coupler(A, D, B, C)
+        gr = reanalyse_coupler(complex(*g.A) * mu, complex(*g.D) * mu, B, C)
+        ex = {"lAB": abs(B[0] - A), "lBC": abs(C[0] - B[0]), "lCD": abs(C[0] - D), "lAD": abs(D - A),
+              "xA": A.real, "yA": A.imag, "xD": D.real, "yD": D.imag}
+        dr = {"lAB": g.l_AB, "lBC": g.l_BC, "lCD": g.l_CD, "lAD": g.l_AD, "xA": g.A[0], "yA": g.A[1],
+              "xD": g.D[0], "yD": g.D[1]}
+        rows, names = design_rows(dr, ex, mu, max(ex["lAB"], ex["lBC"], ex["lCD"], ex["lAD"]), gr, xr)
     except GraphmechError as e:
         raise SceneError([(p.key, str(e))], source) from None
-    B = [complex(*b) for b in p.B]
-    C = [complex(*c) for c in p.C]
-    xr = reanalyse_coupler(A, D, B, C)
-    gr = reanalyse_coupler(complex(*g.A) * mu, complex(*g.D) * mu, B, C)
-    ex = {"lAB": abs(B[0] - A), "lBC": abs(C[0] - B[0]), "lCD": abs(C[0] - D), "lAD": abs(D - A),
-          "xA": A.real, "yA": A.imag, "xD": D.real, "yD": D.imag}
-    dr = {"lAB": g.l_AB, "lBC": g.l_BC, "lCD": g.l_CD, "lAD": g.l_AD, "xA": g.A[0], "yA": g.A[1],
-          "xD": g.D[0], "yD": g.D[1]}
-    rows, names = design_rows(dr, ex, mu, max(ex["lAB"], ex["lBC"], ex["lCD"], ex["lAD"]), gr, xr)
     warnings = [xr.note] if xr.note else []
     sol = {"name": "design", **{n: ex[n] for n in ("lAB", "lBC", "lCD", "lAD")}, "A": [A.real, A.imag],
            "D": [D.real, D.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
