@@ -142,6 +142,12 @@ def design_rows(drawn: dict[str, float], exact: dict[str, float], mu: float, siz
     return rows, [r.name for r in rows]
 
 
+def unit(p: XY, q: XY) -> XY:
+    """The unit vector from p towards q (a figure's direction; (0, 0) where they coincide)."""
+    n = math.hypot(q[0] - p[0], q[1] - p[1]) or 1.0
+    return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
+
+
 def lines_sin(a: LineXY, b: LineXY) -> float:
     """|sin| of the angle two lines meet at."""
     return abs(a[2] * b[3] - a[3] * b[2])
@@ -200,4 +206,5 @@ __all__ = [
     "read_point",
     "read_side",
     "sized",
+    "unit",
 ]

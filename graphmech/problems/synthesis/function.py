@@ -22,6 +22,7 @@ import numpy as np
 
 from graphmech.errors import GraphmechError, SceneError
 from graphmech.problems.reader import MISSING
+from graphmech.problems.synthesis.common import unit
 from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
@@ -440,11 +441,6 @@ def _xy(z: complex) -> tuple[float, float]:
     return (float(z.real), float(z.imag))
 
 
-def _unit(p: tuple[float, float], q: tuple[float, float]) -> tuple[float, float]:
-    n = math.hypot(q[0] - p[0], q[1] - p[1]) or 1.0
-    return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
-
-
 def linkage_items(ff: FunctionFound) -> list[Primitive]:
     """The designed four-bar bold at the first precision position, AB_k, B_kC_k, DC_k thin dashed
     at the others, the frame line dash-dot, the swings Δφ at A and Δψ at D marked."""
@@ -467,15 +463,15 @@ def linkage_items(ff: FunctionFound) -> list[Primitive]:
                   Segment(D, C[k], "given", dashed=True), Hinge(B[k]), Hinge(C[k])]
     items += [Segment(A, B[0], "result"), Segment(B[0], C[0], "result"), Segment(C[0], D, "result"),
               FixedPivot(A), FixedPivot(D), Hinge(B[0]), Hinge(C[0])]
-    labels: list[Primitive] = [Label("A", A, (_unit(A, B[0]), _unit(A, D), *(_unit(A, b) for b in B[1:]))),
-                               Label("D", D, (_unit(D, C[0]), _unit(D, A), *(_unit(D, c) for c in C[1:])))]
+    labels: list[Primitive] = [Label("A", A, (unit(A, B[0]), unit(A, D), *(unit(A, b) for b in B[1:]))),
+                               Label("D", D, (unit(D, C[0]), unit(D, A), *(unit(D, c) for c in C[1:])))]
     for centre, ends, r_link, text in ((A, B, ff.drawn_mm["lAB"], "Δφ"), (D, C, ff.drawn_mm["lCD"], "Δψ")):
-        u0, u1 = _unit(centre, ends[0]), _unit(centre, ends[-1])
+        u0, u1 = unit(centre, ends[0]), unit(centre, ends[-1])
         arc = angle_arc(centre, u0, u1, 0.3 * r_link, "construction")
         if arc is not None:
             items.append(arc)
             mid = arc.points[len(arc.points) // 2]
-            labels.append(Label(text, mid, (_unit(mid, centre),), italic=False))
+            labels.append(Label(text, mid, (unit(mid, centre),), italic=False))
     labels += [Label(f"B_{{{k + 1}}}", B[k]) for k in range(n)] + [Label(f"C_{{{k + 1}}}", C[k]) for k in range(n)]
     return items + labels
 

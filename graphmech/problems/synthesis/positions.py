@@ -30,6 +30,7 @@ from graphmech.problems.synthesis.common import (
     read_angles,
     read_length,
     read_point,
+    unit,
 )
 
 if TYPE_CHECKING:
@@ -386,7 +387,7 @@ def coupler_items(pf: PositionsFound) -> list[Primitive]:
     B1, C1 = pm.B[0], pm.C[0]
     items += [Segment(g.A, B1, "result"), Segment(B1, C1, "result"), Segment(C1, g.D, "result"),
               Segment(g.A, g.D, "construction", dashdot=True), FixedPivot(g.A), FixedPivot(g.D), Hinge(B1), Hinge(C1),
-              Label("A", g.A, (_unit(g.A, B1), _unit(g.A, g.D))), Label("D", g.D, (_unit(g.D, C1), _unit(g.D, g.A)))]
+              Label("A", g.A, (unit(g.A, B1), unit(g.A, g.D))), Label("D", g.D, (unit(g.D, C1), unit(g.D, g.A)))]
     items += [Label(f"B_{{{i + 1}}}", pm.B[i]) for i in range(n)] + [Label(f"C_{{{i + 1}}}", pm.C[i]) for i in range(n)]
     return items
 
@@ -416,8 +417,8 @@ def fourbar_items(g: FourbarDesign) -> list[Primitive]:
     items += [Circle(a.centre, a.radius, "construction") for a in j.arcs]
     items += [Segment(g.A, g.B1, "result"), Segment(g.B1, g.C1, "result"), Segment(g.C1, g.D, "result"),
               Segment(g.A, g.D, "construction", dashdot=True), FixedPivot(g.A), FixedPivot(g.D), Hinge(g.B1),
-              Hinge(g.C1), Label("A", g.A, (_unit(g.A, g.B1), _unit(g.A, g.D))),
-              Label("D", g.D, (_unit(g.D, g.C1), _unit(g.D, g.A))), Label("B_{1}", g.B1), Label("C_{1}", g.C1)]
+              Hinge(g.C1), Label("A", g.A, (unit(g.A, g.B1), unit(g.A, g.D))),
+              Label("D", g.D, (unit(g.D, g.C1), unit(g.D, g.A))), Label("B_{1}", g.B1), Label("C_{1}", g.C1)]
     return items
 
 
@@ -435,11 +436,6 @@ def notes(pf: PositionsFound, mu: float) -> tuple[str, ...]:
     return (scale_text("l", mu),
             (f"l_{{AB}} = {number(g.l_AB * mu * 1000)} mm, l_{{BC}} = {number(g.l_BC * mu * 1000)} mm, "
              f"l_{{CD}} = {number(g.l_CD * mu * 1000)} mm, l_{{AD}} = {number(g.l_AD * mu * 1000)} mm"))
-
-
-def _unit(p: XY, q: XY) -> XY:
-    n = math.hypot(q[0] - p[0], q[1] - p[1]) or 1.0
-    return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
 
 
 #: The positions task's phrases: key → (English, 中文, русский). 孙桓 §8: 按连杆给定位置设计.
