@@ -26,6 +26,9 @@ LineXY = tuple[float, float, float, float]
 #: The largest coordinate or length a positions design takes, m: beyond it the bisectors' and the
 #: re-analysis's squares leave double precision (and no mechanism is a thousand kilometres across).
 MAX_SIZE = 1e6
+#: The shortest link a design takes, m (as the time-ratio task's): below it the squares of the
+#: lengths (Freudenstein's b², the bisectors' |p|²) leave double precision long before the page does.
+MIN_LENGTH = 1e-9
 
 
 def read_angles(r: Reader, base: str) -> tuple[float, ...] | None:
@@ -70,8 +73,13 @@ def read_point(r: Reader, base: str, required: bool = True) -> XY | None:
 
 
 def read_length(r: Reader, base: str, required: bool = True) -> float | None:
-    """A positive length (m), within MAX_SIZE."""
+    """A positive length (m), from MIN_LENGTH to MAX_SIZE."""
     v = sized(r, base, r.scalar(base, "length", positive=True, required=required))
+    # 1e-6 mm converts to a hair under 1e-9 m: the bound is the nanometre as written
+    if isinstance(v, float) and v < MIN_LENGTH * (1.0 - 1e-9):
+        r.problem(r.at(r.present(base) or base), f"{v:g} m is below {MIN_LENGTH:g} m: too short for a link "
+                                                 "to be designed in double precision")
+        return None
     return v if isinstance(v, float) else None
 
 
@@ -193,6 +201,7 @@ def conditioning(cuts: Iterable[tuple[str, float, tuple[str, ...]]], rows: list[
 
 __all__ = [
     "MAX_SIZE",
+    "MIN_LENGTH",
     "arcs_sin",
     "conditioning",
     "design_rows",

@@ -22,7 +22,7 @@ import numpy as np
 
 from graphmech.errors import GraphmechError, SceneError
 from graphmech.problems.reader import MISSING
-from graphmech.problems.synthesis.common import unit
+from graphmech.problems.synthesis.common import read_length, unit
 from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
@@ -40,8 +40,6 @@ ILL_CONDITION = 1e3
 #: Samples of the structural-error curve the figure draws and the check reads (200 intervals);
 #: its own error estimate reads the curve again at twice the intervals.
 CURVE_SAMPLES = 201
-#: The largest frame a design takes, m (as the positions task's MAX_SIZE: double precision).
-MAX_FRAME = 1e6
 #: The round-off of an angle found from the drawn lengths (ψ by the law of cosines, γ by acos), rad:
 #: the floor of the sampled rows' estimates (≈ 100 ε).
 ANGLE_ROUND_OFF = 100.0 * EPS
@@ -149,11 +147,7 @@ def read_function(r: Reader) -> FunctionProblem | None:
         else:
             n = n_raw
     spacing = r.string("spacing", choices=SPACINGS, default="chebyshev")
-    frame = r.scalar("frame", "length", positive=True)
-    if frame is not None and frame > MAX_FRAME:
-        r.problem(r.at(r.present("frame") or "frame"), f"{frame:g} m is beyond {MAX_FRAME:g} m: too large for a "
-                                                       "linkage to be designed in double precision")
-        frame = None
+    frame = read_length(r, "frame")  # within the positions task's bounds: double precision
     if (name is None or xs is None or phi0 is None or dphi is None or psi0 is None or dpsi is None or n is None
             or spacing is None or frame is None):
         return None

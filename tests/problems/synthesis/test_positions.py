@@ -235,3 +235,12 @@ def test_a_crank_far_shorter_than_the_frame_is_designed_not_refused_as_out_of_ra
     assert rows["lCD"].exact == pytest.approx(2.1363016311e-6, rel=1e-9)
     assert rows["reanalysis_error"].exact < 1e-9 and rows["reanalysis_error"].graphical < 1e-9
 
+
+
+def test_a_link_under_a_nanometre_is_refused_at_its_key():
+    text = replace_once((SCENES / "synthesis.fourbar_three_positions.toml").read_text(encoding="utf-8"),
+                        "l_AB_mm = 30", "l_AB_mm = 1e-7")
+    with pytest.raises(SceneError) as e:
+        parse_text(text)
+    assert e.value.problems == [("synthesis.l_AB_mm",
+                                 "1e-10 m is below 1e-09 m: too short for a link to be designed in double precision")]

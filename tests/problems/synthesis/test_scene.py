@@ -154,6 +154,7 @@ def test_documented_error_messages_are_real():
         _lines(fn, "phi_start_deg = 45", "phi_start_deg = 210", "phi_range_deg = 60", "phi_range_deg = 90",
                "psi_start_deg = 135", "psi_start_deg = 225", "psi_range_deg = 90", "psi_range_deg = -90",
                "points = 3", "points = 4"),
+        _lines(fn, "frame_mm = 50", "frame_mm = 1e-300"),
     ]
     got = []
     for m in mistakes:
