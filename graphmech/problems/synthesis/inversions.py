@@ -460,12 +460,17 @@ def size(p: Form) -> float:
 
 def lines(f: InversionFound) -> list[str]:
     """Under the table: the design's lengths, class and re-analysis error."""
-    s = f.solutions[0]
+    return [design_line(f.solutions[0])]
+
+
+def design_line(s: dict[str, Any]) -> str:
+    """A positions design said under the table (every form's, from its ``check --json`` record):
+    the lengths it has, Grashof's class, the re-analysis error and the note."""
     mm = {k: f"{s[k] * 1000:.6g} mm" for k in ("lAB", "lBC", "lCD", "lAD", "lBE", "lEC", "lDE", "lEF", "e") if k in s}
     said = ", ".join(f"l_{k[1:]} = {v}" if k != "e" else f"e = {v}" for k, v in mm.items())
     cls = str(s["grashof"]).replace("_", " ")
     note = f"; {s['note']}" if s["note"] else ""
-    return [f"design: {said}: {cls}; re-analysed through the positions: error {s['reanalysis']['error']:.1e}{note}"]
+    return f"design: {said}: {cls}; re-analysed through the positions: error {s['reanalysis']['error']:.1e}{note}"
 
 
 # --------------------------------------------------------------------------------- the figure
@@ -806,6 +811,7 @@ __all__ = [
     "arc_about",
     "bisector_items",
     "coupler_point_items",
+    "design_line",
     "exact_coupler_point",
     "exact_rocker_joint",
     "exact_slider_pin",

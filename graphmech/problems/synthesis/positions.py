@@ -309,7 +309,7 @@ def lines(pf: PositionsFound | inversions.InversionFound) -> list[str]:
     """Under the table: the design's Grashof class, re-analysis error and note."""
     if isinstance(pf, inversions.InversionFound):
         return inversions.lines(pf)
-    return [grashof_line(s) for s in pf.solutions]
+    return [inversions.design_line(s) for s in pf.solutions]
 
 
 def panels(pf: PositionsFound | inversions.InversionFound, mu: float) -> tuple[str, list[Panel]]:
@@ -320,15 +320,6 @@ def panels(pf: PositionsFound | inversions.InversionFound, mu: float) -> tuple[s
 
     name = panel_title(pf)
     return name, [Panel("design", name, tuple(coupler_items(pf)), notes(pf, mu), row=0, scales=(("l", mu),))]
-
-
-def grashof_line(s: dict[str, Any]) -> str:
-    """The design said under the table: Grashof's class, the re-analysis error, the note."""
-    cls = str(s["grashof"]).replace("_", " ")
-    note = f"; {s['note']}" if s["note"] else ""
-    return (f"design: l_AB = {s['lAB'] * 1000:.6g} mm, l_BC = {s['lBC'] * 1000:.6g} mm, l_CD = {s['lCD'] * 1000:.6g} mm, "
-            f"l_AD = {s['lAD'] * 1000:.6g} mm: {cls}; re-analysed through the positions: error "
-            f"{s['reanalysis']['error']:.1e}{note}")
 
 
 __all__ = [
@@ -342,7 +333,6 @@ __all__ = [
     "choose_scale",
     "coupler_items",
     "exact_pivots",
-    "grashof_line",
     "lines",
     "notes",
     "panels",
