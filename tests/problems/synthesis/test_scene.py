@@ -36,6 +36,9 @@ def test_the_tasks_are_the_readers_listed():
     ("swing_deg = 40", "", "synthesis.swing", "missing: write swing_deg"),
     ("swing_deg = 40", "swing_deg = 40\nlimit_angle_deg = 45", "synthesis.limit_angle_deg", "not both"),
     ("swing_deg = 40", "swing_deg = 190", "synthesis.swing_deg", "between 0 and 180°"),
+    # the fuzz's: ψ = 1e-300° put C₁ on C₂ and the chord's direction divided by zero (exit 3)
+    ("swing_deg = 40", "swing_deg = 1e-300", "synthesis.swing_deg",
+     "ψ = 1e-300° is under 5.7e-08°: C₁ and C₂ all but coincide (the chord C₁C₂ under 1e-9 of l_CD)"),
     ("rocker_mm = 75", "rocker_mm = -75", "synthesis.rocker_mm", "> 0"),
     ("frame_mm = 100", "frame = 100", "synthesis.frame", "unit not stated"),
     ("swing_deg = 40", "swing_deg = 40\nstroke_mm = 10", "synthesis.stroke_mm", "not for a crank-rocker"),
@@ -162,3 +165,11 @@ def test_documented_error_messages_are_real():
             analyse_synthesis(parse_text(m, "s.toml"))
         got.append(str(e.value))
     assert got == documented
+
+
+def test_a_swing_too_small_to_draw_is_refused_on_the_command_line(tmp_path):
+    p = write_scene(tmp_path, replace_once(SWING, "swing_deg = 40", "swing_deg = 1e-300"), "s.toml")
+    assert_refused(run_cli("check", str(p)), "s.toml", "synthesis.swing_deg: ψ = 1e-300° is under 5.7e-08°")
+    # a swing just above the bound is constructed: no design, said in words
+    p = write_scene(tmp_path, replace_once(SWING, "swing_deg = 40", "swing_deg = 1e-7"), "t.toml")
+    assert_refused(run_cli("check", str(p)), "t.toml", "synthesis.swing_deg: no Grashof crank")
