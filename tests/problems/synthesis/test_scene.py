@@ -173,3 +173,12 @@ def test_a_swing_too_small_to_draw_is_refused_on_the_command_line(tmp_path):
     # a swing just above the bound is constructed: no design, said in words
     p = write_scene(tmp_path, replace_once(SWING, "swing_deg = 40", "swing_deg = 1e-7"), "t.toml")
     assert_refused(run_cli("check", str(p)), "t.toml", "synthesis.swing_deg: no Grashof crank")
+
+
+@pytest.mark.parametrize("angle", ["1e-300", "179.99999999999"])
+def test_a_limit_angle_on_the_frame_line_is_refused(angle):
+    limit = replace_once(SWING, "swing_deg = 40", f"limit_angle_deg = {angle}")
+    path, reason = only_problem(limit)
+    assert path == "synthesis.limit_angle_deg" and reason.endswith(
+        "of the frame line: the rocker lies along the frame, C₁ all but on the line AD"), reason
+
