@@ -87,6 +87,9 @@ class Kinematics:
         dyad's velocity equations are singular).
     reason : tuple of str
         Per position: ``""`` where valid, else a short reason (the first dyad that failed).
+    assembled : ndarray of bool, shape (N,)
+        False only where the linkage cannot be assembled: a dead centre is assembled (its
+        ``point`` holds the configuration) though not ``valid`` — what a check of positions asks.
 
     Notes
     -----
@@ -104,6 +107,7 @@ class Kinematics:
     alpha: dict[str, np.ndarray]
     valid: np.ndarray
     reason: tuple[str, ...]
+    assembled: np.ndarray
 
 
 # --------------------------------------------------------------------------------------------
@@ -677,4 +681,5 @@ def solve(linkage: Linkage, positions: np.ndarray) -> Kinematics:
         alpha={k: _frozen(np.array(alpha[k], dtype=float)) for k in moving},
         valid=_frozen(st.valid.copy()),
         reason=tuple(st.reason.tolist()),
+        assembled=_frozen(st.assembled.copy()),
     )

@@ -112,7 +112,9 @@ def crank_rocker_from_limit(c: float, d: float, limit: float, theta: float) -> l
     """
     D = complex(d, 0.0)
     C1 = D + c * cmath.exp(1j * (math.pi - limit))
-    ac1 = math.sqrt(c * c + d * d - 2.0 * c * d * math.cos(limit))
+    # the law of cosines with 1 − cos α = 2 sin²(α/2): no cancellation where C₁ is near A (c = d
+    # and a small limit angle put AC₁ at round-off of c² + d² − 2cd·cos α, then 0: a division by zero)
+    ac1 = math.sqrt((c - d) ** 2 + 4.0 * c * d * math.sin(limit / 2.0) ** 2)
     alpha1 = math.acos(max(-1.0, min(1.0, (ac1 * ac1 + d * d - c * c) / (2.0 * ac1 * d))))
     if C1.imag < 0.0:
         alpha1 = -alpha1

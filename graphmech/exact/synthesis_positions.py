@@ -6,7 +6,8 @@ circumcentre
     2(p_k − p₁)·X = |p_k|² − |p₁|² (k = 2, 3), solved by numpy.linalg.solve.
 re-analysis
     The designed linkage is assembled (frame pivots, crank, dyad) and driven to the prescribed
-    input positions by :func:`graphmech.exact.linkage.solve`, on the branch of position 1; the
+    input positions by :func:`graphmech.exact.linkage.solve`, on the branch of position 1 (a
+    position at a dead centre counts as reached: it is assembled, only its rates are unbounded); the
     error is the largest distance between a prescribed and a reached point, divided by the
     linkage's longest link. The characteristics (Grashof class, γ_min, θ, ψ, K) come from
     :mod:`graphmech.exact.characteristics`; a design whose input does not turn fully is said in
@@ -141,7 +142,7 @@ def _fourbar_check(A: complex, D: complex, a: float, b: float, c: float, phi: np
     if extra is not None:
         Es = [complex(*xy) for xy in kin.point[extra[0].name]]
         err = max(err, *(abs(Es[i] - extra[1][i]) for i in range(len(phi))))
-    if not bool(np.all(kin.valid)):
+    if not bool(np.all(kin.assembled)):  # a prescribed position at a dead centre is reached
         err = math.inf
     one = all(s == branch for s in sides)
     grashof = fourbar_class(a, b, c, d)
@@ -205,7 +206,7 @@ def reanalyse_slider_crank(A: complex, l_AB: float, l_BC: float, phi: Sequence[f
     Cs = [complex(*xy) for xy in kin.point["C"]]
     Bs = [complex(*xy) for xy in kin.point["B"]]
     err = max(abs(Cs[i] - prescribed[i]) for i in range(len(phi))) / max(l_AB, l_BC)
-    if not bool(np.all(kin.valid)):
+    if not bool(np.all(kin.assembled)):  # a prescribed position at a dead centre is reached
         err = math.inf
     notes = []
     try:
@@ -243,7 +244,7 @@ def reanalyse_rocker_slider(D: complex, rocker: Sequence[float], E1: complex, F:
     kin = solve(lk, turn)
     Fs = [complex(*xy) for xy in kin.point["F"]]
     err = max(abs(Fs[i] - F[i]) for i in range(len(F))) / max(l_DE, l_EF)
-    if not bool(np.all(kin.valid)):
+    if not bool(np.all(kin.assembled)):  # a prescribed position at a dead centre is reached
         err = math.inf
     one = all(x == ahead[0] for x in ahead)
     gamma = tuple(math.acos(min(1.0, abs(((E[i] - Fs[i]) / g).imag) / l_EF)) for i in range(len(F)))

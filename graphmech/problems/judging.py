@@ -60,21 +60,30 @@ def conditioning_warning(where: str, step: str, cond: float, what: str = "") -> 
     """Whether a cut of condition number ``cond`` (≈ 1/sin of the angle at which its loci meet)
     makes what depends on it ill-conditioned, and the warning to print: ill-conditioned past
     ``tolerances.COND_WARN`` (the round-off estimate passes the agreement asked), shallow for a hand
-    construction past 1/sin ``SHALLOW_DEG``; None below both. ``what`` names what depends on it.
+    construction past 1/sin ``SHALLOW_DEG``; None below both. ``what`` names what depends on it;
+    ``where`` (a position, a design) prefixes the warning, none where empty. Loci that touch
+    (``cond`` infinite) are said as such, never with an infinite number.
 
     >>> conditioning_warning("φ = 30°", "A = c1 ∩ c2", 2.0)
     (False, None)
     >>> conditioning_warning("sol1", "A = c1 ∩ c2", 1e4)[0]
     True
     """
+    at = f"{where}: " if where else ""
     angle = math.degrees(math.asin(min(1.0, 1.0 / cond))) if cond > 0 else 90.0
+    est = T.COND_SAFETY * cond * cond * T.EPS
+    if not math.isfinite(est):
+        # loci that touch (exact data can make them tangent): an error ε of the drawing moves the
+        # point of contact by about √ε along the tangent — no condition number to print
+        return True, (f"{at}ill-conditioned intersection '{step}': the loci touch (they meet at 0°, a point "
+                      f"of tangency); {what or 'the drawing'} may be wrong by about "
+                      f"{T.COND_SAFETY * math.sqrt(T.EPS):.1g} relative or more")
     if cond > T.COND_WARN:
-        est = T.COND_SAFETY * cond * cond * T.EPS
-        return True, (f"{where}: ill-conditioned intersection '{step}': the loci meet at {angle:.3g}° "
+        return True, (f"{at}ill-conditioned intersection '{step}': the loci meet at {angle:.3g}° "
                       f"(condition number {cond:.3g}); {what or 'the drawing'} may be wrong by about "
                       f"{est:.1g} relative or more")
     if cond > 1.0 / math.sin(math.radians(T.SHALLOW_DEG)):
-        return False, (f"{where}: shallow intersection '{step}' at {angle:.3g}°: a hand construction "
+        return False, (f"{at}shallow intersection '{step}' at {angle:.3g}°: a hand construction "
                        f"is unreliable here (a 0.5 mm error becomes about {0.5 * cond:.2g} mm)")
     return False, None
 
@@ -108,7 +117,8 @@ def judge_value(name: str, value: float, expected: float, drawn: float | None, s
     """A measured value against the expected one: a length read off the drawing within the
     drawing precision × its μ, any other value (a computed one) within 0.1 %."""
     tol = precision_mm * abs(scale) if drawn is not None else max(abs(expected) * 1e-3, T.EPS)
-    return Verdict(name, value, expected, tol, abs(value - expected) <= tol + 1e-12 * abs(expected), unit)
+    ok = abs(value - expected) <= tol + 1e-12 * abs(expected)
+    return Verdict(name, value, expected, tol, bool(ok), unit)  # bool: a numpy expected gives a numpy bool
 
 
 def split_name(name: str) -> tuple[str, str | None]:

@@ -392,6 +392,7 @@ def test_slider_driven_dead_centre_and_tangent_assembly() -> None:
     s = np.array([0.4, 0.4 * (1 + 1e-11), 0.4 * (1 - 1e-6), 0.4 * (1 + 1e-6), 0.3])
     kin = solve(SLIDER_DRIVEN, s)
     assert kin.valid.tolist() == [False, False, True, False, True]
+    assert kin.assembled.tolist() == [True, True, True, False, True]  # a dead centre is assembled
     assert all_finite(kin)
     for i in (0, 1):  # tangent: the configuration exists, the crank's rate does not
         assert "dead centre" in kin.reason[i]

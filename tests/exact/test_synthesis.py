@@ -84,3 +84,13 @@ def test_a_slider_crank_reanalysed_has_its_K_and_its_stroke(K, H, e):
 def test_a_slider_crank_with_no_crank_or_no_offset_is_none():
     assert slider_crank_from_K(50, 60, theta_of_K(2.5)) is None  # l_AB + e ≥ l_BC
     assert slider_crank_from_K(50, 0, theta_of_K(1.5)) is None  # A would fall on C₁
+
+
+def test_a_limit_position_with_C1_near_A_has_no_cancellation():
+    """l_CD = l_AD and ∠ADC₁ = 1e-7°: C₁ is 1.7e-9 of l_AD from A. The law of cosines as
+    c² + d² − 2cd·cos α gave AC₁ = 0 and divided by zero; as (c − d)² + 4cd·sin²(α/2) it is exact."""
+    alpha = math.radians(1e-7)
+    (x,) = crank_rocker_from_limit(0.1, 0.1, alpha, math.radians(36))
+    assert x.AC1 == pytest.approx(0.2 * math.sin(alpha / 2), rel=1e-12)
+    assert x.lBC - x.lAB == pytest.approx(x.AC1, rel=1e-6)  # AC₁ = BC − AB at the limit
+    assert fourbar(x.A, x.D, x.lAB, x.lBC, x.lCD, x.branch).K == pytest.approx(1.5, rel=1e-12)

@@ -26,6 +26,9 @@ LineXY = tuple[float, float, float, float]
 #: The largest coordinate or length a positions design takes, m: beyond it the bisectors' and the
 #: re-analysis's squares leave double precision (and no mechanism is a thousand kilometres across).
 MAX_SIZE = 1e6
+#: The shortest link a design takes, m (as the time-ratio task's): below it the squares of the
+#: lengths (Freudenstein's b², the bisectors' |p|²) leave double precision long before the page does.
+MIN_LENGTH = 1e-9
 
 
 def read_angles(r: Reader, base: str) -> tuple[float, ...] | None:
@@ -70,8 +73,13 @@ def read_point(r: Reader, base: str, required: bool = True) -> XY | None:
 
 
 def read_length(r: Reader, base: str, required: bool = True) -> float | None:
-    """A positive length (m), within MAX_SIZE."""
+    """A positive length (m), from MIN_LENGTH to MAX_SIZE."""
     v = sized(r, base, r.scalar(base, "length", positive=True, required=required))
+    # 1e-6 mm converts to a hair under 1e-9 m: the bound is the nanometre as written
+    if isinstance(v, float) and v < MIN_LENGTH * (1.0 - 1e-9):
+        r.problem(r.at(r.present(base) or base), f"{v:g} m is below {MIN_LENGTH:g} m: too short for a link "
+                                                 "to be designed in double precision")
+        return None
     return v if isinstance(v, float) else None
 
 
@@ -125,15 +133,27 @@ def design_rows(drawn: dict[str, float], exact: dict[str, float], mu: float, siz
                 xr: Reanalysis) -> tuple[list[Row], list[str]]:
     """Every form's rows: each length and coordinate drawn (mm × μl) against exact (its error
     relative to the design's largest link), then the re-analysis error and γ_min of the drawn
-    design against the exact one; and the names they answer."""
+    design against the exact one; and the names they answer. A re-analysis that cannot assemble a
+    prescribed position (an infinite error) is refused (GraphmechError), never a row."""
     from graphmech.problems.judging import Row
 
+    if not (math.isfinite(gr.error) and math.isfinite(xr.error)):
+        # the design passes through its positions by construction: only round-off (links too
+        # unequal for double precision) leaves one unassembled
+        raise GraphmechError("the designed linkage cannot be assembled at every prescribed position when "
+                             "re-analysed: its links are too unequal for double precision")
     rows = [Row(n, "m", d, mu, d * mu, exact[n], abs(d * mu - exact[n]) / size_m) for n, d in drawn.items()]
     rows.append(Row("reanalysis_error", "", None, 1.0, gr.error, xr.error, abs(gr.error - xr.error)))
     if gr.characteristics is not None and xr.characteristics is not None:
         gg, ge = gr.characteristics.gamma_min, xr.characteristics.gamma_min
         rows.append(Row("gamma_min", "deg", None, 1.0, math.degrees(gg), math.degrees(ge), abs(gg - ge) / math.pi))
     return rows, [r.name for r in rows]
+
+
+def unit(p: XY, q: XY) -> XY:
+    """The unit vector from p towards q (a figure's direction; (0, 0) where they coincide)."""
+    n = math.hypot(q[0] - p[0], q[1] - p[1]) or 1.0
+    return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
 
 
 def lines_sin(a: LineXY, b: LineXY) -> float:
@@ -161,33 +181,27 @@ def conditioning(cuts: Iterable[tuple[str, float, tuple[str, ...]]], rows: list[
     """The rows with those that hang on a shallow cut marked ill-conditioned, and the warnings.
 
     ``cuts``: (the cut in words, |sin| of the angle its loci meet at, the row names it carries).
-    Worded as a linkage's intersections are (:mod:`graphmech.problems.linkage.check`): past
-    ``COND_WARN`` the round-off itself is said; below ``SHALLOW_DEG`` the hand construction.
+    Worded by :func:`graphmech.problems.judging.conditioning_warning`, as a linkage's intersections
+    are: past ``COND_WARN`` the round-off itself is said; below ``SHALLOW_DEG`` the hand construction.
     """
-    from graphmech import tolerances as T
+    from graphmech.problems.judging import conditioning_warning
 
     out: list[str] = []
     marked: set[str] = set()
     for text, s, names in cuts:
-        c = math.inf if s <= 0.0 else 1.0 / s
-        angle = math.degrees(math.asin(min(1.0, s)))
         present = [n for n in names if any(r.name == n for r in rows)]
         qs = ", ".join(present) or "the drawing"
-        if c > T.COND_WARN:
-            est = T.COND_SAFETY * c * c * T.EPS
-            out.append(f"ill-conditioned intersection '{text}': the loci meet at {angle:.3g}° (condition number "
-                       f"{c:.3g}); {qs} may be wrong by about {est:.1g} relative or more")
-        elif angle < T.SHALLOW_DEG:
-            out.append(f"shallow intersection '{text}' at {angle:.3g}°: a hand construction is unreliable here "
-                       f"(a 0.5 mm error becomes about {0.5 * c:.2g} mm); {qs} marked ill-conditioned")
-        else:
+        ill, said = conditioning_warning("", text, math.inf if s <= 0.0 else 1.0 / s, qs)
+        if said is None:
             continue
+        out.append(said if ill else f"{said}; {qs} marked ill-conditioned")
         marked.update(present)
     return [replace(r, ill_conditioned=True) if r.name in marked else r for r in rows], out
 
 
 __all__ = [
     "MAX_SIZE",
+    "MIN_LENGTH",
     "arcs_sin",
     "conditioning",
     "design_rows",
@@ -201,4 +215,5 @@ __all__ = [
     "read_point",
     "read_side",
     "sized",
+    "unit",
 ]

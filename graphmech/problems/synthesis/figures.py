@@ -23,6 +23,7 @@ from graphmech.drawing.primitives import (
     angle_arc,
     arc_through,
 )
+from graphmech.problems.synthesis.common import unit
 
 if TYPE_CHECKING:
     from graphmech.methods.synthesis_time_ratio import (
@@ -65,9 +66,9 @@ def design_items(g: DrawnDesign, mu: float) -> list[Primitive]:
     items += [Segment(A, B1, "result"), Segment(B1, C1, "result"), Segment(C1, D, "result"),
               Segment(A, B2, "given", dashed=True), Segment(B2, C2, "given", dashed=True),
               FixedPivot(A), FixedPivot(D), Hinge(B1), Hinge(B2), Hinge(C1), Hinge(C2)]
-    u1, u2 = _unit(A, C1), _unit(A, C2)
-    mid = _unit((0.0, 0.0), (u1[0] + u2[0], u1[1] + u2[1])) if u1 != (-u2[0], -u2[1]) else u1
-    items += [Label("A", A, (u1, u2, _unit(A, D))), Label("D", D, (_unit(D, A), _unit(D, C1), _unit(D, C2))),
+    u1, u2 = unit(A, C1), unit(A, C2)
+    mid = unit((0.0, 0.0), (u1[0] + u2[0], u1[1] + u2[1])) if u1 != (-u2[0], -u2[1]) else u1
+    items += [Label("A", A, (u1, u2, unit(A, D))), Label("D", D, (unit(D, A), unit(D, C1), unit(D, C2))),
               Label("B_{1}", B1), Label("B_{2}", B2), Label("C_{1}", C1), Label("C_{2}", C2)]
     if theta is not None:  # K = 1: no angle to mark
         items.append(Label("θ", (A[0] + 1.3 * r * mid[0], A[1] + 1.3 * r * mid[1])))
@@ -88,13 +89,6 @@ def theta_circle(circle: tuple[_XY, float], through: tuple[_XY, ...]) -> Circle 
     return arc_through((cx, cy), through, margin_mm=0.15 * span)
 
 
-def _unit(p: _XY, q: _XY) -> _XY:
-    import math
-
-    n = math.hypot(q[0] - p[0], q[1] - p[1]) or 1.0
-    return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
-
-
 def guide_bar_items(g: DrawnGuideBar) -> list[Primitive]:
     """The guide bar: the line CA, the bar's limit lines from C, the crank circle tangent to them
     thin; the linkage bold at B₁ (dashed at B₂); with a stroke, the bar to D₁, D₂ and H between."""
@@ -105,9 +99,9 @@ def guide_bar_items(g: DrawnGuideBar) -> list[Primitive]:
     items += [Segment(C, ends[0], "result"), Segment(C, ends[1], "given", dashed=True),
               Segment(A, B1, "result"), Segment(A, B2, "given", dashed=True),
               FixedPivot(A), FixedPivot(C), Hinge(B1), Hinge(B2)]
-    arc = angle_arc(C, _unit(C, B1), _unit(C, B2), 0.3 * _dist(C, A))
+    arc = angle_arc(C, unit(C, B1), unit(C, B2), 0.3 * _dist(C, A))
     items += [] if arc is None else [arc]
-    items += [Label("A", A, (_unit(A, C), _unit(A, B1), _unit(A, B2))), Label("C", C, (_unit(C, A),)),
+    items += [Label("A", A, (unit(A, C), unit(A, B1), unit(A, B2))), Label("C", C, (unit(C, A),)),
               Label("B_{1}", B1), Label("B_{2}", B2), Label("ψ = θ", (C[0], C[1] + 0.38 * _dist(C, A)))]
     if "D1" in p:
         D1, D2 = p["D1"], p["D2"]
@@ -132,9 +126,9 @@ def slider_crank_items(g: DrawnSlider) -> list[Primitive]:
         FixedPivot(A), Hinge(B1), Hinge(B2), Hinge(C1), Hinge(C2),
     ]
     r = g.AC1_mm * 0.6
-    arc = angle_arc(A, _unit(A, C1), _unit(A, C2), r)
+    arc = angle_arc(A, unit(A, C1), unit(A, C2), r)
     items += [] if arc is None else [arc]
-    items += [Label("A", A, (_unit(A, C1), _unit(A, C2))), Label("B_{1}", B1), Label("B_{2}", B2),
+    items += [Label("A", A, (unit(A, C1), unit(A, C2))), Label("B_{1}", B1), Label("B_{2}", B2),
               Label("C_{1}", C1, ((0.0, 1.0),)), Label("C_{2}", C2, ((0.0, 1.0),)),
               Label("H", ((C1[0] + C2[0]) / 2.0, 0.0), ((1.0, 0.0), (-1.0, 0.0))),
               Label("e", (left, A[1] / 2.0), ((0.0, 1.0), (0.0, -1.0)))]

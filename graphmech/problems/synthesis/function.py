@@ -22,6 +22,7 @@ import numpy as np
 
 from graphmech.errors import GraphmechError, SceneError
 from graphmech.problems.reader import MISSING
+from graphmech.problems.synthesis.common import read_length, unit
 from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
@@ -39,8 +40,6 @@ ILL_CONDITION = 1e3
 #: Samples of the structural-error curve the figure draws and the check reads (200 intervals);
 #: its own error estimate reads the curve again at twice the intervals.
 CURVE_SAMPLES = 201
-#: The largest frame a design takes, m (as the positions task's MAX_SIZE: double precision).
-MAX_FRAME = 1e6
 #: The round-off of an angle found from the drawn lengths (ψ by the law of cosines, γ by acos), rad:
 #: the floor of the sampled rows' estimates (≈ 100 ε).
 ANGLE_ROUND_OFF = 100.0 * EPS
@@ -148,11 +147,7 @@ def read_function(r: Reader) -> FunctionProblem | None:
         else:
             n = n_raw
     spacing = r.string("spacing", choices=SPACINGS, default="chebyshev")
-    frame = r.scalar("frame", "length", positive=True)
-    if frame is not None and frame > MAX_FRAME:
-        r.problem(r.at(r.present("frame") or "frame"), f"{frame:g} m is beyond {MAX_FRAME:g} m: too large for a "
-                                                       "linkage to be designed in double precision")
-        frame = None
+    frame = read_length(r, "frame")  # within the positions task's bounds: double precision
     if (name is None or xs is None or phi0 is None or dphi is None or psi0 is None or dpsi is None or n is None
             or spacing is None or frame is None):
         return None
@@ -357,8 +352,10 @@ def analyse_function(p: FunctionProblem, mu: float, find: tuple[str, ...] = (), 
         raise SceneError([(p.key, ("the structural error is not finite over the range: f or the linkage breaks "
                                   "down in double precision"))], source)
     size_m = max(exact.values())
-    rows = [Row(n, "m", v, mu, v * mu, exact[n], abs(v * mu - exact[n]) / size_m) for n, v in drawn.items()]
-    gm, xm = _miss(gr, gbar), _miss(xr, xbar)
+    # plain floats: numpy's scalars reach the verdicts (a numpy bool is no JSON) and the table
+    rows = [Row(n, "m", float(v), mu, float(v) * mu, exact[n], float(abs(v * mu - exact[n]) / size_m))
+            for n, v in drawn.items()]
+    gm, xm = float(_miss(gr, gbar)), float(_miss(xr, xbar))
     rows.append(Row("reanalysis_error", "", None, 1.0, gm, xm, abs(gm - xm)))
     # the structural error: read off the sampled curve, against the located extreme
     (e1, x1), (e2, x2) = _curve_max(gr, p), _curve_max(gr2, p)
@@ -438,11 +435,6 @@ def _xy(z: complex) -> tuple[float, float]:
     return (float(z.real), float(z.imag))
 
 
-def _unit(p: tuple[float, float], q: tuple[float, float]) -> tuple[float, float]:
-    n = math.hypot(q[0] - p[0], q[1] - p[1]) or 1.0
-    return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
-
-
 def linkage_items(ff: FunctionFound) -> list[Primitive]:
     """The designed four-bar bold at the first precision position, AB_k, B_kC_k, DC_k thin dashed
     at the others, the frame line dash-dot, the swings Δφ at A and Δψ at D marked."""
@@ -465,15 +457,15 @@ def linkage_items(ff: FunctionFound) -> list[Primitive]:
                   Segment(D, C[k], "given", dashed=True), Hinge(B[k]), Hinge(C[k])]
     items += [Segment(A, B[0], "result"), Segment(B[0], C[0], "result"), Segment(C[0], D, "result"),
               FixedPivot(A), FixedPivot(D), Hinge(B[0]), Hinge(C[0])]
-    labels: list[Primitive] = [Label("A", A, (_unit(A, B[0]), _unit(A, D), *(_unit(A, b) for b in B[1:]))),
-                               Label("D", D, (_unit(D, C[0]), _unit(D, A), *(_unit(D, c) for c in C[1:])))]
+    labels: list[Primitive] = [Label("A", A, (unit(A, B[0]), unit(A, D), *(unit(A, b) for b in B[1:]))),
+                               Label("D", D, (unit(D, C[0]), unit(D, A), *(unit(D, c) for c in C[1:])))]
     for centre, ends, r_link, text in ((A, B, ff.drawn_mm["lAB"], "Δφ"), (D, C, ff.drawn_mm["lCD"], "Δψ")):
-        u0, u1 = _unit(centre, ends[0]), _unit(centre, ends[-1])
+        u0, u1 = unit(centre, ends[0]), unit(centre, ends[-1])
         arc = angle_arc(centre, u0, u1, 0.3 * r_link, "construction")
         if arc is not None:
             items.append(arc)
             mid = arc.points[len(arc.points) // 2]
-            labels.append(Label(text, mid, (_unit(mid, centre),), italic=False))
+            labels.append(Label(text, mid, (unit(mid, centre),), italic=False))
     labels += [Label(f"B_{{{k + 1}}}", B[k]) for k in range(n)] + [Label(f"C_{{{k + 1}}}", C[k]) for k in range(n)]
     return items + labels
 

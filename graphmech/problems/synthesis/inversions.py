@@ -42,6 +42,7 @@ from graphmech.problems.synthesis.common import (
     read_lengths,
     read_point,
     read_side,
+    unit,
 )
 
 if TYPE_CHECKING:
@@ -422,9 +423,9 @@ def analyse(p: Form, mu: float, find: tuple[str, ...] = (), source: str = "") ->
             cuts += [(f"C{i + 1} = arc D ∩ arc E{i + 1}", arcs_sin(pm.D, pm.E[i], g.C[i]), names) for i in range(3)]
             sol = {"lAB": ex["lAB"], "lBC": ex["lBC"], "lCD": p.l_CD, "lAD": abs(D - A), "lBE": ex["lBE"],
                    "lEC": p.l_EC, "B1": [B[0].real, B[0].imag], "C1": [C[0].real, C[0].imag]}
+        rows, known = design_rows(dr, ex, mu, size, gr, xr)
     except GraphmechError as err:
         raise SceneError([(p.key, str(err))], source) from None
-    rows, known = design_rows(dr, ex, mu, size, gr, xr)
     wanted = set(find) or None
     kept, shallow = conditioning(cuts, [r for r in rows if wanted is None or r.name in wanted])
     sol = {"name": "design", **sol, "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
@@ -459,20 +460,20 @@ def size(p: Form) -> float:
 
 def lines(f: InversionFound) -> list[str]:
     """Under the table: the design's lengths, class and re-analysis error."""
-    s = f.solutions[0]
+    return [design_line(f.solutions[0])]
+
+
+def design_line(s: dict[str, Any]) -> str:
+    """A positions design said under the table (every form's, from its ``check --json`` record):
+    the lengths it has, Grashof's class, the re-analysis error and the note."""
     mm = {k: f"{s[k] * 1000:.6g} mm" for k in ("lAB", "lBC", "lCD", "lAD", "lBE", "lEC", "lDE", "lEF", "e") if k in s}
     said = ", ".join(f"l_{k[1:]} = {v}" if k != "e" else f"e = {v}" for k, v in mm.items())
     cls = str(s["grashof"]).replace("_", " ")
     note = f"; {s['note']}" if s["note"] else ""
-    return [f"design: {said}: {cls}; re-analysed through the positions: error {s['reanalysis']['error']:.1e}{note}"]
+    return f"design: {said}: {cls}; re-analysed through the positions: error {s['reanalysis']['error']:.1e}{note}"
 
 
 # --------------------------------------------------------------------------------- the figure
-
-
-def _unit(p: XY, q: XY) -> XY:
-    n = math.hypot(q[0] - p[0], q[1] - p[1]) or 1.0
-    return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
 
 
 def _sub(label: str) -> str:
@@ -548,8 +549,8 @@ def slider_items(g: SliderCrankDesign, p: SliderCrankPositions) -> list[Primitiv
                   Label(f"C_{{{i + 1}}}", C[i], ((0.0, 1.0), (0.0, -1.0)))]
     items += [Segment(p.A, B[0], "result"), Segment(B[0], g.C1, "result"), Slider(g.C1, p.guide_angle),
               FixedPivot(p.A), Hinge(B[0]), Hinge(g.C1),
-              Label("A", p.A, (_unit(p.A, B[0]),)), Label("B_{1}", B[0]),
-              Label("C_{1}", g.C1, ((0.0, 1.0), (0.0, -1.0), _unit(g.C1, B[0])))]
+              Label("A", p.A, (unit(p.A, B[0]),)), Label("B_{1}", B[0]),
+              Label("C_{1}", g.C1, ((0.0, 1.0), (0.0, -1.0), unit(g.C1, B[0])))]
     return items
 
 
@@ -557,7 +558,7 @@ def guide_direction(F: tuple[XY, ...]) -> XY:
     """The slider's guide, F₁ → F_n; where it comes back to F₁, along its farthest two positions."""
     a, b = (F[0], F[-1]) if math.dist(F[0], F[-1]) > 0.0 else max(((f, g) for f in F for g in F),
                                                                  key=lambda fg: math.dist(*fg))
-    return _unit(a, b)
+    return unit(a, b)
 
 
 def rocker_items(g: JointDesign, p: RockerSliderPositions) -> list[Primitive]:
@@ -589,13 +590,13 @@ def rocker_items(g: JointDesign, p: RockerSliderPositions) -> list[Primitive]:
     for i in range(len(F)):
         if i != k:
             items.append(Segment(p.D, p.C[i], "given", dashed=True))
-        items += [Hinge(p.C[i]), Hinge(F[i]), Label(f"C_{{{i + 1}}}", p.C[i], (_unit(p.C[i], p.D),)),
+        items += [Hinge(p.C[i]), Hinge(F[i]), Label(f"C_{{{i + 1}}}", p.C[i], (unit(p.C[i], p.D),)),
                   Label(f"F_{{{i + 1}}}", F[i], (u, (-u[0], -u[1])))]
     E, n = g.joint, p.invert_to
     items += [Segment(p.D, p.C[k], "result"), Segment(p.D, E, "result"), Segment(p.C[k], E, "result"),
               Segment(E, F[k], "result"), Slider(F[k], math.atan2(u[1], u[0])), FixedPivot(p.D), Hinge(E),
-              Label("D", p.D, (_unit(p.D, p.C[k]), _unit(p.D, E))),
-              Label(f"E_{{{n}}}", E, (_unit(E, F[k]), _unit(E, p.D), _unit(E, p.C[k])))]
+              Label("D", p.D, (unit(p.D, p.C[k]), unit(p.D, E))),
+              Label(f"E_{{{n}}}", E, (unit(E, F[k]), unit(E, p.D), unit(E, p.C[k])))]
     return items
 
 
@@ -607,7 +608,7 @@ def coupler_point_items(g: CouplerPointDesign, p: CouplerPointPositions) -> list
     from graphmech.drawing.primitives import FixedPivot, Hinge, Label, Segment
 
     E, C = g.E, g.C
-    u = _unit(E[0], E[-1])
+    u = unit(E[0], E[-1])
     ts = [(q[0] - E[0][0]) * u[0] + (q[1] - E[0][1]) * u[1] for q in E]
     lo, hi = min(ts) - 10.0, max(ts) + 10.0
     items: list[Primitive] = [Segment((E[0][0] + lo * u[0], E[0][1] + lo * u[1]),
@@ -625,11 +626,11 @@ def coupler_point_items(g: CouplerPointDesign, p: CouplerPointPositions) -> list
     items += [Segment(g.A, B1, "result"), Segment(B1, C[0], "result"), Segment(C[0], g.D, "result"),
               Segment(B1, E[0], "result"), Segment(C[0], E[0], "result"),
               Segment(g.A, g.D, "construction", dashdot=True), FixedPivot(g.A), FixedPivot(g.D),
-              Hinge(B1), Hinge(C[0]), Label("A", g.A, (_unit(g.A, B1), _unit(g.A, g.D))),
-              Label("D", g.D, (_unit(g.D, C[0]), _unit(g.D, g.A))), Label("B_{1}", B1)]
+              Hinge(B1), Hinge(C[0]), Label("A", g.A, (unit(g.A, B1), unit(g.A, g.D))),
+              Label("D", g.D, (unit(g.D, C[0]), unit(g.D, g.A))), Label("B_{1}", B1)]
     items += [Hinge(c) for c in C[1:]] + [Hinge(e) for e in E]
-    items += [Label(f"C_{{{i + 1}}}", C[i], (_unit(C[i], g.D), _unit(C[i], E[i]))) for i in range(3)]
-    items += [Label(f"E_{{{i + 1}}}", E[i], (u, (-u[0], -u[1]), _unit(E[i], C[i]))) for i in range(3)]
+    items += [Label(f"C_{{{i + 1}}}", C[i], (unit(C[i], g.D), unit(C[i], E[i]))) for i in range(3)]
+    items += [Label(f"E_{{{i + 1}}}", E[i], (u, (-u[0], -u[1]), unit(E[i], C[i]))) for i in range(3)]
     return items
 
 
@@ -810,6 +811,7 @@ __all__ = [
     "arc_about",
     "bisector_items",
     "coupler_point_items",
+    "design_line",
     "exact_coupler_point",
     "exact_rocker_joint",
     "exact_slider_pin",

@@ -30,6 +30,7 @@ from graphmech.problems.synthesis.common import (
     read_angles,
     read_length,
     read_point,
+    unit,
 )
 
 if TYPE_CHECKING:
@@ -219,16 +220,16 @@ def analyse_fourbar(p: FourbarPositions, mu: float, find: tuple[str, ...] = (), 
         fourbar_positions(p.A, p.D, p.l_AB, p.phi, p.psi, p.l_CD, p.side)  # refused in metres, as given
         g = fourbar_positions(pm.A, pm.D, pm.l_AB, pm.phi, pm.psi, pm.l_CD, pm.side)
         C1 = exact_C1(p, complex(*g.C1) * mu)
+        A, D = complex(*p.A), complex(*p.D)
+        B1 = A + p.l_AB * complex(math.cos(p.phi[0]), math.sin(p.phi[0]))
+        ex = {"lBC": abs(C1 - B1), "lCD": abs(C1 - D), "xC1": C1.real, "yC1": C1.imag}
+        dr = {"lBC": g.l_BC, "lCD": g.l_CD, "xC1": g.C1[0], "yC1": g.C1[1]}
+        xr = reanalyse_fourbar(A, D, p.l_AB, ex["lBC"], ex["lCD"], p.phi, p.psi, C1)
+        gC1 = complex(*g.C1) * mu
+        gr = reanalyse_fourbar(A, D, p.l_AB, g.l_BC * mu, g.l_CD * mu, p.phi, p.psi, gC1)
+        rows, names = design_rows(dr, ex, mu, max(p.l_AB, ex["lBC"], ex["lCD"], abs(D - A)), gr, xr)
     except GraphmechError as e:
         raise SceneError([(p.key, str(e))], source) from None
-    A, D = complex(*p.A), complex(*p.D)
-    B1 = A + p.l_AB * complex(math.cos(p.phi[0]), math.sin(p.phi[0]))
-    ex = {"lBC": abs(C1 - B1), "lCD": abs(C1 - D), "xC1": C1.real, "yC1": C1.imag}
-    dr = {"lBC": g.l_BC, "lCD": g.l_CD, "xC1": g.C1[0], "yC1": g.C1[1]}
-    xr = reanalyse_fourbar(A, D, p.l_AB, ex["lBC"], ex["lCD"], p.phi, p.psi, C1)
-    gC1 = complex(*g.C1) * mu
-    gr = reanalyse_fourbar(A, D, p.l_AB, g.l_BC * mu, g.l_CD * mu, p.phi, p.psi, gC1)
-    rows, names = design_rows(dr, ex, mu, max(p.l_AB, ex["lBC"], ex["lCD"], abs(D - A)), gr, xr)
     sol = {"name": "design", "lAB": p.l_AB, "lBC": ex["lBC"], "lCD": ex["lCD"], "lAD": abs(D - A),
            "C1": [C1.real, C1.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
            "reanalysis": {"error": xr.error, "gamma_deg": [math.degrees(x) for x in xr.gamma],
@@ -264,17 +265,17 @@ def analyse_positions(p: PositionsProblem, mu: float, find: tuple[str, ...] = ()
         coupler_positions(p.B, p.C, p.frame)  # refused in metres, as given
         g = coupler_positions(pm.B, pm.C, pm.frame)
         A, D = exact_pivots(p)
+        B = [complex(*b) for b in p.B]
+        C = [complex(*c) for c in p.C]
+        xr = reanalyse_coupler(A, D, B, C)
+        gr = reanalyse_coupler(complex(*g.A) * mu, complex(*g.D) * mu, B, C)
+        ex = {"lAB": abs(B[0] - A), "lBC": abs(C[0] - B[0]), "lCD": abs(C[0] - D), "lAD": abs(D - A),
+              "xA": A.real, "yA": A.imag, "xD": D.real, "yD": D.imag}
+        dr = {"lAB": g.l_AB, "lBC": g.l_BC, "lCD": g.l_CD, "lAD": g.l_AD, "xA": g.A[0], "yA": g.A[1],
+              "xD": g.D[0], "yD": g.D[1]}
+        rows, names = design_rows(dr, ex, mu, max(ex["lAB"], ex["lBC"], ex["lCD"], ex["lAD"]), gr, xr)
     except GraphmechError as e:
         raise SceneError([(p.key, str(e))], source) from None
-    B = [complex(*b) for b in p.B]
-    C = [complex(*c) for c in p.C]
-    xr = reanalyse_coupler(A, D, B, C)
-    gr = reanalyse_coupler(complex(*g.A) * mu, complex(*g.D) * mu, B, C)
-    ex = {"lAB": abs(B[0] - A), "lBC": abs(C[0] - B[0]), "lCD": abs(C[0] - D), "lAD": abs(D - A),
-          "xA": A.real, "yA": A.imag, "xD": D.real, "yD": D.imag}
-    dr = {"lAB": g.l_AB, "lBC": g.l_BC, "lCD": g.l_CD, "lAD": g.l_AD, "xA": g.A[0], "yA": g.A[1],
-          "xD": g.D[0], "yD": g.D[1]}
-    rows, names = design_rows(dr, ex, mu, max(ex["lAB"], ex["lBC"], ex["lCD"], ex["lAD"]), gr, xr)
     warnings = [xr.note] if xr.note else []
     sol = {"name": "design", **{n: ex[n] for n in ("lAB", "lBC", "lCD", "lAD")}, "A": [A.real, A.imag],
            "D": [D.real, D.imag], "grashof": xr.grashof, "branch": xr.branch, "one_branch": xr.one_branch,
@@ -308,7 +309,7 @@ def lines(pf: PositionsFound | inversions.InversionFound) -> list[str]:
     """Under the table: the design's Grashof class, re-analysis error and note."""
     if isinstance(pf, inversions.InversionFound):
         return inversions.lines(pf)
-    return [grashof_line(s) for s in pf.solutions]
+    return [inversions.design_line(s) for s in pf.solutions]
 
 
 def panels(pf: PositionsFound | inversions.InversionFound, mu: float) -> tuple[str, list[Panel]]:
@@ -319,15 +320,6 @@ def panels(pf: PositionsFound | inversions.InversionFound, mu: float) -> tuple[s
 
     name = panel_title(pf)
     return name, [Panel("design", name, tuple(coupler_items(pf)), notes(pf, mu), row=0, scales=(("l", mu),))]
-
-
-def grashof_line(s: dict[str, Any]) -> str:
-    """The design said under the table: Grashof's class, the re-analysis error, the note."""
-    cls = str(s["grashof"]).replace("_", " ")
-    note = f"; {s['note']}" if s["note"] else ""
-    return (f"design: l_AB = {s['lAB'] * 1000:.6g} mm, l_BC = {s['lBC'] * 1000:.6g} mm, l_CD = {s['lCD'] * 1000:.6g} mm, "
-            f"l_AD = {s['lAD'] * 1000:.6g} mm: {cls}; re-analysed through the positions: error "
-            f"{s['reanalysis']['error']:.1e}{note}")
 
 
 __all__ = [
@@ -341,7 +333,6 @@ __all__ = [
     "choose_scale",
     "coupler_items",
     "exact_pivots",
-    "grashof_line",
     "lines",
     "notes",
     "panels",
@@ -386,7 +377,7 @@ def coupler_items(pf: PositionsFound) -> list[Primitive]:
     B1, C1 = pm.B[0], pm.C[0]
     items += [Segment(g.A, B1, "result"), Segment(B1, C1, "result"), Segment(C1, g.D, "result"),
               Segment(g.A, g.D, "construction", dashdot=True), FixedPivot(g.A), FixedPivot(g.D), Hinge(B1), Hinge(C1),
-              Label("A", g.A, (_unit(g.A, B1), _unit(g.A, g.D))), Label("D", g.D, (_unit(g.D, C1), _unit(g.D, g.A)))]
+              Label("A", g.A, (unit(g.A, B1), unit(g.A, g.D))), Label("D", g.D, (unit(g.D, C1), unit(g.D, g.A)))]
     items += [Label(f"B_{{{i + 1}}}", pm.B[i]) for i in range(n)] + [Label(f"C_{{{i + 1}}}", pm.C[i]) for i in range(n)]
     return items
 
@@ -416,8 +407,8 @@ def fourbar_items(g: FourbarDesign) -> list[Primitive]:
     items += [Circle(a.centre, a.radius, "construction") for a in j.arcs]
     items += [Segment(g.A, g.B1, "result"), Segment(g.B1, g.C1, "result"), Segment(g.C1, g.D, "result"),
               Segment(g.A, g.D, "construction", dashdot=True), FixedPivot(g.A), FixedPivot(g.D), Hinge(g.B1),
-              Hinge(g.C1), Label("A", g.A, (_unit(g.A, g.B1), _unit(g.A, g.D))),
-              Label("D", g.D, (_unit(g.D, g.C1), _unit(g.D, g.A))), Label("B_{1}", g.B1), Label("C_{1}", g.C1)]
+              Hinge(g.C1), Label("A", g.A, (unit(g.A, g.B1), unit(g.A, g.D))),
+              Label("D", g.D, (unit(g.D, g.C1), unit(g.D, g.A))), Label("B_{1}", g.B1), Label("C_{1}", g.C1)]
     return items
 
 
@@ -435,11 +426,6 @@ def notes(pf: PositionsFound, mu: float) -> tuple[str, ...]:
     return (scale_text("l", mu),
             (f"l_{{AB}} = {number(g.l_AB * mu * 1000)} mm, l_{{BC}} = {number(g.l_BC * mu * 1000)} mm, "
              f"l_{{CD}} = {number(g.l_CD * mu * 1000)} mm, l_{{AD}} = {number(g.l_AD * mu * 1000)} mm"))
-
-
-def _unit(p: XY, q: XY) -> XY:
-    n = math.hypot(q[0] - p[0], q[1] - p[1]) or 1.0
-    return ((q[0] - p[0]) / n, (q[1] - p[1]) / n)
 
 
 #: The positions task's phrases: key → (English, 中文, русский). 孙桓 §8: 按连杆给定位置设计.

@@ -45,6 +45,11 @@ K_MAX = 3.0
 #: Above 1 and below this, θ (< 1.6e-6 rad) draws a θ-circle more than 10⁶ chords across: the
 #: design is K = 1's to the drawing's precision, and its construction would be round-off.
 K_NEAR_1 = 1.0 + 1e-6
+#: The smallest swing ψ drawn, rad: C₁C₂ = 2·l_CD·sin(ψ/2) stays far above the round-off of C's
+#: coordinates (1e-16 of l_CD); 1e-300° put C₁ on C₂ and the chord's direction divided by zero.
+#: A limit angle ∠ADC₁ keeps as far from 0 and 180° (C₁ off the frame line, and off A where
+#: l_CD = l_AD).
+MIN_SWING = 1e-9
 #: What each design's rows are called, with their units (the bank's keys without a unit).
 SOLUTION_NAMES = {"AC1": "m", "AC2": "m", "lAB": "m", "lBC": "m", "K": "", "psi": "deg", "gamma_min": "deg"}
 #: The most designs one construction gives (two rays, two cuts each).
@@ -207,6 +212,16 @@ def _read_crank_rocker(r: Reader, mech: str | None, K: float | None) -> TimeRati
         if value is not None and not 0.0 < value < math.pi:
             r.problem(r.at(r.present(base) or base), f"{what} must lie between 0 and 180°")
             return None
+    if swing is not None and swing < MIN_SWING:  # C₁, C₂ one point: the chord C₁C₂ has no direction
+        r.problem(r.at(r.present("swing") or "swing"),
+                  f"ψ = {math.degrees(swing):.3g}° is under {math.degrees(MIN_SWING):.2g}°: C₁ and C₂ all but "
+                  "coincide (the chord C₁C₂ under 1e-9 of l_CD) — the rocker must swing")
+        return None
+    if limit is not None and not MIN_SWING <= limit <= math.pi - MIN_SWING:  # DC₁ along the frame line
+        r.problem(r.at(r.present("limit_angle") or "limit_angle"),
+                  f"∠ADC₁ = {math.degrees(limit):.12g}° is within {math.degrees(MIN_SWING):.2g}° of the frame line: "
+                  "the rocker lies along the frame, C₁ all but on the line AD")
+        return None
     for value, base in ((c, "rocker"), (d, "frame")):
         if value is not None and not 1e-9 <= value <= 1e9:
             r.problem(r.at(r.present(base) or base), f"{value:g} m is absurd for a link (1e-9 … 1e9 m)")

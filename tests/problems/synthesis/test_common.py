@@ -3,6 +3,7 @@ angles the loci meet at and the conditioning they lead to."""
 from __future__ import annotations
 
 import cmath
+import dataclasses
 import math
 
 import pytest
@@ -12,6 +13,7 @@ from graphmech.problems.judging import Row
 from graphmech.problems.synthesis.common import (
     arcs_sin,
     conditioning,
+    design_rows,
     exact_joint,
     line_arc_sin,
     lines_sin,
@@ -54,3 +56,28 @@ def test_conditioning_marks_the_rows_of_a_shallow_cut_only():
                     "error becomes about 14 mm); lAB marked ill-conditioned")]
     _, said = conditioning([("X", 1e-4, ("lCD",))], rows)
     assert said[0].startswith("ill-conditioned intersection 'X': the loci meet at 0.00573° (condition number 1e+04)")
+
+
+def test_loci_that_touch_are_said_without_an_infinite_number():
+    """Arcs that only touch (|sin| = 0, exact data) were said with "condition number inf" and
+    "wrong by about inf": the tangency is worded, with the √ε a point of contact moves by."""
+    rows = [Row("lAB", "m", 10.0, 0.001, 0.01, 0.01, 0.0)]
+    kept, said = conditioning([("C2 = arc D ∩ arc E2", 0.0, ("lAB",))], rows)
+    assert kept[0].ill_conditioned
+    assert said == [("ill-conditioned intersection 'C2 = arc D ∩ arc E2': the loci touch (they meet at 0°, a point "
+                     "of tangency); lAB may be wrong by about 3e-07 relative or more")]
+    # a cut so shallow that the round-off estimate overflows is worded the same
+    assert conditioning([("X", 1e-200, ("lAB",))], rows)[1][0].startswith("ill-conditioned intersection 'X': the loci touch")
+
+
+def test_a_design_left_unassembled_by_round_off_is_refused_in_words():
+    """An infinite re-analysis error is never a row (its key would be the row's name)."""
+    from graphmech.exact.synthesis_positions import Reanalysis
+
+    unreached = Reanalysis(math.inf, (), "left", True, "crank_rocker_AB", None, (), "")
+    reached = dataclasses.replace(unreached, error=1e-16)
+    with pytest.raises(GraphmechError, match="cannot be assembled at every prescribed position when re-analysed"):
+        design_rows({"lAB": 30.0}, {"lAB": 0.03}, 0.001, 0.1, reached, unreached)
+    rows, names = design_rows({"lAB": 30.0}, {"lAB": 0.03}, 0.001, 0.1, reached, reached)
+    assert names == ["lAB", "reanalysis_error"] and rows[1].exact == 1e-16
+

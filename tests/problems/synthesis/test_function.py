@@ -247,3 +247,31 @@ def test_a_range_ending_on_the_domains_edge_is_sampled_inside_it():
     sheet = synthesis_sheet(an, (297.0, 210.0))
     assert all(math.isfinite(r.graphical) and math.isfinite(r.exact) for r in an.rows) and len(sheet.panels) == 2
     assert {r.name: r for r in an.rows}["structural_error_max"].exact == pytest.approx(2.45712, rel=1e-4)
+
+
+def test_a_measured_length_is_judged_in_the_json(tmp_path):
+    """A measured l_AB in a function scene: the drawn lengths were numpy scalars, the verdict's ok
+    a numpy bool, and ``check --json`` stopped on an internal error (exit 3)."""
+    scene = write_scene(tmp_path, LOG10 + "\n[measured]\nlAB = 0.0925\nreanalysis_error = 0.5\n", "fn.toml")
+    code, out, err = run_cli("check", "--json", str(scene))
+    assert code == 1, err  # reanalysis_error = 0.5 is far off: a failed verdict, not a crash
+    verdicts = {v["name"]: v for v in json.loads(out)["measured"]}
+    assert verdicts["lAB"]["ok"] is True and verdicts["lAB"]["tolerance"] == pytest.approx(0.001)
+    assert verdicts["reanalysis_error"]["ok"] is False
+    assert all(type(r.graphical) is float for r in analyse_synthesis(parse_text(LOG10)).rows)
+
+
+@pytest.mark.parametrize(("frame", "words"), [
+    ("1e-300", "synthesis.frame_mm: 1e-303 m is below 1e-09 m: too short for a link to be designed in double precision"),
+    ("1e300", "synthesis.frame_mm: 1e+297 m is beyond 1e+06 m: too large for a linkage to be designed in double precision"),
+])
+def test_a_frame_out_of_double_precision_is_refused_at_its_key(tmp_path, frame: str, words: str):
+    """frame_mm = 1e-300 was refused at synthesis.psi_range_deg ('no real coupler: b² … = 0'): b²
+    underflowed, and the key named was not the one at fault."""
+    scene = write_scene(tmp_path, _with(frame_mm=frame), "fn.toml")
+    assert_refused(run_cli("check", str(scene)), "fn.toml", words)
+
+
+def test_a_nanometre_frame_is_still_designed():
+    rows = _rows(_with(frame_mm="1e-6"))
+    assert rows["lAD"].exact == pytest.approx(1e-9) and rows["lAB"].exact == pytest.approx(0.09254303094497704 / 5e7)

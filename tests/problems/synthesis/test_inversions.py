@@ -5,7 +5,9 @@ steps in three languages and the conditioning of the cuts."""
 from __future__ import annotations
 
 import cmath
+import json
 import math
+import re
 
 import pytest
 
@@ -262,6 +264,18 @@ def test_the_coupler_and_four_bar_forms_flag_shallow_cuts_too():
     an = analyse_synthesis(parse_text(fourbar))
     assert [w.split(":")[0] for w in an.warnings][-1] == "shallow intersection 'C1 = arc ∩ bB1B2'' at 2.54°"
     assert [r.name for r in an.rows if r.ill_conditioned] == ["lBC", "lCD", "xC1", "yC1"]
+
+
+def test_an_arc_that_only_touches_is_warned_of_in_words(tmp_path):
+    """E2 at l_CD + l_EC from D: the arcs about D and E2 touch (exactly, in the data); the warning
+    said "condition number inf … wrong by about inf" — an infinite number in the output."""
+    scene = tmp_path / "pt.toml"
+    scene.write_text(replace_once(POINT, "E_mm = [20, 140]", "E_mm = [0, 165]"), encoding="utf-8")
+    code, out, _ = run_cli("check", "--json", str(scene))
+    assert code == 0
+    (warning,) = [w for w in json.loads(out)["warnings"] if "C2 = arc D ∩ arc E2" in w]
+    assert "the loci touch (they meet at 0°, a point of tangency)" in warning
+    assert not re.search(r"\b(inf|nan)\b", out, re.IGNORECASE)
 
 
 def test_the_scenes_figures_are_committed():

@@ -13,7 +13,7 @@ from graphmech.problems.synthesis.check import (
 from graphmech.problems.synthesis.figures import synthesis_sheet
 from graphmech.problems.synthesis.positions import CouplerPositions, exact_pivots
 from graphmech.problems.synthesis.steps import protocol
-from tests.conftest import ROOT, run_cli
+from tests.conftest import ROOT, SCENES, run_cli
 from tests.scenes import parse_text, replace_once
 
 THREE = (ROOT / "figures" / "scenes" / "synthesis.coupler_three_positions.toml").read_text(encoding="utf-8")
@@ -222,3 +222,25 @@ def test_a_size_beyond_double_precision_is_refused_at_its_key(edit, key, tmp_pat
                  encoding="utf-8")
     code, out, err = run_cli("check", str(p))
     assert (code, out) == (2, "") and err.startswith(f"s.toml: {key}: 1e+297 m is beyond 1e+06 m")
+
+
+def test_a_crank_far_shorter_than_the_frame_is_designed_not_refused_as_out_of_range():
+    """l_AB = 1e-3 mm against a 100 mm frame: the output DC comes out 2e-3 mm, the angle at B of
+    the triangle BCD is 1e-5 rad — the re-analysis took that for a dead centre, counted the
+    positions unreached (error inf) and the scene was refused as 'reanalysis_error: numbers out
+    of the range of double precision', a row's name for a key."""
+    text = replace_once((SCENES / "synthesis.fourbar_three_positions.toml").read_text(encoding="utf-8"),
+                        "l_AB_mm = 30", "l_AB_mm = 1e-3")
+    rows = {r.name: r for r in analyse_synthesis(parse_text(text)).rows}
+    assert rows["lCD"].exact == pytest.approx(2.1363016311e-6, rel=1e-9)
+    assert rows["reanalysis_error"].exact < 1e-9 and rows["reanalysis_error"].graphical < 1e-9
+
+
+
+def test_a_link_under_a_nanometre_is_refused_at_its_key():
+    text = replace_once((SCENES / "synthesis.fourbar_three_positions.toml").read_text(encoding="utf-8"),
+                        "l_AB_mm = 30", "l_AB_mm = 1e-7")
+    with pytest.raises(SceneError) as e:
+        parse_text(text)
+    assert e.value.problems == [("synthesis.l_AB_mm",
+                                 "1e-10 m is below 1e-09 m: too short for a link to be designed in double precision")]

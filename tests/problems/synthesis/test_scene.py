@@ -2,11 +2,12 @@
 from __future__ import annotations
 
 import math
+import re
 
 import pytest
 
 from graphmech.problems.synthesis.scene import TASKS
-from tests.conftest import SCENES, assert_refused, run_cli
+from tests.conftest import ROOT, SCENES, assert_refused, run_cli
 from tests.scenes import only_problem, parse_text, replace_once, scene_text, write_scene
 
 SWING = scene_text("synthesis/swing")
@@ -35,6 +36,9 @@ def test_the_tasks_are_the_readers_listed():
     ("swing_deg = 40", "", "synthesis.swing", "missing: write swing_deg"),
     ("swing_deg = 40", "swing_deg = 40\nlimit_angle_deg = 45", "synthesis.limit_angle_deg", "not both"),
     ("swing_deg = 40", "swing_deg = 190", "synthesis.swing_deg", "between 0 and 180°"),
+    # the fuzz's: ψ = 1e-300° put C₁ on C₂ and the chord's direction divided by zero (exit 3)
+    ("swing_deg = 40", "swing_deg = 1e-300", "synthesis.swing_deg",
+     "ψ = 1e-300° is under 5.7e-08°: C₁ and C₂ all but coincide (the chord C₁C₂ under 1e-9 of l_CD)"),
     ("rocker_mm = 75", "rocker_mm = -75", "synthesis.rocker_mm", "> 0"),
     ("frame_mm = 100", "frame = 100", "synthesis.frame", "unit not stated"),
     ("swing_deg = 40", "swing_deg = 40\nstroke_mm = 10", "synthesis.stroke_mm", "not for a crank-rocker"),
@@ -99,3 +103,82 @@ def test_the_bank_scene_reads_its_limit_angle():
 
     p = load_scene(SCENES / "linkage.crank_rocker_synthesis_K1.5.toml").problem.problem
     assert p.swing is None and p.limit_angle == pytest.approx(math.pi / 4) and p.key == "synthesis.limit_angle_deg"
+
+
+def _lines(text: str, *pairs: str) -> str:
+    """``text`` with each whole line ``old`` replaced by ``new`` (a key, not a title that names it)."""
+    for old, new in zip(pairs[::2], pairs[1::2]):
+        found = re.search(r"^" + re.escape(old) + r"$", text, re.MULTILINE)
+        assert found, old
+        text = text[:found.start()] + new + text[found.end():]
+    return text
+
+
+def test_documented_error_messages_are_real():
+    """Every line of the synthesis 'What is refused' block is, word for word, what is printed."""
+    from graphmech.errors import GraphmechError
+    from graphmech.problems.synthesis.check import analyse_synthesis
+
+    section = (ROOT / "docs" / "scene-format.md").read_text(encoding="utf-8").split(
+        "### What is refused in a synthesis scene", 1)[1]
+    documented = re.search(r"```text\n(.*?)```", section, re.DOTALL).group(1).strip().splitlines()
+    sc, gb, cp, fb, sp, rs, pt, fn = ((SCENES / f"synthesis.{n}.toml").read_text(encoding="utf-8") for n in (
+        "offset_slider_crank_K1.5", "shaper_guide_bar", "coupler_three_positions", "fourbar_three_positions",
+        "slider_crank_positions", "rocker_slider_three_positions", "coupler_point_three_positions", "function_log10"))
+    mistakes = [
+        _lines(SWING, "K = 1.4", "K = 0.8"),
+        _lines(SWING, "K = 1.4", "K = 3"),
+        _lines(SWING, "K = 1.4", "K = 1.5", "rocker_mm = 75", "rocker_mm = 50", "swing_deg = 40", "swing_deg = 60"),
+        _lines(SWING, "swing_deg = 40", ""),
+        _lines(sc, "K = 1.5", "K = 1"),
+        _lines(sc, "offset_mm = 10", "offset_mm = 0"),
+        _lines(sc, "K = 1.5", "K = 2.5", "offset_mm = 10", "offset_mm = 60"),
+        _lines(gb, "K = 2", "K = 1"),
+        _lines(gb, "stroke_mm = 400", "stroke_mm = 400\nrocker_mm = 75"),
+        _lines(cp, "B_mm = [40, 30]", "B_mm = [42, 48]", "C_mm = [79, 82]", "C_mm = [102, 73]"),
+        _lines(fb, "phi_deg = [45, 90, 135]", "phi_deg = [45, 90]", "psi_deg = [60, 80, 105]",
+               "psi_deg = [60, 80]\nl_CD_mm = 50\nside = -1"),
+        cp.rsplit("[[synthesis.position]]", 1)[0],
+        _lines(sp, "phi_deg = [180, 255, 315]", "phi_deg = [0, 90, 180]", "s_mm = [0, 20, 51]", "s_mm = [0, 30, 0]",
+               "guide_angle_deg = 0", "guide_angle_deg = 90"),
+        _lines(rs, "C_mm = [75, -100]", "C_mm = [75, -101]"),
+        _lines(rs, "F_mm = [140, 25]", "F_mm = [140, 26]"),
+        _lines(rs, "C_mm = [75, -100]", "C_mm = [0, -125]"),
+        _lines(sp, "s_mm = [0, 20, 51]", "s_mm = [0, 20]"),
+        _lines(pt, "E_mm = [20, 140]", "E_mm = [200, 0]"),
+        _lines(fn, 'function = "log10"', 'function = "log"'),
+        _lines(fn, "x_range = [1, 2]", "x_range = [-1, 2]"),
+        _lines(fn, "points = 3", "points = 6"),
+        _lines(fn, "phi_range_deg = 60", "phi_range_deg = 0"),
+        _lines(fn, "phi_start_deg = 45", "phi_start_deg = 0", "psi_start_deg = 135", "psi_start_deg = 45",
+               "psi_range_deg = 90", "psi_range_deg = -90"),
+        _lines(fn, "phi_start_deg = 45", "phi_start_deg = 0", "psi_start_deg = 135", "psi_start_deg = 0",
+               "psi_range_deg = 90", "psi_range_deg = 45"),
+        _lines(fn, "phi_start_deg = 45", "phi_start_deg = 210", "phi_range_deg = 60", "phi_range_deg = 90",
+               "psi_start_deg = 135", "psi_start_deg = 225", "psi_range_deg = 90", "psi_range_deg = -90",
+               "points = 3", "points = 4"),
+        _lines(fn, "frame_mm = 50", "frame_mm = 1e-300"),
+    ]
+    got = []
+    for m in mistakes:
+        with pytest.raises(GraphmechError) as e:
+            analyse_synthesis(parse_text(m, "s.toml"))
+        got.append(str(e.value))
+    assert got == documented
+
+
+def test_a_swing_too_small_to_draw_is_refused_on_the_command_line(tmp_path):
+    p = write_scene(tmp_path, replace_once(SWING, "swing_deg = 40", "swing_deg = 1e-300"), "s.toml")
+    assert_refused(run_cli("check", str(p)), "s.toml", "synthesis.swing_deg: ψ = 1e-300° is under 5.7e-08°")
+    # a swing just above the bound is constructed: no design, said in words
+    p = write_scene(tmp_path, replace_once(SWING, "swing_deg = 40", "swing_deg = 1e-7"), "t.toml")
+    assert_refused(run_cli("check", str(p)), "t.toml", "synthesis.swing_deg: no Grashof crank")
+
+
+@pytest.mark.parametrize("angle", ["1e-300", "179.99999999999"])
+def test_a_limit_angle_on_the_frame_line_is_refused(angle):
+    limit = replace_once(SWING, "swing_deg = 40", f"limit_angle_deg = {angle}")
+    path, reason = only_problem(limit)
+    assert path == "synthesis.limit_angle_deg" and reason.endswith(
+        "of the frame line: the rocker lies along the frame, C₁ all but on the line AD"), reason
+
