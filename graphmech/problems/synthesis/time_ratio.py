@@ -257,10 +257,16 @@ def designs(p: TimeRatio, mu_l: float) -> tuple[list[DrawnDesign], list[Design]]
 
 
 def size(p: Problem) -> float:
-    """The designed linkage's size, m: the rocker and the frame; the frame or the bar; the
-    θ-circle's diameter H/sin θ and the offset."""
+    """The designed linkage's size, m: the rocker and the frame; the frame or the bar; a
+    slider-crank's A to its far limit C₂ and the offset (its θ-circle, H/sin θ across, is drawn as
+    an arc where it is larger: K near 1), or the θ-circle where no design exists."""
     if isinstance(p, SliderCrank):
-        return p.stroke / math.sin(p.theta) + p.offset
+        from graphmech.exact.synthesis import slider_crank_from_K
+
+        found = slider_crank_from_K(p.stroke, p.offset, p.theta)
+        if found is None:
+            return p.stroke / math.sin(p.theta) + p.offset
+        return max(found[2], p.stroke) + p.offset
     if isinstance(p, GuideBar):
         from graphmech.exact.synthesis import guide_bar_from_K
 
