@@ -363,7 +363,10 @@ class GroupPolygon:
 
 @dataclass(frozen=True)
 class GuideReaction:
-    """The frame guide's reaction on a slider: the force and its moment about the slider's point."""
+    """A guide's reaction on a slider: the force and its moment about the slider's point.
+
+    ``frame`` is the guide's link — the frame, or the moving link whose slot or bar the slider
+    runs on (which then bears the opposite reaction on the same line)."""
 
     frame: str
     slider: str
