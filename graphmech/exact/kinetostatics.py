@@ -9,9 +9,9 @@ no order, no polygons. With friction the equations are no longer linear (a frict
 method) from the frictionless solution, not by successive approximation.
 
 Unknowns, in order: for every revolute (a, b) the two components of R_ab (the force of a on b;
-−R_ab acts on a); for every slider on a frame guide its normal reaction N (along the guide's
-normal, the guide turned +90°) and the reaction's moment M about the slider's point; last the
-balancing moment M_b on the crank.
+−R_ab acts on a); for every sliding pair its normal reaction N (along the guide's normal, the
+guide turned +90°) and the reaction's moment M about the slider's point (−N, −M on the guide's
+link when the guide moves); last the balancing moment M_b on the crank.
 
 Nothing here comes from ``graphmech.methods`` or ``graphmech.construction``.
 """
@@ -26,7 +26,7 @@ import numpy as np
 from graphmech.errors import NotApplicable
 from graphmech.exact.linkage import Kinematics, solve as solve_kinematics
 from graphmech.mechanisms.forces import ForceModel
-from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, SliderInput, Triad
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, LinkGuide, SliderInput, Triad
 
 __all__ = ["ExactForces", "solve_forces", "pairs"]
 
@@ -72,7 +72,8 @@ class ExactForces:
 def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str, str, str, str]]]:
     """The revolutes ``(a, b, point)`` and the sliding pairs ``(a, b, point, guide)``: link b slides
     on link a at ``point``; ``guide`` is ``"frame"`` (a's guide of fixed direction, a the frame) or
-    ``"slot"`` (an RPP block b in the straight slot of a), or the name of the bar's pivot (the
+    ``"slot"`` (an RPP block b in the straight slot of a), ``"link"`` (a's guide line through two
+    of its points, an RRP or PRP slider on a moving link), or the name of the bar's pivot (the
     guide runs from it through ``point``)."""
     frame = linkage.frame_link
     on: dict[str, str] = {name: frame for name in linkage.frame_points}
@@ -87,10 +88,13 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
         on.setdefault(d.point, d.link)
     extra = {pt.name: pt.link for pt in linkage.points}
     for y in linkage.dyads:
-        if isinstance(y, PRP) or (isinstance(y, RRP) and not isinstance(y.guide, Guide)):
-            raise NotApplicable(f"the matrix method here takes RRR, RRP (on a frame guide), RPR and RPP groups, "
-                                f"not {y.kind} with a guide on a moving link" if isinstance(y, RRP) else
-                                f"the matrix method here takes RRR, RRP, RPR and RPP groups, not {y.kind}")
+        if isinstance(y, PRP):  # two blocks pinned at C, each sliding on its guide (the frame's or a link's)
+            i, j = y.links
+            revolutes.append((i, j, y.c))
+            slides += [(_guide_link(g, frame), b, y.c, "frame" if isinstance(g, Guide) else "link")
+                       for b, g in zip(y.links, y.guides)]
+            on.setdefault(y.c, i)
+            continue
         if isinstance(y, Triad):  # three binary links on known points, each pinned to the ternary link
             for k in range(3):
                 if y.outer[k] not in on and y.outer[k] in extra:
@@ -106,7 +110,7 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
             on.setdefault(y.c, y.links[0])
         elif isinstance(y, RRP):
             revolutes += [(on[y.p], y.links[0], y.p), (y.links[0], y.links[1], y.c)]
-            slides.append((frame, y.links[1], y.c, "frame"))
+            slides.append((_guide_link(y.guide, frame), y.links[1], y.c, "frame" if isinstance(y.guide, Guide) else "link"))
             on.setdefault(y.c, y.links[0])
         elif isinstance(y, RPR):
             revolutes += [(on[y.bar_pivot], y.bar_link, y.bar_pivot), (on[y.block_pivot], y.block_link, y.block_pivot)]
@@ -116,8 +120,22 @@ def pairs(linkage: Linkage) -> tuple[list[tuple[str, str, str]], list[tuple[str,
             slides += [(y.links[1], y.links[0], y.p, "slot"), (frame, y.links[1], y.c, "frame")]
             on.setdefault(y.c, y.links[1])
         else:
-            raise NotApplicable(f"the matrix method here takes RRR, RRP and RPR groups, not {y.kind}")
+            raise NotApplicable(f"the matrix method here takes RRR, RRP, RPR, RPP, PRP and RRR-III groups, not {y.kind}")
     return revolutes, slides
+
+
+def _guide_link(g: Guide | LinkGuide, frame: str) -> str:
+    return frame if isinstance(g, Guide) else g.link
+
+
+def _guide_of(linkage: Linkage, b: str) -> Guide | LinkGuide:
+    """The guide the slider b of an RRP or PRP group slides on."""
+    for y in linkage.dyads:
+        if isinstance(y, RRP) and y.links[1] == b:
+            return y.guide
+        if isinstance(y, PRP) and b in y.links:
+            return y.guides[y.links.index(b)]
+    raise KeyError(b)
 
 
 def _moving_links(linkage: Linkage) -> list[str]:
@@ -283,11 +301,16 @@ def _guide_tangent(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str
             angle = next(y.slot_angle for y in linkage.dyads if isinstance(y, RPP) and y.links[0] == b)
         elif isinstance(d, SliderInput) and d.link == b:
             angle = d.guide.angle
+        elif any(isinstance(y, RPP) and y.links[1] == b for y in linkage.dyads):
+            angle = next(y.guide.angle for y in linkage.dyads if isinstance(y, RPP) and y.links[1] == b)
         else:
-            angle = next(y.guide.angle for y in linkage.dyads
-                         if isinstance(y, (RRP, RPP)) and isinstance(y.guide, Guide) and y.links[1] == b)
+            angle = cast(Guide, _guide_of(linkage, b)).angle
         return np.tile([math.cos(angle), math.sin(angle)], (n, 1))
-    d = kin.point[p] - kin.point[guide]
+    if guide == "link":
+        g = cast(LinkGuide, _guide_of(linkage, b))
+        d = kin.point[g.towards] - kin.point[g.through]
+    else:
+        d = kin.point[p] - kin.point[guide]
     length = np.hypot(d[:, 0], d[:, 1])
     return cast(np.ndarray, d / np.where(length > 0, length, 1.0)[:, None])
 

@@ -11,7 +11,9 @@ The textbook order, for every position at once (arrays over positions):
    R^t_Q head to tail; through the end draw ∥ QC, through the start ∥ PC; they meet at the
    polygon's closing vertex. The middle joint's reaction closes the polygon of one link. For a
    slider (RRP) the guide's reaction is ⟂ guide (tilted by φ with friction) and its line of
-   action comes from the slider's moments about C. A guide bar and block (RPR): the bar's
+   action comes from the slider's moments about C; a guide on a moving link bears the opposite
+   reaction on the same line, a load of that link when its own group is solved. Two blocks
+   pinned at C on two guides (PRP): the group's polygon closes on the two guides' normals. A guide bar and block (RPR): the bar's
    reaction on the block from the bar's moments about its pivot. A block in a slot of a slider
    (RPP): the slotted slider's polygon closes on the slot's and the guide's directions.
 3. **The driver**: what the groups put on the crank, its own loads, the frame's reaction R_01
@@ -38,7 +40,7 @@ from typing import Any, cast
 
 import numpy as np
 
-from graphmech.errors import DegenerateConstruction, NotApplicable
+from graphmech.errors import DegenerateConstruction
 from graphmech.mechanisms.forces import ForceModel, LinkMass
 from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, LinkGuide, SliderInput, Triad
 from graphmech.tolerances import PARALLEL_SIN, SHALLOW_DEG
@@ -316,6 +318,8 @@ def carriers(linkage: Linkage) -> dict[str, str]:
             out.setdefault(y.coincident[1], y.block_link)
         elif isinstance(y, RPP):
             out.setdefault(y.c, y.links[1])
+        elif isinstance(y, PRP):
+            out.setdefault(y.c, y.links[0])
         elif isinstance(y, Triad):
             for x in y.inner:
                 out.setdefault(x, y.links[3])
@@ -359,7 +363,10 @@ class GroupPolygon:
 
 @dataclass(frozen=True)
 class GuideReaction:
-    """The frame guide's reaction on a slider: the force and its moment about the slider's point."""
+    """A guide's reaction on a slider: the force and its moment about the slider's point.
+
+    ``frame`` is the guide's link — the frame, or the moving link whose slot or bar the slider
+    runs on (which then bears the opposite reaction on the same line)."""
 
     frame: str
     slider: str
@@ -503,10 +510,9 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
             _rpp_group(y, kin, loads, owner, friction, found, reactions, joints, guides, groups, closing, fr,
                        frame, keep_groups)
             continue
-        if isinstance(y, PRP) or (isinstance(y, RRP) and isinstance(y.guide, LinkGuide)):
-            # refused by the forces scene; a caller of the library hears it here
-            raise NotApplicable("the force polygons take RRR, RRP (on a frame guide), RPR and RPP groups, not yet "
-                                "a PRP group or a guide on a moving link")
+        if isinstance(y, PRP):
+            _prp_group(y, kin, loads, friction, reactions, joints, guides, groups, closing, fr, frame, keep_groups)
+            continue
         i, k = y.links
         jp = Joint(y.p, owner[y.p], i)
         jc = Joint(y.c, i, k)
@@ -534,16 +540,12 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
             u_close = e_q  # through the end: ∥ QC
             close_name = f"R^n_{cast(Joint, jq).a}{k}"
         else:
-            # The guide's reaction: ⟂ guide, tilted by φ against the sliding velocity.
-            assert isinstance(y.guide, Guide)  # a guide on a moving link is refused above
-            t = complex(math.cos(y.guide.angle), math.sin(y.guide.angle))
+            # The guide's reaction: ⟂ guide, tilted by φ against the sliding velocity (relative to
+            # the guide's link when the guide moves).
+            g_link, t, v_rel = _guide_line(y.guide, y.c, kin, frame)
             nrm = 1j * t
-            f = fr.f.get(k, 0.0) if fr.previous is not None else 0.0
-            v_rel = (np.conj(t) * kin.vel[y.c]).real
-            sigma = np.where(fr.normal.get(k, np.ones(n)) >= 0, 1.0, -1.0)
-            u_close = nrm - f * sigma * _sign(v_rel, _largest(kin.vel, n)) * t
-            u_close = u_close / np.abs(u_close)
-            close_name = f"R_{frame}{k}"
+            u_close = _tilted(t, k, v_rel, fr, n, _largest(kin.vel, n))
+            close_name = f"R_{g_link}{k}"
         # Close the polygon: x·e_p (∥ PC, through the start) + y·u_close (through the end) = −s.
         det = _cross(e_p, u_close)
         closing_sin = np.abs(det)
@@ -572,8 +574,7 @@ def _solve_round(linkage: Linkage, kin: PolygonKinematics, base: _Loads, inertia
         else:
             # Line of action of the guide's reaction: the slider's moments about C.
             m_guide = -loads.moment_about(k, C)  # R_ik acts at C itself
-            guides.append(GuideReaction(frame, k, y.c, r_close, m_guide))
-            reactions[(frame, k)], reactions[(k, frame)] = r_close, -r_close
+            _guide_found(GuideReaction(g_link, k, y.c, r_close, m_guide), t, C, loads, reactions, guides, frame)
             fr.normal_next[k] = (np.conj(nrm) * r_close).real
             body += [Force(f"R_{jp.a}{i}", r_p, P[y.p], y.p), Force(close_name, r_close, _guide_point(C, t, r_close, m_guide))]
         if keep_groups:
@@ -746,10 +747,88 @@ def _rpp_group(y: RPP, kin: PolygonKinematics, loads: _Loads, owner: dict[str, s
                                    (f"R_{frame}{j}", f"R_{i}{j}"), sin))
 
 
-def _guide_point(C: np.ndarray, t: complex, r: np.ndarray, m: np.ndarray) -> np.ndarray:
+def _guide_line(g: Guide | LinkGuide, c: str, kin: PolygonKinematics, frame: str
+                ) -> tuple[str, np.ndarray, np.ndarray]:
+    """A guide's link, its unit direction at every position and the sliding velocity along it at C
+    relative to that link (a moving guide: its point C<link> coinciding with C)."""
+    n = kin.valid.shape[0]
+    if isinstance(g, Guide):
+        t = np.full(n, complex(math.cos(g.angle), math.sin(g.angle)))
+        return frame, t, (np.conj(t) * kin.vel[c]).real
+    d = kin.point[g.towards] - kin.point[g.through]
+    t = d / np.where(np.abs(d) > 0, np.abs(d), 1.0)
+    return g.link, t, (np.conj(t) * (kin.vel[c] - kin.vel[c + g.link])).real
+
+
+def _tilted(t: np.ndarray, link: str, v_rel: np.ndarray, fr: _Friction, n: int, speed: np.ndarray) -> np.ndarray:
+    """The unit direction of a guide's reaction on the slider ``link``: ⟂ the guide (its normal
+    i·t), tilted by φ = arctan f against the sliding velocity from the second round on."""
+    f = fr.f.get(link, 0.0) if fr.previous is not None else 0.0
+    sigma = np.where(fr.normal.get(link, np.ones(n)) >= 0, 1.0, -1.0)
+    u = 1j * t - f * sigma * _sign(v_rel, speed) * t
+    return cast(np.ndarray, u / np.abs(u))
+
+
+def _guide_found(g: GuideReaction, t: np.ndarray, C: np.ndarray, loads: _Loads, reactions: _Reactions,
+                 guides: list[GuideReaction], frame: str) -> None:
+    """Record a guide's reaction on its slider; a guide on a moving link bears −R on the same line
+    of action, a known load of that link for the groups solved after (R_ij on the guide's link)."""
+    guides.append(g)
+    reactions[(g.frame, g.slider)], reactions[(g.slider, g.frame)] = g.force, -g.force
+    if g.frame != frame:
+        loads.force(g.frame, Force(f"R_{g.slider}{g.frame}", -g.force, _guide_point(C, t, g.force, g.moment)))
+
+
+def _prp_group(y: PRP, kin: PolygonKinematics, loads: _Loads, friction: Callable[[Joint], None],
+               reactions: _Reactions, joints: list[Joint], guides: list[GuideReaction], groups: list[GroupPolygon],
+               closing: dict[str, np.ndarray], fr: _Friction, frame: str, keep_groups: bool) -> None:
+    """Blocks i and j pinned at C, i sliding on one guide, j on the other (a block on a moving bar,
+    the tangent mechanism).
+
+    Each guide's reaction is ⟂ its guide (tilted by φ with friction) with unknown magnitude and
+    line of action; the group's polygon closes on the two directions; block i's polygon then gives
+    the pin's reaction R_ji; each block's moments about C give its guide reaction's couple (the pin
+    passes through C). A guide on a moving link bears −R, a load of that link solved later.
+    """
+    n = kin.valid.shape[0]
+    i, j = y.links
+    C = kin.point[y.c]
+    jc = Joint(y.c, i, j)
+    friction(jc)
+    speed = _largest(kin.vel, n)
+    (a0, t0, v0), (a1, t1, v1) = (_guide_line(g, y.c, kin, frame) for g in y.guides)
+    u0, u1 = _tilted(t0, i, v0, fr, n, speed), _tilted(t1, j, v1, fr, n, speed)
+    known_i, known_j = loads.total(i, n), loads.total(j, n)
+    # the group: ΣF_i + ΣF_j + N0·u0 + N1·u1 = 0, closed by lines ∥ u0 and ∥ u1
+    det = _cross(u0, u1)
+    sin = np.abs(det)
+    name = f"group {i}–{j}"
+    closing[name] = sin
+    _guard_parallel(sin, kin.valid, f"{name}: the two guides are parallel")
+    safe = np.where(sin > PARALLEL_SIN, det, 1.0)
+    s = -(known_i + known_j)
+    n0, n1 = _cross(s, u1) / safe, _cross(u0, s) / safe
+    r0, r1 = n0 * u0, n1 * u1
+    r_ji = -(known_i + r0)  # the pin: block j on block i closes i's polygon
+    m0, m1 = -loads.moment_about(i, C), -loads.moment_about(j, C)
+    fr.normal_next[i], fr.normal_next[j] = n0, n1
+    body = [*loads.forces.get(i, []), *loads.forces.get(j, [])]
+    couples = [*loads.couples.get(i, []), *loads.couples.get(j, [])]
+    reactions[(j, i)], reactions[(i, j)] = r_ji, -r_ji
+    joints.append(jc)
+    _guide_found(GuideReaction(a0, i, y.c, r0, m0), t0, C, loads, reactions, guides, frame)
+    _guide_found(GuideReaction(a1, j, y.c, r1, m1), t1, C, loads, reactions, guides, frame)
+    if keep_groups:
+        chain = [(f.name, f.vector) for f in body] + [(f"R_{a1}{j}", r1), (f"R_{a0}{i}", r0)]
+        body += [Force(f"R_{a0}{i}", r0, _guide_point(C, t0, r0, m0)), Force(f"R_{a1}{j}", r1, _guide_point(C, t1, r1, m1))]
+        groups.append(GroupPolygon(name, (i, j), tuple(body), tuple(couples), tuple(chain),
+                                   (f"R_{a1}{j}", f"R_{a0}{i}"), sin))
+
+
+def _guide_point(C: np.ndarray, t: complex | np.ndarray, r: np.ndarray, m: np.ndarray) -> np.ndarray:
     """Where the guide reaction's line of action crosses the guide line through C: C + s·t with
     s·(t × R) = M."""
-    tr = _cross(np.full(C.shape, t), r)
+    tr = _cross(np.broadcast_to(t, C.shape), r)
     return C + np.where(np.abs(tr) > 0, m / np.where(np.abs(tr) > 0, tr, 1.0), 0.0) * t
 
 
@@ -839,7 +918,8 @@ def kinetostatics(linkage: Linkage, model: ForceModel, kin: PolygonKinematics, *
     Parameters
     ----------
     linkage : Linkage
-        Driven by a crank or a slider; RRR, RRP (on a frame guide), RPR and RPP dyads.
+        Driven by a crank or a slider; RRR, RRP (its guide on the frame or on a moving link), RPR, RPP
+        and PRP dyads, class III groups.
     model : ForceModel
         Masses, loads, friction.
     kin : PolygonKinematics

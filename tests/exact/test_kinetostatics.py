@@ -9,7 +9,7 @@ import pytest
 
 from graphmech.exact.kinetostatics import pairs, solve_forces
 from graphmech.mechanisms.forces import ForceModel, LinkMass, PointForce, RevoluteFriction, SlidingFriction
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage, LinkPoint
+from graphmech.mechanisms.linkage import PRP, RRP, RRR, Crank, Guide, Linkage, LinkGuide, LinkPoint
 
 R, L = 0.1, 0.3  # crank and rod of the slider-crank, m
 
@@ -83,3 +83,32 @@ def test_friction_is_solved_by_root_and_costs_power():
     # M_b·ω = losses − P·v_C: friction only ever adds to the power the crank must supply
     assert a.balancing_moment[0] < 0 < a.balancing_moment[1]
     assert (b.balancing_moment > a.balancing_moment).all()
+
+
+def tangent_mechanism(h: float = 0.1, omega: float = 10.0) -> Linkage:
+    """Bar 1 about A; block 2 slides on it and is pinned at C to the rod 3 in the vertical guide x = h."""
+    return Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.15, omega),
+                   (PRP("C", ("2", "3"), (LinkGuide("1", "A", "B"), Guide((h, 0.0), math.pi / 2))),), (), "4")
+
+
+def test_the_pairs_of_a_block_on_a_moving_bar_and_of_a_slot_in_a_turning_link():
+    assert pairs(tangent_mechanism()) == ([("4", "1", "A"), ("2", "3", "C")],
+                                          [("1", "2", "C", "link"), ("4", "3", "C", "frame")])
+    slotted = Linkage({"A": (0.0, 0.0), "D": (0.02, 0.01)}, Crank("2", "A", "B", 0.15, 10.0),
+                      (RRP("D", "C", ("3", "4"), 0.05, LinkGuide("2", "A", "B")),), (), "1")
+    assert pairs(slotted) == ([("1", "2", "A"), ("1", "3", "D"), ("3", "4", "C")], [("2", "4", "C", "link")])
+
+
+@pytest.mark.parametrize("phi_deg", [-50.0, 0.0, 30.0, 70.0])
+def test_the_tangent_mechanism_by_hand(phi_deg):
+    """A force Q down on the rod at C, nothing else: the bar pushes the block ⟂ AB, so R_12 = Q/cos φ
+    (its vertical part carries Q), the guide R_43 = Q·tan φ; M_b = R_12·|AC| = Q·h/cos² φ, which
+    is virtual work too (v_C = ω·h/cos² φ); no couple on the block, the rod's guide takes none."""
+    Q, h, phi = 400.0, 0.1, math.radians(phi_deg)
+    ex = solve_forces(tangent_mechanism(h), ForceModel(forces=(PointForce("3", "C", Q, -math.pi / 2),)), np.array([phi]))
+    r12, r43 = ex.reactions[("1", "2")][0], ex.reactions[("4", "3")][0]
+    np.testing.assert_allclose(r12, Q / math.cos(phi) * np.array([-math.sin(phi), math.cos(phi)]), rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(r43, [Q * math.tan(phi), 0.0], atol=1e-9)  # R_12 + R_43 + Q = 0
+    assert ex.balancing_moment[0] == pytest.approx(Q * h / math.cos(phi) ** 2, rel=1e-12)
+    np.testing.assert_allclose([ex.guide_moments["2"][0], ex.guide_moments["3"][0]], [0.0, 0.0], atol=1e-9)
+    np.testing.assert_allclose(ex.reactions[("2", "3")][0], -r43 + [0.0, Q], atol=1e-9)  # the rod: R_23 + R_43 + Q = 0

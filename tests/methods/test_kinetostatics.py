@@ -151,3 +151,25 @@ def test_the_lever_of_a_crank_at_rest_is_refused():
     lk = _slider_crank(omega=0.0)
     with pytest.raises(K.DegenerateConstruction, match="the crank stands still: no virtual power"):
         K.zhukovsky_lever(lk, ForceModel(forces=(PointForce("3", "C", 100.0, np.pi),)), _kinematics(lk, 1.0))
+
+
+def test_a_guide_on_a_moving_link_bears_the_opposite_reaction_on_the_same_line():
+    """The tangent mechanism with a couple on the block 2 (it rides the bar 1): the bar's reaction on
+    the block R_12 ⟂ AB acts off C by e = M_12/|R_12|; the bar bears −R_12 on that same line, so its
+    moment about A is that of −R_12 at C less M_12 — and M_b balances it (nothing else on the bar)."""
+    from graphmech.mechanisms.forces import LinkCouple, PointForce
+    from graphmech.mechanisms.linkage import PRP, Crank, Guide, Linkage, LinkGuide
+
+    lk = Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.15, 10.0),
+                 (PRP("C", ("2", "3"), (LinkGuide("1", "A", "B"), Guide((0.1, 0.0), np.pi / 2))),), (), "4")
+    model = ForceModel(forces=(PointForce("3", "C", 400.0, -np.pi / 2),), couples=(LinkCouple("2", 5.0, "M_2"),))
+    kin = _kinematics(lk, np.radians(30.0))
+    sol = K.kinetostatics(lk, model, kin)
+    g12 = next(g for g in sol.guides if (g.frame, g.slider) == ("1", "2"))
+    assert float(g12.moment[0]) == pytest.approx(-5.0, rel=1e-12)  # the block's moments about C
+    r12, C = complex(g12.force[0]), complex(kin.point["C"][0])
+    assert (np.conj(r12) * np.exp(1j * np.radians(30.0))).real == pytest.approx(0.0, abs=1e-9)  # ⟂ AB
+    m_bar = (np.conj(C) * -r12).imag + 5.0  # −R_12 at C and the couple +5 N·m of its offset line, about A
+    assert sol.balancing_moment[0] == pytest.approx(-m_bar, rel=1e-9)
+    bar = next(g for g in sol.groups if g.name == "driver 1")
+    assert dict(bar.chain)["R_21"][0] == pytest.approx(-r12, rel=1e-12)

@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
@@ -27,7 +28,7 @@ from graphmech.problems.reader import page_size, positions_of
 from graphmech.problems.linkage.sizes import position_text
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact.kinetostatics import ExactForces, solve_forces
-from graphmech.mechanisms.linkage import Guide
+from graphmech.mechanisms.linkage import PRP, Guide, LinkGuide
 from graphmech.methods.kinetostatics import (
     SHALLOW_SIN,
     GuideReaction,
@@ -410,14 +411,13 @@ def force_value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, flo
             return None, 1.0, float(g.moment[i]), float(ex.guide_moments[slider][i]), "N·m"
         # e: where the guide reaction's line of action crosses the guide, from the slider's point
         # along the guide (M = e·(t × R)), drawn on the free body at μl
-        angle = next(guide.angle for y in (fa.build.linkage.driver, *fa.build.linkage.dyads)
-                     if isinstance(guide := getattr(y, "guide", None), Guide)
-                     and (getattr(y, "link", None) == slider or getattr(y, "links", (None, None))[1] == slider))
-        t = complex(math.cos(angle), math.sin(angle))
+        ex_point = fa.kinematics.exact.point
+        t = _guide_direction(fa, slider, lambda p: complex(fa.kin.point[p][i]))
+        t_x = _guide_direction(fa, slider, lambda p: complex(*ex_point[p][i]))
         tr = (np.conj(t) * complex(g.force[i])).imag
         e_g = float(g.moment[i]) / tr if tr != 0 else 0.0
         r = ex.reactions[(g.frame, slider)][i]
-        tr_x = t.real * r[1] - t.imag * r[0]
+        tr_x = t_x.real * r[1] - t_x.imag * r[0]
         e_x = float(ex.guide_moments[slider][i]) / tr_x if tr_x != 0 else 0.0
         return e_g / mu_l, mu_l, (e_g / mu_l) * mu_l, e_x, "m"
     if base == "M_b":
@@ -457,6 +457,20 @@ def force_value(fa: ForceAnalysis, base: str, i: int) -> tuple[float | None, flo
     if e0 * speed < 0 and abs(e0) > 1e-9 * abs(e1):  # (an M_b0 that is round-off of 0 drives nothing)
         return None, 1.0, g1 / g0, e1 / e0, ""
     return None, 1.0, g0 / g1, e0 / e1, ""
+
+
+def _guide_direction(fa: ForceAnalysis, slider: str, point: Callable[[str], complex]) -> complex:
+    """The unit direction of the guide ``slider`` slides on (a moving link's: through → towards at
+    this position, ``point`` giving the positions)."""
+    guide = next(g for y in (fa.build.linkage.driver, *fa.build.linkage.dyads)
+                 for b, g in (zip(y.links, y.guides) if isinstance(y, PRP) else
+                              [(getattr(y, "link", None), getattr(y, "guide", None)),
+                               (getattr(y, "links", (None, None))[1], getattr(y, "guide", None))])
+                 if b == slider and isinstance(g, (Guide, LinkGuide)))
+    if isinstance(guide, Guide):
+        return complex(math.cos(guide.angle), math.sin(guide.angle))
+    d = point(guide.towards) - point(guide.through)
+    return d / abs(d) if d != 0 else 1.0 + 0j
 
 
 def _known(fa: ForceAnalysis, base: str) -> str | None:

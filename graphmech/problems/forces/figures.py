@@ -35,7 +35,7 @@ from graphmech.drawing.lettering import LETTER, number, point_name, scale_text
 from graphmech.drawing.notation import word
 from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, Hinge, Label, Panel, Primitive, Role, Segment,
                                          Sheet, Slider, clip_interval)
-from graphmech.mechanisms.linkage import RPP, RPR, RRP, Crank, Guide, Linkage, Triad
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, Crank, Guide, Linkage, Triad
 from graphmech.methods.kinetostatics import (GroupPolygon, GuideReaction, KinetostaticSolution, Lever,
                                             PolygonKinematics)
 from graphmech.problems.linkage.figures import mechanism_items
@@ -301,8 +301,14 @@ def free_body_items(build: LinkageConstruction, kin: PolygonKinematics, group: G
                 leaving.setdefault(b, []).append(_unit(za - zb))
         drawn.update(names)
     for y in linkage.dyads:  # the blocks and slots of the group's sliding pairs
-        if isinstance(y, RRP) and isinstance(y.guide, Guide) and y.links[1] in group.links:
-            items.append(Slider(to_mm(complex(kin.point[y.c][i])), y.guide.angle))
+        if isinstance(y, (RRP, PRP)):  # a block on each guide of the group (a moving guide at this position)
+            for block, line in zip(y.links[1:] if isinstance(y, RRP) else y.links,
+                                   (y.guide,) if isinstance(y, RRP) else y.guides):
+                if block in group.links:
+                    dl = (0j if isinstance(line, Guide) else
+                         complex(kin.point[line.towards][i]) - complex(kin.point[line.through][i]))
+                    items.append(Slider(to_mm(complex(kin.point[y.c][i])),
+                                        line.angle if isinstance(line, Guide) else math.atan2(dl.imag, dl.real)))
         elif isinstance(y, RPR) and y.block_link in group.links:
             x, p = complex(kin.point[y.block_pivot][i]), complex(kin.point[y.bar_pivot][i])
             items.append(Slider(to_mm(x), math.atan2((x - p).imag, (x - p).real)))

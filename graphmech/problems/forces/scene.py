@@ -25,7 +25,7 @@ from graphmech.mechanisms.forces import (
     RevoluteFriction,
     SlidingFriction,
 )
-from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Linkage, LinkGuide, Triad
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Linkage, Triad
 from graphmech.scales import scale_out_of_range
 from graphmech.problems.linkage.scene import SHOW_CHOICES, read_linkage
 from graphmech.problems.reader import (
@@ -180,6 +180,8 @@ def _revolute_points(linkage: Linkage) -> set[str]:
             out |= {y.p, y.q}
         elif isinstance(y, RPP):
             out.add(y.p)
+        elif isinstance(y, PRP):
+            out.add(y.c)
         elif isinstance(y, Triad):
             out |= {*y.outer, *y.inner}
     return out
@@ -281,7 +283,7 @@ def _read_forces(fr: Reader, linkage: Linkage | None) -> ForceScene | None:
         {y.links[1] for y in linkage.dyads if isinstance(y, RRP)}
         | ({linkage.driver.link} if not isinstance(linkage.driver, Crank) else set())
         | {y.block_link for y in linkage.dyads if isinstance(y, RPR)}
-        | {k for y in linkage.dyads if isinstance(y, RPP) for k in y.links})
+        | {k for y in linkage.dyads if isinstance(y, (RPP, PRP)) for k in y.links})
     for r in fr.tables_at("guide")[:MAX_ITEMS]:
         value = r.raw("link", required=True, hint='the slider\'s link number, e.g. link = "3"')
         link = None if value is MISSING else r.link_id(value, r.at("link"))
@@ -357,13 +359,6 @@ def parse_forces_scene(data: Mapping[str, Any], source: str, top: Reader, order:
                     "(find still takes P13, omega_3_ic … here)")
     scales = read_scales(top)
     linkage, positions, _ = read_linkage(top, triads=True)
-    for k, y in enumerate(linkage.dyads if linkage is not None else ()):
-        if isinstance(y, PRP):  # its kinematics are drawn (a linkage scene); its force polygons are not built
-            top.problem(f"dyad[{k}].type", "the force analysis takes RRR, RRP, RPR and RPP groups, not yet a PRP "
-                                           "group: draw its polygons in a scene without [forces]")
-        elif isinstance(y, RRP) and isinstance(y.guide, LinkGuide):
-            top.problem(f"dyad[{k}].guide", "the force analysis takes an RRP group on a frame guide, not yet one "
-                                            "whose guide is on a moving link: draw its polygons in a scene without [forces]")
     fr = top.table_at("forces")
     forces = None if fr is None else _read_forces(fr, linkage)
     measured = read_measured(top, positions.labels if positions else None)

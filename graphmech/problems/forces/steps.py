@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from graphmech.drawing.lettering import subscript
-from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Triad
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Triad
 from graphmech.methods.kinetostatics import construction_targets, kinetostatics
 from graphmech.problems.forces.check import (
     ForceAnalysis,
@@ -259,7 +259,7 @@ def _kinematic_targets(fa: ForceAnalysis, groups: bool) -> tuple[str, ...]:
         out += [f"omega_{link}" for link in b.omega if link != linkage.driver.link]
     if groups:
         for y in linkage.dyads:
-            if isinstance(y, (PRP, Triad)):  # no force polygons of its own (the forces scene refuses both)
+            if isinstance(y, (PRP, Triad)):  # no dyad sides: a PRP's moments are about C, a triad's its own
                 continue
             ends = (y.p, y.q) if isinstance(y, (RRR, RPR)) else (y.p,)
             out += [f"l_{P}{y.c}" for P in ends if not isinstance(y, RPR)] + (
@@ -525,6 +525,10 @@ class _Forces:
         slider = name[-1]
         f = next((sf.f for sf in self.model.sliding_friction if sf.link == (y.links[0] if what == self.say("slot")
                                                                              else slider)), 0.0)
+        on = list(zip(y.links, y.guides)) if isinstance(y, PRP) else [(y.links[1], y.guide)] if isinstance(y, RRP) else []
+        moving = [g for b, g in on if b == slider and not isinstance(g, Guide)]
+        if moving:  # a slot on a moving link: named by its line, which turns with it
+            what += ("" if self.notation == "zh" else " ") + letter(moving[0].through) + letter(moving[0].towards)
         if f > 0:
             return self.say("tilted", phi=num(math.degrees(math.atan(f))), what=what)
         return self.say("normal", what=what)
@@ -570,7 +574,7 @@ class _Forces:
                 out += self.components(a, link)
                 out += self.journal(a, link, P)
             if isinstance(y, RRP):
-                frame = self.linkage.frame_link
+                frame = self.linkage.frame_link if isinstance(y.guide, Guide) else y.guide.link
                 mm, val = self.reaction(frame, k)
                 out.append(self.say("reaction", name=f"R_{frame}{k}", mm=num(mm), mu=mu, F=num(val),
                                     also=self.also(frame, k)))
@@ -607,6 +611,18 @@ class _Forces:
             out.append(self.say("reaction", name=f"R_{a}{i}", mm=num(mm), mu=mu, F=num(val), also=self.also(a, i)))
             out += self.components(a, i)
             out += self.journal(a, i, y.p)
+        elif isinstance(y, PRP):  # each block's guide reaction and its line, then the pin C
+            i, j = y.links
+            for b, line in zip(y.links, y.guides):
+                a = self.linkage.frame_link if isinstance(line, Guide) else line.link
+                mm, val = self.reaction(a, b)
+                out.append(self.say("reaction", name=f"R_{a}{b}", mm=num(mm), mu=mu, F=num(val), also=self.also(a, b)))
+                out += self.components(a, b)
+                out += self.guide_line(a, b, y.c)
+            mm, val = self.reaction(j, i)
+            out.append(self.say("reaction", name=f"R_{j}{i}", mm=num(mm), mu=mu, F=num(val), also=self.also(j, i)))
+            out += self.components(j, i)
+            out += self.journal(j, i, y.c)
         else:
             out += self.driver()
         return out

@@ -28,23 +28,22 @@ def test_friction_circle_larger_than_the_geometry_allows(tmp_path):
                    "larger than the geometry allows: it must be smaller than half the 60 mm to the next joint\n")
 
 
-def test_a_prp_group_is_refused_at_its_type(tmp_path):
-    # the tangent mechanism's kinematics are drawn; its force polygons are not built yet
+def test_a_prp_group_and_a_moving_guide_take_guide_friction_on_their_blocks(tmp_path):
+    # the tangent mechanism's block 2 (on the bar 1) and rod 3 (on the frame's guide) are sliders; the bar is not
     kin = (SCENES / "kin.tangent_mechanism.toml").read_text(encoding="utf-8")
-    text = kin.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = ["mechanism", "forces"]').replace(
+    text = kin.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = ["mechanism"]').replace(
         "find = [", 'find = ["M_b", ') + '[forces]\n[[forces.force]]\nlink = "3"\npoint = "C"\nforce_N = 100\nangle = 270\n'
-    code, out, err = run_cli("check", str(_write(tmp_path, text)))
+    for link in ("2", "3"):
+        scene = _scene(text + f'[[forces.guide]]\nlink = "{link}"\nf = 0.1\n')
+        assert [sf.link for sf in scene.problem.model.sliding_friction] == [link]
+    code, out, err = run_cli("check", str(_write(tmp_path, text + '[[forces.guide]]\nlink = "1"\nf = 0.1\n')))
     assert (code, out) == (2, "")
-    assert err.startswith("s.toml: dyad[0].type: the force analysis takes RRR, RRP, RPR and RPP groups, not yet a PRP")
-
-
-def test_an_rrp_group_on_a_moving_guide_is_refused_at_its_guide(tmp_path):
-    kin = scene_text("linkage/slotted_link_pin")
-    text = kin.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = ["mechanism", "forces"]').replace(
-        "find = [", 'find = ["M_b", ') + '[forces]\n[[forces.force]]\nlink = "3"\npoint = "C"\nforce_N = 100\nangle = 270\n'
-    code, out, err = run_cli("check", str(_write(tmp_path, text)))
-    assert (code, out) == (2, "")
-    assert err.startswith("s.toml: dyad[0].guide: the force analysis takes an RRP group on a frame guide, not yet")
+    assert err == ("s.toml: forces.guide[0].link: link 1 is not a slider (on a frame guide or a guide bar) "
+                   "(sliders: 2, 3)\n")
+    slotted = scene_text("linkage/slotted_link_pin").replace("find = [", 'find = ["M_b", ')
+    scene = _scene(slotted + '[forces]\n[[forces.guide]]\nlink = "4"\nf = 0.15\n[[forces.journal]]\npoint = "C"\n'
+                   'f_v = 0.1\nradius = 4\n')
+    assert scene.problem.model.sliding_friction[0].link == "4" and scene.problem.model.revolute_friction[0].point == "C"
 
 
 def test_forces_scene_keys_are_checked(tmp_path):

@@ -83,7 +83,8 @@ def _check_rows(lines: list[str], rows: list) -> None:
                                   SCENES / "force.sixbar_kinetostatic-friction.toml",
                                   SCENES / "force.slider_crank_inertia_partial.toml",
                                   FORCES / "double_slider.toml", FORCES / "slider_driven_rocker.toml",
-                                  FORCES / "fourbar_loaded.toml", FORCES / "slider_crank.toml"])
+                                  FORCES / "fourbar_loaded.toml", FORCES / "slider_crank.toml",
+                                  SCENES / "force.tangent_mechanism.toml", FORCES / "slotted_link_pin.toml"])
 def test_every_number_read_is_the_check_tables(path):
     lines, rows = _protocol(path)
     assert any(r.name.partition("@")[0] in ("eta", "M_b", "F_b", "F_i2", "R_23", "R_12") for r in rows)
@@ -202,3 +203,22 @@ def test_the_cli_prints_it_numbered():
     assert code == 0 and err == ""
     assert [line.split(". ", 1)[0] for line in lines] == [str(k) for k in range(1, len(lines) + 1)]
     assert lines[-1].endswith(". ΣM_p = 72530 N·mm: M_b = μv·ΣM_p/ω₁ = 0.02 × 72530/12 = 120.9 N·m (M_b_lever)")
+
+
+def test_a_prp_group_closes_on_the_two_guides_normals_and_the_bar_takes_its_reaction():
+    lines, rows = _protocol(SCENES / "force.tangent_mechanism.toml")
+    value = {r.name: r.graphical for r in rows}
+    group = _index(lines, "free body of group 2–3 (links 2, 3)")
+    assert "unknown R_12 from the guide, R_43 from the guide" in lines[group]
+    close = _index(lines, "they meet at the polygon's closing vertex")
+    assert "⟂ the guide (the line of R_43)" in lines[close] and "⟂ the guide AB (the line of R_12)" in lines[close]
+    assert _index(lines, f"moments of slider 3 about C give where R_43 acts: M_43 = {num(value['M_43'])} N·m") > close
+    pin = _index(lines, "measure R_32 = ")
+    driver = _index(lines, "free body of driver 1: known G_1, F_i1, R_21, M_i1; unknown R_41 at A, M_b")
+    assert group < close < pin < driver
+
+
+def test_a_slot_on_a_moving_link_is_named_by_its_line():
+    lines, _ = _protocol(FORCES / "slotted_link_pin.toml")
+    assert "a line ⟂ the guide AB (the line of R_24)" in lines[_index(lines, "(the line of R_24)")]
+    assert _index(lines, "free body of driver 2: known G_2, F_i2, R_42, M_i2; unknown R_12 at A, M_b") > 0
