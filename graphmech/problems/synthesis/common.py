@@ -31,9 +31,9 @@ MAX_SIZE = 1e6
 MIN_LENGTH = 1e-9
 
 
-def read_angles(r: Reader, base: str) -> tuple[float, ...] | None:
-    """A list of two or three angles (rad), e.g. ``phi_deg = [45, 90, 135]``."""
-    g = r.quantity(base, "angle")
+def _two_or_three(r: Reader, base: str, kind: str) -> tuple[float, ...] | None:
+    """A list of two or three quantities of ``kind`` in SI (one position each)."""
+    g = r.quantity(base, kind)
     if g is None:
         return None
     n = len(g.value) if isinstance(g.value, list) and len(g.value) in (2, 3) else 3
@@ -41,17 +41,15 @@ def read_angles(r: Reader, base: str) -> tuple[float, ...] | None:
     return None if xs is None else tuple(g.si(x) for x in xs)
 
 
+def read_angles(r: Reader, base: str) -> tuple[float, ...] | None:
+    """A list of two or three angles (rad), e.g. ``phi_deg = [45, 90, 135]``."""
+    return _two_or_three(r, base, "angle")
+
+
 def read_lengths(r: Reader, base: str) -> tuple[float, ...] | None:
     """A list of two or three signed lengths (m), e.g. ``s_mm = [0, 20, 45]``, each within MAX_SIZE."""
-    g = r.quantity(base, "length")
-    if g is None:
-        return None
-    n = len(g.value) if isinstance(g.value, list) and len(g.value) in (2, 3) else 3
-    xs = r.numbers(g.value, r.at(g.key), n, shape=f"[{base}1, {base}2, {base}3] or two")
-    if xs is None:
-        return None
-    out = tuple(g.si(x) for x in xs)
-    return out if sized(r, base, out) is not None else None
+    out = _two_or_three(r, base, "length")
+    return out if out is not None and sized(r, base, out) is not None else None
 
 
 def sized(r: Reader, base: str, value: tuple[float, ...] | float | None) -> tuple[float, ...] | float | None:
