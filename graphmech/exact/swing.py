@@ -40,13 +40,27 @@ TWO_PI = 2.0 * math.pi
 
 
 def _toggles(linkage: Linkage) -> list[float]:
-    """Every driver position (φ or s) at which the dyad on the driver's point toggles."""
+    """Every driver position (φ or s) at which a dyad on the driver's point toggles: the first such
+    dyad must, the later ones (a rocker driving two dyads) do where their own toggles stop it too."""
+    d = linkage.driver
+    tip = d.tip if isinstance(d, Crank) else d.point
+    on_tip = [y for y in linkage.dyads if isinstance(y, (RRR, RRP)) and tip in (y.p, getattr(y, "q", None))]
+    if not on_tip:
+        raise NotApplicable("no RRR or RRP dyad on the driver's point: nothing toggles, so there are no limits")
+    out = _dyad_toggles(linkage, on_tip[0])
+    for y in on_tip[1:]:
+        try:
+            out += _dyad_toggles(linkage, y)
+        except NotApplicable:  # a later dyad whose toggle is no limit (on a moving point): none of its own
+            pass
+    return out
+
+
+def _dyad_toggles(linkage: Linkage, dyad: RRR | RRP) -> list[float]:
+    """Every driver position (φ or s) at which ``dyad``, on the driver's point, toggles."""
     d = linkage.driver
     tip = d.tip if isinstance(d, Crank) else d.point
     frame = linkage.frame_points
-    dyad = next((y for y in linkage.dyads if isinstance(y, (RRR, RRP)) and tip in (y.p, getattr(y, "q", None))), None)
-    if dyad is None:
-        raise NotApplicable("no RRR or RRP dyad on the driver's point: nothing toggles, so there are no limits")
     out: list[float] = []
     if isinstance(dyad, RRR):
         other = dyad.q if dyad.p == tip else dyad.p
@@ -153,6 +167,8 @@ def output_swing(linkage: Linkage, q_from: float, q_to: float) -> float:
     pts = sol.point[y.c][:, 0] + 1j * sol.point[y.c][:, 1]
     for i in np.flatnonzero(~sol.valid):  # an end at the limits: the dyad in one line, C on the line BD
         B = complex(*sol.point[tip][i])
+        if abs(abs(pts[i] - D) - cd) <= 1e-9 * cd and abs(abs(pts[i] - B) - bc) <= 1e-9 * bc:
+            continue  # assembled, held at a dead centre (of this dyad or another one on the driver)
         u = (D - B) / abs(D - B)
         pts[i] = min((B + bc * u, B - bc * u), key=lambda c: abs(abs(c - D) - cd))
         if abs(abs(pts[i] - D) - cd) > 1e-9 * cd:  # not a toggle: a grid position off the assembly

@@ -48,8 +48,8 @@ def _dyad(zc: np.ndarray, zf: complex, a: float, l4: float, hand: float) -> tupl
     d = np.where(d == 0.0, 1.0, d)
     x = (a * a - l4 * l4 + d * d) / (2.0 * d)
     h2 = a * a - x * x
-    ok = h2 >= 0.0
-    h = np.sqrt(np.where(ok, h2, 0.0))
+    ok = h2 >= -TANGENT_REL * a * a  # the two circles just touching (the dyad's limit) still meet
+    h = np.sqrt(np.where(ok, np.maximum(h2, 0.0), 0.0))
     u = cf / d
     return zc + u * (x + 1j * hand * h), ok
 
@@ -77,7 +77,20 @@ def _rot(y: Triad) -> complex:
 def assemblies(y: Triad, zb: complex, zf: complex, zg: complex) -> list[tuple[complex, complex, complex]]:
     """Every assembly (C, D, E) of the group with its outer joints at B, F, G."""
     out: list[tuple[complex, complex, complex]] = []
-    grid = np.linspace(0.0, 2.0 * math.pi, SCAN + 1)
+    # the scan's nodes, and the limits of the dyad C–D–F (|CF| = l_CD ± l4, where its two hands
+    # meet): a root between the last node that assembles and such a limit has no sign change
+    # between two assembled nodes
+    l2, l4 = y.lengths[0], y.lengths[1]
+    a = y.ternary[0]
+    bf = zf - zb
+    d = abs(bf)
+    limits = []
+    for r in (a + l4, abs(a - l4)):
+        cos_t = (l2 * l2 + d * d - r * r) / (2.0 * l2 * d) if d > 0.0 else 2.0
+        if abs(cos_t) <= 1.0:
+            t = math.acos(cos_t)
+            limits += [(math.atan2(bf.imag, bf.real) + s * t) % (2.0 * math.pi) for s in (1.0, -1.0)]
+    grid = np.unique(np.concatenate([np.linspace(0.0, 2.0 * math.pi, SCAN + 1), limits]))
     for hand in (1.0, -1.0):
         _, _, _, f, ok = _chain(y, zb, zf, zg, grid, hand)
         change = ok[:-1] & ok[1:] & (np.sign(f[:-1]) != np.sign(f[1:]))

@@ -2,7 +2,8 @@
 
 A driver pivoted on the frame that cannot turn fully — a rocker — or a slider drives the
 mechanism between two positions and back: its *swing* (a slider's *stroke*). The limits of a
-rocker or slider are where the dyad on its point toggles, constructed on the drawing:
+rocker or slider are where a dyad on its point toggles (the first to, where several hang on it),
+constructed on the drawing:
 
 * an RRR dyad B–C–D: BC and CD collinear, so B lies on a circle about D of radius
   l₂ + l₃ (stretched) or |l₂ − l₃| (folded), cut with the rocker's circle about A or the
@@ -37,7 +38,7 @@ from graphmech.geometry.kernels import (
 )
 from graphmech.mechanisms.linkage import RRP, RRR, Crank, Guide, Linkage, SliderInput
 
-__all__ = ["driver_limits", "output_swing", "swing_positions", "toggle_dyad"]
+__all__ = ["driver_limits", "output_swing", "swing_positions", "toggle_dyad", "toggle_dyads"]
 
 TWO_PI = 2.0 * math.pi
 
@@ -56,26 +57,40 @@ def swing_positions(q_from: float, q_to: float, n: int) -> tuple[np.ndarray, np.
     return q_from + (q_to - q_from) * u, k >= half
 
 
-def toggle_dyad(linkage: Linkage) -> RRR | RRP:
-    """The dyad on the driver's point whose toggle limits the driver (RRR to a frame point, RRP)."""
+def toggle_dyads(linkage: Linkage) -> list[RRR | RRP]:
+    """The dyads on the driver's point whose toggles limit the driver (RRR to a frame point, RRP on
+    a frame guide), in assembly order: the first one stops the driver where it toggles."""
     d = linkage.driver
     tip = d.tip if isinstance(d, Crank) else d.point
+    out: list[RRR | RRP] = []
     for y in linkage.dyads:
         if isinstance(y, RRR) and tip in (y.p, y.q):
             if (y.q if y.p == tip else y.p) not in linkage.frame_points:
                 break
-            return y
+            out.append(y)
         if isinstance(y, RRP) and y.p == tip and isinstance(y.guide, Guide):
-            return y
-    raise NotApplicable("the limits are where the dyad on the driver's point toggles: it needs an RRR pivoted on the "
-                        "frame or an RRP on a frame guide there (give the swing's ends instead)")
+            out.append(y)
+    if not out:
+        raise NotApplicable("the limits are where the dyad on the driver's point toggles: it needs an RRR pivoted on "
+                            "the frame or an RRP on a frame guide there (give the swing's ends instead)")
+    return out
+
+
+def toggle_dyad(linkage: Linkage) -> RRR | RRP:
+    """The first dyad on the driver's point whose toggle limits the driver (its output is the swing's)."""
+    return toggle_dyads(linkage)[0]
 
 
 def _cuts(linkage: Linkage) -> list[tuple[float, float]]:
-    """The driver's point at every toggle of its dyad, constructed (circle ∩ circle, circle ∩ line, line ∩ line)."""
+    """The driver's point at every toggle of the dyads on it, constructed (circle ∩ circle, circle ∩
+    line, line ∩ line)."""
+    return [p for y in toggle_dyads(linkage) for p in _dyad_cuts(linkage, y)]
+
+
+def _dyad_cuts(linkage: Linkage, y: RRR | RRP) -> list[tuple[float, float]]:
+    """The driver's point at every toggle of the dyad ``y`` on it."""
     ops = ScalarOps()
     d = linkage.driver
-    y = toggle_dyad(linkage)
     frame = linkage.frame_points
     path: tuple[float, ...]  # the driver point's path: the rocker's circle (A, AB) or the slider's guide
     if isinstance(d, Crank):
@@ -151,20 +166,21 @@ def driver_limits(linkage: Linkage, q0: float) -> tuple[float, float]:
 def _assembles_at(linkage: Linkage, q0: float) -> None:
     """Refuse a stated position outside every swing: between two cuts where the dyad cannot close."""
     d = linkage.driver
-    y = toggle_dyad(linkage)
     if isinstance(d, Crank):
         A = linkage.frame_points[d.pivot]
         B = (A[0] + d.length * math.cos(q0), A[1] + d.length * math.sin(q0))
     else:
         assert isinstance(d, SliderInput)
         B = (d.guide.through[0] + q0 * d.guide.direction[0], d.guide.through[1] + q0 * d.guide.direction[1])
-    if isinstance(y, RRR):
-        D = linkage.frame_points[y.q if y.p == (d.tip if isinstance(d, Crank) else d.point) else y.p]
-        ok = abs(y.lengths[0] - y.lengths[1]) <= math.dist(B, D) <= sum(y.lengths)
-    else:
-        assert isinstance(y.guide, Guide)  # toggle_dyad keeps frame guides only
-        (tx, ty), (ux, uy) = y.guide.through, y.guide.direction
-        ok = abs((B[0] - tx) * uy - (B[1] - ty) * ux) <= y.length
+    ok = True
+    for y in toggle_dyads(linkage):
+        if isinstance(y, RRR):
+            D = linkage.frame_points[y.q if y.p == (d.tip if isinstance(d, Crank) else d.point) else y.p]
+            ok = ok and abs(y.lengths[0] - y.lengths[1]) <= math.dist(B, D) <= sum(y.lengths)
+        else:
+            assert isinstance(y.guide, Guide)  # toggle_dyads keeps frame guides only
+            (tx, ty), (ux, uy) = y.guide.through, y.guide.direction
+            ok = ok and abs((B[0] - tx) * uy - (B[1] - ty) * ux) <= y.length
     if not ok:
         raise NotApplicable("the mechanism cannot be assembled at the driver's stated position: state one inside "
                             "the swing (it picks the swing whose limits are found)")

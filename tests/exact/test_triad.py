@@ -39,6 +39,18 @@ def test_every_assembly_closes_all_six_lengths_and_they_differ():
         assert ((d - c).conjugate() * (e - c)).imag > 0
 
 
+@pytest.mark.parametrize("deg", [0.0, 80.0])
+def test_an_assembly_next_to_the_dyads_limit_is_found(deg):
+    # at φ = 0° and 80° the assembly near the figure has θ2 between the last scan node where the dyad
+    # C–D–F closes and its limit (|CF| = l_CD + l4): the scan saw no sign change there and lost it —
+    # the exact solution took the other assembly, 60 mm off, while the construction's Newton found this one
+    zb = 40 * MM * complex(math.cos(math.radians(deg)), math.sin(math.radians(deg)))
+    found = assemblies(GROUP, zb, F, G)
+    assert len(found) == 2 and max(closes(GROUP, zb, F, G, t) for t in found) < 1e-12
+    start = np.array([complex(*p) for p in GROUP.start])
+    assert min(float(np.max(np.abs(np.array(t) - start))) for t in found) < 25 * MM
+
+
 def test_the_nearest_assembly_to_the_start_is_taken():
     kin = solve(SIXBAR, np.radians([60.0]))
     assert kin.valid[0]

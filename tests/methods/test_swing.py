@@ -131,3 +131,22 @@ def test_a_sliders_output_swings_between_its_angles_at_the_strokes_ends():
                              (RRP("B", "C", ("2", "3"), 0.03, Guide((0.0, 0.06), 0.0)),))
     with pytest.raises(NotApplicable, match="slides"):
         output_swing(guide_bar_like, 1.0, 2.0)
+
+
+#: ROCKER with a second dyad on B: B–X–H, H = (0, 50) mm, BX = HX = 30 mm — it stretches (BH = 60 mm)
+#: at φ = 90° − arccos((80² + 50² − 60²)/(2·80·50)) = 41.49°, inside the first dyad's swing.
+TWO_ON_B = Linkage({"A": (0.0, 0.0), "D": (0.05, 0.0), "H": (0.0, 0.05)}, Crank("1", "A", "B", 0.08, 5.0),
+                   (RRR("B", "C", "D", ("2", "3"), (0.04, 0.06), "left"),
+                    RRR("B", "X", "H", ("5", "6"), (0.03, 0.03), "left")))
+
+
+def test_the_first_dyad_on_the_driver_to_toggle_limits_it():
+    # only the first dyad's toggles were cut: the swing ran to −97.9°, past the second's limit, and
+    # `between = "limits"` was refused as "the swing goes beyond the driver's limits at position 2"
+    lo, hi = driver_limits(TWO_ON_B, math.radians(60))
+    assert lo == pytest.approx(math.pi / 2 - math.acos(0.6625), abs=1e-14)
+    assert hi == pytest.approx(math.acos(-0.1375), abs=1e-14)  # the first dyad's, BD = 100 mm
+    assert (lo, hi) == pytest.approx(exact.driver_limits(TWO_ON_B, math.radians(60)), abs=1e-14)
+    # the output CD's swing between them: its end at 41.49° is where the other dyad toggles, and the
+    # exact one dropped that end (it took it for a position off the assembly)
+    assert output_swing(TWO_ON_B, lo, hi)[0] == pytest.approx(exact.output_swing(TWO_ON_B, lo, hi), rel=1e-12)

@@ -18,7 +18,7 @@ from typing import Any
 
 from graphmech.mechanisms.linkage import Crank, Linkage, Positions
 from graphmech.scales import phi_axis_problem
-from graphmech.tolerances import POLE_RANGE_MM
+from graphmech.tolerances import COINCIDENT_REL, POLE_RANGE_MM
 from graphmech.problems.reader import pole_distances
 from graphmech.problems.reader import MAX_POSITIONS, MISSING, Reader, read_scales, say, type_name
 
@@ -158,8 +158,13 @@ def read_between(cy: Reader, top: Reader, linkage: Linkage | None, count: int | 
         if ends is None:
             return None
         out = (given.si(ends[0]), given.si(ends[1]))
+        turns = (out[1] - out[0]) % (2.0 * math.pi) if kind == "angle" else 1.0
         if out[0] == out[1]:
             cy.problem(cy.at(given.key), "the swing's two ends are one position")
+            return None
+        if min(turns, 2.0 * math.pi - turns) <= COINCIDENT_REL * 2.0 * math.pi:  # 0 and 360°: one place
+            cy.problem(cy.at(given.key), "the swing's two ends are one place on the turn (a swing is less than a "
+                                         "turn; for the full turn leave out between)")
             return None
     else:
         cy.ignore("between")

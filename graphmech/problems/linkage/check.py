@@ -16,7 +16,7 @@ import numpy as np
 from graphmech import tolerances as T
 from graphmech.errors import DegenerateConstruction, OutOfDomain, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
-from graphmech.mechanisms.linkage import Linkage
+from graphmech.mechanisms.linkage import Linkage, Triad
 from graphmech.geometry.primitives import degrees_0_360
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
 from graphmech.scales import drawn_size_problem, format_scale, round_scale
@@ -261,6 +261,13 @@ def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]
             solutions.append(sol)
             failures.append(reason[i])
     exact = solve_exact(linkage, positions)
+    other = _other_assembly(build, solutions, exact)
+    if other and len(positions) == 1:
+        raise DegenerateConstruction("the class III group", other[0], position_text(build, labels[0]))
+    if other:  # not compared: the two would be different mechanisms
+        valid = exact.valid.copy()
+        valid[list(other)] = False
+        exact = replace(exact, valid=valid)
     an = Analysis(scene, build, plan, scales, stated, positions, labels, solutions, failures, exact)
     an.extra_measured = tuple(extra_measured)
     an.size = mechanism_size(linkage, exact)
@@ -270,8 +277,10 @@ def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]
     for i, why in enumerate(failures):
         if why:
             an.warnings.append(f"{position_text(build, labels[i])}: construction impossible — {why}")
+    for i, why in other.items():
+        an.warnings.append(f"{position_text(build, labels[i])}: {why}; its values are not checked")
     for i, ok in enumerate(exact.valid):
-        if not ok and solutions[i] is not None:
+        if not ok and solutions[i] is not None and i not in other:
             an.warnings.append(f"{position_text(build, labels[i])}: the exact solution is undefined here "
                                f"({exact.reason[i]}); its values are not checked")
     an.rows = [_row(an, display, q, i) for display, q, i in wanted
@@ -283,6 +292,24 @@ def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]
     if ic:
         an.instant_centres = ic_check.add_rows(an)
     return an
+
+
+def _other_assembly(build: LinkageConstruction, solutions: list[Any], exact: Kinematics) -> dict[int, str]:
+    """Positions where a class III group's construction (Newton's method from ``start``) reached
+    another assembly than the exact solution (the one nearest ``start``), and why: far from the
+    start the two rules may part, and then they describe two different mechanisms."""
+    out: dict[int, str] = {}
+    for y in build.linkage.dyads:
+        if not isinstance(y, Triad):
+            continue
+        tol = T.COINCIDENT_REL ** 0.5 * (sum(y.lengths) + sum(y.ternary)) / build.mu_l  # drawing mm
+        for i, sol in enumerate(solutions):
+            if sol is None or not exact.valid[i] or i in out:
+                continue
+            if any(math.dist(sol[build.mech[P]], build.to_drawing(tuple(exact.point[P][i]))) > tol for P in y.inner):
+                out[i] = (f"Newton's method from the start reached another assembly of the class III group {y.name} "
+                          "than the one nearest the start (give start near the group at this position)")
+    return out
 
 
 def _finite(values: Any) -> bool:

@@ -311,7 +311,7 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
         carry(i, p, c)
         carry(j, c)
         if isinstance(guide, LinkGuide):  # a slotted link drives the pin C: C<j> and C<link> stand at C
-            if c is not None and j is not None:
+            if c is not None and j is not None and guide.link not in (i, j):  # (its own link: refused below)
                 new(1, c + j)
                 new(1, c + guide.link)
                 carry(j, c + j)
@@ -352,9 +352,14 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
             else:
                 guides = [_read_any_guide(r, "guides", frame, part, r.sub(g, f"{r.at('guides')}[{m}]"))
                           for m, g in enumerate(value)]
+        g0, g1 = guides
+        same = isinstance(g0, LinkGuide) and isinstance(g1, LinkGuide) and g0.link == g1.link
+        if same:
+            r.problem(f"{r.at('guides')}[1].link", "both guides on one link: C is fixed on it where their lines "
+                                                   "meet, the blocks cannot slide (put the guides on two links)")
         for m, (x, g) in enumerate(zip((i, j), guides)):
             carry(x, c, c + x if c and x else None)
-            if isinstance(g, LinkGuide):
+            if isinstance(g, LinkGuide) and g.link not in (i, j) and not (same and m == 1):  # else refused
                 carry(g.link, c + g.link if c else None)
                 if c:
                     new(0, c + g.link)
@@ -365,7 +370,8 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
         if all(isinstance(g, Guide) for g in guides):
             r.problem(r.at("guides"), "both guides on the frame: the dyad cannot move (put one on a moving "
                                       'link: {link = "1", line = ["A", "B"]})')
-        elif c is not None and i is not None and j is not None and guides[0] is not None and guides[1] is not None:
+        elif (c is not None and i is not None and j is not None and guides[0] is not None and guides[1] is not None
+              and not same):
             part.model = PRP(c, (i, j), (guides[0], guides[1]))
     else:  # RPP
         p, c = names
@@ -481,14 +487,20 @@ def _read_triad(r: Reader, index: int) -> _Part:
     return part
 
 
-def _assembly_order(dyads: list[_Part], triads: list[_Part]) -> list[_Part]:
-    """The groups in assembly order: each class III group right after the last dyad that makes one
-    of its outer joints (first of all when the frame, the driver or points make them)."""
+def _assembly_order(dyads: list[_Part], triads: list[_Part], points: list[_Part]) -> list[_Part]:
+    """The groups in assembly order: each class III group right after the last group that makes one
+    of its outer joints, directly or through the base points of a [[point]] (first of all when the
+    frame and the driver make them), and after the class III groups written before it."""
     out = list(dyads)
+    after = 0  # class III groups keep their file order among themselves
     for t in triads:
-        needed = {n for n, _ in t.needs}
-        at = max((k + 1 for k, d in enumerate(out) if needed & {n for n, _ in d.defines}), default=0)
+        ready = {n: k + 1 for k, d in reversed(list(enumerate(out))) for n, _ in d.defines}
+        for p in points:  # a point is known once its base points are (points in file order)
+            for n, _ in p.defines:
+                ready.setdefault(n, max((ready.get(b, 0) for b, _ in p.needs), default=0))
+        at = max([after, *(ready.get(n, 0) for n, _ in t.needs)])
         out.insert(at, t)
+        after = at + 1
     return out
 
 
@@ -567,10 +579,11 @@ def read_linkage(
     )
     driver, positions = _read_driver(top, frame, crank_only)
     dyads = [_read_dyad(r, k, frame) for k, r in enumerate(top.tables_at("dyad"))]
-    dyads = _assembly_order(dyads, [_read_triad(r, k) for k, r in enumerate(top.tables_at("triad"))])
+    triad_parts = [_read_triad(r, k) for k, r in enumerate(top.tables_at("triad"))]
     if not triads and "triad" in data:
         top.problem("triad", TRIAD_NOT_YET)
     points = [_read_point(r, k) for k, r in enumerate(top.tables_at("point"))]
+    dyads = _assembly_order(dyads, triad_parts, points)
     frame_link = _check_structure(
         top.problems, frame, (link_value, frame_link_given), driver, dyads, points
     )
@@ -687,7 +700,10 @@ def _check_structure(
         for name, path in part.needs:
             if name in stage and stage[name] <= k:
                 continue
-            if name in origin:
+            if name in origin and stage[name] == k + 1:  # made by this group, or placed from its joints
+                tip = (" (it is this group's own new joint)" if origin[name] == part.where else
+                       f" ({origin[name]} places it from {part.where}'s own joints: a group cannot hang on itself)")
+            elif name in origin:
                 tip = f" ({origin[name]} defines it: put that first)"
             else:
                 tip = ""
@@ -698,8 +714,9 @@ def _check_structure(
     for k, part in enumerate(dyads):
         for link, line, path in part.guides_on:
             if link not in owner or order.index(owner[link]) > k:
-                where = "the frame: give through and angle" if link == frame_link[0] else \
-                    f"not a moving link defined before {part.where}"
+                where = ("the frame: give through and angle" if link == frame_link[0] else
+                         f"{part.where}'s own: a guide is on a link defined before it" if owner.get(link) == part.where
+                         else f"not a moving link defined before {part.where}")
                 problems.append((path, f"link {link} is {where}"))
                 continue
             for name, name_path in line:

@@ -235,6 +235,9 @@ def test_a_swing_numbers_its_positions_out_and_back():
     (ROCKER.replace('between = "limits"', 'between = "ends"'), "cycle.between", ('"limits"',)),
     (ROCKER.replace('between = "limits"', "between_deg = [10, 10]"), "cycle.between_deg", ("one position",)),
     (ROCKER.replace('between = "limits"', "between_deg = [10]"), "cycle.between_deg", ("[from, to]",)),
+    # ends a whole turn apart are one place: the crank's swing was 0° (every position at 10°), checked silently
+    (ROCKER.replace('between = "limits"', "between_deg = [10, 370]"), "cycle.between_deg", ("one place on the turn",)),
+    (ROCKER.replace('between = "limits"', "between_deg = [0, 1e-300]"), "cycle.between_deg", ("one place on the turn",)),
     (ROCKER.replace("omega = 5", "omega = 5\nepsilon_rad_s2 = 2"), "driver.epsilon", ("uniformly",)),
     (ROCKER.replace("angle = 0 ", "angle = 180 "), "cycle.between", ("cannot be assembled",)),
     (ROCKER.replace("length = 80", "length = 20").replace("lengths = [40, 60]", "lengths = [60, 50]"),

@@ -369,3 +369,27 @@ def test_class_iii_sixbar_instant_centres_by_kennedy_agree_with_the_exact():
     assert abs(cross(d - f, p - f)) < 1e-8 * np.dot(d - f, d - f)
     assert abs(cross(e - g, p - g)) < 1e-8 * np.dot(e - g, e - g)
     assert rows["omega_3_ic"]["exact"] == pytest.approx(-2.75328271, abs=1e-8)
+
+
+def test_a_class_iii_group_in_another_assembly_than_the_exact_one_is_not_compared(monkeypatch):
+    # Newton from the start and "the exact assembly nearest the start" are two rules: where they part,
+    # the table compared two different mechanisms (36 % apart, exit 0, no word). Here the exact
+    # solution is moved 10 mm off to stand for the other assembly.
+    from dataclasses import replace
+
+    from graphmech.errors import DegenerateConstruction
+    from graphmech.problems.linkage import check as linkage_check
+
+    real = linkage_check.solve_exact
+
+    def other(linkage, positions):
+        kin = real(linkage, positions)
+        return replace(kin, point={**kin.point, "D": kin.point["D"] + 0.01})
+
+    monkeypatch.setattr(linkage_check, "solve_exact", other)
+    text = (SCENES / "kin.class_iii_sixbar.toml").read_text(encoding="utf-8")
+    with pytest.raises(DegenerateConstruction, match="another assembly of the class III group B-C, F-D, G-E"):
+        analyse(parse_scene(tomllib.loads(text), "six.toml"))
+    an = analyse(parse_scene(tomllib.loads(text.replace("angle = 60", "angle = [55, 60]")), "six.toml"))
+    assert an.rows == []
+    assert sum("another assembly" in w and "not checked" in w for w in an.warnings) == 2

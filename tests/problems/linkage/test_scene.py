@@ -311,6 +311,14 @@ def test_prp_on_a_coupler_parses() -> None:
     ('guides = [{ link = "3", line = ["B", "C"] }, ', 'guides = [',
      "dyad[1].guides: must be a list of 2 guide tables, one per block, in the order of links"),
     ('joints = ["G"]', 'joints = ["C"]', "dyad[1].joints[0]: C is already defined (by dyad[0])"),
+    # these three were blamed on joints[0] ("G5 is already defined") or told to "put dyad[1] first"
+    ('link = "3", line', 'link = "5", line', "dyad[1].guides[0].link: link 5 is dyad[1]'s own: a guide is on a link "
+                                             "defined before it"),
+    ('{ through = [0, 0], angle = 90 }', '{ link = "3", line = ["C", "B"] }',
+     "dyad[1].guides[1].link: both guides on one link: C is fixed on it where their lines meet, the blocks cannot "
+     "slide (put the guides on two links)"),
+    ('line = ["B", "C"]', 'line = ["B", "G"]',
+     "dyad[1].guides[0].line[1]: G is not defined before dyad[1] (it is this group's own new joint) (and 1 more)"),
 ])
 def test_prp_refusals_name_the_key(old: str, new: str, message: str) -> None:
     assert old in PRP_ON_COUPLER
@@ -325,6 +333,8 @@ def test_rrp_on_a_moving_guide_defines_the_coincident_points() -> None:
     text = scene_text("linkage/slotted_link_pin")
     assert message_of(text.replace('line = ["A", "B"]', 'line = ["A", "D"]')) == (
         "scene.toml: dyad[0].guide.line[1]: D is not a point of link 2 (it carries A, B, C2)")
+    assert message_of(text.replace('link = "2", line', 'link = "4", line')) == (
+        "scene.toml: dyad[0].guide.link: link 4 is dyad[0]'s own: a guide is on a link defined before it")
 
 
 def test_dyad_branch_is_required() -> None:
@@ -471,6 +481,55 @@ branch = "left"
     assert group.lengths == pytest.approx((0.075, 0.06, 0.085)) and group.ternary == pytest.approx((0.055, 0.065, 0.05))
     assert group.start[2] == pytest.approx((0.128, 0.098)) and group.hand == 1.0
     assert s.linkage.links()["3"] == ["C", "D", "E"]
+
+
+#: The six-bar's group hung on X, a point of a dyad's coupler 7 placed on B (so the values are the six-bar's).
+ON_A_POINT = SIXBAR_III.replace('outer = ["B", "F", "G"]', 'outer = ["X", "F", "G"]').replace(
+    'links = ["2", "4", "5", "3"]', 'links = ["9", "4", "5", "3"]').replace('"omega_2", ', "").replace(
+    '"alpha_2", ', "").replace("G = [60, 150]", "G = [60, 150]\nH = [0, 150]") + """
+[[dyad]]
+type = "RRR"
+joints = ["B", "Y", "H"]
+links = ["7", "8"]
+lengths = [80, 70]
+branch = "left"
+
+[[point]]
+name = "X"
+link = "7"
+base = ["B", "Y"]
+along = 0
+"""
+
+
+def test_a_triad_hangs_on_a_point_of_a_dyads_link(tmp_path: Path) -> None:
+    # it was placed before the dyad and refused: "X is not defined before triad[0] (point[0] defines it: put that
+    # first)" — which no order of the file could satisfy
+    s = parse_scene(tomllib.loads(ON_A_POINT), "six.toml")
+    dyad, group = s.linkage.dyads
+    assert isinstance(dyad, RRR) and isinstance(group, Triad) and group.outer == ("X", "F", "G")
+    values = {}
+    for name, text in (("on_point", ON_A_POINT), ("six", SIXBAR_III)):
+        p = tmp_path / f"{name}.toml"
+        p.write_text(text, encoding="utf-8")
+        code, out, err = run_cli("check", "--json", str(p))
+        assert code == 0, err
+        values[name] = {q["name"]: q["graphical"] for q in json.loads(out)["quantities"]}
+    assert values["on_point"]["omega_3"] == pytest.approx(values["six"]["omega_3"], rel=1e-12)
+    assert values["on_point"]["a_E"] == pytest.approx(values["six"]["a_E"], rel=1e-12)
+
+
+def test_a_triad_on_a_point_of_its_own_link_is_refused() -> None:
+    text = SIXBAR_III.replace('outer = ["B", "F", "G"]', 'outer = ["B", "F", "X"]') + (
+        '\n[[point]]\nname = "X"\nlink = "3"\nbase = ["C", "D"]\nalong = 10\n')
+    assert message_of(text) == ("scene.toml: triad[0].outer[2]: X is not defined before triad[0] (point[0] places it "
+                                "from triad[0]'s own joints: a group cannot hang on itself)")
+
+
+def test_two_triads_keep_their_file_order() -> None:
+    second = SIXBAR_III[SIXBAR_III.index("[[triad]]"):SIXBAR_III.index("[page]")]
+    err = refusal(SIXBAR_III + "\n" + second, "six.toml")
+    assert err.problems[0] == ("triad[1].links[0]", "link 2 is already used by triad[0]; each dyad adds two new links")
 
 
 @pytest.mark.parametrize("old, new, where, words", [
