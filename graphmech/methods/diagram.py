@@ -249,8 +249,8 @@ def triad_position(ops: Ops, b_: Components | None, f_: Components | None, g_: C
     like = next(x for x in z if x is not None).real
     c0, d0 = complex(*start[0]), complex(*start[1])
     g0 = guides[0]
+    zb = 0.0j if z[0] is None else z[0]  # B (a slider first leg has none: its guide's point stands in)
     if g0 is None:
-        zb = z[0]
         q = np.angle(c0 - zb) + 0.0 * like
     else:
         q = ((c0 - g0[0]) * g0[1].conjugate()).real + 0.0 * like
@@ -268,11 +268,13 @@ def triad_position(ops: Ops, b_: Components | None, f_: Components | None, g_: C
         """Leg k's equation at its joint x, its two derivatives, and the row's unit normal (X − O)/l or
         i·u, by which the condition number's Jacobian is taken."""
         g = guides[k]
-        if g is None:
-            ox = x - z[k]
+        zk = z[k]
+        if g is None and zk is not None:
+            ox = x - zk
             # ∂|X − F|²/∂θ = 2 (X − F)·(i r): the dot product of plane vectors as Re(ū·w)
             return ((ox * ox.conjugate()).real - length * length, 2 * (ox.conjugate() * dx[0]).real,
                     2 * (ox.conjugate() * dx[1]).real, ox / length)
+        assert g is not None
         u = g[1]
         return (((x - g[0]) * u.conjugate()).imag, (dx[0] * u.conjugate()).imag,
                 (dx[1] * u.conjugate()).imag, 1j * u + 0.0 * x)

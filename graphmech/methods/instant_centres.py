@@ -229,9 +229,9 @@ def direct_centres(linkage: Linkage) -> list[Direct]:
                 else:
                     slide(frame, block, g.angle, y.c)
         elif isinstance(y, Triad):  # a slider leg: its block slides on the frame guide at its pin
-            for block, g, pin in zip(y.links, y.guides, y.inner):
-                if g is not None:
-                    slide(frame, block, g.angle, pin)
+            for block, on, pin in zip(y.links, y.guides, y.inner):
+                if on is not None:
+                    slide(frame, block, on.angle, pin)
     return out
 
 

@@ -218,7 +218,7 @@ def assur_name(y: Triad) -> str:
     return E.own("mechanism", f"S{''.join(y.inner)}")
 
 
-def leg_line(b: "LinkageConstruction", y: Triad, n: int) -> str:
+def leg_line(b: LinkageConstruction, y: Triad, n: int) -> str:
     """Leg n's line on the kinematic diagram, on which Assur's point S may lie: its binary link
     extended, or on a slider leg the normal to the guide at its pin (the pin moves along the guide,
     so a point of the ternary link on that normal moves relative to the pin along the guide too)."""
@@ -260,7 +260,7 @@ def mech_direction(b: "LinkageConstruction", a: str, c: str, text: str) -> str:
     return name
 
 
-def _leg_words(b: "LinkageConstruction", y: Triad, n: int) -> str:
+def _leg_words(b: LinkageConstruction, y: Triad, n: int) -> str:
     """Leg n's line in the velocity polygon, in words: ⟂ its binary link, or ∥ its guide through p."""
     P, X = y.outer[n], y.inner[n]
     return f"∥ the guide of {X} through p" if y.slides(n) else f"⟂{P}{X} through {_img_label(b, P)}"
@@ -289,7 +289,7 @@ def _triad(b: "LinkageConstruction", y: Triad) -> None:
     b.g.extend_line(perp[i], s)
     b.g.extend_line(perp[j], s)
     # The third joint X3 from S: v_X3 = v_S + (⟂ S X3) = v_outer + (⟂ outer X3)
-    P3, X3 = y.outer[k], y.inner[k]
+    X3 = y.inner[k]
     ls = E.line(b, PANEL, f"⟂S·{X3}@s", K.line_perpendicular_to, (s, mech_direction(b, S, b.mech[X3], f"S{X3}")),
                 f"through s draw ⟂ S{X3}", say=("perp", "S", X3))
     img3 = E.image(b, PANEL, b.vel, X3, label(X3), K.intersect_lines, (ls, perp[k]),

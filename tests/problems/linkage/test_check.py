@@ -369,3 +369,43 @@ def test_class_iii_sixbar_instant_centres_by_kennedy_agree_with_the_exact():
     assert abs(cross(d - f, p - f)) < 1e-8 * np.dot(d - f, d - f)
     assert abs(cross(e - g, p - g)) < 1e-8 * np.dot(e - g, e - g)
     assert rows["omega_3_ic"]["exact"] == pytest.approx(-2.75328271, abs=1e-8)
+
+
+# ------------------------------------------------- a class III group with a slider leg (IC engine)
+
+def test_ic_engine_from_eg_every_value_by_assurs_point_agrees_with_the_exact(tmp_path):
+    # the piston's leg: S on AB and on the normal to C's guide; at three angles of GE
+    text = (SCENES / "kin.ic_engine_EG.toml").read_text(encoding="utf-8")
+    doc = check_json(write_scene(tmp_path, text.replace("angle = 116\n", "angle = [112, 116, 124]\n")))
+    rows = doc["quantities"]
+    assert len(rows) == 14 * 3
+    assert max(r["rel_error"] for r in rows) < 1e-9
+    assert not any(r["ill_conditioned"] for r in rows)
+    got = {r["name"]: r for r in rows}
+    # the figure's assembly: ω2 = 11.2483 rad/s at 116° (tests/exact: the AB-driven engine's, scaled)
+    assert got["omega_2@116"]["exact"] == pytest.approx(11.2483096, abs=1e-7)
+    assert got["v_C@116"]["exact"] == pytest.approx(-0.409328282, abs=1e-9)  # the piston moves down
+    assert got["omega_3@112"]["exact"] != pytest.approx(got["omega_3@124"]["exact"], abs=1e-3)
+
+
+def test_ic_engine_from_eg_the_velocity_image_of_s_is_the_pole():
+    """Both legs of S stand on the frame (A, and C's guide): v_S = 0 — S is the ternary link's instant
+    centre P13, and the instant-centre scene finds it there."""
+    from graphmech.problems.linkage.check import analyse as run
+
+    doc = check_json(SCENES / "ic.ic_engine_EG.toml")
+    rows = {r["name"]: r for r in doc["quantities"]}
+    assert max(r["rel_error"] for r in rows.values()) < 1e-9
+    kin = run(parse_scene(tomllib.loads((SCENES / "kin.ic_engine_EG.toml").read_text(encoding="utf-8")),
+                          "eg.toml")).exact
+    b, c = kin.point["B"][0], kin.point["C"][0]
+    p13 = np.array([rows["x_P13"]["exact"], rows["y_P13"]["exact"]])
+    assert p13[1] == pytest.approx(c[1], abs=1e-12)  # on the normal to the guide (horizontal) through C
+    assert abs(b[0] * p13[1] - b[1] * p13[0]) < 1e-12  # on AB (A at the origin)
+    assert rows["omega_3_ic"]["exact"] == pytest.approx(-2.78896857, abs=1e-7)
+
+
+def test_the_same_engine_from_ab_is_three_dyads_and_agrees_with_the_exact():
+    doc = check_json(SCENES / "kin.ic_engine_AB.toml")
+    assert max(r["rel_error"] for r in doc["quantities"]) < 1e-9
+    assert values(doc)["omega_6"]["exact"] == pytest.approx(2.30417008, abs=1e-7)
