@@ -11,9 +11,10 @@ have no closed-form solution. Here they are *eliminated* to one equation in θ2:
 C is known, D is the closed-form RRR dyad C–D–F (either hand), E follows rigidly, and the
 residual ``f(θ2) = |E − G|² − l5²`` must vanish. Every root is found by a scan of θ2 over the
 full turn (both hands of the dyad), each sign change narrowed by bisection to the last bit; of
-the assemblies so found the one nearest the stated start is taken. This is a different route
-from the construction's (Newton on the two loop equations from the start), so they check each
-other.
+the assemblies so found the one nearest the stated start is taken — at several positions, the
+one nearest the previous position's, so that a cycle keeps its branch. This is a different route
+from the construction's (Newton on the two loop equations from the start, or from the previous
+position), so they check each other.
 
 A leg may be a block on a frame guide (its pin slides along it: ``Triad.guides``): the scan then
 runs over the first pivoted leg's angle, the next leg is closed as an RRR or an RRP dyad (circle
@@ -179,7 +180,10 @@ def solve_triad(y: Triad, known: dict[str, tuple[np.ndarray, np.ndarray, np.ndar
             sol.assembled[i] = sol.valid[i] = False
             sol.reason[i] = f"class III group {y.name}: cannot be assembled"
             continue
+        # the assembly nearest the last position's (the first: nearest the start) — the branch is
+        # followed over a cycle
         best = min(found, key=lambda t: float(np.sum(np.abs(np.array(t) - start) ** 2)))
+        start = np.array(best)
         sol.z[:, i] = best
         ok = _rates(y, sol, i, zo[:, i], vo[:, i], ao[:, i])
         if not ok:

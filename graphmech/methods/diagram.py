@@ -238,6 +238,8 @@ def triad_position(ops: Ops, b_: Components | None, f_: Components | None, g_: C
     pin's distance from its guide, ``Im(ū·(X − Q)) = 0``. The start is the stated figure's C, D.
     The condition number reported is that of the Jacobian scaled by the lengths (σmax/σmin),
     infinite where the group locks. A slider leg's outer joint is None (its guide stands in).
+    At several positions (the batch path) each starts from the last that converged, the first from
+    the start: the group is followed along its branch over a cycle.
     """
     import numpy as np
 
@@ -256,19 +258,23 @@ def triad_position(ops: Ops, b_: Components | None, f_: Components | None, g_: C
         q = ((c0 - g0[0]) * g0[1].conjugate()).real + 0.0 * like
     th3 = np.full_like(q, np.angle(d0 - c0))
 
-    def joint_c(q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def at(v: Any, sl: slice | None) -> Any:
+        """v at the positions ``sl`` (all of them: None)."""
+        return v if sl is None or np.ndim(v) == 0 else v[sl]
+
+    def joint_c(q: np.ndarray, sl: slice | None = None) -> tuple[np.ndarray, np.ndarray]:
         """C and ∂C/∂q."""
         if g0 is None:
             r2 = l2 * np.exp(1j * q)
-            return zb + r2, 1j * r2
+            return at(zb, sl) + r2, 1j * r2
         return g0[0] + q * g0[1], g0[1] + 0.0 * q
 
-    def residual(k: int, x: np.ndarray, dx: tuple[np.ndarray, np.ndarray], length: float
+    def residual(k: int, x: np.ndarray, dx: tuple[np.ndarray, np.ndarray], length: float, sl: slice | None = None
                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Leg k's equation at its joint x, its two derivatives, and the row's unit normal (X − O)/l or
         i·u, by which the condition number's Jacobian is taken."""
         g = guides[k]
-        zk = z[k]
+        zk = at(z[k], sl)
         if g is None and zk is not None:
             ox = x - zk
             # ∂|X − F|²/∂θ = 2 (X − F)·(i r): the dot product of plane vectors as Re(ū·w)
@@ -279,19 +285,35 @@ def triad_position(ops: Ops, b_: Components | None, f_: Components | None, g_: C
         return (((x - g[0]) * u.conjugate()).imag, (dx[0] * u.conjugate()).imag,
                 (dx[1] * u.conjugate()).imag, 1j * u + 0.0 * x)
 
-    for _ in range(NEWTON_STEPS):
-        zc, dc = joint_c(q)
-        rd = a * np.exp(1j * th3)
-        re = c / a * rd * rot
-        g1, j11, j12, _ = residual(1, zc + rd, (dc, 1j * rd), l4)
-        g2, j21, j22, _ = residual(2, zc + re, (dc, 1j * re), l5)
-        det = j11 * j22 - j12 * j21
-        det = np.where(det == 0.0, 1e-300, det)
-        d2 = np.clip((j22 * g1 - j12 * g2) / det, -NEWTON_MAX_STEP, NEWTON_MAX_STEP)
-        d3 = np.clip((j11 * g2 - j21 * g1) / det, -NEWTON_MAX_STEP, NEWTON_MAX_STEP)
-        q, th3 = q - d2, th3 - d3
-        if np.max(np.abs(d2) + np.abs(d3)) < 1e-15:
-            break
+    def newton(q: np.ndarray, th3: np.ndarray, sl: slice | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Newton's iterations from (q, θ3) at the positions ``sl``; and whether each converged."""
+        for _ in range(NEWTON_STEPS):
+            zc, dc = joint_c(q, sl)
+            rd = a * np.exp(1j * th3)
+            re = c / a * rd * rot
+            g1, j11, j12, _ = residual(1, zc + rd, (dc, 1j * rd), l4, sl)
+            g2, j21, j22, _ = residual(2, zc + re, (dc, 1j * re), l5, sl)
+            det = j11 * j22 - j12 * j21
+            det = np.where(det == 0.0, 1e-300, det)
+            d2 = np.clip((j22 * g1 - j12 * g2) / det, -NEWTON_MAX_STEP, NEWTON_MAX_STEP)
+            d3 = np.clip((j11 * g2 - j21 * g1) / det, -NEWTON_MAX_STEP, NEWTON_MAX_STEP)
+            q, th3 = q - d2, th3 - d3
+            if np.max(np.abs(d2) + np.abs(d3)) < 1e-15:
+                break
+        return q, th3, np.abs(d2) + np.abs(d3) < 1e-9
+
+    if ops.batch and np.ndim(q) == 1 and np.size(q) > 1:
+        # Several positions (a cycle, in its order): each from the last one that converged, the first
+        # from the start — the group is followed along its branch (continuation), as the hand draws it
+        q, th3 = np.array(q, dtype=float), np.array(th3, dtype=float)
+        from_q, from_t = q[:1].copy(), th3[:1].copy()
+        for i in range(q.size):
+            qi, ti, ok = newton(from_q.copy(), from_t.copy(), slice(i, i + 1))
+            q[i], th3[i] = qi[0], ti[0]
+            if ok[0]:
+                from_q, from_t = qi, ti
+    else:
+        q, th3, _ = newton(q, th3)
     zc, dc = joint_c(q)
     rd = a * np.exp(1j * th3)
     re = c / a * rd * rot

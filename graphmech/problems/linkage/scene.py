@@ -568,9 +568,9 @@ def _read_point(r: Reader, index: int) -> _Part:
     return part
 
 
-#: Why a [[triad]] is refused where it is (a flywheel's machine; the full cycle).
-TRIAD_NOT_YET = ("a class III group is solved in linkage scenes (polygons, instant centres) and force scenes only "
-                 "so far: not in a full cycle or a flywheel's machine yet")
+#: Why a [[triad]] is refused where it is (a flywheel's machine; the extreme positions and γ).
+TRIAD_NOT_YET = ("a class III group is solved in linkage scenes (polygons, instant centres, the full cycle) and force "
+                 "scenes only so far: not in [characteristics] or a flywheel's machine yet")
 
 
 def read_linkage(
@@ -742,7 +742,7 @@ def _check_structure(
 
 def _triad_refusals(top: Reader, data: Mapping[str, Any]) -> None:
     """What a scene with a class III group may not ask for yet: one line each."""
-    for key in ("cycle", "characteristics"):
+    for key in ("characteristics",):
         if key in data:
             top.problem(key, TRIAD_NOT_YET)
 

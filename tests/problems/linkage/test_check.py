@@ -409,3 +409,34 @@ def test_the_same_engine_from_ab_is_three_dyads_and_agrees_with_the_exact():
     doc = check_json(SCENES / "kin.ic_engine_AB.toml")
     assert max(r["rel_error"] for r in doc["quantities"]) < 1e-9
     assert values(doc)["omega_6"]["exact"] == pytest.approx(2.30417008, abs=1e-7)
+
+
+def test_a_class_iii_group_through_a_whole_turn_keeps_its_branch(tmp_path):
+    """The cycle scene: 12 positions, Newton from the previous one (continuation) and the exact's
+    assembly nearest the previous agree to 1e-9 at every position, and the branch is the figure's
+    all round (C moves by less than 12 mm between positions; the other assembly is always far)."""
+    from graphmech.exact import solve
+    from graphmech.exact.triad import assemblies
+    from graphmech.scene import load_scene
+
+    text = (SCENES / "linkage.class_iii_sixbar-cycle.toml").read_text(encoding="utf-8")
+    old = 'find = ["psi_3@7", "omega_3@3", "alpha_3@5", "omega_3_diagram@4.5", "alpha_3_diagram@9"]'
+    assert old in text
+    doc = check_json(write_scene(tmp_path, text.replace(old, 'find = ["omega_3", "alpha_3", "omega_4", "alpha_5"]')))
+    rows = doc["quantities"]
+    assert len(rows) == 4 * 12
+    assert max(r["rel_error"] for r in rows) < 1e-9
+    assert {r["name"]: r["exact"] for r in rows}["omega_3@3"] == pytest.approx(1.39305419, abs=1e-7)
+    linkage = load_scene(SCENES / "linkage.class_iii_sixbar-cycle.toml").linkage
+    kin = solve(linkage, np.radians(60.0 + 30.0 * np.arange(12)))
+    assert kin.valid.all()
+    c = kin.point["C"][:, 0] + 1j * kin.point["C"][:, 1]
+    assert np.abs(np.diff(np.append(c, c[0]))).max() < 0.012  # m: 12 positions of a 15 mm crank
+    y = linkage.dyads[0]
+    zb = kin.point["B"][:, 0] + 1j * kin.point["B"][:, 1]
+    f, g = complex(0.150, -0.020), complex(0.060, 0.150)
+    for i in range(12):
+        found = assemblies(y, complex(zb[i]), f, g)
+        assert len(found) == 2
+        assert min(abs(t[0] - c[i]) for t in found) < 1e-12
+        assert max(abs(t[0] - c[i]) for t in found) > 0.02

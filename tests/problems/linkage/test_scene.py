@@ -534,12 +534,12 @@ def test_a_slider_leg_is_refused_in_a_force_scene() -> None:
 
 
 @pytest.mark.parametrize("extra, where", [
-    ("\n[cycle]\npositions = 12\n", "cycle"),
     ("\n[characteristics]\n", "characteristics"),
 ])
 def test_what_a_class_iii_group_cannot_do_yet_is_refused(extra: str, where: str) -> None:
     text = SIXBAR_III.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = []') + extra
     err = refusal(text, "six.toml")
     assert "\n" not in str(err)
-    assert any(path == where and "class III group is solved in linkage scenes (polygons, instant centres) and force scenes only" in reason
+    assert any(path == where and "class III group is solved in linkage scenes (polygons, instant centres, the full "
+               "cycle) and force scenes only" in reason
                for path, reason in err.problems), err.problems
