@@ -164,6 +164,7 @@ class TriadSolution:
         self.assembled = np.ones(n, dtype=bool)
         self.valid = np.ones(n, dtype=bool)
         self.reason = [""] * n
+        self.sign = np.zeros(n)  # the sign of the velocity equations' determinant: one per branch
 
 
 def solve_triad(y: Triad, known: dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]) -> TriadSolution:
@@ -174,6 +175,7 @@ def solve_triad(y: Triad, known: dict[str, tuple[np.ndarray, np.ndarray, np.ndar
     zo, vo, ao = (np.array([zero if y.slides(j) else known[p][k] for j, p in enumerate(y.outer)]) for k in range(3))
     sol = TriadSolution(n)
     start = np.array([_C(*p) for p in y.start])
+    side = 0.0  # the branch's sign of the determinant, from the first position solved
     for i in range(n):
         found = assemblies(y, complex(zo[0, i]), complex(zo[1, i]), complex(zo[2, i]))
         if not found:
@@ -189,6 +191,15 @@ def solve_triad(y: Triad, known: dict[str, tuple[np.ndarray, np.ndarray, np.ndar
         if not ok:
             sol.valid[i] = False
             sol.reason[i] = f"class III group {y.name}: dead centre (its velocity equations are singular)"
+        elif side and sol.sign[i] != side:
+            # a branch never crosses a singular position, so its determinant keeps its sign: a flip
+            # means the branch ended (the group locked) since the last position and the assembly found
+            # is another one — not where the mechanism can be driven to
+            sol.valid[i] = False
+            sol.reason[i] = (f"class III group {y.name}: its branch ends before this position (the group locks "
+                             "between the last position and this one)")
+        elif ok:
+            side = sol.sign[i]
     return sol
 
 
@@ -208,6 +219,7 @@ def _rates(y: Triad, sol: TriadSolution, i: int, zo: np.ndarray, vo: np.ndarray,
     theta = [y.guides[k].angle if y.guides[k] is not None else np.angle(r)  # type: ignore[union-attr]
              for k, r in enumerate((r2, r4, r5))]
     sol.theta[:, i] = [theta[0], np.angle(rd), theta[1], theta[2]]
+    sol.sign[i] = np.sign(np.linalg.det(m))
     if np.linalg.cond(m / scale) > 1.0 / TANGENT_REL:
         return False
     rhs_v = np.array([vo[1] - vo[0], vo[2] - vo[0]])

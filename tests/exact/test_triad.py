@@ -183,3 +183,21 @@ def test_the_eg_scenes_velocities_are_the_ab_engines_scaled_by_the_drivers_ratio
         assert np.abs(k3.vel[p][0] - ratio * k2.vel[p][0]).max() < 1e-9 * np.abs(k3.vel[p][0]).max()
     assert float(k3.omega["2"][0]) == pytest.approx(10.0 * ratio, rel=1e-9)
     assert float(k3.omega["2"][0]) == pytest.approx(11.2483096, abs=1e-7)  # the figure's ω2
+
+
+def test_a_branch_that_ends_between_two_positions_is_reported_not_jumped():
+    """From 60° the figure's assembly of the six-bar survives to about 77°, where the group locks; at
+    80° only the other assembly exists. Followed over 60, 70, 80, 90°, the later positions are on
+    that other branch (its velocity determinant has the other sign): invalid, with the reason."""
+    phi = np.radians([60.0, 70.0, 80.0, 90.0])
+    zb = 40 * MM * np.exp(1j * phi)
+    line = np.ones(len(phi), dtype=complex)
+    known = {"B": (zb, 0 * line, 0 * line), "F": (F * line, 0 * line, 0 * line), "G": (G * line, 0 * line, 0 * line)}
+    sol = solve_triad(GROUP, known)
+    assert list(sol.valid) == [True, True, False, False]
+    assert list(sol.assembled) == [True, True, True, True]
+    assert "its branch ends before this position" in sol.reason[2]
+    assert sol.sign[0] == sol.sign[1] == -sol.sign[2]
+    # one position at a time (each from the start) nothing is reported: the other branch is a branch
+    alone = solve_triad(GROUP, {k: tuple(v[2:3] for v in t) for k, t in known.items()})
+    assert alone.valid[0]
