@@ -384,8 +384,12 @@ def _triad(st: _State, y: Triad) -> None:
         st.fail(np.arange(st.n) == bad, sol.reason[bad], dead_centre=bool(sol.assembled[bad]))
     for k, name in enumerate(y.inner):
         st.pts[name] = (sol.z[k], sol.v[k], sol.a[k])
-    for row, link in zip((0, 2, 3), y.links[:3]):  # the solution's rows: θ2, θ3, θ4, θ5
-        st.rotating(link, sol.theta[row], sol.omega[row], sol.alpha[row])
+    for k, (row, link) in enumerate(zip((0, 2, 3), y.links[:3])):  # the solution's rows: θ2, θ3, θ4, θ5
+        g = y.guides[k]
+        if g is not None:  # a block on a frame guide
+            st.translating(link, g.angle)
+        else:
+            st.rotating(link, sol.theta[row], sol.omega[row], sol.alpha[row])
     st.rotating(y.links[3], sol.theta[1], sol.omega[1], sol.alpha[1])
 
 
@@ -518,8 +522,8 @@ def _plan(linkage: Linkage) -> list[_Step]:
             new_points(key + ".c", y.c, *y.coincident)
             translating.update(y.links)
         elif isinstance(y, Triad):
-            need(key, *y.outer)
-            if not min(y.lengths + y.ternary) > 0:
+            need(key, *y.known_outer)
+            if not min(y.ternary + tuple(x for k, x in enumerate(y.lengths) if not y.slides(k))) > 0:
                 problems.append((key + ".lengths", "lengths must be > 0"))
             a, b, c = y.ternary
             if not (a < b + c and b < a + c and c < a + b):

@@ -11,12 +11,19 @@ have no closed-form solution. Here they are *eliminated* to one equation in θ2:
 C is known, D is the closed-form RRR dyad C–D–F (either hand), E follows rigidly, and the
 residual ``f(θ2) = |E − G|² − l5²`` must vanish. Every root is found by a scan of θ2 over the
 full turn (both hands of the dyad), each sign change narrowed by bisection to the last bit; of
-the assemblies so found the one nearest the stated start is taken. This is a different route
-from the construction's (Newton on the two loop equations from the start), so they check each
-other.
+the assemblies so found the one nearest the stated start is taken — at several positions, the
+one nearest the previous position's, so that a cycle keeps its branch. This is a different route
+from the construction's (Newton on the two loop equations from the start, or from the previous
+position), so they check each other.
+
+A leg may be a block on a frame guide (its pin slides along it: ``Triad.guides``): the scan then
+runs over the first pivoted leg's angle, the next leg is closed as an RRR or an RRP dyad (circle
+∩ circle, or circle ∩ the guide), and the last leg's residual is ``|X − O|² − l²`` or the pin's
+signed distance from its guide.
 
 Velocities and accelerations: differentiating the loops once and twice gives four real linear
-equations in (ω2, ω3, ω4, ω5) and (α2, α3, α4, α5) with the same matrix, solved by numpy's LU.
+equations in (ω2, ω3, ω4, ω5) and (α2, α3, α4, α5) — a slider leg's ṡ and s̈ along its guide in
+place of its ω and α — with the same matrix, solved by numpy's LU.
 The matrix is singular exactly where the group's position stops being locally unique (the
 group's "dead centre"); its condition number past ``1/TANGENT_REL`` marks the position invalid.
 
@@ -54,16 +61,59 @@ def _dyad(zc: np.ndarray, zf: complex, a: float, l4: float, hand: float) -> tupl
     return zc + u * (x + 1j * hand * h), ok
 
 
-def _chain(y: Triad, zb: complex, zf: complex, zg: complex, th2: np.ndarray, hand: float
-           ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """(C, D, E, f, assembled) along θ2: f = |E − G|² − l5²."""
-    l2, l4, l5 = y.lengths
+def _on_guide(zc: np.ndarray, q: complex, u: complex, a: float, hand: float) -> tuple[np.ndarray, np.ndarray]:
+    """D on circle(C, a) ∩ the line Q + t·u, ahead of (hand +1) or behind the foot of the
+    perpendicular from C; and whether it exists."""
+    along = ((zc - q) * u.conjugate()).real
+    across = ((zc - q) * u.conjugate()).imag
+    h2 = a * a - across * across
+    ok = h2 >= -TANGENT_REL * a * a  # the circle just touching the guide (the leg's limit) still meets it
+    return q + u * (along + hand * np.sqrt(np.where(ok, np.maximum(h2, 0.0), 0.0))), ok
+
+
+def _legs(y: Triad) -> tuple[int, int, int]:
+    """(scan, next, last): the scanned leg is the first pivoted one (its angle spans a full turn),
+    the next is closed by a dyad (RRR, or RRP on a slider leg's guide), the last is the residual."""
+    r = next(k for k in range(3) if not y.slides(k))
+    d, e = (k for k in range(3) if k != r)
+    return r, d, e
+
+
+def _local(y: Triad) -> tuple[complex, complex, complex]:
+    """The ternary link's joints in its own frame: C at 0, D at l_CD on +x, E to the hand's side."""
     a, _, c = y.ternary  # l_CD, l_DE, l_EC
-    zc = zb + l2 * np.exp(1j * th2)
-    zd, ok = _dyad(zc, zf, a, l4, hand)
-    ze = zc + (zd - zc) / a * c * _rot(y)
-    f = np.abs(ze - zg) ** 2 - l5 * l5
-    return zc, zd, ze, f, ok
+    return 0j, _C(a, 0.0), c * _rot(y)
+
+
+def _unit(y: Triad, k: int) -> complex:
+    g = y.guides[k]
+    assert g is not None
+    return _C(*g.direction)
+
+
+def _chain(y: Triad, zo: tuple[complex, complex, complex], th: np.ndarray, hand: float
+           ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(C, D, E, f, assembled) along the scanned leg's angle: f the last leg's residual —
+    ``|X − O|² − l²`` on a pivoted leg, the signed distance from the guide on a slider leg."""
+    r, d, e = _legs(y)
+    loc = _local(y)
+    z: list[np.ndarray] = [np.zeros_like(th, dtype=complex)] * 3
+    z[r] = zo[r] + y.lengths[r] * np.exp(1j * th)
+    rho = abs(loc[d] - loc[r])
+    if y.slides(d):
+        g = y.guides[d]
+        assert g is not None
+        z[d], ok = _on_guide(z[r], _C(*g.through), _unit(y, d), rho, hand)
+    else:
+        z[d], ok = _dyad(z[r], zo[d], rho, y.lengths[d], hand)
+    z[e] = z[r] + (z[d] - z[r]) / rho * ((loc[e] - loc[r]) / ((loc[d] - loc[r]) / rho))
+    if y.slides(e):
+        g = y.guides[e]
+        assert g is not None
+        f = ((z[e] - _C(*g.through)) * _unit(y, e).conjugate()).imag
+    else:
+        f = np.abs(z[e] - zo[e]) ** 2 - y.lengths[e] ** 2
+    return z[0], z[1], z[2], f, ok
 
 
 def _rot(y: Triad) -> complex:
@@ -74,25 +124,45 @@ def _rot(y: Triad) -> complex:
     return _C(cos_g, y.hand * sin_g)
 
 
-def assemblies(y: Triad, zb: complex, zf: complex, zg: complex) -> list[tuple[complex, complex, complex]]:
-    """Every assembly (C, D, E) of the group with its outer joints at B, F, G."""
-    out: list[tuple[complex, complex, complex]] = []
-    # the scan's nodes, and the limits of the dyad C–D–F (|CF| = l_CD ± l4, where its two hands
-    # meet): a root between the last node that assembles and such a limit has no sign change
-    # between two assembled nodes
-    l2, l4 = y.lengths[0], y.lengths[1]
-    a = y.ternary[0]
-    bf = zf - zb
-    d = abs(bf)
-    limits = []
-    for r in (a + l4, abs(a - l4)):
-        cos_t = (l2 * l2 + d * d - r * r) / (2.0 * l2 * d) if d > 0.0 else 2.0
+def _dyad_limits(y: Triad, zo: tuple[complex, complex, complex]) -> list[float]:
+    """The scanned leg's angles where the next leg's dyad is at a limit: a pivoted next leg where
+    |X_r − O_d| = ρ ± l_d (its two circles touch), a slider leg where X_r is ρ from the guide."""
+    r, d, _ = _legs(y)
+    loc = _local(y)
+    rho, lr = abs(loc[d] - loc[r]), y.lengths[r]
+    out: list[float] = []
+    if y.slides(d):
+        g = y.guides[d]
+        assert g is not None
+        u = _unit(y, d)
+        c0 = ((zo[r] - _C(*g.through)) * u.conjugate()).imag  # the pivot's distance across the guide
+        for target in (rho, -rho):  # lr·sin(θ − ∠u) = target − c0
+            s_ = (target - c0) / lr if lr > 0.0 else 2.0
+            if abs(s_) <= 1.0:
+                base = math.atan2(u.imag, u.real)
+                out += [(base + math.asin(s_)) % (2.0 * math.pi), (base + math.pi - math.asin(s_)) % (2.0 * math.pi)]
+        return out
+    od = zo[d] - zo[r]
+    dist = abs(od)
+    for radius in (rho + y.lengths[d], abs(rho - y.lengths[d])):
+        cos_t = (lr * lr + dist * dist - radius * radius) / (2.0 * lr * dist) if dist > 0.0 and lr > 0.0 else 2.0
         if abs(cos_t) <= 1.0:
             t = math.acos(cos_t)
-            limits += [(math.atan2(bf.imag, bf.real) + s * t) % (2.0 * math.pi) for s in (1.0, -1.0)]
-    grid = np.unique(np.concatenate([np.linspace(0.0, 2.0 * math.pi, SCAN + 1), limits]))
+            out += [(math.atan2(od.imag, od.real) + s * t) % (2.0 * math.pi) for s in (1.0, -1.0)]
+    return out
+
+
+def assemblies(y: Triad, zb: complex, zf: complex, zg: complex) -> list[tuple[complex, complex, complex]]:
+    """Every assembly (C, D, E) of the group with its outer joints at B, F, G (a slider leg's
+    entry is not read: its guide stands in for it)."""
+    out: list[tuple[complex, complex, complex]] = []
+    zo = (zb, zf, zg)
+    # the scan's nodes, and the limits of the dyad that closes the next leg (where its two hands
+    # meet): a root between the last node that assembles and such a limit has no sign change
+    # between two assembled nodes
+    grid = np.unique(np.concatenate([np.linspace(0.0, 2.0 * math.pi, SCAN + 1), _dyad_limits(y, zo)]))
     for hand in (1.0, -1.0):
-        _, _, _, f, ok = _chain(y, zb, zf, zg, grid, hand)
+        _, _, _, f, ok = _chain(y, zo, grid, hand)
         change = ok[:-1] & ok[1:] & (np.sign(f[:-1]) != np.sign(f[1:]))
         for k in np.flatnonzero(change):
             lo, hi, flo = grid[k], grid[k + 1], f[k]
@@ -100,14 +170,14 @@ def assemblies(y: Triad, zb: complex, zf: complex, zg: complex) -> list[tuple[co
                 mid = 0.5 * (lo + hi)
                 if mid in (lo, hi):
                     break
-                _, _, _, fm, okm = _chain(y, zb, zf, zg, np.array([mid]), hand)
+                _, _, _, fm, okm = _chain(y, zo, np.array([mid]), hand)
                 if not okm[0]:
                     break
                 if np.sign(fm[0]) == np.sign(flo):
                     lo, flo = mid, fm[0]
                 else:
                     hi = mid
-            zc, zd, ze, _, _ = _chain(y, zb, zf, zg, np.array([0.5 * (lo + hi)]), hand)
+            zc, zd, ze, _, _ = _chain(y, zo, np.array([0.5 * (lo + hi)]), hand)
             out.append((complex(zc[0]), complex(zd[0]), complex(ze[0])))
     return out
 
@@ -125,56 +195,77 @@ class TriadSolution:
         self.assembled = np.ones(n, dtype=bool)
         self.valid = np.ones(n, dtype=bool)
         self.reason = [""] * n
+        self.sign = np.zeros(n)  # the sign of the velocity equations' determinant: one per branch
 
 
 def solve_triad(y: Triad, known: dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]) -> TriadSolution:
-    """The group at N positions, its outer joints' (z, v, a) given as complex arrays in ``known``."""
-    zo, vo, ao = (np.array([known[p][k] for p in y.outer]) for k in range(3))
-    n = zo.shape[1]
+    """The group at N positions, its outer joints' (z, v, a) given as complex arrays in ``known``
+    (a slider leg's entry is not read: its guide is on the frame)."""
+    n = np.asarray(known[y.known_outer[0]][0]).shape[0]
+    zero = np.zeros(n, dtype=complex)
+    zo, vo, ao = (np.array([zero if y.slides(j) else known[p][k] for j, p in enumerate(y.outer)]) for k in range(3))
     sol = TriadSolution(n)
     start = np.array([_C(*p) for p in y.start])
+    side = 0.0  # the branch's sign of the determinant, from the first position solved
     for i in range(n):
         found = assemblies(y, complex(zo[0, i]), complex(zo[1, i]), complex(zo[2, i]))
         if not found:
             sol.assembled[i] = sol.valid[i] = False
             sol.reason[i] = f"class III group {y.name}: cannot be assembled"
             continue
+        # the assembly nearest the last position's (the first: nearest the start) — the branch is
+        # followed over a cycle
         best = min(found, key=lambda t: float(np.sum(np.abs(np.array(t) - start) ** 2)))
+        start = np.array(best)
         sol.z[:, i] = best
         ok = _rates(y, sol, i, zo[:, i], vo[:, i], ao[:, i])
         if not ok:
             sol.valid[i] = False
             sol.reason[i] = f"class III group {y.name}: dead centre (its velocity equations are singular)"
+        elif side and sol.sign[i] != side:
+            # a branch never crosses a singular position, so its determinant keeps its sign: a flip
+            # means the branch ended (the group locked) since the last position and the assembly found
+            # is another one — not where the mechanism can be driven to
+            sol.valid[i] = False
+            sol.reason[i] = (f"class III group {y.name}: its branch ends before this position (the group locks "
+                             "between the last position and this one)")
+        elif ok:
+            side = sol.sign[i]
     return sol
 
 
 def _rates(y: Triad, sol: TriadSolution, i: int, zo: np.ndarray, vo: np.ndarray, ao: np.ndarray) -> bool:
-    """ω and α of links 2, 3, 4, 5 from the differentiated loops; False at a singular position."""
+    """ω and α of the legs and the ternary link from the differentiated loops; False at a singular
+    position. A slider leg's unknown is its pin's speed ṡ (and s̈) along the guide instead of ω."""
     zc, zd, ze = sol.z[:, i]
-    zb, zf, zg = zo
-    r2, r4, r5 = zc - zb, zd - zf, ze - zg
+    r2, r4, r5 = zc - zo[0], zd - zo[1], ze - zo[2]
     rd, re = zd - zc, ze - zc  # the ternary link's sides CD, CE
-    # Loop k (k = F via D, G via E):  v_B + iω2·r2 + iω3·r_k − iωk·rk = v_k  (real and imaginary rows)
-    cols = [(1j * r2, 1j * r2), (1j * rd, 1j * re), (-1j * r4, 0j), (0j, -1j * r5)]
+    # A leg's column: iω·r (pivoted: v_X = v_O + iω·r) or ṡ·u (a slider: v_X = ṡ·u on the frame)
+    col = [_unit(y, k) if y.slides(k) else 1j * r for k, r in enumerate((r2, r4, r5))]
+    # Loop k (k = F via D, G via E):  v_B + col0·q0 + iω3·r_k − colk·qk = v_k  (real and imaginary rows)
+    cols = [(col[0], col[0]), (1j * rd, 1j * re), (-col[1], 0j), (0j, -col[2])]
     m = np.array([[c[0].real for c in cols], [c[0].imag for c in cols],
                   [c[1].real for c in cols], [c[1].imag for c in cols]])
-    scale = np.array([abs(r2), abs(rd), abs(r4), abs(r5)])
+    scale = np.array([abs(c) for c in (col[0], rd, col[1], col[2])])
+    theta = [y.guides[k].angle if y.guides[k] is not None else np.angle(r)  # type: ignore[union-attr]
+             for k, r in enumerate((r2, r4, r5))]
+    sol.theta[:, i] = [theta[0], np.angle(rd), theta[1], theta[2]]
+    sol.sign[i] = np.sign(np.linalg.det(m))
     if np.linalg.cond(m / scale) > 1.0 / TANGENT_REL:
-        sol.theta[:, i] = [np.angle(r2), np.angle(rd), np.angle(r4), np.angle(r5)]
         return False
     rhs_v = np.array([vo[1] - vo[0], vo[2] - vo[0]])
     w = np.linalg.solve(m, [rhs_v[0].real, rhs_v[0].imag, rhs_v[1].real, rhs_v[1].imag])
-    w2, w3, w4, w5 = w
-    # Twice: a_B + (iα2 − ω2²)·r2 + (iα3 − ω3²)·r_k − (iαk − ωk²)·rk = a_k
+    leg_of = (0, None, 1, 2)  # the solution's rows: leg 0, the ternary link, leg 1, leg 2
+    w2, w3, w4, w5 = (0.0 if k is not None and y.slides(k) else w[j] for j, k in enumerate(leg_of))
+    # Twice: a_B + (iα2 − ω2²)·r2 + (iα3 − ω3²)·r_k − (iαk − ωk²)·rk = a_k (a slider leg: s̈·u, no ω²)
     c1 = ao[1] - ao[0] + w2 * w2 * r2 + w3 * w3 * rd - w4 * w4 * r4
     c2 = ao[2] - ao[0] + w2 * w2 * r2 + w3 * w3 * re - w5 * w5 * r5
     al = np.linalg.solve(m, [c1.real, c1.imag, c2.real, c2.imag])
-    a2, a3, _, _ = al
-    sol.theta[:, i] = [np.angle(r2), np.angle(rd), np.angle(r4), np.angle(r5)]
-    sol.omega[:, i] = w
-    sol.alpha[:, i] = al
-    vc = vo[0] + 1j * w2 * r2
-    ac = ao[0] + (1j * a2 - w2 * w2) * r2
+    a2, a3 = al[0], al[1]
+    sol.omega[:, i] = [w2, w3, w4, w5]
+    sol.alpha[:, i] = [0.0 if k is not None and y.slides(k) else al[j] for j, k in enumerate(leg_of)]
+    vc = vo[0] + col[0] * w[0] if y.slides(0) else vo[0] + 1j * w2 * r2
+    ac = ao[0] + col[0] * a2 if y.slides(0) else ao[0] + (1j * a2 - w2 * w2) * r2
     sol.v[:, i] = [vc, vc + 1j * w3 * rd, vc + 1j * w3 * re]
     sol.a[:, i] = [ac, ac + (1j * a3 - w3 * w3) * rd, ac + (1j * a3 - w3 * w3) * re]
     return True

@@ -32,7 +32,9 @@ Class III group (:class:`Triad`)
 --------------------------------
 A ternary link carrying C, D, E, each joined by a binary link to a known point (B–C, F–D,
 G–E): four links, six revolutes. It is one more entry of ``Linkage.dyads`` (the groups in
-assembly order), solved as a whole — its position has no closed form.
+assembly order), solved as a whole — its position has no closed form. A leg may instead be a
+block on a frame guide (``Triad.guides``: the IC engine's piston when EG drives): its inner joint
+slides along the guide, and its ``outer`` entry repeats the inner joint (there is no outer pivot).
 """
 from __future__ import annotations
 
@@ -230,6 +232,10 @@ class Triad:
     the assembly (of up to six) and the ternary triangle's hand (E left or right of C→D).
     ``assur``: the two binary links whose lines meet at the special (Assur) point S of the
     ternary link, by index into ``outer`` (default the first two).
+    ``guides[k]``: a frame guide for a slider leg — link ``links[k]`` is a block pinned to the
+    ternary link at ``inner[k]`` and sliding on that guide; then ``outer[k] == inner[k]`` and
+    ``lengths[k] == 0``. Its "line" for the special point is the normal to the guide at the joint
+    (the pin's velocity and tangential acceleration are along the guide).
     """
 
     outer: tuple[str, str, str]
@@ -239,7 +245,17 @@ class Triad:
     ternary: tuple[float, float, float]
     start: tuple[tuple[float, float], tuple[float, float], tuple[float, float]]
     assur: tuple[int, int] = (0, 1)
+    guides: tuple[Guide | None, Guide | None, Guide | None] = (None, None, None)
     kind: Literal["RRR-III"] = "RRR-III"
+
+    def slides(self, k: int) -> bool:
+        """Whether leg k is a block on a frame guide (not a binary link to an outer pivot)."""
+        return self.guides[k] is not None
+
+    @property
+    def known_outer(self) -> tuple[str, ...]:
+        """The outer joints the group needs known: those of its pivoted legs."""
+        return tuple(o for k, o in enumerate(self.outer) if not self.slides(k))
 
     @property
     def hand(self) -> float:
@@ -250,7 +266,8 @@ class Triad:
     @property
     def name(self) -> str:
         """The group as the book names it by its joints, e.g. "B-C, F-D, G-E (CDE)"."""
-        return ", ".join(f"{o}-{i}" for o, i in zip(self.outer, self.inner)) + f" ({''.join(self.inner)})"
+        legs = (f"{i} on its guide" if self.slides(k) else f"{o}-{i}" for k, (o, i) in enumerate(zip(self.outer, self.inner)))
+        return ", ".join(legs) + f" ({''.join(self.inner)})"
 
 
 Dyad = Union[RRR, RRP, RPR, RPP, PRP, Triad]

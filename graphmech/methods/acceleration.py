@@ -305,20 +305,29 @@ def _lay_normal(b: "LinkageConstruction", start: str, link: str, X: str, Y: str,
 
 def _triad(b: "LinkageConstruction", y: Triad) -> None:
     # a_S = a_P + aⁿ_XP + aⁿ_SX + (⟂ PX) for both binary links whose lines meet at S (S on PX, so
-    # both tangential terms are ⟂ PX); then the third joint from S, the other two from it.
+    # both tangential terms are ⟂ PX); then the third joint from S, the other two from it. On a
+    # slider leg (S on the normal to the guide at its pin X): a_S = a_X (∥ guide) + aⁿ_SX + a^t_SX
+    # (∥ guide too), so the line is ∥ the guide through p′ + aⁿ_SX.
     from graphmech.methods.velocity import assur_point, mech_direction
 
     i, j = y.assur
     k = 3 - i - j
     t = y.links[3]
     S = assur_point(b, y)
-    normal = {n: _normal(b, y.links[n], y.inner[n], y.outer[n]) for n in range(3)}
-    tline = {n: _tangential_line(b, normal[n], y.inner[n], y.outer[n]) for n in range(3)}
+    normal = {n: POLE if y.slides(n) else _normal(b, y.links[n], y.inner[n], y.outer[n]) for n in range(3)}
+    tline = {n: _along_guide(b, y.inner[n], y.links[n], y.guides[n])[0] if y.slides(n)  # type: ignore[arg-type]
+             else _tangential_line(b, normal[n], y.inner[n], y.outer[n]) for n in range(3)}
     via: dict[int, str] = {}
     for n in (i, j):
         X = y.inner[n]
         ns = _lay_normal(b, normal[n], t, S, b.mech[X], f"σ{n + 1}'",
                          f"lay off ω{t}²·l_S{X}/μa ∥ S{X} (aⁿ of S about {X})", ("S", X))
+        g = y.guides[n]
+        if g is not None:
+            gx, gy = g.direction
+            via[n] = E.line(b, PANEL, f"∥guide{X}@S{n}", lambda ops, p, gx=gx, gy=gy: K.line_fixed(ops, p, gx, gy),
+                            (ns,), f"through it draw ∥ the guide of {X} (a^t_S{X} + a_{X})", say=("guide", X))
+            continue
         via[n] = E.line(b, PANEL, f"⟂{y.outer[n]}·{X}@S{n}", K.line_perpendicular_to,
                         (ns, E.direction(b, y.outer[n], X)), f"through it draw ⟂ {y.outer[n]}{X} (a^t_S{X} + a^t_{X}{y.outer[n]})",
                         say=("perp", y.outer[n], X, f"a^t_S{X}"))
@@ -330,12 +339,14 @@ def _triad(b: "LinkageConstruction", y: Triad) -> None:
     n3 = _lay_normal(b, s, t, b.mech[X3], S, f"n{t}'", f"lay off ω{t}²·l_{X3}S/μa ∥ {X3}S (aⁿ_{X3}S)", (X3, "S"))
     ls = E.line(b, PANEL, f"⟂S·{X3}@{n3}", K.line_perpendicular_to, (n3, mech_direction(b, S, b.mech[X3], f"S{X3}")),
                 f"through it draw ⟂ S{X3} (a^t_{X3}S)", say=("perp", "S", X3, f"a^t_{X3}S"))
+    third = f"∥ the guide of {X3} through p′" if y.slides(k) else f"⟂{P3}{X3} through {_lbl(b, normal[k])}"
     img3 = E.image(b, PANEL, b.acc, X3, label(X3), K.intersect_lines, (ls, tline[k]),
-                   f"{label(X3)} = (⟂S{X3}) ∩ (⟂{P3}{X3} through {_lbl(b, normal[k])})", say=("meet",))
+                   f"{label(X3)} = (⟂S{X3}) ∩ ({third})", say=("meet",))
     b.g.extend_line(ls, img3)
     b.g.extend_line(tline[k], img3)
     E.vector(b, PANEL, POLE, img3)
-    _close(b, y.links[k], X3, P3, normal[k], img3)
+    if not y.slides(k):
+        _close(b, y.links[k], X3, P3, normal[k], img3)
     # The other two joints by the acceleration image △s′x3′x′ ∼ △S X3 X; their tangential lines
     # ⟂ the binary links pass through them, and α of each link is read there.
     for n in (i, j):
@@ -345,7 +356,8 @@ def _triad(b: "LinkageConstruction", y: Triad) -> None:
                       say=("image", "S", X3, X))
         b.g.extend_line(tline[n], img)
         E.vector(b, PANEL, POLE, img)
-        _close(b, y.links[n], X, P, normal[n], img)
+        if not y.slides(n):
+            _close(b, y.links[n], X, P, normal[n], img)
         if n == i:  # α of the ternary link from a^t_{X X3} (one is enough)
             nt = _normal(b, t, X, X3)
             _close(b, t, X, X3, nt, img)

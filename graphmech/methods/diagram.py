@@ -221,15 +221,25 @@ NEWTON_STEPS = 60
 NEWTON_MAX_STEP = 0.5
 
 
-def triad_position(ops: Ops, b_: Components, f_: Components, g_: Components, *, lengths: tuple[float, float, float],
-                   ternary: tuple[float, float, float], hand: float, start: tuple[Components, Components, Components],
-                   name: str) -> Components:
+#: A slider leg's guide on the kinematic diagram: (a point of it, its unit direction), drawing mm.
+DrawnGuide = tuple[complex, complex]
+
+
+def triad_position(ops: Ops, b_: Components | None, f_: Components | None, g_: Components | None, *,
+                   lengths: tuple[float, float, float], ternary: tuple[float, float, float], hand: float,
+                   start: tuple[Components, Components, Components], name: str,
+                   guides: tuple[DrawnGuide | None, DrawnGuide | None, DrawnGuide | None] = (None, None, None)
+                   ) -> Components:
     """A class III group's joints (Cx, Cy, Dx, Dy, Ex, Ey) by Newton's method on its two loop equations.
 
-    Unknowns: θ2 (of BC) and θ3 (of CD); ``C = B + l2·e^{iθ2}``, ``D = C + l_CD·e^{iθ3}``, E = C +
-    l_CE·e^{i(θ3 ± γ)}; equations ``|D − F|² = l4²``, ``|E − G|² = l5²``. The start is the stated
-    figure's C, D (θ2 from B to the start's C). The condition number reported is that of the
-    Jacobian scaled by the lengths (σmax/σmin), infinite where the group locks.
+    Unknowns: q of the first leg — θ2 (``C = B + l2·e^{iθ2}``) or, on a slider leg, the pin's
+    place s on its guide (``C = Q + s·u``) — and θ3 (of CD); ``D = C + l_CD·e^{iθ3}``, E = C +
+    l_CE·e^{i(θ3 ± γ)}; equations ``|D − F|² = l4²``, ``|E − G|² = l5²`` — on a slider leg the
+    pin's distance from its guide, ``Im(ū·(X − Q)) = 0``. The start is the stated figure's C, D.
+    The condition number reported is that of the Jacobian scaled by the lengths (σmax/σmin),
+    infinite where the group locks. A slider leg's outer joint is None (its guide stands in).
+    At several positions (the batch path) each starts from the last that converged, the first from
+    the start: the group is followed along its branch over a cycle.
     """
     import numpy as np
 
@@ -237,42 +247,95 @@ def triad_position(ops: Ops, b_: Components, f_: Components, g_: Components, *, 
     a, bb, c = ternary
     cos_g = (a * a + c * c - bb * bb) / (2.0 * a * c)
     rot = complex(cos_g, hand * math.sqrt(max(0.0, 1.0 - cos_g * cos_g)))
-    zb = np.asarray(b_[0], dtype=float) + 1j * np.asarray(b_[1], dtype=float)
-    zf = np.asarray(f_[0], dtype=float) + 1j * np.asarray(f_[1], dtype=float)
-    zg = np.asarray(g_[0], dtype=float) + 1j * np.asarray(g_[1], dtype=float)
+    z = [None if p is None else np.asarray(p[0], dtype=float) + 1j * np.asarray(p[1], dtype=float) for p in (b_, f_, g_)]
+    like = next(x for x in z if x is not None).real
     c0, d0 = complex(*start[0]), complex(*start[1])
-    th2 = np.angle(c0 - zb) + 0.0 * zf.real
-    th3 = np.full_like(th2, np.angle(d0 - c0))
-    for _ in range(NEWTON_STEPS):
-        r2 = l2 * np.exp(1j * th2)
-        rd = a * np.exp(1j * th3)
-        re = c / a * rd * rot
-        df, eg = zb + r2 + rd - zf, zb + r2 + re - zg
-        g1 = (df * df.conjugate()).real - l4 * l4
-        g2 = (eg * eg.conjugate()).real - l5 * l5
-        # ∂|X − F|²/∂θ = 2 (X − F)·(i r): the dot product of plane vectors as Re(ū·w)
-        j11, j12 = 2 * (df.conjugate() * 1j * r2).real, 2 * (df.conjugate() * 1j * rd).real
-        j21, j22 = 2 * (eg.conjugate() * 1j * r2).real, 2 * (eg.conjugate() * 1j * re).real
-        det = j11 * j22 - j12 * j21
-        det = np.where(det == 0.0, 1e-300, det)
-        d2 = np.clip((j22 * g1 - j12 * g2) / det, -NEWTON_MAX_STEP, NEWTON_MAX_STEP)
-        d3 = np.clip((j11 * g2 - j21 * g1) / det, -NEWTON_MAX_STEP, NEWTON_MAX_STEP)
-        th2, th3 = th2 - d2, th3 - d3
-        if np.max(np.abs(d2) + np.abs(d3)) < 1e-15:
-            break
-    r2, rd = l2 * np.exp(1j * th2), a * np.exp(1j * th3)
+    g0 = guides[0]
+    zb = 0.0j if z[0] is None else z[0]  # B (a slider first leg has none: its guide's point stands in)
+    if g0 is None:
+        q = np.angle(c0 - zb) + 0.0 * like
+    else:
+        q = ((c0 - g0[0]) * g0[1].conjugate()).real + 0.0 * like
+    th3 = np.full_like(q, np.angle(d0 - c0))
+
+    def at(v: Any, sl: slice | None) -> Any:
+        """v at the positions ``sl`` (all of them: None)."""
+        return v if sl is None or np.ndim(v) == 0 else v[sl]
+
+    def joint_c(q: np.ndarray, sl: slice | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """C and ∂C/∂q."""
+        if g0 is None:
+            r2 = l2 * np.exp(1j * q)
+            return at(zb, sl) + r2, 1j * r2
+        return g0[0] + q * g0[1], g0[1] + 0.0 * q
+
+    def residual(k: int, x: np.ndarray, dx: tuple[np.ndarray, np.ndarray], length: float, sl: slice | None = None
+                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Leg k's equation at its joint x, its two derivatives, and the row's unit normal (X − O)/l or
+        i·u, by which the condition number's Jacobian is taken."""
+        g = guides[k]
+        zk = at(z[k], sl)
+        if g is None and zk is not None:
+            ox = x - zk
+            # ∂|X − F|²/∂θ = 2 (X − F)·(i r): the dot product of plane vectors as Re(ū·w)
+            return ((ox * ox.conjugate()).real - length * length, 2 * (ox.conjugate() * dx[0]).real,
+                    2 * (ox.conjugate() * dx[1]).real, ox / length)
+        assert g is not None
+        u = g[1]
+        return (((x - g[0]) * u.conjugate()).imag, (dx[0] * u.conjugate()).imag,
+                (dx[1] * u.conjugate()).imag, 1j * u + 0.0 * x)
+
+    def newton(q: np.ndarray, th3: np.ndarray, sl: slice | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Newton's iterations from (q, θ3) at the positions ``sl``; and whether each converged."""
+        for _ in range(NEWTON_STEPS):
+            zc, dc = joint_c(q, sl)
+            rd = a * np.exp(1j * th3)
+            re = c / a * rd * rot
+            g1, j11, j12, _ = residual(1, zc + rd, (dc, 1j * rd), l4, sl)
+            g2, j21, j22, _ = residual(2, zc + re, (dc, 1j * re), l5, sl)
+            det = j11 * j22 - j12 * j21
+            det = np.where(det == 0.0, 1e-300, det)
+            d2 = np.clip((j22 * g1 - j12 * g2) / det, -NEWTON_MAX_STEP, NEWTON_MAX_STEP)
+            d3 = np.clip((j11 * g2 - j21 * g1) / det, -NEWTON_MAX_STEP, NEWTON_MAX_STEP)
+            q, th3 = q - d2, th3 - d3
+            if np.max(np.abs(d2) + np.abs(d3)) < 1e-15:
+                break
+        return q, th3, np.abs(d2) + np.abs(d3) < 1e-9
+
+    if ops.batch and np.ndim(q) == 1 and np.size(q) > 1:
+        # Several positions (a cycle, in its order): each from the last one that converged, the first
+        # from the start — the group is followed along its branch (continuation), as the hand draws it
+        q, th3 = np.array(q, dtype=float), np.array(th3, dtype=float)
+        from_q, from_t = q[:1].copy(), th3[:1].copy()
+        for i in range(q.size):
+            qi, ti, ok = newton(from_q.copy(), from_t.copy(), slice(i, i + 1))
+            q[i], th3[i] = qi[0], ti[0]
+            if ok[0]:
+                from_q, from_t = qi, ti
+    else:
+        q, th3, _ = newton(q, th3)
+    zc, dc = joint_c(q)
+    rd = a * np.exp(1j * th3)
     re = c / a * rd * rot
-    zc = zb + r2
     zd, ze = zc + rd, zc + re
-    miss = np.maximum(np.abs(np.abs(zd - zf) - l4) / l4, np.abs(np.abs(ze - zg) - l5) / l5)
+    misses = []
+    for k, x, length in ((1, zd, l4), (2, ze, l5)):
+        g = guides[k]
+        misses.append(np.abs(np.abs(x - z[k]) - length) / length if g is None
+                      else np.abs(((x - g[0]) * g[1].conjugate()).imag) / a)
+    miss = np.maximum(misses[0], misses[1])
     bad = ops.guard(miss > 1e-9, lambda: f"{name}: Newton's method from the start found no assembly "
                     "(out of reach, or the start is too far from it)", assembly=True)
-    # The Jacobian scaled by rows (l4, l5) and by columns (l2; l_CD for the ternary link's angle,
-    # one scale per column, so that scaling keeps a singular matrix singular)
-    m11 = ((zd - zf).conjugate() * 1j * r2).real / (l4 * l2)
-    m12 = ((zd - zf).conjugate() * 1j * rd).real / (l4 * a)
-    m21 = ((ze - zg).conjugate() * 1j * r2).real / (l5 * l2)
-    m22 = ((ze - zg).conjugate() * 1j * re).real / (l5 * a)
+    # The Jacobian scaled by rows (l4, l5; 1 on a slider leg: its row is a unit normal's) and by
+    # columns (l2, or 1 for a pin's place on its guide; l_CD for the ternary link's angle, one scale
+    # per column, so that scaling keeps a singular matrix singular)
+    col2 = l2 if g0 is None else 1.0
+    _, _, _, n4 = residual(1, zd, (dc, 1j * rd), l4)
+    _, _, _, n5 = residual(2, ze, (dc, 1j * re), l5)
+    m11 = (n4.conjugate() * dc).real / col2
+    m12 = (n4.conjugate() * 1j * rd).real / a
+    m21 = (n5.conjugate() * dc).real / col2
+    m22 = (n5.conjugate() * 1j * re).real / a
     fro = m11 * m11 + m12 * m12 + m21 * m21 + m22 * m22
     mdet = np.abs(m11 * m22 - m12 * m21)
     cond = (fro + np.sqrt(np.maximum(fro * fro - 4.0 * mdet * mdet, 0.0))) / np.maximum(2.0 * mdet, 1e-300)
@@ -285,19 +348,29 @@ def triad_position(ops: Ops, b_: Components, f_: Components, g_: Components, *, 
 
 def _triad(b: "LinkageConstruction", y: Triad) -> None:
     mu = b.mu_l
-    (B, F, G), (C, D, E) = y.outer, y.inner
+    C, D, E = y.inner
     start = tuple(b.to_drawing(p) for p in y.start)
     lengths = (y.lengths[0] / mu, y.lengths[1] / mu, y.lengths[2] / mu)
     ternary = (y.ternary[0] / mu, y.ternary[1] / mu, y.ternary[2] / mu)
+    guides = tuple(None if g is None else (complex(*b.to_drawing(g.through)), complex(*g.direction)) for g in y.guides)
+    pivoted = [k for k in range(3) if not y.slides(k)]
+    for k, g in enumerate(y.guides):
+        if g is not None:  # a block on a frame guide: v of its pin is read along the guide, signed
+            b.slider_dir[y.inner[k]] = g.direction
+            b.translating.add(y.links[k])
 
-    def joints(ops: Ops, pb: Components, pf: Components, pg: Components) -> Components:
-        return triad_position(ops, pb, pf, pg, lengths=lengths, ternary=ternary, hand=y.hand,
-                              start=start, name=f"class III group {y.name}")  # type: ignore[arg-type]
+    def joints(ops: Ops, *given: Components) -> Components:
+        outer: list[Components | None] = [None, None, None]
+        for k, p in zip(pivoted, given):
+            outer[k] = p
+        return triad_position(ops, outer[0], outer[1], outer[2], lengths=lengths, ternary=ternary, hand=y.hand,
+                              start=start, guides=guides, name=f"class III group {y.name}")  # type: ignore[arg-type]
 
-    group = b.g.add(f"m:({C}{D}{E})", "scalar", joints, (b.mech[B], b.mech[F], b.mech[G]), role="hidden",
+    group = b.g.add(f"m:({C}{D}{E})", "scalar", joints, tuple(b.mech[y.outer[k]] for k in pivoted), role="hidden",
                     text=f"{C}, {D}, {E}: the class III group's loops solved by Newton's method from the start",
                     panel=PANEL, say=("triad", C, D, E))
     for k, (P, Q) in enumerate(zip(y.inner, y.outer)):
+        on = y.slides(k)
         b.mech[P] = b.g.add(P, "point", lambda ops, t, k=k: (t[2 * k], t[2 * k + 1]), (group,), role="given",
-                            text=f"{P} of the class III group (joined to {Q})", panel=PANEL, label=P,
-                            say=("triad_joint", P, Q))
+                            text=f"{P} of the class III group ({'sliding on its guide' if on else f'joined to {Q}'})",
+                            panel=PANEL, label=P, say=("triad_slider", P) if on else ("triad_joint", P, Q))

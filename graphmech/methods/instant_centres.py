@@ -40,6 +40,7 @@ from graphmech.mechanisms.linkage import (
     Linkage,
     LinkGuide,
     SliderInput,
+    Triad,
 )
 from graphmech.tolerances import COND_WARN, PARALLEL_SIN
 
@@ -227,6 +228,10 @@ def direct_centres(linkage: Linkage) -> list[Direct]:
                     slide(g.link, block, None, y.c, (g.through, g.towards))
                 else:
                     slide(frame, block, g.angle, y.c)
+        elif isinstance(y, Triad):  # a slider leg: its block slides on the frame guide at its pin
+            for block, on, pin in zip(y.links, y.guides, y.inner):
+                if on is not None:
+                    slide(frame, block, on.angle, pin)
     return out
 
 

@@ -218,21 +218,33 @@ def assur_name(y: Triad) -> str:
     return E.own("mechanism", f"S{''.join(y.inner)}")
 
 
+def leg_line(b: LinkageConstruction, y: Triad, n: int) -> str:
+    """Leg n's line on the kinematic diagram, on which Assur's point S may lie: its binary link
+    extended, or on a slider leg the normal to the guide at its pin (the pin moves along the guide,
+    so a point of the ternary link on that normal moves relative to the pin along the guide too)."""
+    P, X = y.outer[n], y.inner[n]
+    g = y.guides[n]
+    if g is None:
+        return b.g.add(f"m:{P}{X}-line", "line", K.line_parallel_to, (b.mech[P], E.direction(b, P, X)),
+                       role="construction", text=f"extend {P}{X}", panel="mechanism")
+    nx, ny = -g.direction[1], g.direction[0]
+    return b.g.add(f"m:{X}-normal", "line", lambda ops, t: K.line_fixed(ops, t, nx, ny), (b.mech[X],),
+                   role="construction", text=f"the normal to {X}'s guide at {X}", panel="mechanism")
+
+
 def assur_point(b: "LinkageConstruction", y: Triad) -> str:
     """The special (Assur) point S of a class III group on the kinematic diagram: where the lines
-    of two binary links meet (``y.assur``), a point of the ternary link. Made once, shared by
-    both polygons."""
+    of two binary links meet (``y.assur``; a slider leg's line is the normal to its guide), a
+    point of the ternary link. Made once, shared by both polygons."""
     i, j = y.assur
     (P, X), (Q, Z) = (y.outer[i], y.inner[i]), (y.outer[j], y.inner[j])
     name = assur_name(y)
     if b.g.has(name):
         return name
-    li = b.g.add(f"m:{P}{X}-line", "line", K.line_parallel_to, (b.mech[P], E.direction(b, P, X)),
-                 role="construction", text=f"extend {P}{X}", panel="mechanism")
-    lj = b.g.add(f"m:{Q}{Z}-line", "line", K.line_parallel_to, (b.mech[Q], E.direction(b, Q, Z)),
-                 role="construction", text=f"extend {Q}{Z}", panel="mechanism")
+    li, lj = leg_line(b, y, i), leg_line(b, y, j)
     s = b.g.add(name, "point", K.intersect_lines, (li, lj), role="construction",
-                text=f"S = {P}{X} ∩ {Q}{Z} (Assur's special point of the ternary link)", panel="mechanism",
+                text=f"S = {P}{X if P != X else '⊥'} ∩ {Q}{Z if Q != Z else '⊥'} (Assur's special point of the ternary link)",
+                panel="mechanism",
                 label="S", say=("assur", P, X, Q, Z))
     b.g.extend_line(li, b.mech[X], s)
     b.g.extend_line(lj, b.mech[Z], s)
@@ -248,6 +260,12 @@ def mech_direction(b: "LinkageConstruction", a: str, c: str, text: str) -> str:
     return name
 
 
+def _leg_words(b: LinkageConstruction, y: Triad, n: int) -> str:
+    """Leg n's line in the velocity polygon, in words: ⟂ its binary link, or ∥ its guide through p."""
+    P, X = y.outer[n], y.inner[n]
+    return f"∥ the guide of {X} through p" if y.slides(n) else f"⟂{P}{X} through {_img_label(b, P)}"
+
+
 def _triad(b: "LinkageConstruction", y: Triad) -> None:
     # Assur's special point S (on BC and FD, a point of the ternary link): v_S = v_B + (⟂BC) = v_F + (⟂FD)
     C, D, Ec = y.inner
@@ -257,22 +275,25 @@ def _triad(b: "LinkageConstruction", y: Triad) -> None:
     perp: dict[int, str] = {}
     for n in range(3):
         P, X = y.outer[n], y.inner[n]
+        g = y.guides[n]
+        if g is not None:  # a slider leg: v_X ∥ its guide, through p
+            perp[n] = _along_guide(b, X, g)
+            continue
         lp = _img_label(b, P)
         perp[n] = E.line(b, PANEL, f"⟂{P}·{X}@{lp}", K.line_perpendicular_to, (b.vel[P], E.direction(b, P, X)),
                          f"through {lp} draw ⟂ {P}{X}", say=("perp", P, X))
     tag = "s"
     s = b.g.add(E.own(PANEL, tag), "point", K.intersect_lines, (perp[i], perp[j]), role="construction",
-                text=f"s = (⟂{y.outer[i]}{y.inner[i]} through {_img_label(b, y.outer[i])}) ∩ "
-                     f"(⟂{y.outer[j]}{y.inner[j]} through {_img_label(b, y.outer[j])}) (S on both lines)",
+                text=f"s = ({_leg_words(b, y, i)}) ∩ ({_leg_words(b, y, j)}) (S on both lines)",
                 panel=PANEL, label=tag, say=("meet",))
     b.g.extend_line(perp[i], s)
     b.g.extend_line(perp[j], s)
     # The third joint X3 from S: v_X3 = v_S + (⟂ S X3) = v_outer + (⟂ outer X3)
-    P3, X3 = y.outer[k], y.inner[k]
+    X3 = y.inner[k]
     ls = E.line(b, PANEL, f"⟂S·{X3}@s", K.line_perpendicular_to, (s, mech_direction(b, S, b.mech[X3], f"S{X3}")),
                 f"through s draw ⟂ S{X3}", say=("perp", "S", X3))
     img3 = E.image(b, PANEL, b.vel, X3, label(X3), K.intersect_lines, (ls, perp[k]),
-                   f"{label(X3)} = (⟂S{X3} through s) ∩ (⟂{P3}{X3} through {_img_label(b, P3)})", say=("meet",))
+                   f"{label(X3)} = (⟂S{X3} through s) ∩ ({_leg_words(b, y, k)})", say=("meet",))
     b.g.extend_line(ls, s, img3)
     b.g.extend_line(perp[k], img3)
     # The other two joints by the velocity image of the ternary link: △s x3 x ∼ △S X3 X (they lie on
@@ -285,6 +306,9 @@ def _triad(b: "LinkageConstruction", y: Triad) -> None:
     for n in range(3):
         P, X = y.outer[n], y.inner[n]
         E.vector(b, PANEL, POLE, b.vel[X])
+        if y.slides(n):  # a block on a frame guide translates
+            measure.zero_rate(b, y.links[n])
+            continue
         E.vector(b, PANEL, b.vel[P], b.vel[X])
         measure.omega(b, y.links[n], P, X)
     for U, V in ((C, D), (D, Ec), (Ec, C)):  # the ternary link's velocity image

@@ -178,3 +178,35 @@ def test_newton_for_a_class_iii_group_batch_marks_the_positions_out_of_reach():
     one = ScalarOps()  # the scalar path raises, naming the step
     with pytest.raises(AssemblyError, match="found no assembly"):
         _group_kernel(one, (b[0][1], b[1][1]), FIGURE_START)
+
+
+def test_newton_over_several_positions_follows_the_branch_from_the_previous_one():
+    """Continuation: the crank from 135° back to 90° with the group started on its upper assembly.
+    Each position starts from the last, so the upper branch is kept all the way — Newton from the
+    start at every position would fall to the lower one at 90° (nearer the start there) — and the
+    exact elimination, taking the assembly nearest the previous one's, agrees to the last bits."""
+    from graphmech.exact.triad import assemblies, solve_triad
+    from graphmech.geometry.kernels import ArrayOps
+    from graphmech.mechanisms.linkage import Triad
+
+    b135 = 40.0 * complex(math.cos(math.radians(135)), math.sin(math.radians(135)))
+    y = Triad(("B", "F", "G"), ("C", "D", "E"), ("2", "4", "5", "3"), (75.0, 60.0, 85.0), (55.0, 65.0, 50.0),
+              FIGURE_START)
+    upper = max(assemblies(y, b135, complex(150, -20), complex(60, 150)), key=lambda t: t[0].imag)
+    start = tuple((z.real, z.imag) for z in upper)
+    phi = np.radians(np.arange(135.0, 89.0, -5.0))
+    zb = 40.0 * np.exp(1j * phi)
+    got = _group_kernel(ArrayOps(len(phi)), (zb.real, zb.imag), start)
+    c = got[0] + 1j * got[1]
+    assert np.abs(np.diff(c)).max() < 6.0  # mm: a continuous path, no jump to the other branch
+    assert c[-1].imag > 60.0  # at 90°: the upper assembly C ≈ (71.2, 63.6), not the lower (70.9, 15.4)
+    # the lower one is the nearer to the start there: from the start alone Newton would take it
+    at90 = assemblies(y, complex(zb[-1]), complex(150, -20), complex(60, 150))
+    nearest = min(at90, key=lambda t: sum(abs(t[k] - complex(*start[k])) ** 2 for k in range(3)))
+    assert nearest[0].imag < 20.0
+    line = np.full(len(phi), 1.0 + 0j)
+    known = {"B": (zb, 0 * line, 0 * line), "F": (complex(150, -20) * line, 0 * line, 0 * line),
+             "G": (complex(60, 150) * line, 0 * line, 0 * line)}
+    sol = solve_triad(Triad(y.outer, y.inner, y.links, y.lengths, y.ternary, start), known)
+    for k in range(3):
+        assert np.abs(sol.z[k] - (got[2 * k] + 1j * got[2 * k + 1])).max() < 1e-10

@@ -359,6 +359,11 @@ def parse_forces_scene(data: Mapping[str, Any], source: str, top: Reader, order:
                     "(find still takes P13, omega_3_ic … here)")
     scales = read_scales(top)
     linkage, positions, _ = read_linkage(top, triads=True)
+    triads = [y for y in (linkage.dyads if linkage is not None else ()) if isinstance(y, Triad)]
+    for j, y in enumerate(triads):  # a block's reaction on its guide has no point of action known
+        if any(g is not None for g in y.guides):
+            top.problem(f"triad[{j}].slider_guide", "the force analysis takes a class III group of binary links, not "
+                                                  "yet one with a slider leg: draw its polygons in a scene without [forces]")
     fr = top.table_at("forces")
     forces = None if fr is None else _read_forces(fr, linkage)
     measured = read_measured(top, positions.labels if positions else None)

@@ -292,6 +292,13 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
             hinges.append(y.c)
         elif isinstance(y, Triad):
             for n in range(3):
+                on = y.guides[n]
+                if on is not None:  # a block on a frame guide (the piston)
+                    if not other:
+                        guide(k, on, y.inner[n])
+                    slider(y.inner[n], on.angle)
+                    number(y.links[n], pos[y.inner[n]], on.direction)
+                    continue
                 link(y.outer[n], y.inner[n], y.links[n])
             for m0, m1 in ((0, 1), (1, 2), (2, 0)):
                 link(y.inner[m0], y.inner[m1], y.links[3])

@@ -401,7 +401,7 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
 _TRIAD_TYPES = ("RRR-III",)
 
 
-def _read_triad(r: Reader, index: int) -> _Part:
+def _read_triad(r: Reader, index: int, frame: _Frame) -> _Part:
     """One [[triad]]: a class III group — three binary links from known points to a ternary link."""
     where = f"triad[{index}]"
     part = _Part(where)
@@ -411,35 +411,56 @@ def _read_triad(r: Reader, index: int) -> _Part:
     outer = r.name_list("outer", 3, r.point_name)
     inner = r.name_list("inner", 3, r.point_name)
     links = r.name_list("links", 4, r.link_id)
+    # A slider leg (a block on a frame guide, the IC engine's piston): its outer entry repeats its
+    # inner joint, and slider_guide is that guide
+    sliding = [k for k in range(3) if outer[k][0] is not None and outer[k][0] == inner[k][0]]
+    guide = _read_guide(r, "slider_guide", frame) if r.present("slider_guide") is not None else None
+    if sliding and r.present("slider_guide") is None:
+        r.problem(r.at("slider_guide"), f"missing: outer repeats {outer[sliding[0]][0]}, a block on a frame guide "
+                  "— give slider_guide = {through = [x, y], angle = a}")
+    elif len(sliding) > 1:
+        r.problem(outer[sliding[1]][1], "one slider leg at most (outer repeats its inner joint once)")
+    elif not sliding and r.present("slider_guide") is not None:
+        r.problem(r.at("slider_guide"), "no slider leg: repeat that leg's inner joint in outer to slide it on this guide")
     part.links = [(x, p) for x, p in links if x is not None]
-    part.needs = [(n, p) for n, p in outer if n is not None]
+    part.needs = [(n, p) for k, (n, p) in enumerate(outer) if n is not None and k not in sliding]
     part.defines = [(n, p) for n, p in inner if n is not None]
     seen: dict[str, str] = {}
     for x, path in links:
         if x is not None and x in seen:
             r.problem(path, f"a class III group's four links must differ ({x} twice)")
         seen.setdefault(x or "", path)
-    names = [x for x, _ in outer + inner]
+    names = [x for k, (x, _) in enumerate(outer) if k not in sliding] + [x for x, _ in inner]
+    paths = [p for k, (_, p) in enumerate(outer) if k not in sliding] + [p for _, p in inner]
     for k, x in enumerate(names):
         if x is not None and x in names[:k]:
-            r.problem((outer + inner)[k][1], f"the group's six joints must differ ({x} twice)")
+            r.problem(paths[k], f"the group's {'' if sliding else 'six '}joints must differ ({x} twice)")
+    slider_link = links[sliding[0]][0] if sliding else None
+    if slider_link is not None:
+        part.translating.append(slider_link)
     for k in range(3):
         lk = links[k][0]
         if lk is not None:
-            part.carries.append((lk, [x for x in (outer[k][0], inner[k][0]) if x]))
+            part.carries.append((lk, [x for x in (None if k in sliding else outer[k][0], inner[k][0]) if x]))
     ternary_link = links[3][0]
     if ternary_link is not None:
         part.carries.append((ternary_link, [x for x, _ in inner if x]))
 
-    def lengths(key: str, shape: str) -> tuple[float, float, float] | None:
+    def lengths(key: str, shape: str, free: list[int]) -> tuple[float, float, float] | None:
+        """Three lengths > 0; a slider leg's (``free``) must be 0: its block has no outer pivot."""
         given = r.quantity(key, "length")
         if given is None:
             return None
-        raw = r.numbers(given.value, r.at(given.key), 3, positive=True, shape=shape)
+        raw = r.numbers(given.value, r.at(given.key), 3, positive=not free, shape=shape)
+        for k in range(3) if raw is not None and free else ():
+            if (raw[k] != 0.0) if k in free else not raw[k] > 0.0:  # type: ignore[index]
+                r.problem(f"{r.at(given.key)}[{k}]", "must be 0 for the slider leg" if k in free else "must be > 0")
+                raw = None
+                break
         return None if raw is None else (given.si(raw[0]), given.si(raw[1]), given.si(raw[2]))
 
-    binary = lengths("lengths", "[l_BC, l_FD, l_GE]")
-    sides = lengths("ternary", "[l_CD, l_DE, l_EC]")
+    binary = lengths("lengths", "[l_BC, l_FD, l_GE]", sliding)
+    sides = lengths("ternary", "[l_CD, l_DE, l_EC]", [])
     if sides is not None:
         a, b, c = sides
         if not (a < b + c and b < a + c and c < a + b):
@@ -482,8 +503,10 @@ def _read_triad(r: Reader, index: int) -> _Part:
     ln = [x for x, _ in links if x is not None]
     if (len(o) == 3 and len(i_) == 3 and len(ln) == 4 and binary is not None and sides is not None
             and start is not None and len(seen) == 4):
-        part.model = Triad((o[0], o[1], o[2]), (i_[0], i_[1], i_[2]), (ln[0], ln[1], ln[2], ln[3]), binary, sides,
-                           start, assur)
+        guides = tuple(guide if k in sliding else None for k in range(3))
+        if not sliding or guide is not None:
+            part.model = Triad((o[0], o[1], o[2]), (i_[0], i_[1], i_[2]), (ln[0], ln[1], ln[2], ln[3]), binary, sides,
+                               start, assur, (guides[0], guides[1], guides[2]))
     return part
 
 
@@ -557,9 +580,9 @@ def _read_point(r: Reader, index: int) -> _Part:
     return part
 
 
-#: Why a [[triad]] is refused where it is (a flywheel's machine; the full cycle).
-TRIAD_NOT_YET = ("a class III group is solved in linkage scenes (polygons, instant centres) and force scenes only "
-                 "so far: not in a full cycle or a flywheel's machine yet")
+#: Why a [[triad]] is refused where it is (a flywheel's machine; the extreme positions and γ).
+TRIAD_NOT_YET = ("a class III group is solved in linkage scenes (polygons, instant centres, the full cycle) and force "
+                 "scenes only so far: not in [characteristics] or a flywheel's machine yet")
 
 
 def read_linkage(
@@ -579,7 +602,7 @@ def read_linkage(
     )
     driver, positions = _read_driver(top, frame, crank_only)
     dyads = [_read_dyad(r, k, frame) for k, r in enumerate(top.tables_at("dyad"))]
-    triad_parts = [_read_triad(r, k) for k, r in enumerate(top.tables_at("triad"))]
+    triad_parts = [_read_triad(r, k, frame) for k, r in enumerate(top.tables_at("triad"))]
     if not triads and "triad" in data:
         top.problem("triad", TRIAD_NOT_YET)
     points = [_read_point(r, k) for k, r in enumerate(top.tables_at("point"))]
@@ -736,7 +759,7 @@ def _check_structure(
 
 def _triad_refusals(top: Reader, data: Mapping[str, Any]) -> None:
     """What a scene with a class III group may not ask for yet: one line each."""
-    for key in ("cycle", "characteristics"):
+    for key in ("characteristics",):
         if key in data:
             top.problem(key, TRIAD_NOT_YET)
 

@@ -80,6 +80,8 @@ PHRASES: Phrases = {
               "группа III класса {group}: {C}, {D}, {E}, при которых все три поводка сходятся с базисным звеном "
               "(уравнения замкнутости решены методом Ньютона от заданного начального положения; вручную — подбором)"),
     "triad_joint": ("mark {P}: {QP} = {r} mm", "定出{P}：{QP} = {r} mm", "отмечаем {P}: {QP} = {r} mm"),
+    "triad_slider": ("mark {P} on its guide", "定出{P}（在其导路上）", "отмечаем {P} на её направляющей"),
+    "normal_at": ("the normal to {X}'s guide at {X}", "过{X}作其导路的垂线", "нормаль к направляющей в точке {X}"),
     "assur": ("extend {PX} and {QZ}: they meet at S, Assur's special point of the ternary link",
               "延长{PX}与{QZ}交于S，即三副杆上的阿苏尔特殊点",
               "продолжаем {PX} и {QZ} до пересечения в точке S — особой точке Ассура базисного звена"),
@@ -380,9 +382,12 @@ class _Words:
         if key == "triad_joint":
             P, Q = args
             return self.say("triad_joint", P=letter(P), QP=letter(Q) + letter(P), r=num(self.mm(self.b.mech[Q], s.name)))
-        if key == "assur":
+        if key == "triad_slider":
+            return self.say("triad_slider", P=letter(args[0]))
+        if key == "assur":  # a slider leg's line (its outer joint is its pin) is the normal to its guide
             P, X, Q, Z = args
-            return self.say("assur", PX=letter(P) + letter(X), QZ=letter(Q) + letter(Z))
+            return self.say("assur", PX=self.say("normal_at", X=letter(X)) if P == X else letter(P) + letter(X),
+                            QZ=self.say("normal_at", X=letter(Z)) if Q == Z else letter(Q) + letter(Z))
         # on_link: a point fixed on a link
         D, link, U, *V = args
         pt = self.part(D)

@@ -393,3 +393,74 @@ def test_a_class_iii_group_in_another_assembly_than_the_exact_one_is_not_compare
     an = analyse(parse_scene(tomllib.loads(text.replace("angle = 60", "angle = [55, 60]")), "six.toml"))
     assert an.rows == []
     assert sum("another assembly" in w and "not checked" in w for w in an.warnings) == 2
+
+
+# ------------------------------------------------- a class III group with a slider leg (IC engine)
+
+def test_ic_engine_from_eg_every_value_by_assurs_point_agrees_with_the_exact(tmp_path):
+    # the piston's leg: S on AB and on the normal to C's guide; at three angles of GE
+    text = (SCENES / "kin.ic_engine_EG.toml").read_text(encoding="utf-8")
+    doc = check_json(write_scene(tmp_path, text.replace("angle = 116\n", "angle = [112, 116, 124]\n")))
+    rows = doc["quantities"]
+    assert len(rows) == 14 * 3
+    assert max(r["rel_error"] for r in rows) < 1e-9
+    assert not any(r["ill_conditioned"] for r in rows)
+    got = {r["name"]: r for r in rows}
+    # the figure's assembly: ω2 = 11.2483 rad/s at 116° (tests/exact: the AB-driven engine's, scaled)
+    assert got["omega_2@116"]["exact"] == pytest.approx(11.2483096, abs=1e-7)
+    assert got["v_C@116"]["exact"] == pytest.approx(-0.409328282, abs=1e-9)  # the piston moves down
+    assert got["omega_3@112"]["exact"] != pytest.approx(got["omega_3@124"]["exact"], abs=1e-3)
+
+
+def test_ic_engine_from_eg_the_velocity_image_of_s_is_the_pole():
+    """Both legs of S stand on the frame (A, and C's guide): v_S = 0 — S is the ternary link's instant
+    centre P13, and the instant-centre scene finds it there."""
+    from graphmech.problems.linkage.check import analyse as run
+
+    doc = check_json(SCENES / "ic.ic_engine_EG.toml")
+    rows = {r["name"]: r for r in doc["quantities"]}
+    assert max(r["rel_error"] for r in rows.values()) < 1e-9
+    kin = run(parse_scene(tomllib.loads((SCENES / "kin.ic_engine_EG.toml").read_text(encoding="utf-8")),
+                          "eg.toml")).exact
+    b, c = kin.point["B"][0], kin.point["C"][0]
+    p13 = np.array([rows["x_P13"]["exact"], rows["y_P13"]["exact"]])
+    assert p13[1] == pytest.approx(c[1], abs=1e-12)  # on the normal to the guide (horizontal) through C
+    assert abs(b[0] * p13[1] - b[1] * p13[0]) < 1e-12  # on AB (A at the origin)
+    assert rows["omega_3_ic"]["exact"] == pytest.approx(-2.78896857, abs=1e-7)
+
+
+def test_the_same_engine_from_ab_is_three_dyads_and_agrees_with_the_exact():
+    doc = check_json(SCENES / "kin.ic_engine_AB.toml")
+    assert max(r["rel_error"] for r in doc["quantities"]) < 1e-9
+    assert values(doc)["omega_6"]["exact"] == pytest.approx(2.30417008, abs=1e-7)
+
+
+def test_a_class_iii_group_through_a_whole_turn_keeps_its_branch(tmp_path):
+    """The cycle scene: 12 positions, Newton from the previous one (continuation) and the exact's
+    assembly nearest the previous agree to 1e-9 at every position, and the branch is the figure's
+    all round (C moves by less than 12 mm between positions; the other assembly is always far)."""
+    from graphmech.exact import solve
+    from graphmech.exact.triad import assemblies
+    from graphmech.scene import load_scene
+
+    text = (SCENES / "linkage.class_iii_sixbar-cycle.toml").read_text(encoding="utf-8")
+    old = 'find = ["psi_3@7", "omega_3@3", "alpha_3@5", "omega_3_diagram@4.5", "alpha_3_diagram@9"]'
+    assert old in text
+    doc = check_json(write_scene(tmp_path, text.replace(old, 'find = ["omega_3", "alpha_3", "omega_4", "alpha_5"]')))
+    rows = doc["quantities"]
+    assert len(rows) == 4 * 12
+    assert max(r["rel_error"] for r in rows) < 1e-9
+    assert {r["name"]: r["exact"] for r in rows}["omega_3@3"] == pytest.approx(1.39305419, abs=1e-7)
+    linkage = load_scene(SCENES / "linkage.class_iii_sixbar-cycle.toml").linkage
+    kin = solve(linkage, np.radians(60.0 + 30.0 * np.arange(12)))
+    assert kin.valid.all()
+    c = kin.point["C"][:, 0] + 1j * kin.point["C"][:, 1]
+    assert np.abs(np.diff(np.append(c, c[0]))).max() < 0.012  # m: 12 positions of a 15 mm crank
+    y = linkage.dyads[0]
+    zb = kin.point["B"][:, 0] + 1j * kin.point["B"][:, 1]
+    f, g = complex(0.150, -0.020), complex(0.060, 0.150)
+    for i in range(12):
+        found = assemblies(y, complex(zb[i]), f, g)
+        assert len(found) == 2
+        assert min(abs(t[0] - c[i]) for t in found) < 1e-12
+        assert max(abs(t[0] - c[i]) for t in found) > 0.02

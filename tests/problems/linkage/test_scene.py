@@ -552,13 +552,53 @@ def test_a_wrong_triad_is_refused_in_one_line(old: str, new: str, where: str, wo
     assert any(path == where and words in reason for path, reason in err.problems), err.problems
 
 
+IC_ENGINE_EG = (SCENES / "kin.ic_engine_EG.toml").read_text(encoding="utf-8")
+
+
+def test_a_slider_leg_is_read_from_its_repeated_joint_and_its_guide() -> None:
+    s = load_scene(SCENES / "kin.ic_engine_EG.toml")
+    group = next(d for d in s.linkage.dyads if isinstance(d, Triad))
+    assert group.outer == ("A", "C", "E") and group.inner == ("B", "C", "D")
+    assert group.guides[0] is None and group.guides[2] is None
+    assert group.guides[1] == Guide((0.0, 0.0), pytest.approx(math.pi / 2))
+    assert group.lengths == pytest.approx((0.036, 0.0, 0.073)) and group.known_outer == ("A", "E")
+    assert s.linkage.links()["4"] == ["C"] and s.linkage.links()["3"] == ["B", "C", "D"]
+    assert group.name == "A-B, C on its guide, E-D (BCD)"
+
+
+@pytest.mark.parametrize("old, new, where, words", [
+    ("slider_guide = { through = [0, 0], angle = 90 }\n", "", "triad[0].slider_guide", "missing: outer repeats C"),
+    ('outer = ["A", "C", "E"]', 'outer = ["A", "F", "E"]', "triad[0].slider_guide", "no slider leg"),
+    ("lengths = [36, 0, 73]", "lengths = [36, 5, 73]", "triad[0].lengths[1]", "must be 0 for the slider leg"),
+    ("lengths = [36, 0, 73]", "lengths = [0, 0, 73]", "triad[0].lengths[0]", "must be > 0"),
+    ('outer = ["A", "C", "E"]', 'outer = ["B", "C", "D"]', "triad[0].outer[1]", "one slider leg at most"),
+    ("slider_guide = { through = [0, 0], angle = 90 }", 'slider_guide = { through = "K", angle = 90 }',
+     "triad[0].slider_guide.through", "is not a frame point"),
+])
+def test_a_wrong_slider_leg_is_refused_in_one_line(old: str, new: str, where: str, words: str) -> None:
+    assert old in IC_ENGINE_EG
+    err = refusal(IC_ENGINE_EG.replace(old, new), "eg.toml")
+    assert "\n" not in str(err)
+    assert any(path == where and words in reason for path, reason in err.problems), err.problems
+
+
+def test_a_slider_leg_is_refused_in_a_force_scene() -> None:
+    text = IC_ENGINE_EG.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = ["forces"]')
+    text = text.replace("v_m_s_per_mm = 0.003\na_m_s2_per_mm = 0.06\n", "")
+    text = text[:text.index("find =")] + 'find = ["M_b"]\n' + text[text.index("[scales]"):]
+    text += '\n[forces]\nmu_F_N_per_mm = 2\n\n[[forces.moment]]\nname = "M_r"\nlink = "2"\nmoment_Nm = -10\n'
+    err = refusal(text, "eg.toml")
+    assert any(path == "triad[0].slider_guide" and "not yet one with a slider leg" in reason
+               for path, reason in err.problems), err.problems
+
+
 @pytest.mark.parametrize("extra, where", [
-    ("\n[cycle]\npositions = 12\n", "cycle"),
     ("\n[characteristics]\n", "characteristics"),
 ])
 def test_what_a_class_iii_group_cannot_do_yet_is_refused(extra: str, where: str) -> None:
     text = SIXBAR_III.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = []') + extra
     err = refusal(text, "six.toml")
     assert "\n" not in str(err)
-    assert any(path == where and "class III group is solved in linkage scenes (polygons, instant centres) and force scenes only" in reason
+    assert any(path == where and "class III group is solved in linkage scenes (polygons, instant centres, the full "
+               "cycle) and force scenes only" in reason
                for path, reason in err.problems), err.problems
