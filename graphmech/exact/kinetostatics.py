@@ -287,6 +287,9 @@ def _guide_tangent(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str
             angle = next(y.guide.angle for y in linkage.dyads
                          if isinstance(y, (RRP, RPP)) and isinstance(y.guide, Guide) and y.links[1] == b)
         return np.tile([math.cos(angle), math.sin(angle)], (n, 1))
+    if any(isinstance(y, RPR) and y.offset != 0.0 and y.bar_link == a and y.block_pivot == p for y in linkage.dyads):
+        # an offset guide bar's line misses its pivot: its direction is the bar's angle, not pivot → block
+        return np.stack([np.cos(kin.angle[a]), np.sin(kin.angle[a])], axis=1)
     d = kin.point[p] - kin.point[guide]
     length = np.hypot(d[:, 0], d[:, 1])
     return cast(np.ndarray, d / np.where(length > 0, length, 1.0)[:, None])

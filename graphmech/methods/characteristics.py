@@ -78,6 +78,9 @@ def basic_loop(linkage: Linkage) -> Loop:
         names.update(C=y.c)
         return Loop("slider_crank", names, (d.link, *y.links), d.length, y.length, 0.0, sense)
     if isinstance(y, RPR) and y.bar == "second" and y.p == d.tip and y.q in linkage.frame_points:
+        if y.offset != 0.0:
+            raise NotApplicable("the characteristics of an offset guide bar (offset ≠ 0) are not drawn yet: "
+                                "its extremes are where the bar's line is tangent to the crank circle")
         names.update(C=y.q)
         return Loop("guide_bar", names, (d.link, y.links[0], y.links[1]), d.length, 0.0, 0.0, sense)
     raise NotApplicable("the first dyad does not close a four-bar (RRR to a frame point), a slider-crank (RRP on the "

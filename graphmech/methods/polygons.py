@@ -72,6 +72,8 @@ def add_point_quantities(b: LinkageConstruction) -> None:
         measure.point_speed(b, name)
     for name in b.acc:
         measure.point_acceleration(b, name)
+    along = {lk: (b.mech[diagram.tangent_name(y)], b.mech[y.block_pivot]) for y in b.linkage.dyads
+             if isinstance(y, RPR) and y.offset != 0.0 for lk in (y.bar_link, y.block_link)}  # θ of û, not of OX
     for link, pts in b.link_points.items():
         for i, x in enumerate(pts):
             for y in pts:
@@ -79,7 +81,7 @@ def add_point_quantities(b: LinkageConstruction) -> None:
                     continue
                 measure.relative(b, x, y)
                 measure.length(b, x, y)
-        measure.link_angle(b, link)
+        measure.link_angle(b, link, along.get(link))
     for x, y in b.coincident:
         measure.relative(b, x, y)
     for name, q in list(b.quantities.items()):  # many books write ε for angular acceleration

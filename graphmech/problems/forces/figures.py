@@ -305,7 +305,9 @@ def free_body_items(build: LinkageConstruction, kin: PolygonKinematics, group: G
             items.append(Slider(to_mm(complex(kin.point[y.c][i])), y.guide.angle))
         elif isinstance(y, RPR) and y.block_link in group.links:
             x, p = complex(kin.point[y.block_pivot][i]), complex(kin.point[y.bar_pivot][i])
-            items.append(Slider(to_mm(x), math.atan2((x - p).imag, (x - p).real)))
+            # along the bar's line: an offset bar's is turned from PX by atan2(e, t)
+            tilt = math.atan2(y.offset, math.sqrt(max(abs(x - p) ** 2 - y.offset ** 2, 0.0))) if y.offset else 0.0
+            items.append(Slider(to_mm(x), math.atan2((x - p).imag, (x - p).real) - tilt))
         elif isinstance(y, RPP) and y.links[0] in group.links:
             c, p = complex(kin.point[y.c][i]), complex(kin.point[y.p][i])
             items.append(Segment(to_mm(c), to_mm(p), "given"))  # the slot
