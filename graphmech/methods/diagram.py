@@ -16,7 +16,7 @@ from graphmech.methods.linkage_construction import own
 if TYPE_CHECKING:
     from graphmech.geometry.kernels import Components, Ops
     from graphmech.methods.linkage_construction import LinkageConstruction
-    from graphmech.mechanisms.linkage import Part
+    from graphmech.mechanisms.linkage import Linkage, Part
 
 PANEL = "mechanism"
 
@@ -139,6 +139,13 @@ def tangent_name(y: RPR) -> str:
     """The step (and ``b.mech`` key) of an offset guide bar's foot F: where its line touches the
     circle of radius |e| about its pivot (no point name is one)."""
     return own(PANEL, f"F{y.bar_pivot}{y.block_pivot}")
+
+
+def offset_bar_lines(linkage: Linkage) -> dict[str, tuple[str, str]]:
+    """Link → the two ``b.mech`` keys along its own line, F → X, for each offset guide bar and its
+    block: their angle is that line's, not the direction of their first two points."""
+    return {lk: (tangent_name(y), y.block_pivot) for y in linkage.dyads
+            if isinstance(y, RPR) and y.offset != 0.0 for lk in (y.bar_link, y.block_link)}
 
 
 def bar_direction(b: LinkageConstruction, y: RPR) -> str:

@@ -72,8 +72,7 @@ def add_point_quantities(b: LinkageConstruction) -> None:
         measure.point_speed(b, name)
     for name in b.acc:
         measure.point_acceleration(b, name)
-    along = {lk: (b.mech[diagram.tangent_name(y)], b.mech[y.block_pivot]) for y in b.linkage.dyads
-             if isinstance(y, RPR) and y.offset != 0.0 for lk in (y.bar_link, y.block_link)}  # θ of û, not of OX
+    along = {lk: (b.mech[u], b.mech[v]) for lk, (u, v) in diagram.offset_bar_lines(b.linkage).items()}  # θ of û
     for link, pts in b.link_points.items():
         for i, x in enumerate(pts):
             for y in pts:
