@@ -515,3 +515,29 @@ def test_an_offset_guide_bar_fails_inside_its_circle_and_is_dead_on_it() -> None
     dead = solve(offset_guide_bar(0.07), np.radians([90.0]))
     assert not dead.valid[0] and dead.assembled[0] and "dead centre" in dead.reason[0]
     assert dead.omega["3"][0] == 0.0 and np.isfinite(dead.angle["3"]).all()
+
+
+@pytest.mark.parametrize("e", [0.012, -0.012])
+def test_an_offset_bar_on_a_moving_pivot_matches_finite_differences(e: float) -> None:
+    """The oscillating block turned offset: bar 2 pivoted on the crank pin B, its line e left of B,
+    sliding through block 3 pivoted at C = (−0.1, 0); θ2 differenced, and C2 (the bar's point at C)
+    against the rigid motion of the bar about B."""
+    lk = Linkage({"A": (0.0, 0.0), "C": (-0.1, 0.0)}, Crank("1", "A", "B", 0.03, 10.0, 20.0),
+                 (RPR("B", "C", ("2", "3"), bar="first", offset=e),))
+    phi0 = np.radians([45.0, 160.0, 300.0])
+    h = 1e-5
+    kp, k0, km = (solve(lk, phi0 + 10.0 * t + 10.0 * t * t) for t in (h, 0.0, -h))
+    th = np.unwrap(np.stack([km.angle["2"], k0.angle["2"], kp.angle["2"]]), axis=0)
+    assert k0.omega["2"] == pytest.approx((th[2] - th[0]) / (2 * h), rel=1e-7)
+    assert k0.alpha["2"] == pytest.approx((th[2] - 2 * th[1] + th[0]) / h ** 2, rel=1e-4)
+    assert np.array_equal(k0.omega["3"], k0.omega["2"])
+    # C2 = B + (BC at t = 0) turned with the bar and carried with B
+    bc = k0.point["C"] - k0.point["B"]
+
+    def rigid(k: Kinematics, dth: np.ndarray) -> np.ndarray:
+        c, s = np.cos(dth), np.sin(dth)
+        return k.point["B"] + np.stack([c * bc[:, 0] - s * bc[:, 1], s * bc[:, 0] + c * bc[:, 1]], axis=1)
+    r = [rigid(k, t - th[1]) for k, t in zip((km, k0, kp), th)]
+    assert k0.vel["C2"] == pytest.approx((r[2] - r[0]) / (2 * h), rel=1e-6, abs=1e-8)
+    assert k0.acc["C2"] == pytest.approx((r[2] - 2 * r[1] + r[0]) / h ** 2, rel=1e-3, abs=1e-4)
+    assert np.array_equal(k0.vel["C3"], np.zeros((3, 2)))  # the block's point at C is the frame pivot's
