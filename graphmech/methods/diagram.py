@@ -152,7 +152,15 @@ def bar_direction(b: LinkageConstruction, y: RPR) -> str:
     """The direction of the bar's line: O→X through the bar's pivot O, F→X for an offset bar."""
     from graphmech.methods.elements import direction
 
-    return direction(b, tangent_name(y) if y.offset != 0.0 else y.bar_pivot, y.block_pivot)
+    if y.offset == 0.0:
+        return direction(b, y.bar_pivot, y.block_pivot)
+    a, c = b.mech[tangent_name(y)], b.mech[y.block_pivot]
+    name = f"dir:{a}->{c}"  # as elements.direction names it, with words for a failure (F on X: a dead centre)
+    if not b.g.has(name):
+        X, O = y.block_pivot, y.bar_pivot
+        b.g.add(name, "scalar", K.unit, (a, c), role="hidden", panel=PANEL,
+                text=f"the offset bar's line F{X} ({X} on the circle of radius |e| about {O}: a dead centre)")
+    return name
 
 
 def _rpr(b: "LinkageConstruction", y: RPR) -> None:

@@ -462,6 +462,13 @@ bar = "second"
     assert run_cli("check", str(p))[0] == 0
     p.write_text(text.replace("angle_deg = 30", "angle_deg = 270") + "offset_mm = 150\n", encoding="utf-8")
     assert_refused(run_cli("check", str(p)), "g.toml", "cannot be assembled", "|CB| = 0.1 m < the offset |e| = 0.15 m")
+    # e = |CB| = 100 mm at 270°: B on the circle of radius |e| about C, t = 0 — a dead centre, said so
+    p.write_text('find = ["omega_3"]\n' + text.replace("angle_deg = 30", "angle_deg = [270, 30]")
+                 + "offset_mm = 100\n", encoding="utf-8")
+    code, out, err = run_cli("check", str(p))
+    assert code == 0 and "omega_3@30" in out and "omega_3@270" not in out
+    assert "φ₁ = 270°: construction impossible — the offset bar's line FB (B on the circle of radius |e| about C: " \
+           "a dead centre)" in err
 
 
 # ---------------------------------------------------------------------------- class III groups
