@@ -39,6 +39,7 @@ __all__ = [
     "fourbar_class",
     "grashof_ranges",
     "guide_bar",
+    "offset_guide_bar",
     "slider_crank",
     "time_ratio",
     "timing",
@@ -323,9 +324,9 @@ def slider_crank(A: complex, G: complex, guide_angle: float, a: float, b: float,
     return ExactCharacteristics("slider_crank", "crank", start, end, theta, None, stroke, gamma_min, at)
 
 
-def guide_bar(A: complex, C: complex, a: float, sense: float = 1.0) -> ExactCharacteristics:
+def guide_bar(A: complex, C: complex, a: float, sense: float = 1.0, e: float = 0.0) -> ExactCharacteristics:
     """The characteristics of a swinging guide-bar (quick-return) mechanism, crank a about A,
-    bar pivoted at C.
+    bar pivoted at C; ``e``: an offset guide bar, its line at e to the left of C (:func:`offset_guide_bar`).
 
     Examples
     --------
@@ -333,6 +334,8 @@ def guide_bar(A: complex, C: complex, a: float, sense: float = 1.0) -> ExactChar
     >>> round(math.degrees(ch.theta), 9), round(math.degrees(ch.psi), 9), round(ch.K, 9)
     (60.0, 60.0, 2.0)
     """
+    if e != 0.0:
+        return offset_guide_bar(A, C, a, e, sense)
     d = abs(C - A)
     if a >= d * (1.0 - EQUAL_REL):
         raise NotApplicable(f"the bar turns fully (crank {a:.6g} ≥ frame {d:.6g}): a rotating guide bar "
@@ -345,3 +348,38 @@ def guide_bar(A: complex, C: complex, a: float, sense: float = 1.0) -> ExactChar
     start, end = (p1, p2) if delta >= math.pi else (p2, p1)
     psi = 2.0 * math.asin(a / d)
     return ExactCharacteristics("guide_bar", "crank", start, end, theta, psi, None, math.pi / 2.0, start)
+
+
+def offset_guide_bar(A: complex, C: complex, a: float, e: float, sense: float = 1.0) -> ExactCharacteristics:
+    """An offset guide bar: its line at e to the left of C (along its direction û towards the block).
+
+    At an extreme the line is tangent to the crank circle, with the block at the point of contact:
+    the line's normal n̂ = iû satisfies ``(A − C)·n̂ = e + σa`` (σ = ±1, B = A − σa·n̂), and the block
+    ahead of the foot, ``(A − C)·û > 0``, takes ``arg n̂ = arg(A − C) + arccos((e + σa)/|AC|)``. So
+    ψ = |arccos((e + a)/d) − arccos((e − a)/d)|, the crank at ``arg n̂ + π`` (σ = +1) and ``arg n̂``
+    (σ = −1). The block pushes ⟂ the line while the bar's point at B moves ⟂ CB: γ = arccos(|e|/|CB|),
+    smallest with the crank pointing at C, γ_min = arccos(|e|/(d − a)).
+
+    Examples
+    --------
+    >>> ch = offset_guide_bar(0j, -200j, 100, 0.0)
+    >>> round(math.degrees(ch.theta), 9), round(math.degrees(ch.psi), 9)
+    (60.0, 60.0)
+    >>> ch = offset_guide_bar(0j, -350j, 110, 40)
+    >>> round(math.degrees(ch.theta), 6), round(math.degrees(ch.psi), 6), round(math.degrees(ch.gamma_min), 6)
+    (36.913893, 36.913893, 80.405932)
+    """
+    d = abs(C - A)
+    if a + abs(e) >= d * (1.0 - EQUAL_REL):
+        raise NotApplicable(f"the crank pin reaches the circle of radius |e| about the bar's pivot (crank {a:.6g} + "
+                            f"|e| {abs(e):.6g} ≥ frame {d:.6g}): no extreme positions")
+    base = cmath.phase(A - C)
+    n_plus = base + math.acos((e + a) / d)
+    n_minus = base + math.acos((e - a) / d)
+    p1, p2 = _wrap(n_plus + math.pi), _wrap(n_minus)
+    delta = _wrap(sense * (p2 - p1))
+    theta = abs(delta - math.pi)
+    start, end = (p1, p2) if delta >= math.pi else (p2, p1)
+    psi = abs(math.acos((e + a) / d) - math.acos((e - a) / d))
+    gamma_min = math.acos(abs(e) / (d - a))
+    return ExactCharacteristics("guide_bar", "crank", start, end, theta, psi, None, gamma_min, _wrap(cmath.phase(C - A)))

@@ -309,6 +309,9 @@ def _guide_tangent(linkage: Linkage, kin: Kinematics, slide: tuple[str, str, str
     if guide == "link":
         g = cast(LinkGuide, _guide_of(linkage, b))
         d = kin.point[g.towards] - kin.point[g.through]
+    elif any(isinstance(y, RPR) and y.offset != 0.0 and y.bar_link == a and y.block_pivot == p for y in linkage.dyads):
+        # an offset guide bar's line misses its pivot: its direction is the bar's angle, not pivot → block
+        return np.stack([np.cos(kin.angle[a]), np.sin(kin.angle[a])], axis=1)
     else:
         d = kin.point[p] - kin.point[guide]
     length = np.hypot(d[:, 0], d[:, 1])

@@ -3,7 +3,8 @@
 This is the textbook's *analytical* method, kept apart from the graphical one so that it can check
 it: every dyad is a closed vector loop written with complex numbers (a plane vector ``x + iy``,
 a link of length ``l`` at angle ``θ`` is ``l·e^{iθ}``). Positions come in angle form (law of
-cosines and ``atan2`` for RRR, ``arcsin`` for RRP, ``atan2`` for RPR, a fixed-angle triangle for
+cosines and ``atan2`` for RRR, ``arcsin`` for RRP, ``atan2`` for RPR (less the tangent angle ``atan2(e, t)`` for an offset
+guide bar), a fixed-angle triangle for
 RPP, two lines' intersection for PRP); velocities and accelerations come from differentiating the loop once and twice, which gives
 two linear equations in the two unknown rates, solved by Cramer's rule written out.
 
@@ -77,7 +78,8 @@ class Kinematics:
     angle : dict of str to ndarray, shape (N,)
         Moving link id → angle of the link, rad in [0, 2π): the direction of its first two points
         in ``Linkage.links()`` order; the guide (or slot) angle for a translating link; the bar's
-        angle for an RPR block.
+        angle for an RPR block; an offset guide bar's (and its block's) angle is its line's direction
+        û, from the foot F of the perpendicular from its pivot towards the block.
     omega : dict of str to ndarray, shape (N,)
         Moving link id → angular velocity, rad/s, + CCW (0 for translating links).
     alpha : dict of str to ndarray, shape (N,)
@@ -279,6 +281,9 @@ def _rpr(st: _State, y: RPR) -> None:
     ``2·ṙ·ω·i·e^{iθ}``); the determinant is ``r``. The bar's point at X moves with
     ``v_B + ω·(i·r·e^{iθ})`` and ``a_B + (iα − ω²)·r·e^{iθ}``; the block's point at X is X itself.
     """
+    if y.offset != 0.0:
+        _rpr_offset(st, y)
+        return
     zb, vb, ab = st.pts[y.bar_pivot]
     zx, vx, ax = st.pts[y.block_pivot]
     rel = zx - zb
@@ -297,6 +302,45 @@ def _rpr(st: _State, y: RPR) -> None:
     _, al = _cramer(e, k2, ax - ab - 2.0 * rd * w * 1j * e + w * w * r * e, r)
     on_bar, on_block = y.coincident
     st.pts[on_bar] = (zx, vb + w * k2, ab + al * k2 - w * w * r * e)
+    st.pts[on_block] = st.pts[y.block_pivot]
+    st.rotating(y.bar_link, th, w, al)
+    st.rotating(y.block_link, th, w, al)
+
+
+def _rpr_offset(st: _State, y: RPR) -> None:
+    """An offset guide bar: its line at e to the left of its pivot O, loop ``O + (t + i·e)·e^{iθ} = X``.
+
+    Position: ``|X − O|² = t² + e²`` gives ``t = √(|OX|² − e²) > 0`` (X outside the circle of radius
+    |e| about O; the line is the tangent from X to it) and ``θ = arg(X − O) − atan2(e, t)``. Rates,
+    differentiating with ``e`` fixed on the bar and ``t`` sliding (the block turns with the bar):
+    ``ṫ·e^{iθ} + ω·(i·(t + i·e)·e^{iθ}) = v_X − v_O`` and
+    ``ẗ·e^{iθ} + α·(i·(t + i·e)·e^{iθ}) = a_X − a_O − 2·ṫ·ω·i·e^{iθ} + ω²·(t + i·e)·e^{iθ}``; the
+    determinant is ``t``, zero where X is on the circle (a dead centre). The bar's point at X moves
+    with ``v_O + iω·(X − O)`` and ``a_O + (iα − ω²)·(X − O)``.
+    """
+    zb, vb, ab = st.pts[y.bar_pivot]
+    zx, vx, ax = st.pts[y.block_pivot]
+    e_off = y.offset
+    rel = zx - zb
+    d = np.abs(rel)
+    disc = 1.0 - (e_off / d) ** 2  # t²/|OX|²: cos² of the angle between OX and the line
+    name = f"RPR {y.p}-{y.q}"
+    st.fail(disc < -TANGENT_REL, f"{name}: cannot be assembled (the block's pivot {y.block_pivot} is within "
+                                 f"the offset |e| of the bar's pivot {y.bar_pivot})")
+    dead = disc <= TANGENT_REL
+    st.fail(dead, f"{name}: dead centre ({y.block_pivot} on the circle of radius |e| about {y.bar_pivot}), "
+                  "rates unbounded", dead_centre=True)
+    t = d * np.sqrt(np.maximum(disc, 0.0))
+    w_line = t + 1j * e_off  # X − O in the bar's frame
+    u = rel / w_line  # e^{iθ}, straight from the loop (|t + i·e| ≥ |e| > 0)
+    u = u / np.abs(u)
+    th = np.angle(u)
+    k2 = 1j * w_line * u  # coefficient of ω (and α); that of ṫ (and ẗ) is e^{iθ}
+    det = np.where(dead, 1.0, t)
+    td, w = _cramer(u, k2, vx - vb, det)
+    _, al = _cramer(u, k2, ax - ab - 2.0 * td * w * 1j * u + w * w * w_line * u, det)
+    on_bar, on_block = y.coincident
+    st.pts[on_bar] = (zx, vb + 1j * w * rel, ab + (1j * al - w * w) * rel)
     st.pts[on_block] = st.pts[y.block_pivot]
     st.rotating(y.bar_link, th, w, al)
     st.rotating(y.block_link, th, w, al)

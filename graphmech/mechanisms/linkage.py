@@ -20,6 +20,8 @@ Dyads (Assur groups of class II)
          ``bar`` tells which of the two is the guide bar (its line passes through the
          other's pivot); the other is the block. The sliding point X is the block's pivot;
          the coincident points are X<bar> (unknown) and X<block>: v_X<bar> = v_X<block> + v_rel.
+         ``offset`` e ≠ 0: an offset guide bar, its line at e to the left of its own pivot O
+         (the foot F = O + e·n̂, n̂ the bar's direction û turned 90° CCW; X = F + t·û, t > 0).
 ``RPP``  P revolute on link i (a block); i slides in a straight slot of link j (slot angle
          fixed, j translates), j slides along a frame guide; C is j's point on the guide.
 ``PRP``  C revolute joining two blocks i and j; i slides on a guide of a known link, j on another
@@ -144,12 +146,14 @@ class RRP:
 
 @dataclass(frozen=True)
 class RPR:
-    """Guide-bar / rocking-block dyad: i pivoted at P, j pivoted at Q, sliding along PQ."""
+    """Guide-bar / rocking-block dyad: i pivoted at P, j pivoted at Q, sliding along PQ (along the
+    tangent from the block's pivot to the circle of radius |offset| about the bar's pivot)."""
 
     p: str
     q: str
     links: tuple[str, str]
     bar: Literal["first", "second"] = "first"
+    offset: float = 0.0  # m: e, the bar's line to the left (+) of its own pivot, along its direction
     kind: Literal["RPR"] = "RPR"
 
     @property

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import PRP, Crank, Guide, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput, Triad
 from graphmech.methods import elements as E
+from graphmech.methods.diagram import bar_direction
 from graphmech.methods import measure
 from graphmech.methods.linkage_construction import ACCELERATION_POLE
 from graphmech.methods.quantities import Quantity
@@ -184,10 +185,12 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     lt = _tangential_line(b, n, xbar, Bp)
 
     ktag, k = _coriolis(b, b.acc[X], bar, xbar, xblock)
-    lr = E.line(b, PANEL, f"∥{Bp}·{X}@{ktag}", K.line_parallel_to, (k, E.direction(b, Bp, X)), f"through {ktag} draw ∥ {Bp}{X} (a^r_{xbar}{xblock})",
-                  say=("par", Bp, X, f"a^r_{xbar}{xblock}"))
+    first = Bp if y.offset == 0.0 else "F"  # an offset bar slides along its line FX, not OX
+    along = first + X
+    lr = E.line(b, PANEL, f"∥{first}·{X}@{ktag}", K.line_parallel_to, (k, bar_direction(b, y)),
+                f"through {ktag} draw ∥ {along} (a^r_{xbar}{xblock})", say=("par", first, X, f"a^r_{xbar}{xblock}"))
     img = E.image(b, PANEL, b.acc, xbar, label(xbar), K.intersect_lines, (lt, lr),
-                 f"{label(xbar)} = (⟂{Bp}{X} through {_lbl(b, n)}) ∩ (∥{Bp}{X} through {ktag})", say=("meet",))
+                 f"{label(xbar)} = (⟂{Bp}{X} through {_lbl(b, n)}) ∩ (∥{along} through {ktag})", say=("meet",))
     b.g.extend_line(lt, img)
     b.g.extend_line(lr, img)
     E.vector(b, PANEL, POLE, img)

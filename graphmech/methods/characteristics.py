@@ -53,7 +53,7 @@ class Loop:
     names: dict[str, str] = field(hash=False)
     links: tuple[str, str, str]
     a: float  # crank
-    b: float  # coupler (four-bar, slider-crank) or 0
+    b: float  # coupler (four-bar, slider-crank), a guide bar's offset e (signed; 0: centred)
     c: float  # rocker (four-bar) or 0
     sense: float  # +1 CCW, −1 CW
 
@@ -79,7 +79,7 @@ def basic_loop(linkage: Linkage) -> Loop:
         return Loop("slider_crank", names, (d.link, *y.links), d.length, y.length, 0.0, sense)
     if isinstance(y, RPR) and y.bar == "second" and y.p == d.tip and y.q in linkage.frame_points:
         names.update(C=y.q)
-        return Loop("guide_bar", names, (d.link, y.links[0], y.links[1]), d.length, 0.0, 0.0, sense)
+        return Loop("guide_bar", names, (d.link, y.links[0], y.links[1]), d.length, y.offset, 0.0, sense)
     raise NotApplicable("the first dyad does not close a four-bar (RRR to a frame point), a slider-crank (RRP on the "
                      "crank pin) or a guide bar (RPR with the bar pivoted on the frame, bar = \"second\") with "
                      "the crank")
@@ -308,6 +308,12 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
         hi = max((C1[0] - G[0]) * g[0] + (C1[1] - G[1]) * g[1], (C2[0] - G[0]) * g[0] + (C2[1] - G[1]) * g[1])
         pts["G0"] = (G[0] + (lo - 10.0) * g[0], G[1] + (lo - 10.0) * g[1])
         pts["G1"] = (G[0] + (hi + 10.0) * g[0], G[1] + (hi + 10.0) * g[1])
+    elif loop.b != 0.0:  # an offset guide bar
+        kind = "crank"
+        Cp = mm(linkage.frame_points[n["C"]])
+        B1, B2, F1, F2, psi, best = _offset_guide_bar_drawn(A, Cp, a, loop.b / mu_l, ops, n)
+        C1, C2, stroke = Cp, Cp, None
+        pts.update(C=Cp, F1=F1, F2=F2)
     else:  # guide bar
         kind = "crank"
         Cp = mm(linkage.frame_points[n["C"]])
@@ -325,10 +331,54 @@ def draw_characteristics(linkage: Linkage, mu_l: float) -> DrawnCharacteristics:
     start, end, theta, swapped = _order(A, B1, B2, loop.sense)
     if swapped:
         B1, B2, C1, C2 = B2, B1, C2, C1
+        if "F1" in pts:
+            pts["F1"], pts["F2"] = pts["F2"], pts["F1"]
     assert best is not None
     pts.update(B1=B1, C1=C1, B2=B2, C2=C2, Bg=best[1], Cg=best[2])
-    at = start if loop.kind == "guide_bar" else _wrap(math.atan2(best[1][1], best[1][0]))
+    centred = loop.kind == "guide_bar" and loop.b == 0.0  # γ = 90° everywhere: named at the start
+    at = start if centred else _wrap(math.atan2(best[1][1], best[1][0]))
     return DrawnCharacteristics(loop, kind, mu_l, pts, start, end, theta, psi, stroke, best[0], at)
+
+
+def _offset_guide_bar_drawn(A: _XY, C: _XY, a: float, e: float, ops: ScalarOps, n: dict[str, str]
+                            ) -> tuple[_XY, _XY, _XY, _XY, float, tuple[float, _XY, _XY]]:
+    """An offset guide bar's extremes (drawing mm): where its line, at e left of C, is tangent to the
+    crank circle — a common tangent of the circles (A, a) and (C, |e|). The line through A parallel
+    to it is at e ± a from C: the circle (C, |e ± a|) cut by the circle on AC as diameter gives its
+    foot T (CT ⟂ AT), AT gives the line's direction û (towards the block: (A − C)·û > 0), and
+    B = A ∓ a·n̂, F = C + e·n̂ (n̂ = û turned 90° CCW). Returns B₁, B₂, F₁, F₂, ψ and (γ_min, B′, C):
+    γ = 90° less the angle between CB and the line, smallest where |CB| is, B′ on AC.
+    """
+    d = math.hypot(C[0] - A[0], C[1] - A[1])
+    if a + abs(e) >= d * (1.0 - 1e-12):
+        raise NotApplicable(f"{n['A']}{n['B']} + |e| is not less than {n['A']}{n['C']}: the crank pin reaches the "
+                            f"circle of radius |e| about {n['C']}, so the bar cannot follow it round: no extreme positions")
+    M = ((A[0] + C[0]) / 2.0, (A[1] + C[1]) / 2.0)
+    out: list[tuple[_XY, _XY, _XY]] = []
+    for sigma in (1.0, -1.0):
+        ops.step = f"{n['B']} = the line at e from {n['C']} tangent to the crank circle ({'+' if sigma > 0 else '−'})"
+        for side in (1.0, -1.0):
+            T = intersect_circles(ops, C, abs(e + sigma * a), M, d / 2.0, side, lambda dd: "no tangent")
+            ux, uy = A[0] - T[0], A[1] - T[1]
+            if math.hypot(ux, uy) == 0.0:
+                continue
+            if (A[0] - C[0]) * ux + (A[1] - C[1]) * uy < 0.0:
+                ux, uy = -ux, -uy
+            ln = math.hypot(ux, uy)
+            ux, uy = ux / ln, uy / ln
+            nx, ny = -uy, ux
+            if abs((A[0] - C[0]) * nx + (A[1] - C[1]) * ny - (e + sigma * a)) <= 1e-9 * d:
+                out.append(((A[0] - sigma * a * nx, A[1] - sigma * a * ny), (C[0] + e * nx, C[1] + e * ny), (ux, uy)))
+                break
+    if len(out) != 2:
+        raise NotApplicable("the offset guide bar's extreme lines could not be constructed")
+    (B1, F1, u1), (B2, F2, u2) = out
+    psi = _angle(u1, u2)
+    Bg = _along(A, C, a)  # the crank pointing at C: |CB| smallest, the line most oblique to CB
+    Fg = intersect_circles(ops, C, abs(e), ((Bg[0] + C[0]) / 2.0, (Bg[1] + C[1]) / 2.0),
+                           math.dist(Bg, C) / 2.0, 1.0 if e > 0.0 else -1.0, lambda dd: "no tangent")
+    gamma = math.pi / 2.0 - _angle(_sub(Bg, Fg), _sub(Bg, C))
+    return B1, B2, F1, F2, psi, (gamma, Bg, C)
 
 
 def _fourbar_gamma_drawn(A: _XY, D: _XY, a: float, b: float, c: float, ops: ScalarOps,

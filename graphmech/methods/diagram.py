@@ -11,11 +11,12 @@ from typing import TYPE_CHECKING, Any
 
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import PRP, Crank, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput, Triad
+from graphmech.methods.linkage_construction import own
 
 if TYPE_CHECKING:
     from graphmech.geometry.kernels import Components, Ops
     from graphmech.methods.linkage_construction import LinkageConstruction
-    from graphmech.mechanisms.linkage import Part
+    from graphmech.mechanisms.linkage import Linkage, Part
 
 PANEL = "mechanism"
 
@@ -134,12 +135,66 @@ def _rrp_on_link(b: "LinkageConstruction", y: RRP, g: LinkGuide, r: float, side:
         b.mech[name] = b.mech[C]
 
 
+def tangent_name(y: RPR) -> str:
+    """The step (and ``b.mech`` key) of an offset guide bar's foot F: where its line touches the
+    circle of radius |e| about its pivot (no point name is one)."""
+    return own(PANEL, f"F{y.bar_pivot}{y.block_pivot}")
+
+
+def offset_bar_lines(linkage: Linkage) -> dict[str, tuple[str, str]]:
+    """Link → the two ``b.mech`` keys along its own line, F → X, for each offset guide bar and its
+    block: their angle is that line's, not the direction of their first two points."""
+    return {lk: (tangent_name(y), y.block_pivot) for y in linkage.dyads
+            if isinstance(y, RPR) and y.offset != 0.0 for lk in (y.bar_link, y.block_link)}
+
+
+def bar_direction(b: LinkageConstruction, y: RPR) -> str:
+    """The direction of the bar's line: O→X through the bar's pivot O, F→X for an offset bar."""
+    from graphmech.methods.elements import direction
+
+    if y.offset == 0.0:
+        return direction(b, y.bar_pivot, y.block_pivot)
+    a, c = b.mech[tangent_name(y)], b.mech[y.block_pivot]
+    name = f"dir:{a}->{c}"  # as elements.direction names it, with words for a failure (F on X: a dead centre)
+    if not b.g.has(name):
+        X, O = y.block_pivot, y.bar_pivot
+        b.g.add(name, "scalar", K.unit, (a, c), role="hidden", panel=PANEL,
+                text=f"the offset bar's line F{X} ({X} on the circle of radius |e| about {O}: a dead centre)")
+    return name
+
+
 def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     # The bar's line runs from its pivot through the block's pivot: no new point, but the
     # coincident points X<bar>, X<block> sit where the block's pivot is.
     x = y.block_pivot
     for name in y.coincident:
         b.mech[name] = b.mech[x]
+    if y.offset != 0.0:
+        _rpr_tangent(b, y)
+
+
+def _rpr_tangent(b: LinkageConstruction, y: RPR) -> None:
+    """An offset guide bar: its line is the tangent from X to the circle of radius |e| about its pivot
+    O, found as the book draws it — the circle on OX as diameter cuts that circle at the foot F, on
+    the side e names (left of O→X for e > 0)."""
+    O, X = y.bar_pivot, y.block_pivot
+    r = abs(y.offset) / b.mu_l
+    side = 1.0 if y.offset > 0.0 else -1.0
+
+    def explain(d: Any) -> str:
+        if hasattr(d, "shape"):
+            return f"{X} is within the offset |e| of the bar's pivot {O}"
+        return f"|{O}{X}| = {2.0 * d * b.mu_l:.4g} m < the offset |e| = {abs(y.offset):.4g} m"
+
+    def foot(ops: Ops, o: Components, x: Components) -> Components:
+        m = ((o[0] + x[0]) / 2.0, (o[1] + x[1]) / 2.0)  # the circle on OX as diameter
+        half = ops.hypot(x[0] - o[0], x[1] - o[1]) / 2.0
+        return K.intersect_circles(ops, o, r, m, half, side, explain)
+
+    b.mech[tangent_name(y)] = b.g.add(
+        tangent_name(y), "point", foot, (b.mech[O], b.mech[X]), role="construction",
+        text=f"F = circle({O}, |e|) ∩ circle on {O}{X} as diameter: {X}F is the bar's line, tangent to the "
+             f"circle of radius |e| about {O}", panel=PANEL, say=("tangent", O, X))
 
 
 def _rpp(b: "LinkageConstruction", y: RPP) -> None:

@@ -31,6 +31,7 @@ from graphmech.errors import DegenerateConstruction
 from graphmech.geometry.kernels import Components
 from graphmech.mechanisms.linkage import RPP, RRP, Crank, Guide, Linkage, SliderInput
 from graphmech.methods.chords import frozen_array
+from graphmech.methods.diagram import offset_bar_lines
 from graphmech.methods.graphical_differentiation import Differentiation, differentiate_cycle
 from graphmech.methods.polygons import LinkageConstruction, build_polygons
 
@@ -328,7 +329,7 @@ def evaluate_cycle(linkage: Linkage, scales: dict[str, float], angles: np.ndarra
             s_m = ((p[:, 0] - p[0, 0]) * gx + (p[:, 1] - p[0, 1]) * gy) * b.mu_l  # along the guide
             kind = "point"
         elif subject in links:
-            u, v = links[subject][:2]
+            u, v = offset_bar_lines(linkage).get(subject, tuple(links[subject][:2]))  # an offset bar: its line
             pu, pv = mech[u], mech[v]
             theta = np.arctan2(pv[:, 1] - pu[:, 1], pv[:, 0] - pu[:, 0])
             s_m = _unwrap_from_first(theta, sense)

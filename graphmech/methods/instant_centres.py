@@ -42,6 +42,7 @@ from graphmech.mechanisms.linkage import (
     SliderInput,
     Triad,
 )
+from graphmech.methods.diagram import tangent_name
 from graphmech.tolerances import COND_WARN, PARALLEL_SIN
 
 #: Two points or lines closer than this, relative to the mechanism's drawn size, are one.
@@ -218,7 +219,9 @@ def direct_centres(linkage: Linkage) -> list[Direct]:
             else:
                 slide(frame, y.links[1], g.angle, y.c)
         elif isinstance(y, RPR):
-            slide(y.links[0], y.links[1], None, y.block_pivot, (y.bar_pivot, y.block_pivot))
+            # the bar's line: through its pivot, or (an offset bar) through its foot F, the diagram's own point
+            start = tangent_name(y) if y.offset != 0.0 else y.bar_pivot
+            slide(y.links[0], y.links[1], None, y.block_pivot, (start, y.block_pivot))
         elif isinstance(y, RPP):
             slide(y.links[0], y.links[1], y.slot_angle, y.p)
             slide(frame, y.links[1], y.guide.angle, y.c)
@@ -340,7 +343,7 @@ def instant_centres(linkage: Linkage, pos: Mapping[str, XY], driver_omega: float
         else:
             if dc.normal is not None:
                 ang = dc.normal
-            else:  # RPR: the bar's line runs through both pivots (PRP: the guide's two points)
+            else:  # RPR: the bar's line (through both pivots, or F and X) (PRP: the guide's two points)
                 (p, q) = dc.across or ("", "")
                 ang = math.atan2(pos[q][1] - pos[p][1], pos[q][0] - pos[p][0]) + math.pi / 2
             c = _as_centre(key, np.array([math.cos(ang), math.sin(ang), 0.0]), "direct", ("guide",), 1.0)

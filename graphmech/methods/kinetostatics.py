@@ -656,17 +656,28 @@ def _rpr_group(y: RPR, kin: PolygonKinematics, loads: _Loads, owner: dict[str, s
     friction(jk)
     d = X - P
     L = np.abs(d)
-    t = d / np.where(L > 0, L, 1.0)
+    e = y.offset
+    if e != 0.0:  # an offset guide bar: d = (L_t + i·e)·t, L_t the pivot's distance along the bar's line t
+        L = np.sqrt(np.maximum(L * L - e * e, 0.0))
+        t = d / (L + 1j * e)
+        t = t / np.abs(t)
+    else:
+        t = d / np.where(L > 0, L, 1.0)
     nrm = 1j * t
     _guard_parallel(np.where(L > 0, 1.0, 0.0), kin.valid, f"group {b}–{k}: the block's pivot {y.block_pivot} is "
                     f"on the bar's pivot {y.bar_pivot}, so the bar's moments cannot give the reaction")
     m_bar = loads.moment_about(b, P)  # about the bar's pivot
     m_block = loads.moment_about(k, X)  # about the block's pivot
-    N = (m_bar + m_block) / np.where(L > 0, L, 1.0)
     # Friction on the slide: −f|N| along the bar against the block's motion relative to the bar.
     f = fr.f.get(k, 0.0) if fr.previous is not None else 0.0
     v_rel = (np.conj(t) * (kin.vel[y.coincident[1]] - kin.vel[y.coincident[0]])).real
-    r_bk = N * nrm - f * np.abs(N) * _sign(v_rel, _largest(kin.vel, n)) * t  # the bar on the block
+    sense = _sign(v_rel, _largest(kin.vel, n))
+    # The bar's moments about P: N·L_t + e·f·σ·|N| = m_bar + m_block (the friction along an offset line
+    # has the arm e about P); g(N) rises with N while L_t > |e·f|, so N takes the sign of the right side.
+    m = m_bar + m_block
+    L_safe = np.where(L > 0, L, 1.0)
+    N = np.where(m >= 0, m / (L_safe + e * f * sense), m / (L_safe - e * f * sense)) if e != 0.0 else m / L_safe
+    r_bk = N * nrm - f * np.abs(N) * sense * t  # the bar on the block
     fr.normal_next[k] = N
     known_b = loads.total(b, n)
     known_k = loads.total(k, n)

@@ -126,12 +126,13 @@ def length(b: "LinkageConstruction", x: str, y: str) -> None:
     _segment(b.mech[x], b.mech[y], b.mu_l, f"l_{x}{y}", b, "m", ("length", x, y), "mechanism")
 
 
-def link_angle(b: "LinkageConstruction", link: str) -> None:
-    """θ of a rotating link: direction of its first two points, degrees in [0, 360)."""
+def link_angle(b: "LinkageConstruction", link: str, line: tuple[str, str] | None = None) -> None:
+    """θ of a rotating link: direction of its first two points, degrees in [0, 360); ``line``: two
+    steps of the diagram along the link's own line instead (an offset guide bar's F→X)."""
     pts = b.link_points.get(link, [])
-    if link in b.translating or len(pts) < 2:
+    if link in b.translating or (line is None and len(pts) < 2):
         return
-    U, V = pts[0], pts[1]
+    ends = line if line is not None else (b.mech[pts[0]], b.mech[pts[1]])
 
     def kern(ops: Ops, u: Components, v: Components) -> Components:
         if ops.batch:  # degrees_0_360 for arrays
@@ -141,7 +142,7 @@ def link_angle(b: "LinkageConstruction", link: str) -> None:
             return (np.where(d == 360.0, 0.0, d), 1.0)
         return (degrees_0_360(math.atan2(v[1] - u[1], v[0] - u[0])), 1.0)
 
-    _add(b, f"theta_{link}", "deg", kern, (b.mech[U], b.mech[V]), ("angle", link), "mechanism")
+    _add(b, f"theta_{link}", "deg", kern, ends, ("angle", link), "mechanism")
 
 
 def component(b: "LinkageConstruction", name: str, start: str, end: str, exact: Exact) -> None:

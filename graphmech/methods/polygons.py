@@ -72,6 +72,7 @@ def add_point_quantities(b: LinkageConstruction) -> None:
         measure.point_speed(b, name)
     for name in b.acc:
         measure.point_acceleration(b, name)
+    along = {lk: (b.mech[u], b.mech[v]) for lk, (u, v) in diagram.offset_bar_lines(b.linkage).items()}  # θ of û
     for link, pts in b.link_points.items():
         for i, x in enumerate(pts):
             for y in pts:
@@ -79,7 +80,7 @@ def add_point_quantities(b: LinkageConstruction) -> None:
                     continue
                 measure.relative(b, x, y)
                 measure.length(b, x, y)
-        measure.link_angle(b, link)
+        measure.link_angle(b, link, along.get(link))
     for x, y in b.coincident:
         measure.relative(b, x, y)
     for name, q in list(b.quantities.items()):  # many books write ε for angular acceleration

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 from graphmech.geometry import kernels as K
 from graphmech.mechanisms.linkage import PRP, Crank, Guide, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR, SliderInput, Triad
 from graphmech.methods import elements as E
+from graphmech.methods.diagram import bar_direction
 from graphmech.methods import measure
 from graphmech.methods.linkage_construction import VELOCITY_POLE
 
@@ -116,10 +117,12 @@ def _rpr(b: "LinkageConstruction", y: RPR) -> None:
     lp, lx, lc = _img_label(b, Bp), _img_label(b, X), label(xbar)
     lt = E.line(b, PANEL, f"⟂{Bp}·{X}@{lp}", K.line_perpendicular_to, (b.vel[Bp], E.direction(b, Bp, X)), f"through {lp} draw ⟂ {Bp}{X}",
                   say=("perp", Bp, X))
-    lr = E.line(b, PANEL, f"∥{Bp}·{X}@{lx}", K.line_parallel_to, (b.vel[X], E.direction(b, Bp, X)), f"through {lx} draw ∥ {Bp}{X}",
-                  say=("par", Bp, X))
+    first = Bp if y.offset == 0.0 else "F"  # an offset bar slides along its line FX, not OX
+    along = first + X
+    lr = E.line(b, PANEL, f"∥{first}·{X}@{lx}", K.line_parallel_to, (b.vel[X], bar_direction(b, y)),
+                f"through {lx} draw ∥ {along}", say=("par", first, X))
     img = E.image(b, PANEL, b.vel, xbar, label(xbar), K.intersect_lines, (lt, lr),
-                 f"{lc} = (⟂{Bp}{X} through {lp}) ∩ (∥{Bp}{X} through {lx})", say=("meet",))
+                 f"{lc} = (⟂{Bp}{X} through {lp}) ∩ (∥{along} through {lx})", say=("meet",))
     b.g.extend_line(lt, img)
     b.g.extend_line(lr, img)
     E.vector(b, PANEL, POLE, img)

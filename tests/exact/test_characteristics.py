@@ -118,3 +118,56 @@ def test_a_deltoid_has_no_extreme_positions_and_says_why():
     # the other kite (AB = AD, BC = CD) is a double crank with γ only, as before
     other = X.fourbar(0j, 0.030 + 0j, 0.030, 0.072, 0.072, "left")
     assert other.theta is None and other.grashof == "change_point"
+
+
+# --------------------------------------------------------------------------------------------
+# An offset guide bar: the extremes where its line (at e from C) is tangent to the crank circle
+
+
+def _offset_bar(a: float, e: float, omega: float = 5.0) -> Linkage:
+    return Linkage({"A": (0.0, 0.0), "C": (0.0, -0.35)}, Crank("1", "A", "B", a, omega),
+                   (RPR("B", "C", ("2", "3"), bar="second", offset=e),))
+
+
+@pytest.mark.parametrize("e", [0.04, -0.04, 0.1, 1e-5])
+@pytest.mark.parametrize("sense", [1.0, -1.0])
+def test_an_offset_guide_bars_extremes_are_where_the_bar_stops(e, sense):
+    """At φ_start and φ_end the exact kinematics give ω3 = 0 (independent of the closed form), the
+    bar's swing between them is ψ, and γ = arccos(|e|/|CB|) sampled over a turn has its least at
+    γ_min, with the crank pointing at C."""
+    import numpy as np
+
+    from graphmech.exact.linkage import solve
+
+    ch = X.offset_guide_bar(0j, -0.35j, 0.11, e, sense)
+    lk = _offset_bar(0.11, e, 5.0 * sense)
+    kin = solve(lk, np.array([ch.phi_start, ch.phi_end]))
+    assert kin.valid.all() and np.abs(kin.omega["3"]).max() < 1e-12
+    swing = abs((kin.angle["3"][1] - kin.angle["3"][0] + math.pi) % (2 * math.pi) - math.pi)
+    assert ch.psi == pytest.approx(swing, rel=1e-12) and ch.theta == pytest.approx(ch.psi, rel=1e-12)
+    phi = np.linspace(0.0, 2 * math.pi, 20001)
+    cb = np.hypot(*(solve(lk, phi).point["B"] - np.array([0.0, -0.35])).T)
+    assert ch.gamma_min == pytest.approx(float(np.arccos(abs(e) / cb).min()), rel=1e-12)
+    assert ch.gamma_min_at == pytest.approx(3 * math.pi / 2, rel=1e-15)
+    # the working (slow) stroke runs from φ_start to φ_end in the crank's sense: 180° + θ of the turn
+    travel = (sense * (ch.phi_end - ch.phi_start)) % (2 * math.pi)
+    assert travel == pytest.approx(math.pi + ch.theta, rel=1e-12)
+
+
+def test_a_zero_offset_is_the_centred_guide_bar_and_a_reaching_crank_is_refused():
+    assert X.guide_bar(0j, -0.35j, 0.11, 1.0, 0.0) == X.guide_bar(0j, -0.35j, 0.11)
+    assert X.offset_guide_bar(0j, -0.35j, 0.11, 0.0).theta == pytest.approx(X.guide_bar(0j, -0.35j, 0.11).theta,
+                                                                             rel=1e-12)
+    with pytest.raises(ValueError, match="reaches the circle of radius"):
+        X.offset_guide_bar(0j, -0.35j, 0.11, 0.24)
+
+
+@pytest.mark.parametrize("e", [0.04, -0.07])
+def test_the_drawn_offset_guide_bar_agrees_with_its_closed_form(e):
+    ch = X.offset_guide_bar(0j, -0.35j, 0.11, e)
+    dr = draw_characteristics(_offset_bar(0.11, e), 0.002)
+    for got, want in ((dr.theta, ch.theta), (dr.psi, ch.psi), (dr.phi_start, ch.phi_start),
+                      (dr.phi_end, ch.phi_end), (dr.gamma_min, ch.gamma_min), (dr.gamma_min_at, ch.gamma_min_at)):
+        assert got == pytest.approx(want, rel=1e-12)
+    C, F1 = dr.points["C"], dr.points["F1"]
+    assert math.dist(C, F1) == pytest.approx(abs(e) / 0.002, rel=1e-12)  # the foot on the circle (C, |e|)

@@ -429,3 +429,115 @@ def test_result_is_frozen() -> None:
         kin.point["C"][0, 0] = 1.0
     with pytest.raises(ValueError):
         kin.omega["2"][0] = 1.0
+
+
+# --------------------------------------------------------------------------------------------
+# An offset guide bar (RPR with ``offset``): the line at e from its own pivot
+
+
+def offset_guide_bar(e: float, epsilon: float = 0.0) -> Linkage:
+    """Crank 0.03 about A at ω = 10, the bar pivoted at C = (0, −0.04), its slot e to the left of C."""
+    return Linkage({"A": (0.0, 0.0), "C": (0.0, -0.04)}, Crank("1", "A", "B", 0.03, 10.0, epsilon),
+                   (RPR("B", "C", ("2", "3"), bar="second", offset=e),))
+
+
+def test_an_offset_guide_bar_by_hand_in_the_bars_frame() -> None:
+    """φ = 0: CB = (0.03, 0.04), e = 0.03, t = 0.04, û = CB/(t + ie) = (0.96, 0.28); the loop divided
+    by û gives ω3·t = 0.288, ṫ − ω3·e = 0.084 and, once more, α3 = −48.12, ẗ = −2.25."""
+    kin = solve(offset_guide_bar(0.03), np.array([0.0]))
+    assert kin.valid.all()
+    assert kin.angle["3"][0] == pytest.approx(math.atan2(0.28, 0.96), rel=1e-14)
+    assert kin.omega["3"][0] == pytest.approx(7.2, rel=1e-13)
+    assert kin.omega["2"][0] == kin.omega["3"][0] and kin.alpha["2"][0] == kin.alpha["3"][0]
+    assert kin.alpha["3"][0] == pytest.approx(-48.12, rel=1e-13)
+    u = np.array([0.96, 0.28])
+    v_rel = kin.vel["B2"][0] - kin.vel["B3"][0]  # the block slides along û, away from F
+    assert v_rel == pytest.approx(0.3 * u, rel=1e-13)
+    assert kin.vel["B3"][0] == pytest.approx(7.2 * np.array([-0.04, 0.03]), rel=1e-13)  # ω3 × CB
+    a_k = 2.0 * 7.2 * 0.3 * np.array([-0.28, 0.96])  # 2ω3 × v_rel
+    a_r = kin.acc["B2"][0] - kin.acc["B3"][0] - a_k
+    assert a_r == pytest.approx(-2.25 * u, rel=1e-12)
+
+
+@pytest.mark.parametrize("e", [0.03, -0.02, 1e-6])
+def test_an_offset_guide_bars_rates_match_finite_differences(e: float) -> None:
+    """θ3(t) solved at φ(t) = φ0 + ωt + εt²/2: central differences of the exact positions."""
+    linkage = offset_guide_bar(e, epsilon=-40.0)
+    phi0 = np.radians([10.0, 100.0, 190.0, 280.0])
+    h = 1e-5
+
+    def at(t: float) -> Kinematics:
+        return solve(linkage, phi0 + 10.0 * t - 20.0 * t * t)
+
+    kp, k0, km = at(h), at(0.0), at(-h)
+    th = [np.unwrap(np.stack([km.angle["3"], k0.angle["3"], kp.angle["3"]]), axis=0)[i] for i in range(3)]
+    assert k0.omega["3"] == pytest.approx((th[2] - th[0]) / (2 * h), rel=1e-7, abs=1e-7)
+    assert k0.alpha["3"] == pytest.approx((th[2] - 2 * th[1] + th[0]) / h ** 2, rel=1e-4, abs=1e-3)
+    assert np.array_equal(k0.vel["B2"], k0.vel["B"])  # the block's point at B is the crank pin
+    # B3, the bar's point at B now: C + (CB at t = 0) turned with the bar, differenced as a rigid point
+    cb = k0.point["B"] - np.array([0.0, -0.04])
+    turn = [np.stack([np.cos(t - th[1]), np.sin(t - th[1])], axis=1) for t in th]
+    rigid = [np.stack([r[:, 0] * cb[:, 0] - r[:, 1] * cb[:, 1], r[:, 1] * cb[:, 0] + r[:, 0] * cb[:, 1]], axis=1)
+             for r in turn]
+    assert k0.vel["B3"] == pytest.approx((rigid[2] - rigid[0]) / (2 * h), rel=1e-7, abs=1e-9)
+    assert k0.acc["B3"] == pytest.approx((rigid[2] - 2 * rigid[1] + rigid[0]) / h ** 2, rel=1e-4, abs=1e-4)
+
+
+@pytest.mark.parametrize("e", [0.03, -0.03])
+def test_an_offset_guide_bars_line_is_at_e_to_the_left_of_its_pivot(e: float) -> None:
+    kin = solve(offset_guide_bar(e), np.radians(np.arange(0.0, 360.0, 15.0)))
+    ok = kin.valid  # |CB| > |e| = 0.03: φ outside 214°…326°
+    assert ok.sum() == 17
+    u = np.stack([np.cos(kin.angle["3"][ok]), np.sin(kin.angle["3"][ok])], axis=1)
+    cb = kin.point["B"][ok] - np.array([0.0, -0.04])
+    assert u[:, 0] * cb[:, 1] - u[:, 1] * cb[:, 0] == pytest.approx(np.full(17, e), rel=1e-12)  # û × CB = e
+    assert ((u * cb).sum(axis=1) > 0.0).all()  # û points from the foot F towards B: t > 0
+
+
+def test_a_zero_offset_is_the_centred_guide_bar_bit_for_bit() -> None:
+    phi = np.radians(np.arange(0.0, 360.0, 7.0))
+    a, b = solve(GUIDE_BAR_CENTRED, phi), solve(offset_guide_bar(0.0), phi)
+    for field in ("point", "vel", "acc", "angle", "omega", "alpha"):
+        got, want = getattr(b, field), getattr(a, field)
+        assert got.keys() == want.keys() and all(np.array_equal(got[k], want[k]) for k in want)
+
+
+GUIDE_BAR_CENTRED = Linkage({"A": (0.0, 0.0), "C": (0.0, -0.04)}, Crank("1", "A", "B", 0.03, 10.0),
+                            (RPR("B", "C", ("2", "3"), bar="second"),))
+
+
+def test_an_offset_guide_bar_fails_inside_its_circle_and_is_dead_on_it() -> None:
+    # |CB| runs from 0.01 (φ = 270°) to 0.07 (φ = 90°): with e = 0.04 the pin leaves the bar's reach
+    kin = solve(offset_guide_bar(0.04), np.radians([90.0, 270.0]))
+    assert kin.valid.tolist() == [True, False] and kin.assembled.tolist() == [True, False]
+    assert "within the offset |e| of the bar's pivot C" in kin.reason[1]
+    # e = |CB| at φ = 90°: the pin on the circle, t = 0, the rates unbounded: a dead centre
+    dead = solve(offset_guide_bar(0.07), np.radians([90.0]))
+    assert not dead.valid[0] and dead.assembled[0] and "dead centre" in dead.reason[0]
+    assert dead.omega["3"][0] == 0.0 and np.isfinite(dead.angle["3"]).all()
+
+
+@pytest.mark.parametrize("e", [0.012, -0.012])
+def test_an_offset_bar_on_a_moving_pivot_matches_finite_differences(e: float) -> None:
+    """The oscillating block turned offset: bar 2 pivoted on the crank pin B, its line e left of B,
+    sliding through block 3 pivoted at C = (−0.1, 0); θ2 differenced, and C2 (the bar's point at C)
+    against the rigid motion of the bar about B."""
+    lk = Linkage({"A": (0.0, 0.0), "C": (-0.1, 0.0)}, Crank("1", "A", "B", 0.03, 10.0, 20.0),
+                 (RPR("B", "C", ("2", "3"), bar="first", offset=e),))
+    phi0 = np.radians([45.0, 160.0, 300.0])
+    h = 1e-5
+    kp, k0, km = (solve(lk, phi0 + 10.0 * t + 10.0 * t * t) for t in (h, 0.0, -h))
+    th = np.unwrap(np.stack([km.angle["2"], k0.angle["2"], kp.angle["2"]]), axis=0)
+    assert k0.omega["2"] == pytest.approx((th[2] - th[0]) / (2 * h), rel=1e-7)
+    assert k0.alpha["2"] == pytest.approx((th[2] - 2 * th[1] + th[0]) / h ** 2, rel=1e-4)
+    assert np.array_equal(k0.omega["3"], k0.omega["2"])
+    # C2 = B + (BC at t = 0) turned with the bar and carried with B
+    bc = k0.point["C"] - k0.point["B"]
+
+    def rigid(k: Kinematics, dth: np.ndarray) -> np.ndarray:
+        c, s = np.cos(dth), np.sin(dth)
+        return k.point["B"] + np.stack([c * bc[:, 0] - s * bc[:, 1], s * bc[:, 0] + c * bc[:, 1]], axis=1)
+    r = [rigid(k, t - th[1]) for k, t in zip((km, k0, kp), th)]
+    assert k0.vel["C2"] == pytest.approx((r[2] - r[0]) / (2 * h), rel=1e-6, abs=1e-8)
+    assert k0.acc["C2"] == pytest.approx((r[2] - 2 * r[1] + r[0]) / h ** 2, rel=1e-3, abs=1e-4)
+    assert np.array_equal(k0.vel["C3"], np.zeros((3, 2)))  # the block's point at C is the frame pivot's

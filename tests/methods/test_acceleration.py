@@ -122,3 +122,19 @@ def test_every_frame_point_is_the_pole() -> None:
     b = build_polygons(RIGHT_FOURBAR, SCALES)
     assert b.acc["A"] == b.acc["D"] == acceleration.POLE
     assert evaluate(b, 1.0, acceleration.POLE)[acceleration.POLE] == (0.0, 0.0)
+
+
+def test_an_offset_guide_bar_lays_off_the_coriolis_component_across_its_line() -> None:
+    """φ = 0 (tests/scenes/methods/linkages.py): a^k = 2ω3·v_B2B3 = 4.32 ⟂ û = (0.96, 0.28), the
+    relative acceleration 2.25 ∥ û, α3 = −48.12 (by hand in the bar's frame)."""
+    from tests.scenes.methods.linkages import OFFSET_GUIDE_BAR
+
+    b = build_polygons(OFFSET_GUIDE_BAR, SCALES)
+    sol = evaluate(b, 0.0, "a:(k')", "a:b'", "a_k_B3B2", "a_r_B3B2", "alpha_3", "epsilon_2")
+    assert value(b, sol, "a_k_B3B2") == pytest.approx(4.32, rel=1e-13)
+    # v_B3B2 = v_B3 − v_B2 = −0.3·û turned 90° CCW (ω3 > 0): (0.28, −0.96), 43.2 mm at μa = 0.1
+    kx, ky = sol["a:(k')"][0] - sol["a:b'"][0], sol["a:(k')"][1] - sol["a:b'"][1]
+    assert (kx, ky) == pytest.approx((0.28 * 43.2, -0.96 * 43.2), rel=1e-13)
+    assert value(b, sol, "alpha_3") == pytest.approx(-48.12, rel=1e-12)
+    assert value(b, sol, "epsilon_2") == value(b, sol, "alpha_3")
+    assert value(b, sol, "a_r_B3B2") == pytest.approx(2.25, rel=1e-12)

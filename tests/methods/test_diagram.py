@@ -210,3 +210,24 @@ def test_newton_over_several_positions_follows_the_branch_from_the_previous_one(
     sol = solve_triad(Triad(y.outer, y.inner, y.links, y.lengths, y.ternary, start), known)
     for k in range(3):
         assert np.abs(sol.z[k] - (got[2 * k] + 1j * got[2 * k + 1])).max() < 1e-10
+
+
+@pytest.mark.parametrize("e", [0.03, -0.03])
+def test_an_offset_guide_bars_foot_is_where_its_line_touches_the_circle_of_radius_e(e: float) -> None:
+    """φ = 0: C = (0, −0.04), B = (0.03, 0): the circle on CB as diameter cuts the circle (C, |e|) at
+    F = C + e·n̂ with û = CB/(t + ie) (t = 0.04): F = (−0.0084, −0.0112) for e = 0.03 (left of C→B),
+    its mirror in CB, (0.03, −0.04), for e = −0.03 (F→B straight up)."""
+    from tests.scenes.methods.linkages import OFFSET_GUIDE_BAR
+
+    y = OFFSET_GUIDE_BAR.dyads[0]
+    link = Linkage(OFFSET_GUIDE_BAR.frame_points, OFFSET_GUIDE_BAR.driver,
+                   (RPR(y.p, y.q, y.links, "second", e),))  # type: ignore[union-attr]
+    b = build(link)
+    got = b.g.prune([b.mech[diagram.tangent_name(link.dyads[0])]]).evaluate({b.param: 0.0})  # type: ignore[arg-type]
+    f = np.array(got[diagram.tangent_name(link.dyads[0])]) * MU  # type: ignore[arg-type]
+    want = (-0.0084, -0.0112) if e > 0 else (0.03, -0.04)
+    assert f == pytest.approx(want, abs=1e-15)
+    c, bb = np.array([0.0, -0.04]), np.array([0.03, 0.0])
+    assert np.linalg.norm(f - c) == pytest.approx(0.03, rel=1e-13)
+    assert np.dot(f - c, bb - f) == pytest.approx(0.0, abs=1e-16)  # CF ⟂ FB: FB is tangent at F
+    assert "B3" in b.mech and b.mech["B3"] == b.mech["B"]

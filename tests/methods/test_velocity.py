@@ -121,3 +121,19 @@ def test_a_driven_slider_images_along_its_guide() -> None:
     k = -1.5 / MU_V
     assert sol["v:c"] == pytest.approx((k * 0.5, k * math.sqrt(3) / 2), rel=1e-14)
     assert value(b, sol, "v_C") == pytest.approx(-1.5, rel=1e-14)
+
+
+def test_an_offset_guide_bar_slides_along_its_line_not_along_cb() -> None:
+    """φ = 0 (tests/scenes/methods/linkages.py): v_B3 ⟂ CB, v_B2B3 ∥ û = FB = (0.96, 0.28): ω3 = 7.2,
+    |v_B3B2| = 0.3 and |v_B3| = ω3·|CB| = 0.36; θ3 is the line's direction, not CB's."""
+    from tests.scenes.methods.linkages import OFFSET_GUIDE_BAR
+
+    b = build_polygons(OFFSET_GUIDE_BAR, SCALES)
+    sol = evaluate(b, 0.0, "omega_3", "omega_2", "v_B3B2", "v_B3", "theta_3", "v:b3", "v:b")
+    assert value(b, sol, "omega_3") == pytest.approx(7.2, rel=1e-13)
+    assert value(b, sol, "omega_2") == value(b, sol, "omega_3")
+    assert value(b, sol, "v_B3B2") == pytest.approx(0.3, rel=1e-13)
+    assert value(b, sol, "v_B3") == pytest.approx(0.36, rel=1e-13)
+    assert value(b, sol, "theta_3") == pytest.approx(math.degrees(math.atan2(0.28, 0.96)), rel=1e-13)
+    rel = (sol["v:b"][0] - sol["v:b3"][0], sol["v:b"][1] - sol["v:b3"][1])  # b3→b, the sliding velocity
+    assert rel == pytest.approx((0.96 * 30.0, 0.28 * 30.0), rel=1e-13)  # 0.3 m/s at μv = 0.01

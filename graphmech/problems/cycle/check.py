@@ -375,7 +375,7 @@ def _characteristics(an: CycleAnalysis, linkage: Linkage, mu_l: float) -> None:
             s = cast(RRP, linkage.dyads[0])  # a slider-crank's dyad, on a frame guide
             assert isinstance(s.guide, Guide)
             return exact_ch.slider_crank(A, complex(*s.guide.through), s.guide.angle, a, b, s.branch, loop.sense)
-        return exact_ch.guide_bar(A, complex(*linkage.frame_points[n["C"]]), a, loop.sense)
+        return exact_ch.guide_bar(A, complex(*linkage.frame_points[n["C"]]), a, loop.sense, b)  # b: the offset e
 
     an.exact = closed_form(loop.a, loop.b, loop.c)
     _characteristics_conditioning(an, loop, closed_form)

@@ -484,13 +484,25 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
         items.append(Circle(A, r, "construction"))
         reach = max(math.dist(C, B1), math.dist(C, B2)) + 12.0
         extremes: tuple[tuple[XY, Role, bool], ...] = ((B1, "result", False), (B2, "construction", True))
-        for B, role, dashed in extremes:
-            u = _unit(C, B)
+        feet = (p.get("F1", C), p.get("F2", C))  # an offset bar's line starts at its foot F, the arm CF ⟂ it
+        for (B, role, dashed), F in zip(extremes, feet):
+            u = _unit(F, B)
+            far = reach if F == C else math.dist(F, B) + 12.0
             items += [Segment(A, B, role, dashed=dashed),
-                      Segment(C, (C[0] + reach * u[0], C[1] + reach * u[1]), role, dashed=dashed),
+                      Segment(F, (F[0] + far * u[0], F[1] + far * u[1]), role, dashed=dashed),
                       Slider(B, math.atan2(u[1], u[0]))]
+            if F != C:
+                items.append(Segment(C, F, role, dashed=dashed))
         items.append(_centre_line(A, C))
-        labels += _mark(C, _unit(C, B1), _unit(C, B2), MARK_R * 1.5, "ψ")
+        u1, u2 = _unit(feet[0], B1), _unit(feet[1], B2)
+        det = u1[0] * u2[1] - u1[1] * u2[0]
+        if feet[0] != C and abs(det) > 1e-9:  # ψ between the two lines, where they meet
+            w = (feet[1][0] - feet[0][0], feet[1][1] - feet[0][1])
+            s1 = (w[0] * u2[1] - w[1] * u2[0]) / det
+            X = (feet[0][0] + s1 * u1[0], feet[0][1] + s1 * u1[1])
+            labels += _mark(X, u1, u2, MARK_R * 1.5, "ψ")
+        else:
+            labels += _mark(C, _unit(C, B1), _unit(C, B2), MARK_R * 1.5, "ψ")
         back = (2 * A[0] - B1[0], 2 * A[1] - B1[1])
         items.append(Segment(A, back, "construction", dashed=True))
         labels += _mark(A, _unit(A, back), _unit(A, B2), min(MARK_R, 0.8 * r), "θ")
@@ -546,7 +558,10 @@ def _characteristics_notes(an: Any, notation: str = "en") -> tuple[str, ...]:
     k = (math.pi + dr.theta) / (math.pi - dr.theta)
     line += f", K = (180° + θ)/(180° − θ) = {number(k)}"
     out.append(line)
-    out.append(say("guide bar") if dr.loop.kind == "guide_bar" else say("dashed", gamma))
+    if dr.loop.kind == "guide_bar":  # centred: γ = 90° throughout; offset: γ_min with the crank at C (not drawn)
+        out.append(say("guide bar") if dr.loop.b == 0.0 else gamma)
+    else:
+        out.append(say("dashed", gamma))
     t_work = an.scene.problem.characteristics.t_work
     if t_work is not None:
         work, back = math.pi + dr.theta, math.pi - dr.theta

@@ -289,10 +289,14 @@ def free_body_items(build: LinkageConstruction, kin: PolygonKinematics, group: G
 
     drawn: set[str] = set()
     leaving: dict[str, list[tuple[float, float]]] = {}  # point → directions of the lines drawn from it
+    # an offset guide bar is drawn as its arm OF and its line FX below, not as the segment OX
+    offset_bars = {(y.bar_pivot, y.coincident[0]) for y in linkage.dyads if isinstance(y, RPR) and y.offset}
     for link in group.links:
         names = pts[link]
         ring = [(y.inner[2], y.inner[0]) for y in linkage.dyads if isinstance(y, Triad) and y.links[3] == link]
         for a, b in [*zip(names, names[1:]), *ring]:  # a class III group's ternary link: its whole triangle
+            if (a, b) in offset_bars:
+                continue
             za, zb = complex(kin.point[a][i]), complex(kin.point[b][i])
             pa, pb = to_mm(za), to_mm(zb)
             if math.dist(pa, pb) > 1e-9:
@@ -311,7 +315,16 @@ def free_body_items(build: LinkageConstruction, kin: PolygonKinematics, group: G
                                         line.angle if isinstance(line, Guide) else math.atan2(dl.imag, dl.real)))
         elif isinstance(y, RPR) and y.block_link in group.links:
             x, p = complex(kin.point[y.block_pivot][i]), complex(kin.point[y.bar_pivot][i])
-            items.append(Slider(to_mm(x), math.atan2((x - p).imag, (x - p).real)))
+            # along the bar's line: an offset bar's is turned from PX by atan2(e, t)
+            tilt = math.atan2(y.offset, math.sqrt(max(abs(x - p) ** 2 - y.offset ** 2, 0.0))) if y.offset else 0.0
+            items.append(Slider(to_mm(x), math.atan2((x - p).imag, (x - p).real) - tilt))
+        if isinstance(y, RPR) and y.offset and y.bar_link in group.links:  # the arm OF ⟂ the line FX
+            x, p = complex(kin.point[y.block_pivot][i]), complex(kin.point[y.bar_pivot][i])
+            u_bar = (x - p) / complex(math.sqrt(max(abs(x - p) ** 2 - y.offset ** 2, 0.0)), y.offset)
+            foot = p + y.offset * 1j * u_bar / abs(u_bar)
+            items += [Segment(to_mm(p), to_mm(foot), "given"), Segment(to_mm(foot), to_mm(x), "given")]
+            leaving.setdefault(y.bar_pivot, []).append(_unit(foot - p))
+            leaving.setdefault(y.block_pivot, []).append(_unit(foot - x))
         elif isinstance(y, RPP) and y.links[0] in group.links:
             c, p = complex(kin.point[y.c][i]), complex(kin.point[y.p][i])
             items.append(Segment(to_mm(c), to_mm(p), "given"))  # the slot

@@ -15,6 +15,7 @@ from typing import Any, Mapping, Sequence
 from graphmech.mechanisms.linkage import (PRP, Crank, Guide, Linkage, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR,
                                           SliderInput, Triad)
 from graphmech.drawing.notation import WORDS, word
+from graphmech.methods.diagram import tangent_name
 from graphmech.methods.velocity import assur_name
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
                                          Primitive, Role, Segment, Sheet, Slider)
@@ -259,6 +260,11 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
             number(y.links[1], pos[y.c], g.direction)
         elif isinstance(y, RPR):
             bp, x = pos[y.bar_pivot], pos[y.block_pivot]
+            foot = pos.get(tangent_name(y)) if y.offset != 0.0 else None
+            if foot is not None and foot != bp:  # an offset guide bar: its arm OF ⟂ its line F→X
+                items.append(Segment(bp, foot, "construction", dashed=True) if other else Segment(bp, foot, "given"))
+                lines.setdefault(y.bar_pivot, []).append(_unit(bp, foot))
+                bp = foot
             u = _unit(bp, x)
             reach = math.dist(bp, x) + 12.0
             for pt in linkage.points:  # the bar runs past every point fixed on it
@@ -266,7 +272,8 @@ def mechanism_items(build: Any, pos: dict[str, tuple[float, float]],
                     reach = max(reach, (pos[pt.name][0] - bp[0]) * u[0] + (pos[pt.name][1] - bp[1]) * u[1] + 6.0)
             end = (bp[0] + reach * u[0], bp[1] + reach * u[1])
             items.append(Segment(bp, end, "construction", dashed=True) if other else Segment(bp, end, "given"))
-            lines.setdefault(y.bar_pivot, []).append(u)
+            if bp == pos[y.bar_pivot]:  # the line leaves the pivot (an offset bar's arm is noted above)
+                lines.setdefault(y.bar_pivot, []).append(u)
             lines.setdefault(y.block_pivot, []).extend([u, (-u[0], -u[1])])
             items.append(Slider(x, math.atan2(u[1], u[0])))
             hinges += [y.p, y.q]

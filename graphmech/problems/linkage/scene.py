@@ -324,11 +324,13 @@ def _read_dyad(r: Reader, index: int, frame: _Frame) -> _Part:
     elif kind == "RPR":
         p, q = names
         bar = r.string("bar", choices=_BARS, required=True)
+        offset = r.scalar("offset", "length", required=False, default=0.0)  # e: an offset guide bar
         need(0, 1)
         if p is not None and p == q:
             r.problem(joints[1][1], f"the two pivots must differ ({p} twice)")
-        if p is not None and q is not None and i is not None and j is not None and bar is not None:
-            model = RPR(p, q, (i, j), bar)
+        if (p is not None and q is not None and i is not None and j is not None and bar is not None
+                and offset is not None):
+            model = RPR(p, q, (i, j), bar, offset)
             part.model = model
             on_bar, on_block = model.coincident
             k = 1 if bar == "first" else 0  # the sliding point is the block's pivot

@@ -14,7 +14,7 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from graphmech.drawing.lettering import subscript
-from graphmech.mechanisms.linkage import PRP, RPP, RRP, Crank, LinkGuide, SliderInput, Triad
+from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, Crank, LinkGuide, SliderInput, Triad
 from graphmech.methods.instant_centres import centre_name, pair
 from graphmech.methods.polygons import PANELS
 from graphmech.problems.instant_centres import check as ic_check
@@ -85,6 +85,13 @@ PHRASES: Phrases = {
     "assur": ("extend {PX} and {QZ}: they meet at S, Assur's special point of the ternary link",
               "延长{PX}与{QZ}交于S，即三副杆上的阿苏尔特殊点",
               "продолжаем {PX} и {QZ} до пересечения в точке S — особой точке Ассура базисного звена"),
+    "tangent": (("draw the circle of radius |e| = {r} mm about {O} and the circle on {OX} as diameter: they meet "
+                 "at F, {side} of {O}→{X}; {X}F is the offset guide bar's line, tangent to the first circle"),
+                ("以{O}为圆心、|e| = {r} mm为半径作圆，再以{OX}为直径作圆，两圆交于F（在{O}→{X}的{side}）；"
+                 "{X}F即偏置导杆的导路线，与前一圆相切"),
+                ("из {O} проводим окружность радиусом |e| = {r} mm и окружность на {OX} как на диаметре; они "
+                 "пересекаются в точке F ({side} от {O}→{X}); {X}F — линия смещённой кулисы, касательная к первой "
+                 "окружности")),
     # the polygons
     "pole velocity": ("choose {mu} and mark the pole p of the velocity polygon",
                       "取{mu}，任取极点p作速度多边形",
@@ -382,6 +389,12 @@ class _Words:
         if key == "triad_joint":
             P, Q = args
             return self.say("triad_joint", P=letter(P), QP=letter(Q) + letter(P), r=num(self.mm(self.b.mech[Q], s.name)))
+        if key == "tangent":  # an offset guide bar's line, tangent to the circle of radius |e| about its pivot
+            O, X = args
+            e = next(d.offset for d in self.b.linkage.dyads
+                     if isinstance(d, RPR) and d.bar_pivot == O and d.block_pivot == X and d.offset != 0.0)
+            return self.say("tangent", O=letter(O), X=letter(X), OX=letter(O) + letter(X), r=num(abs(e) / mu_l),
+                            side=self.say("left" if e > 0.0 else "right"))
         if key == "triad_slider":
             return self.say("triad_slider", P=letter(args[0]))
         if key == "assur":  # a slider leg's line (its outer joint is its pin) is the normal to its guide

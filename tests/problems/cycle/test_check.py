@@ -374,3 +374,27 @@ def test_a_hand_reading_on_the_return_stroke_is_judged_with_the_driver_reversed(
                      "omega_3@12=1.83")
     got = [(m["measured"], m["ok"]) for m in doc["measured"] if m["name"] == "omega_3@12"]
     assert sorted(got) == [(-1.83, True), (1.83, False)]  # position 12: ω₃ < 0 on the way back
+
+
+def test_the_offset_guide_bars_characteristics_and_cycle(tmp_path):
+    """linkage.offset_guide_bar-characteristics: θ = ψ = |arccos((e + a)/d) − arccos((e − a)/d)| with
+    a = 110, d = 350, e = 40 mm; cos γmin = e/(d − a) — every drawn value within 1e-9 of exact/. The
+    same linkage through a turn: the bar's ψ3–φ diagram reads the angle of its line (F→B), not of CB."""
+    got = values(check_json(SCENES / "linkage.offset_guide_bar-characteristics.toml"))
+    assert all(r["rel_error"] <= 1e-9 for r in got.values()), got
+    psi = abs(math.acos(0.15 / 0.35) - math.acos(-0.07 / 0.35))
+    assert got["theta"]["graphical"] == pytest.approx(math.degrees(psi), rel=1e-12)
+    assert got["psi"]["graphical"] == pytest.approx(math.degrees(psi), rel=1e-12)
+    assert got["K"]["graphical"] == pytest.approx((math.pi + psi) / (math.pi - psi), rel=1e-12)
+    assert got["gamma_min"]["graphical"] == pytest.approx(math.degrees(math.acos(0.04 / 0.24)), rel=1e-12)
+    text = (SCENES / "linkage.offset_guide_bar-characteristics.toml").read_text(encoding="utf-8")
+    text = text.replace('show = ["characteristics"]', 'show = ["cycle", "diagrams", "velocity"]')
+    text = re.sub(r"find = \[.*\]", 'find = ["psi_3@4", "psi_3@7", "omega_3@4", "v_B3B2@7"]', text)
+    text = text.replace("[page]", '[cycle]\npositions = 12\nstart = "extreme"\ndiagrams = ["3"]\n'
+                                  "pole_distance_mm = [20, 15]\n\n[page]")
+    (tmp_path / "c.toml").write_text(text.replace("l_mm_per_mm = 3", "l_mm_per_mm = 3\nv_m_s_per_mm = 0.01"),
+                                     encoding="utf-8")
+    cyc = values(check_json(tmp_path / "c.toml"))
+    assert len(cyc) == 4 and all(r["rel_error"] <= 1e-9 for r in cyc.values()), cyc
+    # position 7 is 180° of crank past the extreme where the working stroke starts: ψ3 < ψ, still going
+    assert 0.0 < cyc["psi_3@7"]["exact"] < math.degrees(psi) and cyc["psi_3@4"]["exact"] > 0.0

@@ -274,6 +274,30 @@ def test_rpr_oscillating_block_polygons_lever_and_matrix_agree(friction):
         assert rows["M_b_lever@160"].graphical == pytest.approx(rows["M_b@160"].exact, rel=1e-12)
 
 
+@pytest.mark.parametrize("friction", [False, True])
+@pytest.mark.parametrize("offset", [10, -12])
+def test_an_offset_guide_bars_polygons_lever_and_matrix_agree(friction, offset):
+    """The same block on an offset bar (its line e mm left of B): the block's reaction ⟂ that line, the
+    bar's moments about B give N·L_t + e·f·σ·|N| (the slide's friction has the arm e about B)."""
+    text = (SCENES / "kin.oscillating_block.toml").read_text(encoding="utf-8")
+    text = text.replace("angle = 45", "angle = [45, 160, 300]\nepsilon_rad_s2 = 20")
+    text = text.replace('bar = "first"\n', f'bar = "first"\noffset = {offset}\n')
+    text = text.replace('find = ["l_BC"', 'find = ["R_12", "R_23", "R_43", "R_41", "M_b", "M_b_lever", "F_i3", "M_i3", "l_BC"')
+    fa = analyse_forces(_scene(text + RPR_LOADS + (RPR_FRICTION if friction else "")))
+    rows = {r.name: r for r in fa.rows}
+    for row in fa.rows:
+        if not (row.name.startswith("M_b_lever") and friction):
+            assert row.rel_error < 1e-12, row
+    d, e = fa.kin.point["C"] - fa.kin.point["B"], offset / 1000  # the bar's line: BC = (L_t + i·e)·t
+    t = d / (np.sqrt(np.abs(d) ** 2 - e * e) + 1j * e)
+    r23 = fa.solution.reactions[("2", "3")]
+    r23 = r23[:, 0] + 1j * r23[:, 1] if np.ndim(r23) == 2 else r23
+    along = np.abs((np.conj(t) * r23).real) / np.abs(r23)
+    assert along == pytest.approx(np.full(3, np.sin(np.arctan(0.2)) if friction else 0.0), abs=1e-12)
+    centred = analyse_forces(_scene(text.replace(f"offset = {offset}\n", "") + RPR_LOADS))
+    assert abs(rows["M_b@45"].exact - {r.name: r for r in centred.rows}["M_b@45"].exact) > 1e-3  # e counts
+
+
 # ----------------------------------------------------------------------------- figures
 
 

@@ -356,3 +356,29 @@ def test_the_force_sheet_in_chinese_and_russian_notation_changes_captions_not_ch
         code, out, err = run_cli("check", str(p), *args)
         assert (code, out, err.replace(p.name, ref.name)) == run_cli("check", str(ref), *args)
         assert "μF = 25 N/mm (stated) draws 6" in (err + out)
+
+
+def test_an_offset_guide_bars_free_body_draws_its_arm_and_its_line():
+    """The oscillating block with its bar's line e = 12 mm left of B: the free body of group 2–3 draws
+    the arm BF (|BF| = e, ⟂ FC) and the line FC, not the segment BC; the block lies along FC."""
+    from graphmech.drawing.primitives import Segment, Slider
+    from graphmech.problems.forces.figures import free_body_items
+    from tests.problems.forces.test_check import RPR_LOADS
+
+    text = (SCENES / "kin.oscillating_block.toml").read_text(encoding="utf-8")
+    text = text.replace('bar = "first"\n', 'bar = "first"\noffset = 12\n')
+    text = text.replace('show = ["mechanism", "velocity", "acceleration"]', 'show = ["force_polygons"]')
+    fa = analyse_forces(_scene(text + RPR_LOADS))
+    group = next(gr for gr in fa.solution.groups if "2" in gr.links)
+    items = free_body_items(fa.build, fa.kin, group, {}, {j.point for j in fa.solution.joints}, 0)
+    mu = fa.build.mu_l
+    B, C = (fa.build.to_drawing((complex(fa.kin.point[n][0]).real, complex(fa.kin.point[n][0]).imag)) for n in "BC")
+    segs = [(x.p0, x.p1) for x in items if isinstance(x, Segment)]
+    arm = next(s for s in segs if math.dist(s[0], B) < 1e-9 and math.dist(s[1], C) > 1.0)
+    F = arm[1]
+    assert math.dist(B, F) == pytest.approx(12.0 / 1000 / mu, rel=1e-12)
+    assert (F, C) in segs and not any({s[0], s[1]} == {B, C} for s in segs)
+    u = ((C[0] - F[0]) / math.dist(F, C), (C[1] - F[1]) / math.dist(F, C))
+    assert (F[0] - B[0]) * u[0] + (F[1] - B[1]) * u[1] == pytest.approx(0.0, abs=1e-9)  # BF ⟂ FC
+    block = next(x for x in items if isinstance(x, Slider))
+    assert math.cos(block.angle) * u[1] - math.sin(block.angle) * u[0] == pytest.approx(0.0, abs=1e-12)

@@ -464,3 +464,26 @@ def test_a_class_iii_group_through_a_whole_turn_keeps_its_branch(tmp_path):
         assert len(found) == 2
         assert min(abs(t[0] - c[i]) for t in found) < 1e-12
         assert max(abs(t[0] - c[i]) for t in found) > 0.02
+
+
+def test_the_offset_guide_bar_scene_agrees_with_exact_and_with_its_closed_form():
+    """linkage.offset_guide_bar: every drawn value within 1e-9 of exact/; and exact against the bar's
+    angle by hand, θ3 = ∠CB − atan2(e, t), t = √(CB² − e²), with ω3 = its derivative and the instant
+    centres' ω3 = ω1·P14P13/P34P13 (P23 at infinity ⟂ the line FB, not ⟂ CB)."""
+    got = values(check_json(SCENES / "linkage.offset_guide_bar.toml"))
+    assert len(got) == 24 and all(r["rel_error"] <= 1e-9 for r in got.values()), got
+    e, ac, r, w1 = 0.04, 0.35, 0.11, 5.0
+    for phi in (30.0, 150.0):
+        bx, by = r * math.cos(math.radians(phi)), r * math.sin(math.radians(phi)) + ac  # CB
+        vx, vy = -w1 * r * math.sin(math.radians(phi)), w1 * r * math.cos(math.radians(phi))
+        d2 = bx * bx + by * by
+        t = math.sqrt(d2 - e * e)
+        theta = math.atan2(by, bx) - math.atan2(e, t)
+        w3 = (bx * vy - by * vx) / d2 + e * ((bx * vx + by * vy) / t) / d2
+        assert got[f"theta_3@{phi:g}"]["exact"] == pytest.approx(math.degrees(theta), rel=1e-13)
+        assert got[f"omega_3@{phi:g}"]["exact"] == pytest.approx(w3, rel=1e-12)
+        assert got[f"omega_3_ic@{phi:g}"]["graphical"] == pytest.approx(w3, rel=1e-12)
+        turn = (got[f"dir_P23@{phi:g}"]["graphical"] - math.degrees(theta) - 90.0) % 180.0  # a direction: mod 180°
+        assert min(turn, 180.0 - turn) == pytest.approx(0.0, abs=1e-10)
+        assert got[f"a_k_B3B2@{phi:g}"]["exact"] == pytest.approx(2 * abs(w3) * got[f"v_B3B2@{phi:g}"]["exact"],
+                                                                  rel=1e-12)

@@ -425,9 +425,9 @@ def test_the_reference_kinematics_problems_can_be_written() -> None:
     assert (e.along, e.left) == pytest.approx((p["lBD_mm"] / 1000, p["lDE_mm"] / 1000))
 
 
-def test_an_rpr_has_no_offset_so_an_offset_guide_bar_is_refused_in_one_line(tmp_path):
-    """The bar's line passes through the other link's pivot (docs/scene-format.md, RPR): the centred
-    guide bar goes in, one whose slot misses its pivot by e cannot."""
+def test_an_rpr_takes_an_offset_guide_bar_and_a_zero_offset_is_the_centred_bar(tmp_path):
+    """The bar's line passes through the other link's pivot; ``offset`` puts it at e to the left of
+    its own pivot (docs/scene-format.md, RPR): θ₃ = ∠CB − atan2(e, t), t = √(CB² − e²)."""
     text = """
 [frame]
 A_mm = [0, 0]
@@ -447,15 +447,38 @@ links = ["2", "3"]
 bar = "second"
 """
     p = tmp_path / "g.toml"
-    p.write_text('find = ["omega_3"]\n' + text, encoding="utf-8")
+    p.write_text('find = ["omega_3", "theta_3"]\n' + text, encoding="utf-8")
     code, out, _ = run_cli("check", "--json", str(p))
     # the bar through C and B: ω₃ = ω₁·AB·cos(∠ between AB and BC)/BC, from B = (86.6, 50), C = (0, −200)
     bx, by = 100 * math.cos(math.radians(30)), 100 * math.sin(math.radians(30))
     bc2 = bx ** 2 + (by + 200) ** 2
     w3 = 5.0 * (bx * bx + by * (by + 200)) / bc2  # d/dt atan2(y_B + 200, x_B) with ẋ = −ω·y_B, ẏ = ω·x_B
-    assert code == 0 and json.loads(out)["quantities"][0]["graphical"] == pytest.approx(w3, rel=1e-9)
-    p.write_text('find = ["omega_3"]\n' + text + "offset_mm = 20\n", encoding="utf-8")
-    assert_refused(run_cli("check", str(p)), "g.toml", "dyad[0].offset_mm", "unknown key")
+    dd = 5.0 * (-bx * by + bx * (by + 200))  # CB·d|CB|/dt = CB · v_B
+    centred = [q["graphical"] for q in json.loads(out)["quantities"]]
+    assert code == 0 and centred[0] == pytest.approx(w3, rel=1e-9)
+    p.write_text('find = ["omega_3", "theta_3"]\n' + text + "offset_mm = 0\n", encoding="utf-8")
+    code, out0, _ = run_cli("check", "--json", str(p))
+    assert code == 0 and out0 == out  # e = 0 is the centred bar, to the byte
+    for e in (20.0, -20.0):
+        p.write_text('find = ["omega_3", "theta_3"]\n' + text + f"offset_mm = {e}\n", encoding="utf-8")
+        code, out, _ = run_cli("check", "--json", str(p))
+        t = math.sqrt(bc2 - e * e)
+        # θ₃ = atan2(CB) − atan2(e, t): its rate gains e·ṫ/CB², ṫ = (CB·d|CB|/dt)/t
+        theta = math.degrees(math.atan2(by + 200, bx) - math.atan2(e, t))
+        got = [q["graphical"] for q in json.loads(out)["quantities"]]
+        assert code == 0 and got[0] == pytest.approx(w3 + e * (dd / t) / bc2, rel=1e-9)
+        assert got[1] == pytest.approx(theta, rel=1e-12)
+    p.write_text(text + "offset_mm = 250\n", encoding="utf-8")  # |CB| ≈ 259.8 at 30°: 250 still fits
+    assert run_cli("check", str(p))[0] == 0
+    p.write_text(text.replace("angle_deg = 30", "angle_deg = 270") + "offset_mm = 150\n", encoding="utf-8")
+    assert_refused(run_cli("check", str(p)), "g.toml", "cannot be assembled", "|CB| = 0.1 m < the offset |e| = 0.15 m")
+    # e = |CB| = 100 mm at 270°: B on the circle of radius |e| about C, t = 0 — a dead centre, said so
+    p.write_text('find = ["omega_3"]\n' + text.replace("angle_deg = 30", "angle_deg = [270, 30]")
+                 + "offset_mm = 100\n", encoding="utf-8")
+    code, out, err = run_cli("check", str(p))
+    assert code == 0 and "omega_3@30" in out and "omega_3@270" not in out
+    assert "φ₁ = 270°: construction impossible — the offset bar's line FB (B on the circle of radius |e| about C: " \
+           "a dead centre)" in err
 
 
 # ---------------------------------------------------------------------------- class III groups

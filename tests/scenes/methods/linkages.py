@@ -41,6 +41,14 @@ GUIDE_BAR = Linkage(
     (RPR("B", "C", ("2", "3"), bar="second"),),
 )
 
+#: GUIDE_BAR with its slot e = 0.03 to the left of C: at φ = 0, CB = (0.03, 0.04), t = 0.04, the bar
+#: along û = (0.96, 0.28), its foot F = (−0.0084, −0.0112); by hand in the bar's frame (divide the loop
+#: by û): ω3 = 7.2, ṫ = v_B2B3 = 0.3, α3 = −48.12, ẗ = −2.25, a^k = 2ω3·ṫ = 4.32.
+OFFSET_GUIDE_BAR = Linkage(
+    {"A": (0.0, 0.0), "C": (0.0, -0.04)}, Crank("1", "A", "B", 0.03, 10.0),
+    (RPR("B", "C", ("2", "3"), bar="second", offset=0.03),),
+)
+
 
 def scotch_yoke(epsilon: float = 0.0) -> Linkage:
     """Crank a = 0.04 at ω = 10, a vertical slot, the yoke on the x axis: x_C = a·cos φ,
