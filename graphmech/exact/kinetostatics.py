@@ -23,7 +23,7 @@ from typing import cast
 
 import numpy as np
 
-from graphmech.errors import NotApplicable
+from graphmech.errors import NotApplicable, UnknownName
 from graphmech.exact.linkage import Kinematics, solve as solve_kinematics
 from graphmech.mechanisms.forces import ForceModel
 from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, LinkGuide, SliderInput, Triad
@@ -135,7 +135,7 @@ def _guide_of(linkage: Linkage, b: str) -> Guide | LinkGuide:
             return y.guide
         if isinstance(y, PRP) and b in y.links:
             return y.guides[y.links.index(b)]
-    raise KeyError(b)
+    raise UnknownName(f"link {b} slides on the guide of no RRP or PRP group")
 
 
 def _moving_links(linkage: Linkage) -> list[str]:
