@@ -80,6 +80,12 @@ def test_ic_engine_flywheel(problems):
     assert q["phi_DeltaT_max"]["exact"] == pytest.approx(625 / 6, rel=1e-12)  # 104°10′
     assert q["phi_DeltaT_max"]["exact"] == pytest.approx(p["exact"]["phi_max_deg"], abs=0.5e-4)  # printed to 4 decimals
     assert q["n_max"]["graphical"] == pytest.approx(p["exact"]["n_max_r_min"], rel=1e-12)
+    # n_min where ΔT is smallest (J constant): Md = 10φ N·m/° meets Mr = 350/3 at φ = 35/3° = 11°40′
+    assert q["phi_DeltaT_min"]["exact"] == pytest.approx(35 / 3, rel=1e-12)
+    assert q["phi_DeltaT_min"]["exact"] == pytest.approx(p["exact"]["phi_min_deg"], abs=0.5e-4)
+    # read at the positions (every 5°): 105° and 10°, the nearest to the exact extremes
+    assert (q["phi_DeltaT_max"]["graphical"], q["phi_DeltaT_min"]["graphical"]) == pytest.approx((105, 10), abs=1e-9)
+    assert q["n_min"]["graphical"] == pytest.approx(620 * (1 - 0.01 / 2), rel=1e-12)  # 616.9 rpm
     # the book's J_F = 2.003 is the arithmetic slip the flag names: 5 % below the exact value
     assert q["J_F"]["exact"] / p["book"]["JF_kgm2"] - 1 == pytest.approx(0.0551, abs=1e-3)
     # 36 positions (5°): the extreme at 104.17° falls between two positions

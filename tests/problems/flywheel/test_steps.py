@@ -100,4 +100,5 @@ def test_the_cli_prints_it_numbered():
     lines = out.splitlines()
     assert code == 0 and err == ""
     assert [line.split(". ", 1)[0] for line in lines] == [str(k) for k in range(1, len(lines) + 1)]
-    assert lines[-1] == f"{len(lines)}. n_max = 65.25·30/π = 623.1 r/min"
+    assert lines[-2:] == [f"{len(lines) - 1}. n_max = 65.25·30/π = 623.1 r/min",
+                          f"{len(lines)}. n_min = 64.6·30/π = 616.9 r/min"]

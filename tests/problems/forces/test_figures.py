@@ -249,7 +249,9 @@ def test_a_stated_muF_that_draws_short_vectors_is_warned_about_and_the_table_sta
     code, out, err = run_cli("check", str(SCENES / "force.sixbar_kinetostatic.toml"))
     assert code == 0
     assert re.search(r"^F_i4 +1\.286 +25 ", out, re.M)  # the row itself as before
-    (warning,) = err.splitlines()
+    # the other line: ω2 = v_CB/l_BC, whose v_CB is 8.9 mm of the velocity polygon at μv = 0.02
+    short_v, warning = err.splitlines()
+    assert short_v.startswith("force.sixbar_kinetostatic.toml: warning: omega_2 is drawn 8.91 mm long")
     assert warning.startswith("force.sixbar_kinetostatic.toml: warning: μF = 25 N/mm (stated) draws 6 of the "
                               "forces asked for shorter than 10 mm, where reading to ±0.5 mm errs by more than 5 %: "
                               "F_i4 1.286 mm (±39 %), F_i2 1.309 mm (±38 %), F_i3 1.356 mm (±37 %), "
@@ -272,10 +274,11 @@ def test_a_chosen_muF_draws_the_forces_asked_for_10_mm_long_where_the_page_allow
     assert min(abs(r.drawn_mm) for r in rows.values()) == pytest.approx(174.786222 / 10.0, rel=1e-8)
     # the inertia forces too (32 N) would need 2.5 N/mm: R_23 644 mm long, more than the page allows
     fa = analyse_forces(_scene(text))
-    assert fa.scales["F"] == 10.0 and len(fa.warnings) == 1
-    assert fa.warnings[0].startswith("μF = 10 N/mm (chosen: a finer round scale does not fit the page) draws 3 of "
+    assert fa.scales["F"] == 10.0 and len(fa.warnings) == 2
+    assert fa.warnings[0].startswith("omega_2 is drawn 8.91 mm long")  # v_CB on the velocity polygon
+    assert fa.warnings[1].startswith("μF = 10 N/mm (chosen: a finer round scale does not fit the page) draws 3 of "
                                      "the forces asked for shorter than 10 mm")
-    assert "F_i4 3.214 mm (±16 %)" in fa.warnings[0]
+    assert "F_i4 3.214 mm (±16 %)" in fa.warnings[1]
 
 
 def test_a_force_polygon_with_short_vectors_gets_a_detail_at_a_round_muF():

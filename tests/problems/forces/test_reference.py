@@ -69,8 +69,27 @@ def test_sixbar_balancing_moment_three_ways(sixbar, problems):
     assert q["M_b"]["graphical"] == pytest.approx(ref["Mb_Nm"], rel=1e-13)  # force polygons
     assert q["M_b"]["exact"] == pytest.approx(ref["Mb_Nm"], rel=1e-13)  # matrix method
     assert q["M_b_lever"]["graphical"] == pytest.approx(ref["Mb_virtual_power_Nm"], rel=1e-13)  # Zhukovsky
-    # the one warning: μF = 25 N/mm draws the inertia forces and R_05 under 10 mm (test_figures)
-    assert [w[:49] for w in sixbar["warnings"]] == ["μF = 25 N/mm (stated) draws 6 of the forces asked"]
+    # the warnings: μF = 25 N/mm draws the inertia forces and R_05 under 10 mm (test_figures), and
+    # v_CB, which gives ω2, is 8.9 mm of the velocity polygon (the lever) at μv = 0.02
+    assert [w[:49] for w in sixbar["warnings"]] == ["omega_2 is drawn 8.91 mm long at μv = 0.02 (m/s)/",
+                                                    "μF = 25 N/mm (stated) draws 6 of the forces asked"]
+
+
+def test_sixbar_kinematics_the_bank_lists(sixbar, problems):
+    """The velocities and accelerations the bank gives for φ1 = 120°, from the polygons the loads
+    are found from. The slider's mass is at F, so a_F is both a5 and aS5; v_F is signed along +x."""
+    ref = problems["force.sixbar_kinetostatic"]["exact"]
+    q = values(sixbar)
+    rows = {"omega_2": "omega2_rad_s", "omega_3": "omega3_rad_s", "omega_4": "omega4_rad_s", "v_F": "v5_m_s",
+            "alpha_2": "alpha2_rad_s2", "alpha_3": "alpha3_rad_s2", "alpha_4": "alpha4_rad_s2",
+            "a_F": "a5_m_s2", "a_S2": "aS2_m_s2", "a_S3": "aS3_m_s2", "a_S4": "aS4_m_s2"}
+    for name, key in rows.items():
+        assert q[name]["graphical"] == pytest.approx(ref[key], rel=1e-12), name
+        assert q[name]["exact"] == pytest.approx(ref[key], rel=1e-12), name
+    assert ref["aS5_m_s2"] == ref["a5_m_s2"]
+    # the working stroke: the slider moves towards −x (P_r acts), and the figures the book reads off
+    assert q["v_F"]["graphical"] == pytest.approx(-1.7687158224833306, rel=1e-12)
+    assert q["a_S3"]["drawn_mm"] == pytest.approx(ref["aS3_m_s2"] / 0.1, rel=1e-12)  # at μa
 
 
 def test_sixbar_with_friction(sixbar_friction, problems):
