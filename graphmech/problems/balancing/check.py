@@ -207,7 +207,7 @@ def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | Non
     if name in SPLIT_QUANTITIES:
         return _split_values(an, name)
     if name in SPEED_QUANTITIES:
-        w2 = float(p.omega) ** 2
+        w2 = (p.omega or 0.0) ** 2  # units() offers F_unbalanced only with a speed
         drawn_sum = abs(sum((c.vector for c in an.corrections), 0j))  # −Σ mᵢrᵢ as the polygons close it
         exact_sum = abs(sum((cmath.rect(u.m * u.r, u.theta) for u in p.masses), 0j))
         return w2 * drawn_sum, w2 * exact_sum, None, 1.0, w2 * an.size
