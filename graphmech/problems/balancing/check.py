@@ -20,7 +20,9 @@ from graphmech.exact import balancing as ex
 from graphmech.geometry.primitives import degrees_0_360
 from graphmech.methods import balancing as gm
 from graphmech.scales import format_scale, round_scale
-from graphmech.problems.balancing.scene import DEFAULT_FIND, QUANTITIES, BalancingProblem
+from graphmech.geometry.kernels import ScalarOps, intersect_lines
+from graphmech.problems.balancing.scene import (DEFAULT_FIND, QUANTITIES, SPEED_QUANTITIES, SPLIT_QUANTITIES,
+                                                BalancingProblem)
 from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
@@ -47,6 +49,8 @@ class BalancingAnalysis:
     scales: dict[str, float] = field(default_factory=dict)
     stated: set[str] = field(default_factory=set)
     extra_measured: tuple[tuple[str, float], ...] = ()
+    #: the split's corner K on the polygon (mm): start of W_b → K ∥ α₁, K → o ∥ α₂
+    split_corner: tuple[float, float] | None = None
 
     def scale_notes(self) -> list[str]:
         return [format_scale(k, v) + ("" if k in self.stated else " (chosen)") for k, v in self.scales.items()]
@@ -67,14 +71,23 @@ class BalancingAnalysis:
         return max([abs(u.z) for u in p.masses] + [abs(z) for z in p.planes]) / span
 
 
+def units(p: BalancingProblem) -> dict[str, str]:
+    """The quantities a balancing problem can give: its type's, the split's, F_unbalanced."""
+    return {**QUANTITIES[p.type], **(SPLIT_QUANTITIES if p.split else {}), **(SPEED_QUANTITIES if p.omega else {})}
+
+
 def requested(scene: Scene[BalancingProblem], extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
     p: BalancingProblem = scene.problem
-    q = QUANTITIES[p.type]
+    q = units(p)
     names = list(scene.find) or list(DEFAULT_FIND[p.type])
     problems = []
     for key, name in [(f"find[{i}]", n) for i, n in enumerate(scene.find)] + \
             [(k, n) for k, n, _ in measured_entries(scene, extra)]:
-        if name not in q:
+        if name in SPLIT_QUANTITIES and not p.split:
+            problems.append((key, f"{name} needs [balancing] split_angles (a static balance's two directions)"))
+        elif name in SPEED_QUANTITIES and not p.omega:
+            problems.append((key, f"{name} needs [balancing] speed (e.g. speed_rpm)"))
+        elif name not in q:
             problems.append((key, f"unknown {p.type} balancing quantity {name!r}{close_names(name, q)}"))
     if problems:
         raise SceneError(problems, scene.source)
@@ -104,6 +117,8 @@ def analyse_balancing(scene: Scene[BalancingProblem], extra_measured: tuple[tupl
     else:  # a round μW that draws the longest side POLYGON_MM long
         an.scales["W"] = round_scale(longest / POLYGON_MM)
     an.corrections = _balance(p, masses, an.scales["W"])
+    if p.split is not None and not an.corrections[0].balanced:
+        an.split_corner = _split_corner(an.corrections[0].closing, p.split)
     for c in an.corrections:
         if c.balanced and c.plane and not any(share for _, share in c.shares):
             an.warnings.append(f"plane {c.plane}: every mass lies in the other correction plane, so none has a "
@@ -146,6 +161,26 @@ def _exact(an: BalancingAnalysis) -> tuple[complex, ...]:
     return ex.dynamic_correction(us, *_planes(p))
 
 
+def _split_corner(closing: gm.DrawnSide, split: tuple[float, float]) -> tuple[float, float]:
+    """The force-polygon construction of the split: through the closing side's start a line ∥ α₁,
+    through its end (o) a line ∥ α₂; they meet at the corner K (mm)."""
+    a1, a2 = split
+    return intersect_lines(ScalarOps(), (closing.start[0], closing.start[1], math.cos(a1), math.sin(a1)),
+                           (closing.end[0], closing.end[1], math.cos(a2), math.sin(a2)))
+
+
+def split_exact(w: complex, split: tuple[float, float]) -> tuple[float, float]:
+    """W = W₁e^{iα₁} + W₂e^{iα₂} solved for (W₁, W₂) by Cramer's rule (the 2×2 linear solve).
+
+    >>> [round(x, 12) for x in split_exact(1 + 1j, (0.0, math.pi / 2))]
+    [1.0, 1.0]
+    """
+    a1, a2 = split
+    det = math.sin(a2 - a1)
+    return ((w.real * math.sin(a2) - w.imag * math.cos(a2)) / det,
+            (w.imag * math.cos(a1) - w.real * math.sin(a1)) / det)
+
+
 def _deg360(theta: float) -> float:
     """An angle in degrees in [0, 360) (−0° and −1e-17° are 0°, not 360°)."""
     g = math.degrees(theta) % 360.0
@@ -169,6 +204,13 @@ def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | Non
         if name == "residual_force":
             return force, 0.0, None, 1.0, an.size
         return moment, 0.0, None, 1.0, an.size * span
+    if name in SPLIT_QUANTITIES:
+        return _split_values(an, name)
+    if name in SPEED_QUANTITIES:
+        w2 = (p.omega or 0.0) ** 2  # units() offers F_unbalanced only with a speed
+        drawn_sum = abs(sum((c.vector for c in an.corrections), 0j))  # −Σ mᵢrᵢ as the polygons close it
+        exact_sum = abs(sum((cmath.rect(u.m * u.r, u.theta) for u in p.masses), 0j))
+        return w2 * drawn_sum, w2 * exact_sum, None, 1.0, w2 * an.size
     plane = name.split("_", 1)[1]
     k = 0 if plane in ("b", "I") else 1
     c, w = an.corrections[k], _exact(an)[k]
@@ -183,12 +225,32 @@ def _values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | Non
     return g, g - _angle_diff_deg(g, e), None, 1.0, 360.0
 
 
+def _split_values(an: BalancingAnalysis, name: str) -> tuple[float, float, float | None, float, float]:
+    """W_b1, W_b2 (m_b1, m_b2): the sides of the split triangle measured × μW, signed along α."""
+    p, c = an.problem, an.corrections[0]
+    split = cast("tuple[float, float]", p.split)
+    k = 0 if name.endswith("1") else 1
+    exact = split_exact(_exact(an)[0], split)[k]
+    if an.split_corner is None:  # already balanced: nothing to split
+        g, drawn = 0.0, 0.0
+    else:
+        K, s = an.split_corner, c.closing
+        a, b = (s.start, K) if k == 0 else (K, s.end)
+        d = (b[0] - a[0], b[1] - a[1])
+        drawn = math.hypot(*d)
+        sign = 1.0 if d[0] * math.cos(split[k]) + d[1] * math.sin(split[k]) >= 0 else -1.0
+        g = sign * drawn * an.scales["W"]
+    if name.startswith("m"):
+        return g / c.r_b, exact / c.r_b, drawn, an.scales["W"] / c.r_b, an.size / c.r_b
+    return g, exact, drawn, an.scales["W"], an.size
+
+
 def _row(an: BalancingAnalysis, name: str) -> Row | None:
     v = _values(an, name)
     if v is None:
         return None
     g, e, drawn, scale, char = v
-    unit = QUANTITIES[an.problem.type][name]
+    unit = units(an.problem)[name]
     return Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), char, 1e-300),
                an.split_condition > ILL_SPLIT)
 
@@ -200,7 +262,7 @@ def judge_balancing(an: BalancingAnalysis, precision_mm: float | None = None) ->
     out = []
     for _key, name, value in measured_entries(an.scene, an.extra_measured):
         v = _values(an, name)
-        unit = QUANTITIES[an.problem.type][name]
+        unit = units(an.problem)[name]
         if v is None:
             out.append(Verdict(name, value, 0.0, 0.0, False, unit))
             continue
@@ -214,7 +276,7 @@ def judge_balancing(an: BalancingAnalysis, precision_mm: float | None = None) ->
     return out
 
 
-__all__ = ["BalancingAnalysis", "analyse_balancing", "judge_balancing", "requested"]
+__all__ = ["BalancingAnalysis", "analyse_balancing", "judge_balancing", "requested", "split_exact", "units"]
 
 
 def balancing_figure(an: BalancingAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
@@ -223,4 +285,4 @@ def balancing_figure(an: BalancingAnalysis, page: tuple[float, float], footer: t
 
     p = an.problem
     return balancing_sheet(an.scene.title, p.type, p.masses, p.planes, an.corrections, an.scales["W"],
-                           list(an.scene.show), page, footer, an.scene.page.notation)
+                           list(an.scene.show), page, footer, an.scene.page.notation, an.split_corner)

@@ -91,6 +91,21 @@ def polygon_items(c: Correction) -> list[Primitive]:
     return items
 
 
+def split_items(c: Correction, corner: tuple[float, float]) -> list[Primitive]:
+    """The split of the closing side along two given directions (001 8-4): W_{b1} from its start
+    to the corner K, W_{b2} from K to o, the corner lettered K."""
+    items: list[Primitive] = []
+    for name, a, b in (("W_{b1}", c.closing.start, corner), ("W_{b2}", corner, c.closing.end)):
+        d = (b[0] - a[0], b[1] - a[1])
+        n = math.hypot(*d)
+        if n < 1e-9:  # the correction lies along the other direction: this side is a point
+            continue
+        items += [Arrow(a, b, "result"),
+                  Label(name, ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2), ((-d[1] / n, d[0] / n),), LETTER)]
+    items.append(Label("K", corner, (), LETTER))
+    return items
+
+
 def rotor_items(masses: Sequence[Any], corrections: Sequence[Correction], mu_l: float) -> list[Primitive]:
     R = max([u.r for u in masses] + [c.r_b for c in corrections]) * 1.15 / mu_l
     # the centre lines dash-dot, past the rotor's circle
@@ -128,7 +143,8 @@ def side_items(masses: Sequence[Any], planes: tuple[float, float], mu_z: float) 
 
 def balancing_sheet(title: str, kind: str, masses: Sequence[Any], planes: tuple[float, float] | None,
                     corrections: Sequence[Correction], mu_W: float, show: Sequence[str], page: tuple[float, float],
-                    footer: tuple[str, ...] = (), notation: str = "en") -> Sheet:
+                    footer: tuple[str, ...] = (), notation: str = "en",
+                    split_corner: tuple[float, float] | None = None) -> Sheet:
     """The sheet: the rotor (end view; a dynamic one also from the side) and a polygon per plane,
     captions in ``notation``; each panel's ``scales`` its paper's."""
     panels: list[Panel] = []
@@ -154,9 +170,10 @@ def balancing_sheet(title: str, kind: str, masses: Sequence[Any], planes: tuple[
                 notes = (scale_text("W", mu_W),
                          f"m_{{b}}r_{{b}} = {number(c.W)} kg·m, θ_{{b}} = {number(degrees_0_360(float(c.theta)))}°, "
                          f"m_{{b}} = {number(c.m_b)} kg")
-            panels.append(Panel(f"polygon{c.plane}", name, tuple(polygon_items(c)), notes, row=1,
+            items = polygon_items(c) + (split_items(c, split_corner) if split_corner is not None else [])
+            panels.append(Panel(f"polygon{c.plane}", name, tuple(items), notes, row=1,
                                 scales=(("W", mu_W),)))
     return Sheet(title, tuple(panels), page, footer)
 
 
-__all__ = ["BAL_WORDS", "bal_word", "balancing_sheet", "polygon_items", "rotor_items", "side_items"]
+__all__ = ["BAL_WORDS", "bal_word", "balancing_sheet", "polygon_items", "rotor_items", "side_items", "split_items"]

@@ -8,6 +8,7 @@ scene (key paths, one-line messages, all problems collected); called from
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from graphmech.mechanisms.rotor import RotorMass
@@ -23,6 +24,13 @@ QUANTITIES = {
     "dynamic": {"W_I": "kg·m", "m_I": "kg", "theta_I": "deg", "W_II": "kg·m", "m_II": "kg", "theta_II": "deg",
                 "residual_force": "kg·m", "residual_moment": "kg·m²"},
 }
+#: The correction split into two given directions (static, ``split_angles``; seed 001 8-4).
+SPLIT_QUANTITIES = {"W_b1": "kg·m", "W_b2": "kg·m", "m_b1": "kg", "m_b2": "kg"}
+#: The unbalanced rotor's centrifugal force at ``speed`` (seed 001 8-1).
+SPEED_QUANTITIES = {"F_unbalanced": "N"}
+#: Two split directions whose |sin| of the angle between them is below this are parallel: the
+#: closing side cannot be resolved along them.
+PARALLEL_SPLIT = 1e-9
 DEFAULT_FIND = {"static": ("W_b", "m_b", "theta_b", "residual_force"),
                 "dynamic": ("W_I", "m_I", "theta_I", "W_II", "m_II", "theta_II", "residual_force", "residual_moment")}
 MAX_MASSES = 50
@@ -42,6 +50,8 @@ class BalancingProblem:
     masses: tuple[RotorMass, ...]
     r_b: tuple[float, ...]
     planes: tuple[float, float] | None = None
+    split: tuple[float, float] | None = None  # α₁, α₂ (rad): the correction split along them
+    omega: float | None = None  # the rotor's speed, rad/s, for F_unbalanced
 
 
 def read_balancing(top: Reader) -> BalancingProblem | None:
@@ -79,6 +89,8 @@ def read_balancing(top: Reader) -> BalancingProblem | None:
     elif r.present("planes") is not None:
         r.quantity("planes", "length", required=False)
         r.problem(r.at(r.present("planes") or "planes"), 'a static balance has one plane: no planes (write type = "dynamic")')
+    split = _split(r, dynamic)
+    omega = r.scalar("speed", "omega", required=False, positive=True)
     masses = []
     items = r.tables_at("mass")
     if not items and "mass" not in r.table:
@@ -119,7 +131,26 @@ def read_balancing(top: Reader) -> BalancingProblem | None:
     r.finish()
     if kind is None or radii is None or (dynamic and planes is None) or len(masses) != len(items) or not masses:
         return None
-    return BalancingProblem(kind, tuple(masses), radii, planes)
+    return BalancingProblem(kind, tuple(masses), radii, planes, split, omega)
+
+
+def _split(r: Reader, dynamic: bool) -> tuple[float, float] | None:
+    """``split_angles``: two non-parallel directions (static only), in rad."""
+    given = r.quantity("split_angles", "angle", required=False)
+    if given is None:
+        return None
+    path = r.at(given.key)
+    if dynamic:
+        r.problem(path, 'a split into two directions is for a static balance (type = "static")')
+        return None
+    aa = r.numbers(given.value, path, 2, shape="[alpha_1, alpha_2]")
+    if aa is None:
+        return None
+    a1, a2 = given.si(aa[0]), given.si(aa[1])
+    if abs(math.sin(a2 - a1)) < PARALLEL_SPLIT:
+        r.problem(path, f"the two directions are parallel ({math.degrees(a1):g}° and {math.degrees(a2):g}°): no split")
+        return None
+    return a1, a2
 
 
 def _radii(r: Reader, count: int) -> tuple[float, ...] | None:
@@ -140,5 +171,5 @@ def _radii(r: Reader, count: int) -> tuple[float, ...] | None:
     return out
 
 
-__all__ = ["BALANCING_SHOW_CHOICES", "BALANCING_TYPES", "BalancingProblem", "DEFAULT_FIND", "QUANTITIES", "RotorMass",
+__all__ = ["BALANCING_SHOW_CHOICES", "BALANCING_TYPES", "BalancingProblem", "DEFAULT_FIND", "QUANTITIES", "RotorMass", "SPEED_QUANTITIES", "SPLIT_QUANTITIES",
            "read_balancing"]

@@ -66,6 +66,22 @@ PHRASES: Phrases = {
     "angle": ("measure the direction of {Wb} from the x axis: {th} = {value}° — the correction mass goes there",
               "量得{Wb}与x轴的夹角：{th} = {value}°，平衡质量即加在此方向上",
               "измеряем угол {Wb} с осью x: {th} = {value}° — в этом направлении ставим корректирующую массу"),
+    "split": ("split {Wb} along the given directions α₁ = {a1}° and α₂ = {a2}°: through the start of {Wb} draw a "
+              "line ∥ α₁, through o a line ∥ α₂; they meet at K: {Wb1} = {mm1} mm × {mu} = {W1} kg·m, "
+              "{Wb2} = {mm2} mm × {mu} = {W2} kg·m (a negative one points against its direction); the masses "
+              "at r_b: m_b1 = {m1} kg, m_b2 = {m2} kg",
+              "将{Wb}沿给定的α₁ = {a1}°、α₂ = {a2}°两方向分解：过{Wb}的起点作α₁方向的直线，过o点作α₂方向的直线，"
+              "交于K：{Wb1} = {mm1} mm × {mu} = {W1} kg·m，{Wb2} = {mm2} mm × {mu} = {W2} kg·m（负值表示与该方向相反）；"
+              "r_b处的平衡质量m_b1 = {m1} kg，m_b2 = {m2} kg",
+              "раскладываем {Wb} по заданным направлениям α₁ = {a1}° и α₂ = {a2}°: через начало {Wb} проводим "
+              "прямую ∥ α₁, через o — прямую ∥ α₂; они пересекаются в K: {Wb1} = {mm1} mm × {mu} = {W1} kg·m, "
+              "{Wb2} = {mm2} mm × {mu} = {W2} kg·m (отрицательное — против направления); массы на r_b: m_b1 = {m1} kg, "
+              "m_b2 = {m2} kg"),
+    "centrifugal": ("before balancing, at ω = {w} rad/s the rotor's centrifugal force F = ω²·|Σ mᵢrᵢ| = {w}² × "
+                    "{W} kg·m = {F} N",
+                    "平衡前，ω = {w} rad/s时转子的离心力F = ω²·|Σ mᵢrᵢ| = {w}² × {W} kg·m = {F} N",
+                    "до балансировки при ω = {w} rad/s центробежная сила ротора F = ω²·|Σ mᵢrᵢ| = {w}² × "
+                    "{W} kg·m = {F} N"),
     "residual force": ("check: with the correction masses added, |Σ mᵢrᵢ| = {value} kg·m — the force polygon closes",
                        "校核：加平衡质量后，|Σ mᵢrᵢ| = {value} kg·m，多边形封闭",
                        "проверка: с корректирующими массами |Σ mᵢrᵢ| = {value} kg·m — план замкнут"),
@@ -116,6 +132,17 @@ def protocol(an: BalancingAnalysis) -> list[str]:
     out.append(say("choose", mu=scale_choice("W", mu, "W" in an.stated, notation)))
     for c in an.corrections:
         out += _polygon(c, p, rows, mu, say)
+    split = [rows.get(n) for n in ("W_b1", "W_b2")]
+    if p.split is not None and split[0] is not None and split[1] is not None:
+        c = an.corrections[0]
+        out.append(say("split", Wb="W_b", Wb1="W_b1", Wb2="W_b2",
+                       a1=num(degrees_0_360(p.split[0])), a2=num(degrees_0_360(p.split[1])), mu=num(mu),
+                       mm1=num(split[0].drawn_mm or 0.0), mm2=num(split[1].drawn_mm or 0.0),
+                       W1=num(split[0].graphical), W2=num(split[1].graphical),
+                       m1=num(split[0].graphical / c.r_b), m2=num(split[1].graphical / c.r_b)))
+    if "F_unbalanced" in rows and p.omega is not None:
+        F = rows["F_unbalanced"].graphical
+        out.append(say("centrifugal", w=num(p.omega), W=num(F / p.omega ** 2), F=num(F)))
     if "residual_force" in rows:
         out.append(say("residual force", value=num(rows["residual_force"].graphical)))
     if "residual_moment" in rows:

@@ -67,3 +67,16 @@ def test_captions_in_the_notation_marks_and_dash_dot_centre_lines(tmp_path):
     centre = [i for i in panels["rotor"].items + panels["side"].items if isinstance(i, Segment) and i.dashdot]
     assert len(centre) == 3  # two across the end view, the axis in the side view
     assert panels["polygonI"].notes[1] == "m_{b}r_{b} = 2.783 kg·m, θ_{b} = 5.942°, m_{b} = 5.566 kg"
+
+
+def test_the_split_is_drawn_in_the_polygon_panel():
+    an = analyse_balancing(load_scene(SCENES / "bal.split_two_directions.toml"))
+    sheet = balancing_figure(an, (297.0, 210.0))
+    polygon = next(p for p in sheet.panels if p.name == "polygon")
+    closing = an.corrections[0].closing
+    K = an.split_corner
+    arrows = [(a.p0, a.p1) for a in polygon.items if isinstance(a, Arrow) and a.role == "result"]
+    assert (closing.start, K) in arrows and (K, closing.end) in arrows
+    # the sides along 180° and 270°, 0.0366 and 0.1366 kg·m at μW = 0.004 kg·m/mm
+    assert K[1] == pytest.approx(closing.start[1], abs=1e-12) and K[0] == pytest.approx(closing.end[0], abs=1e-12)
+    assert closing.start[0] - K[0] == pytest.approx(0.1 * (math.cos(math.radians(30)) - 0.5) / 0.004, rel=1e-9)

@@ -95,3 +95,36 @@ def test_two_correction_radii_are_one_per_plane():
     p = parse_scene(data, "r.toml").problem
     assert p.r_b == pytest.approx((0.05, 0.06), rel=1e-15) and p.planes == pytest.approx((0.0, 0.1), rel=1e-15)
     assert p.masses[0].z == pytest.approx(0.15, rel=1e-15)
+
+
+@pytest.mark.parametrize(("lines", "words"), [
+    ('type = "static"\nsplit_angles_deg = [30, 210]',
+     "balancing.split_angles_deg: the two directions are parallel (30° and 210°): no split"),
+    ('type = "static"\nsplit_angles_deg = [45, 45]',
+     "balancing.split_angles_deg: the two directions are parallel (45° and 45°): no split"),
+    ('type = "dynamic"\nplanes_mm = [0, 100]\nsplit_angles_deg = [0, 90]',
+     'balancing.split_angles_deg: a split into two directions is for a static balance (type = "static")'),
+    ('type = "static"\nspeed_rpm = -5', "balancing.speed_rpm"),
+])
+def test_a_bad_split_or_speed_is_refused_in_one_line(tmp_path, lines, words):
+    p = write(tmp_path, f"""
+[balancing]
+{lines}
+correction_radius_mm = 100
+[[balancing.mass]]
+m_kg = 1
+r_mm = 100
+angle_deg = 0
+z_mm = 10
+""".replace("z_mm = 10\n", "z_mm = 10\n" if "dynamic" in lines else ""))
+    code, out, err = run_cli("check", str(p))
+    assert code == 2 and out == "" and err.count("\n") == 1 and err.startswith("r.toml: ")
+    assert words in err, err
+
+
+def test_the_split_and_speed_are_read_in_si():
+    s = load_scene(SCENES / "bal.split_two_directions.toml")
+    assert s.problem.split == pytest.approx((math.pi, 1.5 * math.pi), rel=1e-15)
+    assert s.problem.omega is None
+    s = load_scene(SCENES / "bal.rotor_centrifugal.toml")
+    assert s.problem.omega == pytest.approx(5000 * math.pi / 30, rel=1e-15)

@@ -23,10 +23,12 @@ def parse_scene(text: str, source: str = "b.toml"):
 ANCHOR = {"W_b": "the closing side W_b,", "m_b": "m_b = ", "theta_b": "θ_b = ",
           "W_I": "the closing side W_bᴵ,", "m_I": "m_bᴵ = ", "theta_I": "θ_bᴵ = ",
           "W_II": "the closing side W_bᴵᴵ,", "m_II": "m_bᴵᴵ = ", "theta_II": "θ_bᴵᴵ = ",
-          "residual_force": "|Σ mᵢrᵢ| = ", "residual_moment": "|Σ mᵢrᵢzᵢ|"}
+          "residual_force": "|Σ mᵢrᵢ| = ", "residual_moment": "|Σ mᵢrᵢzᵢ|",
+          "W_b1": "W_b1 = ", "W_b2": "W_b2 = ", "m_b1": "m_b1 = ", "m_b2": "m_b2 = ", "F_unbalanced": "F = ω²"}
 
 
-@pytest.mark.parametrize("name", ["bal.disc_static", "bal.rotor_dynamic"])
+@pytest.mark.parametrize("name", ["bal.disc_static", "bal.rotor_dynamic", "bal.split_two_directions",
+                                  "bal.rotor_centrifugal"])
 def test_every_number_read_is_the_check_tables(name):
     scene = load_scene(SCENES / f"{name}.toml")
     lines, rows = steps(scene), check(scene)[0].rows
@@ -116,3 +118,14 @@ def test_the_cli_prints_it_numbered():
     assert code == 0 and err == "" and len(lines) == 14
     assert lines[10] == "11. the closing side W_b, from the end of W₄ back to o: measure 16.12 mm: W_b = 16.12 × 0.05 = " \
                         "0.8062 kg·m"
+
+
+def test_the_split_and_the_centrifugal_force_are_constructed_in_words():
+    lines = steps(load_scene(SCENES / "bal.split_two_directions.toml"))
+    assert lines[-1] == ("split W_b along the given directions α₁ = 180° and α₂ = 270°: through the start of W_b draw "
+                         "a line ∥ α₁, through o a line ∥ α₂; they meet at K: W_b1 = 9.151 mm × 0.004 = 0.0366 kg·m, "
+                         "W_b2 = 34.15 mm × 0.004 = 0.1366 kg·m (a negative one points against its direction); the "
+                         "masses at r_b: m_b1 = 0.366 kg, m_b2 = 1.366 kg")
+    lines = steps(load_scene(SCENES / "bal.rotor_centrifugal.toml"))
+    assert lines[-1] == ("before balancing, at ω = 523.6 rad/s the rotor's centrifugal force F = ω²·|Σ mᵢrᵢ| = "
+                         "523.6² × 0.5 kg·m = 137100 N")
