@@ -5,8 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
-from hypothesis import strategies as st
+from hypothesis import HealthCheck, given, settings
 
 from graphmech.errors import OutOfDomain
 from graphmech.exact.freudenstein import (
@@ -15,7 +14,8 @@ from graphmech.exact.freudenstein import (
     output_angle,
     structural_error,
 )
-from graphmech.methods.freudenstein import Function, design, named_function
+from graphmech.methods.freudenstein import design, named_function
+from tests.methods.test_freudenstein import OWN_FOURBARS, own_design, own_output
 
 D = math.radians
 
@@ -128,33 +128,10 @@ def test_refusals():
         structural_error(FourBar(1.0, 1.0, 1.0, 1.0), np.log10, 1, 2, 0.0, 1.0, 0.0, 1.0, np.array([]))
 
 
-def own_output(a, b, c, d, side):
-    """ψ(φ) with A = 0, D = (−d, 0), by the law of cosines in triangle B C D (written apart)."""
-    def psi(phi):
-        DB = a * np.exp(1j * phi) + d
-        L = np.abs(DB)
-        return np.angle(DB) + side * np.arccos((c * c + L * L - b * b) / (2 * c * L))
-    return psi
-
-
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
-@given(st.floats(0.3, 3.0), st.floats(0.3, 3.0), st.floats(0.3, 3.0), st.floats(0.0, 2 * math.pi),
-       st.floats(0.3, 1.5), st.sampled_from([1.0, -1.0]))
+@given(*OWN_FOURBARS)
 def test_a_four_bars_own_function_has_zero_structural_error(a, b, c, phi0, dphi, side):
-    psi = own_output(a, b, c, 1.0, side)
-    phis = phi0 + dphi * np.linspace(0, 1, 201)
-    DB = np.abs(a * np.exp(1j * phis) + 1.0)
-    assume(np.all(np.abs(c * c + DB * DB - b * b) < 0.95 * 2 * c * DB))
-    assume(np.min(DB) > 0.1)  # B well away from D: ψ defined (no change point)
-    ref = float(psi(np.array(phi0))[()])
-    f = Function("own", lambda x: ref + np.angle(np.exp(1j * (psi(x) - ref))))
-    y0, y1 = f(np.array([phi0, phi0 + dphi]))
-    assume(abs(y1 - y0) > 0.05)
-    try:
-        r = design(f, phi0, phi0 + dphi, phi0, dphi, y0, y1 - y0)
-    except OutOfDomain:
-        assume(False)
-    assume(r.condition < 1e6)
+    r = own_design(a, b, c, phi0, dphi, side)
     s = error_of(r, samples=201)
     assert s.assembles and s.branch in ("left", "right")
     assert s.zero_at_points(1e-9)

@@ -149,15 +149,14 @@ def own_output(a, b, c, d, side):
     return psi
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
-@given(st.floats(0.3, 3.0), st.floats(0.3, 3.0), st.floats(0.3, 3.0), st.floats(0.0, 2 * math.pi),
-       st.floats(0.3, 1.5), st.sampled_from([1.0, -1.0]))
-def test_a_four_bars_own_function_gives_back_its_lengths(a, b, c, phi0, dphi, side):
+def own_design(a, b, c, phi0, dphi, side):
+    """The generator designed for the four-bar (a, b, c, d = 1)'s own ψ(φ) over φ₀ … φ₀ + Δφ (the
+    input is its own x), where it assembles away from its toggles; hypothesis rejects the rest."""
     psi = own_output(a, b, c, 1.0, side)
     phis = phi0 + dphi * np.linspace(0, 1, 201)
     DB = np.abs(a * np.exp(1j * phis) + 1.0)
-    assume(np.all(np.abs(c * c + DB * DB - b * b) < 0.95 * 2 * c * DB))
-    assume(np.min(DB) > 0.1)  # B well away from D: ψ defined (no change point)  # assembles, away from toggles
+    assume(np.all(np.abs(c * c + DB * DB - b * b) < 0.95 * 2 * c * DB))  # assembles, away from toggles
+    assume(np.min(DB) > 0.1)  # B well away from D: ψ defined (no change point)
     ref = float(psi(np.array(phi0))[()])
     f = Function("own", lambda x: ref + np.angle(np.exp(1j * (psi(x) - ref))))
     y0, y1 = f(np.array([phi0, phi0 + dphi]))
@@ -167,5 +166,17 @@ def test_a_four_bars_own_function_gives_back_its_lengths(a, b, c, phi0, dphi, si
     except OutOfDomain:
         assume(False)
     assume(r.condition < 1e6)
+    return r
+
+
+#: The four-bars a generator is asked to reproduce: a, b, c, φ₀, Δφ, the branch's side.
+OWN_FOURBARS = (st.floats(0.3, 3.0), st.floats(0.3, 3.0), st.floats(0.3, 3.0), st.floats(0.0, 2 * math.pi),
+                st.floats(0.3, 1.5), st.sampled_from([1.0, -1.0]))
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@given(*OWN_FOURBARS)
+def test_a_four_bars_own_function_gives_back_its_lengths(a, b, c, phi0, dphi, side):
+    r = own_design(a, b, c, phi0, dphi, side)
     assert (r.a, r.b, r.c) == pytest.approx((a, b, c), rel=1e-6)
     assert not r.input_reversed and not r.output_reversed
