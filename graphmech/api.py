@@ -268,14 +268,15 @@ class CheckTable:
         """The table as ``graphmech check`` prints it."""
         lines = [self.title, "  ".join(self.scale_notes)]
         if self.rows:
-            lines.append(f"{'quantity':<16} {'drawn mm':>11} {'μ':>11} {'graphical':>16} {'exact':>16} "
+            w = max(16, *(len(r.name) for r in self.rows))  # a long name (pressure_angle_C@200) keeps its column
+            lines.append(f"{'quantity':<{w}} {'drawn mm':>11} {'μ':>11} {'graphical':>16} {'exact':>16} "
                          f"{'rel.error':>9}  unit")
             for r in self.rows:
                 drawn = "" if r.drawn_mm is None else f"{r.drawn_mm:.3f}"
                 flag = "  ILL-CONDITIONED" if r.ill_conditioned else ""
                 if r.error_estimate is not None:  # a discretised or read-off value: how accurate it says it is
                     flag += "  " + estimate_text(r)
-                lines.append(f"{r.name:<16} {drawn:>11} {r.scale:>11.5g} {r.graphical:>16.9g} {r.exact:>16.9g}"
+                lines.append(f"{r.name:<{w}} {drawn:>11} {r.scale:>11.5g} {r.graphical:>16.9g} {r.exact:>16.9g}"
                              f" {r.rel_error:>9.1e}  {r.unit}{flag}")
         return "\n".join([*lines, *self.verdict_lines(), *self.lines])
 
@@ -283,9 +284,10 @@ class CheckTable:
         """The verdicts on the measured values as ``graphmech check`` prints them (none: no lines)."""
         if not self.measured:
             return []
-        lines = [f"{'measured':<16} {'value':>11} {'expected':>13} {'± tol':>9}  verdict"]
+        w = max(16, *(len(v.name) for v in self.measured))
+        lines = [f"{'measured':<{w}} {'value':>11} {'expected':>13} {'± tol':>9}  verdict"]
         for v in self.measured:
-            lines.append(f"{v.name:<16} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
+            lines.append(f"{v.name:<{w}} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
                          f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
         return lines
 

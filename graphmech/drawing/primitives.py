@@ -138,6 +138,19 @@ def angle_arc(at: XY, d1: XY, d2: XY, r: float, role: Role = "label") -> Polylin
                           for k in range(n + 1)), role)
 
 
+def angle_mark(at: XY, d1: XY, d2: XY, r: float, text: str) -> list["Primitive"]:
+    """An angle's arc and its letter (θ, ψ, γ, α), set outside the arc on the bisector, off both arms."""
+    import math
+
+    arc = angle_arc(at, d1, d2, r)
+    if arc is None:
+        return [Label(text, at, (d1, d2), LETTER)]
+    mid = arc.points[len(arc.points) // 2]
+    n = math.dist(at, mid)
+    out = ((mid[0] - at[0]) / n, (mid[1] - at[1]) / n)
+    return [arc, Label(text, (mid[0] + 1.5 * out[0], mid[1] + 1.5 * out[1]), ((-out[0], -out[1]), d1, d2), LETTER)]
+
+
 #: The most chords of an angle's arc (0.5 mm each up to an arc of 360 mm).
 ARC_MOST = 720
 

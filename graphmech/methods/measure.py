@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from graphmech.geometry.kernels import cross
 from graphmech.geometry.primitives import degrees_0_360
@@ -148,3 +148,78 @@ def link_angle(b: "LinkageConstruction", link: str, line: tuple[str, str] | None
 def component(b: "LinkageConstruction", name: str, start: str, end: str, exact: Exact) -> None:
     """A laid-off or found component (normal, tangential, Coriolis, relative) in the acceleration polygon."""
     _segment(start, end, b.scales["a"], name, b, "m/s²", exact, "acceleration")
+
+
+# ----------------------------------------------------------------------- directions and angles
+
+
+def _degrees(ops: Ops, dy: Any, dx: Any) -> Any:
+    """atan2 in degrees, [0, 360), for a scalar or a batch of positions."""
+    if ops.batch:
+        import numpy as np
+
+        d = np.degrees(np.arctan2(dy, dx)) % 360.0
+        return np.where(d == 360.0, 0.0, d)
+    return degrees_0_360(math.atan2(float(dy), float(dx)))
+
+
+def _line_angle(ops: Ops, ux: Any, uy: Any, vx: Any, vy: Any) -> Any:
+    """The acute angle between two lines (directions u, v), degrees in [0, 90]: atan2(|u×v|, |u·v|)."""
+    c = ops.absolute(cross(ux, uy, vx, vy))
+    d = ops.absolute(ux * vx + uy * vy)
+    if ops.batch:
+        import numpy as np
+
+        return np.degrees(np.arctan2(c, d))
+    return math.degrees(math.atan2(float(c), float(d)))
+
+
+def direction_of(b: "LinkageConstruction", x: str) -> None:
+    """dir_v_X, dir_a_X: the direction of X's velocity (acceleration), read with a protractor on
+    the polygon's pole→image vector, degrees counter-clockwise from +x in [0, 360)."""
+    for prefix, table, pole, panel in (("v", b.vel, VELOCITY_POLE, "velocity"),
+                                       ("a", b.acc, ACCELERATION_POLE, "acceleration")):
+        if x not in table:
+            continue
+
+        def kern(ops: Ops, p: Components, e: Components) -> Components:
+            return (_degrees(ops, e[1] - p[1], e[0] - p[0]), 1.0)
+
+        # no segment: "pc" read off the polygon stays v_C's
+        _add(b, f"dir_{prefix}_{x}", "deg", kern, (pole, table[x]), (f"dir_{prefix}", x), panel)
+
+
+def transmission(b: "LinkageConstruction", joint: str, pusher: str, along: str | tuple[float, float],
+                 exact: Exact, rocker: bool) -> None:
+    """γ_X and α_X at a dyad's output joint X, measured on the kinematic diagram.
+
+    ``rocker``: the coupler X–``pusher`` pushes along its line, X turns about the rocker's pivot
+    ``along`` (a point): γ is the acute angle between coupler and rocker. Otherwise ``along`` is
+    the line X moves along or is pushed across — a slider's guide (a fixed direction) or a guide
+    bar's line (a direction step, X–``pusher`` then the arm to the bar's pivot) — and γ is 90° less
+    the acute angle between that line and X–``pusher``. The pressure angle is α = 90° − γ, the
+    angle between the push and the velocity of X.
+    """
+    fixed: tuple[float, float] | None = None
+    extra: tuple[str, ...]
+    if isinstance(along, tuple):
+        fixed, extra = along, ()
+    else:
+        extra = (b.mech[along] if rocker else along,)
+    inputs = (b.mech[joint], b.mech[pusher], *extra)
+
+    def gamma(ops: Ops, x: Components, p: Components, *o: Components) -> Any:
+        ux, uy = p[0] - x[0], p[1] - x[1]
+        if rocker:
+            return _line_angle(ops, ux, uy, o[0][0] - x[0], o[0][1] - x[1])
+        gx, gy = fixed if fixed is not None else (o[0][0], o[0][1])
+        return 90.0 - _line_angle(ops, ux, uy, gx, gy)
+
+    def kern_g(ops: Ops, *c: Components) -> Components:
+        return (gamma(ops, *c), 1.0)
+
+    def kern_a(ops: Ops, *c: Components) -> Components:
+        return (90.0 - gamma(ops, *c), 1.0)
+
+    _add(b, f"gamma_{joint}", "deg", kern_g, inputs, ("gamma", *exact), "mechanism")
+    _add(b, f"pressure_angle_{joint}", "deg", kern_a, inputs, ("pressure", *exact), "mechanism")

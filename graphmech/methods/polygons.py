@@ -22,7 +22,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any
 
-from graphmech.mechanisms.linkage import Crank, Linkage, RPP, RPR, RRP, RRR
+from graphmech.mechanisms.linkage import Crank, Guide, Linkage, RPP, RPR, RRP, RRR
 from graphmech.methods import acceleration, diagram, measure, velocity
 from graphmech.methods.linkage_construction import LinkageConstruction
 
@@ -90,6 +90,36 @@ def add_point_quantities(b: LinkageConstruction) -> None:
         if isinstance(dyad, RPR):  # the bar's length between the pivots, l_BC, as the book reads it
             measure.length(b, dyad.bar_pivot, dyad.block_pivot)
             measure.length(b, dyad.block_pivot, dyad.bar_pivot)
+    for x in dict.fromkeys([*b.vel, *b.acc]):
+        measure.direction_of(b, x)
+    for joint, pusher, output, rocker in output_joints(b.linkage):
+        if isinstance(output, str) and not rocker:  # a guide bar: its line as the diagram draws it
+            bar = next(y for y in b.linkage.dyads if isinstance(y, RPR) and y.block_pivot == joint)
+            measure.transmission(b, joint, pusher, diagram.bar_direction(b, bar), ("bar", joint, pusher, output),
+                                 rocker)
+        else:
+            measure.transmission(b, joint, pusher, output, (joint, pusher, output), rocker)
+
+
+def output_joints(linkage: Linkage) -> list[tuple[str, str, str | tuple[float, float], bool]]:
+    """Where a transmission angle γ (and pressure angle α) is defined: (joint X, the point it is
+    pushed from or turned about, the output's pivot / guide direction / bar link, rocker?).
+
+    An RRR dyad with one outer joint on the frame (X its middle joint, the other outer joint
+    pushing); an RRP slider on a frame guide (X the slider); a guide bar turning about a frame
+    pivot (RPR, X the block's pivot; pushed across the bar, X moving ⟂ the arm to the pivot).
+    """
+    frame = linkage.frame_points
+    out: list[tuple[str, str, str | tuple[float, float], bool]] = []
+    for y in linkage.dyads:
+        if isinstance(y, RRR) and (y.p in frame) != (y.q in frame):
+            pivot, pusher = (y.q, y.p) if y.q in frame else (y.p, y.q)
+            out.append((y.c, pusher, pivot, True))
+        elif isinstance(y, RRP) and isinstance(y.guide, Guide):
+            out.append((y.c, y.p, y.guide.direction, False))
+        elif isinstance(y, RPR) and y.bar_pivot in frame and y.block_pivot not in frame:
+            out.append((y.block_pivot, y.bar_pivot, y.bar_link, False))
+    return out
 
 
 __all__ = ["LinkageConstruction", "build_polygons", "PANELS", "RRR", "RRP", "RPR", "RPP"]

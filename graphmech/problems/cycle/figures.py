@@ -33,7 +33,8 @@ from graphmech.construction.graph import values_at
 from graphmech.problems.linkage.figures import caption, display, mechanism_items, polygon_items
 from graphmech.drawing.diagrams import AXIS_OVERRUN, count_every, moved, numbers_every, phi_axis_numbers
 from graphmech.drawing.primitives import (XY, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
-                                         Polyline, Primitive, Role, Segment, Sheet, Slider, angle_arc)
+                                         Polyline, Primitive, Role, Segment, Sheet, Slider, angle_arc,
+                                         angle_mark)
 from graphmech.drawing.lettering import LETTER, number, scale_text
 from graphmech.drawing.notation import word
 
@@ -374,16 +375,6 @@ def _diagram_scales(dg: Any, mu_phi: float) -> tuple[tuple[str, float], ...]:
 
 
 # ----------------------------------------------------------------------------- characteristics
-def _mark(at: XY, d1: XY, d2: XY, r: float, text: str) -> list[Primitive]:
-    """An angle's arc and its letter, set outside the arc on the bisector (off both arms)."""
-    arc = angle_arc(at, d1, d2, r)
-    if arc is None:
-        return [Label(text, at, (d1, d2), LETTER)]
-    mid = arc.points[len(arc.points) // 2]
-    out = _unit(at, mid)
-    return [arc, Label(text, (mid[0] + 1.5 * out[0], mid[1] + 1.5 * out[1]), ((-out[0], -out[1]), d1, d2), LETTER)]
-
-
 #: A centre line longer than this on paper (a drawing metres wide at a stated μl) is drawn thin
 #: solid: the renderer cuts a dash-dot line into pieces, thousands of them on a metre.
 LONGEST_DASHDOT_MM = 1000.0
@@ -418,7 +409,7 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
         D, Bg, Cg = p["D"], p["Bg"], p["Cg"]
         items += [Segment(A, Bg, "result"), Segment(Bg, Cg, "result"), Segment(Cg, D, "result"),
                   _centre_line(A, D), FixedPivot(A), FixedPivot(D), Hinge(Bg), Hinge(Cg)]
-        labels += _mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, GAMMA_MIN)
+        labels += angle_mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, GAMMA_MIN)
         for at, text in ((A, sub["A"]), (D, sub["D"]), (Bg, sub["B"]), (Cg, sub["C"])):
             labels.append(Label(text, at, (_unit(at, A),) if at != A else (), LETTER))
         return items + labels
@@ -437,12 +428,12 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
                 items.append(arc)
         # θ between AC₁ and AC₂; ψ between DC₁ and DC₂; γ at C
         ref = C1 if math.dist(A, C1) > 1e-9 else B1
-        labels += _mark(A, _unit(A, ref), _unit(A, C2), min(MARK_R, 0.8 * math.dist(A, C2)), "θ")
-        labels += _mark(D, _unit(D, C1), _unit(D, C2), min(MARK_R, 0.6 * math.dist(D, C1)), "ψ")
+        labels += angle_mark(A, _unit(A, ref), _unit(A, C2), min(MARK_R, 0.8 * math.dist(A, C2)), "θ")
+        labels += angle_mark(D, _unit(D, C1), _unit(D, C2), min(MARK_R, 0.6 * math.dist(D, C1)), "ψ")
         if math.dist(A, C1) > 1e-9:
             items.append(Segment(A, C1, "construction", dashed=True))
         items.append(Segment(A, C2, "construction", dashed=True))
-        labels += _mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, GAMMA_MIN)
+        labels += angle_mark(Cg, _unit(Cg, Bg), _unit(Cg, D), 6.0, GAMMA_MIN)
         items += [FixedPivot(A), FixedPivot(D)] + [Hinge(x) for x in (B1, C1, B2, C2, Bg, Cg)]
         names = [(A, sub["A"]), (D, sub["D"]), (B1, sub["B"] + "₁"), (C1, sub["C"] + "₁"), (B2, sub["B"] + "₂"),
                  (C2, sub["C"] + "₂"), (Bg, sub["B"] + "′"), (Cg, sub["C"] + "′")]
@@ -459,7 +450,7 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
         if math.dist(A, C1) > 1e-9:
             items.append(Segment(A, C1, "construction", dashed=True))
         items.append(Segment(A, C2, "construction", dashed=True))
-        labels += _mark(A, _unit(A, C1), _unit(A, C2), MARK_R, "θ")
+        labels += angle_mark(A, _unit(A, C1), _unit(A, C2), MARK_R, "θ")
         # the stroke H dimensioned beside the guide
         nrm = (-g[1], g[0])
         off = -9.0 if (A[0] - C1[0]) * nrm[0] + (A[1] - C1[1]) * nrm[1] > 0 else 9.0
@@ -474,7 +465,7 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
         normal = across if (Bg[0] - Cg[0]) * across[0] + (Bg[1] - Cg[1]) * across[1] > 0 else (-across[0], -across[1])
         # γ is measured from the normal to the guide (the slider's path is the guide)
         items.append(Segment(Cg, (Cg[0] + 14.0 * normal[0], Cg[1] + 14.0 * normal[1]), "construction", dashed=True))
-        labels += _mark(Cg, _unit(Cg, Bg), normal, 8.0, GAMMA_MIN)
+        labels += angle_mark(Cg, _unit(Cg, Bg), normal, 8.0, GAMMA_MIN)
         items += [FixedPivot(A)] + [Hinge(x) for x in (B1, B2, C1, C2, Bg, Cg)]
         names = [(A, sub["A"]), (B1, sub["B"] + "₁"), (C1, sub["C"] + "₁"), (B2, sub["B"] + "₂"), (C2, sub["C"] + "₂"),
                  (Bg, sub["B"] + "′"), (Cg, sub["C"] + "′")]
@@ -500,12 +491,12 @@ def characteristics_items(dr: Any, linkage: Any) -> list[Primitive]:
             w = (feet[1][0] - feet[0][0], feet[1][1] - feet[0][1])
             s1 = (w[0] * u2[1] - w[1] * u2[0]) / det
             X = (feet[0][0] + s1 * u1[0], feet[0][1] + s1 * u1[1])
-            labels += _mark(X, u1, u2, MARK_R * 1.5, "ψ")
+            labels += angle_mark(X, u1, u2, MARK_R * 1.5, "ψ")
         else:
-            labels += _mark(C, _unit(C, B1), _unit(C, B2), MARK_R * 1.5, "ψ")
+            labels += angle_mark(C, _unit(C, B1), _unit(C, B2), MARK_R * 1.5, "ψ")
         back = (2 * A[0] - B1[0], 2 * A[1] - B1[1])
         items.append(Segment(A, back, "construction", dashed=True))
-        labels += _mark(A, _unit(A, back), _unit(A, B2), min(MARK_R, 0.8 * r), "θ")
+        labels += angle_mark(A, _unit(A, back), _unit(A, B2), min(MARK_R, 0.8 * r), "θ")
         items += [FixedPivot(A), FixedPivot(C), Hinge(B1), Hinge(B2)]
         names = [(A, sub["A"]), (C, sub["C"]), (B1, sub["B"] + "₁"), (B2, sub["B"] + "₂")]
     for at, text in names:

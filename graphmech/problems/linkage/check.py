@@ -14,10 +14,11 @@ from typing import TYPE_CHECKING, Any, cast
 import numpy as np
 
 from graphmech import tolerances as T
-from graphmech.errors import DegenerateConstruction, OutOfDomain, SceneError
+from graphmech.errors import DegenerateConstruction, NotApplicable, OutOfDomain, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Linkage, Triad
 from graphmech.geometry.primitives import degrees_0_360
+from graphmech.methods.linkage_construction import ACCELERATION_POLE, VELOCITY_POLE
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
 from graphmech.scales import drawn_size_problem, format_scale, round_scale
 from graphmech.problems.instant_centres import check as ic_check
@@ -111,6 +112,11 @@ def _requested(scene: Scene[object], build: LinkageConstruction, labels: tuple[s
             continue
         if base not in build.quantities:
             close = close_names(base, build.quantities)
+            if base.startswith(("gamma_", "pressure_angle_")):  # a joint with no transmission angle
+                here = sorted(n for n in build.quantities if n.startswith(base.rpartition("_")[0] + "_"))
+                close = (": γ and α are found at the output joint of a dyad whose output turns about a frame "
+                         "pivot or slides on a frame guide" + (f" (here: {', '.join(here)})" if here else
+                                                               " (this linkage has none)"))
             problems.append((f"find[{k}]", f"unknown quantity {base!r}{close}"))
             continue
         idx: range | list[int]
@@ -283,8 +289,12 @@ def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]
         if not ok and solutions[i] is not None and i not in other:
             an.warnings.append(f"{position_text(build, labels[i])}: the exact solution is undefined here "
                                f"({exact.reason[i]}); its values are not checked")
-    an.rows = [_row(an, display, q, i) for display, q, i in wanted
-               if solutions[i] is not None and exact.valid[i]]
+    wanted = [(display, q, i) for display, q, i in wanted if solutions[i] is not None and exact.valid[i]]
+    nowhere = {(q, i): no_dir for _, q, i in wanted if (no_dir := undefined_direction(an, q, i))}
+    if nowhere and len(positions) == 1:
+        raise NotApplicable(next(iter(nowhere.values())))
+    an.warnings.extend(dict.fromkeys(nowhere.values()))
+    an.rows = [_row(an, display, q, i) for display, q, i in wanted if (q, i) not in nowhere]
     if far:
         an.rows = [replace(r, ill_conditioned=True) for r in an.rows]
     an.warnings.extend(_conditioning_warnings(an, [q for _, q, _ in wanted] + measured_q))
@@ -370,6 +380,12 @@ def exact_value(kin: Kinematics, spec: Exact, i: int) -> float:
         return float(kin.alpha[spec[1]][i])
     if kind == "angle":
         return degrees_0_360(float(kin.angle[spec[1]][i]))
+    if kind in ("dir_v", "dir_a"):
+        vec = (V if kind == "dir_v" else A)[spec[1]][i]
+        return degrees_0_360(math.atan2(float(vec[1]), float(vec[0])))
+    if kind in ("gamma", "pressure"):
+        g = _gamma_exact(kin, spec[1:], i)
+        return g if kind == "gamma" else 90.0 - g
     if kind in ("coriolis", "rel_slide_a"):
         _, x, y, link = spec
         vr = V[x][i] - V[y][i]
@@ -378,6 +394,38 @@ def exact_value(kin: Kinematics, spec: Exact, i: int) -> float:
             return float(np.hypot(*k))
         return float(np.hypot(*(A[x][i] - A[y][i] - k)))
     raise ValueError(f"unknown exact quantity {spec!r}")
+
+
+def _line_angle(u: Any, v: Any) -> float:
+    """The acute angle between two lines, degrees."""
+    return math.degrees(math.atan2(abs(float(u[0] * v[1] - u[1] * v[0])), abs(float(u[0] * v[0] + u[1] * v[1]))))
+
+
+def _gamma_exact(kin: Kinematics, spec: tuple[Any, ...], i: int) -> float:
+    """γ at an output joint from the exact positions (see :func:`graphmech.methods.measure.transmission`)."""
+    P = kin.point
+    if spec[0] == "bar":  # a guide bar: pushed across its line, X turning about its pivot
+        _, x, pivot, link = spec
+        th = float(kin.angle[link][i])
+        return 90.0 - _line_angle(P[pivot][i] - P[x][i], (math.cos(th), math.sin(th)))
+    x, pusher, along = spec
+    arm = P[pusher][i] - P[x][i]
+    if isinstance(along, str):  # a rocker about ``along``
+        return _line_angle(arm, P[along][i] - P[x][i])
+    return 90.0 - _line_angle(arm, along)  # a slider on a fixed guide
+
+
+def undefined_direction(an: Analysis, qname: str, i: int) -> str | None:
+    """Why a direction (dir_v_X, dir_a_X) is not defined at position i: the vector is zero."""
+    q = an.build.quantities[qname]
+    if q.exact[0] not in ("dir_v", "dir_a"):
+        return None
+    table, unit, what = (an.exact.vel, "m/s", "v") if q.exact[0] == "dir_v" else (an.exact.acc, "m/s²", "a")
+    size = float(np.hypot(*table[q.exact[1]][i]))
+    if size > ZERO_VECTOR * characteristic(an.build.linkage, unit, an.size):
+        return None
+    return (f"{position_text(an.build, an.labels[i])}: {what}_{q.exact[1]} = 0 here, so {qname} has no "
+            "direction")
 
 
 # ---------------------------------------------------------------------------- conditioning
@@ -480,10 +528,23 @@ def _resolve(name: str, build: LinkageConstruction, labels: tuple[str, ...]) -> 
 
 
 def _angle_tolerance(an: Analysis, q: Any, sol: Any, precision_mm: float) -> float:
-    """A link's direction read with a protractor along the drawn link: ±precision/length, in degrees."""
-    u, v = an.build.link_points[q.exact[1]][:2]
-    a, b = sol[an.build.mech[u]], sol[an.build.mech[v]]
-    return math.degrees(precision_mm / max(math.dist(a, b), precision_mm))
+    """An angle read with a protractor: ±precision/length of the shorter drawn arm, in degrees —
+    a link's direction along the link, a vector's along the vector, γ and α along the coupler
+    (and the rocker)."""
+    b = an.build
+    kind = q.exact[0]
+    if kind in ("dir_v", "dir_a"):
+        pole, table = (VELOCITY_POLE, b.vel) if kind == "dir_v" else (ACCELERATION_POLE, b.acc)
+        arms = [(pole, table[q.exact[1]])]
+    elif kind in ("gamma", "pressure"):
+        x, pusher, along = q.exact[2:5] if q.exact[1] == "bar" else q.exact[1:4]
+        arms = [(b.mech[x], b.mech[pusher])] + ([(b.mech[x], b.mech[along])] if isinstance(along, str)
+                                                  and q.exact[1] != "bar" else [])
+    else:
+        u, v = b.link_points[q.exact[1]][:2]
+        arms = [(b.mech[u], b.mech[v])]
+    length = min(math.dist(sol[s], sol[e]) for s, e in arms)
+    return math.degrees(precision_mm / max(length, precision_mm))
 
 
 def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
@@ -520,8 +581,16 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
             expected = abs(exact_v) / float(scale)
             out.append(Verdict(name, value, expected, prec, abs(abs(value) - expected) <= prec, "mm"))
         else:
-            tol = _angle_tolerance(an, q, sol, prec) if q.unit == "deg" else prec * abs(float(scale))
-            out.append(Verdict(name, value, exact_v, tol, abs(value - exact_v) <= tol + 1e-12 * abs(exact_v), q.unit))
+            why = undefined_direction(an, qname, i)
+            if why:
+                problems.append((key, f"{why}, so it cannot be judged"))
+                continue
+            if q.unit == "deg":  # a direction read as 359.8° is 0.4° from 0.2°
+                tol = _angle_tolerance(an, q, sol, prec)
+                off = abs((value - exact_v + 180.0) % 360.0 - 180.0)
+            else:
+                tol, off = prec * abs(float(scale)), abs(value - exact_v)
+            out.append(Verdict(name, value, exact_v, tol, off <= tol + 1e-12 * abs(exact_v), q.unit))
     if an.instant_centres is not None:
         more, trouble = ic_check.judge(an, prec)
         out += more

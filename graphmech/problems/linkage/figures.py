@@ -18,7 +18,7 @@ from graphmech.drawing.notation import WORDS, word
 from graphmech.methods.diagram import tangent_name
 from graphmech.methods.velocity import assur_name
 from graphmech.drawing.primitives import (XY, ArcArrow, Arrow, FixedPivot, GuideLine, Hinge, Label, Panel, Plate,
-                                         Primitive, Role, Segment, Sheet, Slider)
+                                         Primitive, Role, Segment, Sheet, Slider, angle_mark)
 from graphmech.drawing.lettering import LETTER, point_name, scale_text, subscript
 
 #: The kinematics sheets' captions in the three notations (graphmech.drawing.notation's shape);
@@ -451,6 +451,53 @@ def _sense_marks(linkage: Linkage, pos: dict[str, XY], senses: Mapping[str, tupl
     return out
 
 
+#: The push F and the velocity v at an output joint, drawn this long (mm); the arcs of α and γ.
+TRANSMISSION_ARROW_MM = 20.0
+TRANSMISSION_ARC_MM = (11.0, 15.0)
+
+
+def transmission_marks(linkage: Linkage, pos: dict[str, XY], spec: tuple[Any, ...]) -> list[Primitive]:
+    """α and γ at an output joint X as the book marks them (001 2-3): the push F along the coupler
+    (⟂ the bar for a guide bar), the velocity v_X of the output's point, α between them and γ
+    between F and the normal to v_X (the rocker's line). ``spec``: a γ quantity's exact spec
+    without its kind (:func:`graphmech.methods.polygons.output_joints`)."""
+    if spec[0] == "bar":  # v of the bar's point under the block's pivot: v_B3
+        _, x, pivot, link = spec
+        name = x + link
+        bar = next(y for y in linkage.dyads if isinstance(y, RPR) and y.block_pivot == x)
+        start = pos.get(tangent_name(bar), pos[pivot]) if bar.offset != 0.0 else pos[pivot]
+        line = _unit(start, pos[x])
+        f = (-line[1], line[0])
+        arm = _unit(pos[pivot], pos[x])
+        u = (-arm[1], arm[0])
+    else:
+        x, pusher, along = spec
+        name = x
+        f = _unit(pos[pusher], pos[x])
+        if isinstance(along, str):
+            arm = _unit(pos[along], pos[x])
+            u = (-arm[1], arm[0])
+        else:
+            u = (float(along[0]), float(along[1]))
+    if f == (0.0, 0.0) or u == (0.0, 0.0):
+        return []
+    if f[0] * u[0] + f[1] * u[1] < 0.0:  # α is the acute angle: v taken along the push
+        u = (-u[0], -u[1])
+    n = (-u[1], u[0]) if -u[1] * f[0] + u[0] * f[1] >= 0.0 else (u[1], -u[0])
+    X = pos[x]
+    L = TRANSMISSION_ARROW_MM
+
+    def tip(d: XY) -> XY:
+        return (X[0] + L * d[0], X[1] + L * d[1])
+
+    items: list[Primitive] = [Arrow(X, tip(f), "result"), Arrow(X, tip(u), "result"),
+                              Segment(X, tip(n), "construction", dashed=True),
+                              Label("F", tip(f), (f,), LETTER), Label(f"v_{{{name}}}", tip(u), (u,), LETTER)]
+    items += angle_mark(X, u, f, TRANSMISSION_ARC_MM[0], "α")
+    items += angle_mark(X, f, n, TRANSMISSION_ARC_MM[1], "γ")
+    return items
+
+
 def polygon_items(plan: Any, values: dict[str, Any], panel: str) -> list[Primitive]:
     """A polygon panel: construction lines, vectors, image letters, from the construction's steps."""
     items: list[Primitive] = []
@@ -493,11 +540,12 @@ def linkage_sheet(title: str, linkage: Linkage, build: Any, plan: Any, solutions
                   labels: Sequence[str], position_text: Sequence[str], scales: dict[str, float],
                   show: Sequence[str], page: tuple[float, float], footer: tuple[str, ...] = (),
                   notation: str = "en",
-                  senses: Sequence[Mapping[str, tuple[float | None, float | None]]] | None = None) -> Sheet:
+                  senses: Sequence[Mapping[str, tuple[float | None, float | None]]] | None = None,
+                  marks: Sequence[Sequence[Primitive]] | None = None) -> Sheet:
     """The whole sheet: for each position, the panels the scene shows, side by side.
 
     ``senses``: per position, each link's ω and ε as the construction found them, drawn on the
-    mechanism (:func:`mechanism_items`)."""
+    mechanism (:func:`mechanism_items`); ``marks``: per position, more on the mechanism (α, γ)."""
     panels: list[Panel] = []
     spans = guide_spans(linkage, build, solutions)
     for i, sol in enumerate(solutions):
@@ -509,6 +557,7 @@ def linkage_sheet(title: str, linkage: Linkage, build: Any, plan: Any, solutions
             if panel == "mechanism":
                 pos = {name: _pt(sol.values[slot]) for name, slot in build.mech.items() if slot in sol.values}
                 items = mechanism_items(build, pos, spans, senses[i] if senses else None)
+                items += list(marks[i]) if marks else []
                 head = f"{caption(TITLES[panel], notation)}, {position_text[i]}"
             else:
                 items = polygon_items(plan, sol.values, panel)

@@ -6,14 +6,14 @@ import dataclasses
 import math
 from typing import Any
 
-from graphmech.drawing.primitives import Sheet
+from graphmech.drawing.primitives import Primitive, Sheet
 from graphmech.errors import SceneError
 from graphmech.mechanisms.linkage import Positions
 from graphmech.methods.polygons import PANELS
 from graphmech.problems.instant_centres.figures import ic_panels
-from graphmech.problems.judging import finite
+from graphmech.problems.judging import finite, measured_entries, split_name
 from graphmech.problems.linkage.check import analyse, rows_that_fit
-from graphmech.problems.linkage.figures import linkage_sheet
+from graphmech.problems.linkage.figures import linkage_sheet, transmission_marks
 from graphmech.problems.linkage.sizes import drawn_position_text
 from graphmech.problems.reader import Scene, page_size
 
@@ -28,7 +28,7 @@ def scene_sheet(scene: Scene[Any], footer: tuple[str, ...], caption: str = "") -
     notation = getattr(scene.page, "notation", "en")
     sheet = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
                           [s for s in scene.show if s in PANELS], page_size(scene), footer, notation,
-                          found_senses(an))
+                          found_senses(an), asked_transmission(an))
     if "instant_centres" in scene.show:
         sheet = dataclasses.replace(sheet, panels=sheet.panels + tuple(ic_panels(an, page_size(scene))))
     return sheet, list(an.warnings)
@@ -64,6 +64,28 @@ def found_senses(an: Any) -> list[dict[str, tuple[float | None, float | None]]]:
                 w, e = found.get(q.exact[1], (None, None))
                 found[q.exact[1]] = (v, e) if q.exact[0] == "omega" else (w, v)
         out.append(found)
+    return out
+
+
+def asked_transmission(an: Any) -> list[list[Primitive]]:
+    """Per position, α and γ marked at each output joint the scene finds or measures them at."""
+    b = an.build
+    out: list[list[Primitive]] = [[] for _ in an.solutions]
+    names = list(an.scene.find) + [n for _, n, _ in measured_entries(an.scene, an.extra_measured)]
+    done: set[tuple[int, tuple[Any, ...]]] = set()
+    for raw in names:
+        base, at = split_name(raw)
+        q = b.quantities.get(base)
+        if q is None or q.exact[0] not in ("gamma", "pressure"):
+            continue
+        for i, sol in enumerate(an.solutions):
+            if sol is None or (at is not None and at != an.labels[i]):
+                continue
+            pos = {name: (float(sol.values[s][0]), float(sol.values[s][1])) for name, s in b.mech.items()
+                   if s in sol.values}
+            if (i, q.exact[1:]) not in done:  # γ_C and α_C share one mark
+                done.add((i, q.exact[1:]))
+                out[i] += transmission_marks(b.linkage, pos, q.exact[1:])
     return out
 
 

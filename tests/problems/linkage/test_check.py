@@ -13,7 +13,7 @@ from graphmech.errors import SceneError
 from graphmech.problems.linkage.bench import closed_form_fourbar
 from graphmech.problems.linkage.check import analyse, exact_value, judge, rows_that_fit
 from graphmech.scene import parse_scene
-from tests.conftest import SCENES, check_json, fourbar_scene, values
+from tests.conftest import SCENES, assert_refused, check_json, fourbar_scene, run_cli, values
 from tests.scenes import scene_path, scene_text, write_scene
 
 #: AD 120, AB 60 (link 2) at 30°, BC 120 (3), CD 90 mm (4); 100 rpm, ε = 4 rad/s²; μl, μv stated.
@@ -487,3 +487,140 @@ def test_the_offset_guide_bar_scene_agrees_with_exact_and_with_its_closed_form()
         assert min(turn, 180.0 - turn) == pytest.approx(0.0, abs=1e-10)
         assert got[f"a_k_B3B2@{phi:g}"]["exact"] == pytest.approx(2 * abs(w3) * got[f"v_B3B2@{phi:g}"]["exact"],
                                                                   rel=1e-12)
+
+
+# ---------------------------------------------------------------------------- angles at a position
+# γ, α and the directions of velocities at any stated position (001 2-3, 000 运动 7): the
+# protractor's readings on the drawing against closed forms written here, the marks on the
+# figure, and what is refused.
+
+
+def _gamma_fourbar(a: float, b: float, c: float, d: float, phi_deg: float) -> float:
+    """γ by the cosine rule: BD from triangle ABD, then the angle BCD, taken acute."""
+    bd2 = a * a + d * d - 2 * a * d * math.cos(math.radians(phi_deg))
+    bcd = math.degrees(math.acos((b * b + c * c - bd2) / (2 * b * c)))
+    return min(bcd, 180.0 - bcd)
+
+
+def _write(tmp_path, text: str, name: str = "s.toml"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+@pytest.mark.parametrize("phi", [0, 37, 90, 165, 180, 250, 330])
+def test_fourbar_gamma_and_alpha_equal_the_cosine_rule(tmp_path, phi):
+    p = _write(tmp_path, fourbar_scene(a=28, b=52, c=50, d=72, angle=str(phi), show='["mechanism"]',
+                                       find='["gamma_C", "pressure_angle_C"]'))
+    v = values(check_json(p))
+    g = _gamma_fourbar(28, 52, 50, 72, phi)
+    assert v["gamma_C"]["graphical"] == pytest.approx(g, abs=1e-9)
+    assert v["pressure_angle_C"]["graphical"] == pytest.approx(90.0 - g, abs=1e-9)
+    assert v["gamma_C"]["rel_error"] < 1e-12
+
+
+def test_fourbar_scene_gives_the_smallest_gamma_at_the_crank_along_the_frame():
+    # γ at φ = 180° (crank pointing away from D) is the characteristics' γ_min of 28/52/50/72
+    v = values(check_json(SCENES / "kin.transmission_angle-fourbar.toml"))
+    assert v["gamma_C@60"]["graphical"] == pytest.approx(_gamma_fourbar(28, 52, 50, 72, 60), abs=1e-9)
+    assert v["gamma_C@200"]["graphical"] == pytest.approx(28.8903065, abs=1e-7)
+    assert v["pressure_angle_C@200"]["graphical"] == pytest.approx(61.1096935, abs=1e-7)
+
+
+def test_slider_crank_alpha_is_the_coupler_against_the_guide():
+    # guide 12 mm above A, crank 30, coupler 80: sin α = |r sin φ − e| / l
+    v = values(check_json(SCENES / "kin.transmission_angle-slider_crank.toml"))
+    for phi in (45, 250):
+        alpha = math.degrees(math.asin(abs(30 * math.sin(math.radians(phi)) - 12) / 80))
+        assert v[f"pressure_angle_C@{phi}"]["graphical"] == pytest.approx(alpha, abs=1e-9)
+        assert v[f"gamma_C@{phi}"]["graphical"] == pytest.approx(90 - alpha, abs=1e-9)
+
+
+def test_guide_bar_alpha_from_the_offset():
+    # offset bar: sin α = e / CB; A = (0, 0), C = (0, −100), B at 40 mm, 30°
+    v = values(check_json(SCENES / "kin.transmission_angle-guide_bar.toml"))
+    B = (40 * math.cos(math.radians(30)), 40 * math.sin(math.radians(30)))
+    cb = math.hypot(B[0], B[1] + 100)
+    assert v["pressure_angle_B"]["graphical"] == pytest.approx(math.degrees(math.asin(15 / cb)), abs=1e-9)
+    assert v["gamma_B"]["exact"] == pytest.approx(90 - math.degrees(math.asin(15 / cb)), abs=1e-9)
+
+
+def test_centred_guide_bar_transmits_at_90_degrees(tmp_path):
+    text = (SCENES / "kin.transmission_angle-guide_bar.toml").read_text(encoding="utf-8")
+    text = text.replace("offset = 15", "").replace("angle = 30", "angle = [0, 75, 200]")
+    v = values(check_json(_write(tmp_path, text)))
+    for at in ("0", "75", "200"):
+        assert v[f"gamma_B@{at}"]["graphical"] == pytest.approx(90.0, abs=1e-12)
+        assert v[f"pressure_angle_B@{at}"]["graphical"] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_double_slider_velocity_of_c_points_to_the_lower_right_at_30_degrees():
+    # 000 运动 7: v_A = 100 mm/s →, AB = 500, x_A = 250: ω2 = v_A/(l sin 60°), v_C = v_A/√3 at −30°
+    doc = check_json(SCENES / "kin.double_slider_direction.toml")
+    v = values(doc)
+    assert v["omega_2"]["graphical"] == pytest.approx(0.1 / (0.5 * math.sin(math.radians(60))), rel=1e-12)
+    assert v["v_C"]["graphical"] == pytest.approx(0.1 / math.sqrt(3), rel=1e-12)
+    assert v["dir_v_C"]["graphical"] == pytest.approx(330.0, abs=1e-9)
+    assert all(m["ok"] for m in doc["measured"])
+
+
+@pytest.mark.parametrize("phi", [10, 135, 270])
+def test_crank_tip_velocity_is_perpendicular_to_the_crank(tmp_path, phi):
+    p = _write(tmp_path, fourbar_scene(angle=str(phi), find='["dir_v_B", "dir_a_B"]'))
+    v = values(check_json(p))
+    assert v["dir_v_B"]["graphical"] == pytest.approx((phi + 90) % 360, abs=1e-9)
+    assert v["dir_a_B"]["graphical"] == pytest.approx((phi + 180) % 360, abs=1e-9)  # ε = 0: centripetal
+
+
+def test_a_direction_near_zero_is_judged_across_360(tmp_path):
+    # φ = 270°, ω > 0: v_B points along +x, 0°; a reading of 359.9° is 0.1° off
+    p = _write(tmp_path, fourbar_scene(angle="270", find='["dir_v_B"]'))
+    doc = check_json(p, "--measured", "dir_v_B=359.9", "--measured", "dir_v_B=3")
+    ok = [m["ok"] for m in doc["measured"]]
+    assert ok == [True, False]
+
+
+def test_the_direction_of_a_zero_velocity_is_refused_at_one_position(tmp_path):
+    # slider-crank at its dead centre φ = 0 (e = 0): v_C = 0
+    text = (SCENES / "kin.transmission_angle-slider_crank.toml").read_text(encoding="utf-8")
+    text = text.replace("angle = [45, 250]", "angle = 0").replace("through = [0, 12]", "through = [0, 0]")
+    text = text.replace('find = ["gamma_C", "pressure_angle_C"]', 'find = ["dir_v_C"]')
+    assert_refused(run_cli("check", str(_write(tmp_path, text))), "s.toml", "v_C = 0", "dir_v_C", "no direction")
+
+
+def test_a_cycle_skips_a_zero_velocity_direction_with_a_warning(tmp_path):
+    text = (SCENES / "kin.transmission_angle-slider_crank.toml").read_text(encoding="utf-8")
+    text = text.replace("angle = [45, 250]", "angle = [0, 90]").replace("through = [0, 12]", "through = [0, 0]")
+    text = text.replace('find = ["gamma_C", "pressure_angle_C"]', 'find = ["dir_v_C"]')
+    doc = check_json(_write(tmp_path, text))
+    assert [q["name"] for q in doc["quantities"]] == ["dir_v_C@90"]
+    assert any("v_C = 0" in w for w in doc["warnings"])
+
+
+def test_gamma_is_not_defined_at_a_rocker_on_a_moving_link(tmp_path):
+    # a six-bar's second dyad E–F hung on the coupler and the rocker: neither outer joint on the frame
+    text = (SCENES / "kin.transmission_angle-fourbar.toml").read_text(encoding="utf-8")
+    text = text.replace('find = ["gamma_C", "pressure_angle_C"]', 'find = ["gamma_F"]')
+    text += '\n[[dyad]]\ntype = "RRR"\njoints = ["B", "F", "C"]\nlinks = ["4", "5"]\nlengths = [40, 40]\nbranch = "left"\n'
+    assert_refused(run_cli("check", str(_write(tmp_path, text))), "s.toml", "find[0]", "gamma_F", "frame pivot")
+
+
+def test_the_figure_marks_alpha_and_gamma_only_where_asked(tmp_path):
+    out = tmp_path / "a.svg"
+    code, _, err = run_cli("render", str(SCENES / "kin.transmission_angle-fourbar.toml"), "-o", str(out))
+    assert code == 0, err
+    svg = out.read_text(encoding="utf-8")
+    assert svg.count(">α<") == 2 and svg.count(">γ<") == 2  # one of each per position
+    text = (SCENES / "kin.transmission_angle-fourbar.toml").read_text(encoding="utf-8")
+    plain = _write(tmp_path, text.replace('find = ["gamma_C", "pressure_angle_C"]', 'find = ["theta_3"]'))
+    code, _, err = run_cli("render", str(plain), "-o", str(tmp_path / "b.svg"))
+    assert code == 0, err
+    assert ">α<" not in (tmp_path / "b.svg").read_text(encoding="utf-8")
+
+
+def test_long_names_keep_the_table_aligned():
+    code, out, _ = run_cli("check", str(SCENES / "kin.transmission_angle-fourbar.toml"))
+    assert code == 0
+    lines = [ln for ln in out.splitlines() if ln.startswith(("quantity", "gamma", "pressure"))]
+    ends = {ln.index(" deg") for ln in lines[1:]}
+    assert len(ends) == 1 and lines[0].index("unit") == ends.pop() + 1
