@@ -10,6 +10,7 @@ arrows, construction lines as thin segments through the points they carry.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any, Mapping, Sequence
 
 from graphmech.mechanisms.linkage import (PRP, Crank, Guide, Linkage, LinkGuide, LinkPoint, RPP, RPR, RRP, RRR,
@@ -498,6 +499,19 @@ def transmission_marks(linkage: Linkage, pos: dict[str, XY], spec: tuple[Any, ..
     return items
 
 
+def direction_mark(pole: XY, image: XY) -> list[Primitive]:
+    """The direction of a polygon's vector pole→image as the book states it: a thin reference line
+    along +x from the pole and the arc of the smaller angle to the vector, lettered in degrees."""
+    u = _unit(pole, image)
+    if u == (0.0, 0.0):
+        return []
+    L = TRANSMISSION_ARROW_MM
+    angle = math.degrees(math.atan2(u[1], u[0]))
+    items: list[Primitive] = [Segment(pole, (pole[0] + L, pole[1]), "construction", dashed=True)]
+    arc = angle_mark(pole, (1.0, 0.0), u, TRANSMISSION_ARC_MM[0], f"{abs(angle):.4g}°")
+    return items + [replace(p, italic=False) if isinstance(p, Label) else p for p in arc]  # a number: upright
+
+
 def polygon_items(plan: Any, values: dict[str, Any], panel: str) -> list[Primitive]:
     """A polygon panel: construction lines, vectors, image letters, from the construction's steps."""
     items: list[Primitive] = []
@@ -541,11 +555,12 @@ def linkage_sheet(title: str, linkage: Linkage, build: Any, plan: Any, solutions
                   show: Sequence[str], page: tuple[float, float], footer: tuple[str, ...] = (),
                   notation: str = "en",
                   senses: Sequence[Mapping[str, tuple[float | None, float | None]]] | None = None,
-                  marks: Sequence[Sequence[Primitive]] | None = None) -> Sheet:
+                  marks: Mapping[str, Sequence[Sequence[Primitive]]] | None = None) -> Sheet:
     """The whole sheet: for each position, the panels the scene shows, side by side.
 
     ``senses``: per position, each link's ω and ε as the construction found them, drawn on the
-    mechanism (:func:`mechanism_items`); ``marks``: per position, more on the mechanism (α, γ)."""
+    mechanism (:func:`mechanism_items`); ``marks``: per panel, per position, more marks (α and γ
+    on the mechanism, a direction's angle on a polygon)."""
     panels: list[Panel] = []
     spans = guide_spans(linkage, build, solutions)
     for i, sol in enumerate(solutions):
@@ -557,11 +572,11 @@ def linkage_sheet(title: str, linkage: Linkage, build: Any, plan: Any, solutions
             if panel == "mechanism":
                 pos = {name: _pt(sol.values[slot]) for name, slot in build.mech.items() if slot in sol.values}
                 items = mechanism_items(build, pos, spans, senses[i] if senses else None)
-                items += list(marks[i]) if marks else []
                 head = f"{caption(TITLES[panel], notation)}, {position_text[i]}"
             else:
                 items = polygon_items(plan, sol.values, panel)
                 head = caption(TITLES[panel], notation) + (f", {position_text[i]}" if len(solutions) > 1 else "")
+            items += list((marks or {}).get(panel, [[]] * (i + 1))[i])
             panels.append(Panel(f"{panel}-{labels[i]}", head, tuple(items), note, row=i,
                                 scales=((key, scales[key]),)))
     return Sheet(title, tuple(panels), page, footer)

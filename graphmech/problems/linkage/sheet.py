@@ -13,7 +13,7 @@ from graphmech.methods.polygons import PANELS
 from graphmech.problems.instant_centres.figures import ic_panels
 from graphmech.problems.judging import finite, measured_entries, split_name
 from graphmech.problems.linkage.check import analyse, rows_that_fit
-from graphmech.problems.linkage.figures import linkage_sheet, transmission_marks
+from graphmech.problems.linkage.figures import direction_mark, linkage_sheet, transmission_marks
 from graphmech.problems.linkage.sizes import drawn_position_text
 from graphmech.problems.reader import Scene, page_size
 
@@ -28,7 +28,7 @@ def scene_sheet(scene: Scene[Any], footer: tuple[str, ...], caption: str = "") -
     notation = getattr(scene.page, "notation", "en")
     sheet = linkage_sheet(scene.title, b.linkage, b, an.plan, an.solutions, an.labels, texts, an.scales,
                           [s for s in scene.show if s in PANELS], page_size(scene), footer, notation,
-                          found_senses(an), asked_transmission(an))
+                          found_senses(an), asked_marks(an))
     if "instant_centres" in scene.show:
         sheet = dataclasses.replace(sheet, panels=sheet.panels + tuple(ic_panels(an, page_size(scene))))
     return sheet, list(an.warnings)
@@ -67,26 +67,36 @@ def found_senses(an: Any) -> list[dict[str, tuple[float | None, float | None]]]:
     return out
 
 
-def asked_transmission(an: Any) -> list[list[Primitive]]:
-    """Per position, α and γ marked at each output joint the scene finds or measures them at."""
+def asked_marks(an: Any) -> dict[str, list[list[Primitive]]]:
+    """Per panel, per position, what the scene's angles ask to be marked: α and γ at each output
+    joint on the mechanism, a direction's angle on its polygon (``find`` or measured names)."""
     b = an.build
-    out: list[list[Primitive]] = [[] for _ in an.solutions]
+    out: dict[str, list[list[Primitive]]] = {p: [[] for _ in an.solutions] for p in PANELS}
     names = list(an.scene.find) + [n for _, n, _ in measured_entries(an.scene, an.extra_measured)]
     done: set[tuple[int, tuple[Any, ...]]] = set()
     for raw in names:
         base, at = split_name(raw)
         q = b.quantities.get(base)
-        if q is None or q.exact[0] not in ("gamma", "pressure"):
+        if q is None or q.exact[0] not in ("gamma", "pressure", "dir_v", "dir_a"):
             continue
         for i, sol in enumerate(an.solutions):
-            if sol is None or (at is not None and at != an.labels[i]):
+            key = (i, q.exact[1:] if q.exact[0] in ("gamma", "pressure") else q.exact)
+            if sol is None or (at is not None and at != an.labels[i]) or key in done:
+                continue  # γ_C and α_C share one mark
+            done.add(key)
+            v = sol.values
+            if q.exact[0] in ("dir_v", "dir_a"):
+                pole, image = b.g.steps[q.slot].inputs
+                if pole in v and image in v:
+                    out[q.panel][i] += direction_mark(_xy(v[pole]), _xy(v[image]))
                 continue
-            pos = {name: (float(sol.values[s][0]), float(sol.values[s][1])) for name, s in b.mech.items()
-                   if s in sol.values}
-            if (i, q.exact[1:]) not in done:  # γ_C and α_C share one mark
-                done.add((i, q.exact[1:]))
-                out[i] += transmission_marks(b.linkage, pos, q.exact[1:])
+            pos = {name: _xy(v[s]) for name, s in b.mech.items() if s in v}
+            out["mechanism"][i] += transmission_marks(b.linkage, pos, q.exact[1:])
     return out
+
+
+def _xy(v: Any) -> tuple[float, float]:
+    return (float(v[0]), float(v[1]))
 
 
 def _fits(scene: Scene[Any]) -> None:

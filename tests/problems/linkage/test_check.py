@@ -624,3 +624,11 @@ def test_long_names_keep_the_table_aligned():
     lines = [ln for ln in out.splitlines() if ln.startswith(("quantity", "gamma", "pressure"))]
     ends = {ln.index(" deg") for ln in lines[1:]}
     assert len(ends) == 1 and lines[0].index("unit") == ends.pop() + 1
+
+
+def test_a_direction_asked_for_is_marked_on_its_polygon(tmp_path):
+    # 000 运动 7: pc runs 30° below +x; the arc from the reference line is lettered 30°
+    out = tmp_path / "d.svg"
+    code, _, err = run_cli("render", str(SCENES / "kin.double_slider_direction.toml"), "-o", str(out))
+    assert code == 0, err
+    assert out.read_text(encoding="utf-8").count(">30°<") == 1
