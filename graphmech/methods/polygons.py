@@ -91,7 +91,8 @@ def add_point_quantities(b: LinkageConstruction) -> None:
             measure.length(b, dyad.bar_pivot, dyad.block_pivot)
             measure.length(b, dyad.block_pivot, dyad.bar_pivot)
     for x in dict.fromkeys([*b.vel, *b.acc]):
-        measure.direction_of(b, x)
+        if x not in b.linkage.frame_points:  # a frame point's velocity is the pole: no direction
+            measure.direction_of(b, x)
     for joint, pusher, output, rocker in output_joints(b.linkage):
         if isinstance(output, str) and not rocker:  # a guide bar: its line as the diagram draws it
             bar = next(y for y in b.linkage.dyads if isinstance(y, RPR) and y.block_pivot == joint)
