@@ -24,7 +24,13 @@ import math
 from dataclasses import dataclass
 
 from graphmech.errors import OutOfDomain
-from graphmech.geometry.kernels import ScalarOps, intersect_lines, line_parallel_to, line_perpendicular_to, unit
+from graphmech.geometry.kernels import (
+    ScalarOps,
+    intersect_lines,
+    line_parallel_to,
+    line_perpendicular_to,
+    unit,
+)
 
 XY = tuple[float, float]
 _OPS = ScalarOps()

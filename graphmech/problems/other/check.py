@@ -16,9 +16,21 @@ from typing import TYPE_CHECKING, Any
 from graphmech.errors import SceneError
 from graphmech.exact import geneva as ex
 from graphmech.methods.geneva import GenevaLayout, PinPolygons, layout, polygons
-from graphmech.problems.judging import Row, Verdict, close_names, judge_value, measured_entries
-from graphmech.problems.other.scene import (GENEVA_AT_ANGLE, GENEVA_QUANTITIES, SCREW_QUANTITIES, GenevaProblem,
-                                            OtherScene, ScrewProblem)
+from graphmech.problems.judging import (
+    Row,
+    Verdict,
+    close_names,
+    judge_value,
+    measured_entries,
+)
+from graphmech.problems.other.scene import (
+    GENEVA_AT_ANGLE,
+    GENEVA_QUANTITIES,
+    SCREW_QUANTITIES,
+    GenevaProblem,
+    OtherScene,
+    ScrewProblem,
+)
 from graphmech.scales import drawn_size_problem, format_scale, round_scale
 
 if TYPE_CHECKING:
@@ -175,9 +187,9 @@ def _geneva(an: OtherAnalysis, g: GenevaProblem, names: list[str]) -> None:
             else:  # a_k_pin
                 drawn = math.hypot(pp.a1_[0] - pp.k_[0], pp.a1_[1] - pp.k_[1])
                 row = (drawn, mu_a, drawn * mu_a, ex.coriolis(g.z, g.L, g.phi, w1), w1 * w1 * R)
-        drawn, mu, gv, ev, char = row
+        length, mu, gv, ev, char = row
         unit = {**GENEVA_QUANTITIES, **GENEVA_AT_ANGLE}[name]
-        an.rows.append(Row(name, unit, drawn, mu, gv, ev, abs(gv - ev) / max(abs(ev), char, 1e-300)))
+        an.rows.append(Row(name, unit, length, mu, gv, ev, abs(gv - ev) / max(abs(ev), char, 1e-300)))
 
 
 def _omega_row(pp: PinPolygons, mu_v: float, mu_l: float, exact: float, w1: float

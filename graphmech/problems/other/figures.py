@@ -20,8 +20,21 @@ import math
 
 from graphmech.drawing.lettering import LETTER, number, scale_text
 from graphmech.drawing.notation import word
-from graphmech.drawing.primitives import (ArcArrow, Arrow, Circle, FixedPivot, GuideLine, Hinge, Label, Panel,
-                                          Polyline, Primitive, Segment, Sheet, Text)
+from graphmech.drawing.primitives import (
+    ArcArrow,
+    Arrow,
+    Circle,
+    FixedPivot,
+    GuideLine,
+    Hinge,
+    Label,
+    Panel,
+    Polyline,
+    Primitive,
+    Segment,
+    Sheet,
+    Text,
+)
 from graphmech.problems.other.check import OtherAnalysis
 from graphmech.scales import round_scale
 
@@ -61,7 +74,7 @@ def wheel_outline(O2: XY, S: float, h: float, r: float, r_lock: float, L: float,
         u, n = (math.cos(th), math.sin(th)), (-math.sin(th), math.cos(th))
         depth = S - h + r  # the bottom's centre from O₂
 
-        def at(a: float, b: float) -> XY:
+        def at(a: float, b: float, u: XY = u, n: XY = n) -> XY:
             return (O2[0] + a * u[0] + b * n[0], O2[1] + a * u[1] + b * n[1])
 
         pts += [at(S, -r), at(depth, -r)]

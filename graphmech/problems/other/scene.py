@@ -9,8 +9,18 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from graphmech.problems.reader import MISSING, Reader, Scene, raise_sorted, read_header, read_measured, read_scales, \
-    read_tail, say, Value
+from graphmech.problems.reader import (
+    MISSING,
+    Reader,
+    Scene,
+    Value,
+    raise_sorted,
+    read_header,
+    read_measured,
+    read_scales,
+    read_tail,
+    say,
+)
 
 #: What an other-mechanisms scene may show.
 OTHER_SHOW_CHOICES = ("geneva", "geneva_polygons", "geneva_curves", "differential_screw")
@@ -174,5 +184,15 @@ def parse_other_scene(data: Mapping[str, Any], source: str, top: Reader, order: 
                  precision_mm=precision, page=page, kind="other", problem=OtherScene(geneva, screw))
 
 
-__all__ = ["GENEVA_AT_ANGLE", "GENEVA_QUANTITIES", "GenevaProblem", "OTHER_SHOW_CHOICES", "OtherScene",
-           "SCREW_QUANTITIES", "ScrewProblem", "parse_other_scene", "read_geneva", "read_screw"]
+__all__ = [
+    "GENEVA_AT_ANGLE",
+    "GENEVA_QUANTITIES",
+    "OTHER_SHOW_CHOICES",
+    "SCREW_QUANTITIES",
+    "GenevaProblem",
+    "OtherScene",
+    "ScrewProblem",
+    "parse_other_scene",
+    "read_geneva",
+    "read_screw",
+]

@@ -23,10 +23,10 @@ PHRASES: Phrases = {
     "choose": ("choose {mu}", "选取{mu}", "выбираем {mu}"),
     "centres": ("draw the line of centres O₁O₂ = L/μl = {mm} mm", "作中心线O₁O₂ = L/μl = {mm} mm",
                 "проводим линию центров O₁O₂ = L/μl = {mm} mm"),
-    "slot": ("through O₂ draw the slot's line at π/z = {a}° to O₂O₁; from O₁ drop the perpendicular to it: "
-             "its foot K is where the pin enters", "过O₂作与O₂O₁成π/z = {a}°的槽中心线，自O₁向其作垂线，垂足K为圆销进入点",
-             "через O₂ проводим ось паза под углом π/z = {a}° к O₂O₁; из O₁ опускаем на неё перпендикуляр: "
-             "его основание K — точка входа пальца"),
+    "slot": (("through O₂ draw the slot's line at π/z = {a}° to O₂O₁; from O₁ drop the perpendicular to it: "
+             "its foot K is where the pin enters"), "过O₂作与O₂O₁成π/z = {a}°的槽中心线，自O₁向其作垂线，垂足K为圆销进入点",
+             ("через O₂ проводим ось паза под углом π/z = {a}° к O₂O₁; из O₁ опускаем на неё перпендикуляр: "
+             "его основание K — точка входа пальца")),
     "depth": ("the pin comes nearest to O₂ on the line of centres, L − R from it; the slot's bottom lies r beyond",
               "圆销在中心线上离O₂最近（L − R），槽底再深r", "ближе всего к O₂ палец на линии центров (L − R); дно паза глубже на r"),
     "k": ("the dial turns 2φ₁ = {two}° while the pin drives the wheel: k = 2φ₁/360° = {k}",
@@ -43,14 +43,14 @@ PHRASES: Phrases = {
     "split": ("v_A2 = v_A1 + v_A2A1: through p a line ⟂ O₂A, through a₁ a line ∥ O₂A (the slot); they meet at a₂",
               "v_A2 = v_A1 + v_A2A1：过p作⟂ O₂A的直线，过a₁作∥ O₂A（槽）的直线，交于a₂",
               "v_A2 = v_A1 + v_A2A1: через p — прямая ⟂ O₂A, через a₁ — прямая ∥ O₂A (паз); пересечение a₂"),
-    "accel": ("a_A1 = a_A2ⁿ + a_A2ᵗ + a^k + a^r: lay off πa₁′ = ω₁²R/μa = {a1} mm ∥ AO₁, πn₂′ = ω₂²·O₂A/μa = {n2} mm "
+    "accel": (("a_A1 = a_A2ⁿ + a_A2ᵗ + a^k + a^r: lay off πa₁′ = ω₁²R/μa = {a1} mm ∥ AO₁, πn₂′ = ω₂²·O₂A/μa = {n2} mm "
               "∥ AO₂, the Coriolis 2ω₂v_A1A2 = {k} mm ⟂ the slot back from a₁′ to k′; through n₂′ a line ⟂ O₂A, "
-              "through k′ a line ∥ O₂A: they meet at a₂′",
-              "a_A1 = a_A2ⁿ + a_A2ᵗ + a^k + a^r：作πa₁′ = ω₁²R/μa = {a1} mm ∥ AO₁，πn₂′ = ω₂²·O₂A/μa = {n2} mm ∥ AO₂，"
-              "哥氏加速度2ω₂v_A1A2 = {k} mm ⟂槽，由a₁′反向作至k′；过n₂′作⟂ O₂A的直线，过k′作∥ O₂A的直线，交于a₂′",
-              "a_A1 = a_A2ⁿ + a_A2ᵗ + a^k + a^r: откладываем πa₁′ = ω₁²R/μa = {a1} mm ∥ AO₁, πn₂′ = ω₂²·O₂A/μa = {n2} mm "
+              "through k′ a line ∥ O₂A: they meet at a₂′"),
+              ("a_A1 = a_A2ⁿ + a_A2ᵗ + a^k + a^r：作πa₁′ = ω₁²R/μa = {a1} mm ∥ AO₁，πn₂′ = ω₂²·O₂A/μa = {n2} mm ∥ AO₂，"
+              "哥氏加速度2ω₂v_A1A2 = {k} mm ⟂槽，由a₁′反向作至k′；过n₂′作⟂ O₂A的直线，过k′作∥ O₂A的直线，交于a₂′"),
+              ("a_A1 = a_A2ⁿ + a_A2ᵗ + a^k + a^r: откладываем πa₁′ = ω₁²R/μa = {a1} mm ∥ AO₁, πn₂′ = ω₂²·O₂A/μa = {n2} mm "
               "∥ AO₂, кориолисово 2ω₂v_A1A2 = {k} mm ⟂ пазу назад от a₁′ до k′; через n₂′ — прямая ⟂ O₂A, "
-              "через k′ — ∥ O₂A: пересечение a₂′"),
+              "через k′ — ∥ O₂A: пересечение a₂′")),
     "screw": ("one turn of link 1 advances it p_A = {pA} mm along screw A ({hA}-hand)",
               "构件1转一周沿螺旋副A（{hA}旋）移动p_A = {pA} mm",
               "за оборот звено 1 смещается по винту A ({hA}) на p_A = {pA} mm"),
