@@ -17,6 +17,7 @@ differential_screw
 from __future__ import annotations
 
 import math
+from typing import Literal
 
 from graphmech.drawing.lettering import LETTER, number, scale_text
 from graphmech.drawing.notation import word
@@ -125,7 +126,7 @@ def geneva_items(an: OtherAnalysis) -> tuple[list[Primitive], float]:
         ArcArrow(O1, 0.45 * R, phi + 0.6, 0.9, "given"),
         Label("ω_{1}", (O1[0] + 0.45 * R * math.cos(phi + 1.05), O1[1] + 0.45 * R * math.sin(phi + 1.05)), (), LETTER),
     ]
-    if an.at_angle is not None and an.at_angle.omega2 != 0.0:
+    if an.at_angle is not None and abs(an.at_angle.omega2) > 1e-9 * g.omega1:  # at entry or exit ω₂ = 0: no sense
         s = math.copysign(0.9, an.at_angle.omega2)
         items += [ArcArrow(O2, 0.3 * lay.S_mm, theta0 + math.pi / g.z, s, "result"),
                   Label("ω_{2}", (O2[0] + 0.3 * lay.S_mm * math.cos(theta0 + math.pi / g.z + s),
@@ -133,14 +134,20 @@ def geneva_items(an: OtherAnalysis) -> tuple[list[Primitive], float]:
     return items, math.degrees(phi)
 
 
+def _arrow(a: XY, b: XY, role: Literal["given", "result"]) -> list[Primitive]:
+    """The vector a → b, or nothing where it vanishes (ω₂ = 0 at entry, no Coriolis term at φ = 0)."""
+    return [Arrow(a, b, role)] if math.hypot(b[0] - a[0], b[1] - a[1]) > 1e-6 else []
+
+
 def polygon_items(an: OtherAnalysis) -> tuple[list[Primitive], list[Primitive]]:
     pp = an.at_angle
     assert pp is not None
     o = (0.0, 0.0)
-    v: list[Primitive] = [Arrow(o, pp.a1, "given"), Arrow(o, pp.a2, "result"), Arrow(pp.a2, pp.a1, "result"),
+    v: list[Primitive] = [*_arrow(o, pp.a1, "given"), *_arrow(o, pp.a2, "result"), *_arrow(pp.a2, pp.a1, "result"),
                           Label("p", o, (), LETTER), Label("a_{1}", pp.a1, (), LETTER), Label("a_{2}", pp.a2, (), LETTER)]
-    a: list[Primitive] = [Arrow(o, pp.a1_, "given"), Arrow(o, pp.n2_, "given"), Arrow(pp.k_, pp.a1_, "given"),
-                          Arrow(pp.n2_, pp.a2_, "result"), Arrow(pp.a2_, pp.k_, "result"), Arrow(o, pp.a2_, "result"),
+    a: list[Primitive] = [*_arrow(o, pp.a1_, "given"), *_arrow(o, pp.n2_, "given"), *_arrow(pp.k_, pp.a1_, "given"),
+                          *_arrow(pp.n2_, pp.a2_, "result"), *_arrow(pp.a2_, pp.k_, "result"),
+                          *_arrow(o, pp.a2_, "result"),
                           Label("π", o, (), LETTER), Label("a_{1}′", pp.a1_, (), LETTER),
                           Label("n_{2}′", pp.n2_, (), LETTER), Label("k′", pp.k_, (), LETTER),
                           Label("a_{2}′", pp.a2_, (), LETTER)]

@@ -34,8 +34,11 @@ SCREW_QUANTITIES = {"p_B": "m", "p_B_alt": "m", "s_B": "m"}
 HANDS = ("right", "left")
 #: The most slots a Geneva scene takes (a wheel of the book has 3 to 12).
 MAX_SLOTS = 360
-#: The largest length (m) and time (s) a scene takes: beyond, the drawing's sums lose meaning.
-MAX_SIZE = 1e6
+#: The range of a length (m), of a time (s) and of the dial's speed (rad/s) a scene takes: beyond,
+#: the drawing's scales leave double precision.
+MIN_SIZE, MAX_SIZE = 1e-9, 1e6
+TIMES = (1e-6, 1e9)
+SPEEDS = (1e-9, 1e6)
 
 
 @dataclass(frozen=True)
@@ -71,9 +74,14 @@ class OtherScene:
 
 
 def _value(r: Reader, base: str, *, required: bool = True) -> Value | None:
-    v = r.value(base, "length", required=required, positive=True)
-    if v is not None and v.si > MAX_SIZE:
-        r.problem(v.path, f"{v.text()} is absurd for a mechanism (at most {MAX_SIZE:g} m)")
+    return _bounded(r, base, "length", required, MIN_SIZE, MAX_SIZE, "m")
+
+
+def _bounded(r: Reader, base: str, kind: str, required: bool, lo: float, hi: float, unit: str) -> Value | None:
+    """A positive quantity within [lo, hi] (SI): beyond, the drawing's scales leave double precision."""
+    v = r.value(base, kind, required=required, positive=True)
+    if v is not None and not lo <= v.si <= hi:
+        r.problem(v.path, f"{v.text()} is absurd for a mechanism (from {lo:g} to {hi:g} {unit})")
         return None
     return v
 
@@ -105,11 +113,11 @@ def read_geneva(top: Reader) -> GenevaProblem | None:
     L = _length(g, "dial_wheel_distance")
     pin = _value(g, "pin_radius")
     b = _length(g, "tip_thickness")
-    rest = g.value("dwell_time", "time", required=False, positive=True)
-    speed = g.value("dial_speed", "omega", required=False, positive=True)
+    rest = _bounded(g, "dwell_time", "time", False, *TIMES, "s")
+    speed = _bounded(g, "dial_speed", "omega", False, *SPEEDS, "rad/s")
     if rest is not None and speed is not None:
         g.problem(speed.path, "give the dial's speed or the wheel's dwell time, not both (one decides the other)")
-    elif rest is None and speed is None and g.present("dwell_time") is None and g.present("dial_speed") is None:
+    elif g.present("dwell_time") is None and g.present("dial_speed") is None:
         g.problem(g.at("dwell_time"), "missing: write dwell_time_s (the rest) or dial_speed_rpm")
     angle = g.value("dial_angle", "angle", required=False)
     g.finish()
@@ -120,6 +128,10 @@ def read_geneva(top: Reader) -> GenevaProblem | None:
     if r_pin + b >= R:
         g.problem(pin.path, f"a pin of {pin.text()} leaves no locking arc: r + b must be less than "
                             f"R = L sin(π/z) = {pin.text(R)}")
+        return None
+    if R + r_pin >= L:  # the slot's bottom lies L − R − r from the wheel's centre
+        g.problem(pin.path, f"a pin of {pin.text()} needs slots past the wheel's centre: R + r must be less than "
+                            f"L (R = L sin(π/z) = {pin.text(R)})")
         return None
     if rest is not None:
         omega1 = 2 * math.pi * (z + 2) / (2 * z * rest.si)  # T = t_rest/(1 − k)

@@ -75,3 +75,24 @@ def test_a_name_the_scene_cannot_find_is_refused(tmp_path):
     p = tmp_path / "g.toml"
     p.write_text(text, encoding="utf-8")
     assert_refused(run_cli("check", str(p)), "g.toml", "find[7]", "omega_wheel needs [geneva] dial_angle")
+
+
+def test_a_hand_value_not_in_find_is_constructed_and_judged():
+    # the rest and the motion are 2/3 and 1/3 of T = 45 s; the wheel's speed at −20° by the polygon
+    code, out, _ = run_cli("check", str(GENEVA), "--json", "--measured", "t_rest=30", "--measured", "t_motion=15.1",
+                           "--measured", "v_slide=0.0128")
+    v = {m["name"]: m for m in json.loads(out)["measured"]}
+    assert v["t_rest"]["ok"] and v["t_rest"]["expected"] == pytest.approx(30.0, rel=1e-14)
+    assert not v["t_motion"]["ok"] and code == 1  # 15.1 s is 0.7 % off 15 s: more than 0.1 %
+    assert v["v_slide"]["ok"] and v["v_slide"]["expected"] == pytest.approx(0.012859208752900383, rel=1e-12)
+
+
+def test_extreme_times_and_speeds_are_refused_with_their_key(tmp_path):
+    text = GENEVA.read_text(encoding="utf-8")
+    for old, new, key in (("dwell_time_s = 30", "dwell_time_s = 1e-300", "geneva.dwell_time_s"),
+                          ("dwell_time_s = 30", "dial_speed_rpm = 1e300", "geneva.dial_speed_rpm"),
+                          ("dial_wheel_distance_mm = 300", "dial_wheel_distance_mm = 1e-300",
+                           "geneva.dial_wheel_distance_mm")):
+        p = tmp_path / "g.toml"
+        p.write_text(text.replace(old, new), encoding="utf-8")
+        assert_refused(run_cli("check", str(p)), "g.toml", key, "absurd for a mechanism")

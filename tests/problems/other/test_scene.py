@@ -52,6 +52,7 @@ def test_a_dial_speed_instead_of_the_dwell(tmp_path):
     ({"time": ""}, ("geneva.dwell_time", "missing")),
     ({"time": "dwell_time_s = 30\ndial_speed_rpm = 2"}, ("geneva.dial_speed_rpm", "not both")),
     ({"r": "140"}, ("geneva.pin_radius_mm", "leaves no locking arc", "R = L sin(π/z) = 150 mm")),
+    ({"z": "3", "r": "45"}, ("geneva.pin_radius_mm", "slots past the wheel's centre")),
     ({"extra": "dial_angle_deg = 61"}, ("geneva.dial_angle_deg", "out of the slot", "60°")),
     ({"extra": "slot_count = 3"}, ("geneva.slot_count", "unknown key")),
 ])
