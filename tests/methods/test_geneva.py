@@ -4,6 +4,8 @@ from __future__ import annotations
 import math
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from graphmech.errors import OutOfDomain
 from graphmech.exact import geneva as ex
@@ -51,3 +53,15 @@ def test_too_few_slots_and_a_pin_out_of_its_slot_are_refused():
     lay = layout(6, 0.3, 0.01, 0.005, 0.002)
     with pytest.raises(OutOfDomain, match="out of the slot"):
         polygons(lay, math.radians(-61), 1.0, 0.002, 1e-3, 1e-3)
+
+
+@settings(max_examples=80, deadline=None)
+@given(z=st.integers(3, 40), L=st.floats(0.01, 10.0), share=st.floats(-1.0, 1.0), w1=st.floats(0.1, 100.0))
+def test_any_wheel_at_any_engaged_angle_agrees_with_the_closed_forms(z, L, share, w1):
+    mu_l = L / 100  # the wheel about 100 mm across
+    lay = layout(z, L, 0.01 * L, 0.01 * L, mu_l)
+    phi = share * ex.engaged_half_angle(z)
+    R = ex.crank_radius(z, L)
+    pp = polygons(lay, phi, w1, mu_l, w1 * R / 50, w1 * w1 * R / 50)
+    assert -pp.omega2 == pytest.approx(ex.wheel_omega(z, phi, w1), rel=1e-9, abs=1e-12 * w1)
+    assert -pp.epsilon2 == pytest.approx(ex.wheel_epsilon(z, phi, w1), rel=1e-9, abs=1e-12 * w1 * w1)

@@ -37,3 +37,15 @@ def test_the_reference_figures_render(tmp_path):
         svg = out.read_text(encoding="utf-8")
         assert "</svg>" in svg
     assert "Differential screw" in (tmp_path / "mech.differential_screw.svg").read_text(encoding="utf-8")
+
+
+def test_the_sheet_is_lettered_in_the_scene_notation():
+    import dataclasses
+
+    from graphmech.problems.reader import Page
+
+    s = load_scene(SCENES / "mech.geneva_six_slot.toml")
+    an = analyse_other(dataclasses.replace(s, page=Page((420.0, 297.0), "zh")))
+    sheet = other_sheet(an, (420.0, 297.0))
+    assert sheet.panels[0].title == "槽轮机构，z = 6，φ = −20°"
+    assert sheet.panels[1].title == "圆销的速度多边形"
