@@ -24,7 +24,7 @@ _HERE = Path(__file__).resolve().parent
 #: The kinds ``graphmech new`` writes a template for: graphmech/templates/<kind>.toml, each a
 #: commented copy of the example scene its first line names.
 TEMPLATES = ("linkage", "cam", "flywheel", "forces", "balancing", "efficiency", "structure", "cycle", "gears",
-             "trains", "synthesis")
+             "trains", "synthesis", "other")
 
 
 def _data(installed: str, checkout: str) -> Traversable:

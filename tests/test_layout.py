@@ -789,7 +789,8 @@ def test_a_scene_of_each_kind_reads_as_that_kind():
 
     by_prefix = {"cam": "cam", "fly": "flywheel", "force": "forces", "bal": "balancing", "eff": "efficiency",
                  "thread": "efficiency", "dof": "structure", "structure": "structure", "ic": "linkage",
-                 "kin": "linkage", "linkage": "cycle", "gear": "gears", "train": "trains", "synthesis": "synthesis"}
+                 "kin": "linkage", "linkage": "cycle", "gear": "gears", "train": "trains", "synthesis": "synthesis",
+                 "mech": "other"}
     exceptions = {"fly.compressor_course_project-cycle": "cycle",  # the compressor's linkage through a turn
                   "force.wedge_F1430": "efficiency",  # a wedge: forces alone, no mechanism
                   "linkage.slider_crank_offset": "linkage", "linkage.slider_fixed_angle_guide": "linkage",

@@ -325,7 +325,8 @@ def _linkage_examples():
     out = [(f"doc{i}", b) for i, b in enumerate(blocks)]
     out += [(p.stem, p.read_text(encoding="utf-8")) for p in sorted(SCENES.glob("*.toml"))
             if p.stem != "ic.parallelogram_change_point"]
-    no_linkage = ("cam", "flywheel", "structure", "efficiency", "balancing", "gear", "train", "synthesis")
+    no_linkage = ("cam", "flywheel", "structure", "efficiency", "balancing", "gear", "train", "synthesis", "geneva",
+                  "differential_screw")
     # a swing out to its limits has no polygons there (its dyad toggles): tests/problems/cycle/test_check.py
     return [(n, t) for n, t in out if not any(k in tomllib.loads(t) for k in no_linkage)
             and tomllib.loads(t).get("cycle", {}).get("between") != "limits"]
