@@ -187,7 +187,7 @@ def _face_angles(p: EfficiencyProblem) -> tuple[float, float]:
     return math.atan(f1), math.atan(f2)
 
 
-def _unit_thread(an: EfficiencyAnalysis) -> gm.Stroke:
+def unit_thread(an: EfficiencyAnalysis) -> gm.Stroke:
     """The unrolled thread's raising polygon at Q = 1 N, μF = 1 N/mm: its F is tan(ψ + φv) as drawn."""
     try:
         return gm.incline(1.0, an.angle, an.phi, "forward", 1.0)
@@ -210,7 +210,7 @@ def _bolt_force(an: EfficiencyAnalysis) -> tuple[float, float]:
     p = an.problem
     T, d2, fc = cast(float, p.torque), cast(float, p.d2), cast(float, p.f_c)
     rg, re = _collar_radius(p)
-    k_t = cast(float, _unit_thread(an).F)  # a raising polygon of a thread (ψ, φv < 90°) closes
+    k_t = cast(float, unit_thread(an).F)  # a raising polygon of a thread (ψ, φv < 90°) closes
     return T / (k_t * d2 / 2.0 + fc * rg), ex.bolt_force_from_torque(T, d2, an.angle, an.phi, fc, re)
 
 
@@ -233,13 +233,13 @@ def _screw_extra(an: EfficiencyAnalysis, base: str) -> tuple[float, float, float
     Qe = cast(float, p.load) if p.load is not None else _bolt_force(an)[1]
     if base == "P_drive":  # Q·v over η read off the raising polygon
         v = cast(float, p.speed)
-        return Q * v / _unit_thread(an).eta, ex.screw_drive_power(Qe, v, an.angle, an.phi), None, 1.0, False, Qe * v
+        return Q * v / unit_thread(an).eta, ex.screw_drive_power(Qe, v, an.angle, an.phi), None, 1.0, False, Qe * v
     fc = cast(float, p.f_c)
     rg, re = _collar_radius(p)
     if base == "M_c":
         return fc * Q * rg, fc * Qe * re, None, 1.0, False, Qe * re
     d2 = cast(float, p.d2)  # T_tighten
-    k_t = cast(float, _unit_thread(an).F)
+    k_t = cast(float, unit_thread(an).F)
     return Q * (k_t * d2 / 2.0 + fc * rg), ex.tightening_torque(Qe, d2, an.angle, an.phi, fc, re), None, 1.0, \
         False, Qe * d2
 
@@ -474,7 +474,7 @@ def judge_efficiency(an: EfficiencyAnalysis, precision_mm: float | None = None) 
     return out
 
 
-__all__ = ["EfficiencyAnalysis", "analyse_efficiency", "judge_efficiency", "requested"]
+__all__ = ["EfficiencyAnalysis", "analyse_efficiency", "judge_efficiency", "requested", "unit_thread"]
 
 
 def efficiency_figure(an: EfficiencyAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
