@@ -244,14 +244,15 @@ def wedge_clamp_reaction(Q: float, alpha: float, phi1: float, phi2: float, direc
     return Q * math.cos(alpha + _sign(direction) * phi2) / math.cos(phi1)
 
 
-def wedge_clamp_locking(phi1: float, phi2: float) -> tuple[float, float]:
-    """The clamp's self-locking limits on the wedge angle α, rad: the reverse stroke locks for
-    α ≤ φ1 + φ2 (the book's α − 2φ ≤ 0), the forward one for α ≥ 180° − (φ1 + φ2).
+def wedge_clamp_locking(phi1: float, phi2: float) -> float:
+    """The clamp's self-locking limit on the wedge angle α, rad: the reverse stroke locks for
+    α ≤ φ1 + φ2 (the book's α − 2φ ≤ 0). The forward stroke never locks: F would have to lie
+    along R1, which needs φ1 = 90°.
 
-    >>> [round(math.degrees(a), 9) for a in wedge_clamp_locking(math.atan(0.15), 0.0)]
-    [8.53076561, 171.46923439]
+    >>> round(math.degrees(wedge_clamp_locking(math.atan(0.15), 0.0)), 9)
+    8.53076561
     """
-    return phi1 + phi2, math.pi - phi1 - phi2
+    return phi1 + phi2
 
 
 # ---------------------------------------------------------------------------- the wedge buffer
@@ -378,9 +379,9 @@ def efficiency(direction: Direction, ideal: float, actual: float) -> float:
 
 __all__ = [
     "Direction", "WedgeForces", "annulus_friction_radius", "bolt_force_from_torque", "buffer_force",
-    "buffer_locking", "buffer_locking_coefficients", "buffer_reaction", "screw_drive_power", "screw_speed",
-    "tightening_torque", "wedge_clamp_force", "wedge_clamp_locking", "wedge_clamp_reaction", "efficiency", "equivalent_friction_angle", "incline_efficiency",
-    "incline_force", "incline_reaction", "lead_angle", "parallel_efficiency", "screw_efficiency",
-    "screw_torque", "self_locking_efficiency_bound", "series_efficiency", "wedge_forces",
-    "wedge_ideal_force",
+    "buffer_locking", "buffer_locking_coefficients", "buffer_reaction", "efficiency", "equivalent_friction_angle",
+    "incline_efficiency", "incline_force", "incline_reaction", "lead_angle", "parallel_efficiency",
+    "screw_drive_power", "screw_efficiency", "screw_speed", "screw_torque", "self_locking_efficiency_bound",
+    "series_efficiency", "tightening_torque", "wedge_clamp_force", "wedge_clamp_locking", "wedge_clamp_reaction",
+    "wedge_forces", "wedge_ideal_force",
 ]

@@ -426,9 +426,9 @@ def _limits(an: EfficiencyAnalysis, base: str, phi: float) -> tuple[float, float
 
 
 def _lock_limits(an: EfficiencyAnalysis, base: str) -> tuple[float, float, float | None, float, bool, float]:
-    """Both self-locking limits of a wedge clamp or a buffer, found on the construction: the
-    polygon at Q = 1 N is redrawn at other wedge angles (or friction angles, for f_lock) until the
-    driving force F changes sign (η = 0), against the closed forms."""
+    """The self-locking limits of a wedge clamp (reverse) or a buffer (both), found on the
+    construction: the polygon at Q = 1 N is redrawn at other wedge angles (or friction angles, for
+    f_lock) until the driving force F changes sign (η = 0), against the closed forms."""
     p = an.problem
     d: Direction = "forward" if base.endswith("forward") else "reverse"
 
@@ -437,10 +437,9 @@ def _lock_limits(an: EfficiencyAnalysis, base: str) -> tuple[float, float, float
 
     if p.type == "wedge_clamp":
         p1, p2 = _face_angles(p)
-        g = gm.limiting_angle(lambda a: drawn_F(gm.wedge_clamp(1.0, a, p1, p2, d, 1.0)), 1e-200,
+        g = gm.limiting_angle(lambda a: drawn_F(gm.wedge_clamp(1.0, a, p1, p2, "reverse", 1.0)), 1e-200,
                               math.pi - math.radians(1e-3))
-        e = ex.wedge_clamp_locking(p1, p2)[0 if d == "reverse" else 1]
-        return math.degrees(g), math.degrees(e), None, 1.0, False, 1.0
+        return math.degrees(g), math.degrees(ex.wedge_clamp_locking(p1, p2)), None, 1.0, False, 1.0
     phi, alpha = an.phi, an.angle
     if base.startswith("alpha"):
         # within 0.01° of 0° or 90° the frictionless polygon of wedge 2 (R12 ∥ R42) no longer closes

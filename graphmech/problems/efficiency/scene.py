@@ -73,7 +73,7 @@ QUANTITIES: dict[str, dict[str, tuple[str, bool, bool]]] = {
     # each face of the clamp declares its own f (0: frictionless), so nothing waits for a scene-wide f
     "wedge_clamp": {"phi_face1": ("deg", False, False), "phi_face2": ("deg", False, False), "F": ("N", True, False),
                     "F0": ("N", False, False), "eta": ("", True, False), "R_face1": ("N", True, False),
-                    "alpha_lock_reverse": ("deg", False, False), "alpha_lock_forward": ("deg", False, False)},
+                    "alpha_lock_reverse": ("deg", False, False)},
     "buffer": {"phi": ("deg", False, True), "F": ("N", True, True), "F0": ("N", False, False),
                "eta": ("", True, True), "R12": ("N", True, True), "R42": ("N", True, True), "R31": ("N", True, True),
                "alpha_lock_forward": ("deg", False, True), "alpha_lock_reverse": ("deg", False, True),

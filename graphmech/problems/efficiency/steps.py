@@ -116,11 +116,11 @@ PHRASES: Phrases = {
     "wedge": ("the wedge", "楔块", "клина"),
     "wedge 1": ("wedge 1", "楔块1", "клина 1"),
     "wedge 2": ("wedge 2", "楔块2", "клина 2"),
-    "faces": ("face 1 ({n1}): φ₁ = arctan {f1} = {p1}°; face 2 ({n2}): φ₂ = arctan {f2} = {p2}° (f = 0: frictionless, "
-              "its reaction stays on the normal)",
+    "faces": (("face 1 ({n1}): φ₁ = arctan {f1} = {p1}°; face 2 ({n2}): φ₂ = arctan {f2} = {p2}° (f = 0: "
+               "frictionless, its reaction stays on the normal)"),
               "接触面1（{n1}）：φ₁ = arctan {f1} = {p1}°；接触面2（{n2}）：φ₂ = arctan {f2} = {p2}°（f = 0：无摩擦，反力沿法线）",
-              "поверхность 1 ({n1}): φ₁ = arctan {f1} = {p1}°; поверхность 2 ({n2}): φ₂ = arctan {f2} = {p2}° "
-              "(f = 0: без трения, реакция по нормали)"),
+              ("поверхность 1 ({n1}): φ₁ = arctan {f1} = {p1}°; поверхность 2 ({n2}): φ₂ = arctan {f2} = {p2}° "
+               "(f = 0: без трения, реакция по нормали)")),
     "lock limit": ("redraw the polygon at other {what} until F = 0 (η = 0): {stroke} locks for {cond}",
                    "改变{what}重作力多边形，直至F = 0（η = 0）：{stroke}在{cond}时自锁",
                    "перестраиваем план при других {what}, пока F = 0 (η = 0): {stroke} самотормозится при {cond}"),
@@ -132,12 +132,12 @@ PHRASES: Phrases = {
     "r_c annulus": ("the collar's friction radius, the annulus' exact: r_c = (2/3)(R³ − r³)/(R² − r²) = {value} m",
                     "支承面摩擦半径（圆环精确值）：r_c = (2/3)(R³ − r³)/(R² − r²) = {value} m",
                     "радиус трения опорной поверхности (точный, кольцо): r_c = (2/3)(R³ − r³)/(R² − r²) = {value} m"),
-    "F_a": ("the bolt force from the wrench: F_a = T/[d₂/2·tan(ψ + φv) + f_c·r_c] = {T}/[{r2} × {k} + {fc} × {rc}] "
-            "= {value} N (tan(ψ + φv) = {k}: the raising polygon's F at Q = 1 N)",
-            "扳手拧紧的轴向力：F_a = T/[d₂/2·tan(ψ + φv) + f_c·r_c] = {T}/[{r2} × {k} + {fc} × {rc}] = {value} N"
-            "（tan(ψ + φv) = {k}：Q = 1 N时正行程力多边形的F）",
-            "осевая сила от ключа: F_a = T/[d₂/2·tan(ψ + φv) + f_c·r_c] = {T}/[{r2} × {k} + {fc} × {rc}] = {value} N "
-            "(tan(ψ + φv) = {k}: F плана подъёма при Q = 1 N)"),
+    "F_a": (("the bolt force from the wrench: F_a = T/[d₂/2·tan(ψ + φv) + f_c·r_c] = {T}/[{r2} × {k} + {fc} × {rc}] "
+             "= {value} N (tan(ψ + φv) = {k}: the raising polygon's F at Q = 1 N)"),
+            ("扳手拧紧的轴向力：F_a = T/[d₂/2·tan(ψ + φv) + f_c·r_c] = {T}/[{r2} × {k} + {fc} × {rc}] = {value} N"
+             "（tan(ψ + φv) = {k}：Q = 1 N时正行程力多边形的F）"),
+            ("осевая сила от ключа: F_a = T/[d₂/2·tan(ψ + φv) + f_c·r_c] = {T}/[{r2} × {k} + {fc} × {rc}] = {value} N "
+             "(tan(ψ + φv) = {k}: F плана подъёма при Q = 1 N)")),
     "M_c": ("the collar's friction moment: M_c = f_c·Q·r_c = {fc} × {Q} × {rc} = {value} N·m",
             "支承面摩擦力矩：M_c = f_c·Q·r_c = {fc} × {Q} × {rc} = {value} N·m",
             "момент трения на опорной поверхности: M_c = f_c·Q·r_c = {fc} × {Q} × {rc} = {value} N·m"),
