@@ -168,7 +168,7 @@ def _wedge_angles(p: EfficiencyProblem) -> tuple[float, float]:
 def _stroke(an: EfficiencyAnalysis, direction: Direction, mu_F: float) -> gm.Stroke:
     p = an.problem
     # drawn only for what needs Q: read_efficiency then requires it, or a wrench's torque gives it
-    load = cast(float, p.load) if p.load is not None else _bolt_force(an)[0]
+    load = p.load if p.load is not None else _bolt_force(an)[0]
     if p.type == "wedge":
         return gm.wedge(load, *_wedge_angles(p), an.phi, direction, mu_F)
     if p.type == "wedge_clamp":
@@ -229,8 +229,7 @@ def _screw_extra(an: EfficiencyAnalysis, base: str) -> tuple[float, float, float
     if base == "n_screw":  # rev/min: the lift speed over the lead, once round per lead
         v, lead = cast(float, p.speed), cast(float, p.lead)
         return 60.0 * v / lead, 60.0 * ex.screw_speed(v, lead), None, 1.0, False, 1.0
-    Q = cast(float, p.load) if p.load is not None else _bolt_force(an)[0]
-    Qe = cast(float, p.load) if p.load is not None else _bolt_force(an)[1]
+    Q, Qe = (p.load, p.load) if p.load is not None else _bolt_force(an)  # the load, or the wrench's F_a
     if base == "P_drive":  # Q·v over η read off the raising polygon
         v = cast(float, p.speed)
         return Q * v / unit_thread(an).eta, ex.screw_drive_power(Qe, v, an.angle, an.phi), None, 1.0, False, Qe * v
