@@ -19,7 +19,7 @@ from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.exact import efficiency as ex
 from graphmech.methods import efficiency as gm
 from graphmech.scales import format_scale, round_scale
-from graphmech.problems.efficiency.scene import ANGLE_MARGIN_DEG, DEFAULT_FIND, EfficiencyProblem
+from graphmech.problems.efficiency.scene import DEFAULT_FIND, EfficiencyProblem
 from graphmech.tolerances import EPS, SHALLOW_DEG
 
 if TYPE_CHECKING:
@@ -436,14 +436,18 @@ def _lock_limits(an: EfficiencyAnalysis, base: str) -> tuple[float, float, float
 
     if p.type == "wedge_clamp":
         p1, p2 = _face_angles(p)
+        if p1 + p2 == 0.0:  # both faces frictionless: nothing locks, the limit is 0
+            return 0.0, 0.0, None, 1.0, False, 1.0
         g = gm.limiting_angle(lambda a: drawn_F(gm.wedge_clamp(1.0, a, p1, p2, "reverse", 1.0)), 1e-200,
                               math.pi - math.radians(1e-3))
         return math.degrees(g), math.degrees(ex.wedge_clamp_locking(p1, p2)), None, 1.0, False, 1.0
     phi, alpha = an.phi, an.angle
     if base.startswith("alpha"):
-        # within 0.01° of 0° or 90° the frictionless polygon of wedge 2 (R12 ∥ R42) no longer closes
-        g = gm.limiting_angle(lambda a: drawn_F(gm.buffer(1.0, a, phi, d, 1.0)), math.radians(ANGLE_MARGIN_DEG),
-                              math.radians(90.0 - ANGLE_MARGIN_DEG))
+        if phi == 0.0:  # frictionless: it locks only at the ends, α = 0° forward and 90° reverse
+            e = 0.0 if d == "forward" else 90.0
+            return e, e, None, 1.0, False, 1.0
+        # at 0° and 90° the frictionless polygon of wedge 2 (R12 ∥ R42) no longer closes: the wedge's range
+        g = gm.limiting_angle(lambda a: drawn_F(gm.buffer(1.0, a, phi, d, 1.0)), *gm.WEDGE_LIMIT_RANGE)
         e = ex.buffer_locking(phi)[0 if d == "forward" else 1]
         return math.degrees(g), math.degrees(e), None, 1.0, False, 1.0
     g = gm.limiting_angle(lambda x: drawn_F(gm.buffer(1.0, alpha, x, d, 1.0)), *gm.INCLINE_LIMIT_RANGE)

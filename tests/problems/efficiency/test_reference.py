@@ -348,3 +348,15 @@ def test_bad_input_is_refused_in_one_line(tmp_path, text, words):
     p.write_text(text, encoding="utf-8")
     err = assert_refused(run_cli("check", str(p)), "s.toml", *words)
     assert err.count("efficiency.wedge_angle_deg") <= 1  # a key of two other types is said once
+
+
+def test_without_friction_nothing_locks_but_at_the_ends(tmp_path):
+    p = tmp_path / "b.toml"
+    p.write_text('show = ["diagram"]\nfind = ["alpha_lock_forward", "alpha_lock_reverse", "f_lock_reverse"]\n'
+                 '[efficiency]\ntype = "buffer"\nwedge_angle_deg = 30\nf = 0\nload_N = 1\n', encoding="utf-8")
+    q = values(check_json(p))
+    assert q["alpha_lock_forward"]["graphical"] == 0.0 and q["alpha_lock_reverse"]["graphical"] == 90.0
+    assert q["f_lock_reverse"]["graphical"] == pytest.approx(3 ** 0.5, rel=1e-9)  # cot 30°, whatever f is
+    p.write_text(CLAMP.replace('["F"]', '["alpha_lock_reverse"]') + '[[efficiency.face]]\nf = 0\n[[efficiency.face]]\n'
+                 'f = 0\n', encoding="utf-8")
+    assert values(check_json(p))["alpha_lock_reverse"]["graphical"] == 0.0
