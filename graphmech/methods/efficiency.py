@@ -356,6 +356,9 @@ def wedge_clamp(Q: float, alpha: float, phi1: float, phi2: float, direction: Dir
         real = solve(phi1, phi2, False)
     except DegenerateConstruction:  # F ∥ R1: no finite force moves it
         return Stroke(direction, (ideal,), None, F0, 0.0, (), math.inf, (("v", v), ("v2", v2)))
+    if _value(real, "R1") < 0.0:
+        raise DegenerateConstruction("wedge: R1", "friction turns face 1's total reaction to pull (α ± φ2 beyond "
+                                     "90°): the wedge lifts off face 1 and the clamp does not apply")
     F = _value(real, "F")
     return Stroke(direction, (ideal, real), F, F0, _eta(direction, F0, F), (("R_face1", _value(real, "R1")),),
                   real.cond, (("v", v), ("v2", v2)))

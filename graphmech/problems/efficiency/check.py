@@ -279,9 +279,6 @@ def _strokes(an: EfficiencyAnalysis) -> None:
         elif st.eta < 0.0:
             an.warnings.append(f"{what}: self-locking (η = {st.eta:.4g} ≤ 0): the load cannot drive it; F must act "
                                "the other way to move it")
-        if p.type == "wedge_clamp" and st.F is not None and dict(st.reactions)["R_face1"] < 0.0:
-            an.warnings.append(f"{what}: face 1's total reaction comes out negative: the wedge lifts off face 1 "
-                               "(α + φ2 ≥ 90°)")
         if st.F is not None and st.cond > COND_HAND:
             angle = math.degrees(math.asin(min(1.0, 1.0 / st.cond)))
             an.warnings.append(f"{what}: the polygon closes at {angle:.3g}° (nearly collinear forces): the drawn "
@@ -438,8 +435,9 @@ def _lock_limits(an: EfficiencyAnalysis, base: str) -> tuple[float, float, float
         p1, p2 = _face_angles(p)
         if p1 + p2 == 0.0:  # both faces frictionless: nothing locks, the limit is 0
             return 0.0, 0.0, None, 1.0, False, 1.0
+        # up to α − φ2 = 90°, where face 1 would let go; the limit φ1 + φ2 lies below it
         g = gm.limiting_angle(lambda a: drawn_F(gm.wedge_clamp(1.0, a, p1, p2, "reverse", 1.0)), 1e-200,
-                              math.pi - math.radians(1e-3))
+                              math.pi / 2 + p2 - 1e-9)
         return math.degrees(g), math.degrees(ex.wedge_clamp_locking(p1, p2)), None, 1.0, False, 1.0
     phi, alpha = an.phi, an.angle
     if base.startswith("alpha"):

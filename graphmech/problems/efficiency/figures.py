@@ -222,7 +222,7 @@ def _side(stroke: Stroke | None, name: str) -> XY | None:
 
 def _clamp_diagram(alpha: float, faces: Sequence[tuple[str, float]], stroke: Stroke | None) -> list[Primitive]:
     """The clamp's wedge 3: face 1 below (workpiece 1), face 2 above (body 2) meeting it at α."""
-    L = DIAGRAM_MM
+    L = DIAGRAM_MM / max(1.0, math.tan(alpha))  # a steep wedge shorter, so that it stays DIAGRAM_MM high
     tip, back = (L, 0.0), (0.0, 0.0)
     top = (0.0, L * math.tan(alpha))
     up_face = _dir(math.pi - alpha)  # along face 2 from the tip to the back; body 2 lies above it

@@ -331,6 +331,8 @@ SCREW = 'show = ["diagram"]\nfind = ["F_a"]\n[efficiency]\ntype = "screw"\nf_v =
     (CLAMP + '[[efficiency.face]]\nf = -0.1\n[[efficiency.face]]\nf = 0\n',
      ("efficiency.face[0].f: must lie in [0, 10)",)),
     (CLAMP + '[[efficiency.face]]\nname = "a"\n[[efficiency.face]]\nf = 0\n', ("efficiency.face[0].f", "missing")),
+    (CLAMP.replace("12", "85") + '[[efficiency.face]]\nf = 0.1\n[[efficiency.face]]\nf = 0.2\n',
+     ("efficiency: wedge: R1: friction turns face 1's total reaction to pull", "lifts off face 1")),
     (CLAMP.replace("12", "95") + '[[efficiency.face]]\nf = 0.1\n[[efficiency.face]]\nf = 0\n',
      ("efficiency.wedge_angle_deg: must lie between 0° and 90°",)),
     (SCREW + 'collar_mm = [9, 11.5]\nf_c = 0.12\n', ("find[0]: F_a needs torque_Nm (the wrench's torque) in [efficiency]",)),
