@@ -161,7 +161,9 @@ def mutate(doc: dict, rng: random.Random) -> tuple[dict, str]:
             _set(m, rng.choice(paths), [])
     elif kind == "text":
         strings = [p for p in leaves if isinstance(_get(m, p), str)]
-        _set(m, rng.choice(strings or paths), rng.choice(HOSTILE_TEXT))
+        where = rng.choice(strings or paths)
+        # never the text already there ("K" over find's "K" would change nothing)
+        _set(m, where, rng.choice([t for t in HOSTILE_TEXT if t != _get(m, where)]))
     return m, kind
 
 

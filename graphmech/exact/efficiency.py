@@ -216,6 +216,138 @@ def wedge_ideal_force(Q: float, gamma: float, beta: float) -> float:
     return Q * math.sin(gamma + beta) / math.sin(gamma)
 
 
+# ---------------------------------------------------------------------------- the wedge clamp
+
+
+def wedge_clamp_force(Q: float, alpha: float, phi1: float, phi2: float, direction: Direction) -> float:
+    """The force F along face 1 on a wedge of angle α whose face 2 bears the clamping force Q
+    (the body's total reaction, 000 效率 2): the triangle (F, R1, R2 = Q) by the sine rule.
+
+    F ∥ face 1 makes 90° ± φ1 with R1 and 90° − α ∓ φ2 with R2; hence
+    F = Q·sin(α ± (φ1 + φ2))/cos φ1 (forward: F drives the wedge in; reverse: the clamp drives it
+    out and F holds it — the book's R23 = P·cos φ/sin(α − 2φ) turned round). Frictionless:
+    F0 = Q·sin α.
+
+    >>> round(wedge_clamp_force(1000.0, math.radians(10), math.atan(0.1), math.atan(0.1), "reverse"), 9)
+    -24.925537048
+    """
+    return Q * math.sin(alpha + _sign(direction) * (phi1 + phi2)) / math.cos(phi1)
+
+
+def wedge_clamp_reaction(Q: float, alpha: float, phi1: float, phi2: float, direction: Direction) -> float:
+    """R1, face 1's total reaction on the clamp's wedge: Q·cos(α ± φ2)/cos φ1 (its normal part
+    balances R2's, Q·cos(α ± φ2)).
+
+    >>> round(wedge_clamp_reaction(1000.0, math.radians(60), 0.0, 0.0, "forward"), 9)
+    500.0
+    """
+    return Q * math.cos(alpha + _sign(direction) * phi2) / math.cos(phi1)
+
+
+def wedge_clamp_locking(phi1: float, phi2: float) -> float:
+    """The clamp's self-locking limit on the wedge angle α, rad: the reverse stroke locks for
+    α ≤ φ1 + φ2 (the book's α − 2φ ≤ 0). The forward stroke never locks: F would have to lie
+    along R1, which needs φ1 = 90°.
+
+    >>> round(math.degrees(wedge_clamp_locking(math.atan(0.15), 0.0)), 9)
+    8.53076561
+    """
+    return phi1 + phi2
+
+
+# ---------------------------------------------------------------------------- the wedge buffer
+
+
+def buffer_force(Q: float, alpha: float, phi: float, direction: Direction) -> float:
+    """P on the buffer's driving wedge 1 against the spring Q on wedge 2 (000 效率 3): the face
+    between them at α to the spring's line, the guides frictionless: P = Q·cot(α ∓ φ) (forward:
+    P pushes the wedges apart; reverse: the spring pushes them back and P holds); P0 = Q·cot α.
+
+    >>> round(buffer_force(1000.0, math.radians(45), 0.0, "forward"), 9)
+    1000.0
+    """
+    return Q / math.tan(alpha - _sign(direction) * phi)
+
+
+def buffer_reaction(Q: float, alpha: float, phi: float, direction: Direction) -> float:
+    """R12, wedge 1's total reaction on wedge 2: Q/sin(α ∓ φ) (its part along the spring's line is Q).
+
+    >>> round(buffer_reaction(1000.0, math.radians(30), 0.0, "reverse"), 9)
+    2000.0
+    """
+    return Q / math.sin(alpha - _sign(direction) * phi)
+
+
+def buffer_locking(phi: float) -> tuple[float, float]:
+    """The buffer's self-locking limits on the face angle α, rad: the forward stroke locks for
+    α ≤ φ, the reverse one for α ≥ 90° − φ; neither locks for φ < α < 90° − φ.
+
+    >>> [round(math.degrees(a), 9) for a in buffer_locking(math.radians(10))]
+    [10.0, 80.0]
+    """
+    return phi, math.pi / 2 - phi
+
+
+def buffer_locking_coefficients(alpha: float) -> tuple[float, float]:
+    """The same limits as friction coefficients for a given α: the forward stroke locks for
+    f ≥ tan α, the reverse one for f ≥ cot α.
+
+    >>> [round(x, 12) for x in buffer_locking_coefficients(math.radians(45))]
+    [1.0, 1.0]
+    """
+    return math.tan(alpha), 1.0 / math.tan(alpha)
+
+
+# ---------------------------------------------------------------------------- a screw's collar and drive
+
+
+def annulus_friction_radius(d0: float, dw: float) -> float:
+    """The exact friction radius of a bearing annulus under uniform pressure, m:
+    (2/3)(R³ − r³)/(R² − r²) = (dw³ − d0³)/(3(dw² − d0²)) — above the mean radius (d0 + dw)/4.
+
+    >>> round(annulus_friction_radius(9e-3, 11.5e-3) * 1e3, 9)
+    5.150406504
+    """
+    return (dw ** 3 - d0 ** 3) / (3.0 * (dw ** 2 - d0 ** 2))
+
+
+def tightening_torque(Q: float, d2: float, psi: float, phi_v: float, f_c: float, r_c: float) -> float:
+    """T = Q·[d2/2·tan(ψ + φv) + f_c·r_c], N·m: the thread's torque and the collar's friction.
+
+    >>> round(tightening_torque(25500.0, 7.188e-3, math.radians(3.0), math.radians(6.0), 0.12, 5.125e-3), 6)
+    30.197959
+    """
+    return Q * (d2 / 2.0 * math.tan(psi + phi_v) + f_c * r_c)
+
+
+def bolt_force_from_torque(T: float, d2: float, psi: float, phi_v: float, f_c: float, r_c: float) -> float:
+    """F_a = T/[d2/2·tan(ψ + φv) + f_c·r_c], N: the axial force a wrench torque T produces.
+
+    >>> round(bolt_force_from_torque(30.0, 7.188e-3, math.atan(1.25e-3 / (math.pi * 7.188e-3)), math.atan(0.1),
+    ...                              0.12, 5.125e-3), 6)
+    25500.412449
+    """
+    return T / (d2 / 2.0 * math.tan(psi + phi_v) + f_c * r_c)
+
+
+def screw_drive_power(Q: float, v: float, psi: float, phi_v: float) -> float:
+    """P = Q·v/η with η = tan ψ/tan(ψ + φv), W: the power that lifts Q at the speed v.
+
+    >>> round(screw_drive_power(1e5, 0.8 / 60.0, math.atan(0.04 / (math.pi * 0.065)), math.atan(0.1)), 6)
+    2054.251028
+    """
+    return Q * v * math.tan(psi + phi_v) / math.tan(psi)
+
+
+def screw_speed(v: float, lead: float) -> float:
+    """n = v/L, the screw's speed in rev/s for a lift speed v and a lead L = n·P.
+
+    >>> round(screw_speed(0.8 / 60.0, 0.04) * 60.0, 12)
+    20.0
+    """
+    return v / lead
+
+
 # ---------------------------------------------------------------------------- machine chains
 
 
@@ -246,8 +378,10 @@ def efficiency(direction: Direction, ideal: float, actual: float) -> float:
 
 
 __all__ = [
-    "Direction", "WedgeForces", "efficiency", "equivalent_friction_angle", "incline_efficiency",
-    "incline_force", "incline_reaction", "lead_angle", "parallel_efficiency", "screw_efficiency",
-    "screw_torque", "self_locking_efficiency_bound", "series_efficiency", "wedge_forces",
-    "wedge_ideal_force",
+    "Direction", "WedgeForces", "annulus_friction_radius", "bolt_force_from_torque", "buffer_force",
+    "buffer_locking", "buffer_locking_coefficients", "buffer_reaction", "efficiency", "equivalent_friction_angle",
+    "incline_efficiency", "incline_force", "incline_reaction", "lead_angle", "parallel_efficiency",
+    "screw_drive_power", "screw_efficiency", "screw_speed", "screw_torque", "self_locking_efficiency_bound",
+    "series_efficiency", "tightening_torque", "wedge_clamp_force", "wedge_clamp_locking", "wedge_clamp_reaction",
+    "wedge_forces", "wedge_ideal_force",
 ]

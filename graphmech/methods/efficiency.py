@@ -320,6 +320,94 @@ def wedge_locking_angle(beta: float, phi: float) -> float:
     return limiting_angle(sine, *WEDGE_LIMIT_RANGE)
 
 
+# ---------------------------------------------------------------------------- the wedge clamp and the buffer
+
+
+def wedge_clamp(Q: float, alpha: float, phi1: float, phi2: float, direction: Direction, mu_F: float) -> Stroke:
+    """The welding clamp's wedge (000 效率 2): one body between two faces, each with its own
+    friction angle (0: frictionless).
+
+    Face 1 is horizontal below the wedge, which slides along it (+x forward: driven in) under F ∥
+    face 1; face 2 above it meets face 1 at the wedge angle α ahead of the wedge, and the clamp's
+    body presses on it with the clamping force Q (its total reaction R2). The polygon: lay off
+    R2 = Q (the normal of face 2 turned by φ2 against the wedge's velocity along face 2), close
+    with F and R1 (face 1's normal turned by φ1 against its velocity along face 1).
+
+    Examples
+    --------
+    >>> s = wedge_clamp(1000.0, math.radians(20), math.atan(0.1), math.atan(0.1), "reverse", 10.0)
+    >>> round(s.F, 6), round(s.F0, 6), round(s.eta, 9)
+    (149.913714, 342.020143, 0.438318376)
+    """
+    sense = _sense(direction)
+    v = (sense, 0.0)  # the wedge relative to face 1
+    v2 = (sense * math.cos(alpha), -sense * math.sin(alpha))  # … and relative to face 2, along it
+    n1 = (0.0, 1.0)
+    n2 = (-math.sin(alpha), -math.cos(alpha))  # the body pushes the wedge down and back
+
+    def solve(f1: float, f2: float, ideal: bool) -> ForcePolygon:
+        d2 = turned_by_friction(n2, v2, f2)
+        return close_polygon("wedge", (0.0, 0.0), [("Q", (Q * d2[0], Q * d2[1]))], Unknown("F", (1.0, 0.0)),
+                             Unknown("R1", turned_by_friction(n1, v, f1)), mu_F, ideal=ideal)
+
+    ideal = solve(0.0, 0.0, True)
+    F0 = _value(ideal, "F")
+    try:
+        real = solve(phi1, phi2, False)
+    except DegenerateConstruction:  # F ∥ R1: no finite force moves it
+        return Stroke(direction, (ideal,), None, F0, 0.0, (), math.inf, (("v", v), ("v2", v2)))
+    if _value(real, "R1") < 0.0:
+        raise DegenerateConstruction("wedge: R1", "friction turns face 1's total reaction to pull (α ± φ2 beyond "
+                                     "90°): the wedge lifts off face 1 and the clamp does not apply")
+    F = _value(real, "F")
+    return Stroke(direction, (ideal, real), F, F0, _eta(direction, F0, F), (("R_face1", _value(real, "R1")),),
+                  real.cond, (("v", v), ("v2", v2)))
+
+
+def buffer(Q: float, alpha: float, phi: float, direction: Direction, mu_F: float) -> Stroke:
+    """The wedge buffer of 000 效率 3 (reconstructed: the guides frictionless, the face between the
+    wedges with friction φ, as the book's single φ says).
+
+    Wedge 1 slides down a vertical guide 3 (on its right) under P (named F); the face between it
+    and wedge 2 descends to the right at α to the horizontal; wedge 2 slides left along the
+    horizontal guide 4 against the spring Q. Velocities (forward): v1 = (0, −1), v2 = (−cot α, 0),
+    v21 = v2 − v1 along the face. Polygons: wedge 2 (Q, R42, R12), then wedge 1 (R21 = −R12, F,
+    R31), joined along R12.
+
+    Examples
+    --------
+    >>> s = buffer(1000.0, math.radians(40), math.atan(0.15), "forward", 20.0)
+    >>> round(s.F, 6), round(s.F0, 6)
+    (1633.820269, 1191.753593)
+    """
+    sense = _sense(direction)
+    v1 = (0.0, -sense)
+    v2 = (-sense / math.tan(alpha), 0.0)
+    v21 = (v2[0] - v1[0], v2[1] - v1[1])
+    n12 = (-math.sin(alpha), -math.cos(alpha))  # into wedge 2 (below-left of the face)
+
+    def solve(fr: float, ideal: bool) -> tuple[ForcePolygon, ForcePolygon]:
+        d12 = turned_by_friction(n12, v21, fr)
+        p2 = close_polygon("wedge 2", (0.0, 0.0), [("Q", (Q, 0.0))], Unknown("R42", (0.0, 1.0)),
+                           Unknown("R12", d12), mu_F, ideal=ideal)
+        r12 = next(s for s in p2.forces if s.name == "R12")
+        r21 = DrawnForce("R21", r12.end, r12.start, r12.value)
+        p1 = close_polygon("wedge 1", r12.end, [r21], Unknown("F", (0.0, -1.0)), Unknown("R31", (-1.0, 0.0)),
+                           mu_F, ideal=ideal)
+        return p2, p1
+
+    q2, q1 = solve(0.0, True)
+    F0 = _value(q1, "F")
+    try:
+        p2, p1 = solve(phi, False)
+    except DegenerateConstruction:  # R12 ∥ guide 4's normal: no finite force moves it
+        return Stroke(direction, (q2, q1), None, F0, 0.0, (), math.inf, (("v1", v1), ("v2", v2)))
+    F = _value(p1, "F")
+    reactions = tuple((n, abs(_value(p, n))) for p, n in ((p2, "R12"), (p2, "R42"), (p1, "R31")))
+    return Stroke(direction, (q2, q1, p2, p1), F, F0, _eta(direction, F0, F), reactions, max(p2.cond, p1.cond),
+                  (("v1", v1), ("v2", v2)))
+
+
 # ---------------------------------------------------------------------------- limiting angles
 
 
@@ -394,6 +482,6 @@ def chain(stages: Sequence[tuple[str, Sequence[tuple[float, Sequence[float]]]]],
     return power_out / p, tuple(results)
 
 
-__all__ = ["DrawnForce", "ForcePolygon", "Stroke", "StageResult", "Unknown", "chain", "close_polygon", "incline",
-           "limiting_angle", "turned_by_friction", "wedge", "wedge_locking_angle", "ETA_ZERO",
+__all__ = ["DrawnForce", "ForcePolygon", "Stroke", "StageResult", "Unknown", "buffer", "chain", "close_polygon", "incline",
+           "limiting_angle", "turned_by_friction", "wedge", "wedge_clamp", "wedge_locking_angle", "ETA_ZERO",
            "INCLINE_LIMIT_RANGE", "WEDGE_LIMIT_RANGE"]

@@ -155,7 +155,7 @@ UNITS: dict[str, dict[str, tuple[float, float]]] = {
         "deg/s²": (math.pi, 180.0),
         "deg/s^2": (math.pi, 180.0),
     },
-    "velocity": {"m/s": (1.0, 1.0), "mm/s": (1.0, 1000.0)},
+    "velocity": {"m/s": (1.0, 1.0), "mm/s": (1.0, 1000.0), "m/min": (1.0, 60.0), "mm/min": (1.0, 60000.0)},
     "acceleration": {
         "m/s2": (1.0, 1.0),
         "m/s²": (1.0, 1.0),
@@ -194,7 +194,7 @@ SUFFIXES: dict[str, dict[str, str]] = {
     "angle": {"deg": "deg", "rad": "rad"},
     "omega": {"rad_s": "rad/s", "rpm": "rpm", "deg_s": "deg/s"},
     "epsilon": {"rad_s2": "rad/s2", "deg_s2": "deg/s2"},
-    "velocity": {"m_s": "m/s", "mm_s": "mm/s"},
+    "velocity": {"m_s": "m/s", "mm_s": "mm/s", "m_min": "m/min", "mm_min": "mm/min"},
     "acceleration": {"m_s2": "m/s2", "mm_s2": "mm/s2"},
     "mass": {"kg": "kg"},
     "inertia": {"kgm2": "kgm2"},

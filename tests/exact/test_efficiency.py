@@ -108,3 +108,40 @@ def test_an_unknown_direction_is_refused():
                  lambda: ex.wedge_forces(1.0, 1.0, 1.0, 0.1, "in")):
         with pytest.raises(ValueError, match="'forward' or 'reverse'"):
             call()
+
+
+# ---------------------------------------------------------------------------- issue 22: clamp, buffer, collar, drive
+
+
+
+def test_wedge_clamp_closed_form_is_the_books_with_two_angles():
+    a, p1, p2 = math.radians(12), math.atan(0.15), math.atan(0.15)
+    # 000 效率 2: R23 = P·cos φ/sin(α − 2φ) → P = R23·sin(α − 2φ)/cos φ
+    assert ex.wedge_clamp_force(1000.0, a, p1, p2, "reverse") == pytest.approx(
+        1000.0 * math.sin(a - 2 * p1) / math.cos(p1), rel=1e-15)
+    assert ex.wedge_clamp_force(1000.0, a, 0.0, 0.0, "forward") == pytest.approx(1000.0 * math.sin(a), rel=1e-15)
+    assert ex.wedge_clamp_reaction(1000.0, a, 0.0, 0.0, "reverse") == pytest.approx(1000.0 * math.cos(a), rel=1e-15)
+    assert ex.wedge_clamp_locking(0.1, 0.2) == pytest.approx(0.3, rel=1e-15)
+
+
+def test_buffer_closed_forms_and_both_limits():
+    a, phi = math.radians(40), math.radians(10)
+    assert ex.buffer_force(1.0, a, phi, "forward") == pytest.approx(1.0 / math.tan(math.radians(30)), rel=1e-15)
+    assert ex.buffer_force(1.0, a, phi, "reverse") == pytest.approx(1.0 / math.tan(math.radians(50)), rel=1e-15)
+    assert ex.buffer_reaction(2.0, a, phi, "forward") == pytest.approx(2.0 / math.sin(math.radians(30)), rel=1e-15)
+    assert [math.degrees(x) for x in ex.buffer_locking(phi)] == pytest.approx([10.0, 80.0], rel=1e-14)
+    assert ex.buffer_locking_coefficients(math.radians(30)) == pytest.approx((3 ** -0.5, 3 ** 0.5), rel=1e-14)
+
+
+def test_collar_radius_bolt_force_and_drive_power():
+    # annulus d0 = 9, dw = 11.5 mm: (11.5³ − 9³)/(3(11.5² − 9²)) = 791.875/153.75 mm
+    assert ex.annulus_friction_radius(9e-3, 11.5e-3) == pytest.approx(791.875 / 153.75e3, rel=1e-14)
+    psi, phv = math.atan(1.25e-3 / (math.pi * 7.188e-3)), math.atan(0.1)
+    T = ex.tightening_torque(25500.0, 7.188e-3, psi, phv, 0.12, 5.125e-3)
+    assert ex.bolt_force_from_torque(T, 7.188e-3, psi, phv, 0.12, 5.125e-3) == pytest.approx(25500.0, rel=1e-14)
+    assert T == pytest.approx(29.9995, abs=1e-4)
+    # 10-4: P = Q·v/η equals T·ω
+    psi = math.atan(0.04 / (math.pi * 0.065))
+    T = 1e5 * 0.065 / 2 * math.tan(psi + phv)
+    assert ex.screw_drive_power(1e5, 0.8 / 60, psi, phv) == pytest.approx(T * 2 * math.pi * 20 / 60, rel=1e-14)
+    assert ex.screw_speed(0.8 / 60, 0.04) == pytest.approx(1 / 3, rel=1e-15)

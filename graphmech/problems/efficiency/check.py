@@ -64,8 +64,8 @@ class EfficiencyAnalysis:
     def angle(self) -> float:
         """The incline's α or the screw's lead angle ψ (φv at the self-locking limit), rad."""
         p = self.problem
-        # read_efficiency refuses an incline without α, and a screw without ψ off the limit
-        if p.type == "incline":
+        # read_efficiency refuses an incline, a clamp or a buffer without α, and a screw without ψ off the limit
+        if p.type in ("incline", "wedge_clamp", "buffer"):
             return float(cast(float, p.angle))
         return self.phi if p.at_limit else float(cast(float, p.lead_angle))
 
@@ -102,6 +102,10 @@ def requested(scene: Scene[EfficiencyProblem], extra: tuple[tuple[str, float], .
         if base == "M" and p.d2 is None:
             problems.append((key, "M needs the pitch diameter: add d2_mm to [efficiency]"))
             continue
+        missing = _screw_needs(p, base)
+        if missing:
+            problems.append((key, f"{base} needs {missing} in [efficiency]"))
+            continue
         if base in ("r_f", "sigma") and (p.collar if base == "r_f" else p.d1) is None:
             need = "collar_mm = [d0, dw]" if base == "r_f" else "d1_mm"
             problems.append((key, f"{base} needs {need} in [efficiency]"))
@@ -116,6 +120,22 @@ def requested(scene: Scene[EfficiencyProblem], extra: tuple[tuple[str, float], .
     return list(dict.fromkeys(out))
 
 
+#: What each of a screw's collar, wrench and drive quantities needs besides f: (field, key to add).
+_SCREW_NEEDS = {
+    "r_c": ("collar",), "M_c": ("collar", "f_c"), "T_tighten": ("collar", "f_c", "d2"),
+    "F_a": ("collar", "f_c", "d2", "torque"), "sigma_a": ("collar", "f_c", "d2", "torque", "d1"),
+    "P_drive": ("speed",), "n_screw": ("speed", "lead"),
+}
+_NEED_KEYS = {"collar": "collar_mm = [d0, dw]", "f_c": "f_c (the collar's friction coefficient)",
+              "d2": "d2_mm", "torque": "torque_Nm (the wrench's torque)", "d1": "d1_mm",
+              "speed": "speed_m_s (the load's lift speed)", "lead": "pitch_mm (the lead L = n·P)"}
+
+
+def _screw_needs(p: EfficiencyProblem, base: str) -> str:
+    """The keys a screw quantity still needs, said as a phrase ('' when it has them all)."""
+    return " and ".join(_NEED_KEYS[k] for k in _SCREW_NEEDS.get(base, ()) if getattr(p, k) is None)
+
+
 def analyse_efficiency(scene: Scene[EfficiencyProblem], extra_measured: tuple[tuple[str, float], ...] = ()) -> EfficiencyAnalysis:
     """Carry out what the efficiency scene asks for and build its check table."""
     p: EfficiencyProblem = scene.problem
@@ -126,7 +146,8 @@ def analyse_efficiency(scene: Scene[EfficiencyProblem], extra_measured: tuple[tu
     else:
         bases = {n.partition("@")[0] for n in names} | {
             m.partition("@")[0] for _, m, _ in measured_entries(scene, extra_measured)}
-        needs_polygon = "polygon" in scene.show or bool(bases & {"F", "F0", "eta", "R", "R12", "R32", "R31", "M"})
+        needs_polygon = "polygon" in scene.show or bool(
+            bases & {"F", "F0", "eta", "R", "R12", "R32", "R31", "R42", "R_face1", "M"})
         if needs_polygon:
             _strokes(an)
     for name in names:
@@ -146,13 +167,80 @@ def _wedge_angles(p: EfficiencyProblem) -> tuple[float, float]:
 
 def _stroke(an: EfficiencyAnalysis, direction: Direction, mu_F: float) -> gm.Stroke:
     p = an.problem
-    load = cast(float, p.load)  # drawn only for what needs Q: read_efficiency then requires it
+    # drawn only for what needs Q: read_efficiency then requires it, or a wrench's torque gives it
+    load = p.load if p.load is not None else _bolt_force(an)[0]
     if p.type == "wedge":
         return gm.wedge(load, *_wedge_angles(p), an.phi, direction, mu_F)
+    if p.type == "wedge_clamp":
+        return gm.wedge_clamp(load, an.angle, *_face_angles(p), direction, mu_F)
+    if p.type == "buffer":
+        return gm.buffer(load, an.angle, an.phi, direction, mu_F)
     names = ("F", "R")
     push = p.push if p.type == "incline" else "horizontal"
     return gm.incline(load, an.angle, an.phi if p.f is not None else 0.0, direction, mu_F, push,
                       names=names)
+
+
+def _face_angles(p: EfficiencyProblem) -> tuple[float, float]:
+    """φ1 and φ2 of a wedge clamp's two faces (read_efficiency refuses any other count), rad."""
+    (_, f1), (_, f2) = p.faces
+    return math.atan(f1), math.atan(f2)
+
+
+def unit_thread(an: EfficiencyAnalysis) -> gm.Stroke:
+    """The unrolled thread's raising polygon at Q = 1 N, μF = 1 N/mm: its F is tan(ψ + φv) as drawn."""
+    try:
+        return gm.incline(1.0, an.angle, an.phi, "forward", 1.0)
+    except DegenerateConstruction as e:
+        raise SceneError([("efficiency", str(e))], an.scene.source) from None
+
+
+def _collar_radius(p: EfficiencyProblem) -> tuple[float, float]:
+    """(as drawn/summed, closed form) of the collar's friction radius by the scene's rule, m."""
+    d0, dw = cast("tuple[float, float]", p.collar)  # requested() refuses r_c and the rest without it
+    if p.collar_rule == "mean":
+        return (d0 + dw) / 4.0, 0.5 * (0.5 * d0 + 0.5 * dw)
+    R, r = dw / 2.0, d0 / 2.0
+    return 2.0 / 3.0 * (R ** 3 - r ** 3) / (R ** 2 - r ** 2), ex.annulus_friction_radius(d0, dw)
+
+
+def _bolt_force(an: EfficiencyAnalysis) -> tuple[float, float]:
+    """F_a from the wrench's torque: T over the unrolled thread's drawn F (at 1 N) × d2/2 plus
+    the collar's f_c·r_c; against the closed form."""
+    p = an.problem
+    T, d2, fc = cast(float, p.torque), cast(float, p.d2), cast(float, p.f_c)
+    rg, re = _collar_radius(p)
+    k_t = cast(float, unit_thread(an).F)  # a raising polygon of a thread (ψ, φv < 90°) closes
+    return T / (k_t * d2 / 2.0 + fc * rg), ex.bolt_force_from_torque(T, d2, an.angle, an.phi, fc, re)
+
+
+def _screw_extra(an: EfficiencyAnalysis, base: str) -> tuple[float, float, float | None, float, bool, float]:
+    """A screw's collar, wrench and drive quantities (requested() has checked what each needs)."""
+    p = an.problem
+    if base == "r_c":
+        g, e = _collar_radius(p)
+        return g, e, None, 1.0, False, e
+    if base in ("F_a", "sigma_a"):
+        g, e = _bolt_force(an)
+        if base == "sigma_a":
+            d1 = cast(float, p.d1)
+            g, e = g / (math.pi * d1 * d1 / 4.0), 4.0 * e / (math.pi * d1 ** 2)
+        return g, e, None, 1.0, False, e
+    if base == "n_screw":  # rev/min: the lift speed over the lead, once round per lead
+        v, lead = cast(float, p.speed), cast(float, p.lead)
+        return 60.0 * v / lead, 60.0 * ex.screw_speed(v, lead), None, 1.0, False, 1.0
+    Q, Qe = (p.load, p.load) if p.load is not None else _bolt_force(an)  # the load, or the wrench's F_a
+    if base == "P_drive":  # Q·v over η read off the raising polygon
+        v = cast(float, p.speed)
+        return Q * v / unit_thread(an).eta, ex.screw_drive_power(Qe, v, an.angle, an.phi), None, 1.0, False, Qe * v
+    fc = cast(float, p.f_c)
+    rg, re = _collar_radius(p)
+    if base == "M_c":
+        return fc * Q * rg, fc * Qe * re, None, 1.0, False, Qe * re
+    d2 = cast(float, p.d2)  # T_tighten
+    k_t = cast(float, unit_thread(an).F)
+    return Q * (k_t * d2 / 2.0 + fc * rg), ex.tightening_torque(Qe, d2, an.angle, an.phi, fc, re), None, 1.0, \
+        False, Qe * d2
 
 
 def _strokes(an: EfficiencyAnalysis) -> None:
@@ -240,7 +328,19 @@ def _values(an: EfficiencyAnalysis, base: str, d: Direction) -> tuple[float, flo
         if base == "P_in":
             return stages[0].power_in, p_out / eta_e, None, 1.0, False, p_out
         return stages[-1].power_out, p_out, None, 1.0, False, p_out
-    phi, Q = an.phi, float(p.load if p.load is not None else 1.0)
+    if base in _SCREW_NEEDS:
+        return _screw_extra(an, base)
+    if base in ("phi_face1", "phi_face2"):
+        f = p.faces[0 if base == "phi_face1" else 1][1]
+        return math.degrees(_face_angles(p)[0 if base == "phi_face1" else 1]), math.degrees(math.atan2(f, 1.0)), \
+            None, 1.0, False, 1.0
+    if base in ("alpha_lock_forward", "alpha_lock_reverse", "f_lock_forward", "f_lock_reverse"):
+        try:
+            return _lock_limits(an, base)
+        except DegenerateConstruction as e:
+            raise SceneError([("find", f"{base}: {e}")], an.scene.source) from None
+    phi = an.phi
+    Q = float(p.load) if p.load is not None else (_bolt_force(an)[0] if p.torque is not None else 1.0)
     mu = an.scales.get("F", 1.0)
     if base in ("phi", "phi_v"):
         return math.degrees(phi), math.degrees(math.atan((p.f or 0.0) / math.cos(p.half_angle))), None, 1.0, False, 1.0
@@ -275,6 +375,16 @@ def _values(an: EfficiencyAnalysis, base: str, d: Direction) -> tuple[float, flo
         F0e = ex.wedge_ideal_force(Q, *_wedge_angles(p))
         exact_R = {"R12": exact.R12, "R32": exact.R32, "R31": exact.R31}
         Fe = exact.F
+    elif p.type == "wedge_clamp":
+        p1, p2 = _face_angles(p)
+        Fe = ex.wedge_clamp_force(Q, an.angle, p1, p2, d)
+        F0e = ex.wedge_clamp_force(Q, an.angle, 0.0, 0.0, d)
+        exact_R = {"R_face1": ex.wedge_clamp_reaction(Q, an.angle, p1, p2, d)}
+    elif p.type == "buffer":
+        Fe = ex.buffer_force(Q, an.angle, phi, d)
+        F0e = ex.buffer_force(Q, an.angle, 0.0, d)
+        # the guides carry R12's parts: across the spring's line (R42, as P on wedge 1) and along it (R31 = Q)
+        exact_R = {"R12": ex.buffer_reaction(Q, an.angle, phi, d), "R42": abs(Fe), "R31": Q}
     else:
         push = p.push if p.type == "incline" else "horizontal"
         Fe = ex.incline_force(Q, an.angle, phi, d, push)
@@ -311,6 +421,38 @@ def _limits(an: EfficiencyAnalysis, base: str, phi: float) -> tuple[float, float
     return eta, ex.self_locking_efficiency_bound(phi), None, 1.0, False, 1.0
 
 
+def _lock_limits(an: EfficiencyAnalysis, base: str) -> tuple[float, float, float | None, float, bool, float]:
+    """The self-locking limits of a wedge clamp (reverse) or a buffer (both), found on the
+    construction: the polygon at Q = 1 N is redrawn at other wedge angles (or friction angles, for
+    f_lock) until the driving force F changes sign (η = 0), against the closed forms."""
+    p = an.problem
+    d: Direction = "forward" if base.endswith("forward") else "reverse"
+
+    def drawn_F(st: gm.Stroke) -> float:
+        return 0.0 if st.F is None else st.F
+
+    if p.type == "wedge_clamp":
+        p1, p2 = _face_angles(p)
+        if p1 + p2 == 0.0:  # both faces frictionless: nothing locks, the limit is 0
+            return 0.0, 0.0, None, 1.0, False, 1.0
+        # up to α − φ2 = 90°, where face 1 would let go; the limit φ1 + φ2 lies below it
+        g = gm.limiting_angle(lambda a: drawn_F(gm.wedge_clamp(1.0, a, p1, p2, "reverse", 1.0)), 1e-200,
+                              math.pi / 2 + p2 - 1e-9)
+        return math.degrees(g), math.degrees(ex.wedge_clamp_locking(p1, p2)), None, 1.0, False, 1.0
+    phi, alpha = an.phi, an.angle
+    if base.startswith("alpha"):
+        if phi == 0.0:  # frictionless: it locks only at the ends, α = 0° forward and 90° reverse
+            e = 0.0 if d == "forward" else 90.0
+            return e, e, None, 1.0, False, 1.0
+        # at 0° and 90° the frictionless polygon of wedge 2 (R12 ∥ R42) no longer closes: the wedge's range
+        g = gm.limiting_angle(lambda a: drawn_F(gm.buffer(1.0, a, phi, d, 1.0)), *gm.WEDGE_LIMIT_RANGE)
+        e = ex.buffer_locking(phi)[0 if d == "forward" else 1]
+        return math.degrees(g), math.degrees(e), None, 1.0, False, 1.0
+    g = gm.limiting_angle(lambda x: drawn_F(gm.buffer(1.0, alpha, x, d, 1.0)), *gm.INCLINE_LIMIT_RANGE)
+    e = ex.buffer_locking_coefficients(alpha)[0 if d == "forward" else 1]
+    return math.tan(g), e, None, 1.0, False, e
+
+
 def judge_efficiency(an: EfficiencyAnalysis, precision_mm: float | None = None) -> list[Verdict]:
     """Hand values against the construction: drawn forces within the drawing precision × μF,
     the rest within 0.1 %."""
@@ -332,7 +474,7 @@ def judge_efficiency(an: EfficiencyAnalysis, precision_mm: float | None = None) 
     return out
 
 
-__all__ = ["EfficiencyAnalysis", "analyse_efficiency", "judge_efficiency", "requested"]
+__all__ = ["EfficiencyAnalysis", "analyse_efficiency", "judge_efficiency", "requested", "unit_thread"]
 
 
 def efficiency_figure(an: EfficiencyAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:

@@ -10,7 +10,10 @@ diagram
     screw — the thread unrolled: the lead triangle π·d2 by L = n·P with ψ, and the nut as a
     block on it, pushed by the circumferential force F (horizontal), loaded by Q;
     wedge — guide 2 (horizontal), the face at γ, guide 1 at β, sliders 1 and 2, Q and F;
-    chain — the machines as boxes in the order power flows, their η, the power between them.
+    chain — the machines as boxes in the order power flows, their η, the power between them;
+    wedge_clamp — the wedge 3 between face 1 (workpiece 1, below) and face 2 (body 2, above) at
+    α, F along face 1, the clamping force Q and R1 at their faces (each face's name and f);
+    buffer — wedge 1 on guide 3, wedge 2 on guide 4, the face between them at α, P and Q.
 polygon
     one panel per direction (forward: F drives; reverse: the load drives): the frictionless
     polygon thin and dashed (F0), the polygon with friction bold, every side an arrow named
@@ -50,6 +53,8 @@ EFF_WORDS: dict[str, tuple[str, str, str]] = {
     "screw": ("Screw thread unrolled", "螺纹展开", "Развёртка резьбы"),
     "incline": ("Inclined plane", "斜面", "Наклонная плоскость"),
     "wedge": ("Wedge", "楔形机构", "Клин"),
+    "wedge_clamp": ("Wedge clamp", "楔形夹具", "Клиновой зажим"),
+    "buffer": ("Wedge buffer", "楔块缓冲器", "Клиновой амортизатор"),
     "series": ("Machines in series", "串联机组", "Последовательное соединение машин"),
     "parallel": (" and in parallel", "与并联", " и параллельное"),
     "motor": ("motor", "电动机", "двигатель"),
@@ -206,6 +211,64 @@ def _wedge_diagram(gamma: float, beta: float, stroke: Stroke | None = None) -> l
     return items
 
 
+def _side(stroke: Stroke | None, name: str) -> XY | None:
+    """The direction of the friction polygon's side ``name`` (None when not drawn)."""
+    for poly in (stroke.polygons if stroke is not None else ()):
+        for f in poly.forces:
+            if not poly.ideal and f.name == name and math.dist(f.start, f.end) > 0.0:
+                return _unit((f.end[0] - f.start[0], f.end[1] - f.start[1]))
+    return None
+
+
+def _clamp_diagram(alpha: float, faces: Sequence[tuple[str, float]], stroke: Stroke | None) -> list[Primitive]:
+    """The clamp's wedge 3: face 1 below (workpiece 1), face 2 above (body 2) meeting it at α."""
+    L = DIAGRAM_MM / max(1.0, math.tan(alpha))  # a steep wedge shorter, so that it stays DIAGRAM_MM high
+    tip, back = (L, 0.0), (0.0, 0.0)
+    top = (0.0, L * math.tan(alpha))
+    up_face = _dir(math.pi - alpha)  # along face 2 from the tip to the back; body 2 lies above it
+    items: list[Primitive] = [GuideLine((-0.15 * L, 0.0), (1.15 * L, 0.0)),
+                              GuideLine(_add(top, up_face, 0.15 * L), _add(tip, up_face, -0.15 * L)),
+                              Polyline((back, tip, top), "given", closed=True)]
+    items += [Label("3", (0.3 * L, 0.3 * top[1]), (), LETTER, italic=False),
+              Label(f"1: {faces[0][0]}, f = {number(faces[0][1])}", (0.45 * L, -9.0), ((0.0, -1.0),), LETTER,
+                    italic=False),
+              Label(f"2: {faces[1][0]}, f = {number(faces[1][1])}",
+                    _add(_mid(tip, top), (math.sin(alpha), math.cos(alpha)), 12.0),
+                    ((math.sin(alpha), math.cos(alpha)),), LETTER, italic=False)]
+    items += _angle_arc(tip, 16.0, math.pi - alpha, math.pi, "α")
+    items += _force_arrow("F", (0.0, 0.4 * top[1]), (1.0, 0.0))
+    q = _side(stroke, "Q") or (-math.sin(alpha), -math.cos(alpha))
+    items += _force_arrow("Q", _mid(tip, top), q)
+    r1 = _side(stroke, "R1")
+    if r1 is not None:
+        items += [Segment((0.65 * L, -6.0), (0.65 * L, 18.0), "construction", dashed=True)]
+        items += _force_arrow("R1", (0.65 * L, 0.0), r1, at_tail=True)
+    return items
+
+
+def _buffer_diagram(alpha: float, stroke: Stroke | None) -> list[Primitive]:
+    """Wedge 1 (above the face, on the vertical guide 3) and wedge 2 (below it, on guide 4)."""
+    a = 0.5 * DIAGRAM_MM
+    c, s = a * math.cos(alpha), a * math.sin(alpha)
+    A, B, C, D = (-c, s), (c, -s), (c, s), (-c, -s)
+    items: list[Primitive] = [GuideLine((c, -s - 6.0), (c, s + 14.0)), GuideLine((-c - 14.0, -s), (c + 6.0, -s)),
+                              Polyline((A, B, C), "given", closed=True), Polyline((A, B, D), "given", closed=True)]
+    items += [Label("1", _mid(_mid(A, C), B), (), LETTER, italic=False),
+              Label("2", _mid(_mid(A, D), B), (), LETTER, italic=False),
+              Label("3", (c + 6.0, s + 8.0), ((1.0, 0.0),), LETTER, italic=False),
+              Label("4", (-c - 8.0, -s - 6.0), ((0.0, -1.0),), LETTER, italic=False)]
+    items += _angle_arc(B, 14.0, math.pi - alpha, math.pi, "α")
+    items += _force_arrow("F", _mid(A, C), (0.0, -1.0))
+    items += _force_arrow("Q", _mid(A, D), (1.0, 0.0), at_tail=True)
+    r12 = _side(stroke, "R12")
+    if r12 is not None:
+        at = _mid(A, B)
+        n = (-math.sin(alpha), -math.cos(alpha))
+        items.append(Segment(_add(at, n, -5.0), _add(at, n, 15.0), "construction", dashed=True))
+        items += _force_arrow("R12", at, r12, 13.0, at_tail=True)
+    return items
+
+
 def _chain_diagram(stages: Sequence[Stage], powers: Sequence[StageResult], width: float = math.inf,
                    notation: str = "en") -> list[Primitive]:
     """The machines as boxes, the power on the arrows between them, in rows no wider than
@@ -311,7 +374,14 @@ def efficiency_sheet(title: str, problem: EfficiencyProblem, strokes: dict[Direc
             head = eff_word("series", notation) + (eff_word("parallel", notation) if parallel else "")
             notes = (f"η = {number(eta)}",)
         else:
-            if kind == "wedge":
+            if kind in ("wedge_clamp", "buffer"):
+                alpha = cast(float, problem.angle)  # both read their wedge angle into angle
+                items = (_clamp_diagram(alpha, problem.faces, first) if kind == "wedge_clamp"
+                         else _buffer_diagram(alpha, first))
+                head = f"{eff_word(kind, notation)}: α = {number(math.degrees(alpha))}°"
+                if kind == "buffer" and problem.f is not None:
+                    notes = (f"φ = arctan f = {number(math.degrees(phi))}°",)
+            elif kind == "wedge":
                 gamma, beta = cast(float, problem.gamma), cast(float, problem.beta)  # a wedge has both (its reader)
                 items = _wedge_diagram(gamma, beta, first)
                 head = f"{eff_word('wedge', notation)}: γ = {number(math.degrees(gamma))}°, β = {number(math.degrees(beta))}°"

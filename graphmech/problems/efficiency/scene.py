@@ -36,10 +36,13 @@ if TYPE_CHECKING:
     from graphmech.problems.balancing.scene import BalancingProblem
 
 
-EFFICIENCY_TYPES = ("incline", "wedge", "screw", "chain")
+EFFICIENCY_TYPES = ("incline", "wedge", "screw", "chain", "wedge_clamp", "buffer")
 DIRECTIONS: tuple[Direction, ...] = ("forward", "reverse")
 THREADS = ("square", "V")
 PUSHES = ("horizontal", "parallel")
+#: A screw's collar (bearing face) friction radius: the mean (d0 + dw)/4, or the annulus' exact
+#: (dw³ − d0³)/(3(dw² − d0²)) under uniform pressure.
+COLLAR_RADII = ("mean", "annulus")
 #: What an efficiency scene may show: the sketch of the bodies with their forces (the unrolled
 #: thread for a screw, the block diagram of a chain) and the force polygons at μF.
 EFFICIENCY_SHOW_CHOICES = ("diagram", "polygon")
@@ -48,8 +51,10 @@ _TYPE_KEYS = {
     "incline": ("angle", "push", "f", "load", "direction"),
     "wedge": ("gamma", "beta", "f", "load", "direction"),
     "screw": ("thread", "half_angle", "f", "f_v", "d2", "pitch", "starts", "lead_angle", "at_self_locking_limit",
-              "d1", "collar", "load", "direction"),
+              "d1", "collar", "load", "direction", "f_c", "torque", "collar_radius", "speed"),
     "chain": ("load", "speed", "stage"),
+    "wedge_clamp": ("wedge_angle", "face", "load", "direction"),
+    "buffer": ("wedge_angle", "f", "load", "direction"),
 }
 #: Quantities each type offers: name → (unit, depends on the direction, needs friction).
 QUANTITIES: dict[str, dict[str, tuple[str, bool, bool]]] = {
@@ -61,10 +66,22 @@ QUANTITIES: dict[str, dict[str, tuple[str, bool, bool]]] = {
     "screw": {"psi": ("deg", False, False), "phi_v": ("deg", False, True), "F": ("N", True, True),
               "F0": ("N", False, False), "M": ("N·m", True, True), "eta": ("", True, True),
               "R": ("N", True, True), "self_locking_angle": ("deg", False, True),
-              "eta_self_locking_max": ("", False, True), "r_f": ("m", False, False), "sigma": ("Pa", False, False)},
+              "eta_self_locking_max": ("", False, True), "r_f": ("m", False, False), "sigma": ("Pa", False, False),
+              "r_c": ("m", False, False), "M_c": ("N·m", False, False), "T_tighten": ("N·m", False, True),
+              "F_a": ("N", False, True), "sigma_a": ("Pa", False, True), "P_drive": ("W", False, True),
+              "n_screw": ("rpm", False, False)},
+    # each face of the clamp declares its own f (0: frictionless), so nothing waits for a scene-wide f
+    "wedge_clamp": {"phi_face1": ("deg", False, False), "phi_face2": ("deg", False, False), "F": ("N", True, False),
+                    "F0": ("N", False, False), "eta": ("", True, False), "R_face1": ("N", True, False),
+                    "alpha_lock_reverse": ("deg", False, False)},
+    "buffer": {"phi": ("deg", False, True), "F": ("N", True, True), "F0": ("N", False, False),
+               "eta": ("", True, True), "R12": ("N", True, True), "R42": ("N", True, True), "R31": ("N", True, True),
+               "alpha_lock_forward": ("deg", False, True), "alpha_lock_reverse": ("deg", False, True),
+               "f_lock_forward": ("", False, False), "f_lock_reverse": ("", False, False)},
     "chain": {"eta": ("", False, False), "P_in": ("W", False, False), "P_out": ("W", False, False)},
 }
-DEFAULT_FIND = {"incline": ("F", "eta"), "wedge": ("F", "eta"), "screw": ("psi", "eta"), "chain": ("eta", "P_in")}
+DEFAULT_FIND = {"incline": ("F", "eta"), "wedge": ("F", "eta"), "screw": ("psi", "eta"), "chain": ("eta", "P_in"),
+                "wedge_clamp": ("F", "eta"), "buffer": ("F", "eta")}
 
 
 @dataclass(frozen=True)
@@ -82,7 +99,10 @@ class EfficiencyProblem:
 
     ``f`` is the friction coefficient (for a screw given as ``f_v``: the equivalent one, then
     ``half_angle`` is 0); None when the scene asks for nothing that needs it. ``lead_angle`` of a
-    screw is None when it sits at the self-locking limit (ψ = φv).
+    screw is None when it sits at the self-locking limit (ψ = φv). A wedge clamp's and a buffer's
+    wedge angle α is ``angle``; the clamp's faces are (name, f), face 1 the one F runs along.
+    A screw's ``torque`` is a wrench's T (the axial force follows from it), ``f_c`` the collar's
+    friction coefficient, ``collar_rule`` its friction radius, ``speed`` the load's lift speed.
     """
 
     type: str
@@ -104,6 +124,10 @@ class EfficiencyProblem:
     collar: tuple[float, float] | None = None
     speed: float | None = None
     stages: tuple[Stage, ...] = ()
+    faces: tuple[tuple[str, float], ...] = ()
+    f_c: float | None = None
+    torque: float | None = None
+    collar_rule: str = "mean"
 
     def quantities(self) -> dict[str, tuple[str, bool, bool]]:
         return QUANTITIES[self.type]
@@ -251,7 +275,8 @@ def _needs_load(kind: str, find: tuple[str, ...], show: tuple[str, ...]) -> bool
     """The load Q is needed for the polygon and every force, moment or stress (η too: it is read
     off the polygons); not for angles such as ψ."""
     names = [n.partition("@")[0] for n in find] or list(DEFAULT_FIND[kind])
-    return "polygon" in show or any(n in ("F", "F0", "eta", "R", "R12", "R32", "R31", "M", "sigma") for n in names)
+    return "polygon" in show or any(n in ("F", "F0", "eta", "R", "R12", "R32", "R31", "R42", "R_face1", "M", "sigma",
+                                          "M_c", "T_tighten", "P_drive") for n in names)
 
 
 def read_efficiency(top: Reader, find: tuple[str, ...], show: tuple[str, ...]) -> EfficiencyProblem | None:
@@ -264,9 +289,12 @@ def read_efficiency(top: Reader, find: tuple[str, ...], show: tuple[str, ...]) -
         r.ignore(*{k for keys in _TYPE_KEYS.values() for k in keys})
         r.finish()
         return None
+    # a key of two other types (speed, wedge_angle) is said once; a clamp says its own word on f
+    flagged: set[str] = {"f"} if kind == "wedge_clamp" else set()
     for other, keys in _TYPE_KEYS.items():
         for key in keys:
-            if key not in _TYPE_KEYS[kind] and r.present(key) is not None:
+            if key not in _TYPE_KEYS[kind] and key not in flagged and r.present(key) is not None:
+                flagged.add(key)
                 r.known.add(key)
                 for k in list(r.table):
                     if k == key or k.startswith(key + "_"):
@@ -282,12 +310,26 @@ def read_efficiency(top: Reader, find: tuple[str, ...], show: tuple[str, ...]) -
             return None
         return EfficiencyProblem("chain", (), load=load, speed=speed, stages=stages)
     directions = _directions(r)
-    load_needed = _needs_load(kind, find, show)
+    # a screw tightened by a wrench: the torque gives the axial force, no load is needed
+    load_needed = _needs_load(kind, find, show) and not (kind == "screw" and r.present("torque") is not None)
     load = _load(r, "load", "force", required=load_needed)
+    prob: dict[str, Any] = {}
+    if kind == "wedge_clamp":
+        if "f" in r.table:
+            r.used.add("f")
+            r.problem(r.at("f"), "a wedge clamp's faces each declare their own f in [[efficiency.face]]")
+        prob["angle"] = _angle(r, "wedge_angle", 0.0, 90.0)
+        prob["faces"] = _read_faces(r)
+        r.finish()
+        if prob["angle"] is None or len(prob["faces"]) != 2 or (load_needed and load is None) or _has(r, "efficiency"):
+            return None
+        return EfficiencyProblem(kind, directions, load=load, **prob)
     f_needed = _needs_friction(kind, find, show)
     f, equivalent = _friction(r, kind, f_needed)
-    prob: dict[str, Any] = {}
-    if kind == "incline":
+    if kind == "buffer":
+        prob["angle"] = _angle(r, "wedge_angle", 0.0, 90.0)
+        ok = prob["angle"] is not None
+    elif kind == "incline":
         prob["angle"] = _angle(r, "angle", 0.0, 90.0)
         prob["push"] = r.string("push", choices=PUSHES, default="horizontal") or "horizontal"
         ok = prob["angle"] is not None
@@ -404,7 +446,46 @@ def _read_screw(r: Reader, prob: dict[str, Any], f: float | None, equivalent: bo
                 r.problem(r.at(collar.key), "the bearing face's inner diameter d0 must be smaller than its outer dw")
                 ok = False
             prob["collar"] = (collar.si(xy[0]), collar.si(xy[1]))
+    if "f_c" in r.table:
+        r.used.add("f_c")
+        fc = r.number(r.table["f_c"], r.at("f_c"))
+        if fc is not None and not 0.0 <= fc < 10.0:
+            r.problem(r.at("f_c"), f"must lie in [0, 10), not {fc:g}")
+            fc = None
+        ok = ok and fc is not None
+        prob["f_c"] = fc
+    r.known.add("f_c")
+    torque = r.value("torque", "moment", required=False, positive=True)
+    if torque is not None:
+        if not 1e-9 <= torque.si <= 1e12:
+            r.problem(torque.path, f"{torque.text()} is absurd for a wrench (between 1e-9 and 1e12 N·m)")
+            ok = False
+        prob["torque"] = torque.si
+    prob["collar_rule"] = r.string("collar_radius", choices=COLLAR_RADII, default="mean") or "mean"
+    prob["speed"] = _load(r, "speed", "velocity", required=False)
     return ok
+
+
+def _read_faces(r: Reader) -> tuple[tuple[str, float], ...]:
+    """A wedge clamp's two [[efficiency.face]] tables: name and f (0: frictionless)."""
+    out = []
+    tables = r.tables_at("face")
+    for k, t in enumerate(tables):
+        name = t.string("name", default=f"face {k + 1}") or f"face {k + 1}"
+        if len(name) > 40:
+            t.problem(t.at("name"), "too long (at most 40 characters)")
+        raw = t.raw("f", required=True, hint="its friction coefficient, 0 for a frictionless face")
+        x = None if raw is MISSING else t.number(raw, t.at("f"))
+        if x is not None and not 0.0 <= x < 10.0:
+            t.problem(t.at("f"), f"must lie in [0, 10), not {x:g} (0: frictionless)")
+            x = None
+        t.finish()
+        if x is not None:
+            out.append((name, x))
+    if len(tables) != 2 and not _has(r, r.at("face")):
+        r.problem(r.at("face"), f"{len(tables)} [[efficiency.face]] tables: a wedge clamp has two faces (face 1, "
+                                "along which F pushes the wedge, then face 2, which bears the clamping force)")
+    return tuple(out)
 
 
 def _read_stages(r: Reader) -> tuple[Stage, ...]:

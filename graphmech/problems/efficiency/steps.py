@@ -12,7 +12,7 @@ import math
 from collections.abc import Callable
 from typing import TYPE_CHECKING, cast
 
-from graphmech.problems.efficiency.check import EfficiencyAnalysis, analyse_efficiency
+from graphmech.problems.efficiency.check import EfficiencyAnalysis, analyse_efficiency, unit_thread
 from graphmech.problems.judging import Row
 from graphmech.problems.protocol import PHRASES as COMMON
 from graphmech.problems.protocol import Phrases, num, phrase, scale_choice, text
@@ -113,6 +113,43 @@ PHRASES: Phrases = {
     "block": ("the block", "滑块", "ползуна"),
     "slider 1": ("slider 1", "滑块1", "ползуна 1"),
     "slider 2": ("slider 2", "滑块2", "ползуна 2"),
+    "wedge": ("the wedge", "楔块", "клина"),
+    "wedge 1": ("wedge 1", "楔块1", "клина 1"),
+    "wedge 2": ("wedge 2", "楔块2", "клина 2"),
+    "faces": (("face 1 ({n1}): φ₁ = arctan {f1} = {p1}°; face 2 ({n2}): φ₂ = arctan {f2} = {p2}° (f = 0: "
+               "frictionless, its reaction stays on the normal)"),
+              "接触面1（{n1}）：φ₁ = arctan {f1} = {p1}°；接触面2（{n2}）：φ₂ = arctan {f2} = {p2}°（f = 0：无摩擦，反力沿法线）",
+              ("поверхность 1 ({n1}): φ₁ = arctan {f1} = {p1}°; поверхность 2 ({n2}): φ₂ = arctan {f2} = {p2}° "
+               "(f = 0: без трения, реакция по нормали)")),
+    "lock limit": ("redraw the polygon at other {what} until F = 0 (η = 0): {stroke} locks for {cond}",
+                   "改变{what}重作力多边形，直至F = 0（η = 0）：{stroke}在{cond}时自锁",
+                   "перестраиваем план при других {what}, пока F = 0 (η = 0): {stroke} самотормозится при {cond}"),
+    "wedge angles": ("wedge angles", "楔角", "углах клина"),
+    "friction angles": ("friction angles", "摩擦角", "углах трения"),
+    "r_c mean": ("the collar's friction radius, the mean: r_c = (d₀ + d_w)/4 = {value} m",
+                 "支承面摩擦半径（平均半径）：r_c = (d₀ + d_w)/4 = {value} m",
+                 "радиус трения опорной поверхности (средний): r_c = (d₀ + d_w)/4 = {value} m"),
+    "r_c annulus": ("the collar's friction radius, the annulus' exact: r_c = (2/3)(R³ − r³)/(R² − r²) = {value} m",
+                    "支承面摩擦半径（圆环精确值）：r_c = (2/3)(R³ − r³)/(R² − r²) = {value} m",
+                    "радиус трения опорной поверхности (точный, кольцо): r_c = (2/3)(R³ − r³)/(R² − r²) = {value} m"),
+    "F_a": (("the bolt force from the wrench: F_a = T/[d₂/2·tan(ψ + φv) + f_c·r_c] = {T}/[{r2} × {k} + {fc} × {rc}] "
+             "= {value} N (tan(ψ + φv) = {k}: the raising polygon's F at Q = 1 N)"),
+            ("扳手拧紧的轴向力：F_a = T/[d₂/2·tan(ψ + φv) + f_c·r_c] = {T}/[{r2} × {k} + {fc} × {rc}] = {value} N"
+             "（tan(ψ + φv) = {k}：Q = 1 N时正行程力多边形的F）"),
+            ("осевая сила от ключа: F_a = T/[d₂/2·tan(ψ + φv) + f_c·r_c] = {T}/[{r2} × {k} + {fc} × {rc}] = {value} N "
+             "(tan(ψ + φv) = {k}: F плана подъёма при Q = 1 N)")),
+    "M_c": ("the collar's friction moment: M_c = f_c·Q·r_c = {fc} × {Q} × {rc} = {value} N·m",
+            "支承面摩擦力矩：M_c = f_c·Q·r_c = {fc} × {Q} × {rc} = {value} N·m",
+            "момент трения на опорной поверхности: M_c = f_c·Q·r_c = {fc} × {Q} × {rc} = {value} N·m"),
+    "T_tighten": ("the tightening torque: T = Q·[d₂/2·tan(ψ + φv) + f_c·r_c] = {value} N·m",
+                  "拧紧力矩：T = Q·[d₂/2·tan(ψ + φv) + f_c·r_c] = {value} N·m",
+                  "момент затяжки: T = Q·[d₂/2·tan(ψ + φv) + f_c·r_c] = {value} N·m"),
+    "sigma_a": ("the bolt's tensile stress: σ = F_a/(π·d₁²/4) = {value} Pa", "螺栓拉应力：σ = F_a/(π·d₁²/4) = {value} Pa",
+                "напряжение растяжения болта: σ = F_a/(π·d₁²/4) = {value} Pa"),
+    "P_drive": ("the drive power: P = Q·v/η = {Q} × {v}/{eta} = {value} W", "驱动功率：P = Q·v/η = {Q} × {v}/{eta} = {value} W",
+                "мощность привода: P = Q·v/η = {Q} × {v}/{eta} = {value} W"),
+    "n_screw": ("the screw's speed: n = v/L = {v}/{L} × 60 = {value} r/min", "螺杆转速：n = v/L = {v}/{L} × 60 = {value} r/min",
+                "частота вращения винта: n = v/L = {v}/{L} × 60 = {value} об/мин"),
     "o": ("o", "o点", "точки o"),
     "end of": ("the end of {name}", "{name}的末端", "конца {name}"),
 }
@@ -163,6 +200,51 @@ def protocol(an: EfficiencyAnalysis) -> list[str]:
     r = rows.get("eta_self_locking_max")
     if r is not None:
         out.append(say("limit eta", value=num(r.graphical)))
+    out += _extra(an, rows, say)
+    return out
+
+
+def _extra(an: EfficiencyAnalysis, rows: dict[str, Row], say: Say) -> list[str]:
+    """The self-locking limits of a clamp or a buffer; a screw's collar, wrench and drive."""
+    p, out = an.problem, []
+    for base in ("alpha_lock_forward", "alpha_lock_reverse", "f_lock_forward", "f_lock_reverse"):
+        r = rows.get(base)
+        if r is None:
+            continue
+        d = "forward" if base.endswith("forward") else "reverse"
+        # the clamp's reverse stroke and the buffer's forward one lock below the limit angle
+        below = (p.type == "wedge_clamp") == (d == "reverse")
+        sym = "f" if base.startswith("f") else "α"
+        cond = f"{sym} {'≥' if sym == 'f' or not below else '≤'} {num(r.graphical)}{'' if sym == 'f' else '°'}"
+        out.append(say("lock limit", what=say("friction angles" if sym == "f" else "wedge angles"), stroke=say(d),
+                       cond=cond))
+    r = rows.get("r_c")
+    if r is not None:
+        out.append(say("r_c " + p.collar_rule, value=num(r.graphical)))
+    r = rows.get("F_a")
+    if r is not None and p.d2 is not None and p.f_c is not None and p.torque is not None:
+        k = cast(float, unit_thread(an).F)  # a thread's raising polygon closes
+        rc = num(rows["r_c"].graphical) if "r_c" in rows else "r_c"
+        out.append(say("F_a", T=num(p.torque), r2=num(p.d2 / 2.0), k=num(k), fc=num(p.f_c), rc=rc,
+                       value=num(r.graphical)))
+    for base in ("M_c", "T_tighten", "sigma_a"):
+        r = rows.get(base)
+        if r is None:
+            continue
+        if base != "M_c":
+            out.append(say(base, value=num(r.graphical)))
+            continue
+        # the axial force: the load, or the wrench's F_a; the radius as the scene reports it
+        Q = p.load if p.load is not None else (rows["F_a"].graphical if "F_a" in rows else None)
+        out.append(say(base, fc=num(p.f_c or 0.0), Q="Q" if Q is None else num(Q),
+                       rc=num(rows["r_c"].graphical) if "r_c" in rows else "r_c", value=num(r.graphical)))
+    r = rows.get("P_drive")
+    if r is not None and p.speed is not None:
+        out.append(say("P_drive", Q=num(p.load or 0.0), v=num(p.speed), eta=num(unit_thread(an).eta),
+                       value=num(r.graphical)))
+    r = rows.get("n_screw")
+    if r is not None and p.speed is not None and p.lead is not None:
+        out.append(say("n_screw", v=num(p.speed), L=num(p.lead), value=num(r.graphical)))
     return out
 
 
@@ -192,6 +274,10 @@ def _chain(an: EfficiencyAnalysis, rows: dict[str, Row], say: Say) -> list[str]:
 
 def _angles(an: EfficiencyAnalysis, rows: dict[str, Row], say: Say) -> list[str]:
     p, out = an.problem, []
+    if p.type == "wedge_clamp":  # each face with its own friction, declared
+        (n1, f1), (n2, f2) = p.faces
+        out.append(say("faces", n1=n1, f1=num(f1), p1=num(math.degrees(math.atan(f1))), n2=n2, f2=num(f2),
+                       p2=num(math.degrees(math.atan(f2)))))
     r: Row | None = rows.get("phi") or rows.get("phi_v")
     if r is not None:
         if p.half_angle and not p.f_is_equivalent:
