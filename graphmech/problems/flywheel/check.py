@@ -199,7 +199,7 @@ def _analyse(scene: Scene[FlywheelScene], extra: tuple[tuple[str, float], ...], 
     machine: Machine = fw.machine
     names = requested(scene, extra)
     asked = names + [x for _, x, _ in measured_entries(scene, extra)]
-    needs = _needs(scene, asked)
+    needs = _needs(scene, [x for x in asked if x != "kl"])  # kl, a drawn segment, is no quantity row
     if any(x == "kl" for x in asked):
         needs |= {"wittenbauer", "design", "reduction"}
     phi = np.asarray(machine.positions(fw.positions), dtype=float)
@@ -562,7 +562,10 @@ def _estimate(an: FlywheelAnalysis, needs: set[str]) -> None:
         v2 = quantity_values(at(2), base, None if i is None else 2 * i)[0]
         if base in ("phi_DeltaT_max", "phi_DeltaT_min", "phi_max", "phi_min"):
             top = base.endswith("max")
-            err = abs(_wrapped(an, base, r.graphical - _refined_angle(at(2), top, base.startswith("phi_D"))))
+            energy = base.startswith("phi_D")
+            err = abs(_wrapped(an, base, r.graphical - _refined_angle(at(2), top, energy)))
+            if not energy:  # next to a kink of Mп the parabola at 2N alone can place it far too close
+                err = max(err, abs(_wrapped(an, base, r.graphical - _refined_angle(an, top, energy))))
             an.rows[k] = r.estimated(READING, relative(err, den), f"{basis}, read at a position")
             continue
         v4 = quantity_values(at(4), base, None if i is None else 4 * i)[0]
