@@ -453,9 +453,13 @@ def _read_reduced_inertia(fw: Reader, cycle: float | None) -> tuple[Table | None
     if not _same_length(r, phi, jp, phi.path.rsplit(".", 1)[-1], "Jп"):
         return None, False
     x, y = phi.si, jp.si
+
+    def kgm2(v: float) -> str:  # the number as written, the unit as printed
+        return f"{jp.text(v).split()[0]} kg·m²"
+
     for i, v in enumerate(y):
         if not v > 0:
-            r.problem(f"{jp.path}[{i}]", f"must be > 0, not {jp.text(v)}: a reduced moment of inertia")
+            r.problem(f"{jp.path}[{i}]", f"must be > 0, not {kgm2(v)}: a reduced moment of inertia")
             return None, False
     if x[0] != 0:
         r.problem(f"{phi.path}[0]", f"must be 0, not {phi.text(x[0])}: the table starts at position 1 (φ = 0)")
@@ -472,8 +476,8 @@ def _read_reduced_inertia(fw: Reader, cycle: float | None) -> tuple[Table | None
         return None, False
     if x[-1] >= cycle * (1 - 1e-12):
         if y[-1] != y[0]:
-            r.problem(f"{jp.path}[{last}]", f"{jp.text(y[-1])} at Φ = {phi.text(cycle)} differs from "
-                                            f"{jp.text(y[0])} at φ = 0: Jп repeats every cycle")
+            r.problem(f"{jp.path}[{last}]", f"{kgm2(y[-1])} at Φ = {phi.text(cycle)} differs from "
+                                            f"{kgm2(y[0])} at φ = 0: Jп repeats every cycle")
             return None, False
         return Table((*x[:-1], cycle), tuple(y)), True
     step = max(b - a for a, b in zip(x[:-1], x[1:]))
