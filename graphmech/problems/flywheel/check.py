@@ -564,8 +564,10 @@ def _estimate(an: FlywheelAnalysis, needs: set[str]) -> None:
             top = base.endswith("max")
             energy = base.startswith("phi_D")
             err = abs(_wrapped(an, base, r.graphical - _refined_angle(at(2), top, energy)))
-            if not energy:  # next to a kink of Mп the parabola at 2N alone can place it far too close
-                err = max(err, abs(_wrapped(an, base, r.graphical - _refined_angle(an, top, energy))))
+            # next to a kink of Mп a parabola misplaces the extreme: where those at N and 2N disagree
+            # (by over a factor 2 in the distance from the reading), the one at 4N decides
+            if abs(_wrapped(an, base, r.graphical - _refined_angle(an, top, energy))) > 2.0 * err:
+                err = abs(_wrapped(an, base, r.graphical - _refined_angle(at(4), top, energy)))
             an.rows[k] = r.estimated(READING, relative(err, den), f"{basis}, read at a position")
             continue
         v4 = quantity_values(at(4), base, None if i is None else 4 * i)[0]
