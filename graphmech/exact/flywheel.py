@@ -244,7 +244,7 @@ def _table_slope(table: Table, x: np.ndarray) -> np.ndarray:
     xs, ys = np.asarray(table.x, dtype=float), np.asarray(table.y, dtype=float)
     i = np.clip(np.searchsorted(xs, x, side="right") - 1, 0, xs.size - 2)
     slope = (ys[i + 1] - ys[i]) / (xs[i + 1] - xs[i])
-    return cast(np.ndarray, np.where((x < xs[0]) | (x >= xs[-1]), 0.0, slope))
+    return np.where((x < xs[0]) | (x >= xs[-1]), 0.0, slope)
 
 
 # --------------------------------------------------------------------------------------------

@@ -19,6 +19,7 @@ import math
 import re
 import sys
 from collections.abc import Mapping
+from itertools import pairwise
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
@@ -480,7 +481,7 @@ def _read_reduced_inertia(fw: Reader, cycle: float | None) -> tuple[Table | None
                                             f"{kgm2(y[0])} at φ = 0: Jп repeats every cycle")
             return None, False
         return Table((*x[:-1], cycle), tuple(y)), True
-    step = max(b - a for a, b in zip(x[:-1], x[1:]))
+    step = max(b - a for a, b in pairwise(x))
     if cycle - x[-1] > step * (1 + 1e-9):
         r.problem(phi.path, f"ends at {phi.text(x[-1])}, {phi.text(cycle - x[-1])} short of the cycle "
                             f"Φ = {phi.text(cycle)}, more than its longest step ({phi.text(step)}): "

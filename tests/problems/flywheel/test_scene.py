@@ -364,11 +364,11 @@ MOMENT_LOAD = 'phi_deg = [0, 180, 180, 360]'
         (replace(C, "delta = 0.04\n", ""), "flywheel.delta",
          'missing: the coefficient of speed fluctuation δ = (ω_max − ω_min)/ω_m, e.g. delta = 0.04 or "1/25"'),
         (replace(C, "cycle_deg = 360", "cycle_deg = 100"), "flywheel.cycle_deg",
-         "must divide one turn a whole number of times (360°, 180°, 120° …) or be two turns (720°, a "
-         "four-stroke engine), not 100°"),
+         ("must divide one turn a whole number of times (360°, 180°, 120° …) or be two turns (720°, a "
+          "four-stroke engine), not 100°")),
         (replace(C, "cycle_deg = 360", "cycle_deg = 1080"), "flywheel.cycle_deg",
-         "must divide one turn a whole number of times (360°, 180°, 120° …) or be two turns (720°, a "
-         "four-stroke engine), not 1080°"),
+         ("must divide one turn a whole number of times (360°, 180°, 120° …) or be two turns (720°, a "
+          "four-stroke engine), not 1080°")),
         (replace(C, "cycle_deg = 360", "cycle_deg = 0"), "flywheel.cycle_deg", "must be > 0"),
         (replace(C, "cycle_deg = 360", "cycle_deg = 360\nspeed_rpm = 960"), "flywheel.speed_rpm",
          "given twice: with a linkage the mean speed ω_m is the driver's omega (driver.omega_rpm)"),
@@ -826,13 +826,13 @@ J_LIST = "[0.6008325, 0.6018516, 0.6019891"
         ("270, 300, 330]", "270, 300, 390]",
          "flywheel.reduced_inertia.phi_deg[11]: 390° is outside the cycle: φ runs from 0 at position 1 to Φ = 360°"),
         ("positions = 12", "positions = 12\ncycle_deg = 720",
-         "flywheel.reduced_inertia.phi_deg: ends at 330°, 390° short of the cycle Φ = 720°, more than its longest "
-         "step (30°): a table of another period?"),
-        ("270, 300, 330]", "270, 300, 330, 360]", "flywheel.reduced_inertia.inertia_kgm2: has 12 values, phi_deg has "
-         "13: one Jп for each"),
+         ("flywheel.reduced_inertia.phi_deg: ends at 330°, 390° short of the cycle Φ = 720°, more than its "
+          "longest step (30°): a table of another period?")),
+        ("270, 300, 330]", "270, 300, 330, 360]",
+         "flywheel.reduced_inertia.inertia_kgm2: has 12 values, phi_deg has 13: one Jп for each"),
         ('tangents = "book"', 'tangents = "book"\n[flywheel.true_motion]',
-         "flywheel.true_motion: not with [flywheel.reduced_inertia]: the equation of motion needs dJп/dφ, and a "
-         "table of Jп has none at its points (give the masses instead)"),
+         ("flywheel.true_motion: not with [flywheel.reduced_inertia]: the equation of motion needs dJп/dφ, and a "
+          "table of Jп has none at its points (give the masses instead)")),
     ],
 )
 def test_a_bad_table_of_jp_is_refused_in_one_line(tmp_path: Path, old: str, new: str, message: str) -> None:
@@ -863,8 +863,8 @@ def test_a_four_stroke_cycle_is_two_turns() -> None:
     assert m.positions(48)[24] == pytest.approx(2 * math.pi, rel=1e-15)  # position 25: the second turn begins
     assert only_scene(replace(ENGINE, "cycle_deg = 180", "cycle_deg = 720")).problem.machine.cycle == 4 * math.pi
     assert only_problem(replace(ENGINE, "cycle_deg = 180", "cycle_deg = 540")) == (
-        "flywheel.cycle_deg", "must divide one turn a whole number of times (360°, 180°, 120° …) or be two turns "
-        "(720°, a four-stroke engine), not 540°")
+        "flywheel.cycle_deg", ("must divide one turn a whole number of times (360°, 180°, 120° …) or be two "
+                               "turns (720°, a four-stroke engine), not 540°"))
 
 
 def only_scene(text: str) -> Scene:
