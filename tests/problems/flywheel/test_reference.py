@@ -17,6 +17,12 @@ from tests.conftest import SCENES, check_json, values
 COMPRESSOR = SCENES / "fly.compressor_course_project.toml"
 
 
+def test_every_flywheel_problem_has_a_scene(problems):
+    wanted = {pid for pid, p in problems.items() if p["area"] == "flywheel"}
+    assert "fly.wittenbauer_course_project" in wanted
+    assert wanted <= {p.stem.split("-")[0] for p in SCENES.glob("fly.*.toml")}
+
+
 @pytest.fixture(scope="module")
 def compressor():
     return check_json(COMPRESSOR)
