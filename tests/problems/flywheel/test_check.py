@@ -214,3 +214,21 @@ def test_a_measured_kl_is_judged_as_drawn(tmp_path):
     code, out, err = run_cli("check", str(engine(tmp_path, J=0.5, method="wittenbauer")), "--measured", "kl=1")
     assert code == 1 and err == ""
     assert re.search(r"^kl +1 +\S+ +0\.5 +OUT", out, re.MULTILINE), out
+
+
+def test_a_machine_that_repeats_every_turn_taken_over_two_turns(tmp_path):
+    """The compressor over Φ = 720° with 24 positions is the same flywheel as over 360° with 12: the
+    slider load acts on every compression stroke, ΔT repeats, k and l are the same points."""
+    one = (SCENES / "fly.compressor_course_project.toml").read_text(encoding="utf-8")
+    one = re.sub(r"(?ms)^find = \[.*?\]\n", 'find = ["M_b", "k", "l", "J_F", "phi_max", "phi_min"]\n', one, count=1)
+    one = one.split("[flywheel.true_motion]")[0]
+    two = one.replace("positions = 12", "positions = 24\ncycle_deg = 720")
+    (tmp_path / "one.toml").write_text(one, encoding="utf-8")
+    (tmp_path / "two.toml").write_text(two, encoding="utf-8")
+    a, b = values(check_json(tmp_path / "one.toml")), values(check_json(tmp_path / "two.toml"))
+    for name in ("M_b", "k", "l", "J_F"):
+        assert b[name]["graphical"] == pytest.approx(a[name]["graphical"], rel=1e-10), name
+        assert b[name]["exact"] == pytest.approx(a[name]["exact"], rel=1e-9), name
+    for name in ("phi_max", "phi_min"):  # one of two equal extremes, a turn apart
+        assert b[name]["exact"] % 360 == pytest.approx(a[name]["exact"], abs=1e-7)
+        assert b[name]["graphical"] % 360 == pytest.approx(a[name]["graphical"], abs=1e-9)
