@@ -7,8 +7,8 @@ the reference computes from the same N positions.
 """
 from __future__ import annotations
 
-
 import math
+import tomllib
 
 import pytest
 
@@ -218,8 +218,6 @@ def four_stroke():
 
 def test_four_stroke_balance_over_two_turns(four_stroke):
     """The constant resistance balances the gas torque's work over 720°, not over one turn."""
-    import tomllib
-
     load = tomllib.loads(FOUR_STROKE.read_text(encoding="utf-8"))["flywheel"]["load"][0]
     x = [math.radians(a) for a in load["phi_deg"]]
     y = load["moment_Nm"]
