@@ -239,6 +239,14 @@ def table_line(table: Table, x: float) -> tuple[float, float]:
     return float(ys[i] - b * xs[i]), float(b)
 
 
+def _table_slope(table: Table, x: np.ndarray) -> np.ndarray:
+    """dy/dx of a table without steps, right-continuous at its points (0 outside it)."""
+    xs, ys = np.asarray(table.x, dtype=float), np.asarray(table.y, dtype=float)
+    i = np.clip(np.searchsorted(xs, x, side="right") - 1, 0, xs.size - 2)
+    slope = (ys[i + 1] - ys[i]) / (xs[i + 1] - xs[i])
+    return np.where((x < xs[0]) | (x >= xs[-1]), 0.0, slope)
+
+
 # --------------------------------------------------------------------------------------------
 # Extremes at the roots of an exact derivative
 
@@ -426,6 +434,15 @@ class ExactMachine:
                                              "during must be 'forward', 'backward' or 'both'"))
                     elif isinstance(ld, LinkMoment) and ld.link not in moving:
                         problems.append((f"loads[{k}].link", f"{ld.link!r} is not a moving link"))
+        jt = mc.inertia_table
+        if jt is not None:
+            xs, ys = np.asarray(jt.x, dtype=float), np.asarray(jt.y, dtype=float)
+            if not (xs.size == ys.size >= 2 and np.isfinite(xs).all() and np.isfinite(ys).all()):
+                problems.append(("inertia_table", "x and y must be finite, of one length ≥ 2"))
+            elif not (np.all(np.diff(xs) > 0.0) and xs[0] == 0.0 and abs(xs[-1] - mc.cycle) <= 1e-12 * mc.cycle):
+                problems.append(("inertia_table.x", "φ must increase strictly from 0 to Φ"))
+            elif not (np.all(ys > 0.0) and ys[-1] == ys[0]):
+                problems.append(("inertia_table.y", "Jп must be > 0 and repeat every cycle (Jп(Φ) = Jп(0))"))
         for k, ld in enumerate(mc.loads):
             t = ld.table
             if len(t.x) != len(t.y) or not t.x:
@@ -472,6 +489,9 @@ class ExactMachine:
                 dj += 2.0 * (ms.mass * (v[:, 0] * a[:, 0] + v[:, 1] * a[:, 1])
                              + ms.inertia * w * al) / (w1s * w1)
         tau = np.mod(phi, self.cycle)
+        if mc.inertia_table is not None:  # Jп as given: linear between the table's points
+            j += table_value(mc.inertia_table, tau)
+            dj += _table_slope(mc.inertia_table, tau)
 
         def value(table: Table, x: np.ndarray, period: float | None = None) -> np.ndarray:
             v = table_value(table, x)
@@ -618,6 +638,8 @@ class ExactMachine:
                 phis += [p + _TWO_PI * r for r in range(turns) for p in one]
             else:  # every node (ends too: the cycle wraps round, a kink or step may be there)
                 phis += [x for x in ld.table.x if 0.0 <= x <= self.cycle]
+        if self.machine.inertia_table is not None:  # Jп's kinks: dJп/dφ jumps there
+            phis += [x for x in self.machine.inertia_table.x if 0.0 <= x <= self.cycle]
         return np.array(_dedupe_angles(phis, self.cycle))
 
     def breaks(self) -> np.ndarray:
@@ -717,7 +739,7 @@ class ExactMachine:
         def d(phi: float) -> float:
             return float(self.inertia_slope(np.array([phi]))[0])
 
-        if self._linkage is None:
+        if self._linkage is None and self.machine.inertia_table is None:
             j0 = float(self.machine.inertia)
             return Extremes(j0, 0.0, j0, 0.0)
         hi, p_hi, lo, p_lo = _global_extremes(self._s, self._s_j, self._s_dj, f, d)

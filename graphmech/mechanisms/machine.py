@@ -205,7 +205,8 @@ class Machine:
     start : float
         The crank's absolute angle at position 1, rad (ignored without a linkage).
     cycle : float
-        Φ, the crank angle of one cycle, rad (2π; π for a torque that repeats every half turn).
+        Φ, the crank angle of one cycle, rad (2π; π for a torque that repeats every half turn;
+        4π for a four-stroke engine, whose working cycle is two turns).
     omega_m : float
         The mean angular velocity of the crank, rad/s (> 0).
     delta : float
@@ -224,6 +225,10 @@ class Machine:
     motor : Motor or None
         For the true motion only: the driving moment depends on speed (``balance`` must be
         "driving"); None: the constant balancing moment.
+    inertia_table : Table or None
+        Jп(φ) given directly as a table (a course project's table of Jп at the positions), kg·m²,
+        added to ``inertia`` and the masses: ``x`` is φ from 0 to Φ (closed: the last value equals
+        the first), linear between its points, no steps.
     """
 
     linkage: Linkage | None
@@ -236,6 +241,7 @@ class Machine:
     inertia: float = 0.0
     balance: Literal["driving", "resisting"] = "driving"
     motor: Motor | None = None
+    inertia_table: Table | None = None
 
     def __hash__(self) -> int:  # holds a Linkage (a dict inside): identity is enough
         return id(self)

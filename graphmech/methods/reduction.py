@@ -157,6 +157,8 @@ def reduce_to_crank(machine: Machine, phi: np.ndarray, scales: dict[str, float])
         on_steps.extend((k, int(i)) for i in np.flatnonzero(hit))
         return values
 
+    if machine.inertia_table is not None:  # Jп read off its table at the positions
+        J += table_at(machine.inertia_table, np.mod(phi, machine.cycle))
     for k, load in enumerate(machine.loads):
         if isinstance(load, CrankMoment):
             M += sample(k, load.table, np.mod(phi, machine.cycle), period=machine.cycle)

@@ -303,3 +303,80 @@ def test_linkage_that_does_not_assemble_names_the_angle():
     m = Machine(lk, 0.0, 2 * math.pi, 10.0, 0.05, masses=(Mass("3", "D", 0.0, 0.01),))
     with pytest.raises(ValueError, match=r"cannot be solved at φ = [0-9.]+° from position 1"):
         ExactMachine(m)
+
+
+# ---------------------------------------------------------------------------- Jп given as a table
+
+def table_machine(cycle: float = 2 * math.pi) -> Machine:
+    """The course project's 12 values of Jп (linear between them, closed at Φ) and a sinusoidal
+    load table every 15°: no linkage, a driving constant moment."""
+    jp = (0.6008325, 0.6018516, 0.6019891, 0.6017175, 0.6011137, 0.6005196,
+          0.6, 0.6031759, 0.6045547, 0.6025725, 0.6009025, 0.6)
+    step = cycle / 12
+    jt = Table(tuple(k * step for k in range(13)), (*jp, jp[0]))
+    xs = tuple(k * cycle / 24 for k in range(25))
+    ms = tuple(-375.0 + 3450.0 * math.sin(x * 2 * math.pi / cycle - math.radians(30)) for x in xs)
+    return Machine(None, 0.0, cycle, 28.0, 0.2, loads=(CrankMoment(Table(xs, ms)),), balance="driving",
+                   inertia_table=jt)
+
+
+def brute_force_wittenbauer(m: Machine, c_hi: float, c_lo: float, n: int = 400_001) -> tuple[float, float, float]:
+    """k, l and the mean Jп by another route: the trapezoidal rule on a fine grid that holds every
+    node of both tables (both are linear between nodes, so ΔT is exact up to the quadratic pieces)."""
+    grid = np.union1d(np.linspace(0.0, m.cycle, n), np.concatenate([m.loads[0].table.x, m.inertia_table.x]))
+    M = np.interp(grid, m.loads[0].table.x, m.loads[0].table.y)
+    J = np.interp(grid, m.inertia_table.x, m.inertia_table.y)
+    A = np.concatenate([[0.0], np.cumsum(0.5 * (M[1:] + M[:-1]) * np.diff(grid))])
+    dT = A - A[-1] * grid / m.cycle
+    J_mean = float(np.sum(0.5 * (J[1:] + J[:-1]) * np.diff(grid)) / m.cycle)
+    return float(np.max(dT - c_hi * J)), float(np.min(dT - c_lo * J)), J_mean
+
+
+def test_a_jp_table_is_linear_between_its_points_and_closed_at_the_cycle():
+    m = table_machine()
+    ex = ExactMachine(m)
+    phi = np.array([0.0, math.radians(15), math.radians(345), 2 * math.pi - 1e-9])
+    assert ex.inertia(phi) == pytest.approx([0.6008325, (0.6008325 + 0.6018516) / 2, (0.6 + 0.6008325) / 2,
+                                             0.6008325], abs=1e-11)
+    assert ex.inertia_slope(np.array([math.radians(15)]))[0] == pytest.approx(
+        (0.6018516 - 0.6008325) / math.radians(30), rel=1e-12)
+    hi = ex.inertia_extremes()
+    assert (hi.maximum, math.degrees(hi.phi_max)) == pytest.approx((0.6045547, 240.0), rel=1e-12)
+    assert hi.minimum == 0.6
+    # every node of the Jп table is a break of the quadrature: the mean is the trapezoid's, exactly
+    assert ex.mean_inertia() == pytest.approx(brute_force_wittenbauer(m, 0.0, 0.0, 13)[2], rel=1e-14)
+
+
+@pytest.mark.parametrize("cycle", [2 * math.pi, 4 * math.pi])
+def test_wittenbauer_of_tables_against_a_brute_force_and_the_tangency_condition(cycle):
+    m = table_machine(cycle)
+    ex = ExactMachine(m)
+    t = ex.wittenbauer("book")
+    c_hi, c_lo = t.omega_max ** 2 / 2, t.omega_min ** 2 / 2
+    k, l_, _ = brute_force_wittenbauer(m, c_hi, c_lo)
+    assert t.k == pytest.approx(k, rel=1e-7) and t.l == pytest.approx(l_, rel=1e-6)
+    assert t.J_F == pytest.approx((k - l_) / (28.0 ** 2 * 0.2), rel=1e-7)
+    # at the points of contact Mп + M_b − c·dJп/dφ changes sign from + to − (a maximum of ΔT − c·Jп) …
+    mb = ex.balancing_moment()
+
+    def slope(phi: float, c: float) -> float:
+        return float(ex.load_moment(np.array([phi]))[0] + mb - c * ex.inertia_slope(np.array([phi]))[0])
+
+    h = 1e-7
+    assert slope(t.phi_k - h, c_hi) > 0 > slope(t.phi_k + h, c_hi)
+    assert slope(t.phi_l - h, c_lo) < 0 < slope(t.phi_l + h, c_lo)  # … and from − to + at the minimum
+    # over two turns the same tables stretched twice as long: the balancing moment is the same, ΔT doubles
+    if cycle > 2 * math.pi:
+        one = ExactMachine(table_machine())
+        assert mb == pytest.approx(one.balancing_moment(), rel=1e-12) == 375.0
+        assert ex.extremes().maximum == pytest.approx(2 * one.extremes().maximum, rel=1e-12)
+
+
+def test_a_bad_jp_table_is_named():
+    m = table_machine()
+    bad = dataclasses.replace(m, inertia_table=Table((0.0, 1.0, 2 * math.pi), (0.6, -0.1, 0.6)))
+    with pytest.raises(ValueError, match=r"inertia_table.y: Jп must be > 0"):
+        ExactMachine(bad)
+    bad = dataclasses.replace(m, inertia_table=Table((0.0, 1.0, 3.0), (0.6, 0.7, 0.6)))
+    with pytest.raises(ValueError, match=r"inertia_table.x: φ must increase strictly from 0 to Φ"):
+        ExactMachine(bad)

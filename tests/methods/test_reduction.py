@@ -90,3 +90,11 @@ def test_a_moment_over_the_cycle_steps_where_its_end_meets_its_start():
     t = Table((0.0, 1.0, 1.0, 2.0), (0.0, 0.0, -300.0, -300.0))
     assert table_at(t, np.array([0.0, 0.5, 1.0]), period=2.0).tolist() == [-150.0, 0.0, -150.0]
     assert table_at(t, np.array([0.0]), period=None).tolist() == [0.0]
+
+
+def test_a_jp_table_is_read_at_the_positions_and_adds_to_the_constant_inertia():
+    jt = Table((0.0, math.pi, 2 * math.pi), (0.5, 0.9, 0.5))
+    m = Machine(None, 0.0, 4 * math.pi, 10.0, 0.05, inertia=0.1, inertia_table=jt,
+                loads=(CrankMoment(Table((0.0, 4 * math.pi), (1.0, 1.0))),))
+    r = reduce_to_crank(m, np.array([0.0, math.pi / 2, 3 * math.pi / 2]), {})
+    assert r.J.tolist() == pytest.approx([0.6, 0.8, 0.8], rel=1e-15)

@@ -45,6 +45,8 @@ QUANTITIES: dict[str, tuple[str, str]] = {
     "phi_DeltaT_max": ("deg", "design"), "phi_DeltaT_min": ("deg", "design"),
     "k": ("J", "wittenbauer"), "l": ("J", "wittenbauer"),
     "psi_max": ("deg", "wittenbauer"), "psi_min": ("deg", "wittenbauer"),
+    "tan_psi_max": ("", "wittenbauer"), "tan_psi_min": ("", "wittenbauer"),
+    "phi_max": ("deg", "wittenbauer"), "phi_min": ("deg", "wittenbauer"),
     "J_F": ("kg·m²", "flywheel"),
     "J_F_wittenbauer": ("kg·m²", "wittenbauer"), "J_F_indicator": ("kg·m²", "indicator"),
     "DeltaW_max": ("J", "indicator"), "J_mean": ("kg·m²", "indicator"),
@@ -61,7 +63,7 @@ PER_POSITION = ("Jp", "Mp", "DeltaT", "A_p")
 DEFAULT_FIND = ("M_b", "DeltaW_max", "J_F")
 #: Angles that say where in the cycle something happens: compared modulo the cycle Φ, their
 #: relative error is the wrapped difference over Φ (an angle near 0° has no scale of its own).
-POSITION_ANGLES = ("phi_DeltaT_max", "phi_DeltaT_min", "phi_omega_max", "phi_omega_min")
+POSITION_ANGLES = ("phi_DeltaT_max", "phi_DeltaT_min", "phi_omega_max", "phi_omega_min", "phi_max", "phi_min")
 #: Angle between the two tangents below which a drawn pair cannot be told apart, degrees.
 TANGENTS_APART_DEG = 0.1
 
@@ -197,7 +199,7 @@ def _analyse(scene: Scene[FlywheelScene], extra: tuple[tuple[str, float], ...], 
     machine: Machine = fw.machine
     names = requested(scene, extra)
     asked = names + [x for _, x, _ in measured_entries(scene, extra)]
-    needs = _needs(scene, asked)
+    needs = _needs(scene, [x for x in asked if x != "kl"])  # kl, a drawn segment, is no quantity row
     if any(x == "kl" for x in asked):
         needs |= {"wittenbauer", "design", "reduction"}
     phi = np.asarray(machine.positions(fw.positions), dtype=float)
@@ -448,17 +450,25 @@ def quantity_values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[flo
             return math.degrees(float(an.phi[kk])), math.degrees(x.phi_max if top else x.phi_min), None, 1.0, False
         g = float(d.energy_mm[kk]) * mu_T
         return g, float(x.maximum if top else x.minimum), g / mu_T, mu_T, False
-    if base in ("k", "l", "psi_max", "psi_min", "J_F_wittenbauer") or (base == "J_F" and an.scene.problem.method == "wittenbauer"):
+    if base in ("k", "l", "psi_max", "psi_min", "tan_psi_max", "tan_psi_min", "phi_max", "phi_min",
+                "J_F_wittenbauer") or (base == "J_F" and an.scene.problem.method == "wittenbauer"):
         w = d.wittenbauer
         t = ex.wittenbauer(an.scene.problem.tangents)
         ill = float(getattr(w, "angle_between_deg", 90.0)) < TANGENTS_APART_DEG
         if base in ("k", "l"):
             mm = float(w.k_mm if base == "k" else w.l_mm)
             return mm * mu_T, float(t.k if base == "k" else t.l), mm, mu_T, ill
-        if base in ("psi_max", "psi_min"):
-            tg = float(w.tan_psi_max if base == "psi_max" else w.tan_psi_min)
+        if base in ("phi_max", "phi_min"):  # ω_max, ω_min where the tangents touch the curve
+            top = base == "phi_max"
+            kk = int(w.k_index if top else w.l_index)
+            return math.degrees(float(an.phi[kk])), math.degrees(t.phi_k if top else t.phi_l), None, 1.0, ill
+        if base in ("psi_max", "psi_min", "tan_psi_max", "tan_psi_min"):
+            top = base.endswith("max")
+            tg = float(w.tan_psi_max if top else w.tan_psi_min)
             # the exact slope from ω_max, ω_min of the tangents (the same formula: no discretisation)
-            c = (t.omega_max if base == "psi_max" else t.omega_min) ** 2 / 2.0 * float(d.scales["J"]) / mu_T
+            c = (t.omega_max if top else t.omega_min) ** 2 / 2.0 * float(d.scales["J"]) / mu_T
+            if base.startswith("tan"):
+                return tg, c, None, 1.0, False
             return math.degrees(math.atan(tg)), math.degrees(math.atan(c)), None, 1.0, False
         return float(d.J_F), float(t.J_F), float(w.kl_mm), mu_T / (wm * wm * delta), False
     if base in ("J_F", "J_F_indicator", "DeltaW_max", "J_mean"):
@@ -502,7 +512,8 @@ def quantity_values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[flo
 
 #: Values the construction gets exactly (but for round-off): read off the velocity polygons, or
 #: a formula of the scene's data (ω_max of the tangents, ψ, the brake's run-down line).
-CONSTRUCTED = ("Jp", "Mp", "omega_max", "omega_min", "n_max", "n_min", "psi_max", "psi_min", "omega_s", "t_stop")
+CONSTRUCTED = ("Jp", "Mp", "omega_max", "omega_min", "n_max", "n_min", "psi_max", "psi_min", "tan_psi_max",
+               "tan_psi_min", "omega_s", "t_stop")
 #: Extremes over the N positions: their sampled value also misses the extreme between positions.
 SAMPLED_EXTREMES = ("DeltaT_max", "DeltaT_min", "k", "l", "J_F", "J_F_wittenbauer", "J_F_indicator", "DeltaW_max")
 #: The true motion's values: the ODE's own error, estimated by the same solve at a tighter rtol.
@@ -549,9 +560,14 @@ def _estimate(an: FlywheelAnalysis, needs: set[str]) -> None:
             an.rows[k] = r.estimated(DISCRETISATION, relative(err, den), f"{an.motion.solver} rtol {an.motion.rtol:g}")
             continue
         v2 = quantity_values(at(2), base, None if i is None else 2 * i)[0]
-        if base in ("phi_DeltaT_max", "phi_DeltaT_min"):
+        if base in ("phi_DeltaT_max", "phi_DeltaT_min", "phi_max", "phi_min"):
             top = base.endswith("max")
-            err = abs(_wrapped(an, base, r.graphical - _refined_angle(at(2), top)))
+            energy = base.startswith("phi_D")
+            err = abs(_wrapped(an, base, r.graphical - _refined_angle(at(2), top, energy)))
+            # next to a kink of Mп a parabola misplaces the extreme: where those at N and 2N disagree
+            # (by over a factor 2 in the distance from the reading), the one at 4N decides
+            if abs(_wrapped(an, base, r.graphical - _refined_angle(an, top, energy))) > 2.0 * err:
+                err = abs(_wrapped(an, base, r.graphical - _refined_angle(at(4), top, energy)))
             an.rows[k] = r.estimated(READING, relative(err, den), f"{basis}, read at a position")
             continue
         v4 = quantity_values(at(4), base, None if i is None else 4 * i)[0]
@@ -619,11 +635,17 @@ def _between_positions(an: FlywheelAnalysis, base: str) -> float:
     return {"k": k, "l": l_}.get(base, (k - l_) * per_J_F)
 
 
-def _refined_angle(an: FlywheelAnalysis, top: bool) -> float:
-    """Where the pipeline places the extreme of ΔT between its positions, degrees."""
+def _refined_angle(an: FlywheelAnalysis, top: bool, energy: bool = True) -> float:
+    """Where the pipeline places the extreme of ΔT (``energy``), or the Wittenbauer tangent's point
+    of contact (the extreme of ΔT − Jп·tan ψ: ω_max, ω_min), between its positions, degrees."""
     d = an.design
-    T = np.asarray(d.energy_mm[:-1], dtype=float)
-    i = int(d.energy_max_index if top else d.energy_min_index)
+    if energy:
+        T = np.asarray(d.energy_mm[:-1], dtype=float)
+        i = int(d.energy_max_index if top else d.energy_min_index)
+    else:
+        w = d.wittenbauer
+        T = np.asarray(w.y_mm, dtype=float) - np.asarray(w.x_mm, dtype=float) * (w.tan_psi_max if top else w.tan_psi_min)
+        i = int(w.k_index if top else w.l_index)
     step = math.degrees(an.machine.cycle) / T.size
     return math.degrees(float(an.phi[i])) + _vertex(T, i)[1] * step
 

@@ -19,6 +19,7 @@ import math
 import re
 import sys
 from collections.abc import Mapping
+from itertools import pairwise
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
@@ -147,6 +148,8 @@ FLYWHEEL_SHOW_CHOICES = ("moment", "work", "energy", "inertia", "wittenbauer", "
 #: What a flywheel scene shows when it does not say (a braking-only scene: its run-down).
 FLYWHEEL_SHOW_DEFAULT = ("energy", "wittenbauer")
 BRAKING_SHOW_DEFAULT = ("rundown",)
+#: A four-stroke engine's working cycle: two turns of the crank (the reduced machine over 4π).
+FOUR_STROKE_CYCLE = 2.0 * TWO_PI
 #: The fewest and the default number of positions N the cycle is divided into.
 MIN_FLYWHEEL_POSITIONS = 4
 DEFAULT_FLYWHEEL_POSITIONS = 12
@@ -419,18 +422,72 @@ def _read_delta(fw: Reader, required: bool) -> float | None:
 
 
 def _read_cycle(fw: Reader) -> float | None:
-    """``cycle``: Φ, dividing one turn a whole number of times (360° when absent)."""
+    """``cycle``: Φ, dividing one turn a whole number of times, or two turns (a four-stroke
+    engine's working cycle); 360° when absent."""
     v = fw.value("cycle", "angle", required=False, positive=True)
     if v is None:
         return TWO_PI if fw.present("cycle") is None else None
+    if abs(v.si - FOUR_STROKE_CYCLE) <= 1e-9 * FOUR_STROKE_CYCLE:
+        return FOUR_STROKE_CYCLE
     k = TWO_PI / v.si
-    if not (math.isfinite(k) and 0.5 <= k <= MAX_POSITIONS) or abs(k - round(k)) > 1e-9 * k:
+    if not (math.isfinite(k) and 1 <= k <= MAX_POSITIONS) or abs(k - round(k)) > 1e-9 * k:
         fw.problem(
             v.path,
-            f"must divide one turn a whole number of times (360°, 180°, 120° …), not {v.text()}",
+            f"must divide one turn a whole number of times (360°, 180°, 120° …) or be two turns "
+            f"(720°, a four-stroke engine), not {v.text()}",
         )
         return None
     return TWO_PI / round(k)
+
+
+def _read_reduced_inertia(fw: Reader, cycle: float | None) -> tuple[Table | None, bool]:
+    """[flywheel.reduced_inertia]: Jп(φ) as a table (> 0, φ rising from 0, closed at Φ); whether it
+    was read (or is absent)."""
+    r = fw.table_at("reduced_inertia")
+    if r is None:
+        return None, "reduced_inertia" not in fw.table
+    phi = _series(r, "phi", "angle")
+    jp = _series(r, "inertia", "inertia")
+    r.finish()
+    if phi is None or jp is None or cycle is None:
+        return None, False
+    if not _same_length(r, phi, jp, phi.path.rsplit(".", 1)[-1], "Jп"):
+        return None, False
+    x, y = phi.si, jp.si
+
+    def kgm2(v: float) -> str:  # the number as written, the unit as printed
+        return f"{jp.text(v).split()[0]} kg·m²"
+
+    for i, v in enumerate(y):
+        if not v > 0:
+            r.problem(f"{jp.path}[{i}]", f"must be > 0, not {kgm2(v)}: a reduced moment of inertia")
+            return None, False
+    if x[0] != 0:
+        r.problem(f"{phi.path}[0]", f"must be 0, not {phi.text(x[0])}: the table starts at position 1 (φ = 0)")
+        return None, False
+    for i in range(1, len(x)):
+        if not x[i] > x[i - 1]:
+            r.problem(f"{phi.path}[{i}]", f"{phi.text(x[i])} comes after {phi.text(x[i - 1])}: the angles must "
+                                          "increase (Jп(φ) has no steps)")
+            return None, False
+    last = len(x) - 1
+    if x[-1] > cycle * (1 + 1e-12):
+        r.problem(f"{phi.path}[{last}]", f"{phi.text(x[-1])} is outside the cycle: φ runs from 0 at position 1 "
+                                         f"to Φ = {phi.text(cycle)}")
+        return None, False
+    if x[-1] >= cycle * (1 - 1e-12):
+        if y[-1] != y[0]:
+            r.problem(f"{jp.path}[{last}]", f"{kgm2(y[-1])} at Φ = {phi.text(cycle)} differs from "
+                                            f"{kgm2(y[0])} at φ = 0: Jп repeats every cycle")
+            return None, False
+        return Table((*x[:-1], cycle), tuple(y)), True
+    step = max(b - a for a, b in pairwise(x))
+    if cycle - x[-1] > step * (1 + 1e-9):
+        r.problem(phi.path, f"ends at {phi.text(x[-1])}, {phi.text(cycle - x[-1])} short of the cycle "
+                            f"Φ = {phi.text(cycle)}, more than its longest step ({phi.text(step)}): "
+                            "a table of another period?")
+        return None, False
+    return Table((*x, cycle), (*y, y[0])), True  # closed: back to Jп(0) at Φ
 
 
 
@@ -747,6 +804,7 @@ def _read_flywheel(
     inertia = _at_least_zero(fw, fw.value("inertia", "inertia", required=False))
     inertia_ok = inertia is not None or fw.present("inertia") is None
     masses, masses_given = _read_masses(fw, machine)
+    jp_table, jp_ok = _read_reduced_inertia(fw, cycle)
 
     fw.known.add("load")
     readers = fw.tables_at("load")
@@ -758,6 +816,10 @@ def _read_flywheel(
 
     motor, motor_ok = _read_motor(fw, balance, omega, braking_only)
     true_motion, true_ok = _read_true_motion(fw, braking_only)
+    if "reduced_inertia" in fw.table and "true_motion" in fw.table:
+        fw.problem(fw.at("true_motion"), "not with [flywheel.reduced_inertia]: the equation of motion needs "
+                   "dJп/dφ, and a table of Jп has none at its points (give the masses instead)")
+        true_ok = False
     braking, braking_ok = _read_braking(fw)
     if no_loads and "braking" not in fw.table:
         fw.problem(fw.at("load"), "no [[flywheel.load]]: nothing for the flywheel to smooth")
@@ -781,6 +843,7 @@ def _read_flywheel(
         and motor_ok
         and true_ok
         and braking_ok
+        and jp_ok
         and len(read_loads) == len(loads)
         and (machine.linkage is not None or not machine.has_linkage)
         and (start is not None or not machine.has_linkage)
@@ -797,6 +860,7 @@ def _read_flywheel(
         inertia=inertia.si if inertia is not None else 0.0,
         balance=balance,
         motor=motor,
+        inertia_table=jp_table,
     )
     scene = FlywheelScene(
         machine=model,

@@ -190,3 +190,45 @@ def test_delta_w_max_is_read_on_the_indicator_as_drawn_at_its_enlarged_scale() -
     assert row["scale"] == pytest.approx(design.scales["T"] / 6, rel=1e-12)
     assert row["drawn_mm"] * row["scale"] == pytest.approx(row["graphical"], rel=1e-12)
     assert row["drawn_mm"] > 40.0
+
+
+def test_with_a_constant_jp_omega_is_extreme_where_delta_t_is(tmp_path):
+    """phi_max, phi_min (the tangents' points of contact) fall on ΔT's extremes when Jп is
+    constant — the IC engine: 104.17° and 11.67°, read at 105° and 10° — and tan ψ is a formula."""
+    q = values(check_json(engine(tmp_path, find='["phi_max", "phi_min", "phi_DeltaT_max", "phi_DeltaT_min", '
+                                              '"tan_psi_max", "tan_psi_min"]', J=0.5)))
+    for top in ("max", "min"):
+        assert q[f"phi_{top}"]["graphical"] == q[f"phi_DeltaT_{top}"]["graphical"]
+        assert q[f"phi_{top}"]["exact"] == pytest.approx(q[f"phi_DeltaT_{top}"]["exact"], abs=1e-9)
+    assert q["phi_max"]["graphical"] == pytest.approx(105.0) and q["phi_min"]["graphical"] == pytest.approx(10.0)
+    assert q["phi_max"]["exact"] == pytest.approx(104.1666667, abs=1e-6)
+    assert q["phi_min"]["exact"] == pytest.approx(11.6666667, abs=1e-6)
+    wm = 620 * np.pi / 30
+    mu = q["tan_psi_max"]["graphical"] / (wm ** 2 * 1.005 ** 2 / 2)  # μJ/μT of the drawing
+    assert q["tan_psi_min"]["graphical"] == pytest.approx(mu * wm ** 2 * 0.995 ** 2 / 2, rel=1e-14)
+    assert q["tan_psi_max"]["unit"] == "" and q["tan_psi_max"]["rel_error"] <= 1e-15
+
+
+def test_a_measured_kl_is_judged_as_drawn(tmp_path):
+    """kl (mm) was refused with an internal error when nothing else asked for the diagram."""
+    code, out, err = run_cli("check", str(engine(tmp_path, J=0.5, method="wittenbauer")), "--measured", "kl=1")
+    assert code == 1 and err == ""
+    assert re.search(r"^kl +1 +\S+ +0\.5 +OUT", out, re.MULTILINE), out
+
+
+def test_a_machine_that_repeats_every_turn_taken_over_two_turns(tmp_path):
+    """The compressor over Φ = 720° with 24 positions is the same flywheel as over 360° with 12: the
+    slider load acts on every compression stroke, ΔT repeats, k and l are the same points."""
+    one = (SCENES / "fly.compressor_course_project.toml").read_text(encoding="utf-8")
+    one = re.sub(r"(?ms)^find = \[.*?\]\n", 'find = ["M_b", "k", "l", "J_F", "phi_max", "phi_min"]\n', one, count=1)
+    one = one.split("[flywheel.true_motion]")[0]
+    two = one.replace("positions = 12", "positions = 24\ncycle_deg = 720")
+    (tmp_path / "one.toml").write_text(one, encoding="utf-8")
+    (tmp_path / "two.toml").write_text(two, encoding="utf-8")
+    a, b = values(check_json(tmp_path / "one.toml")), values(check_json(tmp_path / "two.toml"))
+    for name in ("M_b", "k", "l", "J_F"):
+        assert b[name]["graphical"] == pytest.approx(a[name]["graphical"], rel=1e-10), name
+        assert b[name]["exact"] == pytest.approx(a[name]["exact"], rel=1e-9), name
+    for name in ("phi_max", "phi_min"):  # one of two equal extremes, a turn apart
+        assert b[name]["exact"] % 360 == pytest.approx(a[name]["exact"], abs=1e-7)
+        assert b[name]["graphical"] % 360 == pytest.approx(a[name]["graphical"], abs=1e-9)

@@ -162,8 +162,8 @@ def test_angles_in_the_cycle_are_compared_modulo_the_cycle(tmp_path):
 FLYWHEEL_SCENES = sorted(p for p in SCENES.glob("fly.*.toml") if "[flywheel]" in p.read_text(encoding="utf-8"))
 SWEEP_FIND = ("DeltaT@4", "A_p@4", "M_b", "DeltaT_max", "DeltaT_min", "phi_DeltaT_max", "phi_DeltaT_min", "k", "l",
               "J_F", "J_F_wittenbauer", "J_F_indicator", "DeltaW_max", "J_mean")
-CONSTRUCTED = ("Jp", "Mp", "omega_s", "t_stop", "psi_max", "psi_min", "n_max", "n_min", "omega_max",
-               "omega_min")
+CONSTRUCTED = ("Jp", "Mp", "omega_s", "t_stop", "psi_max", "psi_min", "tan_psi_max", "tan_psi_min", "n_max", "n_min",
+               "omega_max", "omega_min")
 
 
 def assert_honest(rows) -> None:

@@ -364,9 +364,11 @@ MOMENT_LOAD = 'phi_deg = [0, 180, 180, 360]'
         (replace(C, "delta = 0.04\n", ""), "flywheel.delta",
          'missing: the coefficient of speed fluctuation δ = (ω_max − ω_min)/ω_m, e.g. delta = 0.04 or "1/25"'),
         (replace(C, "cycle_deg = 360", "cycle_deg = 100"), "flywheel.cycle_deg",
-         "must divide one turn a whole number of times (360°, 180°, 120° …), not 100°"),
-        (replace(C, "cycle_deg = 360", "cycle_deg = 720"), "flywheel.cycle_deg",
-         "must divide one turn a whole number of times (360°, 180°, 120° …), not 720°"),
+         ("must divide one turn a whole number of times (360°, 180°, 120° …) or be two turns (720°, a "
+          "four-stroke engine), not 100°")),
+        (replace(C, "cycle_deg = 360", "cycle_deg = 1080"), "flywheel.cycle_deg",
+         ("must divide one turn a whole number of times (360°, 180°, 120° …) or be two turns (720°, a "
+          "four-stroke engine), not 1080°")),
         (replace(C, "cycle_deg = 360", "cycle_deg = 0"), "flywheel.cycle_deg", "must be > 0"),
         (replace(C, "cycle_deg = 360", "cycle_deg = 360\nspeed_rpm = 960"), "flywheel.speed_rpm",
          "given twice: with a linkage the mean speed ω_m is the driver's omega (driver.omega_rpm)"),
@@ -687,15 +689,27 @@ def doc_flywheel_scenes() -> dict[str, Scene]:
 
 
 
-def test_docs_have_the_three_flywheel_examples() -> None:
+def test_docs_have_the_four_flywheel_examples() -> None:
     scenes = doc_flywheel_scenes()
-    assert len(scenes) == 3
+    assert len(scenes) == 4
+    tables = [s for s in scenes.values() if s.problem.machine.inertia_table is not None]
+    assert len(tables) == 1 and tables[0].measured == (("kl", 61.0), ("J_F", 42.4))
     with_linkage = [s for s in scenes.values() if s.linkage is not None]
     assert len(with_linkage) == 1 and with_linkage[0].problem.true_motion is not None
     kinds = {load.kind for s in scenes.values() for load in s.problem.machine.loads}
     assert kinds == {"slider", "crank"}
     assert {s.problem.machine.balance for s in scenes.values() if s.problem.machine.loads} == {"driving", "resisting"}
     assert any(s.problem.braking is not None and not s.problem.machine.loads for s in scenes.values())
+
+
+TWELVE = "[0, 30, 60, 90, 120, 150, 180, 210, 240, 270, 300, 330]"
+SAME_J = "[" + ", ".join(["0.6"] * 12) + "]"
+
+
+def jp_table(phi: str, inertia: str) -> str:
+    """The engine of fly.ic_engine_flywheel over a turn, with Jп given as a table (two TOML lists)."""
+    return (replace(ENGINE, "cycle_deg = 180", "cycle_deg = 360")
+            + f"\n[flywheel.reduced_inertia]\nphi_deg = {phi}\ninertia_kgm2 = {inertia}\n")
 
 
 def test_documented_error_messages_are_real() -> None:
@@ -708,6 +722,10 @@ def test_documented_error_messages_are_real() -> None:
         replace(C, "delta = 0.04", "delta = 2.5"),
         replace(C, "positions = 12", "positions = 2"),
         replace(C, "cycle_deg = 360", "cycle_deg = 100"),
+        jp_table("[0, 30, 60, 90]", "[0.6, 0.7, 0.8, 0.9]").replace("60, 90]", "90, 60]"),
+        jp_table(TWELVE, SAME_J).replace("cycle_deg = 360", "cycle_deg = 720"),
+        jp_table("[0, 120, 240]", "[0.6, 0.7, 0]"),
+        jp_table(TWELVE[:-1] + ", 360]", SAME_J[:-1] + ", 0.7]"),
         replace(C, "cycle_deg = 360", "cycle_deg = 360\nspeed_rpm = 960"),
         replace(C, 'link = "2"\npoint = "S2"', 'link = "2"\npoint = "A"'),
         replace(C, 'point = "C"', 'point = "B"'),
@@ -781,3 +799,73 @@ def test_brake_time() -> None:
     assert fly.machine.inertia == inputs["Je_kgm2"]
     assert fly.braking == Braking(inputs["Mr_Nm"], inputs["t_required_s"])
     assert fly.machine.inertia * fly.machine.omega_m / fly.braking.moment == p["exact"]["t_s"]
+
+
+# ------------------------------------------------------------------------------------------
+# Jп as a table, and the 720° cycle
+# ------------------------------------------------------------------------------------------
+
+COURSE = (ROOT / "figures" / "scenes" / "fly.wittenbauer_course_project.toml").read_text(encoding="utf-8")
+J_LIST = "[0.6008325, 0.6018516, 0.6019891"
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "message"),
+    [
+        (J_LIST, "[0.6008325, nan, 0.6019891", "flywheel.reduced_inertia.inertia_kgm2[1]: must be a finite number, not nan"),
+        (J_LIST, "[0.6008325, 0, 0.6019891",
+         "flywheel.reduced_inertia.inertia_kgm2[1]: must be > 0, not 0 kg·m²: a reduced moment of inertia"),
+        (J_LIST, "[0.6008325, -0.1, 0.6019891",
+         "flywheel.reduced_inertia.inertia_kgm2[1]: must be > 0, not -0.1 kg·m²: a reduced moment of inertia"),
+        ("phi_deg = [0, 30, 60, 90,", "phi_deg = [0, 30, 90, 60,",
+         "flywheel.reduced_inertia.phi_deg[3]: 60° comes after 90°: the angles must increase (Jп(φ) has no steps)"),
+        ("phi_deg = [0, 30, 60, 90,", "phi_deg = [0, 30, 30, 90,",
+         "flywheel.reduced_inertia.phi_deg[2]: 30° comes after 30°: the angles must increase (Jп(φ) has no steps)"),
+        ("phi_deg = [0, 30, 60, 90,", "phi_deg = [10, 30, 60, 90,",
+         "flywheel.reduced_inertia.phi_deg[0]: must be 0, not 10°: the table starts at position 1 (φ = 0)"),
+        ("270, 300, 330]", "270, 300, 390]",
+         "flywheel.reduced_inertia.phi_deg[11]: 390° is outside the cycle: φ runs from 0 at position 1 to Φ = 360°"),
+        ("positions = 12", "positions = 12\ncycle_deg = 720",
+         ("flywheel.reduced_inertia.phi_deg: ends at 330°, 390° short of the cycle Φ = 720°, more than its "
+          "longest step (30°): a table of another period?")),
+        ("270, 300, 330]", "270, 300, 330, 360]",
+         "flywheel.reduced_inertia.inertia_kgm2: has 12 values, phi_deg has 13: one Jп for each"),
+        ('tangents = "book"', 'tangents = "book"\n[flywheel.true_motion]',
+         ("flywheel.true_motion: not with [flywheel.reduced_inertia]: the equation of motion needs dJп/dφ, and a "
+          "table of Jп has none at its points (give the masses instead)")),
+    ],
+)
+def test_a_bad_table_of_jp_is_refused_in_one_line(tmp_path: Path, old: str, new: str, message: str) -> None:
+    path = tmp_path / "course.toml"
+    path.write_text(replace(COURSE, old, new), encoding="utf-8")
+    code, out, err = run_cli("check", str(path))
+    assert (code, out, err) == (2, "", f"course.toml: {message}\n")
+
+
+def test_a_table_of_jp_closed_at_the_cycle_is_the_same_table() -> None:
+    """Written up to Φ with Jп(Φ) = Jп(0), or stopping at 330° (closed back to Jп(0)): one machine."""
+    open_ = only_scene(COURSE).problem.machine.inertia_table
+    closed = only_scene(replace(replace(COURSE, "270, 300, 330]", "270, 300, 330, 360]"),
+                                "0.6025725, 0.6009025, 0.6]", "0.6025725, 0.6009025, 0.6, 0.6008325]")
+                        ).problem.machine.inertia_table
+    assert open_ == closed
+    assert open_.x[-1] == 2 * math.pi and open_.y[-1] == open_.y[0] == 0.6008325 and len(open_.x) == 13
+    assert only_problem(replace(replace(COURSE, "270, 300, 330]", "270, 300, 330, 360]"),
+                                "0.6025725, 0.6009025, 0.6]", "0.6025725, 0.6009025, 0.6, 0.7]")) == (
+        "flywheel.reduced_inertia.inertia_kgm2[12]",
+        "0.7 kg·m² at Φ = 360° differs from 0.600832 kg·m² at φ = 0: Jп repeats every cycle")
+
+
+def test_a_four_stroke_cycle_is_two_turns() -> None:
+    m = only_scene((ROOT / "figures" / "scenes" / "fly.four_stroke_engine.toml").read_text(encoding="utf-8")
+                   ).problem.machine
+    assert m.cycle == 4 * math.pi
+    assert m.positions(48)[24] == pytest.approx(2 * math.pi, rel=1e-15)  # position 25: the second turn begins
+    assert only_scene(replace(ENGINE, "cycle_deg = 180", "cycle_deg = 720")).problem.machine.cycle == 4 * math.pi
+    assert only_problem(replace(ENGINE, "cycle_deg = 180", "cycle_deg = 540")) == (
+        "flywheel.cycle_deg", ("must divide one turn a whole number of times (360°, 180°, 120° …) or be two "
+                               "turns (720°, a four-stroke engine), not 540°"))
+
+
+def only_scene(text: str) -> Scene:
+    return parse_text(text, "fly.toml")
