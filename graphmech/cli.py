@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import os
 import sys
 import warnings
@@ -251,18 +250,21 @@ def _render(args: argparse.Namespace) -> int:
 
 
 def _parse_measured(items: Sequence[str]) -> list[tuple[str, float]]:
-    out = []
+    """NAME=VALUE pairs, each value as written (its digits and sign are judged)."""
+    from graphmech.problems.reader import Written
+
+    out: list[tuple[str, float]] = []
     for item in items:
         for part in item.split(","):
             name, sep, value = part.partition("=")
-            try:
-                v = float(value)
-            except ValueError:
-                v = math.nan
-            if not sep or not name.strip() or not math.isfinite(v):
+            if not sep or not name.strip():
                 raise SceneError([(f"--measured {part.strip()}", "expected NAME=VALUE with a finite number")],
                                  COMMAND_LINE)
-            out.append((name.strip(), v))
+            try:
+                out.append((name.strip(), Written(value)))
+            except ValueError as e:
+                raise SceneError([(f"--measured {name.strip()}", str(e))],
+                                 COMMAND_LINE) from None
     return out
 
 
