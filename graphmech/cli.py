@@ -91,7 +91,8 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("scene", metavar="SCENE")
     c.add_argument("--json", action="store_true", help="machine-readable output")
     c.add_argument("--measured", action="append", default=[], metavar="NAME=VALUE",
-                   help="a value you measured: v_C=0.26 (SI) or pc=52 (drawn mm); repeatable, or comma-separated")
+                   help="a value you measured: v_C=0.26 (SI) or pc=52 (drawn mm), judged as written (its significant "
+                        "figures; its sign only when you write one); repeatable, or comma-separated")
     c.add_argument("--precision", type=float, metavar="MM", help="drawing precision, mm (default: the scene's, else 0.5)")
     t = sub.add_parser("batch", help="figures and checks of many scenes and variants, on all cores",
                        parents=[quiet, varied, figure], epilog=epilog,

@@ -141,7 +141,7 @@ def judge_written(name: str, value: Written, expected: float, reading: float | N
     it; None for a computed value), within the drawing precision where that is wider: a reading is
     never judged finer than it can be read. Without a written sign the magnitudes are compared
     (the book asks for a magnitude); with one, the signed values. ``ok``: the kind's own verdict
-    on the signed value within ``reading`` (an angle judged across 0°/360°), which stands.
+    on the value as written within ``reading`` (an angle judged across 0°/360°), which stands.
 
     >>> from graphmech.problems.reader import Written
     >>> judge_written("psi", Written("1.44"), 1.43755802, None, "deg").ok
@@ -152,7 +152,7 @@ def judge_written(name: str, value: Written, expected: float, reading: float | N
     x, e = (float(value), float(expected)) if value.signed else (abs(float(value)), abs(float(expected)))
     by_drawing = reading is not None and reading >= value.half_unit
     tol = float(reading) if by_drawing and reading is not None else value.half_unit
-    good = abs(x - e) <= tol + 1e-12 * abs(e) or (value.signed and ok and reading is not None)
+    good = abs(x - e) <= tol + 1e-12 * abs(e) or (ok and reading is not None)
     rule = f"{DRAWING_PRECISION if by_drawing else rounding_rule(value)}, " \
            f"{SIGN_CHECKED if value.signed else MAGNITUDE_ONLY}"
     return Verdict(name, value, expected, tol, bool(good), unit, value.text, rule, value.figures)

@@ -185,8 +185,9 @@ def test_a_kinds_verdict_is_judged_again_only_for_a_written_value():
     assert as_written(count) is count
     again = as_written(Verdict("alpha", Written("-30.2"), -30.0, 0.3, True, "deg"))
     assert again.ok and again.rule == "drawing precision, sign checked" and again.written == "-30.2"
-    wrap = as_written(Verdict("alpha", Written("+359.9"), 0.1, 0.3, True, "deg"))  # the kind judged across 0°
-    assert wrap.ok
+    for text in ("+359.9", "359.9"):  # the kind judged it across 0°: that stands, sign written or not
+        assert as_written(Verdict("alpha", Written(text), -0.1, 0.3, True, "deg")).ok
+    assert not as_written(Verdict("alpha", Written("359.9"), -0.1, 0.3, False, "deg")).ok
     assert as_written(again) is again
 
 
