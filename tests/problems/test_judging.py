@@ -279,3 +279,17 @@ def test_the_sign_is_judged_when_written(tmp_path, omega, value, code):
     v = _verdict(result)
     assert result[0] == code and v["expected"] == pytest.approx(-2.16895697 * float(omega) / 10, rel=1e-8)
     assert v["rule"] == "drawing precision, " + ("magnitude only" if value[0].isdigit() else "sign checked")
+
+
+def test_the_books_flywheel_answers_as_printed_are_right(tmp_path):
+    """fly.ic_engine_flywheel-answers (000, 飞轮 4): the book prints Mr = 116.67 N·m (a magnitude),
+    ΔWmax = 89.08 J, n_max = 623.1 rpm; as TOML numbers Mr would be out (its sign is −)."""
+    path = SCENES / "fly.ic_engine_flywheel-answers.toml"
+    result = run_cli("check", str(path), "--json")
+    got = {v["name"]: (v["written"], v["ok"], v["rule"]) for v in json.loads(result[1])["measured"]}
+    assert result[0] == 0 and got == {"Mr": ("116.67", True, "drawing precision, magnitude only"),
+                                      "DeltaW_max": ("89.08", True, "drawing precision, magnitude only"),
+                                      "n_max": ("623.1", True, "rounding to 4 s.f., magnitude only")}
+    text = path.read_text(encoding="utf-8").replace('Mr = "116.67"', "Mr = 116.67")
+    (tmp_path / "numbers.toml").write_text(text, encoding="utf-8")
+    assert run_cli("check", str(tmp_path / "numbers.toml"))[0] == 1
