@@ -856,7 +856,7 @@ class Written(float):
     """A measured value as written (``"1.440"``, ``"+2.17"``, ``"1.44e3"``): the number, and what
     its writing says — ``figures`` significant figures (every digit from the first non-zero one,
     trailing zeros included; 0 for a written zero), ``half_unit`` (half a unit of the last written
-    digit: the interval the value stands for) and ``signed`` (a sign was written). judged as a
+    digit: the interval the value stands for) and ``signed`` (a sign was written); judged as a
     teacher does by :func:`graphmech.problems.judging.judge_written`.
 
     >>> w = Written("1.440")
