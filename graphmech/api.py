@@ -47,7 +47,7 @@ from graphmech.problems import check as check_scene
 from graphmech.problems import steps
 from graphmech.problems import with_precision
 from graphmech.problems.judging import Row, Verdict, estimate_text
-from graphmech.problems.reader import Scene
+from graphmech.problems.reader import Scene, Written
 from graphmech.scene import draw, id_prefix, parse_scene, parse_toml, read_data
 from graphmech.tolerances import MAX_PRECISION_MM
 from graphmech.variants import Assignment, replace, value_text, variant_name
@@ -97,7 +97,7 @@ class Problem:
     def __repr__(self) -> str:
         return f"<graphmech.Problem {self.name!r}: {self.kind}, {self.title!r}>"
 
-    def check(self, measured: Mapping[str, float] | Sequence[tuple[str, float]] | None = None,
+    def check(self, measured: Mapping[str, float | str] | Sequence[tuple[str, float | str]] | None = None,
               precision: float | None = None) -> CheckTable:
         """The check table; ``measured`` judges your own values (``{"pc": 40.5}`` drawn mm,
         ``{"v_C": 0.26}`` SI) within ``precision`` mm of drawing (default: the scene's)."""
@@ -185,6 +185,13 @@ def _pairs(measured: object) -> Sequence[tuple[object, object]]:
 
 
 def _number(name: object, value: object, source: str) -> float:
+    if isinstance(value, Written):
+        return value
+    if isinstance(value, str):  # a value as written: its digits and sign are judged
+        try:
+            return Written(value)
+        except ValueError as e:
+            raise SceneError([(f"measured.{name}", str(e))], source) from None
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise SceneError([(f"measured.{name}", f"must be a finite number, not {value!r}")], source)
     return float(value)
@@ -287,8 +294,9 @@ class CheckTable:
         w = max(16, *(len(v.name) for v in self.measured))
         lines = [f"{'measured':<{w}} {'value':>11} {'expected':>13} {'± tol':>9}  verdict"]
         for v in self.measured:
-            lines.append(f"{v.name:<{w}} {v.measured:>11.6g} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
-                         f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit})")
+            value = f"{v.written:>11}" if v.written else f"{v.measured:>11.6g}"  # as written, and by which rules
+            lines.append(f"{v.name:<{w}} {value} {v.expected:>13.6g} {v.tolerance:>9.3g}  "
+                         f"{'ok' if v.ok else 'OUT OF TOLERANCE'} ({v.unit}{'; ' + v.rule if v.rule else ''})")
         return lines
 
     def __str__(self) -> str:
@@ -311,9 +319,11 @@ class CheckTable:
                      f"{r.graphical:.9g}", f"{r.exact:.9g}", f"{r.rel_error:.1e}", r.unit, acc.strip())
             body.append("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in cells) + "</tr>")
         for v in self.measured:
-            body.append(f"<tr><td>{escape(v.name)}</td><td colspan='7'>measured {v.measured:.6g}, expected "
+            value = escape(v.written) if v.written else f"{v.measured:.6g}"
+            body.append(f"<tr><td>{escape(v.name)}</td><td colspan='7'>measured {value}, expected "
                         f"{v.expected:.6g} ± {v.tolerance:.3g} {escape(v.unit)}: "
-                        f"<b>{'ok' if v.ok else 'OUT OF TOLERANCE'}</b></td></tr>")
+                        f"<b>{'ok' if v.ok else 'OUT OF TOLERANCE'}</b>"
+                        f"{' (' + escape(v.rule) + ')' if v.rule else ''}</td></tr>")
         return (f"<table><caption>{escape(self.title)} — {escape('  '.join(self.scale_notes))}</caption>"
                 f"<thead><tr>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>")
 

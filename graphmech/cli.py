@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import os
 import sys
 import warnings
@@ -92,7 +91,8 @@ def _parser() -> argparse.ArgumentParser:
     c.add_argument("scene", metavar="SCENE")
     c.add_argument("--json", action="store_true", help="machine-readable output")
     c.add_argument("--measured", action="append", default=[], metavar="NAME=VALUE",
-                   help="a value you measured: v_C=0.26 (SI) or pc=52 (drawn mm); repeatable, or comma-separated")
+                   help="a value you measured: v_C=0.26 (SI) or pc=52 (drawn mm), judged as written (its significant "
+                        "figures; its sign only when you write one); repeatable, or comma-separated")
     c.add_argument("--precision", type=float, metavar="MM", help="drawing precision, mm (default: the scene's, else 0.5)")
     t = sub.add_parser("batch", help="figures and checks of many scenes and variants, on all cores",
                        parents=[quiet, varied, figure], epilog=epilog,
@@ -251,18 +251,21 @@ def _render(args: argparse.Namespace) -> int:
 
 
 def _parse_measured(items: Sequence[str]) -> list[tuple[str, float]]:
-    out = []
+    """NAME=VALUE pairs, each value as written (its digits and sign are judged)."""
+    from graphmech.problems.reader import Written
+
+    out: list[tuple[str, float]] = []
     for item in items:
         for part in item.split(","):
             name, sep, value = part.partition("=")
-            try:
-                v = float(value)
-            except ValueError:
-                v = math.nan
-            if not sep or not name.strip() or not math.isfinite(v):
+            if not sep or not name.strip():
                 raise SceneError([(f"--measured {part.strip()}", "expected NAME=VALUE with a finite number")],
                                  COMMAND_LINE)
-            out.append((name.strip(), v))
+            try:
+                out.append((name.strip(), Written(value)))
+            except ValueError as e:
+                raise SceneError([(f"--measured {name.strip()}", str(e))],
+                                 COMMAND_LINE) from None
     return out
 
 

@@ -45,6 +45,10 @@ def test_measured_values_are_judged_as_on_the_command_line():
     exact = p.check()["v_E"].exact
     table = p.check(measured={"v_E": exact * 1.001, "omega_2": 99.0})
     assert [(v.name, v.ok) for v in table.measured] == [("v_E", True), ("omega_2", False)] and not table.ok
+    # the command line's values are as written: the API judges strings so
+    table = p.check(measured={"v_E": repr(exact * 1.001), "omega_2": "99"})
+    assert [(v.name, v.ok, v.written) for v in table.measured] == [("v_E", True, repr(exact * 1.001)),
+                                                                   ("omega_2", False, "99")]
     code, out, _ = run_cli("check", str(BLOCK), "--json", f"--measured=v_E={exact * 1.001!r},omega_2=99")
     assert code == 1 and json.loads(out)["measured"] == [v.as_dict() for v in table.measured]
     assert p.check([("v_E", exact)], precision=0.01).measured[0].tolerance < table.measured[0].tolerance

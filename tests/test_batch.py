@@ -91,7 +91,7 @@ def test_check_set_prints_each_variants_verdicts_on_the_measured_values():
     for block, angle, value in zip(blocks[1:], (30, 45), expected):
         head, columns, verdict = block.splitlines()
         assert head == f"kin.oscillating_block-driver.angle={angle}:" and columns.split()[0] == "measured"
-        assert verdict.split()[:3] == ["pe", "3", f"{value:.6g}"] and "OUT OF TOLERANCE (mm)" in verdict
+        assert verdict.split()[:3] == ["pe", "3", f"{value:.6g}"] and "OUT OF TOLERANCE (mm; drawing precision" in verdict
 
 
 def test_check_set_with_a_failing_variant_reports_it_and_exits_2():

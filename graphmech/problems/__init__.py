@@ -53,8 +53,12 @@ def with_precision(scene: Scene[Any], precision_mm: float | None) -> Scene[Any]:
 
 
 def check(scene: Scene[Any], extra: Extra = ()) -> tuple[Analysis, list[Verdict], dict[str, Any], list[str]]:
-    """Analyse a scene and judge its measured values: (analysis, verdicts, JSON extras, text lines)."""
-    return kind_of(scene).check(scene, extra)
+    """Analyse a scene and judge its measured values: (analysis, verdicts, JSON extras, text lines);
+    a value as written is judged by its digits and sign, whatever the kind (judging.as_written)."""
+    from graphmech.problems.judging import as_written
+
+    an, verdicts, doc, lines = kind_of(scene).check(scene, extra)
+    return an, [as_written(v) for v in verdicts], doc, lines
 
 
 def sheet(scene: Scene[Any], footer: Footer = ()) -> tuple[Sheet, list[str]]:

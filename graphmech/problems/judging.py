@@ -21,6 +21,7 @@ import numpy as np
 from graphmech import tolerances as T
 from graphmech.accuracy import CONSTRUCTION, percent
 from graphmech.errors import DegenerateConstruction
+from graphmech.problems.reader import Written
 
 if TYPE_CHECKING:
     from graphmech.problems.reader import Scene
@@ -98,7 +99,9 @@ def estimate_text(row: Row) -> str:
 
 @dataclass(frozen=True)
 class Verdict:
-    """A hand measurement judged against the exact value, within the drawing precision."""
+    """A hand measurement judged against the exact value, within the drawing precision; a value
+    as written (:class:`~graphmech.problems.reader.Written`) also keeps its text and the rules
+    that judged it (:func:`judge_written`)."""
 
     name: str
     measured: float
@@ -106,18 +109,74 @@ class Verdict:
     tolerance: float
     ok: bool
     unit: str
+    written: str = ""  # the value as written ("" for a number given as a number)
+    rule: str = ""  # "rounding to 3 s.f., magnitude only", "drawing precision, sign checked" …
+    figures: int | None = None  # its significant figures (0: a written zero)
 
     def as_dict(self) -> dict[str, Any]:
-        return {"name": self.name, "measured": self.measured, "expected": self.expected,
-                "tolerance": self.tolerance, "ok": self.ok, "unit": self.unit}
+        doc = {"name": self.name, "measured": self.measured, "expected": self.expected,
+               "tolerance": self.tolerance, "ok": self.ok, "unit": self.unit}
+        if self.written:  # a number given as a number keeps the JSON it always had
+            doc.update(written=self.written, rule=self.rule, significant_figures=self.figures)
+        return doc
+
+
+#: The rules a written value is judged by (docs/scene-format.md, [measured]); the rounding rule
+#: is named with its figures by :func:`rounding_rule`.
+DRAWING_PRECISION = "drawing precision"
+MAGNITUDE_ONLY = "magnitude only"
+SIGN_CHECKED = "sign checked"
+
+
+def rounding_rule(value: Written) -> str:
+    """``rounding to 3 s.f.``; a written zero, to its last digit (``rounding to ±0.005``)."""
+    return f"rounding to {value.figures} s.f." if value.figures else f"rounding to ±{value.half_unit:g}"
+
+
+def judge_written(name: str, value: Written, expected: float, reading: float | None, unit: str,
+                  ok: bool = False) -> Verdict:
+    """A value as written judged as a teacher does. Right when the exact value lies within half a
+    unit of the last written digit, both ends included (a tie is right whichever way it was
+    rounded) — or, for a value read off the drawing (``reading``: the tolerance the drawing gives
+    it; None for a computed value), within the drawing precision where that is wider: a reading is
+    never judged finer than it can be read. Without a written sign the magnitudes are compared
+    (the book asks for a magnitude); with one, the signed values. ``ok``: the kind's own verdict
+    on the value as written within ``reading`` (an angle judged across 0°/360°), which stands.
+
+    >>> from graphmech.problems.reader import Written
+    >>> judge_written("psi", Written("1.44"), 1.43755802, None, "deg").ok
+    True
+    >>> judge_written("psi", Written("1.43"), 1.43755802, None, "deg").ok
+    False
+    """
+    x, e = (float(value), float(expected)) if value.signed else (abs(float(value)), abs(float(expected)))
+    by_drawing = reading is not None and reading >= value.half_unit
+    tol = float(reading) if by_drawing and reading is not None else value.half_unit
+    good = abs(x - e) <= tol + 1e-12 * abs(e) or (ok and reading is not None)
+    rule = f"{DRAWING_PRECISION if by_drawing else rounding_rule(value)}, " \
+           f"{SIGN_CHECKED if value.signed else MAGNITUDE_ONLY}"
+    return Verdict(name, value, expected, tol, bool(good), unit, value.text, rule, value.figures)
+
+
+def as_written(v: Verdict) -> Verdict:
+    """A kind's verdict judged again as a teacher does when its value was written
+    (:func:`judge_written`, the kind's tolerance being what the drawing gives it). A number given
+    as a number, a verdict already so judged (:func:`judge_value`) and an exact one (tolerance 0:
+    a count, or a name with nothing to judge it against) stand as they are."""
+    if not isinstance(v.measured, Written) or v.written or v.tolerance == 0:
+        return v
+    return judge_written(v.name, v.measured, v.expected, v.tolerance, v.unit, v.ok)
 
 
 def judge_value(name: str, value: float, expected: float, drawn: float | None, scale: float,
                 precision_mm: float, unit: str) -> Verdict:
     """A measured value against the expected one: a length read off the drawing within the
-    drawing precision × its μ, any other value (a computed one) within 0.1 %."""
+    drawing precision × its μ, any other value (a computed one) within 0.1 %; a value as written
+    by its digits and sign (:func:`judge_written`)."""
     tol = precision_mm * abs(scale) if drawn is not None else max(abs(expected) * 1e-3, T.EPS)
     ok = abs(value - expected) <= tol + 1e-12 * abs(expected)
+    if isinstance(value, Written):
+        return judge_written(name, value, expected, tol if drawn is not None else None, unit, bool(ok))
     return Verdict(name, value, expected, tol, bool(ok), unit)  # bool: a numpy expected gives a numpy bool
 
 

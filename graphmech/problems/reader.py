@@ -13,7 +13,8 @@ import difflib
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Generic, Iterable, Mapping, NoReturn, TypeGuard, TypeVar, cast, overload
+from decimal import Decimal
+from typing import Any, Generic, Iterable, Mapping, NoReturn, Self, TypeGuard, TypeVar, cast, overload
 
 from graphmech.errors import SceneError
 from graphmech.drawing.primitives import TitleBlock
@@ -847,10 +848,57 @@ def read_scales(
     return scales
 
 
+#: A number as a student writes it: a sign, digits with at most one decimal point, an exponent.
+WRITTEN_NUMBER = re.compile(r"([+-]?)([0-9]*)(?:\.([0-9]*))?(?:[eE]([+-]?[0-9]{1,6}))?")
+
+
+class Written(float):
+    """A measured value as written (``"1.440"``, ``"+2.17"``, ``"1.44e3"``): the number, and what
+    its writing says — ``figures`` significant figures (every digit from the first non-zero one,
+    trailing zeros included; 0 for a written zero), ``half_unit`` (half a unit of the last written
+    digit: the interval the value stands for) and ``signed`` (a sign was written); judged as a
+    teacher does by :func:`graphmech.problems.judging.judge_written`.
+
+    >>> w = Written("1.440")
+    >>> float(w), w.figures, w.half_unit, w.signed
+    (1.44, 4, 0.0005, False)
+    >>> Written("1440").figures, Written("1.44e3").half_unit, Written("-2.17").signed
+    (4, 5.0, True)
+    """
+
+    text: str
+    figures: int
+    half_unit: float
+    signed: bool
+
+    def __new__(cls, text: str) -> Self:
+        written = text.strip()
+        m = WRITTEN_NUMBER.fullmatch(written)
+        if written.lstrip("+-").lower() in ("nan", "inf", "infinity"):
+            raise ValueError(f"must be a finite number, not {text!r}")
+        if m is None or not (m[2] or m[3]):
+            raise ValueError(f"must be a finite number as written (1.44, +2.17, -0.0120, 1.44e3), not {text!r}")
+        x = float.__new__(cls, written)
+        place = int(m[4] or 0) - len(m[3] or "")
+        half = float(Decimal(5).scaleb(place - 1))
+        if not (math.isfinite(x) and math.isfinite(half)):
+            raise ValueError(f"must be a finite number in double precision's range, not {text!r}")
+        x.text, x.half_unit, x.signed = written, half, bool(m[1])
+        x.figures = len(((m[2] or "") + (m[3] or "")).lstrip("0"))
+        return x
+
+    def __reduce__(self) -> tuple[type[Written], tuple[str]]:  # a batch's worker gets the text again
+        return Written, (self.text,)
+
+    def __repr__(self) -> str:
+        return f"Written({self.text!r})"
+
+
 def read_measured(
     top: Reader, labels: tuple[str, ...] | None, cam: bool = False
 ) -> tuple[tuple[str, float], ...]:
-    """[measured]: quantity values (SI) or drawn segments (mm), kept raw and in order.
+    """[measured]: quantity values (SI) or drawn segments (mm), kept raw and in order; a string
+    is a value as written (:class:`Written`, judged by its digits and sign).
 
     A cam scene has no driver positions, so its names take no ``@label``.
     """
@@ -868,7 +916,14 @@ def read_measured(
                 "or a drawn segment (pc, \"p'c'\", \"n'c'\")",
             )
             continue
-        x = r.number(value, path)
+        if isinstance(value, str):  # a value as written: its digits and sign are judged
+            try:
+                x: float | None = Written(value)
+            except ValueError as e:
+                r.problem(path, str(e))
+                continue
+        else:
+            x = r.number(value, path)
         if x is None:
             continue
         if "@" in key and cam:

@@ -255,7 +255,7 @@ def test_measured_problems() -> None:
 [measured]
 "v_C@50" = 1
 "<b>" = 2
-pc = "52"
+pc = "52 mm"
 "p'c'" = nan
 
 [check]
@@ -270,7 +270,7 @@ precision_mm = 0
             "not a measured name: a quantity (v_C, omega_2, a_k_C2C3, v_C@50) "
             "or a drawn segment (pc, \"p'c'\", \"n'c'\")",
         ),
-        ("measured.pc", "must be a number, not a string"),
+        ("measured.pc", "must be a finite number as written (1.44, +2.17, -0.0120, 1.44e3), not '52 mm'"),
         ("measured.p'c'", "must be a finite number, not nan"),
         ("check.precision_mm", "must be > 0"),
     ]

@@ -23,10 +23,9 @@ from typing import TYPE_CHECKING, Any, cast
 import numpy as np
 
 from graphmech.accuracy import DISCRETISATION, READING, estimate_from_three, relative
-from graphmech.problems.judging import Row, Verdict, close_names, in_double_precision, measured_entries
+from graphmech.problems.judging import Row, Verdict, close_names, in_double_precision, judge_value, measured_entries
 from graphmech.errors import DegenerateConstruction, SceneError
 from graphmech.mechanisms.machine import Machine
-from graphmech.tolerances import EPS
 
 if TYPE_CHECKING:
     from graphmech.exact.flywheel import ExactMachine
@@ -690,9 +689,7 @@ def judge_flywheel(an: FlywheelAnalysis, precision_mm: float | None = None) -> l
             continue
         base, at = split(name)
         g, _e, drawn, scale, _ = quantity_values(an, base, None if at is None else int(at) - 1)
-        unit = QUANTITIES[base][0]
-        tol = prec * abs(scale) if drawn is not None else max(abs(g) * 1e-3, EPS)
-        out.append(Verdict(name, value, g, tol, abs(value - g) <= tol + 1e-12 * abs(g), unit))
+        out.append(judge_value(name, value, g, drawn, scale, prec, QUANTITIES[base][0]))
     return out
 
 

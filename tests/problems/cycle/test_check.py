@@ -371,9 +371,11 @@ def test_a_crank_swings_between_stated_angles_the_way_it_turns(tmp_path):
 
 def test_a_hand_reading_on_the_return_stroke_is_judged_with_the_driver_reversed():
     doc = check_json(SCENES / "linkage.rocker_swing.toml", "--measured", "omega_3@12=-1.83", "--measured",
-                     "omega_3@12=1.83")
-    got = [(m["measured"], m["ok"]) for m in doc["measured"] if m["name"] == "omega_3@12"]
-    assert sorted(got) == [(-1.83, True), (1.83, False)]  # position 12: ω₃ < 0 on the way back
+                     "omega_3@12=+1.83", "--measured", "omega_3@12=1.83")
+    got = [(m["measured"], m["ok"], m["rule"]) for m in doc["measured"] if m["name"] == "omega_3@12"]
+    # position 12: ω₃ < 0 on the way back; a sign written is judged, none written is the magnitude
+    assert got == [(-1.83, True, "drawing precision, sign checked"), (1.83, False, "drawing precision, sign checked"),
+                   (1.83, True, "drawing precision, magnitude only")]
 
 
 def test_the_offset_guide_bars_characteristics_and_cycle(tmp_path):
