@@ -852,7 +852,8 @@ def read_measured(
 ) -> tuple[tuple[str, float], ...]:
     """[measured]: quantity values (SI) or drawn segments (mm), kept raw and in order.
 
-    A cam scene has no driver positions, so its names take no ``@label``.
+    A cam scene has no driver positions, so its names take no ``@label``, only a reading's cam
+    angle in degrees (``s@45``).
     """
     r = top.table_at("measured")
     if r is None:
@@ -871,7 +872,7 @@ def read_measured(
         x = r.number(value, path)
         if x is None:
             continue
-        if "@" in key and cam:
+        if "@" in key and cam and not _cam_angle(key.split("@", 1)[1]):  # s@45: a cam angle, in degrees
             r.problem(
                 path,
                 "a cam scene has no driver positions: write the name without "
@@ -885,6 +886,14 @@ def read_measured(
                 continue
         out.append((key, x))
     return tuple(out)
+
+
+def _cam_angle(label: str) -> bool:
+    """A cam scene's reading at a division names its cam angle in degrees (s@45, psi@7.5)."""
+    try:
+        return math.isfinite(float(label))
+    except ValueError:
+        return False
 
 
 def read_check(top: Reader) -> float:

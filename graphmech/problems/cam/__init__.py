@@ -45,6 +45,13 @@ def _sheet(scene: Scene[CamScene], footer: Footer) -> tuple[Sheet, list[str]]:
     sheet = cam_sheet(scene.title, an.cam, an.drawn, an.scales, list(scene.show), page_size(scene),
                       roller_circles=scene.problem.roller_circles, marks=an.marks, footer=footer,
                       notation=scene.page.notation)
+    if scene.problem.coordinates:  # the working profile's table as handed in, beside the drawing
+        from dataclasses import replace
+
+        from graphmech.problems.cam.coordinates import coordinates_panel
+
+        row = max((p.row or 0 for p in sheet.panels), default=-1) + 1  # a row of its own, under the drawing
+        sheet = replace(sheet, panels=sheet.panels + (coordinates_panel(an, scene.page.notation, row),))
     return sheet, list(an.warnings)
 
 

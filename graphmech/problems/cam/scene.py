@@ -69,6 +69,9 @@ class CamScene:
     cam: DiscCam
     step: float
     roller_circles: bool = True
+    #: The working profile's coordinates at every division, as handed in (``[cam] coordinates``):
+    #: in ``check --json`` and as a table on the sheet.
+    coordinates: bool = False
 
 
 _FOLLOWER_TYPES = ("translating", "oscillating")
@@ -375,6 +378,7 @@ def _read_cam(top: Reader) -> CamScene | None:
     if alpha is not None and not alpha.si < math.pi / 2:
         r.problem(alpha.path, f"must be below 90°, not {alpha.text()}")
     circles = r.flag("roller_circles")
+    coordinates = r.flag("coordinates")  # the profile's table as handed in (problems.cam.coordinates)
     if "direction" in r.table and "direction" not in r.used:  # the crank's word for it
         r.used.add("direction")
         r.problem(r.at("direction"), 'a cam\'s sense is written rotation = "ccw" or "cw"')
@@ -402,6 +406,7 @@ def _read_cam(top: Reader) -> CamScene | None:
         cam=disc,
         step=CAM_STEP_DEFAULT if step is None else step.si,
         roller_circles=contact == "roller" and circles is not False,
+        coordinates=coordinates is True,
     )
 
 
