@@ -872,7 +872,7 @@ def read_measured(
         x = r.number(value, path)
         if x is None:
             continue
-        if "@" in key and cam and not _cam_angle(key.split("@", 1)[1]):  # s@45: a cam angle, in degrees
+        if "@" in key and cam and not _cam_reading(key):  # s@45: a reading at a cam angle, in degrees
             r.problem(
                 path,
                 "a cam scene has no driver positions: write the name without "
@@ -888,10 +888,15 @@ def read_measured(
     return tuple(out)
 
 
-def _cam_angle(label: str) -> bool:
+#: A cam scene's readings at a division (graphmech.problems.cam.check.AT_DIVISION): s@45, psi@45, alpha@45.
+CAM_READINGS = ("s", "psi", "alpha")
+
+
+def _cam_reading(key: str) -> bool:
     """A cam scene's reading at a division names its cam angle in degrees (s@45, psi@7.5)."""
+    base, _, label = key.partition("@")
     try:
-        return math.isfinite(float(label))
+        return base in CAM_READINGS and math.isfinite(float(label))
     except ValueError:
         return False
 

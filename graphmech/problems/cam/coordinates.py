@@ -2,8 +2,8 @@
 
 A design office hands a cam in with a table beside the drawing: per division its cam angle δ, the
 displacement s (a rocker's ψ), and the working (actual) profile's point in the cam frame as x, y and
-as polar r, θ. Here that point is read off the drawing — the knife's tip B_k; for a roller the drawn
-envelope's point nearest B_k, where the roller circle touches it; for a flat face the middle of the
+as polar r, θ. Here that point is read off the drawing — the knife's tip B_k; for a roller the point
+of the roller circle about B_k facing the drawn envelope's nearest point; for a flat face the middle of the
 face's stretch between its neighbours' corners — and set beside the exact envelope's
 (:func:`graphmech.exact.cam.profile`). The book's closed form for a roller, pitch point minus r_r
 along the normal, is what the tests hold the exact side to.
@@ -59,9 +59,12 @@ def drawn_contacts(cam: DiscCam, drawn: DrawnProfile) -> np.ndarray:
         if len(drawn.actual) < 4:
             return np.full_like(pitch, math.nan)
         ring = shapely.LinearRing(drawn.actual)
-        # the roller circle about B_k touches the envelope where the envelope is nearest B_k
+        # the roller circle about B_k touches the envelope towards the envelope's nearest point (the
+        # offset polygon has a corner there, r_r/cos(τ/2) from B_k: the contact is on the circle)
         at = shapely.line_interpolate_point(ring, shapely.line_locate_point(ring, shapely.points(pitch)))
-        return np.asarray(shapely.get_coordinates(at), dtype=float)
+        toward = np.asarray(shapely.get_coordinates(at), dtype=float) - pitch
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return pitch + f.roller_radius * toward / np.hypot(toward[:, 0], toward[:, 1])[:, None]
     # flat face k: the line through B_k along t_k; its stretch of the envelope runs between the
     # corners with faces k − 1 and k + 1, and the contact is its middle (B_k itself where a
     # neighbour is parallel: a dwell, the face touching the circle at the foot B_k)
