@@ -51,7 +51,7 @@ def _sheet(scene: Scene[CamScene], footer: Footer) -> tuple[Sheet, list[str]]:
         from graphmech.problems.cam.coordinates import coordinates_panel
 
         row = max((p.row or 0 for p in sheet.panels), default=-1) + 1  # a row of its own, under the drawing
-        sheet = replace(sheet, panels=sheet.panels + (coordinates_panel(an, scene.page.notation, row),))
+        sheet = replace(sheet, panels=sheet.panels + (coordinates_panel(an.cam, an.divisions, scene.page.notation, row),))
     return sheet, list(an.warnings)
 
 

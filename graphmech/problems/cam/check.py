@@ -228,7 +228,7 @@ def division_table(an: CamAnalysis) -> list[dict[str, Any]]:
     if an.scene.problem.coordinates:  # the profile's coordinates as handed in: asked for, else the table as it was
         from graphmech.problems.cam.coordinates import coordinate_columns
 
-        for row, xy in zip(out, coordinate_columns(an)):
+        for row, xy in zip(out, coordinate_columns(cam, drawn)):
             row.update(xy)
     return out
 
@@ -267,10 +267,9 @@ def reading_problem(cam: DiscCam, name: str) -> str | None:
                 raise ValueError
         except ValueError:
             return f"{name!r}: write s@<cam angle in degrees>, e.g. s@45 (or alpha@45)"
-    if name.startswith("psi@") or name == "psi0":
-        if not _angular(cam):
-            other = "s0" if name == "psi0" else "s@" + name.split("@")[1]
-            return f"{name} is a rocker's angle; this follower translates: ask for {other}"
+    if (name.startswith("psi@") or name == "psi0") and not _angular(cam):
+        other = "s0" if name == "psi0" else "s@" + name.split("@")[1]
+        return f"{name} is a rocker's angle; this follower translates: ask for {other}"
     return None
 
 

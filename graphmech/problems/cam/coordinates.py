@@ -11,7 +11,8 @@ along the normal, is what the tests hold the exact side to.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 
@@ -20,9 +21,6 @@ from graphmech.drawing.primitives import Panel, Polyline, Primitive, Segment, Te
 from graphmech.exact import cam as exact_cam
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
 from graphmech.methods.cam_inversion import DrawnProfile
-
-if TYPE_CHECKING:
-    from graphmech.problems.cam.check import CamAnalysis
 
 #: The table's row height and the free room either side of a cell's text, mm (the structure
 #: sheet's cases table uses 7.5 mm: this one has a row per division).
@@ -64,7 +62,8 @@ def drawn_contacts(cam: DiscCam, drawn: DrawnProfile) -> np.ndarray:
         at = shapely.line_interpolate_point(ring, shapely.line_locate_point(ring, shapely.points(pitch)))
         toward = np.asarray(shapely.get_coordinates(at), dtype=float) - pitch
         with np.errstate(divide="ignore", invalid="ignore"):
-            return pitch + f.roller_radius * toward / np.hypot(toward[:, 0], toward[:, 1])[:, None]
+            out: np.ndarray = pitch + f.roller_radius * toward / np.hypot(toward[:, 0], toward[:, 1])[:, None]
+        return out
     # flat face k: the line through B_k along t_k; its stretch of the envelope runs between the
     # corners with faces k − 1 and k + 1, and the contact is its middle (B_k itself where a
     # neighbour is parallel: a dwell, the face touching the circle at the foot B_k)
@@ -91,15 +90,15 @@ def _number(x: float) -> float | None:
     return float(x) if math.isfinite(x) else None
 
 
-def coordinate_columns(an: CamAnalysis) -> list[dict[str, Any]]:
+def coordinate_columns(cam: DiscCam, drawn_profile: DrawnProfile) -> list[dict[str, Any]]:
     """Per division the drawn and the exact working-profile point: x, y, r (m), θ (degrees)."""
-    drawn = drawn_contacts(an.cam, an.profile)
-    exact = np.asarray(exact_cam.profile(an.cam, an.delta).actual, dtype=float)
+    drawn = drawn_contacts(cam, drawn_profile)
+    exact = np.asarray(exact_cam.profile(cam, drawn_profile.delta).actual, dtype=float)
     rd, td = _polar(drawn)
     re, te = _polar(exact)
     return [{"x": _number(drawn[k, 0]), "y": _number(drawn[k, 1]), "r": _number(rd[k]), "theta_deg": _number(td[k]),
              "x_exact": _number(exact[k, 0]), "y_exact": _number(exact[k, 1]), "r_exact": _number(re[k]),
-             "theta_exact_deg": _number(te[k])} for k in range(len(an.delta))]
+             "theta_exact_deg": _number(te[k])} for k in range(len(drawn_profile.delta))]
 
 
 def _cell(x: float | None, digits: int = 2) -> str:
@@ -130,12 +129,13 @@ def _block(head: list[str], rows: list[list[str]], widths: list[float], left: fl
     return items
 
 
-def coordinates_panel(an: CamAnalysis, notation: str = "en", row: int | None = None) -> Panel:
+def coordinates_panel(cam: DiscCam, divisions: Sequence[dict[str, Any]], notation: str = "en",
+                      row: int | None = None) -> Panel:
     """The table on the sheet: division, δ, s (a rocker's ψ), x, y, r in mm and θ in degrees, as
-    read off the drawing — the rows of ``an.divisions``."""
-    ang = isinstance(an.cam.follower, OscillatingFollower)
+    read off the drawing — the rows of the check's ``divisions`` with :func:`coordinate_columns`."""
+    ang = isinstance(cam.follower, OscillatingFollower)
     head = ["k", "δ/°", "ψ/°" if ang else "s/mm", "x/mm", "y/mm", "r/mm", "θ/°"]
-    rows_all = an.divisions
+    rows_all = list(divisions)
     every = max(1, math.ceil(len(rows_all) / MAX_ROWS))
     rows = []
     for d in rows_all[::every]:

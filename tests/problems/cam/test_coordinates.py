@@ -141,8 +141,8 @@ def test_without_the_key_the_division_table_is_as_it_was():
 
 
 def test_the_sheet_has_the_table_only_when_asked(tmp_path):
-    from graphmech.scene import load_scene
     from graphmech.problems.cam import _sheet
+    from graphmech.scene import load_scene
 
     sheet, _ = _sheet(load_scene(TABLE), ())
     assert [p.name for p in sheet.panels] == ["profile", "displacement", "coordinates"]
@@ -228,7 +228,12 @@ def test_the_coordinates_key_is_a_flag(tmp_path):
 
 
 def test_drawn_contacts_of_a_knife_are_its_tips():
-    from graphmech.mechanisms.cam import DiscCam, MotionProgram, Segment, TranslatingFollower
+    from graphmech.mechanisms.cam import (
+        DiscCam,
+        MotionProgram,
+        Segment,
+        TranslatingFollower,
+    )
     from graphmech.mechanisms.motion import breakpoints, displacement
     from graphmech.methods.cam_inversion import divisions, draw_profile
     from graphmech.problems.cam.coordinates import drawn_contacts
