@@ -33,9 +33,11 @@ MAX_ROWS = 3 * BLOCK_ROWS
 #: The table's words: key → (English, 中文, русский).
 WORDS: dict[str, tuple[str, str, str]] = {
     "title": ("Working profile coordinates", "凸轮实际廓线坐标", "координаты действительного профиля"),
-    "every": ("every {}th division listed", "每隔 {} 个分点列出", "каждое {}-е деление"),
+    "every": ("one division in {} listed", "每 {} 个分点列出一个", "каждое {}-е деление"),
     "frame": ("O at the origin, the follower along +y at δ = 0; θ from +x counter-clockwise",
               "O 为原点，δ = 0 时从动件沿 +y；θ 自 +x 逆时针量", "O — начало координат, толкатель по +y при δ = 0; θ от +x против часовой"),
+    "frame rocker": ("O at the origin, the rocker's pivot A on +x; θ from +x counter-clockwise",
+                     "O 为原点，摆杆转轴 A 在 +x 上；θ 自 +x 逆时针量", "O — начало координат, ось коромысла A на +x; θ от +x против часовой"),
 }
 
 
@@ -150,7 +152,7 @@ def coordinates_panel(cam: DiscCam, divisions: Sequence[dict[str, Any]], notatio
     for b in range(n_blocks):
         items += _block(head, rows[b * per:(b + 1) * per], widths, left)
         left += sum(widths) + 3.0 * CELL_PAD
-    notes = [_say("frame", notation)] + ([_say("every", notation, every)] if every > 1 else [])
+    notes = [_say("frame rocker" if ang else "frame", notation)] + ([_say("every", notation, every)] if every > 1 else [])
     return Panel("coordinates", _say("title", notation), tuple(items), tuple(notes), row=row)
 
 

@@ -154,8 +154,26 @@ def test_the_sheet_has_the_table_only_when_asked(tmp_path):
     assert row3[:3] == ["3", "45.00", "4.80"]  # δ in degrees, s in mm
     d3 = check_json(TABLE)["divisions"][3]
     assert row3[3:] == [f"{d3['x'] * 1e3:.2f}", f"{d3['y'] * 1e3:.2f}", f"{d3['r'] * 1e3:.2f}", f"{d3['theta_deg']:.2f}"]
+    assert table.notes == ("O at the origin, the follower along +y at δ = 0; θ from +x counter-clockwise",)
     plain, _ = _sheet(load_scene(SCENES / "cam.offset_roller_translating-pos.toml"), ())
     assert [p.name for p in plain.panels] == ["profile", "displacement"]
+
+
+def test_a_rockers_table_lists_psi_in_degrees_every_kth_division_when_fine(tmp_path):
+    from graphmech.problems.cam import _sheet
+    from graphmech.problems.cam.coordinates import MAX_ROWS
+    from graphmech.scene import load_scene
+
+    p = tmp_path / "r.toml"
+    p.write_text(ROCKER.read_text(encoding="utf-8").replace("step = 15", "step = 5\ncoordinates = true"), encoding="utf-8")
+    table = _sheet(load_scene(p), ())[0].panels[-1]
+    texts = [i.text for i in table.items if hasattr(i, "text")]
+    assert texts.count("ψ/°") == 3 and "s/mm" not in texts  # 72 divisions: every 2nd, in three blocks
+    assert table.notes == ("O at the origin, the rocker's pivot A on +x; θ from +x counter-clockwise",
+                           "one division in 2 listed")
+    assert sum(t.isdigit() for t in texts) == 36 <= MAX_ROWS
+    doc = check_json(p)
+    assert len(doc["divisions"]) == 72 and all(d["x"] is not None for d in doc["divisions"])
 
 
 def test_a_flat_face_contact_is_read_at_the_middle_of_its_stretch(tmp_path):
