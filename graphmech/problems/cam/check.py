@@ -26,6 +26,7 @@ from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profil
 from graphmech.scales import drawn_size_problem, round_scale
 
 if TYPE_CHECKING:
+    from graphmech.exact.cam_forces import CamFriction
     from graphmech.problems.cam.scene import CamScene
     from graphmech.problems.reader import Scene
 
@@ -119,6 +120,10 @@ def choose_cam_scales(scene: Scene[CamScene], cam: DiscCam, drawn: DrawnProfile 
     if _angular(cam):
         reach = max(reach, cast("OscillatingFollower", f).pivot_distance + getattr(f, "roller_radius", 0.0))
     _legible(scene, cam, scales, 2.0 * reach)
+    if scene.problem.forces is not None:  # the force polygon's μF: the load about 60 mm long
+        from graphmech.problems.cam.forces import choose_force_scale
+
+        scales["F"] = choose_force_scale(scene.problem.forces)
     if "l" not in scales:
         scales["l"] = round_scale(2.0 * reach / min(room_profile, room_h))
     if "phi" not in scales:  # books choose degrees per mm
@@ -244,6 +249,12 @@ def _requested(scene: Scene[CamScene]) -> list[str]:
         if name.startswith(AT_DIVISION):
             names.append(name)
             continue
+        if name in _force_names():  # the follower's forces with friction (problems.cam.forces)
+            if scene.problem.forces is None:
+                problems.append((f"find[{k}]", f"{name} needs [cam.forces]: the position, the load and the friction"))
+            else:
+                names.append(name)
+            continue
         if name not in CAM_QUANTITIES:
             problems.append((f"find[{k}]", f"unknown cam quantity {name!r}{close_names(name, CAM_QUANTITIES)}"))
         elif scene.problem.cam.follower.contact == "flat" and name in ("r0_min", "rho_min_pitch", "rho_min_pitch_at"):
@@ -256,6 +267,12 @@ def _requested(scene: Scene[CamScene]) -> list[str]:
     if problems:
         raise SceneError(problems, scene.source)
     return names
+
+
+def _force_names() -> dict[str, str]:
+    from graphmech.problems.cam.forces import CAM_FORCE_QUANTITIES
+
+    return CAM_FORCE_QUANTITIES
 
 
 def reading_problem(cam: DiscCam, name: str) -> str | None:
@@ -322,6 +339,10 @@ def _row(an: CamAnalysis, name: str) -> Row:
             return Row(name, "deg", an.s[k] / an.scales["s"], deg(an.scales["s"]), deg(an.s[k]), deg(e),
                        abs(an.s[k] - e) / cam.program.stroke)
         return _plain(name, "m", an.s[k] / an.scales["s"], an.scales["s"], e, cam.program.stroke)
+    if name in _force_names():  # off the follower's force polygon (problems.cam.forces)
+        from graphmech.problems.cam.forces import force_rows
+
+        return force_rows(cam, cast("CamFriction", an.scene.problem.forces), an.scales["F"], [name])[name]
     unit = CAM_QUANTITIES[name]
     size = float(np.max(np.hypot(*drawn.pitch.T))) if drawn is not None else cam.base_radius
     rd = an.reading
@@ -490,7 +511,9 @@ def judge_cam(an: CamAnalysis, precision_mm: float | None = None) -> list[Verdic
     out, problems = [], []
     for key, name, value in measured_entries(an.scene, an.extra_measured):
         why = reading_problem(an.cam, name)  # s@45, psi@45, alpha@45 as find takes them
-        if why is None and name not in CAM_QUANTITIES and not name.startswith(AT_DIVISION):
+        if name in _force_names() and an.scene.problem.forces is None:
+            why = f"{name} needs [cam.forces]: the position, the load and the friction"
+        if why is None and name not in CAM_QUANTITIES and name not in _force_names() and not name.startswith(AT_DIVISION):
             why = f"unknown cam quantity {name!r}"
         if why is not None:
             problems.append((key, why))
@@ -500,7 +523,12 @@ def judge_cam(an: CamAnalysis, precision_mm: float | None = None) -> list[Verdic
         except SceneError as e:  # not a division of this drawing: said under the measured key
             problems += [(key, reason) for _, reason in e.problems]
             continue
-        if row.unit == "deg" and row.drawn_mm is None:  # an angle on the profile; a diagram's ψ is read at μψ
+        if row.unit == "N·m":  # the cam's moment: R12 read at μF times its lever about O
+            from graphmech.exact.cam_forces import position
+
+            lever = float(np.hypot(*position(an.cam, cast("CamFriction", an.scene.problem.forces)).K))
+            tol = prec * an.scales["F"] * lever
+        elif row.unit == "deg" and row.drawn_mm is None:  # an angle on the profile; a diagram's ψ is read at μψ
             tol = math.degrees(prec / max(an.cam.base_radius / an.scales["l"], prec))
         else:
             tol = prec * row.scale
