@@ -58,7 +58,7 @@ def test_with_the_guide_reactions_parallel_the_lever_rule_splits_them():
     d = CamFriction(math.radians(60), 100.0, math.radians(5), 0.1, 0.040, 0.020)
     ex = solve(c, d)
     assert ex.N1 < 0.0 and ex.N2 < 0.0
-    a0, a1, a2, a3 = force_polygon(c, d, 2.0)["a"]
+    a0, _, a2, a3 = force_polygon(c, d, 2.0)["a"]
     assert (a3 - a2) * 2.0 == pytest.approx(ex.R_B1, abs=1e-8)
     assert (a0 - a3) * 2.0 == pytest.approx(ex.R_B2, abs=1e-8)
 
