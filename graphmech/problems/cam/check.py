@@ -104,8 +104,8 @@ def choose_cam_scales(scene: Scene[CamScene], cam: DiscCam, drawn: DrawnProfile 
     w, h = page_size(scene)
     rows = panel_rows(scene.show)
     n_rows = max(rows.values(), default=0) + 1
-    if scene.problem.coordinates:  # the coordinates table stands in a row of its own under the drawing
-        n_rows += 1
+    if scene.problem.coordinates or (scene.problem.forces is not None and len(rows) > 1):
+        n_rows += 1  # the coordinates table or the force polygon in a row of its own under the drawing
     n = max([list(rows.values()).count(r) for r in range(n_rows)] + [1])  # panels in the fullest row
     # In a row the profile gets twice a diagram's width.
     weights = [2.0 if p == "profile" else 1.0 for p, r in rows.items() if r == 0] or [1.0]

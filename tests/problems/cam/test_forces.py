@@ -63,13 +63,13 @@ def test_with_the_guide_reactions_parallel_the_lever_rule_splits_them():
     assert (a0 - a3) * 2.0 == pytest.approx(ex.R_B2, abs=1e-8)
 
 
-def test_the_sheet_draws_the_force_polygon_beside_the_profile():
+def test_the_sheet_draws_the_force_polygon_under_the_profile_and_its_diagram():
     from graphmech.problems.cam import _sheet
     from graphmech.scene import load_scene
 
     sheet, _ = _sheet(load_scene(SCENE), ())
-    assert [(p.name, p.row) for p in sheet.panels] == [("profile", 0), ("forces", 0)]
-    forces = sheet.panels[1]
+    assert [(p.name, p.row) for p in sheet.panels] == [("profile", 0), ("displacement", 0), ("forces", 1)]
+    forces = sheet.panels[2]
     assert forces.notes[0] == "μ_{F} = 10 N/mm" and forces.scales == (("F", 10.0),)
     assert sorted(i.text for i in forces.items if hasattr(i, "text")) == ["Q", "R_{12}", "R′_{32}", "R″_{32}"]
 
