@@ -900,7 +900,8 @@ def read_measured(
     """[measured]: quantity values (SI) or drawn segments (mm), kept raw and in order; a string
     is a value as written (:class:`Written`, judged by its digits and sign).
 
-    A cam scene has no driver positions, so its names take no ``@label``.
+    A cam scene has no driver positions, so its names take no ``@label``, only a reading's cam
+    angle in degrees (``s@45``).
     """
     r = top.table_at("measured")
     if r is None:
@@ -926,7 +927,7 @@ def read_measured(
             x = r.number(value, path)
         if x is None:
             continue
-        if "@" in key and cam:
+        if "@" in key and cam and not _cam_reading(key):  # s@45: a reading at a cam angle, in degrees
             r.problem(
                 path,
                 "a cam scene has no driver positions: write the name without "
@@ -940,6 +941,19 @@ def read_measured(
                 continue
         out.append((key, x))
     return tuple(out)
+
+
+#: A cam scene's readings at a division (graphmech.problems.cam.check.AT_DIVISION): s@45, psi@45, alpha@45.
+CAM_READINGS = ("s", "psi", "alpha")
+
+
+def _cam_reading(key: str) -> bool:
+    """A cam scene's reading at a division names its cam angle in degrees (s@45, psi@7.5)."""
+    base, _, label = key.partition("@")
+    try:
+        return base in CAM_READINGS and math.isfinite(float(label))
+    except ValueError:
+        return False
 
 
 def read_check(top: Reader) -> float:

@@ -45,6 +45,22 @@ def _sheet(scene: Scene[CamScene], footer: Footer) -> tuple[Sheet, list[str]]:
     sheet = cam_sheet(scene.title, an.cam, an.drawn, an.scales, list(scene.show), page_size(scene),
                       roller_circles=scene.problem.roller_circles, marks=an.marks, footer=footer,
                       notation=scene.page.notation)
+    if scene.problem.coordinates:  # the working profile's table as handed in, beside the drawing
+        from dataclasses import replace
+
+        from graphmech.problems.cam.coordinates import coordinates_panel
+
+        row = max((p.row or 0 for p in sheet.panels), default=-1) + 1  # a row of its own, under the drawing
+        sheet = replace(sheet, panels=sheet.panels + (coordinates_panel(an.cam, an.divisions, scene.page.notation, row),))
+    if scene.problem.forces is not None:  # the follower's force polygon with friction: beside a lone panel, else below
+        from dataclasses import replace as _replace
+
+        from graphmech.problems.cam.forces import forces_panel
+
+        last = max((p.row or 0 for p in sheet.panels), default=-1)
+        row = last if sum((p.row or 0) == last for p in sheet.panels) == 1 else last + 1
+        panel = forces_panel(an.cam, scene.problem.forces, an.scales["F"], scene.page.notation)
+        sheet = _replace(sheet, panels=sheet.panels + (_replace(panel, row=row),))
     return sheet, list(an.warnings)
 
 

@@ -19,13 +19,14 @@ from graphmech.problems.judging import Row, Verdict, close_names, in_double_prec
 from graphmech.problems.reader import page_size
 from graphmech.errors import NoSolution, SceneError
 from graphmech.exact import cam as exact_cam
-from graphmech.mechanisms.cam import DiscCam, OscillatingFollower
+from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts, maxima
 from graphmech.problems.cam.figures import panel_rows, scale_note
 from graphmech.methods.cam_inversion import DrawnProfile, divisions, draw_profile, read_drawing, whole_turn_step
 from graphmech.scales import drawn_size_problem, round_scale
 
 if TYPE_CHECKING:
+    from graphmech.exact.cam_forces import CamFriction
     from graphmech.problems.cam.scene import CamScene
     from graphmech.problems.reader import Scene
 
@@ -34,14 +35,18 @@ CAM_QUANTITIES = {
     "alpha_max": "deg", "alpha_max_at": "deg", "rho_min_pitch": "m", "rho_min_pitch_at": "deg",
     "profile_deviation": "m", "v_max": "m/s", "v_max_at": "deg", "a_max": "m/s²", "a_max_at": "deg",
     "j_max": "m/s³", "j_max_at": "deg", "r0_min": "m", "h": "m", "rho_min_actual": "m",
+    "s0": "m", "psi0": "deg",
 }
+#: The readings at one division, ``s@45``: the diagram's ordinate (a rocker's ψ, also ``psi@45``) and
+#: the pressure angle.
+AT_DIVISION = ("s@", "psi@", "alpha@")
 #: Dense exact points used to measure how far the drawn profile is from the exact one.
 EXACT_SAMPLES = 8192
 
 
 #: Quantities read off the profile (the others come from the motion diagrams alone).
 PROFILE_QUANTITIES = {"alpha_max", "alpha_max_at", "rho_min_pitch", "rho_min_pitch_at", "profile_deviation", "r0_min",
-                      "rho_min_actual"}
+                      "rho_min_actual", "s0", "psi0"}
 
 
 @dataclass
@@ -99,6 +104,8 @@ def choose_cam_scales(scene: Scene[CamScene], cam: DiscCam, drawn: DrawnProfile 
     w, h = page_size(scene)
     rows = panel_rows(scene.show)
     n_rows = max(rows.values(), default=0) + 1
+    if scene.problem.coordinates or (scene.problem.forces is not None and len(rows) > 1):
+        n_rows += 1  # the coordinates table or the force polygon in a row of its own under the drawing
     n = max([list(rows.values()).count(r) for r in range(n_rows)] + [1])  # panels in the fullest row
     # In a row the profile gets twice a diagram's width.
     weights = [2.0 if p == "profile" else 1.0 for p, r in rows.items() if r == 0] or [1.0]
@@ -113,6 +120,10 @@ def choose_cam_scales(scene: Scene[CamScene], cam: DiscCam, drawn: DrawnProfile 
     if _angular(cam):
         reach = max(reach, cast("OscillatingFollower", f).pivot_distance + getattr(f, "roller_radius", 0.0))
     _legible(scene, cam, scales, 2.0 * reach)
+    if scene.problem.forces is not None:  # the force polygon's μF: the load about 60 mm long
+        from graphmech.problems.cam.forces import choose_force_scale
+
+        scales["F"] = choose_force_scale(scene.problem.forces)
     if "l" not in scales:
         scales["l"] = round_scale(2.0 * reach / min(room_profile, room_h))
     if "phi" not in scales:  # books choose degrees per mm
@@ -159,7 +170,8 @@ def _analyse_cam(scene: Scene[CamScene], extra_measured: tuple[tuple[str, float]
     delta = divisions(cam, step, breakpoints(cam.program))
     s = displacement(cam.program, delta)
     # Only what the scene asks for: no profile for a scene that wants the diagrams alone.
-    wants_profile = "profile" in scene.show or any(n in PROFILE_QUANTITIES or n.startswith("alpha@") for n in asked)
+    wants_profile = "profile" in scene.show or cs.coordinates or \
+        any(n in PROFILE_QUANTITIES or n.startswith("alpha@") for n in asked)
     drawn = draw_profile(cam, delta, s) if wants_profile else None
     scales, stated = choose_cam_scales(scene, cam, drawn)
     an = CamAnalysis(scene, cam, delta, s, drawn, scales, stated, extra_measured=tuple(extra_measured), step=step)
@@ -218,6 +230,11 @@ def division_table(an: CamAnalysis) -> list[dict[str, Any]]:
             "rho_pitch": float(drawn.rho_pitch[k]) if abs(drawn.rho_pitch[k]) < 1e299 else None,
             "rho_pitch_exact": float(ex.rho_pitch[k]) if np.isfinite(ex.rho_pitch[k]) and abs(ex.rho_pitch[k]) < 1e299 else None,
         })
+    if an.scene.problem.coordinates:  # the profile's coordinates as handed in: asked for, else the table as it was
+        from graphmech.problems.cam.coordinates import coordinate_columns
+
+        for row, xy in zip(out, coordinate_columns(cam, drawn)):
+            row.update(xy)
     return out
 
 
@@ -225,13 +242,18 @@ def _requested(scene: Scene[CamScene]) -> list[str]:
     problems: list[tuple[str, str]] = []
     names: list[str] = []
     for k, name in enumerate(scene.find):
-        if name.startswith(("s@", "alpha@")):
-            try:
-                if not math.isfinite(float(name.split("@")[1])):
-                    raise ValueError
+        why = reading_problem(scene.problem.cam, name)
+        if why is not None:
+            problems.append((f"find[{k}]", why))
+            continue
+        if name.startswith(AT_DIVISION):
+            names.append(name)
+            continue
+        if name in _force_names():  # the follower's forces with friction (problems.cam.forces)
+            if scene.problem.forces is None:
+                problems.append((f"find[{k}]", f"{name} needs [cam.forces]: the position, the load and the friction"))
+            else:
                 names.append(name)
-            except ValueError:
-                problems.append((f"find[{k}]", f"{name!r}: write s@<cam angle in degrees>, e.g. s@45 (or alpha@45)"))
             continue
         if name not in CAM_QUANTITIES:
             problems.append((f"find[{k}]", f"unknown cam quantity {name!r}{close_names(name, CAM_QUANTITIES)}"))
@@ -245,6 +267,27 @@ def _requested(scene: Scene[CamScene]) -> list[str]:
     if problems:
         raise SceneError(problems, scene.source)
     return names
+
+
+def _force_names() -> dict[str, str]:
+    from graphmech.problems.cam.forces import CAM_FORCE_QUANTITIES
+
+    return CAM_FORCE_QUANTITIES
+
+
+def reading_problem(cam: DiscCam, name: str) -> str | None:
+    """Why ``name`` cannot be read off this cam (None: it can, or it is no reading at a division
+    and no rocker's name): a cam angle that is no number, a rocker's ψ asked of a translating follower."""
+    if name.startswith(AT_DIVISION):
+        try:
+            if not math.isfinite(float(name.split("@")[1])):
+                raise ValueError
+        except ValueError:
+            return f"{name!r}: write s@<cam angle in degrees>, e.g. s@45 (or alpha@45)"
+    if (name.startswith("psi@") or name == "psi0") and not _angular(cam):
+        other = "s0" if name == "psi0" else "s@" + name.split("@")[1]
+        return f"{name} is a rocker's angle; this follower translates: ask for {other}"
+    return None
 
 
 def _graphical_r0_min(cam: DiscCam, alpha: float, step: float) -> float:
@@ -292,10 +335,14 @@ def _row(an: CamAnalysis, name: str) -> Row:
             g = 0.0 if cam.follower.contact == "flat" else deg(an.profile.pressure_angle[k])  # the face's normal is the axis
             return _angle_row(name, g, deg(e), 90.0)
         e = float(displacement(cam.program, delta[k]))
-        if ang:  # an angular displacement is reported in degrees
+        if ang:  # an angular displacement ψ (psi@45, or s@45) is reported in degrees
             return Row(name, "deg", an.s[k] / an.scales["s"], deg(an.scales["s"]), deg(an.s[k]), deg(e),
                        abs(an.s[k] - e) / cam.program.stroke)
         return _plain(name, "m", an.s[k] / an.scales["s"], an.scales["s"], e, cam.program.stroke)
+    if name in _force_names():  # off the follower's force polygon (problems.cam.forces)
+        from graphmech.problems.cam.forces import force_rows
+
+        return force_rows(cam, cast("CamFriction", an.scene.problem.forces), an.scales["F"], [name])[name]
     unit = CAM_QUANTITIES[name]
     size = float(np.max(np.hypot(*drawn.pitch.T))) if drawn is not None else cam.base_radius
     rd = an.reading
@@ -323,8 +370,14 @@ def _row(an: CamAnalysis, name: str) -> Row:
         dev = profile_deviation(cam, an.profile.actual)
         return Row(name, unit, dev / an.scales["l"], an.scales["l"], dev, 0.0, dev / size)
     if name == "h":
-        return _plain(name, "rad" if ang else "m", float(np.max(an.s)) / an.scales["s"], an.scales["s"],
+        if ang:  # a rocker's swing ψ_max, in degrees as the check reports every angle
+            drawn_mm = float(np.max(an.s)) / an.scales["s"]
+            return Row(name, "deg", drawn_mm, deg(an.scales["s"]), drawn_mm * deg(an.scales["s"]),
+                       deg(cam.program.stroke), abs(float(np.max(an.s)) - cam.program.stroke) / cam.program.stroke)
+        return _plain(name, "m", float(np.max(an.s)) / an.scales["s"], an.scales["s"],
                       cam.program.stroke, cam.program.stroke)
+    if name in ("s0", "psi0"):
+        return _start(an, name)
     if name == "r0_min":
         e = exact_cam.min_base_radius(cam, cast(float, cam.alpha_permissible))  # asked for only with it (scene)
         g = _graphical_r0_min(cam, cast(float, cam.alpha_permissible), an.step)
@@ -425,6 +478,22 @@ def _tied(drawn_at: float, exact_at: float, exact_there: float, extreme: float) 
     return drawn_at if abs(exact_there - extreme) <= 1e-9 * abs(extreme) else exact_at
 
 
+def _start(an: CamAnalysis, name: str) -> Row:
+    """s₀ off the drawing — B₀'s distance along the axis from the foot of the perpendicular from O
+    (the axis is +y at δ = 0, its foot (e, 0)) — or a rocker's ψ₀ = ∠OA₀B₀ with A₀ at (a, 0); s0
+    is a rocker's ψ₀ too, as s@45 is its ψ."""
+    cam, b0 = an.cam, an.profile.pitch[0]
+    if _angular(cam):
+        a = cast("OscillatingFollower", cam.follower).pivot_distance
+        psi = math.atan2(abs(b0[1]), a - b0[0]) - float(an.s[0])  # ∠ between A→O (−x) and A→B₀
+        return _angle_row(name, math.degrees(psi), math.degrees(exact_cam.initial_rocker_angle(cam)), 90.0)
+    f = cast("TranslatingFollower", cam.follower)
+    r0 = cam.base_radius
+    exact = r0 if f.contact == "flat" else math.sqrt(r0 * r0 - f.offset * f.offset)
+    s0 = float(b0[1]) - float(an.s[0])
+    return _plain(name, "m", s0 / an.scales["l"], an.scales["l"], exact, r0)
+
+
 def _plain(name: str, unit: str, drawn_mm: float, scale: float, exact: float, size: float) -> Row:
     g = drawn_mm * scale
     return Row(name, unit, float(drawn_mm), float(scale), float(g), float(exact),
@@ -441,11 +510,25 @@ def judge_cam(an: CamAnalysis, precision_mm: float | None = None) -> list[Verdic
     prec = precision_mm if precision_mm is not None else an.scene.precision_mm
     out, problems = [], []
     for key, name, value in measured_entries(an.scene, an.extra_measured):
-        if name not in CAM_QUANTITIES:
-            problems.append((key, f"unknown cam quantity {name!r}"))
+        why = reading_problem(an.cam, name)  # s@45, psi@45, alpha@45 as find takes them
+        if name in _force_names() and an.scene.problem.forces is None:
+            why = f"{name} needs [cam.forces]: the position, the load and the friction"
+        if why is None and name not in CAM_QUANTITIES and name not in _force_names() and not name.startswith(AT_DIVISION):
+            why = f"unknown cam quantity {name!r}"
+        if why is not None:
+            problems.append((key, why))
             continue
-        row = _row(an, name)
-        if row.unit == "deg":
+        try:
+            row = _row(an, name)
+        except SceneError as e:  # not a division of this drawing: said under the measured key
+            problems += [(key, reason) for _, reason in e.problems]
+            continue
+        if row.unit == "N·m":  # the cam's moment: R12 read at μF times its lever about O
+            from graphmech.exact.cam_forces import position
+
+            lever = float(np.hypot(*position(an.cam, cast("CamFriction", an.scene.problem.forces)).K))
+            tol = prec * an.scales["F"] * lever
+        elif row.unit == "deg" and row.drawn_mm is None:  # an angle on the profile; a diagram's ψ is read at μψ
             tol = math.degrees(prec / max(an.cam.base_radius / an.scales["l"], prec))
         else:
             tol = prec * row.scale

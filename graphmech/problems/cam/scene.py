@@ -20,6 +20,7 @@ from graphmech.mechanisms.cam import (
     TranslatingFollower,
 )
 from graphmech.problems.reader import MAX_TABLE_POINTS
+from graphmech.exact.cam_forces import CamFriction
 from graphmech.problems.reader import (
     LINKAGE_KEYS,
     MISSING,
@@ -69,6 +70,11 @@ class CamScene:
     cam: DiscCam
     step: float
     roller_circles: bool = True
+    #: The working profile's coordinates at every division, as handed in (``[cam] coordinates``):
+    #: in ``check --json`` and as a table on the sheet.
+    coordinates: bool = False
+    #: The forces on the follower with friction at one position (``[cam.forces]``, problems.cam.forces).
+    forces: CamFriction | None = None
 
 
 _FOLLOWER_TYPES = ("translating", "oscillating")
@@ -375,6 +381,7 @@ def _read_cam(top: Reader) -> CamScene | None:
     if alpha is not None and not alpha.si < math.pi / 2:
         r.problem(alpha.path, f"must be below 90°, not {alpha.text()}")
     circles = r.flag("roller_circles")
+    coordinates = r.flag("coordinates")  # the profile's table as handed in (problems.cam.coordinates)
     if "direction" in r.table and "direction" not in r.used:  # the crank's word for it
         r.used.add("direction")
         r.problem(r.at("direction"), 'a cam\'s sense is written rotation = "ccw" or "cw"')
@@ -382,6 +389,14 @@ def _read_cam(top: Reader) -> CamScene | None:
     if circles is not None and contact is not None and contact != "roller":
         r.problem(r.at("roller_circles"), f'only for contact = "roller" (this follower is {contact})')
     program, program_bad = _read_program(r, kind)
+    forces = None
+    if "forces" in r.table:  # the follower's forces with friction (problems.cam.forces)
+        from graphmech.problems.cam.forces import read_forces
+
+        forces = read_forces(r)
+        if forces is not None and (kind != "translating" or contact != "roller"):
+            r.problem(r.at("forces"), "the forces with friction are found for a translating roller follower")
+            forces = None
     if r0 is not None and follower is not None and program is not None:
         for path, why in _lost_in_round_off(r0, follower, program.stroke):
             r.problem(path, why)
@@ -398,10 +413,19 @@ def _read_cam(top: Reader) -> CamScene | None:
         omega=omega.si,
         alpha_permissible=None if alpha is None else alpha.si,
     )
+    if forces is not None:  # a position where the cam drives and the follower does not jam
+        from graphmech.problems.cam.forces import refuse
+
+        jam = refuse(disc, forces)
+        if jam is not None:
+            r.problem(r.at("forces") + ".at", jam)
+            return None
     return CamScene(
         cam=disc,
         step=CAM_STEP_DEFAULT if step is None else step.si,
         roller_circles=contact == "roller" and circles is not False,
+        coordinates=coordinates is True,
+        forces=forces,
     )
 
 

@@ -328,9 +328,9 @@ class _Words:
             out.append(self.say(f"impact {i['kind']}", d=self.d, deg=num(i["angle_deg"])))
         if "h" in self.rows:
             r = self.rows["h"]
-            if self.angular:  # drawn at μψ in degrees per mm; the check's value is in rad
-                out.append(self.say("stroke", mm=num(r.drawn_mm or 0.0), sym="ψ_max", scale=num(math.degrees(r.scale)),
-                                    value=f"{num(math.degrees(r.graphical))}° = {num(r.graphical)}", unit=r.unit))
+            if self.angular:  # drawn at μψ in degrees per mm, the check's value in degrees: said in rad too
+                out.append(self.say("stroke", mm=num(r.drawn_mm or 0.0), sym="ψ_max", scale=num(r.scale),
+                                    value=f"{num(r.graphical)}° = {num(math.radians(r.graphical))}", unit="rad"))
             else:
                 out.append(self.say("stroke", mm=num(r.drawn_mm or 0.0), sym="h", scale=num(r.scale),
                                     value=num(r.graphical), unit=r.unit))
