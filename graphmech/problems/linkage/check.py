@@ -21,6 +21,7 @@ from graphmech.geometry.primitives import degrees_0_360
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
 from graphmech.scales import drawn_size_problem, format_scale, round_scale
 from graphmech.problems.instant_centres import check as ic_check
+from graphmech.problems.linkage.higher_pair import add_rows as hp_rows, claims as hp_claims, pairs_of
 from graphmech.problems.judging import (
     OUT_OF_RANGE,
     Row,
@@ -108,6 +109,8 @@ def _requested(scene: Scene[object], build: LinkageConstruction, labels: tuple[s
     for k, raw in enumerate(scene.find):
         base, at = split_name(raw)
         if ic_check.claims(raw):  # the instant-centre method's names (graphmech.problems.instant_centres.check)
+            continue
+        if hp_claims(raw):  # a higher pair's names (graphmech.problems.linkage.higher_pair)
             continue
         if base not in build.quantities:
             close = close_names(base, build.quantities)
@@ -234,6 +237,8 @@ def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]
     ic = ic_check.asked(scene, extra_measured)
     if ic:  # the instant centres are found on the kinematic diagram: every point of it
         targets += list(build.mech.values())
+    if pairs_of(scene):  # a higher pair's contact and normal are found on the kinematic diagram too
+        targets += list(build.mech.values())
     plan = build.g.prune(targets)
 
     solutions: list[Any] = []
@@ -291,6 +296,8 @@ def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]
     an.warnings.extend(short_vector_warnings(an))
     if ic:
         an.instant_centres = ic_check.add_rows(an)
+    if pairs_of(scene):  # the higher pairs' rows (issue 22 item 4)
+        hp_rows(an)
     return an
 
 
