@@ -324,11 +324,14 @@ def decorate(sheet: Sheet, an: Any) -> Sheet:
     panels = []
     for panel in sheet.panels:
         kind, _, label = panel.name.partition("-")
-        if kind != "mechanism" or label not in an.labels or an.solutions[an.labels.index(label)] is None:
+        if kind not in ("mechanism", "ic") or label not in an.labels or an.solutions[an.labels.index(label)] is None:
             panels.append(panel)
             continue
         at = positions_mm(an.build, an.solutions[an.labels.index(label)])
         items = list(panel.items)
+        if kind == "ic":  # the instant centres' diagram, at its own μl: only the substitute is restyled
+            k = an.scales["l"] / dict(panel.scales)["l"]
+            at = {n: (x * k, y * k) for n, (x, y) in at.items()}
         for p in pairs:
             a = at[p.centres[0]]
             if p.substitute is not None:  # the substitute link: drawn thin and dashed, not as a member
@@ -336,6 +339,8 @@ def decorate(sheet: Sheet, an: Any) -> Sheet:
                 items = [dataclasses.replace(s, role="construction", dashed=True)
                          if isinstance(s, Segment) and s.role == "given" and {s.p0, s.p1} == {a, b} else s
                          for s in items]
+            if kind == "ic":
+                continue
             k = _contact(p, at)
             mu = an.scales["l"]
             for n, c in enumerate(p.centres):
