@@ -356,7 +356,9 @@ def decorate(sheet: Sheet, an: Any) -> Sheet:
                                  "construction", dashdot=True))
             if p.contact is not None:  # the fixed straight profile, tangent at K
                 half = 1.2 * p.radii[0] / mu
-                items.append(Segment((k[0] - half * uy, k[1] + half * ux), (k[0] + half * uy, k[1] - half * ux), "given"))
+                ends = ((k[0] - half * uy, k[1] + half * ux), (k[0] + half * uy, k[1] - half * ux))
+                items.append(Segment(*ends, "given"))
+                items += [Label("M", e, ((uy, -ux), (-uy, ux)), LETTER) for e in ends]  # the book's MM
             else:
                 items.append(Label("K", k, ((ux, uy), (-ux, -uy)), LETTER))
             items.append(Label("n", (far[0] + over * ux, far[1] + over * uy), ((ux, uy), (-ux, -uy)), LETTER))
