@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any, Literal
 import numpy as np
 
 from graphmech.errors import SceneError
-from graphmech.mechanisms.linkage import RRP, RRR, Linkage, Positions
+from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage, Positions
 from graphmech.problems.reader import MISSING
 
 if TYPE_CHECKING:
@@ -80,8 +80,8 @@ def _bar(linkage: Linkage, link: str, a: str, b: str) -> float | None:
     """The length of ``link`` between its revolutes a and b where a dyad (RRR, or an RRP's
     coupler) or the crank fixes it; None where the link is not such a binary bar a–b."""
     d = linkage.driver
-    if getattr(d, "link", None) == link and {getattr(d, "pivot", None), getattr(d, "tip", None)} == {a, b}:
-        return float(getattr(d, "length"))
+    if isinstance(d, Crank) and d.link == link and {d.pivot, d.tip} == {a, b}:
+        return float(d.length)
     for y in linkage.dyads:
         if isinstance(y, RRR):
             for k, (p, length) in enumerate(((y.p, y.lengths[0]), (y.q, y.lengths[1]))):
@@ -126,7 +126,7 @@ def _read_one(r: Reader, k: int, linkage: Linkage | None) -> HigherPair | None:
     c_path = r.at("centres_of_curvature")
     if value is not MISSING:
         if not isinstance(value, list) or len(value) != count:
-            r.problem(c_path, f"must be a list of {count} point names"
+            r.problem(c_path, ("must be a list of one point name" if count == 1 else "must be a list of 2 point names")
                               + (" (the rolling link's centre; the fixed profile is straight)" if count == 1 else ""))
         else:
             centres = [r.point_name(v, f"{c_path}[{n}]") for n, v in enumerate(value)]
@@ -246,10 +246,10 @@ def _exact_velocity(linkage: Linkage, kin: Any, link: str, x: tuple[float, float
 
 def add_rows(an: Any) -> None:
     """Append the rows ``find`` asks of the higher pairs; bad names → SceneError."""
+    from graphmech.methods.instant_centres import positions_mm
     from graphmech.problems.instant_centres.check import centres_at
     from graphmech.problems.judging import Row, split_name
     from graphmech.problems.linkage.sizes import characteristic
-    from graphmech.methods.instant_centres import positions_mm
 
     scene, linkage = an.scene, an.build.linkage
     pairs = {p.name: p for p in pairs_of(scene)}
@@ -345,8 +345,8 @@ def decorate(sheet: Sheet, an: Any) -> Sheet:
             mu = an.scales["l"]
             for n, c in enumerate(p.centres):
                 r = p.radii[n] / mu
-                items.append(Polyline([(at[c][0] + r * math.cos(t), at[c][1] + r * math.sin(t))
-                                       for t in np.linspace(0.0, 2.0 * math.pi, 97)], "given", closed=True))
+                items.append(Polyline(tuple((at[c][0] + r * math.cos(t), at[c][1] + r * math.sin(t))
+                                            for t in np.linspace(0.0, 2.0 * math.pi, 97)), "given", closed=True))
             nx, ny = _normal(p, at)
             ln = math.hypot(nx, ny) or 1.0
             ux, uy = nx / ln, ny / ln

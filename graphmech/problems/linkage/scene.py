@@ -33,6 +33,7 @@ from graphmech.tolerances import PARALLEL_SIN
 
 if TYPE_CHECKING:
     from graphmech.problems.cycle.scene import CycleScene
+    from graphmech.problems.linkage.higher_pair import HigherPairs
 from graphmech.problems.reader import (
     LINKAGE_KEYS,
     LINK_ID,
@@ -767,7 +768,7 @@ def _triad_refusals(top: Reader, data: Mapping[str, Any]) -> None:
 
 
 def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
-                        ) -> Scene[CycleScene | None]:
+                        ) -> Scene[CycleScene | HigherPairs | None]:
     """The rest of :func:`graphmech.scene.parse_scene` for a linkage scene (with a full cycle or
     the characteristics when it asks for them)."""
     problems = top.problems
