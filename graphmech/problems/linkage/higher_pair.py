@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any, Literal
 import numpy as np
 
 from graphmech.errors import SceneError
-from graphmech.mechanisms.linkage import RRP, RRR, Crank, Linkage, Positions
+from graphmech.mechanisms.linkage import RPP, RPR, RRP, RRR, Crank, Linkage, Positions
 from graphmech.problems.reader import MISSING
 
 if TYPE_CHECKING:
@@ -49,8 +49,14 @@ class HigherPair:
     motion: Motion
     centres: tuple[str, ...]  # sliding: (Ci, Cj); rolling on a fixed straight profile: (Ci,)
     radii: tuple[float, ...]
-    substitute: str | None = None  # sliding: the substitute link Ci–Cj
+    substitute: str | None = None  # sliding: the substitute link Ci–Cj (or the block at Ci on a flat face)
     contact: str | None = None  # rolling: the contact point K, a frame point
+    face_side: Literal["left", "right"] | None = None  # a flat face of link j: to this side of its slot
+
+    @property
+    def flat(self) -> bool:
+        """Link j's profile is straight (a flat face): its centre of curvature is at infinity."""
+        return self.motion == "sliding" and len(self.centres) == 1
 
     @property
     def name(self) -> str:
@@ -120,8 +126,15 @@ def read_higher_pairs(top: Reader, linkage: Linkage | None, positions: Positions
 def _read_one(r: Reader, k: int, linkage: Linkage | None) -> HigherPair | None:
     links = r.name_list("links", 2, r.link_id)
     motion = r.string("relative_motion", choices=MOTIONS, required=True)
-    count = 1 if motion == "rolling" else 2
     value = r.raw("centres_of_curvature", required=True, hint='["C", "B"], one point of each link')
+    side = r.string("face_side", choices=("left", "right"))
+    # a sliding pair with one centre: link j's profile is a flat face (its centre at infinity)
+    count = 1 if motion == "rolling" or (isinstance(value, list) and len(value) == 1 and motion == "sliding") else 2
+    if count == 2 and side is not None:
+        r.problem(r.at("face_side"), "only for a flat face (a sliding pair with one centre of curvature)")
+    elif count == 1 and motion == "sliding" and side is None and r.present("face_side") is None:
+        r.problem(r.at("face_side"), 'missing: the flat face lies to the "left" or "right" of the slot its '
+                                     "block slides in, at ρ from the block's pin")
     centres: list[str | None] = []
     c_path = r.at("centres_of_curvature")
     if value is not MISSING:
@@ -140,7 +153,8 @@ def _read_one(r: Reader, k: int, linkage: Linkage | None) -> HigherPair | None:
     substitute = contact_pt = None
     if motion == "sliding":
         if sub is MISSING:
-            r.problem(r.at("substitute_link"), "missing: the dyad link that joins the two centres of curvature")
+            r.problem(r.at("substitute_link"), "missing: the dyad link that joins the two centres of curvature "
+                                               "(on a flat face: the block pinned at the centre)")
         else:
             substitute = r.link_id(sub, r.at("substitute_link"))
         if contact is not MISSING:
@@ -159,7 +173,7 @@ def _read_one(r: Reader, k: int, linkage: Linkage | None) -> HigherPair | None:
             or (motion == "sliding" and substitute is None) or (motion == "rolling" and contact_pt is None)):
         return None
     pair = HigherPair((str(ids[0]), str(ids[1])), motion, tuple(str(c) for c in centres), tuple(radii),
-                      substitute, contact_pt)
+                      substitute, contact_pt, side if count == 1 and motion == "sliding" else None)
     if linkage is not None:
         _cross_check(r, pair, linkage)
     return pair
@@ -181,7 +195,11 @@ def _cross_check(r: Reader, p: HigherPair, linkage: Linkage) -> None:
         if c not in carried[p.links[n]]:
             r.problem(f"{r.at('centres_of_curvature')}[{n}]", f"{c} is not a point of link {p.links[n]}")
             return
-    if p.motion == "sliding":
+    if p.flat:
+        if _slide(linkage, p) is None:
+            r.problem(r.at("substitute_link"), f"link {p.substitute} is not a block pinned at {p.centres[0]} "
+                                               f"sliding on link {j} (an RPP's block or an RPR's block on the bar {j})")
+    elif p.motion == "sliding":
         assert p.substitute is not None
         ci, cj = p.centres
         length = _bar(linkage, p.substitute, ci, cj) if p.substitute not in p.links else None
@@ -212,21 +230,41 @@ def _cross_check(r: Reader, p: HigherPair, linkage: Linkage) -> None:
 # ---------------------------------------------------------------------------- rows
 
 
-def _contact(p: HigherPair, at: dict[str, Any]) -> tuple[float, float]:
-    """The contact K: on the common normal Ci→Cj at ρi from Ci (or the named contact point)."""
-    if p.contact is not None:
-        return float(at[p.contact][0]), float(at[p.contact][1])
-    (ax, ay), (bx, by) = at[p.centres[0]], at[p.centres[1]]
-    d = math.hypot(bx - ax, by - ay)
-    t = p.radii[0] / (p.radii[0] + p.radii[1])  # at scale: ρi/(ρi + ρj) of |CiCj|
-    return ax + t * (bx - ax) if d else ax, ay + t * (by - ay) if d else ay
+def _slide(linkage: Linkage, p: HigherPair) -> RPP | RPR | None:
+    """The dyad whose block (the substitute) is pinned at Ci and slides on link j: a flat face's."""
+    for y in linkage.dyads:
+        if isinstance(y, RPP) and (y.links[0], y.p, y.links[1]) == (p.substitute, p.centres[0], p.links[1]):
+            return y
+        if isinstance(y, RPR) and (y.block_link, y.block_pivot, y.bar_link) == (p.substitute, p.centres[0], p.links[1]):
+            return y
+    return None
 
 
-def _normal(p: HigherPair, at: dict[str, Any]) -> tuple[float, float]:
-    """The common normal's direction (a vector along it)."""
-    a = at[p.centres[0]]
-    b = at[p.centres[1]] if p.contact is None else at[p.contact]
-    return float(b[0] - a[0]), float(b[1] - a[1])
+def geometry(p: HigherPair, at: dict[str, Any], linkage: Linkage, per_m: float = 1.0
+             ) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The contact K and the unit common normal n̂ (from Ci towards link j's profile), from the
+    points ``at`` (m, or drawing mm with ``per_m`` = 1/μl)."""
+    ax, ay = (float(v) for v in at[p.centres[0]])
+    if p.flat:  # n̂ ⟂ the slot; K at ρi from Ci on the face's side
+        y = _slide(linkage, p)
+        if isinstance(y, RPP):
+            u = (math.cos(y.slot_angle), math.sin(y.slot_angle))
+        else:
+            assert isinstance(y, RPR)
+            ox, oy = (float(v) for v in at[y.bar_pivot])
+            wx, wy, e = ax - ox, ay - oy, y.offset * per_m  # X − O = t·û + e·n̂ (the offset bar)
+            t = math.sqrt(max(wx * wx + wy * wy - e * e, 0.0))
+            w2 = wx * wx + wy * wy or 1.0
+            u = ((t * wx + e * wy) / w2, (t * wy - e * wx) / w2)
+        sign = 1.0 if p.face_side == "left" else -1.0
+        n = (-sign * u[1], sign * u[0])
+        rho = p.radii[0] * per_m
+        return (ax + rho * n[0], ay + rho * n[1]), n
+    far = at[p.centres[1]] if p.contact is None else at[p.contact]
+    dx, dy = float(far[0]) - ax, float(far[1]) - ay
+    d = math.hypot(dx, dy) or 1.0
+    rho = p.radii[0] * per_m
+    return (ax + rho * dx / d, ay + rho * dy / d), (dx / d, dy / d)
 
 
 def _deg(v: tuple[float, float]) -> float:
@@ -277,14 +315,15 @@ def add_rows(an: Any) -> None:
                 continue
             suffix = f"@{an.labels[i]}" if multi else ""
             drawn_at = positions_mm(an.build, sol)
-            exact_at = {n: tuple(float(c) for c in an.exact.point[n][i]) for n in (*p.centres, p.contact) if n}
+            exact_at = {n: (float(xy[i][0]), float(xy[i][1])) for n, xy in an.exact.point.items()}
+            kx, nx = geometry(p, drawn_at, linkage, 1.0 / mu)
+            ke, ne = geometry(p, exact_at, linkage)
             if what == "dir_normal":
-                g, e = _deg(_normal(p, drawn_at)), _deg(_normal(p, exact_at))
+                g, e = _deg(nx), _deg(ne)
                 err = abs((g - e + 90.0) % 180.0 - 90.0) / 180.0
                 an.rows.append(Row(f"dir_normal_{p.name}{suffix}", "deg", None, 1.0, g, e, err))
                 continue
             ic = centres_at(an, sol)
-            kx = _contact(p, drawn_at)
             c = ic.centre(*p.links)
             wi, wj = (ic.motions[lid].omega if lid in ic.motions else 0.0 for lid in p.links)
             if not c.known or not all(lid in ic.motions or lid == linkage.frame_link for lid in p.links):
@@ -299,7 +338,6 @@ def add_rows(an: Any) -> None:
                 vj = ic.motions[p.links[1]].velocity(kx) if p.links[1] in ic.motions else (0.0, 0.0)
                 drawn, scale = math.hypot(vi[0] - vj[0], vi[1] - vj[1]), mu
             g = drawn * scale
-            ke = _contact(p, exact_at)
             e = float(np.hypot(*(_exact_velocity(linkage, an.exact, p.links[0], ke, i)
                                  - _exact_velocity(linkage, an.exact, p.links[1], ke, i))))
             err = abs(g - e) / max(abs(e), characteristic(linkage, "m/s", an.size))
@@ -332,32 +370,30 @@ def decorate(sheet: Sheet, an: Any) -> Sheet:
         if kind == "ic":  # the instant centres' diagram, at its own μl: only the substitute is restyled
             k = an.scales["l"] / dict(panel.scales)["l"]
             at = {n: (x * k, y * k) for n, (x, y) in at.items()}
+        mu = an.scales["l"]
         for p in pairs:
             a = at[p.centres[0]]
-            if p.substitute is not None:  # the substitute link: drawn thin and dashed, not as a member
+            if p.substitute is not None and not p.flat:  # the substitute link: drawn thin and dashed
                 b = at[p.centres[1]]
                 items = [dataclasses.replace(s, role="construction", dashed=True)
                          if isinstance(s, Segment) and s.role == "given" and {s.p0, s.p1} == {a, b} else s
                          for s in items]
             if kind == "ic":
                 continue
-            k = _contact(p, at)
-            mu = an.scales["l"]
+            k, (ux, uy) = geometry(p, at, an.build.linkage, 1.0 / mu)
             for n, c in enumerate(p.centres):
                 r = p.radii[n] / mu
                 items.append(Polyline(tuple((at[c][0] + r * math.cos(t), at[c][1] + r * math.sin(t))
                                             for t in np.linspace(0.0, 2.0 * math.pi, 97)), "given", closed=True))
-            nx, ny = _normal(p, at)
-            ln = math.hypot(nx, ny) or 1.0
-            ux, uy = nx / ln, ny / ln
             over = 0.5 * max(p.radii) / mu
-            far = (at[p.centres[1]] if p.contact is None else k)
+            far = at[p.centres[1]] if p.contact is None and not p.flat else k
             items.append(Segment((a[0] - over * ux, a[1] - over * uy), (far[0] + over * ux, far[1] + over * uy),
                                  "construction", dashdot=True))
-            if p.contact is not None:  # the fixed straight profile, tangent at K
+            if p.contact is not None or p.flat:  # the straight profile (a fixed rack, a flat face), tangent at K
                 half = 1.2 * p.radii[0] / mu
                 ends = ((k[0] - half * uy, k[1] + half * ux), (k[0] + half * uy, k[1] - half * ux))
                 items.append(Segment(*ends, "given"))
+            if p.contact is not None:
                 items += [Label("M", e, ((uy, -ux), (-uy, ux)), LETTER) for e in ends]  # the book's MM
             else:
                 items.append(Label("K", k, ((ux, uy), (-ux, -uy)), LETTER))
