@@ -8,7 +8,7 @@ import math
 import pytest
 
 from graphmech.drawing.primitives import Label, Polyline, Segment
-from graphmech.exact.higher_pair import eccentric_cam_roller, rolling_wheel_omega
+from graphmech.exact.higher_pair import eccentric_cam_flat, eccentric_cam_roller, rolling_wheel_omega
 from graphmech.problems.linkage.higher_pair import HigherPairs, claims, decorate
 from graphmech.scene import load_scene
 from tests.conftest import SCENES, assert_refused, check_json, fourbar_scene, run_cli, values
@@ -16,6 +16,7 @@ from tests.conftest import SCENES, assert_refused, check_json, fourbar_scene, ru
 CAM = SCENES / "kin.eccentric_cam_substitute.toml"
 IC = SCENES / "ic.cam_higher_pair.toml"
 RACK = SCENES / "kin.gear_rack_linkage.toml"
+FLAT = SCENES / "kin.eccentric_cam_flat_substitute.toml"
 
 # kin.eccentric_cam_substitute: e, R, r, the guide's offset d, ω2
 E, R, ROLLER, D, W = 0.02, 0.04, 0.015, 0.01, 10.0
@@ -60,6 +61,89 @@ def test_common_normal_and_sliding_speed_of_the_cam(deg):
     assert v[f"dir_normal_23@{deg}"]["graphical"] == pytest.approx(normal, abs=1e-9)
     assert v[f"v_slip_23@{deg}"]["graphical"] == pytest.approx(slip, rel=1e-9)
     assert v[f"v_slip_23@{deg}"]["exact"] == pytest.approx(slip, rel=1e-9)
+
+
+@pytest.mark.parametrize("deg", [45, 210])
+def test_flat_face_substitute_is_the_scotch_yoke(deg):
+    """The block at C in the follower's slot: v, a of the face = e·ω·cosφ, −e·ω²·sinφ; the normal is
+    the vertical through C, the slip at K (R above C) the cam's speed there less the follower's."""
+    phi = math.radians(deg)
+    _, vf, af = eccentric_cam_flat(E, R, phi, W)
+    v = values(check_json(FLAT))
+    assert v[f"v_F@{deg}"]["graphical"] == pytest.approx(vf, rel=1e-9)
+    assert v[f"a_F@{deg}"]["graphical"] == pytest.approx(af, rel=1e-9)
+    assert v[f"dir_normal_23@{deg}"]["graphical"] == pytest.approx(90.0, abs=1e-9)
+    k = (E * math.cos(phi), E * math.sin(phi) + R)
+    slip = math.hypot(-W * k[1] - 0.0, W * k[0] - vf)
+    assert v[f"v_slip_23@{deg}"]["graphical"] == pytest.approx(slip, rel=1e-9)
+    assert v[f"v_slip_23@{deg}"]["exact"] == pytest.approx(slip, rel=1e-9)
+
+
+OSCILLATING_FLAT = """
+title = "oscillating flat-faced follower"
+show = ["mechanism", "velocity"]
+find = ["omega_3", "dir_normal_23", "v_slip_23"]
+[units]
+length = "mm"
+angle = "deg"
+omega = "rad/s"
+[frame]
+link = "1"
+A = [0, 0]
+B = [90, 0]
+[driver]
+type = "crank"
+link = "2"
+pivot = "A"
+tip = "C"
+length = 15
+angle = [0, 60, 180]
+omega = 10
+[[dyad]]
+type = "RPR"
+joints = ["C", "B"]
+links = ["4", "3"]
+bar = "second"
+offset = 20
+[[higher_pair]]
+links = ["2", "3"]
+relative_motion = "sliding"
+centres_of_curvature = ["C"]
+radii_of_curvature = [20]
+substitute_link = "4"
+face_side = "right"
+"""
+
+
+def test_oscillating_flat_face_on_an_offset_guide_bar(tmp_path):
+    """The face through the pivot B, tangent to the disc (R = 20 mm, AC = 15, AB = 90 mm): its angle
+    ψ = ∠(BC) − asin(R/|BC|), ω3 = dψ/dt by central differences; ω3 = −2 and 10/7 rad/s at φ = 0
+    and 180° (ω2·AC/(AB ∓ AC)); K the foot of the perpendicular from C, the slip from both motions."""
+    path = tmp_path / "f.toml"
+    path.write_text(OSCILLATING_FLAT, encoding="utf-8")
+    v = values(check_json(path))
+    a, b = (0.0, 0.0), (0.09, 0.0)
+
+    def psi(phi):
+        c = (0.015 * math.cos(phi), 0.015 * math.sin(phi))
+        return math.atan2(c[1] - b[1], c[0] - b[0]) - math.asin(0.02 / math.dist(c, b))
+
+    for deg in (0, 60, 180):
+        phi, h = math.radians(deg), 1e-6
+        turn = (psi(phi + h) - psi(phi - h) + math.pi) % (2 * math.pi) - math.pi
+        w3 = 10.0 * turn / (2 * h)
+        assert v[f"omega_3@{deg}"]["graphical"] == pytest.approx(w3, rel=1e-6)
+        assert v[f"dir_normal_23@{deg}"]["graphical"] == pytest.approx(math.degrees(psi(phi) + math.pi / 2) % 180, abs=1e-9)
+        c = (0.015 * math.cos(phi), 0.015 * math.sin(phi))
+        u = (math.cos(psi(phi)), math.sin(psi(phi)))
+        t = (c[0] - b[0]) * u[0] + (c[1] - b[1]) * u[1]
+        k = (b[0] + t * u[0], b[1] + t * u[1])
+        assert math.dist(c, k) == pytest.approx(0.02, rel=1e-12)
+        v2 = (-10.0 * (k[1] - a[1]), 10.0 * (k[0] - a[0]))
+        v3 = (-w3 * (k[1] - b[1]), w3 * (k[0] - b[0]))
+        assert v[f"v_slip_23@{deg}"]["graphical"] == pytest.approx(math.dist(v2, v3), rel=1e-6)
+    assert v["omega_3@0"]["graphical"] == pytest.approx(-2.0, rel=1e-12)
+    assert v["omega_3@180"]["graphical"] == pytest.approx(10.0 / 7.0, rel=1e-12)
 
 
 # ---------------------------------------------------------------------------- instant centres
@@ -171,6 +255,9 @@ def test_a_sheet_without_higher_pairs_is_left_alone(tmp_path):
     (CAM, 'relative_motion = "sliding"', 'relative_motion = "slipping"', ("relative_motion", "slipping")),
     (CAM, "radii_of_curvature = [40, 15]", "radii_of_curvature = [40, -15]", ("radii_of_curvature[1]", "> 0")),
     (CAM, 'substitute_link = "4"', 'contact_point = "A"', ("substitute_link", "missing")),
+    (FLAT, 'face_side = "left"', "", ("face_side", "missing")),
+    (CAM, 'substitute_link = "4"', 'substitute_link = "4"\nface_side = "left"', ("face_side", "only for a flat face")),
+    (FLAT, 'substitute_link = "4"', 'substitute_link = "3"', ("substitute_link", "not a block pinned at C")),
     (RACK, "angle = 60", "angle = [60, 70]", ("relative_motion", "one driver position")),
     (RACK, 'show = ["mechanism", "velocity"]', 'show = ["mechanism", "acceleration"]',
      ("relative_motion", "velocities only")),
