@@ -502,6 +502,9 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
     for key, name, value in measured_entries(scene, an.extra_measured):
         if ic_check.claims(name):  # judged by graphmech.problems.instant_centres.check, below
             continue
+        if hp_claims(name):  # a higher pair's values (graphmech.problems.linkage.higher_pair)
+            problems.append((key, f"{split_name(name)[0]} is found (find = [...]), not judged from a measured value yet"))
+            continue
         try:
             qname, i, segment = _resolve(name, an.build, an.labels)
         except ValueError as e:

@@ -279,3 +279,9 @@ def test_a_higher_pair_elsewhere_is_an_unknown_table(tmp_path):
     path = tmp_path / "t.toml"
     path.write_text(text + '\n[[higher_pair]]\nlinks = ["2", "3"]\n', encoding="utf-8")
     assert_refused(run_cli("check", str(path)), "t.toml", "higher_pair")
+
+
+def test_a_measured_higher_pair_value_is_refused_not_misjudged(tmp_path):
+    path = tmp_path / "t.toml"
+    path.write_text(CAM.read_text(encoding="utf-8") + '\n[measured]\n"v_slip_23@45" = 0.54\n', encoding="utf-8")
+    assert_refused(run_cli("check", str(path)), "t.toml", "measured.v_slip_23@45", "not judged")
