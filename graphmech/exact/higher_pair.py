@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import math
 
+from graphmech.errors import OutOfDomain
+
 
 def eccentric_cam_roller(e: float, radius: float, roller: float, offset: float, phi: float,
                          omega: float, epsilon: float = 0.0) -> tuple[float, float, float]:
@@ -28,7 +30,7 @@ def eccentric_cam_roller(e: float, radius: float, roller: float, offset: float, 
     length = radius + roller
     u = offset - e * math.cos(phi)  # the horizontal reach from C to the follower's line
     if abs(u) >= length:
-        raise ValueError(f"the roller cannot reach the guide: |d − e·cosφ| = {abs(u):.6g} m ≥ R + r = {length:.6g} m")
+        raise OutOfDomain(f"the roller cannot reach the guide: |d − e·cosφ| = {abs(u):.6g} m ≥ R + r = {length:.6g} m")
     w = math.sqrt(length * length - u * u)
     s, c = math.sin(phi), math.cos(phi)
     y = e * s + w
