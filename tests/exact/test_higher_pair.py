@@ -7,7 +7,11 @@ import math
 
 import pytest
 
-from graphmech.exact.higher_pair import eccentric_cam_flat, eccentric_cam_roller, rolling_wheel_omega
+from graphmech.exact.higher_pair import (
+    eccentric_cam_flat,
+    eccentric_cam_roller,
+    rolling_wheel_omega,
+)
 
 E, R, ROLLER, D, OMEGA = 0.02, 0.04, 0.015, 0.01, 10.0
 

@@ -33,6 +33,8 @@ if TYPE_CHECKING:
 
 Motion = Literal["sliding", "rolling"]
 MOTIONS: tuple[Motion, ...] = ("sliding", "rolling")
+Side = Literal["left", "right"]
+SIDES: tuple[Side, ...] = ("left", "right")
 
 #: ``dir_normal_23``, ``v_slip_23`` (with or without ``@position``): the higher pair's values.
 _NAME = re.compile(r"(dir_normal|v_slip)_([0-9A-Za-z]+)")
@@ -51,7 +53,7 @@ class HigherPair:
     radii: tuple[float, ...]
     substitute: str | None = None  # sliding: the substitute link Ci–Cj (or the block at Ci on a flat face)
     contact: str | None = None  # rolling: the contact point K, a frame point
-    face_side: Literal["left", "right"] | None = None  # a flat face of link j: to this side of its slot
+    face_side: Side | None = None  # a flat face of link j: to this side of its slot
 
     @property
     def flat(self) -> bool:
@@ -127,7 +129,7 @@ def _read_one(r: Reader, k: int, linkage: Linkage | None) -> HigherPair | None:
     links = r.name_list("links", 2, r.link_id)
     motion = r.string("relative_motion", choices=MOTIONS, required=True)
     value = r.raw("centres_of_curvature", required=True, hint='["C", "B"], one point of each link')
-    side = r.string("face_side", choices=("left", "right"))
+    side = r.string("face_side", choices=SIDES)
     # a sliding pair with one centre: link j's profile is a flat face (its centre at infinity)
     count = 1 if motion == "rolling" or (isinstance(value, list) and len(value) == 1 and motion == "sliding") else 2
     if count == 2 and side is not None:

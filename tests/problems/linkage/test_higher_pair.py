@@ -8,10 +8,21 @@ import math
 import pytest
 
 from graphmech.drawing.primitives import Label, Polyline, Segment
-from graphmech.exact.higher_pair import eccentric_cam_flat, eccentric_cam_roller, rolling_wheel_omega
+from graphmech.exact.higher_pair import (
+    eccentric_cam_flat,
+    eccentric_cam_roller,
+    rolling_wheel_omega,
+)
 from graphmech.problems.linkage.higher_pair import HigherPairs, claims, decorate
 from graphmech.scene import load_scene
-from tests.conftest import SCENES, assert_refused, check_json, fourbar_scene, run_cli, values
+from tests.conftest import (
+    SCENES,
+    assert_refused,
+    check_json,
+    fourbar_scene,
+    run_cli,
+    values,
+)
 
 CAM = SCENES / "kin.eccentric_cam_substitute.toml"
 IC = SCENES / "ic.cam_higher_pair.toml"
