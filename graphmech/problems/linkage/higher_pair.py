@@ -364,8 +364,13 @@ def decorate(sheet: Sheet, an: Any) -> Sheet:
     panels = []
     for panel in sheet.panels:
         kind, _, label = panel.name.partition("-")
-        if kind not in ("mechanism", "ic") or label not in an.labels or an.solutions[an.labels.index(label)] is None:
+        if kind not in ("mechanism", "ic", "velocity") or label not in an.labels or \
+                an.solutions[an.labels.index(label)] is None:
             panels.append(panel)
+            continue
+        if kind == "velocity":
+            panels.append(dataclasses.replace(panel, items=panel.items + tuple(
+                _images(pairs, an, an.solutions[an.labels.index(label)]))))
             continue
         at = positions_mm(an.build, an.solutions[an.labels.index(label)])
         items = list(panel.items)
@@ -402,3 +407,27 @@ def decorate(sheet: Sheet, an: Any) -> Sheet:
             items.append(Label("n", (far[0] + over * ux, far[1] + over * uy), ((ux, uy), (-ux, -uy)), LETTER))
         panels.append(dataclasses.replace(panel, items=tuple(items)))
     return dataclasses.replace(sheet, panels=tuple(panels))
+
+
+def _images(pairs: tuple[HigherPair, ...], an: Any, sol: Any) -> list[Any]:
+    """On the velocity polygon, a rolling wheel's velocity image (速度影像): its pitch circle maps to
+    the circle about its centre's image c through the contact's image (p, for a fixed track), the
+    book's g3."""
+    from graphmech.drawing.lettering import LETTER
+    from graphmech.drawing.primitives import Label, Polyline
+
+    out: list[Any] = []
+    vel = an.build.vel
+    for p in pairs:
+        if p.contact is None or vel.get(p.centres[0]) not in sol.values or vel.get(p.contact) not in sol.values:
+            continue
+        cx, cy = (float(v) for v in sol.values[vel[p.centres[0]]])
+        kx, ky = (float(v) for v in sol.values[vel[p.contact]])
+        r = math.hypot(kx - cx, ky - cy)
+        if r <= 1e-9:
+            continue
+        out.append(Polyline(tuple((cx + r * math.cos(t), cy + r * math.sin(t))
+                                  for t in np.linspace(0.0, 2.0 * math.pi, 97)), "result", closed=True))
+        out.append(Label(f"g{p.links[0]}", (cx + r * math.cos(1.0), cy + r * math.sin(1.0)),
+                         ((math.cos(1.0), math.sin(1.0)),), LETTER))
+    return out

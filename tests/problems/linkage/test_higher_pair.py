@@ -296,3 +296,18 @@ def test_a_measured_higher_pair_value_is_refused_not_misjudged(tmp_path):
     path = tmp_path / "t.toml"
     path.write_text(CAM.read_text(encoding="utf-8") + '\n[measured]\n"v_slip_23@45" = 0.54\n', encoding="utf-8")
     assert_refused(run_cli("check", str(path)), "t.toml", "measured.v_slip_23@45", "not judged")
+
+
+def test_the_rolling_gears_velocity_image_is_the_circle_about_c_through_p():
+    """g3: the gear's pitch circle maps to the circle about c of radius |ω3|·r3/μv = v_C/μv (p is D's image)."""
+    from graphmech.problems.linkage.sheet import scene_sheet
+
+    sheet, _ = scene_sheet(load_scene(RACK), ())
+    (panel,) = [p for p in sheet.panels if p.name.startswith("velocity-")]
+    (circle,) = [i for i in panel.items if isinstance(i, Polyline) and i.closed]
+    pts = circle.points[:-1]
+    centre = (sum(x for x, _ in pts) / len(pts), sum(y for _, y in pts) / len(pts))
+    v_c = values(check_json(RACK))["v_C"]["exact"]
+    assert math.dist(centre, (0.0, 0.0)) == pytest.approx(v_c / 0.004, rel=1e-9)  # c, seen from p
+    assert all(math.dist(q, centre) == pytest.approx(v_c / 0.004, rel=1e-9) for q in pts)
+    assert any(isinstance(i, Label) and i.text == "g3" for i in panel.items)
