@@ -22,6 +22,7 @@ from graphmech.methods.linkage_construction import ACCELERATION_POLE, VELOCITY_P
 from graphmech.methods.polygons import PANELS, LinkageConstruction, build_polygons
 from graphmech.scales import drawn_size_problem, format_scale, round_scale
 from graphmech.problems.instant_centres import check as ic_check
+from graphmech.problems.linkage.higher_pair import add_rows as hp_rows, claims as hp_claims, pairs_of
 from graphmech.problems.judging import (
     OUT_OF_RANGE,
     Row,
@@ -109,6 +110,8 @@ def _requested(scene: Scene[object], build: LinkageConstruction, labels: tuple[s
     for k, raw in enumerate(scene.find):
         base, at = split_name(raw)
         if ic_check.claims(raw):  # the instant-centre method's names (graphmech.problems.instant_centres.check)
+            continue
+        if hp_claims(raw):  # a higher pair's names (graphmech.problems.linkage.higher_pair)
             continue
         if base not in build.quantities:
             close = close_names(base, build.quantities)
@@ -240,6 +243,8 @@ def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]
     ic = ic_check.asked(scene, extra_measured)
     if ic:  # the instant centres are found on the kinematic diagram: every point of it
         targets += list(build.mech.values())
+    if pairs_of(scene):  # a higher pair's contact and normal are found on the kinematic diagram too
+        targets += list(build.mech.values())
     plan = build.g.prune(targets)
 
     solutions: list[Any] = []
@@ -301,6 +306,8 @@ def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]
     an.warnings.extend(short_vector_warnings(an))
     if ic:
         an.instant_centres = ic_check.add_rows(an)
+    if pairs_of(scene):  # the higher pairs' rows (issue 22 item 4)
+        hp_rows(an)
     return an
 
 
@@ -555,6 +562,9 @@ def judge(an: Analysis, precision_mm: float | None = None) -> list[Verdict]:
     out = []
     for key, name, value in measured_entries(scene, an.extra_measured):
         if ic_check.claims(name):  # judged by graphmech.problems.instant_centres.check, below
+            continue
+        if hp_claims(name):  # a higher pair's values (graphmech.problems.linkage.higher_pair)
+            problems.append((key, f"{split_name(name)[0]} is found (find = [...]), not judged from a measured value yet"))
             continue
         try:
             qname, i, segment = _resolve(name, an.build, an.labels)

@@ -33,6 +33,7 @@ from graphmech.tolerances import PARALLEL_SIN
 
 if TYPE_CHECKING:
     from graphmech.problems.cycle.scene import CycleScene
+    from graphmech.problems.linkage.higher_pair import HigherPairs
 from graphmech.problems.reader import (
     LINKAGE_KEYS,
     LINK_ID,
@@ -767,7 +768,7 @@ def _triad_refusals(top: Reader, data: Mapping[str, Any]) -> None:
 
 
 def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]
-                        ) -> Scene[CycleScene | None]:
+                        ) -> Scene[CycleScene | HigherPairs | None]:
     """The rest of :func:`graphmech.scene.parse_scene` for a linkage scene (with a full cycle or
     the characteristics when it asks for them)."""
     problems = top.problems
@@ -794,6 +795,15 @@ def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order
     cycle = None
     if "cycle" in data or "characteristics" in data or any(s in CYCLE_SHOW_CHOICES for s in show):
         cycle, positions = read_cycle(top, data, show, linkage, positions)
+    # -- higher pairs inside the linkage (issue 22 item 4; graphmech/problems/linkage/higher_pair.py)
+    higher = None
+    if "higher_pair" in data:
+        from graphmech.problems.linkage.higher_pair import read_higher_pairs
+
+        higher = read_higher_pairs(top, linkage, positions, show, find)
+        if cycle is not None:
+            top.problem("higher_pair", "a higher pair is substituted at a stated position: not over a full cycle")
+    # -- end of higher pairs
     measured = read_measured(top, positions.labels if positions else None)
     precision, page = read_tail(top)
     if problems or linkage is None:
@@ -811,5 +821,5 @@ def parse_linkage_scene(data: Mapping[str, Any], source: str, top: Reader, order
         precision_mm=precision,
         page=page,
         kind="linkage" if cycle is None else "cycle",
-        problem=cycle,
+        problem=cycle if cycle is not None else higher,
     )

@@ -14,6 +14,7 @@ from graphmech.problems.instant_centres.figures import ic_panels
 from graphmech.problems.judging import finite, measured_entries, split_name
 from graphmech.problems.linkage.check import analyse, rows_that_fit
 from graphmech.problems.linkage.figures import direction_mark, linkage_sheet, transmission_marks
+from graphmech.problems.linkage.higher_pair import decorate
 from graphmech.problems.linkage.sizes import drawn_position_text
 from graphmech.problems.reader import Scene, page_size
 
@@ -31,6 +32,7 @@ def scene_sheet(scene: Scene[Any], footer: tuple[str, ...], caption: str = "") -
                           found_senses(an), asked_marks(an))
     if "instant_centres" in scene.show:
         sheet = dataclasses.replace(sheet, panels=sheet.panels + tuple(ic_panels(an, page_size(scene))))
+    sheet = decorate(sheet, an)  # the higher pairs' profiles, contact and common normal (none: unchanged)
     return sheet, list(an.warnings)
 
 
