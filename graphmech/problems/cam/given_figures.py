@@ -1,0 +1,122 @@
+"""The sheet of a cam given by its profile: the inversion drawing and the s–δ diagram.
+
+profile (at μl)
+    the disc (bold) about its centre C, the pitch circle (thin, dashed for a roller), the base
+    circle r0 and the farthest circle (thin, dash-dot) about O; the offset circle e or the circle
+    of the pivots a; the follower's inverted positions at the divisions (a translating axis from
+    its foot, a rocker's pivot and arm) with their pitch points, numbered; each named contact's
+    follower drawn bold with its letter at the touched point.
+displacement (at μl for s, or 1°/mm for ψ, and the turn 120 mm long)
+    the ordinates at the divisions as thin verticals and the curve through the dense closed form.
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from graphmech.drawing.primitives import Circle, FixedPivot, Hinge, Label, Panel, Polyline, Primitive, Segment, Sheet
+from graphmech.exact import cam_profile as exact
+from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
+
+if TYPE_CHECKING:
+    from graphmech.methods.cam_analysis import DrawnPosition
+    from graphmech.problems.cam.profile_given import GivenCamAnalysis, GivenCamScene
+    from graphmech.problems.kind import Footer
+    from graphmech.problems.reader import Scene
+
+#: The s–δ diagram's turn, mm.
+TURN_MM = 120.0
+
+
+def _mm(p: tuple[float, float], mu: float) -> tuple[float, float]:
+    return (p[0] / mu, p[1] / mu)
+
+
+def _follower(an: GivenCamAnalysis, p: DrawnPosition, bold: bool) -> list[Primitive]:
+    """One inverted follower: its axis or arm (and flat face), its point."""
+    cam, mu = an.cam, an.scales["l"]
+    f = cam.follower
+    role = "result" if bold else "construction"
+    out: list[Primitive] = []
+    B = _mm(p.point, mu)
+    if isinstance(f, TranslatingFollower):
+        turn = -cam.rotation * p.delta
+        d = (-math.sin(turn), math.cos(turn))
+        end = (B[0] + d[0] * 12.0, B[1] + d[1] * 12.0)
+        out.append(Segment(_mm(p.pivot, mu), end, role, dashed=not bold))
+        if f.contact == "flat":
+            w = (d[1] * 10.0, -d[0] * 10.0)
+            out.append(Segment((B[0] - w[0], B[1] - w[1]), (B[0] + w[0], B[1] + w[1]), role))
+    else:
+        A = _mm(p.pivot, mu)
+        if f.contact == "flat":
+            u = (B[0] - A[0], B[1] - A[1])
+            out.append(Segment(A, (A[0] + 1.15 * u[0], A[1] + 1.15 * u[1]), role, dashed=not bold))
+        else:
+            out.append(Segment(A, B, role, dashed=not bold))
+        out.append(Hinge(A, 0.8))
+    if f.contact == "roller" and bold:
+        out.append(Circle(B, f.roller_radius / mu, "result"))
+    return out
+
+
+def profile_items(an: GivenCamAnalysis) -> list[Primitive]:
+    cam, mu, inv = an.cam, an.scales["l"], an.inversion
+    f = cam.follower
+    C = _mm(cam.profile.centre, mu)
+    items: list[Primitive] = [Circle(C, cam.profile.radius / mu, "given"),
+                              Circle((0.0, 0.0), inv.r0 / mu, "construction", dashdot=True),
+                              Circle((0.0, 0.0), inv.r_max / mu, "construction", dashdot=True),
+                              FixedPivot((0.0, 0.0)), Label("O", (0.0, 0.0)), Hinge(C, 0.6), Label("C", C)]
+    if f.contact == "roller":
+        items.append(Circle(C, cam.pitch_radius() / mu, "construction", dashed=True))
+    if isinstance(f, TranslatingFollower) and f.offset != 0.0:
+        items.append(Circle((0.0, 0.0), abs(f.offset) / mu, "construction", dashed=True))
+    if isinstance(f, OscillatingFollower):
+        items.append(Circle((0.0, 0.0), f.pivot_distance / mu, "construction", dashed=True))
+    for k, p in enumerate(an.positions[:-1]):
+        items += _follower(an, p, False)
+        items.append(Label(str(k), _mm(p.pivot if isinstance(f, OscillatingFollower) else p.point, mu), italic=False))
+    for name, (g, _) in an.contacts.items():
+        p = inv.at(g)
+        items += _follower(an, p, True)
+        items.append(Label(name, _mm(p.contact, mu)))
+    return items
+
+
+def diagram_items(an: GivenCamAnalysis) -> list[Primitive]:
+    cam = an.cam
+    ang = isinstance(cam.follower, OscillatingFollower)
+    k_s = (1.0 / math.radians(1.0)) if ang else 1.0 / an.scales["l"]  # mm per unit of s
+    k_d = TURN_MM / math.tau
+    items: list[Primitive] = [Segment((0.0, 0.0), (TURN_MM + 6.0, 0.0), "given"),
+                              Segment((0.0, 0.0), (0.0, exact.rise(cam) * k_s + 6.0), "given"),
+                              Label("δ", (TURN_MM + 6.0, 0.0)), Label("ψ" if ang else "s", (0.0, exact.rise(cam) * k_s + 6.0))]
+    for k, p in enumerate(an.positions):
+        x = p.delta * k_d
+        items.append(Segment((x, 0.0), (x, p.s * k_s), "construction"))
+    d = np.linspace(0.0, math.tau, 721)
+    s = exact.displacement(cam, d)
+    items.append(Polyline(tuple(zip((d * k_d).tolist(), (s * k_s).tolist())), "result"))
+    for name, (g, _) in an.contacts.items():
+        items.append(Label(name, (g * k_d, float(exact.displacement(cam, g)) * k_s)))
+    return items
+
+
+def given_sheet(scene: Scene[GivenCamScene], footer: Footer) -> tuple[Sheet, list[str]]:
+    from graphmech.problems.cam.profile_given import analyse_given
+    from graphmech.problems.reader import page_size
+
+    an = analyse_given(scene, ())
+    ang = isinstance(an.cam.follower, OscillatingFollower)
+    panels = []
+    if "profile" in scene.show:
+        panels.append(Panel("profile", "Cam analysis by inversion", tuple(profile_items(an)),
+                            (f"μl = {an.scales['l']:g} m/mm",), row=0, scales=(("l", an.scales["l"]),)))
+    if "displacement" in scene.show:
+        note = "μψ = 1 °/mm" if ang else f"μs = {an.scales['l']:g} m/mm"
+        panels.append(Panel("displacement", "Displacement diagram " + ("ψ–δ" if ang else "s–δ"),
+                            tuple(diagram_items(an)), (note, f"μφ = {360.0 / TURN_MM:g} °/mm"), row=0))
+    return Sheet(scene.title, tuple(panels), page_size(scene), tuple(footer)), list(an.warnings)
