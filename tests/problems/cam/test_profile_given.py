@@ -1,0 +1,76 @@
+"""Scenes that give the cam's profile: values against the closed forms, refusals in one line."""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import ROOT, assert_refused, check_json, run_cli, values
+
+SCENES = ROOT / "figures" / "scenes"
+
+
+def test_000_cam_5a_translating_roller() -> None:
+    v = values(check_json(SCENES / "cam.eccentric_disc_translating.toml"))
+    # R = 30, |OC| = 10, e = 15, r_T = 5: r0 = 25 mm, h = √(45² − 15²) − √(25² − 15²)
+    assert v["r0"]["exact"] == pytest.approx(0.025) and v["r0_actual"]["exact"] == pytest.approx(0.020)
+    assert v["h"]["graphical"] == pytest.approx(math.sqrt(45**2 - 15**2) * 1e-3 - 0.020, rel=1e-13)
+    # at δ = 90° C stands at (10, 0): the roller centre at (15, √(35² − 5²)), α from sin α = 5/35
+    assert v["s@90"]["exact"] == pytest.approx(math.sqrt(35**2 - 5**2) * 1e-3 - 0.020, rel=1e-13)
+    assert v["alpha@90"]["exact"] == pytest.approx(math.degrees(math.asin(5 / 35)), rel=1e-13)
+    for q in v.values():
+        assert q["rel_error"] < 1e-12, q
+    assert 0.0 < v["delta@E-F"]["graphical"] < 360.0
+
+
+def test_001_1_17_flat_rocker_omega2() -> None:
+    v = values(check_json(SCENES / "cam.eccentric_disc_flat_rocker.toml"))
+    assert abs(v["v@0"]["graphical"]) == pytest.approx(2.0, rel=1e-12)  # ω1·AC/BC = 10·15/75
+    assert abs(v["v@180"]["graphical"]) == pytest.approx(10 * 15 / 105, rel=1e-12)
+    assert v["v@0"]["unit"] == "rad/s"
+    assert v["r0"]["exact"] == pytest.approx(0.005)
+
+
+def test_centred_roller_rise_is_2e(tmp_path: Path) -> None:
+    text = (SCENES / "cam.eccentric_disc_translating.toml").read_text().replace("offset = 15", "offset = 0")
+    scene = tmp_path / "c.toml"
+    scene.write_text(text.replace('find = [', 'find = ["s@E", ', 1))
+    doc = check_json(scene)
+    v = values(doc)
+    assert v["h"]["exact"] == pytest.approx(0.020, rel=1e-14) and v["h"]["graphical"] == pytest.approx(0.020, rel=1e-14)
+    assert v["s@E"]["exact"] >= 0.0 and v["s@E"]["rel_error"] < 1e-12
+    assert len(doc["divisions"]) == 13 and set(doc["contacts"]) == {"E", "F"}
+
+
+def test_oscillating_swing_and_contacts() -> None:
+    doc = check_json(SCENES / "cam.eccentric_disc_oscillating.toml")
+    v = values(doc)
+    a, l, r_lo, r_hi = 50.0, 40.0, 25.0, 45.0
+    swing = math.acos((a * a + l * l - r_hi**2) / (2 * a * l)) - math.acos((a * a + l * l - r_lo**2) / (2 * a * l))
+    assert v["h"]["exact"] == pytest.approx(math.degrees(swing), rel=1e-13) and v["h"]["unit"] == "deg"
+    c = doc["contacts"]
+    turned = (c["F"]["delta_exact_deg"] - c["E"]["delta_exact_deg"]) % 360.0
+    assert v["delta@E-F"]["exact"] == pytest.approx(turned, rel=1e-13)
+    assert v["delta@E-F"]["rel_error"] < 1e-12
+
+
+def test_measured_reading_is_judged() -> None:
+    doc = check_json(SCENES / "cam.eccentric_disc_knife.toml", "--measured", "r0=0.0151")
+    (verdict,) = doc["measured"]
+    assert verdict["expected"] == pytest.approx(0.015) and verdict["ok"]  # 0.1 mm off, within 0.5 mm × μl
+
+
+@pytest.mark.parametrize("edit, words", [
+    (("centre = [-10, 0]", "centre = [-30, 0]"), ("cam.profile.centre", "inside the disc")),
+    (("offset = 8", "offset = 20"), ("cam.follower.offset", "misses")),
+    (('find = ["h"', 'find = ["q@3", "h"'), ("find[0]", "write s@<cam angle")),
+    (('find = ["h"', 'find = ["delta@E-Z", "h"'), ("find[0]", "no contact named")),
+    (("[cam.profile]", "base_radius = 30\n\n[cam.profile]"), ("cam.base_radius", "profile is given")),
+])
+def test_bad_input_refused_in_one_line(tmp_path: Path, edit: tuple[str, str], words: tuple[str, ...]) -> None:
+    text = (SCENES / "cam.eccentric_disc_knife.toml").read_text()
+    assert edit[0] in text
+    scene = tmp_path / "bad.toml"
+    scene.write_text(text.replace(edit[0], edit[1]) + '\n[[cam.contact]]\nname = "E"\npolar = 10\n')
+    assert_refused(run_cli("check", str(scene)), "bad.toml", *words)
