@@ -83,16 +83,16 @@ def position(cam: GivenCam, delta: ArrayLike) -> np.ndarray:
     f, rho, big_r = cam.follower, cam.pitch_radius(), cam.profile.radius
     if isinstance(f, TranslatingFollower):
         if f.contact == "flat":
-            return y + big_r
-        return y + np.sqrt(rho * rho - (f.offset - x) ** 2)
+            return np.asarray(y + big_r)
+        return np.asarray(y + np.sqrt(rho * rho - (f.offset - x) ** 2))
     dx, dy = x - f.pivot_distance, y
     s = _sigma(f, cam.rotation)
     dd = np.hypot(dx, dy)
     psi_d = np.arctan2(s * dy, -dx)
     if f.contact == "flat":
-        return psi_d + np.arcsin(big_r / dd)
+        return np.asarray(psi_d + np.arcsin(big_r / dd))
     l = f.arm
-    return psi_d + np.arccos((l * l + dd * dd - rho * rho) / (2.0 * l * dd))
+    return np.asarray(psi_d + np.arccos((l * l + dd * dd - rho * rho) / (2.0 * l * dd)))
 
 
 def lowest_highest(cam: GivenCam) -> tuple[float, float]:
@@ -137,11 +137,11 @@ def rate(cam: GivenCam, delta: ArrayLike) -> np.ndarray:
     q = position(cam, d)
     if f.contact == "flat":
         if isinstance(f, TranslatingFollower):
-            return yp
+            return np.asarray(yp)
         s = _sigma(f, cam.rotation)
         ux, uy = -np.cos(q), s * np.sin(q)
         upx, upy = np.sin(q), s * np.cos(q)
-        return -(xp * uy - yp * ux) / ((x - f.pivot_distance) * upy - y * upx)
+        return np.asarray(-(xp * uy - yp * ux) / ((x - f.pivot_distance) * upy - y * upx))
     bx, by = _follower_point(cam, d, q)
     nx, ny = bx - x, by - y
     if isinstance(f, TranslatingFollower):
@@ -149,7 +149,7 @@ def rate(cam: GivenCam, delta: ArrayLike) -> np.ndarray:
     else:
         s = _sigma(f, cam.rotation)
         dbx, dby = f.arm * np.sin(q), s * f.arm * np.cos(q)
-    return (nx * xp + ny * yp) / (nx * dbx + ny * dby)
+    return np.asarray((nx * xp + ny * yp) / (nx * dbx + ny * dby))
 
 
 def pressure_angle(cam: GivenCam, delta: ArrayLike) -> np.ndarray:
@@ -157,7 +157,7 @@ def pressure_angle(cam: GivenCam, delta: ArrayLike) -> np.ndarray:
     d = np.asarray(delta, dtype=float)
     f = cam.follower
     if f.contact == "flat":
-        return 0.0 * d
+        return np.zeros_like(d)
     x, y, _, _ = _centre(cam, d)
     q = position(cam, d)
     bx, by = _follower_point(cam, d, q)
@@ -167,7 +167,7 @@ def pressure_angle(cam: GivenCam, delta: ArrayLike) -> np.ndarray:
     else:
         s = _sigma(f, cam.rotation)
         mx, my = np.sin(q), s * np.cos(q)
-    return np.arcsin(np.minimum(np.abs(nx * my - ny * mx) / cam.pitch_radius(), 1.0))
+    return np.asarray(np.arcsin(np.minimum(np.abs(nx * my - ny * mx) / cam.pitch_radius(), 1.0)))
 
 
 def contact_point(cam: GivenCam, delta: float) -> tuple[float, float]:

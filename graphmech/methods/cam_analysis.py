@@ -25,7 +25,13 @@ import math
 from dataclasses import dataclass
 
 from graphmech.errors import DegenerateConstruction, NoSolution
-from graphmech.geometry.kernels import Components, ScalarOps, intersect_circle_line, intersect_circles, unit
+from graphmech.geometry.kernels import (
+    Components,
+    ScalarOps,
+    intersect_circle_line,
+    intersect_circles,
+    unit,
+)
 from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.cam_profile import GivenCam
 

@@ -11,7 +11,6 @@ from graphmech.problems.kind import Bench, Extra, Footer, Kind
 
 if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
     from graphmech.drawing.primitives import Sheet
-    from graphmech.problems.cam.check import CamAnalysis
     from graphmech.problems.cam.scene import CamScene
     from graphmech.problems.judging import Verdict
     from graphmech.problems.reader import Reader, Scene

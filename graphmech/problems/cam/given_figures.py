@@ -16,7 +16,18 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from graphmech.drawing.primitives import Circle, FixedPivot, Hinge, Label, Panel, Polyline, Primitive, Segment, Sheet
+from graphmech.drawing.primitives import (
+    Circle,
+    FixedPivot,
+    Hinge,
+    Label,
+    Panel,
+    Polyline,
+    Primitive,
+    Role,
+    Segment,
+    Sheet,
+)
 from graphmech.exact import cam_profile as exact
 from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
 
@@ -38,7 +49,7 @@ def _follower(an: GivenCamAnalysis, p: DrawnPosition, bold: bool) -> list[Primit
     """One inverted follower: its axis or arm (and flat face), its point."""
     cam, mu = an.cam, an.scales["l"]
     f = cam.follower
-    role = "result" if bold else "construction"
+    role: Role = "result" if bold else "construction"
     out: list[Primitive] = []
     B = _mm(p.point, mu)
     if isinstance(f, TranslatingFollower):
@@ -63,6 +74,7 @@ def _follower(an: GivenCamAnalysis, p: DrawnPosition, bold: bool) -> list[Primit
 
 
 def profile_items(an: GivenCamAnalysis) -> list[Primitive]:
+    """The inversion drawing (module docstring), paper mm."""
     cam, mu, inv = an.cam, an.scales["l"], an.inversion
     f = cam.follower
     C = _mm(cam.profile.centre, mu)
@@ -86,7 +98,11 @@ def profile_items(an: GivenCamAnalysis) -> list[Primitive]:
     return items
 
 
-def diagram_items(an: GivenCamAnalysis) -> list[Primitive]:
+def diagram_items(an: GivenCamAnalysis, notation: str = "en") -> list[Primitive]:
+    from graphmech.drawing.lettering import number
+    from graphmech.drawing.notation import word
+    from graphmech.problems.cam.figures import WORDS
+
     cam = an.cam
     ang = isinstance(cam.follower, OscillatingFollower)
     k_s = (1.0 / math.radians(1.0)) if ang else 1.0 / an.scales["l"]  # mm per unit of s
@@ -100,6 +116,12 @@ def diagram_items(an: GivenCamAnalysis) -> list[Primitive]:
     d = np.linspace(0.0, math.tau, 721)
     s = exact.displacement(cam, d)
     items.append(Polyline(tuple(zip((d * k_d).tolist(), (s * k_s).tolist())), "result"))
+    # the rise from the lowest position to the highest, the return back: named under the axis
+    low, high = float(d[int(np.argmin(s))]), float(d[int(np.argmax(s))])
+    for kind, start, span in (("rise", low, (high - low) % math.tau), ("return", high, (low - high) % math.tau)):
+        mid = (start + span / 2.0) % math.tau
+        items.append(Label(f"{word(kind, notation, WORDS)} {number(round(math.degrees(span)))}°", (mid * k_d, -4.0),
+                           italic=False))
     for name, (g, _) in an.contacts.items():
         items.append(Label(name, (g * k_d, float(exact.displacement(cam, g)) * k_s)))
     return items
@@ -109,14 +131,19 @@ def given_sheet(scene: Scene[GivenCamScene], footer: Footer) -> tuple[Sheet, lis
     from graphmech.problems.cam.profile_given import analyse_given
     from graphmech.problems.reader import page_size
 
+    from graphmech.drawing.notation import word
+    from graphmech.problems.cam.figures import WORDS
+
     an = analyse_given(scene, ())
     ang = isinstance(an.cam.follower, OscillatingFollower)
+    notation = scene.page.notation
     panels = []
     if "profile" in scene.show:
-        panels.append(Panel("profile", "Cam analysis by inversion", tuple(profile_items(an)),
+        panels.append(Panel("profile", word("profile", notation, WORDS), tuple(profile_items(an)),
                             (f"μl = {an.scales['l']:g} m/mm",), row=0, scales=(("l", an.scales["l"]),)))
     if "displacement" in scene.show:
         note = "μψ = 1 °/mm" if ang else f"μs = {an.scales['l']:g} m/mm"
-        panels.append(Panel("displacement", "Displacement diagram " + ("ψ–δ" if ang else "s–δ"),
-                            tuple(diagram_items(an)), (note, f"μφ = {360.0 / TURN_MM:g} °/mm"), row=0))
+        head = f"{word('displacement', notation, WORDS)} {'ψ' if ang else 's'}–{word('cam angle', notation, WORDS)}"
+        panels.append(Panel("displacement", head, tuple(diagram_items(an, notation)),
+                            (note, f"μφ = {360.0 / TURN_MM:g} °/mm"), row=0))
     return Sheet(scene.title, tuple(panels), page_size(scene), tuple(footer)), list(an.warnings)

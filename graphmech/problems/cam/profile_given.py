@@ -10,8 +10,9 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any, Mapping, cast
+from typing import Any, cast
 
 from graphmech.errors import NoSolution, SceneError
 from graphmech.exact import cam_profile as exact
@@ -20,7 +21,15 @@ from graphmech.mechanisms.cam_profile import EccentricDisc, GivenCam, GivenConta
 from graphmech.methods.cam_analysis import DrawnPosition, Inversion
 from graphmech.problems.judging import Row, Verdict, close_names, measured_entries
 from graphmech.problems.reader import (
-    LINKAGE_KEYS, Reader, Scene, compact, raise_sorted, read_header, read_measured, read_scales, read_tail,
+    LINKAGE_KEYS,
+    Reader,
+    Scene,
+    compact,
+    raise_sorted,
+    read_header,
+    read_measured,
+    read_scales,
+    read_tail,
 )
 from graphmech.scales import round_scale
 
@@ -53,29 +62,32 @@ def poses_given(data: Mapping[str, Any]) -> bool:
     return isinstance(cam, dict) and "profile" in cam
 
 
-def _check_fit(r: Reader, cam: GivenCam, disc_path: str) -> None:
+def _mm(x: float) -> str:
+    return f"{compact(float(f'{x * 1e3:.6g}'))} mm"
+
+
+def _check_fit(r: Reader, cam: GivenCam) -> None:
     """The follower must rest on the disc all round: what the kind checks against r0 for a
     motion law, here against the disc's nearest and farthest circles r0 and r_max about O."""
     f = cam.follower
     r0 = cam.base_radius()
     r_max = cam.pitch_radius() + cam.profile.eccentricity
-    mm = lambda x: f"{compact(float(f'{x * 1e3:.6g}'))} mm"  # noqa: E731
     if isinstance(f, TranslatingFollower):
         if f.contact != "flat" and not abs(f.offset) < r0:
-            r.problem(r.at("follower") + ".offset", f"|e| = {mm(abs(f.offset))} is not smaller than the base radius "
-                                                   f"r0 = {mm(r0)} (the disc's nearest pitch radius): the axis misses it")
+            r.problem(r.at("follower") + ".offset", f"|e| = {_mm(abs(f.offset))} is not smaller than the base radius "
+                                                   f"r0 = {_mm(r0)} (the disc's nearest pitch radius): the axis misses it")
         return
     a = f.pivot_distance
     if f.contact == "flat":
         if not r_max < a:
             r.problem(r.at("follower") + ".pivot_distance",
-                      f"the disc reaches {mm(r_max)} from O, beyond the pivot a = {mm(a)}: the face through it cannot "
+                      f"the disc reaches {_mm(r_max)} from O, beyond the pivot a = {_mm(a)}: the face through it cannot "
                       "rest on the disc all round")
         return
     if not (abs(a - f.arm) < r0 and r_max < a + f.arm and r_max < a):
         r.problem(r.at("follower") + ".arm",
                   f"the arm cannot rest on the disc all round: its reach |a − l| … a + l must hold the pitch circle's "
-                  f"r0 = {mm(r0)} … {mm(r_max)}, and the pivot a = {mm(a)} lie beyond {mm(r_max)}")
+                  f"r0 = {_mm(r0)} … {_mm(r_max)}, and the pivot a = {_mm(a)} lie beyond {_mm(r_max)}")
 
 
 def _read_profile(r: Reader) -> EccentricDisc | None:
@@ -155,14 +167,14 @@ def parse_given_scene(data: Mapping[str, Any], source: str, top: Reader, order: 
     cam = None
     if disc is not None and follower is not None and not bad and rotation is not None and omega is not None:
         cam = GivenCam(disc, follower, 1 if rotation == "ccw" else -1, omega.si, contacts)
-        _check_fit(r, cam, "cam.profile")
+        _check_fit(r, cam)
     measured = read_measured(top, None, cam=True)
     precision, page = read_tail(top)
     if problems or cam is None:
         raise_sorted(problems, data, order, "cam", source)
     return Scene(source=source, title=title, show=show, find=find, scales=scales, measured=measured,
                  precision_mm=precision, page=page, kind="cam",
-                 problem=GivenCamScene(cast(GivenCam, cam), GIVEN_STEP_DEFAULT if step is None else step.si))
+                 problem=GivenCamScene(cam, GIVEN_STEP_DEFAULT if step is None else step.si))
 
 
 # ---------------------------------------------------------------------------------------- analysis

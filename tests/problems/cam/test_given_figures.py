@@ -11,4 +11,5 @@ def test_render_draws_both_panels(tmp_path: Path) -> None:
     code, _, err = run_cli("render", str(ROOT / "figures/scenes/cam.eccentric_disc_oscillating.toml"), "-o", str(out))
     assert code == 0, err
     svg = out.read_text()
-    assert "Cam analysis by inversion" in svg and "ψ–δ" in svg
+    assert "Cam profile by inversion" in svg and "ψ–δ" in svg
+    assert ">rise " in svg and ">return " in svg  # the rise and the return named under the δ axis

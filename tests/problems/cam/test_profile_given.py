@@ -74,3 +74,15 @@ def test_bad_input_refused_in_one_line(tmp_path: Path, edit: tuple[str, str], wo
     scene = tmp_path / "bad.toml"
     scene.write_text(text.replace(edit[0], edit[1]) + '\n[[cam.contact]]\nname = "E"\npolar = 10\n')
     assert_refused(run_cli("check", str(scene)), "bad.toml", *words)
+
+
+@pytest.mark.parametrize("path", sorted(SCENES.glob("cam.eccentric_disc_*.toml")), ids=lambda p: p.stem)
+def test_every_row_is_a_construction_to_round_off(path: Path) -> None:
+    doc = check_json(path)
+    assert doc["quantities"]
+    for r in doc["quantities"]:
+        assert r["error_source"] == "construction" and r["rel_error"] < 1e-12, r
+    for row in doc["divisions"]:  # the s–δ (ψ–δ) table as drawn, beside the closed form
+        key = "psi_deg" if "psi_deg" in row else "s"
+        assert row[key] == pytest.approx(row[key.replace("_deg", "") + ("_exact_deg" if key == "psi_deg" else "_exact")],
+                                         abs=1e-12)
