@@ -53,3 +53,25 @@ def test_extremes_rate_and_contacts_agree(f: object, rot: int) -> None:
         px, py = X.contact_point(cam, at)
         assert X.contact_delta(cam, math.atan2(py, px)) == pytest.approx(at, abs=1e-12)
 
+
+
+@pytest.mark.parametrize("f", FOLLOWERS, ids=lambda f: f"{f.kind}-{f.contact}-{getattr(f, 'sense', '')}")
+def test_root_finding_on_points_round_a_disc_meets_its_closed_form(f: object) -> None:
+    """A disc given as 96 points: the spline through them lies within ~1e-8 m of the circle, and so
+    do the follower's motion, pressure angle and velocity found by root finding on it."""
+    from graphmech.mechanisms.cam_profile import PointsProfile
+
+    big_r, c = 0.030, (0.004, -0.010)
+    ang = np.linspace(0.0, 2 * math.pi, 97)[:-1]
+    pts = tuple((c[0] + big_r * math.cos(a), c[1] + big_r * math.sin(a)) for a in ang)
+    for rot in (1, -1):
+        disc = GivenCam(EccentricDisc(big_r, c), f, rot, 10.0)  # type: ignore[arg-type]
+        spline = GivenCam(PointsProfile(pts), f, rot, 10.0)  # type: ignore[arg-type]
+        d = np.radians([0.0, 37.0, 200.0, 300.0])
+        np.testing.assert_allclose(X.displacement(spline, d), X.displacement(disc, d), atol=5e-8)
+        np.testing.assert_allclose(X.pressure_angle(spline, d), X.pressure_angle(disc, d), atol=5e-6)
+        np.testing.assert_allclose(X.rate(spline, d), X.rate(disc, d), atol=5e-6)
+        assert X.rise(spline) == pytest.approx(X.rise(disc), abs=1e-9)
+        assert X.radii(spline) == pytest.approx(X.radii(disc), abs=1e-9)
+        px, py = X.contact_point(spline, 0.7)
+        assert X.contact_delta(spline, math.atan2(py, px)) == pytest.approx(0.7, abs=1e-12)

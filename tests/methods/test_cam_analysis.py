@@ -34,3 +34,34 @@ def test_inversion_meets_the_closed_form(f: object, rot: int) -> None:
         px, py = X.contact_point(cam, float(d))
         assert math.hypot(px - p.contact[0], py - p.contact[1]) < 1e-14
         assert inv.contact(math.atan2(py, px)) == pytest.approx(float(d) % (2 * math.pi), abs=1e-12)
+
+
+POINTS = ((0.03, 0.0), (0.02, 0.025), (-0.01, 0.03), (-0.03, 0.005), (-0.02, -0.02), (0.01, -0.028))
+
+
+@pytest.mark.parametrize("f", [TranslatingFollower(0.005, "roller", 0.005), TranslatingFollower(0.0, "knife"),
+                               TranslatingFollower(0.01, "flat"), OscillatingFollower(0.07, 0.05, "roller", 0.005),
+                               OscillatingFollower(0.09, 0.0, "flat", 0.0, "same")],
+                         ids=lambda f: f"{f.kind}-{f.contact}")
+def test_the_drawn_curve_converges_on_the_spline(f: object) -> None:
+    """Read off the curve drawn as chords, s, α and v approach the root-found values as the chords
+    multiply (about as 1/chords²)."""
+    from graphmech.mechanisms.cam_profile import PointsProfile
+    from graphmech.methods.cam_analysis import PolylineInversion, inversion
+
+    cam = GivenCam(PointsProfile(POINTS), f, 1, 2.0)  # type: ignore[arg-type]
+    assert isinstance(inversion(cam), PolylineInversion)
+
+    def worst(chords: int) -> float:
+        inv = PolylineInversion(cam, chords)
+        out = [abs(inv.rise() - X.rise(cam)) / 0.03]
+        for d in (0.3, 2.5, 4.4):
+            p = inv.at(d)
+            out += [abs(p.s - float(X.displacement(cam, d))) / 0.03, abs(p.alpha - float(X.pressure_angle(cam, d))),
+                    abs(p.v - cam.omega * float(X.rate(cam, d))) / (cam.omega * 0.03)]
+            px, py = X.contact_point(cam, d)
+            out.append(abs(inv.contact(math.atan2(py, px)) - d))
+        return max(out)
+
+    coarse, fine = worst(360), worst(1440)
+    assert fine < 2e-4 and fine < coarse / 5.0, (coarse, fine)

@@ -30,6 +30,7 @@ from graphmech.drawing.primitives import (
 )
 from graphmech.exact import cam_profile as exact
 from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
+from graphmech.methods.cam_analysis import PolylineInversion
 
 if TYPE_CHECKING:
     from graphmech.methods.cam_analysis import DrawnPosition
@@ -77,13 +78,20 @@ def profile_items(an: GivenCamAnalysis) -> list[Primitive]:
     """The inversion drawing (module docstring), paper mm."""
     cam, mu, inv = an.cam, an.scales["l"], an.inversion
     f = cam.follower
-    C = _mm(cam.profile.centre, mu)
-    items: list[Primitive] = [Circle(C, cam.profile.radius / mu, "given"),
-                              Circle((0.0, 0.0), inv.r0 / mu, "construction", dashdot=True),
+    items: list[Primitive] = [Circle((0.0, 0.0), inv.r0 / mu, "construction", dashdot=True),
                               Circle((0.0, 0.0), inv.r_max / mu, "construction", dashdot=True),
-                              FixedPivot((0.0, 0.0)), Label("O", (0.0, 0.0)), Hinge(C, 0.6), Label("C", C)]
-    if f.contact == "roller":
-        items.append(Circle(C, cam.pitch_radius() / mu, "construction", dashed=True))
+                              FixedPivot((0.0, 0.0)), Label("O", (0.0, 0.0))]
+    if isinstance(inv, PolylineInversion):  # the curve through the given points, and its pitch curve
+        items.append(Polyline(tuple(map(tuple, (inv.P / mu).tolist())), "given", closed=True))
+        if f.contact == "roller":
+            items.append(Polyline(tuple(map(tuple, (inv.B / mu).tolist())), "construction", closed=True, dashed=True))
+        for x, y in cam.profile.points:  # type: ignore[union-attr]
+            items.append(Hinge((x / mu, y / mu), 0.4))
+    else:
+        C = _mm(cam.disc.centre, mu)
+        items += [Circle(C, cam.disc.radius / mu, "given"), Hinge(C, 0.6), Label("C", C)]
+        if f.contact == "roller":
+            items.append(Circle(C, cam.pitch_radius() / mu, "construction", dashed=True))
     if isinstance(f, TranslatingFollower) and f.offset != 0.0:
         items.append(Circle((0.0, 0.0), abs(f.offset) / mu, "construction", dashed=True))
     if isinstance(f, OscillatingFollower):
@@ -128,11 +136,10 @@ def diagram_items(an: GivenCamAnalysis, notation: str = "en") -> list[Primitive]
 
 
 def given_sheet(scene: Scene[GivenCamScene], footer: Footer) -> tuple[Sheet, list[str]]:
-    from graphmech.problems.cam.profile_given import analyse_given
-    from graphmech.problems.reader import page_size
-
     from graphmech.drawing.notation import word
     from graphmech.problems.cam.figures import WORDS
+    from graphmech.problems.cam.profile_given import analyse_given
+    from graphmech.problems.reader import page_size
 
     an = analyse_given(scene, ())
     ang = isinstance(an.cam.follower, OscillatingFollower)

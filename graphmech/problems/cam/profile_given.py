@@ -17,11 +17,24 @@ from typing import Any, cast
 from graphmech.errors import NoSolution, SceneError
 from graphmech.exact import cam_profile as exact
 from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
-from graphmech.mechanisms.cam_profile import EccentricDisc, GivenCam, GivenContact
-from graphmech.methods.cam_analysis import DrawnPosition, Inversion
+from graphmech.mechanisms.cam_profile import (
+    EccentricDisc,
+    GivenCam,
+    GivenContact,
+    PointsProfile,
+    shape_problem,
+)
+from graphmech.methods.cam_analysis import (
+    DRAWN_CHORDS,
+    DrawnPosition,
+    Inversion,
+    PolylineInversion,
+    inversion,
+)
 from graphmech.problems.judging import Row, Verdict, close_names, measured_entries
 from graphmech.problems.reader import (
     LINKAGE_KEYS,
+    MAX_TABLE_POINTS,
     Reader,
     Scene,
     compact,
@@ -44,6 +57,8 @@ GIVEN_BETWEEN = ("delta", "s", "psi")
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_']*")
 #: The inversion's divisions for the s–δ table when the scene gives no step, rad.
 GIVEN_STEP_DEFAULT = math.radians(15.0)
+#: The fewest points a profile may be given by.
+MIN_POINTS = 5
 #: The most contacts a scene may name.
 MAX_CONTACTS = 26
 
@@ -70,8 +85,7 @@ def _check_fit(r: Reader, cam: GivenCam) -> None:
     """The follower must rest on the disc all round: what the kind checks against r0 for a
     motion law, here against the disc's nearest and farthest circles r0 and r_max about O."""
     f = cam.follower
-    r0 = cam.base_radius()
-    r_max = cam.pitch_radius() + cam.profile.eccentricity
+    r0, r_max = exact.radii(cam)
     if isinstance(f, TranslatingFollower):
         if f.contact != "flat" and not abs(f.offset) < r0:
             r.problem(r.at("follower") + ".offset", f"|e| = {_mm(abs(f.offset))} is not smaller than the base radius "
@@ -90,11 +104,41 @@ def _check_fit(r: Reader, cam: GivenCam) -> None:
                   f"r0 = {_mm(r0)} … {_mm(r_max)}, and the pivot a = {_mm(a)} lie beyond {_mm(r_max)}")
 
 
-def _read_profile(r: Reader) -> EccentricDisc | None:
+def _read_points(p: Reader) -> PointsProfile | None:
+    """``points``: [[x, y], …] with a length unit, at least 5, the spline through them convex round O."""
+    given = p.quantity("points", "length")
+    p.ignore("radius", "centre")
+    if given is None:
+        return None
+    path, raw = p.at(given.key), given.value
+    if not isinstance(raw, list) or not MIN_POINTS <= len(raw) <= MAX_TABLE_POINTS:
+        p.problem(path, f"must be a list of {MIN_POINTS} … {MAX_TABLE_POINTS} points [x, y] round O")
+        return None
+    pts = [p.numbers(v, f"{path}[{j}]", 2, shape="[x, y]") for j, v in enumerate(raw)]
+    if any(q is None for q in pts):
+        return None
+    xy = tuple((given.si(q[0]) + 0.0, given.si(q[1]) + 0.0) for q in cast("list[list[float]]", pts))
+    if len(set(xy)) < len(xy):
+        p.problem(path, "a point is given twice: the curve runs through each once")
+        return None
+    profile = PointsProfile(xy)
+    why = shape_problem(profile)
+    if why:
+        p.problem(path, why)
+        return None
+    return profile
+
+
+def _read_profile(r: Reader) -> EccentricDisc | PointsProfile | None:
     p = r.table_at("profile", required=True)
     if p is None:
         return None
-    p.string("type", choices=("eccentric_disc",), required=True)
+    kind = p.string("type", choices=("eccentric_disc", "points"), required=True)
+    if kind == "points":
+        out = _read_points(p)
+        p.finish()
+        return out
+    p.ignore("points")
     radius = p.value("radius", "length", positive=True)
     centre = p.pair("centre")
     p.finish()
@@ -223,11 +267,11 @@ def analyse_given(scene: Scene[GivenCamScene], extra_measured: tuple[tuple[str, 
     """The inversion at the named contacts and the divisions, each row against the closed form."""
     gs = scene.problem
     cam = gs.cam
-    inv = Inversion(cam)
+    inv = inversion(cam)
     n = max(1, round(math.tau / gs.step))
     positions = [inv.at(math.tau * k / n) for k in range(n + 1)]
     stated = {"l"} if "l" in scene.scales else set()
-    reach = cam.pitch_radius() + cam.profile.eccentricity + getattr(cam.follower, "roller_radius", 0.0)
+    reach = exact.radii(cam)[1] + cam.roller
     if isinstance(cam.follower, OscillatingFollower):
         reach = max(reach, cam.follower.pivot_distance + cam.follower.arm)
     scales = {"l": float(scene.scales["l"]) if "l" in stated else round_scale(2.2 * reach / 150.0)}
@@ -241,7 +285,30 @@ def analyse_given(scene: Scene[GivenCamScene], extra_measured: tuple[tuple[str, 
     if problems:
         raise SceneError(problems, scene.source)
     an.rows = [_row(an, name) for name in scene.find]
+    if isinstance(cam.profile, PointsProfile):
+        _estimate(an)
     return an
+
+
+def _estimate(an: GivenCamAnalysis) -> None:
+    """A drawn profile's readings with their own error: the same rows off the curve drawn with 2
+    and 4 times the chords (graphmech.accuracy.estimate_from_three), relative as the row's error is."""
+    from dataclasses import replace as copy
+
+    from graphmech.accuracy import DISCRETISATION, estimate_from_three
+
+    finer = []
+    for k in (2, 4):
+        inv = PolylineInversion(an.cam, k * DRAWN_CHORDS)
+        finer.append(copy(an, inversion=inv, contacts=_contact_deltas(an.scene, inv)))
+    rows = []
+    for row in an.rows:
+        g2, g4 = (_row(f, row.name).graphical for f in finer)
+        est = estimate_from_three(row.graphical, g2, g4)
+        rel = row.rel_error * est / abs(row.graphical - row.exact) if row.graphical != row.exact else 0.0
+        rows.append(row.estimated(DISCRETISATION, rel if math.isfinite(rel) else 0.0,
+                                  f"the curve drawn as {DRAWN_CHORDS} chords"))
+    an.rows = rows
 
 
 def _where(an: GivenCamAnalysis, at: str) -> tuple[float, float] | None:
@@ -286,11 +353,11 @@ def _row(an: GivenCamAnalysis, name: str) -> Row:
     if name == "h":
         if ang:
             return _angle_row(name, deg(inv.rise()), deg(exact.rise(cam)), 90.0)
-        return _length_row(name, inv.rise(), exact.rise(cam), mu, cam.profile.radius)
+        return _length_row(name, inv.rise(), exact.rise(cam), mu, cam.size)
     if name in ("r0", "r0_actual"):
         f = cam.follower
         less = f.roller_radius if name == "r0_actual" and f.contact == "roller" else 0.0
-        return _length_row(name, inv.r0 - less, cam.base_radius() - less, mu, cam.profile.radius)
+        return _length_row(name, inv.r0 - less, exact.radii(cam)[0] - less, mu, cam.size)
     head, at = name.split("@", 1)
     if "-" in at and head in GIVEN_BETWEEN:
         e, f2 = at.split("-", 1)
@@ -299,7 +366,7 @@ def _row(an: GivenCamAnalysis, name: str) -> Row:
             return _angle_row(name, deg((gf - ge) % math.tau), deg((xf - xe) % math.tau), 360.0)
         g = inv.at(gf).s - inv.at(ge).s
         x = float(exact.displacement(cam, xf) - exact.displacement(cam, xe))
-        return _angle_row(name, deg(g), deg(x), 90.0) if ang else _length_row(name, g, x, mu, cam.profile.radius)
+        return _angle_row(name, deg(g), deg(x), 90.0) if ang else _length_row(name, g, x, mu, cam.size)
     gd, xd = cast("tuple[float, float]", _where(an, at))
     p = inv.at(gd)
     if head == "alpha":
@@ -307,10 +374,10 @@ def _row(an: GivenCamAnalysis, name: str) -> Row:
     if head == "v":
         x = cam.omega * float(exact.rate(cam, xd))
         unit = "rad/s" if ang else "m/s"
-        size = cam.omega * (1.0 if ang else cam.profile.radius)
+        size = cam.omega * (1.0 if ang else cam.size)
         return Row(name, unit, None, 1.0, p.v, x, abs(p.v - x) / size)
     x = float(exact.displacement(cam, xd))
-    return _angle_row(name, deg(p.s), deg(x), 90.0) if ang else _length_row(name, p.s, x, mu, cam.profile.radius)
+    return _angle_row(name, deg(p.s), deg(x), 90.0) if ang else _length_row(name, p.s, x, mu, cam.size)
 
 
 def _length_row(name: str, g: float, x: float, mu: float, size: float) -> Row:
@@ -333,7 +400,7 @@ def judge_given(an: GivenCamAnalysis) -> list[Verdict]:
             continue
         row = _row(an, name)
         if row.unit == "deg":
-            tol = math.degrees(prec / max(an.cam.profile.radius / an.scales["l"], prec))
+            tol = math.degrees(prec / max(an.cam.size / an.scales["l"], prec))
         elif row.unit in ("m/s", "rad/s"):
             tol = abs(row.exact) * 0.02 + 1e-12  # a velocity read off a velocity polygon: 2 %
         else:

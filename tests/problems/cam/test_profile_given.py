@@ -86,3 +86,27 @@ def test_every_row_is_a_construction_to_round_off(path: Path) -> None:
         key = "psi_deg" if "psi_deg" in row else "s"
         assert row[key] == pytest.approx(row[key.replace("_deg", "") + ("_exact_deg" if key == "psi_deg" else "_exact")],
                                          abs=1e-12)
+
+
+def test_points_profile_rows_carry_their_discretisation() -> None:
+    doc = check_json(SCENES / "cam.given_profile_points.toml")
+    v = values(doc)
+    assert {"h", "r0", "delta@E-F", "alpha@F", "v@90"} <= v.keys()
+    for q in v.values():
+        assert q["error_source"] == "discretisation" and "720 chords" in q["basis"], q
+        assert q["rel_error"] < 1e-4, q
+        if q["rel_error"] > 1e-9:  # the estimate from 1440 and 2880 chords tells the true error's size
+            assert 0.1 <= q["error_estimate"] / q["rel_error"] <= 10, q
+
+
+@pytest.mark.parametrize("points, words", [
+    ("[[30, 0], [0, 30], [-30, 0], [-5, -5], [0, -30]]", "not convex"),
+    ("[[30, 0], [0, 30], [-30, 0], [0, -30]]", "5 … "),
+    ("[[30, 0], [0, 30], [-30, 0], [0, -30], [30, 0]]", "given twice"),
+])
+def test_a_bad_points_profile_is_refused(tmp_path: Path, points: str, words: str) -> None:
+    text = (SCENES / "cam.given_profile_points.toml").read_text()
+    text = text.replace(text.split("points = ", 1)[1].split("\n", 1)[0], points)
+    scene = tmp_path / "bad.toml"
+    scene.write_text(text)
+    assert_refused(run_cli("check", str(scene)), "bad.toml", "cam.profile.points", words)

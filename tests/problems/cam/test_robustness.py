@@ -196,9 +196,10 @@ def _judge(doc: dict, skip: tuple[str, ...] = ()) -> list[tuple[str, float, floa
     return out
 
 
-# a cam given by its profile (cam.eccentric_disc_*) is drawn by compass cuts: its rows are constructions
+# a cam given by its profile (cam.eccentric_disc_*, cam.given_profile_*) has its own estimates
 # (tests/problems/cam/test_profile_given.py)
-@pytest.mark.parametrize("path", sorted(p for p in SCENES.glob("cam.*.toml") if "eccentric_disc" not in p.stem),
+@pytest.mark.parametrize("path", sorted(p for p in SCENES.glob("cam.*.toml")
+                                         if not p.stem.startswith(("cam.eccentric_disc", "cam.given_profile"))),
                          ids=lambda p: p.stem)
 def test_every_reference_cam_row_estimates_its_own_error(path):
     doc = check_json(path)
