@@ -110,3 +110,19 @@ def test_a_bad_points_profile_is_refused(tmp_path: Path, points: str, words: str
     scene = tmp_path / "bad.toml"
     scene.write_text(text)
     assert_refused(run_cli("check", str(scene)), "bad.toml", "cam.profile.points", words)
+
+
+def test_documented_refusals_are_real(tmp_path: Path) -> None:
+    """The refusals listed under "A cam given by its profile" in docs/scene-format.md."""
+    text = (ROOT / "docs" / "scene-format.md").read_text(encoding="utf-8")
+    section = text.split("### A cam given by its profile", 1)[1].split("\n### ", 1)[0]
+    documented = section.split("```text\n", 1)[1].split("```", 1)[0].strip().splitlines()
+    base = (SCENES / "cam.eccentric_disc_knife.toml").read_text() + '\n[[cam.contact]]\nname = "E"\npolar = 10\n'
+    edits = [("centre = [-10, 0]", "centre = [-30, 0]"), ("[cam.profile]", "base_radius = 30\n\n[cam.profile]"),
+             ('find = ["h"', 'find = ["delta@E-Z"')]
+    got = []
+    for old, new in edits:
+        scene = tmp_path / "cam.toml"
+        scene.write_text(base.replace(old, new, 1))
+        got.append(run_cli("check", str(scene))[2].strip())
+    assert got == documented
