@@ -55,7 +55,7 @@ from graphmech.errors import NoSolution
 from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.cam_profile import GivenCam, PointsProfile
 
-__all__ = ["contact_delta", "contact_point", "displacement", "lowest_highest", "position",
+__all__ = ["contact_delta", "contact_point", "displacement", "lowest_highest", "max_pressure_angle", "position",
            "pressure_angle", "radii", "rate", "rise"]
 
 _TWO_PI = 2.0 * math.pi
@@ -302,7 +302,7 @@ def contact_delta(cam: GivenCam, polar: float, name: str = "") -> float:
 # dψ/dδ = −σ·rot·(n·J·X)/(n·J·(X − A)) for a rocker's face. The roots are found to 1e-15 of the
 # profile's length: the values are exact to ~1e-12 relative (the spline itself is the given profile).
 
-_GRID = 4096
+_GRID = 1024
 
 
 def _frame(profile: PointsProfile, t: np.ndarray, r: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -424,3 +424,23 @@ def _spline_alpha(cam: GivenCam, delta: float) -> float:
     m = _motion(cam, q)
     m = m / math.hypot(*m)
     return math.asin(min(abs(float(n[0] * m[1] - n[1] * m[0])), 1.0))
+
+
+#: Samples of a turn bracketing the largest pressure angle before it is refined.
+_ALPHA_SAMPLES = 360
+
+
+def max_pressure_angle(cam: GivenCam) -> tuple[float, float]:
+    """The largest pressure angle over a turn and the cam angle where it occurs (rad): the
+    largest of a turn's samples refined by a bounded search between its neighbours (α is smooth
+    for a disc or a spline). An eccentric disc driving a translating knife or roller reaches
+    asin((|e| + |OC|)/ρ), where C stands on the line ⟂ the axis."""
+    d = np.linspace(0.0, _TWO_PI, _ALPHA_SAMPLES, endpoint=False)
+    a = pressure_angle(cam, d)
+    k = int(np.argmax(a))
+    step = _TWO_PI / _ALPHA_SAMPLES
+    res = minimize_scalar(lambda x: -float(pressure_angle(cam, x)), bounds=(d[k] - step, d[k] + step),
+                          method="bounded", options={"xatol": 1e-12})
+    if -float(res.fun) >= float(a[k]):
+        return -float(res.fun), float(res.x) % _TWO_PI
+    return float(a[k]), float(d[k])

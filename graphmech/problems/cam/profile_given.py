@@ -49,7 +49,7 @@ from graphmech.scales import round_scale
 #: What a given-profile scene may show: the inversion drawing and the s–δ diagram.
 GIVEN_SHOW_CHOICES = ("profile", "displacement")
 #: The find names without a position.
-GIVEN_QUANTITIES = {"h": "m", "r0": "m", "r0_actual": "m"}
+GIVEN_QUANTITIES = {"h": "m", "r0": "m", "r0_actual": "m", "alpha_max": "deg", "alpha_max_at": "deg"}
 #: The names read at a position: a cam angle in degrees (s@45) or a contact's name (alpha@F).
 GIVEN_AT = ("s", "psi", "alpha", "v")
 #: The names read between two contacts: delta@E-F, s@E-F, psi@E-F.
@@ -287,7 +287,28 @@ def analyse_given(scene: Scene[GivenCamScene], extra_measured: tuple[tuple[str, 
     an.rows = [_row(an, name) for name in scene.find]
     if isinstance(cam.profile, PointsProfile):
         _estimate(an)
+    an.rows = [_divisions_estimate(an, row) if row.name.startswith("alpha_max") else row for row in an.rows]
     return an
+
+
+def _divisions_estimate(an: GivenCamAnalysis, row: Row) -> Row:
+    """The largest pressure angle read at the divisions, with the error the same reading at 2, 4
+    and 8 times the divisions shows (the last a floor, as the motion-law cam's readings have)."""
+    from dataclasses import replace as copy
+
+    from graphmech.accuracy import READING, estimate_from_three
+
+    n = len(an.positions) - 1
+    read = []
+    for k in (2, 4, 8):
+        finer = copy(an, positions=[an.inversion.at(math.tau * j / (k * n)) for j in range(k * n + 1)])
+        read.append(_row(finer, row.name).graphical)
+    v1 = row.graphical
+    if row.name.endswith("_at"):  # places round the turn: 358° and 2° are 4° apart
+        read = [v1 + (v - v1 + 180.0) % 360.0 - 180.0 for v in read]
+    est = max(estimate_from_three(v1, read[0], read[1]), abs(v1 - read[2]))
+    span = 360.0 if row.name.endswith("_at") else 90.0
+    return row.estimated(READING, est / span, f"{n} divisions of {360.0 / n:.6g}°")
 
 
 def _estimate(an: GivenCamAnalysis) -> None:
@@ -325,6 +346,8 @@ def _where(an: GivenCamAnalysis, at: str) -> tuple[float, float] | None:
 def _unknown(an: GivenCamAnalysis, name: str) -> str | None:
     """Why a find name is not one this scene answers, or None."""
     names = list(an.contacts)
+    if name == "alpha_max_at" and an.cam.follower.contact == "flat":
+        return "alpha_max_at has no meaning for a flat face: its pressure angle is 0 all round"
     if name in GIVEN_QUANTITIES:
         return None
     if "@" not in name:
@@ -354,6 +377,12 @@ def _row(an: GivenCamAnalysis, name: str) -> Row:
         if ang:
             return _angle_row(name, deg(inv.rise()), deg(exact.rise(cam)), 90.0)
         return _length_row(name, inv.rise(), exact.rise(cam), mu, cam.size)
+    if name in ("alpha_max", "alpha_max_at"):  # read off the divisions drawn, as the book marks it
+        k = max(range(len(an.positions)), key=lambda j: an.positions[j].alpha)
+        g_at, (x, x_at) = an.positions[k], exact.max_pressure_angle(cam)
+        if name == "alpha_max":
+            return _angle_row(name, deg(g_at.alpha), deg(x), 90.0)
+        return _angle_row(name, deg(g_at.delta), deg(x_at), 360.0)
     if name in ("r0", "r0_actual"):
         f = cam.follower
         less = f.roller_radius if name == "r0_actual" and f.contact == "roller" else 0.0
