@@ -83,7 +83,9 @@ def _steps(scene: Scene[Any]) -> list[str]:
     from graphmech.problems.cam.steps import cam_steps
 
     if _given(scene):
-        return ["the profile is given: the inversion of its analysis is drawn by `render`"]
+        from graphmech.problems.cam.profile_given import given_steps
+
+        return given_steps(scene)
 
     return cam_steps(scene)
 

@@ -455,3 +455,51 @@ def given_extras(an: GivenCamAnalysis) -> dict[str, Any]:
     contacts = {n: {"delta_deg": math.degrees(g), "delta_exact_deg": math.degrees(x)}
                 for n, (g, x) in an.contacts.items()}
     return {"divisions": rows, "contacts": contacts}
+
+
+def given_steps(scene: Scene[GivenCamScene]) -> list[str]:
+    """The construction protocol of a given cam's analysis by inversion, one line per step."""
+    an = analyse_given(scene, ())
+    cam, inv, mu = an.cam, an.inversion, an.scales["l"]
+    f = cam.follower
+    ang = _angular(cam)
+    r_r = cam.roller
+    out = []
+    if isinstance(cam.profile, PointsProfile):
+        out.append(f"draw the curve through the {len(cam.profile.points)} given points at μl = {mu:g} m/mm "
+                   f"(a French curve; read here as {DRAWN_CHORDS} chords)")
+        if r_r:
+            out.append(f"lay r_r = {_mm(r_r)} off along the curve's normals: the pitch (theoretical) curve")
+    else:
+        out.append(f"draw the disc R = {_mm(cam.disc.radius)} about its centre C, |OC| = {_mm(cam.disc.eccentricity)} "
+                   f"from the turning centre O, at μl = {mu:g} m/mm")
+        if r_r:
+            out.append(f"draw the pitch (theoretical) circle R + r_r = {_mm(cam.pitch_radius())} about C")
+    out.append(f"draw the base circle r0 = {_mm(inv.r0)} about O through the {'profile' if f.contact == 'flat' else 'pitch curve'}'s "
+               f"nearest point, and the circle {_mm(inv.r_max)} through its farthest")
+    step = 360.0 / (len(an.positions) - 1)
+    if isinstance(f, TranslatingFollower):
+        if f.offset:
+            out.append(f"draw the offset circle e = {_mm(abs(f.offset))} about O")
+        what = ("the face ⟂ the axis touches the profile" if f.contact == "flat"
+                else "the axis cuts the pitch curve at the follower point B_k")
+        out.append(f"turn the follower back against the cam (反转法) every {step:g}°: at each position {what}; "
+                   "s_k is read along the axis from the base circle")
+    else:
+        what = ("the face through A_k touches the profile (the tangent from A_k)" if f.contact == "flat"
+                else f"the arm l = {_mm(f.arm)} about A_k cuts the pitch curve at B_k")
+        out.append(f"draw the circle of the pivots a = {_mm(f.pivot_distance)} about O; turn the pivot back against "
+                   f"the cam (反转法) every {step:g}° to A_k: {what}; ψ_k = ∠OA_kB_k − ψ0 is read at A_k")
+    for name, (g, _) in an.contacts.items():
+        c = next(x for x in cam.contacts if x.name == name)
+        if c.polar is None:
+            out.append(f"contact {name} at δ = {math.degrees(g):.6g}° (given)")
+            continue
+        out.append(f"contact {name}: the ray from O at {math.degrees(c.polar):.6g}° cuts the profile at {name}; "
+                   f"the follower turned back through {'it' if f.contact != 'roller' else 'the pitch point on its normal'} "
+                   f"stands at δ_{name} = {math.degrees(g):.6g}°")
+    for row in an.rows:
+        out.append(f"read {row.name} = {row.graphical:.6g} {row.unit} (exact {row.exact:.6g})")
+    out.append("the s–δ diagram: each s_k as an ordinate at δ_k" if not ang else
+               "the ψ–δ diagram: each ψ_k as an ordinate at δ_k")
+    return out

@@ -137,3 +137,12 @@ def test_documented_refusals_are_real(tmp_path: Path) -> None:
         scene.write_text(base.replace(old, new, 1))
         got.append(run_cli("check", str(scene))[2].strip())
     assert got == documented
+
+
+def test_steps_say_the_inversion_with_its_numbers() -> None:
+    code, out, err = run_cli("steps", str(SCENES / "cam.eccentric_disc_oscillating.toml"))
+    assert code == 0, err
+    assert "pitch (theoretical) circle R + r_r = 35 mm" in out and "base circle r0 = 25 mm" in out
+    assert "circle of the pivots a = 50 mm" in out and "δ_E = " in out and "read delta@E-F = " in out
+    code, out, err = run_cli("steps", str(SCENES / "cam.given_profile_points.toml"))
+    assert code == 0 and "through the 8 given points" in out, err
