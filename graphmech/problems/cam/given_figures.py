@@ -6,7 +6,7 @@ profile (at μl)
     of the pivots a; the follower's inverted positions at the divisions (a translating axis from
     its foot, a rocker's pivot and arm) with their pitch points, numbered; each named contact's
     follower drawn bold with its letter at the touched point.
-displacement (at μl for s, or 1°/mm for ψ, and the turn 120 mm long)
+displacement (at μs, chosen to draw the rise some 40 mm high, and μφ, a turn 120 mm long, unless stated)
     the ordinates at the divisions as thin verticals and the curve through the dense closed form.
 """
 from __future__ import annotations
@@ -37,10 +37,6 @@ if TYPE_CHECKING:
     from graphmech.problems.cam.profile_given import GivenCamAnalysis, GivenCamScene
     from graphmech.problems.kind import Footer
     from graphmech.problems.reader import Scene
-
-#: The s–δ diagram's turn, mm.
-TURN_MM = 120.0
-
 
 def _mm(p: tuple[float, float], mu: float) -> tuple[float, float]:
     return (p[0] / mu, p[1] / mu)
@@ -113,11 +109,12 @@ def diagram_items(an: GivenCamAnalysis, notation: str = "en") -> list[Primitive]
 
     cam = an.cam
     ang = isinstance(cam.follower, OscillatingFollower)
-    k_s = (1.0 / math.radians(1.0)) if ang else 1.0 / an.scales["l"]  # mm per unit of s
-    k_d = TURN_MM / math.tau
-    items: list[Primitive] = [Segment((0.0, 0.0), (TURN_MM + 6.0, 0.0), "given"),
+    k_s = 1.0 / an.scales["s"]  # mm per unit of s (m or rad)
+    k_d = 1.0 / an.scales["phi"]
+    turn_mm = math.tau * k_d
+    items: list[Primitive] = [Segment((0.0, 0.0), (turn_mm + 6.0, 0.0), "given"),
                               Segment((0.0, 0.0), (0.0, exact.rise(cam) * k_s + 6.0), "given"),
-                              Label("δ", (TURN_MM + 6.0, 0.0)), Label("ψ" if ang else "s", (0.0, exact.rise(cam) * k_s + 6.0))]
+                              Label("δ", (turn_mm + 6.0, 0.0)), Label("ψ" if ang else "s", (0.0, exact.rise(cam) * k_s + 6.0))]
     for k, p in enumerate(an.positions):
         x = p.delta * k_d
         items.append(Segment((x, 0.0), (x, p.s * k_s), "construction"))
@@ -137,7 +134,7 @@ def diagram_items(an: GivenCamAnalysis, notation: str = "en") -> list[Primitive]
 
 def given_sheet(scene: Scene[GivenCamScene], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.drawing.notation import word
-    from graphmech.problems.cam.figures import WORDS
+    from graphmech.problems.cam.figures import WORDS, drawn_scale
     from graphmech.problems.cam.profile_given import analyse_given
     from graphmech.problems.reader import page_size
 
@@ -149,8 +146,8 @@ def given_sheet(scene: Scene[GivenCamScene], footer: Footer) -> tuple[Sheet, lis
         panels.append(Panel("profile", word("profile", notation, WORDS), tuple(profile_items(an)),
                             (f"μl = {an.scales['l']:g} m/mm",), row=0, scales=(("l", an.scales["l"]),)))
     if "displacement" in scene.show:
-        note = "μψ = 1 °/mm" if ang else f"μs = {an.scales['l']:g} m/mm"
+        (note, bar), (phi_note, _) = drawn_scale("s", an.scales["s"], ang), drawn_scale("phi", an.scales["phi"])
         head = f"{word('displacement', notation, WORDS)} {'ψ' if ang else 's'}–{word('cam angle', notation, WORDS)}"
-        panels.append(Panel("displacement", head, tuple(diagram_items(an, notation)),
-                            (note, f"μφ = {360.0 / TURN_MM:g} °/mm"), row=0))
+        panels.append(Panel("displacement", head, tuple(diagram_items(an, notation)), (note, phi_note), row=0,
+                            scales=((bar, an.scales["s"]), ("phi", an.scales["phi"]))))
     return Sheet(scene.title, tuple(panels), page_size(scene), tuple(footer)), list(an.warnings)

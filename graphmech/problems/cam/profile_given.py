@@ -188,7 +188,9 @@ def parse_given_scene(data: Mapping[str, Any], source: str, top: Reader, order: 
 
     problems = top.problems
     title, show, find = read_header(top, GIVEN_SHOW_CHOICES, ("profile",))
-    scales = read_scales(top, cam=True, follower=None)
+    follower_table = cast("dict[str, Any]", data["cam"]).get("follower")
+    kind = follower_table.get("type") if isinstance(follower_table, dict) else None
+    scales = read_scales(top, cam=True, follower=kind if kind in ("translating", "oscillating") else None)
     for key in LINKAGE_KEYS:
         if key in data:
             top.used.add(key)
@@ -238,7 +240,10 @@ class GivenCamAnalysis:
     extra_measured: tuple[tuple[str, float], ...] = ()
 
     def scale_notes(self) -> list[str]:
-        return [f"μl = {v:g} m/mm" + ("" if k in self.stated else " (chosen)") for k, v in self.scales.items()]
+        from graphmech.problems.cam.figures import scale_note
+
+        angular = isinstance(self.cam.follower, OscillatingFollower)
+        return [scale_note(k, v, angular) + ("" if k in self.stated else " (chosen)") for k, v in self.scales.items()]
 
 
 def _angular(cam: GivenCam) -> bool:
@@ -270,11 +275,20 @@ def analyse_given(scene: Scene[GivenCamScene], extra_measured: tuple[tuple[str, 
     inv = inversion(cam)
     n = max(1, round(math.tau / gs.step))
     positions = [inv.at(math.tau * k / n) for k in range(n + 1)]
-    stated = {"l"} if "l" in scene.scales else set()
+    stated: set[str] = {k for k in ("l", "s", "phi") if k in scene.scales}
     reach = exact.radii(cam)[1] + cam.roller
     if isinstance(cam.follower, OscillatingFollower):
         reach = max(reach, cam.follower.pivot_distance + cam.follower.arm)
     scales = {"l": float(scene.scales["l"]) if "l" in stated else round_scale(2.2 * reach / 150.0)}
+    # the s–δ diagram: the rise some 40 mm high, a turn some 120 mm long, unless the scene says
+    h = exact.rise(cam)
+    if "s" in stated:
+        scales["s"] = float(scene.scales["s"])
+    elif isinstance(cam.follower, OscillatingFollower):  # books give a swing's scale in degrees per mm
+        scales["s"] = math.radians(round_scale(math.degrees(h) / 40.0)) if h > 0 else math.radians(1.0)
+    else:
+        scales["s"] = round_scale(h / 40.0) if h > 0 else scales["l"]
+    scales["phi"] = float(scene.scales["phi"]) if "phi" in stated else math.radians(3.0)
     an = GivenCamAnalysis(scene, cam, inv, scales, stated, _contact_deltas(scene, inv), positions,
                           extra_measured=tuple(extra_measured))
     problems = []
