@@ -71,12 +71,6 @@ class GivenCamScene:
     step: float = GIVEN_STEP_DEFAULT
 
 
-def poses_given(data: Mapping[str, Any]) -> bool:
-    """Whether a cam scene gives the profile (``[cam.profile]``) rather than the motion law."""
-    cam = data.get("cam")
-    return isinstance(cam, dict) and "profile" in cam
-
-
 def _mm(x: float) -> str:
     return f"{compact(float(f'{x * 1e3:.6g}'))} mm"
 

@@ -146,3 +146,24 @@ def test_steps_say_the_inversion_with_its_numbers() -> None:
     assert "circle of the pivots a = 50 mm" in out and "δ_E = " in out and "read delta@E-F = " in out
     code, out, err = run_cli("steps", str(SCENES / "cam.given_profile_points.toml"))
     assert code == 0 and "through the 8 given points" in out, err
+
+
+@pytest.mark.parametrize("contact, words", [
+    ('name = "F"\npolar = 10\ndelta = 20', ("cam.contact[1].delta", "not both")),
+    ('name = "E"\npolar = 10', ("cam.contact[1].name", "named twice")),
+    ('name = "2E"\npolar = 10', ("cam.contact[1].name", "a contact's name")),
+    ('name = "F"', ("cam.contact[1].polar", "missing")),
+])
+def test_a_bad_contact_is_refused(tmp_path: Path, contact: str, words: tuple[str, ...]) -> None:
+    text = (SCENES / "cam.eccentric_disc_knife.toml").read_text()
+    scene = tmp_path / "bad.toml"
+    scene.write_text(text + '\n[[cam.contact]]\nname = "E"\npolar = 10\n\n[[cam.contact]]\n' + contact + "\n")
+    assert_refused(run_cli("check", str(scene)), "bad.toml", *words)
+
+
+def test_contact_given_by_cam_angle_reads_there(tmp_path: Path) -> None:
+    text = (SCENES / "cam.eccentric_disc_knife.toml").read_text().replace('find = ["h"', 'find = ["s@K", "h"')
+    scene = tmp_path / "k.toml"
+    scene.write_text(text + '\n[[cam.contact]]\nname = "K"\ndelta = 90\n')
+    v = values(check_json(scene))
+    assert v["s@K"]["exact"] == pytest.approx(values(check_json(SCENES / "cam.eccentric_disc_knife.toml"))["s@90"]["exact"])
