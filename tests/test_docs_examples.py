@@ -85,13 +85,13 @@ def test_documented_scene_constructs_and_agrees_with_exact(text):
         for verdict in verdicts:
             assert verdict.ok, verdict
         return
-    if scene.kind == "cam":
-        from graphmech.problems.cam.check import analyse_cam, judge_cam
+    if scene.kind == "cam":  # through the kind: a motion law's inversion, or a given profile's analysis
+        from graphmech.problems import check as check_cam
 
-        can = analyse_cam(scene)
+        can, cam_verdicts, _, _ = check_cam(scene)
         for row in can.rows:  # a discretising method: finite, and within a few % at the scene's step
             assert math.isfinite(row.graphical) and math.isfinite(row.exact), row
-        for verdict in judge_cam(can):
+        for verdict in cam_verdicts:
             assert verdict.ok, verdict
         return
     if scene.kind == "cycle":  # a full cycle / the characteristics: drawn against closed forms

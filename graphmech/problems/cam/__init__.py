@@ -11,31 +11,54 @@ from graphmech.problems.kind import Bench, Extra, Footer, Kind
 
 if TYPE_CHECKING:  # annotations only: the kind's modules load when first used
     from graphmech.drawing.primitives import Sheet
-    from graphmech.problems.cam.check import CamAnalysis
     from graphmech.problems.cam.scene import CamScene
     from graphmech.problems.judging import Verdict
     from graphmech.problems.reader import Reader, Scene
 
 
-def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[CamScene]:
+def _read(data: Mapping[str, Any], source: str, top: Reader, order: Mapping[str, int]) -> Scene[Any]:
     from graphmech.problems.cam.scene import parse_cam_scene
 
+    if isinstance(data.get("cam"), dict) and "profile" in data["cam"]:  # the profile given: its analysis
+        from graphmech.problems.cam.profile_given import parse_given_scene
+
+        return parse_given_scene(data, source, top, order)
     return parse_cam_scene(data, source, top, order)
 
 
-def _analyse(scene: Scene[CamScene], extra: Extra) -> CamAnalysis:
+def _given(scene: Scene[Any]) -> bool:
+    return type(scene.problem).__name__ == "GivenCamScene"
+
+
+def _analyse(scene: Scene[Any], extra: Extra) -> Any:
     from graphmech.problems.cam.check import analyse_cam
 
+    if _given(scene):
+        from graphmech.problems.cam.profile_given import analyse_given
+
+        return analyse_given(scene, extra)
     return analyse_cam(scene, extra)
 
 
-def _judge(an: CamAnalysis, extra: Extra) -> list[Verdict]:
+def _judge(an: Any, extra: Extra) -> list[Verdict]:
     from graphmech.problems.cam.check import judge_cam
 
+    if _given(an.scene):
+        from graphmech.problems.cam.profile_given import judge_given
+
+        return judge_given(an)
     return judge_cam(an)
 
 
-def _sheet(scene: Scene[CamScene], footer: Footer) -> tuple[Sheet, list[str]]:
+def _sheet(scene: Scene[Any], footer: Footer) -> tuple[Sheet, list[str]]:
+    if _given(scene):
+        from graphmech.problems.cam.given_figures import given_sheet
+
+        return given_sheet(scene, footer)
+    return _law_sheet(scene, footer)
+
+
+def _law_sheet(scene: Scene[CamScene], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.cam.check import analyse_cam
     from graphmech.problems.cam.figures import cam_sheet
     from graphmech.problems.judging import finite
@@ -64,12 +87,21 @@ def _sheet(scene: Scene[CamScene], footer: Footer) -> tuple[Sheet, list[str]]:
     return sheet, list(an.warnings)
 
 
-def _extras(an: CamAnalysis) -> dict[str, Any]:
+def _extras(an: Any) -> dict[str, Any]:
+    if _given(an.scene):
+        from graphmech.problems.cam.profile_given import given_extras
+
+        return given_extras(an)
     return {"impacts": an.impacts, **({"divisions": an.divisions} if an.divisions else {})}
 
 
-def _steps(scene: Scene[CamScene]) -> list[str]:
+def _steps(scene: Scene[Any]) -> list[str]:
     from graphmech.problems.cam.steps import cam_steps
+
+    if _given(scene):
+        from graphmech.problems.cam.profile_given import given_steps
+
+        return given_steps(scene)
 
     return cam_steps(scene)
 

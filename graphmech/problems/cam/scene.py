@@ -462,3 +462,8 @@ def parse_cam_scene(
         kind="cam",
         problem=cam,
     )
+
+
+#: [cam.follower] as the kind reads it, for a scene that gives the cam's profile
+#: (graphmech.problems.cam.profile_given); r0 None leaves the checks against the base circle out.
+read_follower = _read_follower

@@ -1,0 +1,36 @@
+"""The model of a cam given by its profile: the eccentric disc's pitch and base radii."""
+from __future__ import annotations
+
+import pytest
+
+from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
+from graphmech.mechanisms.cam_profile import EccentricDisc, GivenCam
+
+
+def test_radii_of_an_eccentric_disc() -> None:
+    disc = EccentricDisc(0.030, (0.006, -0.008))
+    assert disc.eccentricity == pytest.approx(0.010, rel=1e-15)
+    roller = GivenCam(disc, TranslatingFollower(0.0, "roller", 0.005))
+    assert roller.pitch_radius() == pytest.approx(0.035) and roller.base_radius() == pytest.approx(0.025)
+    flat = GivenCam(disc, OscillatingFollower(0.09, 0.0, "flat"))
+    assert flat.pitch_radius() == 0.030 and flat.base_radius() == pytest.approx(0.020)
+
+
+def test_points_profile_is_the_spline_through_them_counter_clockwise() -> None:
+    import math
+
+    import numpy as np
+
+    from graphmech.mechanisms.cam_profile import PointsProfile, shape_problem
+
+    square = ((0.02, 0.0), (0.0, -0.02), (-0.02, 0.0), (0.0, 0.02))  # given clockwise
+    prof = PointsProfile(square)
+    assert prof.length == pytest.approx(4 * 0.02 * math.sqrt(2))
+    p, d = prof.at(np.linspace(0.0, prof.length, 4, endpoint=False)), prof.at(np.array([0.0]), 1)
+    assert sorted(map(tuple, np.round(p, 15).tolist())) == sorted(square)  # through every point
+    assert p[0, 0] * d[0, 1] - p[0, 1] * d[0, 0] > 0.0  # turned counter-clockwise round O
+    assert shape_problem(prof) is None
+    dented = PointsProfile(((0.03, 0.0), (0.0, 0.03), (-0.03, 0.0), (-0.005, -0.005), (0.0, -0.03)))
+    assert "not convex" in str(shape_problem(dented))
+    away = PointsProfile(tuple((0.05 + 0.01 * math.cos(a), 0.01 * math.sin(a)) for a in np.linspace(0, 6, 8)))
+    assert "inside" in str(shape_problem(away))
