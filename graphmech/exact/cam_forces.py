@@ -110,6 +110,9 @@ def solve(cam: DiscCam, data: CamFriction) -> CamForces:
         a = np.array([[p.d[0], 1.0, 1.0],
                       [p.d[1], -data.f * s1, -data.f * s2],
                       [arm, -y1, -y2]])
+        if not np.isfinite(a).all() or np.linalg.cond(a) > 1e12:  # B1, B2 a hair apart for their height
+            raise NoSolution("the guide's two bearings are too close, for their height above the roller, "
+                             "to tell their reactions apart (guide_length much shorter than overhang)")
         return np.asarray(np.linalg.solve(a, np.array([0.0, data.load, 0.0])), dtype=float)
 
     free = system(0.0, 0.0)

@@ -612,18 +612,18 @@ def layout_sheet(
     for i, (panel, size) in enumerate(zip(sheet.panels, panel_sizes)):
         if size.w > avail_w + 1e-9:
             warnings.append(
-                f"panel {panel.name!r} is {size.w:.1f} mm wide but the page leaves {avail_w:.1f} mm "
+                f"panel {panel.name!r} is {_mm(size.w)} mm wide but the page leaves {avail_w:.1f} mm "
                 "between its margins; its scale μ is kept, so it runs off the page"
             )
     row_w, row_h = _row_sizes(rows, sizes, gap)
     for r, w in zip(rows, row_w):
         if len(r) > 1 and w > avail_w + 1e-9:
-            warnings.append(f"a row of {len(r)} panels is {w:.1f} mm wide but the page leaves "
+            warnings.append(f"a row of {len(r)} panels is {_mm(w)} mm wide but the page leaves "
                             f"{avail_w:.1f} mm; their scales μ are kept, so it runs off the page")
     total_h = sum(row_h) + gap * (len(rows) - 1) if rows else 0.0
     if total_h > avail_h + 1e-9:
         warnings.append(
-            f"the panels need {total_h:.1f} mm of height in {len(rows)} row(s) but the page "
+            f"the panels need {_mm(total_h)} mm of height in {len(rows)} row(s) but the page "
             f"leaves {avail_h:.1f} mm; their scales μ are kept, so they run off the page"
         )
 
@@ -637,6 +637,15 @@ def layout_sheet(
                        for i in range(len(panel_sizes)))
     return SheetLayout(placements, title_at, footer_at, tuple(warnings), (page_w, page_h),
                        None if block is None or block_at is None else (block, block_at), title)
+
+
+def _mm(x: float) -> str:
+    """A size on paper in a warning: 0.1 mm, or three figures for an absurd one (1e300 mm).
+
+    >>> _mm(436.66), _mm(2.4e300)
+    ('436.7', '2.4e+300')
+    """
+    return f"{x:.1f}" if x < 1e7 else f"{x:.3g}"
 
 
 def _frame(corner: XY, size: _Size) -> Box:

@@ -169,6 +169,11 @@ def arrow_shapes(a: Arrow, style: Style = DEFAULT) -> list[Shape]:
     return shapes
 
 
+#: A dashed line needing more dashes than this (a line metres long on paper, at a stated μl) is
+#: drawn solid: cutting it would take minutes and megabytes.
+MOST_DASHES = 20000
+
+
 def dash_pieces(points: Sequence[XY], closed: bool, pattern: Sequence[float]) -> list[tuple[XY, ...]]:
     """The dashes of a dashed polyline: pieces of the path (corners kept) laid along its length
     by ``pattern`` (on, off, on, off … mm, repeated), starting with a dash at the first point.
@@ -180,6 +185,9 @@ def dash_pieces(points: Sequence[XY], closed: bool, pattern: Sequence[float]) ->
     pattern = [float(v) for v in pattern if v > 0.0] or [1.0]
     if len(pattern) % 2:
         pattern = pattern * 2
+    total = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(pts[:-1], pts[1:]))
+    if not math.isfinite(total) or total > MOST_DASHES * sum(pattern) / len(pattern):
+        return [tuple(pts)] if len(pts) > 1 else []  # kilometres of paper: one solid line, not 1e300 dashes
     out: list[tuple[XY, ...]] = []
     k, left, on = 0, pattern[0], True  # current pattern entry, length left of it, drawing?
     piece: list[XY] = [pts[0]] if pts else []

@@ -76,3 +76,10 @@ def test_the_forces_are_found_on_the_rise_of_a_translating_roller_follower():
     knife = DiscCam(0.040, TranslatingFollower(0.0), PROGRAM)
     with pytest.raises(OutOfDomain, match="translating roller"):
         solve(knife, data())
+
+
+def test_bearings_a_hair_apart_for_their_height_are_refused_not_a_singular_matrix():
+    # fuzz seed 94: overhang 1.8e16 m against a 60 mm guide made numpy's solve raise LinAlgError
+    with pytest.raises(NoSolution, match="too close"):
+        solve(cam(), data(f=0.0, overhang=1.8e16))
+    assert solve(cam(), data(f=0.0, overhang=3.0)).N1 != 0.0  # a long but sane overhang is still solved

@@ -380,3 +380,12 @@ def test_a_plate_and_its_number_are_drawn_in_one_group() -> None:
     poly = rec.calls[i + 1][1]
     cx = sum(p[0] for p in poly) / 3
     assert text[1] == "3" and text[2][0] == pytest.approx(cx) and text[6] == "label"
+
+
+def test_a_dashed_line_kilometres_long_is_drawn_solid_not_cut_forever():
+    # a dash-dot common normal of a higher pair with ρ = 1e300 mm once took minutes (fuzz seed 94)
+    from graphmech.render.sheet import MOST_DASHES, dash_pieces
+
+    assert dash_pieces([(0.0, 0.0), (1e300, 0.0)], False, (6.0, 1.5, 1.0, 1.5)) == [((0.0, 0.0), (1e300, 0.0))]
+    short = dash_pieces([(0.0, 0.0), (100.0, 0.0)], False, (3.0, 1.0))
+    assert len(short) == 25 and MOST_DASHES * 2.0 > 100.0

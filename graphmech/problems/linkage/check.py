@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any, cast
 import numpy as np
 
 from graphmech import tolerances as T
-from graphmech.errors import DegenerateConstruction, NotApplicable, OutOfDomain, SceneError
+from graphmech.errors import DegenerateConstruction, OutOfDomain, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Linkage, Triad
 from graphmech.geometry.primitives import degrees_0_360
@@ -296,8 +296,10 @@ def _analyse(scene: Scene[object], extra_measured: tuple[tuple[str, float], ...]
                                f"({exact.reason[i]}); its values are not checked")
     wanted = [(display, q, i) for display, q, i in wanted if solutions[i] is not None and exact.valid[i]]
     nowhere = {(q, i): no_dir for _, q, i in wanted if (no_dir := undefined_direction(an, q, i))}
-    if nowhere and len(positions) == 1:
-        raise NotApplicable(next(iter(nowhere.values())))
+    if nowhere and len(positions) == 1:  # the one position asked for: refused at its find entry
+        q0 = next(iter(nowhere))[0]
+        k = next(k for k, raw in enumerate(scene.find) if split_name(raw)[0] == q0)
+        raise SceneError([(f"find[{k}]", next(iter(nowhere.values())))], scene.source)
     an.warnings.extend(dict.fromkeys(nowhere.values()))
     an.rows = [_row(an, display, q, i) for display, q, i in wanted if (q, i) not in nowhere]
     if far:

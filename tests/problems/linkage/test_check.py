@@ -585,7 +585,7 @@ def test_the_direction_of_a_zero_velocity_is_refused_at_one_position(tmp_path):
     text = (SCENES / "kin.transmission_angle-slider_crank.toml").read_text(encoding="utf-8")
     text = text.replace("angle = [45, 250]", "angle = 0").replace("through = [0, 12]", "through = [0, 0]")
     text = text.replace('find = ["gamma_C", "pressure_angle_C"]', 'find = ["dir_v_C"]')
-    assert_refused(run_cli("check", str(_write(tmp_path, text))), "s.toml", "v_C = 0", "dir_v_C", "no direction")
+    assert_refused(run_cli("check", str(_write(tmp_path, text))), "s.toml", "find[0]", "v_C = 0", "dir_v_C", "no direction")
 
 
 def test_a_cycle_skips_a_zero_velocity_direction_with_a_warning(tmp_path):
