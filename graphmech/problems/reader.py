@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from decimal import Decimal
 from typing import Any, Generic, Iterable, Mapping, NoReturn, Self, TypeGuard, TypeVar, cast, overload
 
-from graphmech.errors import SceneError
+from graphmech.errors import OutOfDomain, SceneError
 from graphmech.drawing.primitives import TitleBlock
 from graphmech.scales import FIT, FIT_WORKING_AREA, PAPER, scale_out_of_range
 from graphmech.mechanisms.linkage import Linkage, Positions
@@ -875,14 +875,14 @@ class Written(float):
         written = text.strip()
         m = WRITTEN_NUMBER.fullmatch(written)
         if written.lstrip("+-").lower() in ("nan", "inf", "infinity"):
-            raise ValueError(f"must be a finite number, not {text!r}")
+            raise OutOfDomain(f"must be a finite number, not {text!r}")
         if m is None or not (m[2] or m[3]):
-            raise ValueError(f"must be a finite number as written (1.44, +2.17, -0.0120, 1.44e3), not {text!r}")
+            raise OutOfDomain(f"must be a finite number as written (1.44, +2.17, -0.0120, 1.44e3), not {text!r}")
         x = float.__new__(cls, written)
         place = int(m[4] or 0) - len(m[3] or "")
         half = float(Decimal(5).scaleb(place - 1))
         if not (math.isfinite(x) and math.isfinite(half)):
-            raise ValueError(f"must be a finite number in double precision's range, not {text!r}")
+            raise OutOfDomain(f"must be a finite number in double precision's range, not {text!r}")
         x.text, x.half_unit, x.signed = written, half, bool(m[1])
         x.figures = len(((m[2] or "") + (m[3] or "")).lstrip("0"))
         return x
