@@ -10,8 +10,8 @@ rad/s); nothing here draws or checks.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Mapping
 
 XY = tuple[float, float]
 
@@ -110,4 +110,4 @@ def on_wheel(w: Wheel, c: XY, p: XY) -> bool:
     return abs(math.dist(c, p) - w.radius) <= TOUCH_REL * max(w.radius, math.dist(c, p))
 
 
-__all__ = ["Revolute", "Rolling", "RollingDrive", "TOUCH_REL", "Wheel", "contact", "on_wheel"]
+__all__ = ["TOUCH_REL", "Revolute", "Rolling", "RollingDrive", "Wheel", "contact", "on_wheel"]

@@ -3,7 +3,14 @@ from __future__ import annotations
 
 import pytest
 
-from graphmech.mechanisms.rolling import Revolute, Rolling, RollingDrive, Wheel, contact, on_wheel
+from graphmech.mechanisms.rolling import (
+    Revolute,
+    Rolling,
+    RollingDrive,
+    Wheel,
+    contact,
+    on_wheel,
+)
 
 
 def test_external_and_internal_contacts():

@@ -100,8 +100,8 @@ def construct(scene: Scene[CentresScene]) -> tuple[InstantCentres, float, bool]:
     def direct(i: str, j: str, p: tuple[float, float], via: str) -> None:
         key = pair(links, i, j)
         if key in centres:
-            raise SceneError([("centres", f"{centre_name(*key)} is stated twice (links {i} and {j} are joined "
-                                          "by two pairs)")], scene.source)
+            raise SceneError([("centres", (f"{centre_name(*key)} is stated twice (links {i} and {j} are joined "
+                                          "by two pairs)"))], scene.source)
         centres[key] = Centre(key, "direct", (p[0] / mu, p[1] / mu), None, (via,))
         order.append(key)
 
@@ -136,9 +136,9 @@ def _kennedy_holds(scene: Scene[CentresScene], links: tuple[str, ...], centres: 
         off = abs((x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)) / base
         if off > LINE_REL * size:
             names = [centre_name(*x) for x in keys]
-            raise SceneError([("centres", f"{names[0]}, {names[1]} and {names[2]} are not on one line "
+            raise SceneError([("centres", (f"{names[0]}, {names[1]} and {names[2]} are not on one line "
                                           f"({off * 1.0:.3g} mm off at μl): by Kennedy's theorem the pairs "
-                                          f"lock links {i}, {j}, {k}")], scene.source)
+                                          f"lock links {i}, {j}, {k}"))], scene.source)
 
 
 def ratio(ic: InstantCentres, i: str, j: str) -> tuple[float, float, float] | str:
@@ -218,18 +218,18 @@ def _row(an: CentresAnalysis, name: str) -> list[Row] | str:
         m = ic.motions.get(k)
         if m is None:
             return f"ω{k} is undetermined: {ic.undetermined.get(k, '')}"
-        e = ex[k][0]
-        return [Row(name, "rad/s", m.drawn, m.scale if m.scale is not None else 1.0, m.omega, e,
-                    abs(m.omega - e) / max(abs(e), abs(ex[ic.links[0]][0]), abs(an.scene.problem.drive.omega)))]
+        we = ex[k][0]
+        return [Row(name, "rad/s", m.drawn, m.scale if m.scale is not None else 1.0, m.omega, we,
+                    abs(m.omega - we) / max(abs(we), abs(an.scene.problem.drive.omega)))]
     i, j = args
     r = ratio(ic, i, j)
     if isinstance(r, str):
         return f"{name}: {r}"
     num, den, g = r
-    e = ex[i][0] / ex[j][0] if ex[j][0] != 0.0 else math.inf
-    if not math.isfinite(e):
+    re_ = ex[i][0] / ex[j][0] if ex[j][0] != 0.0 else math.inf
+    if not math.isfinite(re_):
         return f"{name}: ω{j} = 0 exactly"
-    return [Row(name, "", num, 1.0 / den, g, e, abs(g - e) / max(abs(e), 1.0))]
+    return [Row(name, "", num, 1.0 / den, g, re_, abs(g - re_) / max(abs(re_), 1.0))]
 
 
 def judge_centres(an: CentresAnalysis) -> list[Verdict]:

@@ -10,7 +10,16 @@ import math
 from itertools import combinations
 
 from graphmech.drawing.lettering import LETTER, scale_text
-from graphmech.drawing.primitives import Circle, FixedPivot, Hinge, Label, Panel, Primitive, Segment, Sheet
+from graphmech.drawing.primitives import (
+    Circle,
+    FixedPivot,
+    Hinge,
+    Label,
+    Panel,
+    Primitive,
+    Segment,
+    Sheet,
+)
 from graphmech.problems.centres.check import CentresAnalysis, text_lines
 from graphmech.problems.instant_centres.figures import circle_panel, label
 
@@ -39,29 +48,29 @@ def drive_items(an: CentresAnalysis) -> list[Primitive]:
             (c[0] + (r + HATCH_MM + 2.0) * math.cos(ang), c[1] + (r + HATCH_MM + 2.0) * math.sin(ang))
         items.append(Label(w.link, at, (), LETTER, italic=False))
     by_link: dict[str, list[str]] = {}
-    for r in d.revolutes:
-        for x in r.links:
-            by_link.setdefault(x, []).append(r.at)
+    for rev in d.revolutes:
+        for x in rev.links:
+            by_link.setdefault(x, []).append(rev.at)
     for lid, names in by_link.items():  # an arm (a carrier) joins two revolutes of one moving link
         if lid == d.frame:
             continue
-        for a, b in combinations(dict.fromkeys(names), 2):
-            items.append(Segment(pts[a], pts[b], "given"))
-            mid = ((pts[a][0] + pts[b][0]) / 2, (pts[a][1] + pts[b][1]) / 2)
+        for n0, n1 in combinations(dict.fromkeys(names), 2):
+            items.append(Segment(pts[n0], pts[n1], "given"))
+            mid = ((pts[n0][0] + pts[n1][0]) / 2, (pts[n0][1] + pts[n1][1]) / 2)
             items.append(Label(lid, mid, (), LETTER, italic=False))
-    for r in d.revolutes:
-        items.append(FixedPivot(pts[r.at]) if d.frame in r.links else Hinge(pts[r.at]))
-    for i, j, k in combinations(ic.links, 3):  # Kennedy's lines: three centres of three links in line
-        cs = [ic.centre(i, j), ic.centre(j, k), ic.centre(i, k)]
-        ps = [c.point for c in cs if c.point is not None]
+    for rev in d.revolutes:
+        items.append(FixedPivot(pts[rev.at]) if d.frame in rev.links else Hinge(pts[rev.at]))
+    for i, j, m in combinations(ic.links, 3):  # Kennedy's lines: three centres of three links in line
+        cs = [ic.centre(i, j), ic.centre(j, m), ic.centre(i, m)]
+        ps = [x.point for x in cs if x.point is not None]
         if len(ps) == 3 and max(math.dist(p, q) for p, q in combinations(ps, 2)) > 1e-6 * ic.size:
             far = max(combinations(ps, 2), key=lambda pq: math.dist(*pq))
             items.append(Segment(far[0], far[1], "construction", dashed=True))
     for key in ic.order:
-        c = ic.centres[key]
-        if c.point is not None:
-            items.append(Circle(c.point, 0.9, "result"))
-            items.append(Label(label(*key), c.point, ((1.0, 0.0), (-1.0, 0.0))))
+        p = ic.centres[key].point
+        if p is not None:
+            items.append(Circle(p, 0.9, "result"))
+            items.append(Label(label(*key), p, ((1.0, 0.0), (-1.0, 0.0))))
     return items
 
 

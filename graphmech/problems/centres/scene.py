@@ -11,10 +11,18 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any, Mapping
+from typing import Any
 
-from graphmech.mechanisms.rolling import Revolute, Rolling, RollingDrive, Wheel, contact, on_wheel
+from graphmech.mechanisms.rolling import (
+    Revolute,
+    Rolling,
+    RollingDrive,
+    Wheel,
+    contact,
+    on_wheel,
+)
 from graphmech.problems.reader import (
     LINKAGE_KEYS,
     MISSING,
@@ -107,12 +115,12 @@ def _read(c: Reader) -> RollingDrive | None:
     for r in tables["revolute"]:
         links = _links(r, "links", two=False)
         at = r.raw("at", required=True, hint='the joint, a point name such as "O"')
-        name = None if at is MISSING else r.point_name(at, r.at("at"))
+        joint = None if at is MISSING else r.point_name(at, r.at("at"))
         r.finish()
-        if name is not None and points and name not in points:
-            r.problem(r.at("at"), f"no point {name!r} in {c.at('points')}")
-        elif links is not None and name is not None:
-            revolutes.append(Revolute(links, name))
+        if joint is not None and points and joint not in points:
+            r.problem(r.at("at"), f"no point {joint!r} in {c.at('points')}")
+        elif links is not None and joint is not None:
+            revolutes.append(Revolute(links, joint))
     contacts: list[Rolling] = []
     for r in tables["rolling"]:
         links = _links(r, "links", two=True)
@@ -167,7 +175,7 @@ def _contact(r: Reader, links: tuple[str, ...], wheels: list[Wheel], points: Map
 def _connected(c: Reader, d: RollingDrive) -> None:
     """The frame and the driver take part, and the driver turns about a revolute on the frame."""
     links = d.links()
-    if not any(d.frame in p.links for p in (*d.revolutes, *d.contacts)):
+    if not any(d.frame in r.links for r in d.revolutes) and not any(d.frame in x.links for x in d.contacts):
         c.problem(c.at("frame"), f"no revolute or contact joins the frame {d.frame!r}")
     if d.driver == d.frame:
         c.problem(c.at("driver"), "the driver is the frame: it does not turn")
