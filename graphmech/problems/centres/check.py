@@ -289,6 +289,13 @@ def centres_steps(scene: Scene[CentresScene]) -> list[str]:
                        f"{centre_name(*pair(ic.links, m, key[1]))} meet; a dashed chord.")
         else:
             out.append(f"{n} is undetermined: {c.why}.")
+    for i, j, k in combinations(ic.links, 3):  # the direct centres obey Kennedy: three of three links in line
+        keys = (pair(ic.links, i, j), pair(ic.links, j, k), pair(ic.links, i, k))
+        cs = [ic.centres[x] for x in keys]
+        ps = [c.point for c in cs if c.kind == "direct" and c.point is not None]
+        if len(ps) == 3 and min(math.dist(p, q) for p, q in combinations(ps, 2)) > 1e-9 * ic.size:
+            out.append(f"Kennedy's theorem: {', '.join(centre_name(*x) for x in keys[:2])} and "
+                       f"{centre_name(*keys[2])} lie on one line (checked).")
     out.extend(text_lines(an)[len(ic.order):])
     return out
 

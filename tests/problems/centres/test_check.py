@@ -172,7 +172,10 @@ def test_the_ratio_reads_signed_lengths_and_the_steps_name_kennedy():
     steps = centres_steps(load_scene(PLANETARY))
     assert steps[0].startswith("Number the links 1, 2, 3, 4 (the frame 4)")
     assert any(s.startswith("P12: where the two wheels touch") for s in steps)
-    assert steps[-1] == "ω1/ω2 = P24P12 / P14P12 = -0.75 (opposite senses)"
+    assert steps[-4:] == ["Kennedy's theorem: P12, P23 and P13 lie on one line (checked).",
+                          "Kennedy's theorem: P12, P24 and P14 lie on one line (checked).",
+                          "Kennedy's theorem: P23, P34 and P24 lie on one line (checked).",
+                          "ω1/ω2 = P24P12 / P14P12 = -0.75 (opposite senses)"]
 
 
 def test_measured_values_are_judged(tmp_path):
