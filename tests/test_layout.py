@@ -795,7 +795,8 @@ def test_a_scene_of_each_kind_reads_as_that_kind():
                   "force.wedge_F1430": "efficiency",  # a wedge: forces alone, no mechanism
                   "linkage.slider_crank_offset": "linkage", "linkage.slider_fixed_angle_guide": "linkage",
                   "linkage.offset_guide_bar": "linkage",
-                  "linkage.crank_rocker_synthesis_K1.5": "synthesis"}  # the bank's id: a linkage designed
+                  "linkage.crank_rocker_synthesis_K1.5": "synthesis",  # the bank's id: a linkage designed
+                  "ic.friction_planetary": "centres"}  # wheels in rolling contact: no linkage, its direct centres
     got = {p.stem: load_scene(p).kind for p in sorted((ROOT / "figures" / "scenes").glob("*.toml"))}
     want = {stem: exceptions.get(stem, by_prefix[stem.split(".")[0]]) for stem in got}
     assert got == want

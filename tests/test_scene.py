@@ -104,7 +104,8 @@ def test_each_doc_example_parses(index: int, tmp_path: Path) -> None:
     if scene.kind == "flywheel" and scene.linkage is None:  # a machine without a linkage
         assert scene.positions is None
         return
-    if scene.kind in ("efficiency", "balancing", "structure", "gears", "trains", "synthesis", "other"):  # no linkage
+    if scene.kind in ("efficiency", "balancing", "structure", "gears", "trains", "synthesis", "other",
+                      "centres"):  # no linkage
         assert scene.linkage is None and scene.positions is None
         return
     assert scene.linkage.frame_link not in scene.linkage.links()

@@ -350,6 +350,21 @@ def instant_centres(linkage: Linkage, pos: Mapping[str, XY], driver_omega: float
         centres[key] = c
         order.append(key)
 
+    kennedy(links, centres, order, size)
+    motions, undetermined = _motions(linkage, links, centres, pos, driver_omega, driver_velocity, mu_l, size)
+    return InstantCentres(links, frame, centres, tuple(order), motions, undetermined, size)
+
+
+def kennedy(links: tuple[str, ...], centres: dict[tuple[str, str], Centre], order: list[tuple[str, str]],
+            size: float) -> None:
+    """Complete ``centres`` (keyed by :func:`pair`, the direct ones given) by Kennedy's theorem, in place.
+
+    Every missing P_ij lies on the line P_ik P_kj for each third link k; two distinct lines fix it
+    (the best-conditioned pair of them is kept). What no two lines fix is left "undetermined" with
+    the reason. ``order`` receives the keys in the order they were found. Used by
+    :func:`instant_centres` (a linkage) and by a scene that states its direct centres itself
+    (graphmech.problems.centres: wheels in rolling contact).
+    """
     # Kennedy: P_ij on the lines P_ik–P_kj; two distinct lines fix it. Go round until no chord
     # can be added (a draftsman's passes over the polygon of links).
     unknown = [key for key in combinations(links, 2) if key not in centres]
@@ -392,9 +407,6 @@ def instant_centres(linkage: Linkage, pos: Mapping[str, XY], driver_omega: float
         centres[key] = Centre(key, "undetermined", why=why.get(key, "fewer than two Kennedy lines through it"))
         order.append(key)
 
-    motions, undetermined = _motions(linkage, links, centres, pos, driver_omega, driver_velocity, mu_l, size)
-    return InstantCentres(links, frame, centres, tuple(order), motions, undetermined, size)
-
 
 def _motions(linkage: Linkage, links: tuple[str, ...], centres: Mapping[tuple[str, str], Centre],
              pos: Mapping[str, XY], driver_omega: float | None, driver_velocity: float | None,
@@ -411,6 +423,15 @@ def _motions(linkage: Linkage, links: tuple[str, ...], centres: Mapping[tuple[st
         w = driver_omega if driver_omega is not None else d.omega
         a = pos[d.pivot]
         motions[d.link] = LinkMotion(d.link, w, (w * a[1], -w * a[0]), ("driver",))
+    return motions_from(links, frame, centres, motions, size)
+
+
+def motions_from(links: tuple[str, ...], frame: str, centres: Mapping[tuple[str, str], Centre],
+                 motions: dict[str, LinkMotion], size: float) -> tuple[dict[str, LinkMotion], dict[str, str]]:
+    """Every link's motion from the known ones (``motions``: the frame's and the driver's), by
+    ``ω_j = ω_i·P1iPij/P1jPij`` through the three centres on one line; the links left
+    undetermined, with the reason. ``motions`` is completed in place and returned.
+    """
     reasons: dict[str, str] = {}
     progress = True
     while progress:
@@ -553,5 +574,5 @@ def signed_rate(linkage: Linkage, x: str) -> tuple[str, str, tuple[float, float]
 
 
 __all__ = ["Centre", "InstantCentres", "LinkMotion", "Direct", "centre_name", "common_link", "direct_centres",
-           "instant_centres", "least_speed_on_line", "pair", "point_names", "polygon_of_links", "positions_mm",
-           "signed_rate", "split_line"]
+           "instant_centres", "kennedy", "least_speed_on_line", "motions_from", "pair", "point_names",
+           "polygon_of_links", "positions_mm", "signed_rate", "split_line"]

@@ -2,7 +2,8 @@
 its drawing.
 
 A scene file is one problem: a linkage (its polygons, instant centres), a full cycle, a disc
-cam, involute gears, a flywheel, a kinetostatic analysis, an efficiency or a balancing problem, a structure, a gear train, a linkage's synthesis, a Geneva wheel or a differential screw.
+cam, involute gears, a flywheel, a kinetostatic analysis, an efficiency or a balancing problem, a structure, a gear train, a linkage's synthesis, a Geneva wheel or a differential screw, or wheels in rolling contact
+stated by their direct instant centres.
 Each kind lives in its own package ``graphmech/problems/<kind>/`` and states its
 :class:`~graphmech.problems.kind.Kind` there (its tables, reader, check, sheet, bench);
 :data:`KINDS` below is the only place that lists them, so the scene loader, ``check``,
@@ -17,8 +18,8 @@ from __future__ import annotations
 import dataclasses
 from typing import TYPE_CHECKING, Any
 
-from graphmech.problems import (balancing, cam, cycle, efficiency, flywheel, forces, gears, linkage, other, structure,
-                                synthesis, trains)
+from graphmech.problems import (balancing, cam, centres, cycle, efficiency, flywheel, forces, gears, linkage, other,
+                                structure, synthesis, trains)
 from graphmech.errors import NotApplicable
 from graphmech.problems.kind import Analysis, Extra, Footer, Kind
 
@@ -33,7 +34,7 @@ if TYPE_CHECKING:  # annotations only: importing the registry stays light
 #: (Each kind has its own problem and analysis types; the registry holds them side by side.)
 KINDS: dict[str, Kind[Any, Any]] = {k.name: k for k in (
     structure.KIND, forces.KIND, efficiency.KIND, balancing.KIND, cam.KIND, gears.KIND, flywheel.KIND, cycle.KIND,
-    trains.KIND, synthesis.KIND, other.KIND, linkage.KIND,
+    trains.KIND, synthesis.KIND, other.KIND, centres.KIND, linkage.KIND,
 )}
 
 

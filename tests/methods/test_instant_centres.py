@@ -326,7 +326,7 @@ def _linkage_examples():
     out += [(p.stem, p.read_text(encoding="utf-8")) for p in sorted(SCENES.glob("*.toml"))
             if p.stem != "ic.parallelogram_change_point"]
     no_linkage = ("cam", "flywheel", "structure", "efficiency", "balancing", "gear", "train", "synthesis", "geneva",
-                  "differential_screw")
+                  "differential_screw", "centres")
     # a swing out to its limits has no polygons there (its dyad toggles): tests/problems/cycle/test_check.py
     return [(n, t) for n, t in out if not any(k in tomllib.loads(t) for k in no_linkage)
             and tomllib.loads(t).get("cycle", {}).get("between") != "limits"]
@@ -346,3 +346,19 @@ def test_every_documented_and_reference_linkage_has_all_its_centres_right(name, 
     assert all_centres_agree(an) == len(an.labels) * n * (n - 1) // 2
 
 
+
+
+def test_kennedy_completes_centres_stated_directly_and_motions_follow():
+    """The four-bar's four revolutes given as direct centres, with no linkage: P13, P24 by Kennedy."""
+    from graphmech.methods.instant_centres import Centre, LinkMotion, kennedy, motions_from
+
+    links = ("1", "2", "3", "4")
+    direct = {("1", "2"): (0.0, 0.0), ("2", "3"): (0.0, 60.0), ("3", "4"): (120.0, 90.0), ("1", "4"): (120.0, 0.0)}
+    centres = {k: Centre(k, "direct", p, None, ("X",)) for k, p in direct.items()}
+    order = list(centres)
+    kennedy(links, centres, order, 150.0)
+    assert centres[("1", "3")].direction == (0.0, 1.0) and centres[("2", "4")].point == (-240.0, 0.0)
+    assert order[4:] == [("1", "3"), ("2", "4")]
+    start = {"1": LinkMotion("1", 0.0, (0.0, 0.0), ("frame",)), "2": LinkMotion("2", 10.0, (0.0, 0.0), ("driver",))}
+    motions, undetermined = motions_from(links, "1", centres, start, 150.0)
+    assert motions["4"].omega == pytest.approx(10.0 * 240.0 / 360.0, abs=1e-12) and undetermined == {}
