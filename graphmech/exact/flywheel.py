@@ -451,8 +451,8 @@ class ExactMachine:
             elif not (np.all(np.diff(xs) > 0.0) and xs[0] == 0.0 and abs(xs[-1] - mc.cycle) <= 1e-12 * mc.cycle):
                 problems.append(("energy_table.x", "φ must increase strictly from 0 to Φ"))
             elif not ys[0] == ys[-1] == 0.0:
-                problems.append(("energy_table.y", "ΔT must be 0 at φ = 0 and at Φ (counted from position 1, "
-                                                   "repeating every cycle)"))
+                problems.append(("energy_table.y", ("ΔT must be 0 at φ = 0 and at Φ (counted from position 1, "
+                                                    "repeating every cycle)")))
             if mc.loads:
                 problems.append(("loads", "not with a table of ΔT: it already holds the loads' work"))
         for k, ld in enumerate(mc.loads):

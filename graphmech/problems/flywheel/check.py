@@ -180,8 +180,8 @@ def requested(scene: Scene[FlywheelScene], extra: tuple[tuple[str, float], ...] 
         elif base not in PER_POSITION and at is not None:
             problems.append((key, f"{base} is one value for the cycle: write it without @{at}"))
         elif given_dT and (base in FROM_MOMENTS or QUANTITIES[base][1] == "motion"):
-            problems.append((key, f"{base} needs the moments: [flywheel.energy_increment] gives ΔT, which cannot "
-                                  "be split back into its driving and resisting moments"))
+            problems.append((key, (f"{base} needs the moments: [flywheel.energy_increment] gives ΔT, which cannot "
+                                   "be split back into its driving and resisting moments")))
         elif QUANTITIES[base][1] == "braking" and fw.braking is None:
             problems.append((key, "t_stop needs a [flywheel.braking] table"))
         elif QUANTITIES[base][1] == "motion" and fw.machine.loads == ():

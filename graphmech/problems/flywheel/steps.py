@@ -51,8 +51,8 @@ PHRASES: Phrases = {
     "scales table": ("choose {phi}, {T} and {J}: ΔT is given, so nothing is integrated (no μM, no pole)",
                      "取{phi}、{T}及{J}：ΔT已给出，无需积分（无μM，无极点）",
                      "выбираем {phi}, {T} и {J}: ΔT задано, интегрировать нечего (ни μM, ни полюса)"),
-    "energy table": ("lay off ΔT/μT at φ/μφ and Jп/μJ from the tables: ΔT zero at position 1 and again at the "
-                     "end of the cycle",
+    "energy table": ("lay off ΔT/μT at φ/μφ and Jп/μJ from the tables: ΔT zero at position 1 and again at the end "
+                     + "of the cycle",
                      "按表作ΔT/μT（φ/μφ处）及Jп/μJ：ΔT在位置1及周期终点均为零",
                      "откладываем по таблицам ΔT/μT при φ/μφ и Jп/μJ: ΔT ноль в положении 1 и в конце цикла"),
     "scales": ("choose {phi}, {M} and the pole distance H = {H} mm ({Hwhy}): μT = μM·μφ·H = {T}; {J}",
