@@ -582,6 +582,15 @@ def _estimate(an: FlywheelAnalysis, needs: set[str]) -> None:
             an.rows[k] = r.estimated(DISCRETISATION, relative(err, den), f"{an.motion.solver} rtol {an.motion.rtol:g}")
             continue
         v2 = quantity_values(at(2), base, None if i is None else 2 * i)[0]
+        polygon = an.machine.energy_table is not None  # ΔT a polygon: no parabola between positions
+        if polygon and (base in POSITION_ANGLES or base in SAMPLED_EXTREMES):
+            # its extremes lie at the table's points: what 2N and 4N positions reach that N missed
+            v4 = quantity_values(at(4), base, None if i is None else 4 * i)[0]
+            err = max(abs(_wrapped(an, base, r.graphical - v2)), abs(_wrapped(an, base, r.graphical - v4)))
+            source, how = (READING, f"{basis}, read at a position") if base in POSITION_ANGLES else \
+                (DISCRETISATION, basis)
+            an.rows[k] = r.estimated(source, relative(err, den), how)
+            continue
         if base in ("phi_DeltaT_max", "phi_DeltaT_min", "phi_max", "phi_min"):
             top = base.endswith("max")
             energy = base.startswith("phi_D")

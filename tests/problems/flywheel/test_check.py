@@ -275,7 +275,7 @@ def test_the_table_of_delta_t_and_the_moments_it_came_from_agree_on_j_f() -> Non
 
 def test_an_extreme_of_delta_t_between_positions_is_exact_at_its_vertex(tmp_path) -> None:
     """A vertex that is no position: the exact side takes it (45°), the drawing reads the nearest
-    position (60°, the higher of its neighbours)."""
+    position (60°, the higher of its neighbours) and estimates its own error from 2N and 4N positions."""
     path = tmp_path / "dt.toml"
     path.write_text("""\
 find = ["DeltaT_max", "phi_DeltaT_max", "phi_max", "J_F"]
@@ -295,3 +295,7 @@ increment_J = [0, 300, 100, -100]
     assert v["phi_max"]["exact"] == pytest.approx(45.0, rel=1e-14)   # Jп constant: the extreme of ΔT
     # Jп constant: the Wittenbauer J_F is the energy method's, ΔW_max/(ω_m²δ) − Jп
     assert v["J_F"]["exact"] == pytest.approx((300.0 + 100.0) / (100.0 ** 2 * 0.05) - 0.2, rel=1e-12)
+    # 2N positions (every 15°) reach the vertex that N missed: each estimate is its own row's error
+    for name in ("DeltaT_max", "phi_DeltaT_max", "J_F"):
+        assert v[name]["error_estimate"] == pytest.approx(v[name]["rel_error"], rel=1e-9)
+    assert v["DeltaT_max"]["rel_error"] == pytest.approx(1 / 6, rel=1e-12)

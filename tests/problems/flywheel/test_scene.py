@@ -689,10 +689,12 @@ def doc_flywheel_scenes() -> dict[str, Scene]:
 
 
 
-def test_docs_have_the_four_flywheel_examples() -> None:
+def test_docs_have_the_five_flywheel_examples() -> None:
     scenes = doc_flywheel_scenes()
-    assert len(scenes) == 4
-    tables = [s for s in scenes.values() if s.problem.machine.inertia_table is not None]
+    assert len(scenes) == 5
+    given_dT = [s for s in scenes.values() if s.problem.machine.energy_table is not None]
+    assert len(given_dT) == 1 and given_dT[0].problem.machine.loads == ()
+    tables = [s for s in scenes.values() if s.problem.machine.inertia_table is not None and s.problem.machine.loads]
     assert len(tables) == 1 and tables[0].measured == (("kl", 61.0), ("J_F", 42.4))
     with_linkage = [s for s in scenes.values() if s.linkage is not None]
     assert len(with_linkage) == 1 and with_linkage[0].problem.true_motion is not None
@@ -726,6 +728,8 @@ def test_documented_error_messages_are_real() -> None:
         jp_table(TWELVE, SAME_J).replace("cycle_deg = 360", "cycle_deg = 720"),
         jp_table("[0, 120, 240]", "[0.6, 0.7, 0]"),
         jp_table(TWELVE[:-1] + ", 360]", SAME_J[:-1] + ", 0.7]"),
+        DT_SCENE.replace("[page]", '[[flywheel.load]]\ntype = "crank"\nphi_deg = [0, 360]\nmoment_Nm = [1, 1]\n[page]'),
+        replace(DT_SCENE, "increment_J = [0, -342.7", "increment_J = [5, -342.7"),
         replace(C, "cycle_deg = 360", "cycle_deg = 360\nspeed_rpm = 960"),
         replace(C, 'link = "2"\npoint = "S2"', 'link = "2"\npoint = "A"'),
         replace(C, 'point = "C"', 'point = "B"'),
