@@ -214,6 +214,9 @@ def test_any_mutation_gives_a_scene_or_a_scene_error(data: st.DataObject) -> Non
     if scene.kind == "efficiency" or scene.kind == "balancing":  # fuzzed further in tests/test_efficiency.py
         assert scene.linkage is None and scene.positions is None
         return
+    if scene.kind == "other":  # the Geneva wheel, the differential screw: no linkage, no positions
+        assert scene.linkage is None and scene.positions is None
+        return
     if scene.kind == "trains":  # fuzzed further in tests/problems/trains/test_robustness.py
         t = scene.problem.train
         assert scene.linkage is None and all(g.z >= 1 for g in t.gears) and t.meshes

@@ -443,6 +443,18 @@ class ExactMachine:
                 problems.append(("inertia_table.x", "φ must increase strictly from 0 to Φ"))
             elif not (np.all(ys > 0.0) and ys[-1] == ys[0]):
                 problems.append(("inertia_table.y", "Jп must be > 0 and repeat every cycle (Jп(Φ) = Jп(0))"))
+        et = mc.energy_table
+        if et is not None:
+            xs, ys = np.asarray(et.x, dtype=float), np.asarray(et.y, dtype=float)
+            if not (xs.size == ys.size >= 2 and np.isfinite(xs).all() and np.isfinite(ys).all()):
+                problems.append(("energy_table", "x and y must be finite, of one length ≥ 2"))
+            elif not (np.all(np.diff(xs) > 0.0) and xs[0] == 0.0 and abs(xs[-1] - mc.cycle) <= 1e-12 * mc.cycle):
+                problems.append(("energy_table.x", "φ must increase strictly from 0 to Φ"))
+            elif not ys[0] == ys[-1] == 0.0:
+                problems.append(("energy_table.y", ("ΔT must be 0 at φ = 0 and at Φ (counted from position 1, "
+                                                    "repeating every cycle)")))
+            if mc.loads:
+                problems.append(("loads", "not with a table of ΔT: it already holds the loads' work"))
         for k, ld in enumerate(mc.loads):
             t = ld.table
             if len(t.x) != len(t.y) or not t.x:
@@ -638,8 +650,9 @@ class ExactMachine:
                 phis += [p + _TWO_PI * r for r in range(turns) for p in one]
             else:  # every node (ends too: the cycle wraps round, a kink or step may be there)
                 phis += [x for x in ld.table.x if 0.0 <= x <= self.cycle]
-        if self.machine.inertia_table is not None:  # Jп's kinks: dJп/dφ jumps there
-            phis += [x for x in self.machine.inertia_table.x if 0.0 <= x <= self.cycle]
+        for table in (self.machine.inertia_table, self.machine.energy_table):  # kinks: the slope jumps there
+            if table is not None:
+                phis += [x for x in table.x if 0.0 <= x <= self.cycle]
         return np.array(_dedupe_angles(phis, self.cycle))
 
     def breaks(self) -> np.ndarray:
@@ -662,7 +675,12 @@ class ExactMachine:
             If the loads do no work at all (Mп ≡ 0: then ΔT ≡ 0 and J_F is undefined), or the
             balance has the wrong sign for ``machine.balance`` (a "driving" moment that would
             have to resist).
+        NotApplicable (a ValueError)
+            If ΔT was given as a table: its moments are not known.
         """
+        if self.machine.energy_table is not None:
+            raise NotApplicable("ΔT was given as a table ([flywheel.energy_increment]): it cannot be split back "
+                                "into its driving and resisting moments")
         if self._abs_work == 0.0:
             why = ("the loads do no work (Mп ≡ 0): the balancing moment is 0 and ΔT ≡ 0, so J_F "
                    "is undefined")
@@ -678,11 +696,16 @@ class ExactMachine:
 
     def _energy_and_state(self, phi: np.ndarray | float
                           ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """(ΔT, Jп, dJп/dφ, Mп) at φ with one linkage solve (φ and the partial cells' nodes)."""
-        mb = self.balancing_moment()
+        """(ΔT, Jп, dJп/dφ, Mп) at φ with one linkage solve (φ and the partial cells' nodes); ΔT
+        given as a table: read off it (Mп then 0)."""
         phi = np.asarray(phi, dtype=float)
         shape = phi.shape
         tau = np.mod(phi.ravel(), self.cycle)
+        et = self.machine.energy_table
+        if et is not None:
+            jj, dj, m = self._evaluate(tau)
+            return (table_value(et, tau).reshape(shape), jj.reshape(shape), dj.reshape(shape), m.reshape(shape))
+        mb = self.balancing_moment()
         j = np.clip(np.searchsorted(self._edges, tau, side="right") - 1, 0, self._edges.size - 2)
         a = self._edges[j]
         half = 0.5 * (tau - a)
@@ -698,7 +721,7 @@ class ExactMachine:
         """ΔT(φ) = ∫_0^φ (Mп + M_b) dφ, J (ΔT(0) = 0; periodic over Φ).
 
         Exact to ~1e-12 relative: cumulative Gauss–Legendre over the cells up to φ, and 8 nodes
-        on the last partial cell.
+        on the last partial cell. Given as a table: the table, linear between its points.
         """
         return self._energy_and_state(phi)[0]
 
@@ -718,7 +741,34 @@ class ExactMachine:
             found = self.__dict__["_extremes"] = self._find_extremes()
         return found
 
+    def _slope_dt(self, phi: np.ndarray, m: np.ndarray) -> np.ndarray:
+        """dΔT/dφ at φ (right-continuous), ``m`` being Mп there: Mп + M_b, or the ΔT table's slope."""
+        et = self.machine.energy_table
+        if et is not None:
+            return _table_slope(et, np.mod(phi, self.cycle))
+        return m + self.balancing_moment()
+
+    def _vertices(self) -> np.ndarray | None:
+        """With ΔT given as a table and Jп piecewise linear too (a table, a constant, a linkage without
+        masses): the φ of the polygonal curve's vertices, where its extremes and the Wittenbauer
+        tangents' points of contact lie (a linear function is extreme over a polygon at a vertex);
+        else None."""
+        mc = self.machine
+        if mc.energy_table is None or (self._linkage is not None and mc.masses):
+            return None
+        return np.union1d([0.0], self._breaks)
+
     def _find_extremes(self) -> Extremes:
+        v = self._vertices()
+        if v is not None:  # closed form: at the table's points
+            dt = self.energy(v)
+            i_hi, i_lo = int(np.argmax(dt)), int(np.argmin(dt))
+            return Extremes(float(dt[i_hi]), float(v[i_hi]), float(dt[i_lo]), float(v[i_lo]))
+        et = self.machine.energy_table
+        if et is not None:  # ΔT polygonal: its extremes are at its own points, whatever Jп
+            xs, ys = np.asarray(et.x[:-1]), np.asarray(et.y[:-1])
+            i_hi, i_lo = int(np.argmax(ys)), int(np.argmin(ys))
+            return Extremes(float(ys[i_hi]), float(xs[i_hi]), float(ys[i_lo]), float(xs[i_lo]))
         mb = self.balancing_moment()
         dt = self._samples_dt()
 
@@ -769,20 +819,28 @@ class ExactMachine:
         ``Mп + M_b − c·dJп/dφ`` (brentq), not the positions.
         """
         w_hi, w_lo = self.design_speeds(form)
-        mb = self.balancing_moment()
-        dt = self._samples_dt()
+        v = self._vertices()
+        if v is not None:  # closed form: the tangents to a polygonal curve touch it at vertices
+            g_v, j_v = self.energy(v), self.inertia(v)
 
-        def tangent(c: float) -> tuple[float, float, float, float]:
-            def f(phi: float) -> float:
-                e, j, _, _ = self._energy_and_state(np.array([phi]))
-                return float(e[0] - c * j[0])
+            def tangent(c: float) -> tuple[float, float, float, float]:
+                g = g_v - c * j_v
+                hi, lo = int(np.argmax(g)), int(np.argmin(g))
+                return float(g[hi]), float(v[hi]), float(g[lo]), float(v[lo])
+        else:
+            dt = self._samples_dt()
+            slope = self._slope_dt(self._s, self._s_m)
 
-            def d(phi: float) -> float:
-                _, dj, m = self._evaluate(np.array([phi]))
-                return float(m[0] + mb - c * dj[0])
+            def tangent(c: float) -> tuple[float, float, float, float]:
+                def f(phi: float) -> float:
+                    e, j, _, _ = self._energy_and_state(np.array([phi]))
+                    return float(e[0] - c * j[0])
 
-            return _global_extremes(self._s, dt - c * self._s_j, self._s_m + mb - c * self._s_dj,
-                                    f, d)
+                def d(phi: float) -> float:
+                    _, dj, m = self._evaluate(np.array([phi]))
+                    return float(self._slope_dt(np.array([phi]), m)[0] - c * dj[0])
+
+                return _global_extremes(self._s, dt - c * self._s_j, slope - c * self._s_dj, f, d)
 
         k, phi_k, _, _ = tangent(0.5 * w_hi * w_hi)
         _, _, l, phi_l = tangent(0.5 * w_lo * w_lo)

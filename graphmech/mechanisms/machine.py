@@ -229,6 +229,10 @@ class Machine:
         Jп(φ) given directly as a table (a course project's table of Jп at the positions), kg·m²,
         added to ``inertia`` and the masses: ``x`` is φ from 0 to Φ (closed: the last value equals
         the first), linear between its points, no steps.
+    energy_table : Table or None
+        ΔT(φ) given directly as a table (``[flywheel.energy_increment]``), J, instead of the loads
+        (then ``loads`` is empty): ``x`` is φ from 0 to Φ, ``y`` 0 at both ends, linear between
+        its points, no steps.
     """
 
     linkage: Linkage | None
@@ -242,6 +246,7 @@ class Machine:
     balance: Literal["driving", "resisting"] = "driving"
     motor: Motor | None = None
     inertia_table: Table | None = None
+    energy_table: Table | None = None
 
     def __hash__(self) -> int:  # holds a Linkage (a dict inside): identity is enough
         return id(self)

@@ -71,7 +71,8 @@ class FlywheelDesign:
     Attributes
     ----------
     phi, J, M : ndarray, shape (N,)
-        The positions φ_k (rad), Jп_k (kg·m²) and Mп_k (N·m) it was made from.
+        The positions φ_k (rad), Jп_k (kg·m²) and Mп_k (N·m) it was made from (M None when ΔT
+        was given: :func:`design_from_energy`; so are the moment's construction and results).
     cycle, omega_m, delta : float
         Φ (rad), ω_m (rad/s), δ.
     balance, form : str
@@ -83,6 +84,8 @@ class FlywheelDesign:
     sources : mapping
         How each scale and H was obtained: ``"given"``, ``"chosen"`` (round, to fit the
         drawing), ``"μM·μφ·H"``, ``"μT/(μM·μφ)"``, ``"default"``.
+    x_mm : ndarray, shape (N+1,)
+        The divisions' abscissae φ_k/μφ, φ = Φ last.
     moment : Integration
         The Mп diagram and its integration by chords: ``moment.x_mm`` (N+1 abscissae, φ = Φ
         last), ``moment.y_mm`` (Mп ordinates, position 1 repeated at the end), the mean
@@ -121,22 +124,23 @@ class FlywheelDesign:
 
     phi: np.ndarray
     J: np.ndarray
-    M: np.ndarray
+    M: np.ndarray | None
     cycle: float
     omega_m: float
     delta: float
-    balance: Balance
+    balance: Balance | None
     form: TangentForm
     scales: Mapping[str, float]
-    H_mm: float
+    H_mm: float | None
     sources: Mapping[str, str]
-    moment: Integration
-    work_mm: np.ndarray
-    balance_work_mm: np.ndarray
-    balancing_mm: float
+    x_mm: np.ndarray
+    moment: Integration | None
+    work_mm: np.ndarray | None
+    balance_work_mm: np.ndarray | None
+    balancing_mm: float | None
     energy_mm: np.ndarray
     inertia_mm: np.ndarray
-    balancing_moment: float
+    balancing_moment: float | None
     dT: np.ndarray
     dT_max: float
     dT_min: float
@@ -339,8 +343,21 @@ def design_flywheel(phi: ArrayLike, J: ArrayLike, M: ArrayLike, *, cycle: float,
 
     # 5. ΔT = Aп + A_b
     energy = work + balance_work
+    return _finish(p, j, m, energy, x, cycle=cycle, omega_m=omega_m, delta=delta, balance=balance, form=form,
+                   mu=mu, H=H, sources=sources, need=need, integration=integration,
+                   balance_work=balance_work, balancing_mm=float(balancing_mm), moment=float(moment))
+
+
+def _finish(p: np.ndarray, j: np.ndarray, m: np.ndarray | None, energy: np.ndarray, x: np.ndarray, *,
+            cycle: float, omega_m: float, delta: float, balance: Balance | None, form: TangentForm,
+            mu: Mapping[str, float], H: float | None, sources: Mapping[str, str], need: Sequence[str],
+            integration: Integration | None = None, balance_work: np.ndarray | None = None,
+            balancing_mm: float | None = None, moment: float | None = None) -> FlywheelDesign:
+    """Steps 5–7 from ΔT_k/μT (``energy``, N+1 with the cycle's end): its extremes, the Wittenbauer
+    diagram and the energy indicator, as ``need`` asks."""
     dT = energy[:-1] * mu["T"]
     i_max, i_min = int(np.argmax(energy[:-1])), int(np.argmin(energy[:-1]))
+    phi_c = np.append(p, cycle)
     j_mean = float(_chord_work(phi_c, np.append(j, j[0]))[-1] / cycle)
     inertia = j / mu["J"]
 
@@ -358,12 +375,71 @@ def design_flywheel(phi: ArrayLike, J: ArrayLike, M: ArrayLike, *, cycle: float,
         J_F_ind = flywheel_inertia(ind.dW_max_mm, mu["T"], omega_m, delta) - j_mean
 
     return FlywheelDesign(
-        phi=_frozen(p), J=_frozen(j), M=_frozen(m), cycle=cycle, omega_m=omega_m, delta=delta, balance=balance,
-        form=form, scales=MappingProxyType(dict(mu)), H_mm=float(H), sources=MappingProxyType(dict(sources)),
-        moment=integration, work_mm=work, balance_work_mm=_frozen(balance_work), balancing_mm=float(balancing_mm),
-        energy_mm=_frozen(energy), inertia_mm=_frozen(inertia), balancing_moment=float(moment), dT=_frozen(dT),
+        phi=_frozen(p), J=_frozen(j), M=None if m is None else _frozen(m), cycle=cycle, omega_m=omega_m,
+        delta=delta, balance=balance, form=form, scales=MappingProxyType(dict(mu)),
+        H_mm=None if H is None else float(H), sources=MappingProxyType(dict(sources)), x_mm=_frozen(x),
+        moment=integration, work_mm=None if integration is None else integration.integral_mm,
+        balance_work_mm=None if balance_work is None else _frozen(balance_work), balancing_mm=balancing_mm,
+        energy_mm=_frozen(energy), inertia_mm=_frozen(inertia), balancing_moment=moment, dT=_frozen(dT),
         dT_max=float(dT[i_max]), dT_min=float(dT[i_min]), energy_max_index=i_max, energy_min_index=i_min,
         J_mean=j_mean, wittenbauer=w, J_F=J_F, indicator=ind, DeltaW_max=dW, J_F_indicator=J_F_ind)
 
 
-__all__ = ["FlywheelDesign", "NEEDS", "WrongBalance", "design_flywheel"]
+def design_from_energy(phi: ArrayLike, J: ArrayLike, dT: ArrayLike, *, cycle: float, omega_m: float,
+                       delta: float, form: TangentForm = "exact", scales: Mapping[str, float] | None = None,
+                       need: Sequence[str] = ("wittenbauer",)) -> FlywheelDesign:
+    """The flywheel designed from ΔT_k given directly (a table of the increment of kinetic energy):
+    steps 5–7 of :func:`design_flywheel`, with no moments, no integration and no pole.
+
+    ``dT`` is ΔT_k, J, at the positions (ΔT_1 = 0 at φ = 0); the other parameters as for
+    :func:`design_flywheel`. Of ``scales`` only ``"phi"``, ``"J"``, ``"T"`` apply; μT is chosen
+    round with ΔT spanning about 60 mm when not given. The result's ``M``, ``moment``,
+    ``work_mm``, ``balance_work_mm``, ``balancing_mm``, ``balancing_moment``, ``balance`` and
+    ``H_mm`` are None.
+
+    Examples
+    --------
+    >>> phi = np.arange(12) * np.pi / 6
+    >>> d = design_from_energy(phi, np.full(12, 0.5), 100.0 * (1.0 - np.cos(phi)), cycle=2 * np.pi,
+    ...                        omega_m=100.0, delta=0.02, need=("wittenbauer", "indicator"))
+    >>> round(d.DeltaW_max, 9), d.scales["T"], d.moment is None
+    (200.0, 5.0, True)
+    >>> round(d.J_F_indicator, 9)                 # 200/(100²·0.02) − 0.5
+    0.5
+    """
+    cycle = _positive("the cycle Φ", cycle)
+    omega_m = _positive("ω_m", omega_m)
+    delta = _positive("δ", delta)
+    if form not in ("exact", "book"):
+        raise OutOfDomain(f"form must be 'exact' or 'book', not {form!r}")
+    need = tuple(need)
+    bad = [x for x in need if x not in NEEDS]
+    if bad:
+        raise OutOfDomain(f"need may hold {' and '.join(NEEDS)}, not {', '.join(map(repr, bad))}")
+    p, j, t = _inputs(phi, J, dT, cycle)
+    if "wittenbauer" in need:
+        tangent_slopes(omega_m, delta, 1.0, 1.0, form)
+    given = dict(scales or {})
+    bad = sorted(set(given) - {"phi", "J", "T"})
+    if bad:
+        raise OutOfDomain(f"scale(s) {', '.join(map(repr, bad))} do not apply: ΔT is given, nothing is integrated")
+    mu = {k: _positive(f"the scale μ{k}", v) for k, v in given.items()}
+    sources = {k: "given" for k in mu}
+    if "phi" not in mu:
+        mu["phi"] = math.radians(round_scale(math.degrees(cycle) / CYCLE_MM))
+        sources["phi"] = "chosen"
+    if "T" not in mu:
+        span = _span(t)
+        mu["T"] = round_scale(span / HEIGHT_MM) if span > 0.0 else 1.0
+        sources["T"] = "chosen"
+    if "J" not in mu:
+        jmax = float(j.max())
+        mu["J"] = round_scale(jmax / J_MM) if jmax > 0.0 else round_scale(2.0 * mu["T"] / omega_m ** 2)
+        sources["J"] = "chosen"
+    energy = np.append(t, 0.0) / mu["T"]  # the cycle closed: ΔT back to 0 at Φ
+    x = np.append(p, cycle) / mu["phi"]
+    return _finish(p, j, None, energy, x, cycle=cycle, omega_m=omega_m, delta=delta, balance=None, form=form,
+                   mu=mu, H=None, sources=sources, need=need)
+
+
+__all__ = ["FlywheelDesign", "NEEDS", "WrongBalance", "design_flywheel", "design_from_energy"]

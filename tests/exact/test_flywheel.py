@@ -380,3 +380,36 @@ def test_a_bad_jp_table_is_named():
     bad = dataclasses.replace(m, inertia_table=Table((0.0, 1.0, 3.0), (0.6, 0.7, 0.6)))
     with pytest.raises(ValueError, match=r"inertia_table.x: φ must increase strictly from 0 to Φ"):
         ExactMachine(bad)
+
+
+# ------------------------------------------------------------------------------------------
+# ΔT given as a table (Machine.energy_table)
+
+
+def test_a_table_of_the_compressors_delta_t_gives_its_flywheel_with_a_curved_jp() -> None:
+    """The compressor's own ΔT every 5°, as a table, with its masses (Jп curved): the tangents touch
+    between the table's points (brentq on the polygon's slope − c·dJп/dφ), the flywheel agrees with
+    the one from the moments to the polygon's error, and the moments themselves are refused."""
+    m = compressor()
+    ex = ExactMachine(m)
+    phi = np.radians(np.arange(0.0, 365.0, 5.0))
+    dt = ex.energy(phi)
+    dt[0] = dt[-1] = 0.0
+    table = ExactMachine(dataclasses.replace(m, loads=(), energy_table=Table(tuple(phi), tuple(dt))))
+    got, want = table.wittenbauer("exact"), ex.wittenbauer("exact")
+    assert got.J_F == pytest.approx(want.J_F, rel=1e-4)
+    assert got.J_F != pytest.approx(want.J_F, rel=1e-8)  # a polygon, not the curve
+    for p in (got.phi_k, got.phi_l):  # not at a vertex: Jп's curvature moves the point of contact
+        assert abs(math.remainder(p, math.radians(5.0))) > 1e-3
+    assert table.energy(np.radians([10.0, 12.5]))[1] == pytest.approx(0.5 * (dt[2] + dt[3]), rel=1e-14)
+    with pytest.raises(ValueError, match="cannot be split back"):
+        table.balancing_moment()
+
+
+def test_a_table_of_delta_t_with_loads_is_refused() -> None:
+    m = compressor()
+    t = Table((0.0, math.pi, 2 * math.pi), (0.0, 10.0, 0.0))
+    with pytest.raises(ValueError, match="already holds the loads' work"):
+        ExactMachine(dataclasses.replace(m, energy_table=t))
+    with pytest.raises(ValueError, match="ΔT must be 0 at φ = 0 and at Φ"):
+        ExactMachine(dataclasses.replace(m, loads=(), energy_table=Table((0.0, 2 * math.pi), (1.0, 1.0))))

@@ -60,6 +60,8 @@ QUANTITIES: dict[str, tuple[str, str]] = {
 #: Per-position quantities (named ``Jp@3``).
 PER_POSITION = ("Jp", "Mp", "DeltaT", "A_p")
 DEFAULT_FIND = ("M_b", "DeltaW_max", "J_F")
+#: What needs the moments: refused when ΔT is given as a table ([flywheel.energy_increment]).
+FROM_MOMENTS = ("Mp", "A_p", "M_b", "Md", "Mr")
 #: Angles that say where in the cycle something happens: compared modulo the cycle Φ, their
 #: relative error is the wrapped difference over Φ (an angle near 0° has no scale of its own).
 POSITION_ANGLES = ("phi_DeltaT_max", "phi_DeltaT_min", "phi_omega_max", "phi_omega_min", "phi_max", "phi_min")
@@ -160,7 +162,10 @@ def _needs(scene: Scene[FlywheelScene], names: list[str]) -> set[str]:
 def requested(scene: Scene[FlywheelScene], extra: tuple[tuple[str, float], ...] = ()) -> list[str]:
     """The quantity names the scene asks for, validated (problems raised as one SceneError)."""
     fw = scene.problem
-    names = list(scene.find) or ([] if fw.braking is not None and not fw.machine.loads else list(DEFAULT_FIND))
+    given_dT = fw.machine.energy_table is not None
+    default = [x for x in DEFAULT_FIND if not (given_dT and x in FROM_MOMENTS)]
+    names = list(scene.find) or ([] if fw.braking is not None and not fw.machine.loads and not given_dT
+                                 else default)
     if fw.braking is not None and "t_stop" not in names:
         names.append("t_stop")
     problems = []
@@ -174,6 +179,9 @@ def requested(scene: Scene[FlywheelScene], extra: tuple[tuple[str, float], ...] 
             problems.append((key, f"{base} is per position: write {base}@1 … {base}@{n}"))
         elif base not in PER_POSITION and at is not None:
             problems.append((key, f"{base} is one value for the cycle: write it without @{at}"))
+        elif given_dT and (base in FROM_MOMENTS or QUANTITIES[base][1] == "motion"):
+            problems.append((key, (f"{base} needs the moments: [flywheel.energy_increment] gives ΔT, which cannot "
+                                   "be split back into its driving and resisting moments")))
         elif QUANTITIES[base][1] == "braking" and fw.braking is None:
             problems.append((key, "t_stop needs a [flywheel.braking] table"))
         elif QUANTITIES[base][1] == "motion" and fw.machine.loads == ():
@@ -281,19 +289,21 @@ def _with_show(scene: Scene[FlywheelScene]) -> Scene[FlywheelScene]:
 
 
 def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
-    from graphmech.methods.flywheel import WrongBalance, design_flywheel
+    from graphmech.methods.flywheel import design_from_energy
 
     fw, machine = an.scene.problem, an.machine
     scales = {k: float(v) for k, v in an.scene.scales.items() if k in ("phi", "M", "J", "T")}
     an.stated |= set(scales)
     want = tuple(x for x in ("wittenbauer", "indicator") if x in needs)
     r = an.reduction
-    try:
-        an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
-                                    delta=machine.delta, balance=machine.balance, form=fw.tangents,
-                                    H_mm=fw.pole_distance, scales=scales, need=want)
-    except WrongBalance as e:
-        raise SceneError([("flywheel.balance", _wrong_balance(machine.balance, e.work))], an.scene.source) from None
+    if machine.energy_table is not None:  # ΔT handed in: read off its table at the positions
+        from graphmech.methods.reduction import table_at
+
+        dT = table_at(machine.energy_table, np.mod(r.phi, machine.cycle))
+        an.design = design_from_energy(r.phi, r.J, dT, cycle=machine.cycle, omega_m=machine.omega_m,
+                                       delta=machine.delta, form=fw.tangents, scales=scales, need=want)
+    else:
+        _design_from_moments(an, scales, want)
     an.scales.update(getattr(an.design, "scales", {}))
     if "wittenbauer" in want:
         apart = float(getattr(an.design.wittenbauer, "angle_between_deg", 90.0))
@@ -302,6 +312,19 @@ def _design(an: FlywheelAnalysis, needs: set[str]) -> None:
                 f"the tangents ψmax and ψmin differ by {apart:.2g}° (δ = {machine.delta:g}): a drawn pair cannot "
                 "be told apart, and their intersection is ill-conditioned; k and l were found analytically "
                 "(the extremes of ΔT − ω²·Jп/2 over the positions), not by intersecting drawn lines")
+
+
+def _design_from_moments(an: FlywheelAnalysis, scales: dict[str, float], want: tuple[str, ...]) -> None:
+    from graphmech.methods.flywheel import WrongBalance, design_flywheel
+
+    fw, machine = an.scene.problem, an.machine
+    r = an.reduction
+    try:
+        an.design = design_flywheel(r.phi, r.J, r.M, cycle=machine.cycle, omega_m=machine.omega_m,
+                                    delta=machine.delta, balance=machine.balance, form=fw.tangents,
+                                    H_mm=fw.pole_distance, scales=scales, need=want)
+    except WrongBalance as e:
+        raise SceneError([("flywheel.balance", _wrong_balance(machine.balance, e.work))], an.scene.source) from None
 
 
 def _wrong_balance(balance: str, work: float) -> str:
@@ -433,7 +456,7 @@ def quantity_values(an: FlywheelAnalysis, base: str, i: int | None) -> tuple[flo
     ex = _exact(an)
     mu_T = float(d.scales["T"]) if d is not None else 1.0
     if base in ("DeltaT", "A_p"):
-        g = float(d.energy_mm[i] if base == "DeltaT" else d.work_mm[i]) * mu_T
+        g = float(d.energy_mm[i] if base == "DeltaT" else cast(np.ndarray, d.work_mm)[i]) * mu_T
         e = float(ex.energy(an.phi[cast(int, i) : cast(int, i) + 1])[0])
         if base == "A_p":
             e -= ex.balancing_moment() * float(an.phi[i])
@@ -559,6 +582,15 @@ def _estimate(an: FlywheelAnalysis, needs: set[str]) -> None:
             an.rows[k] = r.estimated(DISCRETISATION, relative(err, den), f"{an.motion.solver} rtol {an.motion.rtol:g}")
             continue
         v2 = quantity_values(at(2), base, None if i is None else 2 * i)[0]
+        polygon = an.machine.energy_table is not None  # ΔT a polygon: no parabola between positions
+        if polygon and (base in POSITION_ANGLES or base in SAMPLED_EXTREMES):
+            # its extremes lie at the table's points: what 2N and 4N positions reach that N missed
+            v4 = quantity_values(at(4), base, None if i is None else 4 * i)[0]
+            err = max(abs(_wrapped(an, base, r.graphical - v2)), abs(_wrapped(an, base, r.graphical - v4)))
+            source, how = (READING, f"{basis}, read at a position") if base in POSITION_ANGLES else \
+                (DISCRETISATION, basis)
+            an.rows[k] = r.estimated(source, relative(err, den), how)
+            continue
         if base in ("phi_DeltaT_max", "phi_DeltaT_min", "phi_max", "phi_min"):
             top = base.endswith("max")
             energy = base.startswith("phi_D")

@@ -218,7 +218,7 @@ def _diagram(x: np.ndarray, y: np.ndarray, every: int, name: str, *, curve_role:
 
 
 def _every(design: FlywheelDesign) -> int:
-    x = design.moment.x_mm
+    x = design.x_mm
     return numbers_every(design.n, float(np.min(np.diff(x))))
 
 
@@ -249,6 +249,7 @@ def moment_items(design: FlywheelDesign, every: int | None = None, notation: str
     """M_{red}(φ) at μM, μφ with the integration's construction and the constant moment (O at the origin)."""
     g = design.moment
     every = every or _every(design)
+    assert g is not None and design.H_mm is not None and design.balancing_mm is not None  # ΔT given: no panel
     x, y, mean = g.x_mm, g.y_mm, g.mean_mm
     n, H, mb = design.n, design.H_mm, design.balancing_mm
     P = g.pole
@@ -283,7 +284,8 @@ def moment_items(design: FlywheelDesign, every: int | None = None, notation: str
 def work_items(design: FlywheelDesign, every: int | None = None, notation: str = "en") -> list[Primitive]:
     """A(φ) at μA = μT: the chord polygon A_{red} and the constant moment's work line (O at the origin)."""
     every = every or _every(design)
-    x, a, b = design.moment.x_mm, design.work_mm, design.balance_work_mm
+    x, a, b = design.x_mm, design.work_mm, design.balance_work_mm
+    assert a is not None and b is not None  # ΔT given: no work panel
     xe = float(x[-1])
     both = np.concatenate([a, b])
     A = fly_word("A", notation)
@@ -303,7 +305,7 @@ def energy_items(design: FlywheelDesign, every: int | None = None, notation: str
                  factor: int = 1) -> list[Primitive]:
     """ΔT(φ) at μT/``factor``, μφ with its extremes marked (O at the origin)."""
     every = every or _every(design)
-    x, t = design.moment.x_mm, design.energy_mm * factor
+    x, t = design.x_mm, design.energy_mm * factor
     T = fly_word("DeltaT", notation)
     items, labels = _diagram(x, t, every, T)
     marks: list[Primitive] = []
@@ -524,7 +526,9 @@ def _notes(design: FlywheelDesign, members: Sequence[str], notation: str, factor
     out: list[str] = []
     const = fly_word(_constant_keys(design)[0], notation)
     T = fly_word("DeltaT", notation)
+    mu_A = " (= μ_{A})" if design.moment is not None else ""  # ΔT given: nothing integrated
     if "moment" in members:
+        assert design.H_mm is not None and design.balancing_moment is not None
         out += [f"{scale_text('M', s['M'])}, {scale_text('phi', s['phi'])}",
                 f"H = {number(design.H_mm)} mm; {const} = μ_{{M}}·⟨{const}⟩ = {number(design.balancing_moment)} N·m"]
     if "work" in members:
@@ -534,9 +538,9 @@ def _notes(design: FlywheelDesign, members: Sequence[str], notation: str, factor
     if "energy" in members or "indicator" in members:
         if alone and factor > 1:
             out += [f"μ_{{T}}′ = μ_{{T}}/{factor} = {scale_text('T', s['T'] / factor).split(' = ', 1)[1]}, "
-                    f"{scale_text('T', s['T'])} (= μ_{{A}})"]
+                    f"{scale_text('T', s['T'])}{mu_A}"]
         else:
-            out += [f"{scale_text('T', s['T'])} (= μ_{{A}})"]
+            out += [f"{scale_text('T', s['T'])}{mu_A}"]
         if "energy" in members:
             out[-1] += f", {scale_text('phi', s['phi'])}"
     if "inertia" in members:
@@ -595,7 +599,7 @@ def _beside(design: FlywheelDesign, members: Sequence[str], notation: str = "en"
     n = design.n
     carried = range(0, n, count_every(n, MOST_CARRIED))
     if "energy" in members:
-        xe = design.moment.x_mm
+        xe = design.x_mm
         dx = -(GAP_LEFT + float(xe[-1]) + AXIS_OVERRUN)
         it, lb = _split(energy_items(design, notation=notation))
         items += [moved(i, dx, 0.0) for i in it]

@@ -443,32 +443,52 @@ def _read_cycle(fw: Reader) -> float | None:
 def _read_reduced_inertia(fw: Reader, cycle: float | None) -> tuple[Table | None, bool]:
     """[flywheel.reduced_inertia]: Jп(φ) as a table (> 0, φ rising from 0, closed at Φ); whether it
     was read (or is absent)."""
-    r = fw.table_at("reduced_inertia")
+    return _read_cycle_table(fw, cycle, "reduced_inertia", ("inertia", "inertia"), "Jп")
+
+
+def _read_energy_increment(fw: Reader, cycle: float | None) -> tuple[Table | None, bool]:
+    """[flywheel.energy_increment]: ΔT(φ) as a table (0 at φ = 0, φ rising from 0, closed at Φ);
+    whether it was read (or is absent)."""
+    return _read_cycle_table(fw, cycle, "energy_increment", ("increment", "energy"), "ΔT")
+
+
+def _read_cycle_table(fw: Reader, cycle: float | None, key: str, value: tuple[str, str], symbol: str
+                      ) -> tuple[Table | None, bool]:
+    """A quantity of the cycle as a table against φ: ``phi`` strictly rising from 0 within Φ and
+    the ``value`` (base key, unit kind), closed at Φ (its last value equal to its first, or the
+    table closed back to it over a gap no longer than its longest step); Jп > 0, ΔT from 0.
+    Linear between its points (no steps). Whether it was read (or is absent)."""
+    r = fw.table_at(key)
     if r is None:
-        return None, "reduced_inertia" not in fw.table
+        return None, key not in fw.table
     phi = _series(r, "phi", "angle")
-    jp = _series(r, "inertia", "inertia")
+    ys = _series(r, *value)
     r.finish()
-    if phi is None or jp is None or cycle is None:
+    if phi is None or ys is None or cycle is None:
         return None, False
-    if not _same_length(r, phi, jp, phi.path.rsplit(".", 1)[-1], "Jп"):
+    if not _same_length(r, phi, ys, phi.path.rsplit(".", 1)[-1], symbol):
         return None, False
-    x, y = phi.si, jp.si
+    x, y = phi.si, ys.si
+    unit = {"inertia": "kg·m²"}.get(value[1], ys.unit)
 
-    def kgm2(v: float) -> str:  # the number as written, the unit as printed
-        return f"{jp.text(v).split()[0]} kg·m²"
+    def written(v: float) -> str:  # the number as written, the unit as printed
+        return f"{ys.text(v).split()[0]} {unit}".rstrip()
 
-    for i, v in enumerate(y):
-        if not v > 0:
-            r.problem(f"{jp.path}[{i}]", f"must be > 0, not {kgm2(v)}: a reduced moment of inertia")
-            return None, False
+    if value[1] == "inertia":
+        for i, v in enumerate(y):
+            if not v > 0:
+                r.problem(f"{ys.path}[{i}]", f"must be > 0, not {written(v)}: a reduced moment of inertia")
+                return None, False
+    elif y[0] != 0:
+        r.problem(f"{ys.path}[0]", f"must be 0, not {written(y[0])}: {symbol} is counted from position 1 (φ = 0)")
+        return None, False
     if x[0] != 0:
         r.problem(f"{phi.path}[0]", f"must be 0, not {phi.text(x[0])}: the table starts at position 1 (φ = 0)")
         return None, False
     for i in range(1, len(x)):
         if not x[i] > x[i - 1]:
             r.problem(f"{phi.path}[{i}]", f"{phi.text(x[i])} comes after {phi.text(x[i - 1])}: the angles must "
-                                          "increase (Jп(φ) has no steps)")
+                                          f"increase ({symbol}(φ) has no steps)")
             return None, False
     last = len(x) - 1
     if x[-1] > cycle * (1 + 1e-12):
@@ -477,8 +497,8 @@ def _read_reduced_inertia(fw: Reader, cycle: float | None) -> tuple[Table | None
         return None, False
     if x[-1] >= cycle * (1 - 1e-12):
         if y[-1] != y[0]:
-            r.problem(f"{jp.path}[{last}]", f"{kgm2(y[-1])} at Φ = {phi.text(cycle)} differs from "
-                                            f"{kgm2(y[0])} at φ = 0: Jп repeats every cycle")
+            r.problem(f"{ys.path}[{last}]", f"{written(y[-1])} at Φ = {phi.text(cycle)} differs from "
+                                            f"{written(y[0])} at φ = 0: {symbol} repeats every cycle")
             return None, False
         return Table((*x[:-1], cycle), tuple(y)), True
     step = max(b - a for a, b in pairwise(x))
@@ -487,9 +507,7 @@ def _read_reduced_inertia(fw: Reader, cycle: float | None) -> tuple[Table | None
                             f"Φ = {phi.text(cycle)}, more than its longest step ({phi.text(step)}): "
                             "a table of another period?")
         return None, False
-    return Table((*x, cycle), (*y, y[0])), True  # closed: back to Jп(0) at Φ
-
-
+    return Table((*x, cycle), (*y, y[0])), True  # closed: back to its value at φ = 0 at Φ
 
 
 def _read_pole_distance(fw: Reader) -> float | None:
@@ -781,6 +799,7 @@ def _read_flywheel(
     loads_value = fw.table.get("load", MISSING)
     no_loads = loads_value is MISSING or loads_value == []
     braking_only = _braking_only(fw.table)
+    given_dT = "energy_increment" in fw.table  # ΔT as a table: no loads, no constant moment to find
 
     count = _read_count(fw)
     delta = _read_delta(fw, required=not braking_only)
@@ -797,14 +816,24 @@ def _read_flywheel(
         speed = fw.value("speed", "omega", positive=True)
         omega = None if speed is None else speed.si
     cycle = _read_cycle(fw)
-    balance = fw.string("balance", choices=BALANCES, required=not no_loads, default="driving")
+    if given_dT:
+        not_for(fw, ["balance", "motor", "true_motion"], "not with [flywheel.energy_increment]: the table of ΔT "
+                "gives no moments, so there is no constant moment to find and no equation of motion to solve")
+    balance = fw.string("balance", choices=BALANCES, required=not (no_loads or given_dT), default="driving")
     method = fw.string("method", choices=FLYWHEEL_METHODS, default="wittenbauer")
     tangents = fw.string("tangents", choices=FLYWHEEL_TANGENTS, default="exact")
+    if given_dT:
+        not_for(fw, ["pole_distance"], "not with [flywheel.energy_increment]: ΔT is given, nothing is integrated")
     pole = _read_pole_distance(fw)
     inertia = _at_least_zero(fw, fw.value("inertia", "inertia", required=False))
     inertia_ok = inertia is not None or fw.present("inertia") is None
     masses, masses_given = _read_masses(fw, machine)
     jp_table, jp_ok = _read_reduced_inertia(fw, cycle)
+    dt_table, dt_ok = _read_energy_increment(fw, cycle)
+    if given_dT and not no_loads:
+        fw.problem(fw.at("energy_increment"), "not with [[flywheel.load]]: the table of ΔT already holds the "
+                   "moments' work; give one or the other")
+        dt_ok = False
 
     fw.known.add("load")
     readers = fw.tables_at("load")
@@ -821,7 +850,7 @@ def _read_flywheel(
                    "dJп/dφ, and a table of Jп has none at its points (give the masses instead)")
         true_ok = False
     braking, braking_ok = _read_braking(fw)
-    if no_loads and "braking" not in fw.table:
+    if no_loads and "braking" not in fw.table and not given_dT:
         fw.problem(fw.at("load"), "no [[flywheel.load]]: nothing for the flywheel to smooth")
     no_inertia = inertia_ok and not masses_given and (inertia is None or inertia.si == 0)
     if braking_only and braking is not None and no_inertia:
@@ -844,6 +873,7 @@ def _read_flywheel(
         and true_ok
         and braking_ok
         and jp_ok
+        and dt_ok
         and len(read_loads) == len(loads)
         and (machine.linkage is not None or not machine.has_linkage)
         and (start is not None or not machine.has_linkage)
@@ -861,6 +891,7 @@ def _read_flywheel(
         balance=balance,
         motor=motor,
         inertia_table=jp_table,
+        energy_table=dt_table,
     )
     scene = FlywheelScene(
         machine=model,
@@ -1011,6 +1042,7 @@ def parse_flywheel_scene(
     title, show, find = read_header(top, choices, BRAKING_SHOW_DEFAULT if braking_only else FLYWHEEL_SHOW_DEFAULT)
     fw_table = data.get("flywheel")
     has_braking = isinstance(fw_table, dict) and "braking" in fw_table
+    given_dT = isinstance(fw_table, dict) and "energy_increment" in fw_table
     if isinstance(data.get("show"), list):
         for i, item in enumerate(data["show"]):
             if not isinstance(item, str) or item not in show:
@@ -1021,12 +1053,17 @@ def parse_flywheel_scene(
                     f"{item} needs [[flywheel.load]]: a braking-only scene has no cycle to draw "
                     "(show rundown or mechanism, or leave show out)",
                 )
+            elif given_dT and item in ("moment", "work"):
+                top.problem(f"show[{i}]", f"{item} needs the moments: [flywheel.energy_increment] gives ΔT, which "
+                            "cannot be split back into its driving and resisting moments")
             elif item == "rundown" and not has_braking:
                 top.problem(f"show[{i}]", "rundown needs a [flywheel.braking] table: the run-down under a brake")
     refuse = () if has_linkage else tuple(
         (name, "only with a linkage: a flywheel scene without one has no mechanism to draw")
         for name, _ in _LINKAGE_SCALES
     )
+    if given_dT:  # nothing is integrated: no moment diagram, no pole
+        refuse += (("M", "not with [flywheel.energy_increment]: ΔT is given, no moment diagram is drawn"),)
     scales = read_scales(
         top,
         entries=_FLYWHEEL_SCALES + (_LINKAGE_SCALES if has_linkage else ()),

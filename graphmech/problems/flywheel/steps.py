@@ -45,6 +45,16 @@ PHRASES: Phrases = {
     "reduce loads": ("position {k} (φ = {phi}°): Jп = {J} kg·m², Mп = {M} N·m (from the scene's loads)",
                      "位置{k}（φ = {phi}°）：Jп = {J} kg·m²，Mп = {M} N·m（由题给载荷）",
                      "положение {k} (φ = {phi}°): Jп = {J} kg·m², Mп = {M} N·m (по заданным нагрузкам)"),
+    "reduce table": ("position {k} (φ = {phi}°): Jп = {J} kg·m², ΔT = {T} J (read off the scene's table of ΔT)",
+                     "位置{k}（φ = {phi}°）：Jп = {J} kg·m²，ΔT = {T} J（由题给ΔT表查得）",
+                     "положение {k} (φ = {phi}°): Jп = {J} kg·m², ΔT = {T} J (по заданной таблице ΔT)"),
+    "scales table": ("choose {phi}, {T} and {J}: ΔT is given, so nothing is integrated (no μM, no pole)",
+                     "取{phi}、{T}及{J}：ΔT已给出，无需积分（无μM，无极点）",
+                     "выбираем {phi}, {T} и {J}: ΔT задано, интегрировать нечего (ни μM, ни полюса)"),
+    "energy table": ("lay off ΔT/μT at φ/μφ and Jп/μJ from the tables: ΔT zero at position 1 and again at the end "
+                     + "of the cycle",
+                     "按表作ΔT/μT（φ/μφ处）及Jп/μJ：ΔT在位置1及周期终点均为零",
+                     "откладываем по таблицам ΔT/μT при φ/μφ и Jп/μJ: ΔT ноль в положении 1 и в конце цикла"),
     "scales": ("choose {phi}, {M} and the pole distance H = {H} mm ({Hwhy}): μT = μM·μφ·H = {T}; {J}",
                "取{phi}、{M}，极距H = {H} mm（{Hwhy}）：μT = μM·μφ·H = {T}；{J}",
                "выбираем {phi}, {M} и полюсное расстояние H = {H} mm ({Hwhy}): μT = μM·μφ·H = {T}; {J}"),
@@ -181,6 +191,9 @@ class _Words:
         cycle = math.degrees(an.machine.cycle)
         out = [self.say("divide", cycle=num(cycle), n=str(n), step=num(cycle / n))]
         key = "reduce" if an.machine.linkage is not None else "reduce loads"
+        if an.machine.energy_table is not None and an.design is not None:  # ΔT given: no moments
+            return out + [self.say("reduce table", k=str(k + 1), phi=num(math.degrees(float(an.phi[k]))),
+                                   J=num(float(r.J[k])), T=num(float(an.design.dT[k]))) for k in range(n)]
         for k in range(n):
             out.append(self.say(key, k=str(k + 1), phi=num(math.degrees(float(an.phi[k]))), J=num(float(r.J[k])),
                                 M=num(float(r.M[k]))))
@@ -194,9 +207,13 @@ class _Words:
         def mu(k: str) -> str:
             return scale_choice(k, float(sc[k]), k in an.stated, self.notation)
 
+        m = d.moment
+        if m is None:  # ΔT given as a table: straight to its extremes
+            out = [self.say("scales table", phi=mu("phi"), T=mu("T"), J=mu("J")), self.say("energy table")]
+            return out + self._energy_values()
+        assert d.work_mm is not None and d.H_mm is not None
         out = [self.say("scales", phi=mu("phi"), M=mu("M"), H=num(d.H_mm), Hwhy=self.say(why),
                         T=scale("T", float(sc["T"])).partition(" = ")[2], J=mu("J"))]
-        m = d.moment
         out.append(self.say("ordinates"))
         for k in range(len(an.phi)):
             out.append(self.say("ordinate", k=str(k + 1), x=num(float(m.x_mm[k])), y=num(float(m.y_mm[k])),
@@ -216,6 +233,12 @@ class _Words:
         out.append(self.say("balancing", end=num(-float(d.work_mm[-1])), mm=num(mm or 0.0), mu=num(mu_M), M=num(M),
                             sym=sym))
         out.append(self.say("energy"))
+        return out + self._energy_values()
+
+    def _energy_values(self) -> list[str]:
+        """ΔT at the positions asked for, and its extremes."""
+        d = self.an.design
+        out: list[str] = []
         for name in self.names:
             if split(name)[0] == "DeltaT":
                 T, mm, mu_T = self.value(name)

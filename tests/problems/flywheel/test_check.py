@@ -232,3 +232,70 @@ def test_a_machine_that_repeats_every_turn_taken_over_two_turns(tmp_path):
     for name in ("phi_max", "phi_min"):  # one of two equal extremes, a turn apart
         assert b[name]["exact"] % 360 == pytest.approx(a[name]["exact"], abs=1e-7)
         assert b[name]["graphical"] % 360 == pytest.approx(a[name]["graphical"], abs=1e-9)
+
+
+# ------------------------------------------------------------------------------------------
+# ΔT(φ) given as a table ([flywheel.energy_increment])
+# ------------------------------------------------------------------------------------------
+
+DT_JP = [0.6008325, 0.6018516, 0.6019891, 0.6017175, 0.6011137, 0.6005196,
+         0.6, 0.6031759, 0.6045547, 0.6025725, 0.6009025, 0.6]
+
+
+def test_the_table_of_delta_t_gives_the_flywheel_at_its_vertices() -> None:
+    """fly.energy_table: ΔT and Jп polygonal, so the tangents touch at the tables' points — here
+    ΔT_min at 30° and ΔT_max at 210° (both positions): the exact values by hand from the table."""
+    v = values(check_json(SCENES / "fly.energy_table.toml"))
+    w2, delta = 28.0 ** 2, 0.2
+    k = 6401.1 - w2 * (1 + delta) / 2 * DT_JP[7]       # ψmax touches at 210°
+    l_ = -459.6 - w2 * (1 - delta) / 2 * DT_JP[1]      # ψmin at 30°
+    assert v["k"]["exact"] == pytest.approx(k, rel=1e-14)
+    assert v["l"]["exact"] == pytest.approx(l_, rel=1e-14)
+    assert v["J_F"]["exact"] == pytest.approx((k - l_) / (w2 * delta), rel=1e-14)
+    assert v["J_F"]["graphical"] == pytest.approx(43.14864, rel=1e-6)  # read at the same vertices
+    for name, deg in (("phi_max", 210.0), ("phi_min", 30.0), ("phi_DeltaT_max", 210.0), ("phi_DeltaT_min", 30.0)):
+        assert v[name]["exact"] == pytest.approx(deg, rel=1e-14)
+        assert v[name]["graphical"] == pytest.approx(deg, rel=1e-14)
+    assert (v["DeltaT_max"]["exact"], v["DeltaT_min"]["exact"]) == (6401.1, -459.6)
+    assert v["DeltaW_max"]["exact"] == pytest.approx(6860.7, rel=1e-14)
+    j_mean = sum(DT_JP) / 12  # a closed polygon over equal steps: the mean of its points
+    assert v["J_F_indicator"]["exact"] == pytest.approx(6860.7 / (w2 * delta) - j_mean, rel=1e-12)
+    assert v["DeltaT@2"]["exact"] == -459.6  # read off the table; drawn at μT and read back
+    assert v["DeltaT@2"]["graphical"] == pytest.approx(-459.6, rel=1e-14)
+
+
+def test_the_table_of_delta_t_and_the_moments_it_came_from_agree_on_j_f() -> None:
+    """The ΔT of fly.energy_table is what fly.wittenbauer_course_project's Mп gives every 15°: the
+    polygon through it misses the parabolas between by little, and the two J_F agree to 1e-5."""
+    dt = values(check_json(SCENES / "fly.energy_table.toml"))["J_F"]["exact"]
+    mp = values(check_json(SCENES / "fly.wittenbauer_course_project.toml"))["J_F"]["exact"]
+    assert dt == pytest.approx(43.14864, rel=1e-6) and mp == pytest.approx(43.14874, rel=1e-6)
+    assert abs(dt - mp) / mp < 1e-5
+
+
+def test_an_extreme_of_delta_t_between_positions_is_exact_at_its_vertex(tmp_path) -> None:
+    """A vertex that is no position: the exact side takes it (45°), the drawing reads the nearest
+    position (60°, the higher of its neighbours) and estimates its own error from 2N and 4N positions."""
+    path = tmp_path / "dt.toml"
+    path.write_text("""\
+find = ["DeltaT_max", "phi_DeltaT_max", "phi_max", "J_F"]
+[flywheel]
+speed_rad_s = 100
+delta = 0.05
+inertia_kgm2 = 0.2
+[flywheel.energy_increment]
+phi_deg = [0, 45, 90, 270]
+increment_J = [0, 300, 100, -100]
+""", encoding="utf-8")
+    v = values(check_json(path))
+    # at 60°: 300 − 200·15/45
+    assert v["DeltaT_max"]["exact"] == 300.0 and v["DeltaT_max"]["graphical"] == pytest.approx(700 / 3, rel=1e-12)
+    assert v["phi_DeltaT_max"]["exact"] == pytest.approx(45.0, rel=1e-14)
+    assert v["phi_DeltaT_max"]["graphical"] == pytest.approx(60.0, rel=1e-14)
+    assert v["phi_max"]["exact"] == pytest.approx(45.0, rel=1e-14)   # Jп constant: the extreme of ΔT
+    # Jп constant: the Wittenbauer J_F is the energy method's, ΔW_max/(ω_m²δ) − Jп
+    assert v["J_F"]["exact"] == pytest.approx((300.0 + 100.0) / (100.0 ** 2 * 0.05) - 0.2, rel=1e-12)
+    # 2N positions (every 15°) reach the vertex that N missed: each estimate is its own row's error
+    for name in ("DeltaT_max", "phi_DeltaT_max", "J_F"):
+        assert v[name]["error_estimate"] == pytest.approx(v[name]["rel_error"], rel=1e-9)
+    assert v["DeltaT_max"]["rel_error"] == pytest.approx(1 / 6, rel=1e-12)

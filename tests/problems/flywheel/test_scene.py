@@ -689,10 +689,12 @@ def doc_flywheel_scenes() -> dict[str, Scene]:
 
 
 
-def test_docs_have_the_four_flywheel_examples() -> None:
+def test_docs_have_the_five_flywheel_examples() -> None:
     scenes = doc_flywheel_scenes()
-    assert len(scenes) == 4
-    tables = [s for s in scenes.values() if s.problem.machine.inertia_table is not None]
+    assert len(scenes) == 5
+    given_dT = [s for s in scenes.values() if s.problem.machine.energy_table is not None]
+    assert len(given_dT) == 1 and given_dT[0].problem.machine.loads == ()
+    tables = [s for s in scenes.values() if s.problem.machine.inertia_table is not None and s.problem.machine.loads]
     assert len(tables) == 1 and tables[0].measured == (("kl", 61.0), ("J_F", 42.4))
     with_linkage = [s for s in scenes.values() if s.linkage is not None]
     assert len(with_linkage) == 1 and with_linkage[0].problem.true_motion is not None
@@ -726,6 +728,8 @@ def test_documented_error_messages_are_real() -> None:
         jp_table(TWELVE, SAME_J).replace("cycle_deg = 360", "cycle_deg = 720"),
         jp_table("[0, 120, 240]", "[0.6, 0.7, 0]"),
         jp_table(TWELVE[:-1] + ", 360]", SAME_J[:-1] + ", 0.7]"),
+        DT_SCENE.replace("[page]", '[[flywheel.load]]\ntype = "crank"\nphi_deg = [0, 360]\nmoment_Nm = [1, 1]\n[page]'),
+        replace(DT_SCENE, "increment_J = [0, -342.7", "increment_J = [5, -342.7"),
         replace(C, "cycle_deg = 360", "cycle_deg = 360\nspeed_rpm = 960"),
         replace(C, 'link = "2"\npoint = "S2"', 'link = "2"\npoint = "A"'),
         replace(C, 'point = "C"', 'point = "B"'),
@@ -869,3 +873,62 @@ def test_a_four_stroke_cycle_is_two_turns() -> None:
 
 def only_scene(text: str) -> Scene:
     return parse_text(text, "fly.toml")
+
+
+# ------------------------------------------------------------------------------------------
+# ΔT(φ) as a table: [flywheel.energy_increment]
+# ------------------------------------------------------------------------------------------
+
+DT_SCENE = (ROOT / "figures" / "scenes" / "fly.energy_table.toml").read_text(encoding="utf-8")
+DT_PHI = "phi_deg = [0, 15, 30, 45,"
+DT_REFUSED = "needs the moments: [flywheel.energy_increment] gives ΔT, which cannot be split back into its " \
+             "driving and resisting moments"
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "message"),
+    [
+        ("increment_J = [0, -342.7", "increment_J = [0, nan",
+         "flywheel.energy_increment.increment_J[1]: must be a finite number, not nan"),
+        ("increment_J = [0, -342.7", "increment_J = [5, -342.7",
+         "flywheel.energy_increment.increment_J[0]: must be 0, not 5 J: ΔT is counted from position 1 (φ = 0)"),
+        (DT_PHI, "phi_deg = [0, 15, 45, 30,",
+         "flywheel.energy_increment.phi_deg[3]: 30° comes after 45°: the angles must increase (ΔT(φ) has no steps)"),
+        (DT_PHI, "phi_deg = [5, 15, 30, 45,",
+         "flywheel.energy_increment.phi_deg[0]: must be 0, not 5°: the table starts at position 1 (φ = 0)"),
+        ("330, 345]", "330, 345, 360]",
+         "flywheel.energy_increment.increment_J: has 24 values, phi_deg has 25: one ΔT for each"),
+        ('tangents = "book"', 'tangents = "book"\nbalance = "driving"',
+         "flywheel.balance: not with [flywheel.energy_increment]: the table of ΔT gives no moments, so there is "
+         "no constant moment to find and no equation of motion to solve"),
+        ('tangents = "book"', 'tangents = "book"\npole_distance_mm = 40',
+         "flywheel.pole_distance_mm: not with [flywheel.energy_increment]: ΔT is given, nothing is integrated"),
+        ("T_J_per_mm = 109", "T_J_per_mm = 109\nM_Nm_per_mm = 50",
+         "scales.M_Nm_per_mm: not with [flywheel.energy_increment]: ΔT is given, no moment diagram is drawn"),
+        ('show = ["energy",', 'show = ["moment", "energy",', f"show[0]: moment {DT_REFUSED}"),
+        ('find = ["DeltaT@2",', 'find = ["Md",', f"find[0]: Md {DT_REFUSED}"),
+        ('find = ["DeltaT@2",', 'find = ["Mp@3",', f"find[0]: Mp {DT_REFUSED}"),
+        ("[page]", '[[flywheel.load]]\ntype = "crank"\nphi_deg = [0, 360]\nmoment_Nm = [10, 10]\n\n[page]',
+         "flywheel.energy_increment: not with [[flywheel.load]]: the table of ΔT already holds the moments' work; "
+         "give one or the other"),
+    ],
+)
+def test_a_bad_table_of_delta_t_is_refused_in_one_line(tmp_path: Path, old: str, new: str, message: str) -> None:
+    path = tmp_path / "dt.toml"
+    path.write_text(replace(DT_SCENE, old, new), encoding="utf-8")
+    code, out, err = run_cli("check", str(path))
+    assert (code, out, err) == (2, "", f"dt.toml: {message}\n")
+
+
+def test_a_table_of_delta_t_is_closed_at_the_cycle_and_holds_no_loads() -> None:
+    m = only_scene(DT_SCENE).problem.machine
+    t = m.energy_table
+    assert m.loads == () and t is not None and len(t.x) == 25
+    assert t.x[-1] == 2 * math.pi and t.y[0] == t.y[-1] == 0.0
+    assert t.y[14] == 6401.1 and t.x[14] == pytest.approx(math.radians(210), rel=1e-15)
+    closed = replace(replace(DT_SCENE, "330, 345]", "330, 345, 360]"), "1255.7, 545.2]", "1255.7, 545.2, 0]")
+    assert only_scene(closed).problem.machine.energy_table == t
+    assert only_problem(replace(replace(DT_SCENE, "330, 345]", "330, 345, 360]"), "1255.7, 545.2]",
+                                "1255.7, 545.2, 7]")) == (
+        "flywheel.energy_increment.increment_J[24]",
+        "7 J at Φ = 360° differs from 0 J at φ = 0: ΔT repeats every cycle")

@@ -102,3 +102,19 @@ def test_the_cli_prints_it_numbered():
     assert [line.split(". ", 1)[0] for line in lines] == [str(k) for k in range(1, len(lines) + 1)]
     assert lines[-2:] == [f"{len(lines) - 1}. n_max = 65.25·30/π = 623.1 r/min",
                           f"{len(lines)}. n_min = 64.6·30/π = 616.9 r/min"]
+
+
+def test_a_table_of_delta_t_is_read_off_not_integrated():
+    """fly.energy_table: ΔT at the positions comes from its table; no moment, chord or pole step."""
+    lines, _ = _protocol("fly.energy_table")
+    order = [
+        "position 2 (φ = 30°): Jп = 0.6019 kg·m², ΔT = −459.6 J (read off the scene's table of ΔT)",
+        "position 8 (φ = 210°): Jп = 0.6032 kg·m², ΔT = 6401 J (read off the scene's table of ΔT)",
+        "ΔT is given, so nothing is integrated (no μM, no pole)",
+        "the highest ordinate of ΔT is at position 8 (φ = 210°): 58.73 mm: DeltaT_max = 58.73 × 109 = 6401 J",
+        "it cuts the ΔT axis at k = 56.12 mm (6117 J)",
+        "measure kl = 62.07 mm: J_F = μT·kl/(ω_m²·δ) = 109 × 62.07/(28² × 0.2) = 43.15 kg·m²",
+    ]
+    at = [_index(lines, text) for text in order]
+    assert at == sorted(at)
+    assert not [line for line in lines if "chord" in line or "Mп" in line or "ray from P" in line]
