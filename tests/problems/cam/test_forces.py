@@ -175,3 +175,20 @@ def test_the_sketch_leans_the_guide_reactions_by_atan_f_and_culmanns_lines_meet_
     res = ex.R * p.d + np.array([0.0, -500.0])  # Q + R12, balanced by the guide's resultant along P–S
     assert abs(float(_cross(c / np.hypot(*c), res / np.hypot(*res)))) < 1e-9
 
+
+
+@pytest.mark.parametrize("f, has_s", [(0.0, False), (0.01, False), (0.4, True)])
+def test_the_sketch_leaves_s_off_when_the_guide_reactions_are_parallel_or_meet_far_off(f, has_s):
+    from graphmech.drawing.primitives import Label, Segment
+    from graphmech.problems.cam.check import analyse_cam
+    from graphmech.problems.cam.forces import sketch_items
+    from graphmech.scene import load_scene
+
+    scene = load_scene(SCENE)
+    an = analyse_cam(scene, (), estimates=False)
+    d = CamFriction(math.radians(60), 500.0, math.radians(6), f, 0.060, 0.030)
+    items = sketch_items(an.cam, d, an.drawn, 0.0025)
+    texts = [i.text for i in items if isinstance(i, Label)]
+    # f = 0.01: S stands 3 m off (b/2f), beyond 4 × the guide's top; f = 0: no S at all (and no φ′)
+    assert ("S" in texts) is has_s and any(isinstance(i, Segment) and i.dashed for i in items) is has_s
+    assert texts.count("φ′") == (0 if f == 0.0 else 2) and "P" in texts and "R_{12}" in texts
