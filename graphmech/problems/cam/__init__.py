@@ -83,7 +83,14 @@ def _law_sheet(scene: Scene[CamScene], footer: Footer) -> tuple[Sheet, list[str]
         last = max((p.row or 0 for p in sheet.panels), default=-1)
         row = last if sum((p.row or 0) == last for p in sheet.panels) == 1 else last + 1
         panel = forces_panel(an.cam, scene.problem.forces, an.scales["F"], scene.page.notation)
-        sheet = _replace(sheet, panels=sheet.panels + (_replace(panel, row=row),))
+        more: tuple[Any, ...] = (_replace(panel, row=row),)
+        if an.drawn is not None and "l" in an.scales:  # the free body at δ, the polygon beside it
+            from graphmech.problems.cam.forces import sketch_panel
+
+            body = sketch_panel(an.cam, scene.problem.forces, an.drawn, an.scales["l"], scene.page.notation)
+            row = last + 1
+            more = (_replace(body, row=row), _replace(panel, row=row))
+        sheet = _replace(sheet, panels=sheet.panels + more)
     return sheet, list(an.warnings)
 
 

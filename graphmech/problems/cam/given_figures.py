@@ -5,7 +5,8 @@ profile (at μl)
     circle r0 and the farthest circle (thin, dash-dot) about O; the offset circle e or the circle
     of the pivots a; the follower's inverted positions at the divisions (a translating axis from
     its foot, a rocker's pivot and arm) with their pitch points, numbered; each named contact's
-    follower drawn bold with its letter at the touched point.
+    follower drawn bold with its letter at the touched point, and its pressure angle α_E as an arc
+    between the common normal and the direction the follower's point moves.
 displacement (at μs, chosen to draw the rise some 40 mm high, and μφ, a turn 120 mm long, unless stated)
     the ordinates at the divisions as thin verticals and the curve through the dense closed form.
 """
@@ -27,6 +28,7 @@ from graphmech.drawing.primitives import (
     Role,
     Segment,
     Sheet,
+    angle_mark,
 )
 from graphmech.exact import cam_profile as exact
 from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
@@ -37,6 +39,10 @@ if TYPE_CHECKING:
     from graphmech.problems.cam.profile_given import GivenCamAnalysis, GivenCamScene
     from graphmech.problems.kind import Footer
     from graphmech.problems.reader import Scene
+
+#: The least length of a pressure angle's arc, mm (a 1° angle at a radius of 8 mm would be 0.14 mm).
+ARC_LEAST = 0.4
+
 
 def _mm(p: tuple[float, float], mu: float) -> tuple[float, float]:
     return (p[0] / mu, p[1] / mu)
@@ -70,6 +76,38 @@ def _follower(an: GivenCamAnalysis, p: DrawnPosition, bold: bool) -> list[Primit
     return out
 
 
+def pressure_mark(an: GivenCamAnalysis, p: DrawnPosition, name: str) -> list[Primitive]:
+    """The pressure angle at a named contact: short arms from the follower's point B along the common
+    normal (through B and the contact, or through B and P12 for a knife) and along B's velocity (a
+    translating follower's axis; ⟂ the rocker's arm), each turned to the side that makes the angle
+    acute, and the arc between them lettered α_E. A flat face (α ≡ 0) has none."""
+    from graphmech.problems.cam.figures import MARK_ARC, MARK_LINE
+
+    cam, mu = an.cam, an.scales["l"]
+    f = cam.follower
+    if f.contact == "flat":
+        return []
+    B = _mm(p.point, mu)
+    through = p.contact if f.contact == "roller" else p.p12
+    n = (p.point[0] - through[0], p.point[1] - through[1])
+    if isinstance(f, TranslatingFollower):
+        turn = -cam.rotation * p.delta
+        v = (-math.sin(turn), math.cos(turn))
+    else:
+        v = (-(p.point[1] - p.pivot[1]), p.point[0] - p.pivot[0])  # ⟂ the arm A_δB
+    ln, lv = math.hypot(*n), math.hypot(*v)
+    if not (ln > 0.0 and lv > 0.0 and math.isfinite(ln)):
+        return []
+    n, v = (n[0] / ln, n[1] / ln), (v[0] / lv, v[1] / lv)
+    if n[0] * v[0] + n[1] * v[1] < 0.0:
+        v = (-v[0], -v[1])
+    # a small angle gets a wider arc, so that it is at least ARC_LEAST long and can be seen
+    r = max(MARK_ARC, ARC_LEAST / p.alpha) if p.alpha > 0.0 else MARK_ARC
+    reach = max(MARK_LINE, r + MARK_LINE - MARK_ARC)
+    arms: list[Primitive] = [Segment(B, (B[0] + reach * d[0], B[1] + reach * d[1]), "label") for d in (n, v)]
+    return arms + angle_mark(B, n, v, r, f"α_{{{name}}}")
+
+
 def profile_items(an: GivenCamAnalysis) -> list[Primitive]:
     """The inversion drawing (module docstring), paper mm."""
     cam, mu, inv = an.cam, an.scales["l"], an.inversion
@@ -99,6 +137,7 @@ def profile_items(an: GivenCamAnalysis) -> list[Primitive]:
         p = inv.at(g)
         items += _follower(an, p, True)
         items.append(Label(name, _mm(p.contact, mu)))
+        items += pressure_mark(an, p, name)
     return items
 
 

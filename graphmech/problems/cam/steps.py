@@ -217,6 +217,36 @@ PHRASES: Phrases = {
     "parabolic": ("constant acceleration and deceleration", "等加速等减速运动规律", "параболический закон"),
     "cosine": ("cosine acceleration", "余弦加速度运动规律", "косинусоидальный закон"),
     "sine": ("sine acceleration", "正弦加速度运动规律", "синусоидальный закон"),
+    # the working profile's coordinates as handed in, and the follower's forces with friction (000 力 3)
+    "coordinates": ("tabulate the working profile's point at each of the {n} divisions in the cam frame (O at the "
+                    "origin, {frame}): x, y and the polar r = √(x² + y²), θ from +x counter-clockwise; division 0: "
+                    "x = {x} mm, y = {y} mm, r = {r} mm, θ = {t}°",
+                    "列出实际廓线在{n}个分点处的坐标（凸轮坐标系，O为原点，{frame}）：x、y及极坐标r = √(x² + y²)、θ"
+                    "（自+x逆时针量）；分点0：x = {x} mm，y = {y} mm，r = {r} mm，θ = {t}°",
+                    "составляем таблицу координат действительного профиля в {n} точках деления в системе кулачка "
+                    "(O — начало, {frame}): x, y и полярные r = √(x² + y²), θ от +x против часовой; точка 0: "
+                    "x = {x} mm, y = {y} mm, r = {r} mm, θ = {t}°"),
+    "frame follower": ("the follower along +y at δ = 0", "δ = 0时推杆沿+y", "толкатель по +y при δ = 0"),
+    "frame rocker": ("the rocker's pivot A on +x", "摆杆转轴A在+x上", "ось коромысла A на +x"),
+    "forces": ("turn the cam to δ = {deg}° and draw the follower's free body: Q = {Q} N down its axis; R₁₂ at K along "
+               "the common normal n–n leant by φ = {phi}° against the sliding; the guide's R′₃₂ at B₁ and R″₃₂ at B₂ "
+               "leant from its normal by φ′ = atan f = {phi2}°; Culmann: Q and R₁₂ meet at P, R′₃₂ and R″₃₂ at {S}; "
+               "choose {mu}, lay off Q = {q} mm, draw R₁₂ from its end and the resultant ∥ {PS} from its start, "
+               "split that along R′₃₂ and R″₃₂: the force polygon; measure R₁₂ = {r} mm = {R} N, "
+               "R′₃₂ = {r1} mm = {R1} N, R″₃₂ = {r2} mm = {R2} N; M₁ = R₁₂ × the lever of R₁₂ about O = {M} N·m",
+               "将凸轮转至δ = {deg}°，作推杆的受力图：载荷Q = {Q} N沿其轴线向下；凸轮反力R₁₂作用于K，沿公法线n–n"
+               "逆滑动方向偏摩擦角φ = {phi}°；导路反力R′₃₂作用于B₁、R″₃₂作用于B₂，自导路法线偏φ′ = arctan f = {phi2}°；"
+               "Culmann法：Q与R₁₂交于P，R′₃₂与R″₃₂交于{S}；取{mu}，截取Q = {q} mm，自其末端作R₁₂，自其始端作∥ {PS}的"
+               "合力，再沿R′₃₂、R″₃₂分解：即力多边形；量得R₁₂ = {r} mm = {R} N，R′₃₂ = {r1} mm = {R1} N，"
+               "R″₃₂ = {r2} mm = {R2} N；M₁ = R₁₂ × 其对O的力臂 = {M} N·m",
+               "поворачиваем кулачок на δ = {deg}° и изображаем силы, действующие на толкатель: Q = {Q} N вдоль его "
+               "оси вниз; R₁₂ в точке K по общей нормали n–n, отклонённая на угол трения φ = {phi}° против "
+               "скольжения; реакции направляющей R′₃₂ в B₁ и R″₃₂ в B₂, отклонённые от её нормали на φ′ = arctg f = "
+               "{phi2}°; по Кульману Q и R₁₂ пересекаются в P, R′₃₂ и R″₃₂ — в {S}; выбираем {mu}, откладываем "
+               "Q = {q} mm, из его конца проводим R₁₂, из начала — равнодействующую ∥ {PS} и раскладываем её по "
+               "R′₃₂ и R″₃₂: многоугольник сил; измеряем R₁₂ = {r} mm = {R} N, R′₃₂ = {r1} mm = {R1} N, "
+               "R″₃₂ = {r2} mm = {R2} N; M₁ = R₁₂ × плечо R₁₂ относительно O = {M} N·m"),
+    "parallel": ("(parallel: split by the lever rule)", "（二者平行：按杠杆原理分解）", "(параллельны: делим по правилу рычага)"),
     "poly345": ("3-4-5 polynomial", "3-4-5多项式运动规律", "полиномиальный закон 3-4-5"),
     "table": ("the given table", "给定表格", "заданная таблица"),
 }
@@ -236,6 +266,10 @@ def protocol(an: CamAnalysis) -> list[str]:
         out += w.derivative(q)
     if an.drawn is not None:
         out += w.inversion() + w.readings()
+    if an.scene.problem.coordinates and an.drawn is not None:
+        out.append(w.coordinates())
+    if an.scene.problem.forces is not None:
+        out.append(w.forces())
     return out
 
 
@@ -431,6 +465,33 @@ class _Words:
         for letter in ("B", "C", "A"):
             line = line.replace(f"{letter}{k}", f"{letter}{sub}")
         return line
+
+    def coordinates(self) -> str:
+        """The working profile's table as handed in: one line, with its first row."""
+        rows = self.an.divisions
+        first = rows[0]
+        mm = ["—" if first[k] is None else num(first[k] * 1e3) for k in ("x", "y", "r")]
+        return self.say("coordinates", n=str(len(rows)), x=mm[0], y=mm[1], r=mm[2],
+                        t="—" if first["theta_deg"] is None else num(first["theta_deg"]),
+                        frame=self.say("frame rocker" if self.angular else "frame follower"))
+
+    def forces(self) -> str:
+        """The follower's free body and its force polygon with friction, one line with the lengths drawn."""
+        from graphmech.problems.cam.forces import force_polygon, force_rows
+
+        data = self.an.scene.problem.forces
+        assert data is not None
+        mu = self.an.scales["F"]
+        poly = force_polygon(self.cam, data, mu)
+        rows = force_rows(self.cam, data, mu, ["R_K", "R_B1", "R_B2", "M_1"])
+        crossing = poly["S"] is not None
+        return self.say("forces", deg=num(math.degrees(data.at)), Q=num(data.load), phi=num(math.degrees(data.phi)),
+                        phi2=num(math.degrees(math.atan(data.f))), S="S" if crossing else self.say("parallel"),
+                        PS="PS" if crossing else "R′₃₂", mu=self.mu("F"), q=num(data.load / mu),
+                        r=num(rows["R_K"].drawn_mm or 0.0), R=num(rows["R_K"].graphical),
+                        r1=num(rows["R_B1"].drawn_mm or 0.0), R1=num(rows["R_B1"].graphical),
+                        r2=num(rows["R_B2"].drawn_mm or 0.0), R2=num(rows["R_B2"].graphical),
+                        M=num(rows["M_1"].graphical))
 
     def readings(self) -> list[str]:
         an, cam, f = self.an, self.cam, self.cam.follower

@@ -206,3 +206,41 @@ def test_a_clockwise_cam_reads_its_maxima_and_places_off_the_diagrams():
     # a place asked for without its maximum still names what it is the place of
     assert any(x.startswith("a_max is at δ = ") for x in lines)
     assert _index(lines, "a_max is at") > _index(lines, "the a–δ diagram")
+
+
+def _notation(path, notation: str):
+    text = path.read_text(encoding="utf-8")
+    return steps(parse_scene(text.replace("[page]", f'[page]\nnotation = "{notation}"'), f"{notation}.toml"))
+
+
+def test_the_forces_are_one_step_naming_r12_culmanns_points_and_the_polygon_with_the_checks_numbers():
+    scene_path = SCENES / "cam.follower_forces_friction.toml"
+    lines = steps(load_scene(scene_path))
+    rows = {r.name: r for r in check(load_scene(scene_path))[0].rows}
+    mine = [line for line in lines if "force polygon" in line]
+    assert len(mine) == 1 and mine[0] is lines[-1]  # after the profile's readings, as the book works
+    line = mine[0]
+    for words in ("δ = 60°", "Q = 500 N", "R₁₂ at K along the common normal n–n leant by φ = 6°",
+                  "φ′ = atan f = 8.531°", "Q and R₁₂ meet at P, R′₃₂ and R″₃₂ at S", "μF = 10 N/mm", "Q = 50 mm"):
+        assert words in line, words
+    for name, sym in (("R_K", "R₁₂"), ("R_B1", "R′₃₂"), ("R_B2", "R″₃₂")):
+        r = rows[name]
+        assert f"{sym} = {num(r.drawn_mm)} mm = {num(r.graphical)} N" in line
+    assert line.endswith(f"= {num(rows['M_1'].graphical)} N·m")
+    zh, ru = (_notation(scene_path, n)[-1] for n in ("zh", "ru"))
+    assert "力多边形" in zh and "R₁₂" in zh and f"{num(rows['R_K'].graphical)} N" in zh
+    assert "многоугольник сил" in ru and "Кульман" in ru and f"{num(rows['R_K'].graphical)} N" in ru
+
+
+def test_the_coordinates_table_is_one_step_with_its_first_row_as_the_check_gives_it():
+    scene_path = SCENES / "cam.offset_roller_translating-table.toml"
+    lines = steps(load_scene(scene_path))
+    first = check(load_scene(scene_path))[2]["divisions"][0]
+    mine = [line for line in lines if "tabulate the working profile" in line]
+    assert len(mine) == 1
+    assert "each of the 24 divisions" in mine[0] and "θ from +x counter-clockwise" in mine[0]
+    assert (f"division 0: x = {num(first['x'] * 1e3)} mm, y = {num(first['y'] * 1e3)} mm, "
+            f"r = {num(first['r'] * 1e3)} mm, θ = {num(first['theta_deg'])}°") in mine[0]
+    assert not any("tabulate" in line for line in steps(load_scene(SCENES / "cam.offset_roller_translating-pos.toml")))
+    assert "实际廓线" in _notation(scene_path, "zh")[-1]
+    assert "координат действительного профиля" in _notation(scene_path, "ru")[-1]
