@@ -7,9 +7,10 @@ the book reads ω_i/ω_j) thin; beside it the polygon of links.
 from __future__ import annotations
 
 import math
+import re
 from itertools import combinations
 
-from graphmech.drawing.lettering import LETTER, scale_text
+from graphmech.drawing.lettering import LETTER, MINUS, scale_text
 from graphmech.drawing.primitives import (
     Circle,
     FixedPivot,
@@ -77,7 +78,9 @@ def drive_items(an: CentresAnalysis) -> list[Primitive]:
 def centres_sheet(an: CentresAnalysis, page: tuple[float, float], footer: tuple[str, ...] = ()) -> Sheet:
     """The mechanism with its centres, and the polygon of links."""
     notation = an.scene.page.notation
-    notes = (scale_text("l", an.mu_l),) + tuple(line for line in text_lines(an) if line.startswith("ω"))
+    # the check's lines, lettered: a true minus on the drawing (−0.75), not a hyphen
+    notes = (scale_text("l", an.mu_l),) + tuple(re.sub(r"(?<![\w)])-(?=\d)", MINUS, line)
+                                               for line in text_lines(an) if line.startswith("ω"))
     panels = (Panel("centres", "Instant centres" if notation == "en" else ("瞬心" if notation == "zh" else
                                                                            "Мгновенные центры скоростей"),
                     tuple(drive_items(an)), notes, row=0, scales=(("l", an.mu_l),)),
