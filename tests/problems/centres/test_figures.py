@@ -29,7 +29,7 @@ def test_the_sheet_draws_the_wheels_the_centres_and_the_polygon_of_links():
     kennedy = [i for i in items if isinstance(i, Segment) and i.dashed]
     assert any(math.hypot(*s.p0) < 1e-9 or math.hypot(*s.p1) < 1e-9 for s in kennedy)  # P14 … P24
     assert sum(isinstance(i, FixedPivot) for i in items) == 1
-    assert any("ω1/ω2 = P24P12 / P14P12 = -0.75" in n for n in sheet.panels[0].notes)
+    assert any("ω1/ω2 = P24P12 / P14P12 = −0.75" in n for n in sheet.panels[0].notes)
     assert sheet.panels[0].scales == (("l", 0.001),)
 
 

@@ -118,5 +118,5 @@ def test_the_drawn_text_is_lettered_not_typed(name):
                 assert len(num.replace(".", "").lstrip("0")) <= 4, (p.name, t)
             assert not re.search(r"(?<![\w)])-\d", t), (p.name, t)
         assert all(it.size >= 3.5 for it in p.items if isinstance(it, Label)), p.name
-        if not p.name.startswith("ic-circle"):  # the polygon of links is not to scale
+        if not p.name.startswith(("ic-circle", "polygon")):  # the polygon of links is not to scale
             assert p.scales, p.name
