@@ -10,11 +10,15 @@ backwards), and times one whole sheet.
 """
 from __future__ import annotations
 
+import json
+import math
 import os
 import time
 from importlib.resources import as_file
+from pathlib import Path
 from typing import Any
 
+from graphmech.errors import SceneError
 from graphmech.packaged import examples
 from graphmech.problems import KINDS
 from graphmech.scene import render_scene
@@ -77,3 +81,65 @@ def run_bench(quick: bool = False) -> dict[str, Any]:
     notes.append(f"batch: {many['n']} variants (figure and check each) in {many['seconds']:.2f} s on "
                  f"{many.get('workers', 1)} processes ({1e3 * many['seconds'] / max(1, many['n']):.0f} ms each)")
     return {"records": records + [sheet, many], "notes": notes}
+
+
+# ---------------------------------------------------------------------------- comparing two runs
+
+#: The fields that tell one record from another besides method, case and n (the integrators').
+KEY_FIELDS = ("solver", "rtol")
+
+
+def record_key(r: dict[str, Any]) -> tuple[Any, ...]:
+    """What names a record across runs: method, case, n and, for an integrator, solver and rtol."""
+    return (r["method"], r["case"], r["n"], *(r.get(k) for k in KEY_FIELDS))
+
+
+def read_records(path: str | Path) -> list[dict[str, Any]]:
+    """The records of an earlier ``bench.json``; a file that is not one is a one-line SceneError
+    naming the key path (``records[3].seconds``), read before any bench runs."""
+    name = str(path)
+    try:
+        doc = json.loads(Path(path).read_text(encoding="utf-8"))
+    except OSError as e:
+        raise SceneError([("", f"cannot read it ({e.strerror or e})")], name) from None
+    except (UnicodeDecodeError, json.JSONDecodeError) as e:
+        raise SceneError([("", f"not a bench.json ({e})")], name) from None
+    records = doc.get("records") if isinstance(doc, dict) else None
+    if not isinstance(records, list):
+        raise SceneError([("records", "missing: a bench.json written by graphmech bench -o DIR has a list of records")],
+                         name)
+    for i, r in enumerate(records):
+        if not isinstance(r, dict):
+            raise SceneError([(f"records[{i}]", "must be a table of method, case, n, seconds")], name)
+        for k, ok, what in (("method", lambda v: isinstance(v, str), "a name"),
+                            ("case", lambda v: isinstance(v, str), "a name"),
+                            ("n", lambda v: isinstance(v, int) and not isinstance(v, bool), "a whole number"),
+                            ("seconds", lambda v: isinstance(v, (int, float)) and not isinstance(v, bool)
+                             and math.isfinite(v) and v > 0, "a positive number")):
+            if not ok(r.get(k)):
+                raise SceneError([(f"records[{i}].{k}", f"must be {what}, not {r.get(k)!r}")], name)
+    return records
+
+
+def compare(old: list[dict[str, Any]], new: list[dict[str, Any]]) -> list[str]:
+    """One line per record: its time before and after and the ratio (and the error where it
+    changed); records only in one run are listed as new or gone."""
+    before = {record_key(r): r for r in old}
+    now = {record_key(r): r for r in new}
+    lines = []
+    for key, r in now.items():
+        name = f"{r['method']} {r['case']} n={r['n']}" + "".join(f" {k}={r[k]}" for k in KEY_FIELDS if r.get(k) is not None)
+        o = before.get(key)
+        if o is None:
+            lines.append(f"{name}: {r['seconds'] * 1e6:.1f} µs (new)")
+            continue
+        ratio = r["seconds"] / o["seconds"]
+        err = ""
+        e0, e1 = o.get("max_rel_error"), r.get("max_rel_error")
+        if e0 != e1 and e0 is not None and e1 is not None:
+            err = f", error {e0:.1e} → {e1:.1e}"
+        lines.append(f"{name}: {o['seconds'] * 1e6:.1f} → {r['seconds'] * 1e6:.1f} µs (×{ratio:.2f}){err}")
+    for key, o in before.items():
+        if key not in now:
+            lines.append(f"{o['method']} {o['case']} n={o['n']}: gone")
+    return lines

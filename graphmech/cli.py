@@ -108,6 +108,7 @@ def _parser() -> argparse.ArgumentParser:
     b.add_argument("--json", action="store_true")
     b.add_argument("-o", "--output", metavar="DIR", help="also write bench.json and log-log plots of error and time into DIR")
     b.add_argument("--quick", action="store_true", help="fewer repetitions")
+    b.add_argument("--compare", metavar="OLD.json", help="print each record's change against an earlier bench.json")
     # what is installed besides the code (graphmech.packaged) and the gallery (graphmech.gallery)
     e = sub.add_parser("examples", help="list the example scenes installed with graphmech, or copy one")
     e.add_argument("name", nargs="?", metavar="NAME", help="the example to copy (as listed)")
@@ -400,16 +401,18 @@ def _packaged(args: argparse.Namespace) -> int:
 
 
 def _bench(args: argparse.Namespace) -> int:
-    from graphmech.bench import run_bench
+    from graphmech.bench import compare, read_records, run_bench
 
+    old = read_records(args.compare) if args.compare else None  # a bad file: refused before the run
     doc = run_bench(quick=args.quick)
+    changes = compare(old, doc["records"]) if old is not None else None
     text = json.dumps(doc, indent=1, allow_nan=False)
     if args.output:
         out = Path(args.output)
         out.mkdir(parents=True, exist_ok=True)
         write_atomic(out / "bench.json", text + "\n")
     if args.json:
-        print(text)
+        print(text if changes is None else json.dumps({**doc, "compare": changes}, indent=1, allow_nan=False))
     else:
         for r in doc["records"]:
             err = r["max_rel_error"]
@@ -417,6 +420,10 @@ def _bench(args: argparse.Namespace) -> int:
             print(f"{r['method']:<18} {r['case']:<24} n={r['n']:<6}{r['seconds'] * 1e6:>12.1f} µs   {tail}")
         for note in doc.get("notes", []):
             print(note)
+        if changes is not None:
+            print(f"against {args.compare}:")
+            for line in changes:
+                print("  " + line)
     if args.output:  # the plots last: without graphmech[plots] the results above still stand
         from graphmech.render.plots import error_time_plots  # matplotlib only when plots are asked for
 

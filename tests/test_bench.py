@@ -29,3 +29,46 @@ def test_the_batch_record_times_variants_with_their_checks(quick_bench):
     r = batch[0]
     assert r["n"] == 12 and r["failed"] == 0 and r["seconds"] > 0 and r["workers"] >= 1
     assert r["max_rel_error"] <= 1e-12  # every variant's every row: constructions, exact to round-off
+
+
+def test_compare_names_each_records_change_and_what_is_new_or_gone():
+    from graphmech.bench import compare
+
+    old = [{"method": "polygons", "case": "fourbar", "n": 360, "seconds": 2e-4, "max_rel_error": 4.7e-15},
+           {"method": "true-motion", "case": "stiff", "n": 90, "seconds": 0.5, "max_rel_error": 1e-6,
+            "solver": "Radau", "rtol": 1e-6},
+           {"method": "old-method", "case": "x", "n": 1, "seconds": 1.0, "max_rel_error": None}]
+    new = [{"method": "polygons", "case": "fourbar", "n": 360, "seconds": 1e-4, "max_rel_error": 2.0e-15},
+           {"method": "true-motion", "case": "stiff", "n": 90, "seconds": 0.5, "max_rel_error": 1e-6,
+            "solver": "Radau", "rtol": 1e-6},
+           {"method": "true-motion", "case": "stiff", "n": 90, "seconds": 0.4, "max_rel_error": 1e-6,
+            "solver": "BDF", "rtol": 1e-6}]
+    assert compare(old, new) == [
+        "polygons fourbar n=360: 200.0 → 100.0 µs (×0.50), error 4.7e-15 → 2.0e-15",
+        "true-motion stiff n=90 solver=Radau rtol=1e-06: 500000.0 → 500000.0 µs (×1.00)",
+        "true-motion stiff n=90 solver=BDF rtol=1e-06: 400000.0 µs (new)",
+        "old-method x n=1: gone",
+    ]
+
+
+def test_a_run_compared_with_itself_changes_nothing(quick_bench):
+    from graphmech.bench import compare, read_records
+
+    _, _, _, folder = quick_bench
+    saved = read_records(folder / "bench.json")
+    lines = compare(saved, saved)
+    assert len(lines) == len({(r["method"], r["case"], r["n"], r.get("solver"), r.get("rtol")) for r in saved})
+    assert all("(×1.00)" in line for line in lines)
+
+
+def test_a_bad_file_to_compare_with_is_refused_before_the_bench_runs(tmp_path):
+    from tests.conftest import assert_refused, run_cli
+
+    bad = tmp_path / "old.json"
+    bad.write_text('{"records": [{"method": "polygons", "case": "c", "n": 1, "seconds": -1}]}', encoding="utf-8")
+    assert_refused(run_cli("bench", "--compare", str(bad), limit=20.0), str(bad), "records[0].seconds",
+                   "positive number")
+    bad.write_text("not json", encoding="utf-8")
+    assert_refused(run_cli("bench", "--compare", str(bad), limit=20.0), str(bad), "not a bench.json")
+    assert_refused(run_cli("bench", "--compare", str(tmp_path / "none.json"), limit=20.0), str(tmp_path / "none.json"),
+                   "cannot read")
