@@ -111,14 +111,21 @@ def read_records(path: str | Path) -> list[dict[str, Any]]:
     for i, r in enumerate(records):
         if not isinstance(r, dict):
             raise SceneError([(f"records[{i}]", "must be a table of method, case, n, seconds")], name)
-        for k, ok, what in (("method", lambda v: isinstance(v, str), "a name"),
-                            ("case", lambda v: isinstance(v, str), "a name"),
-                            ("n", lambda v: isinstance(v, int) and not isinstance(v, bool), "a whole number"),
-                            ("seconds", lambda v: isinstance(v, (int, float)) and not isinstance(v, bool)
-                             and math.isfinite(v) and v > 0, "a positive number")):
-            if not ok(r.get(k)):
+        for k, what in (("method", "a name"), ("case", "a name"), ("n", "a whole number"),
+                        ("seconds", "a positive number")):
+            if not _field_ok(k, r.get(k)):
                 raise SceneError([(f"records[{i}].{k}", f"must be {what}, not {r.get(k)!r}")], name)
     return records
+
+
+def _field_ok(key: str, v: Any) -> bool:
+    if key in ("method", "case"):
+        return isinstance(v, str)
+    if isinstance(v, bool):
+        return False
+    if key == "n":
+        return isinstance(v, int)
+    return isinstance(v, (int, float)) and math.isfinite(v) and v > 0
 
 
 def compare(old: list[dict[str, Any]], new: list[dict[str, Any]]) -> list[str]:

@@ -49,9 +49,10 @@ from typing import cast
 
 import numpy as np
 from numpy.typing import ArrayLike
-from scipy.optimize import brentq, minimize_scalar
+from scipy.optimize import minimize_scalar
 
 from graphmech.errors import NoSolution
+from graphmech.roots import brentq
 from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.cam_profile import GivenCam, PointsProfile
 

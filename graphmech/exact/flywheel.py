@@ -27,9 +27,9 @@ from itertools import pairwise
 from typing import Literal, cast
 
 import numpy as np
-from scipy.optimize import brentq
 
 from graphmech.errors import NotApplicable, OutOfDomain, SceneError
+from graphmech.roots import brentq  # scipy's algorithm without loading scipy.optimize (0.3 s)
 from graphmech.exact.linkage import Kinematics, solve
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.mechanisms.machine import (

@@ -560,7 +560,7 @@ def _roots(grid: np.ndarray, values: np.ndarray, f: Callable[[float], float]) ->
     A sign change across an infinite rate (a dead centre) is not a zero: it is kept only if
     ``|f|`` at the refined point is small compared with the rate's size.
     """
-    from scipy.optimize import brentq
+    from graphmech.roots import brentq
 
     finite = values[np.isfinite(values)]
     size = float(np.max(np.abs(finite))) if finite.size else 0.0
@@ -574,7 +574,7 @@ def _roots(grid: np.ndarray, values: np.ndarray, f: Callable[[float], float]) ->
         elif a * b < 0.0:
             try:
                 root = brentq(f, float(grid[k]), float(grid[k + 1]), xtol=1e-14, rtol=4 * T.EPS, maxiter=200)
-            except (ValueError, RuntimeError):  # f undefined inside the bracket (a dead centre)
+            except (ValueError, ArithmeticError):  # f undefined inside the bracket (a dead centre), no convergence
                 continue
         else:
             continue
