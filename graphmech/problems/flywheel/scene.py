@@ -388,6 +388,10 @@ def _read_count(fw: Reader) -> int | None:
     return value
 
 
+#: The least δ read: the tangents' slopes differ by 2δ, and double precision keeps ~1e-16 of them.
+MIN_DELTA = 1e-9
+
+
 def _read_delta(fw: Reader, required: bool) -> float | None:
     """``delta``: δ, a number or a fraction "1/25", 0 < δ < 2."""
     value = fw.raw(
@@ -417,6 +421,10 @@ def _read_delta(fw: Reader, required: bool) -> float | None:
             path,
             f"must lie between 0 and 2, not {text}: δ = (ω_max − ω_min)/ω_m, and ω_min > 0",
         )
+        return None
+    if delta < MIN_DELTA:  # the tangents' slopes ω²(1 ± δ) differ by 2δ: lost near 1e-16
+        fw.problem(path, f"{text} is below {MIN_DELTA:g}: the Wittenbauer tangents' slopes ω²(1 ± δ) would not "
+                         "differ in double precision, and no flywheel is made to that")
         return None
     return delta
 

@@ -162,7 +162,12 @@ def analyse(scene: Scene[GearScene], extra_measured: tuple[tuple[str, float], ..
     with in_double_precision("the gear construction"):
         _warn(an)
         _choose_scales(an)
-        gen.analyse_generation(an)
+        try:
+            gen.analyse_generation(an)
+        except SceneError:
+            raise
+        except GraphmechError as err:  # the cutting cannot be posed for this gear (h*a = 0: no undercut)
+            raise SceneError([("gear.generation", str(err))], scene.source) from None
         for i, name in enumerate(an.names):
             try:
                 row = _row(an, name)

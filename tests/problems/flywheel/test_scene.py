@@ -932,3 +932,16 @@ def test_a_table_of_delta_t_is_closed_at_the_cycle_and_holds_no_loads() -> None:
                                 "1255.7, 545.2, 7]")) == (
         "flywheel.energy_increment.increment_J[24]",
         "7 J at Φ = 360° differs from 0 J at φ = 0: ΔT repeats every cycle")
+
+
+def test_a_delta_too_small_for_double_precision_is_refused(tmp_path):
+    # fuzz seed 96: δ = 1e-300 made the Wittenbauer tangents' slopes equal (no key path)
+    from tests.conftest import SCENES, assert_refused, run_cli
+
+    text = (SCENES / "fly.wittenbauer_course_project.toml").read_text(encoding="utf-8")
+    p = tmp_path / "f.toml"
+    p.write_text(text.replace("delta = 0.2", "delta = 1e-300", 1), encoding="utf-8")
+    assert_refused(run_cli("check", str(p)), "f.toml", "flywheel.delta", "below 1e-09")
+    p.write_text(text.replace("delta = 0.2", "delta = 1e-9", 1), encoding="utf-8")
+    code, _, err = run_cli("check", str(p))
+    assert code in (0, 1), err

@@ -212,3 +212,14 @@ def test_every_shift_row_agrees_and_says_the_drive(tmp_path):
 def test_the_kind_of_drive_in_json(tmp_path, x, kind):
     f = shift_scene(tmp_path, '[gear]\nm_mm = 2\nz = [30, 40]\nmeshing = "external"\n' + f"x = {x}\n", ["a_w"])
     assert check_json(f)["gear"]["drive"] == kind
+
+
+def test_generation_without_an_addendum_is_refused_at_its_key(tmp_path):
+    # fuzz seed 95: h*a = 0 in a rack-cutter scene raised NotApplicable with no key path
+    from tests.conftest import assert_refused
+
+    text = (SCENES / "gear.rack_cutter_generation_cases-4.toml").read_text(encoding="utf-8")
+    assert "ha_star = 1" in text
+    p = tmp_path / "g.toml"
+    p.write_text(text.replace("ha_star = 1", "ha_star = 0", 1), encoding="utf-8")
+    assert_refused(run_cli("check", str(p)), "g.toml", "gear.generation", "no tooth is undercut")
