@@ -3,7 +3,8 @@ from __future__ import annotations
 
 import math
 import time
-from typing import Any, Callable, Sequence
+from collections.abc import Callable, Sequence
+from typing import Any
 
 
 def best_time(fn: Callable[[], Any], repeat: int, number: int = 1) -> tuple[float, Any]:
