@@ -65,15 +65,21 @@ class _Ops(NamedTuple):
     acos: Callable[[Any], Any]
     hypot: Callable[[Any, Any], Any]
     abs: Callable[[Any], Any]
+    full: Callable[[Any, float], Any]  # a constant at every position
 
 
-NUMPY = _Ops(np.sin, np.cos, np.sqrt, np.arctan2, np.arccos, np.hypot, np.abs)
-MATH = _Ops(math.sin, math.cos, math.sqrt, math.atan2, math.acos, math.hypot, abs)
+def _same(phi: float, value: float) -> float:
+    return value
+
+
+NUMPY = _Ops(np.sin, np.cos, np.sqrt, np.arctan2, np.arccos, np.hypot, np.abs, np.full_like)
+MATH = _Ops(math.sin, math.cos, math.sqrt, math.atan2, math.acos, math.hypot, abs, _same)
 
 
 def _fourbar(phi: Any, m: _Ops, a: float = 0.06, b: float = 0.12, c: float = 0.09, d: float = 0.12,
              w1: float = 10.0) -> tuple[dict[str, Any], tuple[Any, ...]]:
-    """The four-bar's quantities, and C's position, velocity and acceleration (for a dyad on C).
+    """The four-bar's quantities, and C, θ3, ω3, α3 and ω3² (for a dyad on C: nothing computed for it
+    alone, so the four-bar's yardstick does only the four-bar's work).
 
     Positions by the law of cosines, rates by the differentiated loop a·e^{iφ} + b·e^{iθ2} =
     d + c·e^{iθ3} (Cramer's rule).
@@ -92,14 +98,11 @@ def _fourbar(phi: Any, m: _Ops, a: float = 0.06, b: float = 0.12, c: float = 0.0
     al2 = (a * w1 ** 2 * m.cos(phi - t3) + b * w2 ** 2 * m.cos(t2 - t3) - c * w3 ** 2) / (b * s23)
     al3 = (a * w1 ** 2 * m.cos(phi - t2) + b * w2 ** 2 - c * w3 ** 2 * m.cos(t3 - t2)) / (c * s23)
     w2s, w3s = w2 * w2, w3 * w3
-    out = {"v_B": abs(w1) * a + 0.0 * phi, "v_C": m.abs(w3) * c, "v_CB": m.abs(w2) * b,
+    out = {"v_B": m.full(phi, abs(w1) * a), "v_C": m.abs(w3) * c, "v_CB": m.abs(w2) * b,
            "omega_2": w2, "omega_3": w3, "a_C": c * m.hypot(al3, w3s), "a_CB": b * m.hypot(al2, w2s),
            "a_CB_n": w2s * b, "a_CB_t": m.abs(al2) * b, "a_CD_n": w3s * c, "a_CD_t": m.abs(al3) * c,
            "alpha_2": al2, "alpha_3": al3}
-    s3, c3 = m.sin(t3), m.cos(t3)
-    vcx, vcy = -c * w3 * s3, c * w3 * c3  # ω3 × DC
-    acx, acy = -c * al3 * s3 - c * w3s * c3, c * al3 * c3 - c * w3s * s3
-    return out, (cx, cy, vcx, vcy, acx, acy)
+    return out, (cx, cy, t3, w3, al3, w3s)
 
 
 def closed_form_fourbar(phi: np.ndarray, a: float = 0.06, b: float = 0.12, c: float = 0.09,
@@ -132,7 +135,7 @@ def _slider_crank(phi: Any, m: _Ops, a: float = 0.1, b: float = 0.3, e: float = 
     w, al, _, v, acc = _rrp((a * cp, a * sp, -a * w1 * sp, a * w1 * cp, -a * w1 * w1 * cp, -a * w1 * w1 * sp),
                             m, b, e)
     ws = w * w
-    return {"v_B": abs(w1) * a + 0.0 * phi, "v_C": v, "v_CB": m.abs(w) * b, "omega_2": w, "alpha_2": al,
+    return {"v_B": m.full(phi, abs(w1) * a), "v_C": v, "v_CB": m.abs(w) * b, "omega_2": w, "alpha_2": al,
             "a_C": acc, "a_CB": b * m.hypot(al, ws), "a_CB_n": ws * b, "a_CB_t": m.abs(al) * b}
 
 
@@ -167,10 +170,13 @@ def closed_form_guide_bar(phi: np.ndarray) -> dict[str, np.ndarray]:
     return _guide_bar(phi, NUMPY)
 
 
-def _sixbar(phi: Any, m: _Ops, ce: float = 0.2, e: float = 0.15) -> dict[str, Any]:
-    """The four-bar of ``fourbar`` and the RRP dyad C–E, E sliding on the guide y = e."""
-    out, c = _fourbar(phi, m)
-    w, al, _, v, acc = _rrp(c, m, ce, e)
+def _sixbar(phi: Any, m: _Ops, c: float = 0.09, ce: float = 0.2, e: float = 0.15) -> dict[str, Any]:
+    """The four-bar of ``fourbar`` (rocker DC = c) and the RRP dyad C–E, E sliding on the guide y = e."""
+    out, (cx, cy, t3, w3, al3, w3s) = _fourbar(phi, m, c=c)
+    s3, c3 = m.sin(t3), m.cos(t3)
+    # C = D + c·e^{iθ3}: v_C = ω3 × DC, a_C = α3 × DC − ω3²·DC
+    pc = (cx, cy, -c * w3 * s3, c * w3 * c3, -c * al3 * s3 - c * w3s * c3, c * al3 * c3 - c * w3s * s3)
+    w, al, _, v, acc = _rrp(pc, m, ce, e)
     ws = w * w
     out.update({"omega_5": w, "alpha_5": al, "v_E": v, "a_E": acc, "v_EC": m.abs(w) * ce,
                 "a_EC": ce * m.hypot(al, ws), "a_EC_n": ws * ce, "a_EC_t": m.abs(al) * ce})
