@@ -3,7 +3,8 @@ from __future__ import annotations
 
 import math
 import time
-from typing import Any, Callable
+from collections.abc import Callable, Sequence
+from typing import Any
 
 
 def best_time(fn: Callable[[], Any], repeat: int, number: int = 1) -> tuple[float, Any]:
@@ -22,4 +23,23 @@ def best_time(fn: Callable[[], Any], repeat: int, number: int = 1) -> tuple[floa
     return best, out
 
 
-__all__ = ["best_time"]
+def best_times_interleaved(fns: Sequence[Callable[[], Any]], repeat: int, number: int = 1) -> list[float]:
+    """Seconds per call of each of ``fns``, each the best of ``repeat`` runs of ``number`` calls, the
+    runs alternated (f, g, f, g, …) so that every function sees the same machine state: a ratio of
+    two such times is fair on a shared machine.
+
+    >>> a, b = best_times_interleaved([lambda: 1, lambda: 2], repeat=3, number=10)
+    >>> a >= 0.0 and b >= 0.0
+    True
+    """
+    best = [math.inf] * len(fns)
+    for _ in range(repeat):
+        for k, fn in enumerate(fns):
+            t = time.perf_counter()
+            for _ in range(number):
+                fn()
+            best[k] = min(best[k], (time.perf_counter() - t) / number)
+    return best
+
+
+__all__ = ["best_time", "best_times_interleaved"]

@@ -5,7 +5,7 @@ from __future__ import annotations
 import itertools
 
 import graphmech.timing as timing
-from graphmech.timing import best_time
+from graphmech.timing import best_time, best_times_interleaved
 
 
 def test_the_best_run_divided_by_the_calls_is_the_time(monkeypatch):
@@ -26,3 +26,13 @@ def test_the_function_runs_repeat_times_number_and_its_last_result_is_kept():
 def test_no_runs_give_an_infinite_time_and_no_result():
     seconds, last = best_time(lambda: 1 / 0, repeat=0)
     assert seconds == float("inf") and last is None
+
+
+def test_interleaved_runs_alternate_and_each_keeps_its_best(monkeypatch):
+    # two runs of f, g alternated: f 4 s, g 1 s, f 2 s, g 3 s (two calls each) → 1 s and 0.5 s a call
+    ticks = iter([0.0, 4.0, 10.0, 11.0, 20.0, 22.0, 30.0, 33.0])
+    monkeypatch.setattr(timing.time, "perf_counter", lambda: next(ticks))
+    calls = []
+    seconds = best_times_interleaved([lambda: calls.append("f"), lambda: calls.append("g")], repeat=2, number=2)
+    assert seconds == [1.0, 0.5]
+    assert calls == ["f", "f", "g", "g", "f", "f", "g", "g"]

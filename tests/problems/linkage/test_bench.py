@@ -1,6 +1,7 @@
-"""The polygons' benchmark (graphmech/problems/linkage/bench.py): its four-bar, the closed-form
-yardstick it is timed against, and records whose errors are those of exact constructions. No
-assertion on speed."""
+"""The polygons' benchmark (graphmech/problems/linkage/bench.py): its four linkages, the closed-form
+yardsticks they are timed against (each agrees with the exact solution to 1e-12: a fair yardstick
+solves the same problem), and records whose errors are those of exact constructions. No assertion
+on speed."""
 from __future__ import annotations
 
 import math
@@ -9,7 +10,27 @@ import numpy as np
 import pytest
 
 from graphmech.exact.linkage import solve
-from graphmech.problems.linkage.bench import FOURBAR_QUANTITIES, bench, closed_form_fourbar, fourbar, polygon_records
+from graphmech.methods.polygons import build_polygons
+from graphmech.problems.linkage.bench import (
+    CASES,
+    FOURBAR_QUANTITIES,
+    MATH,
+    NUMPY,
+    bench,
+    closed_form_fourbar,
+    closed_form_guide_bar,
+    closed_form_sixbar,
+    closed_form_slider_crank,
+    fourbar,
+    guide_bar,
+    polygon_records,
+    sixbar,
+    slider_crank,
+)
+from graphmech.problems.linkage.check import exact_value
+from graphmech.problems.linkage.sizes import characteristic
+
+NAMES = ["fourbar-120-60-120-90", "slider-crank-100-300-e30", "guide-bar-300-100", "sixbar-120-60-120-90-ce200-e150"]
 
 
 def test_the_benchmarks_four_bar():
@@ -45,22 +66,90 @@ def test_the_closed_form_keeps_the_velocity_projection_theorem():
     assert ref["v_C"][0] == pytest.approx(math.hypot(*v_c), rel=1e-12)
 
 
+def test_the_benchmark_linkages():
+    sc, gb, six = slider_crank(), guide_bar(), sixbar()
+    assert (sc.driver.length, sc.dyads[0].length, sc.dyads[0].guide.through) == (0.1, 0.3, (0.0, 0.03))
+    assert gb.frame_points["C"] == (0.0, 0.3) and gb.driver.length == 0.1 and gb.dyads[0].kind == "RPR"
+    assert six.dyads[0] == fourbar().dyads[0] and (six.dyads[1].p, six.dyads[1].length) == ("C", 0.2)
+    assert [c.name for c in CASES] == NAMES
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
+def test_every_closed_form_agrees_with_the_exact_solution_to_1e_12(case):
+    """Numpy over a turn and the math module at each position: both the exact values of every quantity
+    the polygons give (relative to the value, or to the linkage's size where it is near zero)."""
+    lk = case.linkage()
+    phi = np.radians(np.arange(0.0, 360.0, 7.5))
+    kin = solve(lk, phi)
+    assert kin.valid.all()
+    b = build_polygons(lk, {"l": 0.002, "v": 0.01, "a": 0.1})
+    ref = case.closed_form(phi, NUMPY)
+    assert set(ref) == set(case.quantities)
+    worst = 0.0
+    for i, p in enumerate(phi):
+        one = case.closed_form(float(p), MATH)
+        for q in case.quantities:
+            qq = b.quantities[q]
+            e = exact_value(kin, qq.exact, i)
+            scale = max(abs(e), characteristic(lk, qq.unit))
+            assert isinstance(one[q], float)
+            worst = max(worst, abs(one[q] - e) / scale, abs(float(ref[q][i]) - e) / scale)
+    assert worst <= 1e-12
+
+
+def test_the_named_closed_forms_are_the_cases_numpy_ones():
+    phi = np.radians(np.arange(0.0, 360.0, 30.0))
+    for fn, case in zip((closed_form_fourbar, closed_form_slider_crank, closed_form_guide_bar, closed_form_sixbar),
+                        CASES):
+        ours = fn(phi)
+        assert all(np.array_equal(ours[q], v) for q, v in case.closed_form(phi, NUMPY).items())
+
+
+def test_the_slider_cranks_closed_form_at_a_dead_centre():
+    """φ with B on BC's line ahead: sin θ2 = (e − a sin φ)/b and x_C = a cos φ + b cos θ2 = √((a+b)² − e²);
+    there θ2 = φ, so ω2 = −a·ω1/b and C stands (v_C = 0)."""
+    a, b, e = 0.1, 0.3, 0.03
+    phi = math.asin(e / (a + b))
+    out = closed_form_slider_crank(np.array([phi]))
+    assert out["omega_2"][0] == pytest.approx(-a * 10 / b, rel=1e-12)  # θ2 = φ
+    assert out["v_C"][0] == pytest.approx(0.0, abs=1e-15)
+
+
+def test_the_guide_bars_closed_form_where_the_crank_is_across_the_bar():
+    """φ = 0: B at (100, 0) mm, CB = √(100² + 300²); v_B = (0, 1) m/s, so ω3 = (r × v_B)/|r|² =
+    0.1/0.1 = 1 rad/s and the slide speed r·v_B/|r| = −0.3/√0.1."""
+    out = closed_form_guide_bar(np.array([0.0]))
+    assert out["omega_3"][0] == pytest.approx(0.1 / 0.1, rel=1e-12)
+    assert out["v_B3B2"][0] == pytest.approx(0.3 / math.sqrt(0.1), rel=1e-12)
+    assert out["a_k_B3B2"][0] == pytest.approx(2 * 1.0 * 0.3 / math.sqrt(0.1), rel=1e-12)
+
+
+def test_the_six_bars_closed_form_extends_the_four_bars():
+    phi = np.radians(np.arange(0.0, 360.0, 45.0))
+    four, six = closed_form_fourbar(phi), closed_form_sixbar(phi)
+    assert all(np.array_equal(four[q], six[q]) for q in FOURBAR_QUANTITIES)
+    assert set(six) - set(four) == {"omega_5", "alpha_5", "v_E", "a_E", "v_EC", "a_EC", "a_EC_n", "a_EC_t"}
+
+
 @pytest.fixture(scope="module")
 def records():
     return polygon_records(repeat=1)
 
 
 def test_the_polygons_records_are_exact_constructions(records):
-    assert [(r["method"], r["n"]) for r in records] == [("polygons", 1), ("polygons", 360),
-                                                        ("closed-form-numpy", 360)]
-    assert all(r["case"] == "fourbar-120-60-120-90" and r["seconds"] > 0 for r in records)
-    assert records[0]["max_rel_error"] < 1e-13 and records[1]["max_rel_error"] < 1e-12
-    assert records[2]["max_rel_error"] < 1e-10
+    assert [(r["case"], r["method"], r["n"]) for r in records] == [
+        (name, m, n) for name in NAMES for m, n in (("polygons", 1), ("closed-form-scalar", 1),
+                                                      ("polygons", 360), ("closed-form-numpy", 360))]
+    for r in records:
+        assert set(r) == {"method", "case", "n", "seconds", "max_rel_error"}
+        assert r["seconds"] > 0 and r["max_rel_error"] <= 1e-12
+    assert max(r["max_rel_error"] for r in records if r["n"] == 1) < 1e-13
 
 
 def test_the_notes_compare_with_the_targets():
     records, notes = bench(quick=True)
-    assert len(records) == 3 and len(notes) == 3
-    assert notes[0].startswith("one position: ") and notes[0].endswith("µs (target < 25 µs)")
-    assert "the plain closed-form numpy solution" in notes[1] and notes[1].endswith("target ≤ 3×)")
-    assert notes[2].startswith("agreement: ") and notes[2].endswith("(target ≤ 1e-12)")
+    assert len(records) == 16 and len(notes) == 4
+    for name, note in zip(NAMES, notes):
+        assert note.startswith(f"{name}: 360 positions ")
+        assert "× closed-form numpy (target ≤ 1.5×); one position " in note
+        assert "× closed-form scalar (target ≤ 2×); agreement " in note and note.endswith("(target ≤ 1e-12)")
