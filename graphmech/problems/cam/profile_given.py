@@ -14,6 +14,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, cast
 
+import numpy as np
+
 from graphmech.errors import NoSolution, SceneError
 from graphmech.exact import cam_profile as exact
 from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
@@ -114,6 +116,13 @@ def _read_points(p: Reader) -> PointsProfile | None:
     xy = tuple((given.si(q[0]) + 0.0, given.si(q[1]) + 0.0) for q in cast("list[list[float]]", pts))
     if len(set(xy)) < len(xy):
         p.problem(path, "a point is given twice: the curve runs through each once")
+        return None
+    arr = np.asarray(xy)
+    chords = np.hypot(*np.diff(np.vstack([arr, arr[:1]]), axis=0).T)
+    run = np.concatenate([[0.0], np.cumsum(chords)])
+    if not (np.isfinite(run).all() and np.all(np.diff(run) > 0.0)):  # 1e300 beside 30 mm: chords lost
+        p.problem(path, f"the points lie {float(np.max(np.abs(arr))) * 1e3:.3g} mm from O and {float(np.min(chords)) * 1e3:.3g} mm "
+                        "from each other: a chord that small is lost beside the curve's length in double precision")
         return None
     profile = PointsProfile(xy)
     why = shape_problem(profile)

@@ -167,3 +167,18 @@ def test_contact_given_by_cam_angle_reads_there(tmp_path: Path) -> None:
     scene.write_text(text + '\n[[cam.contact]]\nname = "K"\ndelta = 90\n')
     v = values(check_json(scene))
     assert v["s@K"]["exact"] == pytest.approx(values(check_json(SCENES / "cam.eccentric_disc_knife.toml"))["s@90"]["exact"])
+
+
+def test_a_point_so_far_out_that_the_chords_are_lost_is_refused(tmp_path: Path) -> None:
+    # fuzz seeds 97/98: a point at 1e300 mm made the chord lengths stop increasing (scipy's ValueError)
+    import tomllib
+
+    scene = ROOT / "figures" / "scenes" / "cam.given_profile_points.toml"
+    data = tomllib.loads(scene.read_text(encoding="utf-8"))
+    pts = data["cam"]["profile"]["points"]
+    text = scene.read_text(encoding="utf-8")
+    first = f"[{pts[2][0]}, {pts[2][1]}]"
+    assert first in text
+    p = tmp_path / "far.toml"
+    p.write_text(text.replace(first, f"[{pts[2][0]}, 1e300]", 1), encoding="utf-8")
+    assert_refused(run_cli("check", str(p)), "far.toml", "cam.profile.points", "lost")
