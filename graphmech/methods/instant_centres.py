@@ -621,6 +621,8 @@ def _batched(linkage: Linkage, links: tuple[str, ...], xy: Mapping[str, tuple[np
     """The array path of :func:`instant_centres_batch`: fills the outputs, returns the order and
     which positions it decided (the others are left to the per-position construction)."""
     frame = linkage.frame_link
+    if n == 0 or not xy:
+        raise _Unbatched("no positions")
     xs, ys = np.empty((len(xy), n)), np.empty((len(xy), n))
     for row, (x, y) in enumerate(xy.values()):
         xs[row], ys[row] = x, y
