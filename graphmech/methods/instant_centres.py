@@ -497,6 +497,241 @@ def _motion_from(j: str, i: str, mi: LinkMotion, p1i: Centre, pij: Centre, p1j: 
     return LinkMotion(j, w, (w * x[1], -w * x[0]), names, drawn, scale)
 
 
+# ---------------------------------------------------------------------------- over many positions at once
+
+
+@dataclass(frozen=True, eq=False)
+class CentresBatch:
+    """Every instant centre and every link's motion at N positions (arrays over the positions).
+
+    ``centres[key]`` is (N, 3) homogeneous as :meth:`Centre.homogeneous` — ``(x, y, 1)`` a point,
+    ``(dx, dy, 0)`` the unit direction of a centre at infinity, ``(0, 0, 0)`` undetermined;
+    ``omega[k]`` (N,) rad/s and ``v0[k]`` (N, 2) as :class:`LinkMotion`, 0 where ``determined[k]`` is
+    False. ``by_position`` lists the positions constructed one by one (a degenerate centre there).
+    """
+
+    links: tuple[str, ...]
+    frame: str
+    order: tuple[tuple[str, str], ...]
+    centres: Mapping[tuple[str, str], np.ndarray]
+    omega: Mapping[str, np.ndarray]
+    v0: Mapping[str, np.ndarray]
+    determined: Mapping[str, np.ndarray]
+    by_position: tuple[int, ...]
+
+    def velocity(self, link: str, x: Any) -> np.ndarray:
+        """Velocity (N, 2) of the link's point at ``x`` ((N, 2) or a pair of (N,) arrays), drawing-mm·rad/s."""
+        xx, xy = (x[:, 0], x[:, 1]) if isinstance(x, np.ndarray) and x.ndim == 2 else x
+        w, v0 = self.omega[link], self.v0[link]
+        return np.stack([v0[:, 0] - w * xy, v0[:, 1] + w * xx], axis=1)
+
+
+class _Unbatched(Exception):
+    """The linkage's recipe is not one the array path follows (a line at infinity, a centre left open)."""
+
+
+#: Thresholds are tested with this margin on the array path: a position near one (where a float
+#: rounded differently might decide otherwise) is constructed one by one, as :func:`instant_centres`.
+_MARGIN = 4.0
+
+_H = tuple[Any, Any, float]  # x, y (arrays or numbers) and w, the same at every position
+
+
+def _hypot(a: Any, b: Any) -> Any:
+    # math.hypot, not np.hypot: they differ in the last bit at ~0.5 % of arguments, and the array
+    # path must give the per-position construction's numbers exactly
+    if np.ndim(a) == 0 and np.ndim(b) == 0:
+        return math.hypot(a, b)
+    n = max(np.size(a), np.size(b))
+    return np.fromiter(map(math.hypot, np.broadcast_to(a, (n,)).tolist(), np.broadcast_to(b, (n,)).tolist()),
+                       float, n)
+
+
+def instant_centres_batch(linkage: Linkage, pos: Mapping[str, tuple[Any, Any]], n: int,
+                          driver_omega: float | None = None, driver_velocity: float | None = None,
+                          mu_l: float = 1.0) -> CentresBatch:
+    """:func:`instant_centres` at n positions at once, with exactly its numbers.
+
+    Kennedy's order — which two lines meet at which centre, and through which centres each
+    link's ω is found — is the same at every position where no centre degenerates, so it is worked
+    out once from the structure (as :func:`kennedy` and :func:`motions_from` would go) and its
+    lines and meets are evaluated as array operations in the same floating-point steps. A position
+    where a step is near a threshold (two centres in one point, parallel or ill-conditioned Kennedy
+    lines, a dead centre) is constructed one by one by :func:`instant_centres`, as is every position
+    of a linkage whose order includes a line at infinity or leaves a centre undetermined.
+
+    Parameters
+    ----------
+    pos : mapping of str to (x, y)
+        Every point of the kinematic diagram, drawing mm; x and y arrays of length n or numbers
+        (a frame point), as :meth:`graphmech.construction.graph.Plan.evaluate_batch` gives them.
+    n : int
+        The number of positions.
+
+    Examples
+    --------
+    >>> from graphmech.mechanisms.linkage import Crank, Linkage, RRR
+    >>> fb = Linkage({"A": (0.0, 0.0), "D": (0.12, 0.0)}, Crank("2", "A", "B", 0.06, 10.0),
+    ...              (RRR("B", "C", "D", ("3", "4"), (math.hypot(0.12, 0.03), 0.09)),), frame_link="1")
+    >>> cb = instant_centres_batch(fb, {"A": (0.0, 0.0), "D": (120.0, 0.0), "B": (np.array([0.0, 60.0]),
+    ...     np.array([60.0, 0.0])), "C": (np.array([120.0, 150.0]), np.array([90.0, 80.0]))}, 2)
+    >>> cb.by_position, float(cb.omega["4"][0])  # P13 at infinity at the first: constructed alone
+    ((0,), 6.666666666666667)
+    """
+    names = list(pos)
+    xy = {k: (_coord(pos[k][0]), _coord(pos[k][1])) for k in names}  # a frame point stays a number
+    frame = linkage.frame_link
+    links = polygon_of_links(linkage)
+    keys = list(combinations(links, 2))
+    out_c = {key: np.zeros((n, 3)) for key in keys}
+    out_w = {k: np.zeros(n) for k in links}
+    out_v = {k: np.zeros((n, 2)) for k in links}
+    out_d = {k: np.zeros(n, dtype=bool) for k in links}
+    try:
+        with np.errstate(divide="ignore", invalid="ignore"):  # at a degenerate position: constructed alone
+            order, ok = _batched(linkage, links, xy, n, driver_omega, driver_velocity, mu_l, out_c, out_w, out_v, out_d)
+    except _Unbatched:
+        order, ok = (), np.zeros(n, dtype=bool)
+    alone = tuple(int(i) for i in np.flatnonzero(~ok))
+    for i in alone:
+        ic = instant_centres(linkage, {k: (_at(xy[k][0], i), _at(xy[k][1], i)) for k in names},
+                             driver_omega, driver_velocity, mu_l)
+        order = order or ic.order
+        for key, c in ic.centres.items():
+            out_c[key][i] = c.homogeneous() if c.known else 0.0
+        for k in links:
+            m = ic.motions.get(k)
+            out_d[k][i] = m is not None
+            out_w[k][i], out_v[k][i] = (m.omega, m.v0) if m is not None else (0.0, (0.0, 0.0))
+    return CentresBatch(links, frame, tuple(order), out_c, out_w, out_v, out_d, alone)
+
+
+def _coord(v: Any) -> Any:
+    return float(v) if np.ndim(v) == 0 else np.asarray(v, dtype=float)
+
+
+def _at(v: Any, i: int) -> float:
+    return float(v) if np.ndim(v) == 0 else float(v[i])
+
+
+def _batched(linkage: Linkage, links: tuple[str, ...], xy: Mapping[str, tuple[np.ndarray, np.ndarray]], n: int,
+             driver_omega: float | None, driver_velocity: float | None, mu_l: float,
+             out_c: dict[tuple[str, str], np.ndarray], out_w: dict[str, np.ndarray], out_v: dict[str, np.ndarray],
+             out_d: dict[str, np.ndarray]) -> tuple[tuple[tuple[str, str], ...], np.ndarray]:
+    """The array path of :func:`instant_centres_batch`: fills the outputs, returns the order and
+    which positions it decided (the others are left to the per-position construction)."""
+    frame = linkage.frame_link
+    if n == 0 or not xy:
+        raise _Unbatched("no positions")
+    xs, ys = np.empty((len(xy), n)), np.empty((len(xy), n))
+    for row, (x, y) in enumerate(xy.values()):
+        xs[row], ys[row] = x, y
+    size = np.maximum(np.hypot(xs.max(0) - xs.min(0), ys.max(0) - ys.min(0)), 1e-9)  # thresholds only
+    ok = np.ones(n, dtype=bool)
+    H: dict[tuple[str, str], _H] = {}
+    order: list[tuple[str, str]] = []
+    for dc in direct_centres(linkage):
+        key = pair(links, *dc.links)
+        if key in H:
+            continue
+        if dc.at is not None:
+            H[key] = (xy[dc.at][0], xy[dc.at][1], 1.0)
+        elif dc.normal is not None:
+            u = _as_centre(key, np.array([math.cos(dc.normal), math.sin(dc.normal), 0.0]), "direct", (), 1.0).direction
+            assert u is not None
+            H[key] = (np.full(n, u[0]), np.full(n, u[1]), 0.0)
+        else:  # the bar's line turns with the position: its normal position by position, as the construction
+            (p, q) = dc.across or ("", "")
+            dirs = [_as_centre(key, np.array([math.cos(a), math.sin(a), 0.0]), "direct", (), 1.0).direction
+                    for a in (math.atan2(qy - py, qx - px) + math.pi / 2 for px, py, qx, qy in
+                              zip(*(np.broadcast_to(c, (n,)).tolist() for c in (*xy[p], *xy[q]))))]
+            arr = np.array(dirs, dtype=float).reshape(n, 2)
+            H[key] = (arr[:, 0], arr[:, 1], 0.0)
+        order.append(key)
+
+    def line(a: _H, b: _H) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        if a[2] == 0.0 and b[2] == 0.0:
+            raise _Unbatched("a line at infinity")
+        l0, l1, l2 = a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]
+        ab = _hypot(l0, l1)
+        if a[2] != 0.0 and b[2] != 0.0:
+            ok[ab <= _MARGIN * SAME_REL * size] = False
+        return l0 / ab, l1 / ab, l2 / ab
+
+    # Kennedy's order, as kennedy() goes when every line is drawn and the first two meet well
+    unknown = [key for key in combinations(links, 2) if key not in H]
+    progress = True
+    while unknown and progress:
+        progress = False
+        for key in list(unknown):
+            i, j = key
+            third = [k for k in links if k not in key and pair(links, i, k) in H and pair(links, k, j) in H]
+            if len(third) < 2:
+                continue
+            (m1, m2) = [line(H[pair(links, i, k)], H[pair(links, k, j)]) for k in third[:2]]
+            x0 = m1[1] * m2[2] - m1[2] * m2[1]
+            x1 = m1[2] * m2[0] - m1[0] * m2[2]
+            s = m1[0] * m2[1] - m1[1] * m2[0]
+            ok[~(np.abs(s) > _MARGIN * PARALLEL_SIN)] = False
+            if len(third) > 2:  # kennedy() would try another pair of lines where these meet badly
+                ok[~(np.abs(s) * COND_WARN > _MARGIN)] = False
+            H[key] = (x0 / s, x1 / s, 1.0)
+            order.append(key)
+            unknown.remove(key)
+            progress = True
+    if unknown:
+        raise _Unbatched("a centre no two lines fix")
+
+    # each link's motion, as motions_from() goes
+    d = linkage.driver
+    W: dict[str, Any] = {frame: 0.0}
+    V: dict[str, tuple[Any, Any]] = {frame: (0.0, 0.0)}
+    if isinstance(d, SliderInput):
+        v = (driver_velocity if driver_velocity is not None else d.velocity) / mu_l
+        W[d.link], V[d.link] = 0.0, (v * math.cos(d.guide.angle), v * math.sin(d.guide.angle))
+    else:
+        w = driver_omega if driver_omega is not None else d.omega
+        W[d.link], V[d.link] = w, (w * xy[d.pivot][1], -w * xy[d.pivot][0])
+    progress = True
+    while progress:
+        progress = False
+        for j in links:
+            if j in W:
+                continue
+            p1j = H[pair(links, frame, j)]
+            for i in links:
+                if i not in W or i == frame:
+                    continue
+                pij = H[pair(links, i, j)]
+                wi, vi = W[i], V[i]
+                if pij[2] == 0.0:  # i and j translate relative to each other
+                    if p1j[2] == 0.0:
+                        continue
+                    W[j], V[j] = wi, (wi * p1j[1], -(wi * p1j[0]))
+                else:
+                    vx, vy = vi[0] - wi * pij[1], vi[1] + wi * pij[0]
+                    if p1j[2] == 0.0:
+                        W[j], V[j] = 0.0, (vx, vy)
+                    else:
+                        rx, ry = pij[0] - p1j[0], pij[1] - p1j[1]
+                        r = _hypot(rx, ry)
+                        ok[r <= _MARGIN * SAME_REL * size] = False
+                        w = (rx * vy - ry * vx) / (r * r)
+                        W[j], V[j] = w, (w * p1j[1], -w * p1j[0])
+                progress = True
+                break
+    if len(W) < len(links):
+        raise _Unbatched("a link's motion no centre gives")
+    for key in order:
+        h = H[key]
+        out_c[key][:, 0], out_c[key][:, 1], out_c[key][:, 2] = h
+    for k in links:
+        out_w[k][:] = W[k]
+        out_v[k][:, 0], out_v[k][:, 1] = V[k]
+        out_d[k][:] = True
+    return tuple(order), ok
+
+
 def least_speed_on_line(ic: InstantCentres, link: str, a: XY, b: XY) -> tuple[float, float, XY] | str:
     """The point of line AB (fixed on ``link``) with the least speed: the foot of the ⟂ from P1k.
 
@@ -574,5 +809,5 @@ def signed_rate(linkage: Linkage, x: str) -> tuple[str, str, tuple[float, float]
 
 
 __all__ = ["Centre", "InstantCentres", "LinkMotion", "Direct", "centre_name", "common_link", "direct_centres",
-           "instant_centres", "kennedy", "least_speed_on_line", "motions_from", "pair", "point_names",
+           "CentresBatch", "instant_centres", "instant_centres_batch", "kennedy", "least_speed_on_line", "motions_from", "pair", "point_names",
            "polygon_of_links", "positions_mm", "signed_rate", "split_line"]

@@ -362,3 +362,96 @@ def test_kennedy_completes_centres_stated_directly_and_motions_follow():
     start = {"1": LinkMotion("1", 0.0, (0.0, 0.0), ("frame",)), "2": LinkMotion("2", 10.0, (0.0, 0.0), ("driver",))}
     motions, undetermined = motions_from(links, "1", centres, start, 150.0)
     assert motions["4"].omega == pytest.approx(10.0 * 240.0 / 360.0, abs=1e-12) and undetermined == {}
+
+
+# ---------------------------------------------------------------------------- over many positions at once
+
+
+def batch_is_per_position(an, phi):
+    """instant_centres_batch at the constructible ones of the crank angles ``phi`` against
+    instant_centres one position at a time: every centre, ω and v0 bit for bit."""
+    from graphmech.methods.instant_centres import instant_centres_batch
+
+    build, linkage, mu = an.build, an.build.linkage, an.scales["l"]
+    batch = an.plan.evaluate_batch({build.param: phi})
+    idx = np.flatnonzero(batch.valid)
+    pos = {}
+    for name, slot in build.mech.items():
+        x, y = batch.values[slot]
+        pos[name] = tuple(c if np.ndim(c) == 0 else np.asarray(c)[idx] for c in (x, y))
+    cb = instant_centres_batch(linkage, pos, len(idx), mu_l=mu)
+    for i, at in enumerate(idx):
+        ic = instant_centres(linkage, positions_mm(build, batch.at(int(at))), mu_l=mu)
+        assert cb.order == ic.order or i in cb.by_position
+        for key, c in ic.centres.items():
+            assert np.array_equal(cb.centres[key][i], c.homogeneous() if c.known else np.zeros(3)), (at, key)
+        for lid in ic.links:
+            m = ic.motions.get(lid)
+            assert bool(cb.determined[lid][i]) == (m is not None)
+            if m is not None:
+                assert (cb.omega[lid][i], tuple(cb.v0[lid][i])) == (m.omega, m.v0), (at, lid)
+    return cb, idx
+
+
+def _crank_scenes():
+    out = []
+    for p in sorted(SCENES.glob("ic.*.toml")) + [SCENES / "kin.fourbar_instant_centres.toml"]:
+        data = tomllib.loads(p.read_text(encoding="utf-8"))
+        if data.get("driver", {}).get("type") == "crank":
+            out.append(p)
+    return out
+
+
+@pytest.mark.parametrize("path", _crank_scenes(), ids=lambda p: p.stem)
+def test_centres_over_a_turn_as_arrays_are_the_ones_constructed_position_by_position(path):
+    an = analyse(parse_scene(tomllib.loads(path.read_text(encoding="utf-8")), path.name))
+    phi = np.radians(np.arange(360) + 0.5)
+    cb, idx = batch_is_per_position(an, phi)
+    assert len(idx) > 0 and cb.omega[an.build.linkage.driver.link].shape == (len(idx),)
+
+
+def test_a_parallelogram_is_constructed_position_by_position_and_a_slider_crank_as_arrays():
+    # the parallelogram's P13 is at infinity wherever AB ∥ DC (the open branch): Kennedy's order
+    # there differs from the one for finite centres, so those positions go to instant_centres, as
+    # does the change point φ = 0 (P13, P24 undetermined); the crossed branch's are arrays
+    an = analyse(scene_of(FOURBAR.format(d=120, a=60, b=120, c=60, phi=70, branch="left")))
+    cb, idx = batch_is_per_position(an, np.radians(np.concatenate([np.arange(360) + 0.5, [0.0]])))
+    p13 = cb.centres[("1", "3")]
+    at_infinity = tuple(int(i) for i in np.flatnonzero((p13[:, 2] == 0.0) & (p13[:, :2] != 0.0).any(axis=1)))
+    change = len(idx) - 1
+    assert idx[change] == 360 and not cb.determined["3"][change] and not p13[change].any()
+    assert len(at_infinity) >= 100 and cb.by_position == at_infinity + (change,)
+    # the slider-crank's P14 is at infinity at every position, but always: the arrays handle it
+    an = analyse(scene_of(SLIDER_CRANK))
+    cb, idx = batch_is_per_position(an, np.radians(np.arange(360) + 0.5))
+    assert cb.by_position == () and len(idx) == 360
+    assert all(cb.centres[("1", "4")][:, 2] == 0.0)
+
+
+def test_the_rockers_dead_centre_in_a_turn_is_decided_by_the_arrays():
+    # the book's four-bar: at φ = 26.384…° A, B, C are in line and P24 = P12, so ω4 = ω2·P12P24/P14P24
+    # is 0 with a sound denominator: no position to construct alone
+    an = analyse(scene_of(FOURBAR.format(d=120, a=60, b=120, c=90, phi=0, branch="left")))
+    dead = 26.38432975096472
+    phi = np.radians(np.concatenate([np.arange(360) + 0.5, [dead]]))
+    cb, idx = batch_is_per_position(an, phi)
+    assert len(idx) == 361 and cb.by_position == ()
+    assert abs(cb.omega["4"][360]) < 1e-9 and cb.determined["4"].all()
+
+
+def test_batch_velocity_of_a_point_is_the_links_velocity_field():
+    from graphmech.methods.instant_centres import instant_centres_batch
+
+    fb = Linkage({"A": (0.0, 0.0), "D": (0.12, 0.0)}, Crank("2", "A", "B", 0.06, 10.0),
+                 (RRR("B", "C", "D", ("3", "4"), (math.hypot(0.12, 0.03), 0.09)),), frame_link="1")
+    pos = {"A": (0.0, 0.0), "D": (120.0, 0.0), "B": (np.array([0.0, 60.0]), np.array([60.0, 0.0])),
+           "C": (np.array([120.0, 150.0]), np.array([90.0, 80.0]))}
+    cb = instant_centres_batch(fb, pos, 2, mu_l=0.001)
+    assert cb.by_position == (0,)  # P13 at infinity there (AB ∥ DC)
+    v = cb.velocity("2", pos["B"])  # v_B = ω2 × AB: 10 rad/s · 60 mm, ⟂ AB
+    assert v.tolist() == [[-600.0, 0.0], [0.0, 600.0]]
+    for i in range(2):
+        ic = instant_centres(fb, {k: (float(np.broadcast_to(x, 2)[i]), float(np.broadcast_to(y, 2)[i]))
+                                  for k, (x, y) in pos.items()}, mu_l=0.001)
+        c = (float(pos["C"][0][i]), float(pos["C"][1][i]))
+        assert tuple(cb.velocity("3", pos["C"])[i]) == ic.motions["3"].velocity(c)

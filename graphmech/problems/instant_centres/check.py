@@ -31,6 +31,7 @@ from graphmech.errors import NotApplicable, OutOfDomain, SceneError
 from graphmech.exact.linkage import Kinematics, solve as solve_exact
 from graphmech.mechanisms.linkage import Crank, Linkage
 from graphmech.methods.instant_centres import (InstantCentres, centre_name, common_link, instant_centres,
+                                               instant_centres_batch,
                                                least_speed_on_line, pair, point_names, polygon_of_links,
                                                positions_mm, signed_rate, split_line)
 
@@ -505,22 +506,24 @@ def _zero_rows(an: Any, ica: ICAnalysis, x: str, key: str) -> list[Any]:
         return cast(float, (mo.v0[0] * u[0] + mo.v0[1] * u[1]) * mu)
 
     batch = plan.evaluate_batch({build.param: grid})
-    values = []
-    for i in range(len(grid)):
-        if not batch.valid[i]:
-            values.append(math.nan)
-            continue
-        ic = instant_centres(linkage, positions_mm(build, batch.at(i)), mu_l=mu)
-        if lid not in ic.motions:
-            values.append(math.nan)
-        elif kind == "omega":
-            values.append(ic.motions[lid].omega)
-        else:
-            assert u is not None
-            values.append((ic.motions[lid].v0[0] * u[0] + ic.motions[lid].v0[1] * u[1]) * mu)
+    # the sampled turn as arrays: the same numbers as instant_centres position by position
+    idx = np.flatnonzero(batch.valid)
+    pos: dict[str, tuple[Any, Any]] = {}
+    for name, slot in build.mech.items():
+        if slot in batch.values:
+            cx, cy = (c if np.ndim(c) == 0 else np.asarray(c)[idx] for c in batch.values[slot])
+            pos[name] = (cx, cy)
+    cb = instant_centres_batch(linkage, pos, len(idx), mu_l=mu)
+    if kind == "omega":
+        rate = cb.omega[lid]
+    else:
+        assert u is not None
+        rate = (cb.v0[lid][:, 0] * u[0] + cb.v0[lid][:, 1] * u[1]) * mu
+    values = np.full(len(grid), math.nan)
+    values[idx] = np.where(cb.determined[lid], rate, math.nan)
     if not np.any(np.nan_to_num(values)):  # a point at rest (on the frame): no angles to single out
         raise NotApplicable(f"v_{x} is zero at every crank angle: it has no crank angles of its own where it vanishes")
-    graphical = _roots(grid, np.array(values), by_centres)
+    graphical = _roots(grid, values, by_centres)
 
     kin = solve_exact(linkage, grid)
     if kind == "omega":
