@@ -390,6 +390,8 @@ def _read_count(fw: Reader) -> int | None:
 
 #: The least δ read: the tangents' slopes differ by 2δ, and double precision keeps ~1e-16 of them.
 MIN_DELTA = 1e-9
+#: The least mean speed read, rad/s: ω² must not underflow (no machine turns this slowly).
+MIN_SPEED = 1e-100
 
 
 def _read_delta(fw: Reader, required: bool) -> float | None:
@@ -823,6 +825,10 @@ def _read_flywheel(
     else:
         speed = fw.value("speed", "omega", positive=True)
         omega = None if speed is None else speed.si
+        if omega is not None and omega < MIN_SPEED:  # ω² in every energy and slope would vanish
+            fw.problem(speed.path, f"ω_m = {omega:g} rad/s is below {MIN_SPEED:g} rad/s: its square, in every "
+                                         "kinetic energy and tangent slope, vanishes in double precision")
+            omega = None
     cycle = _read_cycle(fw)
     if given_dT:
         not_for(fw, ["balance", "motor", "true_motion"], "not with [flywheel.energy_increment]: the table of ΔT "
