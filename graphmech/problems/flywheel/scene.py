@@ -825,8 +825,8 @@ def _read_flywheel(
     else:
         speed = fw.value("speed", "omega", positive=True)
         omega = None if speed is None else speed.si
-        if omega is not None and omega < MIN_SPEED:  # ω² in every energy and slope would vanish
-            fw.problem(speed.path, f"ω_m = {omega:g} rad/s is below {MIN_SPEED:g} rad/s: its square, in every "
+        if speed is not None and speed.si < MIN_SPEED:  # ω² in every energy and slope would vanish
+            fw.problem(speed.path, f"ω_m = {speed.si:g} rad/s is below {MIN_SPEED:g} rad/s: its square, in every "
                                          "kinetic energy and tangent slope, vanishes in double precision")
             omega = None
     cycle = _read_cycle(fw)
