@@ -25,7 +25,7 @@ def brentq(f: Callable[[float], float], a: float, b: float, xtol: float = XTOL, 
     Inverse quadratic interpolation or the secant where it moves fast enough, bisection where it
     does not: never slower than bisection, superlinear near a simple root.
 
-    >>> brentq(lambda x: x * x - 2.0, 0.0, 2.0) == math.sqrt(2.0)
+    >>> abs(brentq(lambda x: x * x - 2.0, 0.0, 2.0) - math.sqrt(2.0)) < 2e-12
     True
     >>> brentq(math.cos, 0.0, 1.0)
     Traceback (most recent call last):
