@@ -66,8 +66,9 @@ def sheet_note(record: dict[str, Any]) -> str:
     return f"full-cycle sheet, 12 positions ({record['case']}): rendered in {record['seconds'] * 1e3:.0f} ms"
 
 
-def run_bench(quick: bool = False) -> dict[str, Any]:
-    """All benchmark records, plus notes comparing them with the targets."""
+def run_bench(quick: bool = False, explicit: bool = False) -> dict[str, Any]:
+    """All benchmark records, plus notes comparing them with the targets; ``explicit``: also
+    RK45's steps on the stiff flywheel (the demonstration that the stiff solvers earn their place)."""
     records: list[dict[str, Any]] = []
     notes: list[str] = []
     for kind in reversed(KINDS.values()):  # the four-bar's polygons first, as the README presents them
@@ -75,6 +76,11 @@ def run_bench(quick: bool = False) -> dict[str, Any]:
             more, said = kind.bench(quick)
             records += more
             notes += said
+    if explicit:
+        from graphmech.problems.flywheel.bench import explicit_record, true_motion_notes
+
+        records.append(explicit_record(quick))
+        notes += [n for n in true_motion_notes(records) if n.startswith("RK45")]
     sheet = sheet_record(repeat=1 if quick else 3)
     notes.append(sheet_note(sheet))
     many = batch_record(quick)

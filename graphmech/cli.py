@@ -109,6 +109,8 @@ def _parser() -> argparse.ArgumentParser:
     b.add_argument("-o", "--output", metavar="DIR", help="also write bench.json and log-log plots of error and time into DIR")
     b.add_argument("--quick", action="store_true", help="fewer repetitions")
     b.add_argument("--compare", metavar="OLD.json", help="print each record's change against an earlier bench.json")
+    b.add_argument("--explicit", action="store_true",
+                   help="also count explicit RK45's steps on the stiff flywheel (about 13 s more)")
     # what is installed besides the code (graphmech.packaged) and the gallery (graphmech.gallery)
     e = sub.add_parser("examples", help="list the example scenes installed with graphmech, or copy one")
     e.add_argument("name", nargs="?", metavar="NAME", help="the example to copy (as listed)")
@@ -404,7 +406,7 @@ def _bench(args: argparse.Namespace) -> int:
     from graphmech.bench import compare, read_records, run_bench
 
     old = read_records(args.compare) if args.compare else None  # a bad file: refused before the run
-    doc = run_bench(quick=args.quick)
+    doc = run_bench(quick=args.quick, explicit=args.explicit)
     changes = compare(old, doc["records"]) if old is not None else None
     text = json.dumps(doc, indent=1, allow_nan=False)
     if args.output:

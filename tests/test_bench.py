@@ -72,3 +72,9 @@ def test_a_bad_file_to_compare_with_is_refused_before_the_bench_runs(tmp_path):
     assert_refused(run_cli("bench", "--compare", str(bad), limit=20.0), str(bad), "not a bench.json")
     assert_refused(run_cli("bench", "--compare", str(tmp_path / "none.json"), limit=20.0), str(tmp_path / "none.json"),
                    "cannot read")
+
+
+def test_the_default_bench_leaves_the_rk45_demonstration_to_its_flag(quick_bench):
+    _, out, _, _ = quick_bench
+    methods = {r["method"] for r in json.loads(out)["records"]}
+    assert "true-motion" in methods and "true-motion-explicit" not in methods

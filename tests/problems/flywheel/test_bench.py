@@ -72,3 +72,13 @@ def test_the_flywheel_bench_sweep_estimates_its_own_error():
     for r in records:
         assert r["max_rel_error"] > 1e-10  # a discretised value at every N of the sweep
         assert 0.5 <= r["error_estimate"] / r["max_rel_error"] <= 2, r
+
+
+def test_the_explicit_record_counts_rk45s_steps_on_the_stiff_cycle():
+    """graphmech bench --explicit: RK45's accepted steps (quick: extrapolated from twelve 1° windows)
+    are far more than the stiff solvers' hundred-odd a cycle."""
+    from graphmech.problems.flywheel.bench import explicit_record
+
+    r = explicit_record(quick=True)
+    assert r["method"] == "true-motion-explicit" and r["solver"] == "RK45" and r["case"] == "compressor-stiff-1e5"
+    assert r["n"] > 10_000 and r["nfev"] > r["n"] and "extrapolated" in r["note"]
