@@ -185,7 +185,7 @@ def test_bench_plots_without_matplotlib_keep_the_results_and_exit_2(tmp_path):
     record = {"method": "m", "case": "c", "n": 10, "seconds": 1e-3, "max_rel_error": 1e-9}
     doc = {"records": [record], "notes": ["a note"]}
     code = ("import graphmech.bench\n"
-            f"graphmech.bench.run_bench = lambda quick=False: {doc!r}\n"
+            f"graphmech.bench.run_bench = lambda quick=False, explicit=False: {doc!r}\n"
             "from graphmech.cli import main\n"
             f"sys.exit(main(['bench', '--quick', '-o', r'{tmp_path / 'b'}']))")
     r = _python(code)
