@@ -93,34 +93,25 @@ def add_point_quantities(b: LinkageConstruction) -> None:
     for x in dict.fromkeys([*b.vel, *b.acc]):
         if x not in b.linkage.frame_points:  # a frame point's velocity is the pole: no direction
             measure.direction_of(b, x)
-    for joint, pusher, output, rocker in output_joints(b.linkage):
-        if isinstance(output, str) and not rocker:  # a guide bar: its line as the diagram draws it
-            bar = next(y for y in b.linkage.dyads if isinstance(y, RPR) and y.block_pivot == joint)
-            measure.transmission(b, joint, pusher, diagram.bar_direction(b, bar), ("bar", joint, pusher, output),
-                                 rocker)
-        else:
-            measure.transmission(b, joint, pusher, output, (joint, pusher, output), rocker)
+    add_transmission_angles(b)
 
 
-def output_joints(linkage: Linkage) -> list[tuple[str, str, str | tuple[float, float], bool]]:
-    """Where a transmission angle γ (and pressure angle α) is defined: (joint X, the point it is
-    pushed from or turned about, the output's pivot / guide direction / bar link, rocker?).
-
-    An RRR dyad with one outer joint on the frame (X its middle joint, the other outer joint
-    pushing); an RRP slider on a frame guide (X the slider); a guide bar turning about a frame
-    pivot (RPR, X the block's pivot; pushed across the bar, X moving ⟂ the arm to the pivot).
-    """
-    frame = linkage.frame_points
-    out: list[tuple[str, str, str | tuple[float, float], bool]] = []
-    for y in linkage.dyads:
+def add_transmission_angles(b: LinkageConstruction) -> None:
+    """γ and α (measure.transmission) at each output joint where they are defined: an RRR dyad
+    with one outer joint on the frame (at its middle joint, pushed from the other outer joint); an
+    RRP slider on a frame guide; a guide bar turning about a frame pivot (at the block's pivot,
+    pushed across the bar, moving ⟂ the arm to the bar's pivot)."""
+    frame = b.linkage.frame_points
+    for y in b.linkage.dyads:
         if isinstance(y, RRR) and (y.p in frame) != (y.q in frame):
             pivot, pusher = (y.q, y.p) if y.q in frame else (y.p, y.q)
-            out.append((y.c, pusher, pivot, True))
+            measure.transmission(b, y.c, pusher, pivot, (y.c, pusher, pivot), rocker=True)
         elif isinstance(y, RRP) and isinstance(y.guide, Guide):
-            out.append((y.c, y.p, y.guide.direction, False))
+            g = y.guide.direction
+            measure.transmission(b, y.c, y.p, g, (y.c, y.p, g), rocker=False)
         elif isinstance(y, RPR) and y.bar_pivot in frame and y.block_pivot not in frame:
-            out.append((y.block_pivot, y.bar_pivot, y.bar_link, False))
-    return out
+            x, c = y.block_pivot, y.bar_pivot  # the bar's line as the diagram draws it
+            measure.transmission(b, x, c, diagram.bar_direction(b, y), ("bar", x, c, y.bar_link), rocker=False)
 
 
 __all__ = ["LinkageConstruction", "build_polygons", "PANELS", "RRR", "RRP", "RPR", "RPP"]

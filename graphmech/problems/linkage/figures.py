@@ -82,6 +82,11 @@ def _pt(v: Any) -> tuple[float, float]:
     return (float(v[0]), float(v[1]))
 
 
+def drawn_points(build: Any, values: Mapping[str, Any]) -> dict[str, tuple[float, float]]:
+    """The kinematic diagram's points as solved (drawing mm), by point name."""
+    return {name: _pt(values[slot]) for name, slot in build.mech.items() if slot in values}
+
+
 def _unit(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float]:
     dx, dy = b[0] - a[0], b[1] - a[1]
     n = math.hypot(dx, dy)
@@ -461,7 +466,7 @@ def transmission_marks(linkage: Linkage, pos: dict[str, XY], spec: tuple[Any, ..
     """α and γ at an output joint X as the book marks them (001 2-3): the push F along the coupler
     (⟂ the bar for a guide bar), the velocity v_X of the output's point, α between them and γ
     between F and the normal to v_X (the rocker's line). ``spec``: a γ quantity's exact spec
-    without its kind (:func:`graphmech.methods.polygons.output_joints`)."""
+    without its kind (:func:`graphmech.methods.polygons.add_transmission_angles`)."""
     if spec[0] == "bar":  # v of the bar's point under the block's pivot: v_B3
         _, x, pivot, link = spec
         name = x + link
@@ -570,13 +575,13 @@ def linkage_sheet(title: str, linkage: Linkage, build: Any, plan: Any, solutions
             key = SCALE_OF[panel]
             note = (scale_text(key, scales[key]),)
             if panel == "mechanism":
-                pos = {name: _pt(sol.values[slot]) for name, slot in build.mech.items() if slot in sol.values}
+                pos = drawn_points(build, sol.values)
                 items = mechanism_items(build, pos, spans, senses[i] if senses else None)
                 head = f"{caption(TITLES[panel], notation)}, {position_text[i]}"
             else:
                 items = polygon_items(plan, sol.values, panel)
                 head = caption(TITLES[panel], notation) + (f", {position_text[i]}" if len(solutions) > 1 else "")
-            items += list((marks or {}).get(panel, [[]] * (i + 1))[i])
+            items += list(marks[panel][i]) if marks and panel in marks else []
             panels.append(Panel(f"{panel}-{labels[i]}", head, tuple(items), note, row=i,
                                 scales=((key, scales[key]),)))
     return Sheet(title, tuple(panels), page, footer)

@@ -13,7 +13,7 @@ from graphmech.methods.polygons import PANELS
 from graphmech.problems.instant_centres.figures import ic_panels
 from graphmech.problems.judging import finite, measured_entries, split_name
 from graphmech.problems.linkage.check import analyse, rows_that_fit
-from graphmech.problems.linkage.figures import direction_mark, linkage_sheet, transmission_marks
+from graphmech.problems.linkage.figures import direction_mark, drawn_points, linkage_sheet, transmission_marks
 from graphmech.problems.linkage.higher_pair import decorate
 from graphmech.problems.linkage.sizes import drawn_position_text
 from graphmech.problems.reader import Scene, page_size
@@ -92,8 +92,7 @@ def asked_marks(an: Any) -> dict[str, list[list[Primitive]]]:
                 if pole in v and image in v:
                     out[q.panel][i] += direction_mark(_xy(v[pole]), _xy(v[image]))
                 continue
-            pos = {name: _xy(v[s]) for name, s in b.mech.items() if s in v}
-            out["mechanism"][i] += transmission_marks(b.linkage, pos, q.exact[1:])
+            out["mechanism"][i] += transmission_marks(b.linkage, drawn_points(b, v), q.exact[1:])
     return out
 
 
