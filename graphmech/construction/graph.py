@@ -239,7 +239,32 @@ class Plan:
             (s.name, s.text, s.kernel, s.inputs) for s in steps
             if s.kernel is not None and s.name not in self._constants
         )
-        self._run = _compile(self._program, self._constants, [s.name for s in steps if s.kind == "param"])
+        self._params = [s.name for s in steps if s.kind == "param"]
+        self._run = _compile(self._program, self._constants, self._params)
+        # The fused function of each path (fused.py), written once the plan has been run this many
+        # times step by step (a plan run once or twice would not win back the writing); None until
+        # then, False where it cannot be fused or would not give the same bits.
+        self._fused: dict[bool, Any] = {False: None, True: None}
+        self._runs = {False: 0, True: 0}
+
+    #: Step-by-step runs before the fused function is written (scalar path, batch path).
+    FUSE_AFTER = {False: 2, True: 1}
+
+    def _fuse(self, batch: bool, sample: tuple[dict[str, Any], dict[str, Any]], ops_for: Callable[[], Any],
+              params: Mapping[str, Any]) -> None:
+        """Write the fused function of one path and keep it if it gives ``sample``'s every bit."""
+        from graphmech.construction import fused
+
+        self._fused[batch] = False
+        try:
+            run = fused.fuse(self._program, self._constants, self._params, sample[0], batch)
+            ops = ops_for()
+            with np.errstate(all="ignore"):
+                got = (run(ops, params), ops.conds)
+        except Exception:  # noqa: BLE001 — a plan that cannot be fused runs step by step, as before
+            return
+        if fused.same_run(got, sample) and not (batch and ops.bad.any()):
+            self._fused[batch] = run
 
     def __contains__(self, name: str) -> bool:
         return name in self.by_name
@@ -249,14 +274,41 @@ class Plan:
         return self.solve(params, position).values
 
     def solve(self, params: Mapping[str, Any], position: str | None = None) -> Solution:
+        run = self._fused[False]
+        if run:
+            ops = ScalarOps()
+            ops.position = position
+            try:
+                return Solution(run(ops, params), ops.conds)
+            except Exception:  # noqa: BLE001 — degenerate somewhere: step by step says where and why
+                pass
         ops = ScalarOps()
         ops.position = position
-        return Solution(self._run(ops, params), ops.conds)
+        values = self._run(ops, params)
+        if run is None:
+            self._runs[False] += 1
+            if self._runs[False] > self.FUSE_AFTER[False]:
+                self._fuse(False, (values, ops.conds), ScalarOps, params)
+        return Solution(values, ops.conds)
 
     def evaluate_batch(self, params: Mapping[str, Any]) -> BatchSolution:
         """Evaluate at many positions at once; failing positions are marked, never NaN."""
         arrays = {k: np.asarray(v, dtype=float) for k, v in params.items()}
         n = max((a.size for a in arrays.values() if a.ndim), default=1)
+        params = {k: (np.broadcast_to(a, (n,)) if a.ndim else a) for k, a in arrays.items()}
+        run = self._fused[True]
+        if run:
+            ops = ArrayOps(n)
+            try:
+                with np.errstate(all="ignore"):  # a degenerate position is run again step by step
+                    vals = run(ops, params)
+                return BatchSolution(vals, ops.conds, ~ops.bad, ops.failures, n)
+            except Exception:  # noqa: BLE001
+                pass
         ops = ArrayOps(n)
-        vals = self._run(ops, {k: (np.broadcast_to(a, (n,)) if a.ndim else a) for k, a in arrays.items()})
+        vals = self._run(ops, params)
+        if run is None:
+            self._runs[True] += 1
+            if self._runs[True] > self.FUSE_AFTER[True] and not ops.bad.any():
+                self._fuse(True, (vals, ops.conds), lambda: ArrayOps(n), params)
         return BatchSolution(vals, ops.conds, ~ops.bad, ops.failures, n)

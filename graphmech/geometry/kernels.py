@@ -200,10 +200,8 @@ def intersect_lines(ops: Ops, l1: Components, l2: Components) -> Components:
     px, py, dx, dy = l1
     qx, qy, ex, ey = l2
     det = dx * ey - dy * ex
+    det = ops.fix(ops.absolute(det) < PARALLEL_SIN, det, 1.0, "the two lines are parallel: no intersection")
     adet = ops.absolute(det)
-    if ops.batch or adet < PARALLEL_SIN:
-        det = ops.fix(adet < PARALLEL_SIN, det, 1.0, "the two lines are parallel: no intersection")
-        adet = ops.absolute(det)
     ops.cond(1.0 / adet)
     t = ((qx - px) * ey - (qy - py) * ex) / det
     return (px + t * dx, py + t * dy)
