@@ -85,6 +85,8 @@ class _Writer:
         self._consts: dict[int, str] = {}
 
     def const(self, c: Any, as_array: bool = False) -> str:
+        if not self.batch and type(c) in (float, int) and math.isfinite(c):
+            return f"({c!r})"  # a literal: the compiler keeps it with the code, the cheapest load
         obj = np.array(c) if as_array and self.batch and type(c) is float else c
         key = id(c) * 2 + (obj is not c)
         if key not in self._consts:
@@ -157,6 +159,24 @@ def _needed(tape: Tape, tops: TracingOps, sym: Mapping[str, Any]) -> list[bool]:
     return need
 
 
+def _read_once(tape: Tape, tops: TracingOps, sym: Mapping[str, Any], need: list[bool]) -> list[bool]:
+    """The nodes read exactly once, by another node whose form writes that operand once, and not
+    themselves a step's value, a guard or a condition number."""
+    reads = [0] * len(tape.nodes)
+    for n in tape.nodes:
+        if need[n.index]:
+            for i, a in enumerate(n.args):
+                if isinstance(a, Node):
+                    # maximum writes both operands twice; where drops its first two on this path
+                    reads[a.index] += 2 if n.op == "maximum" or n.op == "where" and i < 2 else 1
+    pinned = {n.index for _, n in tops.guards} | {n.index for _, n in tops.cond_nodes if isinstance(n, Node)}
+    for v in sym.values():
+        for x in (v if isinstance(v, tuple) else (v,)):
+            if isinstance(x, Traced):
+                pinned.add(x.node.index)
+    return [need[i] and reads[i] == 1 and i not in pinned and n.op != "input" for i, n in enumerate(tape.nodes)]
+
+
 def _write(tape: Tape, tops: TracingOps, plan: list[tuple[Any, ...]], sym: Mapping[str, Any],
            constants: Mapping[str, Any], params: list[str], batch: bool) -> Run:
     w = _Writer(batch)
@@ -166,8 +186,16 @@ def _write(tape: Tape, tops: TracingOps, plan: list[tuple[Any, ...]], sym: Mappi
     forms = _BATCH if batch else _SCALAR
     body = w.lines
 
+    # On the scalar path a node read once, by an operation that writes it once, is written inside
+    # its reader: one store and load fewer (a Python local costs as much as the arithmetic).
+    inline: dict[int, str] = {}
+    depth: dict[int, int] = {}
+    once = [False] * len(tape.nodes) if batch else _read_once(tape, tops, sym, need)
+
     def operand(a: Any, op: str) -> str:
-        return local[a.index] if isinstance(a, Node) else w.const(a, as_array=op in _ARITHMETIC)
+        if isinstance(a, Node):
+            return inline.pop(a.index) if a.index in inline else local[a.index]
+        return w.const(a, as_array=op in _ARITHMETIC)
 
     def component(x: Any) -> str:
         return local[x.node.index] if isinstance(x, Traced) else w.const(x)
@@ -194,8 +222,13 @@ def _write(tape: Tape, tops: TracingOps, plan: list[tuple[Any, ...]], sym: Mappi
                 kind, name, *k = n.args
                 src = f"P[{name!r}]" if kind == "param" else called[name] + (f"[{k[0]}]" if k else "")
                 body.append(f"    {t} = {src}")
+                continue
+            d = 1 + max((depth.get(a.index, 0) for a in n.args if isinstance(a, Node)), default=0)
+            expr = forms[n.op].format(*(operand(a, n.op) for a in n.args))
+            if once[n.index] and d < 24:  # (a bound on the nesting the parser accepts)
+                inline[n.index], depth[n.index] = f"({expr})", d
             else:
-                body.append(f"    {t} = " + forms[n.op].format(*(operand(a, n.op) for a in n.args)))
+                body.append(f"    {t} = {expr}")
         done = max(done, end)
 
     guards: list[Node] = []
@@ -222,11 +255,11 @@ def _write(tape: Tape, tops: TracingOps, plan: list[tuple[Any, ...]], sym: Mappi
             else:  # a constant condition number, stored as the kernel's ops would store it
                 body.append(f"    ops.conds[{key}] = {w.const(c if batch or c < COND_CAP else COND_CAP)}")
     nodes_until(len(tape.nodes))
-    if batch and guards:
-        body.append("    g = " + " | ".join(local[g.index] for g in guards))
-        body.append("    if g.any() or ops.bad.any(): raise Fallback")
-    elif batch:
-        body.append("    if ops.bad.any(): raise Fallback")
+    if batch:  # a called step marks its own degenerate positions in ops.bad
+        tests = ["(" + " | ".join(local[g.index] for g in guards) + ").any()"] if guards else []
+        tests += ["ops.bad.any()"] if called else []
+        if tests:
+            body.append(f"    if {' or '.join(tests)}: raise Fallback")
     names = [*constants, *params, *(e[1] for e in plan)]
     body.append("    return {" + ", ".join(f"{n!r}: {value(n)}" for n in names) + "}")
     text = "def run(ops, P):\n" + "\n".join(body) + "\n"

@@ -220,6 +220,16 @@ def _compile(program: tuple[_Compiled, ...], constants: dict[str, Any], params: 
     return cast(_Run, namespace["run"])
 
 
+def _read_only(a: np.ndarray, n: int) -> np.ndarray:
+    """``a`` over n positions, read-only (a kernel must not write into the caller's array): a view
+    where it already has n values (np.broadcast_to costs ten times as much)."""
+    if a.shape != (n,):
+        return np.broadcast_to(a, (n,))
+    v = a.view()
+    v.flags.writeable = False
+    return v
+
+
 class Plan:
     """The pruned, ordered steps of a construction, ready to evaluate."""
 
@@ -295,7 +305,7 @@ class Plan:
         """Evaluate at many positions at once; failing positions are marked, never NaN."""
         arrays = {k: np.asarray(v, dtype=float) for k, v in params.items()}
         n = max((a.size for a in arrays.values() if a.ndim), default=1)
-        params = {k: (np.broadcast_to(a, (n,)) if a.ndim else a) for k, a in arrays.items()}
+        params = {k: (_read_only(a, n) if a.ndim else a) for k, a in arrays.items()}
         run = self._fused[True]
         if run:
             ops = ArrayOps(n)

@@ -141,3 +141,17 @@ def test_every_reference_scene_checks_the_same_with_every_plan_fused_at_once(sce
     monkeypatch.setattr(fused, "fuse", fuse)
     assert api.load(scene).check().to_json() == want
     assert refused == []
+
+
+def test_the_scalar_path_writes_a_value_read_once_inside_its_reader_and_constants_as_literals():
+    g = Construction()
+    g.param("t")
+    g.add("P", "point", lambda ops, t: (ops.maximum(t * 3.0, 1.0), (t + 2.0) * 5.0), ("t",))
+    plan = g.prune(["P"])
+    run, got, want = fused_run(plan, {"t": 0.25}, False)
+    assert fused.same_run(got, want) and got[0]["P"] == (1.0, 11.25)
+    lines = run.source.splitlines()
+    assert any(line.endswith("= t0 * (3.0)") for line in lines)  # read twice by maximum: a local
+    assert any(line.endswith("= (t0 + (2.0)) * (5.0)") for line in lines)  # read once: written inside
+    run_b, got_b, want_b = fused_run(plan, {"t": np.array([0.25, 1.0])}, True)
+    assert fused.same_run(got_b, want_b) and "(3.0)" not in run_b.source  # numpy 0-d constants
