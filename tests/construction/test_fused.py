@@ -25,15 +25,19 @@ def bench_plan(case):
     return b.g.prune([b.quantities[q].slot for q in case.quantities])
 
 
+def positions(params):
+    return max(np.size(v) for v in params.values())
+
+
 def step_by_step(plan, params, batch):
-    ops = ArrayOps(np.size(params["phi"])) if batch else ScalarOps()
+    ops = ArrayOps(positions(params)) if batch else ScalarOps()
     return plan._run(ops, params), ops.conds
 
 
 def fused_run(plan, params, batch):
     sample = step_by_step(plan, params, batch)
     run = fused.fuse(plan._program, plan._constants, plan._params, sample[0], batch)
-    ops = ArrayOps(np.size(params["phi"])) if batch else ScalarOps()
+    ops = ArrayOps(positions(params)) if batch else ScalarOps()
     with np.errstate(all="ignore"):
         return run, (run(ops, params), ops.conds), sample
 
