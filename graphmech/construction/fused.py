@@ -260,10 +260,26 @@ def _write(tape: Tape, tops: TracingOps, plan: list[tuple[Any, ...]], sym: Mappi
         tests += ["ops.bad.any()"] if called else []
         if tests:
             body.append(f"    if {' or '.join(tests)}: raise Fallback")
+    # The values: a copy of a dictionary that already holds every key, in order, and the values that
+    # never change (a dictionary display of thirty entries costs half as much again).
     names = [*constants, *params, *(e[1] for e in plan)]
-    body.append("    return {" + ", ".join(f"{n!r}: {value(n)}" for n in names) + "}")
+    template = {n: _fixed(n, constants, sym, called) for n in names}
+    body.append(f"    d = {w.bind('D', template)}.copy()")
+    body += [f"    d[{n!r}] = {value(n)}" for n in names if template[n] is None]
+    body.append("    return d")
     text = "def run(ops, P):\n" + "\n".join(body) + "\n"
     return _compile(text, w.names)
+
+
+def _fixed(name: str, constants: Mapping[str, Any], sym: Mapping[str, Any], called: Mapping[str, str]) -> Any:
+    """A step's value if it is the same at every position (a plan's constant, or a tuple of
+    constants), else None."""
+    if name in constants:
+        return constants[name]
+    v = sym.get(name)
+    if name in called or v is None or not isinstance(v, tuple) or any(isinstance(x, Traced) for x in v):
+        return None
+    return v
 
 
 def _compile(text: str, names: dict[str, Any]) -> Run:
