@@ -251,14 +251,17 @@ class Plan:
         )
         self._params = [s.name for s in steps if s.kind == "param"]
         self._run = _compile(self._program, self._constants, self._params)
-        # The fused function of each path (fused.py), written once the plan has been run this many
-        # times step by step (a plan run once or twice would not win back the writing); None until
-        # then, False where it cannot be fused or would not give the same bits.
+        # The fused function of each path (fused.py), written once the plan has been run
+        # FUSE_AFTER times step by step; None until then, False where it cannot be fused or would
+        # not give the same bits.
         self._fused: dict[bool, Any] = {False: None, True: None}
         self._runs = {False: 0, True: 0}
 
-    #: Step-by-step runs before the fused function is written (scalar path, batch path).
-    FUSE_AFTER = {False: 2, True: 1}
+    #: Step-by-step runs before the fused function is written (scalar path, batch path). Writing
+    #: it costs 2–4 ms (recording, writing, compiling, checking), which a run at one position wins
+    #: back by 5–9 µs and a run over a batch by 30–70 µs: a plan is fused once it has been run
+    #: often enough to pay for it, so a figure or a check (a few runs a plan) never pays.
+    FUSE_AFTER = {False: 500, True: 50}
 
     def _fuse(self, batch: bool, sample: tuple[dict[str, Any], dict[str, Any]], ops_for: Callable[[], Any],
               params: Mapping[str, Any]) -> None:

@@ -60,8 +60,9 @@ def test_a_plan_fuses_after_its_runs_and_then_uses_the_fused_function():
         assert plan._fused[False] is None
         plan.solve({"phi": 0.3 + k})
     assert callable(plan._fused[False])
-    plan.evaluate_batch({"phi": np.arange(3.0)})
-    plan.evaluate_batch({"phi": np.arange(3.0)})
+    for k in range(Plan.FUSE_AFTER[True] + 1):
+        assert plan._fused[True] is None
+        plan.evaluate_batch({"phi": np.arange(3.0) + k})
     assert callable(plan._fused[True])
     a, b = plan.solve({"phi": 1.25}), step_by_step(plan, {"phi": 1.25}, False)
     assert fused.same_run((a.values, a.conds), b)
@@ -78,7 +79,13 @@ def dead_centre_plan():
     return b.g.prune([b.quantities[q].slot for q in ("v_C", "a_C", "omega_2")])
 
 
-def test_a_degenerate_position_runs_step_by_step_and_says_the_same():
+def test_a_plan_run_a_few_times_is_not_fused():
+    """Writing the fused function costs as much as hundreds of runs: a figure never pays for it."""
+    assert Plan.FUSE_AFTER[False] >= 100 and Plan.FUSE_AFTER[True] >= 10
+
+
+def test_a_degenerate_position_runs_step_by_step_and_says_the_same(monkeypatch):
+    monkeypatch.setattr(Plan, "FUSE_AFTER", {False: 2, True: 2})
     plan = dead_centre_plan()
     ok = np.radians([60.0, 90.0, 120.0])
     for _ in range(3):
