@@ -79,9 +79,16 @@ def dead_centre_plan():
     return b.g.prune([b.quantities[q].slot for q in ("v_C", "a_C", "omega_2")])
 
 
-def test_a_plan_run_a_few_times_is_not_fused():
-    """Writing the fused function costs as much as hundreds of runs: a figure never pays for it."""
-    assert Plan.FUSE_AFTER[False] >= 100 and Plan.FUSE_AFTER[True] >= 10
+def test_a_figure_and_a_check_never_pay_for_fusing(monkeypatch):
+    """Writing the fused function costs as much as hundreds of runs: the 12-position sheet and
+    its check (a few runs a plan) go step by step."""
+    from graphmech import api
+
+    fused_now = []
+    monkeypatch.setattr(Plan, "_fuse", lambda self, *a: fused_now.append(self))
+    p = api.load(Path(__file__).parents[2] / "figures" / "scenes" / "linkage.slider_crank_offset-cycle.toml")
+    p.check(), p.render()
+    assert fused_now == []
 
 
 def test_a_degenerate_position_runs_step_by_step_and_says_the_same(monkeypatch):
