@@ -250,10 +250,10 @@ def _write(tape: Tape, tops: TracingOps, plan: list[tuple[Any, ...]], sym: Mappi
         for step, c in tops.cond_nodes[c0:c1]:
             key = w.bind("T", step)
             if isinstance(c, Node):
-                body.append(f"    ops.conds[{key}] = {local[c.index]}" if batch else
-                            f"    ops.conds[{key}] = {local[c.index]} if {local[c.index]} < CAP else CAP")
+                body.append(f"    C[{key}] = {local[c.index]}" if batch else
+                            f"    C[{key}] = {local[c.index]} if {local[c.index]} < CAP else CAP")
             else:  # a constant condition number, stored as the kernel's ops would store it
-                body.append(f"    ops.conds[{key}] = {w.const(c if batch or c < COND_CAP else COND_CAP)}")
+                body.append(f"    C[{key}] = {w.const(c if batch or c < COND_CAP else COND_CAP)}")
     nodes_until(len(tape.nodes))
     if batch:  # a called step marks its own degenerate positions in ops.bad
         tests = ["(" + " | ".join(local[g.index] for g in guards) + ").any()"] if guards else []
@@ -267,7 +267,7 @@ def _write(tape: Tape, tops: TracingOps, plan: list[tuple[Any, ...]], sym: Mappi
     body.append(f"    d = {w.bind('D', template)}.copy()")
     body += [f"    d[{n!r}] = {value(n)}" for n in names if template[n] is None]
     body.append("    return d")
-    text = "def run(ops, P):\n" + "\n".join(body) + "\n"
+    text = "def run(ops, P):\n    C = ops.conds\n" + "\n".join(body) + "\n"
     return _compile(text, w.names)
 
 

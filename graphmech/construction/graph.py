@@ -140,7 +140,7 @@ class Construction:
         return Plan(kept, {k: [p for p in v if p in need] for k, v in self.extent.items() if k in need})
 
 
-@dataclass
+@dataclass(slots=True)
 class Solution:
     """Values of a plan's steps at one position, with the condition number of each intersection."""
 

@@ -51,7 +51,7 @@ def test_the_bench_linkages_fuse_whole_and_give_the_same_bits(case, batch):
         run, got, want = fused_run(plan, params, batch)
         assert fused.same_run(got, want)
     assert " = K" not in run.source  # every step inlined: no kernel called as it is
-    assert "ops.conds[" in run.source and ("raise Fallback" in run.source)
+    assert "C[" in run.source and ("raise Fallback" in run.source)
 
 
 def test_a_plan_fuses_after_its_runs_and_then_uses_the_fused_function():
