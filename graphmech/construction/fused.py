@@ -17,6 +17,8 @@ It computes exactly what the step-by-step run computes: the same operations on t
 in the same order, to the last bit. :func:`fuse` checks that on the run that asks for it, and a
 plan whose fused function differs in any bit keeps running step by step. A step that cannot be
 recorded (it branches on a value, or calls numpy itself) is called as it is, in its place.
+Recording runs every kernel once with stand-ins, so a kernel must be what the step graph asks of
+it anyway: a function of its inputs that changes nothing outside itself.
 """
 from __future__ import annotations
 
