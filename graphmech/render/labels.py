@@ -392,7 +392,8 @@ def _in_polygon(pts: np.ndarray, poly: np.ndarray) -> np.ndarray:
     """Whether each point (n × 2) is inside the polygon (k × 2), by the even–odd rule."""
     x, y = pts[:, 0:1], pts[:, 1:2]
     ax, ay = poly[:, 0][None, :], poly[:, 1][None, :]
-    bx, by = np.roll(poly[:, 0], -1)[None, :], np.roll(poly[:, 1], -1)[None, :]
+    nxt = np.concatenate((poly[1:], poly[:1]))  # the next vertex of each (np.roll's values, without its overhead)
+    bx, by = nxt[:, 0][None, :], nxt[:, 1][None, :]
     straddle = (ay > y) != (by > y)
     with np.errstate(divide="ignore", invalid="ignore"):
         xc = ax + (y - ay) * (bx - ax) / np.where(by != ay, by - ay, 1.0)
@@ -462,7 +463,7 @@ def _leader_start(anchor: np.ndarray, dirs: np.ndarray, discs: np.ndarray, fills
     for poly in fills:
         if not _in_polygon(anchor[None, :], poly)[0]:
             continue
-        e0, e1 = poly, np.roll(poly, -1, axis=0)
+        e0, e1 = poly, np.concatenate((poly[1:], poly[:1]))
         ex, ey = (e1 - e0)[:, 0], (e1 - e0)[:, 1]
         wx, wy = (e0 - anchor)[:, 0], (e0 - anchor)[:, 1]
         den = dirs[:, 0:1] * ey[None, :] - dirs[:, 1:2] * ex[None, :]
