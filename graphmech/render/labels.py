@@ -303,6 +303,14 @@ class Obstacles:
         r = self._reach + STROKE_CLEARANCE
         grown = (region[0] - r, region[1] - r, region[2] + r, region[3] + r)
         segs = self.segs[self._grid.query(grown)]
+        # the grid's cells are coarse: keep only the pieces whose box comes within reach of the
+        # region (a leader's points look LEADER_ALONG_DISTANCE round them), in their order — the
+        # others could reach no candidate, so every score is the same, sooner
+        far = self._reach + max(STROKE_CLEARANCE, LEADER_ALONG_DISTANCE)
+        segs = segs[(np.maximum(segs[:, 0], segs[:, 2]) >= region[0] - far)
+                    & (np.minimum(segs[:, 0], segs[:, 2]) <= region[2] + far)
+                    & (np.maximum(segs[:, 1], segs[:, 3]) >= region[1] - far)
+                    & (np.minimum(segs[:, 1], segs[:, 3]) <= region[3] + far)]
         d = self.discs
         discs = d[(d[:, 0] + d[:, 2] >= region[0]) & (d[:, 0] - d[:, 2] <= region[2])
                   & (d[:, 1] + d[:, 2] >= region[1]) & (d[:, 1] - d[:, 2] <= region[3])]
