@@ -159,7 +159,7 @@ def discretised_methods(records: list[dict[str, Any]]) -> list[str]:
 
 
 def _tick(v: float, _: object = None) -> str:
-    return f"{v:.3g}"
+    return f"{v:.4g}"
 
 
 def _tick_2_5(v: float, _: object = None) -> str:
@@ -203,8 +203,8 @@ def error_against_time_plots(records: list[dict[str, Any]], out_dir: Path, fmt: 
                 errs = [_error(r) or 0.0 for r in rs]  # every one an error (_sweeps)
                 (line,) = ax.plot(ms, errs, marker=_MARKERS[i % len(_MARKERS)], markersize=4.0, linewidth=1.2,
                                   label=name)
-                for r, x, y in zip(rs, ms, errs):
-                    ax.annotate(f"{r['n']}", (x, y), textcoords="offset points", xytext=(4, 2 + 5 * (i % 2)),
+                for k, (r, x, y) in enumerate(zip(rs, ms, errs)):  # above and below in turn: neighbours apart
+                    ax.annotate(f"{r['n']}", (x, y), textcoords="offset points", xytext=(4, 3 if k % 2 == 0 else -9),
                                 fontsize=6.5, color=line.get_color())
                 est = [(x, float(r["error_estimate"])) for r, x in zip(rs, ms)
                        if _positive(r.get("max_rel_error")) and _positive(r.get("error_estimate"))]
