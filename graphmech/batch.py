@@ -181,8 +181,10 @@ def run(todo: Sequence[Job], options: Options, workers: int | None = None,
         return results
     from concurrent.futures import ProcessPoolExecutor  # only for a pool: a single check starts faster
 
+    # one job at a time: a worker takes the next as soon as it is free, so one slow scene (a
+    # flywheel's true motion, seconds) does not hold back a chunk of others behind it
     with ProcessPoolExecutor(max_workers=workers) as pool:
-        for result in pool.map(make, todo, [options] * len(todo), chunksize=max(1, len(todo) // (4 * workers))):
+        for result in pool.map(make, todo, [options] * len(todo)):
             results.append(result)
             if done is not None:
                 done(result)

@@ -6,7 +6,8 @@ Speed is measured here, never in timed tests. Each record is
 inversion: ``n`` divisions of the turn). Each kind of problem times its own methods
 (``graphmech/problems/<kind>/bench.py``, its ``Kind.bench``); this module runs them all, kind
 by kind from the linkage to the kinds built on it (:data:`graphmech.problems.KINDS` read
-backwards), and times one whole sheet.
+backwards), and times one whole sheet, 100 variants of one scene and every example scene
+(figure and check) on a process pool.
 """
 from __future__ import annotations
 
@@ -31,6 +32,10 @@ SHEET_SCENE = "linkage.slider_crank_offset-cycle.toml"
 BATCH_SCENE = "kin.oscillating_block.toml"
 #: Variants in the batch record (``--quick``: fewer).
 BATCH_VARIANTS, BATCH_VARIANTS_QUICK = 100, 12
+#: ``--quick``: the reference-scenes record takes every this many of the example scenes.
+REFERENCE_STRIDE_QUICK = 10
+#: What a reference scene may take on average, figure and check (issue 23), s.
+REFERENCE_TARGET_S = 0.1
 
 
 def batch_record(quick: bool = False) -> dict[str, Any]:
@@ -50,6 +55,56 @@ def batch_record(quick: bool = False) -> dict[str, Any]:
     return {"method": "batch", "case": "oscillating-block-variants", "n": n, "seconds": seconds,
             "max_rel_error": max(errors) if errors else None, "failed": len(failed), "workers": os.cpu_count() or 1,
             "note": f"{n} variants of the example scene {BATCH_SCENE} (figure + check each), on a process pool"}
+
+
+def reference_record(quick: bool = False) -> dict[str, Any]:
+    """The time to make the figure (SVG) and the check of every example scene — the reference
+    scenes of figures/scenes, installed with the package — on every core in one run, as
+    ``graphmech batch`` does, but writing nothing (``quick``: every
+    :data:`REFERENCE_STRIDE_QUICK`-th of them). A scene that fails is counted in ``failed``."""
+    from contextlib import ExitStack
+
+    from graphmech import batch
+    from graphmech.packaged import example_names
+
+    names = example_names()
+    if quick:
+        names = names[::REFERENCE_STRIDE_QUICK]
+    folder = examples()
+    with ExitStack() as stack:
+        paths = [str(stack.enter_context(as_file(folder.joinpath(f"{n}.toml")))) for n in names]
+        cpu0, start = _cpu_seconds(), time.perf_counter()
+        results = batch.run(batch.jobs(paths, []), batch.Options(figure="svg", check=True))
+        seconds, cpu = time.perf_counter() - start, _cpu_seconds() - cpu0
+    n = len(names)
+    workers = max(1, min(os.cpu_count() or 1, n))
+    return {"method": "reference-scenes", "case": f"every-{REFERENCE_STRIDE_QUICK}th-example" if quick
+            else "all-examples", "n": n, "seconds": seconds, "max_rel_error": None,
+            "failed": sum(1 for r in results if r.error is not None), "workers": workers,
+            "per_scene": seconds / max(1, n), "cpu_seconds": cpu,
+            "note": f"{n} example scenes (figures/scenes), figure + check each, on a process pool: "
+                    f"{1e3 * seconds / max(1, n):.0f} ms a scene"}
+
+
+def _cpu_seconds() -> float:
+    """CPU time of this process and of its children that have ended (the pool's workers, once it
+    has closed), s: what the scenes cost whatever else the machine runs."""
+    try:
+        import resource
+    except ImportError:  # not on Windows: no such count
+        return 0.0
+    me, kids = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return me.ru_utime + me.ru_stime + kids.ru_utime + kids.ru_stime
+
+
+def reference_note(record: dict[str, Any]) -> str:
+    """The bench's note on the reference scenes: their time against the target."""
+    each = record["seconds"] / max(1, record["n"])
+    verdict = "within" if each <= REFERENCE_TARGET_S else "OVER"
+    failed = f", {record['failed']} FAILED" if record.get("failed") else ""
+    return (f"reference scenes: {record['n']} example scenes (figure and check each) in {record['seconds']:.2f} s "
+            f"on {record.get('workers', 1)} processes, {1e3 * each:.0f} ms a scene ({verdict} the target of "
+            f"{1e3 * REFERENCE_TARGET_S:.0f} ms); CPU {record.get('cpu_seconds', 0.0):.1f} s in all{failed}")
 
 
 def sheet_record(repeat: int = 3) -> dict[str, Any]:
@@ -86,7 +141,9 @@ def run_bench(quick: bool = False, explicit: bool = False) -> dict[str, Any]:
     many = batch_record(quick)
     notes.append(f"batch: {many['n']} variants (figure and check each) in {many['seconds']:.2f} s on "
                  f"{many.get('workers', 1)} processes ({1e3 * many['seconds'] / max(1, many['n']):.0f} ms each)")
-    return {"records": records + [sheet, many], "notes": notes}
+    scenes = reference_record(quick)
+    notes.append(reference_note(scenes))
+    return {"records": records + [sheet, many, scenes], "notes": notes}
 
 
 # ---------------------------------------------------------------------------- comparing two runs

@@ -106,7 +106,9 @@ def _parser() -> argparse.ArgumentParser:
     st.add_argument("scene", metavar="SCENE")
     b = sub.add_parser("bench", help="run time and error of the graphical methods against the exact ones")
     b.add_argument("--json", action="store_true")
-    b.add_argument("-o", "--output", metavar="DIR", help="also write bench.json and log-log plots of error and time into DIR")
+    b.add_argument("-o", "--output", metavar="DIR",
+                   help="also write bench.json and log-log plots of error and time into DIR (and of error "
+                        "against time for each discretised method)")
     b.add_argument("--quick", action="store_true", help="fewer repetitions")
     b.add_argument("--compare", metavar="OLD.json", help="print each record's change against an earlier bench.json")
     b.add_argument("--explicit", action="store_true",
@@ -427,9 +429,10 @@ def _bench(args: argparse.Namespace) -> int:
             for line in changes:
                 print("  " + line)
     if args.output:  # the plots last: without graphmech[plots] the results above still stand
-        from graphmech.render.plots import error_time_plots  # matplotlib only when plots are asked for
+        from graphmech.render.plots import error_against_time_plots, error_time_plots  # matplotlib only here
 
         error_time_plots(doc["records"], Path(args.output))
+        error_against_time_plots(doc["records"], Path(args.output))
     return EXIT_OK
 
 

@@ -31,6 +31,34 @@ def test_the_batch_record_times_variants_with_their_checks(quick_bench):
     assert r["max_rel_error"] <= 1e-12  # every variant's every row: constructions, exact to round-off
 
 
+def test_the_reference_scenes_record_times_every_example_scene_on_the_pool(quick_bench):
+    """Figure and check of the example scenes in one run (--quick: every tenth); the notes state
+    its time and the batch record's."""
+    from graphmech.bench import REFERENCE_STRIDE_QUICK
+    from graphmech.packaged import example_names
+
+    code, out, _, _ = quick_bench
+    doc = json.loads(out)
+    [r] = [r for r in doc["records"] if r["method"] == "reference-scenes"]
+    assert code == 0 and r["case"] == "every-10th-example"
+    assert r["n"] == len(example_names()[::REFERENCE_STRIDE_QUICK]) and r["failed"] == 0
+    assert r["seconds"] > 0 and r["per_scene"] == r["seconds"] / r["n"] and r["workers"] >= 1
+    notes = doc["notes"]
+    assert any(n.startswith(f"reference scenes: {r['n']} example scenes") and "ms a scene" in n for n in notes)
+    assert any(n.startswith("batch: 12 variants") for n in notes)
+
+
+def test_every_discretised_method_has_its_error_against_time_plot(quick_bench):
+    from graphmech.render.plots import discretised_methods
+
+    _, _, _, folder = quick_bench
+    records = json.loads((folder / "bench.json").read_text())["records"]
+    methods = discretised_methods(records)
+    assert {"cam-inversion", "wittenbauer", "energy-indicator", "graphical-differentiation", "involute",
+            "rack-generation", "true-motion"} <= set(methods)
+    assert sorted(p.name for p in folder.glob("*-error-time.svg")) == sorted(f"{m}-error-time.svg" for m in methods)
+
+
 def test_compare_names_each_records_change_and_what_is_new_or_gone():
     from graphmech.bench import compare
 

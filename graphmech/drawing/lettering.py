@@ -20,6 +20,7 @@ ordinary character, so scene text such as a title ``"a_b"`` is drawn as typed.
 """
 from __future__ import annotations
 
+import functools
 import math
 import re
 import unicodedata
@@ -199,6 +200,17 @@ def text_extent(text: str, size: float, italic: bool = False) -> tuple[float, fl
     >>> text_extent("B", 10.0), text_extent("ω_{2}", 10.0, italic=True)
     ((7.0, 9.0, 2.4), (12.32, 9.0, 4.228))
     """
+    if type(size) is float and size > 0.0 and type(italic) is bool:  # the usual call, asked again and again
+        return _text_extent(text, size, italic)
+    return _measure(text, size, italic)
+
+
+@functools.lru_cache(maxsize=4096)
+def _text_extent(text: str, size: float, italic: bool) -> tuple[float, float, float]:
+    return _measure(text, size, italic)
+
+
+def _measure(text: str, size: float, italic: bool) -> tuple[float, float, float]:
     width = 0.0
     levels = set()
     for t, level in runs(text):

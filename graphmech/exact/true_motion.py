@@ -488,6 +488,21 @@ def _drive(machine: Machine, exact: ExactMachine, J_F: float) -> tuple[tuple[flo
     return (c * ws, c), ws
 
 
+def _stepping_model(machine: Machine, exact: ExactMachine, J_F: float) -> _Model:
+    """The equation of motion :func:`integrate` steps through: built once per exact machine and
+    flywheel (a drawn true motion is stepped a stretch at a time, ~150 calls, each of which would
+    otherwise tabulate Jп and find ω_s anew), its explicit solver's call count started afresh.
+    :func:`true_motion` builds its own each time (the bench times it whole)."""
+    if machine is not exact.machine:
+        return _Model(machine, exact, J_F, _drive(machine, exact, J_F)[0])
+    models: dict[float, _Model] = exact.__dict__.setdefault("_stepping_models", {})
+    model = models.get(J_F)
+    if model is None:
+        model = models[J_F] = _Model(machine, exact, J_F, _drive(machine, exact, J_F)[0])
+    model.calls, model.call_limit = 0, math.inf
+    return model
+
+
 def integrate(machine: Machine, exact: ExactMachine, J_F: float, phi_span: tuple[float, float],
               omega0: float, *, solver: str = "Radau", rtol: float = 1e-10,
               atol: float | None = None, max_steps: int = 2_000_000) -> Run:
@@ -510,12 +525,11 @@ def integrate(machine: Machine, exact: ExactMachine, J_F: float, phi_span: tuple
     Run
     """
     rtol, a = _tolerances(machine, rtol, atol)
-    drive, _ = _drive(machine, exact, J_F)
+    model = _stepping_model(machine, exact, J_F)
     lo, hi = float(phi_span[0]), float(phi_span[1])
     if not 0.0 <= lo < hi <= exact.cycle:
         raise OutOfDomain(f"phi_span must lie within [0, Φ] with φ_a < φ_b, got {phi_span}")
-    ig = _Integrator(_Model(machine, exact, J_F, drive), solver, rtol, a, max_steps,
-                     machine.omega_m)
+    ig = _Integrator(model, solver, rtol, a, max_steps, machine.omega_m)
     cy = ig.run(lo, hi, float(omega0), dense=False)
     return Run(cy.w_end, cy.time, cy.steps, cy.nfev, cy.njev)
 

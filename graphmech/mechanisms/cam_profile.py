@@ -16,12 +16,18 @@ which the follower touches.
 from __future__ import annotations
 
 import math
+from bisect import bisect_right
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any
 
 import numpy as np
 
 from graphmech.mechanisms.cam import Follower
+
+
+#: k!/(k − order)!, the factor of c[3−k]·s^(k−order) in the order-th derivative (scipy's prefactor).
+_FACTORS = tuple(tuple(float(math.perm(k, order)) for k in range(4)) for order in range(4))
 
 
 @dataclass(frozen=True)
@@ -62,10 +68,41 @@ class PointsProfile:
         """L, the period of the parameter (the closed polygon's perimeter), m."""
         return self._spline[1]
 
+    @cached_property
+    def _pieces(self) -> tuple[list[float], list[tuple[tuple[float, float], ...]]]:
+        """The spline's breakpoints and, per piece, its coefficients (x, y) from the highest power,
+        as floats: one point is evaluated in Python (:meth:`at`)."""
+        spline: Any = self._spline[0]  # scipy's CubicSpline (untyped)
+        c = np.asarray(spline.c, dtype=np.float64)
+        pieces = [tuple((float(c[k, i, 0]), float(c[k, i, 1])) for k in range(c.shape[0])) for i in range(c.shape[1])]
+        return np.asarray(spline.x, dtype=np.float64).tolist(), pieces
+
     def at(self, t: np.ndarray, order: int = 0) -> np.ndarray:
-        """The spline's points (order 0) or derivatives d^k p/dt^k at t, shape (len(t), 2)."""
+        """The spline's points (order 0) or derivatives d^k p/dt^k at t, shape (len(t), 2).
+
+        One point (the exact cam's root finding asks ~10⁵ times a scene) is evaluated in floats
+        the way scipy's ``CubicSpline`` evaluates it, bit for bit (a test), without its call's
+        overhead: its periodic wrap, the piece ``x[i] ≤ t < x[i+1]`` (the last one closed), and
+        ``Σ c[3−k]·s^(k−order)·k!/(k−order)!`` over k ≥ order, s = t − x[i], term by term."""
         spline, period = self._spline
-        return np.asarray(spline(np.mod(t, period), order))  # type: ignore[operator]
+        tm = np.mod(t, period)
+        if not (isinstance(tm, np.ndarray) and tm.shape == (1,) and 0 <= order <= 3):
+            return np.asarray(spline(tm, order))  # type: ignore[operator]
+        xs, pieces = self._pieces
+        v = xs[0] + (float(tm[0]) - xs[0]) % (xs[-1] - xs[0])  # scipy's periodic extrapolation
+        i = min(max(bisect_right(xs, v) - 1, 0), len(xs) - 2)
+        s = v - xs[i]
+        cs = pieces[i]
+        r0 = r1 = 0.0
+        z = 1.0
+        for k in range(order, 4):
+            f = _FACTORS[order][k]
+            cx, cy = cs[3 - k]
+            r0 = r0 + cx * z * f
+            r1 = r1 + cy * z * f
+            if k < 3:
+                z *= s
+        return np.array([[r0, r1]])
 
 
 def shape_problem(profile: PointsProfile, samples: int = 4096) -> str | None:

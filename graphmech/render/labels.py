@@ -303,6 +303,14 @@ class Obstacles:
         r = self._reach + STROKE_CLEARANCE
         grown = (region[0] - r, region[1] - r, region[2] + r, region[3] + r)
         segs = self.segs[self._grid.query(grown)]
+        # the grid's cells are coarse: keep only the pieces whose box comes within reach of the
+        # region (a leader's points look LEADER_ALONG_DISTANCE round them), in their order — the
+        # others could reach no candidate, so every score is the same, sooner
+        far = self._reach + max(STROKE_CLEARANCE, LEADER_ALONG_DISTANCE)
+        segs = segs[(np.maximum(segs[:, 0], segs[:, 2]) >= region[0] - far)
+                    & (np.minimum(segs[:, 0], segs[:, 2]) <= region[2] + far)
+                    & (np.maximum(segs[:, 1], segs[:, 3]) >= region[1] - far)
+                    & (np.minimum(segs[:, 1], segs[:, 3]) <= region[3] + far)]
         d = self.discs
         discs = d[(d[:, 0] + d[:, 2] >= region[0]) & (d[:, 0] - d[:, 2] <= region[2])
                   & (d[:, 1] + d[:, 2] >= region[1]) & (d[:, 1] - d[:, 2] <= region[3])]
@@ -392,7 +400,8 @@ def _in_polygon(pts: np.ndarray, poly: np.ndarray) -> np.ndarray:
     """Whether each point (n × 2) is inside the polygon (k × 2), by the even–odd rule."""
     x, y = pts[:, 0:1], pts[:, 1:2]
     ax, ay = poly[:, 0][None, :], poly[:, 1][None, :]
-    bx, by = np.roll(poly[:, 0], -1)[None, :], np.roll(poly[:, 1], -1)[None, :]
+    nxt = np.concatenate((poly[1:], poly[:1]))  # the next vertex of each (np.roll's values, without its overhead)
+    bx, by = nxt[:, 0][None, :], nxt[:, 1][None, :]
     straddle = (ay > y) != (by > y)
     with np.errstate(divide="ignore", invalid="ignore"):
         xc = ax + (y - ay) * (bx - ax) / np.where(by != ay, by - ay, 1.0)
@@ -462,7 +471,7 @@ def _leader_start(anchor: np.ndarray, dirs: np.ndarray, discs: np.ndarray, fills
     for poly in fills:
         if not _in_polygon(anchor[None, :], poly)[0]:
             continue
-        e0, e1 = poly, np.roll(poly, -1, axis=0)
+        e0, e1 = poly, np.concatenate((poly[1:], poly[:1]))
         ex, ey = (e1 - e0)[:, 0], (e1 - e0)[:, 1]
         wx, wy = (e0 - anchor)[:, 0], (e0 - anchor)[:, 1]
         den = dirs[:, 0:1] * ey[None, :] - dirs[:, 1:2] * ex[None, :]

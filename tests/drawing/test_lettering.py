@@ -84,3 +84,19 @@ def test_scale_text_states_every_scale_with_its_subscripted_symbol_and_four_figu
         assert text.startswith(scale_symbol(key) + " = ") and "_" not in plain(text)
     assert scale_text("phi", math.radians(4.0)) == "μ_{φ} = 4 °/mm"
     assert scale_text("l", 0.0123456) == "μ_{l} = 0.01235 m/mm"
+
+
+def test_text_extent_remembered_is_what_it_measures() -> None:
+    """Every label candidate asks for its box again: a float size is answered from a cache, the
+    same numbers (and types) as measuring afresh; any other size is measured each time."""
+    import numpy as np
+
+    from graphmech.drawing.lettering import _measure, _text_extent
+
+    for text, size, italic in (("B", 10.0, False), ("ω_{2}", 3.5, True), ("p (c₃, d₃)", 2.5, False)):
+        got = text_extent(text, size, italic)
+        assert got == text_extent(text, size, italic) == _measure(text, size, italic)
+        assert all(type(v) is float for v in got)
+    assert _text_extent.cache_info().currsize >= 3
+    wide = text_extent("B", np.float64(10.0))
+    assert wide == (7.0, 9.0, 2.4) and type(wide[0]) is np.float64  # not the cached floats

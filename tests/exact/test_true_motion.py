@@ -143,6 +143,30 @@ def test_explicit_solver_needs_far_more_steps(comp, stiff):
         true_motion(ms, ex, jf, solver="RK45", rtol=1e-10, max_steps=2000)
 
 
+def test_integrate_builds_its_model_once_per_exact_machine_and_flywheel(comp):
+    """A drawn true motion steps through ~150 stretches: the model (Jп tabulated, ω_s found) is
+    built once for the exact machine's own machine and J_F, and gives the numbers a fresh one gives;
+    an explicit solver's budget still counts from zero on each call."""
+    m, _, jf = comp
+    ms = dataclasses.replace(m, motor=Motor(stiffness=1e5))
+    ex = ExactMachine(ms)
+    w0 = true_motion(ms, ex, jf, rtol=1e-10).omega0
+    a, b = 0.3, 0.9
+    first = integrate(ms, ex, jf, (0.0, a), w0, rtol=1e-10)
+    again = integrate(ms, ex, jf, (0.0, a), w0, rtol=1e-10)
+    fresh = integrate(dataclasses.replace(ms), ex, jf, (0.0, a), w0, rtol=1e-10)  # another machine: its own model
+    assert first == again == fresh
+    assert list(ex.__dict__["_stepping_models"]) == [jf]
+    run = integrate(ms, ex, jf, (a, b), first.omega, solver="RK45", rtol=1e-10, max_steps=200_000)
+    with pytest.raises(TrueMotionError, match="explicit solver RK45 exceeded 5 steps"):
+        integrate(ms, ex, jf, (a, b), first.omega, solver="RK45", rtol=1e-10, max_steps=5)
+    again_rk = integrate(ms, ex, jf, (a, b), first.omega, solver="RK45", rtol=1e-10, max_steps=200_000)
+    assert run.steps > 5 and again_rk == run  # the budget spent above does not linger
+    assert integrate(ms, ex, jf, (0.0, a), w0, rtol=1e-10) == first
+    assert integrate(ms, ex, 2 * jf, (0.0, a), w0, rtol=1e-10) != first
+    assert list(ex.__dict__["_stepping_models"]) == [jf, 2 * jf]
+
+
 def test_weak_motor_converges_by_secant_and_keeps_the_work_balance():
     m = dataclasses.replace(stepped(0.05, inertia=0.3), motor=Motor(synchronous=104.0))
     ex = ExactMachine(m)

@@ -34,3 +34,33 @@ def test_points_profile_is_the_spline_through_them_counter_clockwise() -> None:
     assert "not convex" in str(shape_problem(dented))
     away = PointsProfile(tuple((0.05 + 0.01 * math.cos(a), 0.01 * math.sin(a)) for a in np.linspace(0, 6, 8)))
     assert "inside" in str(shape_problem(away))
+
+
+def test_one_point_of_a_points_profile_is_scipys_bit_for_bit() -> None:
+    """The exact cam asks for one point at a time ~10⁵ times a scene: that point is evaluated in
+    floats, and must be the number scipy's CubicSpline gives — at the knots, just beside them, at
+    the ends of the period, outside it, −0, for every derivative."""
+    import math
+
+    import numpy as np
+
+    from graphmech.mechanisms.cam_profile import PointsProfile
+
+    rng = np.random.default_rng(23)
+    for turn in (1, -1):  # given clockwise: reversed inside
+        a = np.sort(rng.uniform(0.0, 2.0 * math.pi, 17))[::turn]
+        r = 0.05 + 0.01 * rng.uniform(size=a.size)
+        prof = PointsProfile(tuple((float(x * math.cos(b)), float(x * math.sin(b))) for x, b in zip(r, a)))
+        spline, period = prof._spline
+        knots = np.asarray(spline.x)  # type: ignore[attr-defined]
+        ts = np.concatenate([rng.uniform(-3 * period, 3 * period, 300), knots, knots + period, knots - period,
+                             np.nextafter(knots, -1.0), np.nextafter(knots, 1.0),
+                             [0.0, -0.0, period, -period, np.nextafter(period, 0.0), 5e-324, -5e-324]])
+        for order in range(5):
+            for t in ts:
+                one = np.array([t])
+                got, want = prof.at(one, order), np.asarray(spline(np.mod(one, period), order))  # type: ignore[operator]
+                assert got.shape == want.shape == (1, 2)
+                assert got.tobytes() == want.tobytes(), (order, t, got, want)
+        many = prof.at(ts, 1)  # more than one point: scipy's own evaluation
+        assert many.tobytes() == np.asarray(spline(np.mod(ts, period), 1)).tobytes()  # type: ignore[operator]

@@ -94,3 +94,103 @@ def test_without_matplotlib_the_plots_are_refused_in_one_line_and_nothing_is_wri
     assert str(refused.value) == 'the log-log plots need matplotlib: pip install "graphmech[plots]"'
     assert isinstance(refused.value.__cause__, ImportError)
     assert list(tmp_path.iterdir()) == []
+
+
+# ---------------------------------------------------------------------------- error against time
+
+def swept(method: str, case: str, ns, errors, *, solver: str | None = None, estimates=None) -> list[dict]:
+    out = []
+    for k, (n, e) in enumerate(zip(ns, errors)):
+        r = record(method, case, n, e, 1e-4 * (k + 1))
+        if solver is not None:
+            r["solver"] = solver
+        if estimates is not None:
+            r["error_estimate"] = estimates[k]
+        out.append(r)
+    return out
+
+
+SWEEPS = [
+    *swept("cam-inversion", "roller", [24, 48, 96], [1e-2, 2.5e-3, 6e-4]),
+    *swept("cam-inversion", "flat", [24, 48], [8e-3, 2e-3]),
+    *swept("wittenbauer", "exact", [12, 72, 360], [7.8e-2, 1.2e-3, 5e-5], estimates=[8.4e-2, 1.3e-3, 7.1e-5]),
+    *swept("graphical-differentiation", "v", [12, 36], [None, None], estimates=[1.7e-2, 1.9e-3]),  # its estimate only
+    *swept("true-motion", "stiff", [45, 135], [7e-3, 7e-8], solver="Radau"),
+    *swept("true-motion", "stiff", [103, 393], [2e-1, 3e-10], solver="BDF"),
+    *swept("involute", "z20", [4, 8], [1.3e-2, 0.0]),  # one point left: no sweep
+    *swept("polygons", "fourbar", [1, 360], [3.7e-16, 4.7e-15]),  # round-off at every n: exact
+    *swept("force-polygon", "incline", [10, 100, 1000], [0.0, 0.0, 0.0]),
+    record("full-cycle-sheet", "sheet-12", 12, None, 0.2),
+    record("reference-scenes", "all-examples", 131, None, 12.0),
+    *swept("rack-generation", "z15", [4, 8], [1.6e-2, 4.8e-3]),
+    *swept("rack-generation", "z15", [16], [1.4e-3]),
+]
+
+
+def test_the_discretised_methods_are_those_with_an_error_that_sweeps_n() -> None:
+    from graphmech.render.plots import discretised_methods
+
+    assert discretised_methods(SWEEPS) == ["cam-inversion", "wittenbauer", "graphical-differentiation", "true-motion",
+                                           "rack-generation"]
+    assert discretised_methods([]) == []
+
+
+@pytest.fixture(scope="module")
+def error_time(tmp_path_factory: pytest.TempPathFactory):
+    import matplotlib.pyplot as plt
+
+    from graphmech.render.plots import error_against_time_plots
+
+    figures = []
+    out = tmp_path_factory.mktemp("error-time")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(plt, "close", figures.append)
+        paths = error_against_time_plots(SWEEPS, out)
+    yield out, paths, figures
+    for fig in figures:
+        plt.close(fig)
+
+
+def test_every_discretised_method_and_only_those_gets_an_error_time_plot(error_time) -> None:
+    from graphmech.render.plots import discretised_methods
+
+    out, paths, figures = error_time
+    plotted = {fig.axes[0].get_title().split(":")[0] for fig in figures}
+    assert plotted == set(discretised_methods(SWEEPS))
+    assert [p.name for p in paths] == [f"{m}-error-time.svg" for m in discretised_methods(SWEEPS)]
+    for p in paths:
+        assert p.parent == out and ET.parse(p).getroot().tag.endswith("svg")
+
+
+def test_error_against_time_one_line_per_case_points_labelled_with_n(error_time) -> None:
+    _, _, figures = error_time
+    by = {fig.axes[0].get_title().split(":")[0]: fig.axes[0] for fig in figures}
+    cam = by["cam-inversion"]
+    assert (cam.get_xscale(), cam.get_yscale()) == ("log", "log")
+    assert "time" in cam.get_xlabel() and "error" in cam.get_ylabel()
+    roller, flat = cam.lines
+    assert roller.get_label() == "roller" and flat.get_label() == "flat"
+    assert list(roller.get_xdata()) == pytest.approx([0.1, 0.2, 0.3])  # ms, on x
+    assert list(roller.get_ydata()) == [1e-2, 2.5e-3, 6e-4]  # the error, on y
+    assert [t.get_text() for t in cam.texts] == ["24", "48", "96", "24", "48"]  # each point's n
+    # the method's own estimate, dashed beside the true error; an estimate alone stands for the error
+    w = by["wittenbauer"]
+    assert [ln.get_linestyle() for ln in w.lines if ln.get_xdata().size] == ["-", "--"]
+    assert list(w.lines[1].get_ydata()) == [8.4e-2, 1.3e-3, 7.1e-5]
+    assert list(by["graphical-differentiation"].lines[0].get_ydata()) == [1.7e-2, 1.9e-3]
+    # the integrators: one line per solver; cases split across records still make one line
+    assert [ln.get_label() for ln in by["true-motion"].lines] == ["stiff Radau", "stiff BDF"]
+    assert list(by["rack-generation"].lines[0].get_xdata()) == pytest.approx([0.1, 0.2, 0.1])  # sorted by n
+    assert [t.get_text() for t in by["rack-generation"].texts] == ["4", "8", "16"]
+
+
+def test_error_against_time_plots_are_byte_stable(tmp_path: Path) -> None:
+    from graphmech.render.plots import error_against_time_plots
+
+    a, b = tmp_path / "a", tmp_path / "b"
+    a.mkdir()
+    b.mkdir()
+    pa, pb = error_against_time_plots(SWEEPS, a), error_against_time_plots(SWEEPS, b)
+    assert [p.read_bytes() for p in pa] == [p.read_bytes() for p in pb]
+    exact = [r for r in SWEEPS if r["method"] in ("involute", "polygons", "force-polygon", "full-cycle-sheet")]
+    assert error_against_time_plots(exact, tmp_path) == []  # nothing discretised: nothing written

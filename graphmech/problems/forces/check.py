@@ -118,13 +118,31 @@ FIT_COARSER = (1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0)
 FIT_GAIN_MM = 2.0
 
 
+#: The last analysis made, with the scene it was made of (the very object, which the analysis
+#: holds anyway) and the measured values given: a scene drawn and then checked (``graphmech batch``,
+#: the API's render then check) is analysed once — each analysis lays its sheet out, labels and
+#: all, to choose its scales. One entry: the next force scene replaces it.
+_LAST: list[tuple[Scene[ForceScene], tuple[tuple[str, float], ...], ForceAnalysis]] = []
+
+
 def analyse_forces(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, float], ...] = ()) -> ForceAnalysis:
     """Build and check a force scene (``extra_measured``: values from the command line).
 
     The scales a scene does not state are chosen so that the sheet it draws fits its page: μl
     and μv first (the finest round ones that fit), then μF too; the check table then reads the
-    lengths at the μ the figure is drawn at.
+    lengths at the μ the figure is drawn at. The same scene object with the same values asked
+    again gives the analysis made last (nothing changes an analysis once made).
     """
+    extra = tuple(extra_measured)
+    if _LAST and _LAST[0][0] is scene and _LAST[0][1] == extra:
+        return _LAST[0][2]
+    fa = _fitted(scene, extra)
+    _LAST[:] = [(scene, extra, fa)]
+    return fa
+
+
+def _fitted(scene: Scene[ForceScene], extra_measured: tuple[tuple[str, float], ...]) -> ForceAnalysis:
+    """The analysis at the scales that fit the page (:func:`analyse_forces`)."""
     # a value that overflows is reported once, in one line, as "not finite" (no numpy warnings)
     with np.errstate(all="ignore"):
         fa = _analyse_forces(scene, extra_measured, {})

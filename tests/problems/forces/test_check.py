@@ -626,3 +626,17 @@ def test_nearly_parallel_guides_of_a_prp_group_are_flagged():
     assert not any("near-collinear" in w for w in analyse_forces(load_scene(TANGENT)).warnings)
     assert max(r.rel_error for r in near.rows) < 1e-9
     assert abs(near.solution.closing["group 2–3"][0]) == pytest.approx(math.sin(math.radians(3)), rel=1e-9)
+
+
+def test_a_scene_drawn_then_checked_is_analysed_once():
+    """Each analysis lays its sheet out to choose its scales: the same scene object with the same
+    measured values gets the analysis made last; another object, other values: anew."""
+    scene = load_scene(SCENES / "force.sixbar_kinetostatic.toml")
+    fa = analyse_forces(scene)
+    assert analyse_forces(scene) is fa and analyse_forces(scene, ()) is fa
+    other = analyse_forces(scene, (("v_C", 1.0),))
+    assert other is not fa and analyse_forces(scene, (("v_C", 1.0),)) is other
+    again = load_scene(SCENES / "force.sixbar_kinetostatic.toml")  # equal, not the same: analysed anew, alike
+    fresh = analyse_forces(again)
+    assert fresh is not fa and fresh.rows == fa.rows and fresh.scales == fa.scales
+    assert analyse_forces(scene) is not fa  # one entry: the last scene asked for replaced it
