@@ -121,6 +121,40 @@ def sheet_note(record: dict[str, Any]) -> str:
     return f"full-cycle sheet, 12 positions ({record['case']}): rendered in {record['seconds'] * 1e3:.0f} ms"
 
 
+#: The cycle whose memory the ``cycle-memory`` record measures: the offset slider-crank's sheet
+#: scene, checked at the most positions a scene may have.
+MEMORY_POSITIONS = 3600
+
+
+def memory_record(quick: bool = False) -> dict[str, Any]:
+    """The check of a 3600-position full cycle (the example scene SHEET_SCENE with that many
+    positions): its time (best of 3, one run with ``quick``) and the peak of the memory Python and
+    numpy allocate for it (tracemalloc, in a run of its own: tracing slows it down)."""
+    import tracemalloc
+
+    from graphmech import api
+
+    with as_file(examples().joinpath(SHEET_SCENE)) as scene:
+        cycle = api.load(scene).replace({"cycle.positions": MEMORY_POSITIONS})
+    secs, table = best_time(cycle.check, 1 if quick else 3)
+    tracemalloc.start()
+    try:
+        cycle.check()
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    errors = [row.rel_error for row in table.rows if row.rel_error is not None]
+    return {"method": "cycle-memory", "case": "slider-crank-offset-3600", "n": MEMORY_POSITIONS, "seconds": secs,
+            "max_rel_error": max(errors) if errors else None, "peak_mib": peak / 2**20,
+            "note": f"check of {SHEET_SCENE} at {MEMORY_POSITIONS} positions; peak_mib: tracemalloc's peak"}
+
+
+def memory_note(record: dict[str, Any]) -> str:
+    """The bench's note on the memory of a long cycle."""
+    return (f"full cycle, {record['n']} positions ({record['case']}): checked in {record['seconds']:.2f} s, "
+            f"memory peak {record['peak_mib']:.1f} MiB")
+
+
 def run_bench(quick: bool = False, explicit: bool = False) -> dict[str, Any]:
     """All benchmark records, plus notes comparing them with the targets; ``explicit``: also
     RK45's steps on the stiff flywheel (the demonstration that the stiff solvers earn their place)."""
@@ -143,7 +177,9 @@ def run_bench(quick: bool = False, explicit: bool = False) -> dict[str, Any]:
                  f"{many.get('workers', 1)} processes ({1e3 * many['seconds'] / max(1, many['n']):.0f} ms each)")
     scenes = reference_record(quick)
     notes.append(reference_note(scenes))
-    return {"records": records + [sheet, many, scenes], "notes": notes}
+    memory = memory_record(quick)
+    notes.append(memory_note(memory))
+    return {"records": records + [sheet, many, scenes, memory], "notes": notes}
 
 
 # ---------------------------------------------------------------------------- comparing two runs

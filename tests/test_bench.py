@@ -48,6 +48,17 @@ def test_the_reference_scenes_record_times_every_example_scene_on_the_pool(quick
     assert any(n.startswith("batch: 12 variants") for n in notes)
 
 
+def test_the_memory_record_measures_a_3600_position_cycle(quick_bench):
+    code, out, _, _ = quick_bench
+    doc = json.loads(out)
+    [r] = [r for r in doc["records"] if r["method"] == "cycle-memory"]
+    assert code == 0 and r["n"] == 3600 and r["case"] == "slider-crank-offset-3600"
+    # arrays over 3600 positions are tens of kB each: the check holds a few hundred of them at once
+    assert 1.0 < r["peak_mib"] < 200.0 and r["seconds"] > 0
+    assert r["max_rel_error"] < 1e-5  # the chords' diagrams at 3600 positions (order 2)
+    assert "full cycle, 3600 positions (slider-crank-offset-3600): checked in " in "\n".join(doc["notes"])
+
+
 def test_every_discretised_method_has_its_error_against_time_plot(quick_bench):
     from graphmech.render.plots import discretised_methods
 
