@@ -128,6 +128,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from graphmech.errors import NoSolution, NotApplicable, OutOfDomain, WrongKind
+from graphmech.minimum import fminbound  # scipy's bounded search without loading scipy.optimize
 from graphmech.roots import brentq  # scipy's algorithm without loading scipy.optimize (0.3 s)
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
@@ -609,18 +610,15 @@ def max_pressure_angle(cam: DiscCam, where: Where = "all") -> tuple[float, float
     best, at = _maximise(pieces, lambda d: _alpha(cam, _path(cam, d)))
     # Where α passes 90° the signed α_s jumps from +90° to −90° and no sign change of its
     # derivative marks the peak: a dense look at |α| itself catches it, then a bounded search.
-    from scipy.optimize import minimize_scalar
-
     for lo, hi in pieces:
         d = np.linspace(lo, hi, 4097)[:-1]  # the piece's own values: its end belongs to the next one
         a = profile(cam, d % _TWO_PI).pressure_angle
         k = int(np.argmax(a))
         if a[k] > best + 1e-12:
             h = (hi - lo) / 4096
-            r = minimize_scalar(lambda t: -float(profile(cam, np.array([t % _TWO_PI])).pressure_angle[0]),
-                                bounds=(max(lo, d[k] - h), min(hi, d[k] + h)), method="bounded",
-                                options={"xatol": 1e-12})
-            cand, cand_at = (-float(r.fun), float(r.x)) if -r.fun > a[k] else (float(a[k]), float(d[k]))
+            x, fun = fminbound(lambda t: -float(profile(cam, np.array([t % _TWO_PI])).pressure_angle[0]),
+                               max(lo, d[k] - h), min(hi, d[k] + h), xatol=1e-12)
+            cand, cand_at = (-fun, x) if -fun > a[k] else (float(a[k]), float(d[k]))
             if cand > best:
                 best, at = cand, cand_at % _TWO_PI
     return best, at
@@ -933,14 +931,11 @@ def working_profile(cam: DiscCam, samples: int = 20_000) -> tuple[np.ndarray, np
 def min_rho_actual(cam: DiscCam, samples: int = 20_000) -> tuple[float, float]:
     """The smallest radius of curvature of the working profile (for a flat face r0 + s + s″), m,
     and where, rad: a dense look, then a bounded search round the smallest sample."""
-    from scipy.optimize import minimize_scalar
-
     d = np.linspace(0.0, math.tau, samples, endpoint=False)
     rho = profile(cam, d).rho_actual
     k = int(np.argmin(rho))
     h = math.tau / samples
-    best = minimize_scalar(lambda t: float(profile(cam, [t % math.tau]).rho_actual[0]),
-                           bounds=(d[k] - h, d[k] + h), method="bounded", options={"xatol": 1e-13})
-    if best.fun < rho[k]:
-        return float(best.fun), float(best.x % math.tau)
+    x, fun = fminbound(lambda t: float(profile(cam, [t % math.tau]).rho_actual[0]), d[k] - h, d[k] + h, xatol=1e-13)
+    if fun < rho[k]:
+        return fun, x % math.tau
     return float(rho[k]), float(d[k])

@@ -22,6 +22,7 @@ from functools import cached_property
 import numpy as np
 
 from graphmech.mechanisms.cam import Follower
+from graphmech.spline import PeriodicSpline
 
 
 @dataclass(frozen=True)
@@ -47,15 +48,13 @@ class PointsProfile:
     points: tuple[tuple[float, float], ...]
 
     @cached_property
-    def _spline(self) -> tuple[object, float]:
-        from scipy.interpolate import CubicSpline
-
+    def _spline(self) -> tuple[PeriodicSpline, float]:
         p = np.asarray(self.points, dtype=float)
         if _area(p) < 0.0:
             p = p[::-1]
         closed = np.vstack([p, p[:1]])
         t = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(closed, axis=0).T))])
-        return CubicSpline(t, closed, bc_type="periodic"), float(t[-1])
+        return PeriodicSpline(t.tolist(), closed.tolist()), float(t[-1])
 
     @property
     def length(self) -> float:
@@ -65,7 +64,13 @@ class PointsProfile:
     def at(self, t: np.ndarray, order: int = 0) -> np.ndarray:
         """The spline's points (order 0) or derivatives d^k p/dt^k at t, shape (len(t), 2)."""
         spline, period = self._spline
-        return np.asarray(spline(np.mod(t, period), order))  # type: ignore[operator]
+        return spline.at(np.mod(t, period), order)
+
+    def point(self, t: float, order: int = 0) -> tuple[float, float]:
+        """:meth:`at` at one t in scalar arithmetic, the same floats: what the root finders call."""
+        spline, period = self._spline
+        x, y = spline.point(float(t) % period, order)
+        return x, y
 
 
 def shape_problem(profile: PointsProfile, samples: int = 4096) -> str | None:
