@@ -1,8 +1,11 @@
 """Brent's bounded search of graphmech.minimum: the same floats as scipy's
-minimize_scalar(method="bounded") (the same algorithm), and the refusals."""
+minimize_scalar(method="bounded") (the same algorithm), and the refusals; and that the scenes whose
+exact solution needs no solver of scipy's do not load it (issue 23: cold starts)."""
 from __future__ import annotations
 
 import math
+import subprocess
+import sys
 
 import pytest
 from hypothesis import given, settings
@@ -10,6 +13,7 @@ from hypothesis import strategies as st
 
 from graphmech.errors import OutOfDomain
 from graphmech.minimum import fminbound
+from tests.conftest import SCENES
 
 
 def _wavy(c: tuple[float, float, float, float]):
@@ -48,3 +52,20 @@ def test_a_point_interval_is_that_point():
 def test_what_is_refused(bounds):
     with pytest.raises(OutOfDomain, match="bounds"):
         fminbound(math.cos, *bounds)
+
+
+@pytest.mark.parametrize(("scene", "unloaded"), [
+    ("cam.given_profile_points", ("scipy",)),  # the spline, its roots and extremes: graphmech's own
+    ("cam.offset_roller_translating-pos", ("scipy.optimize",)),  # a convex corner's vertex (Newton)
+    ("cam.eccentric_disc_oscillating", ("scipy.optimize",)),
+    ("force.sixbar_kinetostatic-friction", ("scipy.optimize",)),  # the friction equations (Newton)
+    ("fly.brake_time", ("scipy.integrate", "scipy.optimize")),  # the stopping time in closed form
+])
+@pytest.mark.parametrize("command", ["check", "render"])
+def test_what_needs_no_solver_of_scipys_does_not_load_it(scene, unloaded, command, tmp_path):
+    argv = [command, str(SCENES / f"{scene}.toml")] + (["-o", str(tmp_path / "f.svg")] if command == "render" else [])
+    code = (f"import sys; from graphmech.cli import main; sys.argv = ['graphmech', *{argv!r}]; main(); "
+            f"print('LOADED', *sorted(m for m in {unloaded!r} if m in sys.modules))")
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert run.returncode in (0, 1), run.stderr  # 1: a value out of tolerance is still a check
+    assert run.stdout.splitlines()[-1] == "LOADED"
