@@ -404,7 +404,7 @@ def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.n
                     jac[r0, k] += sign * dt * t[0]
                     jac[r0 + 1, k] += sign * dt * t[1]
                     jac[r0 + 2, k] += sign * dt * (arm[0] * t[1] - arm[1] * t[0])
-            return jac
+            return cast(np.ndarray, jac)
 
         z, calls = _newton(residual, jacobian, x0[i])
         scale = max(1.0, float(np.max(np.abs(z))))
