@@ -143,6 +143,15 @@ class PeriodicSpline:
                 raise OutOfDomain(f"a cubic's derivative of order 0 … 3, not {order}")
         return tuple(out)
 
+    def point_and_slope(self, t: float) -> tuple[tuple[float, ...], tuple[float, ...]]:
+        """(:meth:`point` of order 0, of order 1) at one t, its interval found once."""
+        i, s = self._reduce(float(t))
+        ss = s * s
+        sss = ss * s
+        rows = self._coef[i]
+        return (tuple(0.0 + a0 + a1 * s + a2 * ss + a3 * sss for a3, a2, a1, a0 in rows),
+                tuple(0.0 + a1 + a2 * s * 2.0 + a3 * ss * 3.0 for a3, a2, a1, a0 in rows))
+
     def at(self, t: np.ndarray, order: int = 0) -> np.ndarray:
         """:meth:`point` at each of ``t``, shape (len(t), dim): the same floats, array by array."""
         x = np.asarray(self.x)

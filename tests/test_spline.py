@@ -36,6 +36,7 @@ def test_every_coefficient_and_value_is_scipys_to_the_last_bit(run, where):
         expected = want(ts, order)
         assert np.array_equal(got.at(ts, order), expected)
         assert [got.point(float(x), order) for x in ts] == [tuple(row) for row in expected]
+    assert [got.point_and_slope(float(x)) for x in ts] == [(got.point(float(x)), got.point(float(x), 1)) for x in ts]
 
 
 def test_a_circle_through_four_points():

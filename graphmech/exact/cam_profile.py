@@ -236,7 +236,7 @@ def _on_disc(cam: GivenCam, polar: float) -> tuple[float, float, float, float]:
         vals = pts[:, 0] * w[1] - pts[:, 1] * w[0]
         for k in np.flatnonzero((np.sign(vals[:-1]) != np.sign(vals[1:])) & (pts[:-1] @ w > 0)):
             t = grid[k] if vals[k] == 0.0 else brentq(g, grid[k], grid[k + 1], xtol=1e-15 * profile.length)
-            p, n, _ = (v[0] for v in _frame(profile, np.array([t]), 0.0))
+            p, n, _ = (v[0] for v in _frames(profile, [float(t)], 0.0))
             return float(p[0]), float(p[1]), float(n[0]), float(n[1])
         raise NoSolution(f"the ray at {math.degrees(polar):.6g}° misses the profile")  # pragma: no cover - O is inside
     cx, cy = cam.disc.centre
@@ -319,11 +319,18 @@ def _frame(profile: PointsProfile, t: np.ndarray, r: float) -> tuple[np.ndarray,
 def _frame1(profile: PointsProfile, t: float, r: float) -> tuple[float, float, float, float, float, float]:
     """:func:`_frame` at one t in scalar arithmetic, the same floats: (p_x, p_y, n_x, n_y, B_x, B_y).
     The root finders' inner loop (numpy's hypot, as the arrays take it: libm's, not Python's)."""
-    p0, p1 = profile.point(t)
-    d0, d1 = profile.point(t, 1)
+    p0, p1, d0, d1 = profile.point_and_slope(t)
     h = float(np.hypot(d0, d1))
     n0, n1 = d1 / h, -d0 / h
     return p0, p1, n0, n1, p0 + r * n0, p1 + r * n1
+
+
+def _frames(profile: PointsProfile, ts: list[float], r: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`_frame` at a few t, by :func:`_frame1`: the same arrays without the cost of array
+    arithmetic on a handful of values."""
+    rows = np.array([_frame1(profile, t, r) for t in ts]).reshape(-1, 6)
+    c = np.ascontiguousarray  # laid out as _frame's, so that products take the same path
+    return c(rows[:, 0:2]), c(rows[:, 2:4]), c(rows[:, 4:6])
 
 
 @lru_cache(maxsize=16)
@@ -379,7 +386,7 @@ def _contact_t(cam: GivenCam, delta: float) -> float:
     if not roots:
         raise NoSolution(f"the follower does not reach the profile at δ = {math.degrees(delta):.6g}°")
     ts = np.array(roots)
-    p, n, b = _frame(profile, ts, r)
+    p, n, b = _frames(profile, roots, r)
     if isinstance(f, TranslatingFollower):
         up = n @ d
         return float(ts[int(np.argmax(np.where(up > 0, b @ d, -np.inf)))])
@@ -396,7 +403,7 @@ def _spline_state(cam: GivenCam, delta: float) -> tuple[float, np.ndarray, np.nd
     profile = cast(PointsProfile, cam.profile)
     f = cam.follower
     t = _contact_t(cam, delta)
-    p, n, b = (v[0] for v in _frame(profile, np.array([t]), cam.roller))
+    p, n, b = (v[0] for v in _frames(profile, [t], cam.roller))
     rot = cam.rotation * delta  # back to the fixed frame
     m = np.array([[math.cos(rot), -math.sin(rot)], [math.sin(rot), math.cos(rot)]])
     p, n, b = m @ p, m @ n, m @ b

@@ -72,6 +72,12 @@ class PointsProfile:
         x, y = spline.point(float(t) % period, order)
         return x, y
 
+    def point_and_slope(self, t: float) -> tuple[float, float, float, float]:
+        """:meth:`point` of order 0 and 1 at once: (x, y, dx/dt, dy/dt)."""
+        spline, period = self._spline
+        (x, y), (dx, dy) = spline.point_and_slope(float(t) % period)
+        return x, y, dx, dy
+
 
 def shape_problem(profile: PointsProfile, samples: int = 4096) -> str | None:
     """Why the spline through the points cannot be a cam's profile here, or None: it must turn
