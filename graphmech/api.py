@@ -45,6 +45,7 @@ from typing import Any, overload
 from graphmech.errors import GraphmechError, SceneError, UnknownName
 from graphmech.problems import check as check_scene
 from graphmech.problems import steps
+from graphmech.problems import timings as check_timings
 from graphmech.problems import with_precision
 from graphmech.problems.judging import Row, Verdict, estimate_text
 from graphmech.problems.reader import Scene, Written
@@ -106,7 +107,7 @@ class Problem:
         return CheckTable(title=self.title, rows=tuple(an.rows), measured=tuple(verdicts),
                           warnings=tuple(an.warnings), scales=dict(an.scales),
                           scale_notes=tuple(an.scale_notes()), lines=tuple(lines), extras=doc,
-                          variant=dict(self.variant))
+                          variant=dict(self.variant), timings=tuple(check_timings(self.scene, an)))
 
     def render(self) -> Drawing:
         """The drawing: ``.svg`` text, ``.save(path)`` as SVG, PDF or PNG, shown by Jupyter."""
@@ -228,6 +229,9 @@ class CheckTable:
     lines: tuple[str, ...] = ()
     extras: dict[str, Any] = field(default_factory=dict)
     variant: Assignment = field(default_factory=dict)
+    #: Wall times (the true motion's integration), printed last by :meth:`text` alone: they differ
+    #: from run to run, so ``to_json``, ``lines`` and the gallery leave them out.
+    timings: tuple[str, ...] = field(default=(), compare=False)
 
     def __iter__(self) -> Iterator[Row]:
         return iter(self.rows)
@@ -285,7 +289,7 @@ class CheckTable:
                     flag += "  " + estimate_text(r)
                 lines.append(f"{r.name:<{w}} {drawn:>11} {r.scale:>11.5g} {r.graphical:>16.9g} {r.exact:>16.9g}"
                              f" {r.rel_error:>9.1e}  {r.unit}{flag}")
-        return "\n".join([*lines, *self.verdict_lines(), *self.lines])
+        return "\n".join([*lines, *self.verdict_lines(), *self.lines, *self.timings])
 
     def verdict_lines(self) -> list[str]:
         """The verdicts on the measured values as ``graphmech check`` prints them (none: no lines)."""

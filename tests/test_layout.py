@@ -46,7 +46,7 @@ PACKAGE = ROOT / "graphmech"
 #: ``__init__`` is graphmech/__init__.py alone); a module is in the layer of its longest prefix.
 CONTRACTS: dict[str, tuple[str, str]] = {
     # layer          modules          may import
-    "base":         ("version errors tolerances scales files timing accuracy packaged roots", ""),
+    "base":         ("version errors tolerances scales files timing accuracy packaged roots minimum spline", ""),
     "geometry":     ("geometry",     "base"),
     "construction": ("construction", "geometry base"),
     "mechanisms":   ("mechanisms",   "construction geometry base"),

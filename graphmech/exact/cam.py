@@ -128,6 +128,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from graphmech.errors import NoSolution, NotApplicable, OutOfDomain, WrongKind
+from graphmech.minimum import fminbound  # scipy's bounded search without loading scipy.optimize
 from graphmech.roots import brentq  # scipy's algorithm without loading scipy.optimize (0.3 s)
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
@@ -609,18 +610,15 @@ def max_pressure_angle(cam: DiscCam, where: Where = "all") -> tuple[float, float
     best, at = _maximise(pieces, lambda d: _alpha(cam, _path(cam, d)))
     # Where α passes 90° the signed α_s jumps from +90° to −90° and no sign change of its
     # derivative marks the peak: a dense look at |α| itself catches it, then a bounded search.
-    from scipy.optimize import minimize_scalar
-
     for lo, hi in pieces:
         d = np.linspace(lo, hi, 4097)[:-1]  # the piece's own values: its end belongs to the next one
         a = profile(cam, d % _TWO_PI).pressure_angle
         k = int(np.argmax(a))
         if a[k] > best + 1e-12:
             h = (hi - lo) / 4096
-            r = minimize_scalar(lambda t: -float(profile(cam, np.array([t % _TWO_PI])).pressure_angle[0]),
-                                bounds=(max(lo, d[k] - h), min(hi, d[k] + h)), method="bounded",
-                                options={"xatol": 1e-12})
-            cand, cand_at = (-float(r.fun), float(r.x)) if -r.fun > a[k] else (float(a[k]), float(d[k]))
+            x, fun = fminbound(lambda t: -float(profile(cam, np.array([t % _TWO_PI])).pressure_angle[0]),
+                               max(lo, d[k] - h), min(hi, d[k] + h), xatol=1e-12)
+            cand, cand_at = (-fun, x) if -fun > a[k] else (float(a[k]), float(d[k]))
             if cand > best:
                 best, at = cand, cand_at % _TWO_PI
     return best, at
@@ -846,11 +844,39 @@ def _actual(cam: DiscCam, delta: Any) -> np.ndarray:
     return profile(cam, np.atleast_1d(np.asarray(delta, dtype=float)) % math.tau).actual
 
 
+def _newton2(f: Callable[[float, float], np.ndarray], x: float, y: float, h: float = 1e-7,
+             maxiter: int = 50) -> tuple[float, float]:
+    """The root of the smooth map f: R² → R² nearest (x, y), by Newton's method with a central-
+    difference Jacobian (step h), to the last bit: iterated while the residual |f| shrinks, the
+    least residual's point returned. (scipy's ``root`` costs a third of a second to import.)"""
+    fx = f(x, y)
+    best = (math.hypot(float(fx[0]), float(fx[1])), x, y)
+    for _ in range(maxiter):
+        if best[0] == 0.0:
+            break
+        a = (f(x + h, y) - f(x - h, y)) / (2.0 * h)
+        b = (f(x, y + h) - f(x, y - h)) / (2.0 * h)
+        det = float(a[0] * b[1] - a[1] * b[0])
+        if det == 0.0 or not math.isfinite(det):
+            break
+        dx = float(-(fx[0] * b[1] - fx[1] * b[0]) / det)  # Cramer's rule for J·(dx, dy) = −f
+        dy = float(-(a[0] * fx[1] - a[1] * fx[0]) / det)
+        x, y = x + dx, y + dy
+        fx = f(x, y)
+        r = math.hypot(float(fx[0]), float(fx[1]))
+        if r < best[0]:
+            best = (r, x, y)
+        elif abs(dx) <= 4.0 * EPS * max(1.0, abs(x)) and abs(dy) <= 4.0 * EPS * max(1.0, abs(y)):
+            break  # at the last bit, the residual is rounding
+        elif r > 2.0 * best[0]:
+            break  # moving away: the best point is the root as well as it can be found
+    return best[1], best[2]
+
+
 def _convex_vertex(cam: DiscCam, c: float, w: float) -> tuple[float, float]:
     """Where the inner offsets of the two sides of a convex corner at ``c`` cross: (δ1 < c, δ2 ≥ c)
     with actual(δ1⁻ side) = actual(δ2⁺ side), to machine precision."""
     import shapely
-    from scipy.optimize import root
 
     dl = c - np.linspace(_LEFT, w, 4001)
     dr = c + np.linspace(0.0, w, 4001)
@@ -860,9 +886,8 @@ def _convex_vertex(cam: DiscCam, c: float, w: float) -> tuple[float, float]:
         raise NoSolution(f"the roller's offsets at the corner δ = {math.degrees(c):.6g}° do not cross once")
     q = np.asarray(x.coords[0])
     guess = [dl[np.argmin(np.hypot(*(al - q).T))], dr[np.argmin(np.hypot(*(ar - q).T))]]
-    sol = root(lambda t: _actual(cam, [min(t[0], c - _LEFT)])[0] - _actual(cam, [max(t[1], c)])[0], guess,
-               method="hybr", tol=1e-15)
-    d1, d2 = float(sol.x[0]), float(sol.x[1])
+    d1, d2 = _newton2(lambda t1, t2: _actual(cam, [min(t1, c - _LEFT)])[0] - _actual(cam, [max(t2, c)])[0],
+                      float(guess[0]), float(guess[1]))
     gap = float(np.hypot(*(_actual(cam, [d1])[0] - _actual(cam, [d2])[0])))
     if not (c - w < d1 < c <= d2 < c + w) or gap > 1e-12 * cam.base_radius:
         raise NoSolution(f"the profile's vertex at δ = {math.degrees(c):.6g}° was not found")
@@ -933,14 +958,11 @@ def working_profile(cam: DiscCam, samples: int = 20_000) -> tuple[np.ndarray, np
 def min_rho_actual(cam: DiscCam, samples: int = 20_000) -> tuple[float, float]:
     """The smallest radius of curvature of the working profile (for a flat face r0 + s + s″), m,
     and where, rad: a dense look, then a bounded search round the smallest sample."""
-    from scipy.optimize import minimize_scalar
-
     d = np.linspace(0.0, math.tau, samples, endpoint=False)
     rho = profile(cam, d).rho_actual
     k = int(np.argmin(rho))
     h = math.tau / samples
-    best = minimize_scalar(lambda t: float(profile(cam, [t % math.tau]).rho_actual[0]),
-                           bounds=(d[k] - h, d[k] + h), method="bounded", options={"xatol": 1e-13})
-    if best.fun < rho[k]:
-        return float(best.fun), float(best.x % math.tau)
+    x, fun = fminbound(lambda t: float(profile(cam, [t % math.tau]).rho_actual[0]), d[k] - h, d[k] + h, xatol=1e-13)
+    if fun < rho[k]:
+        return fun, x % math.tau
     return float(rho[k]), float(d[k])

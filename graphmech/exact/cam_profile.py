@@ -45,13 +45,14 @@ the follower never touches.
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 from typing import cast
 
 import numpy as np
 from numpy.typing import ArrayLike
-from scipy.optimize import minimize_scalar
 
 from graphmech.errors import NoSolution
+from graphmech.minimum import fminbound
 from graphmech.roots import brentq
 from graphmech.mechanisms.cam import OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.cam_profile import GivenCam, PointsProfile
@@ -224,16 +225,18 @@ def _on_disc(cam: GivenCam, polar: float) -> tuple[float, float, float, float]:
         profile = cam.profile
         w = np.array([math.cos(polar), math.sin(polar)])
 
+        w0, w1 = float(w[0]), float(w[1])
+
         def g(t: float) -> float:
-            p = profile.at(np.array([t]))[0]
-            return float(p[0] * w[1] - p[1] * w[0])
+            p0, p1 = profile.point(t)
+            return p0 * w1 - p1 * w0
 
         grid = np.linspace(0.0, profile.length, _GRID + 1)
         pts = profile.at(grid)
         vals = pts[:, 0] * w[1] - pts[:, 1] * w[0]
         for k in np.flatnonzero((np.sign(vals[:-1]) != np.sign(vals[1:])) & (pts[:-1] @ w > 0)):
             t = grid[k] if vals[k] == 0.0 else brentq(g, grid[k], grid[k + 1], xtol=1e-15 * profile.length)
-            p, n, _ = (v[0] for v in _frame(profile, np.array([t]), 0.0))
+            p, n, _ = (v[0] for v in _frames(profile, [float(t)], 0.0))
             return float(p[0]), float(p[1]), float(n[0]), float(n[1])
         raise NoSolution(f"the ray at {math.degrees(polar):.6g}° misses the profile")  # pragma: no cover - O is inside
     cx, cy = cam.disc.centre
@@ -313,6 +316,31 @@ def _frame(profile: PointsProfile, t: np.ndarray, r: float) -> tuple[np.ndarray,
     return p, n, p + r * n
 
 
+def _frame1(profile: PointsProfile, t: float, r: float) -> tuple[float, float, float, float, float, float]:
+    """:func:`_frame` at one t in scalar arithmetic, the same floats: (p_x, p_y, n_x, n_y, B_x, B_y).
+    The root finders' inner loop (numpy's hypot, as the arrays take it: libm's, not Python's)."""
+    p0, p1, d0, d1 = profile.point_and_slope(t)
+    h = float(np.hypot(d0, d1))
+    n0, n1 = d1 / h, -d0 / h
+    return p0, p1, n0, n1, p0 + r * n0, p1 + r * n1
+
+
+def _frames(profile: PointsProfile, ts: list[float], r: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`_frame` at a few t, by :func:`_frame1`: the same arrays without the cost of array
+    arithmetic on a handful of values."""
+    rows = np.array([_frame1(profile, t, r) for t in ts]).reshape(-1, 6)
+    c = np.ascontiguousarray  # laid out as _frame's, so that products take the same path
+    return c(rows[:, 0:2]), c(rows[:, 2:4]), c(rows[:, 4:6])
+
+
+@lru_cache(maxsize=16)
+def _grid_frame(profile: PointsProfile, r: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The grid of _GRID + 1 parameter values the roots are bracketed on, and :func:`_frame` there
+    (the same for every cam angle: taken once per profile)."""
+    grid = np.linspace(0.0, profile.length, _GRID + 1)
+    return (grid, *_frame(profile, grid, r))
+
+
 def _contact_t(cam: GivenCam, delta: float) -> float:
     """The spline parameter of the contact at cam angle δ (module section above)."""
     profile = cast(PointsProfile, cam.profile)
@@ -320,9 +348,9 @@ def _contact_t(cam: GivenCam, delta: float) -> float:
     turn = -cam.rotation * delta
     c, s = math.cos(turn), math.sin(turn)
     d = np.array([-s, c])
+    d0, d1 = -s, c
 
-    def g(t: np.ndarray) -> np.ndarray:
-        p, n, b = _frame(profile, np.atleast_1d(t), r)
+    def g(p: np.ndarray, n: np.ndarray, b: np.ndarray) -> np.ndarray:
         if isinstance(f, TranslatingFollower):
             if f.contact == "flat":
                 return np.asarray(n[:, 0] * d[1] - n[:, 1] * d[0])
@@ -333,20 +361,32 @@ def _contact_t(cam: GivenCam, delta: float) -> float:
             return np.asarray(np.sum((p - a) * n, axis=1))
         return np.asarray(np.sum((b - a) ** 2, axis=1) - f.arm ** 2)
 
+    def g1(t: float) -> float:  # g at one t, term by term as the arrays above take it
+        p0, p1, n0, n1, b0, b1 = _frame1(profile, t, r)
+        if isinstance(f, TranslatingFollower):
+            if f.contact == "flat":
+                return n0 * d1 - n1 * d0
+            return (b0 - f.offset * c) * d1 - (b1 - f.offset * s) * d0
+        a0, a1 = f.pivot_distance * c, f.pivot_distance * s
+        if f.contact == "flat":
+            return (p0 - a0) * n0 + (p1 - a1) * n1
+        e0, e1 = b0 - a0, b1 - a1
+        return (e0 * e0 + e1 * e1) - f.arm ** 2
+
     length = profile.length
-    grid = np.linspace(0.0, length, _GRID + 1)
-    vals = g(grid)
+    grid, *frame = _grid_frame(profile, r)
+    vals = g(*frame)
     roots = []
     for k in np.flatnonzero(np.sign(vals[:-1]) != np.sign(vals[1:])):
         if vals[k] == 0.0:
             roots.append(float(grid[k]))
         else:
-            roots.append(float(brentq(lambda x: float(g(np.array([x]))[0]), grid[k], grid[k + 1],
+            roots.append(float(brentq(g1, float(grid[k]), float(grid[k + 1]),
                                       xtol=1e-15 * length, rtol=4 * np.finfo(float).eps)))
     if not roots:
         raise NoSolution(f"the follower does not reach the profile at δ = {math.degrees(delta):.6g}°")
     ts = np.array(roots)
-    p, n, b = _frame(profile, ts, r)
+    p, n, b = _frames(profile, roots, r)
     if isinstance(f, TranslatingFollower):
         up = n @ d
         return float(ts[int(np.argmax(np.where(up > 0, b @ d, -np.inf)))])
@@ -363,7 +403,7 @@ def _spline_state(cam: GivenCam, delta: float) -> tuple[float, np.ndarray, np.nd
     profile = cast(PointsProfile, cam.profile)
     f = cam.follower
     t = _contact_t(cam, delta)
-    p, n, b = (v[0] for v in _frame(profile, np.array([t]), cam.roller))
+    p, n, b = (v[0] for v in _frames(profile, [t], cam.roller))
     rot = cam.rotation * delta  # back to the fixed frame
     m = np.array([[math.cos(rot), -math.sin(rot)], [math.sin(rot), math.cos(rot)]])
     p, n, b = m @ p, m @ n, m @ b
@@ -375,6 +415,7 @@ def _spline_state(cam: GivenCam, delta: float) -> tuple[float, np.ndarray, np.nd
     return q, p, n, b
 
 
+@lru_cache(maxsize=16)  # asked again by every reading of the check's drawn profile (the same cam)
 def _spline_radii(cam: GivenCam) -> tuple[float, float]:
     """The least and greatest radius about O of the pitch curve (knife, roller) or the profile
     (flat face): the roots of B·B′ = 0."""
@@ -382,19 +423,19 @@ def _spline_radii(cam: GivenCam) -> tuple[float, float]:
     r = 0.0 if cam.follower.contact == "flat" else cam.roller
     length = profile.length
 
-    def radius(t: np.ndarray) -> np.ndarray:
-        return np.asarray(np.hypot(*_frame(profile, np.atleast_1d(t), r)[2].T))
+    def radius(t: float) -> float:
+        b0, b1 = _frame1(profile, t, r)[4:]
+        return float(np.hypot(b0, b1))
 
-    grid = np.linspace(0.0, length, _GRID + 1)
-    rs = radius(grid)
+    grid, _, _, b = _grid_frame(profile, r)
+    rs = np.hypot(*b.T)
     out = []
     for pick in (np.argmin, np.argmax):
         k = int(pick(rs))
         lo, hi = grid[k] - grid[1], grid[k] + grid[1]  # the spline is periodic: t < 0 is fine
         sign = 1.0 if pick is np.argmin else -1.0
-        res = minimize_scalar(lambda x, sign=sign: sign * float(radius(np.array([x]))[0]), bounds=(lo, hi), method="bounded",
-                              options={"xatol": 1e-14 * length})
-        out.append(min(float(rs[k]), float(res.fun)) if sign > 0 else max(float(rs[k]), -float(res.fun)))
+        _, fun = fminbound(lambda x: sign * radius(x), lo, hi, xatol=1e-14 * length)  # called here: no late binding
+        out.append(min(float(rs[k]), fun) if sign > 0 else max(float(rs[k]), -fun))
     return out[0], out[1]
 
 
@@ -431,6 +472,7 @@ def _spline_alpha(cam: GivenCam, delta: float) -> float:
 _ALPHA_SAMPLES = 360
 
 
+@lru_cache(maxsize=16)  # asked again by every reading of the check's drawn profile (the same cam)
 def max_pressure_angle(cam: GivenCam) -> tuple[float, float]:
     """The largest pressure angle over a turn and the cam angle where it occurs (rad): the
     largest of a turn's samples refined by a bounded search between its neighbours (α is smooth
@@ -440,8 +482,7 @@ def max_pressure_angle(cam: GivenCam) -> tuple[float, float]:
     a = pressure_angle(cam, d)
     k = int(np.argmax(a))
     step = _TWO_PI / _ALPHA_SAMPLES
-    res = minimize_scalar(lambda x: -float(pressure_angle(cam, x)), bounds=(d[k] - step, d[k] + step),
-                          method="bounded", options={"xatol": 1e-12})
-    if -float(res.fun) >= float(a[k]):
-        return -float(res.fun), float(res.x) % _TWO_PI
+    x, fun = fminbound(lambda x: -float(pressure_angle(cam, x)), d[k] - step, d[k] + step, xatol=1e-12)
+    if -fun >= float(a[k]):
+        return -fun, x % _TWO_PI
     return float(a[k]), float(d[k])

@@ -29,16 +29,19 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
 from itertools import pairwise
 from typing import Any
 
 import numpy as np
-from scipy.integrate import solve_ivp
-from scipy.optimize import minimize_scalar
 
 from graphmech.errors import GraphmechError, OutOfDomain
 from graphmech.exact.flywheel import ExactMachine, table_line
 from graphmech.mechanisms.machine import CrankMoment, LinkMoment, Machine, SliderLoad
+from graphmech.minimum import fminbound
+
+# scipy.integrate (a third of a second to import) is imported by the functions that integrate:
+# a braking check asks for the closed form alone.
 
 __all__ = ["Braking", "Run", "TrueMotion", "TrueMotionError", "braking_time", "integrate",
            "motor_synchronous_speed", "true_motion"]
@@ -156,11 +159,26 @@ class Braking:
     t : float
         Closed form ``J·ω0/M``, s.
     t_numeric : float
-        ``solve_ivp`` of ``J·dω/dt = −M`` with a terminal event at ω = 0, s.
+        ``solve_ivp`` of ``J·dω/dt = −M`` with a terminal event at ω = 0, s: the closed form's
+        cross-check, integrated when first asked for (the check needs ``t`` alone).
     """
 
     t: float
-    t_numeric: float
+
+    @cached_property
+    def t_numeric(self) -> float:
+        from scipy.integrate import solve_ivp
+
+        def stopped(tau: float, y: np.ndarray) -> float:
+            return float(y[0])
+
+        # solve_ivp reads an event's options off the function itself (untyped scipy)
+        stopped.terminal = True  # type: ignore[attr-defined]
+        stopped.direction = -1  # type: ignore[attr-defined]
+        # In units of ω0 and of J·ω0/M the run-down is dω/dτ = −1 from 1: the solver (and its event
+        # search, whose tolerances are absolute) then sees numbers of order one whatever J, ω0, M are.
+        sol = solve_ivp(lambda tau, y: [-1.0], (0.0, 10.0), [1.0], events=stopped, rtol=1e-12, atol=1e-12)
+        return self.t * float(sol.t_events[0][0])
 
 
 # --------------------------------------------------------------------------------------------
@@ -387,6 +405,8 @@ class _Integrator:
         else:
             fun = piece.f
             kw["jac"] = piece.jac
+        from scipy.integrate import solve_ivp
+
         try:
             sol = solve_ivp(fun, (lo, hi), y0, **kw)
         except _Budget:
@@ -453,9 +473,8 @@ class _Integrator:
                     continue
                 seg = cy.segments[owner[hi_i]]
                 a, b = phis[lo_i], phis[hi_i]
-                res = minimize_scalar(lambda x, s=seg.sol.sol: -sign * float(s(x)[0]), bounds=(a, b),
-                                      method="bounded", options={"xatol": 1e-12 * max(1.0, b)})
-                x = float(res.x)
+                dense = seg.sol.sol  # the piece's dense output, searched here and now
+                x, _ = fminbound(lambda x: -sign * float(dense(x)[0]), a, b, xatol=1e-12 * max(1.0, b))
                 if x - a <= 1e-12 or b - x <= 1e-12:
                     continue  # the extreme of this interval is at a step point: known exactly
                 # the value from a short run at the solver's full order (dense output is lower)
@@ -677,14 +696,4 @@ def braking_time(J: float, omega0: float, M_brake: float) -> Braking:
     t = J * omega0 / M_brake
     if not (math.isfinite(t) and t >= T_STOP_MIN):
         raise OutOfDomain(f"the stopping time J·ω0/M = {J:.6g}·{omega0:.6g}/{M_brake:.6g} s is out of range")
-
-    def stopped(tau: float, y: np.ndarray) -> float:
-        return float(y[0])
-
-    # solve_ivp reads an event's options off the function itself (untyped scipy)
-    stopped.terminal = True  # type: ignore[attr-defined]
-    stopped.direction = -1  # type: ignore[attr-defined]
-    # In units of ω0 and of J·ω0/M the run-down is dω/dτ = −1 from 1: the solver (and its event
-    # search, whose tolerances are absolute) then sees numbers of order one whatever J, ω0, M are.
-    sol = solve_ivp(lambda tau, y: [-1.0], (0.0, 10.0), [1.0], events=stopped, rtol=1e-12, atol=1e-12)
-    return Braking(t, t * float(sol.t_events[0][0]))
+    return Braking(t)

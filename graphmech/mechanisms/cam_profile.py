@@ -16,18 +16,13 @@ which the follower touches.
 from __future__ import annotations
 
 import math
-from bisect import bisect_right
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Any
 
 import numpy as np
 
 from graphmech.mechanisms.cam import Follower
-
-
-#: k!/(k − order)!, the factor of c[3−k]·s^(k−order) in the order-th derivative (scipy's prefactor).
-_FACTORS = tuple(tuple(float(math.perm(k, order)) for k in range(4)) for order in range(4))
+from graphmech.spline import PeriodicSpline
 
 
 @dataclass(frozen=True)
@@ -53,56 +48,35 @@ class PointsProfile:
     points: tuple[tuple[float, float], ...]
 
     @cached_property
-    def _spline(self) -> tuple[object, float]:
-        from scipy.interpolate import CubicSpline
-
+    def _spline(self) -> tuple[PeriodicSpline, float]:
         p = np.asarray(self.points, dtype=float)
         if _area(p) < 0.0:
             p = p[::-1]
         closed = np.vstack([p, p[:1]])
         t = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(closed, axis=0).T))])
-        return CubicSpline(t, closed, bc_type="periodic"), float(t[-1])
+        return PeriodicSpline(t.tolist(), closed.tolist()), float(t[-1])
 
     @property
     def length(self) -> float:
         """L, the period of the parameter (the closed polygon's perimeter), m."""
         return self._spline[1]
 
-    @cached_property
-    def _pieces(self) -> tuple[list[float], list[tuple[tuple[float, float], ...]]]:
-        """The spline's breakpoints and, per piece, its coefficients (x, y) from the highest power,
-        as floats: one point is evaluated in Python (:meth:`at`)."""
-        spline: Any = self._spline[0]  # scipy's CubicSpline (untyped)
-        c = np.asarray(spline.c, dtype=np.float64)
-        pieces = [tuple((float(c[k, i, 0]), float(c[k, i, 1])) for k in range(c.shape[0])) for i in range(c.shape[1])]
-        return np.asarray(spline.x, dtype=np.float64).tolist(), pieces
-
     def at(self, t: np.ndarray, order: int = 0) -> np.ndarray:
-        """The spline's points (order 0) or derivatives d^k p/dt^k at t, shape (len(t), 2).
-
-        One point (the exact cam's root finding asks ~10⁵ times a scene) is evaluated in floats
-        the way scipy's ``CubicSpline`` evaluates it, bit for bit (a test), without its call's
-        overhead: its periodic wrap, the piece ``x[i] ≤ t < x[i+1]`` (the last one closed), and
-        ``Σ c[3−k]·s^(k−order)·k!/(k−order)!`` over k ≥ order, s = t − x[i], term by term."""
+        """The spline's points (order 0) or derivatives d^k p/dt^k at t, shape (len(t), 2)."""
         spline, period = self._spline
-        tm = np.mod(t, period)
-        if not (isinstance(tm, np.ndarray) and tm.shape == (1,) and 0 <= order <= 3):
-            return np.asarray(spline(tm, order))  # type: ignore[operator]
-        xs, pieces = self._pieces
-        v = xs[0] + (float(tm[0]) - xs[0]) % (xs[-1] - xs[0])  # scipy's periodic extrapolation
-        i = min(max(bisect_right(xs, v) - 1, 0), len(xs) - 2)
-        s = v - xs[i]
-        cs = pieces[i]
-        r0 = r1 = 0.0
-        z = 1.0
-        for k in range(order, 4):
-            f = _FACTORS[order][k]
-            cx, cy = cs[3 - k]
-            r0 = r0 + cx * z * f
-            r1 = r1 + cy * z * f
-            if k < 3:
-                z *= s
-        return np.array([[r0, r1]])
+        return spline.at(np.mod(t, period), order)
+
+    def point(self, t: float, order: int = 0) -> tuple[float, float]:
+        """:meth:`at` at one t in scalar arithmetic, the same floats: what the root finders call."""
+        spline, period = self._spline
+        x, y = spline.point(float(t) % period, order)
+        return x, y
+
+    def point_and_slope(self, t: float) -> tuple[float, float, float, float]:
+        """:meth:`point` of order 0 and 1 at once: (x, y, dx/dt, dy/dt)."""
+        spline, period = self._spline
+        (x, y), (dx, dy) = spline.point_and_slope(float(t) % period)
+        return x, y, dx, dy
 
 
 def shape_problem(profile: PointsProfile, samples: int = 4096) -> str | None:

@@ -62,6 +62,12 @@ def check(scene: Scene[Any], extra: Extra = ()) -> tuple[Analysis, list[Verdict]
     return an, [as_written(v) for v in verdicts], doc, lines
 
 
+def timings(scene: Scene[Any], an: Analysis) -> list[str]:
+    """How long the check of ``scene`` spent where it is worth saying (the true motion's
+    integration): lines for ``graphmech check``'s text table alone, since they differ run to run."""
+    return kind_of(scene).timings(an)
+
+
 def sheet(scene: Scene[Any], footer: Footer = ()) -> tuple[Sheet, list[str]]:
     """The drawing of a scene and the warnings found while making it; the page as ``[page]``
     says (cropped to the content for ``size = "fit"``, a title block) — one place for every kind."""
@@ -80,4 +86,4 @@ def steps(scene: Scene[Any]) -> list[str]:
     return kind.steps(scene)
 
 
-__all__ = ["KINDS", "Kind", "check", "kind_of", "sheet", "steps", "tables", "with_precision"]
+__all__ = ["KINDS", "Kind", "check", "kind_of", "sheet", "steps", "tables", "timings", "with_precision"]

@@ -56,6 +56,8 @@ class Kind(Generic[P, A]):
     judge(analysis, extra) → verdicts on the measured values (the precision is the scene's).
     sheet(scene, footer) → the drawing and the warnings found while making it.
     extras(analysis) → what ``check --json`` adds; lines(analysis) → lines under the text table.
+    timings(analysis) → wall times under ``graphmech check``'s text table alone (they differ from
+        run to run: not in ``--json``, nor in the gallery).
     bench(quick) → benchmark records and notes for ``graphmech bench`` (None: none of its own).
     poses(data) → whether a scene file poses this kind (default: it has one of ``tables``).
     mixture(data) → (key path, reason) refusing a scene that mixes this kind with another,
@@ -76,6 +78,7 @@ class Kind(Generic[P, A]):
     poses: Callable[[Mapping[str, Any]], bool] | None = None
     mixture: Callable[[Mapping[str, Any]], tuple[str, str] | None] | None = None
     steps: Callable[[Scene[P]], list[str]] | None = None
+    timings: Callable[[A], list[str]] = _no_lines
 
     def posed_by(self, data: Mapping[str, Any]) -> bool:
         """Whether the scene file ``data`` poses this kind of problem."""

@@ -59,6 +59,13 @@ def _lines(an: FlywheelAnalysis) -> list[str]:
     return [f"stopping time {br['t_stop']:.6g} s{verdict}"]
 
 
+def _timings(an: FlywheelAnalysis) -> list[str]:
+    if not an.motion_runs or an.motion is None:
+        return []
+    runs = "" if an.motion_runs == 1 else f", {an.motion_runs} runs"  # with a reference, an error estimate
+    return [f"true motion integrated in {an.motion_seconds:.2f} s ({an.motion.solver}{runs})"]
+
+
 def _steps(scene: Scene[FlywheelScene]) -> list[str]:
     from graphmech.problems.flywheel.steps import flywheel_steps
 
@@ -71,4 +78,5 @@ def _bench(quick: bool) -> Bench:
     return bench(quick)
 
 
-KIND = Kind("flywheel", ("flywheel",), _read, _analyse, _judge, _sheet, _extras, _lines, bench=_bench, steps=_steps)
+KIND = Kind("flywheel", ("flywheel",), _read, _analyse, _judge, _sheet, _extras, _lines, bench=_bench, steps=_steps,
+            timings=_timings)

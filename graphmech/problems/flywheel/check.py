@@ -16,9 +16,11 @@ not draw the Wittenbauer diagram, and none integrates the motion unless asked.
 from __future__ import annotations
 
 import math
+import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 import numpy as np
 
@@ -32,6 +34,8 @@ if TYPE_CHECKING:
     from graphmech.problems.flywheel.scene import Braking
     from graphmech.problems.flywheel.scene import FlywheelScene
     from graphmech.problems.reader import Scene
+
+T = TypeVar("T")
 
 #: Quantities a flywheel scene can ask for: name → (unit, what it needs).
 #: "design": the graphical construction; "wittenbauer"/"indicator": that method's diagram;
@@ -87,6 +91,10 @@ class FlywheelAnalysis:
     extra_measured: tuple[tuple[str, float], ...] = ()
     braking: Any = None
     rundown: Any = None  # the run-down diagram ω(t) as drawn (problems.flywheel.braking_figures.Rundown)
+    #: Wall time spent integrating the equation of motion (every run: the scene's, its reference,
+    #: the tighter one of the error estimate), s, and how many runs.
+    motion_seconds: float = 0.0
+    motion_runs: int = 0
 
     def scale_notes(self) -> list[str]:
         from graphmech.scales import format_scale
@@ -99,6 +107,15 @@ class FlywheelAnalysis:
                 out.append(f"μ{k} = {v:g}")
         return out
 
+
+    def integrated(self, run: Callable[[], T]) -> T:
+        """``run()``, one integration of the true motion, its wall time added to ``motion_seconds``."""
+        t0 = time.perf_counter()
+        try:
+            return run()
+        finally:
+            self.motion_seconds += time.perf_counter() - t0
+            self.motion_runs += 1
 
     def motion_summary(self) -> dict[str, Any]:
         """How the true motion was found: solver, tolerance, work done (for ``check --json``)."""
@@ -357,12 +374,13 @@ def _motion(an: FlywheelAnalysis) -> None:
             "no flywheel is needed; the true motion is that of the machine without one")
         J_F = 0.0
     try:
-        an.motion = true_motion(an.machine, ex, J_F, solver=solver, rtol=rtol)
+        an.motion = an.integrated(lambda: true_motion(an.machine, ex, J_F, solver=solver, rtol=rtol))
         if an.machine.motor is None:
             an.motion_ref = ex.energy_motion(J_F)
         else:  # no closed form: a tighter run with another stiff solver is the reference
             other = "BDF" if solver == "Radau" else "Radau"
-            an.motion_ref = true_motion(an.machine, ex, J_F, solver=other, rtol=max(rtol * 1e-2, 1e-13))
+            an.motion_ref = an.integrated(
+                lambda: true_motion(an.machine, ex, J_F, solver=other, rtol=max(rtol * 1e-2, 1e-13)))
     except ValueError as e:
         raise DegenerateConstruction("the true motion", str(e)) from None
     d = an.machine.delta
@@ -691,7 +709,7 @@ def _tighter_motion(an: FlywheelAnalysis) -> tuple[Any, float]:
     mo = an.motion
     rtol, down = (mo.rtol * 1e-1, 1.0) if mo.rtol * 1e-1 >= RTOL_MIN else (mo.rtol * 1e1, 1e-1)
     try:
-        return true_motion(an.machine, _exact(an), mo.J_F, solver=mo.solver, rtol=rtol), down
+        return an.integrated(lambda: true_motion(an.machine, _exact(an), mo.J_F, solver=mo.solver, rtol=rtol)), down
     except ValueError as e:
         raise DegenerateConstruction("the true motion", str(e)) from None
 

@@ -299,3 +299,22 @@ increment_J = [0, 300, 100, -100]
     for name in ("DeltaT_max", "phi_DeltaT_max", "J_F"):
         assert v[name]["error_estimate"] == pytest.approx(v[name]["rel_error"], rel=1e-9)
     assert v["DeltaT_max"]["rel_error"] == pytest.approx(1 / 6, rel=1e-12)
+
+
+def test_the_true_motions_integration_time_is_in_the_text_table_alone(tmp_path):
+    """``check`` says how long the equation of motion took to integrate (the one check that may
+    exceed the cold-start budget); ``check --json`` stays the same bytes run to run without it."""
+    scene = engine(tmp_path, extra='\n[flywheel.true_motion]\nsolver = "Radau"\nrtol = 1e-10\n')
+    code, out, _ = run_cli("check", str(scene))
+    assert code == 0
+    [line] = [ln for ln in out.splitlines() if ln.startswith("true motion integrated in ")]
+    assert re.fullmatch(r"true motion integrated in \d+\.\d\d s \(Radau(, \d runs)?\)", line)
+    assert out.rstrip("\n").endswith(line)  # under the table and its notes
+    code, doc, _ = run_cli("check", str(scene), "--json")
+    assert code == 0 and "integrated" not in doc and "seconds" not in doc
+    assert run_cli("check", str(scene), "--json")[1] == doc
+
+
+def test_a_flywheel_without_true_motion_says_no_integration_time(tmp_path):
+    code, out, _ = run_cli("check", str(engine(tmp_path)))
+    assert code == 0 and "integrated" not in out
