@@ -41,14 +41,14 @@ def _spatial(scene: Scene[GearScene]) -> bool:
     return spatial
 
 
-def _analyse(scene: Scene[GearScene], extra: Extra) -> GearAnalysis:
+def _analyse(scene: Scene[GearScene], extra: Extra, estimates: bool = True) -> GearAnalysis:
     if _spatial(scene):
         from graphmech.problems.gears.spatial import analyse_spatial
 
         return analyse_spatial(scene, extra)
     from graphmech.problems.gears.check import analyse
 
-    return analyse(scene, extra)
+    return analyse(scene, extra, estimates)
 
 
 def _judge(an: GearAnalysis, extra: Extra) -> list[Verdict]:
@@ -66,7 +66,7 @@ def _sheet(scene: Scene[GearScene], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.judging import finite
     from graphmech.problems.reader import page_size
 
-    an = finite(_analyse(scene, ()))
+    an = finite(_analyse(scene, (), estimates=False))  # the figure shows no row's error estimate
     sheet = helix_sheet(an, page_size(scene), footer) if isinstance(an, SpatialAnalysis) else \
         gear_figure(an, page_size(scene), footer)
     return sheet, list(an.warnings)

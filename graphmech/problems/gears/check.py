@@ -77,6 +77,9 @@ class GearAnalysis:
     stated: set[str] = field(default_factory=set)
     extra_measured: tuple[tuple[str, float], ...] = ()
     panels: tuple[str, ...] = ()
+    #: whether the rows carry their own error estimates (the check's); a figure needs none, and
+    #: a generation's costs two more cuttings of the blank
+    estimates: bool = True
     # the constructions, by gear label ("" for one gear, "1", "2" in a pair), made when first asked
     radii: dict[tuple[str, float], inv.AtRadius] = field(default_factory=dict)
     pointed: dict[str, inv.AtRadius] = field(default_factory=dict)
@@ -147,12 +150,14 @@ def panels_for(names: list[str], p: GearScene) -> tuple[str, ...]:
     return tuple(s for s in GEAR_SHOW_CHOICES if s in want)
 
 
-def analyse(scene: Scene[GearScene], extra_measured: tuple[tuple[str, float], ...] = ()) -> GearAnalysis:
-    """Construct what the scene asks for and build its check table."""
+def analyse(scene: Scene[GearScene], extra_measured: tuple[tuple[str, float], ...] = (),
+            estimates: bool = True) -> GearAnalysis:
+    """Construct what the scene asks for and build its check table (``estimates``: with the rows'
+    own error estimates; a figure does without)."""
     p = scene.problem
     if p.gears.spatial is not None:  # the kind sends these to problems/gears/spatial.py
         raise NotApplicable(f"a {p.gears.meshing} pair is analysed by graphmech.problems.gears.spatial, not as spur gears")
-    an = GearAnalysis(scene, p, extra_measured=tuple(extra_measured))
+    an = GearAnalysis(scene, p, extra_measured=tuple(extra_measured), estimates=estimates)
     problems = [(k, f"unknown gear quantity {n!r}") for k, n, _ in measured_entries(scene, extra_measured)
                 if quantity_unit(n, p) is None]
     if problems:
@@ -623,7 +628,7 @@ def _row(an: GearAnalysis, name: str) -> Row | None:
     # a shift coefficient is a length in modules: its error is relative to m where x is near 0
     floor = 1.0 if split_gear(name, an.problem)[0] in COEFFICIENT_STEMS else 1e-300
     row = Row(name, unit, drawn, scale, g, e, abs(g - e) / max(abs(e), floor))
-    return gen.estimate(an, row) if an.generation is not None else row
+    return gen.estimate(an, row) if an.generation is not None and an.estimates else row
 
 
 def judge(an: GearAnalysis, precision_mm: float | None = None) -> list[Verdict]:

@@ -165,3 +165,22 @@ def test_each_generated_thickness_is_within_the_error_it_states(tmp_path, z, x, 
         assert row["error_source"] == "discretisation" or row["rel_error"] < 1e-9, row
         if row["error_estimate"] is not None:
             assert row["rel_error"] <= row["error_estimate"], row
+
+
+def test_the_figure_cuts_the_blank_once(monkeypatch):
+    """The rows' error estimates (two more cuttings of the blank) are the check's: the figure
+    does without them and is the same drawing."""
+    from pathlib import Path
+
+    from graphmech import api
+    from graphmech.problems.gears.generation import GenerationAnalysis
+
+    scene = Path(__file__).parents[3] / "figures" / "scenes" / "gear.rack_cutter_generation_cases-4.toml"
+    want = api.load(scene).render().svg
+
+    def refuse(self):
+        raise AssertionError("the figure cut a reference")
+
+    monkeypatch.setattr(GenerationAnalysis, "reference", refuse)
+    monkeypatch.setattr(GenerationAnalysis, "shifted", refuse)
+    assert api.load(scene).render().svg == want
