@@ -389,3 +389,29 @@ def test_a_dashed_line_kilometres_long_is_drawn_solid_not_cut_forever():
     assert dash_pieces([(0.0, 0.0), (1e300, 0.0)], False, (6.0, 1.5, 1.0, 1.5)) == [((0.0, 0.0), (1e300, 0.0))]
     short = dash_pieces([(0.0, 0.0), (100.0, 0.0)], False, (3.0, 1.0))
     assert len(short) == 25 and MOST_DASHES * 2.0 > 100.0
+
+
+def test_a_force_sheet_laid_out_to_choose_its_scales_places_each_panels_labels_once(monkeypatch):
+    """The force kind lays its sheet out (labels and all) to choose the scales, then draws it: the
+    same panels are placed once, and the drawing is the one placed afresh."""
+    from pathlib import Path
+
+    from graphmech import api
+    from graphmech.render import sheet as sheet_module
+
+    scene = Path(__file__).parents[2] / "figures" / "scenes" / "force.sixbar_kinetostatic.toml"
+    placed = []
+    real = sheet_module._place
+
+    def counting(panel, shapes, style):
+        placed.append(panel.name)
+        return real(panel, shapes, style)
+
+    monkeypatch.setattr(sheet_module, "_PLACED", {})
+    monkeypatch.setattr(sheet_module, "_place", counting)
+    svg = api.load(scene).render().svg
+    assert placed and len(placed) == len(set(placed))  # every panel once
+    monkeypatch.setattr(sheet_module, "_PLACED", {})
+    monkeypatch.setattr(sheet_module, "PLACED_KEPT", 0)  # nothing kept: every placement afresh
+    assert api.load(scene).render().svg == svg
+    assert len(sheet_module._PLACED) == 0
