@@ -44,7 +44,7 @@ def _sheet(scene: Scene[CycleScene], footer: Footer) -> tuple[Sheet, list[str]]:
     from graphmech.problems.judging import finite
     from graphmech.problems.reader import page_size
 
-    an = finite(analyse_cycle(scene, ()))
+    an = finite(analyse_cycle(scene, (), diagram_errors=False))  # the figure shows no diagram's error
     return cycle_sheet(scene.title, an, list(scene.show), page_size(scene), footer), list(an.warnings)
 
 

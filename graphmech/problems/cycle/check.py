@@ -184,17 +184,21 @@ def _mech_scale(scene: Scene[CycleScene], linkage: Linkage) -> float:
     return round_scale(size / min(0.45 * w, 0.45 * h, 130.0))
 
 
-def analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, float], ...] = ()) -> CycleAnalysis:
-    """Evaluate what the scene shows and finds, and check it.
+def analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, float], ...] = (),
+                  diagram_errors: bool = True) -> CycleAnalysis:
+    """Evaluate what the scene shows and finds, and check it (``diagram_errors``: with each drawn
+    diagram's largest error against the exact rates over the cycle — the check's summary; a
+    figure does without).
 
     As for one position (:func:`graphmech.problems.linkage.check.analyse`), numbers beyond double precision (ω of
     1e300 rad/s squared, a crank of 5e-324 mm) are one line, never a traceback, an inf or a NaN.
     """
     with in_double_precision("the construction"):
-        return _analyse_cycle(scene, extra_measured)
+        return _analyse_cycle(scene, extra_measured, diagram_errors)
 
 
-def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, float], ...]) -> CycleAnalysis:
+def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, float], ...],
+                   diagram_errors: bool = True) -> CycleAnalysis:
     linkage = linkage_of(scene)
     measured = [n for _, n, _ in measured_entries(scene, extra_measured)]
     names = list(scene.find)
@@ -217,7 +221,7 @@ def _analyse_cycle(scene: Scene[CycleScene], extra_measured: tuple[tuple[str, fl
     if wants["cycle"]:
         named = {m.group(2) for n in names + measured if _kind(scene, n) == "diagram"
                  for m in [_DIAGRAM_NAME.fullmatch(n.partition("@")[0])] if m}
-        _cycle(an, linkage, named)
+        _cycle(an, linkage, named, diagram_errors)
     rows, problems = [], []
     poly = []
     for k, raw in enumerate(names):
@@ -442,7 +446,7 @@ def _characteristics_conditioning(an: CycleAnalysis, loop: Loop,
                            "method can give them to 1e-9")
 
 
-def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
+def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str], diagram_errors: bool = True) -> None:
     scene = an.scene
     k: int | str
     mu: str | float
@@ -543,7 +547,7 @@ def _cycle(an: CycleAnalysis, linkage: Linkage, named: set[str]) -> None:
             if spec.pole_distance_mm is not None and "phi" in spec.scales:  # μv, μa follow from what is stated
                 an.stated.update(f"{name}@{dg.subject}" for name in names[1:])
         an.stated.update(f"{name}@{dg.subject}" for name, k in zip(names[1:], derived[dg.subject]) if k in spec.scales)
-        errs = _diagram_errors(an, dg)
+        errs = _diagram_errors(an, dg) if diagram_errors else {}
         an.summary["diagrams"].append({"subject": dg.subject, "kind": dg.kind, "H1_mm": dg.velocity.H_mm,
                                        "H2_mm": dg.acceleration.H_mm,
                                        "mu_s": dg.mu_s, "mu_v": dg.mu_v, "mu_a": dg.mu_a, **errs})

@@ -400,3 +400,22 @@ def test_the_offset_guide_bars_characteristics_and_cycle(tmp_path):
     assert len(cyc) == 4 and all(r["rel_error"] <= 1e-9 for r in cyc.values()), cyc
     # position 7 is 180° of crank past the extreme where the working stroke starts: ψ3 < ψ, still going
     assert 0.0 < cyc["psi_3@7"]["exact"] < math.degrees(psi) and cyc["psi_3@4"]["exact"] > 0.0
+
+
+def test_the_figure_leaves_the_diagrams_errors_to_the_check(monkeypatch):
+    """Each diagram's largest error over the cycle (the exact rates at every position) is the check
+    table's summary: the figure does without it and is the same drawing."""
+    from pathlib import Path
+
+    from graphmech import api
+    from graphmech.problems.cycle import check as cycle_check
+
+    scene = Path(__file__).parents[3] / "figures" / "scenes" / "linkage.slider_crank_offset-cycle.toml"
+    want = api.load(scene).render().svg
+    assert api.load(scene).check().extras["diagrams"][0]["max_rel_error_v"] < 0.05
+
+    def refuse(*_):
+        raise AssertionError("the figure computed the diagrams' errors")
+
+    monkeypatch.setattr(cycle_check, "_diagram_errors", refuse)
+    assert api.load(scene).render().svg == want
