@@ -60,20 +60,12 @@ def error_time_plots(records: list[dict[str, Any]], out_dir: Path) -> list[Path]
     GraphmechError
         matplotlib is not installed (the ``plots`` extra); nothing is written.
     """
-    import io
-
-    try:
-        import matplotlib
-    except ImportError as e:
-        raise GraphmechError(NEEDS_PLOTS) from e
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = _pyplot()
 
     out_dir = Path(out_dir)
     methods = list(dict.fromkeys(r["method"] for r in records))
     written: list[Path] = []
-    with plt.rc_context({"svg.hashsalt": "graphmech", "svg.fonttype": "path", "font.size": 9.0}):
+    with plt.rc_context(_RC):
         for method in methods:
             rows = [r for r in records if r["method"] == method]
             cases = list(dict.fromkeys(r["case"] for r in rows))
@@ -102,15 +94,7 @@ def error_time_plots(records: list[dict[str, Any]], out_dir: Path) -> list[Path]
                             transform=ax.transAxes, fontsize=7.0)
                 if ax.lines:
                     ax.legend(fontsize=7.0, loc="best")
-            buf = io.BytesIO()
-            fig.savefig(buf, format="svg", metadata={"Date": None})
-            plt.close(fig)
-            name = _file_name(method)
-            while out_dir / f"{name}.svg" in written:  # two methods spelt alike after cleaning
-                name += "_"
-            path = out_dir / f"{name}.svg"
-            write_atomic(path, buf.getvalue())
-            written.append(path)
+            _save(plt, fig, out_dir / _file_name(method), "svg", written)
     return written
 
 
@@ -181,20 +165,12 @@ def error_against_time_plots(records: list[dict[str, Any]], out_dir: Path, fmt: 
     GraphmechError
         matplotlib is not installed (the ``plots`` extra); nothing is written.
     """
-    import io
-
-    try:
-        import matplotlib
-    except ImportError as e:
-        raise GraphmechError(NEEDS_PLOTS) from e
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = _pyplot()
     from matplotlib.ticker import FuncFormatter, NullFormatter
 
     out_dir = Path(out_dir)
     written: list[Path] = []
-    with plt.rc_context({"svg.hashsalt": "graphmech", "svg.fonttype": "path", "font.size": 9.0}):
+    with plt.rc_context(_RC):
         for method in discretised_methods(records):
             fig, ax = plt.subplots(figsize=(7.5, 5.0), layout="constrained")
             estimates = False
@@ -226,16 +202,37 @@ def error_against_time_plots(records: list[dict[str, Any]], out_dir: Path, fmt: 
             ax.set_ylabel("largest relative error (dimensionless)")
             ax.grid(True, which="major", linewidth=0.5, alpha=0.5)
             ax.legend(fontsize=7.0, loc="best")
-            buf = io.BytesIO()
-            if fmt == "svg":
-                fig.savefig(buf, format=fmt, metadata={"Date": None})
-            else:
-                fig.savefig(buf, format=fmt)
-            plt.close(fig)
-            name = f"{_file_name(method)}-error-time"
-            while out_dir / f"{name}.{fmt}" in written:  # two methods spelt alike after cleaning
-                name += "_"
-            path = out_dir / f"{name}.{fmt}"
-            write_atomic(path, buf.getvalue())
-            written.append(path)
+            _save(plt, fig, out_dir / f"{_file_name(method)}-error-time", fmt, written)
     return written
+
+
+#: matplotlib's settings for every plot (a fixed hash salt: the same records give the same SVG bytes).
+_RC = {"svg.hashsalt": "graphmech", "svg.fonttype": "path", "font.size": 9.0}
+
+
+def _pyplot() -> Any:
+    """matplotlib's pyplot on the Agg backend; GraphmechError where the ``plots`` extra is missing."""
+    try:
+        import matplotlib
+    except ImportError as e:
+        raise GraphmechError(NEEDS_PLOTS) from e
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _save(plt: Any, fig: Any, stem: Path, fmt: str, written: list[Path]) -> None:
+    """Write ``fig`` as stem.fmt (a name already written this run gets a ``_``: two methods spelt
+    alike after cleaning), atomically, and close it."""
+    import io
+
+    buf = io.BytesIO()
+    fig.savefig(buf, format=fmt, **({"metadata": {"Date": None}} if fmt == "svg" else {}))
+    plt.close(fig)
+    while stem.with_name(f"{stem.name}.{fmt}") in written:
+        stem = stem.with_name(stem.name + "_")
+    path = stem.with_name(f"{stem.name}.{fmt}")
+    write_atomic(path, buf.getvalue())
+    written.append(path)
