@@ -24,12 +24,20 @@ def execute(path: Path = NOTEBOOK):
 
 
 def texts(cell) -> list[str]:
-    """A code cell's outputs as text: printed text, and the plain form of each result."""
+    """A code cell's outputs as text: printed text, and the plain form of each result. Printed text
+    is one piece however many messages the kernel sent it in (a loaded machine splits it)."""
     out = []
+    last_stream = None
     for o in cell.get("outputs", []):
         if o["output_type"] == "stream":
-            out.append(o["text"])
-        elif o["output_type"] in ("execute_result", "display_data"):
+            if last_stream == o.get("name") and out:
+                out[-1] += o["text"]
+            else:
+                out.append(o["text"])
+            last_stream = o.get("name")
+            continue
+        last_stream = None
+        if o["output_type"] in ("execute_result", "display_data"):
             out.append(o["data"].get("text/plain", ""))
         elif o["output_type"] == "error":
             out.append(f"ERROR {o['ename']}: {o['evalue']}")
