@@ -25,6 +25,7 @@ from graphmech.errors import DegenerateConstruction
 from graphmech.mechanisms.linkage import Crank
 from graphmech.mechanisms.machine import CrankMoment, LinkMoment, Machine, SliderLoad, Table
 from graphmech.methods.polygons import LinkageConstruction, build_polygons
+from graphmech.minimum import fminbound
 from graphmech.methods.velocity import POLE
 
 #: Coarse positions over a turn on which a slider's extreme positions are bracketed.
@@ -93,8 +94,6 @@ def slider_stroke(b: LinkageConstruction, machine: Machine, point: str,
     down by Brent's method on the drawn position (flat at the extreme, so its value is found to
     rounding).
     """
-    from scipy.optimize import minimize_scalar
-
     plan = b.g.prune([b.mech[point]])
     start = machine.crank_angle(0.0)
     theta = start + np.linspace(0.0, 2.0 * math.pi, STROKE_SAMPLES, endpoint=False)
@@ -107,9 +106,8 @@ def slider_stroke(b: LinkageConstruction, machine: Machine, point: str,
         def f(t: float) -> float:
             return float(sign * _projection(b, plan, point, u, np.array([t]))[0])
 
-        r = minimize_scalar(f, bounds=(theta[i] - h, theta[i] + h), method="bounded",
-                            options={"xatol": 1e-12})
-        out.append(min(sign * float(r.fun), sign * float(s[i]), key=lambda v: sign * v))
+        _, least = fminbound(f, theta[i] - h, theta[i] + h, xatol=1e-12)  # scipy's bounded search, written out
+        out.append(min(sign * least, sign * float(s[i]), key=lambda v: sign * v))
     return out[0], out[1]
 
 
