@@ -370,8 +370,11 @@ def panel_labels(
         return _place(panel, shapes, style)
     if hit is None:
         hit = _PLACED[key] = _place(panel, shapes, style)
-        if len(_PLACED) > PLACED_KEPT:
-            del _PLACED[next(iter(_PLACED))]  # the oldest
+        while len(_PLACED) > PLACED_KEPT:
+            try:
+                del _PLACED[next(iter(_PLACED))]  # the oldest
+            except (KeyError, RuntimeError, StopIteration):  # another thread trimmed it first
+                break
     return hit
 
 
