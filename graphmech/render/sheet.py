@@ -34,6 +34,7 @@ Examples
 """
 from __future__ import annotations
 
+import functools
 import math
 import re
 import warnings
@@ -351,31 +352,24 @@ def _obstacles(shapes: Sequence[Shape], style: Style = DEFAULT) -> Obstacles:
     return Obstacles(np.concatenate(pieces), np.concatenate(widths), discs, fills)
 
 
-#: Labels placed lately, by (panel, style): a kind that lays its sheet out to choose its scales
-#: (the force sheets) places the same panels again when it draws them, and placing is most of a
-#: drawing's time. The panels are frozen values (equal content, equal placement); a few dozen kept.
-_PLACED: dict[tuple[Panel, Style], tuple[PlacedLabel, ...]] = {}
-PLACED_KEPT = 48
-
-
 def panel_labels(
     panel: Panel, shapes: Sequence[Shape], style: Style = DEFAULT
 ) -> tuple[PlacedLabel, ...]:
     """The panel's labels placed clear of each other and of everything drawn (panel frame);
     coincident point names come back as one label. ``shapes`` are ``panel_shapes(panel, style)``."""
-    key = (panel, style)
     try:
-        hit = _PLACED.get(key)
+        return _placed(panel, style)
     except TypeError:  # a panel that holds something unhashable is placed afresh
         return _place(panel, shapes, style)
-    if hit is None:
-        hit = _PLACED[key] = _place(panel, shapes, style)
-        while len(_PLACED) > PLACED_KEPT:
-            try:
-                del _PLACED[next(iter(_PLACED))]  # the oldest
-            except (KeyError, RuntimeError, StopIteration):  # another thread trimmed it first
-                break
-    return hit
+
+
+@functools.lru_cache(maxsize=48)
+def _placed(panel: Panel, style: Style) -> tuple[PlacedLabel, ...]:
+    """Labels placed lately, by (panel, style): a kind that lays its sheet out to choose its scales
+    (the force sheets) places the same panels again when it draws them, and placing is most of a
+    drawing's time (its shapes, made again here, cost a hundredth of it). The panels are frozen
+    values: equal content, equal placement."""
+    return _place(panel, panel_shapes(panel, style), style)
 
 
 def _place(panel: Panel, shapes: Sequence[Shape], style: Style) -> tuple[PlacedLabel, ...]:
