@@ -144,14 +144,19 @@ def fuse(program: Program, constants: Mapping[str, Any], params: list[str], samp
     return _write(tape, tops, plan, sym, constants, params, batch)
 
 
-def _needed(tape: Tape, tops: TracingOps, sym: Mapping[str, Any]) -> list[bool]:
-    """Which nodes the outputs, guards and condition numbers depend on."""
-    need = [False] * len(tape.nodes)
-    stack: list[Node] = [n for _, n in tops.guards] + [n for _, n in tops.cond_nodes if isinstance(n, Node)]
+def _roots(tops: TracingOps, sym: Mapping[str, Any]) -> list[Node]:
+    """The nodes the function must compute for their own sake: the guards, the condition numbers
+    and the components of the steps' values."""
+    out = [n for _, n in tops.guards] + [n for _, n in tops.cond_nodes if isinstance(n, Node)]
     for v in sym.values():
-        for x in (v if isinstance(v, tuple) else (v,)):
-            if isinstance(x, Traced):
-                stack.append(x.node)
+        out += [x.node for x in (v if isinstance(v, tuple) else (v,)) if isinstance(x, Traced)]
+    return out
+
+
+def _needed(tape: Tape, roots: list[Node]) -> list[bool]:
+    """Which nodes the roots depend on (themselves included)."""
+    need = [False] * len(tape.nodes)
+    stack = list(roots)
     while stack:
         n = stack.pop()
         if need[n.index]:
@@ -161,9 +166,9 @@ def _needed(tape: Tape, tops: TracingOps, sym: Mapping[str, Any]) -> list[bool]:
     return need
 
 
-def _read_once(tape: Tape, tops: TracingOps, sym: Mapping[str, Any], need: list[bool]) -> list[bool]:
+def _read_once(tape: Tape, roots: list[Node], need: list[bool]) -> list[bool]:
     """The nodes read exactly once, by another node whose form writes that operand once, and not
-    themselves a step's value, a guard or a condition number."""
+    themselves roots (a step's value, a guard or a condition number)."""
     reads = [0] * len(tape.nodes)
     for n in tape.nodes:
         if need[n.index]:
@@ -171,18 +176,15 @@ def _read_once(tape: Tape, tops: TracingOps, sym: Mapping[str, Any], need: list[
                 if isinstance(a, Node):
                     # maximum writes both operands twice; where drops its first two on this path
                     reads[a.index] += 2 if n.op == "maximum" or n.op == "where" and i < 2 else 1
-    pinned = {n.index for _, n in tops.guards} | {n.index for _, n in tops.cond_nodes if isinstance(n, Node)}
-    for v in sym.values():
-        for x in (v if isinstance(v, tuple) else (v,)):
-            if isinstance(x, Traced):
-                pinned.add(x.node.index)
+    pinned = {n.index for n in roots}
     return [need[i] and reads[i] == 1 and i not in pinned and n.op != "input" for i, n in enumerate(tape.nodes)]
 
 
 def _write(tape: Tape, tops: TracingOps, plan: list[tuple[Any, ...]], sym: Mapping[str, Any],
            constants: Mapping[str, Any], params: list[str], batch: bool) -> Run:
     w = _Writer(batch)
-    need = _needed(tape, tops, sym)
+    roots = _roots(tops, sym)
+    need = _needed(tape, roots)
     local: dict[int, str] = {}  # node index → its local
     called: dict[str, str] = {}  # called step → the local holding its value
     forms = _BATCH if batch else _SCALAR
@@ -192,7 +194,7 @@ def _write(tape: Tape, tops: TracingOps, plan: list[tuple[Any, ...]], sym: Mappi
     # its reader: one store and load fewer (a Python local costs as much as the arithmetic).
     inline: dict[int, str] = {}
     depth: dict[int, int] = {}
-    once = [False] * len(tape.nodes) if batch else _read_once(tape, tops, sym, need)
+    once = [False] * len(tape.nodes) if batch else _read_once(tape, roots, need)
 
     def operand(a: Any, op: str) -> str:
         if isinstance(a, Node):

@@ -70,15 +70,13 @@ class Tape:
 
     def __init__(self) -> None:
         self.nodes: list[Node] = []
-        self._seen: dict[Any, Node] = {}
-        self._keep: list[Any] = []  # constants keyed by identity stay alive while the tape does
+        self._seen: dict[Any, Node] = {}  # (constants keyed by identity live on in their nodes' args)
 
     def node(self, op: str, *args: Any) -> Node:
         key = (op, *((("n", a.index) if isinstance(a, Node) else _const_key(a)) for a in args))
         hit = self._seen.get(key)
         if hit is not None:
             return hit
-        self._keep.append(args)
         n = Node(op, args, len(self.nodes))
         self.nodes.append(n)
         self._seen[key] = n
@@ -92,19 +90,12 @@ class Tape:
         plain = tuple(a.node if isinstance(a, Traced) else a for a in args)
         if len(plain) == 2:
             a, b = plain
-            if op == "sub" and _is_exact_zero(b, 1.0) or op == "add" and _is_exact_zero(b, -1.0):
-                return Traced(self, a) if isinstance(a, Node) else _never(a)
-            if op == "add" and _is_exact_zero(a, -1.0):
-                return Traced(self, b)
-            if op in ("mul", "div") and _is_one(b) and isinstance(a, Node):
+            if isinstance(a, Node) and (op == "sub" and _is_exact_zero(b, 1.0) or op == "add" and _is_exact_zero(b, -1.0)
+                                        or op in ("mul", "div") and _is_one(b)):
                 return Traced(self, a)
-            if op == "mul" and _is_one(a) and isinstance(b, Node):
+            if isinstance(b, Node) and (op == "add" and _is_exact_zero(a, -1.0) or op == "mul" and _is_one(a)):
                 return Traced(self, b)
         return Traced(self, self.node(op, *plain))
-
-
-def _never(a: Any) -> "Traced":  # a constant folded with a constant: Python did it, never the tape
-    raise Untraceable("a constant reached the tape")
 
 
 def _refuse(*_: Any) -> Any:
