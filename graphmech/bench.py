@@ -57,6 +57,12 @@ def batch_record(quick: bool = False) -> dict[str, Any]:
             "note": f"{n} variants of the example scene {BATCH_SCENE} (figure + check each), on a process pool"}
 
 
+def batch_note(record: dict[str, Any]) -> str:
+    """The bench's note on the variants: their time on the pool."""
+    return (f"batch: {record['n']} variants (figure and check each) in {record['seconds']:.2f} s on "
+            f"{record.get('workers', 1)} processes ({1e3 * record['seconds'] / max(1, record['n']):.0f} ms each)")
+
+
 def reference_record(quick: bool = False) -> dict[str, Any]:
     """The time to make the figure (SVG) and the check of every example scene — the reference
     scenes of figures/scenes, installed with the package — on every core in one run, as
@@ -99,7 +105,7 @@ def _cpu_seconds() -> float:
 
 def reference_note(record: dict[str, Any]) -> str:
     """The bench's note on the reference scenes: their time against the target."""
-    each = record["seconds"] / max(1, record["n"])
+    each = record["per_scene"]
     verdict = "within" if each <= REFERENCE_TARGET_S else "OVER"
     failed = f", {record['failed']} FAILED" if record.get("failed") else ""
     return (f"reference scenes: {record['n']} example scenes (figure and check each) in {record['seconds']:.2f} s "
@@ -173,8 +179,7 @@ def run_bench(quick: bool = False, explicit: bool = False) -> dict[str, Any]:
     sheet = sheet_record(repeat=1 if quick else 3)
     notes.append(sheet_note(sheet))
     many = batch_record(quick)
-    notes.append(f"batch: {many['n']} variants (figure and check each) in {many['seconds']:.2f} s on "
-                 f"{many.get('workers', 1)} processes ({1e3 * many['seconds'] / max(1, many['n']):.0f} ms each)")
+    notes.append(batch_note(many))
     scenes = reference_record(quick)
     notes.append(reference_note(scenes))
     memory = memory_record(quick)

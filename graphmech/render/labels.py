@@ -396,11 +396,16 @@ def _inside(boxes: np.ndarray, segs: np.ndarray) -> tuple[np.ndarray, np.ndarray
             np.bincount(ci, weights=(length > 1e-9).astype(float), minlength=c))
 
 
+def _next_vertices(poly: np.ndarray) -> np.ndarray:
+    """The next vertex of each of a closed polygon's (k × 2): np.roll's values, without its overhead."""
+    return np.concatenate((poly[1:], poly[:1]))
+
+
 def _in_polygon(pts: np.ndarray, poly: np.ndarray) -> np.ndarray:
     """Whether each point (n × 2) is inside the polygon (k × 2), by the even–odd rule."""
     x, y = pts[:, 0:1], pts[:, 1:2]
     ax, ay = poly[:, 0][None, :], poly[:, 1][None, :]
-    nxt = np.concatenate((poly[1:], poly[:1]))  # the next vertex of each (np.roll's values, without its overhead)
+    nxt = _next_vertices(poly)
     bx, by = nxt[:, 0][None, :], nxt[:, 1][None, :]
     straddle = (ay > y) != (by > y)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -471,7 +476,7 @@ def _leader_start(anchor: np.ndarray, dirs: np.ndarray, discs: np.ndarray, fills
     for poly in fills:
         if not _in_polygon(anchor[None, :], poly)[0]:
             continue
-        e0, e1 = poly, np.concatenate((poly[1:], poly[:1]))
+        e0, e1 = poly, _next_vertices(poly)
         ex, ey = (e1 - e0)[:, 0], (e1 - e0)[:, 1]
         wx, wy = (e0 - anchor)[:, 0], (e0 - anchor)[:, 1]
         den = dirs[:, 0:1] * ey[None, :] - dirs[:, 1:2] * ex[None, :]

@@ -138,8 +138,14 @@ def discretised_methods(records: list[dict[str, Any]]) -> list[str]:
     ...                      rec("polygons", 360, 5e-15), rec("sheet", 12, None)])
     ['cam']
     """
-    methods = dict.fromkeys(r["method"] for r in records)
-    return [m for m in methods if _sweeps(records, m)]
+    return list(_discretised(records))
+
+
+def _discretised(records: list[dict[str, Any]]) -> dict[str, dict[str, list[dict[str, Any]]]]:
+    """Each discretised method's lines that sweep n (:func:`_sweeps`), in the order the methods
+    first appear."""
+    lines = {m: _sweeps(records, m) for m in dict.fromkeys(r["method"] for r in records)}
+    return {m: sweeps for m, sweeps in lines.items() if sweeps}
 
 
 def _tick(v: float, _: object = None) -> str:
@@ -171,10 +177,10 @@ def error_against_time_plots(records: list[dict[str, Any]], out_dir: Path, fmt: 
     out_dir = Path(out_dir)
     written: list[Path] = []
     with plt.rc_context(_RC):
-        for method in discretised_methods(records):
+        for method, sweeps in _discretised(records).items():
             fig, ax = plt.subplots(figsize=(7.5, 5.0), layout="constrained")
             estimates = False
-            for i, (name, rs) in enumerate(_sweeps(records, method).items()):
+            for i, (name, rs) in enumerate(sweeps.items()):
                 ms = [r["seconds"] * 1e3 for r in rs]
                 errs = [_error(r) or 0.0 for r in rs]  # every one an error (_sweeps)
                 (line,) = ax.plot(ms, errs, marker=_MARKERS[i % len(_MARKERS)], markersize=4.0, linewidth=1.2,
