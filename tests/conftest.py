@@ -95,6 +95,16 @@ def assert_refused(result: tuple[int, str, str], file: str, *words: str) -> str:
     return err.rstrip("\n")
 
 
+def edited_scene(tmp_path: Path, scene: str, old: str, new: str, name: str = "s.toml") -> Path:
+    """A reference scene (figures/scenes/``scene``) with its first ``old`` made ``new``, written as
+    tmp_path/``name``; ``old`` must be in it (an edit that misses would test the scene unchanged)."""
+    text = (SCENES / scene).read_text(encoding="utf-8")
+    assert old in text, (scene, old)
+    p = tmp_path / name
+    p.write_text(text.replace(old, new, 1), encoding="utf-8")
+    return p
+
+
 def check_json(scene: Path | str, *extra: str) -> dict:
     code, out, err = run_cli("check", str(scene), "--json", *extra)
     assert code in (0, 1), err

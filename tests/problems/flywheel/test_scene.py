@@ -936,23 +936,20 @@ def test_a_table_of_delta_t_is_closed_at_the_cycle_and_holds_no_loads() -> None:
 
 def test_a_delta_too_small_for_double_precision_is_refused(tmp_path):
     # fuzz seed 96: δ = 1e-300 made the Wittenbauer tangents' slopes equal (no key path)
-    from tests.conftest import SCENES, assert_refused, run_cli
+    from tests.conftest import assert_refused, edited_scene, run_cli
 
-    text = (SCENES / "fly.wittenbauer_course_project.toml").read_text(encoding="utf-8")
-    p = tmp_path / "f.toml"
-    p.write_text(text.replace("delta = 0.2", "delta = 1e-300", 1), encoding="utf-8")
+    scene = "fly.wittenbauer_course_project.toml"
+    p = edited_scene(tmp_path, scene, "delta = 0.2", "delta = 1e-300", "f.toml")
     assert_refused(run_cli("check", str(p)), "f.toml", "flywheel.delta", "below 1e-09")
-    p.write_text(text.replace("delta = 0.2", "delta = 1e-9", 1), encoding="utf-8")
+    p = edited_scene(tmp_path, scene, "delta = 0.2", "delta = 1e-9", "f.toml")
     code, _, err = run_cli("check", str(p))
     assert code in (0, 1), err
 
 
 def test_a_speed_whose_square_vanishes_is_refused(tmp_path):
     # fuzz seed 101: ω_m = 5e-324 rad/s made both Wittenbauer slopes 0 (no key path)
-    from tests.conftest import SCENES, assert_refused, run_cli
+    from tests.conftest import assert_refused, edited_scene, run_cli
 
-    text = (SCENES / "fly.wittenbauer_course_project.toml").read_text(encoding="utf-8")
-    assert "speed_rad_s = 28" in text
-    p = tmp_path / "f.toml"
-    p.write_text(text.replace("speed_rad_s = 28", "speed_rad_s = 5e-324", 1), encoding="utf-8")
+    p = edited_scene(tmp_path, "fly.wittenbauer_course_project.toml", "speed_rad_s = 28", "speed_rad_s = 5e-324",
+                     "f.toml")
     assert_refused(run_cli("check", str(p)), "f.toml", "flywheel.speed_rad_s", "below 1e-100")

@@ -216,10 +216,7 @@ def test_the_kind_of_drive_in_json(tmp_path, x, kind):
 
 def test_generation_without_an_addendum_is_refused_at_its_key(tmp_path):
     # fuzz seed 95: h*a = 0 in a rack-cutter scene raised NotApplicable with no key path
-    from tests.conftest import assert_refused
+    from tests.conftest import assert_refused, edited_scene
 
-    text = (SCENES / "gear.rack_cutter_generation_cases-4.toml").read_text(encoding="utf-8")
-    assert "ha_star = 1" in text
-    p = tmp_path / "g.toml"
-    p.write_text(text.replace("ha_star = 1", "ha_star = 0", 1), encoding="utf-8")
+    p = edited_scene(tmp_path, "gear.rack_cutter_generation_cases-4.toml", "ha_star = 1", "ha_star = 0", "g.toml")
     assert_refused(run_cli("check", str(p)), "g.toml", "gear.generation", "no tooth is undercut")
