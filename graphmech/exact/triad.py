@@ -32,13 +32,14 @@ Imports only numpy, math, the model and the tolerances — nothing of the constr
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
 from graphmech.mechanisms.linkage import Triad
 from graphmech.tolerances import TANGENT_REL
 
-__all__ = ["SCAN", "TriadSolution", "assemblies", "solve_triad"]
+__all__ = ["SCAN", "TriadSolution", "assemblies", "assemblies_at", "solve_triad"]
 
 #: Samples of θ2 over a full turn in the root scan (per hand of the dyad C–D–F). Two roots
 #: closer than 2π/SCAN may be missed; the group's assemblies are far apart in any drawable case.
@@ -48,7 +49,7 @@ _BISECT = 80  # halvings: 2π/SCAN / 2^80 is below every double's spacing
 _C = complex
 
 
-def _dyad(zc: np.ndarray, zf: complex, a: float, l4: float, hand: float) -> tuple[np.ndarray, np.ndarray]:
+def _dyad(zc: np.ndarray, zf: Any, a: float, l4: float, hand: Any) -> tuple[np.ndarray, np.ndarray]:
     """D on circle(C, a) ∩ circle(F, l4), to the ``hand`` side of C→F; and whether it exists."""
     cf = zf - zc
     d = np.abs(cf)
@@ -61,7 +62,7 @@ def _dyad(zc: np.ndarray, zf: complex, a: float, l4: float, hand: float) -> tupl
     return zc + u * (x + 1j * hand * h), ok
 
 
-def _on_guide(zc: np.ndarray, q: complex, u: complex, a: float, hand: float) -> tuple[np.ndarray, np.ndarray]:
+def _on_guide(zc: np.ndarray, q: complex, u: complex, a: float, hand: Any) -> tuple[np.ndarray, np.ndarray]:
     """D on circle(C, a) ∩ the line Q + t·u, ahead of (hand +1) or behind the foot of the
     perpendicular from C; and whether it exists."""
     along = ((zc - q) * u.conjugate()).real
@@ -91,7 +92,7 @@ def _unit(y: Triad, k: int) -> complex:
     return _C(*g.direction)
 
 
-def _chain(y: Triad, zo: tuple[complex, complex, complex], th: np.ndarray, hand: float
+def _chain(y: Triad, zo: tuple[Any, Any, Any], th: np.ndarray, hand: Any
            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(C, D, E, f, assembled) along the scanned leg's angle: f the last leg's residual —
     ``|X − O|² − l²`` on a pivoted leg, the signed distance from the guide on a slider leg."""
@@ -155,30 +156,51 @@ def _dyad_limits(y: Triad, zo: tuple[complex, complex, complex]) -> list[float]:
 def assemblies(y: Triad, zb: complex, zf: complex, zg: complex) -> list[tuple[complex, complex, complex]]:
     """Every assembly (C, D, E) of the group with its outer joints at B, F, G (a slider leg's
     entry is not read: its guide stands in for it)."""
-    out: list[tuple[complex, complex, complex]] = []
-    zo = (zb, zf, zg)
-    # the scan's nodes, and the limits of the dyad that closes the next leg (where its two hands
-    # meet): a root between the last node that assembles and such a limit has no sign change
-    # between two assembled nodes
-    grid = np.unique(np.concatenate([np.linspace(0.0, 2.0 * math.pi, SCAN + 1), _dyad_limits(y, zo)]))
-    for hand in (1.0, -1.0):
-        _, _, _, f, ok = _chain(y, zo, grid, hand)
-        change = ok[:-1] & ok[1:] & (np.sign(f[:-1]) != np.sign(f[1:]))
-        for k in np.flatnonzero(change):
-            lo, hi, flo = grid[k], grid[k + 1], f[k]
-            for _ in range(_BISECT):
-                mid = 0.5 * (lo + hi)
-                if mid in (lo, hi):
-                    break
-                _, _, _, fm, okm = _chain(y, zo, np.array([mid]), hand)
-                if not okm[0]:
-                    break
-                if np.sign(fm[0]) == np.sign(flo):
-                    lo, flo = mid, fm[0]
-                else:
-                    hi = mid
-            zc, zd, ze, _, _ = _chain(y, zo, np.array([0.5 * (lo + hi)]), hand)
-            out.append((complex(zc[0]), complex(zd[0]), complex(ze[0])))
+    return assemblies_at(y, np.array([zb]), np.array([zf]), np.array([zg]))[0]
+
+
+def assemblies_at(y: Triad, zb: np.ndarray, zf: np.ndarray, zg: np.ndarray
+                  ) -> list[list[tuple[complex, complex, complex]]]:
+    """:func:`assemblies` at several positions (the outer joints as complex arrays): the scan one
+    position at a time, every root of every position then narrowed together — one bisection over
+    all of them, so a cycle costs the same 80 halvings as one position."""
+    # Each root bracketed by the scan: its position, hand, ends and the residual at the low end
+    where: list[tuple[int, float]] = []
+    lo_, hi_, flo_ = [], [], []
+    for i in range(zb.shape[0]):
+        zo = (complex(zb[i]), complex(zf[i]), complex(zg[i]))
+        # the scan's nodes, and the limits of the dyad that closes the next leg (where its two hands
+        # meet): a root between the last node that assembles and such a limit has no sign change
+        # between two assembled nodes
+        grid = np.unique(np.concatenate([np.linspace(0.0, 2.0 * math.pi, SCAN + 1), _dyad_limits(y, zo)]))
+        for hand in (1.0, -1.0):
+            _, _, _, f, ok = _chain(y, zo, grid, hand)
+            change = np.flatnonzero(ok[:-1] & ok[1:] & (np.sign(f[:-1]) != np.sign(f[1:])))
+            where += [(i, hand)] * change.size
+            lo_.append(grid[change])
+            hi_.append(grid[change + 1])
+            flo_.append(f[change])
+    out: list[list[tuple[complex, complex, complex]]] = [[] for _ in range(zb.shape[0])]
+    if not where:
+        return out
+    lo, hi, flo = np.concatenate(lo_), np.concatenate(hi_), np.concatenate(flo_)
+    at = np.array([i for i, _ in where])
+    zo_r = (zb[at], zf[at], zg[at])
+    hand_r = np.array([h for _, h in where])
+    going = np.ones(lo.shape, dtype=bool)  # the roots still being halved
+    for _ in range(_BISECT):
+        mid = 0.5 * (lo + hi)
+        going &= (mid != lo) & (mid != hi)
+        if not going.any():
+            break
+        _, _, _, fm, okm = _chain(y, zo_r, mid, hand_r)
+        going &= okm
+        low = going & (np.sign(fm) == np.sign(flo))
+        lo, flo = np.where(low, mid, lo), np.where(low, fm, flo)
+        hi = np.where(going & ~low, mid, hi)
+    zc, zd, ze, _, _ = _chain(y, zo_r, 0.5 * (lo + hi), hand_r)
+    for k, (i, _) in enumerate(where):
+        out[i].append((complex(zc[k]), complex(zd[k]), complex(ze[k])))
     return out
 
 
@@ -207,8 +229,7 @@ def solve_triad(y: Triad, known: dict[str, tuple[np.ndarray, np.ndarray, np.ndar
     sol = TriadSolution(n)
     start = np.array([_C(*p) for p in y.start])
     side = 0.0  # the branch's sign of the determinant, from the first position solved
-    for i in range(n):
-        found = assemblies(y, complex(zo[0, i]), complex(zo[1, i]), complex(zo[2, i]))
+    for i, found in enumerate(assemblies_at(y, zo[0], zo[1], zo[2])):
         if not found:
             sol.assembled[i] = sol.valid[i] = False
             sol.reason[i] = f"class III group {y.name}: cannot be assembled"

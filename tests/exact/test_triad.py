@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from graphmech.exact import solve
-from graphmech.exact.triad import assemblies, solve_triad
+from graphmech.exact.triad import assemblies, assemblies_at, solve_triad
 from graphmech.mechanisms.linkage import Crank, Linkage, Triad
 
 MM = 1e-3
@@ -37,6 +37,17 @@ def test_every_assembly_closes_all_six_lengths_and_they_differ():
     # the ternary triangle keeps the start's hand: E left of C→D
     for c, d, e in found:
         assert ((d - c).conjugate() * (e - c)).imag > 0
+
+
+def test_the_assemblies_at_several_positions_are_those_found_one_position_at_a_time_to_the_bit():
+    # every root of every position is narrowed in one bisection: the same halvings as alone; at 200°
+    # (AB = 40) the group cannot be assembled, and at 0° one root sits next to the dyad's limit
+    zb = 40 * MM * np.exp(1j * np.radians([60.0, 200.0, 0.0, 80.0, 135.0]))
+    line = np.ones(zb.size, dtype=complex)
+    together = assemblies_at(GROUP, zb, F * line, G * line)
+    alone = [assemblies(GROUP, complex(b), F, G) for b in zb]
+    assert together == alone
+    assert [len(t) for t in together] == [2, 0, 2, 2, 2]
 
 
 @pytest.mark.parametrize("deg", [0.0, 80.0])
@@ -211,16 +222,14 @@ def test_a_branch_that_ends_between_two_positions_is_reported_not_jumped(monkeyp
     known = {"B": (zb, 0 * line, 0 * line), "F": (F * line, 0 * line, 0 * line), "G": (G * line, 0 * line, 0 * line)}
     followed = solve_triad(GROUP, known)
     assert list(followed.valid) == [True, True, True, True]  # the figure's assembly lives on to 140°
-    true_assemblies = triad.assemblies
+    true_assemblies = triad.assemblies_at
 
     def without_the_followed(y, b, f, g):  # from 80° on only the other assembly is left
         found = true_assemblies(y, b, f, g)
-        k = int(np.argmin(np.abs(zb - b)))
-        if k < 2:
-            return found
-        return [t for t in found if abs(t[0] - followed.z[0, k]) > 1e-9]
+        return [at if k < 2 else [t for t in at if abs(t[0] - followed.z[0, k]) > 1e-9]
+                for k, at in enumerate(found)]
 
-    monkeypatch.setattr(triad, "assemblies", without_the_followed)
+    monkeypatch.setattr(triad, "assemblies_at", without_the_followed)
     sol = solve_triad(GROUP, known)
     assert list(sol.valid) == [True, True, False, False]
     assert list(sol.assembled) == [True, True, True, True]
