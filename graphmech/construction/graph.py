@@ -276,7 +276,7 @@ class Plan:
                 got = (run(ops, params), ops.conds)
         except Exception:  # noqa: BLE001 — a plan that cannot be fused runs step by step, as before
             return
-        if fused.same_run(got, sample) and not (batch and ops.bad.any()):
+        if fused.same_run(got, sample) and not (batch and np.count_nonzero(ops.bad)):
             self._fused[batch] = run
 
     def __contains__(self, name: str) -> bool:
@@ -322,6 +322,6 @@ class Plan:
         vals = self._run(ops, params)
         if run is None:
             self._runs[True] += 1
-            if self._runs[True] > self.FUSE_AFTER[True] and not ops.bad.any():
+            if self._runs[True] > self.FUSE_AFTER[True] and not np.count_nonzero(ops.bad):
                 self._fuse(True, (vals, ops.conds), lambda: ArrayOps(n), params)
         return BatchSolution(vals, ops.conds, ~ops.bad, ops.failures, n)

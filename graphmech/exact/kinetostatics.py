@@ -333,7 +333,8 @@ def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.n
                    sliders: list[tuple[str, str, str, str]], tangents: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Solve A·x + g(x) = b, g the friction couples and forces, position by position: Newton's
     method from the frictionless solution, with g's exact Jacobian (g is smooth but where a
-    reaction vanishes; scipy's ``root`` costs a third of a second to import)."""
+    reaction vanishes; scipy's ``root`` costs a third of a second to import, so it is the
+    fallback, at a position where Newton's method does not reach the root)."""
     links = _moving_links(linkage)
     row = {k: 3 * i for i, k in enumerate(links)}
     pts = linkage.links()
@@ -408,8 +409,15 @@ def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.n
 
         z, calls = _newton(residual, jacobian, x0[i])
         scale = max(1.0, float(np.max(np.abs(z))))
-        if float(np.max(np.abs(residual(z)))) > 1e-9 * scale:
-            ok[i] = False
+        if not float(np.max(np.abs(residual(z)))) <= 1e-9 * scale:
+            # Newton's method cycled where a reaction changes sign: Powell's hybrid method, which
+            # keeps to a trust region, from the frictionless solution (scipy, loaded only here)
+            from scipy.optimize import root
+
+            sol = root(residual, x0[i], method="hybr", options={"xtol": 1e-14, "maxfev": 2000})
+            z, calls = sol.x, calls + sol.nfev
+            scale = max(1.0, float(np.max(np.abs(z))))
+            ok[i] = bool(float(np.max(np.abs(residual(z)))) <= 1e-9 * scale)
         x[i] = z
         evaluations[i] = calls
     return x, evaluations, ok
@@ -417,9 +425,8 @@ def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.n
 
 def _newton(f: Callable[[np.ndarray], np.ndarray], jac: Callable[[np.ndarray], np.ndarray], z: np.ndarray,
             maxiter: int = 100) -> tuple[np.ndarray, int]:
-    """The root of f near z by Newton's method, to the last bit: iterated while the residual
-    shrinks (or the step is still above rounding), the least residual's point returned; and the
-    calls of f."""
+    """The root of f near z by Newton's method, to the last bit: iterated until the step is
+    rounding (or ``maxiter``), the least residual's point returned; and the calls of f."""
     fz = f(z)
     calls = 1
     best, best_z = float(np.max(np.abs(fz))), z
@@ -434,8 +441,12 @@ def _newton(f: Callable[[np.ndarray], np.ndarray], jac: Callable[[np.ndarray], n
         fz = f(z)
         calls += 1
         r = float(np.max(np.abs(fz)))
+        if not math.isfinite(r):
+            break
         if r < best:
             best, best_z = r, z
-        elif np.all(np.abs(step) <= 4.0 * EPS * np.maximum(1.0, np.abs(z))) or r > 2.0 * best:
-            break  # at the last bit (the residual is rounding), or moving away
+        elif np.all(np.abs(step) <= 4.0 * EPS * np.maximum(1.0, np.abs(z))):
+            break  # at the last bit: the residual is rounding
+        # (a residual that grows is not the end: from the frictionless start the first step may
+        # overshoot where a friction couple switches on, and the next lands in the quadratic basin)
     return best_z, calls

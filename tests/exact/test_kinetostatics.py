@@ -85,6 +85,41 @@ def test_friction_is_solved_by_root_and_costs_power():
     assert (b.balancing_moment > a.balancing_moment).all()
 
 
+def _heavy_friction(e: float = 0.0) -> tuple[Linkage, ForceModel]:
+    """The offset slider-crank (ω1 = 150) with a heavy block and friction everywhere: near the dead
+    centre the friction equations' first Newton step from the frictionless solution overshoots."""
+    lk = Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", R, 150.0),
+                 (RRP("B", "C", ("2", "3"), L, Guide((0.0, e), 0.0), "forward"),),
+                 (LinkPoint("S2", "2", ("B", "C"), 0.1, 0.0),), "0")
+    model = ForceModel((LinkMass("2", "S2", 2.0, 0.02), LinkMass("3", "C", 4.0)), (PointForce("3", "C", 0.0, math.pi),),
+                       gravity=9.81, revolute_friction=tuple(RevoluteFriction(p, 0.25, 0.01) for p in "ABC"),
+                       sliding_friction=(SlidingFriction("3", 0.375),))
+    return lk, model
+
+
+def test_a_newton_step_that_overshoots_is_not_the_end():
+    # found by Hypothesis: at φ = 2^-7 rad the first step from the frictionless solution raises the
+    # residual from 85 to 176 N, the second lands in the quadratic basin (7e-8 N), the third at
+    # rounding; stopping at the first rise (as once) marked the position invalid
+    lk, model = _heavy_friction()
+    ex = solve_forces(lk, model, np.array([0.0078125]))
+    assert ex.valid[0] and 3 <= ex.iterations[0] <= 12
+    assert np.allclose(ex.reactions[("0", "1")][0], (-17088.28345195, 272.98826919), rtol=0, atol=1e-6)
+
+
+def test_where_newton_fails_powells_hybrid_method_solves_the_friction_equations(monkeypatch):
+    import graphmech.exact.kinetostatics as ks
+
+    lk, model = _heavy_friction()
+    phi = np.array([0.0078125, 2.0])
+    want = solve_forces(lk, model, phi)
+    monkeypatch.setattr(ks, "_newton", lambda f, jac, z: (z, 1))  # as if Newton's method cycled at the start
+    got = solve_forces(lk, model, phi)
+    assert got.valid.all() and (got.iterations > 1).all()
+    for key, r in want.reactions.items():
+        assert np.allclose(got.reactions[key], r, rtol=1e-9, atol=1e-9 * 17088.0), key
+
+
 def tangent_mechanism(h: float = 0.1, omega: float = 10.0) -> Linkage:
     """Bar 1 about A; block 2 slides on it and is pinned at C to the rod 3 in the vertical guide x = h."""
     return Linkage({"A": (0.0, 0.0)}, Crank("1", "A", "B", 0.15, omega),
