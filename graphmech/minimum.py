@@ -22,8 +22,8 @@ _GOLDEN = 0.5 * (3.0 - math.sqrt(5.0))
 
 
 def _sign(x: float) -> float:
-    """numpy's sign: −1, 0 or 1 (NaN stays NaN)."""
-    return x if x != x else float((x > 0.0) - (x < 0.0))
+    """numpy's sign: −1, 0 or 1 (NaN stays NaN); x may be a numpy scalar (f's values are)."""
+    return x if x != x else float(x > 0.0) - float(x < 0.0)
 
 
 def fminbound(f: Callable[[float], float], lo: float, hi: float, xatol: float = XATOL,

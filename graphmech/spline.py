@@ -10,6 +10,7 @@ finders, :meth:`PeriodicSpline.at` many at once.
 """
 from __future__ import annotations
 
+import math
 from bisect import bisect_right
 
 import numpy as np
@@ -72,6 +73,8 @@ class PeriodicSpline:
         y = [[float(v) for v in row] for row in y]
         if n < 4 or len(y) != n or y[0] != y[-1]:
             raise OutOfDomain("a periodic spline needs at least 4 points, the last equal to the first")
+        if not all(math.isfinite(v) for v in x) or not all(math.isfinite(v) for row in y for v in row):
+            raise OutOfDomain("a spline's parameters and points must be finite (scipy refuses them too)")
         dim = len(y[0])
         dx = [x[i + 1] - x[i] for i in range(n - 1)]
         if not all(h > 0.0 for h in dx):
@@ -100,6 +103,8 @@ class PeriodicSpline:
                 for j in range(dim)]
         s = [[s1[i][j] + s_m1[j] * s2[i] for j in range(dim)] for i in range(m)]
         s += [s_m1, s[0]]
+        if not all(math.isfinite(v) for row in s for v in row):
+            raise OutOfDomain("the spline's slopes overflow: its points are too far apart for floats")
         # CubicHermiteSpline's coefficients, highest power first
         coef = []
         for i in range(n - 1):

@@ -7,6 +7,7 @@ import math
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -42,6 +43,17 @@ def test_known_minima(f, lo, hi, at):
     assert lo <= x <= hi and fx == f(x)
     if at is not None:
         assert x == pytest.approx(at, abs=1e-7)
+
+
+@pytest.mark.parametrize("f, lo, hi", [(lambda x: np.float64(abs(x - 1.0)), 0.0, 3.0),
+                                       (lambda x: np.float64((x - 0.999) ** 2), 0.0, 1.0)])
+def test_numpy_scalar_values_are_scipys_too(f, lo, hi):
+    """A function returning numpy scalars (the steps then are numpy scalars too): no TypeError on
+    the sign of a numpy bool difference near a bound, and scipy's floats (a sweep found it)."""
+    from scipy.optimize import minimize_scalar
+
+    want = minimize_scalar(f, bounds=(lo, hi), method="bounded")
+    assert fminbound(f, lo, hi) == (want.x, want.fun)
 
 
 def test_a_point_interval_is_that_point():

@@ -51,6 +51,9 @@ def test_a_circle_through_four_points():
     ([0.0, 1.0, 2.0], [[0.0], [1.0], [0.0]], "at least 4"),
     ([0.0, 1.0, 2.0, 3.0], [[0.0], [1.0], [2.0], [1.0]], "last equal"),
     ([0.0, 1.0, 1.0, 3.0], [[0.0], [1.0], [2.0], [0.0]], "increase"),
+    ([0.0, 1.0, 2.0, 3.0], [[0.0], [math.nan], [2.0], [0.0]], "finite"),  # scipy: ValueError, not NaN coefficients
+    ([0.0, 1.0, 2.0, math.inf], [[0.0], [1.0], [2.0], [0.0]], "finite"),
+    ([0.0, 1.0, 2.0, 3.0], [[0.0], [1e308], [-1e308], [0.0]], "overflow"),  # scipy: `dydx` must be finite
 ])
 def test_what_is_refused(x, y, why):
     with pytest.raises(OutOfDomain, match=why):

@@ -847,8 +847,9 @@ def _actual(cam: DiscCam, delta: Any) -> np.ndarray:
 def _newton2(f: Callable[[float, float], np.ndarray], x: float, y: float, h: float = 1e-7,
              maxiter: int = 50) -> tuple[float, float]:
     """The root of the smooth map f: R² → R² nearest (x, y), by Newton's method with a central-
-    difference Jacobian (step h), to the last bit: iterated while the residual |f| shrinks, the
-    least residual's point returned. (scipy's ``root`` costs a third of a second to import.)"""
+    difference Jacobian (step h), to the last bit: iterated until the step is rounding (or
+    ``maxiter``), the least residual's point returned. (scipy's ``root`` costs a third of a second
+    to import.)"""
     fx = f(x, y)
     best = (math.hypot(float(fx[0]), float(fx[1])), x, y)
     for _ in range(maxiter):
@@ -868,8 +869,8 @@ def _newton2(f: Callable[[float, float], np.ndarray], x: float, y: float, h: flo
             best = (r, x, y)
         elif abs(dx) <= 4.0 * EPS * max(1.0, abs(x)) and abs(dy) <= 4.0 * EPS * max(1.0, abs(y)):
             break  # at the last bit, the residual is rounding
-        elif r > 2.0 * best[0]:
-            break  # moving away: the best point is the root as well as it can be found
+        # (a residual that grows is not the end: a vertex nearer the corner than h, where the
+        # central difference straddles the clamp, is reached by steps that overshoot now and then)
     return best[1], best[2]
 
 

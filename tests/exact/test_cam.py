@@ -18,6 +18,7 @@ from graphmech.exact.cam import (
     min_convex_rho_pitch,
     profile,
     undercut,
+    working_profile,
 )
 from graphmech.mechanisms.cam import (
     DiscCam,
@@ -450,6 +451,19 @@ def test_flat_face_profile_is_the_envelope_of_the_face_lines():
 
 # --------------------------------------------------------------------------------------------
 # Findings
+
+
+@pytest.mark.parametrize("offset", [3.0, -3.0])
+def test_a_vertex_nearer_the_corner_than_the_difference_step_is_found(offset):
+    """A uniform rise of 1.8 nm on r0 = 5 mm: the vertices lie 2.2e-8 rad from the corners at 90°
+    and 180°, inside the Jacobian's central difference (1e-7), and Newton's steps overshoot now and
+    then on the way; stopping at the first rise in the residual (as once) raised "vertex not
+    found" (a randomized sweep found it)."""
+    program = MotionProgram(10 ** -5.75 * MM, (Segment("rise", 90 * DEG, "uniform"), Segment("dwell", 90 * DEG),
+                                              Segment("return", 90 * DEG, "uniform"), Segment("dwell", 90 * DEG)))
+    cam = DiscCam(5 * MM, TranslatingFollower(offset * MM, "roller", 1 * MM), program)
+    pts, ang = working_profile(cam, 2000)
+    assert np.all(np.abs(np.hypot(*pts.T) - 4 * MM) < 0.3 * MM)  # about the base circle less the roller
 
 
 def test_reference_cam_reports_only_its_convex_corner():
