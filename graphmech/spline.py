@@ -74,7 +74,7 @@ class PeriodicSpline:
         if n < 4 or len(y) != n or y[0] != y[-1]:
             raise OutOfDomain("a periodic spline needs at least 4 points, the last equal to the first")
         if not all(math.isfinite(v) for v in x) or not all(math.isfinite(v) for row in y for v in row):
-            raise OutOfDomain("a spline's parameters and points must be finite (scipy refuses them too)")
+            raise OutOfDomain("a spline's parameters and points must be finite")
         dim = len(y[0])
         dx = [x[i + 1] - x[i] for i in range(n - 1)]
         if not all(h > 0.0 for h in dx):
