@@ -1,20 +1,26 @@
-"""A root of a function bracketed by a sign change: Brent's method (Brent 1973, "zero").
+"""Roots of equations, without scipy.optimize: importing it costs a third of a second, longer
+than a whole cam check takes without it (issue 23: cold starts under 0.5 s).
 
-The exact solutions refine an extreme or a crossing between two samples with it. It is the same
-algorithm, step for step, as ``scipy.optimize.brentq`` (its C source, zeros/brentq.c), so it
-returns the same floats; it lives here because importing ``scipy.optimize`` costs a third of a
-second, longer than a whole cam check takes without it (issue 23: cold starts under 0.5 s).
+* :func:`brentq` — a root of a function bracketed by a sign change: Brent's method (Brent 1973,
+  "zero"). The exact solutions refine an extreme or a crossing between two samples with it. It is
+  the same algorithm, step for step, as ``scipy.optimize.brentq`` (its C source,
+  zeros/brentq.c), so it returns the same floats.
+* :func:`newton` — a root of a system near a start: Newton's method to the last bit (a convex
+  corner of a cam's profile, the friction equations).
 """
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
 
+import numpy as np
+
 from graphmech.errors import NoSolution, OutOfDomain
+from graphmech.tolerances import EPS
 
 #: scipy's defaults: absolute and relative tolerance on x, iterations.
 XTOL = 2e-12
-RTOL = 4.0 * 2.220446049250313e-16
+RTOL = 4.0 * EPS
 MAXITER = 100
 
 
@@ -73,4 +79,41 @@ def brentq(f: Callable[[float], float], a: float, b: float, xtol: float = XTOL, 
     raise NoSolution(f"Brent's method did not converge in {maxiter} iterations (last x = {xcur!r})")
 
 
-__all__ = ["brentq", "XTOL", "RTOL", "MAXITER"]
+def newton(f: Callable[[np.ndarray], np.ndarray], jac: Callable[[np.ndarray], np.ndarray], z: np.ndarray,
+           maxiter: int = MAXITER) -> tuple[np.ndarray, int]:
+    """The root of f near z by Newton's method, to the last bit, and the calls of f made.
+
+    Iterated until a step is rounding (each component within 4ε of its size, or of 1) or
+    ``maxiter``; the point of least residual (largest |f_k|) is returned, whether or not it is a
+    root — the caller judges the residual. A residual that grows is not the end: where the
+    equations change form (a friction couple switching on, a clamp at a cam's corner) a step may
+    overshoot, and the next lands where Newton's method converges fast.
+
+    >>> z, calls = newton(lambda z: z * z - 2.0, lambda z: np.diag(2.0 * z), np.array([1.0]))
+    >>> float(z[0]) == math.sqrt(2.0), calls < 10
+    (True, True)
+    """
+    fz = f(z)
+    calls = 1
+    best, best_z = float(np.max(np.abs(fz))), z
+    for _ in range(maxiter):
+        if best == 0.0:
+            break
+        try:
+            step = np.linalg.solve(jac(z), -fz)
+        except np.linalg.LinAlgError:
+            break
+        z = z + step
+        fz = f(z)
+        calls += 1
+        r = float(np.max(np.abs(fz)))
+        if not math.isfinite(r):
+            break
+        if r < best:
+            best, best_z = r, z
+        elif np.all(np.abs(step) <= 4.0 * EPS * np.maximum(1.0, np.abs(z))):
+            break  # at the last bit: the residual is rounding
+    return best_z, calls
+
+
+__all__ = ["MAXITER", "RTOL", "XTOL", "brentq", "newton"]

@@ -1,17 +1,19 @@
-"""Brent's method of graphmech.roots: the same floats as scipy.optimize.brentq (the same algorithm),
-the refusals, and that a cam check no longer loads scipy.optimize."""
+"""graphmech.roots: Brent's method (the same floats as scipy.optimize.brentq, the same algorithm),
+the refusals, that a cam check no longer loads scipy.optimize; Newton's method to the last bit, and
+its best point where it cycles."""
 from __future__ import annotations
 
 import math
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from graphmech.errors import NoSolution, OutOfDomain
-from graphmech.roots import RTOL, brentq
+from graphmech.roots import RTOL, brentq, newton
 from tests.conftest import SCENES
 
 
@@ -60,3 +62,20 @@ def test_a_cam_check_does_not_load_scipy_optimize():
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert run.returncode == 0, run.stderr
     assert "a_max_at" in run.stdout  # its extremes were found (by brentq)
+
+
+def test_newton_reaches_the_root_to_the_last_bit_of_a_system():
+    # the unit circle and the line y = x: (√½, √½)
+    def f(z):
+        return np.array([z[0] ** 2 + z[1] ** 2 - 1.0, z[0] - z[1]])
+
+    z, calls = newton(f, lambda z: np.array([[2.0 * z[0], 2.0 * z[1]], [1.0, -1.0]]), np.array([2.0, 0.5]))
+    assert abs(z[0] - math.sqrt(0.5)) <= 2.3e-16 and z[0] == z[1]
+    assert 5 <= calls <= 12
+
+
+def test_where_newton_cycles_it_returns_its_best_point_after_maxiter():
+    # x³ − 2x + 2 from 0: the steps go 0 → 1 → 0 → … for ever; the best point is x = 1 (f = 1)
+    z, calls = newton(lambda z: z ** 3 - 2.0 * z + 2.0, lambda z: np.array([[3.0 * z[0] ** 2 - 2.0]]),
+                      np.array([0.0]), maxiter=20)
+    assert float(z[0]) == 1.0 and calls == 21

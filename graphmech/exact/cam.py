@@ -129,7 +129,7 @@ from numpy.typing import ArrayLike
 
 from graphmech.errors import NoSolution, NotApplicable, OutOfDomain, WrongKind
 from graphmech.minimum import fminbound  # scipy's bounded search without loading scipy.optimize
-from graphmech.roots import brentq  # scipy's algorithm without loading scipy.optimize (0.3 s)
+from graphmech.roots import brentq, newton  # scipy.optimize's work without loading it (0.3 s)
 from graphmech.mechanisms.cam import DiscCam, OscillatingFollower, TranslatingFollower
 from graphmech.mechanisms.motion import breakpoints, displacement, impacts
 from graphmech.tolerances import EPS, TANGENT_REL
@@ -844,34 +844,13 @@ def _actual(cam: DiscCam, delta: Any) -> np.ndarray:
     return profile(cam, np.atleast_1d(np.asarray(delta, dtype=float)) % math.tau).actual
 
 
-def _newton2(f: Callable[[float, float], np.ndarray], x: float, y: float, h: float = 1e-7,
-             maxiter: int = 50) -> tuple[float, float]:
-    """The root of the smooth map f: R² → R² nearest (x, y), by Newton's method with a central-
-    difference Jacobian (step h), to the last bit: iterated until the step is rounding (or
-    ``maxiter``), the least residual's point returned. (scipy's ``root`` costs a third of a second
-    to import.)"""
-    fx = f(x, y)
-    best = (math.hypot(float(fx[0]), float(fx[1])), x, y)
-    for _ in range(maxiter):
-        if best[0] == 0.0:
-            break
-        a = (f(x + h, y) - f(x - h, y)) / (2.0 * h)
-        b = (f(x, y + h) - f(x, y - h)) / (2.0 * h)
-        det = float(a[0] * b[1] - a[1] * b[0])
-        if det == 0.0 or not math.isfinite(det):
-            break
-        dx = float(-(fx[0] * b[1] - fx[1] * b[0]) / det)  # Cramer's rule for J·(dx, dy) = −f
-        dy = float(-(a[0] * fx[1] - a[1] * fx[0]) / det)
-        x, y = x + dx, y + dy
-        fx = f(x, y)
-        r = math.hypot(float(fx[0]), float(fx[1]))
-        if r < best[0]:
-            best = (r, x, y)
-        elif abs(dx) <= 4.0 * EPS * max(1.0, abs(x)) and abs(dy) <= 4.0 * EPS * max(1.0, abs(y)):
-            break  # at the last bit, the residual is rounding
-        # (a residual that grows is not the end: a vertex nearer the corner than h, where the
-        # central difference straddles the clamp, is reached by steps that overshoot now and then)
-    return best[1], best[2]
+def _central_jacobian(f: Callable[[np.ndarray], np.ndarray], h: float = 1e-7) -> Callable[[np.ndarray], np.ndarray]:
+    """The Jacobian of the smooth map f: R² → R² by central differences of step h."""
+    def jac(z: np.ndarray) -> np.ndarray:
+        dx, dy = np.array([h, 0.0]), np.array([0.0, h])
+        return np.column_stack([(f(z + dx) - f(z - dx)) / (2.0 * h), (f(z + dy) - f(z - dy)) / (2.0 * h)])
+
+    return jac
 
 
 def _convex_vertex(cam: DiscCam, c: float, w: float) -> tuple[float, float]:
@@ -887,8 +866,13 @@ def _convex_vertex(cam: DiscCam, c: float, w: float) -> tuple[float, float]:
         raise NoSolution(f"the roller's offsets at the corner δ = {math.degrees(c):.6g}° do not cross once")
     q = np.asarray(x.coords[0])
     guess = [dl[np.argmin(np.hypot(*(al - q).T))], dr[np.argmin(np.hypot(*(ar - q).T))]]
-    d1, d2 = _newton2(lambda t1, t2: _actual(cam, [min(t1, c - _LEFT)])[0] - _actual(cam, [max(t2, c)])[0],
-                      float(guess[0]), float(guess[1]))
+
+    def apart(t: np.ndarray) -> np.ndarray:  # the two sides' offsets, each kept to its own side
+        gap: np.ndarray = _actual(cam, [min(t[0], c - _LEFT)])[0] - _actual(cam, [max(t[1], c)])[0]
+        return gap
+
+    z, _ = newton(apart, _central_jacobian(apart), np.array([float(guess[0]), float(guess[1])]), maxiter=50)
+    d1, d2 = float(z[0]), float(z[1])
     gap = float(np.hypot(*(_actual(cam, [d1])[0] - _actual(cam, [d2])[0])))
     if not (c - w < d1 < c <= d2 < c + w) or gap > 1e-12 * cam.base_radius:
         raise NoSolution(f"the profile's vertex at δ = {math.degrees(c):.6g}° was not found")

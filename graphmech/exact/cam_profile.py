@@ -46,7 +46,7 @@ from __future__ import annotations
 
 import math
 from functools import lru_cache
-from typing import cast
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -350,19 +350,9 @@ def _contact_t(cam: GivenCam, delta: float) -> float:
     d = np.array([-s, c])
     d0, d1 = -s, c
 
-    def g(p: np.ndarray, n: np.ndarray, b: np.ndarray) -> np.ndarray:
-        if isinstance(f, TranslatingFollower):
-            if f.contact == "flat":
-                return np.asarray(n[:, 0] * d[1] - n[:, 1] * d[0])
-            q = np.array([f.offset * c, f.offset * s])
-            return np.asarray((b[:, 0] - q[0]) * d[1] - (b[:, 1] - q[1]) * d[0])
-        a = np.array([f.pivot_distance * c, f.pivot_distance * s])
-        if f.contact == "flat":
-            return np.asarray(np.sum((p - a) * n, axis=1))
-        return np.asarray(np.sum((b - a) ** 2, axis=1) - f.arm ** 2)
-
-    def g1(t: float) -> float:  # g at one t, term by term as the arrays above take it
-        p0, p1, n0, n1, b0, b1 = _frame1(profile, t, r)
+    def g(p0: Any, p1: Any, n0: Any, n1: Any, b0: Any, b1: Any) -> Any:
+        """The contact's equation on the components of p, n and B: floats at one t, arrays on the
+        grid (the same operations either way, so both give the same floats)."""
         if isinstance(f, TranslatingFollower):
             if f.contact == "flat":
                 return n0 * d1 - n1 * d0
@@ -373,9 +363,12 @@ def _contact_t(cam: GivenCam, delta: float) -> float:
         e0, e1 = b0 - a0, b1 - a1
         return (e0 * e0 + e1 * e1) - f.arm ** 2
 
+    def g1(t: float) -> float:
+        return float(g(*_frame1(profile, t, r)))
+
     length = profile.length
-    grid, *frame = _grid_frame(profile, r)
-    vals = g(*frame)
+    grid, p, n, b = _grid_frame(profile, r)
+    vals = g(p[:, 0], p[:, 1], n[:, 0], n[:, 1], b[:, 0], b[:, 1])
     roots = []
     for k in np.flatnonzero(np.sign(vals[:-1]) != np.sign(vals[1:])):
         if vals[k] == 0.0:

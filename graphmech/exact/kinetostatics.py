@@ -27,7 +27,7 @@ import numpy as np
 from graphmech.errors import NotApplicable, UnknownName
 from graphmech.exact.linkage import Kinematics, solve as solve_kinematics
 from graphmech.mechanisms.forces import ForceModel
-from graphmech.tolerances import EPS
+from graphmech.roots import newton
 from graphmech.mechanisms.linkage import PRP, RPP, RPR, RRP, RRR, Crank, Guide, Linkage, LinkGuide, SliderInput, Triad
 
 __all__ = ["ExactForces", "solve_forces", "pairs"]
@@ -407,46 +407,18 @@ def _with_friction(linkage: Linkage, model: ForceModel, kin: Kinematics, A: np.n
                     jac[r0 + 2, k] += sign * dt * (arm[0] * t[1] - arm[1] * t[0])
             return cast(np.ndarray, jac)
 
-        z, calls = _newton(residual, jacobian, x0[i])
-        scale = max(1.0, float(np.max(np.abs(z))))
-        if not float(np.max(np.abs(residual(z)))) <= 1e-9 * scale:
+        def solved(z: np.ndarray, residual: Callable[[np.ndarray], np.ndarray] = residual) -> bool:
+            return float(np.max(np.abs(residual(z)))) <= 1e-9 * max(1.0, float(np.max(np.abs(z))))
+
+        z, calls = newton(residual, jacobian, x0[i])
+        if not solved(z):
             # Newton's method cycled where a reaction changes sign: Powell's hybrid method, which
             # keeps to a trust region, from the frictionless solution (scipy, loaded only here)
             from scipy.optimize import root
 
             sol = root(residual, x0[i], method="hybr", options={"xtol": 1e-14, "maxfev": 2000})
             z, calls = sol.x, calls + sol.nfev
-            scale = max(1.0, float(np.max(np.abs(z))))
-            ok[i] = bool(float(np.max(np.abs(residual(z)))) <= 1e-9 * scale)
+            ok[i] = solved(z)
         x[i] = z
         evaluations[i] = calls
     return x, evaluations, ok
-
-
-def _newton(f: Callable[[np.ndarray], np.ndarray], jac: Callable[[np.ndarray], np.ndarray], z: np.ndarray,
-            maxiter: int = 100) -> tuple[np.ndarray, int]:
-    """The root of f near z by Newton's method, to the last bit: iterated until the step is
-    rounding (or ``maxiter``), the least residual's point returned; and the calls of f."""
-    fz = f(z)
-    calls = 1
-    best, best_z = float(np.max(np.abs(fz))), z
-    for _ in range(maxiter):
-        if best == 0.0:
-            break
-        try:
-            step = np.linalg.solve(jac(z), -fz)
-        except np.linalg.LinAlgError:
-            break
-        z = z + step
-        fz = f(z)
-        calls += 1
-        r = float(np.max(np.abs(fz)))
-        if not math.isfinite(r):
-            break
-        if r < best:
-            best, best_z = r, z
-        elif np.all(np.abs(step) <= 4.0 * EPS * np.maximum(1.0, np.abs(z))):
-            break  # at the last bit: the residual is rounding
-        # (a residual that grows is not the end: from the frictionless start the first step may
-        # overshoot where a friction couple switches on, and the next lands in the quadratic basin)
-    return best_z, calls

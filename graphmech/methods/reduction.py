@@ -25,8 +25,8 @@ from graphmech.errors import DegenerateConstruction
 from graphmech.mechanisms.linkage import Crank
 from graphmech.mechanisms.machine import CrankMoment, LinkMoment, Machine, SliderLoad, Table
 from graphmech.methods.polygons import LinkageConstruction, build_polygons
-from graphmech.minimum import fminbound
 from graphmech.methods.velocity import POLE
+from graphmech.minimum import fminbound
 
 #: Coarse positions over a turn on which a slider's extreme positions are bracketed.
 STROKE_SAMPLES = 720

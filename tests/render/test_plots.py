@@ -26,19 +26,24 @@ RECORDS = [
 ]
 
 
-@pytest.fixture(scope="module")
-def plotted(tmp_path_factory: pytest.TempPathFactory):
-    """The files written and the figures drawn (plt.close held back until the test is done)."""
+def _drawn(plots, records, out):
+    """Run a plotting function with plt.close held back: yields (out, the files written, the
+    figures drawn), closing the figures once the tests are done with them."""
     import matplotlib.pyplot as plt
 
     figures = []
-    out = tmp_path_factory.mktemp("plots")
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(plt, "close", figures.append)
-        paths = error_time_plots(RECORDS, out)
+        paths = plots(records, out)
     yield out, paths, figures
     for fig in figures:
         plt.close(fig)
+
+
+@pytest.fixture(scope="module")
+def plotted(tmp_path_factory: pytest.TempPathFactory):
+    """The files written and the figures drawn by error_time_plots."""
+    yield from _drawn(error_time_plots, RECORDS, tmp_path_factory.mktemp("plots"))
 
 
 def test_one_svg_per_method_named_safely_in_order(plotted) -> None:
@@ -137,18 +142,10 @@ def test_the_discretised_methods_are_those_with_an_error_that_sweeps_n() -> None
 
 @pytest.fixture(scope="module")
 def error_time(tmp_path_factory: pytest.TempPathFactory):
-    import matplotlib.pyplot as plt
-
+    """The files written and the figures drawn by error_against_time_plots."""
     from graphmech.render.plots import error_against_time_plots
 
-    figures = []
-    out = tmp_path_factory.mktemp("error-time")
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(plt, "close", figures.append)
-        paths = error_against_time_plots(SWEEPS, out)
-    yield out, paths, figures
-    for fig in figures:
-        plt.close(fig)
+    yield from _drawn(error_against_time_plots, SWEEPS, tmp_path_factory.mktemp("error-time"))
 
 
 def test_every_discretised_method_and_only_those_gets_an_error_time_plot(error_time) -> None:

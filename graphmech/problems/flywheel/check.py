@@ -107,7 +107,6 @@ class FlywheelAnalysis:
                 out.append(f"μ{k} = {v:g}")
         return out
 
-
     def integrated(self, run: Callable[[], T]) -> T:
         """``run()``, one integration of the true motion, its wall time added to ``motion_seconds``."""
         t0 = time.perf_counter()
